@@ -1,0 +1,69 @@
+// What one simulation run produces, whichever model ran it (MuJoCo's "data" after the run).
+// Both models fill the same column names so that analysis, writers and `compare` never need to
+// know which model produced a table. Column conventions (SI units, angles in rad):
+//
+// timeseries: t, phi_motor, phi_crank, omega_motor, omega_crank, eps_crank, eps_motor,
+//             twist (= phi_motor - phi_crank), twist_rate, twist_accel,
+//             coupling_torque (elastic + damping torque transmitted to the crank, N·m at the crank axis),
+//             motor_torque (Kloss torque reduced to the crank axis, N·m),
+//             load_torque (resisting torque of the loads reduced to the crank axis, N·m; reduced model),
+//             then per cart j = 1..n: x_cart_j, v_cart_j, a_cart_j.
+//             Motor angle and speed are reduced to the crank axis (rotor angle / u).
+// reactions:  t, per cart j: N_front_j, N_rear_j, F_rod_j, friction_j, crankpin_x_j, crankpin_y_j,
+//             then bearing_x, bearing_y, coupling_torque.
+//             N_* > 0 when the guide presses the cart's guide rollers downward (seed 000 fig. 3);
+//             F_rod > 0 in tension (pulls the cart towards the shaft, seed 000 eq. (14));
+//             friction_j is the guide friction force on cart j along x (N);
+//             crankpin_* is the force the rod exerts on crank pin j, world frame (N);
+//             bearing_* is the force the main bearing exerts on the crankshaft, world frame (N).
+//             A model that cannot compute a column leaves it out (the reduced model has no crank
+//             pin or bearing forces).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/Table.h"
+
+namespace rollerdyn {
+
+// Energy book-keeping over the run [J]; every work term is integrated alongside the equations
+// of motion (not summed from output samples), so the residual measures integration error.
+struct EnergyAudit {
+  double motor_work = 0;          // ∫ M_motor·ω_motor dt, input by the motor
+  double damping_dissipation = 0; // ∫ k·(Δω)² dt ≥ 0, lost in the coupling damper
+  double friction_dissipation = 0;// ∫ -F_friction·v dt, lost in the guides (≥ 0 when friction opposes v)
+  double load_work = 0;           // ∫ -F_load·v dt: work the machine does on the concrete
+  double kinetic_initial = 0, kinetic_final = 0;
+  double potential_initial = 0, potential_final = 0;  // gravity + coupling spring
+
+  // motor work - dissipation - load work - ΔT - ΔV
+  double residual() const {
+    return motor_work - damping_dissipation - friction_dissipation - load_work -
+           (kinetic_final - kinetic_initial) - (potential_final - potential_initial);
+  }
+  // residual divided by the largest energy flow term (motor work, or the kinetic energy when
+  // the motor is off), so it stays meaningful for a free-running machine.
+  double residualRelative() const;
+};
+
+struct RunStats {
+  long steps = 0;                  // accepted integrator steps
+  long realizations = 0;           // right-hand-side evaluations (Dynamics-stage realizations)
+  double cpu_seconds = 0;          // process CPU time of the integration
+  double constraint_error_max = 0; // max over output rows of the constraint error norm [-]
+  bool complete = true;            // false when the run ended before t_end
+  std::string status = "completed";  // e.g. "completed", "motor stalled at t = 3.2 s"
+};
+
+struct RunResult {
+  std::string model;               // "multibody" | "reduced"
+  std::string integrator;          // integrator actually used
+  Table timeseries;
+  Table reactions;
+  RunStats stats;
+  EnergyAudit energy;
+  std::vector<std::string> effects;  // effects built, e.g. "kloss_motor", "elastic_coupling"
+};
+
+}  // namespace rollerdyn

@@ -1,0 +1,61 @@
+#include "scene/Scene.h"
+
+namespace rollerdyn {
+
+double Scene::motorSideInertia() const {
+  // seed 000 eq. (1): J_n1 = (J_p + J_m)·δ·u²; seed 004 adds the reducer's own inertia
+  // (I_o = I_motor + I_m + I_red). A motor-shaft flywheel turns with the rotor.
+  const double flywheel_motor =
+      (flywheel.location == FlywheelLocation::MotorShaft) ? flywheel.inertia : 0.0;
+  const double u = reducer.ratio;
+  return (motor.rotor_inertia + coupling.inertia + reducer.inertia + flywheel_motor) *
+         reducer.delta * u * u;
+}
+
+double Scene::crankSideInertia() const {
+  const double flywheel_crank =
+      (flywheel.location == FlywheelLocation::Crankshaft) ? flywheel.inertia : 0.0;
+  return carts.count * crank.inertia_per_crank + crank.shaft_inertia + flywheel_crank;
+}
+
+double Scene::cartMassWithRodShare() const {
+  return carts.mass + (rods.model == RodModel::Split ? 0.5 * rods.mass : 0.0);
+}
+
+bool Scene::hasRollerLoads() const {
+  return loads.roller_force_front != 0.0 || loads.roller_force_rear != 0.0 ||
+         loads.roller_normal_front != 0.0 || loads.roller_normal_rear != 0.0;
+}
+
+std::vector<std::string> Scene::effects() const {
+  std::vector<std::string> e;
+  if (hasMotor()) e.push_back("kloss_motor");
+  e.push_back(coupling.type == CouplingType::Rigid ? "rigid_coupling" : "elastic_coupling");
+  if (hasCouplingDamping()) e.push_back("coupling_damping");
+  e.push_back(std::string("rods_") + toString(rods.model));
+  if (hasRollerLoads()) e.push_back("roller_loads");
+  if (hasGuideFriction()) e.push_back("guide_friction");
+  if (hasGravity()) e.push_back("gravity");
+  if (hasFlywheel()) e.push_back("flywheel");
+  return e;
+}
+
+const char* toString(RodModel m) {
+  switch (m) {
+    case RodModel::Distributed: return "distributed";
+    case RodModel::Split: return "split";
+    case RodModel::Massless: return "massless";
+  }
+  return "?";
+}
+const char* toString(CouplingType t) { return t == CouplingType::Rigid ? "rigid" : "elastic"; }
+const char* toString(RollerForceDirection d) {
+  return d == RollerForceDirection::AsPrinted ? "as_printed" : "opposes_velocity";
+}
+const char* toString(KinematicsForm k) { return k == KinematicsForm::Truncated ? "truncated" : "exact"; }
+const char* toString(FlywheelLocation l) {
+  return l == FlywheelLocation::MotorShaft ? "motor_shaft" : "crankshaft";
+}
+const char* toString(ReducedIntegrator i) { return i == ReducedIntegrator::Baranov ? "baranov" : "cvode"; }
+
+}  // namespace rollerdyn

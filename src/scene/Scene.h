@@ -1,0 +1,169 @@
+// The immutable description of one roller forming installation (MuJoCo's "model").
+// A Scene is produced once by parseScene() (src/scene/SceneParser.h), validated, and then only
+// read: the multibody model (src/multibody) and the reduced model (src/reduced) both build from
+// the same Scene, so any difference between them is a modelling difference, never an input one.
+//
+// Units: SI throughout (m, kg, s, N, N·m, rad). Angles are radians here; scene files may give
+// degrees only under keys ending in `_deg`. Frames: x horizontal along the guides, y vertical up,
+// z along the crankshaft axis; origin on the crankshaft axis. Each field's comment gives its
+// meaning, its unit, and the scene-file key it comes from.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rollerdyn {
+
+enum class RodModel { Distributed, Split, Massless };          // rods.model
+enum class CouplingType { Elastic, Rigid };                     // coupling.type
+enum class RollerForceDirection { OpposesVelocity, AsPrinted }; // loads.roller_force_direction
+enum class KinematicsForm { Exact, Truncated };                 // reduced.kinematics
+enum class FlywheelLocation { Crankshaft, MotorShaft };         // flywheel.location
+enum class ReducedIntegrator { Cvode, Baranov };                // reduced.integrator
+
+struct SimulationSettings {
+  double t_end;                 // simulated time span [s]                       simulation.t_end
+  double accuracy;              // integrator relative accuracy [-]              simulation.accuracy
+  std::string integrator;       // Simbody integrator name, e.g. RungeKuttaMerson  simulation.integrator
+  double output_step;           // spacing of output rows [s]                    simulation.output_step
+  double constraint_tolerance;  // constraint projection tolerance [-]           simulation.constraint_tolerance
+  double steady_window_revolutions;  // crank revolutions at the end of the run used for the
+                                     // steady-state metrics [-]      simulation.steady_window_revolutions
+};
+
+struct InitialState {
+  double crank_angle;   // crank angle φ2 of cart 1's crank at t = 0 [rad]   initial.crank_angle_deg
+  double crank_speed;   // crank speed φ̇2 at t = 0 [rad/s]; motor starts at the same
+                        // reduced speed (no twist rate) [rad/s]            initial.crank_speed
+  double twist;         // coupling twist φ1 - φ2 at t = 0 [rad]            initial.twist
+};
+
+struct CrankShaft {
+  double radius;            // crank radius r [m]                                crank.radius
+  double offset;            // angle between consecutive cranks Δφ [rad]         crank.offset_deg
+  double inertia_per_crank; // J'_K, one crank about the shaft axis [kg·m²]      crank.inertia_per_crank
+  double shaft_inertia;     // shaft itself (excluding cranks) about its axis [kg·m²]  crank.shaft_inertia
+};
+
+struct ConnectingRods {
+  RodModel model;        // distributed | split (seed 000 eq. (2)-(3)) | massless   rods.model
+  double length;         // l, crank pin to cart hinge [m]                          rods.length
+  double mass;           // m_rod of one rod [kg] (ignored when massless)           rods.mass
+  double inertia_com;    // own inertia about its centre of mass [kg·m²];
+                         // default m·l²/12 (seed 004: I_s = q·l³/12)               rods.inertia_com
+};
+
+// Geometry of one cart, measured from the rod hinge B (seed 000 fig. 3, eq. (10)), in the
+// cart's own direction: +x points away from the shaft for a cart on the "same" side.
+struct CartGeometry {
+  double a;            // half distance between the two compacting rollers [m]        carts.geometry.a
+  double b;            // half distance between the two guide rollers [m]             carts.geometry.b
+  double p;            // horizontal distance B -> cart centre of mass / roller midpoint [m]  carts.geometry.p
+  double e;            // depth of the compacting-roller contact below B [m]          carts.geometry.e
+  double D;            // compacting roller diameter [m] (informational)              carts.geometry.D
+  double d;            // guide roller diameter [m]; friction moment arm d/2          carts.geometry.d
+  double com_height;   // height of the cart's centre of mass above B [m]             carts.geometry.com_height
+};
+
+struct Carts {
+  int count;                 // number of carts n [-]                         carts.count
+  std::vector<int> side;     // per cart: +1 same side as cart 1's crank (x > 0), -1 opposite [-]
+                             //                                               carts.sides
+  double mass;               // m'_B, one cart without rod [kg]               carts.mass
+  CartGeometry geometry;     // carts.geometry.*
+};
+
+struct KlossMotor {
+  bool enabled;            // motor torque applied at all                       motor.enabled
+  double omega_sync;       // synchronous rotor speed ω0 [rad/s]                motor.omega_sync
+  double breakdown_torque; // M_kr at the rotor [N·m]                           motor.breakdown_torque
+  double critical_slip;    // s_kr [-]; from motor.critical_slip, or motor.omega_critical
+                           // (s_kr = 1 - ω_kr/ω0, seed 004 eq. (7)), or motor.omega_nominal +
+                           // motor.overload_ratio (s_kr = s_n(λ + √(λ²-1)), seed 000 eq. (37))
+  double rotor_inertia;    // J_p about the rotor axis [kg·m²]                  motor.rotor_inertia
+};
+
+struct Reducer {
+  double ratio;        // u = ω_rotor / ω_crank [-]                                 reducer.ratio
+  double efficiency;   // η in (0, 1] [-]                                           reducer.efficiency
+  double inertia;      // J_red referred to the motor shaft [kg·m²]                 reducer.inertia
+  double delta;        // δ, seed 000 eq. (1) factor for reducer inertia [-]        reducer.delta
+};
+
+struct Coupling {
+  CouplingType type;   // elastic | rigid                                          coupling.type
+  double stiffness;    // c, reduced to the crank axis [N·m/rad]                   coupling.stiffness
+  double damping;      // k, reduced to the crank axis [N·m·s/rad]                 coupling.damping
+  double inertia;      // J_m, coupling hub on the motor shaft [kg·m²]             coupling.inertia
+};
+
+struct Flywheel {
+  double inertia;             // about its own shaft [kg·m²]; 0 = no flywheel     flywheel.inertia
+  FlywheelLocation location;  // crankshaft | motor_shaft                         flywheel.location
+};
+
+struct Loads {
+  double roller_force_front;   // F_j1, horizontal compacting-roller force [N]        loads.roller_force_front
+  double roller_force_rear;    // F_j2 [N]                                            loads.roller_force_rear
+  double roller_normal_front;  // R_j1, upward reaction of the mix on a roller [N]    loads.roller_normal_front
+  double roller_normal_rear;   // R_j2 [N]                                            loads.roller_normal_rear
+  RollerForceDirection roller_force_direction;  // opposes_velocity | as_printed   loads.roller_force_direction
+  double guide_friction;       // f, reduced guide-roller friction coefficient [-]    loads.guide_friction.coefficient
+  double gravity;              // g [m/s²]; 0 = no gravity                            loads.gravity
+  double velocity_smoothing;   // v_s: sign(v) is replaced by tanh(v/v_s) [m/s]       loads.velocity_smoothing
+};
+
+struct ReducedSettings {
+  KinematicsForm kinematics;   // exact (eq. (40)-(47)) | truncated (eq. (52)-(57))   reduced.kinematics
+  ReducedIntegrator integrator;  // cvode | baranov (seed 004 eq. (4), (10), (11))  reduced.integrator
+  double baranov_step;         // crank-angle step of the Baranov scheme [rad]        reduced.baranov_step_deg
+};
+
+struct Scene {
+  std::string name;         // scene name: file stem, e.g. "balanced-4cart"
+  std::string source_path;  // file the scene was read from
+  std::string source;       // free-text citation of the paper the scene comes from   source
+  SimulationSettings simulation;
+  InitialState initial;
+  CrankShaft crank;
+  ConnectingRods rods;
+  Carts carts;
+  KlossMotor motor;
+  Reducer reducer;
+  Coupling coupling;
+  Flywheel flywheel;
+  Loads loads;
+  ReducedSettings reduced;
+
+  // --- Derived quantities, defined once so both models use the same formula. ---
+
+  // Motor-side inertia reduced to the crank axis, seed 000 eq. (1) extended by the reducer and a
+  // motor-shaft flywheel: J_n1 = (J_p + J_m + J_red + J_fw,motor)·δ·u² [kg·m²].
+  double motorSideInertia() const;
+  // Crankshaft inertia about its axis without rods: n·J'_K + shaft + crank-side flywheel [kg·m²].
+  double crankSideInertia() const;
+  // Angle of cart j's crank (0-based j) relative to cart 1's crank: j·Δφ [rad].
+  double crankPhase(int j) const { return j * crank.offset; }
+  // Cart centre-of-mass mass including half a rod under the split model [kg], seed 000 eq. (3).
+  double cartMassWithRodShare() const;
+  // Whether each optional effect is present in this scene.
+  bool hasMotor() const { return motor.enabled; }
+  bool hasRollerLoads() const;
+  bool hasGuideFriction() const { return loads.guide_friction > 0.0; }
+  bool hasGravity() const { return loads.gravity > 0.0; }
+  bool hasFlywheel() const { return flywheel.inertia > 0.0; }
+  bool hasCouplingDamping() const {
+    return coupling.type == CouplingType::Elastic && coupling.damping > 0.0;
+  }
+  // The list of effect names built for this scene (also written to summary.json).
+  std::vector<std::string> effects() const;
+};
+
+const char* toString(RodModel m);
+const char* toString(CouplingType t);
+const char* toString(RollerForceDirection d);
+const char* toString(KinematicsForm k);
+const char* toString(FlywheelLocation l);
+const char* toString(ReducedIntegrator i);
+
+}  // namespace rollerdyn
