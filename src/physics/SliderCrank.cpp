@@ -1,4 +1,4 @@
-#include "kinematics/SliderCrank.h"
+#include "physics/SliderCrank.h"
 
 #include <cmath>
 #include <stdexcept>
