@@ -1,0 +1,301 @@
+#include "multibody/MultibodyModel.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "multibody/ElasticCoupling.h"
+#include "multibody/EnergyMeter.h"
+#include "multibody/GuideFriction.h"
+#include "multibody/KlossMotorForce.h"
+#include "multibody/RollerLoadForce.h"
+#include "physics/SliderCrank.h"
+
+namespace rollerdyn {
+namespace {
+
+// A rotor of polar inertia J about z: a thin disc has Ixx = Iyy = J/2, which keeps the inertia
+// physically valid (triangle inequality) whatever J is.
+SimTK::Inertia disc(double J) { return SimTK::Inertia(0.5 * J, 0.5 * J, J); }
+
+// Simbody rejects a body with inertia but no mass. The scenes give rotor inertias, not rotor
+// masses, so rotors carry this token mass on their axis: on a fixed axis it changes no motion,
+// and its weight (0.01 N) is far below anything reported.
+constexpr double kRotorTokenMass = 1e-3;  // [kg]
+
+SimTK::Vec3 crankPin(const Scene& scene, int j) {
+  const double th = scene.crankPhase(j), r = scene.crank.radius;
+  return SimTK::Vec3(r * std::cos(th), r * std::sin(th), 0);
+}
+
+}  // namespace
+
+MultibodyModel::MultibodyModel(const Scene& scene, const MultibodyOptions& options)
+    : scene_(scene), options_(options), matter_(system_), forces_(system_) {
+  buildDrive();
+  buildCarts();
+  buildForces();
+  system_.realizeTopology();
+  fillInventory();
+}
+
+MultibodyModel::~MultibodyModel() = default;
+
+void MultibodyModel::buildDrive() {
+  const Scene& sc = scene_;
+  const bool rigid = sc.coupling.type == CouplingType::Rigid;
+  // Split rods put half their mass on each crank pin (seed 000 eq. (2)): point masses that
+  // turn with the crankshaft, so their gravity torque is felt too.
+  const double pin_mass = sc.rods.model == RodModel::Split ? 0.5 * sc.rods.mass : 0.0;
+  double J = sc.crankSideInertia() + (rigid ? sc.motorSideInertia() : 0.0);
+  SimTK::Inertia inertia = disc(J);
+  double mass = kRotorTokenMass;
+  SimTK::Vec3 first_moment(0);
+  for (int j = 0; j < sc.carts.count && pin_mass > 0; ++j) {
+    inertia += SimTK::Inertia(crankPin(sc, j), pin_mass);
+    mass += pin_mass;
+    first_moment += pin_mass * crankPin(sc, j);
+  }
+  const SimTK::Vec3 com = first_moment / mass;
+  const bool crank_has_inertia = J > 0 || pin_mass > 0 || sc.rods.model == RodModel::Distributed;
+  if (!crank_has_inertia)
+    throw std::invalid_argument(
+        "multibody model: the crankshaft has no inertia of its own (crank.inertia_per_crank, "
+        "crank.shaft_inertia and a crankshaft flywheel are all 0) and its rods are " +
+        std::string(toString(sc.rods.model)) +
+        "; with an elastic coupling its motion would be undetermined. Give it an inertia.");
+  SimTK::Body::Rigid crank_body(SimTK::MassProperties(mass, com, inertia));
+  crank_ = SimTK::MobilizedBody::Pin(matter_.Ground(), SimTK::Transform(), crank_body, SimTK::Transform());
+  if (options_.prescribe_crank_speed) SimTK::Motion::Steady(crank_, options_.crank_speed);
+
+  if (rigid) {
+    motor_ = crank_;  // one rotating body: a rigid coupling is not a stiff spring
+  } else {
+    SimTK::Body::Rigid motor_body(SimTK::MassProperties(kRotorTokenMass, SimTK::Vec3(0), disc(sc.motorSideInertia())));
+    motor_ = SimTK::MobilizedBody::Pin(matter_.Ground(), SimTK::Transform(), motor_body, SimTK::Transform());
+  }
+}
+
+void MultibodyModel::buildCarts() {
+  const Scene& sc = scene_;
+  const double l = sc.rods.length;
+  for (int j = 0; j < sc.carts.count; ++j) {
+    CartRig rig;
+    rig.side = sc.carts.side[j];
+    rig.p_CrankPin = crankPin(sc, j);
+    rig.rod_length = l;
+    const double m_cart = sc.cartMassWithRodShare();
+    const SimTK::Vec3 com_cart(rig.side * sc.carts.geometry.p, sc.carts.geometry.com_height, 0);
+    SimTK::Body::Rigid cart_body(SimTK::MassProperties(m_cart, com_cart, SimTK::Inertia(com_cart, m_cart)));
+    rig.cart = SimTK::MobilizedBody::Slider(matter_.Ground(), SimTK::Transform(), cart_body, SimTK::Transform());
+
+    if (sc.rods.model == RodModel::Distributed) {
+      // Rod frame: origin at the crank pin A, +x along the rod towards B, centre of mass at l/2.
+      const double m = sc.rods.mass, I = sc.rods.inertia_com;
+      const SimTK::Vec3 com(0.5 * l, 0, 0);
+      // About its centre a slender rod has Iyy = Izz = I; a small Ixx keeps the inertia valid.
+      const SimTK::Inertia central(1e-9 * I + 1e-12, I, I);
+      SimTK::Body::Rigid rod_body(SimTK::MassProperties(m, com, central.shiftFromMassCenter(com, m)));
+      rig.rod = SimTK::MobilizedBody::Pin(crank_, SimTK::Transform(rig.p_CrankPin), rod_body, SimTK::Transform());
+      rig.rod_mass = m;
+      // Close the loop at B: the rod end stays on the cart's x = 0 and y = 0 planes (a planar
+      // revolute joint; a Ball would add a redundant z equation).
+      SimTK::Constraint::PointInPlane(rig.cart, SimTK::UnitVec3(SimTK::XAxis), 0, rig.rod, SimTK::Vec3(l, 0, 0));
+      SimTK::Constraint::PointInPlane(rig.cart, SimTK::UnitVec3(SimTK::YAxis), 0, rig.rod, SimTK::Vec3(l, 0, 0));
+      constraint_count_ += 2;
+    } else {
+      SimTK::Constraint::Rod(crank_, rig.p_CrankPin, rig.cart, SimTK::Vec3(0), l);
+      constraint_count_ += 1;
+    }
+    carts_.push_back(rig);
+  }
+}
+
+void MultibodyModel::buildForces() {
+  const Scene& sc = scene_;
+  EnergyMeter::Sources sources;
+  if (sc.hasMotor()) {
+    auto* f = new KlossMotorForce(motor_, sc.motor, sc.reducer.ratio, sc.reducer.efficiency);
+    SimTK::Force::Custom(forces_, f);
+    motor_force_ = sources.motor = f;
+    inventory_.force_elements.push_back("KlossMotor");
+  }
+  if (sc.coupling.type == CouplingType::Elastic) {
+    auto* f = new ElasticCoupling(motor_, crank_, sc.coupling.stiffness, sc.coupling.damping);
+    SimTK::Force::Custom(forces_, f);
+    coupling_force_ = sources.coupling = f;
+    inventory_.force_elements.push_back(sc.hasCouplingDamping() ? "ElasticCoupling(spring+damper)"
+                                                                : "ElasticCoupling(spring)");
+  }
+  if (sc.hasGravity()) {
+    SimTK::Force::Gravity(forces_, matter_, -SimTK::YAxis, sc.loads.gravity);
+    inventory_.force_elements.push_back("Gravity");
+  }
+  if (sc.hasRollerLoads()) {
+    auto* f = new RollerLoadForce(carts_, sc.loads, sc.carts.geometry);
+    SimTK::Force::Custom(forces_, f);
+    load_force_ = sources.loads = f;
+    inventory_.force_elements.push_back("RollerLoads");
+  }
+  if (sc.hasGuideFriction()) {
+    auto* f = new GuideFriction(forces_, matter_, carts_, sc.loads, sc.carts.geometry);
+    SimTK::Force::Custom(forces_, f);
+    friction_force_ = sources.friction = f;
+    inventory_.force_elements.push_back("GuideFriction");
+  }
+  auto* meter = new EnergyMeter(forces_, sources);
+  SimTK::Force::Custom(forces_, meter);
+  energy_meter_ = meter;
+}
+
+void MultibodyModel::fillInventory() {
+  const SimTK::State& s = system_.getDefaultState();
+  SimTK::State tmp = s;
+  system_.realizeModel(tmp);
+  system_.realize(tmp, SimTK::Stage::Instance);
+  inventory_.bodies = matter_.getNumBodies() - 1;
+  inventory_.mobilities = tmp.getNU();
+  inventory_.constraints = constraint_count_;
+  inventory_.constraint_equations = tmp.getNUDotErr();
+  const int prescribed = options_.prescribe_crank_speed ? 1 : 0;
+  inventory_.degrees_of_freedom = inventory_.mobilities - inventory_.constraint_equations - prescribed;
+  inventory_.effects = scene_.effects();
+}
+
+SimTK::State MultibodyModel::assembledState(double phi, double omega, double twist) const {
+  const Scene& sc = scene_;
+  SimTK::State s = system_.getDefaultState();
+  system_.realizeModel(s);
+  crank_.setOneQ(s, 0, phi);
+  crank_.setOneU(s, 0, omega);
+  if (motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex()) {
+    motor_.setOneQ(s, 0, phi + twist);
+    motor_.setOneU(s, 0, omega);
+  }
+  for (size_t j = 0; j < carts_.size(); ++j) {
+    const CartRig& c = carts_[j];
+    const double theta = phi + sc.crankPhase(int(j));
+    const SliderCrankPose pose = sliderCrankExact(theta, sc.crank.radius, sc.rods.length, c.side);
+    c.cart.setOneQ(s, 0, pose.x_B);
+    c.cart.setOneU(s, 0, pose.dx_B * omega);
+    if (!c.rod.isEmptyHandle()) {
+      // Direction A->B = l·(σ·cos β, -sin β): absolute rod angle ψ, rate ψ̇ = -σ·β̇.
+      const double psi = std::atan2(-std::sin(pose.beta), c.side * std::cos(pose.beta));
+      c.rod.setOneQ(s, 0, psi - phi);
+      c.rod.setOneU(s, 0, -c.side * pose.dbeta * omega - omega);
+    }
+  }
+  // The closed-form configuration already satisfies the loops; projection only removes
+  // round-off and can therefore never jump to the other assembly branch.
+  system_.realize(s, SimTK::Stage::Position);
+  system_.projectQ(s, 1e-13);
+  system_.realize(s, SimTK::Stage::Velocity);
+  system_.projectU(s, 1e-13);
+  if (friction_force_) {
+    // Start the lagged friction from the reactions it produces itself (fixed point; contracts
+    // by a factor of order f per pass).
+    for (int pass = 0; pass < 8; ++pass) {
+      system_.realize(s, SimTK::Stage::Acceleration);
+      const SimTK::Vector n = friction_force_->currentNormals(s);
+      friction_force_->setLaggedNormals(s, n);
+    }
+  }
+  system_.realize(s, SimTK::Stage::Acceleration);
+  return s;
+}
+
+SimTK::State MultibodyModel::initialState() const {
+  return assembledState(scene_.initial.crank_angle, scene_.initial.crank_speed, scene_.initial.twist);
+}
+
+double MultibodyModel::motorSpeed(const SimTK::State& s) const { return motor_.getOneU(s, 0); }
+
+double MultibodyModel::motorTorque(const SimTK::State& s) const {
+  return motor_force_ ? motor_force_->torque(s) : 0.0;
+}
+
+double MultibodyModel::couplingTorque(const SimTK::State& s) const {
+  if (coupling_force_) return coupling_force_->torque(s);
+  // Rigid coupling: the torque the motor-side inertia passes on to the crank side,
+  // M_motor - J_n1·φ̈ (needs Acceleration stage).
+  return motorTorque(s) - scene_.motorSideInertia() * crank_.getOneUDot(s, 0);
+}
+
+double MultibodyModel::constraintError(const SimTK::State& s) const {
+  const SimTK::Vector& qerr = s.getQErr();
+  return qerr.size() ? SimTK::max(SimTK::abs(qerr)) : 0.0;
+}
+
+EnergySnapshot MultibodyModel::energy(const SimTK::State& s) const {
+  EnergySnapshot e;
+  e.kinetic = system_.calcKineticEnergy(s);
+  e.potential = system_.calcPotentialEnergy(s);
+  e.motor_work = energy_meter_->motorWork(s);
+  e.damping_dissipation = energy_meter_->dampingDissipation(s);
+  e.friction_dissipation = energy_meter_->frictionDissipation(s);
+  e.load_work = energy_meter_->loadWork(s);
+  return e;
+}
+
+std::vector<std::string> MultibodyModel::timeseriesColumns() const {
+  std::vector<std::string> c = {"t",          "phi_motor",  "phi_crank",   "omega_motor",
+                                "omega_crank", "eps_crank", "eps_motor",   "twist",
+                                "twist_rate",  "twist_accel", "coupling_torque", "motor_torque"};
+  for (size_t j = 1; j <= carts_.size(); ++j)
+    for (const char* n : {"x_cart_", "v_cart_", "a_cart_"}) c.push_back(n + std::to_string(j));
+  return c;
+}
+
+std::vector<std::string> MultibodyModel::reactionColumns() const {
+  std::vector<std::string> c = {"t"};
+  for (size_t j = 1; j <= carts_.size(); ++j)
+    for (const char* n : {"N_front_", "N_rear_", "F_rod_", "friction_", "crankpin_x_", "crankpin_y_"})
+      c.push_back(n + std::to_string(j));
+  for (const char* n : {"bearing_x", "bearing_y", "coupling_torque"}) c.push_back(n);
+  return c;
+}
+
+void MultibodyModel::observe(const SimTK::State& s, std::vector<double>& ts,
+                             std::vector<double>& re) const {
+  const double phi1 = motor_.getOneQ(s, 0), phi2 = crank_.getOneQ(s, 0);
+  const double w1 = motor_.getOneU(s, 0), w2 = crank_.getOneU(s, 0);
+  const double e1 = motor_.getOneUDot(s, 0), e2 = crank_.getOneUDot(s, 0);
+  const double torque_coupling = couplingTorque(s);
+  ts = {s.getTime(), phi1, phi2, w1, w2, e2, e1, phi1 - phi2, w1 - w2, e1 - e2, torque_coupling,
+        motorTorque(s)};
+  for (const CartRig& c : carts_) {
+    ts.push_back(c.x(s));
+    ts.push_back(c.v(s));
+    ts.push_back(c.cart.getOneUDot(s, 0));
+  }
+
+  SimTK::Vector_<SimTK::SpatialVec> reactions;
+  matter_.calcMobilizerReactionForces(s, reactions);
+  const SimTK::Vector_<SimTK::SpatialVec>& applied = system_.getRigidBodyForces(s, SimTK::Stage::Dynamics);
+  const double g = scene_.loads.gravity;
+  re = {s.getTime()};
+  for (size_t j = 0; j < carts_.size(); ++j) {
+    const CartRig& c = carts_[j];
+    const SimTK::MobilizedBodyIndex ic = c.cart.getMobilizedBodyIndex();
+    const GuideNormals n = solveGuideNormals(reactions[ic], c.side, scene_.carts.geometry);
+    // Force of the rod on the cart at B from the cart's free body: m·a = applied + guide + rod.
+    const double m_cart = c.cart.getBodyMass(s);
+    const SimTK::Vec3 a_cart(c.cart.getOneUDot(s, 0), 0, 0);
+    const SimTK::Vec3 F_rod_on_cart = m_cart * a_cart - applied[ic][1] - reactions[ic][1];
+    // Pin A in ground, and the unit vector B -> A along the rod: tension pulls the cart to A.
+    const SimTK::Vec3 p_A = crank_.findStationLocationInGround(s, c.p_CrankPin);
+    const SimTK::Vec3 p_B = c.cart.getBodyOriginLocation(s);
+    const SimTK::UnitVec3 e_BA(p_A - p_B);
+    // Force of the rod on the crank pin: rod free body m·a_S = F_A + (-F_B) + m·g.
+    SimTK::Vec3 F_rod_on_crank = -F_rod_on_cart;
+    if (!c.rod.isEmptyHandle()) {
+      const SimTK::Vec3 a_S = c.rod.findStationAccelerationInGround(s, SimTK::Vec3(0.5 * c.rod_length, 0, 0));
+      F_rod_on_crank += -c.rod_mass * a_S + c.rod_mass * SimTK::Vec3(0, -g, 0);
+    }
+    const double friction = friction_force_ ? friction_force_->frictionForce(s, int(j)) : 0.0;
+    re.insert(re.end(), {n.front, n.rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]});
+  }
+  const SimTK::Vec3 bearing = reactions[crank_.getMobilizedBodyIndex()][1];
+  re.insert(re.end(), {bearing[0], bearing[1], torque_coupling});
+}
+
+}  // namespace rollerdyn

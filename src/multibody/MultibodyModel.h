@@ -1,0 +1,119 @@
+// The Simbody multibody model of an installation, built once from an immutable Scene
+// (Simbody examples' pattern: build the system, realize stage by stage). Holds the system and
+// the handles to its bodies and force elements; the evolving data lives in SimTK::State objects.
+//
+// Topology (x along the guides, y up, z = shaft axis; everything in the plane z = 0):
+//   Ground -Pin(z)-> motor side  (J_n1, reduced to the crank axis)      [elastic coupling only]
+//   Ground -Pin(z)-> crankshaft  (crank-side inertia, plus J_n1 when the coupling is rigid)
+//   crankshaft -Pin(z) at pin A_j-> rod j       [rods.model = distributed]
+//   Ground -Slider(x)-> cart j, origin at the rod hinge B_j
+//   loop closure at B_j: rod end on the cart (two PointInPlane constraints), or, for split and
+//   massless rods, a Constraint::Rod of length l between A_j and B_j.
+// Rods hang from the crankshaft, not from the carts, so the crankshaft never has zero
+// articulated inertia even when the scene gives it none of its own.
+//
+// Only what the scene asks for is built: no motor element when motor.enabled is false, no
+// coupling element for a rigid coupling (one body), no gravity, loads, friction or flywheel
+// when the scene leaves them out.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Simbody.h"
+#include "multibody/CartRig.h"
+#include "scene/Scene.h"
+
+namespace rollerdyn {
+
+class KlossMotorForce;
+class ElasticCoupling;
+class RollerLoadForce;
+class GuideFriction;
+class EnergyMeter;
+
+struct MultibodyOptions {
+  bool prescribe_crank_speed = false;  // drive the crankshaft at a constant speed (Motion::Steady)
+  double crank_speed = 0.0;            // that speed [rad/s]
+};
+
+// What the built system contains, for `rollerdyn check` and for tests.
+struct MultibodyInventory {
+  int bodies = 0;                 // mobilized bodies, ground excluded
+  int mobilities = 0;             // generalized speeds u
+  int constraints = 0;            // Constraint objects
+  int constraint_equations = 0;   // acceleration-level constraint equations
+  int degrees_of_freedom = 0;     // mobilities - constraint equations - prescribed
+  std::vector<std::string> force_elements;  // names of the force elements built
+  std::vector<std::string> effects;         // Scene::effects()
+};
+
+// Energy state at one instant [J].
+struct EnergySnapshot {
+  double kinetic = 0, potential = 0;
+  double motor_work = 0, damping_dissipation = 0, friction_dissipation = 0, load_work = 0;
+};
+
+class MultibodyModel {
+ public:
+  explicit MultibodyModel(const Scene& scene, const MultibodyOptions& options = {});
+  ~MultibodyModel();
+  MultibodyModel(const MultibodyModel&) = delete;
+  MultibodyModel& operator=(const MultibodyModel&) = delete;
+
+  const Scene& scene() const { return scene_; }
+  const SimTK::MultibodySystem& system() const { return system_; }
+  SimTK::MultibodySystem& updSystem() { return system_; }
+  const SimTK::SimbodyMatterSubsystem& matter() const { return matter_; }
+  const MultibodyInventory& inventory() const { return inventory_; }
+  const std::vector<CartRig>& carts() const { return carts_; }
+
+  // A state assembled exactly at crank angle φ2, crank speed φ̇2 and coupling twist φ1 - φ2
+  // (closed-form slider-crank positions and velocities, then a projection that only removes
+  // round-off), with consistent guide-friction normal forces. Realized to Acceleration.
+  SimTK::State assembledState(double crank_angle, double crank_speed, double twist) const;
+  // The scene's initial state.
+  SimTK::State initialState() const;
+
+  // Output columns; see src/analysis/RunResult.h for their meaning.
+  std::vector<std::string> timeseriesColumns() const;
+  std::vector<std::string> reactionColumns() const;
+  // One output row of each table from a state realized to Acceleration.
+  void observe(const SimTK::State& s, std::vector<double>& timeseries_row,
+               std::vector<double>& reactions_row) const;
+
+  double crankAngle(const SimTK::State& s) const { return crank_.getOneQ(s, 0); }
+  double crankSpeed(const SimTK::State& s) const { return crank_.getOneU(s, 0); }
+  double motorSpeed(const SimTK::State& s) const;   // reduced to the crank axis
+  double motorTorque(const SimTK::State& s) const;  // reduced to the crank axis, 0 without motor
+  double couplingTorque(const SimTK::State& s) const;
+  // Largest absolute position-constraint error [m] (state realized to Position).
+  double constraintError(const SimTK::State& s) const;
+  EnergySnapshot energy(const SimTK::State& s) const;  // realized to Dynamics
+
+ private:
+  void buildDrive();
+  void buildCarts();
+  void buildForces();
+  void fillInventory();
+
+  Scene scene_;
+  MultibodyOptions options_;
+  SimTK::MultibodySystem system_;
+  SimTK::SimbodyMatterSubsystem matter_;
+  SimTK::GeneralForceSubsystem forces_;
+  SimTK::MobilizedBody motor_;   // motor-side body; same as crank_ for a rigid coupling
+  SimTK::MobilizedBody crank_;
+  std::vector<CartRig> carts_;
+  int constraint_count_ = 0;
+  // Owned by the force subsystem once wrapped in SimTK::Force::Custom.
+  const KlossMotorForce* motor_force_ = nullptr;
+  const ElasticCoupling* coupling_force_ = nullptr;
+  const RollerLoadForce* load_force_ = nullptr;
+  const GuideFriction* friction_force_ = nullptr;
+  const EnergyMeter* energy_meter_ = nullptr;
+  MultibodyInventory inventory_;
+};
+
+}  // namespace rollerdyn

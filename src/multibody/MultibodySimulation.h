@@ -1,0 +1,25 @@
+// Runs the multibody model of a scene from its initial state to simulation.t_end and collects
+// the output tables, statistics and energy audit (src/analysis/RunResult.h).
+#pragma once
+
+#include <atomic>
+#include <functional>
+
+#include "analysis/RunResult.h"
+#include "multibody/MultibodyModel.h"
+
+namespace rollerdyn {
+
+struct RunControl {
+  const std::atomic<bool>* interrupt = nullptr;      // set asynchronously (Ctrl-C): stop, keep rows
+  std::function<void(double t, double t_end)> progress;  // called after each output row
+};
+
+// Integrates `model` over the scene's time span. Never throws for a physical outcome: a stalled
+// motor, a NaN or an integrator failure ends the run with complete = false and a status line.
+RunResult simulateMultibody(const MultibodyModel& model, const RunControl& control = {});
+
+// Convenience: build the model from the scene and run it.
+RunResult runMultibodyModel(const Scene& scene, const RunControl& control = {});
+
+}  // namespace rollerdyn
