@@ -1,0 +1,105 @@
+#include "analysis/SteadyState.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+// Share of the run used as the window when not even one whole revolution was completed.
+constexpr double kFallbackShare = 0.2;
+
+// Half-open row range [begin, end) of rows with t_begin <= t <= t_end (t ascending).
+void setRowRange(const std::vector<double>& t, std::size_t n, SteadyState& s) {
+  const auto first = t.begin();
+  const auto last = t.begin() + static_cast<std::ptrdiff_t>(n);
+  s.row_begin = static_cast<std::size_t>(std::lower_bound(first, last, s.t_begin) - first);
+  s.row_end = static_cast<std::size_t>(std::upper_bound(first, last, s.t_end) - first);
+  if (s.row_end < s.row_begin) s.row_end = s.row_begin;
+}
+
+}  // namespace
+
+SteadyState detectSteadyState(const Table& ts, double window_revolutions,
+                              double relative_tolerance) {
+  SteadyState s;
+  s.relative_tolerance = relative_tolerance;
+  s.t_settled = std::numeric_limits<double>::quiet_NaN();
+  if (!ts.has("t") || !ts.has("phi_crank")) {
+    s.note = "timeseries lacks column t or phi_crank";
+    return s;
+  }
+  const std::vector<double> t = ts.column("t");
+  const std::vector<double> phi = ts.column("phi_crank");
+  const std::vector<double> omega =
+      ts.has("omega_crank") ? ts.column("omega_crank") : std::vector<double>(t.size(), 0.0);
+
+  // Analyse only the finite prefix: a run that blew up has nothing steady after the blow-up.
+  std::size_t n = 0;
+  while (n < t.size() && std::isfinite(t[n]) && std::isfinite(phi[n]) && std::isfinite(omega[n])) ++n;
+  s.finite_rows = n;
+  if (n < t.size())
+    s.note = "non-finite values from t = " + std::to_string(t[n]) + " s; analysed rows before it";
+  if (n < 2) {
+    s.note = s.note.empty() ? "fewer than two rows" : s.note + "; fewer than two finite rows";
+    return s;
+  }
+
+  // Whole revolutions: first crossings of phi_0 + 2πk in the direction of net rotation.
+  const double dir = phi[n - 1] >= phi[0] ? 1.0 : -1.0;
+  std::vector<double> crossings{t[0]};
+  for (std::size_t i = 1; i < n; ++i) {
+    const double u_prev = dir * (phi[i - 1] - phi[0]);
+    const double u = dir * (phi[i] - phi[0]);
+    double target = kTwoPi * static_cast<double>(crossings.size());
+    while (u >= target && u_prev < target) {
+      const double frac = (target - u_prev) / (u - u_prev);
+      crossings.push_back(t[i - 1] + frac * (t[i] - t[i - 1]));
+      target = kTwoPi * static_cast<double>(crossings.size());
+    }
+  }
+  for (std::size_t k = 0; k + 1 < crossings.size(); ++k)
+    s.revolutions.push_back({crossings[k], crossings[k + 1],
+                             dir * kTwoPi / (crossings[k + 1] - crossings[k])});
+  const int count = static_cast<int>(s.revolutions.size());
+  s.revolutions_counted = count;
+
+  const int wanted = std::max(1, static_cast<int>(std::floor(window_revolutions)));
+  if (count < 1) {
+    // Stalled or very slow run: no periodicity to judge; take the last 20 % of the run.
+    s.window_revolutions = 0;
+    s.t_end = t[n - 1];
+    s.t_begin = t[n - 1] - kFallbackShare * (t[n - 1] - t[0]);
+    setRowRange(t, n, s);
+    const std::string why = "no whole crank revolution; window = last 20 % of the run";
+    s.note = s.note.empty() ? why : s.note + "; " + why;
+    return s;
+  }
+
+  // Settling index: walk back from the final revolution while the means stay within tolerance.
+  const double final_mean = s.revolutions.back().omega_mean;
+  const double tol = relative_tolerance * std::abs(final_mean);
+  int after = count - 1;
+  while (after > 0 && std::abs(s.revolutions[after - 1].omega_mean - final_mean) < tol) --after;
+  s.after_revolutions = after;
+  s.t_settled = s.revolutions[after].t_begin;
+
+  const int needed = std::max(wanted, 2);  // one revolution cannot be compared with anything
+  s.reached = count >= needed && after <= count - needed;
+  if (count < needed) {
+    const std::string why = "only " + std::to_string(count) + " whole revolution(s), " +
+                            std::to_string(needed) + " needed to judge steady state";
+    s.note = s.note.empty() ? why : s.note + "; " + why;
+  }
+
+  s.window_revolutions = std::min(wanted, count);
+  s.t_begin = s.revolutions[count - s.window_revolutions].t_begin;
+  s.t_end = s.revolutions.back().t_end;
+  setRowRange(t, n, s);
+  return s;
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,177 @@
+#include "analysis/Summary.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "analysis/Metrics.h"
+#include "analysis/SteadyState.h"
+#include "io/AtomicFile.h"
+
+namespace rollerdyn {
+
+namespace {
+
+using nlohmann::json;
+
+// Turns doubles into JSON numbers, writing null for NaN/inf and remembering which keys.
+class FiniteWriter {
+ public:
+  json operator()(const std::string& key, double v) {
+    if (std::isfinite(v)) return v;
+    non_finite.push_back(key);
+    return nullptr;
+  }
+  std::vector<std::string> non_finite;
+};
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string s;
+  for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
+  return s;
+}
+
+}  // namespace
+
+json makeSummary(const Scene& scene, const RunResult& run) {
+  const SteadyState ss =
+      detectSteadyState(run.timeseries, scene.simulation.steady_window_revolutions);
+  const WindowMetrics m = computeMetrics(run, ss);
+  FiniteWriter num;
+  json j;
+
+  j["scene"] = scene.name;
+  j["model"] = run.model;
+  j["integrator"] = run.integrator;
+  j["effects"] = scene.effects();
+  j["effects_built"] = run.effects;
+  j["status"] = run.stats.status;  // amended below if anything was non-finite
+  j["complete"] = run.stats.complete;
+
+  double simulated_time = 0;
+  if (run.timeseries.has("t") && !run.timeseries.rows.empty()) {
+    const int k = run.timeseries.index("t");
+    simulated_time = run.timeseries.rows.back()[k] - run.timeseries.rows.front()[k];
+  }
+  j["simulated_time"] = num("simulated_time", simulated_time);
+
+  j["omega_crank"] = {{"min", num("omega_crank.min", m.omega_min)},
+                      {"max", num("omega_crank.max", m.omega_max)},
+                      {"mean", num("omega_crank.mean", m.omega_mean)},
+                      {"midrange", num("omega_crank.midrange", m.omega_midrange)}};
+  j["eps_crank_abs_max"] = num("eps_crank_abs_max", m.eps_abs_max);
+  j["eps_from_difference"] = m.eps_from_difference;
+  j["delta"] = num("delta", m.coefficients.delta);  // seed 004, eq. (12)
+  j["H"] = num("H", m.coefficients.H);              // seed 004, eq. (13)
+  j["k_p"] = num("k_p", m.coefficients.k_p);        // seed 004, eq. (14)
+  // seed 000, Table 1
+  j["coupling_torque_swing"] = num("coupling_torque_swing", m.coupling_torque_swing);
+  j["twist_swing"] = num("twist_swing", m.twist_swing);
+  j["twist_rate_swing"] = num("twist_rate_swing", m.twist_rate_swing);
+  j["twist_accel_swing"] = num("twist_accel_swing", m.twist_accel_swing);
+  j["missing_columns"] = m.missing_columns;
+
+  j["steady_state"] = {
+      {"reached", ss.reached},
+      {"after_revolutions", ss.after_revolutions},
+      {"window_revolutions", ss.window_revolutions},
+      {"revolutions", ss.revolutions_counted},
+      {"relative_tolerance", ss.relative_tolerance},
+      // No whole revolution → no settling time; that is not a numerical failure.
+      {"t_settled", ss.after_revolutions >= 0 ? num("steady_state.t_settled", ss.t_settled)
+                                              : json(nullptr)},
+      {"t_begin", num("steady_state.t_begin", ss.t_begin)},
+      {"t_end", num("steady_state.t_end", ss.t_end)},
+      {"rows", m.rows},
+      {"note", ss.note}};
+
+  const EnergyAudit& en = run.energy;
+  j["energy"] = {
+      {"motor_work", num("energy.motor_work", en.motor_work)},
+      {"damping_dissipation", num("energy.damping_dissipation", en.damping_dissipation)},
+      {"friction_dissipation", num("energy.friction_dissipation", en.friction_dissipation)},
+      {"load_work", num("energy.load_work", en.load_work)},
+      {"kinetic_change", num("energy.kinetic_change", en.kinetic_final - en.kinetic_initial)},
+      {"potential_change",
+       num("energy.potential_change", en.potential_final - en.potential_initial)},
+      {"residual", num("energy.residual", en.residual())}};
+  j["energy_residual_rel"] = num("energy_residual_rel", en.residualRelative());
+  j["constraint_error_max"] = num("constraint_error_max", run.stats.constraint_error_max);
+  j["steps"] = run.stats.steps;
+  j["realizations"] = run.stats.realizations;
+  j["cpu_seconds"] = num("cpu_seconds", run.stats.cpu_seconds);
+  j["real_time_factor"] = run.stats.cpu_seconds > 0
+                              ? num("real_time_factor", simulated_time / run.stats.cpu_seconds)
+                              : json(nullptr);  // not measured
+
+  json rx = json::object();
+  for (const auto& [name, s] : m.reactions) {
+    const std::string p = "reactions." + name + ".";
+    rx[name] = {{"min", num(p + "min", s.min)},
+                {"max", num(p + "max", s.max)},
+                {"mean", num(p + "mean", s.mean)},
+                {"abs_max", num(p + "abs_max", s.abs_max)}};
+  }
+  j["reactions"] = rx;
+
+  std::string status = run.stats.status;
+  if (ss.finite_rows < run.timeseries.rows.size())
+    status += "; timeseries has non-finite values (" + ss.note + ")";
+  if (!num.non_finite.empty())
+    status += "; non-finite values written as null: " + joined(num.non_finite);
+  j["status"] = status;
+  j["non_finite"] = num.non_finite;
+  return j;
+}
+
+void writeSummaryAtomic(const std::string& path, const nlohmann::json& summary) {
+  writeFileAtomic(path, summary.dump(2) + "\n");
+}
+
+std::string summaryText(const nlohmann::json& s) {
+  // printf-style formatting of a JSON number, "n/a" for null or absent.
+  auto f = [](const json& v, const char* fmt) -> std::string {
+    if (!v.is_number()) return "n/a";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, fmt, v.get<double>());
+    return buf;
+  };
+  auto at = [&s](const char* a, const char* b = nullptr) -> json {
+    if (!s.contains(a)) return nullptr;
+    if (!b) return s.at(a);
+    return s.at(a).contains(b) ? s.at(a).at(b) : json(nullptr);
+  };
+  auto str = [](const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); };
+
+  std::ostringstream o;
+  o << "scene        " << str(at("scene")) << "  (model " << str(at("model")) << ", integrator "
+    << str(at("integrator")) << ")\n";
+  o << "status       " << str(at("status")) << "\n";
+  o << "crank speed  mean " << f(at("omega_crank", "mean"), "%.4g") << " rad/s, min "
+    << f(at("omega_crank", "min"), "%.4g") << ", max " << f(at("omega_crank", "max"), "%.4g")
+    << ", delta " << f(at("delta"), "%.4g") << ", H " << f(at("H"), "%.4g") << ", k_p "
+    << f(at("k_p"), "%.4g") << "\n";
+  const json& st = at("steady_state");
+  if (st.is_object()) {
+    o << "steady state " << (st.value("reached", false) ? "reached" : "NOT reached");
+    if (st.value("after_revolutions", -1) >= 0)
+      o << " from revolution " << st.value("after_revolutions", -1) << " of "
+        << st.value("revolutions", 0);
+    o << "; window " << st.value("window_revolutions", 0) << " rev, t = "
+      << f(st.value("t_begin", json(nullptr)), "%.4g") << " ... "
+      << f(st.value("t_end", json(nullptr)), "%.4g") << " s\n";
+  }
+  o << "coupling     torque swing " << f(at("coupling_torque_swing"), "%.4g")
+    << " N·m, twist swing " << f(at("twist_swing"), "%.3g") << " rad\n";
+  o << "energy       residual " << f(at("energy", "residual"), "%.3g") << " J (relative "
+    << f(at("energy_residual_rel"), "%.2e") << ")\n";
+  o << "constraints  max error " << f(at("constraint_error_max"), "%.2e") << "\n";
+  o << "steps        " << str(at("steps")) << " steps, " << str(at("realizations"))
+    << " right-hand-side evaluations\n";
+  o << "cpu          " << f(at("cpu_seconds"), "%.3g") << " s for "
+    << f(at("simulated_time"), "%.4g") << " s simulated, real-time factor "
+    << f(at("real_time_factor"), "%.3g") << "\n";
+  return o.str();
+}
+
+}  // namespace rollerdyn
