@@ -1,0 +1,298 @@
+#include "scene/SceneDocument.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "scene/SceneSchema.h"
+
+namespace rollerdyn {
+
+namespace {
+
+// 1-based line of a yaml-cpp mark (which counts from 0); 0 for nodes built in memory.
+int lineOfMark(const YAML::Mark& m) { return m.is_null() ? 0 : m.line + 1; }
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string s;
+  for (size_t i = 0; i < words.size(); ++i) s += (i ? ", " : "") + words[i];
+  return s;
+}
+
+// The expected-clause for a key under map `map_path`: the list of allowed keys at that level.
+std::string allowedKeys(const std::string& map_path) {
+  const std::string where =
+      map_path.empty() ? "one of the top-level keys" : "one of the keys allowed under " + map_path;
+  return where + ": " + joined(sceneChildKeys(map_path));
+}
+
+// Levenshtein distance, for "did you mean" hints on typos.
+size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diag = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// "unknown key 'cuont' (did you mean 'count'?)"
+std::string unknownKey(const std::string& map_path, const std::string& key) {
+  std::string best;
+  size_t best_d = 3;  // suggest only close matches: at most 2 edits
+  for (const std::string& c : sceneChildKeys(map_path)) {
+    const size_t d = editDistance(key, c);
+    if (d < best_d) {
+      best_d = d;
+      best = c;
+    }
+  }
+  std::string got = "unknown key '" + key + "'";
+  if (!best.empty()) got += " (did you mean '" + best + "'?)";
+  return got;
+}
+
+bool pathWithin(const std::string& path, const std::string& prefix) {
+  if (path.compare(0, prefix.size(), prefix) != 0) return false;
+  return path.size() == prefix.size() || path[prefix.size()] == '.' || path[prefix.size()] == '[';
+}
+
+std::string parentOf(const std::string& path) {
+  const size_t dot = path.find_last_of(".[");
+  return dot == std::string::npos ? "" : path.substr(0, dot);
+}
+
+std::string trim(const std::string& s) {
+  const size_t b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  const size_t e = s.find_last_not_of(" \t");
+  return s.substr(b, e - b + 1);
+}
+
+std::vector<std::string> splitPath(const std::string& path) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  while (true) {
+    const size_t dot = path.find('.', start);
+    parts.push_back(path.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return parts;
+}
+
+}  // namespace
+
+std::string childPath(const std::string& parent, const std::string& key) {
+  return parent.empty() ? key : parent + "." + key;
+}
+
+std::string describeNode(const YAML::Node& node) {
+  if (!node.IsDefined()) return "nothing (key missing)";
+  switch (node.Type()) {
+    case YAML::NodeType::Null: return "nothing (null)";
+    case YAML::NodeType::Map: return "a map";
+    case YAML::NodeType::Sequence: return "a list of " + std::to_string(node.size());
+    case YAML::NodeType::Scalar:
+      // A quoted scalar is a string in YAML even if it looks like a number; show the quotes.
+      return node.Tag() == "!" ? "\"" + node.Scalar() + "\"" : node.Scalar();
+    case YAML::NodeType::Undefined: break;
+  }
+  return "nothing";
+}
+
+SceneDocument::SceneDocument(const std::string& yaml_text, std::string file_label)
+    : file_(std::move(file_label)) {
+  std::vector<YAML::Node> docs;
+  try {
+    docs = YAML::LoadAll(yaml_text);
+  } catch (const YAML::ParserException& e) {
+    throw SceneError::inFile(file_, lineOfMark(e.mark), "", "valid YAML",
+                             "a syntax error: " + e.msg);
+  }
+  if (docs.empty()) {
+    throw SceneError::inFile(file_, 1, "", "a map of scene keys (" + allowedKeys("") + ")",
+                             "an empty document");
+  }
+  if (docs.size() > 1) {
+    // A second document would be silently dropped by a single-document loader.
+    throw SceneError::inFile(file_, lineOfMark(docs[1].Mark()), "",
+                             "exactly one YAML document per scene file",
+                             "a second document (after '---')");
+  }
+  root_ = docs[0];
+  if (!root_.IsMap()) {
+    throw SceneError::inFile(file_, std::max(1, lineOfMark(root_.Mark())), "",
+                             "a map of scene keys (" + allowedKeys("") + ")",
+                             describeNode(root_));
+  }
+  lines_[""] = std::max(1, lineOfMark(root_.Mark()));
+  recordLines(root_, "");
+}
+
+void SceneDocument::recordLines(const YAML::Node& node, const std::string& path) {
+  if (node.IsMap()) {
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      if (!it->first.IsScalar()) continue;  // checkStructure() rejects it with its line
+      const std::string child = childPath(path, it->first.Scalar());
+      lines_.emplace(child, lineOfMark(it->first.Mark()));  // first occurrence wins
+      recordLines(it->second, child);
+    }
+  } else if (node.IsSequence()) {
+    for (size_t i = 0; i < node.size(); ++i) {
+      const std::string child = path + "[" + std::to_string(i) + "]";
+      lines_.emplace(child, lineOfMark(node[i].Mark()));
+      recordLines(node[i], child);
+    }
+  }
+}
+
+int SceneDocument::lineOf(const std::string& path) const {
+  std::string p = path;
+  while (true) {
+    const auto it = lines_.find(p);
+    if (it != lines_.end() && it->second > 0) return it->second;
+    if (p.empty()) return 0;
+    p = parentOf(p);
+  }
+}
+
+const SceneDocument::Override* SceneDocument::overrideOf(const std::string& path) const {
+  // The latest override whose path encloses `path` set it last: a later --set of a whole map
+  // replaces an earlier --set of one of its keys, and a later --set of a key inside an earlier
+  // --set map replaces just that key.
+  for (auto it = overrides_.rbegin(); it != overrides_.rend(); ++it)
+    if (pathWithin(path, it->path)) return &*it;
+  return nullptr;
+}
+
+int SceneDocument::overrideFor(const std::string& path) const {
+  const Override* o = overrideOf(path);
+  return o ? o->n : 0;
+}
+
+void SceneDocument::failAt(const std::string& path, int line, const std::string& expected,
+                           const std::string& got) const {
+  if (const Override* o = overrideOf(path)) failOverride(o->n, o->arg, path, expected, got);
+  throw SceneError::inFile(file_, line, path, expected, got);
+}
+
+void SceneDocument::failOverride(int n, const std::string& arg, const std::string& key,
+                                 const std::string& expected, const std::string& got) const {
+  throw SceneError::inOverride(file_, n, arg, key, expected, got);
+}
+
+void SceneDocument::fail(const std::string& path, const std::string& expected,
+                         const std::string& got) const {
+  failAt(path, lineOf(path), expected, got);
+}
+
+void SceneDocument::failMissing(const std::string& path, const std::string& expected) const {
+  failAt(path, lineOf(parentOf(path)), expected, "nothing (key missing)");
+}
+
+YAML::Node SceneDocument::find(const std::string& path) const {
+  YAML::Node cur = root_;
+  for (const std::string& seg : splitPath(path)) {
+    if (!cur.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+    const YAML::Node& as_const = cur;  // const lookup never inserts the key
+    YAML::Node next = as_const[seg];
+    if (!next.IsDefined()) return next;
+    cur.reset(next);  // reset, not '=': assignment would overwrite the node inside the tree
+  }
+  return cur;
+}
+
+void SceneDocument::applyOverride(int n, const std::string& arg) {
+  const size_t eq = arg.find('=');
+  if (eq == std::string::npos) {
+    failOverride(n, arg, arg, "KEY.PATH=VALUE, e.g. coupling.damping=8000", "no '='");
+  }
+  const std::string path = trim(arg.substr(0, eq));
+  const std::string text = trim(arg.substr(eq + 1));
+
+  // The key path must exist in the schema before anything is touched.
+  if (path.empty() || !(findSceneKey(path) || isSceneMap(path))) {
+    std::string map_path;
+    std::string missing = path;
+    for (const std::string& seg : splitPath(path)) {
+      const std::string next = childPath(map_path, seg);
+      if (findSceneKey(next)) {
+        failOverride(n, arg, path, "no key below leaf key " + next,
+                     "unknown key path '" + path + "'");
+      }
+      if (seg.empty() || !isSceneMap(next)) {
+        missing = seg;
+        break;
+      }
+      map_path = next;
+    }
+    failOverride(n, arg, path, "a key path of the scene schema; " + allowedKeys(map_path),
+                 unknownKey(map_path, missing));
+  }
+
+  YAML::Node value;
+  try {
+    value = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    failOverride(n, arg, path, "a YAML scalar or flow value", "'" + text + "' (" + e.msg + ")");
+  }
+
+  // Walk to the parent map, creating maps the file omits (an override may set an optional key
+  // of a section the file leaves out entirely).
+  const std::vector<std::string> segs = splitPath(path);
+  YAML::Node cur = root_;
+  std::string cur_path;
+  for (size_t i = 0; i + 1 < segs.size(); ++i) {
+    cur_path = childPath(cur_path, segs[i]);
+    YAML::Node next = cur[segs[i]];
+    if (!next.IsDefined() || next.IsNull()) {
+      cur[segs[i]] = YAML::Node(YAML::NodeType::Map);
+      next.reset(cur[segs[i]]);
+    } else if (!next.IsMap()) {
+      // The file itself is wrong here; report it where it is, not as the override's fault.
+      fail(cur_path, "a map (" + allowedKeys(cur_path) + ")", describeNode(next));
+    }
+    cur.reset(next);
+  }
+  cur[segs.back()] = value;
+  overrides_.push_back({n, arg, path});
+}
+
+void SceneDocument::checkStructure() const { checkMap(root_, ""); }
+
+void SceneDocument::checkMap(const YAML::Node& node, const std::string& path) const {
+  if (node.IsNull()) return;  // an empty section: every key in it takes its default
+  if (!node.IsMap()) fail(path, "a map (" + allowedKeys(path) + ")", describeNode(node));
+
+  std::map<std::string, int> seen;  // key -> line of its first occurrence
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    const int key_line = lineOfMark(it->first.Mark());
+    if (!it->first.IsScalar()) {
+      failAt(childPath(path, "?"), key_line, "a plain key name (" + allowedKeys(path) + ")",
+             describeNode(it->first));
+    }
+    const std::string key = it->first.Scalar();
+    const std::string child = childPath(path, key);
+    const auto first = seen.find(key);
+    if (first != seen.end()) {
+      // yaml-cpp keeps both entries and lookups see only the first: never let one hide.
+      failAt(child, key_line,
+             "each key at most once (first given at line " + std::to_string(first->second) + ")",
+             "a second '" + key + "'");
+    }
+    seen.emplace(key, key_line);
+    if (isSceneMap(child)) {
+      checkMap(it->second, child);
+    } else if (!findSceneKey(child)) {
+      failAt(child, key_line, allowedKeys(path), unknownKey(path, key));
+    }
+  }
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,247 @@
+#include "scene/SceneSchema.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Interval helpers; names read as the condition they enforce.
+Range anyFinite() { return {-kInf, false, kInf, false}; }
+Range positive() { return {0.0, false, kInf, false}; }
+Range nonNegative() { return {0.0, true, kInf, false}; }
+Range between(double lo, bool lo_in, double hi, bool hi_in) { return {lo, lo_in, hi, hi_in}; }
+
+KeySpec number(std::string path, std::string unit, Presence presence, Range range, double def,
+               std::string meaning) {
+  return {std::move(path), KeyKind::Number, std::move(unit), presence, range, def, "", {},
+          std::move(meaning)};
+}
+
+KeySpec integer(std::string path, Presence presence, Range range, double def,
+                std::string meaning) {
+  return {std::move(path), KeyKind::Integer, "-", presence, range, def, "", {},
+          std::move(meaning)};
+}
+
+KeySpec choice(std::string path, Presence presence, std::vector<std::string> choices,
+               std::string def, std::string meaning) {
+  return {std::move(path), KeyKind::Choice, "-", presence, anyFinite(), 0.0, std::move(def),
+          std::move(choices), std::move(meaning)};
+}
+
+std::vector<KeySpec> buildSchema() {
+  using P = Presence;
+  return {
+      {"source", KeyKind::Text, "-", P::Required, anyFinite(), 0.0, "", {},
+       "citation of the paper (and seed file) the scene comes from"},
+
+      number("simulation.t_end", "s", P::Required, positive(), 0.0, "simulated time span"),
+      number("simulation.accuracy", "-", P::Optional, between(0.0, false, 1.0, false), 1e-6,
+             "integrator relative accuracy"),
+      choice("simulation.integrator", P::Optional,
+             {"RungeKuttaMerson", "RungeKutta3", "RungeKuttaFeldberg", "RungeKutta2",
+              "ExplicitEuler", "Verlet", "SemiExplicitEuler2", "CPodes"},
+             "RungeKuttaMerson", "Simbody integrator of the multibody model"),
+      number("simulation.output_step", "s", P::Optional, positive(), 0.005,
+             "spacing of output rows (<= t_end)"),
+      number("simulation.constraint_tolerance", "-", P::Conditional,
+             between(0.0, false, 1.0, false), 0.0,
+             "constraint projection tolerance (default: simulation.accuracy)"),
+      number("simulation.steady_window_revolutions", "-", P::Optional, positive(), 5.0,
+             "crank revolutions at the end of the run used for steady-state metrics"),
+
+      number("initial.crank_angle_deg", "deg", P::Optional, anyFinite(), 0.0,
+             "crank angle of cart 1's crank at t = 0"),
+      number("initial.crank_speed", "rad/s", P::Optional, anyFinite(), 0.0,
+             "crank speed at t = 0 (motor starts at the same reduced speed)"),
+      number("initial.twist", "rad", P::Optional, anyFinite(), 0.0,
+             "coupling twist phi1 - phi2 at t = 0"),
+
+      number("crank.radius", "m", P::Required, positive(), 0.0, "crank radius r"),
+      number("crank.offset_deg", "deg", P::Required, between(0.0, true, 360.0, false), 0.0,
+             "angle between consecutive cranks"),
+      number("crank.inertia_per_crank", "kg·m²", P::Optional, nonNegative(), 0.0,
+             "J'_K, one crank about the shaft axis"),
+      number("crank.shaft_inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
+             "crankshaft without cranks about its axis"),
+
+      choice("rods.model", P::Required, {"distributed", "split", "massless"}, "",
+             "connecting-rod mass model"),
+      number("rods.length", "m", P::Required, positive(), 0.0,
+             "rod length l, crank pin to cart hinge (l > r)"),
+      number("rods.mass", "kg", P::Conditional, nonNegative(), 0.0,
+             "mass of one rod (required unless rods.model is massless)"),
+      number("rods.inertia_com", "kg·m²", P::Conditional, nonNegative(), 0.0,
+             "rod inertia about its centre of mass (default m·l²/12)"),
+
+      integer("carts.count", P::Required, between(1.0, true, 1000.0, true), 0.0,
+              "number of carts n"),
+      {"carts.sides", KeyKind::Sides, "-", P::Conditional, anyFinite(), 0.0, "same", {},
+       "side of the shaft of each cart"},
+      number("carts.mass", "kg", P::Required, positive(), 0.0, "m'_B, one cart without rod"),
+      number("carts.geometry.a", "m", P::Optional, nonNegative(), 0.0,
+             "half distance between the two compacting rollers"),
+      number("carts.geometry.b", "m", P::Conditional, nonNegative(), 0.0,
+             "half distance between the two guide rollers (> 0 with guide friction)"),
+      number("carts.geometry.p", "m", P::Optional, anyFinite(), 0.0,
+             "horizontal distance hinge B -> cart centre of mass / roller midpoint"),
+      number("carts.geometry.e", "m", P::Optional, anyFinite(), 0.0,
+             "depth of the compacting-roller contact below B"),
+      number("carts.geometry.D", "m", P::Optional, nonNegative(), 0.0,
+             "compacting roller diameter (informational)"),
+      number("carts.geometry.d", "m", P::Optional, nonNegative(), 0.0,
+             "guide roller diameter (friction moment arm d/2)"),
+      number("carts.geometry.com_height", "m", P::Optional, anyFinite(), 0.0,
+             "height of the cart's centre of mass above B"),
+
+      {"motor.enabled", KeyKind::Flag, "-", P::Optional, anyFinite(), 1.0, "", {},
+       "whether the motor torque is applied"},
+      number("motor.omega_sync", "rad/s", P::Required, positive(), 0.0,
+             "synchronous rotor speed omega0"),
+      number("motor.breakdown_torque", "N·m", P::Required, positive(), 0.0,
+             "breakdown (critical) torque M_kr at the rotor"),
+      number("motor.critical_slip", "-", P::Conditional, between(0.0, false, 1.0, false), 0.0,
+             "critical slip s_kr (way 1 of 3)"),
+      number("motor.omega_critical", "rad/s", P::Conditional, positive(), 0.0,
+             "critical rotor speed omega_kr, s_kr = 1 - omega_kr/omega0 (way 2 of 3)"),
+      number("motor.omega_nominal", "rad/s", P::Conditional, positive(), 0.0,
+             "nominal rotor speed omega_n (way 3 of 3, with motor.overload_ratio)"),
+      number("motor.overload_ratio", "-", P::Conditional, between(1.0, false, kInf, false), 0.0,
+             "lambda = M_kr / M_n (way 3 of 3, with motor.omega_nominal)"),
+      number("motor.rotor_inertia", "kg·m²", P::Required, positive(), 0.0,
+             "rotor inertia J_p"),
+
+      number("reducer.ratio", "-", P::Required, positive(), 0.0, "u = omega_rotor / omega_crank"),
+      number("reducer.efficiency", "-", P::Required, between(0.0, false, 1.0, true), 0.0,
+             "efficiency eta"),
+      number("reducer.inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
+             "J_red referred to the motor shaft"),
+      number("reducer.delta", "-", P::Optional, positive(), 1.0,
+             "delta, seed 000 eq. (1) factor on the motor-side inertia"),
+
+      choice("coupling.type", P::Required, {"elastic", "rigid"}, "", "coupling model"),
+      number("coupling.stiffness", "N·m/rad", P::Conditional, positive(), 0.0,
+             "c reduced to the crank axis (required when elastic)"),
+      number("coupling.damping", "N·m·s/rad", P::Optional, nonNegative(), 0.0,
+             "k reduced to the crank axis"),
+      number("coupling.inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
+             "J_m, coupling hub on the motor shaft"),
+
+      number("flywheel.inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
+             "flywheel about its own shaft; 0 = none"),
+      choice("flywheel.location", P::Optional, {"crankshaft", "motor_shaft"}, "crankshaft",
+             "shaft carrying the flywheel"),
+
+      number("loads.roller_force_front", "N", P::Optional, nonNegative(), 0.0,
+             "F_j1, horizontal force on the front compacting roller"),
+      number("loads.roller_force_rear", "N", P::Optional, nonNegative(), 0.0,
+             "F_j2, horizontal force on the rear compacting roller"),
+      number("loads.roller_normal_front", "N", P::Optional, nonNegative(), 0.0,
+             "R_j1, upward reaction of the mix on the front roller"),
+      number("loads.roller_normal_rear", "N", P::Optional, nonNegative(), 0.0,
+             "R_j2, upward reaction of the mix on the rear roller"),
+      choice("loads.roller_force_direction", P::Optional, {"opposes_velocity", "as_printed"},
+             "opposes_velocity", "direction law of the horizontal roller forces"),
+      number("loads.guide_friction.coefficient", "-", P::Optional,
+             between(0.0, true, 1.0, false), 0.0, "f, reduced guide-roller friction coefficient"),
+      number("loads.gravity", "m/s²", P::Optional, nonNegative(), 9.81,
+             "g; 0 = no gravity"),
+      number("loads.velocity_smoothing", "m/s", P::Optional, positive(), 1e-3,
+             "v_s in sign(v) ~ tanh(v/v_s)"),
+
+      choice("reduced.kinematics", P::Optional, {"exact", "truncated"}, "exact",
+             "slider-crank kinematics of the reduced model"),
+      choice("reduced.integrator", P::Optional, {"cvode", "baranov"}, "cvode",
+             "integrator of the reduced model"),
+      number("reduced.baranov_step_deg", "deg", P::Optional, between(0.0, false, 10.0, true),
+             1.0, "crank-angle step of the Baranov scheme"),
+  };
+}
+
+std::string joinChoices(const std::vector<std::string>& words) {
+  std::string s;
+  for (size_t i = 0; i < words.size(); ++i) s += (i ? ", " : "") + words[i];
+  return s;
+}
+
+std::string describeRange(const Range& r) {
+  const bool has_lo = std::isfinite(r.lo);
+  const bool has_hi = std::isfinite(r.hi);
+  if (has_lo && has_hi) {
+    return std::string("in ") + (r.lo_inclusive ? "[" : "(") + formatNumber(r.lo) + ", " +
+           formatNumber(r.hi) + (r.hi_inclusive ? "]" : ")");
+  }
+  if (has_lo) return std::string(r.lo_inclusive ? ">= " : "> ") + formatNumber(r.lo);
+  if (has_hi) return std::string(r.hi_inclusive ? "<= " : "< ") + formatNumber(r.hi);
+  return "";
+}
+
+}  // namespace
+
+const std::vector<KeySpec>& sceneSchema() {
+  static const std::vector<KeySpec> schema = buildSchema();
+  return schema;
+}
+
+const KeySpec* findSceneKey(const std::string& path) {
+  for (const KeySpec& k : sceneSchema())
+    if (k.path == path) return &k;
+  return nullptr;
+}
+
+bool isSceneMap(const std::string& path) {
+  if (path.empty()) return true;
+  const std::string prefix = path + ".";
+  for (const KeySpec& k : sceneSchema())
+    if (k.path.compare(0, prefix.size(), prefix) == 0) return true;
+  return false;
+}
+
+std::vector<std::string> sceneChildKeys(const std::string& map_path) {
+  const std::string prefix = map_path.empty() ? "" : map_path + ".";
+  std::vector<std::string> children;
+  for (const KeySpec& k : sceneSchema()) {
+    if (k.path.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string rest = k.path.substr(prefix.size());
+    const std::string child = rest.substr(0, rest.find('.'));
+    bool seen = false;
+    for (const std::string& c : children) seen = seen || c == child;
+    if (!seen) children.push_back(child);
+  }
+  return children;
+}
+
+std::string describeExpected(const KeySpec& spec) {
+  const std::string unit = (spec.unit.empty() || spec.unit == "-") ? "" : " [" + spec.unit + "]";
+  switch (spec.kind) {
+    case KeyKind::Number: {
+      const std::string range = describeRange(spec.range);
+      return (range.empty() ? "a finite number" : "a number " + range) + unit;
+    }
+    case KeyKind::Integer: {
+      const std::string range = describeRange(spec.range);
+      return range.empty() ? "an integer" : "an integer " + range;
+    }
+    case KeyKind::Text: return "a text scalar";
+    case KeyKind::Choice: return "one of: " + joinChoices(spec.choices);
+    case KeyKind::Flag: return "true or false";
+    case KeyKind::Sides:
+      return "a list of same/opposite with one entry per cart, or one of the words "
+             "same, opposite, alternate";
+  }
+  return "?";
+}
+
+std::string formatNumber(double v) {
+  std::ostringstream os;
+  os.precision(12);
+  os << v;
+  return os.str();
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,71 @@
+// The scene-file schema as data: every key path a scene file may contain, its type, unit,
+// whether it is required, its default and its allowed range.
+//
+// One table serves three readers, so they cannot drift apart: the parser rejects any key not in
+// it (a typo is never silently ignored), the --set override checks its key path against it
+// before touching the tree, and the tests check that model/README.md documents every key.
+// Rules that couple several keys (l > r, one way to give the critical slip, b > 0 with guide
+// friction, ...) are not expressible per key and live in SceneParser.cpp.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rollerdyn {
+
+enum class KeyKind {
+  Number,   // finite real, plain (unquoted) YAML scalar
+  Integer,  // whole number
+  Text,     // any scalar, read as a string
+  Choice,   // one of a fixed list of words
+  Flag,     // true | false
+  Sides,    // carts.sides: list of same/opposite, or the shorthand same | opposite | alternate
+};
+
+enum class Presence {
+  Required,     // must be in the file (or given by --set)
+  Optional,     // has a fixed default
+  Conditional,  // required or defaulted depending on other keys; decided in SceneParser.cpp
+};
+
+// Allowed interval of a Number / Integer key; infinite ends mean "unbounded".
+struct Range {
+  double lo;
+  bool lo_inclusive;
+  double hi;
+  bool hi_inclusive;
+};
+
+struct KeySpec {
+  std::string path;                  // dotted key path, e.g. "carts.geometry.b"
+  KeyKind kind;
+  std::string unit;                  // SI unit (deg only under *_deg keys); "-" if dimensionless
+  Presence presence;
+  Range range;                       // Number / Integer only
+  double default_number;             // Optional Number / Integer / Flag (0 or 1)
+  std::string default_text;          // Optional Text / Choice
+  std::vector<std::string> choices;  // Choice only
+  std::string meaning;               // one line, for messages and docs
+};
+
+// Every leaf key, in documentation order.
+const std::vector<KeySpec>& sceneSchema();
+
+// The leaf spec of `path`, or nullptr if `path` is not a leaf key of the schema.
+const KeySpec* findSceneKey(const std::string& path);
+
+// Whether `path` names a map of the schema ("" is the top level, "carts.geometry" a nested map).
+bool isSceneMap(const std::string& path);
+
+// The keys directly under map `map_path`, in schema order (e.g. "carts" -> count, sides, mass,
+// geometry).
+std::vector<std::string> sceneChildKeys(const std::string& map_path);
+
+// The expected-clause for a single value of `spec`, e.g. "a number > 0 [m]",
+// "an integer in [1, 1000]", "one of: elastic, rigid".
+std::string describeExpected(const KeySpec& spec);
+
+// Compact, round-trippable text of a number for messages ("0.2", "1e-06", "200000").
+std::string formatNumber(double v);
+
+}  // namespace rollerdyn

@@ -1,0 +1,213 @@
+// The schema table, the parser and model/README.md agree: every key is documented, every
+// documented key exists, and every key's value actually reaches the Scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "scene/SceneParser.h"
+#include "scene/SceneSchema.h"
+
+namespace rollerdyn {
+namespace {
+
+std::string readme() {
+  std::ifstream in(std::string(ROLLERDYN_SOURCE_DIR) + "/model/README.md");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Key paths in the first column of the README's key table: rows starting "| `key` |".
+std::set<std::string> documentedKeys() {
+  std::set<std::string> keys;
+  const std::regex row(R"(^\| `([a-z_.A-Z]+)` \|)");
+  std::istringstream in(readme());
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, row)) keys.insert(m[1]);
+  }
+  return keys;
+}
+
+TEST(SceneSchema, ReadmeDocumentsEveryKeyAndNoOther) {
+  const std::set<std::string> documented = documentedKeys();
+  std::set<std::string> schema;
+  for (const KeySpec& k : sceneSchema()) schema.insert(k.path);
+  for (const std::string& k : schema) EXPECT_TRUE(documented.count(k)) << "README lacks " << k;
+  for (const std::string& k : documented) EXPECT_TRUE(schema.count(k)) << "README has extra " << k;
+  EXPECT_GE(schema.size(), 50u);
+}
+
+TEST(SceneSchema, FixedKeyPathsExist) {
+  // Other commands and scripts rely on these exact paths.
+  for (const char* k :
+       {"simulation.t_end", "simulation.accuracy", "simulation.integrator", "crank.offset_deg",
+        "carts.count", "rods.model", "coupling.type", "coupling.stiffness", "coupling.damping",
+        "flywheel.inertia", "loads.roller_force_direction", "loads.guide_friction.coefficient",
+        "reduced.kinematics", "reduced.baranov_step_deg", "initial.crank_angle_deg",
+        "carts.geometry.a", "motor.critical_slip", "carts.sides"})
+    EXPECT_NE(findSceneKey(k), nullptr) << k;
+  EXPECT_TRUE(isSceneMap("loads.guide_friction"));
+  EXPECT_FALSE(isSceneMap("loads.gravity"));
+  EXPECT_EQ(sceneChildKeys("carts"),
+            (std::vector<std::string>{"count", "sides", "mass", "geometry"}));
+}
+
+TEST(SceneSchema, ExpectedClauses) {
+  EXPECT_EQ(describeExpected(*findSceneKey("crank.radius")), "a number > 0 [m]");
+  EXPECT_EQ(describeExpected(*findSceneKey("reducer.efficiency")), "a number in (0, 1]");
+  EXPECT_EQ(describeExpected(*findSceneKey("loads.guide_friction.coefficient")),
+            "a number in [0, 1)");
+  EXPECT_EQ(describeExpected(*findSceneKey("carts.count")), "an integer in [1, 1000]");
+  EXPECT_EQ(describeExpected(*findSceneKey("coupling.type")), "one of: elastic, rigid");
+  EXPECT_EQ(describeExpected(*findSceneKey("initial.twist")), "a finite number [rad]");
+}
+
+// Every key set to a value different from its default; each must land in the Scene.
+const char* kFullScene = R"(source: every key
+simulation:
+  t_end: 3.0
+  accuracy: 1.0e-5
+  integrator: CPodes
+  output_step: 0.01
+  constraint_tolerance: 1.0e-7
+  steady_window_revolutions: 3
+initial:
+  crank_angle_deg: 45
+  crank_speed: 2.0
+  twist: 0.001
+crank:
+  radius: 0.25
+  offset_deg: 60
+  inertia_per_crank: 0.5
+  shaft_inertia: 0.7
+rods:
+  model: split
+  length: 0.9
+  mass: 50
+  inertia_com: 4.0
+carts:
+  count: 3
+  sides: [opposite, same, opposite]
+  mass: 900
+  geometry:
+    a: 0.1
+    b: 0.2
+    p: 0.3
+    e: 0.4
+    D: 0.5
+    d: 0.06
+    com_height: 0.7
+motor:
+  enabled: false
+  omega_sync: 157.08
+  breakdown_torque: 300
+  critical_slip: 0.2
+  rotor_inertia: 0.25
+reducer:
+  ratio: 12
+  efficiency: 0.8
+  inertia: 0.05
+  delta: 1.1
+coupling:
+  type: elastic
+  stiffness: 150000
+  damping: 3000
+  inertia: 0.4
+flywheel:
+  inertia: 20
+  location: motor_shaft
+loads:
+  roller_force_front: 100
+  roller_force_rear: 200
+  roller_normal_front: 300
+  roller_normal_rear: 400
+  roller_force_direction: as_printed
+  guide_friction:
+    coefficient: 0.02
+  gravity: 9.8
+  velocity_smoothing: 0.01
+reduced:
+  kinematics: truncated
+  integrator: baranov
+  baranov_step_deg: 2
+)";
+
+TEST(SceneSchema, FullSceneCoversTheSchema) {
+  // If a key is added to the schema, this scene (and the checks below) must grow with it.
+  for (const KeySpec& k : sceneSchema()) {
+    // The critical slip has three alternative ways; the full scene uses way 1.
+    if (k.path == "motor.omega_critical" || k.path == "motor.omega_nominal" ||
+        k.path == "motor.overload_ratio")
+      continue;
+    const std::string leaf = k.path.substr(k.path.rfind('.') + 1);
+    EXPECT_NE(std::string(kFullScene).find(leaf + ":"), std::string::npos) << k.path;
+  }
+}
+
+TEST(SceneSchema, EveryKeyReachesTheScene) {
+  const Scene s = parseSceneText(kFullScene, "full.yaml");
+  const double deg = M_PI / 180.0;
+  EXPECT_EQ(s.source, "every key");
+  EXPECT_DOUBLE_EQ(s.simulation.t_end, 3.0);
+  EXPECT_DOUBLE_EQ(s.simulation.accuracy, 1e-5);
+  EXPECT_EQ(s.simulation.integrator, "CPodes");
+  EXPECT_DOUBLE_EQ(s.simulation.output_step, 0.01);
+  EXPECT_DOUBLE_EQ(s.simulation.constraint_tolerance, 1e-7);
+  EXPECT_DOUBLE_EQ(s.simulation.steady_window_revolutions, 3.0);
+  EXPECT_DOUBLE_EQ(s.initial.crank_angle, 45 * deg);
+  EXPECT_DOUBLE_EQ(s.initial.crank_speed, 2.0);
+  EXPECT_DOUBLE_EQ(s.initial.twist, 0.001);
+  EXPECT_DOUBLE_EQ(s.crank.radius, 0.25);
+  EXPECT_DOUBLE_EQ(s.crank.offset, 60 * deg);
+  EXPECT_DOUBLE_EQ(s.crank.inertia_per_crank, 0.5);
+  EXPECT_DOUBLE_EQ(s.crank.shaft_inertia, 0.7);
+  EXPECT_EQ(s.rods.model, RodModel::Split);
+  EXPECT_DOUBLE_EQ(s.rods.length, 0.9);
+  EXPECT_DOUBLE_EQ(s.rods.mass, 50.0);
+  EXPECT_DOUBLE_EQ(s.rods.inertia_com, 4.0);
+  EXPECT_EQ(s.carts.count, 3);
+  EXPECT_EQ(s.carts.side, (std::vector<int>{-1, 1, -1}));
+  EXPECT_DOUBLE_EQ(s.carts.mass, 900.0);
+  EXPECT_DOUBLE_EQ(s.carts.geometry.a, 0.1);
+  EXPECT_DOUBLE_EQ(s.carts.geometry.b, 0.2);
+  EXPECT_DOUBLE_EQ(s.carts.geometry.p, 0.3);
+  EXPECT_DOUBLE_EQ(s.carts.geometry.e, 0.4);
+  EXPECT_DOUBLE_EQ(s.carts.geometry.D, 0.5);
+  EXPECT_DOUBLE_EQ(s.carts.geometry.d, 0.06);
+  EXPECT_DOUBLE_EQ(s.carts.geometry.com_height, 0.7);
+  EXPECT_FALSE(s.motor.enabled);
+  EXPECT_DOUBLE_EQ(s.motor.omega_sync, 157.08);
+  EXPECT_DOUBLE_EQ(s.motor.breakdown_torque, 300.0);
+  EXPECT_DOUBLE_EQ(s.motor.critical_slip, 0.2);
+  EXPECT_DOUBLE_EQ(s.motor.rotor_inertia, 0.25);
+  EXPECT_DOUBLE_EQ(s.reducer.ratio, 12.0);
+  EXPECT_DOUBLE_EQ(s.reducer.efficiency, 0.8);
+  EXPECT_DOUBLE_EQ(s.reducer.inertia, 0.05);
+  EXPECT_DOUBLE_EQ(s.reducer.delta, 1.1);
+  EXPECT_EQ(s.coupling.type, CouplingType::Elastic);
+  EXPECT_DOUBLE_EQ(s.coupling.stiffness, 150000.0);
+  EXPECT_DOUBLE_EQ(s.coupling.damping, 3000.0);
+  EXPECT_DOUBLE_EQ(s.coupling.inertia, 0.4);
+  EXPECT_DOUBLE_EQ(s.flywheel.inertia, 20.0);
+  EXPECT_EQ(s.flywheel.location, FlywheelLocation::MotorShaft);
+  EXPECT_DOUBLE_EQ(s.loads.roller_force_front, 100.0);
+  EXPECT_DOUBLE_EQ(s.loads.roller_force_rear, 200.0);
+  EXPECT_DOUBLE_EQ(s.loads.roller_normal_front, 300.0);
+  EXPECT_DOUBLE_EQ(s.loads.roller_normal_rear, 400.0);
+  EXPECT_EQ(s.loads.roller_force_direction, RollerForceDirection::AsPrinted);
+  EXPECT_DOUBLE_EQ(s.loads.guide_friction, 0.02);
+  EXPECT_DOUBLE_EQ(s.loads.gravity, 9.8);
+  EXPECT_DOUBLE_EQ(s.loads.velocity_smoothing, 0.01);
+  EXPECT_EQ(s.reduced.kinematics, KinematicsForm::Truncated);
+  EXPECT_EQ(s.reduced.integrator, ReducedIntegrator::Baranov);
+  EXPECT_DOUBLE_EQ(s.reduced.baranov_step, 2 * deg);
+}
+
+}  // namespace
+}  // namespace rollerdyn
