@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# One-step set-up on Debian 12: installs the Debian packages rollerdyn needs (only those that
+# are missing, so a second run costs nothing), then configures and builds it in Release under
+# build/. Run as root (or with sudo available). Usage: bash scripts/setup.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  cmake g++ make pkg-config
+  libsimbody-dev        # multibody engine
+  libeigen3-dev         # linear algebra of the reduced model and the analysis
+  libsundials-dev       # CVODE, the reduced model's integrator
+  libyaml-cpp-dev       # scene files
+  nlohmann-json3-dev    # summary.json and friends
+  libcli11-dev          # command line
+  googletest libgtest-dev  # tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)"
