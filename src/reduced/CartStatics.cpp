@@ -1,0 +1,74 @@
+#include "reduced/CartStatics.h"
+
+#include <cmath>
+
+#include <Eigen/Dense>
+
+#include "scene/Scene.h"
+
+namespace rollerdyn {
+
+CartStaticsResult solveCartStatics(const Scene& scene, double beta, double H, double phi_f,
+                                   double Fin) {
+  const CartGeometry& g = scene.carts.geometry;
+  const Loads& L = scene.loads;
+  const double f = L.guide_friction;
+  const double R1 = L.roller_normal_front, R2 = L.roller_normal_rear;
+  const double G = scene.cartMassWithRodShare() * L.gravity;  // seed 000 eq. (3), G at x' = p
+  // Distributed rod: half its weight reaches the cart at B (see header).
+  const double V = (scene.rods.model == RodModel::Distributed) ? 0.5 * scene.rods.mass * L.gravity : 0.0;
+  const double cb = std::cos(beta), sb = std::sin(beta);
+
+  // Right-hand side of seed 000 eq. (10) (generalised), unknowns (F, N1, N2).
+  const Eigen::Vector3d rhs(-(H + Fin),                                   // ΣX
+                            G + V - R1 - R2,                              // ΣY
+                            G * g.p - H * g.e - R1 * (g.p - g.a) - R2 * (g.p + g.a) +
+                                g.com_height * Fin);                      // ΣM about B
+
+  if (!(g.b > 0.0)) {
+    // No guide-roller base (b = 0, which the scene allows when there is no guide friction):
+    // the two guide reactions act at one point, so only their sum S = N1 + N2 is determined
+    // (ΣX, ΣY); it is reported split equally and the moment equation is not imposed.
+    double sS = 1.0;
+    double F = 0.0, S = 0.0;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      const double k = phi_f * f * sS;
+      Eigen::Matrix2d A2;
+      A2 << -cb, k, sb, -1.0;
+      const Eigen::Vector2d x2 = A2.partialPivLu().solve(rhs.head<2>());
+      F = x2(0);
+      S = x2(1);
+      const double nS = (S < 0.0) ? -1.0 : 1.0;
+      if (f == 0.0 || nS == sS) break;
+      sS = nS;
+    }
+    return {F, 0.5 * S, 0.5 * S, phi_f * f * std::abs(S)};
+  }
+
+  // friction = φ_f·f·(s1·N1 + s2·N2) with s_i = sign(N_i): piecewise linear in N. Start from the
+  // paper's case N1, N2 > 0 (s = +1) and flip a sign when the solution contradicts it; with the
+  // small friction coefficients of guide rollers this settles in at most two re-solves.
+  double s1 = 1.0, s2 = 1.0;
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    const double k1 = phi_f * f * s1, k2 = phi_f * f * s2;  // friction per unit N_i
+    Eigen::Matrix3d A;
+    A << -cb, k1, k2,                                            // ΣX
+        sb, -1.0, -1.0,                                          // ΣY
+        0.0, -(g.p - g.b) - k1 * 0.5 * g.d, -(g.p + g.b) - k2 * 0.5 * g.d;  // ΣM
+    x = A.partialPivLu().solve(rhs);
+    const double n1 = (x(1) < 0.0) ? -1.0 : 1.0, n2 = (x(2) < 0.0) ? -1.0 : 1.0;
+    if (f == 0.0 || (n1 == s1 && n2 == s2)) break;
+    s1 = n1;
+    s2 = n2;
+  }
+
+  CartStaticsResult res;
+  res.F_rod = x(0);
+  res.N_front = x(1);
+  res.N_rear = x(2);
+  res.friction = phi_f * f * (std::abs(x(1)) + std::abs(x(2)));
+  return res;
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,413 @@
+// Integrators of the reduced model (CVODE and the papers' Baranov scheme) and the RunResult
+// they fill. The model itself (equations, loads, inertia) lives in ReducedModel.cpp.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <stdexcept>
+#include <string>
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn {
+namespace {
+
+// Stall: crank (or motor) speed below this fraction of the synchronous crank speed ω0/u, i.e.
+// motor slip above 0.99, or running backwards (slip > 1). With the smoothed load laws
+// (tanh(v/v_s)) a machine whose motor cannot overcome the load does not stop dead: it creeps at
+// a cart speed of order v_s, so "speed <= 0" alone would never fire; 1 % of synchronous speed
+// is far below any running state and far above the creep.
+constexpr double kStallSpeedFraction = 0.01;
+// ...sustained for this much simulated time [s]. A start from rest passes the threshold in a few
+// hundredths of a second (seed 000: starting torque ≈ 1 kN·m at the crank on ≈ 150 kg·m²).
+constexpr double kStallWindow = 1.0;
+
+std::string stallStatus(double t) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "motor stalled at t = %.4g s", t);
+  return buf;
+}
+
+// Output time grid: 0, h, 2h, ... up to t_end, plus t_end itself when h does not divide it.
+std::vector<double> outputTimes(const SimulationSettings& s) {
+  if (!(s.output_step > 0.0) || !(s.t_end > 0.0))
+    throw std::invalid_argument("reduced model: simulation.t_end and output_step must be > 0");
+  std::vector<double> t;
+  const long n = static_cast<long>(std::floor(s.t_end / s.output_step + 1e-9));
+  for (long k = 0; k <= n; ++k) t.push_back(k * s.output_step);
+  if (s.t_end - t.back() > 1e-9 * s.output_step) t.push_back(s.t_end);
+  return t;
+}
+
+void setupTables(const ReducedModel& m, RunResult& res) {
+  auto& ts = res.timeseries.columns;
+  ts = {"t",         "phi_motor",  "phi_crank",   "omega_motor",     "omega_crank",
+        "eps_crank", "eps_motor",  "twist",       "twist_rate",      "twist_accel",
+        "coupling_torque", "motor_torque", "load_torque"};
+  auto& rx = res.reactions.columns;
+  rx = {"t"};
+  for (int j = 1; j <= m.cartCount(); ++j) {
+    const std::string s = std::to_string(j);
+    ts.push_back("x_cart_" + s);
+    ts.push_back("v_cart_" + s);
+    ts.push_back("a_cart_" + s);
+    rx.push_back("N_front_" + s);
+    rx.push_back("N_rear_" + s);
+    rx.push_back("F_rod_" + s);
+    rx.push_back("friction_" + s);
+  }
+  rx.push_back("coupling_torque");
+}
+
+// One output row of both tables from an evaluation (its eps/coupling fields may have been
+// replaced by the Baranov scheme's own values).
+void appendRows(const ReducedModel& m, double t, const ModelEvaluation& e, RunResult& res) {
+  std::vector<double> r = {t,
+                           e.phi_crank + e.twist,
+                           e.phi_crank,
+                           e.omega_motor,
+                           e.omega_crank,
+                           e.eps_crank,
+                           e.eps_motor,
+                           e.twist,
+                           e.twist_rate,
+                           e.twist_accel,
+                           e.coupling_torque,
+                           e.motor_torque,
+                           e.load_torque};
+  std::vector<double> q = {t};
+  for (int j = 0; j < m.cartCount(); ++j) {
+    const CartEvaluation& c = e.carts[j];
+    const double w = e.omega_crank;
+    r.push_back(c.pose.x_B);
+    r.push_back(c.pose.dx_B * w);
+    r.push_back(c.pose.d2x_B * w * w + c.pose.dx_B * e.eps_crank);
+    q.push_back(c.statics.N_front);
+    q.push_back(c.statics.N_rear);
+    q.push_back(c.statics.F_rod);
+    q.push_back(m.scene().carts.side[j] * c.statics.friction);  // world x
+  }
+  q.push_back(e.coupling_torque);
+  res.timeseries.rows.push_back(std::move(r));
+  res.reactions.rows.push_back(std::move(q));
+}
+
+double syncCrankSpeed(const Scene& s) { return s.motor.omega_sync / s.reducer.ratio; }
+
+// Tracks the "sustained stall" condition on the output grid.
+struct StallMonitor {
+  bool active;
+  double threshold;
+  double since = -1.0;
+  bool check(double t, double omega_crank, double omega_motor) {
+    if (!active) return false;
+    if (omega_crank <= threshold || omega_motor <= threshold) {
+      if (since < 0.0) since = t;
+      return t - since >= kStallWindow;
+    }
+    since = -1.0;
+    return false;
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// CVODE
+
+struct CvodeUserData {
+  const ReducedModel* model = nullptr;
+  long rhs_evals = 0;
+  std::string last_error;
+  double rtol = 0;
+  Eigen::VectorXd atol;  // per state, see runCvode
+};
+
+// Error weights: CVODE's usual 1/(rtol·|y_i| + atol_i) for every state except the crank angle,
+// which is held to the ABSOLUTE accuracy atol_φ: an angle error means the same after 1 turn or
+// 1000 turns, whereas rtol·|φ| would loosen the angle (and with it J(φ), the kinematics and the
+// energy balance) as the crank keeps turning.
+int cvodeErrorWeights(N_Vector y, N_Vector ewt, void* user) {
+  auto* u = static_cast<CvodeUserData*>(user);
+  const int n = u->model->stateSize();
+  const realtype* yv = N_VGetArrayPointer(y);
+  realtype* wv = N_VGetArrayPointer(ewt);
+  for (int i = 0; i < n; ++i) {
+    const double tol = (i == u->model->iPhi()) ? u->atol(i) : u->rtol * std::abs(yv[i]) + u->atol(i);
+    if (!(tol > 0.0)) return -1;
+    wv[i] = 1.0 / tol;
+  }
+  return 0;
+}
+
+int cvodeRhs(realtype t, N_Vector y, N_Vector ydot, void* user) {
+  auto* u = static_cast<CvodeUserData*>(user);
+  const int n = u->model->stateSize();
+  Eigen::Map<const Eigen::VectorXd> ym(N_VGetArrayPointer(y), n);
+  const Eigen::VectorXd d = u->model->derivatives(t, ym);
+  ++u->rhs_evals;
+  if (!d.allFinite()) return 1;  // recoverable: CVODE retries with a smaller step
+  Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(ydot), n) = d;
+  return 0;
+}
+
+void cvodeErrHandler(int error_code, const char* module, const char* function, char* msg,
+                     void* user) {
+  auto* u = static_cast<CvodeUserData*>(user);
+  u->last_error = std::string(function ? function : "") + ": " + (msg ? msg : "");
+}
+
+// Owns the SUNDIALS objects of one run (freed on every exit path).
+struct CvodeResources {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr;
+  void* cv = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  CvodeResources() = default;
+  CvodeResources(const CvodeResources&) = delete;
+  CvodeResources& operator=(const CvodeResources&) = delete;
+  ~CvodeResources() {
+    if (cv) CVodeFree(&cv);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+RunResult runCvode(const ReducedModel& m, RunResult res) {
+  const Scene& s = m.scene();
+  const std::vector<double> times = outputTimes(s.simulation);
+  const int n = m.stateSize();
+  const double rtol = s.simulation.accuracy;
+
+  // Absolute tolerances: atol_i = rtol·(reference magnitude of state i), so every component is
+  // held to the same relative accuracy measured against its natural scale and absolute control
+  // only takes over when a state is far below that scale (e.g. at a start from rest):
+  //   angle φ        1 rad (an error of rtol rad is negligible against a revolution)
+  //   speed φ̇        ω_ref = ω0/u, the synchronous crank speed (motor off: max(|φ̇(0)|, 1 rad/s))
+  //   twist ψ        ψ_ref = M_ref/c, M_ref = the larger of the breakdown torque at the crank
+  //                  M_kr·u·η and the roller-force torque scale n·(F1+F2)·r: the twist the
+  //                  coupling takes under the largest torques of the scene
+  //   twist rate ψ̇   ψ_ref·√(c/J_n1) (the coupling's own time scale)
+  //   work integrals E_ref = ½·J(φ0)·ω_ref², the kinetic energy at synchronous speed
+  const double w_ref = s.motor.enabled ? syncCrankSpeed(s)
+                                       : std::max(std::abs(s.initial.crank_speed), 1.0);
+  const double M_ref = std::max({s.motor.breakdown_torque * s.reducer.ratio * s.reducer.efficiency,
+                                 s.carts.count * (std::abs(s.loads.roller_force_front) +
+                                                  std::abs(s.loads.roller_force_rear)) *
+                                     s.crank.radius,
+                                 1.0});
+  const double E_ref = 0.5 * (m.reducedInertia(s.initial.crank_angle) + m.motorSideInertia()) *
+                       w_ref * w_ref;
+
+  CvodeResources sun;
+  if (SUNContext_Create(nullptr, &sun.ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
+  SUNContext ctx = sun.ctx;
+  N_Vector y = sun.y = N_VNew_Serial(n, ctx);
+  Eigen::Map<Eigen::VectorXd> ym(N_VGetArrayPointer(y), n);
+  Eigen::VectorXd am(n);
+  ym = m.initialState();
+  am.setConstant(rtol * E_ref);
+  am(m.iPhi()) = rtol * 1.0;
+  am(m.iOmega()) = rtol * w_ref;
+  if (!m.rigid()) {
+    const double psi_ref = M_ref / s.coupling.stiffness;
+    am(m.iTwist()) = rtol * psi_ref;
+    am(m.iTwistRate()) = rtol * psi_ref * std::sqrt(s.coupling.stiffness / m.motorSideInertia());
+  }
+
+  CvodeUserData ud;
+  ud.model = &m;
+  ud.rtol = rtol;
+  ud.atol = am;
+  // Adams-Moulton (orders 1-12) with a Newton corrector on a dense difference-quotient Jacobian.
+  // Measured against BDF on the seed 000 scenes: as fast or faster (fewer steps on these smooth,
+  // mildly stiff equations) and 10-100x smaller energy-audit residuals at the same accuracy
+  // (BDF's low-order, damped error drifts the energy of the periodic J(φ) motion). Newton rather
+  // than fixed-point iteration keeps the corrector converging through the stiff patches: the
+  // smoothed load laws have a slope (F1+F2)/v_s·x_B'²/J ~ 10³-10⁴ s⁻¹ within a few v_s of each
+  // cart reversal (and the creep of a stalled drive lives there).
+  void* cv = sun.cv = CVodeCreate(CV_ADAMS, ctx);
+  SUNMatrix A = sun.A = SUNDenseMatrix(n, n, ctx);
+  SUNLinearSolver LS = sun.LS = SUNLinSol_Dense(y, A, ctx);
+  int flag = CVodeInit(cv, cvodeRhs, times.front(), y);
+  if (flag == CV_SUCCESS) flag = CVodeSetUserData(cv, &ud);
+  if (flag == CV_SUCCESS) flag = CVodeSetErrHandlerFn(cv, cvodeErrHandler, &ud);
+  if (flag == CV_SUCCESS) flag = CVodeWFtolerances(cv, cvodeErrorWeights);
+  if (flag == CV_SUCCESS) flag = CVodeSetLinearSolver(cv, LS, A);
+  if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(cv, 1000000);
+  if (flag == CV_SUCCESS) flag = CVodeSetStopTime(cv, times.back());
+  if (flag != CV_SUCCESS) throw std::runtime_error("CVODE setup failed: " + ud.last_error);
+
+  const Eigen::VectorXd y0 = m.initialState();
+  res.energy.kinetic_initial = m.kineticEnergy(y0);
+  res.energy.potential_initial = m.potentialEnergy(y0);
+
+  StallMonitor stall{s.motor.enabled, kStallSpeedFraction * syncCrankSpeed(s)};
+  const std::clock_t c0 = std::clock();
+  Eigen::VectorXd y_last = y0;
+  for (size_t k = 0; k < times.size(); ++k) {
+    double t = times[k];
+    if (k > 0) {
+      realtype tret = t;
+      flag = CVode(cv, t, y, &tret, CV_NORMAL);
+      if (flag < 0) {
+        res.stats.complete = false;
+        char* name = CVodeGetReturnFlagName(flag);
+        res.stats.status = std::string("integrator failure at t = ") + std::to_string(tret) +
+                           " s: " + (name ? name : "?") + " " + ud.last_error;
+        free(name);
+        break;
+      }
+      t = tret;
+    }
+    y_last = ym;
+    const ModelEvaluation e = m.evaluate(y_last);
+    appendRows(m, t, e, res);
+    if (stall.check(t, e.omega_crank, e.omega_motor)) {
+      res.stats.complete = false;
+      res.stats.status = stallStatus(stall.since);
+      break;
+    }
+  }
+  res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
+
+  long nsteps = 0;
+  CVodeGetNumSteps(cv, &nsteps);
+  res.stats.steps = nsteps;
+  res.stats.realizations = ud.rhs_evals;  // includes the difference-quotient Jacobian calls
+
+  res.energy.motor_work = y_last(m.iMotorWork());
+  res.energy.damping_dissipation = m.rigid() ? 0.0 : y_last(m.iDampingWork());
+  res.energy.friction_dissipation = y_last(m.iFrictionWork());
+  res.energy.load_work = y_last(m.iLoadWork());
+  res.energy.kinetic_final = m.kineticEnergy(y_last);
+  res.energy.potential_final = m.potentialEnergy(y_last);
+  return res;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Baranov's fixed-step scheme in crank angle (seed 004 eq. (2)-(4), (10), (11)), rigid drive.
+
+RunResult runBaranov(const ReducedModel& m, RunResult res) {
+  const Scene& s = m.scene();
+  if (!m.rigid())
+    throw std::invalid_argument(
+        "reduced.integrator = baranov needs coupling.type = rigid (the scheme of seed 004 eq. (4) "
+        "is for the one-mass model)");
+  const double dphi = s.reduced.baranov_step;
+  if (!(dphi > 0.0)) throw std::invalid_argument("reduced.baranov_step must be > 0");
+  const std::vector<double> times = outputTimes(s.simulation);
+
+  const std::clock_t c0 = std::clock();
+  double phi = s.initial.crank_angle;
+  double w = std::max(s.initial.crank_speed, 0.0);  // the scheme only marches forward in φ
+  double t = 0.0;
+  double W_motor = 0.0, W_friction = 0.0, W_load = 0.0;
+
+  Eigen::VectorXd y(m.stateSize());
+  y.setZero();
+  y(m.iPhi()) = phi;
+  y(m.iOmega()) = w;
+  res.energy.kinetic_initial = m.kineticEnergy(y);
+  res.energy.potential_initial = m.potentialEnergy(y);
+
+  size_t k_out = 0;  // next output time to fill
+  auto emitUpTo = [&](double t_next, double phi_next, double w_next, double eps) {
+    // Rows on the output grid inside [t, t_next]: φ and φ̇ linear in time across the step
+    // (the same linear-ω assumption as the trapezoidal time of eq. (10)), ε = eq. (11).
+    while (k_out < times.size() && times[k_out] <= t_next) {
+      const double a = (t_next > t) ? (times[k_out] - t) / (t_next - t) : 1.0;
+      Eigen::VectorXd yo = Eigen::VectorXd::Zero(m.stateSize());
+      yo(m.iPhi()) = phi + a * (phi_next - phi);
+      yo(m.iOmega()) = w + a * (w_next - w);
+      ModelEvaluation e = m.evaluate(yo);
+      ++res.stats.realizations;
+      e.eps_crank = e.eps_motor = eps;
+      e.coupling_torque = e.motor_torque - m.motorSideInertia() * eps;
+      appendRows(m, times[k_out], e, res);
+      ++k_out;
+    }
+  };
+
+  bool stalled = false;
+  double J_i = m.reducedInertia(phi);
+  while (t < times.back()) {
+    Eigen::VectorXd yi = Eigen::VectorXd::Zero(m.stateSize());
+    yi(m.iPhi()) = phi;
+    yi(m.iOmega()) = w;
+    const ModelEvaluation e = m.evaluate(yi);
+    ++res.stats.realizations;
+    const double M = e.motor_torque - e.load_torque;  // M_p(ω_i) - M_o(φ_i)
+    const double J_next = m.reducedInertia(phi + dphi);
+    double w_next;
+    if (w > 0.0) {
+      // seed 004 eq. (4)
+      w_next = M / (J_i * w) * dphi + (3.0 * J_i - J_next) / (2.0 * J_i) * w;
+    } else {
+      // From rest eq. (4) divides by ω = 0, and starting it at a tiny ω instead would return
+      // ω_1 ≈ M·Δφ/(J·ω_tiny), a huge overshoot. The first step therefore uses eq. (2) before
+      // its division by ω, i.e. the energy theorem over one step: J_1·ω_1² = J_0·ω_0² + 2·M·Δφ.
+      const double w2 = (J_i * w * w + 2.0 * M * dphi) / J_next;
+      w_next = w2 > 0.0 ? std::sqrt(w2) : 0.0;
+    }
+    if (!(w_next > 0.0) || !std::isfinite(w_next)) {
+      stalled = true;  // the scheme cannot stop or reverse: the drive has stalled
+      break;
+    }
+    const double t_next = t + 2.0 * dphi / (w + w_next);  // seed 004 eq. (10)
+    const double eps = (w_next - w) / (t_next - t);        // seed 004 eq. (11)
+    // Work over the step by the same left-point rule as the scheme: dW = (force·x_B')·Δφ.
+    W_motor += e.motor_torque * dphi;
+    for (int j = 0; j < m.cartCount(); ++j) {
+      const CartEvaluation& c = e.carts[j];
+      const double sigma = s.carts.side[j];
+      W_friction -= sigma * c.statics.friction * c.pose.dx_B * dphi;
+      W_load -= sigma * c.roller_force * c.pose.dx_B * dphi;
+    }
+    emitUpTo(t_next, phi + dphi, w_next, eps);
+    phi += dphi;
+    w = w_next;
+    t = t_next;
+    J_i = J_next;
+    ++res.stats.steps;
+  }
+  res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
+  if (stalled) {
+    res.stats.complete = false;
+    res.stats.status = stallStatus(t);
+  }
+  // Energy audit at the last node (at or just past t_end, or at the stall).
+  y(m.iPhi()) = phi;
+  y(m.iOmega()) = w;
+  res.energy.motor_work = W_motor;
+  res.energy.friction_dissipation = W_friction;
+  res.energy.load_work = W_load;
+  res.energy.kinetic_final = m.kineticEnergy(y);
+  res.energy.potential_final = m.potentialEnergy(y);
+  return res;
+}
+
+}  // namespace
+
+RunResult runReducedModel(const Scene& scene) {
+  const ReducedModel model(scene);
+  RunResult res;
+  res.model = "reduced";
+  res.effects = scene.effects();
+  setupTables(model, res);
+  if (scene.reduced.integrator == ReducedIntegrator::Baranov) {
+    res.integrator = "baranov";
+    return runBaranov(model, std::move(res));
+  }
+  res.integrator = "cvode-adams";
+  return runCvode(model, std::move(res));
+}
+
+}  // namespace rollerdyn

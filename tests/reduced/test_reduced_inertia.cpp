@@ -1,0 +1,169 @@
+// Reduced inertia J(φ), its derivative, kinematic forms and the load torque of the reduced model.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn {
+namespace test {
+Scene seed000LikeScene();
+}
+
+namespace {
+
+// Seed 004 set-up: two carts on opposite sides, Δφ = 90°, distributed rods q = 80 kg/m,
+// one-mass (rigid) drive, I_o = 0.504 kg·m² reduced by u².
+Scene seed004LikeScene() {
+  Scene s = test::seed000LikeScene();
+  s.carts.count = 2;
+  s.carts.side = {1, -1};
+  s.carts.mass = 1000;
+  s.rods.model = RodModel::Distributed;
+  s.rods.mass = 80 * 0.8;                  // l·q
+  s.rods.inertia_com = 80 * std::pow(0.8, 3) / 12;  // I_s = q·l³/12
+  s.motor.rotor_inertia = 0.138;
+  s.coupling.inertia = 0.32;
+  s.reducer.inertia = 0.046;
+  s.coupling.type = CouplingType::Rigid;
+  return s;
+}
+
+TEST(ReducedInertia, MatchesSeed004Eq9ForTwoCartsOnOppositeSides) {
+  const Scene s = seed004LikeScene();
+  const ReducedModel m(s);
+  const double r = 0.2, l = 0.8, q = 80, u = 9.8, Io = 0.138 + 0.32 + 0.046, mc = 1000;
+  const double Is = q * l * l * l / 12;
+  for (double phi = -3.3; phi < 7.0; phi += 0.173) {
+    // seed 004 eq. (6), (9) written out, γ = rod angle of cart 2, crank at φ + π/2
+    const double S1 = std::sin(phi), C1 = std::cos(phi);
+    const double S2 = std::sin(phi + M_PI / 2), C2 = std::cos(phi + M_PI / 2);
+    const double w1 = std::sqrt(1 - r * r / (l * l) * S1 * S1);
+    const double w2 = std::sqrt(1 - r * r / (l * l) * S2 * S2);
+    const double dx1 = -r * S1 * (1 + r / l * C1 / w1);
+    const double dx2 = -r * S2 * (1 - r / l * C2 / w2);
+    const double dxs6 = -r * S1 * (1 + r / (2 * l) * C1 / w1), dys6 = r / 2 * C1;
+    const double dxs7 = -r * S2 * (1 - r / (2 * l) * C2 / w2), dys7 = r / 2 * C2;
+    const double db = r / l * C1 / w1, dg = r / l * C2 / w2;
+    const double I = Io * u * u + mc * dx1 * dx1 + l * q * (dxs6 * dxs6 + dys6 * dys6) +
+                     Is * db * db + mc * dx2 * dx2 + l * q * (dxs7 * dxs7 + dys7 * dys7) +
+                     Is * dg * dg;
+    EXPECT_NEAR(m.reducedInertia(phi), I, 1e-12 * I) << "phi " << phi;
+  }
+}
+
+TEST(ReducedInertia, SplitRodsFollowSeed000Eq2And9) {
+  const Scene s = test::seed000LikeScene();
+  const ReducedModel m(s);
+  const double r = 0.2, l = 0.8, mB = 1032;
+  for (double phi = 0.0; phi < 6.3; phi += 0.31) {
+    double J = 2 * 64 * r * r;  // eq. (2) with J'_K = 0
+    for (int j = 0; j < 4; ++j) {
+      const double th = phi + j * M_PI / 2;
+      const double dx = -r * std::sin(th) -
+                        r * r / l * std::sin(th) * std::cos(th) /
+                            std::sqrt(1 - std::pow(r / l * std::sin(th), 2));
+      J += mB * dx * dx;  // eq. (9), m_B = 1032 kg (eq. (3))
+    }
+    EXPECT_NEAR(m.crankSideInertia(phi), J, 1e-12 * J);
+    EXPECT_NEAR(m.reducedInertia(phi), J, 1e-12 * J);  // elastic: the φ2 equation's inertia
+  }
+  EXPECT_NEAR(m.motorSideInertia(), (0.4 + 0.32 + 0.046) * 9.8 * 9.8, 1e-12);
+}
+
+TEST(ReducedInertia, DerivativeMatchesCentralDifference) {
+  for (RodModel model : {RodModel::Distributed, RodModel::Split, RodModel::Massless}) {
+    for (KinematicsForm form : {KinematicsForm::Exact, KinematicsForm::Truncated}) {
+      Scene s = seed004LikeScene();
+      s.carts.count = 3;
+      s.carts.side = {1, -1, 1};
+      s.crank.offset = 2.0;
+      s.rods.model = model;
+      s.reduced.kinematics = form;
+      const ReducedModel m(s);
+      const double h = 1e-5;
+      for (double phi = -1.0; phi < 6.0; phi += 0.37) {
+        const double fd = (m.reducedInertia(phi + h) - m.reducedInertia(phi - h)) / (2 * h);
+        const double an = m.reducedInertiaDerivative(phi);
+        EXPECT_NEAR(an, fd, 1e-7 * std::max(1.0, std::abs(fd)))
+            << toString(model) << " " << toString(form) << " phi " << phi;
+      }
+    }
+  }
+}
+
+// max over a revolution of |J_exact - J_truncated| (carts only) for a given r/l
+double maxTruncationDifference(double lambda) {
+  Scene s = seed004LikeScene();
+  s.rods.model = RodModel::Massless;
+  s.rods.length = s.crank.radius / lambda;
+  Scene t = s;
+  t.reduced.kinematics = KinematicsForm::Truncated;
+  const ReducedModel me(s), mt(t);
+  double d = 0;
+  for (double phi = 0; phi < 2 * M_PI; phi += 0.01) {
+    d = std::max(d, std::abs(me.crankSideInertia(phi) - mt.crankSideInertia(phi)));
+    for (int j = 0; j < 2; ++j)
+      d = std::max(d, 1e3 * std::abs(me.cartPose(j, phi).x_B - mt.cartPose(j, phi).x_B));
+  }
+  return d;
+}
+
+TEST(ReducedInertia, ExactAndTruncatedKinematicsDifferByThirdOrderInRoverL) {
+  // x_B: l·[√(1 - λ²sin²θ) - (1 - ½λ²sin²θ)] ≈ -r·λ³·sin⁴θ/8; so halving λ = r/l divides the
+  // difference (in x_B and in J) by ≈ 8.
+  const double d1 = maxTruncationDifference(0.25);
+  const double d2 = maxTruncationDifference(0.125);
+  const double d3 = maxTruncationDifference(0.0625);
+  EXPECT_GT(d1, 0.0);
+  EXPECT_NEAR(std::log2(d1 / d2), 3.0, 0.3);
+  EXPECT_NEAR(std::log2(d2 / d3), 3.0, 0.15);
+}
+
+TEST(ReducedLoads, LoadTorqueEqualsRodForceMomentOnTheCrank) {
+  // Virtual work in world x must agree with the rod force's moment on the crank pin, seed 000
+  // eq. (26)-(30) for σ = +1 (F·r·sin(θ + β)); for σ = -1 the mirrored rod gives
+  // F·r·(σ·sin θ·cos β + cos θ·sin β).
+  for (auto dir : {RollerForceDirection::AsPrinted, RollerForceDirection::OpposesVelocity}) {
+    Scene s = test::seed000LikeScene();
+    s.carts.side = {1, -1, -1, 1};
+    s.loads.roller_force_direction = dir;
+    s.loads.gravity = 9.81;
+    s.rods.model = RodModel::Massless;  // no rod gravity torque: M_load is the rod forces only
+    const ReducedModel m(s);
+    for (double phi = 0.05; phi < 6.3; phi += 0.29) {
+      for (double w : {10.0, -7.0}) {
+        std::vector<CartEvaluation> carts;
+        const double M = m.loadTorque(phi, w, &carts);
+        double M_rod = 0.0;
+        for (int j = 0; j < 4; ++j) {
+          const double th = phi + j * M_PI / 2, b = carts[j].pose.beta, sg = s.carts.side[j];
+          M_rod += carts[j].statics.F_rod * 0.2 *
+                   (sg * std::sin(th) * std::cos(b) + std::cos(th) * std::sin(b));
+        }
+        EXPECT_NEAR(M, M_rod, 1e-9 * (1 + std::abs(M_rod))) << "phi " << phi << " w " << w;
+      }
+    }
+  }
+}
+
+TEST(ReducedLoads, OpposingRollerForcesAverageToSeed004MeanTorque) {
+  // seed 004: two carts, F0 = 3562 N opposing velocity, mean M_o = 2·F0·2r/π = 907 N·m.
+  Scene s = seed004LikeScene();
+  s.loads.roller_force_front = 3562;
+  s.loads.roller_force_rear = 0;
+  s.loads.roller_normal_front = s.loads.roller_normal_rear = 0;
+  s.loads.guide_friction = 0;
+  s.loads.gravity = 9.81;  // rod gravity averages out over a turn
+  s.loads.roller_force_direction = RollerForceDirection::OpposesVelocity;
+  s.loads.velocity_smoothing = 1e-6;
+  const ReducedModel m(s);
+  const int N = 20000;
+  double mean = 0;
+  for (int i = 0; i < N; ++i) mean += m.loadTorque((i + 0.5) * 2 * M_PI / N, 10.0) / N;
+  EXPECT_NEAR(mean, 2 * 3562 * 2 * 0.2 / M_PI, 0.5);  // 907.03 N·m printed
+}
+
+}  // namespace
+}  // namespace rollerdyn
