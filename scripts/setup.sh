@@ -14,6 +14,8 @@ packages=(
   nlohmann-json3-dev    # summary.json and friends
   libcli11-dev          # command line
   googletest libgtest-dev  # tests
+  libbenchmark-dev      # Google Benchmark targets (benchmarks/)
+  gnuplot-nox           # figures (PNG/SVG) of plot, report, bench and validation
 )
 
 missing=()
