@@ -1,0 +1,102 @@
+#include "report/Gnuplot.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/AtomicFile.h"
+
+namespace rollerdyn {
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// Runs gnuplot on a script that draws to `tmp_out`, then renames it to `final_out`.
+void runGnuplot(const std::string& script_body, const std::string& terminal, const std::string& final_out) {
+  namespace fs = std::filesystem;
+  const fs::path target(final_out);
+  if (target.has_parent_path()) fs::create_directories(target.parent_path());
+  const std::string tmp_out = final_out + ".tmp." + std::to_string(::getpid());
+  const std::string script_path = final_out + ".gp.tmp." + std::to_string(::getpid());
+  writeFileAtomic(script_path, "set terminal " + terminal + "\nset output " + quoted(tmp_out) + "\n" +
+                                   script_body + "\nunset output\n");
+  const std::string cmd = "gnuplot " + quoted(script_path) + " 2>/dev/null";
+  const int rc = std::system(cmd.c_str());
+  std::remove(script_path.c_str());
+  if (rc != 0 || !fs::exists(tmp_out)) {
+    std::remove(tmp_out.c_str());
+    throw std::runtime_error("gnuplot failed to draw '" + final_out + "'");
+  }
+  fs::rename(tmp_out, final_out);
+}
+
+void render(const std::string& body, int w, int h, const std::string& base, bool png, bool svg) {
+  if (!gnuplotAvailable()) throw std::runtime_error("gnuplot not found (Debian package gnuplot-nox)");
+  const std::string size = std::to_string(w) + "," + std::to_string(h);
+  if (png) runGnuplot(body, "pngcairo size " + size + " font 'Sans,10'", base + ".png");
+  if (svg) runGnuplot(body, "svg size " + size + " dynamic font 'Sans,10'", base + ".svg");
+}
+
+}  // namespace
+
+bool gnuplotAvailable() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+
+void renderPlot(const PlotSpec& spec, const std::string& base, bool png, bool svg) {
+  std::ostringstream os;
+  os.precision(12);
+  os << "set title " << quoted(spec.title) << "\nset xlabel " << quoted(spec.xlabel) << "\nset ylabel "
+     << quoted(spec.ylabel) << "\nset grid\nset key outside right top\n";
+  if (spec.logx) os << "set logscale x\nset format x '10^{%L}'\n";
+  if (spec.logy) os << "set logscale y\nset format y '10^{%L}'\n";
+  for (size_t i = 0; i < spec.series.size(); ++i) {
+    const PlotSeries& s = spec.series[i];
+    os << "$D" << i << " << EOD\n";
+    for (size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
+      const bool ok = std::isfinite(s.x[k]) && std::isfinite(s.y[k]) && (!spec.logx || s.x[k] > 0) &&
+                      (!spec.logy || s.y[k] > 0);
+      if (ok) os << s.x[k] << ' ' << s.y[k] << '\n';
+    }
+    os << "EOD\n";
+  }
+  os << "plot ";
+  for (size_t i = 0; i < spec.series.size(); ++i)
+    os << (i ? ", " : "") << "$D" << i << " using 1:2 with " << spec.series[i].style << " title "
+       << quoted(spec.series[i].title);
+  if (spec.series.empty()) os << "NaN notitle";
+  os << '\n';
+  render(os.str(), spec.width, spec.height, base, png, svg);
+}
+
+void renderHeatMap(const std::string& title, const std::string& xlabel, const std::string& ylabel,
+                   const std::string& zlabel, const std::vector<double>& x, const std::vector<double>& y,
+                   const std::vector<std::vector<double>>& z, const std::string& base, bool png, bool svg) {
+  std::ostringstream os;
+  os.precision(12);
+  os << "set title " << quoted(title) << "\nset xlabel " << quoted(xlabel) << "\nset ylabel " << quoted(ylabel)
+     << "\nset cblabel " << quoted(zlabel) << "\nset view map\nset palette rgb 33,13,10\n$G << EOD\n";
+  for (size_t i = 0; i < y.size(); ++i) {
+    for (size_t j = 0; j < x.size(); ++j) {
+      const double v = (i < z.size() && j < z[i].size()) ? z[i][j] : NAN;
+      os << x[j] << ' ' << y[i] << ' ';
+      if (std::isfinite(v)) os << v; else os << "NaN";
+      os << '\n';
+    }
+    os << '\n';
+  }
+  os << "EOD\nplot $G using 1:2:3 with image notitle\n";
+  render(os.str(), 900, 640, base, png, svg);
+}
+
+}  // namespace rollerdyn
