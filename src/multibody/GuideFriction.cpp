@@ -7,29 +7,31 @@
 namespace rollerdyn {
 
 void GuideFriction::realizeTopology(SimTK::State& s) const {
-  normals_index_ = forces_.allocateAutoUpdateDiscreteVariable(
-      s, SimTK::Stage::Dynamics, new SimTK::Value<SimTK::Vector>(SimTK::Vector(2 * int(carts_.size()), 0.0)),
-      SimTK::Stage::Acceleration);
+  z_start_ = forces_.allocateZ(s, SimTK::Vector(2 * int(carts_.size()), 0.0));
 }
 
-const SimTK::Vector& GuideFriction::laggedNormals(const SimTK::State& s) const {
-  return SimTK::Value<SimTK::Vector>::downcast(forces_.getDiscreteVariable(s, normals_index_));
+SimTK::Vector GuideFriction::frictionNormals(const SimTK::State& s) const {
+  return forces_.getZ(s)(z_start_, 2 * int(carts_.size()));
 }
 
-void GuideFriction::setLaggedNormals(SimTK::State& s, const SimTK::Vector& normals) const {
-  SimTK::Value<SimTK::Vector>::updDowncast(forces_.updDiscreteVariable(s, normals_index_)) = normals;
+void GuideFriction::setFrictionNormals(SimTK::State& s, const SimTK::Vector& normals) const {
+  forces_.updZ(s)(z_start_, 2 * int(carts_.size())) = normals;
 }
 
-double GuideFriction::frictionForce(const SimTK::State& s, int j) const {
+double GuideFriction::frictionFrom(const SimTK::State& s, const SimTK::Vector& n, int j) const {
   const CartRig& c = carts_[j];
-  const SimTK::Vector& n = laggedNormals(s);
   const double magnitude = loads_.guide_friction * (std::abs(n[2 * j]) + std::abs(n[2 * j + 1]));
   return c.side * frictionDirection(loads_, c.side * c.v(s)) * magnitude;
 }
 
+double GuideFriction::frictionForce(const SimTK::State& s, int j) const {
+  return frictionFrom(s, frictionNormals(s), j);
+}
+
 double GuideFriction::dissipatedPower(const SimTK::State& s) const {
+  const SimTK::Vector n = frictionNormals(s);
   double p = 0;
-  for (size_t j = 0; j < carts_.size(); ++j) p -= frictionForce(s, int(j)) * carts_[j].v(s);
+  for (size_t j = 0; j < carts_.size(); ++j) p -= frictionFrom(s, n, int(j)) * carts_[j].v(s);
   return p;
 }
 
@@ -47,18 +49,17 @@ SimTK::Vector GuideFriction::currentNormals(const SimTK::State& s) const {
 }
 
 void GuideFriction::realizeAcceleration(const SimTK::State& s) const {
-  SimTK::Value<SimTK::Vector>::updDowncast(forces_.updDiscreteVarUpdateValue(s, normals_index_)) =
-      currentNormals(s);
-  forces_.markDiscreteVarUpdateValueRealized(s, normals_index_);
+  const int m = 2 * int(carts_.size());
+  forces_.updZDot(s)(z_start_, m) = (currentNormals(s) - frictionNormals(s)) / loads_.guide_friction_lag;
 }
 
 void GuideFriction::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
                               SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const {
-  const SimTK::Vector& n = laggedNormals(s);
+  const SimTK::Vector n = frictionNormals(s);
+  const double f = loads_.guide_friction;
   for (size_t j = 0; j < carts_.size(); ++j) {
     const CartRig& c = carts_[j];
     const double dir = c.side * frictionDirection(loads_, c.side * c.v(s));  // world-x sign
-    const double f = loads_.guide_friction;
     c.cart.applyForceToBodyPoint(s, c.guideFront(geometry_),
                                  SimTK::Vec3(dir * f * std::abs(n[2 * j]), 0, 0), body_forces);
     c.cart.applyForceToBodyPoint(s, c.guideRear(geometry_),

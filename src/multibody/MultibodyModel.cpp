@@ -191,12 +191,12 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
   system_.realize(s, SimTK::Stage::Velocity);
   system_.projectU(s, 1e-13);
   if (friction_force_) {
-    // Start the lagged friction from the reactions it produces itself (fixed point; contracts
-    // by a factor of order f per pass).
+    // Start the friction normal forces at the reactions they produce themselves (fixed point;
+    // it contracts by a factor of order f per pass).
     for (int pass = 0; pass < 8; ++pass) {
       system_.realize(s, SimTK::Stage::Acceleration);
       const SimTK::Vector n = friction_force_->currentNormals(s);
-      friction_force_->setLaggedNormals(s, n);
+      friction_force_->setFrictionNormals(s, n);
     }
   }
   system_.realize(s, SimTK::Stage::Acceleration);

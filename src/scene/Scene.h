@@ -128,6 +128,9 @@ struct Scene {
   CrankShaft crank;
   ConnectingRods rods;
   Carts carts;
+  double guide_friction_lag = 2e-3;  // τ_N: time constant with which the multibody model's
+                               // friction normal force follows the guide reaction [s]
+                               //                     loads.guide_friction.normal_force_lag
   KlossMotor motor;
   Reducer reducer;
   Coupling coupling;

@@ -393,6 +393,7 @@ Scene readScene(const SceneDocument& doc) {
   const Reader in(doc);
   Scene s;
   s.source_path = doc.file();
+  l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
   s.name = std::filesystem::path(doc.file()).stem().string();
   s.source = in.text("source");
   if (s.source.find_first_not_of(" \t\n") == std::string::npos) {

@@ -156,6 +156,8 @@ std::vector<KeySpec> buildSchema() {
 
       choice("reduced.kinematics", P::Optional, {"exact", "truncated"}, "exact",
              "slider-crank kinematics of the reduced model"),
+      number("loads.guide_friction.normal_force_lag", "s", P::Optional, between(0.0, false, 1.0, true),
+             2e-3, "tau_N, time constant of the friction normal force following the guide reaction (multibody)"),
       choice("reduced.integrator", P::Optional, {"cvode", "baranov"}, "cvode",
              "integrator of the reduced model"),
       number("reduced.baranov_step_deg", "deg", P::Optional, between(0.0, false, 10.0, true),

@@ -130,6 +130,7 @@ loads:
   roller_force_direction: as_printed
   guide_friction:
     coefficient: 0.02
+    normal_force_lag: 0.004
   gravity: 9.8
   velocity_smoothing: 0.01
 reduced:
@@ -209,5 +210,6 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.reduced.baranov_step, 2 * deg);
 }
 
+  EXPECT_DOUBLE_EQ(s.loads.guide_friction_lag, 0.004);
 }  // namespace
 }  // namespace rollerdyn
