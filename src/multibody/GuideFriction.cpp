@@ -18,6 +18,12 @@ void GuideFriction::setFrictionNormals(SimTK::State& s, const SimTK::Vector& nor
   forces_.updZ(s)(z_start_, 2 * int(carts_.size())) = normals;
 }
 
+void GuideFriction::setErrorWeights(SimTK::State& s, double cart_mass) const {
+  const double unit_acceleration = 1.0;  // [m/s²]
+  s.updZWeights(forces_.getMySubsystemIndex())(z_start_, 2 * int(carts_.size())) =
+      loads_.guide_friction / (cart_mass * unit_acceleration);
+}
+
 double GuideFriction::frictionFrom(const SimTK::State& s, const SimTK::Vector& n, int j) const {
   const CartRig& c = carts_[j];
   const double magnitude = loads_.guide_friction * (std::abs(n[2 * j]) + std::abs(n[2 * j + 1]));

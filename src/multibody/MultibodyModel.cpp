@@ -176,6 +176,7 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
     const double theta = phi + sc.crankPhase(int(j));
     const SliderCrankPose pose = sliderCrankExact(theta, sc.crank.radius, sc.rods.length, c.side);
     c.cart.setOneQ(s, 0, pose.x_B);
+  if (friction_force_) friction_force_->setErrorWeights(s, scene_.cartMassWithRodShare());
     c.cart.setOneU(s, 0, pose.dx_B * omega);
     if (!c.rod.isEmptyHandle()) {
       // Direction A->B = l·(σ·cos β, -sin β): absolute rod angle ψ, rate ψ̇ = -σ·β̇.
