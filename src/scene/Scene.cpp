@@ -32,7 +32,8 @@ std::vector<std::string> Scene::effects() const {
   if (hasMotor()) e.push_back("kloss_motor");
   e.push_back(coupling.type == CouplingType::Rigid ? "rigid_coupling" : "elastic_coupling");
   if (hasCouplingDamping()) e.push_back("coupling_damping");
-  e.push_back(std::string("rods_") + toString(rods.model));
+  if (hasCamDrive()) e.push_back("cam_drive");  // no rods: the cam pushes the cart (seed 001)
+  else e.push_back(std::string("rods_") + toString(rods.model));
   if (hasRollerLoads()) e.push_back("roller_loads");
   if (hasGuideFriction()) e.push_back("guide_friction");
   if (hasGravity()) e.push_back("gravity");
@@ -57,5 +58,6 @@ const char* toString(FlywheelLocation l) {
   return l == FlywheelLocation::MotorShaft ? "motor_shaft" : "crankshaft";
 }
 const char* toString(ReducedIntegrator i) { return i == ReducedIntegrator::Baranov ? "baranov" : "cvode"; }
+const char* toString(DriveType d) { return d == DriveType::Cam ? "cam" : "crank"; }
 
 }  // namespace rollerdyn

@@ -20,6 +20,7 @@ enum class RollerForceDirection { OpposesVelocity, AsPrinted }; // loads.roller_
 enum class KinematicsForm { Exact, Truncated };                 // reduced.kinematics
 enum class FlywheelLocation { Crankshaft, MotorShaft };         // flywheel.location
 enum class ReducedIntegrator { Cvode, Baranov };                // reduced.integrator
+enum class DriveType { Crank, Cam };                            // drive.type
 
 struct SimulationSettings {
   double t_end;                 // simulated time span [s]                       simulation.t_end
@@ -43,6 +44,22 @@ struct CrankShaft {
   double offset;            // angle between consecutive cranks Δφ [rad]         crank.offset_deg
   double inertia_per_crank; // J'_K, one crank about the shaft axis [kg·m²]      crank.inertia_per_crank
   double shaft_inertia;     // shaft itself (excluding cranks) about its axis [kg·m²]  crank.shaft_inertia
+};
+
+// Cam drive of seed 001 (drive.type = cam): each cart is pushed by a constant-diameter cam on the
+// crankshaft instead of a crank and rod, and follows the optimal-reversal motion law of seed 001
+// eq. (29)-(34) as a function of the cam angle (src/physics/CamMotionLaw.h). One cam turn is one
+// full cycle, so the half-cycle (one stroke) time is t3 = π/ω at crank speed ω [s]: it follows
+// from the drive's speed and is not an input. Cart j's cam sits at θ = φ2 + j·Δφ (crank.offset_deg);
+// θ = 0 puts the cart at the -Δx/2 end of its stroke; its hinge B is at x_B = σ·x(θ), i.e.
+// mid-stroke on the shaft axis (carts move horizontally, so that offset changes no force).
+// With drive.type = cam the rod keys are validated but not used: the Scene carries massless rods
+// (no rod is built), and crank.radius / rods.length only serve `--set drive.type=crank`.
+struct CamDrive {
+  double stroke = 0;           // Δx, full stroke of the cart [m]                    cam.stroke
+  double pusher_distance = 0;  // b, distance between the two pushers = cam diameter [m];
+                               // only shapes the profile ρ = b/2 + x(θ), eq. (38)-(43)
+                               //                                                  cam.pusher_distance
 };
 
 struct ConnectingRods {
@@ -111,6 +128,9 @@ struct Loads {
   double guide_friction;       // f, reduced guide-roller friction coefficient [-]    loads.guide_friction.coefficient
   double gravity;              // g [m/s²]; 0 = no gravity                            loads.gravity
   double velocity_smoothing;   // v_s: sign(v) is replaced by tanh(v/v_s) [m/s]       loads.velocity_smoothing
+  double guide_friction_lag = 2e-3;  // τ_N: time constant with which the multibody model's
+                               // friction normal force follows the guide reaction [s]
+                               //                     loads.guide_friction.normal_force_lag
 };
 
 struct ReducedSettings {
@@ -128,15 +148,14 @@ struct Scene {
   CrankShaft crank;
   ConnectingRods rods;
   Carts carts;
-  double guide_friction_lag = 2e-3;  // τ_N: time constant with which the multibody model's
-                               // friction normal force follows the guide reaction [s]
-                               //                     loads.guide_friction.normal_force_lag
   KlossMotor motor;
   Reducer reducer;
   Coupling coupling;
   Flywheel flywheel;
   Loads loads;
   ReducedSettings reduced;
+  DriveType drive = DriveType::Crank;  // crank | cam                              drive.type
+  CamDrive cam;                        // cam.* (used when drive == Cam)
 
   // --- Derived quantities, defined once so both models use the same formula. ---
 
@@ -155,6 +174,7 @@ struct Scene {
   bool hasGuideFriction() const { return loads.guide_friction > 0.0; }
   bool hasGravity() const { return loads.gravity > 0.0; }
   bool hasFlywheel() const { return flywheel.inertia > 0.0; }
+  bool hasCamDrive() const { return drive == DriveType::Cam; }
   bool hasCouplingDamping() const {
     return coupling.type == CouplingType::Elastic && coupling.damping > 0.0;
   }
@@ -168,5 +188,6 @@ const char* toString(RollerForceDirection d);
 const char* toString(KinematicsForm k);
 const char* toString(FlywheelLocation l);
 const char* toString(ReducedIntegrator i);
+const char* toString(DriveType d);
 
 }  // namespace rollerdyn

@@ -1,7 +1,10 @@
 #include "scene/SceneDocument.h"
 
 #include <algorithm>
+#include <sstream>
 #include <utility>
+
+#include <yaml-cpp/eventhandler.h>
 
 #include "scene/SceneSchema.h"
 
@@ -67,6 +70,86 @@ std::string parentOf(const std::string& path) {
   return dot == std::string::npos ? "" : path.substr(0, dot);
 }
 
+// yaml-cpp 0.7 (Debian 12) loops forever, allocating, in YAML::LoadAll() when a ',' stands
+// outside any flow collection (e.g. a file starting with ","; jbeder/yaml-cpp#1040, fixed
+// upstream by #1319 after 0.8.0): the parser reports a null document without consuming the
+// token, again and again. Found by fuzz/scene_fuzzer.cpp. So documents are first counted with
+// the event parser, reading at most three, and two consecutive documents whose roots start at
+// the same place mean the parser is stuck on such a token; only then is the tree built with
+// YAML::Load() (first document). YAML::Load() alone never loops but silently drops what follows
+// the first node ("[1]," loads as [1]), which this scan catches as well.
+class RootMark : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& m, YAML::anchor_t) override { node(m); }
+  void OnAlias(const YAML::Mark& m, YAML::anchor_t) override { node(m); }
+  void OnScalar(const YAML::Mark& m, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    node(m);
+  }
+  void OnSequenceStart(const YAML::Mark& m, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    node(m);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& m, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    node(m);
+  }
+  void OnMapEnd() override {}
+
+  YAML::Mark root = YAML::Mark::null_mark();  // mark of the document's first node
+  bool seen = false;
+
+ private:
+  void node(const YAML::Mark& m) {
+    if (!seen) root = m;
+    seen = true;
+  }
+};
+
+struct DocumentScan {
+  int documents = 0;                                 // documents read (at most 2 counted)
+  YAML::Mark second = YAML::Mark::null_mark();       // root of the second document
+  bool stuck = false;                                // a token that belongs to no node
+  YAML::Mark stuck_at = YAML::Mark::null_mark();
+};
+
+bool sameMark(const YAML::Mark& a, const YAML::Mark& b) {
+  return a.pos == b.pos && a.line == b.line && a.column == b.column;
+}
+
+// Throws YAML::ParserException for a syntax error in the first two documents.
+DocumentScan scanDocuments(const std::string& text) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  DocumentScan scan;
+  YAML::Mark previous = YAML::Mark::null_mark();
+  for (int read = 0; read < 3; ++read) {
+    RootMark doc;
+    if (!parser.HandleNextDocument(doc)) break;
+    if (read > 0 && sameMark(doc.root, previous)) {
+      scan.stuck = true;
+      scan.stuck_at = doc.root;
+      --scan.documents;  // the previous "document" was the stuck token, not a document
+      break;
+    }
+    previous = doc.root;
+    if (++scan.documents == 2) scan.second = doc.root;
+  }
+  if (scan.documents < 2) scan.second = YAML::Mark::null_mark();
+  return scan;
+}
+
+// "a ',' outside a flow list or map" when the stuck token is a comma (it always has been so
+// far), a general description otherwise.
+std::string strayToken(const std::string& text, const YAML::Mark& at) {
+  if (at.pos >= 0 && static_cast<size_t>(at.pos) < text.size() && text[at.pos] == ',')
+    return "a ',' outside a flow list or map";
+  return "a token that belongs to no YAML node";
+}
+
 std::string trim(const std::string& s) {
   const size_t b = s.find_first_not_of(" \t");
   if (b == std::string::npos) return "";
@@ -108,24 +191,33 @@ std::string describeNode(const YAML::Node& node) {
 
 SceneDocument::SceneDocument(const std::string& yaml_text, std::string file_label)
     : file_(std::move(file_label)) {
-  std::vector<YAML::Node> docs;
+  DocumentScan scan;
   try {
-    docs = YAML::LoadAll(yaml_text);
+    scan = scanDocuments(yaml_text);  // never YAML::LoadAll(): see scanDocuments()
   } catch (const YAML::ParserException& e) {
     throw SceneError::inFile(file_, lineOfMark(e.mark), "", "valid YAML",
                              "a syntax error: " + e.msg);
   }
-  if (docs.empty()) {
+  if (scan.stuck) {
+    throw SceneError::inFile(file_, std::max(1, lineOfMark(scan.stuck_at)), "", "valid YAML",
+                             "a syntax error: " + strayToken(yaml_text, scan.stuck_at));
+  }
+  if (scan.documents == 0) {
     throw SceneError::inFile(file_, 1, "", "a map of scene keys (" + allowedKeys("") + ")",
                              "an empty document");
   }
-  if (docs.size() > 1) {
+  if (scan.documents > 1) {
     // A second document would be silently dropped by a single-document loader.
-    throw SceneError::inFile(file_, lineOfMark(docs[1].Mark()), "",
+    throw SceneError::inFile(file_, lineOfMark(scan.second), "",
                              "exactly one YAML document per scene file",
                              "a second document (after '---')");
   }
-  root_ = docs[0];
+  try {
+    root_ = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException& e) {  // not expected: the scan parsed the same text
+    throw SceneError::inFile(file_, lineOfMark(e.mark), "", "valid YAML",
+                             "a syntax error: " + e.msg);
+  }
   if (!root_.IsMap()) {
     throw SceneError::inFile(file_, std::max(1, lineOfMark(root_.Mark())), "",
                              "a map of scene keys (" + allowedKeys("") + ")",
@@ -238,6 +330,15 @@ void SceneDocument::applyOverride(int n, const std::string& arg) {
 
   YAML::Node value;
   try {
+    const DocumentScan scan = scanDocuments(text);
+    if (scan.stuck) {
+      failOverride(n, arg, path, "a YAML scalar or flow value",
+                   "'" + text + "' (" + strayToken(text, scan.stuck_at) + ")");
+    }
+    if (scan.documents > 1) {
+      failOverride(n, arg, path, "a YAML scalar or flow value",
+                   "'" + text + "' (more than one YAML document)");
+    }
     value = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     failOverride(n, arg, path, "a YAML scalar or flow value", "'" + text + "' (" + e.msg + ")");

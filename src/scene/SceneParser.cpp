@@ -211,6 +211,23 @@ ConnectingRods readRods(const Reader& in, double r) {
   return rods;
 }
 
+// drive.type and cam.*: the cam drive of seed 001 (Scene.h). Under a cam no rod is built, so the
+// Scene gets massless rods; the rod keys stay validated so `--set drive.type=crank` works.
+void readDrive(const Reader& in, Scene& s) {
+  s.drive = in.choice("drive.type") == "cam" ? DriveType::Cam : DriveType::Crank;
+  s.cam.stroke = s.drive == DriveType::Cam
+                     ? in.requiredNumber("cam.stroke", "required when drive.type is cam")
+                     : in.numberOr("cam.stroke", 0.0);
+  // ρ = b/2 + x(θ) >= b/2 - Δx/2 must stay positive (seed 001 eq. (38)-(43)).
+  s.cam.pusher_distance = in.numberOr("cam.pusher_distance", 2.0 * s.cam.stroke);
+  if (in.has("cam.pusher_distance") && s.cam.pusher_distance <= s.cam.stroke) {
+    in.doc().fail("cam.pusher_distance",
+                  "a number > cam.stroke = " + formatNumber(s.cam.stroke) + " [m]",
+                  formatNumber(s.cam.pusher_distance));
+  }
+  if (s.drive == DriveType::Cam) s.rods = {RodModel::Massless, s.rods.length, 0.0, 0.0};
+}
+
 // carts.sides: +1 for a cart on the same side as cart 1 (x > 0, seed 000), -1 for the opposite
 // side (seed 004's second cart).
 std::vector<int> readSides(const Reader& in, int count) {
@@ -376,6 +393,7 @@ Loads readLoads(const Reader& in) {
   l.guide_friction = in.number("loads.guide_friction.coefficient");
   l.gravity = in.number("loads.gravity");
   l.velocity_smoothing = in.number("loads.velocity_smoothing");
+  l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
   return l;
 }
 
@@ -393,7 +411,6 @@ Scene readScene(const SceneDocument& doc) {
   const Reader in(doc);
   Scene s;
   s.source_path = doc.file();
-  l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
   s.name = std::filesystem::path(doc.file()).stem().string();
   s.source = in.text("source");
   if (s.source.find_first_not_of(" \t\n") == std::string::npos) {
@@ -410,6 +427,7 @@ Scene readScene(const SceneDocument& doc) {
   s.flywheel = readFlywheel(in);
   s.loads = readLoads(in);
   s.reduced = readReduced(in);
+  readDrive(in, s);
 
   // Guide reactions (seed 000 eq. (18)-(25)) divide by 2b; with friction they drive the load.
   if (s.loads.guide_friction > 0.0) {

@@ -79,6 +79,13 @@ std::vector<KeySpec> buildSchema() {
       number("rods.inertia_com", "kg·m²", P::Conditional, nonNegative(), 0.0,
              "rod inertia about its centre of mass (default m·l²/12)"),
 
+      choice("drive.type", P::Optional, {"crank", "cam"}, "crank",
+             "crank-slider per cart, or the cam of seed 001 (rods then unused)"),
+      number("cam.stroke", "m", P::Conditional, positive(), 0.0,
+             "cam drive: full stroke of the cart (required when drive.type is cam)"),
+      number("cam.pusher_distance", "m", P::Conditional, positive(), 0.0,
+             "cam drive: distance b between the pushers = cam diameter (> stroke; default 2·stroke)"),
+
       integer("carts.count", P::Required, between(1.0, true, 1000.0, true), 0.0,
               "number of carts n"),
       {"carts.sides", KeyKind::Sides, "-", P::Conditional, anyFinite(), 0.0, "same", {},
@@ -149,6 +156,8 @@ std::vector<KeySpec> buildSchema() {
              "opposes_velocity", "direction law of the horizontal roller forces"),
       number("loads.guide_friction.coefficient", "-", P::Optional,
              between(0.0, true, 1.0, false), 0.0, "f, reduced guide-roller friction coefficient"),
+      number("loads.guide_friction.normal_force_lag", "s", P::Optional, between(0.0, false, 1.0, true),
+             2e-3, "tau_N, time constant of the friction normal force following the guide reaction (multibody)"),
       number("loads.gravity", "m/s²", P::Optional, nonNegative(), 9.81,
              "g; 0 = no gravity"),
       number("loads.velocity_smoothing", "m/s", P::Optional, positive(), 1e-3,
@@ -156,8 +165,6 @@ std::vector<KeySpec> buildSchema() {
 
       choice("reduced.kinematics", P::Optional, {"exact", "truncated"}, "exact",
              "slider-crank kinematics of the reduced model"),
-      number("loads.guide_friction.normal_force_lag", "s", P::Optional, between(0.0, false, 1.0, true),
-             2e-3, "tau_N, time constant of the friction normal force following the guide reaction (multibody)"),
       choice("reduced.integrator", P::Optional, {"cvode", "baranov"}, "cvode",
              "integrator of the reduced model"),
       number("reduced.baranov_step_deg", "deg", P::Optional, between(0.0, false, 10.0, true),

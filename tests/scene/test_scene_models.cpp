@@ -41,7 +41,7 @@ TEST(SceneModels, Balanced4CartMatchesSeed000) {
   EXPECT_DOUBLE_EQ(s.carts.geometry.b, 0.37);
   EXPECT_DOUBLE_EQ(s.carts.geometry.d, 0.046);
   EXPECT_DOUBLE_EQ(s.simulation.t_end, 10.0);
-  EXPECT_DOUBLE_EQ(s.simulation.output_step, 0.002);
+  EXPECT_DOUBLE_EQ(s.simulation.output_step, 0.005);
   EXPECT_NEAR(s.motorSideInertia(), (0.4 + 0.32 + 0.046) * 9.8 * 9.8, 1e-9);
   EXPECT_DOUBLE_EQ(s.initial.crank_speed, 0.0);
 }

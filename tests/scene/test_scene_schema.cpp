@@ -137,6 +137,11 @@ reduced:
   kinematics: truncated
   integrator: baranov
   baranov_step_deg: 2
+drive:
+  type: crank
+cam:
+  stroke: 0.45
+  pusher_distance: 1.2
 )";
 
 TEST(SceneSchema, FullSceneCoversTheSchema) {
@@ -205,11 +210,14 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.loads.guide_friction, 0.02);
   EXPECT_DOUBLE_EQ(s.loads.gravity, 9.8);
   EXPECT_DOUBLE_EQ(s.loads.velocity_smoothing, 0.01);
+  EXPECT_DOUBLE_EQ(s.loads.guide_friction_lag, 0.004);
   EXPECT_EQ(s.reduced.kinematics, KinematicsForm::Truncated);
   EXPECT_EQ(s.reduced.integrator, ReducedIntegrator::Baranov);
   EXPECT_DOUBLE_EQ(s.reduced.baranov_step, 2 * deg);
+  EXPECT_EQ(s.drive, DriveType::Crank);
+  EXPECT_DOUBLE_EQ(s.cam.stroke, 0.45);
+  EXPECT_DOUBLE_EQ(s.cam.pusher_distance, 1.2);
 }
 
-  EXPECT_DOUBLE_EQ(s.loads.guide_friction_lag, 0.004);
 }  // namespace
 }  // namespace rollerdyn
