@@ -3,11 +3,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "multibody/CamFollower.h"
 #include "multibody/ElasticCoupling.h"
 #include "multibody/EnergyMeter.h"
 #include "multibody/GuideFriction.h"
 #include "multibody/KlossMotorForce.h"
 #include "multibody/RollerLoadForce.h"
+#include "physics/CamMotionLaw.h"
 #include "physics/SliderCrank.h"
 
 namespace rollerdyn {
@@ -88,7 +90,16 @@ void MultibodyModel::buildCarts() {
     SimTK::Body::Rigid cart_body(SimTK::MassProperties(m_cart, com_cart, SimTK::Inertia(com_cart, m_cart)));
     rig.cart = SimTK::MobilizedBody::Slider(matter_.Ground(), SimTK::Transform(), cart_body, SimTK::Transform());
 
-    if (sc.rods.model == RodModel::Distributed) {
+    if (sc.hasCamDrive()) {
+      // seed 001: the cam on the crankshaft pushes the cart; x_B = σ·x(φ2 + j·Δφ) replaces the rod.
+      rig.p_CrankPin = SimTK::Vec3(0);
+      rig.cam = SimTK::Constraint::CoordinateCoupler(
+          matter_, new CamFollowerFunction(sc.cam.stroke, rig.side, sc.crankPhase(j)),
+          std::vector<SimTK::MobilizedBodyIndex>{crank_.getMobilizedBodyIndex(),
+                                                 rig.cart.getMobilizedBodyIndex()},
+          std::vector<SimTK::MobilizerQIndex>{SimTK::MobilizerQIndex(0), SimTK::MobilizerQIndex(0)});
+      constraint_count_ += 1;
+    } else if (sc.rods.model == RodModel::Distributed) {
       // Rod frame: origin at the crank pin A, +x along the rod towards B, centre of mass at l/2.
       const double m = sc.rods.mass, I = sc.rods.inertia_com;
       const SimTK::Vec3 com(0.5 * l, 0, 0);
@@ -165,6 +176,7 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
   const Scene& sc = scene_;
   SimTK::State s = system_.getDefaultState();
   system_.realizeModel(s);
+  if (friction_force_) friction_force_->setErrorWeights(s, scene_.cartMassWithRodShare());
   crank_.setOneQ(s, 0, phi);
   crank_.setOneU(s, 0, omega);
   if (motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex()) {
@@ -174,9 +186,10 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
   for (size_t j = 0; j < carts_.size(); ++j) {
     const CartRig& c = carts_[j];
     const double theta = phi + sc.crankPhase(int(j));
-    const SliderCrankPose pose = sliderCrankExact(theta, sc.crank.radius, sc.rods.length, c.side);
+    const SliderCrankPose pose = sc.hasCamDrive()
+                                     ? camDrivePose(theta, sc.cam.stroke, c.side)  // seed 001
+                                     : sliderCrankExact(theta, sc.crank.radius, sc.rods.length, c.side);
     c.cart.setOneQ(s, 0, pose.x_B);
-  if (friction_force_) friction_force_->setErrorWeights(s, scene_.cartMassWithRodShare());
     c.cart.setOneU(s, 0, pose.dx_B * omega);
     if (!c.rod.isEmptyHandle()) {
       // Direction A->B = l·(σ·cos β, -sin β): absolute rod angle ψ, rate ψ̇ = -σ·β̇.
@@ -278,6 +291,17 @@ void MultibodyModel::observe(const SimTK::State& s, std::vector<double>& ts,
     const CartRig& c = carts_[j];
     const SimTK::MobilizedBodyIndex ic = c.cart.getMobilizedBodyIndex();
     const GuideNormals n = solveGuideNormals(reactions[ic], c.side, scene_.carts.geometry);
+    const double friction = friction_force_ ? friction_force_->frictionForce(s, int(j)) : 0.0;
+    if (!c.cam.isEmptyHandle()) {
+      // Cam drive: the coupler acts on the mobilities [crank, cart] (in that order); Simbody
+      // returns constraint forces with the sign opposite to applied forces. The cam force on
+      // the cart is horizontal; "F_rod" > 0 pulls the cart towards the shaft, like a rod in
+      // tension, and the pusher puts the opposite force on the cam.
+      const SimTK::Vector f = c.cam.getConstrainedMobilityForcesAsVector(s);
+      const double Fx_on_cart = -f[1];
+      re.insert(re.end(), {n.front, n.rear, -c.side * Fx_on_cart, friction, -Fx_on_cart, 0.0});
+      continue;
+    }
     // Force of the rod on the cart at B from the cart's free body: m·a = applied + guide + rod.
     const double m_cart = c.cart.getBodyMass(s);
     const SimTK::Vec3 a_cart(c.cart.getOneUDot(s, 0), 0, 0);
@@ -292,7 +316,6 @@ void MultibodyModel::observe(const SimTK::State& s, std::vector<double>& ts,
       const SimTK::Vec3 a_S = c.rod.findStationAccelerationInGround(s, SimTK::Vec3(0.5 * c.rod_length, 0, 0));
       F_rod_on_crank += -c.rod_mass * a_S + c.rod_mass * SimTK::Vec3(0, -g, 0);
     }
-    const double friction = friction_force_ ? friction_force_->frictionForce(s, int(j)) : 0.0;
     re.insert(re.end(), {n.front, n.rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]});
   }
   const SimTK::Vec3 bearing = reactions[crank_.getMobilizedBodyIndex()][1];

@@ -243,6 +243,12 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   if (flag == CV_SUCCESS) flag = CVodeSetLinearSolver(cv, LS, A);
   if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(cv, 1000000);
   if (flag == CV_SUCCESS) flag = CVodeSetStopTime(cv, times.back());
+  // Cam drive (seed 001): in steady state the right-hand side is exactly constant over the
+  // constant-speed 2/3 of every stroke, so an unbounded step grows until it leaps from one
+  // constant segment to the next across the reversal without its error estimate ever seeing it
+  // (measured: the speed froze while ε = 160 rad/s² at every reversal). Cap the step at 1/8 of
+  // the shortest segment, a crank angle of π/6 at the reference speed.
+  if (flag == CV_SUCCESS && s.hasCamDrive()) flag = CVodeSetMaxStep(cv, (M_PI / 6.0) / w_ref / 8.0);
   if (flag != CV_SUCCESS) throw std::runtime_error("CVODE setup failed: " + ud.last_error);
 
   const Eigen::VectorXd y0 = m.initialState();

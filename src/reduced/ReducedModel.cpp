@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "physics/CamMotionLaw.h"
 #include "physics/KlossMotor.h"
 #include "physics/RollerLoads.h"
 
@@ -33,6 +34,8 @@ ReducedModel::ReducedModel(const Scene& scene)
 
 SliderCrankPose ReducedModel::cartPose(int j, double phi) const {
   const double theta = phi + scene_.crankPhase(j);
+  if (scene_.hasCamDrive())  // seed 001 eq. (32)-(34): x(θ) replaces the slider-crank
+    return camDrivePose(theta, scene_.cam.stroke, scene_.carts.side[j]);
   const double r = scene_.crank.radius, l = scene_.rods.length;
   const int side = scene_.carts.side[j];
   return scene_.reduced.kinematics == KinematicsForm::Truncated

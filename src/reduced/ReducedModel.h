@@ -24,6 +24,10 @@
 // m_rod·g·y_S' (seed 004 eq. (5)), split rods m_rod/2·g·r·cos θ (pin half-mass); carts move
 // horizontally and do no gravity work.
 //
+// Cam drive (scene.drive = cam, seed 001): cartPose() returns the cam law x_B = σ·x(θ) and its
+// θ-derivatives (physics/CamMotionLaw.h) in place of the slider-crank transfer functions; the
+// scene's rods are massless then and β = 0, so every formula above holds unchanged.
+//
 // State vector (Eigen::VectorXd). The elastic model integrates the twist ψ = φ1 - φ2 instead of
 // φ1: φ1 and φ2 grow to hundreds of radians while ψ swings by < 1e-3 rad, so integrating φ1 and
 // subtracting would leave ψ with the error of a 300-rad quantity. Same equations, exact change

@@ -1,0 +1,115 @@
+// `rollerdyn sweep SCENE --param KEY --values a:b:step|v1,v2,... [--param KEY --values ...]
+//  [--model multibody|reduced] [--minimize METRIC] [--set k=v]... [--out DIR] [--threads N]`:
+// one simulation per grid point (src/studies/Sweep.h), sweep.csv + sweep.json + plots in DIR.
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/Commands.h"
+#include "scene/SceneParser.h"
+#include "studies/Sweep.h"
+
+namespace rollerdyn::cli {
+
+namespace {
+
+struct SweepArgs {
+  SceneArgs scene;
+  std::vector<std::string> params, values;
+  std::string model = "multibody", minimize, out_dir;
+  int threads = 2;
+};
+
+std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done, std::size_t total) {
+  std::string s = "[" + std::to_string(done) + "/" + std::to_string(total) + "]";
+  for (std::size_t k = 0; k < o.params.size(); ++k) s += " " + o.params[k].key + "=" + p.texts[k];
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "  delta %.4g  H %.4g  k_p %.4g  dM %.4g N·m  %s  %.1f s cpu", p.metric("delta"),
+                p.metric("H"), p.metric("k_p"), p.metric("coupling_torque_swing"),
+                p.complete ? (p.steady ? "steady" : "NOT steady") : "FAILED", p.cpu_seconds);
+  s += buf;
+  if (!p.complete) s += "  (" + p.status + ")";
+  if (!p.warnings.empty()) s += "  [resonance warning]";
+  return s;
+}
+
+int runSweepCommand(const SweepArgs& a) {
+  if (a.params.size() != a.values.size())
+    throw std::invalid_argument("sweep: give one --values after each --param (" + std::to_string(a.params.size()) +
+                                " --param, " + std::to_string(a.values.size()) + " --values)");
+  SweepOptions o;
+  o.scene_path = a.scene.scene_path;
+  o.base_overrides = a.scene.overrides;
+  for (std::size_t i = 0; i < a.params.size(); ++i) o.params.push_back(parseSweepValues(a.params[i], a.values[i]));
+  o.model = a.model;
+  o.minimize = a.minimize;
+  o.threads = a.threads;
+  o.interrupt = &g_interrupted;
+  // Validate the base scene once, so a typo in the file or a --set fails before any run.
+  const Scene base = parseSceneFile(o.scene_path, o.base_overrides);
+  std::string out_dir = a.out_dir;
+  if (out_dir.empty()) {
+    out_dir = defaultOutDir(base.name) + "/sweep";
+    for (const SweepParameter& p : o.params) out_dir += "_" + p.key;
+  }
+  std::size_t total = 1;
+  for (const SweepParameter& p : o.params) total *= p.values.size();
+  std::cout << "sweep of " << base.name << ": " << total << " points, " << o.model << " model, "
+            << std::min<std::size_t>(std::max(1, o.threads), total) << " threads\n";
+  o.on_point = [&o](const SweepPoint& p, std::size_t done, std::size_t n) {
+    std::cout << lineFor(o, p, done, n) << std::endl;
+  };
+  const SweepResult r = runSweep(o);
+  const auto files = writeSweepOutputs(o, r, out_dir);
+  std::size_t failed = 0, unsteady = 0, warned = 0;
+  for (const SweepPoint& p : r.points) {
+    failed += !p.complete;
+    unsteady += p.complete && !p.steady;
+    warned += !p.warnings.empty();
+  }
+  if (!o.minimize.empty()) std::cout << describeOptimum(o, r) << "\n";
+  if (unsteady) std::cout << unsteady << " point(s) did not reach steady state (see steady_state_reached)\n";
+  if (warned) std::cerr << "rollerdyn: warning: " << warned << " point(s) near a torsional resonance (sweep.json)\n";
+  std::cout << "outputs in " << out_dir << "/ (" << files.size() << " files)\n";
+  if (failed) std::cerr << "rollerdyn: " << failed << " of " << r.points.size() << " points did not complete (status column)\n";
+  return failed ? 3 : 0;
+}
+
+}  // namespace
+
+Subcommand addSweepCommand(CLI::App& app) {
+  auto args = std::make_shared<SweepArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "sweep", "one simulation per value of one or more scene keys; sweep.csv, sweep.json, plots, optimum");
+  cmd->add_option("scene", args->scene.scene_path, "scene file (YAML)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--set", args->scene.overrides, "override a scene value for every point, key.path=value (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_option("--param", args->params, "scene key to vary, e.g. crank.offset_deg (repeatable)")
+      ->required()
+      ->allow_extra_args(false);
+  cmd->add_option("--values", args->values, "values of the preceding --param: a:b:step or v1,v2,...")
+      ->required()
+      ->allow_extra_args(false);
+  cmd->add_option("--model", args->model, "multibody (default) or reduced")
+      ->check(CLI::IsMember({"multibody", "reduced"}));
+  cmd->add_option("--minimize", args->minimize,
+                  "metric whose minimum to report: delta, H, k_p, omega_crank_mean, coupling_torque_swing, "
+                  "twist_swing, eps_crank_abs_max, energy_residual_rel, omega_crank_min, omega_crank_max, "
+                  "omega_crank_midrange, twist_rate_swing, twist_accel_swing");
+  cmd->add_option("--threads", args->threads, "worker threads (default 2)")->check(CLI::Range(1, 64));
+  cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/sweep_<keys>)");
+  cmd->footer(
+      "Each value is applied as --set KEY=VALUE, so it is validated like a scene file; a point that fails "
+      "is reported in its row (status) and the sweep goes on. Exit code 3 when any point did not complete.\n"
+      "Examples:\n"
+      "  rollerdyn sweep model/recuperative-2cart.yaml --param crank.offset_deg --values 0:180:10 "
+      "--model reduced --minimize delta\n"
+      "  rollerdyn sweep model/balanced-4cart.yaml --param crank.offset_deg --values 0:90:10 "
+      "--param coupling.damping --values 2000,8000 --model reduced");
+  return {cmd, [args] { return runSweepCommand(*args); }};
+}
+
+}  // namespace rollerdyn::cli

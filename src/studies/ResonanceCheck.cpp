@@ -1,0 +1,85 @@
+#include "studies/ResonanceCheck.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn {
+
+double naturalFrequency(double c, double J1, double J2) {
+  return std::sqrt(c * (J1 + J2) / (J1 * J2));  // seed 002 eq. (10)
+}
+
+double meanCrankSideInertia(const Scene& scene) {
+  const ReducedModel model(scene);
+  const int n = 720;
+  double sum = 0;
+  for (int i = 0; i < n; ++i) sum += model.crankSideInertia(2.0 * M_PI * i / n);
+  return sum / n;
+}
+
+std::vector<ResonanceHit> resonanceHits(double p0, double omega, double tolerance) {
+  std::vector<ResonanceHit> hits;
+  const double w = std::abs(omega);
+  if (!(w > 0) || !std::isfinite(w) || !std::isfinite(p0)) return hits;
+  for (int n : kResonanceHarmonics) {
+    const double ratio = p0 / (n * w);
+    if (std::abs(ratio - 1.0) <= tolerance) hits.push_back({n, ratio});
+  }
+  return hits;
+}
+
+ResonanceReport checkResonance(const Scene& scene, double omega_mean, double tolerance) {
+  ResonanceReport r;
+  r.omega = omega_mean;
+  if (scene.coupling.type != CouplingType::Elastic) return r;
+  r.J1 = scene.motorSideInertia();
+  r.J2_mean = meanCrankSideInertia(scene);
+  r.stiffness = scene.coupling.stiffness;
+  r.p0 = naturalFrequency(r.stiffness, r.J1, r.J2_mean);
+  r.applicable = std::isfinite(omega_mean) && std::abs(omega_mean) > 0;
+  if (!r.applicable) return r;
+  r.hits = resonanceHits(r.p0, omega_mean, tolerance);
+  for (const ResonanceHit& h : r.hits) {
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "torsional resonance: coupling natural frequency p0 = %.4g rad/s is within %.0f %% "
+                  "of %d*omega = %.4g rad/s (p0/(n*omega) = %.3f; seed 002 eq. (10), (16)-(21)); "
+                  "the coupling torque may be amplified",
+                  r.p0, 100 * tolerance, h.harmonic, h.harmonic * std::abs(omega_mean), h.ratio);
+    r.warnings.push_back(buf);
+  }
+  return r;
+}
+
+std::vector<std::string> addResonanceWarnings(const Scene& scene, nlohmann::json& summary) {
+  double omega = std::nan("");
+  if (summary.contains("omega_crank") && summary["omega_crank"].contains("mean") &&
+      summary["omega_crank"]["mean"].is_number())
+    omega = summary["omega_crank"]["mean"].get<double>();
+  if (!summary.contains("warnings") || !summary["warnings"].is_array())
+    summary["warnings"] = nlohmann::json::array();
+  if (scene.coupling.type != CouplingType::Elastic) {
+    summary["resonance"] = {{"applicable", false}, {"note", "rigid coupling: no torsional mode"}};
+    return {};
+  }
+  const ResonanceReport r = checkResonance(scene, omega);
+  nlohmann::json hits = nlohmann::json::array();
+  for (const ResonanceHit& h : r.hits) hits.push_back({{"harmonic", h.harmonic}, {"ratio", h.ratio}});
+  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  summary["resonance"] = {{"applicable", r.applicable},
+                          {"J1", num(r.J1)},
+                          {"J2_mean", num(r.J2_mean)},
+                          {"stiffness", num(r.stiffness)},
+                          {"p0", num(r.p0)},
+                          {"omega", num(r.omega)},
+                          {"p0_over_omega", num(r.p0 / r.omega)},
+                          {"tolerance", kResonanceTolerance},
+                          {"harmonics_checked", {1, 2, 3, 5}},
+                          {"hits", hits}};
+  for (const std::string& w : r.warnings) summary["warnings"].push_back(w);
+  return r.warnings;
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,100 @@
+// Parameter sweeps (`rollerdyn sweep`): one simulation per point of a grid of scene values, each
+// value applied as a --set override (so it passes the same validation as a scene file), every
+// run to the scene's t_end, on a pool of worker threads (each run builds its own model: Simbody
+// systems and the reduced model's CVODE context are independent objects). A point that fails
+// (bad value, exception, stall) is recorded with its status and the sweep goes on.
+//
+// Outputs (writeSweepOutputs): sweep.csv, one row per point: the parameter values under their key
+// paths, then delta, H, k_p, omega_crank_mean, coupling_torque_swing, twist_swing,
+// eps_crank_abs_max, energy_residual_rel, steady_state_reached, status, cpu_seconds, then extra
+// columns omega_crank_min, omega_crank_max, omega_crank_midrange, twist_rate_swing,
+// twist_accel_swing, resonance_warnings; sweep.json (the same plus the optimum and the resonance
+// warnings of each point); plots: each metric against the parameter (one parameter) or a heat
+// map over the grid (two parameters), through src/report/Gnuplot.h.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace rollerdyn {
+
+struct SweepParameter {
+  std::string key;                 // scene key path, e.g. crank.offset_deg
+  std::vector<std::string> texts;  // each value as given to --set
+  std::vector<double> values;      // the same as numbers (NaN for words such as `rigid`)
+  bool numeric() const;
+};
+
+// "a:b:step" (a, a+step, ... up to b within 1e-9·|step|; step != 0 and pointing from a to b) or
+// "v1,v2,..." (numbers or words). Throws std::invalid_argument with the reason.
+SweepParameter parseSweepValues(const std::string& key, const std::string& spec);
+
+// Metric columns of sweep.csv, in order (status is text; steady_state_reached is 0/1).
+const std::vector<std::string>& sweepMetricColumns();
+// The numeric metrics that can be plotted and minimised.
+const std::vector<std::string>& sweepNumericMetrics();
+
+struct SweepPoint {
+  std::vector<std::string> texts;        // parameter values of this point (per parameter)
+  std::vector<double> values;
+  std::vector<double> metrics;           // sweepNumericMetrics() order; NaN when not computed
+  bool ran = false;                      // the model ran (whatever its outcome)
+  bool complete = false;                 // the run reached t_end
+  bool steady = false;                   // summary: steady_state.reached
+  std::string status = "not run";        // run status, or "invalid: ...", "error: ..."
+  double cpu_seconds = 0;                // CPU time of this point's thread [s]
+  nlohmann::json warnings = nlohmann::json::array();  // resonance warnings (ResonanceCheck.h)
+  double metric(const std::string& name) const;
+};
+
+struct SweepOptions {
+  std::string scene_path;
+  std::vector<std::string> base_overrides;  // --set given to the sweep itself, applied first
+  std::vector<SweepParameter> params;
+  std::string model = "multibody";          // multibody | reduced
+  std::string minimize;                     // a sweepNumericMetrics() name, or empty
+  int threads = 2;
+  const std::atomic<bool>* interrupt = nullptr;
+  // Called (serialised) after each point; done counts finished points.
+  std::function<void(const SweepPoint&, std::size_t done, std::size_t total)> on_point;
+};
+
+struct SweepOptimum {
+  bool found = false;
+  std::string metric;
+  std::size_t index = 0;          // into SweepResult::points
+  double value = 0;
+  bool steady = false;            // whether that point reached steady state
+  std::string note;               // how it was chosen / why none
+  // One numeric parameter, optimum inside the grid: vertex of the parabola through the best
+  // point and its two neighbours (a finer estimate than the grid step).
+  bool refined = false;
+  double refined_parameter = 0, refined_value = 0;
+};
+
+struct SweepResult {
+  std::vector<SweepPoint> points;  // grid order: the last parameter varies fastest
+  SweepOptimum optimum;
+};
+
+// Throws std::invalid_argument for an empty grid, an unknown model or metric; every per-point
+// failure is recorded in the point instead.
+SweepResult runSweep(const SweepOptions& options);
+
+// The optimum of `metric` over the points that completed, preferring those at steady state.
+SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
+                         const std::vector<SweepPoint>& points, const std::string& metric);
+
+// sweep.csv, sweep.json and the plots (skipped with a note in sweep.json when gnuplot is
+// missing or there are more than two parameters). Returns the files written.
+std::vector<std::string> writeSweepOutputs(const SweepOptions& options, const SweepResult& result,
+                                           const std::string& out_dir);
+
+// One line for the terminal, e.g. "minimum of delta = 0.151 at crank.offset_deg=90 (steady)".
+std::string describeOptimum(const SweepOptions& options, const SweepResult& result);
+
+}  // namespace rollerdyn
