@@ -41,6 +41,7 @@ json makeSummary(const Scene& scene, const RunResult& run) {
   json j;
 
   j["scene"] = scene.name;
+  j["scene_path"] = scene.source_path;  // file as given, for `rollerdyn plot` (Kloss curve)
   j["model"] = run.model;
   j["integrator"] = run.integrator;
   j["effects"] = scene.effects();

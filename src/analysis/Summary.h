@@ -14,7 +14,8 @@
 namespace rollerdyn {
 
 // Keys (all always present; values null when not computable):
-//   scene, model, integrator, effects (scene.effects()), effects_built (run.effects), status,
+//   scene, scene_path (Scene::source_path: the file as given), model, integrator, effects
+//   (scene.effects()), effects_built (run.effects), status,
 //   complete, simulated_time, omega_crank {min, max, mean, midrange}, eps_crank_abs_max,
 //   eps_from_difference, delta, H, k_p, coupling_torque_swing, twist_swing, twist_rate_swing,
 //   twist_accel_swing, missing_columns, steady_state {reached, after_revolutions,

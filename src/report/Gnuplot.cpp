@@ -14,9 +14,14 @@
 namespace rollerdyn {
 namespace {
 
+// A gnuplot double-quoted string. Control characters are escaped or dropped: a raw newline would
+// end the string and make the rest of a title (a file name, a CSV header) a gnuplot command.
 std::string quoted(const std::string& s) {
   std::string out = "\"";
   for (char c : s) {
+    if (c == '\n') { out += "\\n"; continue; }
+    if (c == '\t') { out += ' '; continue; }
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) continue;
     if (c == '"' || c == '\\') out += '\\';
     out += c;
   }
@@ -60,20 +65,33 @@ void renderPlot(const PlotSpec& spec, const std::string& base, bool png, bool sv
      << quoted(spec.ylabel) << "\nset grid\nset key outside right top\n";
   if (spec.logx) os << "set logscale x\nset format x '10^{%L}'\n";
   if (spec.logy) os << "set logscale y\nset format y '10^{%L}'\n";
+  if (!spec.preamble.empty()) os << spec.preamble << '\n';
   for (size_t i = 0; i < spec.series.size(); ++i) {
     const PlotSeries& s = spec.series[i];
     os << "$D" << i << " << EOD\n";
+    bool gap = false;  // a blank line in gnuplot data breaks a line; write at most one in a row
     for (size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
       const bool ok = std::isfinite(s.x[k]) && std::isfinite(s.y[k]) && (!spec.logx || s.x[k] > 0) &&
                       (!spec.logy || s.y[k] > 0);
-      if (ok) os << s.x[k] << ' ' << s.y[k] << '\n';
+      if (ok) {
+        os << s.x[k] << ' ' << s.y[k] << '\n';
+        gap = false;
+      } else if (s.break_at_nonfinite && !gap) {
+        os << '\n';
+        gap = true;
+      }
     }
     os << "EOD\n";
   }
   os << "plot ";
-  for (size_t i = 0; i < spec.series.size(); ++i)
-    os << (i ? ", " : "") << "$D" << i << " using 1:2 with " << spec.series[i].style << " title "
-       << quoted(spec.series[i].title);
+  for (size_t i = 0; i < spec.series.size(); ++i) {
+    const PlotSeries& s = spec.series[i];
+    os << (i ? ", " : "") << "$D" << i << " using 1:2 with " << s.style;
+    if (s.line_width != 1.0) os << " lw " << s.line_width;
+    if (!s.color.empty()) os << " lc rgb " << quoted(s.color);
+    if (s.dash > 0) os << " dt " << s.dash;
+    os << " title " << quoted(s.title);
+  }
   if (spec.series.empty()) os << "NaN notitle";
   os << '\n';
   render(os.str(), spec.width, spec.height, base, png, svg);

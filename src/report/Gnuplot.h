@@ -11,7 +11,14 @@ namespace rollerdyn {
 struct PlotSeries {
   std::string title;          // legend entry
   std::vector<double> x, y;   // same length
-  std::string style = "lines";  // gnuplot style: "lines", "linespoints", "points"
+  std::string style = "lines";  // gnuplot style: "lines", "linespoints", "points", "dots"
+  // false (default): non-finite points are skipped and the line joins their neighbours.
+  // true: a non-finite point breaks the line there, e.g. one curve per crank revolution when a
+  // quantity is drawn against the crank angle mod 2π (put a NaN between revolutions).
+  bool break_at_nonfinite = false;
+  std::string color = "";       // gnuplot colour, e.g. "#1f77b4"; empty = gnuplot's sequence
+  double line_width = 1.0;
+  int dash = 0;                 // gnuplot dash type: 0 = solid (default), 2 = dashed, 3 = dotted
 };
 
 struct PlotSpec {
@@ -20,6 +27,10 @@ struct PlotSpec {
   bool logx = false, logy = false;
   std::vector<PlotSeries> series;
   int width = 960, height = 560;   // pixels (PNG) / points (SVG)
+  // Extra gnuplot commands run before `plot` (ranges, tics, arrows, key position), e.g.
+  // "set xrange [0:2*pi]\nset xtics ('0' 0, 'π' pi, '2π' 2*pi)". Titles and labels use gnuplot's
+  // enhanced text: "ω_{crank}" sets a subscript; write "\\_" for a literal underscore.
+  std::string preamble;
 };
 
 // True when a gnuplot executable is on PATH.

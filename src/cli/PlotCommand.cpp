@@ -1,0 +1,50 @@
+// `rollerdyn plot DIR [--scene FILE] [--set k=v]...`: the figures of an output folder of
+// simulate (timeseries.csv, reactions.csv, summary.json) and/or compare (comparison.csv), as PNG
+// and SVG in DIR/figures/ (src/report/RunFigures.h).
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "cli/Commands.h"
+#include "report/OutputFolder.h"
+#include "report/RunFigures.h"
+#include "scene/SceneParser.h"
+
+namespace rollerdyn::cli {
+
+int runPlot(const std::string& dir, const std::string& scene_arg, const std::vector<std::string>& overrides) {
+  const OutputFolder folder = readOutputFolder(dir);
+  // The Kloss curve needs the motor data: --scene, else the scene_path summary.json records.
+  std::unique_ptr<Scene> scene;
+  std::string scene_path = scene_arg;
+  if (scene_path.empty() && folder.has_summary && folder.summary.contains("scene_path") &&
+      folder.summary["scene_path"].is_string())
+    scene_path = folder.summary["scene_path"].get<std::string>();
+  if (!scene_arg.empty()) {
+    scene = std::make_unique<Scene>(parseSceneFile(scene_path, overrides));  // the user's to fix
+  } else if (!scene_path.empty() && std::filesystem::exists(scene_path)) {
+    try {
+      scene = std::make_unique<Scene>(parseSceneFile(scene_path, overrides));
+    } catch (const SceneError& e) {
+      if (!overrides.empty()) throw;  // the user's --set is wrong
+      std::cerr << "rollerdyn plot: note: scene '" << scene_path
+                << "' named in summary.json no longer parses; pass --scene FILE (" << e.what() << ")\n";
+    }
+  } else if (!scene_path.empty()) {
+    std::cerr << "rollerdyn plot: note: scene '" << scene_path
+              << "' named in summary.json is not found from here; pass --scene FILE\n";
+  }
+  if (!scene && !overrides.empty())
+    throw std::invalid_argument("--set needs the scene file: pass --scene FILE");
+  const std::string fig_dir = (std::filesystem::path(dir) / "figures").string();
+  const FigureSet set = drawRunFigures(folder, scene.get(), fig_dir);
+  std::cout << figureSetText(set, fig_dir);
+  if (set.figures.empty()) {
+    std::cerr << "rollerdyn plot: nothing to draw in '" << dir << "'\n";
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace rollerdyn::cli

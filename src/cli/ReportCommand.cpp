@@ -1,0 +1,71 @@
+// `rollerdyn report SCENE [--set k=v]... [--out DIR]`: simulate the scene with the multibody
+// model, write the outputs of `simulate` plus figures/ and ONE self-contained page
+// DIR/report.html (src/report/HtmlReport.h).
+#include <filesystem>
+#include <iostream>
+
+#include "analysis/Summary.h"
+#include "cli/Commands.h"
+#include "cli/Progress.h"
+#include "io/AtomicFile.h"
+#include "multibody/MultibodySimulation.h"
+#include "report/HtmlReport.h"
+#include "report/OutputFolder.h"
+#include "report/RunFigures.h"
+#include "report/SceneTable.h"
+#include "scene/SceneParser.h"
+#include "studies/ResonanceCheck.h"
+
+namespace rollerdyn::cli {
+
+int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
+  namespace fs = std::filesystem;
+  const Scene scene = parseSceneFile(args.scene_path, args.overrides);
+  const std::string out_dir = out_dir_arg.empty() ? defaultOutDir(scene.name) : out_dir_arg;
+  // Parameter table first: a scene that parses always gives one, and nothing is simulated for
+  // nothing if it did not.
+  const std::vector<SceneParameterRow> parameters = sceneParameterRows(args.scene_path, args.overrides);
+
+  RunResult run;
+  {
+    Progress progress;
+    RunControl control;
+    control.interrupt = &g_interrupted;
+    control.progress = [&progress](double t, double t_end) { progress(t, t_end); };
+    run = runMultibodyModel(scene, control);
+  }
+  writeCsvAtomic(out_dir + "/timeseries.csv", run.timeseries);
+  writeCsvAtomic(out_dir + "/reactions.csv", run.reactions);
+  auto summary = makeSummary(scene, run);
+  for (const std::string& w : addResonanceWarnings(scene, summary))  // as simulate does
+    std::cerr << "rollerdyn: warning: " << w << '\n';
+  writeSummaryAtomic(out_dir + "/summary.json", summary);
+
+  const OutputFolder folder = outputFolderOf(out_dir, run, summary);
+  const FigureSet figures = drawRunFigures(folder, &scene, (fs::path(out_dir) / "figures").string());
+
+  ReportContent content;
+  content.scene_name = scene.name;
+  content.scene_source = scene.source;
+  content.scene_path = args.scene_path;
+  content.overrides = args.overrides;
+  content.effects = scene.effects();
+  content.parameters = parameters;
+  content.derived = derivedParameterRows(scene);
+  content.summary = summary;
+  content.reaction_columns = run.reactions.columns;
+  content.figures = figures.figures;
+  content.notes = figures.notes;
+  content.command = "rollerdyn report " + args.scene_path;
+  for (const std::string& o : args.overrides) content.command += " --set " + o;
+  content.command += " --out " + out_dir;
+  const std::string page = (fs::path(out_dir) / "report.html").string();
+  writeFileAtomic(page, renderReportHtml(content));
+
+  std::cout << summaryText(summary) << figureSetText(figures, (fs::path(out_dir) / "figures").string())
+            << "report: " << page << '\n';
+  if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
+  return run.stats.complete ? 0 : 3;
+}
+
+}  // namespace rollerdyn::cli

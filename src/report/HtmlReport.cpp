@@ -1,0 +1,268 @@
+#include "report/HtmlReport.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace rollerdyn {
+
+namespace {
+
+using nlohmann::json;
+
+std::string readBinary(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read figure '" + path + "'");
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+// A JSON value at a dotted path ("omega_crank.mean"), null when absent.
+json at(const json& j, const std::string& path) {
+  const json* cur = &j;
+  size_t start = 0;
+  while (true) {
+    const size_t dot = path.find('.', start);
+    const std::string key = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (!cur->is_object() || !cur->contains(key)) return nullptr;
+    cur = &(*cur)[key];
+    if (dot == std::string::npos) return *cur;
+    start = dot + 1;
+  }
+}
+
+std::string number(const json& v, const char* f = "%.6g") {
+  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
+  if (!v.is_number()) return v.is_string() ? v.get<std::string>() : "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v.get<double>());
+  return buf;
+}
+
+// What a reactions.csv column is, for the table.
+std::string reactionMeaning(const std::string& c) {
+  auto cart = [&c](const std::string& prefix) { return c.substr(prefix.size()); };
+  if (c.rfind("N_front_", 0) == 0) return "guide reaction, front guide roller, cart " + cart("N_front_");
+  if (c.rfind("N_rear_", 0) == 0) return "guide reaction, rear guide roller, cart " + cart("N_rear_");
+  if (c.rfind("F_rod_", 0) == 0) return "rod force (> 0 tension), cart " + cart("F_rod_");
+  if (c.rfind("friction_", 0) == 0) return "guide friction force along x, cart " + cart("friction_");
+  if (c.rfind("crankpin_x_", 0) == 0) return "rod force on crank pin, x, cart " + cart("crankpin_x_");
+  if (c.rfind("crankpin_y_", 0) == 0) return "rod force on crank pin, y, cart " + cart("crankpin_y_");
+  if (c == "bearing_x") return "main bearing force on the crankshaft, x";
+  if (c == "bearing_y") return "main bearing force on the crankshaft, y";
+  if (c == "coupling_torque") return "coupling torque at the crank axis";
+  return "";
+}
+
+std::string reactionUnit(const std::string& c) { return c == "coupling_torque" ? "N·m" : "N"; }
+
+const char* const kStyle = R"(
+body{font-family:"DejaVu Sans",Arial,sans-serif;margin:24px auto;max-width:1100px;color:#222;line-height:1.35}
+h1{font-size:1.6em;margin-bottom:4px}h2{font-size:1.25em;border-bottom:2px solid #1f77b4;padding-bottom:3px;margin-top:32px}
+table{border-collapse:collapse;margin:8px 0;font-size:0.88em}
+th,td{border:1px solid #ccc;padding:3px 8px;text-align:left;vertical-align:top}
+th{background:#eef3f8;white-space:nowrap}td.n{text-align:right;font-family:"DejaVu Sans Mono",monospace;white-space:nowrap}
+tr:nth-child(even) td{background:#fafafa}
+.status{padding:8px 12px;border-radius:4px;margin:10px 0;font-weight:bold}
+.ok{background:#e3f4e3;border:1px solid #7bbf7b}.bad{background:#fde2e2;border:1px solid #d77}
+.warn{background:#fff4d6;border:1px solid #e0b040;font-weight:normal}.warn ul{margin:4px 0}
+.chip{display:inline-block;background:#eef3f8;border:1px solid #b8cde2;border-radius:10px;padding:1px 9px;margin:2px;font-size:0.9em}
+figure{margin:18px 0;page-break-inside:avoid}figure img{max-width:100%;border:1px solid #ddd}
+figcaption{font-size:0.9em;color:#444;margin-top:4px}.small{font-size:0.85em;color:#555}
+code{background:#f3f3f3;padding:0 3px}
+)";
+
+}  // namespace
+
+std::string htmlEscape(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string base64Encode(const std::string& bytes) {
+  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
+                       (static_cast<unsigned char>(bytes[i + 1]) << 8) | static_cast<unsigned char>(bytes[i + 2]);
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += kAlphabet[(v >> 6) & 63];
+    out += kAlphabet[v & 63];
+  }
+  if (i + 1 == bytes.size()) {
+    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += "==";
+  } else if (i + 2 == bytes.size()) {
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8);
+    out += kAlphabet[(v >> 18) & 63];
+    out += kAlphabet[(v >> 12) & 63];
+    out += kAlphabet[(v >> 6) & 63];
+    out += '=';
+  }
+  return out;
+}
+
+std::string renderReportHtml(const ReportContent& c) {
+  const json& s = c.summary;
+  std::ostringstream h;
+  const std::string name = htmlEscape(c.scene_name);
+  h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+    << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+    << "<title>rollerdyn report: " << name << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
+  h << "<h1>rollerdyn report: " << name << "</h1>\n";
+  h << "<div class=\"small\">Drive dynamics of a roller forming installation, " << htmlEscape(number(at(s, "model")))
+    << " model, integrator " << htmlEscape(number(at(s, "integrator"))) << ".</div>\n";
+
+  const bool complete = at(s, "complete").is_boolean() && at(s, "complete").get<bool>();
+  h << "<div class=\"status " << (complete ? "ok" : "bad") << "\">" << (complete ? "Run complete" : "Run INCOMPLETE")
+    << ": " << htmlEscape(number(at(s, "status"))) << "</div>\n";
+  const json warnings = at(s, "warnings");  // e.g. resonance warnings (summary.json)
+  if (warnings.is_array() && !warnings.empty()) {
+    h << "<div class=\"status warn\">Warnings:<ul>";
+    for (const json& w : warnings) h << "<li>" << htmlEscape(w.is_string() ? w.get<std::string>() : w.dump()) << "</li>";
+    h << "</ul></div>\n";
+  }
+
+  // Scene
+  h << "<h2>Scene</h2>\n<table>\n";
+  h << "<tr><th>name</th><td>" << name << "</td></tr>\n";
+  h << "<tr><th>file</th><td><code>" << htmlEscape(c.scene_path) << "</code></td></tr>\n";
+  h << "<tr><th>source</th><td>" << htmlEscape(c.scene_source) << "</td></tr>\n";
+  h << "<tr><th>overrides (--set)</th><td>";
+  if (c.overrides.empty()) h << "none";
+  for (size_t i = 0; i < c.overrides.size(); ++i)
+    h << (i ? "<br>" : "") << "#" << i + 1 << " <code>" << htmlEscape(c.overrides[i]) << "</code>";
+  h << "</td></tr>\n<tr><th>effects built</th><td>";
+  for (const std::string& e : c.effects) h << "<span class=\"chip\">" << htmlEscape(e) << "</span>";
+  h << "</td></tr>\n</table>\n";
+
+  // Summary metrics
+  struct Metric {
+    const char* path;
+    const char* label;
+    const char* unit;
+    const char* fmt;
+  };
+  const Metric metrics[] = {
+      {"omega_crank.mean", "mean crank speed ω_mean", "rad/s", "%.6g"},
+      {"omega_crank.min", "minimum crank speed ω_min", "rad/s", "%.6g"},
+      {"omega_crank.max", "maximum crank speed ω_max", "rad/s", "%.6g"},
+      {"delta", "speed fluctuation δ = (ω_max − ω_min)/ω_mean (seed 004 eq. (12))", "-", "%.5g"},
+      {"H", "H = |ε|_max/ω_mean² (seed 004 eq. (13))", "-", "%.5g"},
+      {"k_p", "k_p (seed 004 eq. (14))", "-", "%.5g"},
+      {"eps_crank_abs_max", "largest crank acceleration |ε|_max", "rad/s²", "%.5g"},
+      {"coupling_torque_swing", "coupling torque swing (seed 000 Table 1)", "N·m", "%.5g"},
+      {"twist_swing", "twist swing", "rad", "%.4g"},
+      {"twist_rate_swing", "twist rate swing", "rad/s", "%.4g"},
+      {"twist_accel_swing", "twist acceleration swing", "rad/s²", "%.4g"},
+      {"steady_state.reached", "steady state reached", "", "%g"},
+      {"steady_state.t_begin", "steady window from", "s", "%.5g"},
+      {"steady_state.t_end", "steady window to", "s", "%.5g"},
+      {"steady_state.window_revolutions", "revolutions in the window", "", "%g"},
+      {"simulated_time", "simulated time", "s", "%.5g"},
+      {"energy_residual_rel", "energy audit residual (relative)", "-", "%.2e"},
+      {"constraint_error_max", "largest constraint error", "-", "%.2e"},
+      {"steps", "integrator steps", "", "%.0f"},
+      {"realizations", "right-hand-side evaluations", "", "%.0f"},
+      {"cpu_seconds", "CPU time", "s", "%.3g"},
+      {"real_time_factor", "simulated time / CPU time", "-", "%.3g"},
+  };
+  h << "<h2>Summary metrics</h2>\n<p class=\"small\">Over the steady-state window (summary.json).</p>\n";
+  if (at(s, "steady_state.reached").is_boolean() && !at(s, "steady_state.reached").get<bool>())
+    h << "<div class=\"status warn\">Steady state NOT reached: the metrics and reaction ranges below are "
+         "taken over the last part of the run and include transients. "
+      << htmlEscape(number(at(s, "steady_state.note"))) << "</div>\n";
+  h << "<table>\n<tr><th>quantity</th><th>value</th><th>unit</th></tr>\n";
+  for (const Metric& m : metrics)
+    h << "<tr><td>" << htmlEscape(m.label) << "</td><td class=\"n\">" << htmlEscape(number(at(s, m.path), m.fmt))
+      << "</td><td>" << m.unit << "</td></tr>\n";
+  h << "</table>\n";
+
+  // Reactions
+  const json rx = at(s, "reactions");
+  h << "<h2>Joint reactions over the steady window</h2>\n";
+  if (!rx.is_object() || rx.empty()) {
+    h << "<p>No reactions in summary.json.</p>\n";
+  } else {
+    std::vector<std::string> order;
+    for (const std::string& col : c.reaction_columns)
+      if (rx.contains(col)) order.push_back(col);
+    for (auto it = rx.begin(); it != rx.end(); ++it)
+      if (std::find(order.begin(), order.end(), it.key()) == order.end()) order.push_back(it.key());
+    h << "<p class=\"small\">N &gt; 0: the guide presses the guide roller down (seed 000 fig. 3); "
+         "F_rod &gt; 0 in tension. Min and max over the steady window.</p>\n"
+      << "<table>\n<tr><th>joint quantity</th><th>meaning</th><th>unit</th><th>min</th><th>max</th>"
+         "<th>mean</th><th>|max|</th></tr>\n";
+    for (const std::string& col : order) {
+      const json& r = rx[col];
+      h << "<tr><td><code>" << htmlEscape(col) << "</code></td><td>" << htmlEscape(reactionMeaning(col))
+        << "</td><td>" << reactionUnit(col) << "</td>";
+      for (const char* k : {"min", "max", "mean", "abs_max"})
+        h << "<td class=\"n\">" << htmlEscape(number(r.is_object() && r.contains(k) ? r[k] : json(nullptr), "%.6g"))
+          << "</td>";
+      h << "</tr>\n";
+    }
+    h << "</table>\n";
+  }
+
+  // Figures
+  h << "<h2>Figures</h2>\n";
+  if (c.figures.empty()) h << "<p>No figures.</p>\n";
+  for (size_t i = 0; i < c.figures.size(); ++i) {
+    const FigureFile& f = c.figures[i];
+    h << "<figure id=\"" << htmlEscape(f.name) << "\">";
+    if (!f.png.empty())
+      h << "<img alt=\"" << htmlEscape(f.name) << "\" src=\"data:image/png;base64," << base64Encode(readBinary(f.png))
+        << "\">";
+    h << "<figcaption><b>Figure " << i + 1 << "</b> (<code>" << htmlEscape(f.name) << "</code>). "
+      << htmlEscape(f.caption) << "</figcaption></figure>\n";
+  }
+  if (!c.notes.empty()) {
+    h << "<h2>Notes</h2>\n<ul>\n";
+    for (const std::string& n : c.notes) h << "<li>" << htmlEscape(n) << "</li>\n";
+    h << "</ul>\n";
+  }
+
+  // Parameters
+  h << "<h2>Scene parameters</h2>\n<p class=\"small\">Every key of the scene schema the run used: "
+       "from the file, from a --set override, or the schema default.</p>\n"
+    << "<table>\n<tr><th>key</th><th>value</th><th>unit</th><th>from</th><th>meaning</th></tr>\n";
+  for (const SceneParameterRow& r : c.parameters)
+    h << "<tr><td><code>" << htmlEscape(r.key) << "</code></td><td class=\"n\">" << htmlEscape(r.value) << "</td><td>"
+      << htmlEscape(r.unit) << "</td><td>" << htmlEscape(r.origin) << "</td><td>" << htmlEscape(r.meaning)
+      << "</td></tr>\n";
+  h << "</table>\n";
+  if (!c.derived.empty()) {
+    h << "<h3>Derived quantities</h3>\n<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>meaning</th></tr>\n";
+    for (const SceneParameterRow& r : c.derived)
+      h << "<tr><td>" << htmlEscape(r.key) << "</td><td class=\"n\">" << htmlEscape(r.value) << "</td><td>"
+        << htmlEscape(r.unit) << "</td><td>" << htmlEscape(r.meaning) << "</td></tr>\n";
+    h << "</table>\n";
+  }
+  h << "<p class=\"small\">Generated by <code>" << htmlEscape(c.command)
+    << "</code>. Files next to this page: timeseries.csv, reactions.csv, summary.json, figures/*.png|svg.</p>\n";
+  h << "</body>\n</html>\n";
+  return h.str();
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,42 @@
+// The one-page HTML report of `rollerdyn report`: scene name and source, effects built, the
+// scene's parameters, the summary metrics, a reactions table (min/max per joint over the steady
+// window, from summary.json) and the figures embedded as base64 PNG. The page is
+// self-contained: inline CSS, no script, no font, image or style sheet from anywhere else, so it
+// opens offline and can be mailed or archived as one file.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "report/RunFigures.h"
+#include "report/SceneTable.h"
+
+namespace rollerdyn {
+
+struct ReportContent {
+  std::string scene_name;
+  std::string scene_source;               // citation (scene `source` key)
+  std::string scene_path;                 // file as given
+  std::vector<std::string> overrides;     // --set arguments, in order
+  std::vector<std::string> effects;       // Scene::effects()
+  std::vector<SceneParameterRow> parameters, derived;
+  nlohmann::json summary;                 // summary.json of the run
+  std::vector<std::string> reaction_columns;  // reactions.csv column order (for the table)
+  std::vector<FigureFile> figures;        // PNGs are read and embedded
+  std::vector<std::string> notes;         // figures left out, warnings
+  std::string command;                    // command line that produced the report
+};
+
+// The page as one string. Every text from the scene or the run is HTML-escaped. Throws
+// std::runtime_error if a figure's PNG cannot be read.
+std::string renderReportHtml(const ReportContent& content);
+
+// Standard base64 (RFC 4648, with padding).
+std::string base64Encode(const std::string& bytes);
+
+// Escapes & < > " ' for HTML text and attribute values.
+std::string htmlEscape(const std::string& text);
+
+}  // namespace rollerdyn

@@ -1,0 +1,37 @@
+// Reading back an output folder of `rollerdyn simulate` (timeseries.csv, reactions.csv,
+// summary.json) and/or `rollerdyn compare` (comparison.csv), for `plot` and `report`.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/RunResult.h"
+#include "io/Table.h"
+
+namespace rollerdyn {
+
+// Parses CSV as written by toCsv() (src/io/AtomicFile.h): a header row of column names, then
+// rows of numbers ("nan", "inf" accepted). Throws std::runtime_error naming file and line for a
+// missing header, a row with the wrong number of fields or a field that is not a number.
+Table parseCsv(const std::string& text, const std::string& file_label);
+Table readCsvFile(const std::string& path);
+
+struct OutputFolder {
+  std::string dir;
+  bool has_timeseries = false, has_reactions = false, has_summary = false, has_comparison = false;
+  Table timeseries;          // timeseries.csv
+  Table reactions;           // reactions.csv
+  Table comparison;          // comparison.csv (from `rollerdyn compare`)
+  nlohmann::json summary;    // summary.json (null when absent)
+};
+
+// Reads whichever of the four files exist in `dir`. Throws std::runtime_error if `dir` is not a
+// folder, holds none of them, or one of them is malformed (the message names the file).
+OutputFolder readOutputFolder(const std::string& dir);
+
+// The folder a run has just been written to, from the tables still in memory (simulate --plot,
+// report); comparison.csv is read from `dir` if a `compare` run left one there.
+OutputFolder outputFolderOf(const std::string& dir, const RunResult& run, const nlohmann::json& summary);
+
+}  // namespace rollerdyn

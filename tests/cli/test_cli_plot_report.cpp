@@ -1,0 +1,143 @@
+// End-to-end: simulate --plot, plot DIR, and report SCENE on short runs of the model scenes.
+// Checks the files exist and look like what they claim (PNG signature, SVG root, self-contained
+// HTML), that nothing is written outside the output folder, and the error paths of `plot`.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <set>
+#include <string>
+
+#include "cli/CliTestSupport.h"
+
+namespace rollerdyn {
+namespace {
+
+namespace fs = std::filesystem;
+using test::model;
+using test::runRollerdyn;
+using test::slurp;
+using test::TempDir;
+
+bool isPng(const fs::path& p) { return slurp(p).rfind("\x89PNG\r\n\x1a\n", 0) == 0; }
+bool isSvg(const fs::path& p) { return slurp(p).find("<svg") != std::string::npos; }
+
+std::set<std::string> stems(const fs::path& dir, const std::string& ext) {
+  std::set<std::string> out;
+  if (!fs::is_directory(dir)) return out;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ext) out.insert(e.path().stem().string());
+  return out;
+}
+
+// Every file under `dir`, relative.
+std::set<std::string> tree(const fs::path& dir) {
+  std::set<std::string> out;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) out.insert(fs::relative(e.path(), dir).string());
+  return out;
+}
+
+const std::set<std::string> kElasticFigures = {
+    "crank_speed_vs_angle", "crank_accel_vs_angle", "crank_speed_vs_time", "crank_accel_vs_time",
+    "coupling_torque_vs_time", "motor_operating_point", "motor_operating_point_steady", "guide_reactions_vs_angle", "rod_forces_vs_angle",
+    "twist_phase_rate", "twist_phase_rate_accel", "twist_phase_accel"};
+
+TEST(CliPlot, SimulateWithPlotThenPlotAgain) {
+  TempDir out("plot-out");
+  const auto sim = runRollerdyn({"simulate", model("balanced-4cart.yaml"), "--set", "simulation.t_end=3", "--out",
+                                 out.str(), "--plot"});
+  ASSERT_EQ(sim.exit_code, 0) << sim.out << sim.err;
+  const fs::path figs = out.path() / "figures";
+  EXPECT_EQ(stems(figs, ".png"), kElasticFigures);
+  EXPECT_EQ(stems(figs, ".svg"), kElasticFigures);
+  for (const std::string& f : kElasticFigures) {
+    EXPECT_TRUE(isPng(figs / (f + ".png"))) << f;
+    EXPECT_TRUE(isSvg(figs / (f + ".svg"))) << f;
+  }
+  // summary.json names the scene, so `plot` finds the motor data by itself.
+  const auto s = nlohmann::json::parse(slurp(out.path() / "summary.json"));
+  EXPECT_EQ(s["scene_path"], model("balanced-4cart.yaml"));
+
+  fs::remove_all(figs);
+  const auto plot = runRollerdyn({"plot", out.str()});
+  ASSERT_EQ(plot.exit_code, 0) << plot.out << plot.err;
+  EXPECT_EQ(stems(figs, ".png"), kElasticFigures) << plot.out;
+  EXPECT_EQ(plot.out.find("without its Kloss curve"), std::string::npos) << plot.out;
+  // Only the three outputs and the figures: no temporary or stray files.
+  for (const std::string& f : tree(out.path()))
+    EXPECT_TRUE(f == "timeseries.csv" || f == "reactions.csv" || f == "summary.json" || f == "figures" ||
+                f.rfind("figures/", 0) == 0)
+        << "unexpected " << f;
+}
+
+TEST(CliPlot, RigidCouplingHasNoTwistPortraitsAndSaysWhy) {
+  TempDir out("plot-rigid");
+  const auto sim = runRollerdyn({"simulate", model("recuperative-2cart.yaml"), "--set", "simulation.t_end=3",
+                                 "--out", out.str(), "--model", "reduced"});
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const auto plot = runRollerdyn({"plot", out.str()});
+  ASSERT_EQ(plot.exit_code, 0) << plot.err;
+  const auto png = stems(out.path() / "figures", ".png");
+  EXPECT_TRUE(png.count("motor_operating_point"));
+  EXPECT_TRUE(png.count("rod_forces_vs_angle"));
+  EXPECT_FALSE(png.count("twist_phase_rate"));
+  EXPECT_NE(plot.out.find("rigid coupling"), std::string::npos) << plot.out;
+}
+
+TEST(CliPlot, WarnsWhenTheSceneDoesNotMatchTheRunsMotor) {
+  TempDir out("plot-motor");
+  const auto sim = runRollerdyn({"simulate", model("recuperative-2cart.yaml"), "--set", "simulation.t_end=2",
+                                 "--set", "motor.breakdown_torque=300", "--out", out.str(), "--model", "reduced"});
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const auto plain = runRollerdyn({"plot", out.str()});
+  EXPECT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_NE(plain.out.find("differs from the Kloss curve"), std::string::npos) << plain.out;
+  const auto same = runRollerdyn({"plot", out.str(), "--set", "motor.breakdown_torque=300"});
+  EXPECT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_EQ(same.out.find("differs from the Kloss curve"), std::string::npos) << same.out;
+}
+
+TEST(CliPlot, ErrorsAreBadInput) {
+  TempDir empty("plot-empty");
+  const auto r = runRollerdyn({"plot", empty.str()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("holds none of timeseries.csv"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(empty.path())) << "plot wrote into a folder it could not use";
+  EXPECT_NE(runRollerdyn({"plot", "/nonexistent-folder"}).exit_code, 0);
+
+  TempDir bad("plot-bad");
+  { std::ofstream(bad.path() / "timeseries.csv") << "t,omega_crank\n0,1\n0.1\n"; }
+  const auto b = runRollerdyn({"plot", bad.str()});
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("timeseries.csv:3: expected 2 fields, got 1"), std::string::npos) << b.err;
+}
+
+TEST(CliReport, WritesOneSelfContainedPage) {
+  TempDir out("report");
+  const auto r = runRollerdyn({"report", model("balanced-4cart.yaml"), "--set", "simulation.t_end=3", "--set",
+                               "crank.offset_deg=60", "--out", out.str()});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string html = slurp(out.path() / "report.html");
+  ASSERT_FALSE(html.empty());
+  EXPECT_NE(html.find("<title>rollerdyn report: balanced-4cart</title>"), std::string::npos);
+  for (const char* section : {"Scene", "Summary metrics", "Joint reactions over the steady window", "Figures",
+                              "Scene parameters", "Derived quantities"})
+    EXPECT_TRUE(html.find(std::string("<h2>") + section) != std::string::npos ||
+                html.find(std::string("<h3>") + section) != std::string::npos)
+        << "missing section " << section;
+  // Every figure embedded, none linked.
+  size_t embedded = 0;
+  for (size_t at = 0; (at = html.find("src=\"data:image/png;base64,", at)) != std::string::npos; ++at) ++embedded;
+  EXPECT_EQ(embedded, kElasticFigures.size());
+  for (const char* remote : {"http://", "https://", "src=\"figures/", "<script", "<link"})
+    EXPECT_EQ(html.find(remote), std::string::npos) << "page refers to " << remote;
+  // The override is shown where it came from, with the value used.
+  EXPECT_NE(html.find("crank.offset_deg=60"), std::string::npos);
+  EXPECT_NE(html.find("--set #2"), std::string::npos);
+  EXPECT_NE(html.find("N_front_1"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out.path() / "summary.json"));
+  EXPECT_NE(r.out.find("report.html"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rollerdyn

@@ -1,0 +1,79 @@
+// Reading output folders back: CSV written by toCsv() round-trips (NaN included), malformed CSV
+// and folders are reported with file and line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include <unistd.h>
+
+#include "io/AtomicFile.h"
+#include "report/OutputFolder.h"
+
+namespace rollerdyn {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path freshDir(const std::string& tag) {
+  const fs::path p = fs::temp_directory_path() / ("rollerdyn-report-" + tag + "-" + std::to_string(::getpid()));
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+std::string messageOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "(no exception)";
+}
+
+TEST(ReportCsv, RoundTripsToCsv) {
+  Table t;
+  t.columns = {"t", "omega_crank", "N_front_1"};
+  t.rows = {{0, 1.5, -2e5}, {0.002, NAN, 3.25e-7}, {0.004, INFINITY, 1.0 / 3.0}};
+  const Table back = parseCsv(toCsv(t), "x.csv");
+  ASSERT_EQ(back.columns, t.columns);
+  ASSERT_EQ(back.rows.size(), 3u);
+  EXPECT_DOUBLE_EQ(back.rows[0][2], -2e5);
+  EXPECT_TRUE(std::isnan(back.rows[1][1]));
+  EXPECT_TRUE(std::isinf(back.rows[2][1]));
+  EXPECT_NEAR(back.rows[2][2], 1.0 / 3.0, 1e-12);
+}
+
+TEST(ReportCsv, MalformedInputNamesFileAndLine) {
+  EXPECT_EQ(messageOf([] { parseCsv("", "a.csv"); }), "a.csv: expected a header row, got an empty file");
+  EXPECT_EQ(messageOf([] { parseCsv("t,x\n1,2\n3\n", "a.csv"); }), "a.csv:3: expected 2 fields, got 1");
+  EXPECT_EQ(messageOf([] { parseCsv("t,x\n1,abc\n", "a.csv"); }), "a.csv:2: expected a number, got 'abc'");
+  EXPECT_EQ(messageOf([] { parseCsv("t,x\n1,\n", "a.csv"); }), "a.csv:2: expected a number, got ''");
+  EXPECT_EQ(messageOf([] { parseCsv("t,,x\n", "a.csv"); }),
+            "a.csv:1: expected a header of column names, got an empty name");
+  EXPECT_NO_THROW(parseCsv("t,x\r\n1,2\r\n", "crlf.csv"));
+}
+
+TEST(ReportOutputFolder, ReadsWhatIsThere) {
+  const fs::path d = freshDir("folder");
+  EXPECT_NE(messageOf([&] { readOutputFolder(d.string()); }).find("holds none of timeseries.csv"),
+            std::string::npos);
+  EXPECT_NE(messageOf([&] { readOutputFolder((d / "missing").string()); }).find("is not a folder"),
+            std::string::npos);
+  { std::ofstream(d / "summary.json") << "{\"scene\": \"x\""; }
+  EXPECT_NE(messageOf([&] { readOutputFolder(d.string()); }).find("summary.json: expected JSON"), std::string::npos);
+  { std::ofstream(d / "summary.json") << "{\"scene\": \"x\"}"; }
+  { std::ofstream(d / "comparison.csv") << "t,omega_crank_multibody,omega_crank_reduced\n0,1,1\n"; }
+  const OutputFolder f = readOutputFolder(d.string());
+  EXPECT_TRUE(f.has_summary);
+  EXPECT_TRUE(f.has_comparison);
+  EXPECT_FALSE(f.has_timeseries);
+  EXPECT_FALSE(f.has_reactions);
+  EXPECT_EQ(f.summary["scene"], "x");
+  fs::remove_all(d);
+}
+
+}  // namespace
+}  // namespace rollerdyn
