@@ -1,0 +1,55 @@
+// `rollerdyn validate [--quick] [--out DIR]`: the validation suite (src/compare/ValidationSuite.h).
+// Writes DIR/report.md, DIR/results.json, DIR/results/*.csv and DIR/figures/*.png (gnuplot,
+// src/report/Gnuplot.h). Reads the shipped scenes from model/ and the published tables from
+// validation/published/, so it runs from the repository root.
+#include <unistd.h>
+
+#include <ctime>
+#include <iostream>
+
+#include "cli/Commands.h"
+#include "compare/ValidationSuite.h"
+#include "io/AtomicFile.h"
+#include "report/Gnuplot.h"
+
+namespace rollerdyn::cli {
+
+int runValidate(bool quick, const std::string& out_dir) {
+  using namespace rollerdyn::validation;
+  ValidationOptions o;
+  o.quick = quick;
+  o.interrupt = &g_interrupted;
+  const std::clock_t c0 = std::clock();
+  o.log = [c0](const std::string& line) {
+    std::cerr << "[" << int(double(std::clock() - c0) / CLOCKS_PER_SEC) << " s cpu] " << line << '\n';
+  };
+  const ValidationResults results = runValidation(o);
+  const ValidationReport report = buildValidationReport(results, "figures");
+
+  int figures = 0;
+  if (gnuplotAvailable()) {
+    for (const ReportFigure& f : report.figures) {
+      renderPlot(f.spec, out_dir + "/figures/" + f.name, /*png=*/true, /*svg=*/false);
+      ++figures;
+    }
+  } else {
+    std::cerr << "rollerdyn: gnuplot not found (Debian package gnuplot-nox): report written without figures\n";
+  }
+  for (const auto& [name, table] : report.tables) writeCsvAtomic(out_dir + "/results/" + name, table);
+  writeFileAtomic(out_dir + "/results.json", report.results.dump(2) + "\n");
+  writeFileAtomic(out_dir + "/report.md", report.markdown);
+
+  int failed = 0;
+  for (const auto& c : results.equivalence)
+    if (!c.pass) ++failed;
+  std::cout << "validation report: " << out_dir << "/report.md (" << figures << " figures, "
+            << results.equivalence.size() << " equivalence cases, " << failed << " failed; CPU "
+            << results.cpu_seconds << " s)\n";
+  if (g_interrupted) {
+    std::cerr << "rollerdyn: interrupted; the report holds what was computed\n";
+    return 3;
+  }
+  return failed == 0 ? 0 : 1;
+}
+
+}  // namespace rollerdyn::cli

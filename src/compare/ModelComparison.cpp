@@ -1,0 +1,285 @@
+#include "compare/ModelComparison.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "multibody/MultibodySimulation.h"
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+bool isReactionQuantity(const std::string& name) {
+  return name.rfind("N_front_", 0) == 0 || name.rfind("N_rear_", 0) == 0 ||
+         name.rfind("F_rod_", 0) == 0;
+}
+
+nlohmann::json num(double v) {
+  if (std::isfinite(v)) return v;
+  return nullptr;
+}
+
+nlohmann::json statsJson(const DifferenceStats& s) {
+  return {{"max_abs_diff", num(s.max_abs_diff)},
+          {"rms_diff", num(s.rms_diff)},
+          {"max_rel_diff", num(s.max_rel_diff)},
+          {"max_abs_multibody", num(s.max_abs_a)},
+          {"t_at_max_abs_diff", num(s.t_at_max)},
+          {"samples", s.samples}};
+}
+
+nlohmann::json runJson(const RunResult& r) {
+  return {{"integrator", r.integrator},
+          {"status", r.stats.status},
+          {"complete", r.stats.complete},
+          {"steps", r.stats.steps},
+          {"realizations", r.stats.realizations},
+          {"cpu_seconds", num(r.stats.cpu_seconds)}};
+}
+
+// Column `name` of the run's timeseries, or of its reactions table, with that table's times.
+void columnWithTime(const RunResult& run, const std::string& name, std::vector<double>& t,
+                    std::vector<double>& y) {
+  const Table& tab = run.timeseries.has(name) ? run.timeseries : run.reactions;
+  if (!tab.has(name) || !tab.has("t"))
+    throw std::runtime_error("compare: the " + run.model + " run has no column '" + name + "'");
+  t = tab.column("t");
+  y = tab.column(name);
+}
+
+}  // namespace
+
+DifferenceStats differenceStats(const std::vector<double>& t, const std::vector<double>& a,
+                                const std::vector<double>& b) {
+  DifferenceStats s;
+  const std::size_t n = std::min({t.size(), a.size(), b.size()});
+  s.samples = n;
+  if (n == 0) {
+    s.max_abs_diff = s.rms_diff = s.max_rel_diff = s.max_abs_a = s.t_at_max = kNaN;
+    return s;
+  }
+  double integral = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = a[i] - b[i];
+    if (!std::isfinite(d) || !std::isfinite(t[i])) {
+      s.max_abs_diff = s.rms_diff = s.max_rel_diff = s.max_abs_a = s.t_at_max = kNaN;
+      return s;
+    }
+    if (i == 0 || std::abs(d) > s.max_abs_diff) {
+      s.max_abs_diff = std::abs(d);
+      s.t_at_max = t[i];
+    }
+    s.max_abs_a = std::max(s.max_abs_a, std::abs(a[i]));
+    if (i > 0) {
+      const double d0 = a[i - 1] - b[i - 1];
+      integral += 0.5 * (d0 * d0 + d * d) * (t[i] - t[i - 1]);
+    }
+  }
+  const double span = t[n - 1] - t[0];
+  s.rms_diff = span > 0 ? std::sqrt(integral / span) : std::abs(a[0] - b[0]);
+  if (s.max_abs_a > 0)
+    s.max_rel_diff = s.max_abs_diff / s.max_abs_a;
+  else
+    s.max_rel_diff = s.max_abs_diff == 0 ? 0.0 : kNaN;
+  return s;
+}
+
+std::vector<double> resampleLinear(const std::vector<double>& ts, const std::vector<double>& ys,
+                                   const std::vector<double>& td) {
+  std::vector<double> out(td.size(), kNaN);
+  if (ts.empty() || ys.size() != ts.size()) return out;
+  for (std::size_t i = 0; i < td.size(); ++i) {
+    const double tq = td[i];
+    if (!(tq >= ts.front() && tq <= ts.back())) continue;
+    // First source time >= tq.
+    const auto it = std::lower_bound(ts.begin(), ts.end(), tq);
+    const std::size_t hi = std::size_t(it - ts.begin());
+    if (ts[hi] == tq || hi == 0) {
+      out[i] = ys[hi];
+      continue;
+    }
+    const std::size_t lo = hi - 1;
+    const double frac = (tq - ts[lo]) / (ts[hi] - ts[lo]);
+    out[i] = ys[lo] + frac * (ys[hi] - ys[lo]);
+  }
+  return out;
+}
+
+const QuantityComparison* ModelComparison::find(const std::string& name) const {
+  for (const auto& q : quantities)
+    if (q.name == name) return &q;
+  return nullptr;
+}
+
+const QuantityComparison* ModelComparison::findKinetostatic(const std::string& name) const {
+  for (const auto& q : kinetostatic)
+    if (q.name == name) return &q;
+  return nullptr;
+}
+
+std::vector<std::string> comparedQuantities(int carts) {
+  std::vector<std::string> q = {"omega_crank", "coupling_torque"};
+  for (int j = 1; j <= carts; ++j)
+    for (const char* n : {"N_front_", "N_rear_", "F_rod_"}) q.push_back(n + std::to_string(j));
+  return q;
+}
+
+ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
+  ModelComparison c;
+  c.scene_name = scene.name;
+  c.differences = modelDifferences(scene);
+  c.identical = identicalPhysics(scene);
+  c.motion_equivalent = motionEquivalent(scene);
+  if (!mb.timeseries.has("t") || mb.timeseries.rows.empty() || !red.timeseries.has("t") ||
+      red.timeseries.rows.empty())
+    throw std::runtime_error("compare: a model produced no output rows");
+
+  const std::vector<double> t_mb_all = mb.timeseries.column("t");
+  const std::vector<double> t_red = red.timeseries.column("t");
+  const double t_common = std::min(t_mb_all.back(), t_red.back());
+  // Grid: the multibody rows within the span both runs reached.
+  std::vector<double> grid;
+  for (double t : t_mb_all)
+    if (t >= t_red.front() && t <= t_common + 1e-12) grid.push_back(t);
+  if (grid.empty()) throw std::runtime_error("compare: the two runs share no time span");
+  c.t_begin = grid.front();
+  c.t_end = grid.back();
+  c.rows = grid.size();
+  for (double t : grid) {
+    const auto it = std::lower_bound(t_red.begin(), t_red.end(), t);
+    double off = std::numeric_limits<double>::infinity();
+    if (it != t_red.end()) off = std::min(off, std::abs(*it - t));
+    if (it != t_red.begin()) off = std::min(off, std::abs(*(it - 1) - t));
+    c.grid_max_time_offset = std::max(c.grid_max_time_offset, off);
+  }
+
+  // Kinetostatic reactions of the reduced model on its own rows: φ, φ̇, φ̈ from its timeseries.
+  const int n = scene.carts.count;
+  std::vector<std::vector<double>> kin(3 * n, std::vector<double>(t_red.size(), kNaN));
+  {
+    const ReducedModel model(scene);
+    const std::vector<double> phi = red.timeseries.column("phi_crank");
+    const std::vector<double> w = red.timeseries.column("omega_crank");
+    const std::vector<double> e = red.timeseries.column("eps_crank");
+    for (std::size_t i = 0; i < t_red.size(); ++i) {
+      const std::vector<CartEvaluation> carts = model.cartReactions(phi[i], w[i], e[i], true);
+      for (int j = 0; j < n; ++j) {
+        kin[3 * j][i] = carts[j].statics.N_front;
+        kin[3 * j + 1][i] = carts[j].statics.N_rear;
+        kin[3 * j + 2][i] = carts[j].statics.F_rod;
+      }
+    }
+  }
+
+  c.table.columns = {"t"};
+  std::vector<std::vector<double>> cols = {grid};
+  const std::vector<std::string> names = comparedQuantities(n);
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::string& q = names[k];
+    std::vector<double> ta, ya, tb, yb;
+    columnWithTime(mb, q, ta, ya);
+    columnWithTime(red, q, tb, yb);
+    const std::vector<double> a = resampleLinear(ta, ya, grid);
+    const std::vector<double> b = resampleLinear(tb, yb, grid);
+    c.quantities.push_back({q, differenceStats(grid, a, b)});
+    c.table.columns.push_back(q + "_multibody");
+    c.table.columns.push_back(q + "_reduced");
+    cols.push_back(a);
+    cols.push_back(b);
+    if (isReactionQuantity(q)) {
+      const std::size_t kin_index = k - 2;  // names: omega, torque, then 3 per cart
+      const std::vector<double> bk = resampleLinear(t_red, kin[kin_index], grid);
+      c.kinetostatic.push_back({q, differenceStats(grid, a, bk)});
+      c.table.columns.push_back(q + "_reduced_kinetostatic");
+      cols.push_back(bk);
+    }
+  }
+  c.table.rows.assign(grid.size(), std::vector<double>(cols.size()));
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    for (std::size_t k = 0; k < cols.size(); ++k) c.table.rows[i][k] = cols[k][i];
+
+  c.multibody = std::move(mb);
+  c.reduced = std::move(red);
+  return c;
+}
+
+ModelComparison runComparison(const Scene& scene, const CompareControl& control) {
+  // The reduced model first: it is ~100x cheaper and rejects an impossible combination (e.g. the
+  // Baranov scheme with an elastic coupling) before the long multibody run.
+  RunResult red = runReducedModel(scene);
+  RunControl rc;
+  rc.interrupt = control.interrupt;
+  RunResult mb = runMultibodyModel(scene, rc);
+  return compareRuns(scene, std::move(mb), std::move(red));
+}
+
+nlohmann::json comparisonJson(const ModelComparison& c) {
+  nlohmann::json j;
+  j["scene"] = c.scene_name;
+  j["compared"] = {{"t_begin", num(c.t_begin)},
+                   {"t_end", num(c.t_end)},
+                   {"rows", c.rows},
+                   {"grid_max_time_offset", num(c.grid_max_time_offset)},
+                   {"reference", "multibody"},
+                   {"max_rel_diff_definition", "max|multibody - reduced| / max|multibody|"}};
+  nlohmann::json q = nlohmann::json::object();
+  for (const auto& x : c.quantities) q[x.name] = statsJson(x.stats);
+  j["quantities"] = q;
+  nlohmann::json k = nlohmann::json::object();
+  for (const auto& x : c.kinetostatic) k[x.name] = statsJson(x.stats);
+  j["kinetostatic_reactions"] = k;
+  std::vector<std::string> sentences;
+  nlohmann::json detail = nlohmann::json::array();
+  for (const auto& d : c.differences) {
+    sentences.push_back(d.sentence);
+    detail.push_back({{"topic", d.topic},
+                      {"affects_motion", d.affects_motion},
+                      {"numerical", d.numerical},
+                      {"sentence", d.sentence}});
+  }
+  j["differences"] = sentences;
+  j["differences_detail"] = detail;
+  j["identical_physics"] = c.identical;
+  j["motion_equivalent"] = c.motion_equivalent;
+  const double cm = c.cpuMultibody(), cr = c.cpuReduced();
+  j["speed"] = {{"cpu_seconds_multibody", num(cm)},
+                {"cpu_seconds_reduced", num(cr)},
+                {"cpu_ratio_reduced_to_multibody", num(cm > 0 ? cr / cm : kNaN)},
+                {"speedup_reduced_over_multibody", num(cr > 0 ? cm / cr : kNaN)}};
+  j["runs"] = {{"multibody", runJson(c.multibody)}, {"reduced", runJson(c.reduced)}};
+  return j;
+}
+
+std::string comparisonText(const ModelComparison& c) {
+  std::ostringstream os;
+  os.precision(3);
+  os << "scene        " << c.scene_name << "  (" << c.rows << " rows, t = " << c.t_begin << " ... "
+     << c.t_end << " s)\n";
+  os << "runs         multibody: " << c.multibody.stats.status << "; reduced: " << c.reduced.stats.status
+     << '\n';
+  for (const char* name : {"omega_crank", "coupling_torque"}) {
+    if (const QuantityComparison* q = c.find(name))
+      os << "  " << name << std::string(17 - std::string(name).size(), ' ') << "max_rel_diff "
+         << q->stats.max_rel_diff << "  max_abs_diff " << q->stats.max_abs_diff << "  rms_diff "
+         << q->stats.rms_diff << '\n';
+  }
+  double worst = 0, worst_kin = 0;
+  for (const auto& q : c.quantities)
+    if (q.name != "omega_crank" && q.name != "coupling_torque") worst = std::max(worst, q.stats.max_rel_diff);
+  for (const auto& q : c.kinetostatic) worst_kin = std::max(worst_kin, q.stats.max_rel_diff);
+  os << "  reactions      largest max_rel_diff " << worst << " (quasi-static reduced), " << worst_kin
+     << " (kinetostatic reduced)\n";
+  os << "motion       " << (c.motion_equivalent ? "equivalent physics" : "different physics") << '\n';
+  for (const auto& d : c.differences) os << "  - " << d.sentence << '\n';
+  os << "cpu          multibody " << c.cpuMultibody() << " s, reduced " << c.cpuReduced() << " s";
+  if (c.cpuReduced() > 0) os << " (reduced " << c.cpuMultibody() / c.cpuReduced() << "x faster)";
+  os << '\n';
+  return os.str();
+}
+
+}  // namespace rollerdyn

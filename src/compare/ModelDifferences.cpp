@@ -1,0 +1,134 @@
+#include "compare/ModelDifferences.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace rollerdyn {
+namespace {
+
+std::string fmt(const char* format, double a, double b = 0.0, double c = 0.0) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, format, a, b, c);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<ModelDifference> modelDifferences(const Scene& s) {
+  std::vector<ModelDifference> d;
+  const double r = s.crank.radius, l = s.rods.length, lam = r / l;
+
+  // Reactions: always. The reduced model's reaction columns come from CartStatics (no inertial
+  // force); the multibody model's from the slider's constraint force.
+  std::string reactions =
+      "guide reactions and rod forces: dynamic constraint forces of the slider and rod joints "
+      "(multibody) vs quasi-static cart equilibrium without the carts' inertial forces (reduced, "
+      "seed 000 eq. (10)-(25)); they differ by the effect of each cart's d'Alembert force "
+      "-m_B*a (comparison.csv also lists the reduced model's kinetostatic reactions, with that "
+      "force added)";
+  if (s.carts.geometry.com_height != 0.0)
+    reactions += fmt("; the cart's centre of mass %.3g m above the hinge adds the moment of that "
+                     "force to the guide reactions",
+                     s.carts.geometry.com_height);
+  d.push_back({"reactions", reactions, false, false});
+
+  if (s.rods.model == RodModel::Distributed)
+    d.push_back({"rod_inertia",
+                 "rod inertia: distributed rod bodies (multibody) vs distributed reduced-inertia "
+                 "terms m_rod*(x_S'^2 + y_S'^2) + I_S*beta'^2 (reduced, seed 004 eq. (9)); both are "
+                 "the exact kinetic energy of the rods, so the motion agrees, but the rods' own "
+                 "inertial forces reach the carts' guides only in multibody (the reduced statics "
+                 "pass half the rod weight to the hinge, CartStatics.h)",
+                 false, false});
+
+  if (s.hasGuideFriction())
+    d.push_back({"guide_friction",
+                 fmt("guide friction (f = %.3g): f*(|N_front| + |N_rear|) from the dynamic "
+                     "reactions, followed with a lag tau_N = %.3g s (multibody, GuideFriction.h) vs "
+                     "from the quasi-static reactions (reduced, seed 000 eq. (14)-(25)); the friction "
+                     "torque, and with it crank speed and coupling torque, differ by about "
+                     "f*(cart inertial force)*tan(beta)*dx_B/dphi",
+                     s.loads.guide_friction, s.loads.guide_friction_lag),
+                 true, false});
+
+  if (s.reduced.kinematics == KinematicsForm::Truncated && !s.hasCamDrive()) {
+    // Largest position error of the series x_B = r cos θ + l(1 - λ² sin² θ / 2) against the
+    // exact r cos θ + l·√(1 - λ² sin² θ), at sin² θ = 1.
+    const double dx = l * std::abs(std::sqrt(1.0 - lam * lam) - (1.0 - 0.5 * lam * lam));
+    d.push_back({"kinematics",
+                 fmt("kinematics: truncated series for the cart position (reduced, seed 000 eq. "
+                     "(52)-(57)) vs exact loop closure (multibody); with r/l = %.3g the cart "
+                     "positions differ by up to %.3g m and the transfer function dx_B/dphi by "
+                     "O((r/l)^3)*r, which changes the reduced inertia and the load torque",
+                     lam, dx),
+                 true, false});
+  }
+
+  if (s.reduced.integrator == ReducedIntegrator::Baranov)
+    d.push_back({"integrator",
+                 fmt("integration: the papers' fixed-step Baranov scheme in crank angle, step "
+                     "%.3g deg (reduced, seed 004 eq. (4), (10), (11)), a low-order scheme whose "
+                     "error does not shrink with simulation.accuracy, vs an adaptive Simbody "
+                     "integrator at relative accuracy %.3g (multibody)",
+                     s.reduced.baranov_step * 180.0 / M_PI, s.simulation.accuracy),
+                 true, false});
+  else
+    d.push_back({"integrator",
+                 "integration: Simbody " + s.simulation.integrator +
+                     " with constraint projection (multibody) vs CVODE Adams-Moulton on the "
+                     "reduced equations (reduced), both at relative accuracy " +
+                     fmt("%.3g", s.simulation.accuracy) +
+                     "; differences of this order are integration error, not modelling",
+                 false, true});
+  return d;
+}
+
+std::vector<std::string> identicalPhysics(const Scene& s) {
+  std::vector<std::string> same;
+  if (s.hasCamDrive())
+    same.push_back("drive: cams with the motion law of seed 001 eq. (29)-(34), x_B = sigma*x(theta), in both "
+                   "(a coordinate coupler in multibody, the same transfer functions in reduced); no rods");
+  if (s.coupling.type == CouplingType::Elastic)
+    same.push_back("drive: two masses joined by an elastic, damped coupling c*psi + k*psi' "
+                   "(seed 000 eq. (58)) in both");
+  else
+    same.push_back("drive: rigid coupling, one rotating body (multibody) and the one-mass model "
+                   "J(phi) (seed 004 eq. (1)) (reduced)");
+  if (s.hasMotor())
+    same.push_back("motor: the same Kloss law 2*M_kr*s*s_kr/(s^2 + s_kr^2)*u*eta (seed 000 eq. "
+                   "(37), physics/KlossMotor.h) in both");
+  if (s.rods.model == RodModel::Split)
+    same.push_back("rods: half the rod mass on the crank pin, half on the cart (seed 000 eq. "
+                   "(2)-(3)) in both, including the pin half-masses' weight");
+  else if (s.rods.model == RodModel::Massless)
+    same.push_back("rods: massless in both");
+  if (s.hasRollerLoads())
+    same.push_back(std::string("roller loads: the same direction law (") +
+                   toString(s.loads.roller_force_direction) +
+                   ", physics/RollerLoads.h) in both; vertical roller forces do no work");
+  if (!s.hasGuideFriction()) same.push_back("guide friction: none in either model");
+  if (s.reduced.kinematics == KinematicsForm::Exact && !s.hasCamDrive())
+    same.push_back("kinematics: exact slider-crank (seed 000 eq. (40)-(47)) in the reduced "
+                   "model, exact loop closure in multibody");
+  if (s.hasGravity())
+    same.push_back("gravity: cart weight does no work on horizontal guides; rod weight enters "
+                   "both models' motion");
+  if (s.hasFlywheel())
+    same.push_back(std::string("flywheel on the ") + toString(s.flywheel.location) +
+                   " in both");
+  return same;
+}
+
+bool motionEquivalent(const Scene& scene) {
+  for (const ModelDifference& d : modelDifferences(scene))
+    if (d.affects_motion && !d.numerical) return false;
+  return true;
+}
+
+std::vector<std::string> differenceSentences(const Scene& scene) {
+  std::vector<std::string> out;
+  for (const ModelDifference& d : modelDifferences(scene)) out.push_back(d.sentence);
+  return out;
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,254 @@
+#include "compare/TwoRotorCheck.h"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "Simbody.h"
+#include "multibody/ElasticCoupling.h"
+
+namespace rollerdyn::validation {
+namespace {
+
+// The drive torque M(t) of eq. (8) on rotor 1.
+class SeriesDriveTorque : public SimTK::Force::Custom::Implementation {
+ public:
+  SeriesDriveTorque(const SimTK::MobilizedBody& rotor, const TwoRotorParameters& p) : rotor_(rotor), p_(p) {}
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
+                 SimTK::Vector& mobility_forces) const override {
+    rotor_.applyOneMobilityForce(s, 0, driveTorque(p_, s.getTime()), mobility_forces);
+  }
+  SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+
+ private:
+  SimTK::MobilizedBody rotor_;
+  TwoRotorParameters p_;
+};
+
+// A rotor of polar inertia J on a Pin about z (a disc keeps the inertia valid; the token mass
+// on the axis changes nothing on a fixed axis, as in MultibodyModel.cpp).
+SimTK::Body::Rigid rotorBody(double J) {
+  return SimTK::Body::Rigid(SimTK::MassProperties(1e-3, SimTK::Vec3(0), SimTK::Inertia(0.5 * J, 0.5 * J, J)));
+}
+
+struct TwoRotorSystem {
+  SimTK::MultibodySystem system;
+  SimTK::SimbodyMatterSubsystem matter{system};
+  SimTK::GeneralForceSubsystem forces{system};
+  SimTK::MobilizedBody::Pin rotor1, rotor2;
+
+  TwoRotorSystem(const TwoRotorParameters& p, bool drive)
+      : rotor1(matter.Ground(), SimTK::Transform(), rotorBody(p.J1), SimTK::Transform()),
+        rotor2(matter.Ground(), SimTK::Transform(), rotorBody(p.J2), SimTK::Transform()) {
+    // The element under test: rotor 1 plays the motor side, rotor 2 the crankshaft.
+    SimTK::Force::Custom(forces, new ElasticCoupling(rotor1, rotor2, p.k, p.b));
+    if (drive) {
+      SimTK::Force::Custom(forces, new SeriesDriveTorque(rotor1, p));
+      if (p.Mc != 0.0) SimTK::Force::MobilityConstantForce(forces, rotor2, 0, -p.Mc);
+    }
+    system.realizeTopology();
+  }
+  double twist(const SimTK::State& s) const { return rotor1.getOneQ(s, 0) - rotor2.getOneQ(s, 0); }
+  double twistRate(const SimTK::State& s) const { return rotor1.getOneU(s, 0) - rotor2.getOneU(s, 0); }
+  double twistAccel(const SimTK::State& s) const { return rotor1.getOneUDot(s, 0) - rotor2.getOneUDot(s, 0); }
+};
+
+// stepTo() may return before the requested time (e.g. at the start of the first continuous
+// interval): advance until the integrator's own time is there.
+void advanceTo(SimTK::Integrator& integ, double t) {
+  while (integ.getTime() < t - 1e-14 * std::max(1.0, std::abs(t))) integ.stepTo(t);
+}
+
+std::unique_ptr<SimTK::Integrator> makeExactIntegrator(const SimTK::System& system, double accuracy) {
+  auto integ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
+  integ->setAccuracy(accuracy);
+  // Land on every sample time by shortening the step, never by interpolating: interpolated
+  // states are less accurate than the integrator's own steps.
+  integ->setAllowInterpolation(false);
+  integ->setInternalStepLimit(1000000);
+  return integ;
+}
+
+// Cubic Hermite interpolant on [t0, t1] through (y0, d0), (y1, d1), evaluated at s in [0, 1].
+double hermite(double s, double h, double y0, double d0, double y1, double d1) {
+  const double s2 = s * s, s3 = s2 * s;
+  return (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * h * d0 + (-2 * s3 + 3 * s2) * y1 +
+         (s3 - s2) * h * d1;
+}
+
+// Root in [0, 1] of the Hermite interpolant, whose end values have opposite signs (bisection).
+double hermiteRoot(double h, double y0, double d0, double y1, double d1) {
+  double lo = 0, hi = 1;
+  const double s_lo = y0;
+  for (int it = 0; it < 80; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    const double v = hermite(mid, h, y0, d0, y1, d1);
+    if ((v < 0) == (s_lo < 0)) lo = mid; else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+double naturalFrequency(const TwoRotorParameters& p) {
+  return std::sqrt(p.k * (p.J1 + p.J2) / (p.J1 * p.J2));  // seed 002, eq. (10)
+}
+double dampingRate(const TwoRotorParameters& p) { return p.b * (p.J1 + p.J2) / (2.0 * p.J1 * p.J2); }  // eq. (9)
+double dampedFrequency(const TwoRotorParameters& p) {
+  const double p0 = naturalFrequency(p), d = dampingRate(p);
+  return std::sqrt(p0 * p0 - d * d);  // eq. (14)
+}
+double meanTwist(const TwoRotorParameters& p) {
+  const double p0sq = p.k * (p.J1 + p.J2) / (p.J1 * p.J2);
+  return p.M1 * (M_PI - 2.0 * p.alpha) / (M_PI * p.J1 * p0sq) + p.Mc / (p.J2 * p0sq);  // eq. (42)-(43)
+}
+
+double driveTorque(const TwoRotorParameters& p, double t) {
+  const double w = p.omega, a = p.alpha, M1 = p.M1;
+  // seed 002, eq. (8) times J1
+  return M1 * (M_PI - 2.0 * a) / M_PI +
+         2.0 * M1 / M_PI * (std::sin(w * t) + std::sin(3 * w * t) / 3.0 + std::sin(5 * w * t) / 5.0) +
+         M1 / M_PI *
+             (std::sin(a) * std::cos(w * t) - std::sin(2 * a) * std::cos(2 * w * t) / 2.0 +
+              std::sin(3 * a) * std::cos(3 * w * t) / 3.0);
+}
+
+std::vector<HarmonicResponse> closedFormResponse(const TwoRotorParameters& p) {
+  const double p0 = naturalFrequency(p), d1 = dampingRate(p), w = p.omega, J1 = p.J1, M1 = p.M1;
+  const double a = p.alpha;
+  auto D = [&](int n) {  // denominators of eq. (16)-(21)
+    const double nw = n * w;
+    return std::sqrt((p0 * p0 - nw * nw) * (p0 * p0 - nw * nw) + 4.0 * d1 * d1 * nw * nw);
+  };
+  auto xi = [&](int n) { return std::atan2(2.0 * d1 * n * w, p0 * p0 - n * w * n * w); };  // (22)-(25)
+  // sin and cos coefficients of M(t), eq. (8)·J1
+  struct Coef { int n; double A, B; };
+  const Coef coefs[] = {{1, 2.0 * M1 / M_PI, M1 * std::sin(a) / M_PI},
+                        {2, 0.0, -M1 * std::sin(2 * a) / (2.0 * M_PI)},
+                        {3, 2.0 * M1 / (3.0 * M_PI), M1 * std::sin(3 * a) / (3.0 * M_PI)},
+                        {5, 2.0 * M1 / (5.0 * M_PI), 0.0}};
+  std::vector<HarmonicResponse> out;
+  for (const Coef& c : coefs) {
+    HarmonicResponse h;
+    h.n = c.n;
+    h.phase_lag = xi(c.n);
+    const double g = 1.0 / (J1 * D(c.n));
+    // A·sin(nωt - ξ) + B·cos(nωt - ξ), expanded in sin nωt and cos nωt
+    h.a_sin = g * (c.A * std::cos(h.phase_lag) + c.B * std::sin(h.phase_lag));
+    h.b_cos = g * (c.B * std::cos(h.phase_lag) - c.A * std::sin(h.phase_lag));
+    h.amplitude = g * std::hypot(c.A, c.B);
+    // The paper as printed, eq. (16)-(21), combined by (27)-(28).
+    const double P = M1 / (M_PI * J1 * D(c.n));
+    if (c.n == 1) {
+      const double psi11 = 2.0 * P, psi12 = std::sin(a) * P;  // (16), (19)
+      h.amplitude_printed = std::sqrt(std::max(0.0, psi11 * psi11 + psi12 * psi12 -
+                                                        2.0 * psi11 * psi12 * std::sin(2.0 * h.phase_lag)));  // (27)
+    } else if (c.n == 2) {
+      h.amplitude_printed = std::abs(std::sin(2 * a)) * P;  // (20)
+    } else if (c.n == 3) {
+      const double psi31 = 2.0 * P, psi32 = std::sin(3 * a) * P;  // (17), (21)
+      h.amplitude_printed = std::sqrt(std::max(0.0, psi31 * psi31 + psi32 * psi32 -
+                                                        2.0 * psi31 * psi32 * std::sin(2.0 * h.phase_lag)));  // (28)
+    } else {
+      h.amplitude_printed = 2.0 * P;  // (18)
+    }
+    out.push_back(h);
+  }
+  return out;
+}
+
+ForcedResponseMeasurement measureForcedResponse(const TwoRotorParameters& p, double settle_time,
+                                                int periods, int samples_per_period, double accuracy) {
+  if (!(p.omega > 0) || periods < 1 || samples_per_period < 12)
+    throw std::invalid_argument("two-rotor check: need omega > 0, periods >= 1, >= 12 samples per period");
+  TwoRotorSystem sys(p, true);
+  SimTK::State s = sys.system.getDefaultState();
+  sys.system.realizeModel(s);
+  auto integ = makeExactIntegrator(sys.system, accuracy);
+  integ->initialize(s);
+
+  ForcedResponseMeasurement m;
+  m.settle_time = settle_time;
+  m.periods = periods;
+  m.samples_per_period = samples_per_period;
+  const double T = 2.0 * M_PI / p.omega;
+  const int N = periods * samples_per_period;
+  const int ns[] = {1, 2, 3, 5};
+  double sum0 = 0, sa[4] = {0, 0, 0, 0}, sb[4] = {0, 0, 0, 0};
+  for (int i = 0; i < N; ++i) {
+    const double t = settle_time + i * T / samples_per_period;
+    advanceTo(*integ, t);
+    const double psi = sys.twist(integ->getState());
+    m.t.push_back(t);
+    m.twist.push_back(psi);
+    sum0 += psi;
+    for (int k = 0; k < 4; ++k) {
+      sa[k] += psi * std::sin(ns[k] * p.omega * t);
+      sb[k] += psi * std::cos(ns[k] * p.omega * t);
+    }
+  }
+  m.mean_twist = sum0 / N;
+  for (int k = 0; k < 4; ++k) {
+    HarmonicResponse h;
+    h.n = ns[k];
+    h.a_sin = 2.0 * sa[k] / N;
+    h.b_cos = 2.0 * sb[k] / N;
+    h.amplitude = std::hypot(h.a_sin, h.b_cos);
+    h.phase_lag = std::atan2(-h.b_cos, h.a_sin);  // of the combined response, for information
+    m.harmonics.push_back(h);
+  }
+  return m;
+}
+
+FreeOscillationMeasurement measureFreeOscillation(const TwoRotorParameters& p, double initial_twist,
+                                                  int periods, int samples_per_period, double accuracy) {
+  if (periods < 2 || samples_per_period < 12 || initial_twist == 0.0)
+    throw std::invalid_argument("two-rotor check: need >= 2 periods, >= 12 samples per period, a twist");
+  TwoRotorSystem sys(p, false);
+  SimTK::State s = sys.system.getDefaultState();
+  sys.system.realizeModel(s);
+  sys.rotor1.setOneQ(s, 0, initial_twist);
+  auto integ = makeExactIntegrator(sys.system, accuracy);
+  integ->initialize(s);
+
+  FreeOscillationMeasurement m;
+  m.initial_twist = initial_twist;
+  // Sample spacing from the expected period only sets the resolution; the measurement itself
+  // uses the crossings found in the samples.
+  const double h = 2.0 * M_PI / dampedFrequency(p) / samples_per_period;
+  const int N = (periods + 2) * samples_per_period;
+  std::vector<double> t, y, dy, ddy;
+  for (int i = 0; i <= N; ++i) {
+    if (i > 0) advanceTo(*integ, i * h);
+    const SimTK::State& st = integ->getState();
+    sys.system.realize(st, SimTK::Stage::Acceleration);
+    t.push_back(st.getTime());
+    y.push_back(sys.twist(st));
+    dy.push_back(sys.twistRate(st));
+    ddy.push_back(sys.twistAccel(st));
+  }
+  m.t = t;
+  m.twist = y;
+
+  std::vector<double> up;    // upward zero crossings of ψ
+  std::vector<double> peak_t, peak_y;  // maxima of ψ (ψ̇ from + to -)
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    const double hh = t[i + 1] - t[i];
+    if (y[i] < 0 && y[i + 1] >= 0) up.push_back(t[i] + hh * hermiteRoot(hh, y[i], dy[i], y[i + 1], dy[i + 1]));
+    if (dy[i] > 0 && dy[i + 1] <= 0) {
+      const double sroot = hermiteRoot(hh, dy[i], ddy[i], dy[i + 1], ddy[i + 1]);
+      peak_t.push_back(t[i] + hh * sroot);
+      peak_y.push_back(hermite(sroot, hh, y[i], dy[i], y[i + 1], dy[i + 1]));
+    }
+  }
+  const int mc = std::min<int>(periods, int(up.size()) - 1);
+  if (mc < 1) throw std::runtime_error("two-rotor check: fewer than two upward zero crossings");
+  m.periods = mc;
+  m.frequency = 2.0 * M_PI * mc / (up[mc] - up[0]);
+  const int mp = std::min<int>(periods, int(peak_t.size()) - 1);
+  m.decay_rate = mp >= 1 && peak_y[mp] > 0 ? std::log(peak_y[0] / peak_y[mp]) / (peak_t[mp] - peak_t[0]) : 0.0;
+  m.natural_frequency = std::sqrt(m.frequency * m.frequency + m.decay_rate * m.decay_rate);
+  return m;
+}
+
+}  // namespace rollerdyn::validation

@@ -1,0 +1,156 @@
+// The validation suite behind `rollerdyn validate` (src/cli/ValidateCommand.cpp):
+//   (1) equivalence: scenes whose physics both models describe identically (exact kinematics,
+//       split rods, no guide friction), 1 to 4 carts, same and opposite sides, elastic and
+//       rigid drive: crank speed and coupling torque must agree to kEquivalenceTarget
+//       (max_rel_diff) over 20 crank revolutions; the command at accuracy 1e-9, the
+//       seven scenes at 1e-11, and a convergence study showing the residual is integration
+//       error;
+//   (2) where the physics differ (distributed rods, friction from dynamic reactions, truncated
+//       kinematics, quasi-static reactions, the papers' Baranov scheme): the differences
+//       measured, each with the measurement that explains it;
+//   (3) the papers' tables (validation/published/*.csv) beside our numbers: seed 004 Δφ sweep,
+//       seed 003 flywheel sweep, seed 000 Table 1; inputs are the shipped scenes, never tuned;
+//   (4) seed 002's closed-form two-rotor response against the multibody ElasticCoupling.
+// runValidation() computes; buildValidationReport() turns the results into report.md text,
+// figure specifications (drawn by the caller through src/report/Gnuplot.h) and results.json.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/ModelComparison.h"
+#include "compare/TwoRotorCheck.h"
+#include "io/Table.h"
+#include "report/Gnuplot.h"  // PlotSpec only (a plain struct): drawing is the caller's business
+#include "scene/Scene.h"
+
+namespace rollerdyn::validation {
+
+// Equivalent physics must agree to this max_rel_diff in crank speed and coupling torque (the
+// issue's target, not loosened). With both integrators at relative accuracy 1e-9 the seed 000
+// scene agrees to 3e-8 (speed) and 2e-7 (torque): the coupling torque c·ψ + k·ψ̇ is a small
+// difference of large quantities and keeps fewer digits. Scenes with loads opposing the
+// velocity (tanh(v/v_s), v_s = 1 mm/s: the load flips within ~0.1 ms at every cart reversal)
+// or a single cart need 1e-10 to pass and 1e-11 for a margin of ten; the convergence study
+// shows why. 1e-6 is
+// still three orders below the smallest genuine modelling difference measured in (2) (guide
+// friction, ~1e-3).
+inline constexpr double kEquivalenceTarget = 1e-6;
+
+struct ValidationOptions {
+  bool quick = false;                               // coarser sweeps, shorter runs (~1 min)
+  std::string model_dir = "model";                  // the shipped scene files
+  std::string published_dir = "validation/published";
+  const std::atomic<bool>* interrupt = nullptr;     // Ctrl-C: the current run stops early
+  std::function<void(const std::string&)> log;      // one line per step (may be empty)
+};
+
+// Steady-state metrics of one run (analysis/Metrics.h) with what the tables need.
+struct RunMetrics {
+  bool complete = false;
+  std::string status;
+  bool steady = false;          // steady state reached (analysis/SteadyState.h)
+  bool rotating = false;        // whole revolutions with mean speed > 25 % of ω0/u
+  double omega_min = 0, omega_max = 0, omega_mean = 0, omega_midrange = 0;
+  double delta = 0, eps_abs_max = 0, H = 0, k_p = 0;
+  double torque_swing = 0, twist_swing = 0, twist_rate_swing = 0, twist_accel_swing = 0;
+  double cpu_seconds = 0;
+};
+RunMetrics runMetrics(const Scene& scene, const RunResult& run);
+
+// One `rollerdyn compare` run of the suite.
+struct ComparisonCase {
+  std::string label;          // "E1", "D3", ...
+  std::string description;
+  std::string command;        // the same comparison as a command line
+  double revolutions = 0;     // crank revolutions covered (0: the scene's own t_end)
+  double t_end = 0, accuracy = 0;
+  double max_rel_omega = 0, max_rel_torque = 0;
+  double max_rel_reactions_quasistatic = 0;   // largest over N_front_j, N_rear_j, F_rod_j
+  double max_rel_reactions_kinetostatic = 0;
+  double cpu_multibody = 0, cpu_reduced = 0;
+  bool complete = false;
+  bool motion_equivalent = false;
+  std::vector<std::string> topics;            // ModelDifference::topic of the modelling differences
+  std::vector<std::pair<std::string, std::string>> measured;  // further measurements (name, value)
+  std::string explanation;                    // why the numbers are what they are
+  bool pass = false;                          // equivalence cases: both below kEquivalenceTarget
+};
+
+struct SweepPoint {
+  double x = 0;                 // Δφ [deg] or flywheel inertia [kg·m²]
+  double k = 0;                 // seed 000: coupling damping [N·m·s/rad]; 0 otherwise
+  RunMetrics reduced;           // the scene as shipped, reduced model (CVODE)
+  RunMetrics variant;           // the paper's own modelling choices (see PaperSweep)
+  RunMetrics multibody;
+  bool has_variant = false, has_multibody = false, has_published = false;
+  std::map<std::string, double> published;   // the published row (column -> value)
+};
+
+struct PaperSweep {
+  std::string id;               // "seed004", "seed003", "seed000"
+  std::string title;
+  std::string scene_file;
+  std::string x_key, x_label;   // scene key swept and its label with unit
+  std::string variant_label;    // what `variant` changes
+  std::string published_file;
+  std::vector<SweepPoint> points;
+  std::vector<std::string> causes;  // likely causes of the gap (text)
+};
+
+struct SensitivityRow {
+  std::string paper, point, change, metric;
+  double baseline = 0, changed = 0, published = 0;
+};
+
+struct AnalyticResults {
+  TwoRotorParameters forced;                      // ω = the seed 000 crank speed
+  TwoRotorParameters resonant;                    // ω = p0/3: third harmonic at resonance
+  std::vector<HarmonicResponse> closed_forced, closed_resonant;
+  ForcedResponseMeasurement measured_forced, measured_resonant;
+  double mean_twist_expected = 0;
+  TwoRotorParameters free_undamped, free_damped;
+  FreeOscillationMeasurement measured_undamped, measured_damped;
+  double accuracy = 0;
+};
+
+struct ValidationResults {
+  bool quick = false;
+  double cpu_seconds = 0;                         // whole suite
+  std::vector<ComparisonCase> equivalence;        // E0 (the command, 1e-9), E1-E7 (1e-11)
+  std::vector<ComparisonCase> convergence;        // E4, E3 at several accuracies
+  Table equivalence_example;                      // comparison.csv of E0 (for the figures)
+  std::vector<ComparisonCase> differences;
+  Table friction_example;                         // comparison.csv of the friction case
+  Table distributed_example;                      // comparison.csv of the distributed-rod case
+  std::vector<PaperSweep> papers;
+  std::vector<SensitivityRow> sensitivity;
+  AnalyticResults analytic;
+};
+
+ValidationResults runValidation(const ValidationOptions& options);
+
+// Reads a CSV with leading '#' comment lines (validation/published/*.csv) into a Table;
+// throws std::runtime_error naming the file and line on malformed input.
+Table readPublishedTable(const std::string& path);
+
+struct ReportFigure {
+  std::string name;   // file stem under the figure folder
+  PlotSpec spec;
+};
+struct ValidationReport {
+  std::string markdown;                                   // report.md
+  std::vector<ReportFigure> figures;                      // to draw as <figure_dir>/<name>.png
+  nlohmann::json results;                                 // results.json
+  std::vector<std::pair<std::string, Table>> tables;      // our numbers as CSV: (file name, table)
+};
+// figure_dir: the figures' folder relative to report.md (links in the markdown).
+ValidationReport buildValidationReport(const ValidationResults& results, const std::string& figure_dir);
+
+}  // namespace rollerdyn::validation
