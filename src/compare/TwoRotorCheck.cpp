@@ -14,9 +14,10 @@ namespace {
 class SeriesDriveTorque : public SimTK::Force::Custom::Implementation {
  public:
   SeriesDriveTorque(const SimTK::MobilizedBody& rotor, const TwoRotorParameters& p) : rotor_(rotor), p_(p) {}
-  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
-                 SimTK::Vector& mobility_forces) const override {
-    rotor_.applyOneMobilityForce(s, 0, driveTorque(p_, s.getTime()), mobility_forces);
+  // A body torque: rotor 1 is mobilized on rotor 2, so a mobility force would also act on rotor 2.
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
+                 SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
+    rotor_.applyBodyTorque(s, SimTK::Vec3(0, 0, driveTorque(p_, s.getTime())), body_forces);
   }
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
 
@@ -35,22 +36,23 @@ struct TwoRotorSystem {
   SimTK::MultibodySystem system;
   SimTK::SimbodyMatterSubsystem matter{system};
   SimTK::GeneralForceSubsystem forces{system};
-  SimTK::MobilizedBody::Pin rotor1, rotor2;
+  // Rotor 2 plays the crankshaft, rotor 1 the motor side mobilized on it as in MultibodyModel:
+  // rotor 1's coordinate is the twist.
+  SimTK::MobilizedBody::Pin rotor2, rotor1;
 
   TwoRotorSystem(const TwoRotorParameters& p, bool drive)
-      : rotor1(matter.Ground(), SimTK::Transform(), rotorBody(p.J1), SimTK::Transform()),
-        rotor2(matter.Ground(), SimTK::Transform(), rotorBody(p.J2), SimTK::Transform()) {
-    // The element under test: rotor 1 plays the motor side, rotor 2 the crankshaft.
-    SimTK::Force::Custom(forces, new ElasticCoupling(rotor1, rotor2, p.k, p.b));
+      : rotor2(matter.Ground(), SimTK::Transform(), rotorBody(p.J2), SimTK::Transform()),
+        rotor1(rotor2, SimTK::Transform(), rotorBody(p.J1), SimTK::Transform()) {
+    SimTK::Force::Custom(forces, new ElasticCoupling(rotor1, p.k, p.b));
     if (drive) {
       SimTK::Force::Custom(forces, new SeriesDriveTorque(rotor1, p));
       if (p.Mc != 0.0) SimTK::Force::MobilityConstantForce(forces, rotor2, 0, -p.Mc);
     }
     system.realizeTopology();
   }
-  double twist(const SimTK::State& s) const { return rotor1.getOneQ(s, 0) - rotor2.getOneQ(s, 0); }
-  double twistRate(const SimTK::State& s) const { return rotor1.getOneU(s, 0) - rotor2.getOneU(s, 0); }
-  double twistAccel(const SimTK::State& s) const { return rotor1.getOneUDot(s, 0) - rotor2.getOneUDot(s, 0); }
+  double twist(const SimTK::State& s) const { return rotor1.getOneQ(s, 0); }
+  double twistRate(const SimTK::State& s) const { return rotor1.getOneU(s, 0); }
+  double twistAccel(const SimTK::State& s) const { return rotor1.getOneUDot(s, 0); }
 };
 
 // stepTo() may return before the requested time (e.g. at the start of the first continuous

@@ -1,5 +1,8 @@
 // Kloss induction motor as a Simbody force element: applies the motor torque reduced to the
-// crank axis (physics/KlossMotor.h, seed 000 eq. (37)) to the mobility of the motor-side body.
+// crank axis (physics/KlossMotor.h, seed 000 eq. (37)) to the motor-side body as a torque about
+// the shaft axis z, its reaction going to the (grounded) stator. The body's absolute angular
+// velocity is used, because with an elastic coupling the motor side is mobilized relative to
+// the crankshaft (MultibodyModel.h).
 #pragma once
 
 #include "Simbody.h"
@@ -16,10 +19,12 @@ class KlossMotorForce : public SimTK::Force::Custom::Implementation {
   // Torque on the motor-side body at its current speed, reduced to the crank axis [N·m].
   double torque(const SimTK::State& s) const;
   // Power delivered by the motor into the mechanism [W].
-  double power(const SimTK::State& s) const { return torque(s) * motor_body_.getOneU(s, 0); }
+  double power(const SimTK::State& s) const { return torque(s) * speed(s); }
+  // Absolute angular speed of the motor-side body about z, reduced to the crank axis [rad/s].
+  double speed(const SimTK::State& s) const { return motor_body_.getBodyAngularVelocity(s)[2]; }
 
-  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&,
-                 SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector& mobility_forces) const override;
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
+                 SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override;
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
 
  private:

@@ -1,5 +1,6 @@
 #include "multibody/MultibodyModel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -73,7 +74,8 @@ void MultibodyModel::buildDrive() {
     motor_ = crank_;  // one rotating body: a rigid coupling is not a stiff spring
   } else {
     SimTK::Body::Rigid motor_body(SimTK::MassProperties(kRotorTokenMass, SimTK::Vec3(0), disc(sc.motorSideInertia())));
-    motor_ = SimTK::MobilizedBody::Pin(matter_.Ground(), SimTK::Transform(), motor_body, SimTK::Transform());
+    // Mobilized on the crankshaft, so its coordinate is the coupling twist (ElasticCoupling.h).
+    motor_ = SimTK::MobilizedBody::Pin(crank_, SimTK::Transform(), motor_body, SimTK::Transform());
   }
 }
 
@@ -131,7 +133,7 @@ void MultibodyModel::buildForces() {
     inventory_.force_elements.push_back("KlossMotor");
   }
   if (sc.coupling.type == CouplingType::Elastic) {
-    auto* f = new ElasticCoupling(motor_, crank_, sc.coupling.stiffness, sc.coupling.damping);
+    auto* f = new ElasticCoupling(motor_, sc.coupling.stiffness, sc.coupling.damping);
     SimTK::Force::Custom(forces_, f);
     coupling_force_ = sources.coupling = f;
     inventory_.force_elements.push_back(sc.hasCouplingDamping() ? "ElasticCoupling(spring+damper)"
@@ -177,11 +179,22 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
   SimTK::State s = system_.getDefaultState();
   system_.realizeModel(s);
   if (friction_force_) friction_force_->setErrorWeights(s, scene_.cartMassWithRodShare());
+  if (motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex()) {
+    // Simbody counts 1 rad (1 rad/s) as a unit change of every coordinate (speed), but the
+    // coupling twist is ~torque/c: 1e-6 rad at c = 1e9, so it was held to ~100 % of itself and
+    // the coupling torque carried errors of c·accuracy. One unit of twist is the twist that
+    // carries the motor's breakdown torque at the crank, M_kr·u·η, so the coupling torque is
+    // held to accuracy·M_kr·u·η whatever the stiffness.
+    const double torque_scale =
+        scene_.motor.breakdown_torque * scene_.reducer.ratio * scene_.reducer.efficiency;
+    s.updUWeights(matter_.getMySubsystemIndex())[motor_.getFirstUIndex(s)] =
+        std::max(1.0, scene_.coupling.stiffness / torque_scale);
+  }
   crank_.setOneQ(s, 0, phi);
   crank_.setOneU(s, 0, omega);
   if (motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex()) {
-    motor_.setOneQ(s, 0, phi + twist);
-    motor_.setOneU(s, 0, omega);
+    motor_.setOneQ(s, 0, twist);  // relative to the crankshaft
+    motor_.setOneU(s, 0, 0.0);    // same speed as the crank
   }
   for (size_t j = 0; j < carts_.size(); ++j) {
     const CartRig& c = carts_[j];
@@ -221,7 +234,9 @@ SimTK::State MultibodyModel::initialState() const {
   return assembledState(scene_.initial.crank_angle, scene_.initial.crank_speed, scene_.initial.twist);
 }
 
-double MultibodyModel::motorSpeed(const SimTK::State& s) const { return motor_.getOneU(s, 0); }
+double MultibodyModel::motorSpeed(const SimTK::State& s) const {
+  return motor_.getBodyAngularVelocity(s)[2];
+}
 
 double MultibodyModel::motorTorque(const SimTK::State& s) const {
   return motor_force_ ? motor_force_->torque(s) : 0.0;
@@ -270,11 +285,16 @@ std::vector<std::string> MultibodyModel::reactionColumns() const {
 
 void MultibodyModel::observe(const SimTK::State& s, std::vector<double>& ts,
                              std::vector<double>& re) const {
-  const double phi1 = motor_.getOneQ(s, 0), phi2 = crank_.getOneQ(s, 0);
-  const double w1 = motor_.getOneU(s, 0), w2 = crank_.getOneU(s, 0);
-  const double e1 = motor_.getOneUDot(s, 0), e2 = crank_.getOneUDot(s, 0);
+  // With an elastic coupling the motor side is mobilized on the crankshaft: its q, u, u̇ are the
+  // twist and its rates; with a rigid coupling motor_ is the crankshaft and they are zero.
+  const bool elastic = motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex();
+  const double phi2 = crank_.getOneQ(s, 0), w2 = crank_.getOneU(s, 0), e2 = crank_.getOneUDot(s, 0);
+  const double twist = elastic ? motor_.getOneQ(s, 0) : 0.0;
+  const double twist_rate = elastic ? motor_.getOneU(s, 0) : 0.0;
+  const double twist_accel = elastic ? motor_.getOneUDot(s, 0) : 0.0;
+  const double phi1 = phi2 + twist, w1 = w2 + twist_rate, e1 = e2 + twist_accel;
   const double torque_coupling = couplingTorque(s);
-  ts = {s.getTime(), phi1, phi2, w1, w2, e2, e1, phi1 - phi2, w1 - w2, e1 - e2, torque_coupling,
+  ts = {s.getTime(), phi1, phi2, w1, w2, e2, e1, twist, twist_rate, twist_accel, torque_coupling,
         motorTorque(s)};
   for (const CartRig& c : carts_) {
     ts.push_back(c.x(s));

@@ -3,8 +3,9 @@
 // the handles to its bodies and force elements; the evolving data lives in SimTK::State objects.
 //
 // Topology (x along the guides, y up, z = shaft axis; everything in the plane z = 0):
-//   Ground -Pin(z)-> motor side  (J_n1, reduced to the crank axis)      [elastic coupling only]
 //   Ground -Pin(z)-> crankshaft  (crank-side inertia, plus J_n1 when the coupling is rigid)
+//   crankshaft -Pin(z)-> motor side (J_n1, reduced to the crank axis; its q is the coupling
+//                                    twist φ1 - φ2)                     [elastic coupling only]
 //   crankshaft -Pin(z) at pin A_j-> rod j       [rods.model = distributed]
 //   Ground -Slider(x)-> cart j, origin at the rod hinge B_j
 //   loop closure at B_j: rod end on the cart (two PointInPlane constraints), or, for split and

@@ -80,9 +80,11 @@ class ChainTorques : public SimTK::Force::Custom::Implementation {
   ChainTorques(const SimTK::MobilizedBody& r1, const SimTK::MobilizedBody& r2,
                const TwoRotorChainParams& p, double Mc)
       : r1_(r1), r2_(r2), p_(p), Mc_(Mc) {}
-  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
-                 SimTK::Vector& mobility_forces) const override {
-    r1_.applyOneMobilityForce(s, 0, chainDriveTorque(p_, s.getTime()), mobility_forces);
+  // Rotor 1 is mobilized on rotor 2 (its coordinate is the twist), so its drive is a body
+  // torque; rotor 2 turns on ground and takes the resisting torque as a mobility force.
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
+                 SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector& mobility_forces) const override {
+    r1_.applyBodyTorque(s, SimTK::Vec3(0, 0, chainDriveTorque(p_, s.getTime())), body_forces);
     r2_.applyOneMobilityForce(s, 0, -Mc_, mobility_forces);
   }
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
@@ -193,10 +195,10 @@ Table simulateTwoRotorChain(const TwoRotorChainParams& p) {
   SimTK::MultibodySystem system;
   SimTK::SimbodyMatterSubsystem matter(system);
   SimTK::GeneralForceSubsystem forces(system);
-  SimTK::MobilizedBody::Pin r1(matter.Ground(), SimTK::Transform(), rotor(p.J1), SimTK::Transform());
   SimTK::MobilizedBody::Pin r2(matter.Ground(), SimTK::Transform(), rotor(p.J2), SimTK::Transform());
+  SimTK::MobilizedBody::Pin r1(r2, SimTK::Transform(), rotor(p.J1), SimTK::Transform());  // q = twist
   // The project's coupling element: torque k·(φ1 - φ2) + b·(φ̇1 - φ̇2), + on rotor 2, - on rotor 1.
-  auto* chain = new ElasticCoupling(r1, r2, p.k, p.b);
+  auto* chain = new ElasticCoupling(r1, p.k, p.b);
   SimTK::Force::Custom(forces, chain);
   SimTK::Force::Custom(forces, new ChainTorques(r1, r2, p, d.Mc));
   system.realizeTopology();
@@ -209,8 +211,9 @@ Table simulateTwoRotorChain(const TwoRotorChainParams& p) {
   t.columns = {"t", "psi", "psi_rate", "phi1", "phi2", "omega1", "omega2", "chain_torque", "drive_torque"};
   auto record = [&](const SimTK::State& st) {
     system.realize(st, SimTK::Stage::Velocity);
-    t.rows.push_back({st.getTime(), chain->twist(st), chain->twistRate(st), r1.getOneQ(st, 0), r2.getOneQ(st, 0),
-                      r1.getOneU(st, 0), r2.getOneU(st, 0), chain->torque(st), chainDriveTorque(p, st.getTime())});
+    t.rows.push_back({st.getTime(), chain->twist(st), chain->twistRate(st),
+                      r2.getOneQ(st, 0) + r1.getOneQ(st, 0), r2.getOneQ(st, 0),
+                      r2.getOneU(st, 0) + r1.getOneU(st, 0), r2.getOneU(st, 0), chain->torque(st), chainDriveTorque(p, st.getTime())});
   };
   record(integ.getState());
   const long n = static_cast<long>(std::ceil(d.t_end / d.output_step - 1e-9));
