@@ -1,0 +1,359 @@
+#include "bench/BenchRun.h"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <sstream>
+#include <stdexcept>
+
+#include "multibody/MultibodySimulation.h"
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn::bench {
+
+std::string SolverSetting::label() const {
+  std::ostringstream os;
+  os << model << ' ' << integrator << ' ';
+  if (integrator == "baranov") {
+    os << baranov_step * 180.0 / M_PI << " deg";
+  } else {
+    os.precision(3);
+    os << accuracy;
+  }
+  return os.str();
+}
+
+const char* toString(Outcome o) {
+  switch (o) {
+    case Outcome::Ok: return "ok";
+    case Outcome::Stalled: return "stalled";
+    case Outcome::Timeout: return "timeout";
+    case Outcome::Failed: return "failed";
+    case Outcome::Interrupted: return "interrupted";
+  }
+  return "?";
+}
+
+Scene applySetting(const Scene& base, const SolverSetting& setting) {
+  Scene s = base;
+  if (setting.model == "multibody") {
+    s.simulation.integrator = setting.integrator;
+    s.simulation.accuracy = setting.accuracy;
+    s.simulation.constraint_tolerance = setting.accuracy;
+  } else if (setting.model == "reduced") {
+    if (setting.integrator == "cvode") {
+      s.reduced.integrator = ReducedIntegrator::Cvode;
+      s.simulation.accuracy = setting.accuracy;
+    } else if (setting.integrator == "baranov") {
+      s.reduced.integrator = ReducedIntegrator::Baranov;
+      s.reduced.baranov_step = setting.baranov_step;
+    } else {
+      throw std::invalid_argument("bench: reduced model integrator must be cvode or baranov, got '" +
+                                  setting.integrator + "'");
+    }
+  } else {
+    throw std::invalid_argument("bench: model must be multibody or reduced, got '" + setting.model + "'");
+  }
+  return s;
+}
+
+namespace {
+
+double cpuNow() { return double(std::clock()) / CLOCKS_PER_SEC; }
+
+// Runs shorter than this much CPU are timed as the mean of repetitions (see runIsolated).
+constexpr double kMinTimedCpu = 0.2;  // [s]
+
+struct OneRun {
+  RunResult run;
+  Outcome outcome = Outcome::Failed;
+  std::string status;
+};
+
+OneRun runOnce(const Scene& scene, const SolverSetting& setting, const Budget& budget) {
+  OneRun r;
+  try {
+    const Scene s = applySetting(scene, setting);
+    bool over_budget = false, user_stop = false;
+    if (setting.model == "multibody") {
+      std::atomic<bool> stop{false};
+      const double c0 = cpuNow();
+      RunControl control;
+      control.interrupt = &stop;
+      control.progress = [&](double, double) {
+        if (budget.interrupt && budget.interrupt->load()) {
+          user_stop = true;
+          stop = true;
+        } else if (cpuNow() - c0 > budget.cpu_seconds) {
+          over_budget = true;
+          stop = true;
+        }
+      };
+      r.run = runMultibodyModel(s, control);
+    } else {
+      r.run = runReducedModel(s);
+      over_budget = r.run.stats.cpu_seconds > budget.cpu_seconds;
+    }
+    const RunStats& st = r.run.stats;
+    r.status = st.status;
+    if (user_stop) {
+      r.outcome = Outcome::Interrupted;
+    } else if (over_budget) {
+      r.outcome = Outcome::Timeout;
+      std::ostringstream os;
+      os << "timeout: CPU budget " << budget.cpu_seconds << " s exceeded";
+      if (!st.complete) os << " (" << st.status << ")";
+      r.status = os.str();
+    } else if (st.complete) {
+      r.outcome = Outcome::Ok;
+    } else if (st.status.find("motor stalled") != std::string::npos) {
+      r.outcome = Outcome::Stalled;
+    } else {
+      r.outcome = Outcome::Failed;
+    }
+  } catch (const std::exception& ex) {
+    r.outcome = Outcome::Failed;
+    r.status = std::string("failed: ") + ex.what();
+    r.run.stats.cpu_seconds = NAN;  // nothing was integrated
+  }
+  return r;
+}
+
+double timeReached(const RunResult& run) {
+  const Table& t = run.timeseries;
+  if (t.rows.empty() || !t.has("t")) return 0.0;
+  return t.rows.back()[t.index("t")];
+}
+
+// --- One repetition in a child process --------------------------------------------------------
+// RunControl.progress is only called between output rows, and an integrator that collapses its
+// step (e.g. Verlet or ExplicitEuler at a tight accuracy) can spend minutes inside ONE output
+// interval: Simbody's stepTo() only returns at the output time or after its internal step limit.
+// So each repetition runs in a fork()ed child with a hard CPU limit (RLIMIT_CPU, SIGXCPU then
+// SIGKILL) above the budget; the progress check stays the graceful path that keeps the time
+// reached. A crash (SIGSEGV, abort) is contained the same way and becomes a "failed" row. The
+// child sends its result back through a pipe as text (outcome, status, statistics, timeseries).
+
+void writeAll(int fd, const std::string& text) {
+  const char* p = text.data();
+  size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return;
+    }
+    p += n;
+    left -= size_t(n);
+  }
+}
+
+std::string readAll(int fd) {
+  std::string out;
+  char buf[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    out.append(buf, size_t(n));
+  }
+  return out;
+}
+
+std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+std::string serialize(const OneRun& r) {
+  std::ostringstream os;
+  os.precision(17);
+  const RunStats& st = r.run.stats;
+  os << int(r.outcome) << '\n' << oneLine(r.status) << '\n' << st.steps << ' ' << st.realizations << ' '
+     << st.cpu_seconds << ' ' << st.constraint_error_max << ' ' << r.run.energy.residualRelative() << '\n';
+  const Table& t = r.run.timeseries;
+  os << t.columns.size() << ' ' << t.rows.size() << '\n';
+  for (const std::string& c : t.columns) os << c << '\n';
+  for (const auto& row : t.rows) {
+    for (size_t i = 0; i < row.size(); ++i) os << (i ? " " : "") << row[i];
+    os << '\n';
+  }
+  return os.str();
+}
+
+// Fills r from the child's text; false when the text is incomplete (the child died mid-write).
+bool deserialize(const std::string& text, OneRun& r, double& energy_rel) {
+  std::istringstream in(text);
+  int outcome = 0;
+  if (!(in >> outcome)) return false;
+  in.ignore(1);
+  std::getline(in, r.status);
+  RunStats& st = r.run.stats;
+  size_t ncols = 0, nrows = 0;
+  // Doubles as tokens through strtod: operator>> rejects "nan" and "inf".
+  auto number = [&in](double& v) {
+    std::string tok;
+    if (!(in >> tok)) return false;
+    v = std::strtod(tok.c_str(), nullptr);
+    return true;
+  };
+  if (!(in >> st.steps >> st.realizations) || !number(st.cpu_seconds) || !number(st.constraint_error_max) ||
+      !number(energy_rel) || !(in >> ncols >> nrows))
+    return false;
+  in.ignore(1);
+  Table& t = r.run.timeseries;
+  t.columns.resize(ncols);
+  for (auto& c : t.columns)
+    if (!std::getline(in, c)) return false;
+  t.rows.assign(nrows, std::vector<double>(ncols));
+  for (auto& row : t.rows)
+    for (double& v : row) {
+      std::string tok;
+      if (!(in >> tok)) return false;
+      v = std::strtod(tok.c_str(), nullptr);  // reads "nan" and "inf" too
+    }
+  r.outcome = Outcome(outcome);
+  return true;
+}
+
+OneRun runIsolated(const Scene& scene, const SolverSetting& setting, const Budget& budget, double& energy_rel) {
+  OneRun r;
+  int fds[2];
+  if (::pipe(fds) != 0) {  // no isolation available: run in this process
+    r = runOnce(scene, setting, budget);
+    energy_rel = r.run.energy.residualRelative();
+    return r;
+  }
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    r = runOnce(scene, setting, budget);
+    energy_rel = r.run.energy.residualRelative();
+    return r;
+  }
+  if (pid == 0) {  // child
+    ::close(fds[0]);
+    const rlim_t soft = rlim_t(std::ceil(1.5 * budget.cpu_seconds + 2.0));
+    const struct rlimit lim = {soft, soft + 2};
+    ::setrlimit(RLIMIT_CPU, &lim);
+    OneRun first = runOnce(scene, setting, budget);
+    // Process CPU time is accounted in scheduler ticks (milliseconds on this kind of VM), so a run
+    // of a few milliseconds (the reduced model) reads 0 or one tick. Short usable runs are
+    // therefore repeated until kMinTimedCpu of CPU has accumulated; cpu_seconds is the mean.
+    const double c = first.run.stats.cpu_seconds;
+    if ((first.outcome == Outcome::Ok || first.outcome == Outcome::Stalled) && c < kMinTimedCpu) {
+      const double c0 = cpuNow();
+      int n = 0;
+      while (cpuNow() - c0 < kMinTimedCpu && n < 100000) {
+        runOnce(scene, setting, budget);
+        ++n;
+      }
+      first.run.stats.cpu_seconds = (cpuNow() - c0) / n;
+    }
+    writeAll(fds[1], serialize(first));
+    ::close(fds[1]);
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  const std::string text = readAll(fds[0]);
+  ::close(fds[0]);
+  int wstatus = 0;
+  while (::waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 && deserialize(text, r, energy_rel)) return r;
+  r = OneRun{};
+  r.run.stats.cpu_seconds = NAN;  // spent, but not reported by the killed process
+  energy_rel = NAN;
+  std::ostringstream os;
+  if (WIFSIGNALED(wstatus) && (WTERMSIG(wstatus) == SIGXCPU || WTERMSIG(wstatus) == SIGKILL)) {
+    r.outcome = Outcome::Timeout;
+    os << "timeout: CPU budget " << budget.cpu_seconds
+       << " s exceeded inside one output interval (stopped by the hard CPU limit)";
+  } else if (WIFSIGNALED(wstatus) && WTERMSIG(wstatus) == SIGINT) {
+    r.outcome = Outcome::Interrupted;
+    os << "interrupted";
+  } else {
+    r.outcome = Outcome::Failed;
+    os << "failed: run process ended abnormally (" << (WIFSIGNALED(wstatus) ? "signal " : "exit ")
+       << (WIFSIGNALED(wstatus) ? WTERMSIG(wstatus) : WEXITSTATUS(wstatus)) << ")";
+  }
+  r.status = os.str();
+  return r;
+}
+
+}  // namespace
+
+Measurement measure(const Scene& scene, const SolverSetting& setting, const Budget& budget,
+                    int repeats) {
+  Measurement m;
+  m.setting = setting;
+  std::vector<double> cpu;
+  for (int k = 0; k < std::max(repeats, 1); ++k) {
+    double energy_rel = NAN;
+    OneRun r = runIsolated(scene, setting, budget, energy_rel);
+    const bool usable = r.outcome == Outcome::Ok || r.outcome == Outcome::Stalled;
+    if (k == 0) {
+      m.outcome = r.outcome;
+      m.status = r.status;
+      m.steps = r.run.stats.steps;
+      m.realizations = r.run.stats.realizations;
+      m.simulated_time = timeReached(r.run);
+      m.energy_residual_rel = energy_rel;
+      m.constraint_error_max = r.run.stats.constraint_error_max;
+      m.run = std::move(r.run);
+      cpu.push_back(m.run.stats.cpu_seconds);
+      if (!usable) break;  // a timeout or failure is not repeated
+    } else {
+      if (!usable) break;  // e.g. Ctrl-C during a repetition: keep what was timed
+      cpu.push_back(r.run.stats.cpu_seconds);
+    }
+  }
+  m.repeats = int(cpu.size());
+  m.cpu_seconds = median(cpu);
+  m.cpu_min = *std::min_element(cpu.begin(), cpu.end());
+  m.cpu_max = *std::max_element(cpu.begin(), cpu.end());
+  m.real_time_factor = m.cpu_seconds > 0 ? m.simulated_time / m.cpu_seconds : NAN;
+  return m;
+}
+
+double relativeMaxError(const Table& run, const Table& ref, const std::string& column) {
+  if (!run.has(column) || !ref.has(column) || !run.has("t") || !ref.has("t")) return NAN;
+  const int c = run.index(column), cr = ref.index(column);
+  const int t = run.index("t"), tr = ref.index("t");
+  double scale = 0.0;
+  for (const auto& row : ref.rows) scale = std::max(scale, std::abs(row[cr]));
+  if (!(scale > 0.0)) return NAN;
+  double worst = 0.0;
+  size_t matched = 0, j = 0;
+  for (const auto& row : run.rows) {
+    // Both tables are sorted in time: advance the reference cursor to this row's time.
+    while (j < ref.rows.size() && ref.rows[j][tr] < row[t] - 1e-9) ++j;
+    if (j == ref.rows.size()) break;
+    if (std::abs(ref.rows[j][tr] - row[t]) > 1e-9) continue;
+    const double d = std::abs(row[c] - ref.rows[j][cr]);
+    if (!std::isfinite(d)) return NAN;
+    worst = std::max(worst, d);
+    ++matched;
+  }
+  return matched ? worst / scale : NAN;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace rollerdyn::bench
