@@ -3,8 +3,13 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace rollerdyn::cli {
 
@@ -18,7 +23,36 @@ struct SceneArgs {
 extern std::atomic<bool> g_interrupted;
 
 int runCheck(const SceneArgs& args);
-int runSimulate(const SceneArgs& args, const std::string& out_dir, const std::string& model);
+int runSimulate(const SceneArgs& args, const std::string& out_dir, const std::string& model,
+                bool plot = false);  // plot: also draw the figures (as `rollerdyn plot`)
+int runCompare(const SceneArgs& args, const std::string& out_dir);  // CompareCommand.cpp
+int runValidate(bool quick, const std::string& out_dir);            // ValidateCommand.cpp
+
+// `rollerdyn bench` options (BenchCommand.cpp, src/bench/BenchStudies.h).
+struct BenchArgs {
+  std::string study = "integrators";  // integrators | carts | effects | all
+  bool quick = false;                 // fewer accuracies, shorter runs (about a minute)
+  double budget = 0;                  // CPU seconds per run; 0: 20 (quick: 1)
+  int repeats = 1;                    // timed repetitions per run, median reported
+  std::string out_dir;                // default out/<scene name>/bench/
+};
+int runBench(const SceneArgs& args, const BenchArgs& bench);  // BenchCommand.cpp
+
+// `rollerdyn plot DIR` (PlotCommand.cpp): figures of an output folder into DIR/figures/; the
+// Kloss curve's motor data from --scene FILE (+ --set) or summary.json's scene_path.
+int runPlot(const std::string& dir, const std::string& scene_path, const std::vector<std::string>& overrides);
+// `rollerdyn report SCENE` (ReportCommand.cpp): simulate, figures and DIR/report.html.
+int runReport(const SceneArgs& args, const std::string& out_dir);
+
+// Subcommands that register themselves (studies, issue #5): the parsed subcommand, and what to
+// run when it was given. Their options live in the closure.
+struct Subcommand {
+  CLI::App* cmd;
+  std::function<int()> run;
+};
+Subcommand addSweepCommand(CLI::App& app);       // SweepCommand.cpp: `rollerdyn sweep`
+Subcommand addCamProfileCommand(CLI::App& app);  // CamProfileCommand.cpp: `rollerdyn cam-profile`
+Subcommand addChainCommand(CLI::App& app);       // ChainCommand.cpp: `rollerdyn chain`
 
 // out/<scene name>/ unless the user named a folder.
 std::string defaultOutDir(const std::string& scene_name);

@@ -1,16 +1,18 @@
-// `rollerdyn simulate SCENE [--set k=v]... [--out DIR] [--model multibody|reduced]`: run one
-// model on one scene and write timeseries.csv, reactions.csv and summary.json to DIR.
-#include <unistd.h>
-
-#include <cstdio>
+// `rollerdyn simulate SCENE [--set k=v]... [--out DIR] [--model multibody|reduced] [--plot]`: run
+// one model on one scene and write timeseries.csv, reactions.csv and summary.json to DIR (and
+// with --plot the figures of `rollerdyn plot` to DIR/figures/).
 #include <iostream>
 #include <stdexcept>
 
 #include "analysis/Summary.h"
+#include "studies/ResonanceCheck.h"
 #include "cli/Commands.h"
+#include "cli/Progress.h"
 #include "io/AtomicFile.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
+#include "report/OutputFolder.h"
+#include "report/RunFigures.h"
 #include "scene/SceneParser.h"
 
 namespace rollerdyn::cli {
@@ -19,37 +21,7 @@ std::atomic<bool> g_interrupted{false};
 
 std::string defaultOutDir(const std::string& scene_name) { return "out/" + scene_name; }
 
-namespace {
-
-// Progress on a terminal only: share done, speed as a multiple of real time. Silent otherwise,
-// so logs and CI output stay clean.
-class Progress {
- public:
-  Progress() : enabled_(::isatty(STDERR_FILENO) == 1), cpu0_(std::clock()) {}
-  void operator()(double t, double t_end) {
-    if (!enabled_) return;
-    const double cpu = double(std::clock() - cpu0_) / CLOCKS_PER_SEC;
-    if (cpu - last_ < 0.2 && t < t_end) return;
-    last_ = cpu;
-    const double speed = cpu > 0 ? t / cpu : 0;
-    const double left = speed > 0 ? (t_end - t) / speed : 0;
-    std::fprintf(stderr, "\r  %5.1f %%  t = %.3f s  %.1fx real time  %.0f s left   ", 100.0 * t / t_end, t,
-                 speed, left);
-    if (t >= t_end) std::fprintf(stderr, "\n");
-  }
-  ~Progress() {
-    if (enabled_ && last_ >= 0) std::fprintf(stderr, "\n");
-  }
-
- private:
-  bool enabled_;
-  std::clock_t cpu0_;
-  double last_ = -1;
-};
-
-}  // namespace
-
-int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std::string& model) {
+int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std::string& model, bool plot) {
   const Scene scene = parseSceneFile(args.scene_path, args.overrides);
   const std::string out_dir = out_dir_arg.empty() ? defaultOutDir(scene.name) : out_dir_arg;
   RunResult run;
@@ -66,9 +38,14 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   }
   writeCsvAtomic(out_dir + "/timeseries.csv", run.timeseries);
   writeCsvAtomic(out_dir + "/reactions.csv", run.reactions);
-  const auto summary = makeSummary(scene, run);
+  auto summary = makeSummary(scene, run);
+  for (const std::string& w : addResonanceWarnings(scene, summary))  // seed 002 eq. (10)
+    std::cerr << "rollerdyn: warning: " << w << '\n';
   writeSummaryAtomic(out_dir + "/summary.json", summary);
   std::cout << summaryText(summary) << "outputs in " << out_dir << "/\n";
+  if (plot)  // figures from the tables in memory and the scene with its overrides
+    std::cout << figureSetText(drawRunFigures(outputFolderOf(out_dir, run, summary), &scene, out_dir + "/figures"),
+                               out_dir + "/figures");
   if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
   return run.stats.complete ? 0 : 3;
 }

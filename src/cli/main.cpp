@@ -25,6 +25,15 @@ int main(int argc, char** argv) {
   using namespace rollerdyn::cli;
   CLI::App app{"rollerdyn: drive dynamics of roller forming installations (multibody and reduced models)"};
   app.require_subcommand(1);
+  app.footer(
+      "A typical session (each command has --help with examples):\n"
+      "  rollerdyn check model/balanced-4cart.yaml                    validate the scene\n"
+      "  rollerdyn simulate model/balanced-4cart.yaml --plot          -> out/balanced-4cart/ (+ figures/)\n"
+      "  rollerdyn plot out/balanced-4cart                            figures of an output folder\n"
+      "  rollerdyn report model/balanced-4cart.yaml --set crank.offset_deg=60 --out out/dphi60\n"
+      "                                                               -> out/dphi60/report.html\n"
+      "Exit codes: 0 success, 2 bad input or set-up, 3 run ended early (outputs still written).\n"
+      "Ctrl-C stops a run at the next output row and writes what it has.");
 
   SceneArgs check_args;
   auto* check = app.add_subcommand("check", "validate a scene and list the bodies, constraints and effects it builds");
@@ -38,10 +47,76 @@ int main(int argc, char** argv) {
   simulate->add_option("--out", out_dir, "output folder (default out/<scene name>/)");
   simulate->add_option("--model", model, "multibody (Simbody, default) or reduced (the papers' reduced-mass model)")
       ->check(CLI::IsMember({"multibody", "reduced"}));
+  bool sim_plot = false;  // PlotCommand.cpp
+  simulate->add_flag("--plot", sim_plot, "also draw the figures of `rollerdyn plot` into <out>/figures/");
   simulate->footer(
       "Examples:\n  rollerdyn simulate model/balanced-4cart.yaml\n"
       "  rollerdyn simulate model/recuperative-2cart.yaml --set crank.offset_deg=60 --out out/dphi60\n"
-      "  rollerdyn simulate model/balanced-4cart.yaml --model reduced");
+      "  rollerdyn simulate model/balanced-4cart.yaml --model reduced\n"
+      "  rollerdyn simulate model/balanced-4cart.yaml --plot          # + PNG/SVG figures in out/balanced-4cart/figures/");
+
+  // plot and report (src/cli/PlotCommand.cpp, ReportCommand.cpp, src/report/)
+  std::string plot_dir, plot_scene;
+  std::vector<std::string> plot_overrides;
+  auto* plot = app.add_subcommand("plot", "draw the figures of an output folder (simulate or compare) as PNG and SVG into DIR/figures/");
+  plot->add_option("dir", plot_dir, "output folder of simulate (timeseries.csv, reactions.csv, summary.json) or compare (comparison.csv)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  plot->add_option("--scene", plot_scene, "scene file for the motor's Kloss curve (default: scene_path in summary.json)")
+      ->check(CLI::ExistingFile);
+  plot->add_option("--set", plot_overrides, "the --set overrides the run was made with, key.path=value (repeatable)")
+      ->allow_extra_args(false);
+  plot->footer(
+      "Figures: crank speed and acceleration against crank angle (steady window) and time, coupling torque,\n"
+      "motor operating point on its Kloss curve, guide reactions and rod forces per cart, twist phase\n"
+      "portraits, and multibody-vs-reduced overlays when comparison.csv is there.\n"
+      "Examples:\n  rollerdyn plot out/balanced-4cart\n"
+      "  rollerdyn plot out/dphi60 --scene model/balanced-4cart.yaml --set motor.breakdown_torque=600\n"
+      "  rollerdyn plot out/balanced-4cart/compare");
+  SceneArgs report_args;
+  std::string report_out;
+  auto* report = app.add_subcommand("report", "simulate a scene (multibody) and write one self-contained HTML page, DIR/report.html");
+  addSceneArgs(report, report_args);
+  report->add_option("--out", report_out, "output folder (default out/<scene name>/)");
+  report->footer(
+      "Writes the outputs of simulate, figures/ and report.html: scene and source, effects, parameters,\n"
+      "summary metrics, joint reactions (min/max over the steady window) and the figures embedded;\n"
+      "the page needs no network. Check it renders: bash scripts/check-report.sh DIR\n"
+      "Examples:\n  rollerdyn report model/balanced-4cart.yaml\n"
+      "  rollerdyn report model/recuperative-2cart.yaml --set crank.offset_deg=60 --out out/dphi60");
+
+  // compare and validate (src/cli/CompareCommand.cpp, ValidateCommand.cpp)
+  SceneArgs cmp_args;
+  std::string cmp_out;
+  auto* compare = app.add_subcommand("compare", "run both models on a scene; writes comparison.csv and comparison.json");
+  addSceneArgs(compare, cmp_args);
+  compare->add_option("--out", cmp_out, "output folder (default out/<scene name>/compare/)");
+  compare->footer("Example:\n  rollerdyn compare model/balanced-4cart.yaml --set rods.model=split "
+                  "--set loads.guide_friction.coefficient=0 --set simulation.accuracy=1e-9");
+  bool val_quick = false;
+  std::string val_out = "validation";
+  auto* validate = app.add_subcommand("validate", "validation suite: model equivalence, papers, analytic checks; writes <out>/report.md");
+  validate->add_flag("--quick", val_quick, "coarser sweeps and shorter runs (about a minute)");
+  validate->add_option("--out", val_out, "output folder (default validation/)");
+  validate->footer("Examples:\n  rollerdyn validate --quick                # about a minute\n"
+                   "  rollerdyn validate --out out/validation");
+
+  // bench (src/cli/BenchCommand.cpp)
+  SceneArgs bench_args;
+  BenchArgs bench_opts;
+  auto* bench = app.add_subcommand("bench", "accuracy vs CPU time of every integrator, cost vs carts, cost of each effect");
+  addSceneArgs(bench, bench_args);
+  bench->add_option("--study", bench_opts.study, "integrators (default), carts, effects or all")
+      ->check(CLI::IsMember({"integrators", "carts", "effects", "all"}));
+  bench->add_flag("--quick", bench_opts.quick, "fewer accuracies, 1 s runs, 1 s budget per run (integrators: under a minute)");
+  bench->add_option("--budget", bench_opts.budget, "CPU seconds per run before it is recorded as a timeout");
+  bench->add_option("--repeat", bench_opts.repeats, "timed repetitions per run (median reported)")->check(CLI::PositiveNumber);
+  bench->add_option("--out", bench_opts.out_dir, "output folder (default out/<scene name>/bench/)");
+  bench->footer("Examples:\n  rollerdyn bench model/balanced-4cart.yaml --quick\n"
+                "  rollerdyn bench model/recuperative-2cart.yaml --study all --repeat 3");
+
+  // sweep, cam-profile, chain: the studies of the papers (src/cli/SweepCommand.cpp, ...)
+  const Subcommand studies[] = {addSweepCommand(app), addCamProfileCommand(app), addChainCommand(app)};
 
   try {
     app.parse(argc, argv);
@@ -51,7 +126,14 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, onInterrupt);
   try {
     if (*check) return runCheck(check_args);
-    if (*simulate) return runSimulate(sim_args, out_dir, model);
+    for (const Subcommand& c : studies)
+      if (*c.cmd) return c.run();
+    if (*simulate) return runSimulate(sim_args, out_dir, model, sim_plot);
+    if (*plot) return runPlot(plot_dir, plot_scene, plot_overrides);
+    if (*report) return runReport(report_args, report_out);
+    if (*bench) return runBench(bench_args, bench_opts);
+    if (*compare) return runCompare(cmp_args, cmp_out);
+    if (*validate) return runValidate(val_quick, val_out);
   } catch (const std::exception& e) {
     std::cerr << "rollerdyn: " << e.what() << '\n';
     return 2;
