@@ -37,13 +37,10 @@ void noLoads(Scene& s) {
 // p0 = √(c·(J1 + J2)/(J1·J2)) ≈ 4.5e3 rad/s (seed 002 eq. (10)), ~400x the crank speed, so an
 // explicit integrator's step is bounded by stability, not accuracy. Damped (k = 8000).
 //
-// KNOWN FAILURE (multibody, reported in issue #4): the multibody coupling torque is
-// c·(q_motor − q_crank), two absolute angles that Simbody's error control holds to ~a rad each
-// (q errors are weighted absolutely through the u weights, all 1), so the torque error is of
-// order c·a whatever its size: 1000 N·m at c = 1e9, a = 1e-6. Measured against a = 1e-9 over
-// 0.5 s (model/balanced-4cart.yaml with c overridden): max coupling-torque error 0.34 N·m at
-// c = 1e7, 4.5 N·m at 1e8, 104 N·m (12 %) at 1e9; the reduced model, whose twist is a state with
-// its own tolerance a·M_ref/c, has 0.6 N·m (0.07 %) at 1e9. The crank speed is unaffected.
+// History: this case found that the multibody coupling torque carried errors of order c·a (the
+// twist was the difference of two absolute angles, each held to ~a rad: 104 N·m, 12 %, at
+// c = 1e9, a = 1e-6, against 0.6 N·m for the reduced model); fixed by mobilizing the motor side
+// on the crankshaft with a weighted twist coordinate (commit 21ac486).
 TEST(HardCases, StiffCoupling1e9WithDamping) {
   Scene s = seed("stiff-1e9-damped", 0.5);
   s.coupling.stiffness = 1e9;
@@ -56,8 +53,8 @@ TEST(HardCases, StiffCoupling1e9WithDamping) {
 // largest coupling torque over 0.5 s at a = 1e-6 ... 1e-10: 1436.1, 1458.6, 1462.2, 1462.70,
 // 1462.79 N·m, i.e. an error of 1.8 % = 1.8e4·a at a = 1e-6 (the multibody model: 1.3 %).
 // The claim for the coupling torque is therefore 3e4·a here, not the default 1e3·a; the crank
-// speed keeps the default claim. The multibody model fails this case for the reason given
-// above StiffCoupling1e9WithDamping (coupling torque error ~c·a), here 16 % at a = 1e-6.
+// speed keeps the default claim. (Before commit 21ac486 the multibody model failed this case,
+// 16 % at a = 1e-6, for the reason given above StiffCoupling1e9WithDamping.)
 TEST(HardCases, StiffCoupling1e9WithoutDamping) {
   Scene s = seed("stiff-1e9-undamped", 0.5);
   s.coupling.stiffness = 1e9;
@@ -83,11 +80,10 @@ TEST(HardCases, FreeMachineConservesEnergyOver100Revolutions) {
   // The undamped coupling mode (p0 ≈ 88 rad/s, seed 002 eq. (10)) runs through ~880 periods and
   // its phase error grows with every one of them, so the run claims less than a 1 s run does.
   // Measured against the reduced model at a = 1e-10 (model/balanced-4cart.yaml machine, same
-  // case): crank speed error over the run 4.2e3·a (multibody) and 6.3e2·a (reduced) at
-  // a = 1e-6, falling tenfold per decade of a; largest coupling torque 2.3e2·a and 8.3e3·a. The
-  // multibody twist is the difference of two absolute angles, each held to ~a rad per step
-  // (Simbody weighs q errors absolutely), so its twist phase drifts fastest (twist error
-  // 1.3e-3 rad on a 1e-3 rad oscillation after 100 revolutions at a = 1e-6).
+  // case, before commit 21ac486): crank speed error over the run 4.2e3·a (multibody) and
+  // 6.3e2·a (reduced) at a = 1e-6, falling tenfold per decade of a; largest coupling torque
+  // 2.3e2·a and 8.3e3·a. (The multibody twist was then the difference of two absolute angles
+  // held to ~a rad each, so its phase drifted fastest; it is now a weighted coordinate.)
   Expect claim;
   claim.speed_claim = 1e4;
   claim.torque_claim = 2e4;
