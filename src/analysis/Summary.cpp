@@ -25,6 +25,16 @@ class FiniteWriter {
   std::vector<std::string> non_finite;
 };
 
+// How the crank moves over the metrics window. A drive whose loads exceed what the motor can
+// lift over a dead centre swings back and forth instead of turning (seed 000 at small Δφ): the
+// run completes, but every "per revolution" metric is then meaningless, so it must be said.
+const char* crankMotion(const WindowMetrics& m) {
+  if (!std::isfinite(m.omega_min) || !std::isfinite(m.omega_max)) return "unknown";
+  if (m.omega_min < 0 && m.omega_max > 0) return "rocking";
+  if (m.omega_min == 0 && m.omega_max == 0) return "at_rest";
+  return "turning";
+}
+
 std::string joined(const std::vector<std::string>& items) {
   std::string s;
   for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
@@ -60,6 +70,8 @@ json makeSummary(const Scene& scene, const RunResult& run) {
                       {"max", num("omega_crank.max", m.omega_max)},
                       {"mean", num("omega_crank.mean", m.omega_mean)},
                       {"midrange", num("omega_crank.midrange", m.omega_midrange)}};
+  // "turning", "rocking" (crank speed changes sign in the metrics window), "at_rest", "unknown"
+  j["crank_motion"] = crankMotion(m);
   j["eps_crank_abs_max"] = num("eps_crank_abs_max", m.eps_abs_max);
   j["eps_from_difference"] = m.eps_from_difference;
   j["delta"] = num("delta", m.coefficients.delta);  // seed 004, eq. (12)
@@ -116,6 +128,14 @@ json makeSummary(const Scene& scene, const RunResult& run) {
   j["reactions"] = rx;
 
   std::string status = run.stats.status;
+  if (std::string(crankMotion(m)) == "rocking") {
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "; the crank rocks back and forth instead of turning (its speed ranges from "
+                  "%.3g to %.3g rad/s in the metrics window)",
+                  m.omega_min, m.omega_max);
+    status += buf;
+  }
   if (ss.finite_rows < run.timeseries.rows.size())
     status += "; timeseries has non-finite values (" + ss.note + ")";
   if (!num.non_finite.empty())

@@ -128,6 +128,30 @@ TEST(Summary, NaNInputGivesValidJsonWithNullsAndStatusSaysSo) {
   for (const char* k : kRequired) EXPECT_TRUE(back.contains(k)) << "missing key " << k;
 }
 
+TEST(Summary, TurningCrankIsReportedAsTurning) {
+  const json j = makeSummary(testScene(), testRun());
+  EXPECT_EQ(j["crank_motion"], "turning");
+  EXPECT_EQ(j["status"], "completed");
+}
+
+// A crank that swings back and forth (seed 000 at small Δφ): the run completes, but the summary
+// must say that the crank does not turn, in crank_motion and in the status line.
+TEST(Summary, RockingCrankIsReportedInStatus) {
+  RunResult run = testRun();
+  run.timeseries.rows.clear();
+  for (int i = 0; i * 1e-3 <= 10.0; ++i) {
+    const double t = i * 1e-3;  // φ = 0.3·sin(3t): never a whole revolution
+    run.timeseries.rows.push_back({t, 0.3 * std::sin(3 * t), 0.9 * std::cos(3 * t),
+                                   -2.7 * std::sin(3 * t), 0, 0, 0, 100});
+  }
+  const json j = makeSummary(testScene(), run);
+  EXPECT_EQ(j["crank_motion"], "rocking");
+  EXPECT_FALSE(j["steady_state"]["reached"].get<bool>());
+  const std::string status = j["status"];
+  EXPECT_EQ(status.rfind("completed", 0), 0u) << status;
+  EXPECT_NE(status.find("rocks back and forth"), std::string::npos) << status;
+}
+
 TEST(Summary, BlownUpTimeseriesIsFlaggedInStatus) {
   RunResult run = testRun();
   const int k = run.timeseries.index("omega_crank");
