@@ -5,6 +5,7 @@
 #include <ctime>
 #include <sstream>
 
+#include "analysis/StallDetector.h"
 #include "multibody/IntegratorFactory.h"
 
 namespace rollerdyn {
@@ -22,22 +23,6 @@ std::string atTime(const char* what, double t) {
   os << what << " at t = " << t << " s";
   return os.str();
 }
-
-// A motor has stalled when the crank has stayed below 5 % of its synchronous speed for a full
-// second after the first half second: a start from rest passes 5 % within a fraction of a second
-// with any motor that can carry its load, while an overloaded drive never leaves that band.
-struct StallWatch {
-  double threshold;          // crank speed below which the drive counts as stopped [rad/s]
-  double since = -1;         // time the crank last fell below the threshold
-  bool stalled(double t, double omega) {
-    if (t < 0.5 || omega >= threshold) {
-      since = -1;
-      return false;
-    }
-    if (since < 0) since = t;
-    return t - since >= 1.0;
-  }
-};
 
 }  // namespace
 
@@ -62,7 +47,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
                               sc.simulation.constraint_tolerance / std::sqrt(double(n_constraint_eqs)));
   integ->initialize(s0);
 
-  StallWatch stall{0.05 * sc.motor.omega_sync / sc.reducer.ratio};
+  StallDetector stall(sc.hasMotor(), sc.motor.omega_sync / sc.reducer.ratio);
   std::vector<double> ts_row, re_row;
   auto record = [&](const SimTK::State& s) {
     system.realize(s, SimTK::Stage::Acceleration);
@@ -86,6 +71,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
 
   const std::clock_t cpu0 = std::clock();
   record(integ->getState());
+  stall.update(integ->getTime(), model.crankSpeed(integ->getState()), model.motorSpeed(integ->getState()));
   const SimTK::State* last_row = &integ->getState();
   SimTK::Vector y_prev = integ->getState().getY(), ydot_prev = integ->getState().getYDot();
   double t_prev = integ->getTime();
@@ -127,9 +113,9 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
         run.stats.complete = false;
         run.stats.status = atTime("numerical failure (non-finite value)", t_out);
         stop = true;
-      } else if (sc.hasMotor() && stall.stalled(t_out, model.crankSpeed(s))) {
+      } else if (stall.update(t_out, model.crankSpeed(s), model.motorSpeed(s))) {
         run.stats.complete = false;
-        run.stats.status = atTime("motor stalled", stall.since);
+        run.stats.status = stall.status();
         stop = true;
       } else {
         if (control.progress) control.progress(t_out, t_end);
