@@ -6,26 +6,15 @@
 // Argument: number of carts n.
 #include <benchmark/benchmark.h>
 
-#include <cmath>
 #include <vector>
 
+#include "bench_fixture.h"
 #include "multibody/MultibodyModel.h"
-#include "reduced/ReducedModel.h"
-#include "support/Seed000Scene.h"
 
 namespace {
 
 using namespace rollerdyn;
-
-Scene sceneWithCarts(int n) {
-  Scene s = test_scenes::seed000Scene();
-  s.carts.count = n;
-  s.carts.side.assign(n, 1);
-  s.crank.offset = n > 1 ? 2.0 * M_PI / n : 0.0;
-  return s;
-}
-
-constexpr double kPhi = 0.3, kOmega = 10.4, kTwist = 1e-3;
+using namespace rollerdyn::bench_fixture;
 
 void BM_MultibodyOutputStep(benchmark::State& state) {
   const MultibodyModel model(sceneWithCarts(int(state.range(0))));
@@ -41,10 +30,7 @@ void BM_MultibodyOutputStep(benchmark::State& state) {
 
 void BM_ReducedOutputStep(benchmark::State& state) {
   const ReducedModel model(sceneWithCarts(int(state.range(0))));
-  Eigen::VectorXd y = model.initialState();
-  y(model.iPhi()) = kPhi;
-  y(model.iOmega()) = kOmega;
-  y(model.iTwist()) = kTwist;
+  const Eigen::VectorXd y = runningState(model);
   for (auto _ : state) {
     ModelEvaluation e = model.evaluate(y);
     benchmark::DoNotOptimize(e.carts.data());

@@ -5,26 +5,13 @@
 // carts n (seed 000 machine with the cranks spread evenly, 360°/n apart).
 #include <benchmark/benchmark.h>
 
-#include <cmath>
-
+#include "bench_fixture.h"
 #include "multibody/MultibodyModel.h"
-#include "reduced/ReducedModel.h"
-#include "support/Seed000Scene.h"
 
 namespace {
 
 using namespace rollerdyn;
-
-Scene sceneWithCarts(int n) {
-  Scene s = test_scenes::seed000Scene();
-  s.carts.count = n;
-  s.carts.side.assign(n, 1);
-  s.crank.offset = n > 1 ? 2.0 * M_PI / n : 0.0;
-  return s;
-}
-
-// A running state: crank at 0.3 rad, near synchronous speed (motor slip ~2 %), small twist.
-constexpr double kPhi = 0.3, kOmega = 10.4, kTwist = 1e-3;
+using namespace rollerdyn::bench_fixture;
 
 void multibodyRhs(benchmark::State& state, SimTK::Stage invalidated) {
   const MultibodyModel model(sceneWithCarts(int(state.range(0))));
@@ -43,10 +30,7 @@ void BM_MultibodyRhsVelocity(benchmark::State& state) { multibodyRhs(state, SimT
 
 void BM_ReducedRhs(benchmark::State& state) {
   const ReducedModel model(sceneWithCarts(int(state.range(0))));
-  Eigen::VectorXd y = model.initialState();
-  y(model.iPhi()) = kPhi;
-  y(model.iOmega()) = kOmega;
-  y(model.iTwist()) = kTwist;
+  const Eigen::VectorXd y = runningState(model);
   for (auto _ : state) {
     Eigen::VectorXd d = model.derivatives(0.0, y);
     benchmark::DoNotOptimize(d.data());

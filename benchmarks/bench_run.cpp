@@ -5,49 +5,46 @@
 // The "real_time_factor" counter is simulated seconds per CPU second.
 #include <benchmark/benchmark.h>
 
-#include <cmath>
+#include <algorithm>
 
+#include "bench_fixture.h"
 #include "multibody/MultibodySimulation.h"
-#include "reduced/ReducedModel.h"
-#include "support/Seed000Scene.h"
 
 namespace {
 
 using namespace rollerdyn;
+using namespace rollerdyn::bench_fixture;
 
 Scene runScene(int n) {
-  Scene s = test_scenes::seed000Scene();
-  s.carts.count = n;
-  s.carts.side.assign(n, 1);
-  s.crank.offset = n > 1 ? 2.0 * M_PI / n : 0.0;
+  Scene s = sceneWithCarts(n);
   s.motor.breakdown_torque *= std::max(1.0, n / 4.0);  // the motor grows with the machine
   s.simulation.t_end = 1.0;
-  s.initial.crank_speed = 10.4;
+  s.initial.crank_speed = kOmega;
   return s;
+}
+
+// One whole run per iteration. The real-time factor counts the runs' own CPU time
+// (RunStats::cpu_seconds), not the benchmark's clock; a run is 1 s, so it is runs per CPU second.
+template <class Run>
+void timeRuns(benchmark::State& state, Run run) {
+  double cpu = 0;
+  for (auto _ : state) {
+    RunResult r = run();
+    cpu += r.stats.cpu_seconds;
+    benchmark::DoNotOptimize(r.timeseries.rows.data());
+  }
+  state.counters["real_time_factor"] = cpu > 0 ? double(state.iterations()) / cpu : 0.0;
+  state.counters["carts"] = double(state.range(0));
 }
 
 void BM_MultibodyRun1s(benchmark::State& state) {
   const MultibodyModel model(runScene(int(state.range(0))));
-  double cpu = 0;
-  for (auto _ : state) {
-    RunResult r = simulateMultibody(model);
-    cpu += r.stats.cpu_seconds;
-    benchmark::DoNotOptimize(r.timeseries.rows.data());
-  }
-  state.counters["real_time_factor"] = cpu > 0 ? double(state.iterations()) / cpu : 0.0;
-  state.counters["carts"] = double(state.range(0));
+  timeRuns(state, [&] { return simulateMultibody(model); });
 }
 
 void BM_ReducedRun1s(benchmark::State& state) {
   const Scene scene = runScene(int(state.range(0)));
-  double cpu = 0;
-  for (auto _ : state) {
-    RunResult r = runReducedModel(scene);
-    cpu += r.stats.cpu_seconds;
-    benchmark::DoNotOptimize(r.timeseries.rows.data());
-  }
-  state.counters["real_time_factor"] = cpu > 0 ? double(state.iterations()) / cpu : 0.0;
-  state.counters["carts"] = double(state.range(0));
+  timeRuns(state, [&] { return runReducedModel(scene); });
 }
 
 }  // namespace

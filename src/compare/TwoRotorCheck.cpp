@@ -92,6 +92,19 @@ double hermiteRoot(double h, double y0, double d0, double y1, double d1) {
 
 }  // namespace
 
+TwoRotorParameters seed000Drive() {
+  TwoRotorParameters p;
+  p.J1 = 0.766 * 9.8 * 9.8;
+  p.J2 = 100.0;
+  p.k = 2.0e5;
+  p.b = 2000.0;
+  p.M1 = 1000.0;
+  p.alpha = M_PI / 6.0;
+  p.Mc = p.M1 * (M_PI - 2.0 * p.alpha) / M_PI;
+  p.omega = 10.68;
+  return p;
+}
+
 double naturalFrequency(const TwoRotorParameters& p) {
   return std::sqrt(p.k * (p.J1 + p.J2) / (p.J1 * p.J2));  // seed 002, eq. (10)
 }

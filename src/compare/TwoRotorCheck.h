@@ -41,6 +41,14 @@ struct TwoRotorParameters {
   double omega = 0;  // fundamental angular frequency ω of M(t) [rad/s]
 };
 
+// The rotors of the validation suite's check (and of its tests). Seed 002 gives no numbers; they
+// are the seed 000 drive (ASSUMED): J1 = the motor side (J_p + J_m + J_red)·u² = 0.766·9.8²
+// kg·m², J2 = 100 kg·m² (about the mean crank-side reduced inertia of four carts), k = c = 2e5
+// N·m/rad, b = 2000 N·m·s/rad (Table 1's smaller damping), M1 = 1000 N·m, α = 30°, M_c = the
+// mean drive torque M1(π - 2α)/π so the rotors keep a steady mean speed, ω = 10.68 rad/s (the
+// seed 000 crank speed).
+TwoRotorParameters seed000Drive();
+
 double naturalFrequency(const TwoRotorParameters& p);   // p0, eq. (10) [rad/s]
 double dampingRate(const TwoRotorParameters& p);        // δ1, eq. (9) [1/s]
 double dampedFrequency(const TwoRotorParameters& p);    // p1, eq. (14) [rad/s]

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <sstream>
 
@@ -97,6 +98,96 @@ PlotSeries relativeDifference(const Table& t, const std::string& q, const std::s
   return series(title, tt, y);
 }
 
+// One column of a paper's sweep table in report.md: its header and its cell at one point.
+struct SweepColumn {
+  std::string header;
+  std::function<std::string(const SweepPoint&)> cell;
+};
+
+// A markdown table with one row per sweep point.
+void sweepTable(std::ostream& md, const std::vector<SweepColumn>& cols, const std::vector<SweepPoint>& pts) {
+  for (const auto& c : cols) md << "| " << c.header << " ";
+  md << "|\n";
+  for (std::size_t i = 0; i < cols.size(); ++i) md << "|---";
+  md << "|\n";
+  for (const auto& s : pts) {
+    for (const auto& c : cols) md << "| " << c.cell(s) << " ";
+    md << "|\n";
+  }
+}
+
+// A crank speed, published and ours in one cell ("9.67 / 9.71").
+SweepColumn speedColumn(const std::string& name, const std::string& col, double RunMetrics::*f, int decimals) {
+  return {name + " pub / ours",
+          [=](const SweepPoint& s) { return fx(pub(s, col), decimals) + " / " + fx(ok(s.reduced, f), decimals); }};
+}
+
+void addPublishedAndOurs(std::vector<SweepColumn>& cols, const std::string& name, const std::string& col,
+                         double RunMetrics::*f) {
+  cols.push_back({name + " pub", [=](const SweepPoint& s) { return g(pub(s, col)); }});
+  cols.push_back({name + " ours", [=](const SweepPoint& s) { return g(ok(s.reduced, f)); }});
+}
+
+// A coefficient (δ, H) as the seed 004 and 003 tables show it: published, ours, gap, the Baranov
+// variant (where `variant`), multibody (blank where it did not run).
+void addCoefficient(std::vector<SweepColumn>& cols, const std::string& name, const std::string& col,
+                    double RunMetrics::*f, bool variant) {
+  addPublishedAndOurs(cols, name, col, f);
+  cols.push_back({"gap", [=](const SweepPoint& s) { return pct(ok(s.reduced, f), pub(s, col)); }});
+  if (variant) cols.push_back({name + " Baranov", [=](const SweepPoint& s) { return g(ok(s.variant, f)); }});
+  cols.push_back({name + " mb", [=](const SweepPoint& s) { return s.has_multibody ? g(ok(s.multibody, f)) : ""; }});
+}
+
+// Our numbers of a seed 004 / 003 sweep for results/*.csv (unmasked: the CSV keeps what the
+// table leaves out where the crank does not rotate); H_baranov where the table shows it.
+Table coefficientCsv(const std::vector<SweepPoint>& pts, const std::string& x_column, bool H_variant) {
+  Table t;
+  t.columns = {x_column, "omega_min", "omega_max", "omega_mean", "delta", "eps_abs_max", "H", "k_p", "delta_baranov"};
+  if (H_variant) t.columns.push_back("H_baranov");
+  for (const char* c : {"delta_multibody", "H_multibody", "delta_published", "H_published", "k_p_published"})
+    t.columns.push_back(c);
+  for (const auto& s : pts) {
+    const RunMetrics& m = s.reduced;
+    std::vector<double> row = {s.x, m.omega_min, m.omega_max, m.omega_mean, m.delta, m.eps_abs_max, m.H, m.k_p,
+                               s.variant.delta};
+    if (H_variant) row.push_back(s.variant.H);
+    for (double v : {s.has_multibody ? s.multibody.delta : kNaN, s.has_multibody ? s.multibody.H : kNaN,
+                     pub(s, "delta"), pub(s, "H"), pub(s, "k_p")})
+      row.push_back(v);
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+// A coefficient along a sweep as plotted: published, reduced and variant at every point (NaN
+// where the crank does not rotate: gnuplot skips it), multibody where it ran.
+struct CoefficientCurves {
+  std::vector<double> x, published, reduced, variant, x_multibody, multibody;
+};
+CoefficientCurves coefficientCurves(const std::vector<SweepPoint>& pts, const std::string& col, double RunMetrics::*f) {
+  CoefficientCurves c;
+  for (const auto& s : pts) {
+    c.x.push_back(s.x);
+    c.published.push_back(pub(s, col));
+    c.reduced.push_back(ok(s.reduced, f));
+    c.variant.push_back(ok(s.variant, f));
+    if (s.has_multibody) {
+      c.x_multibody.push_back(s.x);
+      c.multibody.push_back(ok(s.multibody, f));
+    }
+  }
+  return c;
+}
+
+PlotSpec plot(const std::string& title, const std::string& xlabel, const std::string& ylabel, bool logy = false) {
+  PlotSpec s;
+  s.title = title;
+  s.xlabel = xlabel;
+  s.ylabel = ylabel;
+  s.logy = logy;
+  return s;
+}
+
 class ReportWriter {
  public:
   ReportWriter(const ValidationResults& r, const std::string& figdir) : r_(r), figdir_(figdir) {}
@@ -111,6 +202,14 @@ class ReportWriter {
   void header();
   void equivalence();
   void differences();
+  // Published, reduced, [Baranov 1 deg,] multibody against the swept value (seeds 004 and 003).
+  void coefficientFigure(const std::string& name, PlotSpec spec, const std::string& published_title,
+                         const CoefficientCurves& c, bool variant, const std::string& caption) {
+    spec.series = {series(published_title, c.x, c.published, "linespoints"), series("reduced model", c.x, c.reduced)};
+    if (variant) spec.series.push_back(series("reduced, Baranov 1 deg", c.x, c.variant));
+    spec.series.push_back(series("multibody", c.x_multibody, c.multibody, "points pt 7 ps 1.5"));
+    figure(name, std::move(spec), caption);
+  }
   void seed004(const PaperSweep& p);
   void seed003(const PaperSweep& p);
   void seed000(const PaperSweep& p);
@@ -272,106 +371,45 @@ void ReportWriter::seed004(const PaperSweep& p) {
       << "Scene `model/" << p.scene_file << "` as shipped (its header lists every assumption), "
       << "`--set " << p.x_key << "=...`. \"ours\" = reduced model (CVODE, exact); \"Baranov\" = "
       << p.variant_label << "; \"mb\" = multibody model. Published: `validation/published/" << p.published_file
-      << "`. Gap = (ours - published)/published.\n\n"
-      << "| Δφ [deg] | ω_min pub / ours | ω_max pub / ours | δ pub | δ ours | gap | δ Baranov | δ mb | H pub | H ours | gap | H Baranov | H mb | k_p pub | k_p ours |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  Table t;
-  t.columns = {"dphi_deg", "omega_min", "omega_max", "omega_mean", "delta", "eps_abs_max", "H", "k_p",
-               "delta_baranov", "H_baranov", "delta_multibody", "H_multibody", "delta_published", "H_published", "k_p_published"};
-  std::vector<double> x, dp, dr, dv, hp, hr, hv, xm, dm, hm;
-  for (const auto& s : p.points) {
-    const RunMetrics& m = s.reduced;
-    md_ << "| " << g(s.x) << " | " << fx(pub(s, "omega_min"), 2) << " / " << fx(ok(m, &RunMetrics::omega_min), 2) << " | "
-        << fx(pub(s, "omega_max"), 2) << " / " << fx(ok(m, &RunMetrics::omega_max), 2) << " | " << g(pub(s, "delta"))
-        << " | " << g(ok(m, &RunMetrics::delta)) << " | " << pct(ok(m, &RunMetrics::delta), pub(s, "delta")) << " | "
-        << g(ok(s.variant, &RunMetrics::delta)) << " | "
-        << (s.has_multibody ? g(ok(s.multibody, &RunMetrics::delta)) : "") << " | " << g(pub(s, "H")) << " | "
-        << g(ok(m, &RunMetrics::H)) << " | " << pct(ok(m, &RunMetrics::H), pub(s, "H")) << " | "
-        << g(ok(s.variant, &RunMetrics::H)) << " | "
-        << (s.has_multibody ? g(ok(s.multibody, &RunMetrics::H)) : "") << " | " << g(pub(s, "k_p")) << " | "
-        << g(ok(m, &RunMetrics::k_p)) << " |\n";
-    t.rows.push_back({s.x, m.omega_min, m.omega_max, m.omega_mean, m.delta, m.eps_abs_max, m.H, m.k_p, s.variant.delta,
-                      s.variant.H, s.has_multibody ? s.multibody.delta : kNaN, s.has_multibody ? s.multibody.H : kNaN,
-                      pub(s, "delta"), pub(s, "H"), pub(s, "k_p")});
-    x.push_back(s.x);
-    dp.push_back(pub(s, "delta"));
-    dr.push_back(ok(m, &RunMetrics::delta));
-    dv.push_back(ok(s.variant, &RunMetrics::delta));
-    hp.push_back(pub(s, "H"));
-    hr.push_back(ok(m, &RunMetrics::H));
-    hv.push_back(ok(s.variant, &RunMetrics::H));
-    if (s.has_multibody) {
-      xm.push_back(s.x);
-      dm.push_back(ok(s.multibody, &RunMetrics::delta));
-      hm.push_back(ok(s.multibody, &RunMetrics::H));
-    }
-  }
-  out_.tables.push_back({"seed004_sweep.csv", t});
-  PlotSpec s;
-  s.title = "seed 004: coefficient of unevenness δ (eq. (12))";
-  s.xlabel = p.x_label;
-  s.ylabel = "δ [-]";
-  s.series = {series("published (seed 004 table)", x, dp, "linespoints"), series("reduced model", x, dr),
-              series("reduced, Baranov 1 deg", x, dv), series("multibody", xm, dm, "points pt 7 ps 1.5")};
-  figure("seed004_delta", s, "Seed 004: δ against the crank offset, published and ours");
-  s.title = "seed 004: coefficient of dynamics H (eq. (13))";
-  s.ylabel = "H [-]";
-  s.series = {series("published (seed 004 table)", x, hp, "linespoints"), series("reduced model", x, hr),
-              series("reduced, Baranov 1 deg", x, hv), series("multibody", xm, hm, "points pt 7 ps 1.5")};
-  figure("seed004_H", s, "Seed 004: H against the crank offset, published and ours");
+      << "`. Gap = (ours - published)/published.\n\n";
+  std::vector<SweepColumn> cols = {{"Δφ [deg]", [](const SweepPoint& s) { return g(s.x); }},
+                                   speedColumn("ω_min", "omega_min", &RunMetrics::omega_min, 2),
+                                   speedColumn("ω_max", "omega_max", &RunMetrics::omega_max, 2)};
+  addCoefficient(cols, "δ", "delta", &RunMetrics::delta, /*variant=*/true);
+  addCoefficient(cols, "H", "H", &RunMetrics::H, /*variant=*/true);
+  addPublishedAndOurs(cols, "k_p", "k_p", &RunMetrics::k_p);
+  sweepTable(md_, cols, p.points);
+  out_.tables.push_back({"seed004_sweep.csv", coefficientCsv(p.points, "dphi_deg", /*H_variant=*/true)});
+  coefficientFigure("seed004_delta", plot("seed 004: coefficient of unevenness δ (eq. (12))", p.x_label, "δ [-]"),
+                    "published (seed 004 table)", coefficientCurves(p.points, "delta", &RunMetrics::delta),
+                    /*variant=*/true, "Seed 004: δ against the crank offset, published and ours");
+  coefficientFigure("seed004_H", plot("seed 004: coefficient of dynamics H (eq. (13))", p.x_label, "H [-]"),
+                    "published (seed 004 table)", coefficientCurves(p.points, "H", &RunMetrics::H),
+                    /*variant=*/true, "Seed 004: H against the crank offset, published and ours");
 }
 
 void ReportWriter::seed003(const PaperSweep& p) {
   md_ << "\n### Seed 003: energy-balanced drive, flywheel sweep\n\n"
       << "Scene `model/" << p.scene_file << "` as shipped, `--set " << p.x_key << "=...` (flywheel on the "
       << "crankshaft, see the scene header). Columns as for seed 004. Published: `validation/published/"
-      << p.published_file << "`.\n\n"
-      << "| I_fw [kg·m²] | ω_min pub / ours | ω_max pub / ours | ω_mean pub / ours | δ pub | δ ours | gap | δ Baranov | δ mb | H pub | H ours | gap | H mb | k_p pub | k_p ours |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  Table t;
-  t.columns = {"flywheel_inertia", "omega_min", "omega_max", "omega_mean", "delta", "eps_abs_max", "H", "k_p",
-               "delta_baranov", "delta_multibody", "H_multibody", "delta_published", "H_published", "k_p_published"};
-  std::vector<double> x, dp, dr, dv, hp, hr, xm, dm, hm;
-  for (const auto& s : p.points) {
-    const RunMetrics& m = s.reduced;
-    md_ << "| " << g(s.x, 6) << " | " << fx(pub(s, "omega_min"), 3) << " / " << fx(ok(m, &RunMetrics::omega_min), 3)
-        << " | " << fx(pub(s, "omega_max"), 3) << " / " << fx(ok(m, &RunMetrics::omega_max), 3) << " | "
-        << fx(pub(s, "omega_mean"), 3) << " / " << fx(ok(m, &RunMetrics::omega_mean), 3) << " | " << g(pub(s, "delta"))
-        << " | " << g(ok(m, &RunMetrics::delta)) << " | " << pct(ok(m, &RunMetrics::delta), pub(s, "delta")) << " | "
-        << g(ok(s.variant, &RunMetrics::delta)) << " | "
-        << (s.has_multibody ? g(ok(s.multibody, &RunMetrics::delta)) : "") << " | " << g(pub(s, "H")) << " | "
-        << g(ok(m, &RunMetrics::H)) << " | " << pct(ok(m, &RunMetrics::H), pub(s, "H")) << " | "
-        << (s.has_multibody ? g(ok(s.multibody, &RunMetrics::H)) : "") << " | " << g(pub(s, "k_p")) << " | "
-        << g(ok(m, &RunMetrics::k_p)) << " |\n";
-    t.rows.push_back({s.x, m.omega_min, m.omega_max, m.omega_mean, m.delta, m.eps_abs_max, m.H, m.k_p, s.variant.delta,
-                      s.has_multibody ? s.multibody.delta : kNaN, s.has_multibody ? s.multibody.H : kNaN,
-                      pub(s, "delta"), pub(s, "H"), pub(s, "k_p")});
-    x.push_back(s.x);
-    dp.push_back(pub(s, "delta"));
-    dr.push_back(ok(m, &RunMetrics::delta));
-    dv.push_back(ok(s.variant, &RunMetrics::delta));
-    hp.push_back(pub(s, "H"));
-    hr.push_back(ok(m, &RunMetrics::H));
-    if (s.has_multibody) {
-      xm.push_back(s.x);
-      dm.push_back(ok(s.multibody, &RunMetrics::delta));
-      hm.push_back(ok(s.multibody, &RunMetrics::H));
-    }
-  }
-  out_.tables.push_back({"seed003_sweep.csv", t});
-  PlotSpec s;
-  s.title = "seed 003: coefficient of unevenness δ vs flywheel inertia";
-  s.xlabel = p.x_label;
-  s.ylabel = "δ [-]";
-  s.logy = true;
-  s.series = {series("published (seed 003 Table 1)", x, dp, "linespoints"), series("reduced model", x, dr),
-              series("reduced, Baranov 1 deg", x, dv), series("multibody", xm, dm, "points pt 7 ps 1.5")};
-  figure("seed003_delta", s, "Seed 003: δ against the flywheel inertia, published and ours");
-  s.title = "seed 003: coefficient of dynamics H vs flywheel inertia";
-  s.ylabel = "H [-]";
-  s.series = {series("published (seed 003 Table 1)", x, hp, "linespoints"), series("reduced model", x, hr),
-              series("multibody", xm, hm, "points pt 7 ps 1.5")};
-  figure("seed003_H", s, "Seed 003: H against the flywheel inertia, published and ours");
+      << p.published_file << "`.\n\n";
+  // Speeds to three decimals, as seed 003 prints them (seed 004: two), and the mean speed too.
+  std::vector<SweepColumn> cols = {{"I_fw [kg·m²]", [](const SweepPoint& s) { return g(s.x, 6); }},
+                                   speedColumn("ω_min", "omega_min", &RunMetrics::omega_min, 3),
+                                   speedColumn("ω_max", "omega_max", &RunMetrics::omega_max, 3),
+                                   speedColumn("ω_mean", "omega_mean", &RunMetrics::omega_mean, 3)};
+  addCoefficient(cols, "δ", "delta", &RunMetrics::delta, /*variant=*/true);
+  addCoefficient(cols, "H", "H", &RunMetrics::H, /*variant=*/false);
+  addPublishedAndOurs(cols, "k_p", "k_p", &RunMetrics::k_p);
+  sweepTable(md_, cols, p.points);
+  out_.tables.push_back({"seed003_sweep.csv", coefficientCsv(p.points, "flywheel_inertia", /*H_variant=*/false)});
+  // δ and H fall tenfold over the flywheel sweep: logarithmic y axis.
+  coefficientFigure("seed003_delta", plot("seed 003: coefficient of unevenness δ vs flywheel inertia", p.x_label, "δ [-]", true),
+                    "published (seed 003 Table 1)", coefficientCurves(p.points, "delta", &RunMetrics::delta),
+                    /*variant=*/true, "Seed 003: δ against the flywheel inertia, published and ours");
+  coefficientFigure("seed003_H", plot("seed 003: coefficient of dynamics H vs flywheel inertia", p.x_label, "H [-]", true),
+                    "published (seed 003 Table 1)", coefficientCurves(p.points, "H", &RunMetrics::H),
+                    /*variant=*/false, "Seed 003: H against the flywheel inertia, published and ours");
 }
 
 void ReportWriter::seed000(const PaperSweep& p) {

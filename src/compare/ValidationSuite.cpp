@@ -73,6 +73,11 @@ class Suite {
     return runMetrics(sc, runMultibodyModel(sc, rc));
   }
 
+  SweepPoint paperPoint(const PaperSweep& p, const std::vector<std::string>& sets,
+                        const std::vector<std::string>& variant, const std::string& multibody_log) const;
+  bool sweepPaper(PaperSweep& p, const std::vector<double>& xs, const std::vector<double>& multibody_at,
+                  const std::string& published_key, const std::function<std::string(double)>& describe);
+
   void equivalence(ValidationResults& r);
   void differences(ValidationResults& r);
   void papers(ValidationResults& r);
@@ -597,6 +602,44 @@ std::vector<std::string> causes000(const PaperSweep& p, const Scene& sc) {
   return c;
 }
 
+// One point of a paper sweep, placed by `sets`: the reduced model on the scene as shipped and
+// with the paper's own modelling choices (`variant`); the multibody model only when
+// `multibody_log` (its line in the log) is given: it costs a hundred reduced runs or more.
+SweepPoint Suite::paperPoint(const PaperSweep& p, const std::vector<std::string>& sets,
+                             const std::vector<std::string>& variant, const std::string& multibody_log) const {
+  SweepPoint sp;
+  sp.reduced = reducedMetrics(p.scene_file, sets);
+  sp.variant = reducedMetrics(p.scene_file, concat(sets, variant));
+  sp.has_variant = true;
+  if (!multibody_log.empty()) {
+    log(multibody_log);
+    sp.multibody = multibodyMetrics(p.scene_file, sets);
+    sp.has_multibody = true;
+  }
+  return sp;
+}
+
+// Seeds 004 and 003: p.x_key over xs, the papers' Baranov scheme as the variant, the multibody
+// model at multibody_at, each point beside the published row whose published_key column is x.
+// `describe` names a point in the log. False when interrupted (p is then incomplete).
+// Not runSweep (studies/Sweep.h): studies is the layer above this one (it links compare), and
+// a point here is three runs (reduced, reduced variant, multibody at chosen points only) read
+// as RunMetrics (`rotating`, the integration's CPU time), where a Sweep point is one model's
+// summary.json over a full grid.
+bool Suite::sweepPaper(PaperSweep& p, const std::vector<double>& xs, const std::vector<double>& multibody_at,
+                       const std::string& published_key, const std::function<std::string(double)>& describe) {
+  const Table pub = readPublishedTable(o_.published_dir + "/" + p.published_file);
+  for (double x : xs) {
+    if (interrupted()) return false;
+    SweepPoint sp = paperPoint(p, {p.x_key + "=" + exact(x)}, {"reduced.integrator=baranov"},
+                               contains(multibody_at, x) ? describe(x) : "");
+    sp.x = x;
+    sp.has_published = findPublished(pub, {{published_key, x}}, sp.published);
+    p.points.push_back(sp);
+  }
+  return true;
+}
+
 void Suite::papers(ValidationResults& r) {
   // Seed 004: Δφ sweep.
   {
@@ -608,29 +651,14 @@ void Suite::papers(ValidationResults& r) {
     p.x_label = "crank offset dphi [deg]";
     p.variant_label = "reduced model with the papers' Baranov scheme, 1 deg step";
     p.published_file = "seed004_table.csv";
-    const Table pub = readPublishedTable(o_.published_dir + "/" + p.published_file);
     const std::vector<double> mb = o_.quick ? std::vector<double>{90} : std::vector<double>{0, 30, 60, 90, 120, 150, 180};
     std::vector<double> xs = range(0, 180, o_.quick ? 20 : 10);
     if (!contains(xs, 90)) {  // the papers' optimum, always in
       xs.push_back(90);
       std::sort(xs.begin(), xs.end());
     }
-    for (double x : xs) {
-      if (interrupted()) return;
-      SweepPoint sp;
-      sp.x = x;
-      const std::vector<std::string> sets = {p.x_key + "=" + exact(x)};
-      sp.reduced = reducedMetrics(p.scene_file, sets);
-      sp.variant = reducedMetrics(p.scene_file, concat(sets, {"reduced.integrator=baranov"}));
-      sp.has_variant = true;
-      if (contains(mb, x)) {
-        log("seed 004: multibody at dphi = " + g(x) + " deg");
-        sp.multibody = multibodyMetrics(p.scene_file, sets);
-        sp.has_multibody = true;
-      }
-      sp.has_published = findPublished(pub, {{"dphi_deg", x}}, sp.published);
-      p.points.push_back(sp);
-    }
+    if (!sweepPaper(p, xs, mb, "dphi_deg", [](double x) { return "seed 004: multibody at dphi = " + g(x) + " deg"; }))
+      return;
     p.causes = causes004(p);
     r.papers.push_back(p);
   }
@@ -644,24 +672,10 @@ void Suite::papers(ValidationResults& r) {
     p.x_label = "flywheel inertia [kg m^2]";
     p.variant_label = "reduced model with the papers' Baranov scheme, 1 deg step";
     p.published_file = "seed003_table1.csv";
-    const Table pub = readPublishedTable(o_.published_dir + "/" + p.published_file);
     const std::vector<double> mb = o_.quick ? std::vector<double>{0} : std::vector<double>{0, 250, 500, 1000};
-    for (double x : range(0, 1000, o_.quick ? 250 : 50)) {
-      if (interrupted()) return;
-      SweepPoint sp;
-      sp.x = x;
-      const std::vector<std::string> sets = {p.x_key + "=" + exact(x)};
-      sp.reduced = reducedMetrics(p.scene_file, sets);
-      sp.variant = reducedMetrics(p.scene_file, concat(sets, {"reduced.integrator=baranov"}));
-      sp.has_variant = true;
-      if (contains(mb, x)) {
-        log("seed 003: multibody at flywheel inertia " + g(x) + " kg m^2");
-        sp.multibody = multibodyMetrics(p.scene_file, sets);
-        sp.has_multibody = true;
-      }
-      sp.has_published = findPublished(pub, {{"flywheel_inertia", x}}, sp.published);
-      p.points.push_back(sp);
-    }
+    if (!sweepPaper(p, range(0, 1000, o_.quick ? 250 : 50), mb, "flywheel_inertia",
+                    [](double x) { return "seed 003: multibody at flywheel inertia " + g(x) + " kg m^2"; }))
+      return;
     p.causes = causes003(p);
     r.papers.push_back(p);
   }
@@ -682,18 +696,11 @@ void Suite::papers(ValidationResults& r) {
       else mb = k == 8000 ? std::vector<double>{0, 30, 60, 90} : std::vector<double>{90};
       for (double x : range(0, 90, o_.quick ? 30 : 10)) {
         if (interrupted()) return;
-        SweepPoint sp;
+        SweepPoint sp = paperPoint(p, {p.x_key + "=" + exact(x), "coupling.damping=" + exact(k)},
+                                   {"rods.model=split", "reduced.kinematics=truncated"},
+                                   contains(mb, x) ? "seed 000: multibody at dphi = " + g(x) + " deg, k = " + g(k) : "");
         sp.x = x;
         sp.k = k;
-        const std::vector<std::string> sets = {p.x_key + "=" + exact(x), "coupling.damping=" + exact(k)};
-        sp.reduced = reducedMetrics(p.scene_file, sets);
-        sp.variant = reducedMetrics(p.scene_file, concat(sets, {"rods.model=split", "reduced.kinematics=truncated"}));
-        sp.has_variant = true;
-        if (contains(mb, x)) {
-          log("seed 000: multibody at dphi = " + g(x) + " deg, k = " + g(k));
-          sp.multibody = multibodyMetrics(p.scene_file, sets);
-          sp.has_multibody = true;
-        }
         sp.has_published = findPublished(pub, {{"dphi_deg", x}, {"k", k}}, sp.published);
         p.points.push_back(sp);
       }
@@ -749,21 +756,9 @@ void Suite::sensitivity(ValidationResults& r) {
 }
 
 void Suite::analytic(ValidationResults& r) {
-  // Seed 002 gives no numbers; the rotors are the seed 000 drive (ASSUMED): J1 = the motor
-  // side (J_p + J_m + J_red)·u² = 0.766·9.8² kg·m², J2 = 100 kg·m² (about the mean crank-side
-  // reduced inertia of four carts), k = c = 2e5 N·m/rad, b = 2000 N·m·s/rad (Table 1's smaller
-  // damping), M1 = 1000 N·m, α = 30°, M_c = the mean drive torque M1(π - 2α)/π so the rotors
-  // keep a steady mean speed.
+  // Seed 002 gives no numbers: the seed 000 drive as two rotors (ASSUMED, TwoRotorCheck.h).
   AnalyticResults& a = r.analytic;
-  TwoRotorParameters p;
-  p.J1 = 0.766 * 9.8 * 9.8;
-  p.J2 = 100.0;
-  p.k = 2.0e5;
-  p.b = 2000.0;
-  p.M1 = 1000.0;
-  p.alpha = M_PI / 6.0;
-  p.Mc = p.M1 * (M_PI - 2.0 * p.alpha) / M_PI;
-  p.omega = 10.68;  // the seed 000 crank speed [rad/s]
+  const TwoRotorParameters p = seed000Drive();
   a.accuracy = 1e-10;
   a.forced = p;
   a.resonant = p;

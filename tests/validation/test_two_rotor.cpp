@@ -3,7 +3,7 @@
 // The expected values are computed HERE from the paper's formulas (eq. (7)-(10), (14) and the
 // steady response of a damped oscillator in complex form), not by the code under test.
 //
-// Parameters (seed 002 prints none; the seed 000 drive, as in the validation report):
+// Parameters (seed 002 prints none; the seed 000 drive of the validation report, seed000Drive()):
 // J1 = 0.766·9.8² kg·m², J2 = 100 kg·m², k = 2e5 N·m/rad, b = 2000 N·m·s/rad, M1 = 1000 N·m,
 // α = 30°, M_c = M1(π - 2α)/π, ω = 10.68 rad/s.
 //
@@ -29,19 +29,6 @@
 using namespace rollerdyn::validation;
 
 namespace {
-
-TwoRotorParameters seed000Drive() {
-  TwoRotorParameters p;
-  p.J1 = 0.766 * 9.8 * 9.8;
-  p.J2 = 100.0;
-  p.k = 2.0e5;
-  p.b = 2000.0;
-  p.M1 = 1000.0;
-  p.alpha = M_PI / 6.0;
-  p.Mc = p.M1 * (M_PI - 2.0 * p.alpha) / M_PI;
-  p.omega = 10.68;
-  return p;
-}
 
 // Steady response of ψ̈ + 2δ1ψ̇ + p0²ψ = F(t), written independently of TwoRotorCheck.cpp in
 // complex form: the forcing (A·sin nωt + B·cos nωt)/J1 = Re[(B - i·A)/J1 · e^{inωt}] gives
