@@ -43,9 +43,10 @@ class StallDetector {
   double threshold() const { return threshold_; }
 
   // The status line both models write, e.g. "motor stalled at t = 0.25 s".
-  std::string status() const {
+  std::string status() const { return statusAt(since_); }
+  static std::string statusAt(double t) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, "motor stalled at t = %.4g s", since_);
+    std::snprintf(buf, sizeof buf, "motor stalled at t = %.4g s", t);
     return buf;
   }
 

@@ -48,6 +48,11 @@ CartStaticsResult solveCartStatics(const Scene& scene, double beta, double H, do
   // friction = φ_f·f·(s1·N1 + s2·N2) with s_i = sign(N_i): piecewise linear in N. Start from the
   // paper's case N1, N2 > 0 (s = +1) and flip a sign when the solution contradicts it; with the
   // small friction coefficients of guide rollers this settles in at most two re-solves.
+  // The solve runs for every cart in every right-hand-side evaluation, where Eigen's pivoting LU
+  // was over half of a cart's cost; Eigen's fixed-size 3x3 inverse (cofactors, no pivoting) is
+  // enough here because the matrix is far from singular: its determinant is
+  // -cos β·(2b - (k1 - k2)·d/2) + O(f), with cos β ≥ √(1 - (r/l)²) > 0 and f·d < 2b for any
+  // real guide. computeInverseWithCheck still guards a degenerate input with the LU.
   double s1 = 1.0, s2 = 1.0;
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   for (int attempt = 0; attempt < 4; ++attempt) {
@@ -56,7 +61,10 @@ CartStaticsResult solveCartStatics(const Scene& scene, double beta, double H, do
     A << -cb, k1, k2,                                            // ΣX
         sb, -1.0, -1.0,                                          // ΣY
         0.0, -(g.p - g.b) - k1 * 0.5 * g.d, -(g.p + g.b) - k2 * 0.5 * g.d;  // ΣM
-    x = A.partialPivLu().solve(rhs);
+    Eigen::Matrix3d A_inv;
+    bool invertible = false;
+    A.computeInverseWithCheck(A_inv, invertible);
+    x = invertible ? Eigen::Vector3d(A_inv * rhs) : Eigen::Vector3d(A.partialPivLu().solve(rhs));
     const double n1 = (x(1) < 0.0) ? -1.0 : 1.0, n2 = (x(2) < 0.0) ? -1.0 : 1.0;
     if (f == 0.0 || (n1 == s1 && n2 == s2)) break;
     s1 = n1;

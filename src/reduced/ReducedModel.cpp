@@ -43,31 +43,44 @@ SliderCrankPose ReducedModel::cartPose(int j, double phi) const {
              : sliderCrankExact(theta, r, l, side);      // seed 000 eq. (40)-(47)
 }
 
+// One cart's share of J_n2(φ) and of dJ_n2/dφ: seed 000 eq. (9) (cart, x_B'²) + the rod terms of
+// seed 004 eq. (9) (distributed rod: centre-of-mass speed and rotation), and their φ-derivatives
+// (seed 000 eq. (38), analytic).
+double ReducedModel::cartInertia(const SliderCrankPose& p) const {
+  double J = m_B_ * p.dx_B * p.dx_B;
+  if (scene_.rods.model == RodModel::Distributed)
+    J += scene_.rods.mass * (p.dx_S * p.dx_S + p.dy_S * p.dy_S) +
+         scene_.rods.inertia_com * p.dbeta * p.dbeta;
+  return J;
+}
+
+double ReducedModel::cartInertiaDerivative(const SliderCrankPose& p) const {
+  double dJ = 2.0 * m_B_ * p.dx_B * p.d2x_B;
+  if (scene_.rods.model == RodModel::Distributed)
+    dJ += 2.0 * scene_.rods.mass * (p.dx_S * p.d2x_S + p.dy_S * p.d2y_S) +
+          2.0 * scene_.rods.inertia_com * p.dbeta * p.d2beta;
+  return dJ;
+}
+
+// Torque of the rod's weight about the crank axis for one cart [N·m].
+double ReducedModel::rodGravityTorque(const SliderCrankPose& p, double theta) const {
+  const double g = scene_.loads.gravity, m = scene_.rods.mass;
+  if (!(g > 0.0)) return 0.0;
+  if (scene_.rods.model == RodModel::Distributed) return m * g * p.dy_S;  // seed 004 eq. (5)
+  if (scene_.rods.model == RodModel::Split)
+    return 0.5 * m * g * scene_.crank.radius * std::cos(theta);  // pin half-mass
+  return 0.0;
+}
+
 double ReducedModel::crankSideInertia(double phi) const {
-  // seed 000 eq. (9) + rod terms of seed 004 eq. (9)
   double J = J_crank_;
-  const bool distributed = scene_.rods.model == RodModel::Distributed;
-  for (int j = 0; j < cartCount(); ++j) {
-    const SliderCrankPose p = cartPose(j, phi);
-    J += m_B_ * p.dx_B * p.dx_B;
-    if (distributed)
-      J += scene_.rods.mass * (p.dx_S * p.dx_S + p.dy_S * p.dy_S) +
-           scene_.rods.inertia_com * p.dbeta * p.dbeta;
-  }
+  for (int j = 0; j < cartCount(); ++j) J += cartInertia(cartPose(j, phi));
   return J;
 }
 
 double ReducedModel::crankSideInertiaDerivative(double phi) const {
-  // d/dφ of crankSideInertia: 2·m·x'·x'' etc. (seed 000 eq. (38)), analytic.
   double dJ = 0.0;
-  const bool distributed = scene_.rods.model == RodModel::Distributed;
-  for (int j = 0; j < cartCount(); ++j) {
-    const SliderCrankPose p = cartPose(j, phi);
-    dJ += 2.0 * m_B_ * p.dx_B * p.d2x_B;
-    if (distributed)
-      dJ += 2.0 * scene_.rods.mass * (p.dx_S * p.d2x_S + p.dy_S * p.d2y_S) +
-            2.0 * scene_.rods.inertia_com * p.dbeta * p.d2beta;
-  }
+  for (int j = 0; j < cartCount(); ++j) dJ += cartInertiaDerivative(cartPose(j, phi));
   return dJ;
 }
 
@@ -100,19 +113,11 @@ CartEvaluation ReducedModel::evaluateCart(int j, double phi, double omega, doubl
 }
 
 double ReducedModel::loadTorque(double phi, double omega, std::vector<CartEvaluation>* carts) const {
-  const double g = scene_.loads.gravity;
-  const double m = scene_.rods.mass;
   double M = 0.0;
   if (carts) carts->clear();
   for (int j = 0; j < cartCount(); ++j) {
     CartEvaluation c = evaluateCart(j, phi, omega, 0.0);  // quasi-static friction
-    M -= c.generalized_force;
-    if (g > 0.0) {
-      if (scene_.rods.model == RodModel::Distributed)
-        M += m * g * c.pose.dy_S;  // seed 004 eq. (5): G_rod·∂y_S/∂φ
-      else if (scene_.rods.model == RodModel::Split)
-        M += 0.5 * m * g * scene_.crank.radius * std::cos(c.theta);  // pin half-mass
-    }
+    M += rodGravityTorque(c.pose, c.theta) - c.generalized_force;
     if (carts) carts->push_back(c);
   }
   return M;
@@ -145,18 +150,45 @@ Eigen::VectorXd ReducedModel::initialState() const {
 
 ModelEvaluation ReducedModel::evaluate(const Eigen::VectorXd& y) const {
   ModelEvaluation e;
-  e.phi_crank = y(iPhi());
-  e.omega_crank = y(iOmega());
-  if (!rigid_) {
-    e.twist = y(iTwist());
-    e.twist_rate = y(iTwistRate());
-  }
+  evaluate(y.data(), e, true);
+  return e;
+}
+
+Eigen::VectorXd ReducedModel::derivatives(double /*t*/, const Eigen::VectorXd& y) const {
+  Eigen::VectorXd d(stateSize());
+  derivatives(y.data(), d.data());
+  return d;
+}
+
+void ReducedModel::evaluate(const double* y, ModelEvaluation& e, bool keep_carts) const {
+  e.phi_crank = y[iPhi()];
+  e.omega_crank = y[iOmega()];
+  e.twist = rigid_ ? 0.0 : y[iTwist()];
+  e.twist_rate = rigid_ ? 0.0 : y[iTwistRate()];
   e.omega_motor = e.omega_crank + e.twist_rate;
-  e.J_n2 = crankSideInertia(e.phi_crank);
-  e.dJ_n2 = crankSideInertiaDerivative(e.phi_crank);
+  const double phi = e.phi_crank, w2 = e.omega_crank;
+
+  // One pass over the carts, each cart's pose computed once (crankSideInertia(),
+  // crankSideInertiaDerivative() and loadTorque() would compute it three times), from the same
+  // per-cart terms those functions sum.
+  double J = J_crank_, dJ = 0.0, M = 0.0, P_friction = 0.0, P_load = 0.0;
+  e.carts.clear();  // keeps its capacity
+  for (int j = 0; j < cartCount(); ++j) {
+    const CartEvaluation c = evaluateCart(j, phi, w2, 0.0);  // quasi-static friction
+    const SliderCrankPose& p = c.pose;
+    J += cartInertia(p);
+    dJ += cartInertiaDerivative(p);
+    M += rodGravityTorque(p, c.theta) - c.generalized_force;
+    const double sigma = scene_.carts.side[j];
+    const double v = p.dx_B * w2;  // world ẋ_B
+    P_friction -= sigma * c.statics.friction * v;
+    P_load -= sigma * c.roller_force * v;
+    if (keep_carts) e.carts.push_back(c);
+  }
+  e.J_n2 = J;
+  e.dJ_n2 = dJ;
   e.motor_torque = motorTorque(e.omega_motor);
-  e.load_torque = loadTorque(e.phi_crank, e.omega_crank, &e.carts);
-  const double w2 = e.omega_crank;
+  e.load_torque = M;
   if (rigid_) {
     // seed 004 eq. (1) in time form: J·φ̈ = M_p - M_o - ½·J'·φ̇²
     e.eps_crank = (e.motor_torque - e.load_torque - 0.5 * e.dJ_n2 * w2 * w2) / (J_n1_ + e.J_n2);
@@ -165,6 +197,7 @@ ModelEvaluation ReducedModel::evaluate(const Eigen::VectorXd& y) const {
     // Torque the rigid coupling passes to the crank side: what the motor gives minus what the
     // motor-side inertia takes.
     e.coupling_torque = e.motor_torque - J_n1_ * e.eps_crank;
+    e.damping_power = 0.0;
   } else {
     // seed 000 eq. (58)
     const double c = scene_.coupling.stiffness, k = scene_.coupling.damping;
@@ -175,30 +208,23 @@ ModelEvaluation ReducedModel::evaluate(const Eigen::VectorXd& y) const {
     e.damping_power = k * e.twist_rate * e.twist_rate;
   }
   e.motor_power = e.motor_torque * e.omega_motor;
-  for (int j = 0; j < cartCount(); ++j) {
-    const CartEvaluation& c = e.carts[j];
-    const double sigma = scene_.carts.side[j];
-    const double v = c.pose.dx_B * w2;  // world ẋ_B
-    e.friction_power -= sigma * c.statics.friction * v;
-    e.load_power -= sigma * c.roller_force * v;
-  }
-  return e;
+  e.friction_power = P_friction;
+  e.load_power = P_load;
 }
 
-Eigen::VectorXd ReducedModel::derivatives(double /*t*/, const Eigen::VectorXd& y) const {
-  const ModelEvaluation e = evaluate(y);
-  Eigen::VectorXd d(stateSize());
-  d(iPhi()) = e.omega_crank;
-  d(iOmega()) = e.eps_crank;
+void ReducedModel::derivatives(const double* y, double* d) const {
+  ModelEvaluation e;  // carts stays empty: no allocation
+  evaluate(y, e, false);
+  d[iPhi()] = e.omega_crank;
+  d[iOmega()] = e.eps_crank;
   if (!rigid_) {
-    d(iTwist()) = e.twist_rate;
-    d(iTwistRate()) = e.twist_accel;
-    d(iDampingWork()) = e.damping_power;
+    d[iTwist()] = e.twist_rate;
+    d[iTwistRate()] = e.twist_accel;
+    d[iDampingWork()] = e.damping_power;
   }
-  d(iMotorWork()) = e.motor_power;
-  d(iFrictionWork()) = e.friction_power;
-  d(iLoadWork()) = e.load_power;
-  return d;
+  d[iMotorWork()] = e.motor_power;
+  d[iFrictionWork()] = e.friction_power;
+  d[iLoadWork()] = e.load_power;
 }
 
 double ReducedModel::kineticEnergy(const Eigen::VectorXd& y) const {

@@ -114,6 +114,12 @@ class ReducedModel {
   Eigen::VectorXd initialState() const;
   ModelEvaluation evaluate(const Eigen::VectorXd& y) const;
   Eigen::VectorXd derivatives(double t, const Eigen::VectorXd& y) const;
+  // The same two for the integrators' inner loops (the overloads above call these): y and dydt
+  // point to stateSize() doubles. Nothing is allocated: e.carts is filled only when carts is
+  // true (and left empty otherwise), reusing its capacity when the same ModelEvaluation is
+  // passed again.
+  void evaluate(const double* y, ModelEvaluation& e, bool carts) const;
+  void derivatives(const double* y, double* dydt) const;
   // Kinetic ½J_n1φ̇1² + ½J_n2φ̇2² (rigid: ½Jφ̇²) and potential ½cψ² + rod gravity [J].
   double kineticEnergy(const Eigen::VectorXd& y) const;
   double potentialEnergy(const Eigen::VectorXd& y) const;
@@ -127,6 +133,9 @@ class ReducedModel {
 
  private:
   CartEvaluation evaluateCart(int j, double phi, double omega, double inertial_force) const;
+  double cartInertia(const SliderCrankPose& p) const;            // one cart's share of J_n2 [kg·m²]
+  double cartInertiaDerivative(const SliderCrankPose& p) const;  // its dJ/dφ [kg·m²/rad]
+  double rodGravityTorque(const SliderCrankPose& p, double theta) const;  // [N·m]
 
   Scene scene_;
   bool rigid_;
