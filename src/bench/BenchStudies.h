@@ -1,7 +1,7 @@
 // The studies of `rollerdyn bench` (issue #4) and the files they publish:
 //
 //   integrators  every Simbody integrator (integratorNames()) and the reduced model's CVODE
-//                (plus Baranov's scheme on rigid-drive scenes) at accuracies 1e-2 ... 1e-10;
+//                (plus Baranov's scheme on rigid-drive scenes) at accuracies 1e-2, 3e-3 ... 1e-10;
 //                errors against a reference run of the SAME model (see BenchRun.h for the error
 //                measure): multibody RungeKuttaMerson (why not Feldberg: BenchStudies.cpp),
 //                reduced CVODE, both at accuracy kReferenceAccuracy = 1e-10 (also with --quick).
@@ -65,7 +65,8 @@ struct BenchRow {
 // Accuracy of the reference runs of the integrator study.
 constexpr double kReferenceAccuracy = 1e-10;
 
-// Accuracies of the integrator study: 1e-2 ... 1e-10 (decades), quick: 1e-2, 1e-4, 1e-6, 1e-8.
+// Accuracies of the integrator study: 1e-2, 3e-3, 1e-3, ... 3e-10, 1e-10 (two per decade);
+// quick: 1e-2, 1e-4, 1e-6, 1e-8.
 std::vector<double> accuracyGrid(bool quick);
 // Crank-angle steps of the Baranov scheme [rad]: 8° halved down to 1/32° (quick: 4°, 1°, 1/4°).
 std::vector<double> baranovSteps(bool quick);

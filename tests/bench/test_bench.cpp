@@ -170,8 +170,10 @@ TEST(BenchStudies, CsvHasTheRequiredColumnsAndEmptyFieldsForNaN) {
 
 TEST(BenchStudies, Grids) {
   const auto g = accuracyGrid(false);
-  ASSERT_EQ(g.size(), 9u);
+  ASSERT_EQ(g.size(), 17u);
   EXPECT_DOUBLE_EQ(g.front(), 1e-2);
+  EXPECT_DOUBLE_EQ(g[1], 3e-3);
+  for (std::size_t i = 1; i < g.size(); ++i) EXPECT_LT(g[i], g[i - 1]) << i;
   EXPECT_DOUBLE_EQ(g.back(), 1e-10);
   EXPECT_LT(accuracyGrid(true).size(), g.size());
   EXPECT_GE(kReferenceAccuracy, 0.0);
