@@ -5,6 +5,7 @@
 #include <ctime>
 #include <sstream>
 
+#include "analysis/OutputGrid.h"
 #include "analysis/StallDetector.h"
 #include "multibody/IntegratorFactory.h"
 
@@ -22,6 +23,26 @@ std::string atTime(const char* what, double t) {
   os.precision(4);
   os << what << " at t = " << t << " s";
   return os.str();
+}
+
+// The state at time t inside the step from (t0, y0, ẏ0) to `end` by cubic Hermite
+// interpolation of y (Simbody's own interpolant), with prescribed motion applied and projected
+// onto the constraints to `tol`, written into `sample` and realized to Velocity.
+void sampleWithinStep(const SimTK::System& system, double t0, const SimTK::Vector& y0,
+                      const SimTK::Vector& ydot0, const SimTK::State& end, double t, double tol,
+                      SimTK::State& sample) {
+  const double h = end.getTime() - t0, th = (t - t0) / h;
+  const double h00 = (1 + 2 * th) * (1 - th) * (1 - th), h10 = th * (1 - th) * (1 - th);
+  const double h01 = th * th * (3 - 2 * th), h11 = th * th * (th - 1);
+  sample.updY() = h00 * y0 + (h10 * h) * ydot0 + h01 * end.getY() + (h11 * h) * end.getYDot();
+  sample.updTime() = t;
+  system.realize(sample, SimTK::Stage::Time);
+  system.prescribeQ(sample);
+  system.realize(sample, SimTK::Stage::Position);
+  system.projectQ(sample, tol);
+  system.prescribeU(sample);
+  system.realize(sample, SimTK::Stage::Velocity);
+  system.projectU(sample, tol);
 }
 
 }  // namespace
@@ -43,8 +64,8 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   // can then be √m times the RMS (seen: 1.7e-6 at a 1e-6 tolerance on recuperative-2cart), so
   // Simbody gets tol/√m.
   const int n_constraint_eqs = std::max(1, s0.getNQErr());
-  auto integ = makeIntegrator(sc.simulation.integrator, system, sc.simulation.accuracy,
-                              sc.simulation.constraint_tolerance / std::sqrt(double(n_constraint_eqs)));
+  const double constraint_tol = sc.simulation.constraint_tolerance / std::sqrt(double(n_constraint_eqs));
+  auto integ = makeIntegrator(sc.simulation.integrator, system, sc.simulation.accuracy, constraint_tol);
   integ->initialize(s0);
 
   StallDetector stall(sc.hasMotor(), sc.motor.omega_sync / sc.reducer.ratio);
@@ -65,9 +86,8 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   // constraints like Simbody's reports, so rows satisfy them to the same tolerance.
   integ->setReturnEveryInternalStep(true);
   SimTK::State sample = integ->getState();
-  const double t_end = sc.simulation.t_end, dt = sc.simulation.output_step;
-  const double projection_tol = sc.simulation.constraint_tolerance / std::sqrt(double(n_constraint_eqs));
-  auto outputTime = [&](long k) { return std::min(k * dt, t_end); };
+  const std::vector<double> times = outputTimes(sc.simulation);  // the grid the reduced model uses
+  const double t_end = sc.simulation.t_end;
 
   const std::clock_t cpu0 = std::clock();
   record(integ->getState());
@@ -75,7 +95,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   const SimTK::State* last_row = &integ->getState();
   SimTK::Vector y_prev = integ->getState().getY(), ydot_prev = integ->getState().getYDot();
   double t_prev = integ->getTime();
-  long k = 1;
+  std::size_t k = 1;
   bool stop = false;
   while (!stop && t_prev < t_end - 1e-12) {
     try {
@@ -88,24 +108,11 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
     const SimTK::State& advanced = integ->getState();
     system.realize(advanced, SimTK::Stage::Acceleration);  // the next step starts from this ẏ
     const double t_now = advanced.getTime();
-    for (; !stop && outputTime(k) <= t_now + 1e-12 && outputTime(k - 1) < t_end - 1e-12; ++k) {
-      const double t_out = outputTime(k);
+    for (; !stop && k < times.size() && times[k] <= t_now + 1e-12; ++k) {
+      const double t_out = times[k];
       const bool at_step = std::abs(t_out - t_now) <= 1e-12;
-      if (!at_step) {
-        const double h = t_now - t_prev, th = (t_out - t_prev) / h;
-        const double h00 = (1 + 2 * th) * (1 - th) * (1 - th), h10 = th * (1 - th) * (1 - th);
-        const double h01 = th * th * (3 - 2 * th), h11 = th * th * (th - 1);
-        sample.updY() = h00 * y_prev + (h10 * h) * ydot_prev + h01 * advanced.getY() +
-                        (h11 * h) * advanced.getYDot();
-        sample.updTime() = t_out;
-        system.realize(sample, SimTK::Stage::Time);
-        system.prescribeQ(sample);
-        system.realize(sample, SimTK::Stage::Position);
-        system.projectQ(sample, projection_tol);
-        system.prescribeU(sample);
-        system.realize(sample, SimTK::Stage::Velocity);
-        system.projectU(sample, projection_tol);
-      }
+      if (!at_step)
+        sampleWithinStep(system, t_prev, y_prev, ydot_prev, advanced, t_out, constraint_tol, sample);
       const SimTK::State& s = at_step ? advanced : sample;
       record(s);
       last_row = &s;

@@ -13,23 +13,13 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
-#include "reduced/ReducedModel.h"
+#include "analysis/OutputGrid.h"
 #include "analysis/StallDetector.h"
 #include "reduced/EigenSundials.h"
+#include "reduced/ReducedModel.h"
 
 namespace rollerdyn {
 namespace {
-
-// Output time grid: 0, h, 2h, ... up to t_end, plus t_end itself when h does not divide it.
-std::vector<double> outputTimes(const SimulationSettings& s) {
-  if (!(s.output_step > 0.0) || !(s.t_end > 0.0))
-    throw std::invalid_argument("reduced model: simulation.t_end and output_step must be > 0");
-  std::vector<double> t;
-  const long n = static_cast<long>(std::floor(s.t_end / s.output_step + 1e-9));
-  for (long k = 0; k <= n; ++k) t.push_back(k * s.output_step);
-  if (s.t_end - t.back() > 1e-9 * s.output_step) t.push_back(s.t_end);
-  return t;
-}
 
 void setupTables(const ReducedModel& m, RunResult& res) {
   auto& ts = res.timeseries.columns;
