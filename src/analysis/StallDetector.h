@@ -40,7 +40,6 @@ class StallDetector {
   }
 
   double since() const { return since_; }  // start of the current slow spell [s], -1 if none
-  double threshold() const { return threshold_; }
 
   // The status line both models write, e.g. "motor stalled at t = 0.25 s".
   std::string status() const { return statusAt(since_); }

@@ -71,7 +71,8 @@ json makeSummary(const Scene& scene, const RunResult& run) {
                       {"mean", num("omega_crank.mean", m.omega_mean)},
                       {"midrange", num("omega_crank.midrange", m.omega_midrange)}};
   // "turning", "rocking" (crank speed changes sign in the metrics window), "at_rest", "unknown"
-  j["crank_motion"] = crankMotion(m);
+  const std::string crank_motion = crankMotion(m);
+  j["crank_motion"] = crank_motion;
   j["eps_crank_abs_max"] = num("eps_crank_abs_max", m.eps_abs_max);
   j["eps_from_difference"] = m.eps_from_difference;
   j["delta"] = num("delta", m.coefficients.delta);  // seed 004, eq. (12)
@@ -128,7 +129,7 @@ json makeSummary(const Scene& scene, const RunResult& run) {
   j["reactions"] = rx;
 
   std::string status = run.stats.status;
-  if (std::string(crankMotion(m)) == "rocking") {
+  if (crank_motion == "rocking") {
     char buf[160];
     std::snprintf(buf, sizeof buf,
                   "; the crank rocks back and forth instead of turning (its speed ranges from "
