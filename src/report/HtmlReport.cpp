@@ -2,24 +2,17 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/ReadFile.h"
 
 namespace rollerdyn {
 
 namespace {
 
 using nlohmann::json;
-
-std::string readBinary(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read figure '" + path + "'");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
 
 // A JSON value at a dotted path ("omega_crank.mean"), null when absent.
 json at(const json& j, const std::string& path) {
@@ -232,7 +225,7 @@ std::string renderReportHtml(const ReportContent& c) {
     const FigureFile& f = c.figures[i];
     h << "<figure id=\"" << htmlEscape(f.name) << "\">";
     if (!f.png.empty())
-      h << "<img alt=\"" << htmlEscape(f.name) << "\" src=\"data:image/png;base64," << base64Encode(readBinary(f.png))
+      h << "<img alt=\"" << htmlEscape(f.name) << "\" src=\"data:image/png;base64," << base64Encode(readFileContents(f.png, "figure"))
         << "\">";
     h << "<figcaption><b>Figure " << i + 1 << "</b> (<code>" << htmlEscape(f.name) << "</code>). "
       << htmlEscape(f.caption) << "</figcaption></figure>\n";

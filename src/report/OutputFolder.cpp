@@ -3,21 +3,14 @@
 #include <cerrno>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/ReadFile.h"
 
 namespace rollerdyn {
 
 namespace {
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read '" + path + "'");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
 
 std::vector<std::string> splitFields(const std::string& line) {
   std::vector<std::string> out;
@@ -74,7 +67,7 @@ Table parseCsv(const std::string& text, const std::string& file_label) {
   return table;
 }
 
-Table readCsvFile(const std::string& path) { return parseCsv(readText(path), path); }
+Table readCsvFile(const std::string& path) { return parseCsv(readFileContents(path), path); }
 
 OutputFolder readOutputFolder(const std::string& dir) {
   namespace fs = std::filesystem;
@@ -96,7 +89,7 @@ OutputFolder readOutputFolder(const std::string& dir) {
   }
   if (fs::exists(file("summary.json"))) {
     try {
-      out.summary = nlohmann::json::parse(readText(file("summary.json")));
+      out.summary = nlohmann::json::parse(readFileContents(file("summary.json")));
     } catch (const nlohmann::json::parse_error& e) {
       throw std::runtime_error(file("summary.json") + ": expected JSON, got a parse error: " + e.what());
     }
