@@ -9,7 +9,7 @@
 
 namespace rollerdyn::bench_fixture {
 
-// The seed 000 machine with n carts on one side, cranks spread evenly (360°/n apart).
+// The Loveikin, Pochka, Romasevych (2018) machine with n carts on one side, cranks spread evenly (360°/n apart).
 inline Scene sceneWithCarts(int n) {
   Scene s = test_scenes::seed000Scene();
   s.carts.count = n;

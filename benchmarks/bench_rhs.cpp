@@ -1,8 +1,8 @@
 // One right-hand-side evaluation of each model (issue #4): the unit of work every integrator
 // repeats. Multibody: a state realized to Acceleration after its Position (or only Velocity)
 // cache is invalidated, i.e. what an integrator stage costs after changing q and u (or only u).
-// Reduced: ReducedModel::derivatives (seed 000 eq. (58) / seed 004 eq. (1)). Argument: number of
-// carts n (seed 000 machine with the cranks spread evenly, 360°/n apart).
+// Reduced: ReducedModel::derivatives (Loveikin, Pochka, Romasevych (2018) eq. (58) / Loveikin and Pochka (2007) eq. (1)). Argument: number of
+// carts n (Loveikin, Pochka, Romasevych (2018) machine with the cranks spread evenly, 360°/n apart).
 #include <benchmark/benchmark.h>
 
 #include "bench_fixture.h"

@@ -49,9 +49,9 @@ MotionCoefficients motionCoefficients(double omega_min, double omega_max, double
   MotionCoefficients c;
   const double range = omega_max - omega_min;
   const double mean_sq = omega_mean * omega_mean;
-  c.delta = range / omega_mean;                          // seed 004, eq. (12)
-  c.H = eps_abs_max / mean_sq;                           // seed 004, eq. (13)
-  c.k_p = range * range / mean_sq + eps_abs_max / mean_sq;  // seed 004, eq. (14)
+  c.delta = range / omega_mean;                          // Loveikin and Pochka (2007), eq. (12)
+  c.H = eps_abs_max / mean_sq;                           // Loveikin and Pochka (2007), eq. (13)
+  c.k_p = range * range / mean_sq + eps_abs_max / mean_sq;  // Loveikin and Pochka (2007), eq. (14)
   return c;
 }
 
@@ -113,7 +113,7 @@ WindowMetrics computeMetrics(const RunResult& run, const SteadyState& w) {
   }
   m.coefficients = motionCoefficients(m.omega_min, m.omega_max, m.omega_mean, m.eps_abs_max);
 
-  // Coupling swings, seed 000 Table 1.
+  // Coupling swings, Loveikin, Pochka, Romasevych (2018) Table 1.
   auto swingOf = [&](const char* name) {
     if (!have_time || !ts.has(name)) {
       m.missing_columns.push_back(name);

@@ -1,6 +1,6 @@
 // Steady-state metrics of one run, taken over the window found by detectSteadyState():
 // the crank-speed coefficients of seeds 004/003 (eq. (12)-(14)) and the coupling swings of
-// seed 000 Table 1, plus a summary of every reaction column.
+// Loveikin, Pochka, Romasevych (2018) Table 1, plus a summary of every reaction column.
 #pragma once
 
 #include <cstddef>
@@ -14,12 +14,12 @@
 
 namespace rollerdyn {
 
-// Coefficients judging how even the crank rotation is (seed 004).
+// Coefficients judging how even the crank rotation is (Loveikin and Pochka (2007)).
 struct MotionCoefficients {
-  double delta = 0;  // coefficient of unevenness δ = (ω_max - ω_min)/ω_mean        seed 004, eq. (12)
-  double H = 0;      // coefficient of dynamics H = |ε|_max/ω_mean²                  seed 004, eq. (13)
+  double delta = 0;  // coefficient of unevenness δ = (ω_max - ω_min)/ω_mean        Loveikin and Pochka (2007), eq. (12)
+  double H = 0;      // coefficient of dynamics H = |ε|_max/ω_mean²                  Loveikin and Pochka (2007), eq. (13)
   double k_p = 0;    // generalised coefficient k_p = (ω_max - ω_min)²/ω_mean² + |ε|_max/ω_mean²
-                     //                                                              seed 004, eq. (14)
+                     //                                                              Loveikin and Pochka (2007), eq. (14)
 };
 MotionCoefficients motionCoefficients(double omega_min, double omega_max, double omega_mean,
                                       double eps_abs_max);
@@ -29,7 +29,7 @@ MotionCoefficients motionCoefficients(double omega_min, double omega_max, double
 // do not bias it. All fields are NaN when the window is empty or holds a non-finite value.
 struct ColumnStats {
   double min, max, mean, abs_max;
-  double swing() const { return max - min; }  // "deviation" Δ of seed 000 Table 1
+  double swing() const { return max - min; }  // "deviation" Δ of Loveikin, Pochka, Romasevych (2018) Table 1
 };
 // t and y must be the same length; rows [begin, end) are used.
 ColumnStats columnStats(const std::vector<double>& t, const std::vector<double>& y,
@@ -39,12 +39,12 @@ struct WindowMetrics {
   std::size_t rows = 0;          // timeseries rows in the window
   double omega_min = 0, omega_max = 0;  // sampled extremes of omega_crank [rad/s]
   double omega_mean = 0;         // Δφ/Δt over the window (time-weighted, not the sample mean) [rad/s]
-  double omega_midrange = 0;     // (ω_max + ω_min)/2: what seed 004's table prints as ω_mean
+  double omega_midrange = 0;     // (ω_max + ω_min)/2: what Loveikin and Pochka's (2007) table prints as ω_mean
                                  // (e.g. (9.67 + 11.25)/2 = 10.46); kept to compare with it
   double eps_abs_max = 0;        // max |eps_crank| [rad/s²]
   bool eps_from_difference = false;  // eps_crank absent: ε from finite differences of omega_crank
   MotionCoefficients coefficients;
-  // Swings (max - min) over the window, seed 000 Table 1: ΔM_coupling [N·m], Δ(φ1 - φ2) [rad],
+  // Swings (max - min) over the window, Loveikin, Pochka, Romasevych (2018) Table 1: ΔM_coupling [N·m], Δ(φ1 - φ2) [rad],
   // Δ(φ̇1 - φ̇2) [rad/s], Δ(φ̈1 - φ̈2) [rad/s²]. 0 when the column is absent (rigid drive).
   double coupling_torque_swing = 0, twist_swing = 0, twist_rate_swing = 0, twist_accel_swing = 0;
   std::vector<std::string> missing_columns;  // optional columns not in the timeseries

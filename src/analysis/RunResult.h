@@ -11,8 +11,8 @@
 //             Motor angle and speed are reduced to the crank axis (rotor angle / u).
 // reactions:  t, per cart j: N_front_j, N_rear_j, F_rod_j, friction_j, crankpin_x_j, crankpin_y_j,
 //             then bearing_x, bearing_y, coupling_torque.
-//             N_* > 0 when the guide presses the cart's guide rollers downward (seed 000 fig. 3);
-//             F_rod > 0 in tension (pulls the cart towards the shaft, seed 000 eq. (14));
+//             N_* > 0 when the guide presses the cart's guide rollers downward (Loveikin, Pochka, Romasevych (2018) fig. 3);
+//             F_rod > 0 in tension (pulls the cart towards the shaft, Loveikin, Pochka, Romasevych (2018) eq. (14));
 //             friction_j is the guide friction force on cart j along x (N);
 //             crankpin_* is the force the rod exerts on crank pin j, world frame (N);
 //             bearing_* is the force the main bearing exerts on the crankshaft, world frame (N).

@@ -8,7 +8,7 @@
 //    cart speed of order v_s, so "speed <= 0" alone would never fire; 1 % of synchronous speed
 //    is far below any running state and far above that creep;
 //  * a start from rest passes 1 % within a few hundredths of a second with any motor that can
-//    carry its load (seed 000: starting torque ≈ 1 kN·m at the crank on ≈ 150 kg·m²), so no
+//    carry its load (Loveikin, Pochka, Romasevych (2018): starting torque ≈ 1 kN·m at the crank on ≈ 150 kg·m²), so no
 //    grace period is needed and a drive that never starts is reported as stalled at t = 0;
 //  * 1 s is longer than any dead-centre slow-down of a running drive (a crank revolution of the
 //    papers' machines takes ~0.6 s) and short enough to stop a hopeless run early.

@@ -1,5 +1,5 @@
-// Steady-state detection: which part of a run the steady-state metrics (seed 004 eq. (12)-(14),
-// seed 000 Table 1) are taken over. Both papers read their numbers "on the steady-state part of
+// Steady-state detection: which part of a run the steady-state metrics (Loveikin and Pochka (2007) eq. (12)-(14),
+// Loveikin, Pochka, Romasevych (2018) Table 1) are taken over. Both papers read their numbers "on the steady-state part of
 // the motion" without saying how it is found; this is the rule used here.
 //
 // The crank angle is split into whole revolutions: revolution k (0-based) runs from the time
@@ -16,7 +16,7 @@
 // the window, so a slow ramp cannot pass by changing little per revolution.
 //
 // Default tolerance 1e-3 (relative), why:
-//  * the papers print mean crank speeds to 4 significant figures (seed 004: 10.46 rad/s, i.e.
+//  * the papers print mean crank speeds to 4 significant figures (Loveikin and Pochka (2007): 10.46 rad/s, i.e.
 //    ±0.005/10.46 ≈ 5e-4); a drift below 1e-3 is invisible at the precision of the reference
 //    tables the metrics are compared with, and it changes δ (≈ 0.15 … 0.5) by under 1e-3 of
 //    its value;

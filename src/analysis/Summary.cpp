@@ -26,7 +26,7 @@ class FiniteWriter {
 };
 
 // How the crank moves over the metrics window. A drive whose loads exceed what the motor can
-// lift over a dead centre swings back and forth instead of turning (seed 000 at small Δφ): the
+// lift over a dead centre swings back and forth instead of turning (Loveikin, Pochka, Romasevych (2018) at small Δφ): the
 // run completes, but every "per revolution" metric is then meaningless, so it must be said.
 const char* crankMotion(const WindowMetrics& m) {
   if (!std::isfinite(m.omega_min) || !std::isfinite(m.omega_max)) return "unknown";
@@ -75,10 +75,10 @@ json makeSummary(const Scene& scene, const RunResult& run) {
   j["crank_motion"] = crank_motion;
   j["eps_crank_abs_max"] = num("eps_crank_abs_max", m.eps_abs_max);
   j["eps_from_difference"] = m.eps_from_difference;
-  j["delta"] = num("delta", m.coefficients.delta);  // seed 004, eq. (12)
-  j["H"] = num("H", m.coefficients.H);              // seed 004, eq. (13)
-  j["k_p"] = num("k_p", m.coefficients.k_p);        // seed 004, eq. (14)
-  // seed 000, Table 1
+  j["delta"] = num("delta", m.coefficients.delta);  // Loveikin and Pochka (2007), eq. (12)
+  j["H"] = num("H", m.coefficients.H);              // Loveikin and Pochka (2007), eq. (13)
+  j["k_p"] = num("k_p", m.coefficients.k_p);        // Loveikin and Pochka (2007), eq. (14)
+  // Loveikin, Pochka, Romasevych (2018), Table 1
   j["coupling_torque_swing"] = num("coupling_torque_swing", m.coupling_torque_swing);
   j["twist_swing"] = num("twist_swing", m.twist_swing);
   j["twist_rate_swing"] = num("twist_rate_swing", m.twist_rate_swing);

@@ -1,4 +1,4 @@
-// One bounded, measured run of either model for `rollerdyn bench` (issue #4): a solver setting
+// One bounded, measured run of either model for `rollerdyn bench`: a solver setting
 // applied to a scene, a CPU-time budget that turns a slow combination into a "timeout" row
 // instead of a hang, repeated timing (median), and the error of a run against a reference run
 // of the same model.

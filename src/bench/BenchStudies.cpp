@@ -453,7 +453,7 @@ std::string integratorReport(const Scene& scene, const std::vector<BenchRow>& ro
            << num(r->error_coupling, 2) << " |\n";
       }
 
-  os << "\n## Performance targets (issue #4: 1e-6 relative crank-speed error)\n\n"
+  os << "\n## Performance targets (1e-6 relative crank-speed error)\n\n"
      << "| model | cheapest setting at 1e-6 | real-time factor | target | met |\n|---|---|---|---|---|\n";
   for (const char* model : {kMultibody, kReduced}) {
     const double target = std::string(model) == kMultibody ? kTargetRealTimeMultibody : kTargetRealTimeReduced;

@@ -1,4 +1,4 @@
-// The studies of `rollerdyn bench` (issue #4) and the files they publish:
+// The studies of `rollerdyn bench` and the files they publish:
 //
 //   integrators  every Simbody integrator (integratorNames()) and the reduced model's CVODE
 //                (plus Baranov's scheme on rigid-drive scenes) at accuracies 1e-2, 3e-3 ... 1e-10;
@@ -106,7 +106,7 @@ std::vector<std::string> writeEffectsStudy(const std::string& out_dir, const Sce
                                            const std::vector<BenchRow>& rows,
                                            const BenchOptions& options);
 
-// Issue #4 performance targets at 1e-6 relative crank-speed error.
+// Performance targets at 1e-6 relative crank-speed error.
 constexpr double kTargetRealTimeMultibody = 30.0;
 constexpr double kTargetRealTimeReduced = 1000.0;
 constexpr double kTargetPerCartCostRatio = 1.5;  // per-cart cost at 32 carts / at 4 carts

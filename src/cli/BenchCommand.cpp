@@ -1,6 +1,6 @@
 // `rollerdyn bench SCENE [--set k=v]... [--study integrators|carts|effects|all] [--quick]
 //  [--budget S] [--repeat N] [--out DIR]`: accuracy vs CPU time of every integrator of both
-// models, cost vs number of carts, cost of each effect (issue #4; src/bench/BenchStudies.h).
+// models, cost vs number of carts, cost of each effect (src/bench/BenchStudies.h).
 #include <iostream>
 #include <stdexcept>
 

@@ -1,5 +1,5 @@
 // `rollerdyn chain [--J1 ..] [--J2 ..] [--k ..] [--b ..] [--M1 ..] [--alpha ..] [--Mc ..] [--omega ..]
-//  [--t-end ..] [--out DIR]`: seed 002's two rotors on an elastic chain, simulated (Simbody, the
+//  [--t-end ..] [--out DIR]`: Dyomin's two rotors on an elastic chain, simulated (Simbody, the
 // project's ElasticCoupling) beside the paper's closed-form response eq. (26)-(36), as printed
 // and corrected (src/studies/TwoRotorChain.h). Parameters are command-line options, not a scene
 // file: the system has eight numbers and none of the installation's parts.
@@ -50,7 +50,7 @@ int runChain(const ChainArgs& a) {
   writeFileAtomic(a.out_dir + "/chain.json", j.dump(2) + "\n");
   if (gnuplotAvailable()) {
     PlotSpec spec;
-    spec.title = "seed 002: twist of the chain, last three periods";
+    spec.title = "Dyomin (two rotors): twist of the chain, last three periods";
     spec.xlabel = "t [s]";
     spec.ylabel = "psi = phi1 - phi2 [rad]";
     const double t0 = d.t_end - 3 * 2 * M_PI / p.omega;
@@ -69,7 +69,7 @@ int runChain(const ChainArgs& a) {
     }
     renderPlot(spec, a.out_dir + "/chain_twist");
   }
-  std::printf("two rotors on an elastic chain (seed 002): delta1 = %.4g 1/s, p0 = %.4g rad/s, p0/omega = %.4g\n",
+  std::printf("two rotors on an elastic chain (Dyomin (two rotors)): delta1 = %.4g 1/s, p0 = %.4g rad/s, p0/omega = %.4g\n",
               d.delta1, d.p0, d.p0 / p.omega);
   std::printf("harmonic amplitudes [rad]   n=1        n=2        n=3        n=5\n");
   std::printf("  printed (16)-(28)       %.4e %.4e %.4e %.4e\n", c.harmonics.printed[0], c.harmonics.printed[1],
@@ -91,9 +91,9 @@ int runChain(const ChainArgs& a) {
 Subcommand addChainCommand(CLI::App& app) {
   auto a = std::make_shared<ChainArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "chain", "seed 002: two rotors on an elastic chain, simulation vs the closed-form response eq. (26)-(36)");
+      "chain", "Dyomin (two rotors): two rotors on an elastic chain, simulation vs the closed-form response eq. (26)-(36)");
   TwoRotorChainParams& p = a->p;
-  cmd->add_option("--J1", p.J1, "driving rotor inertia [kg·m²] (default 73.6: seed 000's motor side)");
+  cmd->add_option("--J1", p.J1, "driving rotor inertia [kg·m²] (default 73.6: Loveikin, Pochka, Romasevych's (2018) motor side)");
   cmd->add_option("--J2", p.J2, "driven rotor inertia [kg·m²] (default 95)");
   cmd->add_option("--k", p.k, "chain stiffness [N·m/rad] (default 2e5)");
   cmd->add_option("--b", p.b, "chain damping [N·m·s/rad] (default 2000)");

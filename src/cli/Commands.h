@@ -44,7 +44,7 @@ int runPlot(const std::string& dir, const std::string& scene_path, const std::ve
 // `rollerdyn report SCENE` (ReportCommand.cpp): simulate, figures and DIR/report.html.
 int runReport(const SceneArgs& args, const std::string& out_dir);
 
-// Subcommands that register themselves (studies, issue #5): the parsed subcommand, and what to
+// Subcommands that register themselves (studies): the parsed subcommand, and what to
 // run when it was given. Their options live in the closure.
 struct Subcommand {
   CLI::App* cmd;

@@ -39,7 +39,7 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   writeCsvAtomic(out_dir + "/timeseries.csv", run.timeseries);
   writeCsvAtomic(out_dir + "/reactions.csv", run.reactions);
   auto summary = makeSummary(scene, run);
-  for (const std::string& w : addResonanceWarnings(scene, summary))  // seed 002 eq. (10)
+  for (const std::string& w : addResonanceWarnings(scene, summary))  // Dyomin (two rotors) eq. (10)
     std::cerr << "rollerdyn: warning: " << w << '\n';
   writeSummaryAtomic(out_dir + "/summary.json", summary);
   std::cout << summaryText(summary) << "outputs in " << out_dir << "/\n";

@@ -23,7 +23,7 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
   std::string reactions =
       "guide reactions and rod forces: dynamic constraint forces of the slider and rod joints "
       "(multibody) vs quasi-static cart equilibrium without the carts' inertial forces (reduced, "
-      "seed 000 eq. (10)-(25)); they differ by the effect of each cart's d'Alembert force "
+      "Loveikin, Pochka, Romasevych (2018) eq. (10)-(25)); they differ by the effect of each cart's d'Alembert force "
       "-m_B*a (comparison.csv also lists the reduced model's kinetostatic reactions, with that "
       "force added)";
   if (s.carts.geometry.com_height != 0.0)
@@ -35,7 +35,7 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
   if (s.rods.model == RodModel::Distributed)
     d.push_back({"rod_inertia",
                  "rod inertia: distributed rod bodies (multibody) vs distributed reduced-inertia "
-                 "terms m_rod*(x_S'^2 + y_S'^2) + I_S*beta'^2 (reduced, seed 004 eq. (9)); both are "
+                 "terms m_rod*(x_S'^2 + y_S'^2) + I_S*beta'^2 (reduced, Loveikin and Pochka (2007) eq. (9)); both are "
                  "the exact kinetic energy of the rods, so the motion agrees, but the rods' own "
                  "inertial forces reach the carts' guides only in multibody (the reduced statics "
                  "pass half the rod weight to the hinge, CartStatics.h)",
@@ -45,7 +45,7 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
     d.push_back({"guide_friction",
                  fmt("guide friction (f = %.3g): f*(|N_front| + |N_rear|) from the dynamic "
                      "reactions, followed with a lag tau_N = %.3g s (multibody, GuideFriction.h) vs "
-                     "from the quasi-static reactions (reduced, seed 000 eq. (14)-(25)); the friction "
+                     "from the quasi-static reactions (reduced, Loveikin, Pochka, Romasevych (2018) eq. (14)-(25)); the friction "
                      "torque, and with it crank speed and coupling torque, differ by about "
                      "f*(cart inertial force)*tan(beta)*dx_B/dphi",
                      s.loads.guide_friction, s.loads.guide_friction_lag),
@@ -56,7 +56,7 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
     // exact r cos θ + l·√(1 - λ² sin² θ), at sin² θ = 1.
     const double dx = l * std::abs(std::sqrt(1.0 - lam * lam) - (1.0 - 0.5 * lam * lam));
     d.push_back({"kinematics",
-                 fmt("kinematics: truncated series for the cart position (reduced, seed 000 eq. "
+                 fmt("kinematics: truncated series for the cart position (reduced, Loveikin, Pochka, Romasevych (2018) eq. "
                      "(52)-(57)) vs exact loop closure (multibody); with r/l = %.3g the cart "
                      "positions differ by up to %.3g m and the transfer function dx_B/dphi by "
                      "O((r/l)^3)*r, which changes the reduced inertia and the load torque",
@@ -67,7 +67,7 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
   if (s.reduced.integrator == ReducedIntegrator::Baranov)
     d.push_back({"integrator",
                  fmt("integration: the papers' fixed-step Baranov scheme in crank angle, step "
-                     "%.3g deg (reduced, seed 004 eq. (4), (10), (11)), a low-order scheme whose "
+                     "%.3g deg (reduced, Loveikin and Pochka (2007) eq. (4), (10), (11)), a low-order scheme whose "
                      "error does not shrink with simulation.accuracy, vs an adaptive Simbody "
                      "integrator at relative accuracy %.3g (multibody)",
                      s.reduced.baranov_step * 180.0 / M_PI, s.simulation.accuracy),
@@ -86,19 +86,19 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
 std::vector<std::string> identicalPhysics(const Scene& s) {
   std::vector<std::string> same;
   if (s.hasCamDrive())
-    same.push_back("drive: cams with the motion law of seed 001 eq. (29)-(34), x_B = sigma*x(theta), in both "
+    same.push_back("drive: cams with the motion law of Loveikin and Pochka (cam drive) eq. (29)-(34), x_B = sigma*x(theta), in both "
                    "(a coordinate coupler in multibody, the same transfer functions in reduced); no rods");
   if (s.coupling.type == CouplingType::Elastic)
     same.push_back("drive: two masses joined by an elastic, damped coupling c*psi + k*psi' "
-                   "(seed 000 eq. (58)) in both");
+                   "(Loveikin, Pochka, Romasevych (2018) eq. (58)) in both");
   else
     same.push_back("drive: rigid coupling, one rotating body (multibody) and the one-mass model "
-                   "J(phi) (seed 004 eq. (1)) (reduced)");
+                   "J(phi) (Loveikin and Pochka (2007) eq. (1)) (reduced)");
   if (s.hasMotor())
-    same.push_back("motor: the same Kloss law 2*M_kr*s*s_kr/(s^2 + s_kr^2)*u*eta (seed 000 eq. "
+    same.push_back("motor: the same Kloss law 2*M_kr*s*s_kr/(s^2 + s_kr^2)*u*eta (Loveikin, Pochka, Romasevych (2018) eq. "
                    "(37), physics/KlossMotor.h) in both");
   if (s.rods.model == RodModel::Split)
-    same.push_back("rods: half the rod mass on the crank pin, half on the cart (seed 000 eq. "
+    same.push_back("rods: half the rod mass on the crank pin, half on the cart (Loveikin, Pochka, Romasevych (2018) eq. "
                    "(2)-(3)) in both, including the pin half-masses' weight");
   else if (s.rods.model == RodModel::Massless)
     same.push_back("rods: massless in both");
@@ -108,7 +108,7 @@ std::vector<std::string> identicalPhysics(const Scene& s) {
                    ", physics/RollerLoads.h) in both; vertical roller forces do no work");
   if (!s.hasGuideFriction()) same.push_back("guide friction: none in either model");
   if (s.reduced.kinematics == KinematicsForm::Exact && !s.hasCamDrive())
-    same.push_back("kinematics: exact slider-crank (seed 000 eq. (40)-(47)) in the reduced "
+    same.push_back("kinematics: exact slider-crank (Loveikin, Pochka, Romasevych (2018) eq. (40)-(47)) in the reduced "
                    "model, exact loop closure in multibody");
   if (s.hasGravity())
     same.push_back("gravity: cart weight does no work on horizontal guides; rod weight enters "

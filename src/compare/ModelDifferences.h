@@ -7,15 +7,15 @@
 // models does, checked against their sources:
 //   - reactions: the multibody model reads constraint forces (GuideReactions.h, with every
 //     inertial force), the reduced model solves the cart's quasi-static equilibrium
-//     (CartStatics.h, seed 000 eq. (10)-(25), no inertial force);
+//     (CartStatics.h, Loveikin, Pochka, Romasevych (2018) eq. (10)-(25), no inertial force);
 //   - guide friction: multibody from the dynamic reactions, followed with a lag τ_N
-//     (GuideFriction.h), reduced from the quasi-static reactions (seed 000 eq. (14));
+//     (GuideFriction.h), reduced from the quasi-static reactions (Loveikin, Pochka, Romasevych (2018) eq. (14));
 //   - kinematics: multibody closes the loop exactly, the reduced model may use the truncated
-//     series of seed 000 eq. (52)-(57);
+//     series of Loveikin, Pochka, Romasevych (2018) eq. (52)-(57);
 //   - integrator: adaptive Simbody integrator vs CVODE, or the papers' fixed-step Baranov scheme.
 // Rod inertia is NOT a difference in the motion: the reduced model's distributed-rod terms
-// m_rod·(x_S'² + y_S'²) + I_S·β'² (seed 004 eq. (9)) are the exact kinetic energy of a rigid rod,
-// and split rods are lumped identically in both models (seed 000 eq. (2)-(3)); the rod's inertial
+// m_rod·(x_S'² + y_S'²) + I_S·β'² (Loveikin and Pochka (2007) eq. (9)) are the exact kinetic energy of a rigid rod,
+// and split rods are lumped identically in both models (Loveikin, Pochka, Romasevych (2018) eq. (2)-(3)); the rod's inertial
 // forces only change the reactions.
 #pragma once
 

@@ -106,7 +106,7 @@ TwoRotorParameters seed000Drive() {
 }
 
 double naturalFrequency(const TwoRotorParameters& p) {
-  return std::sqrt(p.k * (p.J1 + p.J2) / (p.J1 * p.J2));  // seed 002, eq. (10)
+  return std::sqrt(p.k * (p.J1 + p.J2) / (p.J1 * p.J2));  // Dyomin (two rotors), eq. (10)
 }
 double dampingRate(const TwoRotorParameters& p) { return p.b * (p.J1 + p.J2) / (2.0 * p.J1 * p.J2); }  // eq. (9)
 double dampedFrequency(const TwoRotorParameters& p) {
@@ -120,7 +120,7 @@ double meanTwist(const TwoRotorParameters& p) {
 
 double driveTorque(const TwoRotorParameters& p, double t) {
   const double w = p.omega, a = p.alpha, M1 = p.M1;
-  // seed 002, eq. (8) times J1
+  // Dyomin (two rotors), eq. (8) times J1
   return M1 * (M_PI - 2.0 * a) / M_PI +
          2.0 * M1 / M_PI * (std::sin(w * t) + std::sin(3 * w * t) / 3.0 + std::sin(5 * w * t) / 5.0) +
          M1 / M_PI *

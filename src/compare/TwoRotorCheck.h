@@ -1,6 +1,6 @@
 // Analytic check of the multibody ElasticCoupling element (src/multibody/ElasticCoupling.h)
 // against the closed-form torsional response of two rotors on an elastic, damped link,
-// seed 002 (second paper, Dyomin Yu.M.), eq. (1)-(36):
+// Dyomin (two rotors) (second paper, Dyomin Yu.M.), eq. (1)-(36):
 //
 //   J1·φ̈1 + b(φ̇1 - φ̇2) + k(φ1 - φ2) = M(t)          (1)
 //   J2·φ̈2 - b(φ̇1 - φ̇2) - k(φ1 - φ2) = -M_c          (2)
@@ -22,7 +22,7 @@
 // that sign. Both are reported (closedFormResponse keeps the paper-as-printed amplitudes
 // beside the exact ones); the exact solution is what the simulation is held to.
 //
-// Naming: seed 002's k is the STIFFNESS and b the damping; in the scenes (seed 000) the same
+// Naming: Dyomin's k is the STIFFNESS and b the damping; in the scenes (Loveikin, Pochka, Romasevych (2018)) the same
 // quantities are coupling.stiffness c and coupling.damping k.
 #pragma once
 
@@ -41,12 +41,12 @@ struct TwoRotorParameters {
   double omega = 0;  // fundamental angular frequency ω of M(t) [rad/s]
 };
 
-// The rotors of the validation suite's check (and of its tests). Seed 002 gives no numbers; they
-// are the seed 000 drive (ASSUMED): J1 = the motor side (J_p + J_m + J_red)·u² = 0.766·9.8²
+// The rotors of the validation suite's check (and of its tests). Dyomin (two rotors) gives no numbers; they
+// are the Loveikin, Pochka, Romasevych (2018) drive (ASSUMED): J1 = the motor side (J_p + J_m + J_red)·u² = 0.766·9.8²
 // kg·m², J2 = 100 kg·m² (about the mean crank-side reduced inertia of four carts), k = c = 2e5
 // N·m/rad, b = 2000 N·m·s/rad (Table 1's smaller damping), M1 = 1000 N·m, α = 30°, M_c = the
 // mean drive torque M1(π - 2α)/π so the rotors keep a steady mean speed, ω = 10.68 rad/s (the
-// seed 000 crank speed).
+// Loveikin, Pochka, Romasevych (2018) crank speed).
 TwoRotorParameters seed000Drive();
 
 double naturalFrequency(const TwoRotorParameters& p);   // p0, eq. (10) [rad/s]

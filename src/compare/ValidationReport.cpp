@@ -128,7 +128,7 @@ void addPublishedAndOurs(std::vector<SweepColumn>& cols, const std::string& name
   cols.push_back({name + " ours", [=](const SweepPoint& s) { return g(ok(s.reduced, f)); }});
 }
 
-// A coefficient (δ, H) as the seed 004 and 003 tables show it: published, ours, gap, the Baranov
+// A coefficient (δ, H) as the Loveikin and Pochka (2007) and 003 tables show it: published, ours, gap, the Baranov
 // variant (where `variant`), multibody (blank where it did not run).
 void addCoefficient(std::vector<SweepColumn>& cols, const std::string& name, const std::string& col,
                     double RunMetrics::*f, bool variant) {
@@ -138,7 +138,7 @@ void addCoefficient(std::vector<SweepColumn>& cols, const std::string& name, con
   cols.push_back({name + " mb", [=](const SweepPoint& s) { return s.has_multibody ? g(ok(s.multibody, f)) : ""; }});
 }
 
-// Our numbers of a seed 004 / 003 sweep for results/*.csv (unmasked: the CSV keeps what the
+// Our numbers of a Loveikin and Pochka (2007) / 003 sweep for results/*.csv (unmasked: the CSV keeps what the
 // table leaves out where the crank does not rotate); H_baranov where the table shows it.
 Table coefficientCsv(const std::vector<SweepPoint>& pts, const std::string& x_column, bool H_variant) {
   Table t;
@@ -234,12 +234,12 @@ void ReportWriter::header() {
       << "reproduces it. Machine-readable results: `results.json`; our sweep numbers: `results/*.csv`.\n\n"
       << "Contents: (1) equivalence of the two models where their physics is identical; "
       << "(2) where the physics differ; (3) the papers' tables; (4) the analytic two-rotor check "
-      << "of seed 002.\n";
+      << "of Dyomin (two rotors).\n";
 }
 
 void ReportWriter::equivalence() {
   md_ << "\n## (1) Equivalence: identical physics in both models\n\n"
-      << "Scenes made identical in physics (ModelDifferences.h): split rods (seed 000 eq. (2)-(3)), "
+      << "Scenes made identical in physics (ModelDifferences.h): split rods (Loveikin, Pochka, Romasevych (2018) eq. (2)-(3)), "
       << "no guide friction, exact kinematics, CVODE in the reduced model. Each run covers " << (r_.quick ? "5" : "20")
       << " crank revolutions from the scene's start (t_end from the crank angle of a reduced-model probe run). "
       << "Target: max_rel_diff <= " << g(kEquivalenceTarget) << " for crank speed and coupling torque "
@@ -348,7 +348,7 @@ void ReportWriter::differences() {
     s.title = "D1 (distributed rods): front guide reaction of cart 1";
     s.xlabel = "t [s]";
     s.ylabel = "N_{front,1} [N]";
-    s.series = {series("multibody (dynamic)", x, ys[0]), series("reduced, quasi-static (seed 000 eq. (18))", x, ys[1]),
+    s.series = {series("multibody (dynamic)", x, ys[0]), series("reduced, quasi-static (Loveikin, Pochka, Romasevych (2018) eq. (18))", x, ys[1]),
                 series("reduced, kinetostatic (+ cart d'Alembert force)", x, ys[2])};
     figure("reactions_D1", s, "D1: guide reaction of cart 1 over the last revolution, three ways");
   }
@@ -367,7 +367,7 @@ void ReportWriter::differences() {
 }
 
 void ReportWriter::seed004(const PaperSweep& p) {
-  md_ << "\n### Seed 004: recuperative drive, Δφ sweep\n\n"
+  md_ << "\n### Loveikin and Pochka (2007): recuperative drive, Δφ sweep\n\n"
       << "Scene `model/" << p.scene_file << "` as shipped (its header lists every assumption), "
       << "`--set " << p.x_key << "=...`. \"ours\" = reduced model (CVODE, exact); \"Baranov\" = "
       << p.variant_label << "; \"mb\" = multibody model. Published: `validation/published/" << p.published_file
@@ -380,20 +380,20 @@ void ReportWriter::seed004(const PaperSweep& p) {
   addPublishedAndOurs(cols, "k_p", "k_p", &RunMetrics::k_p);
   sweepTable(md_, cols, p.points);
   out_.tables.push_back({"seed004_sweep.csv", coefficientCsv(p.points, "dphi_deg", /*H_variant=*/true)});
-  coefficientFigure("seed004_delta", plot("seed 004: coefficient of unevenness δ (eq. (12))", p.x_label, "δ [-]"),
-                    "published (seed 004 table)", coefficientCurves(p.points, "delta", &RunMetrics::delta),
-                    /*variant=*/true, "Seed 004: δ against the crank offset, published and ours");
-  coefficientFigure("seed004_H", plot("seed 004: coefficient of dynamics H (eq. (13))", p.x_label, "H [-]"),
-                    "published (seed 004 table)", coefficientCurves(p.points, "H", &RunMetrics::H),
-                    /*variant=*/true, "Seed 004: H against the crank offset, published and ours");
+  coefficientFigure("seed004_delta", plot("Loveikin and Pochka (2007): coefficient of unevenness δ (eq. (12))", p.x_label, "δ [-]"),
+                    "published (Loveikin and Pochka (2007) table)", coefficientCurves(p.points, "delta", &RunMetrics::delta),
+                    /*variant=*/true, "Loveikin and Pochka (2007): δ against the crank offset, published and ours");
+  coefficientFigure("seed004_H", plot("Loveikin and Pochka (2007): coefficient of dynamics H (eq. (13))", p.x_label, "H [-]"),
+                    "published (Loveikin and Pochka (2007) table)", coefficientCurves(p.points, "H", &RunMetrics::H),
+                    /*variant=*/true, "Loveikin and Pochka (2007): H against the crank offset, published and ours");
 }
 
 void ReportWriter::seed003(const PaperSweep& p) {
-  md_ << "\n### Seed 003: energy-balanced drive, flywheel sweep\n\n"
+  md_ << "\n### The energy-balanced drive paper: energy-balanced drive, flywheel sweep\n\n"
       << "Scene `model/" << p.scene_file << "` as shipped, `--set " << p.x_key << "=...` (flywheel on the "
-      << "crankshaft, see the scene header). Columns as for seed 004. Published: `validation/published/"
+      << "crankshaft, see the scene header). Columns as for Loveikin and Pochka (2007). Published: `validation/published/"
       << p.published_file << "`.\n\n";
-  // Speeds to three decimals, as seed 003 prints them (seed 004: two), and the mean speed too.
+  // Speeds to three decimals, as the energy-balanced drive paper prints them (Loveikin and Pochka (2007): two), and the mean speed too.
   std::vector<SweepColumn> cols = {{"I_fw [kg·m²]", [](const SweepPoint& s) { return g(s.x, 6); }},
                                    speedColumn("ω_min", "omega_min", &RunMetrics::omega_min, 3),
                                    speedColumn("ω_max", "omega_max", &RunMetrics::omega_max, 3),
@@ -404,16 +404,16 @@ void ReportWriter::seed003(const PaperSweep& p) {
   sweepTable(md_, cols, p.points);
   out_.tables.push_back({"seed003_sweep.csv", coefficientCsv(p.points, "flywheel_inertia", /*H_variant=*/false)});
   // δ and H fall tenfold over the flywheel sweep: logarithmic y axis.
-  coefficientFigure("seed003_delta", plot("seed 003: coefficient of unevenness δ vs flywheel inertia", p.x_label, "δ [-]", true),
-                    "published (seed 003 Table 1)", coefficientCurves(p.points, "delta", &RunMetrics::delta),
-                    /*variant=*/true, "Seed 003: δ against the flywheel inertia, published and ours");
-  coefficientFigure("seed003_H", plot("seed 003: coefficient of dynamics H vs flywheel inertia", p.x_label, "H [-]", true),
-                    "published (seed 003 Table 1)", coefficientCurves(p.points, "H", &RunMetrics::H),
-                    /*variant=*/false, "Seed 003: H against the flywheel inertia, published and ours");
+  coefficientFigure("seed003_delta", plot("the energy-balanced drive paper: coefficient of unevenness δ vs flywheel inertia", p.x_label, "δ [-]", true),
+                    "published (the energy-balanced drive paper Table 1)", coefficientCurves(p.points, "delta", &RunMetrics::delta),
+                    /*variant=*/true, "The energy-balanced drive paper: δ against the flywheel inertia, published and ours");
+  coefficientFigure("seed003_H", plot("the energy-balanced drive paper: coefficient of dynamics H vs flywheel inertia", p.x_label, "H [-]", true),
+                    "published (the energy-balanced drive paper Table 1)", coefficientCurves(p.points, "H", &RunMetrics::H),
+                    /*variant=*/false, "The energy-balanced drive paper: H against the flywheel inertia, published and ours");
 }
 
 void ReportWriter::seed000(const PaperSweep& p) {
-  md_ << "\n### Seed 000: four carts, elastic coupling, Table 1\n\n"
+  md_ << "\n### Loveikin, Pochka, Romasevych (2018): four carts, elastic coupling, Table 1\n\n"
       << "Scene `model/" << p.scene_file << "` as shipped (start from rest, roller forces as printed, "
       << "distributed rods, f = 0.008), `--set crank.offset_deg=... --set coupling.damping=k`. "
       << "\"variant\" = " << p.variant_label << ". Swings (max - min) over the steady window. "
@@ -454,7 +454,7 @@ void ReportWriter::seed000(const PaperSweep& p) {
   }
   out_.tables.push_back({"seed000_sweep.csv", t});
   PlotSpec s;
-  s.title = "seed 000 Table 1: coupling torque swing";
+  s.title = "Loveikin, Pochka, Romasevych (2018) Table 1: coupling torque swing";
   s.xlabel = p.x_label;
   s.ylabel = "coupling torque swing [N m]";
   s.logy = true;
@@ -463,7 +463,7 @@ void ReportWriter::seed000(const PaperSweep& p) {
     s.series.push_back(series("reduced, k = " + g(k, 6), xs, mr[k], "linespoints"));
   }
   s.series.push_back(series("multibody, k = 8000", xm, mm, "points pt 7 ps 1.5"));
-  figure("seed000_torque_swing", s, "Seed 000: coupling torque swing against the crank offset (missing points: the crank does not rotate)");
+  figure("seed000_torque_swing", s, "Loveikin, Pochka, Romasevych (2018): coupling torque swing against the crank offset (missing points: the crank does not rotate)");
 }
 
 void ReportWriter::sensitivity() {
@@ -480,10 +480,10 @@ void ReportWriter::analytic() {
   const AnalyticResults& a = r_.analytic;
   if (a.closed_forced.empty()) return;
   const double p0 = naturalFrequency(a.forced);
-  md_ << "\n## (4) Analytic: two rotors on an elastic link (seed 002) against the ElasticCoupling element\n\n"
+  md_ << "\n## (4) Analytic: two rotors on an elastic link (Dyomin (two rotors)) against the ElasticCoupling element\n\n"
       << "A Simbody system of two Pin rotors joined by `ElasticCoupling` (src/multibody/ElasticCoupling.h), "
       << "driven by the paper's torque series eq. (8) on rotor 1 and a constant resisting torque on rotor 2 "
-      << "(src/compare/TwoRotorCheck.h). Seed 002 prints no numbers; the rotors are the seed 000 drive "
+      << "(src/compare/TwoRotorCheck.h). Dyomin (two rotors) prints no numbers; the rotors are the Loveikin, Pochka, Romasevych (2018) drive "
       << "(ASSUMED): J1 = " << g(a.forced.J1, 4) << " kg·m², J2 = " << g(a.forced.J2, 4) << " kg·m², k = "
       << g(a.forced.k) << " N·m/rad, b = " << g(a.forced.b) << " N·m·s/rad, M1 = " << g(a.forced.M1)
       << " N·m, α = 30°, M_c = " << g(a.forced.Mc, 4) << " N·m. Integrator RungeKuttaMerson at accuracy "
@@ -520,7 +520,7 @@ void ReportWriter::analytic() {
     }
     md_ << "\n";
   };
-  harmonics("Forced, crank speed of seed 000", a.forced, a.closed_forced, a.measured_forced);
+  harmonics("Forced, crank speed of Loveikin, Pochka, Romasevych (2018)", a.forced, a.closed_forced, a.measured_forced);
   harmonics("Forced, third harmonic at resonance (3ω = p0)", a.resonant, a.closed_resonant, a.measured_resonant);
   md_ << "The simulated harmonics (sin and cos parts) match the exact steady solution of eq. (7) with the "
       << "forcing of eq. (8). The paper's printed amplitudes agree for the first harmonic up to its phase "
@@ -546,11 +546,11 @@ void ReportWriter::analytic() {
         yc.push_back(y);
       }
     PlotSpec s;
-    s.title = "seed 002: steady twist of two rotors on the ElasticCoupling element";
+    s.title = "Dyomin (two rotors): steady twist of two rotors on the ElasticCoupling element";
     s.xlabel = "t [s]";
     s.ylabel = "twist ψ = φ_1 - φ_2 [rad]";
     s.series = {series("closed form (eq. (7), (8), exact)", tc, yc), series("Simbody simulation", ts, ys, "points pt 6")};
-    figure("seed002_forced", s, "Seed 002: simulated twist against the closed-form steady response");
+    figure("seed002_forced", s, "Dyomin (two rotors): simulated twist against the closed-form steady response");
   }
   {
     const auto& m = a.measured_damped;
@@ -566,12 +566,12 @@ void ReportWriter::analytic() {
       envn.push_back(-m.initial_twist * std::exp(-dl * t));
     }
     PlotSpec s;
-    s.title = "seed 002: free oscillation, b = " + g(a.free_damped.b) + " N m s/rad";
+    s.title = "Dyomin (two rotors): free oscillation, b = " + g(a.free_damped.b) + " N m s/rad";
     s.xlabel = "t [s]";
     s.ylabel = "twist [rad]";
     s.series = {series("Simbody simulation", ts, ys), series("±ψ_0 exp(-δ_1 t), eq. (9)", ts, env),
                 series("", ts, envn)};
-    figure("seed002_free", s, "Seed 002: free oscillation and the decay envelope of eq. (9)");
+    figure("seed002_free", s, "Dyomin (two rotors): free oscillation and the decay envelope of eq. (9)");
   }
 }
 

@@ -166,7 +166,7 @@ void Suite::equivalence(ValidationResults& r) {
   {
     ModelComparison c;
     ComparisonCase cc =
-        compareCase("E0", "the issue's command: 4 carts, one side, dphi = 90 deg, elastic (seed 000 scene), accuracy 1e-9",
+        compareCase("E0", "the issue's command: 4 carts, one side, dphi = 90 deg, elastic (Loveikin, Pochka, Romasevych (2018) scene), accuracy 1e-9",
                     "balanced-4cart.yaml",
                     {"rods.model=split", "loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, revs, &c);
     r.equivalence_example = c.table;
@@ -178,11 +178,11 @@ void Suite::equivalence(ValidationResults& r) {
   // of accuracy); 1e-11 leaves a margin of about ten.
   struct Spec { const char* description; const char* file; std::vector<std::string> sets; bool quick; };
   const std::vector<Spec> specs = {
-      {"4 carts, one side, dphi = 90 deg, elastic coupling (seed 000 scene)", "balanced-4cart.yaml", {}, false},
+      {"4 carts, one side, dphi = 90 deg, elastic coupling (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml", {}, false},
       {"4 carts, one side, dphi = 90 deg, rigid drive", "balanced-4cart.yaml", {"coupling.type=rigid"}, false},
       {"1 cart, elastic coupling", "balanced-4cart.yaml", {"carts.count=1"}, false},
-      {"2 carts on opposite sides, dphi = 90 deg, rigid drive (seed 004 scene)", "recuperative-2cart.yaml", {}, true},
-      {"3 carts, one side, dphi = 120 deg, rigid drive (seed 003 scene)", "energy-balanced-3cart.yaml", {}, false},
+      {"2 carts on opposite sides, dphi = 90 deg, rigid drive (Loveikin and Pochka (2007) scene)", "recuperative-2cart.yaml", {}, true},
+      {"3 carts, one side, dphi = 120 deg, rigid drive (the energy-balanced drive paper scene)", "energy-balanced-3cart.yaml", {}, false},
       {"2 carts on opposite sides, elastic coupling c = 2e5, k = 8000", "recuperative-2cart.yaml",
        {"coupling.type=elastic", "coupling.stiffness=200000", "coupling.damping=8000"}, false},
       {"4 carts on alternate sides, dphi = 90 deg, elastic coupling", "balanced-4cart.yaml", {"carts.sides=alternate"}, false},
@@ -267,7 +267,7 @@ void Suite::differences(ValidationResults& r) {
   // D1: distributed rods, no friction.
   {
     ModelComparison c;
-    ComparisonCase cc = compareCase("D1", "distributed rods, no guide friction (seed 000 scene)", "balanced-4cart.yaml",
+    ComparisonCase cc = compareCase("D1", "distributed rods, no guide friction (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml",
                                     {"loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, revs, &c);
     if (cc.complete) {
       const Scene sc = load("balanced-4cart.yaml", {});
@@ -290,7 +290,7 @@ void Suite::differences(ValidationResults& r) {
     cc.label = "D2";
     cc.description = "split rods, no friction: dynamic vs quasi-static reactions (the run of E0)";
     cc.explanation =
-        "The only difference is in the reactions: quasi-static cart statics (seed 000 eq. (10)-(25)) differ "
+        "The only difference is in the reactions: quasi-static cart statics (Loveikin, Pochka, Romasevych (2018) eq. (10)-(25)) differ "
         "from the dynamic constraint forces by " + g(cc.max_rel_reactions_quasistatic) +
         " of their peak; adding each cart's d'Alembert force -m_B*a (kinetostatics) brings them to " +
         g(cc.max_rel_reactions_kinetostatic) +
@@ -302,7 +302,7 @@ void Suite::differences(ValidationResults& r) {
   // D3: guide friction from dynamic reactions.
   {
     ModelComparison c;
-    ComparisonCase cc = compareCase("D3", "guide friction f = 0.008, split rods (seed 000 scene)", "balanced-4cart.yaml",
+    ComparisonCase cc = compareCase("D3", "guide friction f = 0.008, split rods (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml",
                                     {"rods.model=split", "simulation.accuracy=1e-9"}, revs, &c);
     if (cc.complete) {
       frictionMeasurements(load("balanced-4cart.yaml", {}), c, cc);
@@ -314,7 +314,7 @@ void Suite::differences(ValidationResults& r) {
   // D4: truncated kinematics.
   {
     ModelComparison c;
-    ComparisonCase cc = compareCase("D4", "truncated series kinematics in reduced (seed 000 eq. (52)-(57)), split rods, no friction",
+    ComparisonCase cc = compareCase("D4", "truncated series kinematics in reduced (Loveikin, Pochka, Romasevych (2018) eq. (52)-(57)), split rods, no friction",
                                     "balanced-4cart.yaml",
                                     {"rods.model=split", "loads.guide_friction.coefficient=0",
                                      "reduced.kinematics=truncated", "simulation.accuracy=1e-9"},
@@ -365,7 +365,7 @@ void Suite::differences(ValidationResults& r) {
       cc.measured.push_back({"max_rel omega, step 0.25 deg", g(e2)});
       cc.measured.push_back({"error ratio 1 deg / 0.25 deg", g(e1 / e2)});
       cc.explanation =
-          "Same physics, different integration: the scheme of seed 004 eq. (4), (10), (11) with a fixed 1 deg "
+          "Same physics, different integration: the scheme of Loveikin and Pochka (2007) eq. (4), (10), (11) with a fixed 1 deg "
           "step errs by " + g(e1) + " in crank speed; at 0.25 deg by " + g(e2) + " (ratio " + g(e1 / e2) +
           "; 4 would be first order, 16 second order). The papers' tables carry an error of this kind.";
     }
@@ -373,9 +373,9 @@ void Suite::differences(ValidationResults& r) {
   }
   // D6-D8: the shipped scenes as they are.
   struct Spec { const char* label; const char* file; const char* description; };
-  const Spec shipped[] = {{"D6", "balanced-4cart.yaml", "seed 000 scene as shipped (distributed rods, friction 0.008)"},
-                          {"D7", "recuperative-2cart.yaml", "seed 004 scene as shipped (distributed rods, no friction)"},
-                          {"D8", "energy-balanced-3cart.yaml", "seed 003 scene as shipped (distributed rods, no friction)"}};
+  const Spec shipped[] = {{"D6", "balanced-4cart.yaml", "Loveikin, Pochka, Romasevych (2018) scene as shipped (distributed rods, friction 0.008)"},
+                          {"D7", "recuperative-2cart.yaml", "Loveikin and Pochka (2007) scene as shipped (distributed rods, no friction)"},
+                          {"D8", "energy-balanced-3cart.yaml", "the energy-balanced drive paper scene as shipped (distributed rods, no friction)"}};
   for (const Spec& s : shipped) {
     if (interrupted()) return;
     if (o_.quick && std::string(s.label) != "D6") continue;
@@ -476,7 +476,7 @@ std::vector<std::string> causes004(const PaperSweep& p) {
               " deg, and both are largest at the ends of the sweep, where our delta is off by " + ends +
               ". The paper's conclusion (optimum at pi/2) is reproduced; the values near the optimum are not (gap "
               "column).");
-  c.push_back("Integration scheme: the papers' Baranov scheme (seed 004 eq. (4), (10), (11)) at 1 deg moves our delta "
+  c.push_back("Integration scheme: the papers' Baranov scheme (Loveikin and Pochka (2007) eq. (4), (10), (11)) at 1 deg moves our delta "
               "by at most " + pctText(maxRelative(p.points, &RunMetrics::delta, false)) +
               " against CVODE (column Baranov; 5 deg in the sensitivity table), far less than the gap: the scheme "
               "is not the cause, unless the paper's unstated step was much coarser.");
@@ -567,7 +567,7 @@ std::vector<std::string> causes000(const PaperSweep& p, const Scene& sc) {
     if (!s.reduced.complete) stalled += (stalled.empty() ? "" : ", ") + g(s.x);
   }
   auto rounded = [](double v) { return std::abs(v) < 1e-6 ? std::string("0") : g(v, 3); };
-  c.push_back("Load reading: with the roller forces as printed (constant direction, seed 000 fig. 3) the first "
+  c.push_back("Load reading: with the roller forces as printed (constant direction, Loveikin, Pochka, Romasevych (2018) fig. 3) the first "
               "harmonic of the load torque swings 2*(F1 + F2)*r*|sum_j exp(i*j*dphi)| = " + rounded(swing1(0)) +
               " N m at dphi = 0, " + rounded(swing1(30)) + " at 30, " + rounded(swing1(60)) + " at 60 and " +
               rounded(swing1(90)) + " at 90 deg; the published coupling torque swings (7967, 2229, 1273, 149 N m for k = 2000) are far "
@@ -641,11 +641,11 @@ bool Suite::sweepPaper(PaperSweep& p, const std::vector<double>& xs, const std::
 }
 
 void Suite::papers(ValidationResults& r) {
-  // Seed 004: Δφ sweep.
+  // Loveikin and Pochka (2007): Δφ sweep.
   {
     PaperSweep p;
     p.id = "seed004";
-    p.title = "seed 004: two carts on opposite sides, rigid drive, delta/H/k_p vs crank offset";
+    p.title = "Loveikin and Pochka (2007): two carts on opposite sides, rigid drive, delta/H/k_p vs crank offset";
     p.scene_file = "recuperative-2cart.yaml";
     p.x_key = "crank.offset_deg";
     p.x_label = "crank offset dphi [deg]";
@@ -657,16 +657,16 @@ void Suite::papers(ValidationResults& r) {
       xs.push_back(90);
       std::sort(xs.begin(), xs.end());
     }
-    if (!sweepPaper(p, xs, mb, "dphi_deg", [](double x) { return "seed 004: multibody at dphi = " + g(x) + " deg"; }))
+    if (!sweepPaper(p, xs, mb, "dphi_deg", [](double x) { return "Loveikin and Pochka (2007): multibody at dphi = " + g(x) + " deg"; }))
       return;
     p.causes = causes004(p);
     r.papers.push_back(p);
   }
-  // Seed 003: flywheel sweep.
+  // The energy-balanced drive paper: flywheel sweep.
   {
     PaperSweep p;
     p.id = "seed003";
-    p.title = "seed 003: three carts at 120 deg, rigid drive, delta/H/k_p vs flywheel inertia";
+    p.title = "the energy-balanced drive paper: three carts at 120 deg, rigid drive, delta/H/k_p vs flywheel inertia";
     p.scene_file = "energy-balanced-3cart.yaml";
     p.x_key = "flywheel.inertia";
     p.x_label = "flywheel inertia [kg m^2]";
@@ -674,16 +674,16 @@ void Suite::papers(ValidationResults& r) {
     p.published_file = "seed003_table1.csv";
     const std::vector<double> mb = o_.quick ? std::vector<double>{0} : std::vector<double>{0, 250, 500, 1000};
     if (!sweepPaper(p, range(0, 1000, o_.quick ? 250 : 50), mb, "flywheel_inertia",
-                    [](double x) { return "seed 003: multibody at flywheel inertia " + g(x) + " kg m^2"; }))
+                    [](double x) { return "the energy-balanced drive paper: multibody at flywheel inertia " + g(x) + " kg m^2"; }))
       return;
     p.causes = causes003(p);
     r.papers.push_back(p);
   }
-  // Seed 000: Table 1, Δφ × k.
+  // Loveikin, Pochka, Romasevych (2018): Table 1, Δφ × k.
   {
     PaperSweep p;
     p.id = "seed000";
-    p.title = "seed 000: four carts, elastic coupling, coupling swings vs crank offset (Table 1)";
+    p.title = "Loveikin, Pochka, Romasevych (2018): four carts, elastic coupling, coupling swings vs crank offset (Table 1)";
     p.scene_file = "balanced-4cart.yaml";
     p.x_key = "crank.offset_deg";
     p.x_label = "crank offset dphi [deg]";
@@ -698,7 +698,7 @@ void Suite::papers(ValidationResults& r) {
         if (interrupted()) return;
         SweepPoint sp = paperPoint(p, {p.x_key + "=" + exact(x), "coupling.damping=" + exact(k)},
                                    {"rods.model=split", "reduced.kinematics=truncated"},
-                                   contains(mb, x) ? "seed 000: multibody at dphi = " + g(x) + " deg, k = " + g(k) : "");
+                                   contains(mb, x) ? "Loveikin, Pochka, Romasevych (2018): multibody at dphi = " + g(x) + " deg, k = " + g(k) : "");
         sp.x = x;
         sp.k = k;
         sp.has_published = findPublished(pub, {{"dphi_deg", x}, {"k", k}}, sp.published);
@@ -722,41 +722,41 @@ void Suite::sensitivity(ValidationResults& r) {
     r.sensitivity.push_back({paper, point, change_label, metric, b.*field, c.*field, published});
   };
   const std::vector<std::string> p004 = {"crank.offset_deg=90"};
-  row("seed 004", "dphi = 90 deg", "recuperative-2cart.yaml", p004, "reducer.inertia = 0.046 (the printed sum I_o = 0.504)",
+  row("Loveikin and Pochka (2007)", "dphi = 90 deg", "recuperative-2cart.yaml", p004, "reducer.inertia = 0.046 (the printed sum I_o = 0.504)",
       {"reducer.inertia=0.046"}, "delta", 0.151, &RunMetrics::delta);
-  row("seed 004", "dphi = 90 deg", "recuperative-2cart.yaml", p004, "Baranov scheme, 5 deg step",
+  row("Loveikin and Pochka (2007)", "dphi = 90 deg", "recuperative-2cart.yaml", p004, "Baranov scheme, 5 deg step",
       {"reduced.integrator=baranov", "reduced.baranov_step_deg=5"}, "delta", 0.151, &RunMetrics::delta);
-  row("seed 004", "dphi = 90 deg", "recuperative-2cart.yaml", p004, "rods split (seed 000 eq. (2)-(3)) instead of distributed",
+  row("Loveikin and Pochka (2007)", "dphi = 90 deg", "recuperative-2cart.yaml", p004, "rods split (Loveikin, Pochka, Romasevych (2018) eq. (2)-(3)) instead of distributed",
       {"rods.model=split"}, "delta", 0.151, &RunMetrics::delta);
-  row("seed 004", "dphi = 90 deg", "recuperative-2cart.yaml", p004, "no rod gravity (loads.gravity = 0)",
+  row("Loveikin and Pochka (2007)", "dphi = 90 deg", "recuperative-2cart.yaml", p004, "no rod gravity (loads.gravity = 0)",
       {"loads.gravity=0"}, "delta", 0.151, &RunMetrics::delta);
   const std::vector<std::string> p003 = {"flywheel.inertia=0"};
-  row("seed 003", "no flywheel", "energy-balanced-3cart.yaml", p003, "reducer.inertia = 0.046",
+  row("the energy-balanced drive paper", "no flywheel", "energy-balanced-3cart.yaml", p003, "reducer.inertia = 0.046",
       {"reducer.inertia=0.046"}, "delta", 0.11, &RunMetrics::delta);
-  row("seed 003", "no flywheel", "energy-balanced-3cart.yaml", p003, "Baranov scheme, 5 deg step",
+  row("the energy-balanced drive paper", "no flywheel", "energy-balanced-3cart.yaml", p003, "Baranov scheme, 5 deg step",
       {"reduced.integrator=baranov", "reduced.baranov_step_deg=5"}, "delta", 0.11, &RunMetrics::delta);
-  row("seed 003", "no flywheel", "energy-balanced-3cart.yaml", p003, "no rod gravity (loads.gravity = 0)",
+  row("the energy-balanced drive paper", "no flywheel", "energy-balanced-3cart.yaml", p003, "no rod gravity (loads.gravity = 0)",
       {"loads.gravity=0"}, "delta", 0.11, &RunMetrics::delta);
   const std::vector<std::string> p000 = {"crank.offset_deg=90", "coupling.damping=8000"};
-  row("seed 000", "dphi = 90 deg, k = 8000", "balanced-4cart.yaml", p000, "no guide friction",
+  row("Loveikin, Pochka, Romasevych (2018)", "dphi = 90 deg, k = 8000", "balanced-4cart.yaml", p000, "no guide friction",
       {"loads.guide_friction.coefficient=0"}, "coupling torque swing [N m]", 130.93, &RunMetrics::torque_swing);
-  row("seed 000", "dphi = 90 deg, k = 8000", "balanced-4cart.yaml", p000, "reducer.efficiency = 1 (eta not given)",
+  row("Loveikin, Pochka, Romasevych (2018)", "dphi = 90 deg, k = 8000", "balanced-4cart.yaml", p000, "reducer.efficiency = 1 (eta not given)",
       {"reducer.efficiency=1"}, "coupling torque swing [N m]", 130.93, &RunMetrics::torque_swing);
-  row("seed 000", "dphi = 90 deg, k = 8000", "balanced-4cart.yaml", p000, "crank inertia J'_K = 5 kg m^2 per crank (not given)",
+  row("Loveikin, Pochka, Romasevych (2018)", "dphi = 90 deg, k = 8000", "balanced-4cart.yaml", p000, "crank inertia J'_K = 5 kg m^2 per crank (not given)",
       {"crank.inertia_per_crank=5"}, "coupling torque swing [N m]", 130.93, &RunMetrics::torque_swing);
-  row("seed 000", "dphi = 90 deg, k = 8000", "balanced-4cart.yaml", p000, "no gravity (rod weight)",
+  row("Loveikin, Pochka, Romasevych (2018)", "dphi = 90 deg, k = 8000", "balanced-4cart.yaml", p000, "no gravity (rod weight)",
       {"loads.gravity=0"}, "coupling torque swing [N m]", 130.93, &RunMetrics::torque_swing);
-  row("seed 000", "dphi = 90 deg, k = 8000", "balanced-4cart.yaml", p000,
+  row("Loveikin, Pochka, Romasevych (2018)", "dphi = 90 deg, k = 8000", "balanced-4cart.yaml", p000,
       "roller forces opposing the velocity (the other reading, from the nominal speed)",
       {"loads.roller_force_direction=opposes_velocity", "initial.crank_speed=10.42"}, "mean crank speed [rad/s]", kNaN,
       &RunMetrics::omega_mean);
-  row("seed 000", "dphi = 0 deg, k = 8000", "balanced-4cart.yaml", {"crank.offset_deg=0", "coupling.damping=8000"},
+  row("Loveikin, Pochka, Romasevych (2018)", "dphi = 0 deg, k = 8000", "balanced-4cart.yaml", {"crank.offset_deg=0", "coupling.damping=8000"},
       "start at the nominal crank speed 10.42 rad/s instead of rest", {"initial.crank_speed=10.42"},
       "mean crank speed [rad/s]", kNaN, &RunMetrics::omega_mean);
 }
 
 void Suite::analytic(ValidationResults& r) {
-  // Seed 002 gives no numbers: the seed 000 drive as two rotors (ASSUMED, TwoRotorCheck.h).
+  // Dyomin (two rotors) gives no numbers: the Loveikin, Pochka, Romasevych (2018) drive as two rotors (ASSUMED, TwoRotorCheck.h).
   AnalyticResults& a = r.analytic;
   const TwoRotorParameters p = seed000Drive();
   a.accuracy = 1e-10;
@@ -768,7 +768,7 @@ void Suite::analytic(ValidationResults& r) {
   a.mean_twist_expected = meanTwist(p);
   // Transients decay as e^{-δ1·t}; δ1 = 23.6 1/s here, so 2 s leaves e^{-47}.
   const double settle = 2.0;
-  log("seed 002: two rotors on the ElasticCoupling element");
+  log("Dyomin (two rotors): two rotors on the ElasticCoupling element");
   a.measured_forced = measureForcedResponse(a.forced, settle, 4, 256, a.accuracy);
   a.measured_resonant = measureForcedResponse(a.resonant, settle, 8, 256, a.accuracy);
   a.free_undamped = p;
@@ -795,7 +795,7 @@ ValidationResults Suite::run() {
     sensitivity(r);
   }
   if (!interrupted()) {
-    log("(4) analytic, seed 002");
+    log("(4) analytic, Dyomin (two rotors)");
     analytic(r);
   }
   r.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;

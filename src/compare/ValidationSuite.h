@@ -8,9 +8,9 @@
 //   (2) where the physics differ (distributed rods, friction from dynamic reactions, truncated
 //       kinematics, quasi-static reactions, the papers' Baranov scheme): the differences
 //       measured, each with the measurement that explains it;
-//   (3) the papers' tables (validation/published/*.csv) beside our numbers: seed 004 Δφ sweep,
-//       seed 003 flywheel sweep, seed 000 Table 1; inputs are the shipped scenes, never tuned;
-//   (4) seed 002's closed-form two-rotor response against the multibody ElasticCoupling.
+//   (3) the papers' tables (validation/published/*.csv) beside our numbers: Loveikin and Pochka (2007) Δφ sweep,
+//       the energy-balanced drive paper flywheel sweep, Loveikin, Pochka, Romasevych (2018) Table 1; inputs are the shipped scenes, never tuned;
+//   (4) Dyomin's closed-form two-rotor response against the multibody ElasticCoupling.
 // runValidation() computes; buildValidationReport() turns the results into report.md text,
 // figure specifications (drawn by the caller through src/report/Gnuplot.h) and results.json.
 #pragma once
@@ -33,7 +33,7 @@
 namespace rollerdyn::validation {
 
 // Equivalent physics must agree to this max_rel_diff in crank speed and coupling torque (the
-// issue's target, not loosened). With both integrators at relative accuracy 1e-9 the seed 000
+// issue's target, not loosened). With both integrators at relative accuracy 1e-9 the Loveikin, Pochka, Romasevych (2018)
 // scene agrees to 3e-8 (speed) and 2e-7 (torque): the coupling torque c·ψ + k·ψ̇ is a small
 // difference of large quantities and keeps fewer digits. Scenes with loads opposing the
 // velocity (tanh(v/v_s), v_s = 1 mm/s: the load flips within ~0.1 ms at every cart reversal)
@@ -85,7 +85,7 @@ struct ComparisonCase {
 
 struct SweepPoint {
   double x = 0;                 // Δφ [deg] or flywheel inertia [kg·m²]
-  double k = 0;                 // seed 000: coupling damping [N·m·s/rad]; 0 otherwise
+  double k = 0;                 // Loveikin, Pochka, Romasevych (2018): coupling damping [N·m·s/rad]; 0 otherwise
   RunMetrics reduced;           // the scene as shipped, reduced model (CVODE)
   RunMetrics variant;           // the paper's own modelling choices (see PaperSweep)
   RunMetrics multibody;
@@ -110,7 +110,7 @@ struct SensitivityRow {
 };
 
 struct AnalyticResults {
-  TwoRotorParameters forced;                      // ω = the seed 000 crank speed
+  TwoRotorParameters forced;                      // ω = the Loveikin, Pochka, Romasevych (2018) crank speed
   TwoRotorParameters resonant;                    // ω = p0/3: third harmonic at resonance
   std::vector<HarmonicResponse> closed_forced, closed_resonant;
   ForcedResponseMeasurement measured_forced, measured_resonant;

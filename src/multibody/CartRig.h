@@ -1,5 +1,5 @@
 // The bodies and points of one crank-slider in the built Simbody system, and where on the cart
-// the loads act (seed 000 fig. 3, eq. (10)). The cart frame keeps the ground orientation (the
+// the loads act (Loveikin, Pochka, Romasevych (2018) fig. 3, eq. (10)). The cart frame keeps the ground orientation (the
 // cart only slides), its origin is the rod hinge B, so a station on the cart is also the
 // world-frame offset from B. σ = side mirrors every x offset for a cart on the -x side.
 #pragma once
@@ -13,7 +13,7 @@ struct CartRig {
   int side = 1;                  // σ: +1 cart on the +x side of the shaft, -1 on the -x side
   SimTK::MobilizedBody cart;     // slider along ground x, origin at hinge B
   SimTK::MobilizedBody rod;      // rod body (distributed model only; otherwise invalid handle)
-  SimTK::Constraint cam;         // cam drive (seed 001): coupler x_B = σ·x(θ); else empty handle
+  SimTK::Constraint cam;         // cam drive (Loveikin and Pochka (cam drive)): coupler x_B = σ·x(θ); else empty handle
   SimTK::Vec3 p_CrankPin;        // crank pin A in the crankshaft frame [m]
   double rod_mass = 0;           // mass of the rod body (0 unless distributed) [kg]
   double rod_length = 0;         // l [m]

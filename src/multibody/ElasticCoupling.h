@@ -1,5 +1,5 @@
 // Elastic, damped coupling between the motor-side body and the crankshaft, reduced to the crank
-// axis (seed 000 eq. (34), (58)): torque_coupling = c·(φ1 - φ2) + k·(φ̇1 - φ̇2), acting + on the
+// axis (Loveikin, Pochka, Romasevych (2018) eq. (34), (58)): torque_coupling = c·(φ1 - φ2) + k·(φ̇1 - φ̇2), acting + on the
 // crankshaft and - on the motor side. Only built for coupling.type = elastic; a rigid coupling is
 // one body, never a stiff spring.
 // The motor side is mobilized RELATIVE to the crankshaft, so its coordinate is the twist itself:

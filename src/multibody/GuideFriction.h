@@ -1,5 +1,5 @@
 // Friction of the guide rollers, f·(|N_front| + |N_rear|) per cart, from the ACTUAL guide
-// reactions of the multibody model (not the quasi-static formula of seed 000 eq. (14)-(25)).
+// reactions of the multibody model (not the quasi-static formula of Loveikin, Pochka, Romasevych (2018) eq. (14)-(25)).
 //
 // The normal forces are constraint reactions, which Simbody computes only after the applied
 // forces are known, and friction is an applied force: an implicit loop. We close it with two

@@ -1,7 +1,7 @@
 // Normal forces of the two guide rollers of a cart from the reaction of its prismatic joint.
 // The slider joint is what holds the cart on its guides: its reaction (vertical force F_y and
 // moment M_z about the hinge B) is carried by two vertical contact forces, N_front at
-// x' = p - b and N_rear at x' = p + b (seed 000 fig. 3). N > 0 when the guide presses the
+// x' = p - b and N_rear at x' = p + b (Loveikin, Pochka, Romasevych (2018) fig. 3). N > 0 when the guide presses the
 // roller downward, the sense of eq. (10):
 //     F_y = -(N_front + N_rear),   M_z = -σ·[(p - b)·N_front + (p + b)·N_rear]
 // solved with Eigen. With b = 0 the split is undetermined and the total is shared equally.

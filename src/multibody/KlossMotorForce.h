@@ -1,5 +1,5 @@
 // Kloss induction motor as a Simbody force element: applies the motor torque reduced to the
-// crank axis (physics/KlossMotor.h, seed 000 eq. (37)) to the motor-side body as a torque about
+// crank axis (physics/KlossMotor.h, Loveikin, Pochka, Romasevych (2018) eq. (37)) to the motor-side body as a torque about
 // the shaft axis z, its reaction going to the (grounded) stator. The body's absolute angular
 // velocity is used, because with an elastic coupling the motor side is mobilized relative to
 // the crankshaft (MultibodyModel.h).

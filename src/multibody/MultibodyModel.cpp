@@ -46,7 +46,7 @@ MultibodyModel::~MultibodyModel() = default;
 void MultibodyModel::buildDrive() {
   const Scene& sc = scene_;
   const bool rigid = sc.coupling.type == CouplingType::Rigid;
-  // Split rods put half their mass on each crank pin (seed 000 eq. (2)): point masses that
+  // Split rods put half their mass on each crank pin (Loveikin, Pochka, Romasevych (2018) eq. (2)): point masses that
   // turn with the crankshaft, so their gravity torque is felt too.
   const double pin_mass = sc.rods.model == RodModel::Split ? 0.5 * sc.rods.mass : 0.0;
   double J = sc.crankSideInertia() + (rigid ? sc.motorSideInertia() : 0.0);
@@ -93,7 +93,7 @@ void MultibodyModel::buildCarts() {
     rig.cart = SimTK::MobilizedBody::Slider(matter_.Ground(), SimTK::Transform(), cart_body, SimTK::Transform());
 
     if (sc.hasCamDrive()) {
-      // seed 001: the cam on the crankshaft pushes the cart; x_B = σ·x(φ2 + j·Δφ) replaces the rod.
+      // Loveikin and Pochka (cam drive): the cam on the crankshaft pushes the cart; x_B = σ·x(φ2 + j·Δφ) replaces the rod.
       rig.p_CrankPin = SimTK::Vec3(0);
       rig.cam = SimTK::Constraint::CoordinateCoupler(
           matter_, new CamFollowerFunction(sc.cam.stroke, rig.side, sc.crankPhase(j)),
@@ -202,7 +202,7 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
     const CartRig& c = carts_[j];
     const double theta = phi + sc.crankPhase(int(j));
     const SliderCrankPose pose = sc.hasCamDrive()
-                                     ? camDrivePose(theta, sc.cam.stroke, c.side)  // seed 001
+                                     ? camDrivePose(theta, sc.cam.stroke, c.side)  // Loveikin and Pochka (cam drive)
                                      : sliderCrankExact(theta, sc.crank.radius, sc.rods.length, c.side);
     c.cart.setOneQ(s, 0, pose.x_B);
     c.cart.setOneU(s, 0, pose.dx_B * omega);

@@ -1,4 +1,4 @@
-// Technological loads of the compacting rollers on every cart (seed 000 fig. 3: F_j1, F_j2
+// Technological loads of the compacting rollers on every cart (Loveikin, Pochka, Romasevych (2018) fig. 3: F_j1, F_j2
 // horizontal, R_j1, R_j2 vertical), applied at the roller contacts so their moments load the
 // guide rollers as in eq. (10). The horizontal direction follows loads.roller_force_direction
 // (physics/RollerLoads.h). Built only when the scene has roller loads.

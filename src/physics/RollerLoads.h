@@ -13,8 +13,8 @@ double smoothSign(double v, double v_s);
 
 // Total horizontal compacting-roller force on a cart along the cart's local +x' axis (pointing
 // away from the shaft) [N], given the cart's local velocity v' [m/s]:
-//   opposes_velocity: -(F_j1 + F_j2)·sign(v')  (rolling resistance, the reading of seed 004 eq. (5))
-//   as_printed:       +(F_j1 + F_j2)           (seed 000 fig. 3 and eq. (10): constant direction)
+//   opposes_velocity: -(F_j1 + F_j2)·sign(v')  (rolling resistance, the reading of Loveikin and Pochka (2007) eq. (5))
+//   as_printed:       +(F_j1 + F_j2)           (Loveikin, Pochka, Romasevych (2018) fig. 3 and eq. (10): constant direction)
 double rollerHorizontalForce(const Loads& loads, double v_local);
 
 // Direction factor of the guide friction along local x': friction = factor·f·(|N_front| + |N_rear|).

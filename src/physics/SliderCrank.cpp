@@ -37,7 +37,7 @@ SliderCrankPose sliderCrankExact(double theta, double r, double l, int side) {
   const double w = std::sqrt(1.0 - lam * lam * S * S);
   SliderCrankPose p{};
   p.x_B = r * C + sg * l * w;
-  // seed 004 eq. (6): ∂x/∂φ = -r·sin θ·(1 ± (r/l)·cos θ / √(1 - (r/l)² sin² θ))
+  // Loveikin and Pochka (2007) eq. (6): ∂x/∂φ = -r·sin θ·(1 ± (r/l)·cos θ / √(1 - (r/l)² sin² θ))
   p.dx_B = -r * S - sg * r * lam * S * C / w;
   // d/dθ (S·C/w) = (C² - S²)/w + λ²·S²·C²/w³
   p.d2x_B = -r * C - sg * r * lam * ((C * C - S * S) / w + lam * lam * S * S * C * C / (w * w * w));

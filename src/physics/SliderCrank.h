@@ -1,12 +1,12 @@
 // Closed-form kinematics of one crank-slider of the installation, as a function of its crank
-// angle θ = φ2 + j·Δφ (seed 000 eq. (31), (40)-(47); truncated series eq. (52)-(57); seed 004
+// angle θ = φ2 + j·Δφ (Loveikin, Pochka, Romasevych (2018) eq. (31), (40)-(47); truncated series eq. (52)-(57); Loveikin and Pochka (2007)
 // eq. (6) and the rod terms of eq. (9)).
 //
 // Geometry (plane z = const, origin on the shaft axis, x along the guides, y up):
 //   crank pin  A = r·(cos θ, sin θ)
 //   cart hinge B = (x_B, 0),  x_B = r·cos θ + σ·l·cos β,  sin β = (r/l)·sin θ
-// σ = +1 puts the cart on the +x side of the shaft (seed 000, all carts), σ = -1 on the -x side
-// (seed 004, second cart). β is the rod angle of seed 000 eq. (31): signed, |β| < π/2.
+// σ = +1 puts the cart on the +x side of the shaft (Loveikin, Pochka, Romasevych (2018), all carts), σ = -1 on the -x side
+// (Loveikin and Pochka (2007), second cart). β is the rod angle of Loveikin, Pochka, Romasevych (2018) eq. (31): signed, |β| < π/2.
 // The rod's absolute rotation rate is ω_rod = -σ·β̇ (direction B->A turns against β for σ = +1).
 //
 // Both the reduced model and the multibody model's initial assembly use this one function, so

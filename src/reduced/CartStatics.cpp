@@ -14,12 +14,12 @@ CartStaticsResult solveCartStatics(const Scene& scene, double beta, double H, do
   const Loads& L = scene.loads;
   const double f = L.guide_friction;
   const double R1 = L.roller_normal_front, R2 = L.roller_normal_rear;
-  const double G = scene.cartMassWithRodShare() * L.gravity;  // seed 000 eq. (3), G at x' = p
+  const double G = scene.cartMassWithRodShare() * L.gravity;  // Loveikin, Pochka, Romasevych (2018) eq. (3), G at x' = p
   // Distributed rod: half its weight reaches the cart at B (see header).
   const double V = (scene.rods.model == RodModel::Distributed) ? 0.5 * scene.rods.mass * L.gravity : 0.0;
   const double cb = std::cos(beta), sb = std::sin(beta);
 
-  // Right-hand side of seed 000 eq. (10) (generalised), unknowns (F, N1, N2).
+  // Right-hand side of Loveikin, Pochka, Romasevych (2018) eq. (10) (generalised), unknowns (F, N1, N2).
   const Eigen::Vector3d rhs(-(H + Fin),                                   // ΣX
                             G + V - R1 - R2,                              // ΣY
                             G * g.p - H * g.e - R1 * (g.p - g.a) - R2 * (g.p + g.a) +

@@ -1,16 +1,16 @@
 // Quasi-static (or kinetostatic) equilibrium of ONE cart: rod force and guide reactions,
-// seed 000 eq. (10) generalised, solved as a 3x3 linear system (Eigen).
+// Loveikin, Pochka, Romasevych (2018) eq. (10) generalised, solved as a 3x3 linear system (Eigen).
 //
 // Frame: the cart's LOCAL frame, origin at the rod hinge B, x' = σ·x pointing away from the
 // shaft, y up. For a cart on the opposite side (σ = -1) the whole cart is mirrored, so in local
-// coordinates seed 000 eq. (10) holds unchanged with the same rod angle β (SliderCrank.h): the
+// coordinates Loveikin, Pochka, Romasevych (2018) eq. (10) holds unchanged with the same rod angle β (SliderCrank.h): the
 // rod force on the cart is F·(-cos β, sin β) on both sides.
 //
-// Forces on the cart (seed 000 fig. 3):
+// Forces on the cart (Loveikin, Pochka, Romasevych (2018) fig. 3):
 //   rod            F·(-cos β, +sin β) at B                      (F > 0 = tension, eq. (14))
 //   rollers        H (local +x', both rollers together, from rollerHorizontalForce) at depth e
 //                  below B; vertical R1 at x' = p - a, R2 at x' = p + a, both at depth e
-//   weight         G = m_B·g at x' = p, m_B = Scene::cartMassWithRodShare() (seed 000 eq. (3))
+//   weight         G = m_B·g at x' = p, m_B = Scene::cartMassWithRodShare() (Loveikin, Pochka, Romasevych (2018) eq. (3))
 //   rod weight     distributed rods only: V = m_rod·g/2 downward at B. Quasi-statically a rod with
 //                  its centre of mass at mid-length passes the rod-axis force F plus exactly half
 //                  its weight to each end (moments about the crank pin), whatever its angle.
@@ -32,9 +32,9 @@
 //       - com_height·Fin = 0
 // b = 0 (no guide base given; the scene allows it without guide friction): only N1 + N2 is
 // determined (ΣX, ΣY); it is reported split equally and ΣM is not imposed.
-// With φ_f = +1, e = 0, V = 0, Fin = 0 the solution is exactly seed 000 eq. (14), (18), (22).
+// With φ_f = +1, e = 0, V = 0, Fin = 0 the solution is exactly Loveikin, Pochka, Romasevych (2018) eq. (14), (18), (22).
 // NOTE: eq. (18) as printed drops the (F01 + F02)·e moment of eq. (10)'s third line; we keep it
-// (it shifts N_rear by H·e/(2b), ≈ 4.5 kN for the seed 000 numbers).
+// (it shifts N_rear by H·e/(2b), ≈ 4.5 kN for the Loveikin, Pochka, Romasevych (2018) numbers).
 #pragma once
 
 namespace rollerdyn {

@@ -183,13 +183,13 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   ud.rtol = rtol;
   ud.atol = am;
   // Adams-Moulton (orders 1-12) with a Newton corrector on a dense difference-quotient Jacobian.
-  // Measured against BDF on the seed 000 scenes: as fast or faster (fewer steps on these smooth,
+  // Measured against BDF on the Loveikin, Pochka, Romasevych (2018) scenes: as fast or faster (fewer steps on these smooth,
   // mildly stiff equations) and 10-100x smaller energy-audit residuals at the same accuracy
   // (BDF's low-order, damped error drifts the energy of the periodic J(φ) motion). Newton rather
   // than fixed-point iteration keeps the corrector converging through the stiff patches: the
   // smoothed load laws have a slope (F1+F2)/v_s·x_B'²/J ~ 10³-10⁴ s⁻¹ within a few v_s of each
   // cart reversal (and the creep of a stalled drive lives there).
-  // Re-measured (issue #4, model/balanced-4cart.yaml, error of ω against a run at accuracy
+  // Re-measured (model/balanced-4cart.yaml, error of ω against a run at accuracy
   // 1e-10): for an ω error <= 1e-6 BDF needs ~1.6x the steps of Adams, fixed-point iteration
   // ~1.8x the right-hand sides;
   // capping the order (4, 5) does not help (the steady state runs at order 3-6); tighter or
@@ -206,7 +206,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   if (flag == CV_SUCCESS) flag = CVodeSetLinearSolver(cv, LS, A);
   if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(cv, 1000000);
   if (flag == CV_SUCCESS) flag = CVodeSetStopTime(cv, times.back());
-  // Cam drive (seed 001): in steady state the right-hand side is exactly constant over the
+  // Cam drive (Loveikin and Pochka (cam drive)): in steady state the right-hand side is exactly constant over the
   // constant-speed 2/3 of every stroke, so an unbounded step grows until it leaps from one
   // constant segment to the next across the reversal without its error estimate ever seeing it
   // (measured: the speed froze while ε = 160 rad/s² at every reversal). Cap the step at 1/8 of
@@ -265,13 +265,13 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Baranov's fixed-step scheme in crank angle (seed 004 eq. (2)-(4), (10), (11)), rigid drive.
+// Baranov's fixed-step scheme in crank angle (Loveikin and Pochka (2007) eq. (2)-(4), (10), (11)), rigid drive.
 
 RunResult runBaranov(const ReducedModel& m, RunResult res) {
   const Scene& s = m.scene();
   if (!m.rigid())
     throw std::invalid_argument(
-        "reduced.integrator = baranov needs coupling.type = rigid (the scheme of seed 004 eq. (4) "
+        "reduced.integrator = baranov needs coupling.type = rigid (the scheme of Loveikin and Pochka (2007) eq. (4) "
         "is for the one-mass model)");
   const double dphi = s.reduced.baranov_step;
   if (!(dphi > 0.0)) throw std::invalid_argument("reduced.baranov_step must be > 0");
@@ -320,7 +320,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     const double J_next = m.reducedInertia(phi + dphi);
     double w_next;
     if (w > 0.0) {
-      // seed 004 eq. (4)
+      // Loveikin and Pochka (2007) eq. (4)
       w_next = M / (J_i * w) * dphi + (3.0 * J_i - J_next) / (2.0 * J_i) * w;
     } else {
       // From rest eq. (4) divides by ω = 0, and starting it at a tiny ω instead would return
@@ -333,8 +333,8 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
       stalled = true;  // the scheme cannot stop or reverse: the drive has stalled
       break;
     }
-    const double t_next = t + 2.0 * dphi / (w + w_next);  // seed 004 eq. (10)
-    const double eps = (w_next - w) / (t_next - t);        // seed 004 eq. (11)
+    const double t_next = t + 2.0 * dphi / (w + w_next);  // Loveikin and Pochka (2007) eq. (10)
+    const double eps = (w_next - w) / (t_next - t);        // Loveikin and Pochka (2007) eq. (11)
     // Work over the step by the same left-point rule as the scheme: dW = (force·x_B')·Δφ.
     W_motor += e.motor_torque * dphi;
     for (int j = 0; j < m.cartCount(); ++j) {

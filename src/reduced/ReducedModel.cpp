@@ -20,32 +20,32 @@ ReducedModel::ReducedModel(const Scene& scene)
   // Checks r > 0, l > r and σ = ±1 once, so the right-hand side never throws.
   for (int j = 0; j < n; ++j) cartPose(j, 0.0);
 
-  J_n1_ = scene_.motorSideInertia();  // seed 000 eq. (1)
+  J_n1_ = scene_.motorSideInertia();  // Loveikin, Pochka, Romasevych (2018) eq. (1)
   J_crank_ = scene_.crankSideInertia();
   if (scene_.rods.model == RodModel::Split) {
-    // seed 000 eq. (2): J_K = n·J'_K + n·(m_rod/2)·r²
+    // Loveikin, Pochka, Romasevych (2018) eq. (2): J_K = n·J'_K + n·(m_rod/2)·r²
     const double r = scene_.crank.radius;
     J_crank_ += n * 0.5 * scene_.rods.mass * r * r;
   }
-  m_B_ = scene_.cartMassWithRodShare();  // seed 000 eq. (3)
+  m_B_ = scene_.cartMassWithRodShare();  // Loveikin, Pochka, Romasevych (2018) eq. (3)
   if (!rigid_ && !(J_n1_ > 0.0))
     throw std::invalid_argument("reduced model: elastic coupling needs a motor-side inertia J_n1 > 0");
 }
 
 SliderCrankPose ReducedModel::cartPose(int j, double phi) const {
   const double theta = phi + scene_.crankPhase(j);
-  if (scene_.hasCamDrive())  // seed 001 eq. (32)-(34): x(θ) replaces the slider-crank
+  if (scene_.hasCamDrive())  // Loveikin and Pochka (cam drive) eq. (32)-(34): x(θ) replaces the slider-crank
     return camDrivePose(theta, scene_.cam.stroke, scene_.carts.side[j]);
   const double r = scene_.crank.radius, l = scene_.rods.length;
   const int side = scene_.carts.side[j];
   return scene_.reduced.kinematics == KinematicsForm::Truncated
-             ? sliderCrankTruncated(theta, r, l, side)   // seed 000 eq. (52)-(57)
-             : sliderCrankExact(theta, r, l, side);      // seed 000 eq. (40)-(47)
+             ? sliderCrankTruncated(theta, r, l, side)   // Loveikin, Pochka, Romasevych (2018) eq. (52)-(57)
+             : sliderCrankExact(theta, r, l, side);      // Loveikin, Pochka, Romasevych (2018) eq. (40)-(47)
 }
 
-// One cart's share of J_n2(φ) and of dJ_n2/dφ: seed 000 eq. (9) (cart, x_B'²) + the rod terms of
-// seed 004 eq. (9) (distributed rod: centre-of-mass speed and rotation), and their φ-derivatives
-// (seed 000 eq. (38), analytic).
+// One cart's share of J_n2(φ) and of dJ_n2/dφ: Loveikin, Pochka, Romasevych (2018) eq. (9) (cart, x_B'²) + the rod terms of
+// Loveikin and Pochka (2007) eq. (9) (distributed rod: centre-of-mass speed and rotation), and their φ-derivatives
+// (Loveikin, Pochka, Romasevych (2018) eq. (38), analytic).
 double ReducedModel::cartInertia(const SliderCrankPose& p) const {
   double J = m_B_ * p.dx_B * p.dx_B;
   if (scene_.rods.model == RodModel::Distributed)
@@ -66,7 +66,7 @@ double ReducedModel::cartInertiaDerivative(const SliderCrankPose& p) const {
 double ReducedModel::rodGravityTorque(const SliderCrankPose& p, double theta) const {
   const double g = scene_.loads.gravity, m = scene_.rods.mass;
   if (!(g > 0.0)) return 0.0;
-  if (scene_.rods.model == RodModel::Distributed) return m * g * p.dy_S;  // seed 004 eq. (5)
+  if (scene_.rods.model == RodModel::Distributed) return m * g * p.dy_S;  // Loveikin and Pochka (2007) eq. (5)
   if (scene_.rods.model == RodModel::Split)
     return 0.5 * m * g * scene_.crank.radius * std::cos(theta);  // pin half-mass
   return 0.0;
@@ -94,7 +94,7 @@ double ReducedModel::reducedInertiaDerivative(double phi) const {
 
 double ReducedModel::motorTorque(double omega_motor) const {
   if (!scene_.motor.enabled) return 0.0;
-  // seed 000 eq. (37) / seed 004 eq. (7)-(8), in the singularity-free form of KlossMotor.h
+  // Loveikin, Pochka, Romasevych (2018) eq. (37) / Loveikin and Pochka (2007) eq. (7)-(8), in the singularity-free form of KlossMotor.h
   return klossCrankTorque(scene_.motor, scene_.reducer.ratio, scene_.reducer.efficiency, omega_motor);
 }
 
@@ -190,7 +190,7 @@ void ReducedModel::evaluate(const double* y, ModelEvaluation& e, bool keep_carts
   e.motor_torque = motorTorque(e.omega_motor);
   e.load_torque = M;
   if (rigid_) {
-    // seed 004 eq. (1) in time form: J·φ̈ = M_p - M_o - ½·J'·φ̇²
+    // Loveikin and Pochka (2007) eq. (1) in time form: J·φ̈ = M_p - M_o - ½·J'·φ̇²
     e.eps_crank = (e.motor_torque - e.load_torque - 0.5 * e.dJ_n2 * w2 * w2) / (J_n1_ + e.J_n2);
     e.eps_motor = e.eps_crank;
     e.twist_accel = 0.0;
@@ -199,7 +199,7 @@ void ReducedModel::evaluate(const double* y, ModelEvaluation& e, bool keep_carts
     e.coupling_torque = e.motor_torque - J_n1_ * e.eps_crank;
     e.damping_power = 0.0;
   } else {
-    // seed 000 eq. (58)
+    // Loveikin, Pochka, Romasevych (2018) eq. (58)
     const double c = scene_.coupling.stiffness, k = scene_.coupling.damping;
     e.coupling_torque = c * e.twist + k * e.twist_rate;
     e.eps_motor = (e.motor_torque - e.coupling_torque) / J_n1_;
@@ -236,7 +236,7 @@ double ReducedModel::kineticEnergy(const Eigen::VectorXd& y) const {
 
 double ReducedModel::potentialEnergy(const Eigen::VectorXd& y) const {
   double V = gravityPotential(y(iPhi()));
-  if (!rigid_) V += 0.5 * scene_.coupling.stiffness * y(iTwist()) * y(iTwist());  // seed 000 eq. (34)
+  if (!rigid_) V += 0.5 * scene_.coupling.stiffness * y(iTwist()) * y(iTwist());  // Loveikin, Pochka, Romasevych (2018) eq. (34)
   return V;
 }
 

@@ -1,30 +1,30 @@
 // The papers' reduced-mass ("one-mass" / "two-mass") model of the installation, built from a
 // Scene. All torques and angles are reduced to the crank axis.
 //
-// Rigid coupling, 1 DOF φ (seed 004 eq. (1) in time form):
+// Rigid coupling, 1 DOF φ (Loveikin and Pochka (2007) eq. (1) in time form):
 //   J(φ)·φ̈ + ½·J'(φ)·φ̇² = M_motor(φ̇) - M_load(φ, φ̇),   J = J_n1 + J_n2(φ)
-// Elastic coupling, 2 DOF (seed 000 eq. (58), with φ̇2² in the second term: eq. (38) shows the
+// Elastic coupling, 2 DOF (Loveikin, Pochka, Romasevych (2018) eq. (58), with φ̇2² in the second term: eq. (38) shows the
 // printed φ̈2² is a typo):
 //   J_n1·φ̈1 = M_n1(φ̇1) - c·(φ1 - φ2) - k·(φ̇1 - φ̇2)
 //   J_n2(φ2)·φ̈2 + ½·J_n2'(φ2)·φ̇2² = c·(φ1 - φ2) + k·(φ̇1 - φ̇2) - M_n2(φ2, φ̇2)
-// (½·J_n2' = Σ m_Bj·x'_Bj·x''_Bj + rod terms, seed 000 eq. (38).)
+// (½·J_n2' = Σ m_Bj·x'_Bj·x''_Bj + rod terms, Loveikin, Pochka, Romasevych (2018) eq. (38).)
 //
-// J_n1 = Scene::motorSideInertia() (seed 000 eq. (1)); J_n2(φ) = Scene::crankSideInertia() +
-// Σ_j [m_B·x_Bj'² + rod terms] (seed 000 eq. (9), seed 004 eq. (9)):
-//   distributed rods: m_rod·(x_S'² + y_S'²) + I_com·β'²   (seed 004 eq. (9)), m_B = carts.mass
-//   split rods:       m_rod/2·r² at the crank pin (seed 000 eq. (2)), m_B = m'_B + m_rod/2 (eq. (3))
+// J_n1 = Scene::motorSideInertia() (Loveikin, Pochka, Romasevych (2018) eq. (1)); J_n2(φ) = Scene::crankSideInertia() +
+// Σ_j [m_B·x_Bj'² + rod terms] (Loveikin, Pochka, Romasevych (2018) eq. (9), Loveikin and Pochka (2007) eq. (9)):
+//   distributed rods: m_rod·(x_S'² + y_S'²) + I_com·β'²   (Loveikin and Pochka (2007) eq. (9)), m_B = carts.mass
+//   split rods:       m_rod/2·r² at the crank pin (Loveikin, Pochka, Romasevych (2018) eq. (2)), m_B = m'_B + m_rod/2 (eq. (3))
 //   massless rods:    nothing
-// M_load (resisting torque, seed 000 eq. (30), seed 004 eq. (5)) by virtual work in world x:
+// M_load (resisting torque, Loveikin, Pochka, Romasevych (2018) eq. (30), Loveikin and Pochka (2007) eq. (5)) by virtual work in world x:
 //   M_load = -Σ_j σ_j·(H_j + friction_j)·x_Bj' + dV_gravity/dφ
 // H_j (local +x') from rollerHorizontalForce(v'_j), friction_j (local) from the quasi-static cart
 // statics (CartStatics.h, without the cart's inertial force, as in the papers) at the local
 // velocity v'_j = σ_j·x_Bj'·φ̇. With the quasi-static rod force F_j this equals
 // Σ F_j·r·(σ_j·sin θ_j·cos β_j + cos θ_j·sin β_j), i.e. Σ F_j·r·sin(θ_j + β_j) of eq. (26)-(30)
 // for σ = +1. Gravity: distributed rods add
-// m_rod·g·y_S' (seed 004 eq. (5)), split rods m_rod/2·g·r·cos θ (pin half-mass); carts move
+// m_rod·g·y_S' (Loveikin and Pochka (2007) eq. (5)), split rods m_rod/2·g·r·cos θ (pin half-mass); carts move
 // horizontally and do no gravity work.
 //
-// Cam drive (scene.drive = cam, seed 001): cartPose() returns the cam law x_B = σ·x(θ) and its
+// Cam drive (scene.drive = cam, Loveikin and Pochka (cam drive)): cartPose() returns the cam law x_B = σ·x(θ) and its
 // θ-derivatives (physics/CamMotionLaw.h) in place of the slider-crank transfer functions; the
 // scene's rods are massless then and β = 0, so every formula above holds unchanged.
 //
@@ -95,7 +95,7 @@ class ReducedModel {
   // Kinematics of cart j (0-based) at crank angle φ2 of cart 1.
   SliderCrankPose cartPose(int j, double phi_crank) const;
 
-  // J_n1 [kg·m²] (seed 000 eq. (1)).
+  // J_n1 [kg·m²] (Loveikin, Pochka, Romasevych (2018) eq. (1)).
   double motorSideInertia() const { return J_n1_; }
   // J_n2(φ) and dJ_n2/dφ (analytic, from the slider-crank second derivatives).
   double crankSideInertia(double phi) const;
@@ -125,7 +125,7 @@ class ReducedModel {
   double potentialEnergy(const Eigen::VectorXd& y) const;
 
   // Cart reactions at crank angle φ, speed φ̇ and acceleration φ̈. include_inertia = false: the
-  // quasi-static reactions of seed 000 eq. (14)-(25) (what the equations of motion use);
+  // quasi-static reactions of Loveikin, Pochka, Romasevych (2018) eq. (14)-(25) (what the equations of motion use);
   // true: kinetostatic, with the d'Alembert force -m_B·a' of each cart (closer to what a
   // multibody model's constraint forces show).
   std::vector<CartEvaluation> cartReactions(double phi, double omega, double eps,
@@ -139,9 +139,9 @@ class ReducedModel {
 
   Scene scene_;
   bool rigid_;
-  double J_n1_;       // motor side, seed 000 eq. (1)
-  double J_crank_;    // crankshaft without rods + split pin half-masses (seed 000 eq. (2))
-  double m_B_;        // cart mass used with x_B', seed 000 eq. (3)
+  double J_n1_;       // motor side, Loveikin, Pochka, Romasevych (2018) eq. (1)
+  double J_crank_;    // crankshaft without rods + split pin half-masses (Loveikin, Pochka, Romasevych (2018) eq. (2))
+  double m_B_;        // cart mass used with x_B', Loveikin, Pochka, Romasevych (2018) eq. (3)
 };
 
 // Runs the reduced model of a scene from its initial state to simulation.t_end and fills the
@@ -149,7 +149,7 @@ class ReducedModel {
 //   cvode   - SUNDIALS CVODE, Adams-Moulton with a dense Newton corrector; rtol =
 //             simulation.accuracy, per-state absolute tolerances and an absolute tolerance on
 //             the crank angle (see ReducedIntegrators.cpp); rows every simulation.output_step.
-//   baranov - the papers' fixed-step scheme in crank angle (seed 004 eq. (4), (10), (11)),
+//   baranov - the papers' fixed-step scheme in crank angle (Loveikin and Pochka (2007) eq. (4), (10), (11)),
 //             rigid coupling only (std::invalid_argument otherwise); its nodes are interpolated
 //             linearly in time onto the same output time grid, so both integrators fill the
 //             same table.

@@ -160,11 +160,11 @@ std::string renderReportHtml(const ReportContent& c) {
       {"omega_crank.mean", "mean crank speed ω_mean", "rad/s", "%.6g"},
       {"omega_crank.min", "minimum crank speed ω_min", "rad/s", "%.6g"},
       {"omega_crank.max", "maximum crank speed ω_max", "rad/s", "%.6g"},
-      {"delta", "speed fluctuation δ = (ω_max − ω_min)/ω_mean (seed 004 eq. (12))", "-", "%.5g"},
-      {"H", "H = |ε|_max/ω_mean² (seed 004 eq. (13))", "-", "%.5g"},
-      {"k_p", "k_p (seed 004 eq. (14))", "-", "%.5g"},
+      {"delta", "speed fluctuation δ = (ω_max − ω_min)/ω_mean (Loveikin and Pochka (2007) eq. (12))", "-", "%.5g"},
+      {"H", "H = |ε|_max/ω_mean² (Loveikin and Pochka (2007) eq. (13))", "-", "%.5g"},
+      {"k_p", "k_p (Loveikin and Pochka (2007) eq. (14))", "-", "%.5g"},
       {"eps_crank_abs_max", "largest crank acceleration |ε|_max", "rad/s²", "%.5g"},
-      {"coupling_torque_swing", "coupling torque swing (seed 000 Table 1)", "N·m", "%.5g"},
+      {"coupling_torque_swing", "coupling torque swing (Loveikin, Pochka, Romasevych (2018) Table 1)", "N·m", "%.5g"},
       {"twist_swing", "twist swing", "rad", "%.4g"},
       {"twist_rate_swing", "twist rate swing", "rad/s", "%.4g"},
       {"twist_accel_swing", "twist acceleration swing", "rad/s²", "%.4g"},
@@ -202,7 +202,7 @@ std::string renderReportHtml(const ReportContent& c) {
       if (rx.contains(col)) order.push_back(col);
     for (auto it = rx.begin(); it != rx.end(); ++it)
       if (std::find(order.begin(), order.end(), it.key()) == order.end()) order.push_back(it.key());
-    h << "<p class=\"small\">N &gt; 0: the guide presses the guide roller down (seed 000 fig. 3); "
+    h << "<p class=\"small\">N &gt; 0: the guide presses the guide roller down (Loveikin, Pochka, Romasevych (2018) fig. 3); "
          "F_rod &gt; 0 in tension. Min and max over the steady window.</p>\n"
       << "<table>\n<tr><th>joint quantity</th><th>meaning</th><th>unit</th><th>min</th><th>max</th>"
          "<th>mean</th><th>|max|</th></tr>\n";

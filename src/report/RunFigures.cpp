@@ -303,7 +303,7 @@ struct Planner {
     PlotSpec zoom = p;  // the same, around the steady-state cycle
     add("motor_operating_point",
         "The motor's static Kloss characteristic reduced to the crank axis, M_n1 = M(u·ω_1)·u·η "
-        "(seed 000 eq. (37)), and the operating points (omega_motor, motor_torque) the run went "
+        "(Loveikin, Pochka, Romasevych (2018) eq. (37)), and the operating points (omega_motor, motor_torque) the run went "
         "through: the start-up along the curve and, highlighted, the steady-state cycle.",
         std::move(p));
     if (!window.found || rows.empty()) return;
@@ -366,7 +366,7 @@ struct Planner {
         }
       add("guide_reactions_vs_angle",
           "Normal forces of the front (solid) and rear (dashed) guide rollers of every cart over the "
-          "steady window, one colour per cart (N > 0 when the guide presses the roller down, seed 000 fig. 3).",
+          "steady window, one colour per cart (N > 0 when the guide presses the roller down, Loveikin, Pochka, Romasevych (2018) fig. 3).",
           std::move(p));
     } else {
       notes.push_back("guide reaction figure left out: reactions.csv has no N_front_j/N_rear_j");
@@ -385,7 +385,7 @@ struct Planner {
         p.series.push_back(std::move(s));
       }
       add("rod_forces_vs_angle",
-          "Axial force in each connecting rod over the steady window (> 0 in tension, seed 000 eq. (14)).",
+          "Axial force in each connecting rod over the steady window (> 0 in tension, Loveikin, Pochka, Romasevych (2018) eq. (14)).",
           std::move(p));
     } else {
       notes.push_back("rod force figure left out: reactions.csv has no F_rod_j");
@@ -431,7 +431,7 @@ struct Planner {
       p.height = 620;
       p.series.push_back(series("", *q.x, *q.y, kBlue));
       add(q.stem,
-          "Phase portrait of the coupling twist over the steady window, as in seed 000 fig. " +
+          "Phase portrait of the coupling twist over the steady window, as in Loveikin, Pochka, Romasevych (2018) fig. " +
               std::string(q.fig) + ": a closed loop is a periodic steady state.",
           std::move(p));
     }

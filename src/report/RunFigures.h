@@ -6,13 +6,13 @@
 //   crank_speed_vs_time, crank_accel_vs_time     the whole run; the steady window is marked
 //   coupling_torque_vs_time                      torque transmitted by the coupling
 //   motor_operating_point                        the Kloss curve M(ω) reduced to the crank axis
-//                                                (scene motor data, seed 000 eq. (37)) with the
+//                                                (scene motor data, Loveikin, Pochka, Romasevych (2018) eq. (37)) with the
 //                                                run's (omega_motor, motor_torque) trajectory
 //   motor_operating_point_steady                 the same, zoomed on the steady-state cycle
 //   guide_reactions_vs_angle, rod_forces_vs_angle  N_front_j, N_rear_j and F_rod_j per cart
 //                                                against φ_2 mod 2π, steady window
 //   twist_phase_rate, twist_phase_rate_accel,    phase portraits of the coupling twist ψ over
-//   twist_phase_accel                            the steady window (seed 000 figs. 8-10):
+//   twist_phase_accel                            the steady window (Loveikin, Pochka, Romasevych (2018) figs. 8-10):
 //                                                (ψ, ψ'), (ψ', ψ''), (ψ, ψ'')
 //   comparison_<quantity>                        multibody vs reduced (and the reduced model's
 //                                                kinetostatic reactions) from comparison.csv

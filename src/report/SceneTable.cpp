@@ -70,19 +70,19 @@ std::vector<SceneParameterRow> derivedParameterRows(const Scene& s) {
   const double u = s.reducer.ratio;
   std::vector<SceneParameterRow> rows = {
       {"critical slip s_kr", formatNumber(s.motor.critical_slip), "-",
-       "Kloss critical slip as the parser derived it (seed 000 eq. (37), seed 004 eq. (7))", "derived"},
+       "Kloss critical slip as the parser derived it (Loveikin, Pochka, Romasevych (2018) eq. (37), Loveikin and Pochka (2007) eq. (7))", "derived"},
       {"synchronous crank speed ω0/u", formatNumber(s.motor.omega_sync / u), "rad/s",
        "motor synchronous speed reduced to the crank axis", "derived"},
       {"breakdown torque at the crank M_kr·u·η",
        formatNumber(s.motor.breakdown_torque * u * s.reducer.efficiency), "N·m",
        "largest motor torque the crank can get", "derived"},
       {"motor-side inertia J_n1", formatNumber(s.motorSideInertia()), "kg·m²",
-       "(J_p + J_m + J_red + motor-shaft flywheel)·δ·u², reduced to the crank axis (seed 000 eq. (1))",
+       "(J_p + J_m + J_red + motor-shaft flywheel)·δ·u², reduced to the crank axis (Loveikin, Pochka, Romasevych (2018) eq. (1))",
        "derived"},
       {"crank-side inertia", formatNumber(s.crankSideInertia()), "kg·m²",
        "cranks, shaft and crankshaft flywheel about the shaft axis, without rods and carts", "derived"},
       {"cart mass with rod share m_B", formatNumber(s.cartMassWithRodShare()), "kg",
-       "cart mass plus half a rod under the split rod model (seed 000 eq. (3))", "derived"},
+       "cart mass plus half a rod under the split rod model (Loveikin, Pochka, Romasevych (2018) eq. (3))", "derived"},
   };
   if (s.rods.model != RodModel::Massless)
     rows.push_back({"rod inertia about its centre of mass", formatNumber(s.rods.inertia_com), "kg·m²",

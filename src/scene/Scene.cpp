@@ -3,7 +3,7 @@
 namespace rollerdyn {
 
 double Scene::motorSideInertia() const {
-  // seed 000 eq. (1): J_n1 = (J_p + J_m)·δ·u²; seed 004 adds the reducer's own inertia
+  // Loveikin, Pochka, Romasevych (2018) eq. (1): J_n1 = (J_p + J_m)·δ·u²; Loveikin and Pochka (2007) adds the reducer's own inertia
   // (I_o = I_motor + I_m + I_red). A motor-shaft flywheel turns with the rotor.
   const double flywheel_motor =
       (flywheel.location == FlywheelLocation::MotorShaft) ? flywheel.inertia : 0.0;
@@ -32,7 +32,7 @@ std::vector<std::string> Scene::effects() const {
   if (hasMotor()) e.push_back("kloss_motor");
   e.push_back(coupling.type == CouplingType::Rigid ? "rigid_coupling" : "elastic_coupling");
   if (hasCouplingDamping()) e.push_back("coupling_damping");
-  if (hasCamDrive()) e.push_back("cam_drive");  // no rods: the cam pushes the cart (seed 001)
+  if (hasCamDrive()) e.push_back("cam_drive");  // no rods: the cam pushes the cart (Loveikin and Pochka (cam drive))
   else e.push_back(std::string("rods_") + toString(rods.model));
   if (hasRollerLoads()) e.push_back("roller_loads");
   if (hasGuideFriction()) e.push_back("guide_friction");

@@ -46,8 +46,8 @@ struct CrankShaft {
   double shaft_inertia;     // shaft itself (excluding cranks) about its axis [kg·m²]  crank.shaft_inertia
 };
 
-// Cam drive of seed 001 (drive.type = cam): each cart is pushed by a constant-diameter cam on the
-// crankshaft instead of a crank and rod, and follows the optimal-reversal motion law of seed 001
+// Cam drive of Loveikin and Pochka (cam drive) (drive.type = cam): each cart is pushed by a constant-diameter cam on the
+// crankshaft instead of a crank and rod, and follows the optimal-reversal motion law of Loveikin and Pochka (cam drive)
 // eq. (29)-(34) as a function of the cam angle (src/physics/CamMotionLaw.h). One cam turn is one
 // full cycle, so the half-cycle (one stroke) time is t3 = π/ω at crank speed ω [s]: it follows
 // from the drive's speed and is not an input. Cart j's cam sits at θ = φ2 + j·Δφ (crank.offset_deg);
@@ -63,14 +63,14 @@ struct CamDrive {
 };
 
 struct ConnectingRods {
-  RodModel model;        // distributed | split (seed 000 eq. (2)-(3)) | massless   rods.model
+  RodModel model;        // distributed | split (Loveikin, Pochka, Romasevych (2018) eq. (2)-(3)) | massless   rods.model
   double length;         // l, crank pin to cart hinge [m]                          rods.length
   double mass;           // m_rod of one rod [kg] (ignored when massless)           rods.mass
   double inertia_com;    // own inertia about its centre of mass [kg·m²];
-                         // default m·l²/12 (seed 004: I_s = q·l³/12)               rods.inertia_com
+                         // default m·l²/12 (Loveikin and Pochka (2007): I_s = q·l³/12)               rods.inertia_com
 };
 
-// Geometry of one cart, measured from the rod hinge B (seed 000 fig. 3, eq. (10)), in the
+// Geometry of one cart, measured from the rod hinge B (Loveikin, Pochka, Romasevych (2018) fig. 3, eq. (10)), in the
 // cart's own direction: +x points away from the shaft for a cart on the "same" side.
 struct CartGeometry {
   double a;            // half distance between the two compacting rollers [m]        carts.geometry.a
@@ -95,8 +95,8 @@ struct KlossMotor {
   double omega_sync;       // synchronous rotor speed ω0 [rad/s]                motor.omega_sync
   double breakdown_torque; // M_kr at the rotor [N·m]                           motor.breakdown_torque
   double critical_slip;    // s_kr [-]; from motor.critical_slip, or motor.omega_critical
-                           // (s_kr = 1 - ω_kr/ω0, seed 004 eq. (7)), or motor.omega_nominal +
-                           // motor.overload_ratio (s_kr = s_n(λ + √(λ²-1)), seed 000 eq. (37))
+                           // (s_kr = 1 - ω_kr/ω0, Loveikin and Pochka (2007) eq. (7)), or motor.omega_nominal +
+                           // motor.overload_ratio (s_kr = s_n(λ + √(λ²-1)), Loveikin, Pochka, Romasevych (2018) eq. (37))
   double rotor_inertia;    // J_p about the rotor axis [kg·m²]                  motor.rotor_inertia
 };
 
@@ -104,7 +104,7 @@ struct Reducer {
   double ratio;        // u = ω_rotor / ω_crank [-]                                 reducer.ratio
   double efficiency;   // η in (0, 1] [-]                                           reducer.efficiency
   double inertia;      // J_red referred to the motor shaft [kg·m²]                 reducer.inertia
-  double delta;        // δ, seed 000 eq. (1) factor for reducer inertia [-]        reducer.delta
+  double delta;        // δ, Loveikin, Pochka, Romasevych (2018) eq. (1) factor for reducer inertia [-]        reducer.delta
 };
 
 struct Coupling {
@@ -135,7 +135,7 @@ struct Loads {
 
 struct ReducedSettings {
   KinematicsForm kinematics;   // exact (eq. (40)-(47)) | truncated (eq. (52)-(57))   reduced.kinematics
-  ReducedIntegrator integrator;  // cvode | baranov (seed 004 eq. (4), (10), (11))  reduced.integrator
+  ReducedIntegrator integrator;  // cvode | baranov (Loveikin and Pochka (2007) eq. (4), (10), (11))  reduced.integrator
   double baranov_step;         // crank-angle step of the Baranov scheme [rad]        reduced.baranov_step_deg
 };
 
@@ -159,14 +159,14 @@ struct Scene {
 
   // --- Derived quantities, defined once so both models use the same formula. ---
 
-  // Motor-side inertia reduced to the crank axis, seed 000 eq. (1) extended by the reducer and a
+  // Motor-side inertia reduced to the crank axis, Loveikin, Pochka, Romasevych (2018) eq. (1) extended by the reducer and a
   // motor-shaft flywheel: J_n1 = (J_p + J_m + J_red + J_fw,motor)·δ·u² [kg·m²].
   double motorSideInertia() const;
   // Crankshaft inertia about its axis without rods: n·J'_K + shaft + crank-side flywheel [kg·m²].
   double crankSideInertia() const;
   // Angle of cart j's crank (0-based j) relative to cart 1's crank: j·Δφ [rad].
   double crankPhase(int j) const { return j * crank.offset; }
-  // Cart centre-of-mass mass including half a rod under the split model [kg], seed 000 eq. (3).
+  // Cart centre-of-mass mass including half a rod under the split model [kg], Loveikin, Pochka, Romasevych (2018) eq. (3).
   double cartMassWithRodShare() const;
   // Whether each optional effect is present in this scene.
   bool hasMotor() const { return motor.enabled; }

@@ -205,20 +205,20 @@ ConnectingRods readRods(const Reader& in, double r) {
                     formatNumber(rods.mass));
     }
   }
-  // Uniform slender rod about its centre: m·l²/12 (seed 004: I_s = q·l³/12 with m = q·l).
+  // Uniform slender rod about its centre: m·l²/12 (Loveikin and Pochka (2007): I_s = q·l³/12 with m = q·l).
   rods.inertia_com =
       in.numberOr("rods.inertia_com", rods.mass * rods.length * rods.length / 12.0);
   return rods;
 }
 
-// drive.type and cam.*: the cam drive of seed 001 (Scene.h). Under a cam no rod is built, so the
+// drive.type and cam.*: the cam drive of Loveikin and Pochka (cam drive) (Scene.h). Under a cam no rod is built, so the
 // Scene gets massless rods; the rod keys stay validated so `--set drive.type=crank` works.
 void readDrive(const Reader& in, Scene& s) {
   s.drive = in.choice("drive.type") == "cam" ? DriveType::Cam : DriveType::Crank;
   s.cam.stroke = s.drive == DriveType::Cam
                      ? in.requiredNumber("cam.stroke", "required when drive.type is cam")
                      : in.numberOr("cam.stroke", 0.0);
-  // ρ = b/2 + x(θ) >= b/2 - Δx/2 must stay positive (seed 001 eq. (38)-(43)).
+  // ρ = b/2 + x(θ) >= b/2 - Δx/2 must stay positive (Loveikin and Pochka (cam drive) eq. (38)-(43)).
   s.cam.pusher_distance = in.numberOr("cam.pusher_distance", 2.0 * s.cam.stroke);
   if (in.has("cam.pusher_distance") && s.cam.pusher_distance <= s.cam.stroke) {
     in.doc().fail("cam.pusher_distance",
@@ -228,8 +228,8 @@ void readDrive(const Reader& in, Scene& s) {
   if (s.drive == DriveType::Cam) s.rods = {RodModel::Massless, s.rods.length, 0.0, 0.0};
 }
 
-// carts.sides: +1 for a cart on the same side as cart 1 (x > 0, seed 000), -1 for the opposite
-// side (seed 004's second cart).
+// carts.sides: +1 for a cart on the same side as cart 1 (x > 0, Loveikin, Pochka, Romasevych (2018)), -1 for the opposite
+// side (Loveikin and Pochka's (2007) second cart).
 std::vector<int> readSides(const Reader& in, int count) {
   const std::string path = "carts.sides";
   const KeySpec& spec = *findSceneKey(path);
@@ -320,7 +320,7 @@ double readCriticalSlip(const Reader& in, double omega0) {
     if (w_kr >= omega0) {
       doc.fail(way, "a number in (0, omega_sync = " + w0_txt + ") [rad/s]", formatNumber(w_kr));
     }
-    return 1.0 - w_kr / omega0;  // seed 004 eq. (7)
+    return 1.0 - w_kr / omega0;  // Loveikin and Pochka (2007) eq. (7)
   }
   const double w_n =
       in.requiredNumber("motor.omega_nominal", "required with motor.overload_ratio");
@@ -331,7 +331,7 @@ double readCriticalSlip(const Reader& in, double omega0) {
              formatNumber(w_n));
   }
   const double s_n = 1.0 - w_n / omega0;
-  const double s_kr = s_n * (lambda + std::sqrt(lambda * lambda - 1.0));  // seed 000 eq. (37)
+  const double s_kr = s_n * (lambda + std::sqrt(lambda * lambda - 1.0));  // Loveikin, Pochka, Romasevych (2018) eq. (37)
   if (s_kr >= 1.0) {
     doc.fail("motor.overload_ratio",
              "a value giving critical slip s_kr = s_n(lambda + sqrt(lambda^2 - 1)) < 1 with s_n = " +
@@ -429,7 +429,7 @@ Scene readScene(const SceneDocument& doc) {
   s.reduced = readReduced(in);
   readDrive(in, s);
 
-  // Guide reactions (seed 000 eq. (18)-(25)) divide by 2b; with friction they drive the load.
+  // Guide reactions (Loveikin, Pochka, Romasevych (2018) eq. (18)-(25)) divide by 2b; with friction they drive the load.
   if (s.loads.guide_friction > 0.0) {
     const std::string want =
         "a number > 0 [m] (required when loads.guide_friction.coefficient > 0)";

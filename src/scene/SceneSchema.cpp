@@ -38,7 +38,7 @@ std::vector<KeySpec> buildSchema() {
   using P = Presence;
   return {
       {"source", KeyKind::Text, "-", P::Required, anyFinite(), 0.0, "", {},
-       "citation of the paper (and seed file) the scene comes from"},
+       "citation of the paper the scene comes from (authors, year, title)"},
 
       number("simulation.t_end", "s", P::Required, positive(), 0.0, "simulated time span"),
       number("simulation.accuracy", "-", P::Optional, between(0.0, false, 1.0, false), 1e-6,
@@ -80,7 +80,7 @@ std::vector<KeySpec> buildSchema() {
              "rod inertia about its centre of mass (default m·l²/12)"),
 
       choice("drive.type", P::Optional, {"crank", "cam"}, "crank",
-             "crank-slider per cart, or the cam of seed 001 (rods then unused)"),
+             "crank-slider per cart, or the cam of Loveikin and Pochka (cam drive) (rods then unused)"),
       number("cam.stroke", "m", P::Conditional, positive(), 0.0,
              "cam drive: full stroke of the cart (required when drive.type is cam)"),
       number("cam.pusher_distance", "m", P::Conditional, positive(), 0.0,
@@ -129,7 +129,7 @@ std::vector<KeySpec> buildSchema() {
       number("reducer.inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
              "J_red referred to the motor shaft"),
       number("reducer.delta", "-", P::Optional, positive(), 1.0,
-             "delta, seed 000 eq. (1) factor on the motor-side inertia"),
+             "delta, Loveikin, Pochka, Romasevych (2018) eq. (1) factor on the motor-side inertia"),
 
       choice("coupling.type", P::Required, {"elastic", "rigid"}, "", "coupling model"),
       number("coupling.stiffness", "N·m/rad", P::Conditional, positive(), 0.0,

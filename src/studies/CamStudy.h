@@ -1,4 +1,4 @@
-// Cam drive studies (seed 001): the cam profile of a scene, and a cam-driven cart compared with a
+// Cam drive studies (Loveikin and Pochka (cam drive)): the cam profile of a scene, and a cam-driven cart compared with a
 // crank-driven cart of equal stroke and cycle time (same scene, `drive.type` switched, so motor,
 // reducer, coupling, cart and loads are identical and the cycle time 2π/ω follows from the same
 // drive speed).
@@ -30,7 +30,7 @@ struct DriveResponse {
   bool complete = false, steady = false;
   double omega_mean = 0;        // mean crank speed over the steady window [rad/s]
   double t3 = 0;                // half-cycle time π/ω_mean [s]
-  double delta = 0;             // (ω_max - ω_min)/ω_mean, seed 004 eq. (12)
+  double delta = 0;             // (ω_max - ω_min)/ω_mean, Loveikin and Pochka (2007) eq. (12)
   double stroke = 0;            // max - min of x_cart_1 [m]
   double velocity_peak = 0;     // max |v_cart_1| [m/s]
   double accel_peak = 0;        // max |a_cart_1| [m/s²]

@@ -8,7 +8,7 @@
 namespace rollerdyn {
 
 double naturalFrequency(double c, double J1, double J2) {
-  return std::sqrt(c * (J1 + J2) / (J1 * J2));  // seed 002 eq. (10)
+  return std::sqrt(c * (J1 + J2) / (J1 * J2));  // Dyomin (two rotors) eq. (10)
 }
 
 double meanCrankSideInertia(const Scene& scene) {
@@ -45,7 +45,7 @@ ResonanceReport checkResonance(const Scene& scene, double omega_mean, double tol
     char buf[320];
     std::snprintf(buf, sizeof buf,
                   "torsional resonance: coupling natural frequency p0 = %.4g rad/s is within %.0f %% "
-                  "of %d*omega = %.4g rad/s (p0/(n*omega) = %.3f; seed 002 eq. (10), (16)-(21)); "
+                  "of %d*omega = %.4g rad/s (p0/(n*omega) = %.3f; Dyomin (two rotors) eq. (10), (16)-(21)); "
                   "the coupling torque may be amplified",
                   r.p0, 100 * tolerance, h.harmonic, h.harmonic * std::abs(omega_mean), h.ratio);
     r.warnings.push_back(buf);

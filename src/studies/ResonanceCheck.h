@@ -1,12 +1,12 @@
-// Torsional resonance check of the elastic coupling (seed 002 eq. (10), (16)-(21)): the two-mass
+// Torsional resonance check of the elastic coupling (Dyomin (two rotors) eq. (10), (16)-(21)): the two-mass
 // drive (motor side J1, crank side J2, coupling stiffness c) has the natural frequency
-//   p0 = sqrt(c·(J1 + J2)/(J1·J2))                                    (seed 002 eq. (10))
+//   p0 = sqrt(c·(J1 + J2)/(J1·J2))                                    (Dyomin (two rotors) eq. (10))
 // and the harmonic amplitudes (16)-(21) blow up when p0 is close to ω, 2ω, 3ω or 5ω, the harmonics
 // of the drive torque the paper keeps. The crank side of an installation is periodic in the crank
 // angle, so its excitation has the same harmonics of the crank speed ω.
 //
-// Here J1 = Scene::motorSideInertia() (seed 000 eq. (1)), J2 = the mean over one crank
-// revolution of the crank-side reduced inertia J_n2(φ) (seed 000 eq. (9), ReducedModel), and
+// Here J1 = Scene::motorSideInertia() (Loveikin, Pochka, Romasevych (2018) eq. (1)), J2 = the mean over one crank
+// revolution of the crank-side reduced inertia J_n2(φ) (Loveikin, Pochka, Romasevych (2018) eq. (9), ReducedModel), and
 // ω = the mean crank speed of the run. A warning is raised when |p0 - n·ω| <= 10 % of n·ω for
 // n = 1, 2, 3, 5. Rigid couplings have no such mode and are never flagged.
 #pragma once
@@ -33,13 +33,13 @@ struct ResonanceReport {
   double J1 = 0;             // motor side reduced to the crank axis [kg·m²]
   double J2_mean = 0;        // mean crank-side reduced inertia [kg·m²]
   double stiffness = 0;      // c [N·m/rad]
-  double p0 = 0;             // [rad/s], seed 002 eq. (10)
+  double p0 = 0;             // [rad/s], Dyomin (two rotors) eq. (10)
   double omega = 0;          // mean crank speed [rad/s]
   std::vector<ResonanceHit> hits;
   std::vector<std::string> warnings;  // one sentence per hit
 };
 
-// p0 of seed 002 eq. (10) [rad/s].
+// p0 of Dyomin (two rotors) eq. (10) [rad/s].
 double naturalFrequency(double stiffness, double J1, double J2);
 
 // Mean of J_n2(φ) over one revolution [kg·m²] (720 samples, trapezoidal on a periodic function,

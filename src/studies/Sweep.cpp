@@ -89,9 +89,9 @@ const std::vector<std::pair<std::string, std::string>>& metricSources() {
 
 // Units for plot labels.
 std::string metricLabel(const std::string& m) {
-  if (m == "delta") return "delta [-] (seed 004 eq. (12))";
-  if (m == "H") return "H [-] (seed 004 eq. (13))";
-  if (m == "k_p") return "k_p [-] (seed 004 eq. (14))";
+  if (m == "delta") return "delta [-] (Loveikin and Pochka (2007) eq. (12))";
+  if (m == "H") return "H [-] (Loveikin and Pochka (2007) eq. (13))";
+  if (m == "k_p") return "k_p [-] (Loveikin and Pochka (2007) eq. (14))";
   if (m.rfind("omega_crank", 0) == 0) return m + " [rad/s]";
   if (m == "coupling_torque_swing") return "coupling torque swing [N·m]";
   if (m == "twist_swing") return "twist swing [rad]";

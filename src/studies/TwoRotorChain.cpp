@@ -262,7 +262,7 @@ ChainComparison compareTwoRotorChain(const TwoRotorChainParams& p) {
   for (const ResonanceHit& h : resonanceHits(c.derived.p0, p.omega)) {
     c.resonance_warnings.push_back("p0 = " + std::to_string(c.derived.p0) + " rad/s is within 10 % of " +
                                    std::to_string(h.harmonic) + "*omega = " +
-                                   std::to_string(h.harmonic * p.omega) + " rad/s (seed 002 eq. (10), (16)-(21))");
+                                   std::to_string(h.harmonic * p.omega) + " rad/s (Dyomin (two rotors) eq. (10), (16)-(21))");
   }
   return c;
 }

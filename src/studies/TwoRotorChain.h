@@ -1,4 +1,4 @@
-// Two rotors on an elastic, damped chain (seed 002, Dyomin: drive of a pipe-coating machine):
+// Two rotors on an elastic, damped chain (Dyomin (two rotors), Dyomin: drive of a pipe-coating machine):
 //   J1·φ̈1 + b(φ̇1 - φ̇2) + k(φ1 - φ2) = M(t),   J2·φ̈2 - b(φ̇1 - φ̇2) - k(φ1 - φ2) = -M_c   (1)-(2)
 // The twist ψ = φ1 - φ2 obeys ψ̈ + 2δ1·ψ̇ + p0²·ψ = M(t)/J1 + M_c/J2 (7) with
 // δ1 = b(J1 + J2)/(2J1J2) (9) and p0 = sqrt(k(J1 + J2)/(J1J2)) (10). The drive torque is the

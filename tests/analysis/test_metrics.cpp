@@ -1,5 +1,5 @@
 // Metrics over a steady-state window: a synthetic sinusoid with hand-computed values, and the
-// seed 004 table as a check of the δ, H, k_p formulas (eq. (12)-(14)).
+// Loveikin and Pochka (2007) table as a check of the δ, H, k_p formulas (eq. (12)-(14)).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,7 +41,7 @@ struct Sinusoid {
     for (int i = 0; i * h <= t_end + 1e-12; ++i) addRow(ts, i * h);
     return ts;
   }
-  // Output rows every dphi of crank angle (as the Baranov scheme gives, seed 004 eq. (4)):
+  // Output rows every dphi of crank angle (as the Baranov scheme gives, Loveikin and Pochka (2007) eq. (4)):
   // denser in time where the crank is slow, so a sample mean of ω is biased upwards.
   Table uniformInAngle(double t_end, double dphi) const {
     Table ts = emptyTable();
@@ -66,7 +66,7 @@ TEST(MotionCoefficients, MatchHandComputedValues) {
   EXPECT_DOUBLE_EQ(c.k_p, 0.24);
 }
 
-// Seed 004, table "Результати розрахунків": Δφ, ω_min, ω_max, ω_mean, δ, |ε|max, H, k_p as
+// Loveikin and Pochka (2007), table "Результати розрахунків": Δφ, ω_min, ω_max, ω_mean, δ, |ε|max, H, k_p as
 // printed. δ, H, k_p are recomputed from the printed ω and ε: this checks eq. (12)-(14), not a
 // simulation. Tolerance 1.5e-3 covers the rounding of the printed inputs (the 0° row prints
 // δ = 0.5, H = 0.78, k_p = 1.03 with fewer digits; the 10° row's δ = 0.4888 is 0.48859).

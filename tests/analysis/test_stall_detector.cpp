@@ -6,7 +6,7 @@
 using namespace rollerdyn;
 
 namespace {
-constexpr double kSync = 104.72 / 9.8;  // ω0/u of seed 000 [rad/s]
+constexpr double kSync = 104.72 / 9.8;  // ω0/u of Loveikin, Pochka, Romasevych (2018) [rad/s]
 }
 
 TEST(StallDetector, StartFromRestThatSpinsUpIsNotAStall) {

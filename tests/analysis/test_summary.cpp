@@ -134,7 +134,7 @@ TEST(Summary, TurningCrankIsReportedAsTurning) {
   EXPECT_EQ(j["status"], "completed");
 }
 
-// A crank that swings back and forth (seed 000 at small Δφ): the run completes, but the summary
+// A crank that swings back and forth (Loveikin, Pochka, Romasevych (2018) at small Δφ): the run completes, but the summary
 // must say that the crank does not turn, in crank_motion and in the status line.
 TEST(Summary, RockingCrankIsReportedInStatus) {
   RunResult run = testRun();

@@ -107,7 +107,7 @@ TEST(BenchRun, InvalidSettingIsAFailedRowNotAnException) {
   EXPECT_NO_THROW(m = measure(shortScene(), {"multibody", "NoSuchIntegrator", 1e-6, 0}, Budget{}, 1));
   EXPECT_EQ(m.outcome, Outcome::Failed);
   EXPECT_NE(m.status.find("NoSuchIntegrator"), std::string::npos) << m.status;
-  // Baranov needs a rigid coupling; the seed 000 scene is elastic.
+  // Baranov needs a rigid coupling; the Loveikin, Pochka, Romasevych (2018) scene is elastic.
   EXPECT_NO_THROW(m = measure(shortScene(), {"reduced", "baranov", 0, 0.01}, Budget{}, 1));
   EXPECT_EQ(m.outcome, Outcome::Failed);
 }

@@ -152,7 +152,7 @@ TEST(ComparisonJson, ContractKeys) {
 }
 
 TEST(ModelDifferences, ShippedSeed000SceneDiffersInFrictionAndRods) {
-  // Seed 000 as shipped: distributed rods and guide friction f = 0.008.
+  // Loveikin, Pochka, Romasevych (2018) as shipped: distributed rods and guide friction f = 0.008.
   const Scene sc = test_scenes::seed000Scene();
   const auto d = modelDifferences(sc);
   EXPECT_TRUE(hasTopic(d, "reactions"));

@@ -1,6 +1,6 @@
 // Hard cases of issue #4: one test per case, each running both models at an accuracy a and at
 // a/10 and asserting no exception/NaN, constraint error, energy audit and convergence
-// (HardCaseSupport.h explains every tolerance). Machine: seed 000 (tests/support/Seed000Scene.h:
+// (HardCaseSupport.h explains every tolerance). Machine: Loveikin, Pochka, Romasevych (2018) (tests/support/Seed000Scene.h:
 // four carts on one side, Δφ = 90°, elastic damped coupling, roller forces as printed, guide
 // friction, gravity) unless a case says otherwise. Runs are kept short (0.5 ... 1.5 s of machine
 // time) except where the case itself is about length (100 and 1000 revolutions).
@@ -34,7 +34,7 @@ void noLoads(Scene& s) {
 }
 
 // Coupling stiffness 1e9 N·m/rad (5000x the paper's): torsional frequency
-// p0 = √(c·(J1 + J2)/(J1·J2)) ≈ 4.5e3 rad/s (seed 002 eq. (10)), ~400x the crank speed, so an
+// p0 = √(c·(J1 + J2)/(J1·J2)) ≈ 4.5e3 rad/s (Dyomin (two rotors) eq. (10)), ~400x the crank speed, so an
 // explicit integrator's step is bounded by stability, not accuracy. Damped (k = 8000).
 //
 // History: this case found that the multibody coupling torque carried errors of order c·a (the
@@ -77,7 +77,7 @@ TEST(HardCases, FreeMachineConservesEnergyOver100Revolutions) {
   s.initial.twist = 1e-3;
   s.simulation.t_end = 100 * 2.0 * M_PI / 10.0;  // 100 revolutions at ~10 rad/s
   s.simulation.output_step = 0.05;
-  // The undamped coupling mode (p0 ≈ 88 rad/s, seed 002 eq. (10)) runs through ~880 periods and
+  // The undamped coupling mode (p0 ≈ 88 rad/s, Dyomin (two rotors) eq. (10)) runs through ~880 periods and
   // its phase error grows with every one of them, so the run claims less than a 1 s run does.
   // Measured against the reduced model at a = 1e-10 (model/balanced-4cart.yaml machine, same
   // case, before commit 21ac486): crank speed error over the run 4.2e3·a (multibody) and
@@ -109,7 +109,7 @@ TEST(HardCases, AllCartsInPhase) {
 }
 
 // Overload beyond the breakdown torque: the roller forces oppose the velocity (the other
-// reading of seed 000), four carts need ≈ 8.1 kN·m mean crank torque against ≈ 4.6 kN·m at
+// reading of Loveikin, Pochka, Romasevych (2018)), four carts need ≈ 8.1 kN·m mean crank torque against ≈ 4.6 kN·m at
 // breakdown. The run must end early with "motor stalled at t = ..." and complete = false, not
 // blow up or hang.
 TEST(HardCases, OverloadStallsWithClearStatus) {
@@ -148,7 +148,7 @@ TEST(HardCases, StartFromRest) {
   }
 }
 
-// Exactly at synchronous speed: slip s = 0, where seed 000 eq. (37) as printed divides by zero
+// Exactly at synchronous speed: slip s = 0, where Loveikin, Pochka, Romasevych (2018) eq. (37) as printed divides by zero
 // and the motor torque is 0. No loads, no gravity: the machine starts at ω0/u and the motor only
 // answers the speed ripple of J(φ), crossing s = 0 in both directions (motor and generator).
 TEST(HardCases, RunningAtSynchronousSpeed) {
@@ -207,8 +207,8 @@ Samples sampleMultibody(const Scene& s, double block, int blocks) {
 }
 
 // 1000 revolutions (≈ 590 s of machine time): no drift of the constraint error or of the energy
-// audit. Inherently long, so the leanest honest machine: two carts on opposite sides (seed 004's
-// layout), massless rods (one rod-length constraint each), rigid coupling (1 DOF), the seed 000
+// audit. Inherently long, so the leanest honest machine: two carts on opposite sides (Loveikin and Pochka's (2007)
+// layout), massless rods (one rod-length constraint each), rigid coupling (1 DOF), the Loveikin, Pochka, Romasevych (2018)
 // motor, roller forces as printed and gravity; no guide friction (its sign change at every
 // reversal, tanh with v_s = 1 mm/s, would double the steps per revolution without bearing on
 // drift). Started at nominal speed. Multibody at a = 1e-5 and 1e-6 (about 15 s and 27 s of CPU

@@ -10,7 +10,7 @@
 namespace rollerdyn {
 namespace {
 
-// 4. Energy balance on the full seed 000 scene: Kloss motor, elastic coupling with damping,
+// 4. Energy balance on the full Loveikin, Pochka, Romasevych (2018) scene: Kloss motor, elastic coupling with damping,
 //    roller loads, guide friction, gravity, distributed rods, over 1 s from rest (the start-up,
 //    where the flows are largest). Every flow is integrated alongside the equations of motion
 //    (EnergyMeter), so the residual is global integration error, not quadrature of samples.

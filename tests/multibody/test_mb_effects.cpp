@@ -59,12 +59,12 @@ TEST(MultibodyEffects, SwitchedOffEffectsAreNotBuilt) {
   const Scene base = test_scenes::seed000Scene();
   const MultibodyModel full(base);
   const MultibodyInventory& b = full.inventory();
-  // Seed 000: motor side + crankshaft + 4 rods + 4 carts; two loop equations per distributed rod.
+  // Loveikin, Pochka, Romasevych (2018): motor side + crankshaft + 4 rods + 4 carts; two loop equations per distributed rod.
   EXPECT_EQ(join(b.force_elements), "KlossMotor,ElasticCoupling(spring+damper),Gravity,RollerLoads,GuideFriction");
   EXPECT_EQ(b.bodies, 10);
   EXPECT_EQ(b.mobilities, 10);
   EXPECT_EQ(b.constraint_equations, 8);
-  EXPECT_EQ(b.degrees_of_freedom, 2);  // motor angle and crank angle (seed 000 eq. (58))
+  EXPECT_EQ(b.degrees_of_freedom, 2);  // motor angle and crank angle (Loveikin, Pochka, Romasevych (2018) eq. (58))
   EXPECT_EQ(b.effects, base.effects());
 
   struct Case {
@@ -209,7 +209,7 @@ TEST(MultibodyEffects, EachEffectChangesTheResultAsExpected) {
     });
   }
   {  // Roller loads (f = 0 so that friction does not change with them): ΣX gives
-     // ΔF_rod = H'/cos β, ΣY gives Δ(N1 + N2) = ΔF_rod·sin β + R1 + R2 (seed 000 eq. (10)).
+     // ΔF_rod = H'/cos β, ΣY gives Δ(N1 + N2) = ΔF_rod·sin β + R1 + R2 (Loveikin, Pochka, Romasevych (2018) eq. (10)).
     Scene with = cart_base, without = cart_base;
     with.loads.guide_friction = without.loads.guide_friction = 0;
     without.loads.roller_force_front = without.loads.roller_force_rear = 0;
@@ -262,7 +262,7 @@ TEST(MultibodyEffects, EachEffectChangesTheResultAsExpected) {
 // 6c. Coupling damping is an effect over time: with k = 0 the start-up excites the coupling's
 //     torsional mode, p0 = √(c·(J1 + J2)/(J1·J2)) ≈ 70 rad/s, and nothing but the motor's
 //     slip characteristic damps it; with k = 8000 N·m·s/rad the mode is over-damped
-//     (δ1 = k·(J1 + J2)/(2·J1·J2) ≈ 100 1/s > p0, seed 002 eq. (9)-(10)).
+//     (δ1 = k·(J1 + J2)/(2·J1·J2) ≈ 100 1/s > p0, Dyomin (two rotors) eq. (9)-(10)).
 TEST(MultibodyEffects, CouplingDampingDampsTheTorsionalMode) {
   Scene damped = test_scenes::seed000Scene();
   damped.simulation.t_end = 0.6;
@@ -296,7 +296,7 @@ TEST(MultibodyEffects, CouplingDampingDampsTheTorsionalMode) {
 }
 
 // 7. Rigid coupling against a very stiff elastic coupling (c = 1e8 N·m/rad, about 500 times
-//    seed 000's). The stiff mode, p0 = √(c·(J1 + J2)/(J1·J2)) ≈ 1.6e3 rad/s, is critically damped
+//    Loveikin, Pochka, Romasevych's (2018)). The stiff mode, p0 = √(c·(J1 + J2)/(J1·J2)) ≈ 1.6e3 rad/s, is critically damped
 //    with k = 2·√(c·J1·J2/(J1 + J2)) ≈ 1.25e5 N·m·s/rad, so only the quasi-static twist
 //    ψ ≈ T/c remains: with coupling torques T ≲ 5 kN·m, ψ ≲ 5e-5 rad. The crank speed then
 //    differs from the rigid drive's by the twist rate seen from the crank,

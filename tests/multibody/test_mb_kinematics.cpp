@@ -1,5 +1,5 @@
-// Multibody kinematics against the closed-form slider-crank (physics/SliderCrank.h, seed 000
-// eq. (40)-(47), seed 004 eq. (6)), and the assembly branch of every cart.
+// Multibody kinematics against the closed-form slider-crank (physics/SliderCrank.h, Loveikin, Pochka, Romasevych (2018)
+// eq. (40)-(47), Loveikin and Pochka (2007) eq. (6)), and the assembly branch of every cart.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,7 +22,7 @@ std::string label(const Scene& sc) {
          " r/l=" + std::to_string(sc.crank.radius / sc.rods.length);
 }
 
-// Seed 000 drive with the crankshaft speed prescribed: the motor is switched off and the
+// Loveikin, Pochka, Romasevych (2018) drive with the crankshaft speed prescribed: the motor is switched off and the
 // coupling rigid, so the crank angle is φ0 + ω·t exactly and every cart's motion is pure
 // kinematics. Loads, friction and gravity stay on: they must not move a prescribed mechanism.
 Scene prescribedScene(RodModel rods, double t_end) {
@@ -41,7 +41,7 @@ Scene prescribedScene(RodModel rods, double t_end) {
 // 1. Positions, velocities and accelerations of the carts equal the closed form
 //    x_B(θ_j), ∂x_B/∂θ·ω, ∂²x_B/∂θ²·ω² (θ_j = φ + j·Δφ, ω constant so there is no ε term).
 TEST(MultibodyKinematics, CartsFollowClosedFormSliderCrank) {
-  const double omega = 10.0;  // [rad/s], about the seed 000 running speed
+  const double omega = 10.0;  // [rad/s], about the Loveikin, Pochka, Romasevych (2018) running speed
   for (RodModel rods : kRodModels) {
     Scene sc = prescribedScene(rods, 0.7);  // 0.7 s at 10 rad/s: more than one revolution
     sc.initial.crank_angle = 0.3;
@@ -143,7 +143,7 @@ TEST(MultibodyKinematics, CartsStayOnTheirSideNearDeadCentres) {
             << " m\n";
 }
 
-// 2b. The same with the dynamics free: the seed 000 motor and elastic coupling drive the
+// 2b. The same with the dynamics free: the Loveikin, Pochka, Romasevych (2018) motor and elastic coupling drive the
 //     r/l = 0.95 machine from a dead centre with alternating sides. The crank speed is no longer
 //     constant, so only the side and the branch (x against the closed form at the actual φ)
 //     are checked.

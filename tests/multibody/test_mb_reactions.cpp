@@ -1,5 +1,5 @@
 // Guide reactions and rod forces of the multibody model against the quasi-static cart
-// equilibrium of seed 000 eq. (10)-(25) (src/reduced/CartStatics.h), and the dynamic (inertial)
+// equilibrium of Loveikin, Pochka, Romasevych (2018) eq. (10)-(25) (src/reduced/CartStatics.h), and the dynamic (inertial)
 // part of the guide reactions at running speed.
 #include <gtest/gtest.h>
 
@@ -46,7 +46,7 @@ std::string label(const Scene& sc) {
          " f=" + std::to_string(sc.loads.guide_friction) + " h=" + std::to_string(sc.carts.geometry.com_height);
 }
 
-// The four-cart seed 000 scene with alternating sides, so every comparison covers σ = +1 and -1.
+// The four-cart Loveikin, Pochka, Romasevych (2018) scene with alternating sides, so every comparison covers σ = +1 and -1.
 Scene reactionScene(RodModel rods, RollerForceDirection dir, double f) {
   Scene sc = test_scenes::seed000Scene();
   sc.rods.model = rods;
@@ -87,7 +87,7 @@ Expected expectedStatics(const Scene& sc, const Snapshot& s, int j, bool with_in
 // the whole rod-on-cart force on B->A), while CartStatics splits that force into half the rod
 // weight, vertical at B, plus an axial force F along the rod, which is the axial force at
 // mid-rod. The end force is (0, -m·g/2) + F·e_BA and e_BA·ŷ = sin β, so the two differ by
-// exactly m_rod·g/2·sin β (≤ 79 N for seed 000); split and massless rods carry no such term.
+// exactly m_rod·g/2·sin β (≤ 79 N for Loveikin, Pochka, Romasevych (2018)); split and massless rods carry no such term.
 double rodEndCorrection(const Scene& sc, double beta) {
   return sc.rods.model == RodModel::Distributed ? -0.5 * sc.rods.mass * sc.loads.gravity * std::sin(beta) : 0.0;
 }
@@ -253,7 +253,7 @@ TEST(MultibodyReactions, SlowRunMatchesCartStaticsAwayFromReversal) {
 
 // 8. At running speed the carts' inertia changes the guide reactions. For a translating cart the
 //    dynamic reactions are exactly the static ones with the d'Alembert force -m_B·a' applied at
-//    the centre of mass (height com_height above B). Seed 000 eq. (10) leaves inertia out.
+//    the centre of mass (height com_height above B). Loveikin, Pochka, Romasevych (2018) eq. (10) leaves inertia out.
 //    Derivation (f = 0; ΣX, ΣY, ΣM of CartStatics.h with Fin = -m·a'):
 //      ΔF = Fin/cos β,  Δ(N1 + N2) = Fin·tan β,  Δ[N1(p - b) + N2(p + b)] = -h·Fin
 //      => Δ(N_rear - N_front) = m·a'·(h + p·tan β)/b.

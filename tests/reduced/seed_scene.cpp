@@ -11,10 +11,10 @@ namespace test {
 Scene seed000LikeScene() {
   Scene s = test_scenes::seed000Scene();
   s.name = "seed000-like";
-  s.source = "seed 000 (four carts, elastic drive), parameters after eq. (39)";
+  s.source = "Loveikin, Pochka, Romasevych (2018) (four carts, elastic drive), parameters after eq. (39)";
   s.simulation.output_step = 1e-3;
   s.crank.inertia_per_crank = 0.0;              // J'_K is not given by the paper
-  s.rods.model = RodModel::Split;               // the paper's lumping, seed 000 eq. (2)-(3)
+  s.rods.model = RodModel::Split;               // the paper's lumping, Loveikin, Pochka, Romasevych (2018) eq. (2)-(3)
   s.carts.geometry.com_height = 0.3;            // non-zero, so inertia moments are exercised
   s.motor.critical_slip = 0.1145;               // as printed (the formula gives 0.1146)
   s.reduced.baranov_step = 0.5 * M_PI / 180.0;

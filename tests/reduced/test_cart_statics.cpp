@@ -1,4 +1,4 @@
-// Cart statics: seed 000 eq. (10), closed forms (14), (18), (22).
+// Cart statics: Loveikin, Pochka, Romasevych (2018) eq. (10), closed forms (14), (18), (22).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,7 +34,7 @@ TEST(CartStatics, ReproducesSeed000ClosedFormsWithZeroDepth) {
   int compared = 0;
   for (double beta = -0.2527; beta <= 0.2527; beta += 0.0023) {
     const CartStaticsResult r = solveCartStatics(s, beta, F01 + F02, +1.0);
-    // seed 000 eq. (14)
+    // Loveikin, Pochka, Romasevych (2018) eq. (14)
     const double F = ((R1 + R2 - G) * f + F01 + F02) / (std::cos(beta) - f * std::sin(beta));
     // eq. (18)
     const double N2 = (R1 * (g.b - g.a - fd2) + R2 * (g.b + g.a - fd2) - G * (g.b - fd2) +
@@ -42,7 +42,7 @@ TEST(CartStatics, ReproducesSeed000ClosedFormsWithZeroDepth) {
     // eq. (22)
     const double N1 = R1 + R2 + F * std::sin(beta) - N2 - G;
     // Eq. (10) takes the friction as f·(N1 + N2); that is f·(|N1| + |N2|) only while both guide
-    // reactions are positive. At the extreme rod angle β < -0.24 rad the seed 000 numbers give
+    // reactions are positive. At the extreme rod angle β < -0.24 rad the Loveikin, Pochka, Romasevych (2018) numbers give
     // N1 < 0 (front guide roller lifted against the upper guide) and eq. (14)-(22) would count
     // that reaction's friction as negative; there the model keeps friction dissipative.
     if (N1 > 0 && N2 > 0) {
@@ -60,7 +60,7 @@ TEST(CartStatics, ReproducesSeed000ClosedFormsWithZeroDepth) {
   EXPECT_GT(compared, 200);
 }
 
-// Residual of seed 000 eq. (10) generalised (see CartStatics.h), written out independently.
+// Residual of Loveikin, Pochka, Romasevych (2018) eq. (10) generalised (see CartStatics.h), written out independently.
 void expectEquilibrium(const Scene& s, double beta, double H, double phi_f, double Fin,
                        const CartStaticsResult& r) {
   const CartGeometry& g = s.carts.geometry;
@@ -126,7 +126,7 @@ TEST(CartStatics, FrictionOpposesTheGivenDirectionEvenWhenAReactionIsNegative) {
 }
 
 TEST(CartStatics, WithoutGuideBaseOnlyTheSumOfReactionsIsDetermined) {
-  // b = 0 is a valid scene when there is no guide friction (geometry not given, seed 004).
+  // b = 0 is a valid scene when there is no guide friction (geometry not given, Loveikin and Pochka (2007)).
   Scene s = test::seed000LikeScene();
   s.carts.geometry.b = 0.0;
   for (double f : {0.0, 0.008}) {

@@ -178,7 +178,7 @@ TEST(ReducedDynamics, BaranovRejectsElasticCoupling) {
 }
 
 TEST(ReducedDynamics, OverloadedMachineReportsStallWithoutThrowing) {
-  // Digest: with forces opposing velocity the four seed 000 carts need ≈ 8.1 kN·m mean torque,
+  // Digest: with forces opposing velocity the four Loveikin, Pochka, Romasevych (2018) carts need ≈ 8.1 kN·m mean torque,
   // above the ≈ 4.6 kN·m the motor gives at breakdown.
   Scene s = test::seed000LikeScene();
   s.loads.roller_force_direction = RollerForceDirection::OpposesVelocity;

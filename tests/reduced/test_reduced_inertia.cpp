@@ -13,7 +13,7 @@ Scene seed000LikeScene();
 
 namespace {
 
-// Seed 004 set-up: two carts on opposite sides, Δφ = 90°, distributed rods q = 80 kg/m,
+// Loveikin and Pochka (2007) set-up: two carts on opposite sides, Δφ = 90°, distributed rods q = 80 kg/m,
 // one-mass (rigid) drive, I_o = 0.504 kg·m² reduced by u².
 Scene seed004LikeScene() {
   Scene s = test::seed000LikeScene();
@@ -36,7 +36,7 @@ TEST(ReducedInertia, MatchesSeed004Eq9ForTwoCartsOnOppositeSides) {
   const double r = 0.2, l = 0.8, q = 80, u = 9.8, Io = 0.138 + 0.32 + 0.046, mc = 1000;
   const double Is = q * l * l * l / 12;
   for (double phi = -3.3; phi < 7.0; phi += 0.173) {
-    // seed 004 eq. (6), (9) written out, γ = rod angle of cart 2, crank at φ + π/2
+    // Loveikin and Pochka (2007) eq. (6), (9) written out, γ = rod angle of cart 2, crank at φ + π/2
     const double S1 = std::sin(phi), C1 = std::cos(phi);
     const double S2 = std::sin(phi + M_PI / 2), C2 = std::cos(phi + M_PI / 2);
     const double w1 = std::sqrt(1 - r * r / (l * l) * S1 * S1);
@@ -122,7 +122,7 @@ TEST(ReducedInertia, ExactAndTruncatedKinematicsDifferByThirdOrderInRoverL) {
 }
 
 TEST(ReducedLoads, LoadTorqueEqualsRodForceMomentOnTheCrank) {
-  // Virtual work in world x must agree with the rod force's moment on the crank pin, seed 000
+  // Virtual work in world x must agree with the rod force's moment on the crank pin, Loveikin, Pochka, Romasevych (2018)
   // eq. (26)-(30) for σ = +1 (F·r·sin(θ + β)); for σ = -1 the mirrored rod gives
   // F·r·(σ·sin θ·cos β + cos θ·sin β).
   for (auto dir : {RollerForceDirection::AsPrinted, RollerForceDirection::OpposesVelocity}) {
@@ -149,7 +149,7 @@ TEST(ReducedLoads, LoadTorqueEqualsRodForceMomentOnTheCrank) {
 }
 
 TEST(ReducedLoads, OpposingRollerForcesAverageToSeed004MeanTorque) {
-  // seed 004: two carts, F0 = 3562 N opposing velocity, mean M_o = 2·F0·2r/π = 907 N·m.
+  // Loveikin and Pochka (2007): two carts, F0 = 3562 N opposing velocity, mean M_o = 2·F0·2r/π = 907 N·m.
   Scene s = seed004LikeScene();
   s.loads.roller_force_front = 3562;
   s.loads.roller_force_rear = 0;

@@ -31,7 +31,7 @@ TEST(HtmlReport, Escapes) { EXPECT_EQ(htmlEscape("<a href=\"x\">&'"), "&lt;a hre
 ReportContent content(const fs::path& png) {
   ReportContent c;
   c.scene_name = "balanced-4cart";
-  c.scene_source = "seed 000 <script>alert(1)</script>";
+  c.scene_source = "Loveikin, Pochka, Romasevych (2018) <script>alert(1)</script>";
   c.scene_path = "model/balanced-4cart.yaml";
   c.overrides = {"crank.offset_deg=60"};
   c.effects = {"kloss_motor", "elastic_coupling"};
@@ -63,7 +63,7 @@ TEST(HtmlReport, PageIsSelfContainedAndComplete) {
   EXPECT_NE(html.find("src=\"data:image/png;base64," + base64Encode("\x89PNG\r\n\x1a\nfake") + "\""), std::string::npos);
   for (const char* remote : {"http://", "https://", "<script", "<link", "@import", "url("})
     EXPECT_EQ(html.find(remote), std::string::npos) << remote;
-  EXPECT_NE(html.find("seed 000 &lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+  EXPECT_NE(html.find("Loveikin, Pochka, Romasevych (2018) &lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
   // Incomplete run: a red banner with the status.
   EXPECT_NE(html.find("class=\"status bad\">Run INCOMPLETE: interrupted at t = 1.5 s"), std::string::npos);
   // Reactions: in reactions.csv order, min and max shown.

@@ -21,7 +21,7 @@ std::string modelPath(const std::string& name) {
 TEST(SceneModels, Balanced4CartMatchesSeed000) {
   const Scene s = parseSceneFile(modelPath("balanced-4cart.yaml"));
   EXPECT_EQ(s.name, "balanced-4cart");
-  EXPECT_NE(s.source.find("000_1853cd6b12bdbd6c"), std::string::npos);
+  EXPECT_NE(s.source.find("Romasevych Yu.O. (2018)"), std::string::npos);
   EXPECT_EQ(s.carts.count, 4);
   EXPECT_EQ(s.carts.side, (std::vector<int>{1, 1, 1, 1}));
   EXPECT_DOUBLE_EQ(s.crank.offset, M_PI / 2);
@@ -109,7 +109,7 @@ TEST(SceneDerived, CriticalSlipFromNominalSpeedAndOverloadRatio) {
   const double s_n = 1.0 - 102.1 / 104.72;
   const double expected = s_n * (2.4 + std::sqrt(2.4 * 2.4 - 1.0));
   EXPECT_NEAR(parseSceneText(y, "t.yaml").motor.critical_slip, expected, 1e-15);
-  EXPECT_NEAR(expected, 0.1146, 1e-4);  // seed 000 prints 0.1145
+  EXPECT_NEAR(expected, 0.1146, 1e-4);  // Loveikin, Pochka, Romasevych (2018) prints 0.1145
 }
 
 TEST(SceneDerived, DocumentedDefaults) {

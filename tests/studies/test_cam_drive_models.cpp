@@ -1,4 +1,4 @@
-// The cam drive (drive.type: cam, seed 001) in the scene, the reduced model and the multibody
+// The cam drive (drive.type: cam, Loveikin and Pochka (cam drive)) in the scene, the reduced model and the multibody
 // model, and the comparison with a crank drive of equal stroke and cycle time.
 #include <gtest/gtest.h>
 
@@ -54,7 +54,7 @@ TEST(CamDrive, ReducedModelUsesTheCamLaw) {
       EXPECT_DOUBLE_EQ(p.d2x_B, sigma * c.d2x);
       EXPECT_EQ(p.beta, 0.0);
     }
-    // J_n2 = J_cams + Σ m·x'² (seed 000 eq. (9) with the cam's transfer function).
+    // J_n2 = J_cams + Σ m·x'² (Loveikin, Pochka, Romasevych (2018) eq. (9) with the cam's transfer function).
     const double J = 2 * 15.0 + 1000 * (std::pow(camMotion(phi, 0.4).dx, 2) + std::pow(camMotion(phi + M_PI / 2, 0.4).dx, 2));
     EXPECT_NEAR(m.crankSideInertia(phi), J, 1e-12 * J);
   }
@@ -124,7 +124,7 @@ TEST(CamVsCrank, PeaksFollowTheKinematicsOfEqualStrokeAndCycleTime) {
   const double ratio = (6 * 0.4 / (5 * M_PI)) / (0.2 * 1.0307);
   EXPECT_NEAR(c.cam.coupling_torque_max / c.crank.coupling_torque_max, ratio, 0.03);
   // The rolling resistance (2·7962 N) dominates both drive forces; the cam's is horizontal,
-  // the rod's has the 1/cos β of seed 000 eq. (14) and smaller inertial terms: within 2 %.
+  // the rod's has the 1/cos β of Loveikin, Pochka, Romasevych (2018) eq. (14) and smaller inertial terms: within 2 %.
   EXPECT_NEAR(c.cam.force_abs_peak, c.crank.force_abs_peak, 0.02 * c.crank.force_abs_peak);
   EXPECT_GT(c.cam.force_abs_peak, 15924.0);
 }

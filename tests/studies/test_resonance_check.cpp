@@ -1,4 +1,4 @@
-// Resonance check of the elastic coupling (seed 002 eq. (10)) for installation scenes.
+// Resonance check of the elastic coupling (Dyomin (two rotors) eq. (10)) for installation scenes.
 #include <gtest/gtest.h>
 
 #include <cmath>

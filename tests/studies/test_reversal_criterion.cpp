@@ -1,4 +1,4 @@
-// The optimality criterion of seed 001: I_Z = (m/2)∫ (x⁗)² dt (eq. (1)-(2); the paper's
+// The optimality criterion of Loveikin and Pochka (cam drive): I_Z = (m/2)∫ (x⁗)² dt (eq. (1)-(2); the paper's
 // "acceleration of the third order" is the fourth derivative, see physics/CamMotionLaw.h), its
 // closed forms (11), (17), (19) and the optimum x1 = ẋ_y·t1/2 (eq. (20)-(21)).
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@ double gauss4(const std::function<double(double)>& f, double a, double b) {
   return 0.5 * (b - a) * s;
 }
 
-const double kMass = 1000.0;  // seed 000 cart [kg]
+const double kMass = 1000.0;  // Loveikin, Pochka, Romasevych (2018) cart [kg]
 
 TEST(ReversalCriterion, ClosedFormsEq11And17MatchTheIntegralOfTheSnap) {
   // Any x1, ẋ_y, t: the closed forms are the integral of (m/2)·(x⁗)² of eq. (10) / (16).

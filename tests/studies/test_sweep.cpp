@@ -54,7 +54,7 @@ TEST(Sweep, BadPointIsReportedAndTheSweepGoesOn) {
   EXPECT_NE(r.points[2].status.find("crank.offset_deg"), std::string::npos);
   EXPECT_TRUE(std::isnan(r.points[2].metric("delta")));
   EXPECT_TRUE(r.points[3].complete);
-  // Seed 004's table and our model agree that 90° is the best of these (δ 0.151 vs 0.5 / 0.49).
+  // Loveikin and Pochka's (2007) table and our model agree that 90° is the best of these (δ 0.151 vs 0.5 / 0.49).
   ASSERT_TRUE(r.optimum.found);
   EXPECT_EQ(r.optimum.index, 1u);
   EXPECT_LT(r.points[1].metric("delta"), r.points[0].metric("delta"));

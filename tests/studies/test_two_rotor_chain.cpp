@@ -1,4 +1,4 @@
-// Seed 002: two rotors on an elastic chain. The Simbody simulation (with the project's
+// Dyomin (two rotors): two rotors on an elastic chain. The Simbody simulation (with the project's
 // ElasticCoupling element) against the closed-form response, corrected and as printed.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// A scene with the parameters of seed 000 (four carts, Δφ = 90°, elastic coupling), built in
+// A scene with the parameters of Loveikin, Pochka, Romasevych (2018) (four carts, Δφ = 90°, elastic coupling), built in
 // code so tests of the models do not depend on the scene parser. Values and sources as in
 // model/balanced-4cart.yaml; tests change single fields from here.
 #pragma once
@@ -12,7 +12,7 @@ namespace rollerdyn::test_scenes {
 inline Scene seed000Scene() {
   Scene s;
   s.name = "seed000-test";
-  s.source = "seed 000 (test copy)";
+  s.source = "Loveikin, Pochka, Romasevych (2018) (test copy)";
   s.simulation = {2.0, 1e-6, "RungeKuttaMerson", 0.005, 1e-6, 5.0};
   s.initial = {0.0, 0.0, 0.0};
   s.crank = {0.2, M_PI / 2, 0.5, 0.0};

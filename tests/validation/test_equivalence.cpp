@@ -65,7 +65,7 @@ TEST(Equivalence, FourCartsElasticSplitRodsNoFriction) {
 }
 
 TEST(Equivalence, TwoCartsOppositeSidesRigidDrive) {
-  // Accuracy 1e-10 here, as in the validation suite: with loads opposing the velocity (seed 004,
+  // Accuracy 1e-10 here, as in the validation suite: with loads opposing the velocity (Loveikin and Pochka (2007),
   // tanh(v/v_s), v_s = 1 mm/s) the load flips within ~0.1 ms at every cart reversal and the rigid
   // drive's coupling torque M_motor - J_n1·ε carries the acceleration's error; at 1e-9 this 2 s
   // run reaches 7e-7, too close to the target to test reliably. The suite's convergence study
@@ -81,7 +81,7 @@ TEST(Equivalence, TwoCartsOppositeSidesRigidDrive) {
 
 TEST(Equivalence, DistributedRodsChangeReactionsNotMotion) {
   // Distributed rods: the reduced model's m(x_S'² + y_S'²) + I_S·β'² is the rods' exact kinetic
-  // energy (seed 004 eq. (9)), so the motion must agree as for split rods; the reactions differ
+  // energy (Loveikin and Pochka (2007) eq. (9)), so the motion must agree as for split rods; the reactions differ
   // even kinetostatically by the rods' own inertial forces (m_rod·r·ω²/2 ≈ 730 N against
   // reactions of ~15 kN: a few per cent).
   const Scene sc = parseSceneFile(modelFile("balanced-4cart.yaml"),

@@ -26,7 +26,7 @@ RunMetrics reduced(const std::string& file, const std::vector<std::string>& sets
 }  // namespace
 
 TEST(PaperTrends, Seed004OptimalOffsetIsNinetyDegrees) {
-  // Seed 004 (conclusions and table): of the offsets 0...180°, δ is smallest at Δφ = π/2.
+  // Loveikin and Pochka (2007) (conclusions and table): of the offsets 0...180°, δ is smallest at Δφ = π/2.
   // A 30° grid is enough to locate it; each run reaches steady state (checked).
   double best = 1e9, at = -1;
   for (double x = 0; x <= 180; x += 30) {
@@ -41,7 +41,7 @@ TEST(PaperTrends, Seed004OptimalOffsetIsNinetyDegrees) {
 }
 
 TEST(PaperTrends, Seed003FlywheelLowersUnevenness) {
-  // Seed 003 (Table 1 and text): δ, H and k_p fall steadily as the flywheel inertia grows.
+  // The energy-balanced drive paper (Table 1 and text): δ, H and k_p fall steadily as the flywheel inertia grows.
   double last_delta = 1e9, last_H = 1e9;
   for (double inertia : {0.0, 100.0, 500.0, 1000.0}) {
     const RunMetrics m = reduced("energy-balanced-3cart.yaml", {"flywheel.inertia=" + std::to_string(inertia)});
@@ -54,7 +54,7 @@ TEST(PaperTrends, Seed003FlywheelLowersUnevenness) {
 }
 
 TEST(PaperTrends, Seed000DampingLowersCouplingSwing) {
-  // Seed 000 (Table 1): at Δφ = 90° the larger damping k = 8000 gives smaller coupling swings
+  // Loveikin, Pochka, Romasevych (2018) (Table 1): at Δφ = 90° the larger damping k = 8000 gives smaller coupling swings
   // than k = 2000 (torque and twist).
   const RunMetrics soft = reduced("balanced-4cart.yaml", {"coupling.damping=2000"});
   const RunMetrics hard = reduced("balanced-4cart.yaml", {"coupling.damping=8000"});

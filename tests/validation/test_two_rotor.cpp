@@ -1,9 +1,9 @@
-// Seed 002's two rotors on an elastic, damped link against the multibody ElasticCoupling element
+// Dyomin's two rotors on an elastic, damped link against the multibody ElasticCoupling element
 // (src/multibody/ElasticCoupling.h), through the Simbody system of src/compare/TwoRotorCheck.h.
 // The expected values are computed HERE from the paper's formulas (eq. (7)-(10), (14) and the
 // steady response of a damped oscillator in complex form), not by the code under test.
 //
-// Parameters (seed 002 prints none; the seed 000 drive of the validation report, seed000Drive()):
+// Parameters (Dyomin (two rotors) prints none; the Loveikin, Pochka, Romasevych (2018) drive of the validation report, seed000Drive()):
 // J1 = 0.766·9.8² kg·m², J2 = 100 kg·m², k = 2e5 N·m/rad, b = 2000 N·m·s/rad, M1 = 1000 N·m,
 // α = 30°, M_c = M1(π - 2α)/π, ω = 10.68 rad/s.
 //
@@ -55,7 +55,7 @@ void expectedHarmonic(const TwoRotorParameters& p, int n, double& a, double& b) 
 TEST(TwoRotor, FreeOscillationAtNaturalFrequencyEq10) {
   TwoRotorParameters p = seed000Drive();
   p.b = 0.0;
-  const double p0 = std::sqrt(p.k * (p.J1 + p.J2) / (p.J1 * p.J2));  // seed 002, eq. (10)
+  const double p0 = std::sqrt(p.k * (p.J1 + p.J2) / (p.J1 * p.J2));  // Dyomin (two rotors), eq. (10)
   const FreeOscillationMeasurement m = measureFreeOscillation(p, 0.01, 40, 64, 1e-10);
   EXPECT_EQ(m.periods, 40);
   EXPECT_NEAR(m.frequency / p0, 1.0, 1e-6);

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates the study results of issue #5 in validation/studies/: the papers' parameter studies
 # run with `rollerdyn sweep`, each merged with the published table (validation/published/) into
-# one CSV (ours beside theirs), the cam-vs-crank comparison (seed 001) and the two-rotor chain
-# check (seed 002). The explanations of the gaps are the *.md files next to the CSVs; they quote
+# one CSV (ours beside theirs), the cam-vs-crank comparison (Loveikin and Pochka (cam drive)) and the two-rotor chain
+# check (Dyomin (two rotors)). The explanations of the gaps are the *.md files next to the CSVs; they quote
 # numbers from the last run and are written by hand.
 #
 #   bash validation/studies/run.sh            # from the repository root, after building
@@ -52,7 +52,7 @@ join_tables() {
   ' "$1" "$4"
 }
 
-# --- seed 004: crank offset 0...180 deg, two carts on opposite sides, rigid drive ---------------
+# --- Loveikin and Pochka (2007): crank offset 0...180 deg, two carts on opposite sides, rigid drive ---------------
 sweep model/recuperative-2cart.yaml --param crank.offset_deg --values 0:180:10 --model reduced \
   --minimize delta --out $OUT/seed004_dphi
 sweep model/recuperative-2cart.yaml --param crank.offset_deg --values 0,45,90,135,180 --model multibody \
@@ -63,7 +63,7 @@ join_tables $OUT/seed004_dphi/sweep.csv crank.offset_deg "$COLS" \
 join_tables $OUT/seed004_dphi_multibody/sweep.csv crank.offset_deg "$COLS" \
   $PUB/seed004_table.csv dphi_deg "delta eps_max H k_p" > $OUT/seed004_dphi_multibody.csv
 
-# --- seed 003: flywheel 0...1000 kg*m^2 on the crankshaft, three carts at 120 deg ----------------
+# --- the energy-balanced drive paper: flywheel 0...1000 kg*m^2 on the crankshaft, three carts at 120 deg ----------------
 # A flywheel slows the approach to steady state (time constant ~ J/(dM/dω)); 40 s leaves every
 # point at steady state (steady_state_reached column).
 sweep model/energy-balanced-3cart.yaml --param flywheel.inertia --values 0:1000:50 --model reduced \
@@ -71,7 +71,7 @@ sweep model/energy-balanced-3cart.yaml --param flywheel.inertia --values 0:1000:
 join_tables $OUT/seed003_flywheel/sweep.csv flywheel.inertia "$COLS" \
   $PUB/seed003_table1.csv flywheel_inertia "omega_min omega_max omega_mean delta eps_max H k_p" > $OUT/seed003_flywheel.csv
 
-# --- seed 000: crank offset 0...90 deg for coupling damping 2000 and 8000 (Table 1) -------------
+# --- Loveikin, Pochka, Romasevych (2018): crank offset 0...90 deg for coupling damping 2000 and 8000 (Table 1) -------------
 # Started at the nominal crank speed 102.1/9.8 = 10.42 rad/s, like the scenes of seeds 003/004: from
 # rest the motor's starting torque (~1 kN*m at the crank) cannot turn the as-printed roller loads
 # at 80 deg ("motor stalled at t = 0 s"). 20 s leaves >= 5 steady revolutions where there are any.
@@ -89,7 +89,7 @@ sweep model/balanced-4cart.yaml --param coupling.damping --values 2000,8000 \
 join_tables $OUT/seed000_dphi_damping_multibody/sweep.csv "crank.offset_deg coupling.damping" "$TCOLS" \
   $PUB/seed000_table1.csv "dphi_deg k" "$TPUB" > $OUT/seed000_dphi_damping_multibody.csv
 
-# --- seed 000: coupling stiffness, where is the minimum of the coupling torque swing? -----------
+# --- Loveikin, Pochka, Romasevych (2018): coupling stiffness, where is the minimum of the coupling torque swing? -----------
 # The paper finds c = 200000 N*m/rad "by a numerical experiment" before adding damping (eq. (39)),
 # so damping 0 and the scene's 8000 are both swept (Δφ = 90°, the paper's machine).
 C_VALUES=10000,25000,50000,75000,100000,125000,150000,175000,200000,225000,250000,300000,400000,600000,1000000
@@ -98,11 +98,11 @@ for k in 0 8000; do
     --set coupling.damping=$k --minimize coupling_torque_swing --out $OUT/seed000_stiffness_k$k
 done
 
-# --- seed 001: cam drive against a crank of equal stroke and cycle time --------------------------
+# --- Loveikin and Pochka (cam drive): cam drive against a crank of equal stroke and cycle time --------------------------
 "$R" cam-profile model/cam-drive.yaml --compare --model multibody --out $OUT/cam
 cp $OUT/cam/cam_vs_crank.csv $OUT/cam_vs_crank.csv
 
-# --- seed 002: two rotors on an elastic chain, simulation vs closed form ------------------------
+# --- Dyomin (two rotors): two rotors on an elastic chain, simulation vs closed form ------------------------
 "$R" chain --out $OUT/chain
 "$R" chain --omega 23.15 --out $OUT/chain_resonance3   # p0 = 69.45 rad/s ≈ 3ω
 echo "studies written to $OUT/"
