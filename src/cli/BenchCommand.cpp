@@ -6,6 +6,7 @@
 
 #include "bench/BenchStudies.h"
 #include "cli/Commands.h"
+#include "report/OutputDir.h"
 
 namespace rollerdyn::cli {
 
@@ -13,6 +14,7 @@ int runBench(const SceneArgs& args, const BenchArgs& bench) {
   const bench::SceneSource source{args.scene_path, args.overrides};
   const Scene scene = source.load();  // validates the scene (and the overrides) up front
   const std::string out_dir = bench.out_dir.empty() ? defaultOutDir(scene.name) + "/bench" : bench.out_dir;
+  prepareOutputDir(out_dir);  // before the runs: a bad --out fails now
 
   bench::BenchOptions opt;
   opt.quick = bench.quick;

@@ -11,8 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/Commands.h"
+#include "cli/UsageError.h"
 #include "io/AtomicFile.h"
 #include "report/Gnuplot.h"
+#include "report/OutputDir.h"
 #include "scene/SceneParser.h"
 #include "studies/CamStudy.h"
 
@@ -41,6 +43,7 @@ nlohmann::json responseJson(const DriveResponse& r) {
 int runCamProfile(const CamArgs& a) {
   const Scene scene = parseSceneFile(a.scene.scene_path, a.scene.overrides);
   const std::string out = a.out_dir.empty() ? defaultOutDir(scene.name) + "/cam" : a.out_dir;
+  prepareOutputDir(out);  // before the runs: a bad --out fails now
   const Table t = camProfileTable(scene, a.samples);
   writeCsvAtomic(out + "/cam_profile.csv", t);
   const double w = camReferenceSpeed(scene);
@@ -107,7 +110,7 @@ Subcommand addCamProfileCommand(CLI::App& app) {
   cmd->add_flag("--compare", args->compare,
                 "also simulate the scene with drive.type=cam and drive.type=crank and compare peaks");
   cmd->add_option("--model", args->model, "model for --compare: reduced (default) or multibody")
-      ->check(CLI::IsMember({"multibody", "reduced"}));
+      ->check(oneOf({"multibody", "reduced"}));
   cmd->footer("Example:\n  rollerdyn cam-profile model/cam-drive.yaml --compare --out out/cam");
   return {cmd, [args] { return runCamProfile(*args); }};
 }

@@ -14,6 +14,7 @@
 #include "cli/Commands.h"
 #include "io/AtomicFile.h"
 #include "report/Gnuplot.h"
+#include "report/OutputDir.h"
 #include "studies/TwoRotorChain.h"
 
 namespace rollerdyn::cli {
@@ -26,6 +27,7 @@ struct ChainArgs {
 };
 
 int runChain(const ChainArgs& a) {
+  prepareOutputDir(a.out_dir);  // before the run: a bad --out fails now
   const TwoRotorChainParams& p = a.p;
   const ChainComparison c = compareTwoRotorChain(p);
   const TwoRotorChainDerived& d = c.derived;

@@ -56,5 +56,7 @@ Subcommand addChainCommand(CLI::App& app);       // ChainCommand.cpp: `rollerdyn
 
 // out/<scene name>/ unless the user named a folder.
 std::string defaultOutDir(const std::string& scene_name);
+// `path` made absolute and normalised (summary.json's scene_path, readable from any folder).
+std::string absolutePath(const std::string& path);
 
 }  // namespace rollerdyn::cli

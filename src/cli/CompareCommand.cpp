@@ -5,6 +5,7 @@
 #include "cli/Commands.h"
 #include "compare/ModelComparison.h"
 #include "io/AtomicFile.h"
+#include "report/OutputDir.h"
 #include "scene/SceneParser.h"
 
 namespace rollerdyn::cli {
@@ -12,6 +13,7 @@ namespace rollerdyn::cli {
 int runCompare(const SceneArgs& args, const std::string& out_dir_arg) {
   const Scene scene = parseSceneFile(args.scene_path, args.overrides);
   const std::string out_dir = out_dir_arg.empty() ? defaultOutDir(scene.name) + "/compare" : out_dir_arg;
+  prepareOutputDir(out_dir, StaleOutputs::RunFigures);  // before the runs: a bad --out fails now
   CompareControl control;
   control.interrupt = &g_interrupted;
   const ModelComparison c = runComparison(scene, control);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "cli/Commands.h"
+#include "report/OutputDir.h"
 #include "report/OutputFolder.h"
 #include "report/RunFigures.h"
 #include "scene/SceneParser.h"
@@ -15,6 +16,7 @@ namespace rollerdyn::cli {
 
 int runPlot(const std::string& dir, const std::string& scene_arg, const std::vector<std::string>& overrides) {
   const OutputFolder folder = readOutputFolder(dir);
+  prepareOutputDir(dir, StaleOutputs::Keep, "plot folder");  // figures/ goes in it; drawing removes stale ones
   // The Kloss curve needs the motor data: --scene, else the scene_path summary.json records.
   std::unique_ptr<Scene> scene;
   std::string scene_path = scene_arg;

@@ -10,6 +10,7 @@
 #include "io/AtomicFile.h"
 #include "multibody/MultibodySimulation.h"
 #include "report/HtmlReport.h"
+#include "report/OutputDir.h"
 #include "report/OutputFolder.h"
 #include "report/RunFigures.h"
 #include "report/SceneTable.h"
@@ -22,6 +23,7 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   namespace fs = std::filesystem;
   const Scene scene = parseSceneFile(args.scene_path, args.overrides);
   const std::string out_dir = out_dir_arg.empty() ? defaultOutDir(scene.name) : out_dir_arg;
+  prepareOutputDir(out_dir, StaleOutputs::RunFiguresAndReport);  // before the run: a bad --out fails now
   // Parameter table first: a scene that parses always gives one, and nothing is simulated for
   // nothing if it did not.
   const std::vector<SceneParameterRow> parameters = sceneParameterRows(args.scene_path, args.overrides);
@@ -37,6 +39,7 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   writeCsvAtomic(out_dir + "/timeseries.csv", run.timeseries);
   writeCsvAtomic(out_dir + "/reactions.csv", run.reactions);
   auto summary = makeSummary(scene, run);
+  summary["scene_path"] = absolutePath(args.scene_path);  // `plot DIR` finds it from anywhere
   for (const std::string& w : addResonanceWarnings(scene, summary))  // as simulate does
     std::cerr << "rollerdyn: warning: " << w << '\n';
   writeSummaryAtomic(out_dir + "/summary.json", summary);

@@ -1,6 +1,7 @@
 // `rollerdyn simulate SCENE [--set k=v]... [--out DIR] [--model multibody|reduced] [--plot]`: run
 // one model on one scene and write timeseries.csv, reactions.csv and summary.json to DIR (and
 // with --plot the figures of `rollerdyn plot` to DIR/figures/).
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
@@ -11,6 +12,7 @@
 #include "io/AtomicFile.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
+#include "report/OutputDir.h"
 #include "report/OutputFolder.h"
 #include "report/RunFigures.h"
 #include "scene/SceneParser.h"
@@ -21,9 +23,14 @@ std::atomic<bool> g_interrupted{false};
 
 std::string defaultOutDir(const std::string& scene_name) { return "out/" + scene_name; }
 
+std::string absolutePath(const std::string& path) {
+  return std::filesystem::absolute(path).lexically_normal().string();
+}
+
 int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std::string& model, bool plot) {
   const Scene scene = parseSceneFile(args.scene_path, args.overrides);
   const std::string out_dir = out_dir_arg.empty() ? defaultOutDir(scene.name) : out_dir_arg;
+  prepareOutputDir(out_dir, StaleOutputs::RunFiguresAndReport);  // before the run: a bad --out fails now
   RunResult run;
   if (model == "multibody") {
     Progress progress;
@@ -39,6 +46,7 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   writeCsvAtomic(out_dir + "/timeseries.csv", run.timeseries);
   writeCsvAtomic(out_dir + "/reactions.csv", run.reactions);
   auto summary = makeSummary(scene, run);
+  summary["scene_path"] = absolutePath(args.scene_path);  // `plot DIR` finds it from anywhere
   for (const std::string& w : addResonanceWarnings(scene, summary))  // Dyomin (two rotors) eq. (10)
     std::cerr << "rollerdyn: warning: " << w << '\n';
   writeSummaryAtomic(out_dir + "/summary.json", summary);

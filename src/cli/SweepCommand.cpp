@@ -9,7 +9,11 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "cli/UsageError.h"
+#include "report/OutputDir.h"
+#include "scene/DidYouMean.h"
 #include "scene/SceneParser.h"
+#include "scene/SceneSchema.h"
 #include "studies/Sweep.h"
 
 namespace rollerdyn::cli {
@@ -36,6 +40,16 @@ std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done
   return s;
 }
 
+// A --param that is no leaf key of the scene schema fails before anything runs, with the
+// closest key path (the same hint as --set).
+void checkSweepKey(const std::string& key) {
+  if (findSceneKey(key)) return;
+  std::vector<std::string> keys;
+  for (const KeySpec& k : sceneSchema()) keys.push_back(k.path);
+  throw std::invalid_argument("sweep: --param " + key + ": expected a key of the scene schema (model/README.md), got an "
+                              "unknown key" + didYouMean(key, keys));
+}
+
 int runSweepCommand(const SweepArgs& a) {
   if (a.params.size() != a.values.size())
     throw std::invalid_argument("sweep: give one --values after each --param (" + std::to_string(a.params.size()) +
@@ -44,6 +58,7 @@ int runSweepCommand(const SweepArgs& a) {
   o.scene_path = a.scene.scene_path;
   o.base_overrides = a.scene.overrides;
   for (std::size_t i = 0; i < a.params.size(); ++i) o.params.push_back(parseSweepValues(a.params[i], a.values[i]));
+  for (const SweepParameter& p : o.params) checkSweepKey(p.key);
   o.model = a.model;
   o.minimize = a.minimize;
   o.threads = a.threads;
@@ -55,6 +70,7 @@ int runSweepCommand(const SweepArgs& a) {
     out_dir = defaultOutDir(base.name) + "/sweep";
     for (const SweepParameter& p : o.params) out_dir += "_" + p.key;
   }
+  prepareOutputDir(out_dir);  // before any point: a bad --out fails now
   std::size_t total = 1;
   for (const SweepParameter& p : o.params) total *= p.values.size();
   std::cout << "sweep of " << base.name << ": " << total << " points, " << o.model << " model, "
@@ -94,7 +110,7 @@ Subcommand addSweepCommand(CLI::App& app) {
       ->required()
       ->allow_extra_args(false);
   cmd->add_option("--model", args->model, "multibody (default) or reduced")
-      ->check(CLI::IsMember({"multibody", "reduced"}));
+      ->check(oneOf({"multibody", "reduced"}));
   cmd->add_option("--minimize", args->minimize,
                   "metric whose minimum to report: delta, H, k_p, omega_crank_mean, coupling_torque_swing, "
                   "twist_swing, eps_crank_abs_max, energy_residual_rel, omega_crank_min, omega_crank_max, "

@@ -11,11 +11,13 @@
 #include "compare/ValidationSuite.h"
 #include "io/AtomicFile.h"
 #include "report/Gnuplot.h"
+#include "report/OutputDir.h"
 
 namespace rollerdyn::cli {
 
 int runValidate(bool quick, const std::string& out_dir) {
   using namespace rollerdyn::validation;
+  prepareOutputDir(out_dir);  // before the suite: a bad --out fails now
   ValidationOptions o;
   o.quick = quick;
   o.interrupt = &g_interrupted;

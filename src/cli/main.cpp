@@ -5,10 +5,19 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "cli/UsageError.h"
 
 namespace {
 
 void onInterrupt(int) { rollerdyn::cli::g_interrupted = true; }
+
+// "rollerdyn 0.1 (commit 08674ee1c2d3)": CMake's project(VERSION) and the git commit at
+// configure time (CMakeLists.txt), when the sources were a git checkout.
+std::string versionText() {
+  std::string v = std::string("rollerdyn ") + ROLLERDYN_VERSION;
+  if (std::string(ROLLERDYN_GIT_COMMIT).size()) v += std::string(" (commit ") + ROLLERDYN_GIT_COMMIT + ")";
+  return v;
+}
 
 void addSceneArgs(CLI::App* cmd, rollerdyn::cli::SceneArgs& args) {
   cmd->add_option("scene", args.scene_path, "scene file (YAML), e.g. model/balanced-4cart.yaml")
@@ -25,6 +34,7 @@ int main(int argc, char** argv) {
   using namespace rollerdyn::cli;
   CLI::App app{"rollerdyn: drive dynamics of roller forming installations (multibody and reduced models)"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", versionText(), "print the version (and git commit) and exit");
   app.footer(
       "A typical session (each command has --help with examples):\n"
       "  rollerdyn check model/balanced-4cart.yaml                    validate the scene\n"
@@ -46,7 +56,7 @@ int main(int argc, char** argv) {
   addSceneArgs(simulate, sim_args);
   simulate->add_option("--out", out_dir, "output folder (default out/<scene name>/)");
   simulate->add_option("--model", model, "multibody (Simbody, default) or reduced (the papers' reduced-mass model)")
-      ->check(CLI::IsMember({"multibody", "reduced"}));
+      ->check(oneOf({"multibody", "reduced"}));
   bool sim_plot = false;  // PlotCommand.cpp
   simulate->add_flag("--plot", sim_plot, "also draw the figures of `rollerdyn plot` into <out>/figures/");
   simulate->footer(
@@ -107,10 +117,10 @@ int main(int argc, char** argv) {
   auto* bench = app.add_subcommand("bench", "accuracy vs CPU time of every integrator, cost vs carts, cost of each effect");
   addSceneArgs(bench, bench_args);
   bench->add_option("--study", bench_opts.study, "integrators (default), carts, effects or all")
-      ->check(CLI::IsMember({"integrators", "carts", "effects", "all"}));
+      ->check(oneOf({"integrators", "carts", "effects", "all"}));
   bench->add_flag("--quick", bench_opts.quick, "fewer accuracies, 1 s runs, 1 s budget per run (integrators: under a minute)");
   bench->add_option("--budget", bench_opts.budget, "CPU seconds per run before it is recorded as a timeout");
-  bench->add_option("--repeat", bench_opts.repeats, "timed repetitions per run (median reported)")->check(CLI::PositiveNumber);
+  bench->add_option("--repeat", bench_opts.repeats, "timed repetitions per run (median reported)")->check(CLI::Range(1, 1000));
   bench->add_option("--out", bench_opts.out_dir, "output folder (default out/<scene name>/bench/)");
   bench->footer("Examples:\n  rollerdyn bench model/balanced-4cart.yaml --quick\n"
                 "  rollerdyn bench model/recuperative-2cart.yaml --study all --repeat 3");
@@ -118,10 +128,18 @@ int main(int argc, char** argv) {
   // sweep, cam-profile, chain: the studies of the papers (src/cli/SweepCommand.cpp, ...)
   const Subcommand studies[] = {addSweepCommand(app), addCamProfileCommand(app), addChainCommand(app)};
 
+  // Usage errors: exit code 2 and one line (src/cli/UsageError.h); help and version: exit 0.
+  if (const std::string bad = checkCommandWord(app, argc, argv); !bad.empty()) return usageError(bad);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
+  } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return usageError(usageMessage(app, e));
   }
   std::signal(SIGINT, onInterrupt);
   try {
@@ -136,7 +154,7 @@ int main(int argc, char** argv) {
     if (*validate) return runValidate(val_quick, val_out);
   } catch (const std::exception& e) {
     std::cerr << "rollerdyn: " << e.what() << '\n';
-    return 2;
+    return kExitBadInput;
   }
   return 1;
 }

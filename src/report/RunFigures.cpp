@@ -597,11 +597,15 @@ FigureSet drawRunFigures(const OutputFolder& out, const Scene* scene, const std:
     const fs::path& p = entry.path();
     if (p.extension() != ".png" && p.extension() != ".svg") continue;
     const std::string stem = p.stem().string();
-    if (drawn.count(stem) || !(kFigureNames.count(stem) || stem.rfind("comparison_", 0) == 0)) continue;
+    if (drawn.count(stem) || !isRunFigureName(stem)) continue;
     std::error_code ec;
     fs::remove(p, ec);
   }
   return set;
+}
+
+bool isRunFigureName(const std::string& stem) {
+  return kFigureNames.count(stem) || stem.rfind("comparison_", 0) == 0;
 }
 
 std::string figureSetText(const FigureSet& set, const std::string& fig_dir) {

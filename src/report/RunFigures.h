@@ -78,6 +78,10 @@ struct FigureOptions {
 FigureSet drawRunFigures(const OutputFolder& out, const Scene* scene, const std::string& fig_dir,
                          const FigureOptions& options = {});
 
+// Whether `stem` is the name of a figure planRunFigures() can draw (the fixed names above or
+// comparison_<quantity>): the files of ours that a new run may remove.
+bool isRunFigureName(const std::string& stem);
+
 // For the terminal: "12 figures in DIR/ (png and svg): name name ..." and one line per note.
 std::string figureSetText(const FigureSet& set, const std::string& fig_dir);
 

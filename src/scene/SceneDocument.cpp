@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/eventhandler.h>
 
+#include "scene/DidYouMean.h"
 #include "scene/SceneSchema.h"
 
 namespace rollerdyn {
@@ -28,36 +29,9 @@ std::string allowedKeys(const std::string& map_path) {
   return where + ": " + joined(sceneChildKeys(map_path));
 }
 
-// Levenshtein distance, for "did you mean" hints on typos.
-size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diag = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
 // "unknown key 'cuont' (did you mean 'count'?)"
 std::string unknownKey(const std::string& map_path, const std::string& key) {
-  std::string best;
-  size_t best_d = 3;  // suggest only close matches: at most 2 edits
-  for (const std::string& c : sceneChildKeys(map_path)) {
-    const size_t d = editDistance(key, c);
-    if (d < best_d) {
-      best_d = d;
-      best = c;
-    }
-  }
-  std::string got = "unknown key '" + key + "'";
-  if (!best.empty()) got += " (did you mean '" + best + "'?)";
-  return got;
+  return "unknown key '" + key + "'" + didYouMean(key, sceneChildKeys(map_path));
 }
 
 bool pathWithin(const std::string& path, const std::string& prefix) {
