@@ -62,6 +62,8 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   content.command = "rollerdyn report " + args.scene_path;
   for (const std::string& o : args.overrides) content.command += " --set " + o;
   content.command += " --out " + out_dir;
+  content.animation = mechanismFrames(scene, run.timeseries, run.reactions);
+  content.time_plots = mainTimePlots(run.timeseries, run.reactions);
   const std::string page = (fs::path(out_dir) / "report.html").string();
   writeFileAtomic(page, renderReportHtml(content));
 

@@ -1,8 +1,10 @@
 // The one-page HTML report of `rollerdyn report`: scene name and source, effects built, the
-// scene's parameters, the summary metrics, a reactions table (min/max per joint over the steady
-// window, from summary.json) and the figures embedded as base64 PNG. The page is
-// self-contained: inline CSS, no script, no font, image or style sheet from anywhere else, so it
-// opens offline and can be mailed or archived as one file.
+// mechanism in motion beside interactive time plots (src/report/MechanismAnimation.h,
+// TimePlots.h), the scene's parameters, the summary metrics, a reactions table (min/max per
+// joint over the steady window, from summary.json) and the figures embedded as base64 PNG. The
+// page is self-contained: inline CSS and inline scripts (Chart.js copied in from Debian's
+// libjs-chart.js when the page is written), no script, font, image or style sheet from anywhere
+// else, so it opens offline and can be mailed or archived as one file.
 #pragma once
 
 #include <string>
@@ -10,8 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/MechanismAnimation.h"
 #include "report/RunFigures.h"
 #include "report/SceneTable.h"
+#include "report/TimePlots.h"
 
 namespace rollerdyn {
 
@@ -27,6 +31,9 @@ struct ReportContent {
   std::vector<FigureFile> figures;        // PNGs are read and embedded
   std::vector<std::string> notes;         // figures left out, warnings
   std::string command;                    // command line that produced the report
+  MechanismFrames animation;              // the mechanism in motion (empty: section left out)
+  std::vector<TimePlot> time_plots;       // interactive time plots beside the animation
+  std::string chartjs_path = kChartJsPath;  // Chart.js file inlined for them (missing: a note, PNGs only)
 };
 
 // The page as one string. Every text from the scene or the run is HTML-escaped. Throws
