@@ -16,6 +16,8 @@ packages=(
   googletest libgtest-dev  # tests
   libbenchmark-dev      # Google Benchmark targets (benchmarks/)
   gnuplot-nox           # figures (PNG/SVG) of plot, report, bench and validation
+  libjs-chart.js        # Chart.js, inlined into report.html for the interactive time plots
+  chromium              # headless browser: the report page test (tests/report), scripts/check-report.sh
 )
 
 missing=()

@@ -16,7 +16,8 @@ namespace rollerdyn::cli {
 
 int runPlot(const std::string& dir, const std::string& scene_arg, const std::vector<std::string>& overrides) {
   const OutputFolder folder = readOutputFolder(dir);
-  prepareOutputDir(dir, StaleOutputs::Keep, "plot folder");  // figures/ goes in it; drawing removes stale ones
+  const std::string fig_dir = (std::filesystem::path(dir) / "figures").string();
+  prepareOutputDir(fig_dir, StaleOutputs::Keep, "figures folder");  // before drawing; drawing removes stale figures
   // The Kloss curve needs the motor data: --scene, else the scene_path summary.json records.
   std::unique_ptr<Scene> scene;
   std::string scene_path = scene_arg;
@@ -39,7 +40,6 @@ int runPlot(const std::string& dir, const std::string& scene_arg, const std::vec
   }
   if (!scene && !overrides.empty())
     throw std::invalid_argument("--set needs the scene file: pass --scene FILE");
-  const std::string fig_dir = (std::filesystem::path(dir) / "figures").string();
   const FigureSet set = drawRunFigures(folder, scene.get(), fig_dir);
   std::cout << figureSetText(set, fig_dir);
   if (set.figures.empty()) {

@@ -65,12 +65,12 @@ std::string usageMessage(CLI::App& app, const CLI::ParseError& error) {
     if (sub->count() > 0) cmd = sub;
   const std::string command = cmd ? cmd->get_name() : "";
   std::string what = error.what();
-  if (cmd && dynamic_cast<const CLI::ExtrasError*>(&error)) {
-    const std::vector<std::string> extras = cmd->remaining(false);
-    if (!extras.empty()) {
-      what.clear();
-      for (const std::string& e : extras) what += (what.empty() ? "" : "; ") + extraArgument(*cmd, e);
-    }
+  // Arguments the command did not take are the likely cause of any error (a mistyped required
+  // option also leaves that option missing), so they are reported first.
+  const std::vector<std::string> extras = cmd ? cmd->remaining(false) : std::vector<std::string>{};
+  if (!extras.empty()) {
+    what.clear();
+    for (const std::string& e : extras) what += (what.empty() ? "" : "; ") + extraArgument(*cmd, e);
   }
   return (command.empty() ? "" : command + ": ") + what + seeHelp(command);
 }

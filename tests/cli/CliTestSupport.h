@@ -55,8 +55,10 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-// Starts ROLLERDYN_BINARY with `args`, stdout/stderr to files in `io_dir`. Returns the pid.
-inline pid_t startRollerdyn(const std::vector<std::string>& args, const std::filesystem::path& io_dir) {
+// Starts ROLLERDYN_BINARY with `args` in working directory `cwd` (default: the source tree),
+// stdout/stderr to files in `io_dir`. Returns the pid.
+inline pid_t startRollerdyn(const std::vector<std::string>& args, const std::filesystem::path& io_dir,
+                            const std::string& cwd = ROLLERDYN_SOURCE_DIR) {
   const std::string out = (io_dir / "stdout.txt").string(), err = (io_dir / "stderr.txt").string();
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -69,7 +71,7 @@ inline pid_t startRollerdyn(const std::vector<std::string>& args, const std::fil
     std::vector<std::string> copy = args;
     for (std::string& a : copy) argv.push_back(a.data());
     argv.push_back(nullptr);
-    ::chdir(ROLLERDYN_SOURCE_DIR);
+    if (::chdir(cwd.c_str()) != 0) std::_Exit(126);
     ::execv(bin.c_str(), argv.data());
     std::_Exit(127);
   }
@@ -100,6 +102,12 @@ inline CliResult waitRollerdyn(pid_t pid, const std::filesystem::path& io_dir, d
 inline CliResult runRollerdyn(const std::vector<std::string>& args, double timeout_s = 600) {
   TempDir io("io");
   return waitRollerdyn(startRollerdyn(args, io.path()), io.path(), timeout_s);
+}
+
+// The same, run from working directory `cwd`.
+inline CliResult runRollerdynIn(const std::string& cwd, const std::vector<std::string>& args, double timeout_s = 600) {
+  TempDir io("io");
+  return waitRollerdyn(startRollerdyn(args, io.path(), cwd), io.path(), timeout_s);
 }
 
 inline std::string model(const std::string& file) {

@@ -129,8 +129,12 @@ TEST(CliReport, WritesOneSelfContainedPage) {
   size_t embedded = 0;
   for (size_t at = 0; (at = html.find("src=\"data:image/png;base64,", at)) != std::string::npos; ++at) ++embedded;
   EXPECT_EQ(embedded, kElasticFigures.size());
-  for (const char* remote : {"http://", "https://", "src=\"figures/", "<script", "<link"})
+  for (const char* remote : {"src=\"http", "href=", "src=\"figures/", "<script src", "<link", "@import"})
     EXPECT_EQ(html.find(remote), std::string::npos) << "page refers to " << remote;
+  // The mechanism in motion and, with Debian's Chart.js installed, the interactive plots.
+  EXPECT_NE(html.find("id=\"mech-data\""), std::string::npos);
+  if (fs::exists("/usr/share/javascript/chart.js/chart.min.js"))
+    EXPECT_NE(html.find("id=\"plot-rod_forces\""), std::string::npos);
   // The override is shown where it came from, with the value used.
   EXPECT_NE(html.find("crank.offset_deg=60"), std::string::npos);
   EXPECT_NE(html.find("--set #2"), std::string::npos);

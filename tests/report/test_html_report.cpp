@@ -1,5 +1,6 @@
-// The HTML page: self-contained (figures embedded, nothing fetched), everything from the scene
-// or the run escaped, the incomplete-run banner, and the tables it promises.
+// The HTML page: self-contained (figures embedded, scripts inline, nothing fetched), everything
+// from the scene or the run escaped, the incomplete-run banner, the tables it promises, and the
+// mechanism section with the interactive plots or, without Chart.js, a note.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -27,6 +28,16 @@ TEST(HtmlReport, Base64KnownVectors) {  // RFC 4648, section 10
 }
 
 TEST(HtmlReport, Escapes) { EXPECT_EQ(htmlEscape("<a href=\"x\">&'"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;"); }
+
+// Nothing loaded from elsewhere: no src/href to anything, no style import, every script inline.
+void expectSelfContained(const std::string& html) {
+  for (const char* remote : {"src=\"http", "href=", "<link", "@import", "url(", "<script src", "<iframe"})
+    EXPECT_EQ(html.find(remote), std::string::npos) << remote;
+  const std::string plain = "<script>", data = "<script type=\"application/json\" ";
+  for (size_t at = 0; (at = html.find("<script", at)) != std::string::npos; ++at)
+    EXPECT_TRUE(html.compare(at, plain.size(), plain) == 0 || html.compare(at, data.size(), data) == 0)
+        << html.substr(at, 60);
+}
 
 ReportContent content(const fs::path& png) {
   ReportContent c;
@@ -61,8 +72,7 @@ TEST(HtmlReport, PageIsSelfContainedAndComplete) {
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("<meta charset=\"utf-8\">"), std::string::npos);
   EXPECT_NE(html.find("src=\"data:image/png;base64," + base64Encode("\x89PNG\r\n\x1a\nfake") + "\""), std::string::npos);
-  for (const char* remote : {"http://", "https://", "<script", "<link", "@import", "url("})
-    EXPECT_EQ(html.find(remote), std::string::npos) << remote;
+  expectSelfContained(html);
   EXPECT_NE(html.find("Loveikin, Pochka, Romasevych (2018) &lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
   // Incomplete run: a red banner with the status.
   EXPECT_NE(html.find("class=\"status bad\">Run INCOMPLETE: interrupted at t = 1.5 s"), std::string::npos);
@@ -96,6 +106,51 @@ TEST(HtmlReport, WarningsOfTheSummaryAreShown) {
   c.summary["warnings"] = {"crank speed near resonance <p0>"};
   const std::string html = renderReportHtml(c);
   EXPECT_NE(html.find("<li>crank speed near resonance &lt;p0&gt;</li>"), std::string::npos);
+}
+
+// A run of two rows and two carts, enough for the mechanism section and the time plots.
+void addMotion(ReportContent& c) {
+  Table ts, rx;
+  ts.columns = {"t", "phi_crank", "omega_crank", "coupling_torque", "x_cart_1", "x_cart_2"};
+  ts.rows = {{0.0, 0.0, 10.0, 5.0, 1.0, -0.6}, {0.1, 1.0, 10.5, 6.0, 0.9, -0.7}};
+  const Scene scene = parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/recuperative-2cart.yaml");
+  c.animation = mechanismFrames(scene, ts, rx);
+  c.time_plots = mainTimePlots(ts, rx);
+}
+
+TEST(HtmlReport, MechanismSectionWithInteractivePlots) {
+  ReportContent c = content("");
+  c.figures.clear();
+  addMotion(c);
+  const fs::path lib = fs::temp_directory_path() / ("rollerdyn-chart-" + std::to_string(::getpid()) + ".js");
+  { std::ofstream(lib) << "window.Chart = function () {};"; }
+  c.chartjs_path = lib.string();
+  const std::string html = renderReportHtml(c);
+  fs::remove(lib);
+  expectSelfContained(html);
+  const size_t motion = html.find("<h2>Mechanism in motion</h2>"), scene = html.find("<h2>Scene</h2>");
+  ASSERT_NE(motion, std::string::npos);
+  EXPECT_LT(motion, scene) << "the animation comes first";
+  for (const char* part : {"id=\"mech-canvas\"", "id=\"mech-data\"", "window.Chart = function () {};",
+                           "id=\"plot-speed\"", "id=\"plot-torque\"", "data-script-errors", "data-figures"})
+    EXPECT_NE(html.find(part), std::string::npos) << part;
+}
+
+TEST(HtmlReport, WithoutChartJsTheAnimationStaysAndANoteExplains) {
+  ReportContent c = content("");
+  c.figures.clear();
+  addMotion(c);
+  c.chartjs_path = "/nonexistent/chart.min.js";
+  const std::string html = renderReportHtml(c);
+  EXPECT_NE(html.find("id=\"mech-canvas\""), std::string::npos);
+  EXPECT_NE(html.find("Interactive time plots left out: Chart.js (Debian package libjs-chart.js"), std::string::npos);
+  EXPECT_EQ(html.find("id=\"plot-speed\""), std::string::npos);
+}
+
+TEST(HtmlReport, NoRunDataNoMechanismSection) {
+  ReportContent c = content("");
+  c.figures.clear();
+  EXPECT_EQ(renderReportHtml(c).find("Mechanism in motion"), std::string::npos);
 }
 
 TEST(HtmlReport, MissingFigureFileIsAnError) {
