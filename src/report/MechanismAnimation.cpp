@@ -23,7 +23,7 @@ const char* const kScript = R"JS((function () {
   var speedSel = document.getElementById('mech-speed'), label = document.getElementById('mech-time');
   var ctx = cv.getContext('2d');
   var G = D.geometry, cg = G.cart, C = D.carts, n = C.length, N = D.t.length;
-  var selftest = location.hash === '#selftest';
+  var selftest = /selftest/.test(location.hash);
 
   // Extents [m]: x over every frame; y of one lane (room for the force arrows).
   var U = Math.max(G.r, G.cam_radius, 0.05);        // drawing unit: the crank radius
@@ -43,6 +43,7 @@ const char* const kScript = R"JS((function () {
     for (var k = 0; k < N; k++) {
       var e0 = hx[k] + s * c0, e1 = hx[k] + s * c1;
       lo = Math.min(lo, e0, e1); hi = Math.max(hi, e0, e1);
+      if (G.cam) { var tip = hx[k] - s * arrowF; xmin = Math.min(xmin, tip); xmax = Math.max(xmax, tip); }  // cam force arrow
     }
     travel.push([lo, hi]);
     xmin = Math.min(xmin, lo - 0.1 * U); xmax = Math.max(xmax, hi + 0.1 * U);
@@ -107,7 +108,14 @@ const char* const kScript = R"JS((function () {
     ctx.font = '11px "DejaVu Sans", Arial, sans-serif'; ctx.textBaseline = 'top';
     text('cart ' + (j + 1) + (s > 0 ? ' (+x side)' : ' (\u2212x side)') + ', crank at \u03c6\u2082 + ' +
          (j * G.offset * 180 / Math.PI).toFixed(0) + '\u00b0' +
-         (block ? '; no cart geometry in the scene: drawn as a block' : ''), 4, laneTop + 3, '#555');
+         (block ? '; no cart geometry in the scene: drawn as a block' : '') +
+         (G.cam ? '; cam drive: the model puts B on the shaft axis at mid-stroke' : ''), 4, laneTop + 3, '#555');
+    var xs = X(0);
+    if (G.cam) {                                       // the cam under the cart, outline only
+      var th = D.phi[k] + j * G.offset, rc = scale * G.cam_radius;
+      circle(xs, y0, rc, 'rgba(160,110,20,0.8)', null, 1.5);
+      line(xs, y0, xs + rc * Math.cos(th), y0 - rc * Math.sin(th), 'rgba(160,110,20,0.9)', 2.5);
+    }
     ctx.textBaseline = 'middle';
     function P(xp) { return X(xB + s * xp); }          // a point of the cart at x' from B
     // Guide channel and mix surface over the cart's travel.
@@ -132,13 +140,8 @@ const char* const kScript = R"JS((function () {
     }
     line(P(0), y0, P(0), Y(j, chTop), '#445', 2.5);
     // Shaft, crank (or cam), rod.
-    var xs = X(0);
-    circle(xs, y0, scale * G.r, '#aaa', null, 1);
-    if (G.cam) {
-      var th = D.phi[k] + j * G.offset;
-      circle(xs, y0, scale * G.cam_radius, '#444', 'rgba(200,160,60,0.5)', 1.5);
-      line(xs, y0, xs + scale * G.cam_radius * Math.cos(th), y0 - scale * G.cam_radius * Math.sin(th), '#444', 2);
-    } else {
+    if (!G.cam) {
+      circle(xs, y0, scale * G.r, '#aaa', null, 1);
       var ax = X(c.pin_x[k]), ay = Y(j, c.pin_y[k]);
       line(xs, y0, ax, ay, '#333', 5);
       line(ax, ay, X(xB), y0, '#777', 4);
@@ -166,7 +169,8 @@ const char* const kScript = R"JS((function () {
     var bx = xB + nx, by = ny, tx = bx + ux * lenF, ty = by + uy * lenF;
     var col = F >= 0 ? '#d62728' : '#1f77b4';
     if (F >= 0) arrow(X(bx), Y(j, by), X(tx), Y(j, ty), col); else arrow(X(tx), Y(j, ty), X(bx), Y(j, by), col);
-    if (lenF * scale > 8) text(kN(F), X(tx) + 4, Y(j, ty) - 8, col);
+    var away = tx < xB ? 'right' : 'left';             // label beyond the arrow's far end
+    if (lenF * scale > 8) text(kN(F), X(tx) + (away === 'right' ? -4 : 4), Y(j, ty) - 9, col, away);
   }
 
   function pixelHash() {
@@ -208,8 +212,10 @@ const char* const kScript = R"JS((function () {
   slider.addEventListener('input', function () { show(+slider.value); restartClock(); });
   speedSel.addEventListener('change', function () { speed = +speedSel.value; restartClock(); });
   document.addEventListener('rollerdyn-seek', function (e) { show(frameAt(e.detail.t)); restartClock(); });
-  show(0);
-  if (N > 1) play();
+  // "report.html#t=8.2" opens paused at t = 8.2 s; otherwise the animation plays from the start.
+  var at = /(?:^#|[#&])t=([0-9.eE+-]+)/.exec(location.hash);
+  if (at) { show(frameAt(parseFloat(at[1]))); restartClock(); }
+  else { show(0); if (N > 1) play(); }
 })();)JS";
 
 int cartCount(const Table& ts) {

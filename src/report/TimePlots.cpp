@@ -68,6 +68,8 @@ const char* const kScript = R"JS((function () {
     });
   }
   document.addEventListener('rollerdyn-time', function (e) { place(e.detail.t); });
+  var mech = document.getElementById('mechanism');      // the time shown before these charts existed
+  if (mech && mech.hasAttribute('data-t')) place(parseFloat(mech.getAttribute('data-t')));
   function view(lo, hi) {
     charts.forEach(function (c) { c.options.scales.x.min = lo; c.options.scales.x.max = hi; c.update('none'); });
     if (lastT !== null) place(lastT);
