@@ -44,6 +44,8 @@ struct PageCase {
   std::vector<int> sides;  // σ_j as the scene file states them (carts.sides)
 };
 
+void PrintTo(const PageCase& c, std::ostream* os) { *os << c.scene; }
+
 class MechanismFramesOfAReport : public ::testing::TestWithParam<PageCase> {};
 
 TEST_P(MechanismFramesOfAReport, MatchTimeSeriesAndClosedForm) {
