@@ -11,9 +11,7 @@
 #include "cli/Commands.h"
 #include "cli/UsageError.h"
 #include "report/OutputDir.h"
-#include "scene/DidYouMean.h"
 #include "scene/SceneParser.h"
-#include "scene/SceneSchema.h"
 #include "studies/Sweep.h"
 
 namespace rollerdyn::cli {
@@ -40,16 +38,6 @@ std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done
   return s;
 }
 
-// A --param that is no leaf key of the scene schema fails before anything runs, with the
-// closest key path (the same hint as --set).
-void checkSweepKey(const std::string& key) {
-  if (findSceneKey(key)) return;
-  std::vector<std::string> keys;
-  for (const KeySpec& k : sceneSchema()) keys.push_back(k.path);
-  throw std::invalid_argument("sweep: --param " + key + ": expected a key of the scene schema (model/README.md), got an "
-                              "unknown key" + didYouMean(key, keys));
-}
-
 int runSweepCommand(const SweepArgs& a) {
   if (a.params.size() != a.values.size())
     throw std::invalid_argument("sweep: give one --values after each --param (" + std::to_string(a.params.size()) +
@@ -58,7 +46,7 @@ int runSweepCommand(const SweepArgs& a) {
   o.scene_path = a.scene.scene_path;
   o.base_overrides = a.scene.overrides;
   for (std::size_t i = 0; i < a.params.size(); ++i) o.params.push_back(parseSweepValues(a.params[i], a.values[i]));
-  for (const SweepParameter& p : o.params) checkSweepKey(p.key);
+  for (const SweepParameter& p : o.params) requireSceneKey("sweep: --param " + p.key, p.key);  // with a did-you-mean
   o.model = a.model;
   o.minimize = a.minimize;
   o.threads = a.threads;

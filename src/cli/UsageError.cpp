@@ -2,7 +2,10 @@
 
 #include <iostream>
 
+#include <stdexcept>
+
 #include "scene/DidYouMean.h"
+#include "scene/SceneSchema.h"
 
 namespace rollerdyn::cli {
 
@@ -78,6 +81,14 @@ std::string usageMessage(CLI::App& app, const CLI::ParseError& error) {
 int usageError(const std::string& message) {
   std::cerr << "rollerdyn: " << message << '\n';
   return kExitBadInput;
+}
+
+void requireSceneKey(const std::string& what, const std::string& key) {
+  if (findSceneKey(key)) return;
+  std::vector<std::string> keys;
+  for (const KeySpec& k : sceneSchema()) keys.push_back(k.path);
+  throw std::invalid_argument(what + ": expected a key of the scene schema (model/README.md), got an unknown key" +
+                              didYouMean(key, keys));
 }
 
 CLI::Validator oneOf(std::vector<std::string> choices) {
