@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "studies/StartLoad.h"
 #include "analysis/Summary.h"
 #include "cli/Commands.h"
 #include "cli/Progress.h"
@@ -36,7 +37,8 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   }
   writeCsvAtomic(out_dir + "/timeseries.csv", run.timeseries);
   writeCsvAtomic(out_dir + "/reactions.csv", run.reactions);
-  auto summary = makeSummary(scene, run);
+  const StartLoad start_load = startLoadOf(scene);  // explains a stall
+  auto summary = makeSummary(scene, run, &start_load);
   for (const std::string& w : addResonanceWarnings(scene, summary))  // as simulate does
     std::cerr << "rollerdyn: warning: " << w << '\n';
   writeSummaryAtomic(out_dir + "/summary.json", summary);

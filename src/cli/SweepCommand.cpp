@@ -1,6 +1,7 @@
 // `rollerdyn sweep SCENE --param KEY --values a:b:step|v1,v2,... [--param KEY --values ...]
 //  [--model multibody|reduced] [--minimize METRIC] [--set k=v]... [--out DIR] [--threads N]`:
 // one simulation per grid point (src/studies/Sweep.h), sweep.csv + sweep.json + plots in DIR.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -27,9 +28,18 @@ std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done
   std::string s = "[" + std::to_string(done) + "/" + std::to_string(total) + "]";
   for (std::size_t k = 0; k < o.params.size(); ++k) s += " " + o.params[k].key + "=" + p.texts[k];
   char buf[256];
-  std::snprintf(buf, sizeof buf, "  delta %.4g  H %.4g  k_p %.4g  dM %.4g N·m  %s  %.1f s cpu", p.metric("delta"),
-                p.metric("H"), p.metric("k_p"), p.metric("coupling_torque_swing"),
-                p.complete ? (p.steady ? "steady" : "NOT steady") : "FAILED", p.cpu_seconds);
+  // The motion first (stalled, rocking, turning), then whether a turning crank settled.
+  const std::string state = !p.ran ? "FAILED"
+                            : p.motion == "turning" ? (p.steady ? "turning, steady" : "turning, NOT steady")
+                                                    : p.motion;
+  auto f = [](double v) {  // "n/a" where a metric has no meaning (a rocking or stalled crank)
+    char b[32];
+    std::snprintf(b, sizeof b, "%.4g", v);
+    return std::isfinite(v) ? std::string(b) : std::string("n/a");
+  };
+  std::snprintf(buf, sizeof buf, "  δ %s  H %s  k_p %s  ΔM %s N·m  %s  %.1f s cpu", f(p.metric("delta")).c_str(),
+                f(p.metric("H")).c_str(), f(p.metric("k_p")).c_str(),
+                f(p.metric("coupling_torque_swing")).c_str(), state.c_str(), p.cpu_seconds);
   s += buf;
   if (!p.complete) s += "  (" + p.status + ")";
   if (!p.warnings.empty()) s += "  [resonance warning]";
@@ -72,6 +82,10 @@ int runSweepCommand(const SweepArgs& a) {
   }
   if (!o.minimize.empty()) std::cout << describeOptimum(o, r) << "\n";
   if (unsteady) std::cout << unsteady << " point(s) did not reach steady state (see steady_state_reached)\n";
+  std::size_t rocking = 0, stalled = 0;
+  for (const SweepPoint& p : r.points) rocking += p.motion == "rocking", stalled += p.motion == "stalled";
+  if (rocking || stalled)
+    std::cout << rocking << " point(s) rocking, " << stalled << " stalled (motion column; their δ, H, k_p are n/a)\n";
   if (warned) std::cerr << "rollerdyn: warning: " << warned << " point(s) near a torsional resonance (sweep.json)\n";
   std::cout << "outputs in " << out_dir << "/ (" << files.size() << " files)\n";
   if (failed) std::cerr << "rollerdyn: " << failed << " of " << r.points.size() << " points did not complete (status column)\n";
