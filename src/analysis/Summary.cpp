@@ -187,7 +187,13 @@ std::string summaryText(const nlohmann::json& s) {
   std::ostringstream o;
   o << "scene        " << str(at("scene")) << "  (model " << str(at("model")) << ", integrator "
     << str(at("integrator")) << ")\n";
-  o << "motion       " << str(at("motion")) << "  (stalled, rocking: the crank swings back and forth, or turning)\n";
+  const std::string motion = str(at("motion"));
+  o << "motion       " << motion
+    << (motion == "turning"   ? "  (the crank turns one way)"
+        : motion == "rocking" ? "  (the crank swings back and forth instead of turning)"
+        : motion == "stalled" ? "  (the motor stalled; why: see status)"
+                              : "")
+    << "\n";
   o << "status       " << str(at("status")) << "\n";
   o << "crank speed  mean " << f(at("omega_crank", "mean"), "%.4g") << " rad/s, min "
     << f(at("omega_crank", "min"), "%.4g") << ", max " << f(at("omega_crank", "max"), "%.4g")

@@ -137,7 +137,7 @@ struct MotorPlanner {
     double ylo = std::min(0.0, mlo), yhi = mhi;
     if (scene) yhi = std::max(yhi, 1.05 * k.M_kr * k.u * k.eta);
     zoom.title = title("motor operating points, steady window (" + windowText(window) + ")");
-    zoom.preamble = "set key inside left bottom box opaque\nset xrange [" + fmt("%.9g", wlo - dw) + ":" +
+    zoom.preamble = "set key inside right center box opaque\nset xrange [" + fmt("%.9g", wlo - dw) + ":" +
                     fmt("%.9g", whi + dw) + "]\nset yrange [" + fmt("%.9g", ylo) + ":" + fmt("%.9g", yhi) + "]\n";
     if (scene)
       zoom.preamble += hline(k.M_n * k.u * k.eta, kGreen, "nominal torque M_n·u·η") +
@@ -172,9 +172,20 @@ struct MotorPlanner {
       const char* ylabel;
       const std::vector<double>* y;
       std::string lines;
+      double level;  // highest level line, kept in view [same unit as y]
     };
-    const Q qs[] = {{"motor_torque", "motor torque", "motor torque at the rotor M [N·m]", &M, lines_M},
-                    {"motor_power", "motor shaft power", "shaft power M·ω_r [kW] (ω_r rotor speed)", &P, lines_P}};
+    const Q qs[] = {{"motor_torque", "motor torque", "motor torque at the rotor M [N·m]", &M, lines_M, k.M_kr},
+                    {"motor_power", "motor shaft power", "shaft power M·ω_r [kW] (ω_r rotor speed)", &P, lines_P,
+                     k.P_n * 1e-3}};
+    // The y axis spans the data and the nominal/breakdown levels, so the margin is visible.
+    auto yrange = [](const std::vector<double>& y, double level) {
+      double lo = 0, hi = 0;
+      for (double v : y)
+        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+      if (std::isfinite(level)) hi = std::max(hi, level);
+      const double pad = 0.05 * (hi - lo);
+      return hi > lo ? "set yrange [" + fmt("%.9g", lo - pad) + ":" + fmt("%.9g", hi + pad) + "]\n" : std::string();
+    };
     const std::vector<double> phi = col(out.timeseries, "phi_crank");
     const std::vector<size_t> rows = windowRows(t, window);
     std::vector<long> fold;
@@ -184,7 +195,7 @@ struct MotorPlanner {
       a.title = title(std::string(q.what) + " against time");
       a.xlabel = "t [s]";
       a.ylabel = q.ylabel;
-      a.preamble = windowMarker(window) + "\nset key off\n" + q.lines;
+      a.preamble = windowMarker(window) + "\nset key off\n" + q.lines + yrange(*q.y, q.level);
       a.series.push_back(series("", t, *q.y, kBlue));
       add(std::string(q.stem) + "_vs_time",
           capitalized(q.what) + " over the whole run, with the motor's nominal (green) and, for the "
@@ -195,7 +206,7 @@ struct MotorPlanner {
       b.title = title(std::string(q.what) + " against crank angle (" + windowText(window) + ")");
       b.xlabel = kAngleLabel;
       b.ylabel = q.ylabel;
-      b.preamble = std::string(kAnglePreamble) + "\nset key off\n" + q.lines;
+      b.preamble = std::string(kAnglePreamble) + "\nset key off\n" + q.lines + yrange(*q.y, q.level);
       PlotSeries s = series("", theta, alongFold(pick(*q.y, rows), fold), kBlue, 1.2);
       s.break_at_nonfinite = true;
       b.series.push_back(std::move(s));

@@ -223,8 +223,10 @@ SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
   bool any_steady = false;
   for (const SweepPoint& p : points)
     any_steady = any_steady || (p.complete && p.steady && std::isfinite(p.metric(metric)));
+  // A rocking or stalled crank is never an optimum, whatever its number says.
   auto candidate = [&](const SweepPoint& p) {
-    return p.complete && std::isfinite(p.metric(metric)) && (!any_steady || p.steady);
+    return p.complete && p.motion != "rocking" && p.motion != "stalled" &&
+           std::isfinite(p.metric(metric)) && (!any_steady || p.steady);
   };
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!candidate(points[i])) continue;

@@ -37,7 +37,7 @@ std::string num(double v) {
 }
 
 const char* kLegend =
-    "orange / hatched: turning, steady state not reached;  grey hatched: rocking, stalled or "
+    "black-hatched colour: turning, steady state not reached;  grey hatched: rocking, stalled or "
     "failed (no value)";
 
 }  // namespace
@@ -194,6 +194,10 @@ std::vector<std::string> drawSweepPlots(const SweepOptions& o, const SweepResult
               << ", graph 1 behind fc rgb '#999999' fs pattern 4 noborder\n";
         }
       }
+      // The whole grid stays in view, whichever points have values.
+      double xl = INFINITY, xh = -INFINITY;
+      for (const auto& e : edges) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
+      if (xh > xl) pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
       if (any_bad)
         pre << "set label 1 \"grey hatched: rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
       spec.preamble = pre.str();
