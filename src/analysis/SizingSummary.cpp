@@ -82,7 +82,8 @@ json sizingJson(const DriveSizing& s) {
                    {"flywheel_motor_shaft", num(f.flywheel_motor_shaft)},
                    {"method",
                     "energy method: δ ≈ ΔE/(J·ω²) with ΔE fixed by the loads, so J* = J·δ/δ*; "
-                    "J = time mean of 2T/ω_crank² of this run (constant-inertia approximation)"}};
+                    "J = time mean of 2T/ω_crank² of this run (constant-inertia approximation, "
+                    "motor slip ignored): a first estimate, check it with a run with flywheel.inertia set"}};
   const CouplingSizing& c = s.coupling;
   if (c.available) {
     j["coupling"] = {{"mean", num(c.mean)}, {"peak", num(c.peak)}, {"swing", num(c.swing)},
@@ -135,76 +136,74 @@ std::string sizingText(const json& summary) {
   const json& s = at(summary, "sizing");
   if (!s.is_object()) return "";
   std::ostringstream o;
+  auto chk = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
+  auto str = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
   const json& w = at(s, "window");
   o << "drive sizing over the steady window t = " << fmt(at(w, "t_begin"), "%.4g") << " ... "
-    << fmt(at(w, "t_end"), "%.4g") << " s (" << fmt(at(w, "revolutions"), "%.3g")
-    << " crank revolutions); M motor torque, u reducer ratio, η reducer efficiency\n";
+    << fmt(at(w, "t_end"), "%.4g") << " s (" << fmt(at(w, "revolutions"), "%.3g") << " crank revolutions)\n"
+    << "  M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω_r rotor speed, ω0 synchronous speed\n";
   const json& m = at(s, "motor");
   if (m.is_object()) {
     const json &ts = at(m, "torque_shaft"), &tc = at(m, "torque_crank");
-    o << "  motor torque M at the rotor      mean " << fmt(at(ts, "mean"), "%.4g") << ", RMS "
+    o << "  motor torque at the rotor M       mean " << fmt(at(ts, "mean"), "%.4g") << ", RMS "
       << fmt(at(ts, "rms"), "%.4g") << ", peak |M| " << fmt(at(ts, "peak"), "%.4g") << " N·m\n";
-    o << "  motor torque at the crank M·u·η  mean " << fmt(at(tc, "mean"), "%.4g") << ", RMS "
+    o << "  motor torque at the crank M·u·η   mean " << fmt(at(tc, "mean"), "%.4g") << ", RMS "
       << fmt(at(tc, "rms"), "%.4g") << ", peak " << fmt(at(tc, "peak"), "%.4g") << " N·m\n";
-    auto chk = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
-    o << "  RMS / nominal torque M_n         " << fmt(at(ts, "rms"), "%.4g") << " / "
-      << fmt(at(m, "nominal_torque"), "%.4g") << " N·m = " << fmt(at(m, "rms_over_nominal"), "%.3f")
-      << "  " << chk(at(m, "rms_check")) << "  (thermal; M_n: "
-      << at(m, "nominal_torque_source").get<std::string>() << ")\n";
-    o << "  peak / breakdown torque M_kr     " << fmt(at(ts, "peak"), "%.4g") << " / "
-      << fmt(at(m, "breakdown_torque"), "%.4g") << " N·m = "
-      << fmt(at(m, "peak_over_breakdown"), "%.3f") << "  " << chk(at(m, "peak_check")) << "\n";
+    o << "  RMS / nominal torque M_n          " << fmt(at(ts, "rms"), "%.4g") << " / "
+      << fmt(at(m, "nominal_torque"), "%.4g") << " N·m = " << fmt(at(m, "rms_over_nominal"), "%.3f") << "  "
+      << chk(at(m, "rms_check")) << "  (thermal equivalent; M_n: " << str(at(m, "nominal_torque_source")) << ")\n";
+    o << "  peak / breakdown torque M_kr      " << fmt(at(ts, "peak"), "%.4g") << " / "
+      << fmt(at(m, "breakdown_torque"), "%.4g") << " N·m = " << fmt(at(m, "peak_over_breakdown"), "%.3f") << "  "
+      << chk(at(m, "peak_check")) << "\n";
     const json &ps = at(m, "power_shaft"), &pl = at(m, "power_line"), &sl = at(m, "slip");
-    o << "  shaft power M·ω_r (ω_r rotor speed)  mean " << fmt(at(ps, "mean"), "%.4g", 1e-3)
-      << ", peak " << fmt(at(ps, "peak"), "%.4g", 1e-3) << " kW\n";
-    o << "  power drawn from the line        mean " << fmt(at(pl, "mean"), "%.4g", 1e-3) << ", peak "
-      << fmt(at(pl, "peak"), "%.4g", 1e-3) << " kW  (" << at(m, "line_power_basis").get<std::string>()
-      << ")\n";
-    o << "  slip s = 1 - ω_r/ω0              " << fmt(at(sl, "min"), "%.4f") << " ... "
-      << fmt(at(sl, "max"), "%.4f") << " (ω0 synchronous speed)\n";
-    o << "  motor energy per crank revolution " << fmt(at(m, "energy_per_revolution"), "%.4g", 1e-3)
-      << " kJ\n";
+    o << "  shaft power M·ω_r                 mean " << fmt(at(ps, "mean"), "%.4g", 1e-3) << ", peak "
+      << fmt(at(ps, "peak"), "%.4g", 1e-3) << " kW\n";
+    o << "  power drawn from the line         mean " << fmt(at(pl, "mean"), "%.4g", 1e-3) << ", peak "
+      << fmt(at(pl, "peak"), "%.4g", 1e-3) << " kW  (" << str(at(m, "line_power_basis")) << ")\n";
+    o << "  slip s = 1 - ω_r/ω0               " << fmt(at(sl, "min"), "%.4f") << " ... "
+      << fmt(at(sl, "max"), "%.4f") << "\n";
+    o << "  motor energy per crank revolution " << fmt(at(m, "energy_per_revolution"), "%.4g", 1e-3) << " kJ\n";
   } else {
-    o << "  motor                            n/a (no motor torque in this run)\n";
+    o << "  motor                             n/a (no motor torque in this run)\n";
   }
   const json& f = at(s, "flywheel");
-  o << "  flywheel: kinetic-energy swing ΔT " << fmt(at(f, "kinetic_energy_swing"), "%.4g")
-    << " J per revolution, drive inertia at the crank J " << fmt(at(f, "inertia_effective"), "%.4g")
-    << " kg·m², δ " << fmt(at(f, "delta"), "%.4g");
+  o << "  flywheel                          kinetic-energy swing ΔT " << fmt(at(f, "kinetic_energy_swing"), "%.4g")
+    << " J per revolution; drive inertia at the crank J " << fmt(at(f, "inertia_effective"), "%.4g")
+    << " kg·m²; δ " << fmt(at(f, "delta"), "%.4g") << "\n";
   if (at(f, "target_delta").is_number())
-    o << "; for δ* = " << fmt(at(f, "target_delta"), "%.4g") << ": flywheel "
+    o << "                                    for δ* = " << fmt(at(f, "target_delta"), "%.4g") << ": flywheel "
       << fmt(at(f, "flywheel_crankshaft"), "%.4g") << " kg·m² on the crankshaft or "
-      << fmt(at(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft (energy method)\n";
+      << fmt(at(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n"
+      << "                                    (energy method, J·δ constant: a first estimate, check with a run)\n";
   else
-    o << "; target δ* not given (sizing.target_delta)\n";
+    o << "                                    target δ* not given (sizing.target_delta)\n";
   const json& c = at(s, "coupling");
   if (c.is_object()) {
-    o << "  coupling torque (crank axis)     mean " << fmt(at(c, "mean"), "%.4g") << ", peak |M| "
+    o << "  coupling torque (crank axis)      mean " << fmt(at(c, "mean"), "%.4g") << ", peak |M| "
       << fmt(at(c, "peak"), "%.4g") << ", swing " << fmt(at(c, "swing"), "%.4g") << " N·m";
     if (at(c, "rated_torque").is_number())
       o << "; peak / rating " << fmt(at(c, "rated_torque"), "%.4g") << " N·m = "
-        << fmt(at(c, "peak_over_rating"), "%.3f") << "  " << at(c, "check").get<std::string>();
+        << fmt(at(c, "peak_over_rating"), "%.3f") << "  " << chk(at(c, "check"));
     else
       o << "; rating not given (sizing.coupling_rated_torque)";
     o << "\n";
   }
-  o << "  joint (most loaded)     cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
+  o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
   const json& joints = at(s, "joints");
-  const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin",
-                         "main bearing"};
+  const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearing"};
   for (std::size_t k = 0; k < 5; ++k) {
     const json& x = at(at(joints, kJointKinds[k]), "worst");
     if (!x.is_object()) continue;
     char buf[256];
-    std::snprintf(buf, sizeof buf, "  %-22s  %4s  %9s  %14s  %9s  %6s  %6s  %7s\n", names[k],
+    std::snprintf(buf, sizeof buf, "  %-24s  %4s  %9s  %14s  %9s  %6s  %6s  %7s\n", names[k],
                   at(x, "cart").is_number() ? std::to_string(at(x, "cart").get<int>()).c_str() : "-",
                   fmt(at(x, "mean"), "%.3f", 1e-3).c_str(), fmt(at(x, "amplitude"), "%.3f", 1e-3).c_str(),
                   fmt(at(x, "peak"), "%.3f", 1e-3).c_str(), fmt(at(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
                   fmt(at(x, "rating"), "%.1f", 1e-3).c_str(), fmt(at(x, "L10_hours"), "%.3g").c_str());
     o << buf;
   }
-  o << "  P: equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation speed; "
-       "L10 = (C/P)³·10⁶ revolutions, C from sizing.bearing_rating.*\n";
+  o << "  P equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation speed; "
+       "C dynamic load rating (sizing.bearing_rating.*); L10 = (C/P)³·10⁶ revolutions\n";
   return o.str();
 }
 

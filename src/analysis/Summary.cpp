@@ -134,7 +134,10 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   const DriveSizing sizing =
       computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN);
   j["sizing"] = sizingJson(sizing);
-  if (!turning) not_meaningful.push_back("sizing.flywheel, sizing.motor.energy_per_revolution");
+  if (!turning) {
+    not_meaningful.push_back("sizing.flywheel");
+    not_meaningful.push_back("sizing.motor.energy_per_revolution");
+  }
   j["not_meaningful"] = not_meaningful;
   j["stall"] = nullptr;
 

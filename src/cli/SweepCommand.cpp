@@ -68,7 +68,10 @@ int runSweepCommand(const SweepArgs& a) {
   std::size_t total = 1;
   for (const SweepParameter& p : o.params) total *= p.values.size();
   std::cout << "sweep of " << base.name << ": " << total << " points, " << o.model << " model, "
-            << std::min<std::size_t>(std::max(1, o.threads), total) << " threads\n";
+            << std::min<std::size_t>(std::max(1, o.threads), total) << " threads\n"
+            << "per point: δ coefficient of unevenness, H coefficient of dynamics, k_p generalised "
+               "coefficient (Loveikin and Pochka (2007) eq. (12)-(14)), ΔM coupling torque swing, "
+               "then the motion (turning, rocking, stalled)\n";
   o.on_point = [&o](const SweepPoint& p, std::size_t done, std::size_t n) {
     std::cout << lineFor(o, p, done, n) << std::endl;
   };
