@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <iostream>
 
-#include "studies/StartLoad.h"
 #include "analysis/Summary.h"
 #include "cli/Commands.h"
 #include "cli/Progress.h"
@@ -16,6 +15,7 @@
 #include "report/SceneTable.h"
 #include "scene/SceneParser.h"
 #include "studies/ResonanceCheck.h"
+#include "studies/StartLoad.h"
 
 namespace rollerdyn::cli {
 

@@ -115,7 +115,10 @@ Subcommand addSweepCommand(CLI::App& app) {
   cmd->add_option("--minimize", args->minimize,
                   "metric whose minimum to report: delta, H, k_p, omega_crank_mean, coupling_torque_swing, "
                   "twist_swing, eps_crank_abs_max, energy_residual_rel, omega_crank_min, omega_crank_max, "
-                  "omega_crank_midrange, twist_rate_swing, twist_accel_swing");
+                  "omega_crank_midrange, twist_rate_swing, twist_accel_swing, or a drive-sizing metric "
+                  "(motor_torque_rms, motor_rms_over_nominal, motor_peak_over_breakdown, motor_power_mean, "
+                  "energy_per_revolution, coupling_torque_peak, guide_roller_peak, rod_force_peak, "
+                  "crank_pin_peak, main_bearing_peak, ..._equivalent_load: see sweep.csv)");
   cmd->add_option("--threads", args->threads, "worker threads (default 2)")->check(CLI::Range(1, 64));
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/sweep_<keys>)");
   cmd->footer(

@@ -223,7 +223,7 @@ struct Planner {
     }
     const std::vector<size_t> rows = windowRows(t, window);
     const std::vector<double> p0 = pick(psi, rows), p1 = pick(rate, rows), p2 = pick(acc, rows);
-    const char* l0 = "twist ψ = φ_1 - φ_2 [rad]";
+    const char* l0 = "twist ψ = φ_1 - φ_2, motor minus crank angle (crank axis) [rad]";
     const char* l1 = "twist rate dψ/dt [rad/s]";
     const char* l2 = "twist acceleration d^2ψ/dt^2 [rad/s^2]";
     struct P {
