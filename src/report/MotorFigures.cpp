@@ -136,6 +136,7 @@ struct MotorPlanner {
     const double dw = 0.5 * (whi - wlo);
     double ylo = std::min(0.0, mlo), yhi = mhi;
     if (scene) yhi = std::max(yhi, 1.05 * k.M_kr * k.u * k.eta);
+    ylo -= 0.05 * (yhi - ylo);  // the lowest operating points stay off the frame
     zoom.title = title("motor operating points, steady window (" + windowText(window) + ")");
     zoom.preamble = "set key inside right center box opaque\nset xrange [" + fmt("%.9g", wlo - dw) + ":" +
                     fmt("%.9g", whi + dw) + "]\nset yrange [" + fmt("%.9g", ylo) + ":" + fmt("%.9g", yhi) + "]\n";
