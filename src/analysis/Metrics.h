@@ -1,5 +1,5 @@
 // Steady-state metrics of one run, taken over the window found by detectSteadyState():
-// the crank-speed coefficients of seeds 004/003 (eq. (12)-(14)) and the coupling swings of
+// the crank-speed coefficients of Loveikin and Pochka (2007) eq. (12)-(14) and the coupling swings of
 // Loveikin, Pochka, Romasevych (2018) Table 1, plus a summary of every reaction column.
 #pragma once
 

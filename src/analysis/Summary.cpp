@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <sstream>
 
+#include "analysis/DriveSizing.h"
 #include "analysis/Metrics.h"
+#include "analysis/SizingSummary.h"
 #include "analysis/SteadyState.h"
 #include "io/AtomicFile.h"
 
@@ -25,16 +27,6 @@ class FiniteWriter {
   std::vector<std::string> non_finite;
 };
 
-// How the crank moves over the metrics window. A drive whose loads exceed what the motor can
-// lift over a dead centre swings back and forth instead of turning (Loveikin, Pochka, Romasevych (2018) at small Δφ): the
-// run completes, but every "per revolution" metric is then meaningless, so it must be said.
-const char* crankMotion(const WindowMetrics& m) {
-  if (!std::isfinite(m.omega_min) || !std::isfinite(m.omega_max)) return "unknown";
-  if (m.omega_min < 0 && m.omega_max > 0) return "rocking";
-  if (m.omega_min == 0 && m.omega_max == 0) return "at_rest";
-  return "turning";
-}
-
 std::string joined(const std::vector<std::string>& items) {
   std::string s;
   for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
@@ -43,7 +35,7 @@ std::string joined(const std::vector<std::string>& items) {
 
 }  // namespace
 
-json makeSummary(const Scene& scene, const RunResult& run) {
+json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* start_load) {
   const SteadyState ss =
       detectSteadyState(run.timeseries, scene.simulation.steady_window_revolutions);
   const WindowMetrics m = computeMetrics(run, ss);
@@ -70,14 +62,25 @@ json makeSummary(const Scene& scene, const RunResult& run) {
                       {"max", num("omega_crank.max", m.omega_max)},
                       {"mean", num("omega_crank.mean", m.omega_mean)},
                       {"midrange", num("omega_crank.midrange", m.omega_midrange)}};
-  // "turning", "rocking" (crank speed changes sign in the metrics window), "at_rest", "unknown"
-  const std::string crank_motion = crankMotion(m);
+  // "stalled", "rocking" (crank speed changes sign in the metrics window), "turning",
+  // "at_rest", "unknown" (RunMotion.h); per-revolution metrics are null unless turning.
+  const std::string crank_motion = classifyMotion(scene, run, m);
+  const bool turning = motionIsTurning(crank_motion);
+  j["motion"] = crank_motion;
   j["crank_motion"] = crank_motion;
   j["eps_crank_abs_max"] = num("eps_crank_abs_max", m.eps_abs_max);
   j["eps_from_difference"] = m.eps_from_difference;
-  j["delta"] = num("delta", m.coefficients.delta);  // Loveikin and Pochka (2007), eq. (12)
-  j["H"] = num("H", m.coefficients.H);              // Loveikin and Pochka (2007), eq. (13)
-  j["k_p"] = num("k_p", m.coefficients.k_p);        // Loveikin and Pochka (2007), eq. (14)
+  // Loveikin and Pochka (2007), eq. (12)-(14): ratios to the mean speed of a turning crank; a
+  // stalled or rocking crank has no such mean, so they are null there, not a huge number.
+  std::vector<std::string> not_meaningful;
+  auto perRevolution = [&](const char* key, double v) -> json {
+    if (turning) return num(key, v);
+    not_meaningful.push_back(key);
+    return nullptr;
+  };
+  j["delta"] = perRevolution("delta", m.coefficients.delta);
+  j["H"] = perRevolution("H", m.coefficients.H);
+  j["k_p"] = perRevolution("k_p", m.coefficients.k_p);
   // Loveikin, Pochka, Romasevych (2018), Table 1
   j["coupling_torque_swing"] = num("coupling_torque_swing", m.coupling_torque_swing);
   j["twist_swing"] = num("twist_swing", m.twist_swing);
@@ -128,6 +131,16 @@ json makeSummary(const Scene& scene, const RunResult& run) {
   }
   j["reactions"] = rx;
 
+  const DriveSizing sizing =
+      computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN);
+  j["sizing"] = sizingJson(sizing);
+  if (!turning) {
+    not_meaningful.push_back("sizing.flywheel");
+    not_meaningful.push_back("sizing.motor.energy_per_revolution");
+  }
+  j["not_meaningful"] = not_meaningful;
+  j["stall"] = nullptr;
+
   std::string status = run.stats.status;
   if (crank_motion == "rocking") {
     char buf[160];
@@ -136,6 +149,15 @@ json makeSummary(const Scene& scene, const RunResult& run) {
                   "%.3g to %.3g rad/s in the metrics window)",
                   m.omega_min, m.omega_max);
     status += buf;
+  }
+  if (crank_motion == "stalled") {
+    const std::string why = stallExplanation(scene, start_load);
+    j["stall"] = {{"explanation", why},
+                  {"starting_torque_crank", startingTorqueAtCrank(scene)},
+                  {"breakdown_torque_crank", breakdownTorqueAtCrank(scene)},
+                  {"load_torque_start", start_load ? num("stall.load_torque_start", start_load->at_start_angle) : json(nullptr)},
+                  {"load_torque_mean", start_load ? num("stall.load_torque_mean", start_load->revolution_mean) : json(nullptr)}};
+    status += "; the drive stalled: " + why;
   }
   if (ss.finite_rows < run.timeseries.rows.size())
     status += "; timeseries has non-finite values (" + ss.note + ")";
@@ -168,11 +190,19 @@ std::string summaryText(const nlohmann::json& s) {
   std::ostringstream o;
   o << "scene        " << str(at("scene")) << "  (model " << str(at("model")) << ", integrator "
     << str(at("integrator")) << ")\n";
+  const std::string motion = str(at("motion"));
+  o << "motion       " << motion
+    << (motion == "turning"   ? "  (the crank turns one way)"
+        : motion == "rocking" ? "  (the crank swings back and forth instead of turning)"
+        : motion == "stalled" ? "  (the motor stalled; why: see status)"
+                              : "")
+    << "\n";
   o << "status       " << str(at("status")) << "\n";
   o << "crank speed  mean " << f(at("omega_crank", "mean"), "%.4g") << " rad/s, min "
     << f(at("omega_crank", "min"), "%.4g") << ", max " << f(at("omega_crank", "max"), "%.4g")
-    << ", delta " << f(at("delta"), "%.4g") << ", H " << f(at("H"), "%.4g") << ", k_p "
-    << f(at("k_p"), "%.4g") << "\n";
+    << "\n             δ (unevenness) " << f(at("delta"), "%.4g") << ", H (dynamics) " << f(at("H"), "%.4g")
+    << ", k_p (generalised) " << f(at("k_p"), "%.4g")
+    << "  (Loveikin and Pochka (2007) eq. (12)-(14))\n";
   const json& st = at("steady_state");
   if (st.is_object()) {
     o << "steady state " << (st.value("reached", false) ? "reached" : "NOT reached");

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/RunMotion.h"
 #include "analysis/RunResult.h"
 #include "scene/Scene.h"
 
@@ -24,8 +25,13 @@ namespace rollerdyn {
 //   potential_change, residual}, energy_residual_rel, constraint_error_max, steps, realizations,
 //   cpu_seconds, real_time_factor (simulated time / cpu_seconds; null when cpu_seconds <= 0,
 //   i.e. not measured, which is not flagged), reactions {column: {min, max, mean, abs_max}},
-//   non_finite (list of keys written as null because the value was NaN/inf).
-nlohmann::json makeSummary(const Scene& scene, const RunResult& run);
+//   non_finite (list of keys written as null because the value was NaN/inf),
+//   motion (= crank_motion: stalled, rocking, turning, at_rest, unknown; RunMotion.h),
+//   not_meaningful (keys written as null because the motion is not turning), stall (why a
+//   stalled run stalled, or null), sizing (SizingSummary.h).
+// `start_load`: the load torques at the start (RunMotion.h) that explain a stall; may be null.
+nlohmann::json makeSummary(const Scene& scene, const RunResult& run,
+                           const StartLoad* start_load = nullptr);
 
 // Pretty-printed (2-space indent) JSON written through writeFileAtomic.
 void writeSummaryAtomic(const std::string& path, const nlohmann::json& summary);

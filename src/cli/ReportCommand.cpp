@@ -16,6 +16,7 @@
 #include "report/SceneTable.h"
 #include "scene/SceneParser.h"
 #include "studies/ResonanceCheck.h"
+#include "studies/StartLoad.h"
 
 namespace rollerdyn::cli {
 
@@ -38,7 +39,8 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   }
   writeCsvAtomic(out_dir + "/timeseries.csv", run.timeseries);
   writeCsvAtomic(out_dir + "/reactions.csv", run.reactions);
-  auto summary = makeSummary(scene, run);
+  const StartLoad start_load = startLoadOf(scene);  // explains a stall
+  auto summary = makeSummary(scene, run, &start_load);
   summary["scene_path"] = absolutePath(args.scene_path);  // `plot DIR` finds it from anywhere
   for (const std::string& w : addResonanceWarnings(scene, summary))  // as simulate does
     std::cerr << "rollerdyn: warning: " << w << '\n';

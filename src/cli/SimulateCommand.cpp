@@ -5,8 +5,10 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "analysis/SizingSummary.h"
 #include "analysis/Summary.h"
 #include "studies/ResonanceCheck.h"
+#include "studies/StartLoad.h"
 #include "cli/Commands.h"
 #include "cli/Progress.h"
 #include "io/AtomicFile.h"
@@ -45,12 +47,13 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   }
   writeCsvAtomic(out_dir + "/timeseries.csv", run.timeseries);
   writeCsvAtomic(out_dir + "/reactions.csv", run.reactions);
-  auto summary = makeSummary(scene, run);
+  const StartLoad start_load = startLoadOf(scene);  // explains a stall
+  auto summary = makeSummary(scene, run, &start_load);
   summary["scene_path"] = absolutePath(args.scene_path);  // `plot DIR` finds it from anywhere
   for (const std::string& w : addResonanceWarnings(scene, summary))  // Dyomin (two rotors) eq. (10)
     std::cerr << "rollerdyn: warning: " << w << '\n';
   writeSummaryAtomic(out_dir + "/summary.json", summary);
-  std::cout << summaryText(summary) << "outputs in " << out_dir << "/\n";
+  std::cout << summaryText(summary) << sizingText(summary) << "outputs in " << out_dir << "/\n";
   if (plot)  // figures from the tables in memory and the scene with its overrides
     std::cout << figureSetText(drawRunFigures(outputFolderOf(out_dir, run, summary), &scene, out_dir + "/figures"),
                                out_dir + "/figures");

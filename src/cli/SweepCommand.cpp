@@ -1,6 +1,7 @@
 // `rollerdyn sweep SCENE --param KEY --values a:b:step|v1,v2,... [--param KEY --values ...]
 //  [--model multibody|reduced] [--minimize METRIC] [--set k=v]... [--out DIR] [--threads N]`:
 // one simulation per grid point (src/studies/Sweep.h), sweep.csv + sweep.json + plots in DIR.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -29,9 +30,18 @@ std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done
   std::string s = "[" + std::to_string(done) + "/" + std::to_string(total) + "]";
   for (std::size_t k = 0; k < o.params.size(); ++k) s += " " + o.params[k].key + "=" + p.texts[k];
   char buf[256];
-  std::snprintf(buf, sizeof buf, "  delta %.4g  H %.4g  k_p %.4g  dM %.4g N·m  %s  %.1f s cpu", p.metric("delta"),
-                p.metric("H"), p.metric("k_p"), p.metric("coupling_torque_swing"),
-                p.complete ? (p.steady ? "steady" : "NOT steady") : "FAILED", p.cpu_seconds);
+  // The motion first (stalled, rocking, turning), then whether a turning crank settled.
+  const std::string state = !p.ran ? "FAILED"
+                            : p.motion == "turning" ? (p.steady ? "turning, steady" : "turning, NOT steady")
+                                                    : p.motion;
+  auto f = [](double v) {  // "n/a" where a metric has no meaning (a rocking or stalled crank)
+    char b[32];
+    std::snprintf(b, sizeof b, "%.4g", v);
+    return std::isfinite(v) ? std::string(b) : std::string("n/a");
+  };
+  std::snprintf(buf, sizeof buf, "  δ %s  H %s  k_p %s  ΔM %s N·m  %s  %.1f s cpu", f(p.metric("delta")).c_str(),
+                f(p.metric("H")).c_str(), f(p.metric("k_p")).c_str(),
+                f(p.metric("coupling_torque_swing")).c_str(), state.c_str(), p.cpu_seconds);
   s += buf;
   if (!p.complete) s += "  (" + p.status + ")";
   if (!p.warnings.empty()) s += "  [resonance warning]";
@@ -62,7 +72,10 @@ int runSweepCommand(const SweepArgs& a) {
   std::size_t total = 1;
   for (const SweepParameter& p : o.params) total *= p.values.size();
   std::cout << "sweep of " << base.name << ": " << total << " points, " << o.model << " model, "
-            << std::min<std::size_t>(std::max(1, o.threads), total) << " threads\n";
+            << std::min<std::size_t>(std::max(1, o.threads), total) << " threads\n"
+            << "per point: δ coefficient of unevenness, H coefficient of dynamics, k_p generalised "
+               "coefficient (Loveikin and Pochka (2007) eq. (12)-(14)), ΔM coupling torque swing, "
+               "then the motion (turning, rocking, stalled)\n";
   o.on_point = [&o](const SweepPoint& p, std::size_t done, std::size_t n) {
     std::cout << lineFor(o, p, done, n) << std::endl;
   };
@@ -76,6 +89,10 @@ int runSweepCommand(const SweepArgs& a) {
   }
   if (!o.minimize.empty()) std::cout << describeOptimum(o, r) << "\n";
   if (unsteady) std::cout << unsteady << " point(s) did not reach steady state (see steady_state_reached)\n";
+  std::size_t rocking = 0, stalled = 0;
+  for (const SweepPoint& p : r.points) rocking += p.motion == "rocking", stalled += p.motion == "stalled";
+  if (rocking || stalled)
+    std::cout << rocking << " point(s) rocking, " << stalled << " stalled (motion column; their δ, H, k_p are n/a)\n";
   if (warned) std::cerr << "rollerdyn: warning: " << warned << " point(s) near a torsional resonance (sweep.json)\n";
   std::cout << "outputs in " << out_dir << "/ (" << files.size() << " files)\n";
   if (failed) std::cerr << "rollerdyn: " << failed << " of " << r.points.size() << " points did not complete (status column)\n";
@@ -102,7 +119,10 @@ Subcommand addSweepCommand(CLI::App& app) {
   cmd->add_option("--minimize", args->minimize,
                   "metric whose minimum to report: delta, H, k_p, omega_crank_mean, coupling_torque_swing, "
                   "twist_swing, eps_crank_abs_max, energy_residual_rel, omega_crank_min, omega_crank_max, "
-                  "omega_crank_midrange, twist_rate_swing, twist_accel_swing");
+                  "omega_crank_midrange, twist_rate_swing, twist_accel_swing, or a drive-sizing metric "
+                  "(motor_torque_rms, motor_rms_over_nominal, motor_peak_over_breakdown, motor_power_mean, "
+                  "energy_per_revolution, coupling_torque_peak, guide_roller_peak, rod_force_peak, "
+                  "crank_pin_peak, main_bearing_peak, ..._equivalent_load: see sweep.csv)");
   cmd->add_option("--threads", args->threads, "worker threads (default 2)")->check(CLI::Range(1, 64));
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/sweep_<keys>)");
   cmd->footer(

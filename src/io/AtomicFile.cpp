@@ -34,7 +34,7 @@ void writeFileAtomic(const std::string& path, const std::string& contents) {
 std::string toCsv(const Table& table) {
   std::ostringstream os;
   os.precision(12);
-  for (size_t i = 0; i < table.columns.size(); ++i) os << (i ? "," : "") << table.columns[i];
+  for (size_t i = 0; i < table.columns.size(); ++i) os << (i ? "," : "") << headerWithUnit(table.columns[i]);
   os << '\n';
   for (const auto& row : table.rows) {
     for (size_t i = 0; i < row.size(); ++i) os << (i ? "," : "") << row[i];

@@ -12,7 +12,7 @@ namespace rollerdyn {
 // std::runtime_error naming the path on failure; the previous file, if any, is left intact.
 void writeFileAtomic(const std::string& path, const std::string& contents);
 
-// CSV with a header row; numbers printed with 12 significant digits (enough to round-trip the
+// CSV with a header row of `name[unit]` cells (io/Table.h: headerWithUnit); numbers printed with 12 significant digits (enough to round-trip the
 // integrator accuracies we use; full 17 digits would triple the file size for no information).
 std::string toCsv(const Table& table);
 void writeCsvAtomic(const std::string& path, const Table& table);

@@ -1,4 +1,5 @@
 #include "report/HtmlReport.h"
+#include "report/SizingSection.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -222,6 +223,8 @@ std::string renderReportHtml(const ReportContent& c) {
     h << "<tr><td>" << htmlEscape(m.label) << "</td><td class=\"n\">" << htmlEscape(number(at(s, m.path), m.fmt))
       << "</td><td>" << m.unit << "</td></tr>\n";
   h << "</table>\n";
+
+  h << sizingSectionHtml(s);  // motion, stall cause, drive sizing (SizingSection.h)
 
   // Reactions
   const json rx = at(s, "reactions");

@@ -42,7 +42,7 @@ Table parseCsv(const std::string& text, const std::string& file_label) {
         if (f.empty())
           throw std::runtime_error(file_label + ":" + std::to_string(line_no) +
                                    ": expected a header of column names, got an empty name");
-      table.columns = fields;
+      for (const std::string& f : fields) table.columns.push_back(stripUnit(f));  // io/Table.h
       header = false;
       continue;
     }

@@ -9,131 +9,23 @@
 #include <stdexcept>
 
 #include "analysis/SteadyState.h"
-#include "physics/KlossMotor.h"
+#include "report/FigureSupport.h"
+#include "report/MotorFigures.h"
 
 namespace rollerdyn {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using namespace figures;  // FigureSupport.h
 
-// Colours of the two models and of the highlighted part of a trajectory.
-const char* const kBlue = "#1f77b4";
-const char* const kOrange = "#ff7f0e";
-const char* const kGreen = "#2ca02c";
-const char* const kRed = "#d62728";
-const char* const kGrey = "#9a9a9a";
+
 // Every fixed figure name of planRunFigures() (plus comparison_<quantity>).
 const std::set<std::string> kFigureNames = {
     "crank_speed_vs_angle",  "crank_accel_vs_angle",     "crank_speed_vs_time",
     "crank_accel_vs_time",   "coupling_torque_vs_time",  "motor_operating_point",
-    "motor_operating_point_steady", "guide_reactions_vs_angle", "rod_forces_vs_angle",
+    "motor_operating_point_steady", "motor_torque_vs_time", "motor_torque_vs_angle",
+    "motor_power_vs_time", "motor_power_vs_angle", "guide_reactions_vs_angle", "rod_forces_vs_angle",
     "twist_phase_rate",      "twist_phase_rate_accel",   "twist_phase_accel"};
-
-// One colour per cart (front/rear or several quantities of one cart share it).
-const char* const kCartColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
-                                   "#17becf", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"};
-const char* cartColor(int j) { return kCartColors[(j - 1) % 10]; }
-
-// Text for gnuplot's enhanced mode taken literally (scene names, file stems).
-std::string literal(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~') out += '\\';
-    out += c;
-  }
-  return out;
-}
-
-std::string capitalized(std::string s) {
-  if (!s.empty() && s[0] >= 'a' && s[0] <= 'z') s[0] = static_cast<char>(s[0] - 'a' + 'A');
-  return s;
-}
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-// Column `name` of `table`, or an empty vector when absent.
-std::vector<double> col(const Table& table, const std::string& name) {
-  return table.has(name) ? table.column(name) : std::vector<double>{};
-}
-
-bool anyFinite(const std::vector<double>& v) {
-  return std::any_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
-}
-
-double absMax(const std::vector<double>& v) {
-  double m = 0;
-  for (double x : v)
-    if (std::isfinite(x)) m = std::max(m, std::abs(x));
-  return m;
-}
-
-// Linear interpolation of y(t) at `at` (t ascending); NaN outside [t.front(), t.back()].
-double interp(const std::vector<double>& t, const std::vector<double>& y, double at) {
-  if (t.empty() || !(at >= t.front() && at <= t.back())) return kNaN;
-  const auto hi = std::lower_bound(t.begin(), t.end(), at);
-  const size_t k = static_cast<size_t>(hi - t.begin());
-  if (k == 0 || t[k] == at) return y[k];
-  const double w = (at - t[k - 1]) / (t[k] - t[k - 1]);
-  return y[k - 1] + w * (y[k] - y[k - 1]);
-}
-
-// Rows of `t` inside [w.t_begin, w.t_end] (all rows when the window is not found).
-std::vector<size_t> windowRows(const std::vector<double>& t, const TimeWindow& w) {
-  std::vector<size_t> rows;
-  for (size_t i = 0; i < t.size(); ++i)
-    if (!w.found || (t[i] >= w.t_begin && t[i] <= w.t_end)) rows.push_back(i);
-  return rows;
-}
-
-std::vector<double> pick(const std::vector<double>& v, const std::vector<size_t>& rows) {
-  std::vector<double> out;
-  out.reserve(rows.size());
-  for (size_t r : rows) out.push_back(r < v.size() ? v[r] : kNaN);
-  return out;
-}
-
-// Values of y at the positions of a folded-angle index (NaN at the wrap markers).
-std::vector<double> alongFold(const std::vector<double>& y, const std::vector<long>& index) {
-  std::vector<double> out;
-  out.reserve(index.size());
-  for (long i : index) out.push_back(i < 0 || static_cast<size_t>(i) >= y.size() ? kNaN : y[i]);
-  return out;
-}
-
-const char* const kAnglePreamble =
-    "set xrange [0:2*pi]\n"
-    "set xtics ('0' 0, 'π/2' pi/2, 'π' pi, '3π/2' 3*pi/2, '2π' 2*pi)";
-const char* const kAngleLabel = "crank angle φ_2 mod 2π [rad]";
-
-// A dashed vertical line at time t with a label, marking where the steady window starts.
-std::string windowMarker(const TimeWindow& w) {
-  if (!w.found) return "";
-  return "set arrow from " + fmt("%.9g", w.t_begin) + ", graph 0 to " + fmt("%.9g", w.t_begin) +
-         ", graph 1 nohead dt 2 lc rgb '#555555'\nset label 'steady window' at " +
-         fmt("%.9g", w.t_begin) + ", graph 0.95 offset 0.5,0 font ',9' tc rgb '#555555'";
-}
-
-std::string windowText(const TimeWindow& w) {
-  if (!w.found) return "whole run";
-  return "t = " + fmt("%.4g", w.t_begin) + " … " + fmt("%.4g", w.t_end) + " s";
-}
-
-PlotSeries series(std::string title, std::vector<double> x, std::vector<double> y,
-                  const std::string& color = "", double lw = 1.0) {
-  PlotSeries s;
-  s.title = std::move(title);
-  s.x = std::move(x);
-  s.y = std::move(y);
-  s.color = color;
-  s.line_width = lw;
-  return s;
-}
 
 // A column name as part of a file name: anything but letters, digits, '_' and '-' becomes '_',
 // so a CSV header can never point a figure outside the figures folder.
@@ -250,81 +142,6 @@ struct Planner {
         std::move(p));
   }
 
-  void motorFigure() {
-    const std::vector<double> t = col(out.timeseries, "t"), w = col(out.timeseries, "omega_motor"),
-                              m = col(out.timeseries, "motor_torque");
-    if (!anyFinite(w) || !anyFinite(m)) {
-      notes.push_back("motor operating point left out: timeseries.csv has no omega_motor/motor_torque");
-      return;
-    }
-    if (scene && !scene->motor.enabled) {
-      notes.push_back("motor operating point left out: the scene's motor is disabled (motor.enabled = false)");
-      return;
-    }
-    PlotSpec p;
-    p.title = title("motor operating point on its Kloss curve");
-    p.xlabel = "motor speed at the crank axis ω_1 [rad/s]";
-    p.ylabel = "motor torque at the crank axis M_{n1} [N·m]";
-    p.preamble = "set key inside left bottom box opaque";
-    double lo = 0, hi = 0;
-    for (double v : w)
-      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-    if (scene) {
-      const double u = scene->reducer.ratio, eta = scene->reducer.efficiency;
-      const double w_sync = scene->motor.omega_sync / u;
-      hi = std::max(hi, 1.03 * w_sync);
-      std::vector<double> cx, cy;
-      const int n = 600;
-      for (int i = 0; i <= n; ++i) {
-        const double x = lo + (hi - lo) * i / n;
-        cx.push_back(x);
-        cy.push_back(klossCrankTorque(scene->motor, u, eta, x));
-      }
-      p.series.push_back(series("Kloss curve M(ω) (scene " + literal(scene->name) + ")", cx, cy, kGrey, 5.0));
-      // The run's torque is the same static law of the same speed: check the two agree, so a
-      // run made with other motor data (--set motor.*) is not silently drawn on a wrong curve.
-      double dev = 0;
-      for (size_t i = 0; i < w.size() && i < m.size(); ++i)
-        if (std::isfinite(w[i]) && std::isfinite(m[i]))
-          dev = std::max(dev, std::abs(m[i] - klossCrankTorque(scene->motor, u, eta, w[i])));
-      const double scale = scene->motor.breakdown_torque * u * eta;
-      if (scale > 0 && dev > 1e-3 * scale)
-        notes.push_back("motor operating point: the run's motor_torque differs from the Kloss curve of scene '" +
-                        scene->name + "' by up to " + fmt("%.3g", dev) +
-                        " N·m; was the run made with other motor data (--set motor.* / reducer.*)? "
-                        "Pass the same --scene and --set to `rollerdyn plot`.");
-    } else {
-      notes.push_back("motor operating point drawn without its Kloss curve: no scene file (pass --scene FILE)");
-    }
-    p.series.push_back(series("trajectory, whole run", w, m, kBlue));
-    const std::vector<size_t> rows = windowRows(t, window);
-    if (window.found)
-      p.series.push_back(series("trajectory, steady window", pick(w, rows), pick(m, rows), kRed, 2.5));
-    PlotSpec zoom = p;  // the same, around the steady-state cycle
-    add("motor_operating_point",
-        "The motor's static Kloss characteristic reduced to the crank axis, M_n1 = M(u·ω_1)·u·η "
-        "(Loveikin, Pochka, Romasevych (2018) eq. (37)), and the operating points (omega_motor, motor_torque) the run went "
-        "through: the start-up along the curve and, highlighted, the steady-state cycle.",
-        std::move(p));
-    if (!window.found || rows.empty()) return;
-    double wlo = INFINITY, whi = -INFINITY, mlo = INFINITY, mhi = -INFINITY;
-    for (size_t r : rows)
-      if (r < w.size() && r < m.size() && std::isfinite(w[r]) && std::isfinite(m[r])) {
-        wlo = std::min(wlo, w[r]), whi = std::max(whi, w[r]);
-        mlo = std::min(mlo, m[r]), mhi = std::max(mhi, m[r]);
-      }
-    if (!(whi > wlo) || !(mhi > mlo)) return;
-    const double dw = 0.5 * (whi - wlo), dm = 0.5 * (mhi - mlo);
-    zoom.title = title("motor operating point, steady window (" + windowText(window) + ")");
-    zoom.preamble = "set key inside left bottom box opaque\nset xrange [" + fmt("%.9g", wlo - dw) + ":" +
-                    fmt("%.9g", whi + dw) + "]\nset yrange [" + fmt("%.9g", mlo - dm) + ":" + fmt("%.9g", mhi + dm) + "]";
-    if (scene) zoom.series[0].line_width = 2.0;
-    add("motor_operating_point_steady",
-        "Close-up of the previous figure around the steady-state cycle: how far the motor's speed "
-        "and torque swing on its characteristic while the crank turns.",
-        std::move(zoom));
-  }
-
   void reactionFigures() {
     if (!out.has_reactions) {
       notes.push_back("guide reaction and rod force figures left out: no reactions.csv");
@@ -406,7 +223,7 @@ struct Planner {
     }
     const std::vector<size_t> rows = windowRows(t, window);
     const std::vector<double> p0 = pick(psi, rows), p1 = pick(rate, rows), p2 = pick(acc, rows);
-    const char* l0 = "twist ψ = φ_1 - φ_2 [rad]";
+    const char* l0 = "twist ψ = φ_1 - φ_2, motor minus crank angle (crank axis) [rad]";
     const char* l1 = "twist rate dψ/dt [rad/s]";
     const char* l2 = "twist acceleration d^2ψ/dt^2 [rad/s^2]";
     struct P {
@@ -506,6 +323,9 @@ struct Planner {
 
 }  // namespace
 
+using figures::kNaN;
+using figures::kPi;
+
 TimeWindow steadyWindow(const OutputFolder& out) {
   TimeWindow w;
   if (out.has_summary && out.summary.contains("steady_state") && out.summary["steady_state"].is_object()) {
@@ -563,7 +383,7 @@ std::vector<FigurePlan> planRunFigures(const OutputFolder& out, const Scene* sce
     if (!p.window.found) notes.push_back("no steady window found: the angle plots show the whole run");
     p.crankFigures();
     p.couplingFigure();
-    p.motorFigure();
+    planMotorFigures(out, scene, p.window, p.scene_label, p.plans, notes);  // MotorFigures.h
     p.reactionFigures();
     p.twistFigures();
   } else if (out.has_summary || out.has_reactions) {

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/SizingInputs.h"
+
 namespace rollerdyn {
 
 enum class RodModel { Distributed, Split, Massless };          // rods.model
@@ -156,6 +158,7 @@ struct Scene {
   ReducedSettings reduced;
   DriveType drive = DriveType::Crank;  // crank | cam                              drive.type
   CamDrive cam;                        // cam.* (used when drive == Cam)
+  SizingInputs sizing;                 // sizing.*: ratings and targets, no effect on the run
 
   // --- Derived quantities, defined once so both models use the same formula. ---
 

@@ -407,6 +407,32 @@ ReducedSettings readReduced(const Reader& in) {
   return r;
 }
 
+// Ratings and targets of the sizing answers (SizingInputs.h); absent keys stay 0 = not given.
+SizingInputs readSizing(const Reader& in) {
+  SizingInputs z;
+  z.motor_nominal_torque = in.number("sizing.motor_nominal_torque");
+  z.motor_nominal_power = in.number("sizing.motor_nominal_power");
+  z.motor_efficiency = in.number("sizing.motor_efficiency");
+  z.target_delta = in.number("sizing.target_delta");
+  z.coupling_rated_torque = in.number("sizing.coupling_rated_torque");
+  z.rating_guide_roller = in.number("sizing.bearing_rating.guide_roller");
+  z.rating_rod_end = in.number("sizing.bearing_rating.rod_end");
+  z.rating_crank_pin = in.number("sizing.bearing_rating.crank_pin");
+  z.rating_main_bearing = in.number("sizing.bearing_rating.main_bearing");
+  if (in.has("motor.omega_nominal")) z.motor_omega_nominal = in.number("motor.omega_nominal");
+  if (in.has("motor.overload_ratio")) z.motor_overload_ratio = in.number("motor.overload_ratio");
+  if (z.motor_nominal_torque > 0 && z.motor_nominal_power > 0)
+    in.doc().fail("sizing.motor_nominal_power",
+                  "at most one of sizing.motor_nominal_torque and sizing.motor_nominal_power "
+                  "(they could disagree)",
+                  formatNumber(z.motor_nominal_power));
+  if (z.motor_nominal_power > 0 && !(z.motor_omega_nominal > 0))
+    in.doc().fail("sizing.motor_nominal_power",
+                  "a nominal power together with motor.omega_nominal (M_n = P_n/omega_n)",
+                  formatNumber(z.motor_nominal_power) + " without motor.omega_nominal");
+  return z;
+}
+
 Scene readScene(const SceneDocument& doc) {
   const Reader in(doc);
   Scene s;
@@ -428,6 +454,7 @@ Scene readScene(const SceneDocument& doc) {
   s.loads = readLoads(in);
   s.reduced = readReduced(in);
   readDrive(in, s);
+  s.sizing = readSizing(in);
 
   // Guide reactions (Loveikin, Pochka, Romasevych (2018) eq. (18)-(25)) divide by 2b; with friction they drive the load.
   if (s.loads.guide_friction > 0.0) {

@@ -10,14 +10,15 @@
 #include <stdexcept>
 #include <thread>
 
+#include "analysis/SizingSummary.h"
 #include "analysis/Summary.h"
 #include "io/AtomicFile.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
-#include "report/Gnuplot.h"
 #include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
 #include "studies/ResonanceCheck.h"
+#include "studies/StartLoad.h"
 
 namespace rollerdyn {
 
@@ -84,52 +85,13 @@ const std::vector<std::pair<std::string, std::string>>& metricSources() {
       {"twist_rate_swing", "twist_rate_swing"},
       {"twist_accel_swing", "twist_accel_swing"},
   };
-  return m;
+  static const std::vector<std::pair<std::string, std::string>> all = [] {
+    std::vector<std::pair<std::string, std::string>> v = m;
+    for (const auto& p : sizingMetricPaths()) v.push_back(p);  // drive sizing (SizingSummary.h)
+    return v;
+  }();
+  return all;
 }
-
-// Units for plot labels.
-std::string metricLabel(const std::string& m) {
-  if (m == "delta") return "delta [-] (Loveikin and Pochka (2007) eq. (12))";
-  if (m == "H") return "H [-] (Loveikin and Pochka (2007) eq. (13))";
-  if (m == "k_p") return "k_p [-] (Loveikin and Pochka (2007) eq. (14))";
-  if (m.rfind("omega_crank", 0) == 0) return m + " [rad/s]";
-  if (m == "coupling_torque_swing") return "coupling torque swing [N·m]";
-  if (m == "twist_swing") return "twist swing [rad]";
-  if (m == "twist_rate_swing") return "twist rate swing [rad/s]";
-  if (m == "twist_accel_swing") return "twist acceleration swing [rad/s²]";
-  if (m == "eps_crank_abs_max") return "max |eps_crank| [rad/s²]";
-  if (m == "energy_residual_rel") return "energy residual (relative) [-]";
-  return m;
-}
-
-// Gnuplot draws titles as enhanced text, where "_" starts a subscript: escape it (Gnuplot.h).
-std::string gp(const std::string& text) {
-  std::string out;
-  for (char c : text) out += (c == '_') ? std::string("\\_") : std::string(1, c);
-  return out;
-}
-
-std::string paramLabel(const std::string& key) {
-  const KeySpec* spec = findSceneKey(key);
-  if (spec && !spec->unit.empty() && spec->unit != "-") return key + " [" + spec->unit + "]";
-  return key;
-}
-
-std::string csvNumber(double v) {
-  if (!std::isfinite(v)) return "nan";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
-
-std::string csvText(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c == '\n' || c == '\r' ? ' ' : c);
-  return q + "\"";
-}
-
-nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts,
                     const std::vector<double>& values) {
@@ -158,7 +120,9 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
       run = runReducedModel(scene);
     }
     p.ran = true;
-    nlohmann::json summary = makeSummary(scene, run);
+    const StartLoad start_load = startLoadOf(scene);  // explains a stall in the status
+    nlohmann::json summary = makeSummary(scene, run, &start_load);
+    p.motion = summary.value("motion", "unknown");
     addResonanceWarnings(scene, summary);
     p.warnings = summary["warnings"];
     const auto& src = metricSources();
@@ -225,10 +189,15 @@ SweepParameter parseSweepValues(const std::string& key, const std::string& spec_
 const std::vector<std::string>& sweepMetricColumns() {
   static const std::vector<std::string> c = {
       "delta", "H", "k_p", "omega_crank_mean", "coupling_torque_swing", "twist_swing",
-      "eps_crank_abs_max", "energy_residual_rel", "steady_state_reached", "status", "cpu_seconds",
+      "eps_crank_abs_max", "energy_residual_rel", "steady_state_reached", "motion", "status", "cpu_seconds",
       "omega_crank_min", "omega_crank_max", "omega_crank_midrange", "twist_rate_swing",
       "twist_accel_swing", "resonance_warnings"};
-  return c;
+  static const std::vector<std::string> all = [] {
+    std::vector<std::string> v = c;
+    for (const auto& [name, path] : sizingMetricPaths()) v.push_back(name);
+    return v;
+  }();
+  return all;
 }
 
 const std::vector<std::string>& sweepNumericMetrics() {
@@ -254,8 +223,10 @@ SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
   bool any_steady = false;
   for (const SweepPoint& p : points)
     any_steady = any_steady || (p.complete && p.steady && std::isfinite(p.metric(metric)));
+  // A rocking or stalled crank is never an optimum, whatever its number says.
   auto candidate = [&](const SweepPoint& p) {
-    return p.complete && std::isfinite(p.metric(metric)) && (!any_steady || p.steady);
+    return p.complete && p.motion != "rocking" && p.motion != "stalled" &&
+           std::isfinite(p.metric(metric)) && (!any_steady || p.steady);
   };
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!candidate(points[i])) continue;
@@ -379,138 +350,6 @@ std::string describeOptimum(const SweepOptions& o, const SweepResult& r) {
   return os.str();
 }
 
-std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepResult& r,
-                                           const std::string& out_dir) {
-  std::vector<std::string> files;
-  const auto& metrics = sweepNumericMetrics();
-  // --- sweep.csv ---
-  std::ostringstream csv;
-  for (const SweepParameter& p : o.params) csv << csvText(p.key) << ',';
-  const auto& cols = sweepMetricColumns();
-  for (std::size_t c = 0; c < cols.size(); ++c) csv << cols[c] << (c + 1 < cols.size() ? "," : "\n");
-  for (const SweepPoint& p : r.points) {
-    for (const std::string& t : p.texts) csv << csvText(t) << ',';
-    for (std::size_t c = 0; c < cols.size(); ++c) {
-      const std::string& name = cols[c];
-      if (name == "steady_state_reached") csv << (p.steady ? 1 : 0);
-      else if (name == "status") csv << csvText(p.status);
-      else if (name == "cpu_seconds") csv << csvNumber(p.cpu_seconds);
-      else if (name == "resonance_warnings") csv << p.warnings.size();
-      else csv << csvNumber(p.metric(name));
-      csv << (c + 1 < cols.size() ? "," : "\n");
-    }
-  }
-  writeFileAtomic(out_dir + "/sweep.csv", csv.str());
-  files.push_back(out_dir + "/sweep.csv");
-
-  // --- plots ---
-  std::vector<std::string> plots;
-  std::string plot_note;
-  const bool all_numeric = [&] {
-    for (const SweepParameter& p : o.params)
-      if (!p.numeric()) return false;
-    return true;
-  }();
-  auto worth_plotting = [&](const std::string& m) {
-    bool finite = false, nonzero = false;
-    for (const SweepPoint& p : r.points) {
-      const double v = p.metric(m);
-      finite = finite || std::isfinite(v);
-      nonzero = nonzero || (std::isfinite(v) && v != 0.0);
-    }
-    return finite && nonzero;
-  };
-  if (o.params.size() > 2) {
-    plot_note = "no plots: more than two parameters";
-  } else if (!all_numeric) {
-    plot_note = "no plots: a parameter has non-numeric values";
-  } else if (!gnuplotAvailable()) {
-    plot_note = "no plots: gnuplot not found on PATH";
-  } else {
-    try {
-      for (const std::string& m : metrics) {
-        if (!worth_plotting(m)) continue;
-        if (o.params.size() == 1) {
-          PlotSpec spec;
-          spec.title = gp(m + " vs " + o.params[0].key + " (" + o.model + " model)");
-          spec.xlabel = gp(paramLabel(o.params[0].key));
-          spec.ylabel = gp(metricLabel(m));
-          PlotSeries s;
-          s.title = gp(m);
-          s.style = "linespoints";
-          for (const SweepPoint& p : r.points) {
-            s.x.push_back(p.values[0]);
-            s.y.push_back(p.metric(m));
-          }
-          spec.series.push_back(s);
-          renderPlot(spec, out_dir + "/plot_" + m);
-          plots.push_back(out_dir + "/plot_" + m + ".png");
-        } else {
-          const SweepParameter &py = o.params[0], &px = o.params[1];
-          std::vector<std::vector<double>> z(py.values.size(), std::vector<double>(px.values.size(), kNaN));
-          for (std::size_t i = 0; i < r.points.size(); ++i)
-            z[i / px.values.size()][i % px.values.size()] = r.points[i].metric(m);
-          renderHeatMap(gp(m + " (" + o.model + " model)"), gp(paramLabel(px.key)), gp(paramLabel(py.key)),
-                        gp(metricLabel(m)), px.values, py.values, z, out_dir + "/heatmap_" + m);
-          plots.push_back(out_dir + "/heatmap_" + m + ".png");
-        }
-      }
-    } catch (const std::exception& e) {
-      plot_note = std::string("plotting failed: ") + e.what();
-    }
-  }
-  for (const std::string& p : plots) files.push_back(p);
-
-  // --- sweep.json ---
-  nlohmann::json j;
-  j["scene"] = o.scene_path;
-  j["model"] = o.model;
-  j["base_overrides"] = o.base_overrides;
-  j["parameters"] = nlohmann::json::array();
-  for (const SweepParameter& p : o.params) j["parameters"].push_back({{"key", p.key}, {"values", p.texts}});
-  j["columns"] = cols;
-  j["points"] = nlohmann::json::array();
-  for (std::size_t i = 0; i < r.points.size(); ++i) {
-    const SweepPoint& p = r.points[i];
-    nlohmann::json values = nlohmann::json::object(), m = nlohmann::json::object();
-    for (std::size_t k = 0; k < o.params.size(); ++k)
-      values[o.params[k].key] = std::isfinite(p.values[k]) ? nlohmann::json(p.values[k]) : nlohmann::json(p.texts[k]);
-    for (const std::string& name : metrics) m[name] = jsonNumber(p.metric(name));
-    j["points"].push_back({{"index", i},
-                           {"values", values},
-                           {"metrics", m},
-                           {"steady_state_reached", p.steady},
-                           {"complete", p.complete},
-                           {"status", p.status},
-                           {"cpu_seconds", jsonNumber(p.cpu_seconds)},
-                           {"warnings", p.warnings}});
-  }
-  if (!r.optimum.metric.empty()) {
-    const SweepOptimum& opt = r.optimum;
-    nlohmann::json jo = {{"metric", opt.metric}, {"found", opt.found}, {"note", opt.note}};
-    if (opt.found) {
-      nlohmann::json at = nlohmann::json::object();
-      for (std::size_t k = 0; k < o.params.size(); ++k)
-        at[o.params[k].key] = std::isfinite(r.points[opt.index].values[k])
-                                  ? nlohmann::json(r.points[opt.index].values[k])
-                                  : nlohmann::json(r.points[opt.index].texts[k]);
-      jo["index"] = opt.index;
-      jo["at"] = at;
-      jo["value"] = opt.value;
-      jo["steady_state_reached"] = opt.steady;
-      if (opt.refined)
-        jo["parabola"] = {{"parameter", opt.refined_parameter}, {"value", opt.refined_value},
-                          {"note", "vertex of the parabola through the best grid point and its two neighbours"}};
-    }
-    j["optimum"] = jo;
-  } else {
-    j["optimum"] = nullptr;
-  }
-  j["plots"] = plots;
-  j["plot_note"] = plot_note;
-  writeFileAtomic(out_dir + "/sweep.json", j.dump(2) + "\n");
-  files.push_back(out_dir + "/sweep.json");
-  return files;
-}
+// writeSweepOutputs: SweepOutputs.cpp (files), SweepPlots.cpp (figures).
 
 }  // namespace rollerdyn

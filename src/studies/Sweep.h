@@ -6,11 +6,13 @@
 //
 // Outputs (writeSweepOutputs): sweep.csv, one row per point: the parameter values under their key
 // paths, then delta, H, k_p, omega_crank_mean, coupling_torque_swing, twist_swing,
-// eps_crank_abs_max, energy_residual_rel, steady_state_reached, status, cpu_seconds, then extra
-// columns omega_crank_min, omega_crank_max, omega_crank_midrange, twist_rate_swing,
-// twist_accel_swing, resonance_warnings; sweep.json (the same plus the optimum and the resonance
+// eps_crank_abs_max, energy_residual_rel, steady_state_reached, motion, status, cpu_seconds, then
+// extra columns omega_crank_min, omega_crank_max, omega_crank_midrange, twist_rate_swing,
+// twist_accel_swing, resonance_warnings and the drive-sizing metrics (analysis/SizingSummary.h);
+// headers carry units as name[unit] (io/Table.h); sweep.json (the same plus the optimum and the resonance
 // warnings of each point); plots: each metric against the parameter (one parameter) or a heat
-// map over the grid (two parameters), through src/report/Gnuplot.h.
+// map over the grid (two parameters), through src/report/Gnuplot.h, where points that are not
+// turning at steady state are marked and never set the colour scale (SweepPlots.h).
 #pragma once
 
 #include <atomic>
@@ -45,6 +47,7 @@ struct SweepPoint {
   bool ran = false;                      // the model ran (whatever its outcome)
   bool complete = false;                 // the run reached t_end
   bool steady = false;                   // summary: steady_state.reached
+  std::string motion = "not run";        // summary: motion (stalled, rocking, turning, ...)
   std::string status = "not run";        // run status, or "invalid: ...", "error: ..."
   double cpu_seconds = 0;                // CPU time of this point's thread [s]
   nlohmann::json warnings = nlohmann::json::array();  // resonance warnings (ResonanceCheck.h)

@@ -193,14 +193,15 @@ TEST(Summary, WriteSummaryAtomicWritesPrettyJson) {
 
 TEST(Summary, TextMentionsSceneStatusAndKeyNumbers) {
   RunResult run = testRun();
-  run.stats.status = "motor stalled at t = 3.2 s";
+  run.stats.status = "interrupted at t = 3.2 s";
   run.stats.complete = false;
   const json j = makeSummary(testScene(), run);
   const std::string text = summaryText(j);
-  EXPECT_NE(text.find("motor stalled at t = 3.2 s"), std::string::npos) << text;
+  EXPECT_NE(text.find("interrupted at t = 3.2 s"), std::string::npos) << text;
+  EXPECT_NE(text.find("motion       turning"), std::string::npos) << text;
   EXPECT_NE(text.find("synthetic-2cart"), std::string::npos) << text;
   EXPECT_NE(text.find("reduced"), std::string::npos) << text;
-  EXPECT_NE(text.find("delta 0.1"), std::string::npos) << text;
+  EXPECT_NE(text.find("δ (unevenness) 0.1"), std::string::npos) << text;
   EXPECT_NE(text.find("real-time factor"), std::string::npos) << text;
   const auto lines = std::count(text.begin(), text.end(), '\n');
   EXPECT_GE(lines, 8);

@@ -39,7 +39,8 @@ std::set<std::string> tree(const fs::path& dir) {
 
 const std::set<std::string> kElasticFigures = {
     "crank_speed_vs_angle", "crank_accel_vs_angle", "crank_speed_vs_time", "crank_accel_vs_time",
-    "coupling_torque_vs_time", "motor_operating_point", "motor_operating_point_steady", "guide_reactions_vs_angle", "rod_forces_vs_angle",
+    "coupling_torque_vs_time", "motor_operating_point", "motor_operating_point_steady", "motor_torque_vs_time",
+    "motor_torque_vs_angle", "motor_power_vs_time", "motor_power_vs_angle", "guide_reactions_vs_angle", "rod_forces_vs_angle",
     "twist_phase_rate", "twist_phase_rate_accel", "twist_phase_accel"};
 
 TEST(CliPlot, SimulateWithPlotThenPlotAgain) {
@@ -120,7 +121,8 @@ TEST(CliReport, WritesOneSelfContainedPage) {
   const std::string html = slurp(out.path() / "report.html");
   ASSERT_FALSE(html.empty());
   EXPECT_NE(html.find("<title>rollerdyn report: balanced-4cart</title>"), std::string::npos);
-  for (const char* section : {"Scene", "Summary metrics", "Joint reactions over the steady window", "Figures",
+  for (const char* section : {"Scene", "Summary metrics", "Motion and drive sizing", "Motor", "Joints and bearings",
+                              "Joint reactions over the steady window", "Figures",
                               "Scene parameters", "Derived quantities"})
     EXPECT_TRUE(html.find(std::string("<h2>") + section) != std::string::npos ||
                 html.find(std::string("<h3>") + section) != std::string::npos)

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -91,7 +92,9 @@ TEST(RunFigures, ElasticRunGetsEveryFigure) {
   const auto plans = planRunFigures(syntheticFolder(scene), &scene, notes);
   EXPECT_EQ(names(plans), (std::set<std::string>{"crank_speed_vs_angle", "crank_accel_vs_angle", "crank_speed_vs_time",
                                                  "crank_accel_vs_time", "coupling_torque_vs_time",
-                                                 "motor_operating_point", "motor_operating_point_steady", "guide_reactions_vs_angle",
+                                                 "motor_operating_point", "motor_operating_point_steady",
+                                                 "motor_torque_vs_time", "motor_torque_vs_angle", "motor_power_vs_time",
+                                                 "motor_power_vs_angle", "guide_reactions_vs_angle",
                                                  "rod_forces_vs_angle", "twist_phase_rate", "twist_phase_rate_accel",
                                                  "twist_phase_accel"}));
   EXPECT_TRUE(notes.empty()) << notes.front();
@@ -145,6 +148,54 @@ TEST(RunFigures, WithoutSceneTheTrajectoryIsDrawnAlone) {
   const auto plans = planRunFigures(syntheticFolder(scene), nullptr, notes);
   EXPECT_EQ(find(plans, "motor_operating_point").spec.series.size(), 2u);
   EXPECT_TRUE(mentions(notes, "without its Kloss curve"));
+}
+
+TEST(RunFigures, MotorTorqueAndPowerAtTheRotorWithNominalAndBreakdownLevels) {
+  const Scene scene = balanced();
+  std::vector<std::string> notes;
+  const OutputFolder f = syntheticFolder(scene);
+  const auto plans = planRunFigures(f, &scene, notes);
+  const double u = scene.reducer.ratio, eta = scene.reducer.efficiency;
+  const PlotSeries& torque = find(plans, "motor_torque_vs_time").spec.series.at(0);
+  const PlotSeries& power = find(plans, "motor_power_vs_time").spec.series.at(0);
+  const int iw = f.timeseries.index("omega_motor"), im = f.timeseries.index("motor_torque");
+  for (std::size_t k : {0ul, 137ul, 600ul}) {
+    const double M = f.timeseries.rows[k][im] / (u * eta);  // the column is M·u·η at the crank
+    EXPECT_NEAR(torque.y[k], M, 1e-9 * std::abs(M) + 1e-12);
+    EXPECT_NEAR(power.y[k], M * u * f.timeseries.rows[k][iw] * 1e-3, 1e-9 * std::abs(M) + 1e-12);
+  }
+  // Levels: M_n = M_kr/λ = 517.14/2.4 and M_kr = 517.14 N·m (scene), drawn as horizontal lines
+  // the y range keeps in view.
+  const std::string& pre = find(plans, "motor_torque_vs_angle").spec.preamble;
+  EXPECT_NE(pre.find("first 215.475 "), std::string::npos) << pre;
+  EXPECT_NE(pre.find("first 517.14 "), std::string::npos) << pre;
+  EXPECT_NE(pre.find("set yrange"), std::string::npos) << pre;
+  // Nominal power M_n·ω_n = 215.475·102.1 W, in kW.
+  char level[64];
+  std::snprintf(level, sizeof level, "first %.9g ", 517.14 / 2.4 * 102.1 * 1e-3);
+  EXPECT_NE(find(plans, "motor_power_vs_time").spec.preamble.find(level), std::string::npos)
+      << find(plans, "motor_power_vs_time").spec.preamble;
+}
+
+TEST(RunFigures, OperatingPointsOfTheSteadyWindowAreMarkedOnTheKlossCurve) {
+  const Scene scene = balanced();
+  std::vector<std::string> notes;
+  const auto plans = planRunFigures(syntheticFolder(scene), &scene, notes);
+  const FigurePlan& p = find(plans, "motor_operating_point");
+  const PlotSeries& steady = p.spec.series.back();
+  EXPECT_EQ(steady.style.rfind("points", 0), 0u);
+  EXPECT_EQ(steady.x.size(), 301u);  // rows with 3 <= t <= 6 of 0.01-s rows
+  // Breakdown point at ω_kr/u = ω0(1 - s_kr)/u and M_kr·u·η, nominal point marked too.
+  const double u = scene.reducer.ratio, eta = scene.reducer.efficiency;
+  char at[96];
+  std::snprintf(at, sizeof at, "at %.9g,%.9g point", scene.motor.omega_sync * (1 - scene.motor.critical_slip) / u,
+                scene.motor.breakdown_torque * u * eta);
+  EXPECT_NE(p.spec.preamble.find(at), std::string::npos) << p.spec.preamble;
+  EXPECT_NE(p.spec.preamble.find("nominal M_n"), std::string::npos);
+  // The close-up spans the steady operating range, not the whole curve.
+  const std::string& zoom = find(plans, "motor_operating_point_steady").spec.preamble;
+  EXPECT_NE(zoom.find("set xrange"), std::string::npos);
+  EXPECT_NE(zoom.find("breakdown torque"), std::string::npos);
 }
 
 TEST(RunFigures, RigidCouplingHasNoPhasePortraits) {
@@ -234,7 +285,7 @@ TEST(RunFigures, DrawsPngAndSvgWithGnuplot) {
   EXPECT_FALSE(fs::exists(dir / "comparison_omega_crank.png")) << "stale figure left in place";
   EXPECT_TRUE(fs::exists(dir / "notes.txt")) << "removed a file that is not a figure of ours";
   fs::remove(dir / "notes.txt");
-  ASSERT_EQ(set.figures.size(), 12u);
+  ASSERT_EQ(set.figures.size(), 16u);
   for (const FigureFile& f : set.figures) {
     std::ifstream png(f.png, std::ios::binary);
     char sig[8] = {};
@@ -248,7 +299,7 @@ TEST(RunFigures, DrawsPngAndSvgWithGnuplot) {
     ++files;
     EXPECT_TRUE(e.path().extension() == ".png" || e.path().extension() == ".svg") << e.path();
   }
-  EXPECT_EQ(files, 24u);
+  EXPECT_EQ(files, 32u);
   fs::remove_all(dir);
 }
 

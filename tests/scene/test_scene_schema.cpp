@@ -142,6 +142,16 @@ drive:
 cam:
   stroke: 0.45
   pusher_distance: 1.2
+sizing:
+  motor_nominal_torque: 120
+  motor_efficiency: 0.9
+  target_delta: 0.05
+  coupling_rated_torque: 9000
+  bearing_rating:
+    guide_roller: 1000
+    rod_end: 2000
+    crank_pin: 3000
+    main_bearing: 4000
 )";
 
 TEST(SceneSchema, FullSceneCoversTheSchema) {
@@ -149,7 +159,8 @@ TEST(SceneSchema, FullSceneCoversTheSchema) {
   for (const KeySpec& k : sceneSchema()) {
     // The critical slip has three alternative ways; the full scene uses way 1.
     if (k.path == "motor.omega_critical" || k.path == "motor.omega_nominal" ||
-        k.path == "motor.overload_ratio")
+        k.path == "motor.overload_ratio" ||
+        k.path == "sizing.motor_nominal_power")  // excludes motor_nominal_torque: test_scene_sizing
       continue;
     const std::string leaf = k.path.substr(k.path.rfind('.') + 1);
     EXPECT_NE(std::string(kFullScene).find(leaf + ":"), std::string::npos) << k.path;
@@ -217,6 +228,14 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_EQ(s.drive, DriveType::Crank);
   EXPECT_DOUBLE_EQ(s.cam.stroke, 0.45);
   EXPECT_DOUBLE_EQ(s.cam.pusher_distance, 1.2);
+  EXPECT_DOUBLE_EQ(s.sizing.motor_nominal_torque, 120.0);
+  EXPECT_DOUBLE_EQ(s.sizing.motor_efficiency, 0.9);
+  EXPECT_DOUBLE_EQ(s.sizing.target_delta, 0.05);
+  EXPECT_DOUBLE_EQ(s.sizing.coupling_rated_torque, 9000.0);
+  EXPECT_DOUBLE_EQ(s.sizing.rating_guide_roller, 1000.0);
+  EXPECT_DOUBLE_EQ(s.sizing.rating_rod_end, 2000.0);
+  EXPECT_DOUBLE_EQ(s.sizing.rating_crank_pin, 3000.0);
+  EXPECT_DOUBLE_EQ(s.sizing.rating_main_bearing, 4000.0);
 }
 
 }  // namespace

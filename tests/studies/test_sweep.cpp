@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "studies/Sweep.h"
+#include "studies/SweepPlots.h"
 
 namespace rollerdyn {
 namespace {
@@ -108,10 +109,15 @@ TEST(Sweep, WritesCsvJsonAndPlots) {
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header,
-            "crank.offset_deg,delta,H,k_p,omega_crank_mean,coupling_torque_swing,twist_swing,"
-            "eps_crank_abs_max,energy_residual_rel,steady_state_reached,status,cpu_seconds,"
-            "omega_crank_min,omega_crank_max,omega_crank_midrange,twist_rate_swing,"
-            "twist_accel_swing,resonance_warnings");
+            "crank.offset_deg[deg],delta[-],H[-],k_p[-],omega_crank_mean[rad/s],coupling_torque_swing[N*m],"
+            "twist_swing[rad],eps_crank_abs_max[rad/s^2],energy_residual_rel[-],steady_state_reached,motion,status,"
+            "cpu_seconds[s],omega_crank_min[rad/s],omega_crank_max[rad/s],omega_crank_midrange[rad/s],"
+            "twist_rate_swing[rad/s],twist_accel_swing[rad/s^2],resonance_warnings,motor_torque_rms[N*m],"
+            "motor_torque_peak[N*m],motor_rms_over_nominal[-],motor_peak_over_breakdown[-],motor_power_mean[W],"
+            "motor_power_peak[W],energy_per_revolution[J],kinetic_energy_swing[J],coupling_torque_peak[N*m],"
+            "guide_roller_peak[N],guide_roller_rear_peak[N],rod_force_peak[N],crank_pin_peak[N],"
+            "main_bearing_peak[N],guide_roller_equivalent_load[N],crank_pin_equivalent_load[N],"
+            "main_bearing_equivalent_load[N]");
   int rows = 0;
   for (std::string line; std::getline(csv, line);) ++rows;
   EXPECT_EQ(rows, 4);
@@ -135,6 +141,67 @@ TEST(Sweep, RejectsUnknownKeysMetricsAndModels) {
   o = smallSweep();
   o.model = "fem";
   EXPECT_THROW(runSweep(o), std::invalid_argument);
+}
+
+// Heat-map cells end halfway to the neighbours and at the first and last grid value: none runs
+// past the grid (a damping grid 2000, 8000 once drew a cell down to -1000).
+TEST(SweepPlots, HeatMapCellsStayInsideTheGrid) {
+  const auto e = heatMapCellEdges({2000, 8000});
+  EXPECT_EQ(e[0], (std::pair<double, double>{2000, 5000}));
+  EXPECT_EQ(e[1], (std::pair<double, double>{5000, 8000}));
+  const auto u = heatMapCellEdges({90, 0, 30});  // any order, uneven steps
+  EXPECT_EQ(u[1], (std::pair<double, double>{0, 15}));
+  EXPECT_EQ(u[2], (std::pair<double, double>{15, 60}));
+  EXPECT_EQ(u[0], (std::pair<double, double>{60, 90}));
+}
+
+TEST(SweepPlots, OnlyTurningPointsAtSteadyStateSetTheScale) {
+  SweepPoint p;
+  p.complete = true;
+  p.motion = "turning";
+  p.steady = true;
+  EXPECT_EQ(classifySweepPoint(p), SweepPointClass::Steady);
+  p.steady = false;
+  EXPECT_EQ(classifySweepPoint(p), SweepPointClass::Unsteady);
+  p.motion = "rocking";
+  EXPECT_EQ(classifySweepPoint(p), SweepPointClass::NoValue);
+  p.motion = "turning";
+  p.complete = false;
+  EXPECT_EQ(classifySweepPoint(p), SweepPointClass::NoValue);
+}
+
+// Loveikin, Pochka, Romasevych (2018) at Δφ = 0: the four carts' loads rock the crank; at 90° it
+// turns. The rocking point is named in the point, sweep.csv and sweep.json, has no δ, and is never
+// the optimum even where its numbers are smaller.
+TEST(Sweep, RockingPointIsNamedEverywhereAndNeverTheOptimum) {
+  SweepOptions o;
+  o.scene_path = std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml";
+  o.base_overrides = {"simulation.t_end=6"};
+  o.params = {parseSweepValues("crank.offset_deg", "0,90")};
+  o.model = "reduced";
+  o.minimize = "motor_peak_over_breakdown";
+  const SweepResult r = runSweep(o);
+  ASSERT_EQ(r.points.size(), 2u);
+  EXPECT_EQ(r.points[0].motion, "rocking");
+  EXPECT_TRUE(std::isnan(r.points[0].metric("delta")));
+  EXPECT_EQ(r.points[1].motion, "turning");
+  EXPECT_TRUE(std::isfinite(r.points[1].metric("delta")));
+  EXPECT_TRUE(std::isfinite(r.points[1].metric("motor_rms_over_nominal")));
+  ASSERT_TRUE(r.optimum.found);
+  EXPECT_EQ(r.optimum.index, 1u);
+  const std::string dir = ::testing::TempDir() + "/rollerdyn_sweep_rocking";
+  std::filesystem::remove_all(dir);
+  writeSweepOutputs(o, r, dir);
+  std::ifstream csv(dir + "/sweep.csv");
+  std::stringstream text;
+  text << csv.rdbuf();
+  EXPECT_NE(text.str().find(",rocking,"), std::string::npos) << text.str();
+  std::ifstream js(dir + "/sweep.json");
+  std::stringstream jt;
+  jt << js.rdbuf();
+  const auto j = nlohmann::json::parse(jt.str());
+  EXPECT_EQ(j["points"][0]["motion"], "rocking");
+  EXPECT_TRUE(j["points"][0]["metrics"]["delta"].is_null());
 }
 
 }  // namespace

@@ -1,0 +1,307 @@
+#include "analysis/DriveSizing.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+
+double given(double v) { return v > 0 ? v : kNaN; }  // 0 = not given in SizingInputs
+
+// Time mean and RMS of y over rows [b, e) (trapezoidal rule), and max |y|.
+struct Moments {
+  double mean = kNaN, rms = kNaN, peak = kNaN, max = kNaN;
+};
+Moments moments(const std::vector<double>& t, const std::vector<double>& y, std::size_t b,
+                std::size_t e) {
+  Moments m;
+  if (e < b + 2 || e > t.size() || e > y.size()) return m;
+  const Eigen::Index n = static_cast<Eigen::Index>(e - b);
+  const Eigen::Map<const Eigen::ArrayXd> ts(t.data() + b, n), ys(y.data() + b, n);
+  if (!ts.allFinite() || !ys.allFinite()) return m;
+  const double span = ts(n - 1) - ts(0);
+  if (!(span > 0)) return m;
+  const Eigen::ArrayXd dt = ts.tail(n - 1) - ts.head(n - 1);
+  m.mean = (0.5 * (ys.head(n - 1) + ys.tail(n - 1)) * dt).sum() / span;
+  const Eigen::ArrayXd sq = ys.square();
+  m.rms = std::sqrt((0.5 * (sq.head(n - 1) + sq.tail(n - 1)) * dt).sum() / span);
+  m.peak = ys.abs().maxCoeff();
+  m.max = ys.maxCoeff();
+  return m;
+}
+
+// y(t) of the timeseries resampled at the times tq (linear; both ascending). Returned as is
+// when the two grids are the same rows.
+std::vector<double> resample(const std::vector<double>& t, const std::vector<double>& y,
+                             const std::vector<double>& tq) {
+  if (t == tq) return y;
+  std::vector<double> out(tq.size(), kNaN);
+  std::size_t hi = 1;
+  for (std::size_t i = 0; i < tq.size(); ++i) {
+    if (t.size() < 2) break;
+    while (hi + 1 < t.size() && t[hi] < tq[i]) ++hi;
+    const double dt = t[hi] - t[hi - 1];
+    const double f = dt > 0 ? std::clamp((tq[i] - t[hi - 1]) / dt, 0.0, 1.0) : 1.0;
+    out[i] = y[hi - 1] + f * (y[hi] - y[hi - 1]);
+  }
+  return out;
+}
+
+std::vector<double> magnitude(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<double> m(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) m[i] = std::hypot(x[i], y[i]);
+  return m;
+}
+
+MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size_t e,
+                      double revolutions, bool turning) {
+  MotorSizing m;
+  const double u = sc.reducer.ratio, eta = sc.reducer.efficiency, w0 = sc.motor.omega_sync;
+  const SizingInputs& z = sc.sizing;
+  m.breakdown_torque = sc.motor.breakdown_torque;
+  m.nominal_torque = nominalMotorTorque(sc, &m.nominal_source);
+  m.line_power_basis =
+      z.motor_efficiency > 0
+          ? "shaft power / η_m (η_m = sizing.motor_efficiency; × η_m when generating)"
+          : "air-gap power M·ω0: rotor copper losses s·M·ω0 only, stator and iron losses "
+            "neglected (give sizing.motor_efficiency for shaft power / η_m)";
+  const double nan = kNaN;
+  m.torque_shaft_mean = m.torque_shaft_rms = m.torque_shaft_peak = nan;
+  m.torque_crank_mean = m.torque_crank_rms = m.torque_crank_peak = nan;
+  m.rms_over_nominal = m.peak_over_breakdown = nan;
+  m.power_shaft_mean = m.power_shaft_peak = m.power_line_mean = m.power_line_peak = nan;
+  m.slip_min = m.slip_max = m.energy_per_revolution = nan;
+  if (!sc.motor.enabled || !ts.has("t") || !ts.has("motor_torque") || !ts.has("omega_motor"))
+    return m;
+  m.available = true;
+  const std::vector<double> t = ts.column("t"), M_crank = ts.column("motor_torque"),
+                            w_crank_axis = ts.column("omega_motor");
+  std::vector<double> M(t.size()), P(t.size()), P_line(t.size()), s(t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    M[i] = M_crank[i] / (u * eta);          // rotor torque
+    const double w_r = u * w_crank_axis[i];  // rotor speed
+    P[i] = M[i] * w_r;
+    s[i] = 1.0 - w_r / w0;
+    if (z.motor_efficiency > 0)
+      P_line[i] = P[i] >= 0 ? P[i] / z.motor_efficiency : P[i] * z.motor_efficiency;
+    else
+      P_line[i] = M[i] * w0;
+  }
+  const Moments ms = moments(t, M, b, e), mc = moments(t, M_crank, b, e), mp = moments(t, P, b, e),
+                ml = moments(t, P_line, b, e);
+  m.torque_shaft_mean = ms.mean;
+  m.torque_shaft_rms = ms.rms;
+  m.torque_shaft_peak = ms.peak;
+  m.torque_crank_mean = mc.mean;
+  m.torque_crank_rms = mc.rms;
+  m.torque_crank_peak = mc.peak;
+  m.rms_over_nominal = ms.rms / m.nominal_torque;
+  m.peak_over_breakdown = ms.peak / m.breakdown_torque;
+  m.power_shaft_mean = mp.mean;
+  m.power_shaft_peak = mp.max;
+  m.power_line_mean = ml.mean;
+  m.power_line_peak = ml.max;
+  if (e >= b + 2) {
+    const auto [lo, hi] = std::minmax_element(s.begin() + b, s.begin() + e);
+    m.slip_min = *lo;
+    m.slip_max = *hi;
+  }
+  if (turning && revolutions >= 0.5)
+    m.energy_per_revolution = mp.mean * (t[e - 1] - t[b]) / revolutions;
+  return m;
+}
+
+FlywheelSizing sizeFlywheel(const Scene& sc, const Table& ts, const SteadyState& w,
+                            std::size_t b, std::size_t e, bool turning, double delta) {
+  FlywheelSizing f{kNaN, kNaN, delta, given(sc.sizing.target_delta), kNaN, kNaN, kNaN};
+  if (!turning || !ts.has("t") || !ts.has("omega_crank") || e < b + 2) return f;
+  const std::vector<double> t = ts.column("t"), w_c = ts.column("omega_crank");
+  const std::vector<double> T = kineticEnergy(sc, ts);
+  // ΔT over each whole revolution inside the window; the largest.
+  double swing = kNaN;
+  for (const CrankRevolution& r : w.revolutions) {
+    if (r.t_begin < w.t_begin - 1e-12 || r.t_end > w.t_end + 1e-12) continue;
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t i = b; i < e; ++i)
+      if (t[i] >= r.t_begin && t[i] <= r.t_end) lo = std::min(lo, T[i]), hi = std::max(hi, T[i]);
+    if (hi >= lo) swing = std::isfinite(swing) ? std::max(swing, hi - lo) : hi - lo;
+  }
+  f.kinetic_energy_swing = swing;
+  std::vector<double> J(t.size(), kNaN);
+  for (std::size_t i = b; i < e; ++i) J[i] = 2.0 * T[i] / (w_c[i] * w_c[i]);
+  f.inertia_effective = moments(t, J, b, e).mean;
+  if (!std::isfinite(f.target_delta) || !std::isfinite(delta) || !std::isfinite(f.inertia_effective))
+    return f;
+  // Energy method: δ ≈ ΔE/(J·ω²) with ΔE fixed by the loads, so δ·J stays constant: the run's
+  // δ with its J gives J* = J·δ/δ*, to be added on the crankshaft (≥ 0: a flywheel only adds).
+  f.added_inertia_crank = std::max(0.0, f.inertia_effective * (delta / f.target_delta - 1.0));
+  const bool on_crank = sc.flywheel.location == FlywheelLocation::Crankshaft;
+  const double u = sc.reducer.ratio;
+  f.flywheel_crankshaft = (on_crank ? sc.flywheel.inertia : 0.0) + f.added_inertia_crank;
+  f.flywheel_motor_shaft = (on_crank ? 0.0 : sc.flywheel.inertia) +
+                           f.added_inertia_crank / (sc.reducer.delta * u * u);
+  return f;
+}
+
+CouplingSizing sizeCoupling(const Scene& sc, const Table& ts, std::size_t b, std::size_t e) {
+  CouplingSizing c{false, kNaN, kNaN, kNaN, given(sc.sizing.coupling_rated_torque), kNaN};
+  if (!ts.has("t") || !ts.has("coupling_torque")) return c;
+  const std::vector<double> t = ts.column("t"), M = ts.column("coupling_torque");
+  const Moments m = moments(t, M, b, e);
+  c.available = true;
+  c.mean = m.mean;
+  c.peak = m.peak;
+  if (e >= b + 2) {
+    const auto [lo, hi] = std::minmax_element(M.begin() + b, M.begin() + e);
+    c.swing = *hi - *lo;
+  }
+  c.peak_over_rating = c.peak / c.rating;
+  return c;
+}
+
+void addJoint(std::vector<JointSizing>& out, const char* joint, int cart, std::string column,
+              std::string basis, const std::vector<double>& t, const std::vector<double>& F,
+              const std::vector<double>& speed, std::size_t b, std::size_t e, double rating) {
+  JointSizing j;
+  j.joint = joint;
+  j.cart = cart;
+  j.column = std::move(column);
+  j.speed_basis = std::move(basis);
+  j.load = jointLoad(t, F, speed, b, e);
+  j.rating = given(rating);
+  j.life_revolutions = ratingLifeRevolutions(j.rating, j.load.equivalent);
+  j.life_hours = ratingLifeHours(j.rating, j.load.equivalent, j.load.mean_speed);
+  out.push_back(std::move(j));
+}
+
+std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const SteadyState& w) {
+  std::vector<JointSizing> out;
+  const Table& rx = run.reactions;
+  const Table& ts = run.timeseries;
+  if (!rx.has("t") || rx.rows.empty() || !ts.has("t")) return out;
+  const std::vector<double> rt = rx.column("t"), tt = ts.column("t");
+  std::size_t b = 0;
+  while (b < rt.size() && !(rt[b] >= w.t_begin)) ++b;
+  std::size_t e = b;
+  while (e < rt.size() && rt[e] <= w.t_end) ++e;
+  const SizingInputs& z = sc.sizing;
+  std::vector<double> crank_speed;
+  if (ts.has("omega_crank")) crank_speed = resample(tt, ts.column("omega_crank"), rt);
+  const double d = sc.carts.geometry.d;
+  for (int j = 1; j <= sc.carts.count; ++j) {
+    const std::string k = std::to_string(j);
+    // A guide roller rolls on its guide at |v|/(d/2).
+    std::vector<double> roll;
+    std::string roll_basis = "none (carts.geometry.d not given): every instant weighted equally";
+    if (d > 0 && ts.has("v_cart_" + k)) {
+      roll = resample(tt, ts.column("v_cart_" + k), rt);
+      for (double& v : roll) v = std::abs(v) / (0.5 * d);
+      roll_basis = "guide-roller speed |v_cart|/(d/2)";
+    }
+    if (rx.has("N_front_" + k))
+      addJoint(out, "guide_roller_front", j, "N_front_" + k, roll_basis, rt, rx.column("N_front_" + k),
+               roll, b, e, z.rating_guide_roller);
+    if (rx.has("N_rear_" + k))
+      addJoint(out, "guide_roller_rear", j, "N_rear_" + k, roll_basis, rt, rx.column("N_rear_" + k),
+               roll, b, e, z.rating_guide_roller);
+    if (rx.has("F_rod_" + k))
+      addJoint(out, "rod_end", j, "F_rod_" + k,
+               "none: the rod end swings through a small angle, every instant weighted equally", rt,
+               rx.column("F_rod_" + k), {}, b, e, z.rating_rod_end);
+    if (rx.has("crankpin_x_" + k) && rx.has("crankpin_y_" + k) && !crank_speed.empty())
+      addJoint(out, "crank_pin", j, "crankpin_x_" + k + ", crankpin_y_" + k,
+               "crank speed |ω_crank| (the rod's own swing neglected)", rt,
+               magnitude(rx.column("crankpin_x_" + k), rx.column("crankpin_y_" + k)), crank_speed, b,
+               e, z.rating_crank_pin);
+  }
+  if (rx.has("bearing_x") && rx.has("bearing_y") && !crank_speed.empty())
+    addJoint(out, "main_bearing", 0, "bearing_x, bearing_y", "crank speed |ω_crank|", rt,
+             magnitude(rx.column("bearing_x"), rx.column("bearing_y")), crank_speed, b, e,
+             z.rating_main_bearing);
+  return out;
+}
+
+}  // namespace
+
+double nominalMotorTorque(const Scene& sc, std::string* source) {
+  const SizingInputs& z = sc.sizing;
+  std::string src;
+  double M_n = kNaN;
+  if (z.motor_nominal_torque > 0) {
+    M_n = z.motor_nominal_torque;
+    src = "sizing.motor_nominal_torque";
+  } else if (z.motor_nominal_power > 0 && z.motor_omega_nominal > 0) {
+    M_n = z.motor_nominal_power / z.motor_omega_nominal;
+    src = "P_n/ω_n (sizing.motor_nominal_power, motor.omega_nominal)";
+  } else if (z.motor_overload_ratio > 1) {
+    M_n = sc.motor.breakdown_torque / z.motor_overload_ratio;
+    src = "M_kr/λ (motor.breakdown_torque, motor.overload_ratio)";
+  } else {
+    src = "not given (sizing.motor_nominal_torque or sizing.motor_nominal_power)";
+  }
+  if (source) *source = src;
+  return M_n;
+}
+
+const JointSizing* DriveSizing::worst(const std::string& joint) const {
+  const JointSizing* best = nullptr;
+  auto score = [](const JointSizing& j) {
+    return std::isfinite(j.load.equivalent) ? j.load.equivalent : j.load.peak;
+  };
+  for (const JointSizing& j : joints)
+    if (j.joint == joint && (!best || score(j) > score(*best))) best = &j;
+  return best;
+}
+
+std::vector<double> kineticEnergy(const Scene& sc, const Table& ts) {
+  const std::size_t n = ts.rows.size();
+  std::vector<double> T(n, 0.0);
+  const double J1 = sc.motorSideInertia();
+  const double m_rod_half = sc.rods.model == RodModel::Massless ? 0.0 : 0.5 * sc.rods.mass;
+  const double r = sc.hasCamDrive() ? 0.0 : sc.crank.radius;
+  const double Jc = sc.crankSideInertia() + sc.carts.count * m_rod_half * r * r;
+  const double m_cart = sc.carts.mass + m_rod_half;
+  const int iw1 = ts.has("omega_motor") ? ts.index("omega_motor") : -1;
+  const int iw2 = ts.has("omega_crank") ? ts.index("omega_crank") : -1;
+  std::vector<int> iv;
+  for (int j = 1; j <= sc.carts.count; ++j)
+    if (ts.has("v_cart_" + std::to_string(j))) iv.push_back(ts.index("v_cart_" + std::to_string(j)));
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& row = ts.rows[i];
+    const double w2 = iw2 >= 0 ? row[iw2] : kNaN;
+    // Rigid coupling: the motor turns with the crank (omega_motor may be absent).
+    const double w1 = iw1 >= 0 ? row[iw1] : w2;
+    double t = 0.5 * J1 * w1 * w1 + 0.5 * Jc * w2 * w2;
+    for (int k : iv) t += 0.5 * m_cart * row[k] * row[k];
+    T[i] = t;
+  }
+  return T;
+}
+
+DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const SteadyState& w,
+                               bool turning, double delta) {
+  DriveSizing s;
+  const Table& ts = run.timeseries;
+  s.t_begin = w.t_begin;
+  s.t_end = w.t_end;
+  s.revolutions = kNaN;
+  const std::size_t n = std::min(w.finite_rows, ts.rows.size());
+  const std::size_t b = std::min(w.row_begin, n), e = std::min(w.row_end, n);
+  if (ts.has("phi_crank") && e >= b + 2) {
+    const int k = ts.index("phi_crank");
+    s.revolutions = std::abs(ts.rows[e - 1][k] - ts.rows[b][k]) / kTwoPi;
+  }
+  s.motor = sizeMotor(sc, ts, b, e, s.revolutions, turning);
+  s.flywheel = sizeFlywheel(sc, ts, w, b, e, turning, delta);
+  s.coupling = sizeCoupling(sc, ts, b, e);
+  s.joints = sizeJoints(sc, run, w);
+  return s;
+}
+
+}  // namespace rollerdyn

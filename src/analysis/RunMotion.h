@@ -1,0 +1,44 @@
+// How the drive moved, named once for every output (console, summary.json, report, sweep):
+//   "stalled"  the motor stalled (StallDetector.h: crank or motor below 1 % of synchronous speed
+//              for 1 s); the run ended early,
+//   "rocking"  the crank swings back and forth in the metrics window instead of turning (loads
+//              that the motor cannot lift over a dead centre, Loveikin, Pochka, Romasevych (2018)
+//              at small crank offsets),
+//   "turning"  the crank turns one way: per-revolution metrics (δ, H, k_p, energy per revolution,
+//              the flywheel size) have a meaning,
+//   "at_rest", "unknown" (no finite crank speed in the window).
+// And, for a stalled run, why: the motor's starting torque and its breakdown torque, reduced to
+// the crank, against the load torque at the start angle and averaged over a revolution.
+#pragma once
+
+#include <string>
+
+#include "analysis/Metrics.h"
+#include "analysis/RunResult.h"
+#include "scene/Scene.h"
+
+namespace rollerdyn {
+
+std::string classifyMotion(const Scene& scene, const RunResult& run, const WindowMetrics& window);
+
+// Whether per-revolution metrics mean anything for this motion.
+inline bool motionIsTurning(const std::string& motion) { return motion == "turning"; }
+
+// Load torques at the crank from the load laws of the scene (computed by the caller, which can
+// evaluate them: src/studies/StartLoad.h); NaN when not known.
+struct StartLoad {
+  double at_start_angle;  // resisting torque at initial.crank_angle_deg as the carts begin to
+                          // move forwards (crank speed → 0+) [N·m at the crank]
+  double revolution_mean; // the same averaged over one crank revolution [N·m at the crank]
+};
+
+// Torques of the motor reduced to the crank (Kloss law, Loveikin, Pochka, Romasevych (2018)
+// eq. (37), × u·η): starting torque at slip 1 and breakdown torque M_kr·u·η [N·m].
+double startingTorqueAtCrank(const Scene& scene);
+double breakdownTorqueAtCrank(const Scene& scene);
+
+// One or two sentences saying why a drive stalls, from the numbers above; a sentence that the
+// loads are not known when `load` is null.
+std::string stallExplanation(const Scene& scene, const StartLoad* load);
+
+}  // namespace rollerdyn

@@ -1,0 +1,210 @@
+#include "analysis/SizingSummary.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace rollerdyn {
+
+namespace {
+
+using nlohmann::json;
+
+json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+// "pass"/"FAIL" of ratio ≤ limit (strictly below when `strict`), null when the ratio is unknown.
+json check(double ratio, bool strict) {
+  if (!std::isfinite(ratio)) return nullptr;
+  return (strict ? ratio < 1.0 : ratio <= 1.0) ? "pass" : "FAIL";
+}
+
+json jointJson(const JointSizing& j) {
+  return {{"cart", j.cart > 0 ? json(j.cart) : json(nullptr)},
+          {"column", j.column},
+          {"mean", num(j.load.mean)},
+          {"amplitude", num(j.load.amplitude)},
+          {"peak", num(j.load.peak)},
+          {"equivalent_load", num(j.load.equivalent)},
+          {"mean_speed", num(j.load.mean_speed)},
+          {"speed_basis", j.speed_basis},
+          {"rating", num(j.rating)},
+          {"L10_revolutions", num(j.life_revolutions)},
+          {"L10_hours", num(j.life_hours)}};
+}
+
+const char* kJointKinds[] = {"guide_roller_front", "guide_roller_rear", "rod_end", "crank_pin",
+                             "main_bearing"};
+
+std::string fmt(const json& v, const char* f, double scale = 1.0) {
+  if (!v.is_number()) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v.get<double>() * scale);
+  return buf;
+}
+
+const json& at(const json& j, const char* k) {
+  static const json null_json;
+  return j.is_object() && j.contains(k) ? j.at(k) : null_json;
+}
+
+}  // namespace
+
+json sizingJson(const DriveSizing& s) {
+  json j;
+  j["window"] = {{"t_begin", num(s.t_begin)}, {"t_end", num(s.t_end)}, {"revolutions", num(s.revolutions)}};
+  const MotorSizing& m = s.motor;
+  if (m.available) {
+    j["motor"] = {
+        {"torque_shaft", {{"mean", num(m.torque_shaft_mean)}, {"rms", num(m.torque_shaft_rms)}, {"peak", num(m.torque_shaft_peak)}}},
+        {"torque_crank", {{"mean", num(m.torque_crank_mean)}, {"rms", num(m.torque_crank_rms)}, {"peak", num(m.torque_crank_peak)}}},
+        {"nominal_torque", num(m.nominal_torque)},
+        {"nominal_torque_source", m.nominal_source},
+        {"breakdown_torque", num(m.breakdown_torque)},
+        {"rms_over_nominal", num(m.rms_over_nominal)},
+        {"rms_check", check(m.rms_over_nominal, false)},
+        {"peak_over_breakdown", num(m.peak_over_breakdown)},
+        {"peak_check", check(m.peak_over_breakdown, true)},
+        {"power_shaft", {{"mean", num(m.power_shaft_mean)}, {"peak", num(m.power_shaft_peak)}}},
+        {"power_line", {{"mean", num(m.power_line_mean)}, {"peak", num(m.power_line_peak)}}},
+        {"line_power_basis", m.line_power_basis},
+        {"slip", {{"min", num(m.slip_min)}, {"max", num(m.slip_max)}}},
+        {"energy_per_revolution", num(m.energy_per_revolution)}};
+  } else {
+    j["motor"] = nullptr;
+  }
+  const FlywheelSizing& f = s.flywheel;
+  j["flywheel"] = {{"kinetic_energy_swing", num(f.kinetic_energy_swing)},
+                   {"inertia_effective", num(f.inertia_effective)},
+                   {"delta", num(f.delta)},
+                   {"target_delta", num(f.target_delta)},
+                   {"added_inertia_crankshaft", num(f.added_inertia_crank)},
+                   {"flywheel_crankshaft", num(f.flywheel_crankshaft)},
+                   {"flywheel_motor_shaft", num(f.flywheel_motor_shaft)},
+                   {"method",
+                    "energy method: δ ≈ ΔE/(J·ω²) with ΔE fixed by the loads, so J* = J·δ/δ*; "
+                    "J = time mean of 2T/ω_crank² of this run (constant-inertia approximation, "
+                    "motor slip ignored): a first estimate, check it with a run with flywheel.inertia set"}};
+  const CouplingSizing& c = s.coupling;
+  if (c.available) {
+    j["coupling"] = {{"mean", num(c.mean)}, {"peak", num(c.peak)}, {"swing", num(c.swing)},
+                     {"rated_torque", num(c.rating)}, {"peak_over_rating", num(c.peak_over_rating)},
+                     {"check", check(c.peak_over_rating, false)}};
+  } else {
+    j["coupling"] = nullptr;
+  }
+  json joints = json::object();
+  for (const char* kind : kJointKinds) {
+    const JointSizing* w = s.worst(kind);
+    if (!w) {
+      joints[kind] = nullptr;
+      continue;
+    }
+    json per = json::array();
+    for (const JointSizing& x : s.joints)
+      if (x.joint == kind) per.push_back(jointJson(x));
+    joints[kind] = {{"worst", jointJson(*w)}, {"per_cart", per}};
+  }
+  j["joints"] = joints;
+  j["life_exponent"] = kBearingLifeExponent;
+  return j;
+}
+
+const std::vector<std::pair<std::string, std::string>>& sizingMetricPaths() {
+  static const std::vector<std::pair<std::string, std::string>> p = {
+      {"motor_torque_rms", "sizing.motor.torque_shaft.rms"},
+      {"motor_torque_peak", "sizing.motor.torque_shaft.peak"},
+      {"motor_rms_over_nominal", "sizing.motor.rms_over_nominal"},
+      {"motor_peak_over_breakdown", "sizing.motor.peak_over_breakdown"},
+      {"motor_power_mean", "sizing.motor.power_shaft.mean"},
+      {"motor_power_peak", "sizing.motor.power_shaft.peak"},
+      {"energy_per_revolution", "sizing.motor.energy_per_revolution"},
+      {"kinetic_energy_swing", "sizing.flywheel.kinetic_energy_swing"},
+      {"coupling_torque_peak", "sizing.coupling.peak"},
+      {"guide_roller_peak", "sizing.joints.guide_roller_front.worst.peak"},
+      {"guide_roller_rear_peak", "sizing.joints.guide_roller_rear.worst.peak"},
+      {"rod_force_peak", "sizing.joints.rod_end.worst.peak"},
+      {"crank_pin_peak", "sizing.joints.crank_pin.worst.peak"},
+      {"main_bearing_peak", "sizing.joints.main_bearing.worst.peak"},
+      {"guide_roller_equivalent_load", "sizing.joints.guide_roller_front.worst.equivalent_load"},
+      {"crank_pin_equivalent_load", "sizing.joints.crank_pin.worst.equivalent_load"},
+      {"main_bearing_equivalent_load", "sizing.joints.main_bearing.worst.equivalent_load"},
+  };
+  return p;
+}
+
+std::string sizingText(const json& summary) {
+  const json& s = at(summary, "sizing");
+  if (!s.is_object()) return "";
+  std::ostringstream o;
+  auto chk = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
+  auto str = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
+  const json& w = at(s, "window");
+  o << "drive sizing over the steady window t = " << fmt(at(w, "t_begin"), "%.4g") << " ... "
+    << fmt(at(w, "t_end"), "%.4g") << " s (" << fmt(at(w, "revolutions"), "%.3g") << " crank revolutions)\n"
+    << "  M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω_r rotor speed, ω0 synchronous speed\n";
+  const json& m = at(s, "motor");
+  if (m.is_object()) {
+    const json &ts = at(m, "torque_shaft"), &tc = at(m, "torque_crank");
+    o << "  motor torque at the rotor M       mean " << fmt(at(ts, "mean"), "%.4g") << ", RMS "
+      << fmt(at(ts, "rms"), "%.4g") << ", peak |M| " << fmt(at(ts, "peak"), "%.4g") << " N·m\n";
+    o << "  motor torque at the crank M·u·η   mean " << fmt(at(tc, "mean"), "%.4g") << ", RMS "
+      << fmt(at(tc, "rms"), "%.4g") << ", peak " << fmt(at(tc, "peak"), "%.4g") << " N·m\n";
+    o << "  RMS / nominal torque M_n          " << fmt(at(ts, "rms"), "%.4g") << " / "
+      << fmt(at(m, "nominal_torque"), "%.4g") << " N·m = " << fmt(at(m, "rms_over_nominal"), "%.3f") << "  "
+      << chk(at(m, "rms_check")) << "  (thermal equivalent; M_n: " << str(at(m, "nominal_torque_source")) << ")\n";
+    o << "  peak / breakdown torque M_kr      " << fmt(at(ts, "peak"), "%.4g") << " / "
+      << fmt(at(m, "breakdown_torque"), "%.4g") << " N·m = " << fmt(at(m, "peak_over_breakdown"), "%.3f") << "  "
+      << chk(at(m, "peak_check")) << "\n";
+    const json &ps = at(m, "power_shaft"), &pl = at(m, "power_line"), &sl = at(m, "slip");
+    o << "  shaft power M·ω_r                 mean " << fmt(at(ps, "mean"), "%.4g", 1e-3) << ", peak "
+      << fmt(at(ps, "peak"), "%.4g", 1e-3) << " kW\n";
+    o << "  power drawn from the line         mean " << fmt(at(pl, "mean"), "%.4g", 1e-3) << ", peak "
+      << fmt(at(pl, "peak"), "%.4g", 1e-3) << " kW  (" << str(at(m, "line_power_basis")) << ")\n";
+    o << "  slip s = 1 - ω_r/ω0               " << fmt(at(sl, "min"), "%.4f") << " ... "
+      << fmt(at(sl, "max"), "%.4f") << "\n";
+    o << "  motor energy per crank revolution " << fmt(at(m, "energy_per_revolution"), "%.4g", 1e-3) << " kJ\n";
+  } else {
+    o << "  motor                             n/a (no motor torque in this run)\n";
+  }
+  const json& f = at(s, "flywheel");
+  o << "  flywheel                          kinetic-energy swing ΔT " << fmt(at(f, "kinetic_energy_swing"), "%.4g")
+    << " J per revolution; drive inertia at the crank J " << fmt(at(f, "inertia_effective"), "%.4g")
+    << " kg·m²; δ " << fmt(at(f, "delta"), "%.4g") << "\n";
+  if (at(f, "target_delta").is_number())
+    o << "                                    for δ* = " << fmt(at(f, "target_delta"), "%.4g") << ": flywheel "
+      << fmt(at(f, "flywheel_crankshaft"), "%.4g") << " kg·m² on the crankshaft or "
+      << fmt(at(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n"
+      << "                                    (energy method, J·δ constant: a first estimate, check with a run)\n";
+  else
+    o << "                                    target δ* not given (sizing.target_delta)\n";
+  const json& c = at(s, "coupling");
+  if (c.is_object()) {
+    o << "  coupling torque (crank axis)      mean " << fmt(at(c, "mean"), "%.4g") << ", peak |M| "
+      << fmt(at(c, "peak"), "%.4g") << ", swing " << fmt(at(c, "swing"), "%.4g") << " N·m";
+    if (at(c, "rated_torque").is_number())
+      o << "; peak / rating " << fmt(at(c, "rated_torque"), "%.4g") << " N·m = "
+        << fmt(at(c, "peak_over_rating"), "%.3f") << "  " << chk(at(c, "check"));
+    else
+      o << "; rating not given (sizing.coupling_rated_torque)";
+    o << "\n";
+  }
+  o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
+  const json& joints = at(s, "joints");
+  const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearing"};
+  for (std::size_t k = 0; k < 5; ++k) {
+    const json& x = at(at(joints, kJointKinds[k]), "worst");
+    if (!x.is_object()) continue;
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "  %-24s  %4s  %9s  %14s  %9s  %6s  %6s  %7s\n", names[k],
+                  at(x, "cart").is_number() ? std::to_string(at(x, "cart").get<int>()).c_str() : "-",
+                  fmt(at(x, "mean"), "%.3f", 1e-3).c_str(), fmt(at(x, "amplitude"), "%.3f", 1e-3).c_str(),
+                  fmt(at(x, "peak"), "%.3f", 1e-3).c_str(), fmt(at(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
+                  fmt(at(x, "rating"), "%.1f", 1e-3).c_str(), fmt(at(x, "L10_hours"), "%.3g").c_str());
+    o << buf;
+  }
+  o << "  P equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation speed; "
+       "C dynamic load rating (sizing.bearing_rating.*); L10 = (C/P)³·10⁶ revolutions\n";
+  return o.str();
+}
+
+}  // namespace rollerdyn

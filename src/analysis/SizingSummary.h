@@ -1,0 +1,27 @@
+// The drive-sizing answers (DriveSizing.h) as the `sizing` object of summary.json and as the
+// short table `rollerdyn simulate` prints. Numbers that do not apply are null in JSON and "n/a"
+// in the table; checks read "pass", "FAIL" or null (nothing to compare with).
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/DriveSizing.h"
+
+namespace rollerdyn {
+
+// sizing: {window {t_begin, t_end, revolutions}, motor {...} | null, flywheel {...},
+// coupling {...} | null, joints {guide_roller_front, guide_roller_rear, rod_end, crank_pin,
+// main_bearing: {worst {...}, per_cart [...]} | null}, life_exponent, notes}; units in the key
+// names' documentation (README, "Drive sizing").
+nlohmann::json sizingJson(const DriveSizing& sizing);
+
+// The table for the terminal, from a summary.json object (its `sizing`); "" when it has none.
+std::string sizingText(const nlohmann::json& summary);
+
+// Flat sizing metrics for sweeps: name -> path in summary.json (e.g. motor_rms_over_nominal ->
+// sizing.motor.rms_over_nominal), in column order.
+const std::vector<std::pair<std::string, std::string>>& sizingMetricPaths();
+
+}  // namespace rollerdyn

@@ -1,0 +1,242 @@
+#include "report/MotorFigures.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/DriveSizing.h"
+#include "physics/KlossMotor.h"
+#include "report/FigureSupport.h"
+
+namespace rollerdyn {
+
+namespace {
+
+using namespace figures;  // FigureSupport.h
+
+// The motor's nominal and breakdown points, at the rotor.
+struct MotorMarks {
+  double u = 1, eta = 1;          // reducer ratio and efficiency [-]
+  double M_n = kNaN, w_n = kNaN;  // nominal torque [N·m] and rotor speed [rad/s]
+  double M_kr = kNaN, w_kr = kNaN;  // breakdown torque [N·m] and rotor speed [rad/s]
+  double P_n = kNaN;              // nominal shaft power M_n·ω_n [W]
+};
+
+MotorMarks motorMarks(const Scene& sc) {
+  MotorMarks k;
+  k.u = sc.reducer.ratio;
+  k.eta = sc.reducer.efficiency;
+  k.M_kr = sc.motor.breakdown_torque;
+  const double w0 = sc.motor.omega_sync, s_kr = sc.motor.critical_slip;
+  k.w_kr = w0 * (1.0 - s_kr);
+  k.M_n = nominalMotorTorque(sc);
+  if (sc.sizing.motor_omega_nominal > 0) {
+    k.w_n = sc.sizing.motor_omega_nominal;
+  } else if (std::isfinite(k.M_n) && k.M_n < k.M_kr) {
+    // Kloss: M = 2·M_kr/(s/s_kr + s_kr/s) = M_n at s_n = s_kr·(λ - √(λ² - 1)), λ = M_kr/M_n.
+    const double lambda = k.M_kr / k.M_n;
+    k.w_n = w0 * (1.0 - s_kr * (lambda - std::sqrt(lambda * lambda - 1.0)));
+  }
+  k.P_n = k.M_n * k.w_n;
+  return k;
+}
+
+std::string hline(double y, const char* color, const std::string& label) {
+  if (!std::isfinite(y)) return "";
+  return "set arrow from graph 0, first " + fmt("%.9g", y) + " to graph 1, first " + fmt("%.9g", y) +
+         " nohead dt 2 lw 1.5 lc rgb '" + color + "' front\nset label \"" + label + "\" at graph 0.01, first " +
+         fmt("%.9g", y) + " offset 0,0.6 font ',9' tc rgb '" + color + "' front\n";
+}
+
+// A marked point with a label on the Kloss curve.
+std::string markPoint(int id, double x, double y, const char* color, const std::string& label) {
+  if (!std::isfinite(x) || !std::isfinite(y)) return "";
+  return "set label " + std::to_string(id) + " \"" + label + "\" at " + fmt("%.9g", x) + "," + fmt("%.9g", y) +
+         " point pt 7 ps 1.8 lc rgb '" + color + "' offset 1,-1 font ',9' tc rgb '" + color + "' front\n";
+}
+
+struct MotorPlanner {
+  const OutputFolder& out;
+  const Scene* scene;
+  const TimeWindow& window;
+  const std::string& scene_label;
+  std::vector<FigurePlan>& plans;
+  std::vector<std::string>& notes;
+
+  std::string title(const std::string& what) const {
+    return scene_label.empty() ? what : scene_label + ": " + what;
+  }
+  void add(std::string name, std::string caption, PlotSpec spec) {
+    plans.push_back({std::move(name), std::move(caption), std::move(spec)});
+  }
+
+  void operatingPoint(const std::vector<double>& t, const std::vector<double>& w,
+                      const std::vector<double>& m) {
+    PlotSpec p;
+    p.title = title("motor operating points on its Kloss curve");
+    p.xlabel = "motor speed reduced to the crank axis ω_1 = ω_r/u [rad/s]";
+    p.ylabel = "motor torque at the crank axis M_{n1} = M·u·η [N·m]";
+    p.preamble = "set key inside left bottom box opaque\n";
+    double lo = 0, hi = 0;
+    for (double v : w)
+      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    std::string marks;
+    MotorMarks k;
+    if (scene) {
+      k = motorMarks(*scene);
+      const double u = k.u, eta = k.eta;
+      hi = std::max(hi, 1.03 * scene->motor.omega_sync / u);
+      std::vector<double> cx, cy;
+      const int n = 600;
+      for (int i = 0; i <= n; ++i) {
+        const double x = lo + (hi - lo) * i / n;
+        cx.push_back(x);
+        cy.push_back(klossCrankTorque(scene->motor, u, eta, x));
+      }
+      p.series.push_back(series("Kloss curve (scene " + literal(scene->name) + ")", cx, cy, kGrey, 4.0));
+      // The run's torque is the same static law of the same speed: check the two agree, so a
+      // run made with other motor data (--set motor.*) is not silently drawn on a wrong curve.
+      double dev = 0;
+      for (size_t i = 0; i < w.size() && i < m.size(); ++i)
+        if (std::isfinite(w[i]) && std::isfinite(m[i]))
+          dev = std::max(dev, std::abs(m[i] - klossCrankTorque(scene->motor, u, eta, w[i])));
+      const double scale = scene->motor.breakdown_torque * u * eta;
+      if (scale > 0 && dev > 1e-3 * scale)
+        notes.push_back("motor operating point: the run's motor_torque differs from the Kloss curve of scene '" +
+                        scene->name + "' by up to " + fmt("%.3g", dev) +
+                        " N·m; was the run made with other motor data (--set motor.* / reducer.*)? "
+                        "Pass the same --scene and --set to `rollerdyn plot`.");
+      marks = markPoint(101, k.w_kr / u, k.M_kr * u * eta, kRed, "breakdown M_{kr}") +
+              markPoint(102, k.w_n / u, k.M_n * u * eta, kGreen, "nominal M_n");
+    } else {
+      notes.push_back("motor operating point drawn without its Kloss curve: no scene file (pass --scene FILE)");
+    }
+    p.preamble += marks;
+    const std::vector<size_t> rows = windowRows(t, window);
+    PlotSeries start = series("start-up and whole run", w, m, kBlue, 0.8);
+    p.series.push_back(start);
+    PlotSeries steady = series("operating points, steady window", pick(w, rows), pick(m, rows), kRed);
+    steady.style = "points pt 7 ps 0.6";
+    if (window.found) p.series.push_back(steady);
+    PlotSpec zoom = p;
+    add("motor_operating_point",
+        "The motor's static Kloss characteristic reduced to the crank axis, M_n1 = M(u·ω_1)·u·η "
+        "(Loveikin, Pochka, Romasevych (2018) eq. (37); M motor torque at the rotor, ω_1 motor speed "
+        "reduced to the crank, u reducer ratio, η its efficiency), the start-up along it (thin line), "
+        "the steady-window operating points (red), and the nominal and breakdown points.",
+        std::move(p));
+    if (!window.found || rows.empty()) return;
+    double wlo = INFINITY, whi = -INFINITY, mlo = INFINITY, mhi = -INFINITY;
+    for (size_t r : rows)
+      if (r < w.size() && r < m.size() && std::isfinite(w[r]) && std::isfinite(m[r])) {
+        wlo = std::min(wlo, w[r]), whi = std::max(whi, w[r]);
+        mlo = std::min(mlo, m[r]), mhi = std::max(mhi, m[r]);
+      }
+    if (!(whi > wlo) || !(mhi > mlo)) return;
+    // Zoom on the operating range; the torque axis keeps the nominal and breakdown lines in view.
+    const double dw = 0.5 * (whi - wlo);
+    double ylo = std::min(0.0, mlo), yhi = mhi;
+    if (scene) yhi = std::max(yhi, 1.05 * k.M_kr * k.u * k.eta);
+    ylo -= 0.05 * (yhi - ylo);  // the lowest operating points stay off the frame
+    zoom.title = title("motor operating points, steady window (" + windowText(window) + ")");
+    zoom.preamble = "set key inside right center box opaque\nset xrange [" + fmt("%.9g", wlo - dw) + ":" +
+                    fmt("%.9g", whi + dw) + "]\nset yrange [" + fmt("%.9g", ylo) + ":" + fmt("%.9g", yhi) + "]\n";
+    if (scene)
+      zoom.preamble += hline(k.M_n * k.u * k.eta, kGreen, "nominal torque M_n·u·η") +
+                       hline(k.M_kr * k.u * k.eta, kRed, "breakdown torque M_{kr}·u·η");
+    if (!zoom.series.empty() && scene) zoom.series[0].line_width = 2.0;
+    if (zoom.series.size() >= 2) zoom.series[zoom.series.size() - 2].title = "whole run";
+    if (!zoom.series.empty()) zoom.series.back().style = "points pt 7 ps 0.9";
+    add("motor_operating_point_steady",
+        "Close-up of the previous figure on the steady operating range: how far the motor's speed "
+        "and torque swing on its characteristic while the crank turns, against its nominal torque "
+        "M_n and breakdown torque M_kr (both reduced to the crank, × u·η).",
+        std::move(zoom));
+  }
+
+  void torqueAndPower(const std::vector<double>& t, const std::vector<double>& w,
+                      const std::vector<double>& m) {
+    if (!scene) {
+      notes.push_back("motor torque and power figures left out: no scene file for u and η (pass --scene FILE)");
+      return;
+    }
+    const MotorMarks k = motorMarks(*scene);
+    std::vector<double> M(m.size()), P(m.size());
+    for (size_t i = 0; i < m.size(); ++i) {
+      M[i] = m[i] / (k.u * k.eta);        // rotor torque
+      P[i] = M[i] * k.u * w[i] * 1e-3;    // shaft power M·ω_r [kW]
+    }
+    const std::string lines_M = hline(k.M_n, kGreen, "nominal torque M_n") + hline(k.M_kr, kRed, "breakdown torque M_{kr}");
+    const std::string lines_P = hline(k.P_n * 1e-3, kGreen, "nominal power P_n = M_n·ω_n");
+    struct Q {
+      const char* stem;
+      const char* what;
+      const char* ylabel;
+      const std::vector<double>* y;
+      std::string lines;
+      double level;  // highest level line, kept in view [same unit as y]
+    };
+    const Q qs[] = {{"motor_torque", "motor torque", "motor torque at the rotor M [N·m]", &M, lines_M, k.M_kr},
+                    {"motor_power", "motor shaft power", "shaft power M·ω_r [kW] (ω_r rotor speed)", &P, lines_P,
+                     k.P_n * 1e-3}};
+    // The y axis spans the data and the nominal/breakdown levels, so the margin is visible.
+    auto yrange = [](const std::vector<double>& y, double level) {
+      double lo = 0, hi = 0;
+      for (double v : y)
+        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+      if (std::isfinite(level)) hi = std::max(hi, level);
+      const double pad = 0.05 * (hi - lo);
+      return hi > lo ? "set yrange [" + fmt("%.9g", lo - pad) + ":" + fmt("%.9g", hi + pad) + "]\n" : std::string();
+    };
+    const std::vector<double> phi = col(out.timeseries, "phi_crank");
+    const std::vector<size_t> rows = windowRows(t, window);
+    std::vector<long> fold;
+    const std::vector<double> theta = phi.empty() ? std::vector<double>{} : foldedAngle(pick(phi, rows), &fold);
+    for (const Q& q : qs) {
+      PlotSpec a;
+      a.title = title(std::string(q.what) + " against time");
+      a.xlabel = "t [s]";
+      a.ylabel = q.ylabel;
+      a.preamble = windowMarker(window) + "\nset key off\n" + q.lines + yrange(*q.y, q.level);
+      a.series.push_back(series("", t, *q.y, kBlue));
+      add(std::string(q.stem) + "_vs_time",
+          capitalized(q.what) + " over the whole run, with the motor's nominal (green) and, for the "
+          "torque, breakdown (red) levels; the dashed vertical line marks the start of the steady window.",
+          std::move(a));
+      if (theta.empty()) continue;
+      PlotSpec b;
+      b.title = title(std::string(q.what) + " against crank angle (" + windowText(window) + ")");
+      b.xlabel = kAngleLabel;
+      b.ylabel = q.ylabel;
+      b.preamble = std::string(kAnglePreamble) + "\nset key off\n" + q.lines + yrange(*q.y, q.level);
+      PlotSeries s = series("", theta, alongFold(pick(*q.y, rows), fold), kBlue, 1.2);
+      s.break_at_nonfinite = true;
+      b.series.push_back(std::move(s));
+      add(std::string(q.stem) + "_vs_angle",
+          capitalized(q.what) + " against the crank angle over the steady window, one curve per "
+          "revolution, with the nominal and breakdown levels.",
+          std::move(b));
+    }
+  }
+};
+
+}  // namespace
+
+void planMotorFigures(const OutputFolder& out, const Scene* scene, const TimeWindow& window,
+                      const std::string& scene_label, std::vector<FigurePlan>& plans,
+                      std::vector<std::string>& notes) {
+  const std::vector<double> t = col(out.timeseries, "t"), w = col(out.timeseries, "omega_motor"),
+                            m = col(out.timeseries, "motor_torque");
+  if (!anyFinite(w) || !anyFinite(m)) {
+    notes.push_back("motor figures left out: timeseries.csv has no omega_motor/motor_torque");
+    return;
+  }
+  if (scene && !scene->motor.enabled) {
+    notes.push_back("motor figures left out: the scene's motor is disabled (motor.enabled = false)");
+    return;
+  }
+  MotorPlanner p{out, scene, window, scene_label, plans, notes};
+  p.operatingPoint(t, w, m);
+  p.torqueAndPower(t, w, m);
+}
+
+}  // namespace rollerdyn

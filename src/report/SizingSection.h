@@ -1,0 +1,17 @@
+// The "Motion and drive sizing" section of the HTML report: the motion of the crank (stalled,
+// rocking, turning) and why a drive stalled, then the sizing answers of summary.json's `sizing`
+// (analysis/SizingSummary.h): motor torques against nominal and breakdown torque with pass/fail,
+// powers, slip, energy per revolution, the flywheel for a target δ, the coupling torque against its
+// rating, and the bearing loads and L10 lives of every joint.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace rollerdyn {
+
+// HTML (h2, paragraphs, tables), every text escaped; a short paragraph when `summary` has no sizing.
+std::string sizingSectionHtml(const nlohmann::json& summary);
+
+}  // namespace rollerdyn

@@ -1,0 +1,138 @@
+// sweep.csv and sweep.json of a sweep (the figures: SweepPlots.cpp). Declared in Sweep.h.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "io/AtomicFile.h"
+#include "scene/SceneSchema.h"
+#include "studies/Sweep.h"
+#include "studies/SweepPlots.h"
+
+namespace rollerdyn {
+
+namespace {
+
+std::string csvNumber(double v) {
+  if (!std::isfinite(v)) return "nan";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.12g", v);
+  return buf;
+}
+
+std::string csvText(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c == '\n' || c == '\r' ? ' ' : c);
+  return q + "\"";
+}
+
+nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+// A parameter column: its key path and the schema unit (ASCII), e.g. coupling.damping[N*m*s/rad].
+std::string paramHeader(const std::string& key) {
+  const KeySpec* spec = findSceneKey(key);
+  if (!spec || spec->unit.empty()) return key;
+  std::string u;
+  for (std::size_t i = 0; i < spec->unit.size(); ++i) {
+    if (spec->unit.compare(i, 2, "·") == 0) { u += '*'; ++i; continue; }
+    if (spec->unit.compare(i, 2, "²") == 0) { u += "^2"; ++i; continue; }
+    u += spec->unit[i];
+  }
+  return key + "[" + u + "]";
+}
+
+}  // namespace
+
+std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepResult& r,
+                                           const std::string& out_dir) {
+  std::vector<std::string> files;
+  const auto& metrics = sweepNumericMetrics();
+  // --- sweep.csv ---
+  std::ostringstream csv;
+  // Headers as name[unit] (io/Table.h convention); text and count columns stay bare.
+  for (const SweepParameter& p : o.params) csv << csvText(paramHeader(p.key)) << ',';
+  const auto& cols = sweepMetricColumns();
+  for (std::size_t c = 0; c < cols.size(); ++c) {
+    const std::string unit = sweepMetricUnit(cols[c]);
+    csv << cols[c] << (unit.empty() ? "" : "[" + unit + "]") << (c + 1 < cols.size() ? "," : "\n");
+  }
+  for (const SweepPoint& p : r.points) {
+    for (const std::string& t : p.texts) csv << csvText(t) << ',';
+    for (std::size_t c = 0; c < cols.size(); ++c) {
+      const std::string& name = cols[c];
+      if (name == "steady_state_reached") csv << (p.steady ? 1 : 0);
+      else if (name == "status") csv << csvText(p.status);
+      else if (name == "motion") csv << csvText(p.motion);
+      else if (name == "cpu_seconds") csv << csvNumber(p.cpu_seconds);
+      else if (name == "resonance_warnings") csv << p.warnings.size();
+      else csv << csvNumber(p.metric(name));
+      csv << (c + 1 < cols.size() ? "," : "\n");
+    }
+  }
+  writeFileAtomic(out_dir + "/sweep.csv", csv.str());
+  files.push_back(out_dir + "/sweep.csv");
+
+  // --- plots (SweepPlots.h) ---
+  std::string plot_note;
+  std::vector<std::string> plots;
+  try {
+    plots = drawSweepPlots(o, r, out_dir, &plot_note);
+  } catch (const std::exception& e) {
+    plot_note = std::string("plotting failed: ") + e.what();
+  }
+  for (const std::string& p : plots) files.push_back(p);
+
+  // --- sweep.json ---
+  nlohmann::json j;
+  j["scene"] = o.scene_path;
+  j["model"] = o.model;
+  j["base_overrides"] = o.base_overrides;
+  j["parameters"] = nlohmann::json::array();
+  for (const SweepParameter& p : o.params) j["parameters"].push_back({{"key", p.key}, {"values", p.texts}});
+  j["columns"] = cols;
+  j["points"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const SweepPoint& p = r.points[i];
+    nlohmann::json values = nlohmann::json::object(), m = nlohmann::json::object();
+    for (std::size_t k = 0; k < o.params.size(); ++k)
+      values[o.params[k].key] = std::isfinite(p.values[k]) ? nlohmann::json(p.values[k]) : nlohmann::json(p.texts[k]);
+    for (const std::string& name : metrics) m[name] = jsonNumber(p.metric(name));
+    j["points"].push_back({{"index", i},
+                           {"values", values},
+                           {"metrics", m},
+                           {"steady_state_reached", p.steady},
+                           {"complete", p.complete},
+                           {"motion", p.motion},
+                           {"status", p.status},
+                           {"cpu_seconds", jsonNumber(p.cpu_seconds)},
+                           {"warnings", p.warnings}});
+  }
+  if (!r.optimum.metric.empty()) {
+    const SweepOptimum& opt = r.optimum;
+    nlohmann::json jo = {{"metric", opt.metric}, {"found", opt.found}, {"note", opt.note}};
+    if (opt.found) {
+      nlohmann::json at = nlohmann::json::object();
+      for (std::size_t k = 0; k < o.params.size(); ++k)
+        at[o.params[k].key] = std::isfinite(r.points[opt.index].values[k])
+                                  ? nlohmann::json(r.points[opt.index].values[k])
+                                  : nlohmann::json(r.points[opt.index].texts[k]);
+      jo["index"] = opt.index;
+      jo["at"] = at;
+      jo["value"] = opt.value;
+      jo["steady_state_reached"] = opt.steady;
+      if (opt.refined)
+        jo["parabola"] = {{"parameter", opt.refined_parameter}, {"value", opt.refined_value},
+                          {"note", "vertex of the parabola through the best grid point and its two neighbours"}};
+    }
+    j["optimum"] = jo;
+  } else {
+    j["optimum"] = nullptr;
+  }
+  j["plots"] = plots;
+  j["plot_note"] = plot_note;
+  writeFileAtomic(out_dir + "/sweep.json", j.dump(2) + "\n");
+  files.push_back(out_dir + "/sweep.json");
+  return files;
+}
+
+}  // namespace rollerdyn

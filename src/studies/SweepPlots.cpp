@@ -1,0 +1,272 @@
+#include "studies/SweepPlots.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+#include "report/Gnuplot.h"
+#include "scene/SceneSchema.h"
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Gnuplot draws titles as enhanced text, where "_" starts a subscript: escape it (Gnuplot.h).
+std::string gp(const std::string& text) {
+  std::string out;
+  for (char c : text) out += (c == '_') ? std::string("\\_") : std::string(1, c);
+  return out;
+}
+
+std::string paramLabel(const std::string& key) {
+  const KeySpec* spec = findSceneKey(key);
+  if (spec && !spec->unit.empty() && spec->unit != "-") return key + " [" + spec->unit + "]";
+  return key;
+}
+
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(12);
+  os << v;
+  return os.str();
+}
+
+const char* kLegend =
+    "black-hatched colour: turning, steady state not reached;  grey hatched: rocking, stalled or "
+    "failed (no value)";
+
+}  // namespace
+
+std::string sweepMetricUnit(const std::string& m) {
+  if (m == "delta" || m == "H" || m == "k_p" || m == "energy_residual_rel" ||
+      m.find("_over_") != std::string::npos)
+    return "-";
+  if (m.rfind("omega_crank", 0) == 0 || m == "twist_rate_swing") return "rad/s";
+  if (m == "twist_swing") return "rad";
+  if (m == "twist_accel_swing" || m == "eps_crank_abs_max") return "rad/s^2";
+  if (m == "coupling_torque_swing" || m == "coupling_torque_peak" || m.rfind("motor_torque", 0) == 0)
+    return "N*m";
+  if (m.rfind("motor_power", 0) == 0) return "W";
+  if (m == "energy_per_revolution" || m == "kinetic_energy_swing") return "J";
+  if (m.size() > 5 && (m.compare(m.size() - 5, 5, "_peak") == 0 ||
+                       m.find("equivalent_load") != std::string::npos))
+    return "N";
+  if (m == "cpu_seconds") return "s";
+  return "";
+}
+
+std::string sweepMetricLabel(const std::string& m) {
+  static const std::vector<std::pair<std::string, std::string>> names = {
+      {"delta", "δ, coefficient of unevenness (Loveikin and Pochka (2007) eq. (12))"},
+      {"H", "H, coefficient of dynamics (Loveikin and Pochka (2007) eq. (13))"},
+      {"k_p", "k_p, generalised coefficient (Loveikin and Pochka (2007) eq. (14))"},
+      {"coupling_torque_swing", "coupling torque swing ΔM"},
+      {"twist_swing", "twist swing"},
+      {"twist_rate_swing", "twist rate swing"},
+      {"twist_accel_swing", "twist acceleration swing"},
+      {"eps_crank_abs_max", "max |ε_{crank}|, crank angular acceleration"},
+      {"energy_residual_rel", "energy residual (relative)"},
+      {"motor_torque_rms", "RMS motor torque at the rotor"},
+      {"motor_torque_peak", "peak motor torque at the rotor"},
+      {"motor_rms_over_nominal", "RMS motor torque / nominal torque M_n"},
+      {"motor_peak_over_breakdown", "peak motor torque / breakdown torque M_{kr}"},
+      {"motor_power_mean", "mean motor shaft power"},
+      {"motor_power_peak", "peak motor shaft power"},
+      {"energy_per_revolution", "motor energy per crank revolution"},
+      {"kinetic_energy_swing", "kinetic-energy swing per revolution"},
+      {"coupling_torque_peak", "peak coupling torque"},
+      {"guide_roller_peak", "peak front guide-roller force"},
+      {"guide_roller_rear_peak", "peak rear guide-roller force"},
+      {"rod_force_peak", "peak rod force"},
+      {"crank_pin_peak", "peak crank-pin force"},
+      {"main_bearing_peak", "peak main-bearing force"},
+      {"guide_roller_equivalent_load", "guide-roller equivalent dynamic load P"},
+      {"crank_pin_equivalent_load", "crank-pin equivalent dynamic load P"},
+      {"main_bearing_equivalent_load", "main-bearing equivalent dynamic load P"},
+  };
+  std::string label = gp(m);
+  for (const auto& [k, v] : names)
+    if (k == m) label = v;
+  std::string unit = sweepMetricUnit(m);
+  if (unit == "N*m") unit = "N·m";
+  if (unit == "rad/s^2") unit = "rad/s²";
+  return label + (unit.empty() ? "" : " [" + unit + "]");
+}
+
+SweepPointClass classifySweepPoint(const SweepPoint& p) {
+  if (!p.complete || p.motion != "turning") return SweepPointClass::NoValue;
+  return p.steady ? SweepPointClass::Steady : SweepPointClass::Unsteady;
+}
+
+std::vector<std::pair<double, double>> heatMapCellEdges(const std::vector<double>& v) {
+  const std::size_t n = v.size();
+  std::vector<std::pair<double, double>> e(n);
+  if (n == 0) return e;
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return v[a] < v[b]; });
+  if (n == 1) {
+    const double h = std::max(0.5 * std::abs(v[0]), 0.5);
+    e[0] = {v[0] - h, v[0] + h};
+    return e;
+  }
+  for (std::size_t r = 0; r < n; ++r) {
+    const double x = v[order[r]];
+    const double lo = r == 0 ? x : 0.5 * (v[order[r - 1]] + x);
+    const double hi = r + 1 == n ? x : 0.5 * (x + v[order[r + 1]]);
+    e[order[r]] = {lo, hi};
+  }
+  return e;
+}
+
+std::vector<std::string> drawSweepPlots(const SweepOptions& o, const SweepResult& r,
+                                        const std::string& out_dir, std::string* note) {
+  std::vector<std::string> plots;
+  note->clear();
+  const bool all_numeric = std::all_of(o.params.begin(), o.params.end(),
+                                       [](const SweepParameter& p) { return p.numeric(); });
+  if (o.params.size() > 2) {
+    *note = "no plots: more than two parameters";
+    return plots;
+  }
+  if (!all_numeric) {
+    *note = "no plots: a parameter has non-numeric values";
+    return plots;
+  }
+  if (!gnuplotAvailable()) {
+    *note = "no plots: gnuplot not found on PATH";
+    return plots;
+  }
+  for (const std::string& m : sweepNumericMetrics()) {
+    // Only metrics with a finite, non-zero value at some drawable point are worth a figure.
+    bool worth = false;
+    for (const SweepPoint& p : r.points) {
+      const double v = p.metric(m);
+      worth = worth || (classifySweepPoint(p) != SweepPointClass::NoValue && std::isfinite(v) && v != 0.0);
+    }
+    if (!worth) continue;
+    if (o.params.size() == 1) {
+      PlotSpec spec;
+      spec.title = gp(m + " vs " + o.params[0].key + " (" + o.model + " model)");
+      spec.xlabel = gp(paramLabel(o.params[0].key));
+      spec.ylabel = sweepMetricLabel(m);
+      PlotSeries steady, unsteady;
+      steady.title = "turning, steady state";
+      steady.style = "linespoints pt 7";
+      steady.break_at_nonfinite = true;
+      steady.color = "#1f77b4";
+      unsteady.title = "turning, steady state not reached";
+      unsteady.style = "points pt 9 ps 1.5";
+      unsteady.color = "#ff7f0e";
+      std::vector<std::size_t> idx(r.points.size());
+      std::iota(idx.begin(), idx.end(), 0);
+      std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
+        return r.points[a].values[0] < r.points[b].values[0];
+      });
+      const auto edges = heatMapCellEdges(o.params[0].values);
+      std::ostringstream pre;
+      int obj = 1;
+      bool any_bad = false;
+      for (std::size_t i : idx) {
+        const SweepPoint& p = r.points[i];
+        const SweepPointClass c = classifySweepPoint(p);
+        const double x = p.values[0], y = p.metric(m);
+        steady.x.push_back(x);
+        steady.y.push_back(c == SweepPointClass::Steady ? y : kNaN);
+        if (c == SweepPointClass::Unsteady) {
+          unsteady.x.push_back(x);
+          unsteady.y.push_back(y);
+        }
+        if (c == SweepPointClass::NoValue) {
+          any_bad = true;
+          // Index into the parameter's value list for the band's extent.
+          std::size_t k = 0;
+          while (k < o.params[0].values.size() && o.params[0].values[k] != x) ++k;
+          double lo = x, hi = x;
+          if (k < edges.size()) lo = edges[k].first, hi = edges[k].second;
+          if (hi - lo <= 0) lo = x - 0.5, hi = x + 0.5;
+          pre << "set object " << obj++ << " rect from " << num(lo) << ", graph 0 to " << num(hi)
+              << ", graph 1 behind fc rgb '#999999' fs pattern 4 noborder\n";
+        }
+      }
+      // The whole grid stays in view, whichever points have values.
+      double xl = INFINITY, xh = -INFINITY;
+      for (const auto& e : edges) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
+      if (xh > xl) pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
+      if (any_bad)
+        pre << "set label 1 \"grey hatched: rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
+      spec.preamble = pre.str();
+      spec.series.push_back(steady);
+      if (!unsteady.x.empty()) spec.series.push_back(unsteady);
+      renderPlot(spec, out_dir + "/plot_" + m);
+      plots.push_back(out_dir + "/plot_" + m + ".png");
+      continue;
+    }
+    // Heat map: rows follow the first parameter (y), columns the second (x).
+    const SweepParameter &py = o.params[0], &px = o.params[1];
+    const auto ex = heatMapCellEdges(px.values), ey = heatMapCellEdges(py.values);
+    double lo = INFINITY, hi = -INFINITY;
+    for (const SweepPoint& p : r.points) {
+      const double v = p.metric(m);
+      if (classifySweepPoint(p) != SweepPointClass::NoValue && std::isfinite(v))
+        lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    if (hi <= lo) hi = lo + std::max(std::abs(lo) * 1e-6, 1e-12);
+    std::ostringstream pre;
+    pre << "set palette rgb 33,13,10\nset cbrange [" << num(lo) << ":" << num(hi) << "]\n"
+        << "unset key\nset cblabel \"" << sweepMetricLabel(m) << "\"\nset colorbox\nunset grid\n"
+        << "set bmargin 6\nset label 1 \"" << kLegend << "\" at screen 0.02, screen 0.03 left\n";
+    // xrange from the cell edges of every value, so the edge cells are never clipped.
+    double xl = INFINITY, xh = -INFINITY, yl = INFINITY, yh = -INFINITY;
+    for (const auto& e : ex) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
+    for (const auto& e : ey) yl = std::min(yl, e.first), yh = std::max(yh, e.second);
+    pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\nset yrange [" << num(yl) << ":" << num(yh) << "]\n";
+    const bool labels = r.points.size() <= 150;
+    int obj = 1, lab = 2;
+    for (std::size_t i = 0; i < r.points.size(); ++i) {
+      const SweepPoint& p = r.points[i];
+      const std::size_t iy = i / px.values.size(), ix = i % px.values.size();
+      const auto [x0, x1] = ex[ix];
+      const auto [y0, y1] = ey[iy];
+      const std::string rect = "rect from " + num(x0) + "," + num(y0) + " to " + num(x1) + "," + num(y1);
+      const SweepPointClass c = classifySweepPoint(p);
+      const double v = p.metric(m);
+      if (c == SweepPointClass::NoValue || !std::isfinite(v)) {
+        pre << "set object " << obj++ << " " << rect << " fc rgb '#999999' fs pattern 4 border lc rgb '#666666'\n";
+        continue;
+      }
+      pre << "set object " << obj++ << " " << rect << " fc palette cb " << num(v) << " fs solid 1.0 noborder\n";
+      if (c == SweepPointClass::Unsteady)
+        pre << "set object " << obj++ << " " << rect << " fc rgb '#000000' fs transparent pattern 5 noborder\n";
+      if (labels) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.3g", v);
+        pre << "set label " << lab++ << " \"" << buf << "\" at " << num(0.5 * (x0 + x1)) << ","
+            << num(0.5 * (y0 + y1)) << " center front font 'Sans,8'\n";
+      }
+    }
+    PlotSpec spec;
+    spec.title = gp(m + " (" + o.model + " model)");
+    spec.xlabel = gp(paramLabel(px.key));
+    spec.ylabel = gp(paramLabel(py.key));
+    spec.width = 900;
+    spec.height = 680;
+    spec.preamble = pre.str();
+    PlotSeries anchor;  // one invisible point that uses the palette, so the colour box is drawn
+    anchor.title = "";
+    anchor.style = "points pt 7 ps 0 lc palette cb " + num(lo);
+    anchor.x = {px.values[0]};
+    anchor.y = {py.values[0]};
+    spec.series.push_back(anchor);
+    renderPlot(spec, out_dir + "/heatmap_" + m);
+    plots.push_back(out_dir + "/heatmap_" + m + ".png");
+  }
+  return plots;
+}
+
+}  // namespace rollerdyn

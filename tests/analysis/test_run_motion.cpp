@@ -1,0 +1,118 @@
+// The motion of a run is named once (RunMotion.h) and carried everywhere: a stalled and a rocking
+// run get null δ, H, k_p, their motion in summary.json and the terminal text, and a stalled run
+// says why with the motor's starting and breakdown torques at the crank, computed here by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analysis/RunMotion.h"
+#include "analysis/SizingSummary.h"
+#include "analysis/Summary.h"
+
+using namespace rollerdyn;
+using nlohmann::json;
+
+namespace {
+
+Scene motorScene() {
+  Scene s{};
+  s.name = "synthetic";
+  s.simulation.steady_window_revolutions = 3;
+  s.motor.enabled = true;
+  s.motor.omega_sync = 100;
+  s.motor.breakdown_torque = 500;
+  s.motor.critical_slip = 0.2;
+  s.motor.rotor_inertia = 0.1;
+  s.reducer.ratio = 10;
+  s.reducer.efficiency = 0.9;
+  s.reducer.delta = 1;
+  s.rods.model = RodModel::Massless;
+  s.coupling.type = CouplingType::Rigid;
+  s.initial.crank_angle = 0.5;
+  return s;
+}
+
+// Crank creeping at 0.001 rad/s (below 1 % of ω0/u = 10 rad/s) for 3 s.
+RunResult creepingRun() {
+  RunResult r;
+  r.model = "multibody";
+  r.timeseries.columns = {"t", "phi_crank", "omega_crank", "omega_motor", "motor_torque"};
+  for (int i = 0; i <= 300; ++i) {
+    const double t = 0.01 * i;
+    r.timeseries.rows.push_back({t, 0.5 + 1e-3 * t, 1e-3, 1e-3, 1600});
+  }
+  r.reactions.columns = {"t"};
+  return r;
+}
+
+}  // namespace
+
+TEST(RunMotion, StartingAndBreakdownTorqueAtTheCrank) {
+  const Scene s = motorScene();
+  // Kloss at slip 1: 2·M_kr·s_kr/(1 + s_kr²) = 2·500·0.2/1.04, times u·η = 9.
+  EXPECT_NEAR(startingTorqueAtCrank(s), 2 * 500 * 0.2 / 1.04 * 9, 1e-9);
+  EXPECT_NEAR(breakdownTorqueAtCrank(s), 500 * 9, 1e-9);
+}
+
+TEST(RunMotion, StalledRunIsNamedExplainedAndHasNoCoefficients) {
+  const Scene s = motorScene();
+  RunResult r = creepingRun();
+  r.stats.complete = false;
+  r.stats.status = "motor stalled at t = 0 s";
+  const StartLoad load{2000.0, 6000.0};  // mean load above the breakdown torque 4500 N·m
+  const json j = makeSummary(s, r, &load);
+  EXPECT_EQ(j["motion"], "stalled");
+  EXPECT_EQ(j["crank_motion"], "stalled");
+  EXPECT_TRUE(j["delta"].is_null());
+  EXPECT_TRUE(j["H"].is_null());
+  EXPECT_TRUE(j["k_p"].is_null());
+  EXPECT_TRUE(j["sizing"]["flywheel"]["kinetic_energy_swing"].is_null());
+  ASSERT_TRUE(j["stall"].is_object());
+  EXPECT_NEAR(j["stall"]["starting_torque_crank"].get<double>(), 2 * 500 * 0.2 / 1.04 * 9, 1e-9);
+  EXPECT_EQ(j["stall"]["load_torque_mean"].get<double>(), 6000.0);
+  const std::string why = j["stall"]["explanation"];
+  EXPECT_NE(why.find("1731"), std::string::npos) << why;  // 1730.8 N·m starting torque, %.4g
+  EXPECT_NE(why.find("4500"), std::string::npos) << why;
+  EXPECT_NE(why.find("no steady running is possible"), std::string::npos) << why;
+  const std::string status = j["status"];
+  EXPECT_NE(status.find("the drive stalled: "), std::string::npos) << status;
+  const std::string text = summaryText(j);
+  EXPECT_NE(text.find("motion       stalled"), std::string::npos) << text;
+  EXPECT_NE(text.find("δ (unevenness) n/a"), std::string::npos) << text;
+  // Not a numerical failure: nothing is listed as non-finite.
+  EXPECT_TRUE(j["non_finite"].empty()) << j["non_finite"].dump();
+}
+
+TEST(RunMotion, StarvedStartIsExplainedByTheStartAngleLoad) {
+  const Scene s = motorScene();
+  const StartLoad load{2500.0, 1000.0};  // start-angle load above the 1731 N·m starting torque
+  const std::string why = stallExplanation(s, &load);
+  EXPECT_NE(why.find("cannot break away"), std::string::npos) << why;
+  EXPECT_NE(why.find("28.65 deg"), std::string::npos) << why;  // 0.5 rad
+  EXPECT_NE(stallExplanation(s, nullptr).find("not evaluated"), std::string::npos);
+}
+
+TEST(RunMotion, TheStallRuleAppliedToTheRowsNamesACompletedCreepingRun) {
+  // A table that was not cut short by a model (e.g. read back) is still named by the same rule.
+  const Scene s = motorScene();
+  RunResult r = creepingRun();
+  const json j = makeSummary(s, r);
+  EXPECT_EQ(j["motion"], "stalled");
+  EXPECT_NE(j["stall"]["explanation"].get<std::string>().find("not evaluated"), std::string::npos);
+}
+
+TEST(RunMotion, RockingRunIsNamedAndHasNoCoefficients) {
+  Scene s = motorScene();
+  s.motor.enabled = false;  // the stall rule does not apply without a motor
+  RunResult r;
+  r.timeseries.columns = {"t", "phi_crank", "omega_crank"};
+  for (int i = 0; i * 1e-3 <= 10.0; ++i) {
+    const double t = i * 1e-3;
+    r.timeseries.rows.push_back({t, 0.3 * std::sin(3 * t), 0.9 * std::cos(3 * t)});
+  }
+  const json j = makeSummary(s, r);
+  EXPECT_EQ(j["motion"], "rocking");
+  EXPECT_TRUE(j["delta"].is_null());
+  EXPECT_TRUE(j["stall"].is_null());
+  EXPECT_NE(summaryText(j).find("motion       rocking"), std::string::npos);
+}

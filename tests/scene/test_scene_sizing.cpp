@@ -1,0 +1,82 @@
+// The optional `sizing` section (SizingInputs.h): every key reaches the Scene, absent keys mean
+// "not given" (0), the Kloss way-3 data are kept for the nominal torque, and bad values are
+// rejected with file:line: key.
+#include <gtest/gtest.h>
+
+#include "SceneTestSupport.h"
+
+namespace rollerdyn {
+namespace {
+
+using test::expectSceneError;
+using test::kMinimalScene;
+using test::replaced;
+
+const std::string kSizing =
+    "sizing:\n"                          // 24
+    "  motor_nominal_torque: 210\n"      // 25
+    "  motor_efficiency: 0.91\n"         // 26
+    "  target_delta: 0.05\n"             // 27
+    "  coupling_rated_torque: 8000\n"    // 28
+    "  bearing_rating:\n"                // 29
+    "    guide_roller: 30000\n"          // 30
+    "    rod_end: 40000\n"               // 31
+    "    crank_pin: 120000\n"            // 32
+    "    main_bearing: 250000\n";        // 33
+
+TEST(SceneSizing, EveryKeyReachesTheScene) {
+  const Scene s = parseSceneText(kMinimalScene + kSizing, "test.yaml");
+  EXPECT_DOUBLE_EQ(s.sizing.motor_nominal_torque, 210);
+  EXPECT_DOUBLE_EQ(s.sizing.motor_efficiency, 0.91);
+  EXPECT_DOUBLE_EQ(s.sizing.target_delta, 0.05);
+  EXPECT_DOUBLE_EQ(s.sizing.coupling_rated_torque, 8000);
+  EXPECT_DOUBLE_EQ(s.sizing.rating_guide_roller, 30000);
+  EXPECT_DOUBLE_EQ(s.sizing.rating_rod_end, 40000);
+  EXPECT_DOUBLE_EQ(s.sizing.rating_crank_pin, 120000);
+  EXPECT_DOUBLE_EQ(s.sizing.rating_main_bearing, 250000);
+  EXPECT_EQ(s.sizing.motor_nominal_power, 0);
+  EXPECT_EQ(s.sizing.motor_omega_nominal, 0);  // the fixture gives critical_slip (way 1)
+}
+
+TEST(SceneSizing, AbsentSectionMeansNothingGivenAndKlossDataAreKept) {
+  const Scene a = parseSceneText(kMinimalScene, "test.yaml");
+  EXPECT_EQ(a.sizing.motor_nominal_torque, 0);
+  EXPECT_EQ(a.sizing.target_delta, 0);
+  const Scene b = parseSceneText(
+      replaced("  critical_slip: 0.1", "  omega_nominal: 102.1\n  overload_ratio: 2.4"), "test.yaml");
+  EXPECT_DOUBLE_EQ(b.sizing.motor_omega_nominal, 102.1);
+  EXPECT_DOUBLE_EQ(b.sizing.motor_overload_ratio, 2.4);
+}
+
+TEST(SceneSizing, NominalPowerNeedsTheNominalSpeed) {
+  expectSceneError(kMinimalScene + "sizing:\n  motor_nominal_power: 22000\n",
+                   {"test.yaml:25: sizing.motor_nominal_power: expected a nominal power together with "
+                    "motor.omega_nominal"});
+  const Scene s = parseSceneText(
+      replaced("  critical_slip: 0.1", "  omega_nominal: 102.1\n  overload_ratio: 2.4") +
+          "sizing:\n  motor_nominal_power: 22000\n",
+      "test.yaml");
+  EXPECT_DOUBLE_EQ(s.sizing.motor_nominal_power, 22000);
+}
+
+TEST(SceneSizing, RejectsBadValuesWithFileLineAndKey) {
+  expectSceneError(replaced("    rod_end: 40000", "    rod_end: -1", kMinimalScene + kSizing),
+                   {"test.yaml:31: sizing.bearing_rating.rod_end: expected a number > 0 [N]"});
+  expectSceneError(replaced("  motor_efficiency: 0.91", "  motor_efficiency: 1.5", kMinimalScene + kSizing),
+                   {"test.yaml:26: sizing.motor_efficiency: expected a number in (0, 1]"});
+  expectSceneError(replaced("  target_delta: 0.05", "  target_delta: small", kMinimalScene + kSizing),
+                   {"test.yaml:27: sizing.target_delta"});
+  expectSceneError(kMinimalScene + kSizing + "  motor_nominal_power: 22000\n",
+                   {"sizing.motor_nominal_power: expected at most one of sizing.motor_nominal_torque and "
+                    "sizing.motor_nominal_power"});
+  expectSceneError(replaced("    crank_pin: 120000", "    crank_pn: 120000", kMinimalScene + kSizing),
+                   {"test.yaml:32: sizing.bearing_rating.crank_pn", "did you mean 'crank_pin'?"});
+}
+
+TEST(SceneSizing, OverridesReachTheSizingSection) {
+  const Scene s = parseSceneText(kMinimalScene, "test.yaml", {"sizing.target_delta=0.08"});
+  EXPECT_DOUBLE_EQ(s.sizing.target_delta, 0.08);
+}
+
+}  // namespace
+}  // namespace rollerdyn
