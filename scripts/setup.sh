@@ -16,6 +16,8 @@ packages=(
   googletest libgtest-dev  # tests
   libbenchmark-dev      # Google Benchmark targets (benchmarks/)
   gnuplot-nox           # figures (PNG/SVG) of plot, report, bench and validation
+  libopenmpi-dev openmpi-bin  # sweeps over MPI ranks (mpirun/srun rollerdyn sweep) and their tests
+  libnlopt-cxx-dev      # design optimization (rollerdyn optimize)
 )
 
 missing=()

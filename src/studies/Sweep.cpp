@@ -18,6 +18,7 @@
 #include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
 #include "studies/ResonanceCheck.h"
+#include "studies/SweepExecution.h"
 
 namespace rollerdyn {
 
@@ -175,6 +176,11 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
 
 }  // namespace
 
+SweepPoint runSweepPoint(const SweepOptions& o, const std::vector<std::string>& texts,
+                         const std::vector<double>& values) {
+  return runPoint(o, texts, values);
+}
+
 bool SweepParameter::numeric() const {
   for (double v : values)
     if (!std::isfinite(v)) return false;
@@ -311,55 +317,13 @@ SweepResult runSweep(const SweepOptions& o) {
     if (!findSceneKey(p.key))
       throw std::invalid_argument("sweep: --param " + p.key + " is not a scene key (see model/README.md)");
   }
-  // Grid, last parameter fastest.
-  std::size_t total = 1;
-  for (const SweepParameter& p : o.params) total *= p.values.size();
-  std::vector<std::vector<std::size_t>> grid(total, std::vector<std::size_t>(o.params.size()));
-  for (std::size_t i = 0; i < total; ++i) {
-    std::size_t rest = i;
-    for (std::size_t k = o.params.size(); k-- > 0;) {
-      grid[i][k] = rest % o.params[k].values.size();
-      rest /= o.params[k].values.size();
-    }
-  }
-
+  // Grid (last parameter fastest) or explicit designs; threads or MPI, saved rows, resume.
   SweepResult result;
-  result.points.resize(total);
-  std::atomic<std::size_t> next{0};
-  std::mutex mu;
-  std::size_t done = 0;
-  auto worker = [&]() {
-    for (;;) {
-      const std::size_t i = next++;
-      if (i >= total) return;
-      std::vector<std::string> texts;
-      std::vector<double> values;
-      for (std::size_t k = 0; k < o.params.size(); ++k) {
-        texts.push_back(o.params[k].texts[grid[i][k]]);
-        values.push_back(o.params[k].values[grid[i][k]]);
-      }
-      SweepPoint p;
-      if (o.interrupt && o.interrupt->load()) {
-        p.texts = texts;
-        p.values = values;
-        p.metrics.assign(sweepNumericMetrics().size(), kNaN);
-        p.status = "not run (interrupted)";
-      } else {
-        p = runPoint(o, texts, values);
-      }
-      std::lock_guard<std::mutex> lock(mu);
-      result.points[i] = std::move(p);
-      ++done;
-      if (o.on_point) o.on_point(result.points[i], done, total);
-    }
-  };
-  const int n_threads = static_cast<int>(std::min<std::size_t>(std::max(1, o.threads), total));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < n_threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-
-  if (!o.minimize.empty()) result.optimum = findOptimum(o.params, result.points, o.minimize);
+  result.points = executeSweep(o, sweepDesigns(o), result);
+  if (!result.output_rank) return result;
+  // Designs from a file or a Latin hypercube are not ordered: no parabola through neighbours.
+  if (!o.minimize.empty())
+    result.optimum = findOptimum(o.designs.empty() ? o.params : std::vector<SweepParameter>{}, result.points, o.minimize);
   return result;
 }
 
@@ -422,6 +386,8 @@ std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepRes
   };
   if (o.params.size() > 2) {
     plot_note = "no plots: more than two parameters";
+  } else if (!o.designs.empty()) {
+    plot_note = "no plots: the designs (values file or Latin hypercube) are not a grid";
   } else if (!all_numeric) {
     plot_note = "no plots: a parameter has non-numeric values";
   } else if (!gnuplotAvailable()) {
@@ -508,6 +474,7 @@ std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepRes
   }
   j["plots"] = plots;
   j["plot_note"] = plot_note;
+  for (const auto& [key, value] : r.execution.items()) j[key] = value;  // ranks, points_per_rank, ...
   writeFileAtomic(out_dir + "/sweep.json", j.dump(2) + "\n");
   files.push_back(out_dir + "/sweep.json");
   return files;
