@@ -116,7 +116,8 @@ int main(int argc, char** argv) {
                 "  rollerdyn bench model/recuperative-2cart.yaml --study all --repeat 3");
 
   // sweep, cam-profile, chain: the studies of the papers (src/cli/SweepCommand.cpp, ...)
-  const Subcommand studies[] = {addSweepCommand(app), addCamProfileCommand(app), addChainCommand(app)};
+  const Subcommand studies[] = {addSweepCommand(app), addCamProfileCommand(app), addChainCommand(app),
+                               addOptimizeCommand(app)};
 
   try {
     app.parse(argc, argv);

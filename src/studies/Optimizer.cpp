@@ -1,0 +1,279 @@
+#include "studies/Optimizer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlopt.hpp>
+
+#include "scene/SceneSchema.h"
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+
+bool knownMetric(const std::string& m) {
+  const auto& names = sweepNumericMetrics();
+  return std::find(names.begin(), names.end(), m) != names.end();
+}
+
+std::string metricList() {
+  std::string list;
+  for (const std::string& m : sweepNumericMetrics()) list += (list.empty() ? "" : ", ") + m;
+  return list;
+}
+
+nlopt::algorithm algorithmOf(const std::string& method) {
+  if (method == "bobyqa") return nlopt::LN_BOBYQA;
+  if (method == "cobyla") return nlopt::LN_COBYLA;
+  if (method == "direct-l") return nlopt::GN_DIRECT_L;
+  return nlopt::GN_CRS2_LM;  // crs2
+}
+
+std::string resultText(nlopt::result r) {
+  switch (r) {
+    case nlopt::SUCCESS: return "success";
+    case nlopt::STOPVAL_REACHED: return "objective reached the stop value";
+    case nlopt::FTOL_REACHED: return "objective change below tolerance";
+    case nlopt::XTOL_REACHED: return "step below the parameter tolerance";
+    case nlopt::MAXEVAL_REACHED: return "maximum number of evaluations reached";
+    case nlopt::MAXTIME_REACHED: return "time limit reached";
+    default: return "stopped (NLopt result " + std::to_string(int(r)) + ")";
+  }
+}
+
+// The search: evaluations in the unit box u in [0,1]^n (x = lower + u·(upper − lower)), so a
+// step means the same fraction of every range whatever its unit; NLopt's callbacks go through
+// it. Objective and constraints of one design come from one run (cache by the texts applied).
+class Search {
+ public:
+  Search(const OptimizeOptions& o, OptimizeResult& r) : o_(o), r_(r) {
+    sweep_.scene_path = o.scene_path;
+    sweep_.base_overrides = o.base_overrides;
+    sweep_.model = o.model;
+    sweep_.interrupt = o.interrupt;
+    for (const SampleRange& p : o.params) {
+      SweepParameter sp;
+      sp.key = p.key;
+      sweep_.params.push_back(sp);
+    }
+  }
+
+  // Index into history of the design at u (run now unless cached).
+  std::size_t evaluate(const std::vector<double>& u) {
+    ++r_.requests;
+    OptimizeEvaluation e;
+    for (std::size_t k = 0; k < u.size(); ++k) {
+      const SampleRange& p = o_.params[k];
+      const double x = p.lower + std::clamp(u[k], 0.0, 1.0) * (p.upper - p.lower);
+      e.texts.push_back(formatNumber(x));
+      e.x.push_back(std::stod(e.texts.back()));  // the value the run used
+    }
+    const auto hit = cache_.find(e.texts);
+    if (hit != cache_.end()) return hit->second;
+    e.point = runSweepPoint(sweep_, e.texts, e.x);
+    judge(e);
+    r_.history.push_back(e);
+    const std::size_t index = r_.history.size() - 1;
+    cache_.emplace(e.texts, index);
+    if (e.run_ok) {
+      lo_ = std::min(lo_, e.objective);
+      hi_ = std::max(hi_, e.objective);
+    }
+    if (o_.on_evaluation) o_.on_evaluation(r_.history.back(), index + 1);
+    return index;
+  }
+
+  // What NLopt minimises. Usable designs that keep the constraints: the objective. Otherwise a
+  // value above every usable one seen (hi + span·(1 + violation)), so a failed, stalled or
+  // violating design never looks best; with COBYLA the constraints carry the violation instead.
+  double seen(const OptimizeEvaluation& e, bool constraints_by_method) const {
+    const double span = std::max({hi_ - lo_, 1e-3 * std::abs(hi_), 1e-12});
+    const double top = std::isfinite(hi_) ? hi_ : 1.0;
+    if (!e.run_ok) return top + 10.0 * span;
+    if (constraints_by_method || e.constraints_hold) return e.objective;
+    double violation = 0;
+    for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
+      violation += std::max(0.0, e.constraint_values[j]) / std::max(std::abs(o_.constraints[j].bound), 1e-12);
+    return top + span * (1.0 + violation);
+  }
+
+  // Constraint j as COBYLA sees it (<= 0 holds); a design that did not run usably violates all.
+  double constraintSeen(const OptimizeEvaluation& e, std::size_t j) const {
+    if (!e.run_ok) return std::abs(o_.constraints[j].bound) + 1.0;
+    return e.constraint_values[j];
+  }
+
+  const OptimizeOptions& options() const { return o_; }
+  OptimizeResult& result() { return r_; }
+
+ private:
+  void judge(OptimizeEvaluation& e) const {
+    const SweepPoint& p = e.point;
+    e.objective = kNaN;
+    for (std::size_t k = 0; k < o_.params.size(); ++k)
+      if (o_.params[k].key == o_.minimize) e.objective = e.x[k];
+    if (!std::isfinite(e.objective)) e.objective = p.metric(o_.minimize);
+    for (const OptimizeConstraint& c : o_.constraints) {
+      const double m = p.metric(c.metric);
+      e.constraint_values.push_back(c.upper ? m - c.bound : c.bound - m);
+    }
+    const double omega_min = p.metric("omega_crank_min");
+    if (!p.complete) {
+      e.reason = "did not complete: " + p.status;
+    } else if (!p.steady) {
+      e.reason = "no steady state by t_end";
+    } else if (!(omega_min > 0)) {
+      std::ostringstream os;
+      os << "the crank does not turn steadily (rocks or stops): omega_crank_min = " << omega_min << " rad/s";
+      e.reason = os.str();
+    } else if (!std::isfinite(e.objective)) {
+      e.reason = o_.minimize + " not available";
+    } else {
+      for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
+        if (!std::isfinite(e.constraint_values[j])) e.reason = o_.constraints[j].metric + " not available";
+    }
+    e.run_ok = e.reason.empty();
+    e.constraints_hold = e.run_ok;
+    for (double g : e.constraint_values) e.constraints_hold = e.constraints_hold && g <= 0.0;
+  }
+
+  const OptimizeOptions& o_;
+  OptimizeResult& r_;
+  SweepOptions sweep_;
+  std::map<std::vector<std::string>, std::size_t> cache_;
+  double lo_ = std::numeric_limits<double>::infinity(), hi_ = -std::numeric_limits<double>::infinity();
+};
+
+struct ConstraintRef {
+  Search* search;
+  std::size_t j;
+};
+
+double objectiveCallback(const std::vector<double>& u, std::vector<double>&, void* data) {
+  Search& s = *static_cast<Search*>(data);
+  if (s.options().interrupt && s.options().interrupt->load()) throw nlopt::forced_stop();
+  const std::size_t i = s.evaluate(u);
+  return s.seen(s.result().history[i], s.result().method == "cobyla");
+}
+
+double constraintCallback(const std::vector<double>& u, std::vector<double>&, void* data) {
+  const ConstraintRef& c = *static_cast<ConstraintRef*>(data);
+  const std::size_t i = c.search->evaluate(u);
+  return c.search->constraintSeen(c.search->result().history[i], c.j);
+}
+
+void validate(const OptimizeOptions& o) {
+  if (o.params.empty()) throw std::invalid_argument("optimize: give at least one --param KEY with --range a:b");
+  if (o.model != "multibody" && o.model != "reduced")
+    throw std::invalid_argument("optimize: --model must be multibody or reduced, got '" + o.model + "'");
+  for (std::size_t k = 0; k < o.params.size(); ++k) {
+    const SampleRange& p = o.params[k];
+    if (!findSceneKey(p.key))
+      throw std::invalid_argument("optimize: --param " + p.key + " is not a scene key (see model/README.md)");
+    if (!(p.lower < p.upper) || !std::isfinite(p.lower) || !std::isfinite(p.upper))
+      throw std::invalid_argument("optimize: --range of " + p.key + ": expected a:b with a < b");
+    for (std::size_t m = 0; m < k; ++m)
+      if (o.params[m].key == p.key) throw std::invalid_argument("optimize: --param " + p.key + " given twice");
+  }
+  bool is_key = false;
+  for (const SampleRange& p : o.params) is_key = is_key || p.key == o.minimize;
+  if (!is_key && !knownMetric(o.minimize))
+    throw std::invalid_argument("optimize: --minimize: expected a metric (" + metricList() +
+                                ") or one of the --param keys, got '" + o.minimize + "'");
+  for (const OptimizeConstraint& c : o.constraints)
+    if (!knownMetric(c.metric))
+      throw std::invalid_argument("optimize: --constraint '" + c.text + "': expected a metric (" + metricList() +
+                                  "), got '" + c.metric + "'");
+  const std::string& m = o.method;
+  if (m != "auto" && m != "bobyqa" && m != "cobyla" && m != "direct-l" && m != "crs2")
+    throw std::invalid_argument("optimize: --method: expected auto, bobyqa, cobyla, direct-l or crs2, got '" + m + "'");
+  if (m == "bobyqa" && !o.constraints.empty())
+    throw std::invalid_argument("optimize: --method bobyqa handles no --constraint: use cobyla (or auto), or a "
+                                "global method (direct-l, crs2: constraints by penalty)");
+  if (o.max_evals < 1) throw std::invalid_argument("optimize: --max-evals must be at least 1");
+  if (!(o.x_tolerance > 0 && o.x_tolerance < 1))
+    throw std::invalid_argument("optimize: the parameter tolerance must be between 0 and 1 (fraction of each range)");
+}
+
+}  // namespace
+
+OptimizeConstraint parseConstraint(const std::string& text) {
+  OptimizeConstraint c;
+  c.text = text;
+  std::size_t at = text.find("<=");
+  c.upper = true;
+  if (at == std::string::npos) {
+    at = text.find(">=");
+    c.upper = false;
+  }
+  if (at == std::string::npos)
+    throw std::invalid_argument("--constraint '" + text + "': expected METRIC<=VALUE or METRIC>=VALUE, e.g. 'delta<=0.05'");
+  c.metric = trim(text.substr(0, at));
+  const std::string value = trim(text.substr(at + 2));
+  std::size_t used = 0;
+  bool ok = !c.metric.empty() && !value.empty();
+  if (ok) {
+    try {
+      c.bound = std::stod(value, &used);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+  }
+  if (!ok || used != value.size() || !std::isfinite(c.bound))
+    throw std::invalid_argument("--constraint '" + text + "': expected METRIC<=VALUE or METRIC>=VALUE with a number, "
+                                "e.g. 'delta<=0.05'");
+  return c;
+}
+
+OptimizeResult runOptimize(const OptimizeOptions& o) {
+  validate(o);
+  OptimizeResult r;
+  r.method = o.method == "auto" ? (o.constraints.empty() ? "bobyqa" : "cobyla") : o.method;
+  Search search(o, r);
+  const unsigned n = unsigned(o.params.size());
+  nlopt::opt opt(algorithmOf(r.method), n);
+  opt.set_lower_bounds(std::vector<double>(n, 0.0));
+  opt.set_upper_bounds(std::vector<double>(n, 1.0));
+  opt.set_min_objective(objectiveCallback, &search);
+  std::vector<ConstraintRef> refs;
+  for (std::size_t j = 0; j < o.constraints.size(); ++j) refs.push_back({&search, j});
+  if (r.method == "cobyla")
+    for (ConstraintRef& c : refs) opt.add_inequality_constraint(constraintCallback, &c, 0.0);
+  opt.set_xtol_abs(o.x_tolerance);
+  opt.set_maxeval(o.max_evals);
+  opt.set_initial_step(0.25);  // a quarter of each range
+  std::vector<double> u(n, 0.5);  // start in the middle of the box
+  double seen = 0;
+  try {
+    r.stop_reason = resultText(opt.optimize(u, seen));
+  } catch (const nlopt::forced_stop&) {
+    r.stop_reason = "interrupted";
+  } catch (const nlopt::roundoff_limited&) {
+    r.stop_reason = "stopped by round-off (no further progress possible)";
+  } catch (const std::exception& e) {
+    // BOBYQA refuses one dimension and NLopt reports some failures as exceptions: say which.
+    r.stop_reason = std::string("NLopt failed: ") + e.what();
+  }
+  for (std::size_t i = 0; i < r.history.size(); ++i) {
+    const OptimizeEvaluation& e = r.history[i];
+    if (e.feasible() && (!r.found || e.objective < r.history[r.best].objective)) {
+      r.found = true;
+      r.best = i;
+    }
+  }
+  return r;
+}
+
+}  // namespace rollerdyn
