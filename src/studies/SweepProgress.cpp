@@ -13,6 +13,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "io/AtomicFile.h"
 #include "io/ReadFile.h"
 
 namespace rollerdyn {
@@ -102,6 +103,7 @@ SweepProgressFile::SweepProgressFile(const std::string& path, const std::string&
     std::size_t line_no = 0;
     std::vector<std::string> lines;
     while (std::getline(in, line)) lines.push_back(line);
+    std::string kept;  // the header and the whole rows: the file is rewritten with just these
     for (const std::string& l : lines) {
       ++line_no;
       if (l.empty()) continue;
@@ -123,6 +125,7 @@ SweepProgressFile::SweepProgressFile(const std::string& path, const std::string&
               fingerprint + "): the scene file, model, --set overrides, parameters, designs or --point-budget "
               "differ. Run the same command as before, or use another --out (or drop --resume to start afresh).");
         have_header = true;
+        kept += l + "\n";
         continue;
       }
       try {
@@ -131,11 +134,14 @@ SweepProgressFile::SweepProgressFile(const std::string& path, const std::string&
           throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": point index " +
                                       std::to_string(index) + " beyond the " + std::to_string(points) + " designs");
         saved_.emplace(index, sweepPointFromJson(j.at("point")));
+        kept += l + "\n";
       } catch (const nlohmann::json::exception& e) {
-        if (line_no == lines.size()) break;
+        if (line_no == lines.size()) break;  // cut by the kill: dropped
         throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": not a saved sweep row: " + e.what());
       }
     }
+    // Without a line cut by the kill, so the rows appended next start on a line of their own.
+    if (have_header) writeFileAtomic(path, kept);
   }
   std::filesystem::create_directories(std::filesystem::path(path).parent_path().empty()
                                           ? std::filesystem::path(".")
@@ -143,15 +149,7 @@ SweepProgressFile::SweepProgressFile(const std::string& path, const std::string&
   const int flags = O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | (have_header ? 0 : O_TRUNC);
   fd_ = ::open(path.c_str(), flags, 0644);
   if (fd_ < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-  if (have_header) {
-    // A line cut by the kill has no newline: end it, so the next row starts on its own line.
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    const auto size = static_cast<long long>(in.tellg());
-    if (size > 0) {
-      in.seekg(size - 1);
-      if (in.get() != '\n') writeLine(fd_, path_, "\n");
-    }
-  } else {
+  if (!have_header) {
     const nlohmann::json header = {{"rollerdyn_sweep_progress", 1}, {"fingerprint", fingerprint}, {"points", points}};
     writeLine(fd_, path_, header.dump() + "\n");
   }
