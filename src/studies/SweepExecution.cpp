@@ -69,8 +69,9 @@ std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& 
   };
 
   int threads = 1;
+  double dispatcher_busy = 0;
   if (o.mpi) {
-    runMpiSweep(todo, compute, record, o.dispatcher_computes, o.interrupt);
+    dispatcher_busy = runMpiSweep(todo, compute, record, o.dispatcher_computes, o.interrupt);
   } else {
     std::size_t next = 0;
     std::mutex next_mu;
@@ -107,6 +108,7 @@ std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& 
       {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},
       {"progress_file", o.progress_path.empty() ? std::string() : std::filesystem::path(o.progress_path).filename().string()},
       {"point_budget_cpu_seconds", o.point_budget}};
+  if (o.mpi) result.execution["dispatcher_busy_seconds"] = dispatcher_busy;
   return points;
 }
 

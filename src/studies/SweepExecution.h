@@ -13,7 +13,8 @@ namespace rollerdyn {
 
 // The points of all designs, in design order. Sets result.output_rank (false on MPI workers,
 // whose points are empty) and result.execution: ranks, points_per_rank (computed in this run by
-// each rank), threads, points_computed, points_resumed, wall_seconds, progress_file.
+// each rank), threads_per_rank, points_computed, points_resumed, wall_seconds, progress_file,
+// point_budget_cpu_seconds, and under MPI dispatcher_busy_seconds (SweepMpi.h).
 // Throws std::invalid_argument when --resume finds rows of a different sweep.
 std::vector<SweepPoint> executeSweep(const SweepOptions& options, const SweepDesigns& designs, SweepResult& result);
 

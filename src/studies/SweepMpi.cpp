@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <deque>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -40,6 +41,7 @@ namespace {
 constexpr int kTagResult = 1;  // worker -> rank 0: a finished row (or nothing) and a request
 constexpr int kTagWork = 2;    // rank 0 -> worker: a point index
 constexpr int kTagStop = 3;    // rank 0 -> worker: no more work
+constexpr int kDepth = 2;      // indices a worker holds at most: the one it computes and the next
 
 void finalizeAtExit() {
   int initialized = 0, finalized = 0;
@@ -65,22 +67,34 @@ MpiWorld startMpi() {
   return w;
 }
 
-void runMpiSweep(const std::vector<std::size_t>& todo, const std::function<SweepPoint(std::size_t)>& compute,
-                 const std::function<void(std::size_t, const SweepPoint&, int)>& record,
-                 bool dispatcher_computes, const std::atomic<bool>* interrupt) {
+double runMpiSweep(const std::vector<std::size_t>& todo, const std::function<SweepPoint(std::size_t)>& compute,
+                   const std::function<void(std::size_t, const SweepPoint&, int)>& record,
+                   bool dispatcher_computes, const std::atomic<bool>* interrupt) {
   const MpiWorld w = startMpi();
   if (w.rank != 0) {
-    // Worker: each message to rank 0 carries the previous row (empty the first time) and asks
-    // for the next index.
+    // Worker: keeps up to kDepth indices (the one it computes and the next), so the round trip
+    // to rank 0 for the next index overlaps the computation instead of idling between points.
+    // Each message to rank 0 carries one finished row (empty the first time) and asks for more.
+    std::deque<unsigned long long> queue;
     std::string payload;
+    MPI_Send(payload.data(), 0, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
     for (;;) {
-      MPI_Send(payload.data(), int(payload.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
-      MPI_Status st;
-      unsigned long long index = 0;
-      MPI_Recv(&index, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_ANY_TAG, MPI_COMM_WORLD, &st);
-      if (st.MPI_TAG == kTagStop) return;
+      for (;;) {  // take what rank 0 sent; wait only when there is nothing to compute
+        int flag = 0;
+        MPI_Status st;
+        MPI_Iprobe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
+        if (!flag && !queue.empty()) break;
+        if (!flag) MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &st);
+        unsigned long long index = 0;
+        MPI_Recv(&index, 1, MPI_UNSIGNED_LONG_LONG, 0, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        if (st.MPI_TAG == kTagStop) return 0.0;  // sent only when nothing is queued here
+        queue.push_back(index);
+      }
+      const unsigned long long index = queue.front();
+      queue.pop_front();
       const nlohmann::json row = {{"index", index}, {"point", sweepPointToJson(compute(std::size_t(index)))}};
       payload = row.dump();
+      MPI_Send(payload.data(), int(payload.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
     }
   }
   // Rank 0: hands out indices from one queue, to the workers and to its own computing thread.
@@ -104,7 +118,9 @@ void runMpiSweep(const std::vector<std::size_t>& todo, const std::function<Sweep
       }
     });
   int active = w.size - 1;
+  std::vector<int> outstanding(std::size_t(w.size), 0);  // indices sent to each worker, rows not yet back
   std::string buffer;
+  double busy = 0;  // [s]
   while (active > 0) {
     int flag = 0;
     MPI_Status st;
@@ -115,25 +131,31 @@ void runMpiSweep(const std::vector<std::size_t>& todo, const std::function<Sweep
       std::this_thread::sleep_for(std::chrono::microseconds(200));
       continue;
     }
+    const auto t0 = std::chrono::steady_clock::now();
     int count = 0;
     MPI_Get_count(&st, MPI_CHAR, &count);
     buffer.assign(std::size_t(count), '\0');
     MPI_Recv(buffer.data(), count, MPI_CHAR, st.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    const std::size_t from = std::size_t(st.MPI_SOURCE);
     if (!buffer.empty()) {
       const nlohmann::json row = nlohmann::json::parse(buffer);
       const SweepPoint p = sweepPointFromJson(row.at("point"));
+      --outstanding[from];
       std::lock_guard<std::mutex> lock(record_mu);
       record(row.at("index").get<std::size_t>(), p, st.MPI_SOURCE);
     }
     std::size_t i = 0;
-    if (take(&i)) {
+    while (outstanding[from] < kDepth && take(&i)) {
       unsigned long long index = i;
       MPI_Send(&index, 1, MPI_UNSIGNED_LONG_LONG, st.MPI_SOURCE, kTagWork, MPI_COMM_WORLD);
-    } else {
+      ++outstanding[from];
+    }
+    if (outstanding[from] == 0) {  // no more work and nothing in flight there: release it
       unsigned long long none = 0;
       MPI_Send(&none, 1, MPI_UNSIGNED_LONG_LONG, st.MPI_SOURCE, kTagStop, MPI_COMM_WORLD);
       --active;
     }
+    busy += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   if (local.joinable()) local.join();
   if (!dispatcher_computes && w.size == 1) {
@@ -141,6 +163,7 @@ void runMpiSweep(const std::vector<std::size_t>& todo, const std::function<Sweep
     std::size_t i = 0;
     while (take(&i)) record(i, compute(i), 0);
   }
+  return busy;
 }
 
 #else  // built without MPI
@@ -154,10 +177,11 @@ MpiWorld startMpi() {
       "(it then uses --threads)");
 }
 
-void runMpiSweep(const std::vector<std::size_t>&, const std::function<SweepPoint(std::size_t)>&,
-                 const std::function<void(std::size_t, const SweepPoint&, int)>&, bool,
-                 const std::atomic<bool>*) {
+double runMpiSweep(const std::vector<std::size_t>&, const std::function<SweepPoint(std::size_t)>&,
+                   const std::function<void(std::size_t, const SweepPoint&, int)>&, bool,
+                   const std::atomic<bool>*) {
   startMpi();
+  return 0.0;
 }
 
 #endif

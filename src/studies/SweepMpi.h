@@ -41,7 +41,10 @@ MpiWorld startMpi();
 // serialised, with the rank that computed it; workers return when rank 0 has no more work. On
 // rank 0, interrupt stops handing out points (the ones in flight are still collected).
 // dispatcher_computes: rank 0 also computes points on one thread beside the dispatching.
-void runMpiSweep(const std::vector<std::size_t>& todo, const std::function<SweepPoint(std::size_t)>& compute,
+// Returns, on rank 0, the wall time its main thread spent serving workers' messages (receive,
+// read the row, record it, reply) [s]: divided by the points, the service time that bounds how
+// many ranks one dispatcher can feed; 0 on workers.
+double runMpiSweep(const std::vector<std::size_t>& todo, const std::function<SweepPoint(std::size_t)>& compute,
                  const std::function<void(std::size_t, const SweepPoint&, int)>& record,
                  bool dispatcher_computes, const std::atomic<bool>* interrupt);
 
