@@ -96,7 +96,8 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
       PlotSpec spec;
       spec.title = gp("convergence: " + o.minimize + " (" + r.method + ", " + o.model + " model)");
       spec.xlabel = "evaluation";
-      spec.ylabel = gp(o.minimize);
+      spec.ylabel = gp(withUnit(o.minimize));
+      spec.preamble = "set key below";
       PlotSeries all, bad, line;
       all.title = "usable design, constraints hold";
       all.style = "points";
@@ -124,7 +125,8 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
         PlotSpec d;
         d.title = gp("evaluated designs and the optimum (" + r.method + ")");
         d.xlabel = gp(withUnit(o.params[0].key));
-        d.ylabel = gp(o.params.size() == 1 ? o.minimize : withUnit(o.params[1].key));
+        d.ylabel = gp(withUnit(o.params.size() == 1 ? o.minimize : o.params[1].key));
+        d.preamble = "set key below";
         PlotSeries ok, viol, opt;
         ok.title = "constraints hold";
         ok.style = "points";

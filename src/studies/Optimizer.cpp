@@ -116,6 +116,7 @@ class Search {
   }
 
   const OptimizeOptions& options() const { return o_; }
+  std::string method;  // the NLopt method running now (COBYLA takes the constraints itself)
   OptimizeResult& result() { return r_; }
 
  private:
@@ -165,7 +166,7 @@ double objectiveCallback(const std::vector<double>& u, std::vector<double>&, voi
   Search& s = *static_cast<Search*>(data);
   if (s.options().interrupt && s.options().interrupt->load()) throw nlopt::forced_stop();
   const std::size_t i = s.evaluate(u);
-  return s.seen(s.result().history[i], s.result().method == "cobyla");
+  return s.seen(s.result().history[i], s.method == "cobyla");
 }
 
 double constraintCallback(const std::vector<double>& u, std::vector<double>&, void* data) {
@@ -237,41 +238,76 @@ OptimizeConstraint parseConstraint(const std::string& text) {
   return c;
 }
 
-OptimizeResult runOptimize(const OptimizeOptions& o) {
-  validate(o);
-  OptimizeResult r;
-  r.method = o.method == "auto" ? (o.constraints.empty() ? "bobyqa" : "cobyla") : o.method;
-  Search search(o, r);
+namespace {
+
+// One NLopt run of `method` from u (unit box) with at most max_evals evaluations; the words of
+// its stopping reason.
+std::string runMethod(Search& search, const std::string& method, std::vector<double> u, int max_evals,
+                      double initial_step) {
+  const OptimizeOptions& o = search.options();
   const unsigned n = unsigned(o.params.size());
-  nlopt::opt opt(algorithmOf(r.method), n);
+  search.method = method;
+  nlopt::opt opt(algorithmOf(method), n);
   opt.set_lower_bounds(std::vector<double>(n, 0.0));
   opt.set_upper_bounds(std::vector<double>(n, 1.0));
   opt.set_min_objective(objectiveCallback, &search);
   std::vector<ConstraintRef> refs;
   for (std::size_t j = 0; j < o.constraints.size(); ++j) refs.push_back({&search, j});
-  if (r.method == "cobyla")
+  if (method == "cobyla")
     for (ConstraintRef& c : refs) opt.add_inequality_constraint(constraintCallback, &c, 0.0);
   opt.set_xtol_abs(o.x_tolerance);
-  opt.set_maxeval(o.max_evals);
-  opt.set_initial_step(0.25);  // a quarter of each range
-  std::vector<double> u(n, 0.5);  // start in the middle of the box
+  opt.set_maxeval(max_evals);
+  opt.set_initial_step(initial_step);
   double seen = 0;
   try {
-    r.stop_reason = resultText(opt.optimize(u, seen));
+    return resultText(opt.optimize(u, seen));
   } catch (const nlopt::forced_stop&) {
-    r.stop_reason = "interrupted";
+    return "interrupted";
   } catch (const nlopt::roundoff_limited&) {
-    r.stop_reason = "stopped by round-off (no further progress possible)";
+    return "stopped by round-off (no further progress possible)";
   } catch (const std::exception& e) {
-    // BOBYQA refuses one dimension and NLopt reports some failures as exceptions: say which.
-    r.stop_reason = std::string("NLopt failed: ") + e.what();
+    return std::string("NLopt failed: ") + e.what();
   }
+}
+
+// Index of the feasible evaluation with the lowest objective; false when none is feasible.
+bool bestFeasible(const OptimizeResult& r, std::size_t* best) {
+  bool found = false;
   for (std::size_t i = 0; i < r.history.size(); ++i) {
     const OptimizeEvaluation& e = r.history[i];
-    if (e.feasible() && (!r.found || e.objective < r.history[r.best].objective)) {
-      r.found = true;
-      r.best = i;
+    if (e.feasible() && (!found || e.objective < r.history[*best].objective)) {
+      found = true;
+      *best = i;
     }
+  }
+  return found;
+}
+
+}  // namespace
+
+OptimizeResult runOptimize(const OptimizeOptions& o) {
+  validate(o);
+  OptimizeResult r;
+  r.method = o.method == "auto" ? (o.constraints.empty() ? "bobyqa" : "cobyla") : o.method;
+  Search search(o, r);
+  const std::string local = o.constraints.empty() ? "bobyqa" : "cobyla";
+  const bool global = r.method == "direct-l" || r.method == "crs2";
+  // A global method gets 70 % of the evaluations; the rest polish its best design with the
+  // local method (a global search stops far from the exact optimum, and a local one alone may
+  // stop at the wrong one of several minima).
+  const int global_evals = global ? std::max(1, int(0.7 * o.max_evals)) : o.max_evals;
+  // Start in the middle of the box with steps of a quarter of each range.
+  r.stop_reason = runMethod(search, r.method, std::vector<double>(o.params.size(), 0.5), global_evals, 0.25);
+  r.found = bestFeasible(r, &r.best);
+  const int left = o.max_evals - int(r.requests);
+  if (global && r.found && left > 0 && r.stop_reason != "interrupted") {
+    std::vector<double> u;
+    for (std::size_t k = 0; k < o.params.size(); ++k)
+      u.push_back((r.history[r.best].x[k] - o.params[k].lower) / (o.params[k].upper - o.params[k].lower));
+    const std::string polish = runMethod(search, local, u, left, 0.05);
+    r.method += " then " + local;
+    r.stop_reason += "; " + local + ": " + polish;
+    r.found = bestFeasible(r, &r.best);
   }
   return r;
 }
