@@ -5,6 +5,7 @@
 // saved rows and --resume (SweepProgress.h), and MPI ranks under mpirun/srun (SweepMpi.h).
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -42,6 +43,8 @@ void parseDesignOptions(const SweepArgs& a, SweepOptions& o) {
   if (sources != 1)
     throw std::invalid_argument("sweep: give the values one way: --values after each --param, or --values-file "
                                 "FILE, or --lhs N with a --range after each --param");
+  if (!a.ranges.empty() && a.lhs == 0)
+    throw std::invalid_argument("sweep: --range goes with --lhs N (a Latin hypercube); for a grid use --values a:b:step");
   if (!a.values.empty()) {
     if (a.params.size() != a.values.size())
       throw std::invalid_argument("sweep: give one --values after each --param (" + std::to_string(a.params.size()) +
@@ -50,7 +53,6 @@ void parseDesignOptions(const SweepArgs& a, SweepOptions& o) {
     return;
   }
   if (!a.values_file.empty()) {
-    if (!a.ranges.empty()) throw std::invalid_argument("sweep: --range goes with --lhs, not with --values-file");
     o.designs = readValuesFile(a.values_file, a.params);
   } else {
     if (a.params.size() != a.ranges.size())
@@ -112,6 +114,8 @@ int runSweepCommand(const SweepArgs& a) {
     for (const SweepParameter& p : o.params) total *= p.values.size();
   }
   o.progress_path = out_dir + "/sweep.progress.jsonl";
+  if (rank0 && o.resume && !std::filesystem::exists(o.progress_path))
+    std::cout << "--resume: no saved rows in " << o.progress_path << ", starting afresh\n";
   if (rank0)
     std::cout << "sweep of " << base.name << ": " << total << " points, " << o.model << " model, "
               << (o.mpi ? std::to_string(ranks) + " MPI ranks"

