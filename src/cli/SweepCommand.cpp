@@ -124,7 +124,13 @@ int runSweepCommand(const SweepArgs& a) {
   o.on_point = [&o](const SweepPoint& p, std::size_t done, std::size_t n) {
     std::cout << lineFor(o, p, done, n) << std::endl;
   };
-  const SweepResult r = runSweep(o);
+  SweepResult r;
+  try {
+    r = runSweep(o);
+  } catch (const std::exception&) {
+    if (!rank0) return 2;  // every rank meets the same bad input: rank 0 alone says why
+    throw;
+  }
   if (!r.output_rank) return 0;  // an MPI worker: rank 0 writes the outputs
   if (r.execution.value("points_resumed", 0) > 0)
     std::cout << "resumed " << r.execution["points_resumed"] << " saved point(s), computed "
