@@ -95,11 +95,11 @@ int runSweepCommand(const SweepArgs& a) {
   const MpiLaunch launch = detectMpiLaunch();
   bool rank0 = true;
   int ranks = 1;
-  if (launch.launched && (mpiBuilt() || launch.world_size != 1)) {
-    o.mpi = true;
+  if (launch.launched && (mpiBuilt() || launch.world_size > 1)) {
     const MpiWorld world = startMpi();  // throws when built without MPI
     rank0 = world.rank == 0;
     ranks = world.size;
+    o.mpi = world.size > 1;  // one rank (mpirun -n 1, a batch script's shell): the threads
   }
   // Validate the base scene once, so a typo in the file or a --set fails before any run.
   const Scene base = parseSceneFile(o.scene_path, o.base_overrides);

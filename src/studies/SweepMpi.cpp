@@ -26,7 +26,8 @@ MpiLaunch detectMpiLaunch() {
     l.launched = true;
     l.variable = name;
     if (l.variable == "OMPI_COMM_WORLD_SIZE" || l.variable == "PMI_SIZE") l.world_size = size_from(name);
-    if (l.variable == "SLURM_PROCID") l.world_size = size_from("SLURM_NTASKS");
+    // Tasks of this srun step (not SLURM_NTASKS: a batch script's own shell has that too).
+    if (l.variable == "SLURM_PROCID") l.world_size = size_from("SLURM_STEP_NUM_TASKS");
     break;
   }
   return l;

@@ -88,3 +88,32 @@ TEST(SweepMpi, DispatcherOnlyLeavesTheWorkToTheWorkers) {
 
 }  // namespace
 }  // namespace rollerdyn
+
+namespace rollerdyn {
+namespace {
+
+// The launcher is recognised from its environment; a plain run sees none of these variables.
+TEST(SweepMpiLaunch, RecognisesTheLaunchersFromTheirEnvironment) {
+  const char* names[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_PROCID", "SLURM_STEP_NUM_TASKS"};
+  std::vector<std::pair<std::string, std::string>> saved;
+  for (const char* n : names)
+    if (const char* v = std::getenv(n)) saved.emplace_back(n, v);
+  for (const char* n : names) ::unsetenv(n);
+  EXPECT_FALSE(detectMpiLaunch().launched);
+  ::setenv("OMPI_COMM_WORLD_SIZE", "3", 1);
+  MpiLaunch l = detectMpiLaunch();
+  EXPECT_TRUE(l.launched);
+  EXPECT_EQ(l.world_size, 3);
+  EXPECT_EQ(l.variable, "OMPI_COMM_WORLD_SIZE");
+  ::unsetenv("OMPI_COMM_WORLD_SIZE");
+  // Inside an srun step the step's task count is the size; a batch script's shell has no step.
+  ::setenv("SLURM_PROCID", "0", 1);
+  EXPECT_EQ(detectMpiLaunch().world_size, 0);
+  ::setenv("SLURM_STEP_NUM_TASKS", "64", 1);
+  EXPECT_EQ(detectMpiLaunch().world_size, 64);
+  for (const char* n : names) ::unsetenv(n);
+  for (const auto& [n, v] : saved) ::setenv(n.c_str(), v.c_str(), 1);
+}
+
+}  // namespace
+}  // namespace rollerdyn
