@@ -20,6 +20,7 @@ struct OptimizeArgs {
   std::vector<std::string> params, ranges, constraints;
   std::string model = "multibody", minimize, method = "auto", out_dir;
   int max_evals = 100;
+  int threads = 2;
 };
 
 int runOptimizeCommand(const OptimizeArgs& a) {
@@ -35,6 +36,7 @@ int runOptimizeCommand(const OptimizeArgs& a) {
   o.minimize = a.minimize;
   o.method = a.method;
   o.max_evals = a.max_evals;
+  o.threads = a.threads;
   o.interrupt = &g_interrupted;
   const Scene base = parseSceneFile(o.scene_path, o.base_overrides);  // a bad scene fails before any run
   std::string out_dir = a.out_dir.empty() ? defaultOutDir(base.name) + "/optimize_" + o.minimize : a.out_dir;
@@ -87,13 +89,16 @@ Subcommand addOptimizeCommand(CLI::App& app) {
   cmd->add_option("--method", args->method,
                   "auto (default: bobyqa without constraints, cobyla with them; local, from the middle of the "
                   "ranges), bobyqa, cobyla, direct-l or crs2 (global, for metrics with several minima; constraints "
-                  "by penalty)");
+                  "by penalty; the local method polishes their best design), multistart (the local method from "
+                  "--threads starts in parallel)");
+  cmd->add_option("--threads", args->threads, "parallel local searches of --method multistart (default 2)")
+      ->check(CLI::Range(1, 64));
   cmd->add_option("--max-evals", args->max_evals, "evaluations at most (default 100)")->check(CLI::PositiveNumber);
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/optimize_<metric>)");
   cmd->footer(
       "A design that does not complete, does not reach steady state, stalls or rocks is infeasible, never an "
-      "optimum. Evaluations run one after another (NLopt asks for one design at a time). Exit code 3 when no "
-      "feasible design was found.\n"
+      "optimum. NLopt asks for one design at a time, so bobyqa, cobyla, direct-l and crs2 evaluate one after "
+      "another; multistart runs --threads searches side by side. Exit code 3 when no feasible design was found.\n"
       "Examples:\n"
       "  rollerdyn optimize model/recuperative-2cart.yaml --param crank.offset_deg --range 0:180 --minimize delta "
       "--model reduced\n"

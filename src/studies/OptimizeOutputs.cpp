@@ -169,7 +169,9 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
   j["evaluations_requested"] = r.requests;
   j["max_evals"] = o.max_evals;
   j["stop_reason"] = r.stop_reason;
-  j["parallel"] = "sequential: NLopt asks for one design at a time; each evaluation is one run on one thread";
+  j["parallel"] = r.method.rfind("multistart", 0) == 0
+                      ? "multistart: one local search per thread, side by side"
+                      : "sequential: NLopt asks for one design at a time; each evaluation is one run on one thread";
   j["found"] = r.found;
   j["constraints_hold"] = r.found;
   j["optimum"] = r.found ? evaluationJson(o, r.history[r.best]) : nlohmann::json(nullptr);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <mutex>
+#include <thread>
 #include <sstream>
 #include <stdexcept>
 
@@ -70,9 +72,9 @@ class Search {
     }
   }
 
-  // Index into history of the design at u (run now unless cached).
-  std::size_t evaluate(const std::vector<double>& u) {
-    ++r_.requests;
+  // The design at u, run now unless already evaluated. Thread-safe: the runs of parallel local
+  // searches (multistart) proceed side by side; history, cache and bounds are guarded.
+  OptimizeEvaluation evaluate(const std::vector<double>& u) {
     OptimizeEvaluation e;
     for (std::size_t k = 0; k < u.size(); ++k) {
       const SampleRange& p = o_.params[k];
@@ -80,10 +82,17 @@ class Search {
       e.texts.push_back(formatNumber(x));
       e.x.push_back(std::stod(e.texts.back()));  // the value the run used
     }
-    const auto hit = cache_.find(e.texts);
-    if (hit != cache_.end()) return hit->second;
+    {
+      std::lock_guard<std::mutex> lock(mu_);
+      ++r_.requests;
+      const auto hit = cache_.find(e.texts);
+      if (hit != cache_.end()) return r_.history[hit->second];
+    }
     e.point = runSweepPoint(sweep_, e.texts, e.x);
     judge(e);
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto hit = cache_.find(e.texts);  // another search may have run it meanwhile
+    if (hit != cache_.end()) return r_.history[hit->second];
     r_.history.push_back(e);
     const std::size_t index = r_.history.size() - 1;
     cache_.emplace(e.texts, index);
@@ -92,13 +101,19 @@ class Search {
       hi_ = std::max(hi_, e.objective);
     }
     if (o_.on_evaluation) o_.on_evaluation(r_.history.back(), index + 1);
-    return index;
+    return e;
+  }
+
+  std::size_t requests() {
+    std::lock_guard<std::mutex> lock(mu_);
+    return r_.requests;
   }
 
   // What NLopt minimises. Usable designs that keep the constraints: the objective. Otherwise a
   // value above every usable one seen (hi + span·(1 + violation)), so a failed, stalled or
   // violating design never looks best; with COBYLA the constraints carry the violation instead.
-  double seen(const OptimizeEvaluation& e, bool constraints_by_method) const {
+  double seen(const OptimizeEvaluation& e, bool constraints_by_method) {
+    std::lock_guard<std::mutex> lock(mu_);
     const double span = std::max({hi_ - lo_, 1e-3 * std::abs(hi_), 1e-12});
     const double top = std::isfinite(hi_) ? hi_ : 1.0;
     if (!e.run_ok) return top + 10.0 * span;
@@ -154,6 +169,7 @@ class Search {
   OptimizeResult& r_;
   SweepOptions sweep_;
   std::map<std::vector<std::string>, std::size_t> cache_;
+  std::mutex mu_;
   double lo_ = std::numeric_limits<double>::infinity(), hi_ = -std::numeric_limits<double>::infinity();
 };
 
@@ -165,14 +181,12 @@ struct ConstraintRef {
 double objectiveCallback(const std::vector<double>& u, std::vector<double>&, void* data) {
   Search& s = *static_cast<Search*>(data);
   if (s.options().interrupt && s.options().interrupt->load()) throw nlopt::forced_stop();
-  const std::size_t i = s.evaluate(u);
-  return s.seen(s.result().history[i], s.method == "cobyla");
+  return s.seen(s.evaluate(u), s.method == "cobyla");
 }
 
 double constraintCallback(const std::vector<double>& u, std::vector<double>&, void* data) {
   const ConstraintRef& c = *static_cast<ConstraintRef*>(data);
-  const std::size_t i = c.search->evaluate(u);
-  return c.search->constraintSeen(c.search->result().history[i], c.j);
+  return c.search->constraintSeen(c.search->evaluate(u), c.j);
 }
 
 void validate(const OptimizeOptions& o) {
@@ -198,8 +212,10 @@ void validate(const OptimizeOptions& o) {
       throw std::invalid_argument("optimize: --constraint '" + c.text + "': expected a metric (" + metricList() +
                                   "), got '" + c.metric + "'");
   const std::string& m = o.method;
-  if (m != "auto" && m != "bobyqa" && m != "cobyla" && m != "direct-l" && m != "crs2")
-    throw std::invalid_argument("optimize: --method: expected auto, bobyqa, cobyla, direct-l or crs2, got '" + m + "'");
+  if (m != "auto" && m != "bobyqa" && m != "cobyla" && m != "direct-l" && m != "crs2" && m != "multistart")
+    throw std::invalid_argument("optimize: --method: expected auto, bobyqa, cobyla, direct-l, crs2 or multistart, got '" +
+                                m + "'");
+  if (o.threads < 1) throw std::invalid_argument("optimize: --threads must be at least 1");
   if (m == "bobyqa" && !o.constraints.empty())
     throw std::invalid_argument("optimize: --method bobyqa handles no --constraint: use cobyla (or auto), or a "
                                 "global method (direct-l, crs2: constraints by penalty)");
@@ -246,7 +262,6 @@ std::string runMethod(Search& search, const std::string& method, std::vector<dou
                       double initial_step) {
   const OptimizeOptions& o = search.options();
   const unsigned n = unsigned(o.params.size());
-  search.method = method;
   nlopt::opt opt(algorithmOf(method), n);
   opt.set_lower_bounds(std::vector<double>(n, 0.0));
   opt.set_upper_bounds(std::vector<double>(n, 1.0));
@@ -291,19 +306,47 @@ OptimizeResult runOptimize(const OptimizeOptions& o) {
   r.method = o.method == "auto" ? (o.constraints.empty() ? "bobyqa" : "cobyla") : o.method;
   Search search(o, r);
   const std::string local = o.constraints.empty() ? "bobyqa" : "cobyla";
+  if (r.method == "multistart") {
+    // Local searches from the middle of the box and from a Latin hypercube of further starts,
+    // one per thread, side by side; each gets an equal share of the evaluations.
+    const int starts = std::max(1, std::min(o.threads, o.max_evals));
+    std::vector<SampleRange> unit;
+    for (std::size_t k = 0; k < o.params.size(); ++k) unit.push_back({o.params[k].key, 0.0, 1.0});
+    std::vector<std::vector<double>> u0(1, std::vector<double>(o.params.size(), 0.5));
+    if (starts > 1)
+      for (const auto& texts : latinHypercube(unit, std::size_t(starts - 1), 1)) {
+        std::vector<double> u;
+        for (const std::string& t : texts) u.push_back(std::stod(t));
+        u0.push_back(u);
+      }
+    search.method = local;
+    std::vector<std::string> reasons(static_cast<std::size_t>(starts));
+    std::vector<std::thread> pool;
+    for (int t = 0; t < starts; ++t)
+      pool.emplace_back([&, t] { reasons[std::size_t(t)] = runMethod(search, local, u0[std::size_t(t)],
+                                                                     std::max(1, o.max_evals / starts), 0.1); });
+    for (std::thread& th : pool) th.join();
+    r.method = "multistart " + local + " x" + std::to_string(starts);
+    for (int t = 0; t < starts; ++t) r.stop_reason += (t ? "; " : "") + std::string("start ") + std::to_string(t + 1) +
+                                                      ": " + reasons[std::size_t(t)];
+    r.found = bestFeasible(r, &r.best);
+    return r;
+  }
   const bool global = r.method == "direct-l" || r.method == "crs2";
   // A global method gets 70 % of the evaluations; the rest polish its best design with the
   // local method (a global search stops far from the exact optimum, and a local one alone may
   // stop at the wrong one of several minima).
   const int global_evals = global ? std::max(1, int(0.7 * o.max_evals)) : o.max_evals;
   // Start in the middle of the box with steps of a quarter of each range.
+  search.method = r.method;
   r.stop_reason = runMethod(search, r.method, std::vector<double>(o.params.size(), 0.5), global_evals, 0.25);
   r.found = bestFeasible(r, &r.best);
-  const int left = o.max_evals - int(r.requests);
+  const int left = o.max_evals - int(search.requests());
   if (global && r.found && left > 0 && r.stop_reason != "interrupted") {
     std::vector<double> u;
     for (std::size_t k = 0; k < o.params.size(); ++k)
       u.push_back((r.history[r.best].x[k] - o.params[k].lower) / (o.params[k].upper - o.params[k].lower));
+    search.method = local;
     const std::string polish = runMethod(search, local, u, left, 0.05);
     r.method += " then " + local;
     r.stop_reason += "; " + local + ": " + polish;

@@ -5,14 +5,18 @@
 //   cobyla    Powell (1994) COBYLA: linear models, handles the metric constraints;
 //   direct-l  Gablonsky and Kelley (2001) DIRECT-L: global, divides the box, for multimodal metrics;
 //   crs2      Kaelo and Ali (2006) CRS2 with local mutation: global, random search.
+//   multistart  the local method (bobyqa or cobyla) from the middle of the box and from a Latin
+//             hypercube of further starts, one search per thread, side by side.
 // "auto" is bobyqa without constraints and cobyla with them (local, from the middle of the box).
-// The global methods handle constraints and failed runs by a penalty (see Optimizer.cpp).
+// The global methods handle constraints and failed runs by a penalty, and the local method
+// polishes their best design (see Optimizer.cpp).
 //
 // Each evaluation is one sweep point (Sweep.h runSweepPoint: the values applied as --set, so
 // validated like a scene file) and its metrics are read through the sweep's metric lookup. A
 // design that did not complete, did not reach steady state, stalled or rocks (the crank does not
 // turn in one direction: omega_crank_min <= 0) is infeasible, never an optimum. NLopt asks for
-// one point at a time, so evaluations are sequential; repeated designs are taken from a cache.
+// one point at a time, so within one search evaluations are sequential; multistart runs its
+// searches in parallel on threads. Repeated designs are taken from a cache.
 #pragma once
 
 #include <atomic>
@@ -54,7 +58,8 @@ struct OptimizeOptions {
   std::string model = "multibody";               // multibody | reduced
   std::string minimize;                          // a metric, or one of the --param keys
   std::vector<OptimizeConstraint> constraints;
-  std::string method = "auto";                   // auto | bobyqa | cobyla | direct-l | crs2
+  std::string method = "auto";                   // auto | bobyqa | cobyla | direct-l | crs2 | multistart
+  int threads = 2;                               // multistart: parallel local searches
   int max_evals = 100;                           // evaluations at most
   double x_tolerance = 1e-3;                     // stop when steps are below this fraction of each range [-]
   const std::atomic<bool>* interrupt = nullptr;  // stops the search (NLopt forced stop)

@@ -47,6 +47,16 @@ TEST(Optimizer, TwoCartOffsetOptimumAgreesWithTheSweepParabola) {
   EXPECT_LT(r.history.size(), 19u);
   EXPECT_LE(best.objective, y1);  // at least as good as the best grid point
   EXPECT_EQ(best.objective, best.point.metric("delta"));
+
+  // Two BOBYQA searches side by side on two threads (multistart) find the same optimum.
+  o.method = "multistart";
+  o.threads = 2;
+  o.max_evals = 40;
+  const OptimizeResult m = runOptimize(o);
+  EXPECT_EQ(m.method, "multistart bobyqa x2");
+  ASSERT_TRUE(m.found) << m.stop_reason;
+  EXPECT_NEAR(m.history[m.best].x[0], vertex, 0.5);
+  EXPECT_LE(m.history.size(), 40u);
 }
 
 // The flywheel that brings the energy-balanced three-cart drive to δ = 0.05: minimise its
