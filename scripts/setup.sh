@@ -18,6 +18,8 @@ packages=(
   gnuplot-nox           # figures (PNG/SVG) of plot, report, bench and validation
   libjs-chart.js        # Chart.js, inlined into report.html for the interactive time plots
   chromium              # headless browser: the report page test (tests/report), scripts/check-report.sh
+  libopenmpi-dev openmpi-bin  # sweeps over MPI ranks (mpirun/srun rollerdyn sweep) and their tests
+  libnlopt-cxx-dev      # design optimization (rollerdyn optimize)
 )
 
 missing=()

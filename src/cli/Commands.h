@@ -53,6 +53,7 @@ struct Subcommand {
 Subcommand addSweepCommand(CLI::App& app);       // SweepCommand.cpp: `rollerdyn sweep`
 Subcommand addCamProfileCommand(CLI::App& app);  // CamProfileCommand.cpp: `rollerdyn cam-profile`
 Subcommand addChainCommand(CLI::App& app);       // ChainCommand.cpp: `rollerdyn chain`
+Subcommand addOptimizeCommand(CLI::App& app);    // OptimizeCommand.cpp: `rollerdyn optimize`
 
 // out/<scene name>/ unless the user named a folder.
 std::string defaultOutDir(const std::string& scene_name);

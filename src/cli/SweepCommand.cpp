@@ -1,8 +1,12 @@
 // `rollerdyn sweep SCENE --param KEY --values a:b:step|v1,v2,... [--param KEY --values ...]
 //  [--model multibody|reduced] [--minimize METRIC] [--set k=v]... [--out DIR] [--threads N]`:
 // one simulation per grid point (src/studies/Sweep.h), sweep.csv + sweep.json + plots in DIR.
+// Also designs from a file or a Latin hypercube (SweepDesigns.h), a CPU budget per point,
+// saved rows and --resume (SweepProgress.h), and MPI ranks under mpirun/srun (SweepMpi.h).
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -14,6 +18,8 @@
 #include "report/OutputDir.h"
 #include "scene/SceneParser.h"
 #include "studies/Sweep.h"
+#include "studies/SweepDesigns.h"
+#include "studies/SweepMpi.h"
 
 namespace rollerdyn::cli {
 
@@ -24,7 +30,44 @@ struct SweepArgs {
   std::vector<std::string> params, values;
   std::string model = "multibody", minimize, out_dir;
   int threads = 2;
+  // Large and distributed sweeps
+  std::string values_file;          // --values-file: one design per line
+  std::size_t lhs = 0;              // --lhs N: Latin hypercube of N designs in the --range's
+  std::uint64_t seed = 1;           // --seed of the Latin hypercube
+  std::vector<std::string> ranges;  // --range a:b per --param (with --lhs)
+  double point_budget = 0;          // --point-budget: CPU seconds per point [s]; 0: none
+  bool resume = false;              // --resume: reuse the rows saved in the output folder
+  bool dispatcher_only = false;     // --dispatcher-only: under MPI, rank 0 computes no points
 };
+
+// The parameters (and explicit designs) from --values, --values-file or --lhs/--range.
+void parseDesignOptions(const SweepArgs& a, SweepOptions& o) {
+  const int sources = int(!a.values.empty()) + int(!a.values_file.empty()) + int(a.lhs > 0);
+  if (sources != 1)
+    throw std::invalid_argument("sweep: give the values one way: --values after each --param, or --values-file "
+                                "FILE, or --lhs N with a --range after each --param");
+  if (!a.ranges.empty() && a.lhs == 0)
+    throw std::invalid_argument("sweep: --range goes with --lhs N (a Latin hypercube); for a grid use --values a:b:step");
+  if (!a.values.empty()) {
+    if (a.params.size() != a.values.size())
+      throw std::invalid_argument("sweep: give one --values after each --param (" + std::to_string(a.params.size()) +
+                                  " --param, " + std::to_string(a.values.size()) + " --values)");
+    for (std::size_t i = 0; i < a.params.size(); ++i) o.params.push_back(parseSweepValues(a.params[i], a.values[i]));
+    return;
+  }
+  if (!a.values_file.empty()) {
+    o.designs = readValuesFile(a.values_file, a.params);
+  } else {
+    if (a.params.size() != a.ranges.size())
+      throw std::invalid_argument("sweep: --lhs needs one --range a:b after each --param (" +
+                                  std::to_string(a.params.size()) + " --param, " + std::to_string(a.ranges.size()) +
+                                  " --range)");
+    std::vector<SampleRange> ranges;
+    for (std::size_t i = 0; i < a.params.size(); ++i) ranges.push_back(parseSampleRange(a.params[i], a.ranges[i]));
+    o.designs = latinHypercube(ranges, a.lhs, a.seed);
+  }
+  o.params = designParameters(a.params, o.designs);
+}
 
 std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done, std::size_t total) {
   std::string s = "[" + std::to_string(done) + "/" + std::to_string(total) + "]";
@@ -49,18 +92,28 @@ std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done
 }
 
 int runSweepCommand(const SweepArgs& a) {
-  if (a.params.size() != a.values.size())
-    throw std::invalid_argument("sweep: give one --values after each --param (" + std::to_string(a.params.size()) +
-                                " --param, " + std::to_string(a.values.size()) + " --values)");
   SweepOptions o;
   o.scene_path = a.scene.scene_path;
   o.base_overrides = a.scene.overrides;
-  for (std::size_t i = 0; i < a.params.size(); ++i) o.params.push_back(parseSweepValues(a.params[i], a.values[i]));
+  parseDesignOptions(a, o);
   for (const SweepParameter& p : o.params) requireSceneKey("sweep: --param " + p.key, p.key);  // with a did-you-mean
   o.model = a.model;
   o.minimize = a.minimize;
   o.threads = a.threads;
   o.interrupt = &g_interrupted;
+  o.point_budget = a.point_budget;
+  o.resume = a.resume;
+  o.dispatcher_computes = !a.dispatcher_only;
+  // Under mpirun/srun: share the points over the ranks; only rank 0 prints and writes.
+  const MpiLaunch launch = detectMpiLaunch();
+  bool rank0 = true;
+  int ranks = 1;
+  if (launch.launched && (mpiBuilt() || launch.world_size > 1)) {
+    const MpiWorld world = startMpi();  // throws when built without MPI
+    rank0 = world.rank == 0;
+    ranks = world.size;
+    o.mpi = world.size > 1;  // one rank (mpirun -n 1, a batch script's shell): the threads
+  }
   // Validate the base scene once, so a typo in the file or a --set fails before any run.
   const Scene base = parseSceneFile(o.scene_path, o.base_overrides);
   std::string out_dir = a.out_dir;
@@ -68,18 +121,37 @@ int runSweepCommand(const SweepArgs& a) {
     out_dir = defaultOutDir(base.name) + "/sweep";
     for (const SweepParameter& p : o.params) out_dir += "_" + p.key;
   }
-  prepareOutputDir(out_dir);  // before any point: a bad --out fails now
-  std::size_t total = 1;
-  for (const SweepParameter& p : o.params) total *= p.values.size();
-  std::cout << "sweep of " << base.name << ": " << total << " points, " << o.model << " model, "
-            << std::min<std::size_t>(std::max(1, o.threads), total) << " threads\n"
-            << "per point: δ coefficient of unevenness, H coefficient of dynamics, k_p generalised "
-               "coefficient (Loveikin and Pochka (2007) eq. (12)-(14)), ΔM coupling torque swing, "
-               "then the motion (turning, rocking, stalled)\n";
+  if (rank0) prepareOutputDir(out_dir);  // before any point: a bad --out fails now
+  std::size_t total = o.designs.size();
+  if (o.designs.empty()) {
+    total = 1;
+    for (const SweepParameter& p : o.params) total *= p.values.size();
+  }
+  o.progress_path = out_dir + "/sweep.progress.jsonl";
+  if (rank0 && o.resume && !std::filesystem::exists(o.progress_path))
+    std::cout << "--resume: no saved rows in " << o.progress_path << ", starting afresh\n";
+  if (rank0)
+    std::cout << "sweep of " << base.name << ": " << total << " points, " << o.model << " model, "
+              << (o.mpi ? std::to_string(ranks) + " MPI ranks"
+                        : std::to_string(std::min<std::size_t>(std::max(1, o.threads), total)) + " threads")
+              << "\n"
+              << "per point: δ coefficient of unevenness, H coefficient of dynamics, k_p generalised "
+                 "coefficient (Loveikin and Pochka (2007) eq. (12)-(14)), ΔM coupling torque swing, "
+                 "then the motion (turning, rocking, stalled)\n";
   o.on_point = [&o](const SweepPoint& p, std::size_t done, std::size_t n) {
     std::cout << lineFor(o, p, done, n) << std::endl;
   };
-  const SweepResult r = runSweep(o);
+  SweepResult r;
+  try {
+    r = runSweep(o);
+  } catch (const std::exception&) {
+    if (!rank0) return 2;  // every rank meets the same bad input: rank 0 alone says why
+    throw;
+  }
+  if (!r.output_rank) return 0;  // an MPI worker: rank 0 writes the outputs
+  if (r.execution.value("points_resumed", 0) > 0)
+    std::cout << "resumed " << r.execution["points_resumed"] << " saved point(s), computed "
+              << r.execution["points_computed"] << "\n";
   const auto files = writeSweepOutputs(o, r, out_dir);
   std::size_t failed = 0, unsteady = 0, warned = 0;
   for (const SweepPoint& p : r.points) {
@@ -112,8 +184,25 @@ Subcommand addSweepCommand(CLI::App& app) {
       ->required()
       ->allow_extra_args(false);
   cmd->add_option("--values", args->values, "values of the preceding --param: a:b:step or v1,v2,...")
-      ->required()
       ->allow_extra_args(false);
+  cmd->add_option("--values-file", args->values_file,
+                  "designs instead of a grid: one per line, one value per --param in their order (commas or "
+                  "blanks; '#' comments; an optional header line naming the keys)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--lhs", args->lhs, "Latin hypercube of N designs instead of a grid (McKay et al. (1979)); "
+                                      "needs a --range after each --param")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--range", args->ranges, "range a:b of the preceding --param for --lhs")->allow_extra_args(false);
+  cmd->add_option("--seed", args->seed, "seed of --lhs (default 1; the same seed gives the same designs)");
+  cmd->add_option("--point-budget", args->point_budget,
+                  "CPU seconds per point (rounded up to whole seconds); each point then runs in a child process "
+                  "and one over budget becomes a 'timeout' row")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--resume", args->resume,
+                "continue a killed sweep: reuse the rows saved in DIR/sweep.progress.jsonl (same command "
+                "required; checked by a fingerprint) and compute only the missing points");
+  cmd->add_flag("--dispatcher-only", args->dispatcher_only,
+                "under MPI: rank 0 only hands out points and collects rows (default: it also computes)");
   cmd->add_option("--model", args->model, "multibody (default) or reduced")
       ->check(oneOf({"multibody", "reduced"}));
   cmd->add_option("--minimize", args->minimize,
@@ -123,16 +212,25 @@ Subcommand addSweepCommand(CLI::App& app) {
                   "(motor_torque_rms, motor_rms_over_nominal, motor_peak_over_breakdown, motor_power_mean, "
                   "energy_per_revolution, coupling_torque_peak, guide_roller_peak, rod_force_peak, "
                   "crank_pin_peak, main_bearing_peak, ..._equivalent_load: see sweep.csv)");
-  cmd->add_option("--threads", args->threads, "worker threads (default 2)")->check(CLI::Range(1, 64));
+  cmd->add_option("--threads", args->threads, "worker threads (default 2; under MPI one per rank)")->check(CLI::Range(1, 64));
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/sweep_<keys>)");
   cmd->footer(
       "Each value is applied as --set KEY=VALUE, so it is validated like a scene file; a point that fails "
       "is reported in its row (status) and the sweep goes on. Exit code 3 when any point did not complete.\n"
+      "Every finished point is appended to DIR/sweep.progress.jsonl at once, so a killed sweep loses only the "
+      "points in flight: run the same command with --resume (without it the file is started afresh). The final "
+      "files are written at the end, atomically.\n"
+      "MPI: under mpirun or srun (built with MPI) the points are shared over the ranks, handed out one at a time "
+      "by rank 0; the files are the same as with threads; sweep.json adds ranks and points_per_rank.\n"
       "Examples:\n"
       "  rollerdyn sweep model/recuperative-2cart.yaml --param crank.offset_deg --values 0:180:10 "
       "--model reduced --minimize delta\n"
       "  rollerdyn sweep model/balanced-4cart.yaml --param crank.offset_deg --values 0:90:10 "
-      "--param coupling.damping --values 2000,8000 --model reduced");
+      "--param coupling.damping --values 2000,8000 --model reduced\n"
+      "  rollerdyn sweep model/energy-balanced-3cart.yaml --param flywheel.inertia --range 0:400 "
+      "--param crank.offset_deg --range 90:150 --lhs 200 --seed 7 --model reduced\n"
+      "  mpirun -n 64 rollerdyn sweep model/balanced-4cart.yaml --values-file designs.txt --param crank.offset_deg "
+      "--param coupling.damping --point-budget 600 --resume --out out/big");
   return {cmd, [args] { return runSweepCommand(*args); }};
 }
 

@@ -19,6 +19,7 @@
 #include "scene/SceneSchema.h"
 #include "studies/ResonanceCheck.h"
 #include "studies/StartLoad.h"
+#include "studies/SweepExecution.h"
 
 namespace rollerdyn {
 
@@ -138,6 +139,11 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
 }
 
 }  // namespace
+
+SweepPoint runSweepPoint(const SweepOptions& o, const std::vector<std::string>& texts,
+                         const std::vector<double>& values) {
+  return runPoint(o, texts, values);
+}
 
 bool SweepParameter::numeric() const {
   for (double v : values)
@@ -282,55 +288,13 @@ SweepResult runSweep(const SweepOptions& o) {
     if (!findSceneKey(p.key))
       throw std::invalid_argument("sweep: --param " + p.key + " is not a scene key (see model/README.md)");
   }
-  // Grid, last parameter fastest.
-  std::size_t total = 1;
-  for (const SweepParameter& p : o.params) total *= p.values.size();
-  std::vector<std::vector<std::size_t>> grid(total, std::vector<std::size_t>(o.params.size()));
-  for (std::size_t i = 0; i < total; ++i) {
-    std::size_t rest = i;
-    for (std::size_t k = o.params.size(); k-- > 0;) {
-      grid[i][k] = rest % o.params[k].values.size();
-      rest /= o.params[k].values.size();
-    }
-  }
-
+  // Grid (last parameter fastest) or explicit designs; threads or MPI, saved rows, resume.
   SweepResult result;
-  result.points.resize(total);
-  std::atomic<std::size_t> next{0};
-  std::mutex mu;
-  std::size_t done = 0;
-  auto worker = [&]() {
-    for (;;) {
-      const std::size_t i = next++;
-      if (i >= total) return;
-      std::vector<std::string> texts;
-      std::vector<double> values;
-      for (std::size_t k = 0; k < o.params.size(); ++k) {
-        texts.push_back(o.params[k].texts[grid[i][k]]);
-        values.push_back(o.params[k].values[grid[i][k]]);
-      }
-      SweepPoint p;
-      if (o.interrupt && o.interrupt->load()) {
-        p.texts = texts;
-        p.values = values;
-        p.metrics.assign(sweepNumericMetrics().size(), kNaN);
-        p.status = "not run (interrupted)";
-      } else {
-        p = runPoint(o, texts, values);
-      }
-      std::lock_guard<std::mutex> lock(mu);
-      result.points[i] = std::move(p);
-      ++done;
-      if (o.on_point) o.on_point(result.points[i], done, total);
-    }
-  };
-  const int n_threads = static_cast<int>(std::min<std::size_t>(std::max(1, o.threads), total));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < n_threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-
-  if (!o.minimize.empty()) result.optimum = findOptimum(o.params, result.points, o.minimize);
+  result.points = executeSweep(o, sweepDesigns(o), result);
+  if (!result.output_rank) return result;
+  // Designs from a file or a Latin hypercube are not ordered: no parabola through neighbours.
+  if (!o.minimize.empty())
+    result.optimum = findOptimum(o.designs.empty() ? o.params : std::vector<SweepParameter>{}, result.points, o.minimize);
   return result;
 }
 

@@ -62,6 +62,13 @@ struct SweepOptions {
   std::string minimize;                     // a sweepNumericMetrics() name, or empty
   int threads = 2;
   const std::atomic<bool>* interrupt = nullptr;
+  // Large and distributed sweeps (SweepExecution.h): explicit designs, saved rows, MPI, budget.
+  std::vector<std::vector<std::string>> designs;  // one text per parameter each; empty: the grid
+  std::string progress_path;                 // rows appended here as they finish; empty: not saved
+  bool resume = false;                       // reuse the rows saved in progress_path
+  double point_budget = 0;                   // CPU seconds per point in a child process [s]; 0: none
+  bool mpi = false;                          // distribute over the MPI ranks (SweepMpi.h)
+  bool dispatcher_computes = true;           // under MPI, rank 0 computes points too
   // Called (serialised) after each point; done counts finished points.
   std::function<void(const SweepPoint&, std::size_t done, std::size_t total)> on_point;
 };
@@ -82,11 +89,18 @@ struct SweepOptimum {
 struct SweepResult {
   std::vector<SweepPoint> points;  // grid order: the last parameter varies fastest
   SweepOptimum optimum;
+  bool output_rank = true;                       // false on MPI worker ranks: they write nothing
+  nlohmann::json execution = nlohmann::json::object();  // how it ran (ranks, ...): into sweep.json
 };
 
 // Throws std::invalid_argument for an empty grid, an unknown model or metric; every per-point
 // failure is recorded in the point instead.
 SweepResult runSweep(const SweepOptions& options);
+
+// One point: the scene with base_overrides and KEY=texts[k] applied, run, summarised (used by
+// the schedulers of SweepExecution.h and by the optimizer).
+SweepPoint runSweepPoint(const SweepOptions& options, const std::vector<std::string>& texts,
+                         const std::vector<double>& values);
 
 // The optimum of `metric` over the points that completed, preferring those at steady state.
 SweepOptimum findOptimum(const std::vector<SweepParameter>& params,

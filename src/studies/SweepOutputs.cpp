@@ -130,6 +130,7 @@ std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepRes
   }
   j["plots"] = plots;
   j["plot_note"] = plot_note;
+  for (const auto& [key, value] : r.execution.items()) j[key] = value;  // ranks, points_per_rank, ...
   writeFileAtomic(out_dir + "/sweep.json", j.dump(2) + "\n");
   files.push_back(out_dir + "/sweep.json");
   return files;

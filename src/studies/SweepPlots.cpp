@@ -134,6 +134,10 @@ std::vector<std::string> drawSweepPlots(const SweepOptions& o, const SweepResult
     *note = "no plots: more than two parameters";
     return plots;
   }
+  if (!o.designs.empty()) {
+    *note = "no plots: the designs (values file or Latin hypercube) are not a grid";
+    return plots;
+  }
   if (!all_numeric) {
     *note = "no plots: a parameter has non-numeric values";
     return plots;

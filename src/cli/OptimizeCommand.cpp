@@ -1,0 +1,110 @@
+// `rollerdyn optimize SCENE --param KEY --range a:b [--param ...] --minimize METRIC
+//  [--constraint 'METRIC<=VALUE']... [--model reduced|multibody] [--method ...] [--max-evals N]
+//  [--set k=v]... [--out DIR]`: design optimization with NLopt (src/studies/Optimizer.h).
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/Commands.h"
+#include "scene/SceneParser.h"
+#include "studies/Optimizer.h"
+
+namespace rollerdyn::cli {
+
+namespace {
+
+struct OptimizeArgs {
+  SceneArgs scene;
+  std::vector<std::string> params, ranges, constraints;
+  std::string model = "multibody", minimize, method = "auto", out_dir;
+  int max_evals = 100;
+  int threads = 2;
+};
+
+int runOptimizeCommand(const OptimizeArgs& a) {
+  if (a.params.size() != a.ranges.size())
+    throw std::invalid_argument("optimize: give one --range a:b after each --param (" + std::to_string(a.params.size()) +
+                                " --param, " + std::to_string(a.ranges.size()) + " --range)");
+  OptimizeOptions o;
+  o.scene_path = a.scene.scene_path;
+  o.base_overrides = a.scene.overrides;
+  for (std::size_t i = 0; i < a.params.size(); ++i) o.params.push_back(parseSampleRange(a.params[i], a.ranges[i]));
+  for (const std::string& c : a.constraints) o.constraints.push_back(parseConstraint(c));
+  o.model = a.model;
+  o.minimize = a.minimize;
+  o.method = a.method;
+  o.max_evals = a.max_evals;
+  o.threads = a.threads;
+  o.interrupt = &g_interrupted;
+  const Scene base = parseSceneFile(o.scene_path, o.base_overrides);  // a bad scene fails before any run
+  std::string out_dir = a.out_dir.empty() ? defaultOutDir(base.name) + "/optimize_" + o.minimize : a.out_dir;
+  o.on_evaluation = [&o](const OptimizeEvaluation& e, std::size_t number) {
+    std::cout << "[" << number << "]";
+    for (std::size_t k = 0; k < o.params.size(); ++k) std::cout << ' ' << o.params[k].key << '=' << e.texts[k];
+    std::cout << "  " << o.minimize << ' ' << e.objective;
+    for (const OptimizeConstraint& c : o.constraints) std::cout << "  " << c.metric << ' ' << e.point.metric(c.metric);
+    std::cout << (e.feasible() ? "  feasible" : e.run_ok ? "  constraint violated" : "  infeasible: " + e.reason)
+              << std::endl;
+  };
+  std::cout << "optimize " << base.name << ": minimize " << o.minimize << ", " << o.model << " model\n";
+  const OptimizeResult r = runOptimize(o);
+  const auto files = writeOptimizeOutputs(o, r, out_dir);
+  std::cout << r.method << ": " << r.history.size() << " evaluations (" << r.stop_reason << ")\n";
+  if (r.found) {
+    const OptimizeEvaluation& b = r.history[r.best];
+    std::cout << "optimum: " << o.minimize << " = " << b.objective << " at";
+    for (std::size_t k = 0; k < o.params.size(); ++k) std::cout << ' ' << o.params[k].key << '=' << b.texts[k];
+    std::cout << (o.constraints.empty() ? "" : " (constraints hold)") << "\n";
+  } else {
+    std::cout << "no usable design that keeps the constraints was found (see optimize.json)\n";
+  }
+  std::cout << "outputs in " << out_dir << "/ (" << files.size() << " files)\n";
+  return r.found ? 0 : 3;
+}
+
+}  // namespace
+
+Subcommand addOptimizeCommand(CLI::App& app) {
+  auto args = std::make_shared<OptimizeArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "optimize", "scene values that minimise a metric subject to metric bounds (NLopt); optimize.json, history.csv, figures");
+  cmd->add_option("scene", args->scene.scene_path, "scene file (YAML)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--set", args->scene.overrides, "override a scene value for every evaluation, key.path=value (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_option("--param", args->params, "scene key to vary, e.g. crank.offset_deg (repeatable)")
+      ->required()
+      ->allow_extra_args(false);
+  cmd->add_option("--range", args->ranges, "bounds a:b of the preceding --param (its scene unit)")
+      ->required()
+      ->allow_extra_args(false);
+  cmd->add_option("--minimize", args->minimize,
+                  "what to minimise: a sweep metric (delta, H, k_p, coupling_torque_swing, twist_swing, "
+                  "eps_crank_abs_max, ...; see `rollerdyn sweep --help`) or one of the --param keys")
+      ->required();
+  cmd->add_option("--constraint", args->constraints, "'METRIC<=VALUE' or 'METRIC>=VALUE' (repeatable), e.g. 'delta<=0.05'")
+      ->allow_extra_args(false);
+  cmd->add_option("--model", args->model, "multibody (default) or reduced")->check(CLI::IsMember({"multibody", "reduced"}));
+  cmd->add_option("--method", args->method,
+                  "auto (default: bobyqa without constraints, cobyla with them; local, from the middle of the "
+                  "ranges), bobyqa, cobyla, direct-l or crs2 (global, for metrics with several minima; constraints "
+                  "by penalty; the local method polishes their best design), multistart (the local method from "
+                  "--threads starts in parallel)");
+  cmd->add_option("--threads", args->threads, "parallel local searches of --method multistart (default 2)")
+      ->check(CLI::Range(1, 64));
+  cmd->add_option("--max-evals", args->max_evals, "evaluations at most (default 100)")->check(CLI::PositiveNumber);
+  cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/optimize_<metric>)");
+  cmd->footer(
+      "A design that does not complete, does not reach steady state, stalls or rocks is infeasible, never an "
+      "optimum. NLopt asks for one design at a time, so bobyqa, cobyla, direct-l and crs2 evaluate one after "
+      "another; multistart runs --threads searches side by side. Exit code 3 when no feasible design was found.\n"
+      "Examples:\n"
+      "  rollerdyn optimize model/recuperative-2cart.yaml --param crank.offset_deg --range 0:180 --minimize delta "
+      "--model reduced\n"
+      "  rollerdyn optimize model/energy-balanced-3cart.yaml --param flywheel.inertia --range 0:400 "
+      "--minimize flywheel.inertia --constraint 'delta<=0.05' --model reduced");
+  return {cmd, [args] { return runOptimizeCommand(*args); }};
+}
+
+}  // namespace rollerdyn::cli

@@ -1,0 +1,358 @@
+#include "studies/Optimizer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <thread>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlopt.hpp>
+
+#include "scene/SceneSchema.h"
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+
+bool knownMetric(const std::string& m) {
+  const auto& names = sweepNumericMetrics();
+  return std::find(names.begin(), names.end(), m) != names.end();
+}
+
+std::string metricList() {
+  std::string list;
+  for (const std::string& m : sweepNumericMetrics()) list += (list.empty() ? "" : ", ") + m;
+  return list;
+}
+
+nlopt::algorithm algorithmOf(const std::string& method) {
+  if (method == "bobyqa") return nlopt::LN_BOBYQA;
+  if (method == "cobyla") return nlopt::LN_COBYLA;
+  if (method == "direct-l") return nlopt::GN_DIRECT_L;
+  return nlopt::GN_CRS2_LM;  // crs2
+}
+
+std::string resultText(nlopt::result r) {
+  switch (r) {
+    case nlopt::SUCCESS: return "success";
+    case nlopt::STOPVAL_REACHED: return "objective reached the stop value";
+    case nlopt::FTOL_REACHED: return "objective change below tolerance";
+    case nlopt::XTOL_REACHED: return "step below the parameter tolerance";
+    case nlopt::MAXEVAL_REACHED: return "maximum number of evaluations reached";
+    case nlopt::MAXTIME_REACHED: return "time limit reached";
+    default: return "stopped (NLopt result " + std::to_string(int(r)) + ")";
+  }
+}
+
+// The search: evaluations in the unit box u in [0,1]^n (x = lower + u·(upper − lower)), so a
+// step means the same fraction of every range whatever its unit; NLopt's callbacks go through
+// it. Objective and constraints of one design come from one run (cache by the texts applied).
+class Search {
+ public:
+  Search(const OptimizeOptions& o, OptimizeResult& r) : o_(o), r_(r) {
+    sweep_.scene_path = o.scene_path;
+    sweep_.base_overrides = o.base_overrides;
+    sweep_.model = o.model;
+    sweep_.interrupt = o.interrupt;
+    for (const SampleRange& p : o.params) {
+      SweepParameter sp;
+      sp.key = p.key;
+      sweep_.params.push_back(sp);
+    }
+  }
+
+  // The design at u, run now unless already evaluated. Thread-safe: the runs of parallel local
+  // searches (multistart) proceed side by side; history, cache and bounds are guarded.
+  OptimizeEvaluation evaluate(const std::vector<double>& u) {
+    OptimizeEvaluation e;
+    for (std::size_t k = 0; k < u.size(); ++k) {
+      const SampleRange& p = o_.params[k];
+      const double x = p.lower + std::clamp(u[k], 0.0, 1.0) * (p.upper - p.lower);
+      e.texts.push_back(formatNumber(x));
+      e.x.push_back(std::stod(e.texts.back()));  // the value the run used
+    }
+    {
+      std::lock_guard<std::mutex> lock(mu_);
+      ++r_.requests;
+      const auto hit = cache_.find(e.texts);
+      if (hit != cache_.end()) return r_.history[hit->second];
+    }
+    e.point = runSweepPoint(sweep_, e.texts, e.x);
+    judge(e);
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto hit = cache_.find(e.texts);  // another search may have run it meanwhile
+    if (hit != cache_.end()) return r_.history[hit->second];
+    r_.history.push_back(e);
+    const std::size_t index = r_.history.size() - 1;
+    cache_.emplace(e.texts, index);
+    if (e.run_ok) {
+      lo_ = std::min(lo_, e.objective);
+      hi_ = std::max(hi_, e.objective);
+    }
+    if (o_.on_evaluation) o_.on_evaluation(r_.history.back(), index + 1);
+    return e;
+  }
+
+  std::size_t requests() {
+    std::lock_guard<std::mutex> lock(mu_);
+    return r_.requests;
+  }
+
+  // What NLopt minimises. Usable designs that keep the constraints: the objective. Otherwise a
+  // value above every usable one seen (hi + span·(1 + violation)), so a failed, stalled or
+  // violating design never looks best; with COBYLA the constraints carry the violation instead.
+  double seen(const OptimizeEvaluation& e, bool constraints_by_method) {
+    std::lock_guard<std::mutex> lock(mu_);
+    const double span = std::max({hi_ - lo_, 1e-3 * std::abs(hi_), 1e-12});
+    const double top = std::isfinite(hi_) ? hi_ : 1.0;
+    if (!e.run_ok) return top + 10.0 * span;
+    if (constraints_by_method || e.constraints_hold) return e.objective;
+    double violation = 0;
+    for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
+      violation += std::max(0.0, e.constraint_values[j]) / std::max(std::abs(o_.constraints[j].bound), 1e-12);
+    return top + span * (1.0 + violation);
+  }
+
+  // Constraint j as COBYLA sees it (<= 0 holds); a design that did not run usably violates all.
+  double constraintSeen(const OptimizeEvaluation& e, std::size_t j) const {
+    if (!e.run_ok) return std::abs(o_.constraints[j].bound) + 1.0;
+    return e.constraint_values[j];
+  }
+
+  const OptimizeOptions& options() const { return o_; }
+  std::string method;  // the NLopt method running now (COBYLA takes the constraints itself)
+  OptimizeResult& result() { return r_; }
+
+ private:
+  void judge(OptimizeEvaluation& e) const {
+    const SweepPoint& p = e.point;
+    e.objective = kNaN;
+    for (std::size_t k = 0; k < o_.params.size(); ++k)
+      if (o_.params[k].key == o_.minimize) e.objective = e.x[k];
+    if (!std::isfinite(e.objective)) e.objective = p.metric(o_.minimize);
+    for (const OptimizeConstraint& c : o_.constraints) {
+      const double m = p.metric(c.metric);
+      e.constraint_values.push_back(c.upper ? m - c.bound : c.bound - m);
+    }
+    const double omega_min = p.metric("omega_crank_min");
+    if (!p.complete) {
+      e.reason = "did not complete: " + p.status;
+    } else if (!p.steady) {
+      e.reason = "no steady state by t_end";
+    } else if (!(omega_min > 0)) {
+      std::ostringstream os;
+      os << "the crank does not turn steadily (rocks or stops): omega_crank_min = " << omega_min << " rad/s";
+      e.reason = os.str();
+    } else if (!std::isfinite(e.objective)) {
+      e.reason = o_.minimize + " not available";
+    } else {
+      for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
+        if (!std::isfinite(e.constraint_values[j])) e.reason = o_.constraints[j].metric + " not available";
+    }
+    e.run_ok = e.reason.empty();
+    e.constraints_hold = e.run_ok;
+    for (double g : e.constraint_values) e.constraints_hold = e.constraints_hold && g <= 0.0;
+  }
+
+  const OptimizeOptions& o_;
+  OptimizeResult& r_;
+  SweepOptions sweep_;
+  std::map<std::vector<std::string>, std::size_t> cache_;
+  std::mutex mu_;
+  double lo_ = std::numeric_limits<double>::infinity(), hi_ = -std::numeric_limits<double>::infinity();
+};
+
+struct ConstraintRef {
+  Search* search;
+  std::size_t j;
+};
+
+double objectiveCallback(const std::vector<double>& u, std::vector<double>&, void* data) {
+  Search& s = *static_cast<Search*>(data);
+  if (s.options().interrupt && s.options().interrupt->load()) throw nlopt::forced_stop();
+  return s.seen(s.evaluate(u), s.method == "cobyla");
+}
+
+double constraintCallback(const std::vector<double>& u, std::vector<double>&, void* data) {
+  const ConstraintRef& c = *static_cast<ConstraintRef*>(data);
+  return c.search->constraintSeen(c.search->evaluate(u), c.j);
+}
+
+void validate(const OptimizeOptions& o) {
+  if (o.params.empty()) throw std::invalid_argument("optimize: give at least one --param KEY with --range a:b");
+  if (o.model != "multibody" && o.model != "reduced")
+    throw std::invalid_argument("optimize: --model must be multibody or reduced, got '" + o.model + "'");
+  for (std::size_t k = 0; k < o.params.size(); ++k) {
+    const SampleRange& p = o.params[k];
+    if (!findSceneKey(p.key))
+      throw std::invalid_argument("optimize: --param " + p.key + " is not a scene key (see model/README.md)");
+    if (!(p.lower < p.upper) || !std::isfinite(p.lower) || !std::isfinite(p.upper))
+      throw std::invalid_argument("optimize: --range of " + p.key + ": expected a:b with a < b");
+    for (std::size_t m = 0; m < k; ++m)
+      if (o.params[m].key == p.key) throw std::invalid_argument("optimize: --param " + p.key + " given twice");
+  }
+  bool is_key = false;
+  for (const SampleRange& p : o.params) is_key = is_key || p.key == o.minimize;
+  if (!is_key && !knownMetric(o.minimize))
+    throw std::invalid_argument("optimize: --minimize: expected a metric (" + metricList() +
+                                ") or one of the --param keys, got '" + o.minimize + "'");
+  for (const OptimizeConstraint& c : o.constraints)
+    if (!knownMetric(c.metric))
+      throw std::invalid_argument("optimize: --constraint '" + c.text + "': expected a metric (" + metricList() +
+                                  "), got '" + c.metric + "'");
+  const std::string& m = o.method;
+  if (m != "auto" && m != "bobyqa" && m != "cobyla" && m != "direct-l" && m != "crs2" && m != "multistart")
+    throw std::invalid_argument("optimize: --method: expected auto, bobyqa, cobyla, direct-l, crs2 or multistart, got '" +
+                                m + "'");
+  if (o.threads < 1) throw std::invalid_argument("optimize: --threads must be at least 1");
+  if (m == "bobyqa" && !o.constraints.empty())
+    throw std::invalid_argument("optimize: --method bobyqa handles no --constraint: use cobyla (or auto), or a "
+                                "global method (direct-l, crs2: constraints by penalty)");
+  if (o.max_evals < 1) throw std::invalid_argument("optimize: --max-evals must be at least 1");
+  if (!(o.x_tolerance > 0 && o.x_tolerance < 1))
+    throw std::invalid_argument("optimize: the parameter tolerance must be between 0 and 1 (fraction of each range)");
+}
+
+}  // namespace
+
+OptimizeConstraint parseConstraint(const std::string& text) {
+  OptimizeConstraint c;
+  c.text = text;
+  std::size_t at = text.find("<=");
+  c.upper = true;
+  if (at == std::string::npos) {
+    at = text.find(">=");
+    c.upper = false;
+  }
+  if (at == std::string::npos)
+    throw std::invalid_argument("--constraint '" + text + "': expected METRIC<=VALUE or METRIC>=VALUE, e.g. 'delta<=0.05'");
+  c.metric = trim(text.substr(0, at));
+  const std::string value = trim(text.substr(at + 2));
+  std::size_t used = 0;
+  bool ok = !c.metric.empty() && !value.empty();
+  if (ok) {
+    try {
+      c.bound = std::stod(value, &used);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+  }
+  if (!ok || used != value.size() || !std::isfinite(c.bound))
+    throw std::invalid_argument("--constraint '" + text + "': expected METRIC<=VALUE or METRIC>=VALUE with a number, "
+                                "e.g. 'delta<=0.05'");
+  return c;
+}
+
+namespace {
+
+// One NLopt run of `method` from u (unit box) with at most max_evals evaluations; the words of
+// its stopping reason.
+std::string runMethod(Search& search, const std::string& method, std::vector<double> u, int max_evals,
+                      double initial_step) {
+  const OptimizeOptions& o = search.options();
+  const unsigned n = unsigned(o.params.size());
+  nlopt::opt opt(algorithmOf(method), n);
+  opt.set_lower_bounds(std::vector<double>(n, 0.0));
+  opt.set_upper_bounds(std::vector<double>(n, 1.0));
+  opt.set_min_objective(objectiveCallback, &search);
+  std::vector<ConstraintRef> refs;
+  for (std::size_t j = 0; j < o.constraints.size(); ++j) refs.push_back({&search, j});
+  if (method == "cobyla")
+    for (ConstraintRef& c : refs) opt.add_inequality_constraint(constraintCallback, &c, 0.0);
+  opt.set_xtol_abs(o.x_tolerance);
+  opt.set_maxeval(max_evals);
+  opt.set_initial_step(initial_step);
+  double seen = 0;
+  try {
+    return resultText(opt.optimize(u, seen));
+  } catch (const nlopt::forced_stop&) {
+    return "interrupted";
+  } catch (const nlopt::roundoff_limited&) {
+    return "stopped by round-off (no further progress possible)";
+  } catch (const std::exception& e) {
+    return std::string("NLopt failed: ") + e.what();
+  }
+}
+
+// Index of the feasible evaluation with the lowest objective; false when none is feasible.
+bool bestFeasible(const OptimizeResult& r, std::size_t* best) {
+  bool found = false;
+  for (std::size_t i = 0; i < r.history.size(); ++i) {
+    const OptimizeEvaluation& e = r.history[i];
+    if (e.feasible() && (!found || e.objective < r.history[*best].objective)) {
+      found = true;
+      *best = i;
+    }
+  }
+  return found;
+}
+
+}  // namespace
+
+OptimizeResult runOptimize(const OptimizeOptions& o) {
+  validate(o);
+  OptimizeResult r;
+  r.method = o.method == "auto" ? (o.constraints.empty() ? "bobyqa" : "cobyla") : o.method;
+  Search search(o, r);
+  const std::string local = o.constraints.empty() ? "bobyqa" : "cobyla";
+  if (r.method == "multistart") {
+    // Local searches from the middle of the box and from a Latin hypercube of further starts,
+    // one per thread, side by side; each gets an equal share of the evaluations.
+    const int starts = std::max(1, std::min(o.threads, o.max_evals));
+    std::vector<SampleRange> unit;
+    for (std::size_t k = 0; k < o.params.size(); ++k) unit.push_back({o.params[k].key, 0.0, 1.0});
+    std::vector<std::vector<double>> u0(1, std::vector<double>(o.params.size(), 0.5));
+    if (starts > 1)
+      for (const auto& texts : latinHypercube(unit, std::size_t(starts - 1), 1)) {
+        std::vector<double> u;
+        for (const std::string& t : texts) u.push_back(std::stod(t));
+        u0.push_back(u);
+      }
+    search.method = local;
+    std::vector<std::string> reasons(static_cast<std::size_t>(starts));
+    std::vector<std::thread> pool;
+    for (int t = 0; t < starts; ++t)
+      pool.emplace_back([&, t] { reasons[std::size_t(t)] = runMethod(search, local, u0[std::size_t(t)],
+                                                                     std::max(1, o.max_evals / starts), 0.1); });
+    for (std::thread& th : pool) th.join();
+    r.method = "multistart " + local + " x" + std::to_string(starts);
+    for (int t = 0; t < starts; ++t) r.stop_reason += (t ? "; " : "") + std::string("start ") + std::to_string(t + 1) +
+                                                      ": " + reasons[std::size_t(t)];
+    r.found = bestFeasible(r, &r.best);
+    return r;
+  }
+  const bool global = r.method == "direct-l" || r.method == "crs2";
+  // A global method gets 70 % of the evaluations; the rest polish its best design with the
+  // local method (a global search stops far from the exact optimum, and a local one alone may
+  // stop at the wrong one of several minima).
+  const int global_evals = global ? std::max(1, int(0.7 * o.max_evals)) : o.max_evals;
+  // Start in the middle of the box with steps of a quarter of each range.
+  search.method = r.method;
+  r.stop_reason = runMethod(search, r.method, std::vector<double>(o.params.size(), 0.5), global_evals, 0.25);
+  r.found = bestFeasible(r, &r.best);
+  const int left = o.max_evals - int(search.requests());
+  if (global && r.found && left > 0 && r.stop_reason != "interrupted") {
+    std::vector<double> u;
+    for (std::size_t k = 0; k < o.params.size(); ++k)
+      u.push_back((r.history[r.best].x[k] - o.params[k].lower) / (o.params[k].upper - o.params[k].lower));
+    search.method = local;
+    const std::string polish = runMethod(search, local, u, left, 0.05);
+    r.method += " then " + local;
+    r.stop_reason += "; " + local + ": " + polish;
+    r.found = bestFeasible(r, &r.best);
+  }
+  return r;
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,88 @@
+// Design optimization (`rollerdyn optimize`): the scene values (--param KEY --range a:b) that
+// minimise a summary metric of the run, subject to bounds on other metrics, with NLopt's
+// derivative-free methods (Johnson, The NLopt nonlinear-optimization package):
+//   bobyqa    Powell (2009) BOBYQA: quadratic models within bounds; no constraints;
+//   cobyla    Powell (1994) COBYLA: linear models, handles the metric constraints;
+//   direct-l  Gablonsky and Kelley (2001) DIRECT-L: global, divides the box, for multimodal metrics;
+//   crs2      Kaelo and Ali (2006) CRS2 with local mutation: global, random search.
+//   multistart  the local method (bobyqa or cobyla) from the middle of the box and from a Latin
+//             hypercube of further starts, one search per thread, side by side.
+// "auto" is bobyqa without constraints and cobyla with them (local, from the middle of the box).
+// The global methods handle constraints and failed runs by a penalty, and the local method
+// polishes their best design (see Optimizer.cpp).
+//
+// Each evaluation is one sweep point (Sweep.h runSweepPoint: the values applied as --set, so
+// validated like a scene file) and its metrics are read through the sweep's metric lookup. A
+// design that did not complete, did not reach steady state, stalled or rocks (the crank does not
+// turn in one direction: omega_crank_min <= 0) is infeasible, never an optimum. NLopt asks for
+// one point at a time, so within one search evaluations are sequential; multistart runs its
+// searches in parallel on threads. Repeated designs are taken from a cache.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "studies/Sweep.h"
+#include "studies/SweepDesigns.h"
+
+namespace rollerdyn {
+
+// 'METRIC<=VALUE' or 'METRIC>=VALUE' (blanks allowed).
+struct OptimizeConstraint {
+  std::string metric;      // a sweepNumericMetrics() name
+  bool upper = true;       // true: metric <= bound; false: metric >= bound
+  double bound = 0;        // in the metric's unit
+  std::string text;        // as given
+};
+// Throws std::invalid_argument naming the text and what was expected.
+OptimizeConstraint parseConstraint(const std::string& text);
+
+struct OptimizeEvaluation {
+  std::vector<std::string> texts;   // parameter values as applied (--set)
+  std::vector<double> x;            // the same as numbers (scene units)
+  SweepPoint point;                 // the run and its metrics
+  bool run_ok = false;              // completed, steady, turning: a usable design
+  std::string reason;               // why not run_ok (empty when it is)
+  double objective = 0;             // the minimised quantity (NaN when not available)
+  std::vector<double> constraint_values;  // per constraint: metric minus bound, sign so <= 0 holds
+  bool constraints_hold = false;    // every constraint_values <= 0 (false when !run_ok)
+  bool feasible() const { return run_ok && constraints_hold; }
+};
+
+struct OptimizeOptions {
+  std::string scene_path;
+  std::vector<std::string> base_overrides;       // --set applied to every evaluation
+  std::vector<SampleRange> params;               // keys and their bounds
+  std::string model = "multibody";               // multibody | reduced
+  std::string minimize;                          // a metric, or one of the --param keys
+  std::vector<OptimizeConstraint> constraints;
+  std::string method = "auto";                   // auto | bobyqa | cobyla | direct-l | crs2 | multistart
+  int threads = 2;                               // multistart: parallel local searches
+  int max_evals = 100;                           // evaluations at most
+  double x_tolerance = 1e-3;                     // stop when steps are below this fraction of each range [-]
+  const std::atomic<bool>* interrupt = nullptr;  // stops the search (NLopt forced stop)
+  std::function<void(const OptimizeEvaluation&, std::size_t number)> on_evaluation;  // after each new one
+};
+
+
+struct OptimizeResult {
+  std::string method;                       // the method used (bobyqa, cobyla, ...)
+  std::vector<OptimizeEvaluation> history;  // every distinct evaluation, in order
+  std::size_t requests = 0;                 // evaluations NLopt asked for (cache hits included)
+  bool found = false;                       // some evaluation is feasible
+  std::size_t best = 0;                     // index into history of the feasible minimum
+  std::string stop_reason;                  // NLopt's result, in words
+};
+
+// Throws std::invalid_argument for an unknown metric, key, method or model, a bad range or
+// constraint; every failed run is an infeasible evaluation instead.
+OptimizeResult runOptimize(const OptimizeOptions& options);
+
+// optimize.json, history.csv, convergence figure (and, with one or two parameters, the evaluated
+// designs with the optimum marked). Returns the files written.
+std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& options, const OptimizeResult& result,
+                                              const std::string& out_dir);
+
+}  // namespace rollerdyn

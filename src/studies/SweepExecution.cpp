@@ -1,0 +1,115 @@
+#include "studies/SweepExecution.h"
+
+#include <chrono>
+#include <exception>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "studies/SweepMpi.h"
+#include "studies/SweepPointBudget.h"
+#include "studies/SweepProgress.h"
+
+namespace rollerdyn {
+
+std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& d, SweepResult& result) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const std::size_t n = d.texts.size();
+  std::vector<SweepPoint> points(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    points[i].texts = d.texts[i];
+    points[i].values = d.values[i];
+    points[i].metrics.assign(sweepNumericMetrics().size(), std::numeric_limits<double>::quiet_NaN());
+  }
+  auto compute = [&](std::size_t i) {
+    return o.point_budget > 0 ? runSweepPointWithBudget(o, d.texts[i], d.values[i], o.point_budget)
+                              : runSweepPoint(o, d.texts[i], d.values[i]);
+  };
+  const MpiWorld world = o.mpi ? startMpi() : MpiWorld{};
+  const bool rank0 = world.rank == 0;
+
+  // Rank 0 alone reads and writes the progress file and decides what is left to compute.
+  std::unique_ptr<SweepProgressFile> progress;
+  std::exception_ptr setup_error;
+  std::vector<std::size_t> todo;
+  std::size_t resumed = 0;
+  if (rank0) {
+    try {
+      if (!o.progress_path.empty())
+        progress = std::make_unique<SweepProgressFile>(o.progress_path, sweepFingerprint(o, d.texts), n, o.resume);
+    } catch (...) {
+      setup_error = std::current_exception();  // raised after the workers were told to stop
+    }
+    std::vector<bool> have(n, false);
+    if (progress)
+      for (const auto& [i, p] : progress->saved()) {
+        points[i] = p;
+        have[i] = true;
+        ++resumed;
+      }
+    if (!setup_error)
+      for (std::size_t i = 0; i < n; ++i)
+        if (!have[i]) todo.push_back(i);
+  }
+
+  std::vector<std::size_t> per_rank(std::size_t(world.size), 0);
+  std::size_t done = resumed, computed = 0;
+  std::mutex mu;
+  auto record = [&](std::size_t i, const SweepPoint& p, int rank) {
+    std::lock_guard<std::mutex> lock(mu);
+    points[i] = p;
+    ++per_rank[std::size_t(rank)];
+    ++computed;
+    ++done;
+    // A point that ends after Ctrl-C may have been cut short: shown, but not saved as finished.
+    if (progress && !(o.interrupt && o.interrupt->load())) progress->append(i, points[i]);
+    if (o.on_point) o.on_point(points[i], done, n);
+  };
+
+  int threads = 1;
+  double dispatcher_busy = 0;
+  if (o.mpi) {
+    dispatcher_busy = runMpiSweep(todo, compute, record, o.dispatcher_computes, o.interrupt);
+  } else {
+    std::size_t next = 0;
+    std::mutex next_mu;
+    auto worker = [&] {
+      for (;;) {
+        std::size_t i = 0;
+        {
+          std::lock_guard<std::mutex> lock(next_mu);
+          if (next >= todo.size() || (o.interrupt && o.interrupt->load())) return;
+          i = todo[next++];
+        }
+        record(i, compute(i), 0);
+      }
+    };
+    threads = static_cast<int>(std::min<std::size_t>(std::max(1, o.threads), std::max<std::size_t>(todo.size(), 1)));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool) t.join();
+  }
+  if (setup_error) std::rethrow_exception(setup_error);
+
+  result.output_rank = rank0;
+  if (!rank0) return {};
+  if (o.interrupt && o.interrupt->load())
+    for (SweepPoint& p : points)
+      if (p.status == "not run") p.status = "not run (interrupted)";
+  result.execution = {
+      {"ranks", world.size},
+      {"points_per_rank", per_rank},
+      {"threads_per_rank", o.mpi ? 1 : threads},
+      {"points_computed", computed},
+      {"points_resumed", resumed},
+      {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},
+      {"progress_file", o.progress_path.empty() ? std::string() : std::filesystem::path(o.progress_path).filename().string()},
+      {"point_budget_cpu_seconds", o.point_budget}};
+  if (o.mpi) result.execution["dispatcher_busy_seconds"] = dispatcher_busy;
+  return points;
+}
+
+}  // namespace rollerdyn
