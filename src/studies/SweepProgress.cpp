@@ -52,7 +52,7 @@ nlohmann::json sweepPointToJson(const SweepPoint& p) {
   for (std::size_t k = 0; k < names.size() && k < p.metrics.size(); ++k) metrics[names[k]] = number(p.metrics[k]);
   return {{"texts", p.texts},         {"values", values},     {"metrics", metrics},
           {"ran", p.ran},             {"complete", p.complete}, {"steady", p.steady},
-          {"status", p.status},       {"cpu_seconds", number(p.cpu_seconds)}, {"warnings", p.warnings}};
+          {"status", p.status},       {"motion", p.motion},     {"cpu_seconds", number(p.cpu_seconds)}, {"warnings", p.warnings}};
 }
 
 SweepPoint sweepPointFromJson(const nlohmann::json& j) {
@@ -68,6 +68,7 @@ SweepPoint sweepPointFromJson(const nlohmann::json& j) {
   p.complete = j.at("complete").get<bool>();
   p.steady = j.at("steady").get<bool>();
   p.status = j.at("status").get<std::string>();
+  p.motion = j.value("motion", std::string("not run"));
   p.cpu_seconds = number(j.at("cpu_seconds"));
   p.warnings = j.at("warnings");
   return p;

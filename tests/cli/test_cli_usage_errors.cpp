@@ -74,7 +74,7 @@ TEST(CliUsageErrors, OptionsArgumentsAndValues) {
                                                    "did you mean 'integrators'?"}},
       {{"bench", scene, "--repeat", "0"}, {"--repeat"}},
       {{"chain", "--J1", "abc"}, {"chain:", "--J1", "abc"}},
-      {{"sweep", scene, "--param", "crank.offset_deg"}, {"--values is required"}},
+      {{"sweep", scene, "--param", "crank.offset_deg"}, {"give the values one way", "--values after each --param"}},
   };
   for (const UsageCase& c : cases) expectUsageError(c);
 }

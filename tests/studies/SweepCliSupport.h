@@ -24,7 +24,7 @@ inline std::string csvWithoutCpu(const std::string& dir) {
     for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
     if (header)
       for (std::size_t i = 0; i < f.size(); ++i)
-        if (f[i] == "cpu_seconds") cpu = long(i);
+        if (f[i].rfind("cpu_seconds", 0) == 0) cpu = long(i);  // "cpu_seconds[s]"
     for (std::size_t i = 0; i < f.size(); ++i)
       if (long(i) != cpu) out += f[i] + ",";
     out += "\n";
