@@ -64,6 +64,14 @@ struct RunMetrics {
 };
 RunMetrics runMetrics(const Scene& scene, const RunResult& run);
 
+// A finding beside a paper's table: a sentence carrying the numbers of the run and, where it
+// states a claim, the outcome of the comparison behind it (computed in PaperFindings.cpp).
+struct Finding {
+  enum class Verdict { Measurement, Holds, Fails };
+  Verdict verdict = Verdict::Measurement;  // Measurement: numbers reported, no claim made
+  std::string text;
+};
+
 // One `rollerdyn compare` run of the suite.
 struct ComparisonCase {
   std::string label;          // "E1", "D3", ...
@@ -80,6 +88,7 @@ struct ComparisonCase {
   std::vector<std::string> topics;            // ModelDifference::topic of the modelling differences
   std::vector<std::pair<std::string, std::string>> measured;  // further measurements (name, value)
   std::string explanation;                    // why the numbers are what they are
+  Finding::Verdict verdict = Finding::Verdict::Measurement;  // outcome of the explanation's claim, if any
   bool pass = false;                          // equivalence cases: both below kEquivalenceTarget
 };
 
@@ -94,14 +103,18 @@ struct SweepPoint {
 };
 
 struct PaperSweep {
-  std::string id;               // "seed004", "seed003", "seed000"
+  std::string id;               // "loveikin2007", "energy_balanced", "loveikin2018"
   std::string title;
   std::string scene_file;
+  std::vector<std::string> start;  // --set values applied to every run of the sweep (start state, t_end)
   std::string x_key, x_label;   // scene key swept and its label with unit
   std::string variant_label;    // what `variant` changes
   std::string published_file;
   std::vector<SweepPoint> points;
-  std::vector<std::string> causes;  // likely causes of the gap (text)
+  // Loveikin, Pochka, Romasevych (2018) only: the other reading of the roller forces (opposing
+  // the velocity), reduced model, k = 8000, at every Δφ of the sweep.
+  std::vector<SweepPoint> other_reading;
+  std::vector<Finding> findings;  // likely causes of the gap, each with its numbers and verdict
 };
 
 struct SensitivityRow {
