@@ -92,7 +92,7 @@ void Suite::papers(ValidationResults& r) {
     p.title = "Loveikin and Pochka (2007): two carts on opposite sides, rigid drive, delta/H/k_p vs crank offset";
     p.scene_file = "recuperative-2cart.yaml";
     p.x_key = "crank.offset_deg";
-    p.x_label = "crank offset dphi [deg]";
+    p.x_label = "crank offset Δφ [°]";
     p.variant_label = "reduced model with the papers' Baranov scheme, 1 deg step";
     p.published_file = "loveikin2007_table.csv";
     const std::vector<double> mb = o_.quick ? std::vector<double>{90} : std::vector<double>{0, 30, 60, 90, 120, 150, 180};
@@ -101,7 +101,7 @@ void Suite::papers(ValidationResults& r) {
       xs.push_back(90);
       std::sort(xs.begin(), xs.end());
     }
-    if (!sweepPaper(p, xs, mb, "dphi_deg", [](double x) { return "Loveikin and Pochka (2007): multibody at dphi = " + g(x) + " deg"; }))
+    if (!sweepPaper(p, xs, mb, "dphi_deg", [](double x) { return "Loveikin and Pochka (2007): multibody at Δφ = " + g(x) + "°"; }))
       return;
     r.papers.push_back(p);
   }
@@ -112,7 +112,7 @@ void Suite::papers(ValidationResults& r) {
     p.title = "the energy-balanced drive paper: three carts at 120 deg, rigid drive, delta/H/k_p vs flywheel inertia";
     p.scene_file = "energy-balanced-3cart.yaml";
     p.x_key = "flywheel.inertia";
-    p.x_label = "flywheel inertia [kg m^2]";
+    p.x_label = "flywheel inertia [kg·m²]";
     p.variant_label = "reduced model with the papers' Baranov scheme, 1 deg step";
     p.published_file = "energy_balanced_table1.csv";
     const std::vector<double> mb = o_.quick ? std::vector<double>{0} : std::vector<double>{0, 250, 500, 1000};
@@ -128,7 +128,7 @@ void Suite::papers(ValidationResults& r) {
     p.title = "Loveikin, Pochka, Romasevych (2018): four carts, elastic coupling, coupling swings vs crank offset (Table 1)";
     p.scene_file = "balanced-4cart.yaml";
     p.x_key = "crank.offset_deg";
-    p.x_label = "crank offset dphi [deg]";
+    p.x_label = "crank offset Δφ [°]";
     p.variant_label = "reduced model with the paper's own lumping and series: rods split, truncated kinematics";
     p.published_file = "loveikin2018_table1.csv";
     // Started at the nominal crank speed ω_n/u = 102.1/9.8 = 10.42 rad/s and run for 20 s, as
@@ -146,7 +146,7 @@ void Suite::papers(ValidationResults& r) {
         if (interrupted()) return;
         SweepPoint sp = paperPoint(p, {p.x_key + "=" + exact(x), "coupling.damping=" + exact(k)},
                                    {"rods.model=split", "reduced.kinematics=truncated"},
-                                   contains(mb, x) ? "Loveikin, Pochka, Romasevych (2018): multibody at dphi = " + g(x) + " deg, k = " + g(k) : "");
+                                   contains(mb, x) ? "Loveikin, Pochka, Romasevych (2018): multibody at Δφ = " + g(x) + "°, k = " + g(k) : "");
         sp.x = x;
         sp.k = k;
         sp.has_published = findPublished(pub, {{"dphi_deg", x}, {"k", k}}, sp.published);

@@ -86,12 +86,12 @@ ComparisonCase Suite::compareCase(const std::string& label, const std::string& d
 
 void Suite::equivalence(ValidationResults& r) {
   const double revs = o_.quick ? 5 : 20;
-  // E0: the command, `rollerdyn compare model/balanced-4cart.yaml --set rods.model=split
+  // E0: the README's command, `rollerdyn compare model/balanced-4cart.yaml --set rods.model=split
   // --set loads.guide_friction.coefficient=0 --set simulation.accuracy=1e-9`, over 20 revolutions.
   {
     ModelComparison c;
     ComparisonCase cc =
-        compareCase("E0", "the issue's command: 4 carts, one side, dphi = 90 deg, elastic (Loveikin, Pochka, Romasevych (2018) scene), accuracy 1e-9",
+        compareCase("E0", "4 carts, one side, Δφ = 90°, elastic coupling (Loveikin, Pochka, Romasevych (2018) scene), accuracy 1e-9",
                     "balanced-4cart.yaml",
                     {"rods.model=split", "loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, revs, &c);
     r.equivalence_example = c.table;
@@ -103,14 +103,14 @@ void Suite::equivalence(ValidationResults& r) {
   // of accuracy); 1e-11 leaves a margin of about ten.
   struct Spec { const char* description; const char* file; std::vector<std::string> sets; bool quick; };
   const std::vector<Spec> specs = {
-      {"4 carts, one side, dphi = 90 deg, elastic coupling (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml", {}, false},
-      {"4 carts, one side, dphi = 90 deg, rigid drive", "balanced-4cart.yaml", {"coupling.type=rigid"}, false},
+      {"4 carts, one side, Δφ = 90°, elastic coupling (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml", {}, false},
+      {"4 carts, one side, Δφ = 90°, rigid drive", "balanced-4cart.yaml", {"coupling.type=rigid"}, false},
       {"1 cart, elastic coupling", "balanced-4cart.yaml", {"carts.count=1"}, false},
-      {"2 carts on opposite sides, dphi = 90 deg, rigid drive (Loveikin and Pochka (2007) scene)", "recuperative-2cart.yaml", {}, true},
-      {"3 carts, one side, dphi = 120 deg, rigid drive (the energy-balanced drive paper scene)", "energy-balanced-3cart.yaml", {}, false},
+      {"2 carts on opposite sides, Δφ = 90°, rigid drive (Loveikin and Pochka (2007) scene)", "recuperative-2cart.yaml", {}, true},
+      {"3 carts, one side, Δφ = 120°, rigid drive (the energy-balanced drive paper scene)", "energy-balanced-3cart.yaml", {}, false},
       {"2 carts on opposite sides, elastic coupling c = 2e5, k = 8000", "recuperative-2cart.yaml",
        {"coupling.type=elastic", "coupling.stiffness=200000", "coupling.damping=8000"}, false},
-      {"4 carts on alternate sides, dphi = 90 deg, elastic coupling", "balanced-4cart.yaml", {"carts.sides=alternate"}, false},
+      {"4 carts on alternate sides, Δφ = 90°, elastic coupling", "balanced-4cart.yaml", {"carts.sides=alternate"}, false},
   };
   int k = 0;
   for (const Spec& s : specs) {
