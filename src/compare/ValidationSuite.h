@@ -2,7 +2,7 @@
 //   (1) equivalence: scenes whose physics both models describe identically (exact kinematics,
 //       split rods, no guide friction), 1 to 4 carts, same and opposite sides, elastic and
 //       rigid drive: crank speed and coupling torque must agree to kEquivalenceTarget
-//       (max_rel_diff) over 20 crank revolutions; the command at accuracy 1e-9, the
+//       (max_rel_diff) over 20 crank revolutions; the README's command at accuracy 1e-9, the
 //       seven scenes at 1e-11, and a convergence study showing the residual is integration
 //       error;
 //   (2) where the physics differ (distributed rods, friction from dynamic reactions, truncated
@@ -33,7 +33,7 @@
 namespace rollerdyn::validation {
 
 // Equivalent physics must agree to this max_rel_diff in crank speed and coupling torque (the
-// issue's target, not loosened). With both integrators at relative accuracy 1e-9 the Loveikin, Pochka, Romasevych (2018)
+// project's target, not loosened). With both integrators at relative accuracy 1e-9 the Loveikin, Pochka, Romasevych (2018)
 // scene agrees to 3e-8 (speed) and 2e-7 (torque): the coupling torque c·ψ + k·ψ̇ is a small
 // difference of large quantities and keeps fewer digits. Scenes with loads opposing the
 // velocity (tanh(v/v_s), v_s = 1 mm/s: the load flips within ~0.1 ms at every cart reversal)
@@ -136,7 +136,7 @@ struct AnalyticResults {
 struct ValidationResults {
   bool quick = false;
   double cpu_seconds = 0;                         // whole suite
-  std::vector<ComparisonCase> equivalence;        // E0 (the command, 1e-9), E1-E7 (1e-11)
+  std::vector<ComparisonCase> equivalence;        // E0 (the README's command, 1e-9), E1-E7 (1e-11)
   std::vector<ComparisonCase> convergence;        // E4, E3 at several accuracies
   Table equivalence_example;                      // comparison.csv of E0 (for the figures)
   std::vector<ComparisonCase> differences;
