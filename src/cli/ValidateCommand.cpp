@@ -1,4 +1,6 @@
 // `rollerdyn validate [--quick] [--out DIR]`: the validation suite (src/compare/ValidationSuite.h).
+// `rollerdyn validate --studies DIR`: only the markdown pages of the studies folder, from the
+// tables validation/studies/run.sh wrote there (src/compare/StudiesReport.h).
 // Writes DIR/report.md, DIR/results.json, DIR/results/*.csv and DIR/figures/*.png (gnuplot,
 // src/report/Gnuplot.h). Reads the shipped scenes from model/ and the published tables from
 // validation/published/, so it runs from the repository root.
@@ -8,6 +10,7 @@
 #include <iostream>
 
 #include "cli/Commands.h"
+#include "compare/StudiesReport.h"
 #include "compare/ValidationSuite.h"
 #include "io/AtomicFile.h"
 #include "report/Gnuplot.h"
@@ -52,6 +55,13 @@ int runValidate(bool quick, const std::string& out_dir) {
     return 3;
   }
   return failed == 0 ? 0 : 1;
+}
+
+int runValidateStudies(const std::string& dir) {
+  const std::vector<validation::StudiesPage> pages = validation::buildStudiesPages(dir);
+  for (const auto& p : pages) writeFileAtomic(dir + "/" + p.file, p.markdown);
+  std::cout << "studies pages: " << pages.size() << " written to " << dir << "/\n";
+  return 0;
 }
 
 }  // namespace rollerdyn::cli

@@ -108,6 +108,10 @@ int main(int argc, char** argv) {
   auto* validate = app.add_subcommand("validate", "validation suite: model equivalence, papers, analytic checks; writes <out>/report.md");
   validate->add_flag("--quick", val_quick, "coarser sweeps and shorter runs (about a minute)");
   validate->add_option("--out", val_out, "output folder (default validation/)");
+  std::string val_studies;
+  validate->add_option("--studies", val_studies,
+                       "only write the markdown pages of a studies folder (validation/studies) from the tables "
+                       "validation/studies/run.sh left there; runs no simulation");
   validate->footer("Examples:\n  rollerdyn validate --quick                # about a minute\n"
                    "  rollerdyn validate --out out/validation");
 
@@ -152,7 +156,7 @@ int main(int argc, char** argv) {
     if (*report) return runReport(report_args, report_out);
     if (*bench) return runBench(bench_args, bench_opts);
     if (*compare) return runCompare(cmp_args, cmp_out);
-    if (*validate) return runValidate(val_quick, val_out);
+    if (*validate) return val_studies.empty() ? runValidate(val_quick, val_out) : runValidateStudies(val_studies);
   } catch (const std::exception& e) {
     std::cerr << "rollerdyn: " << e.what() << '\n';
     return kExitBadInput;

@@ -100,76 +100,9 @@ TwoRotorParameters seed000Drive() {
   p.b = 2000.0;
   p.M1 = 1000.0;
   p.alpha = M_PI / 6.0;
-  p.Mc = p.M1 * (M_PI - 2.0 * p.alpha) / M_PI;
+  p.Mc = balancedResistingTorque(p);
   p.omega = 10.68;
   return p;
-}
-
-double naturalFrequency(const TwoRotorParameters& p) {
-  return std::sqrt(p.k * (p.J1 + p.J2) / (p.J1 * p.J2));  // Dyomin (two rotors), eq. (10)
-}
-double dampingRate(const TwoRotorParameters& p) { return p.b * (p.J1 + p.J2) / (2.0 * p.J1 * p.J2); }  // eq. (9)
-double dampedFrequency(const TwoRotorParameters& p) {
-  const double p0 = naturalFrequency(p), d = dampingRate(p);
-  return std::sqrt(p0 * p0 - d * d);  // eq. (14)
-}
-double meanTwist(const TwoRotorParameters& p) {
-  const double p0sq = p.k * (p.J1 + p.J2) / (p.J1 * p.J2);
-  return p.M1 * (M_PI - 2.0 * p.alpha) / (M_PI * p.J1 * p0sq) + p.Mc / (p.J2 * p0sq);  // eq. (42)-(43)
-}
-
-double driveTorque(const TwoRotorParameters& p, double t) {
-  const double w = p.omega, a = p.alpha, M1 = p.M1;
-  // Dyomin (two rotors), eq. (8) times J1
-  return M1 * (M_PI - 2.0 * a) / M_PI +
-         2.0 * M1 / M_PI * (std::sin(w * t) + std::sin(3 * w * t) / 3.0 + std::sin(5 * w * t) / 5.0) +
-         M1 / M_PI *
-             (std::sin(a) * std::cos(w * t) - std::sin(2 * a) * std::cos(2 * w * t) / 2.0 +
-              std::sin(3 * a) * std::cos(3 * w * t) / 3.0);
-}
-
-std::vector<HarmonicResponse> closedFormResponse(const TwoRotorParameters& p) {
-  const double p0 = naturalFrequency(p), d1 = dampingRate(p), w = p.omega, J1 = p.J1, M1 = p.M1;
-  const double a = p.alpha;
-  auto D = [&](int n) {  // denominators of eq. (16)-(21)
-    const double nw = n * w;
-    return std::sqrt((p0 * p0 - nw * nw) * (p0 * p0 - nw * nw) + 4.0 * d1 * d1 * nw * nw);
-  };
-  auto xi = [&](int n) { return std::atan2(2.0 * d1 * n * w, p0 * p0 - n * w * n * w); };  // (22)-(25)
-  // sin and cos coefficients of M(t), eq. (8)·J1
-  struct Coef { int n; double A, B; };
-  const Coef coefs[] = {{1, 2.0 * M1 / M_PI, M1 * std::sin(a) / M_PI},
-                        {2, 0.0, -M1 * std::sin(2 * a) / (2.0 * M_PI)},
-                        {3, 2.0 * M1 / (3.0 * M_PI), M1 * std::sin(3 * a) / (3.0 * M_PI)},
-                        {5, 2.0 * M1 / (5.0 * M_PI), 0.0}};
-  std::vector<HarmonicResponse> out;
-  for (const Coef& c : coefs) {
-    HarmonicResponse h;
-    h.n = c.n;
-    h.phase_lag = xi(c.n);
-    const double g = 1.0 / (J1 * D(c.n));
-    // A·sin(nωt - ξ) + B·cos(nωt - ξ), expanded in sin nωt and cos nωt
-    h.a_sin = g * (c.A * std::cos(h.phase_lag) + c.B * std::sin(h.phase_lag));
-    h.b_cos = g * (c.B * std::cos(h.phase_lag) - c.A * std::sin(h.phase_lag));
-    h.amplitude = g * std::hypot(c.A, c.B);
-    // The paper as printed, eq. (16)-(21), combined by (27)-(28).
-    const double P = M1 / (M_PI * J1 * D(c.n));
-    if (c.n == 1) {
-      const double psi11 = 2.0 * P, psi12 = std::sin(a) * P;  // (16), (19)
-      h.amplitude_printed = std::sqrt(std::max(0.0, psi11 * psi11 + psi12 * psi12 -
-                                                        2.0 * psi11 * psi12 * std::sin(2.0 * h.phase_lag)));  // (27)
-    } else if (c.n == 2) {
-      h.amplitude_printed = std::abs(std::sin(2 * a)) * P;  // (20)
-    } else if (c.n == 3) {
-      const double psi31 = 2.0 * P, psi32 = std::sin(3 * a) * P;  // (17), (21)
-      h.amplitude_printed = std::sqrt(std::max(0.0, psi31 * psi31 + psi32 * psi32 -
-                                                        2.0 * psi31 * psi32 * std::sin(2.0 * h.phase_lag)));  // (28)
-    } else {
-      h.amplitude_printed = 2.0 * P;  // (18)
-    }
-    out.push_back(h);
-  }
-  return out;
 }
 
 ForcedResponseMeasurement measureForcedResponse(const TwoRotorParameters& p, double settle_time,
@@ -261,6 +194,7 @@ FreeOscillationMeasurement measureFreeOscillation(const TwoRotorParameters& p, d
   m.periods = mc;
   m.frequency = 2.0 * M_PI * mc / (up[mc] - up[0]);
   const int mp = std::min<int>(periods, int(peak_t.size()) - 1);
+  m.decay_periods = mp;
   m.decay_rate = mp >= 1 && peak_y[mp] > 0 ? std::log(peak_y[0] / peak_y[mp]) / (peak_t[mp] - peak_t[0]) : 0.0;
   m.natural_frequency = std::sqrt(m.frequency * m.frequency + m.decay_rate * m.decay_rate);
   return m;

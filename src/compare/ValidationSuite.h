@@ -2,7 +2,7 @@
 //   (1) equivalence: scenes whose physics both models describe identically (exact kinematics,
 //       split rods, no guide friction), 1 to 4 carts, same and opposite sides, elastic and
 //       rigid drive: crank speed and coupling torque must agree to kEquivalenceTarget
-//       (max_rel_diff) over 20 crank revolutions; the command at accuracy 1e-9, the
+//       (max_rel_diff) over 20 crank revolutions; the README's command at accuracy 1e-9, the
 //       seven scenes at 1e-11, and a convergence study showing the residual is integration
 //       error;
 //   (2) where the physics differ (distributed rods, friction from dynamic reactions, truncated
@@ -33,7 +33,7 @@
 namespace rollerdyn::validation {
 
 // Equivalent physics must agree to this max_rel_diff in crank speed and coupling torque (the
-// issue's target, not loosened). With both integrators at relative accuracy 1e-9 the Loveikin, Pochka, Romasevych (2018)
+// project's target, not loosened). With both integrators at relative accuracy 1e-9 the Loveikin, Pochka, Romasevych (2018)
 // scene agrees to 3e-8 (speed) and 2e-7 (torque): the coupling torque c·ψ + k·ψ̇ is a small
 // difference of large quantities and keeps fewer digits. Scenes with loads opposing the
 // velocity (tanh(v/v_s), v_s = 1 mm/s: the load flips within ~0.1 ms at every cart reversal)
@@ -64,6 +64,14 @@ struct RunMetrics {
 };
 RunMetrics runMetrics(const Scene& scene, const RunResult& run);
 
+// A finding beside a paper's table: a sentence carrying the numbers of the run and, where it
+// states a claim, the outcome of the comparison behind it (computed in PaperFindings.cpp).
+struct Finding {
+  enum class Verdict { Measurement, Holds, Fails };
+  Verdict verdict = Verdict::Measurement;  // Measurement: numbers reported, no claim made
+  std::string text;
+};
+
 // One `rollerdyn compare` run of the suite.
 struct ComparisonCase {
   std::string label;          // "E1", "D3", ...
@@ -80,6 +88,7 @@ struct ComparisonCase {
   std::vector<std::string> topics;            // ModelDifference::topic of the modelling differences
   std::vector<std::pair<std::string, std::string>> measured;  // further measurements (name, value)
   std::string explanation;                    // why the numbers are what they are
+  Finding::Verdict verdict = Finding::Verdict::Measurement;  // outcome of the explanation's claim, if any
   bool pass = false;                          // equivalence cases: both below kEquivalenceTarget
 };
 
@@ -94,14 +103,18 @@ struct SweepPoint {
 };
 
 struct PaperSweep {
-  std::string id;               // "seed004", "seed003", "seed000"
+  std::string id;               // "loveikin2007", "energy_balanced", "loveikin2018"
   std::string title;
   std::string scene_file;
+  std::vector<std::string> start;  // --set values applied to every run of the sweep (start state, t_end)
   std::string x_key, x_label;   // scene key swept and its label with unit
   std::string variant_label;    // what `variant` changes
   std::string published_file;
   std::vector<SweepPoint> points;
-  std::vector<std::string> causes;  // likely causes of the gap (text)
+  // Loveikin, Pochka, Romasevych (2018) only: the other reading of the roller forces (opposing
+  // the velocity), reduced model, k = 8000, at every Δφ of the sweep.
+  std::vector<SweepPoint> other_reading;
+  std::vector<Finding> findings;  // likely causes of the gap, each with its numbers and verdict
 };
 
 struct SensitivityRow {
@@ -123,7 +136,7 @@ struct AnalyticResults {
 struct ValidationResults {
   bool quick = false;
   double cpu_seconds = 0;                         // whole suite
-  std::vector<ComparisonCase> equivalence;        // E0 (the command, 1e-9), E1-E7 (1e-11)
+  std::vector<ComparisonCase> equivalence;        // E0 (the README's command, 1e-9), E1-E7 (1e-11)
   std::vector<ComparisonCase> convergence;        // E4, E3 at several accuracies
   Table equivalence_example;                      // comparison.csv of E0 (for the figures)
   std::vector<ComparisonCase> differences;

@@ -8,7 +8,8 @@
 // and the closed-form response is eq. (11), (13)-(36): mean twist Φ0 (11), (43), steady
 // harmonics (15)-(30), transient from ψ(0) = ψ̇(0) = 0 (33)-(36).
 //
-// Two closed forms are provided:
+// Both closed forms are those of physics/TwoRotorClosedForm.h (the one copy, shared with the
+// validation suite's analytic check):
 //   printed   - eq. (16)-(30), (34)-(36) exactly as printed (arctg as printed, i.e. atan);
 //   corrected - the exact steady and transient solution of eq. (12) for the same forcing: each
 //               forcing term F·sin(nωt) or F·cos(nωt) answers with (F/D_n)·sin/cos(nωt - ξ_n),
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "io/Table.h"
+#include "physics/TwoRotorClosedForm.h"
 
 namespace rollerdyn {
 
@@ -48,6 +50,9 @@ struct TwoRotorChainDerived {
   double t_end, output_step;
 };
 TwoRotorChainDerived deriveChain(const TwoRotorChainParams& p);
+
+// The study's parameters as the closed form's, with the resisting torque resolved.
+TwoRotorParameters closedFormParameters(const TwoRotorChainParams& p);
 
 // M(t) of eq. (8) [N·m].
 double chainDriveTorque(const TwoRotorChainParams& p, double t);

@@ -1,16 +1,34 @@
-// Shared checks of the hard-case tests (issue #4). Every case runs BOTH models twice, at an
-// accuracy a and at a/10, and asserts four things per model:
+// Shared checks of the hard-case tests. Every case runs BOTH models twice, at an accuracy a and
+// at a/10, and asserts per model:
 //
 //   1. no exception and no NaN/inf anywhere in the output tables;
-//   2. constraint error (multibody) within kConstraintFactor·a [m]: Simbody projects the
-//      position constraints to the constraint tolerance (= a, the scene default) after every
-//      step, in a weighted norm whose length scale is 1 m (our links are 0.2 ... 1 m long), so
-//      the error left in metres is of order a; the factor 10 covers the weighting and the
-//      interpolated output states (which are projected too, to the same tolerance);
-//   3. the energy audit closes: |residual| <= energyTolerance(a, E, N) below;
-//   4. tightening the accuracy tenfold changes the results by less than the error we claim for
-//      the run at a: the final crank speed by at most kSpeedClaim·a·max|ω| and the largest
-//      coupling torque by at most kTorqueClaim·a·max|M_c| (see the constants).
+//   2. constraint error (multibody only): within kConstraintFactor·a [m]. Simbody projects the
+//      position constraints to the constraint tolerance (= a) after every step, in a weighted
+//      norm whose length scale is 1 m (our links are 0.2 ... 1 m long), so the error left in
+//      metres is of order a; the factor 10 covers the weighting and the interpolated output
+//      states. The reduced model has no constraints (one generalized coordinate per shaft, the
+//      carts placed by the closed-form kinematics), so its error is identically 0 and the check
+//      is not run for it (each reduced run prints "constraint check: not applicable");
+//   3. the energy audit closes within the error model of that integrator on that case (below);
+//   4. convergence: tightening the accuracy tenfold moves the whole time series of crank speed
+//      and coupling torque (max over the common output grid) by less than the error model of
+//      that integrator on that case says the run at a carries.
+//
+// Error model. An adaptive integrator asked for accuracy a delivers a global error C·a, with a
+// constant C that depends on the method and on the problem (how stiff, how many revolutions,
+// how often the smoothed sign laws flip), not on a. So each case states C per model and per
+// quantity, MEASURED on this build (the numbers are in the comment beside each claim, printed
+// by every run as "residual/(a*E)", "dw/(a*W)" and "dM/(a*M)"), and claims 3·C: the factor 3
+// covers a different compiler or libm (measured: the constants reproduce to a few per cent
+// between a and a/10 where the run converges), and leaves a tenfold regression of any one
+// quantity outside the claim. Where the measured C is at round-off level the claim is the
+// round-off floor instead (kRoundoffFloor), stated in the case.
+//   energy:   |residual| <= C_E·acc·E + kRoundoffFloor·E   (E: energyScale below; checked at a
+//             and at a/10, each against its own accuracy);
+//   speed:    max_t |ω_a(t) − ω_{a/10}(t)| <= C_ω·a·W      (W = max(max|ω|, ω0/u): both integrators
+//             control the speed against a floor of that order, so a creeping or stalled machine
+//             is not held to a relative error of its creep speed);
+//   torque:   max_t |M_a(t) − M_{a/10}(t)| <= C_M·a·M      (M = max|coupling torque| at a/10).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -28,34 +46,23 @@
 
 namespace rollerdyn::hardcases {
 
-// Claimed relative error of a run at integrator accuracy a (factor × a), in the bench's measure
-// (src/bench/BenchRun.h: deviation over the run relative to the signal's largest magnitude).
-// `rollerdyn bench model/balanced-4cart.yaml` measures, at a = 1e-6, error_omega ≈ 9·a
-// (multibody RungeKuttaMerson) and ≈ 21·a (reduced CVODE), error_coupling ≈ 60·a and ≈ 160·a.
-// The claims keep a factor ~5 of margin above those measurements.
-constexpr double kSpeedClaim = 100.0;    // crank speed
-constexpr double kTorqueClaim = 1000.0;  // coupling torque
 constexpr double kConstraintFactor = 10.0;
 
-// Energy-audit tolerance [J]. The work integrals (motor, damper, friction, loads) are extra
-// states under the same error control as the motion: each accepted step leaves a local error of
-// at most about a·E in them (E = the run's energy scale below; CVODE's absolute tolerance on the
-// work states is a·E_ref, Simbody's relative control is against the same magnitudes). They are
-// quadratures, so nothing damps their errors: the global error is the sum of the local errors.
-// Two ways that sum grows, and the bound takes the larger:
-//   - local errors of successive steps of an adaptive method vary in sign like a random walk:
-//     ~ a·E·√n_steps;
-//   - a systematic error per forcing period (one crank revolution: J(φ), loads and motor torque
-//     are periodic in φ) grows linearly: ~ a·E·N_rev.
-//   |residual| <= 10·a·E·max(1, √n_steps, N_rev),
-// the factor 10 being the usual gap between the local tolerance an RK/Adams method is asked for
-// and the error it delivers. E = the largest of the motor work, the initial and final kinetic
-// energies and the kinetic energy at synchronous crank speed (or at the initial speed when the
-// motor is off), so a stalled or free-running machine still has a meaningful scale.
-// (Measured on these cases: multibody residuals are 1e-5 ... 1e-2·a·E, reduced CVODE/Adams
-// 1 ... 31·a·E with 130 ... 430 steps.)
-inline double energyTolerance(double accuracy, double energy_scale, long steps, double revolutions) {
-  return 10.0 * accuracy * energy_scale * std::max({1.0, std::sqrt(double(steps)), revolutions});
+// Round-off floor of the energy audit, relative to the energy scale E: the audit is a sum of
+// five or six terms of size ~E computed in double precision, and the work integrals
+// accumulate one rounding per step; 1e-12 ≈ 4500 ε covers ~1e4 steps of that with margin.
+constexpr double kRoundoffFloor = 1e-12;
+
+// The error constants a case claims for one model (see the file comment); 0 = not measured,
+// the check then fails and says so, so a case cannot silently go unchecked.
+struct Claims {
+  double energy = 0;  // C_E: |energy residual| <= C_E·acc·E + kRoundoffFloor·E
+  double speed = 0;   // C_ω: max_t |ω_a − ω_{a/10}| <= C_ω·a·W
+  double torque = 0;  // C_M: max_t |M_a − M_{a/10}| <= C_M·a·M
+};
+
+inline double energyTolerance(double accuracy, double energy_scale, double claim) {
+  return (claim * accuracy + kRoundoffFloor) * energy_scale;
 }
 
 inline Scene withAccuracy(Scene s, double a) {
@@ -114,26 +121,55 @@ inline RunResult run(Model m, const Scene& s) {
   return m == Model::Multibody ? runMultibodyModel(s) : runReducedModel(s);
 }
 
-// What a case expects of how the run ends, and the errors it claims.
+// What a case expects of how the run ends, and the error constants it claims per model.
 struct Expect {
   bool complete = true;        // false: the run must end early (and say why in status)
   std::string status_prefix;   // e.g. "motor stalled at t = "; empty: not checked
-  double speed_claim = kSpeedClaim;    // claimed error of the final crank speed, × a
-  double torque_claim = kTorqueClaim;  // claimed error of the largest coupling torque, × a
+  Claims multibody, reduced;   // error constants, measured per model (file comment)
+  // Agreement of the two models at accuracy a/10, max_t |x_multibody − x_reduced| relative to
+  // W (crank speed) and M (coupling torque) as in the file comment; 0: not compared. The models
+  // differ in physics only by the guide friction (dynamic vs quasi-static reactions), so the
+  // measured agreement is that difference, and the claim is 3x it.
+  double models_speed = 0, models_torque = 0;
+  const Claims& of(Model m) const { return m == Model::Multibody ? multibody : reduced; }
 };
 
-// The four checks of the file comment on a pair of runs (a and a/10) of one model. Returns the
-// run at accuracy a for case-specific checks.
-inline RunResult checkCase(Model model, const Scene& scene, double a, const Expect& expect = {}) {
+// Largest |a(t) − b(t)| of one column over the output rows the two tables share. Both runs
+// sample the same grid (analysis/OutputGrid.h: 0, h, 2h, ...), so row i is the same t in both;
+// a run that ended early (stall) is compared over the rows it has. Asserts the grids match.
+inline double seriesDifference(const Table& a, const Table& b, const std::string& column) {
+  const std::size_t n = std::min(a.rows.size(), b.rows.size());
+  const int ta = a.index("t"), tb = b.index("t"), ca = a.index(column), cb = b.index(column);
+  double d = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_NEAR(a.rows[i][ta], b.rows[i][tb], 1e-9) << "output grids differ at row " << i;
+    d = std::max(d, std::abs(a.rows[i][ca] - b.rows[i][cb]));
+  }
+  return d;
+}
+
+// The runs of one model at a and a/10, for case-specific checks.
+struct CasePair {
+  RunResult at_a, at_a10;
+};
+
+// The checks of the file comment on a pair of runs (a and a/10) of one model. Returns both runs
+// for case-specific checks.
+inline CasePair checkCase(Model model, const Scene& scene, double a, const Expect& expect) {
   const std::string who = std::string(name(model)) + " on " + scene.name;
-  RunResult r1, r2;
+  const Claims& claim = expect.of(model);
+  EXPECT_GT(claim.energy, 0.0) << who << ": no energy error constant claimed";
+  EXPECT_GT(claim.speed, 0.0) << who << ": no speed error constant claimed";
+  EXPECT_GT(claim.torque, 0.0) << who << ": no coupling-torque error constant claimed";
+  CasePair p;
+  RunResult &r1 = p.at_a, &r2 = p.at_a10;
   const Scene s1 = withAccuracy(scene, a), s2 = withAccuracy(scene, a / 10.0);
   EXPECT_NO_THROW(r1 = run(model, s1)) << who;
   EXPECT_NO_THROW(r2 = run(model, s2)) << who << " at a/10";
   for (const RunResult* r : {&r1, &r2}) {
     const std::string at = who + (r == &r1 ? " at a" : " at a/10");
     EXPECT_FALSE(r->timeseries.rows.empty()) << at;
-    if (r->timeseries.rows.empty()) return r1;
+    if (r->timeseries.rows.empty()) return p;
     EXPECT_TRUE(allFinite(r->timeseries)) << at << ": non-finite value in timeseries";
     EXPECT_TRUE(allFinite(r->reactions)) << at << ": non-finite value in reactions";
     EXPECT_EQ(r->stats.complete, expect.complete) << at << ": status " << r->stats.status;
@@ -142,29 +178,56 @@ inline RunResult checkCase(Model model, const Scene& scene, double a, const Expe
           << at << ": status '" << r->stats.status << "' should start with '" << expect.status_prefix << "'";
     }
     const double acc = r == &r1 ? a : a / 10.0;
-    EXPECT_LE(r->stats.constraint_error_max, kConstraintFactor * acc) << at;
+    if (model == Model::Multibody) {
+      EXPECT_LE(r->stats.constraint_error_max, kConstraintFactor * acc) << at;
+    }
     const Scene& s = r == &r1 ? s1 : s2;
     const double E = energyScale(s, *r), N = revolutions(*r);
-    std::printf("  %-9s %-24s a=%.0e steps=%ld revs=%.2f residual=%.3g J E=%.3g J residual/(a*E)=%.3g cerr=%.2g %s\n",
+    char cerr[64] = "constraint check: not applicable";
+    if (model == Model::Multibody) std::snprintf(cerr, sizeof cerr, "cerr=%.2g", r->stats.constraint_error_max);
+    std::printf("  %-9s %-20s a=%.0e steps=%-6ld revs=%-6.2f residual=%-10.3g J E=%-9.3g J residual/(a*E)=%-9.3g %s %s\n",
                 name(model), scene.name.c_str(), acc, r->stats.steps, N, r->energy.residual(), E,
-                r->energy.residual() / (acc * E), r->stats.constraint_error_max, r->stats.status.c_str());
-    EXPECT_LE(std::abs(r->energy.residual()), energyTolerance(acc, E, r->stats.steps, N))
-        << at << ": energy residual " << r->energy.residual() << " J, energy scale " << E << " J, "
-        << N << " revolutions";
+                r->energy.residual() / (acc * E), cerr, r->stats.status.c_str());
+    EXPECT_LE(std::abs(r->energy.residual()), energyTolerance(acc, E, claim.energy))
+        << at << ": energy residual " << r->energy.residual() << " J = " << r->energy.residual() / (acc * E)
+        << "·a·E, claimed " << claim.energy << "·a·E (E = " << E << " J)";
   }
-  // 4. tenfold tighter accuracy moves the results by less than claimed. Speed errors are
-  // claimed against max(max|ω|, ω0/u): both integrators control the speed against a floor of
-  // that order (CVODE: atol_ω = a·ω0/u; Simbody: unit weights, i.e. a floor of ~1 rad/s), so a
-  // creeping or stalled machine is not held to a relative error of its creep speed.
-  const double w_scale = std::max(maxAbs(r2.timeseries, "omega_crank"), syncCrankSpeed(scene));
-  EXPECT_LE(std::abs(last(r1.timeseries, "omega_crank") - last(r2.timeseries, "omega_crank")),
-            expect.speed_claim * a * w_scale)
-      << who << ": final crank speed " << last(r1.timeseries, "omega_crank") << " vs "
-      << last(r2.timeseries, "omega_crank") << " rad/s at a/10";
-  const double m1 = maxAbs(r1.timeseries, "coupling_torque"), m2 = maxAbs(r2.timeseries, "coupling_torque");
-  EXPECT_LE(std::abs(m1 - m2), expect.torque_claim * a * m2)
-      << who << ": max |coupling torque| " << m1 << " vs " << m2 << " N·m at a/10";
-  return r1;
+  // 4. tenfold tighter accuracy moves the time series by less than claimed.
+  const double W = std::max(maxAbs(r2.timeseries, "omega_crank"), syncCrankSpeed(scene));
+  const double M = maxAbs(r2.timeseries, "coupling_torque");
+  const double dw = seriesDifference(r1.timeseries, r2.timeseries, "omega_crank");
+  const double dM = seriesDifference(r1.timeseries, r2.timeseries, "coupling_torque");
+  std::printf("  %-9s %-20s convergence a=%.0e: dw/(a*W)=%.3g (W=%.4g rad/s)  dM/(a*M)=%.3g (M=%.5g N*m)\n",
+              name(model), scene.name.c_str(), a, dw / (a * W), W, dM / (a * M), M);
+  EXPECT_LE(dw, claim.speed * a * W) << who << ": crank speed series moves by " << dw << " rad/s = "
+                                     << dw / (a * W) << "·a·W at a/10, claimed " << claim.speed << "·a·W";
+  EXPECT_LE(dM, claim.torque * a * M) << who << ": coupling torque series moves by " << dM << " N·m = "
+                                      << dM / (a * M) << "·a·M at a/10, claimed " << claim.torque << "·a·M";
+  return p;
+}
+
+// Both models through checkCase, then their agreement (Expect::models_speed/_torque) compared
+// over the common output grid of the runs at a/10.
+struct BothModels {
+  CasePair multibody, reduced;
+};
+inline BothModels checkBothModels(const Scene& scene, double a, const Expect& expect) {
+  BothModels b;
+  b.multibody = checkCase(Model::Multibody, scene, a, expect);
+  b.reduced = checkCase(Model::Reduced, scene, a, expect);
+  const Table &m = b.multibody.at_a10.timeseries, &r = b.reduced.at_a10.timeseries;
+  if (m.rows.empty() || r.rows.empty()) return b;
+  const double W = std::max(maxAbs(m, "omega_crank"), syncCrankSpeed(scene));
+  const double M = maxAbs(m, "coupling_torque");
+  const double dw = seriesDifference(m, r, "omega_crank") / W, dM = seriesDifference(m, r, "coupling_torque") / M;
+  std::printf("  models    %-20s agree at a/10: max|dw|/W=%.3g  max|dM|/M=%.3g\n", scene.name.c_str(), dw, dM);
+  if (expect.models_speed > 0)
+    EXPECT_LE(dw, expect.models_speed) << scene.name << ": multibody and reduced crank speeds differ by " << dw
+                                       << " of W, claimed " << expect.models_speed;
+  if (expect.models_torque > 0)
+    EXPECT_LE(dM, expect.models_torque) << scene.name << ": multibody and reduced coupling torques differ by " << dM
+                                        << " of M, claimed " << expect.models_torque;
+  return b;
 }
 
 }  // namespace rollerdyn::hardcases

@@ -226,9 +226,25 @@ TEST(ReducedDynamics, OutputContract) {
     const auto& row = ts.rows[i];
     EXPECT_EQ(row[ts.index("phi_motor")], row[ts.index("phi_crank")]);
     EXPECT_EQ(row[ts.index("twist")], 0.0);
-    EXPECT_NEAR(row[ts.index("coupling_torque")],
-                row[ts.index("motor_torque")] - m.motorSideInertia() * eps[i], 1e-9 * 1e4);
   }
+  // The coupling torque checked through a different balance than the model's own (motor side,
+  // M_c = M_motor − J_n1·ε): the crank side's power, M_c·ω = d/dt(½·J_n2(φ)·ω²) + M_load·ω, with
+  // the kinetic energy differentiated by central differences on the output grid (error ~1e-3 of
+  // the torque at this step; 2e-2 of the largest coupling torque leaves margin, while a wrong
+  // sign or a missing inertia term is of the order of the torque itself).
+  const auto phi = ts.column("phi_crank"), Mc = ts.column("coupling_torque"), Ml = ts.column("load_torque");
+  double Mc_max = 0;
+  for (double v : Mc) Mc_max = std::max(Mc_max, std::abs(v));
+  int checked = 0;
+  for (size_t i = 1; i + 1 < t.size(); ++i) {
+    if (w[i] < 1.0) continue;  // dividing by ω: skip the first instants of the start from rest
+    const double T1 = 0.5 * m.crankSideInertia(phi[i + 1]) * w[i + 1] * w[i + 1];
+    const double T0 = 0.5 * m.crankSideInertia(phi[i - 1]) * w[i - 1] * w[i - 1];
+    const double crank_side = (T1 - T0) / (t[i + 1] - t[i - 1]) / w[i] + Ml[i];
+    EXPECT_NEAR(Mc[i], crank_side, 2e-2 * Mc_max) << "t = " << t[i];
+    ++checked;
+  }
+  EXPECT_GT(checked, 300);  // all rows but the first ~0.6 s of the start (ω < 1 rad/s)
 }
 
 TEST(ReducedDynamics, StiffElasticCouplingApproachesRigidDrive) {

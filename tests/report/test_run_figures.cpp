@@ -127,8 +127,15 @@ TEST(RunFigures, KlossCurveIsTheScenesMotorReducedToTheCrank) {
   const auto& series = find(plans, "motor_operating_point").spec.series;
   ASSERT_EQ(series.size(), 3u);  // curve, whole trajectory, steady window
   const PlotSeries& curve = series[0];
-  for (size_t k = 0; k < curve.x.size(); k += 50)
-    EXPECT_DOUBLE_EQ(curve.y[k], klossCrankTorque(scene.motor, scene.reducer.ratio, scene.reducer.efficiency, curve.x[k]));
+  // Kloss's formula written out here (Loveikin, Pochka, Romasevych (2018), eq. (37)): rotor slip
+  // s = 1 − u·ω/ω0, rotor torque 2·M_kr/(s/s_kr + s_kr/s), times u·η at the crank.
+  const KlossMotor& mo = scene.motor;
+  const double u = scene.reducer.ratio, eta = scene.reducer.efficiency;
+  for (size_t k = 0; k < curve.x.size(); k += 50) {
+    const double slip = 1.0 - u * curve.x[k] / mo.omega_sync;
+    const double rotor = slip == 0.0 ? 0.0 : 2.0 * mo.breakdown_torque / (slip / mo.critical_slip + mo.critical_slip / slip);
+    EXPECT_NEAR(curve.y[k], rotor * u * eta, 1e-9 * mo.breakdown_torque * u) << "omega = " << curve.x[k];
+  }
   // The curve reaches past synchronous speed, where the torque changes sign.
   EXPECT_GT(curve.x.back(), scene.motor.omega_sync / scene.reducer.ratio);
   EXPECT_LT(curve.y.back(), 0.0);

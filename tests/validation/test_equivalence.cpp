@@ -49,7 +49,7 @@ double maxRelOf(const ModelComparison& c, const std::vector<QuantityComparison>&
 }  // namespace
 
 TEST(Equivalence, FourCartsElasticSplitRodsNoFriction) {
-  // The command, shortened: rollerdyn compare model/balanced-4cart.yaml --set
+  // The README's command, shortened: rollerdyn compare model/balanced-4cart.yaml --set
   // rods.model=split --set loads.guide_friction.coefficient=0 --set simulation.accuracy=1e-9
   const Scene sc = parseSceneFile(modelFile("balanced-4cart.yaml"), with(kEquivalent, {"simulation.t_end=1.5"}));
   const ModelComparison c = runComparison(sc);

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Regenerates the study results of issue #5 in validation/studies/: the papers' parameter studies
-# run with `rollerdyn sweep`, each merged with the published table (validation/published/) into
-# one CSV (ours beside theirs), the cam-vs-crank comparison (Loveikin and Pochka (cam drive)) and the two-rotor chain
-# check (Dyomin (two rotors)). The explanations of the gaps are the *.md files next to the CSVs; they quote
-# numbers from the last run and are written by hand.
+# Regenerates everything in validation/studies/: the papers' parameter studies run with
+# `rollerdyn sweep`, each merged with the published table (validation/published/) into one CSV
+# (ours beside theirs), the cam-vs-crank comparison (Loveikin and Pochka, cam drive with optimal
+# reversal) and the two-rotor chain check (Dyomin (two rotors)). The last step writes every *.md
+# page here from those tables (`rollerdyn validate --studies`): no page is written by hand.
 #
 #   bash validation/studies/run.sh            # from the repository root, after building
 #   ROLLERDYN=build-studies/rollerdyn bash validation/studies/run.sh
@@ -54,40 +54,41 @@ join_tables() {
 
 # --- Loveikin and Pochka (2007): crank offset 0...180 deg, two carts on opposite sides, rigid drive ---------------
 sweep model/recuperative-2cart.yaml --param crank.offset_deg --values 0:180:10 --model reduced \
-  --minimize delta --out $OUT/seed004_dphi
+  --minimize delta --out $OUT/loveikin2007_dphi
 sweep model/recuperative-2cart.yaml --param crank.offset_deg --values 0,45,90,135,180 --model multibody \
-  --minimize delta --out $OUT/seed004_dphi_multibody
+  --minimize delta --out $OUT/loveikin2007_dphi_multibody
 COLS="omega_crank_min omega_crank_max omega_crank_mean omega_crank_midrange delta eps_crank_abs_max H k_p steady_state_reached"
-join_tables $OUT/seed004_dphi/sweep.csv crank.offset_deg "$COLS" \
-  $PUB/seed004_table.csv dphi_deg "omega_min omega_max omega_mean delta eps_max H k_p" > $OUT/seed004_dphi.csv
-join_tables $OUT/seed004_dphi_multibody/sweep.csv crank.offset_deg "$COLS" \
-  $PUB/seed004_table.csv dphi_deg "delta eps_max H k_p" > $OUT/seed004_dphi_multibody.csv
+join_tables $OUT/loveikin2007_dphi/sweep.csv crank.offset_deg "$COLS" \
+  $PUB/loveikin2007_table.csv dphi_deg "omega_min omega_max omega_mean delta eps_max H k_p" > $OUT/loveikin2007_dphi.csv
+join_tables $OUT/loveikin2007_dphi_multibody/sweep.csv crank.offset_deg "$COLS" \
+  $PUB/loveikin2007_table.csv dphi_deg "delta eps_max H k_p" > $OUT/loveikin2007_dphi_multibody.csv
 
-# --- the energy-balanced drive paper: flywheel 0...1000 kg*m^2 on the crankshaft, three carts at 120 deg ----------------
+# --- the energy-balanced drive paper (authors not printed): flywheel 0...1000 kg*m^2 on the crankshaft, three carts at 120 deg ----------------
 # A flywheel slows the approach to steady state (time constant ~ J/(dM/dω)); 40 s leaves every
 # point at steady state (steady_state_reached column).
 sweep model/energy-balanced-3cart.yaml --param flywheel.inertia --values 0:1000:50 --model reduced \
-  --set simulation.t_end=40 --minimize delta --out $OUT/seed003_flywheel
-join_tables $OUT/seed003_flywheel/sweep.csv flywheel.inertia "$COLS" \
-  $PUB/seed003_table1.csv flywheel_inertia "omega_min omega_max omega_mean delta eps_max H k_p" > $OUT/seed003_flywheel.csv
+  --set simulation.t_end=40 --minimize delta --out $OUT/energy_balanced_flywheel
+join_tables $OUT/energy_balanced_flywheel/sweep.csv flywheel.inertia "$COLS" \
+  $PUB/energy_balanced_table1.csv flywheel_inertia "omega_min omega_max omega_mean delta eps_max H k_p" > $OUT/energy_balanced_flywheel.csv
 
 # --- Loveikin, Pochka, Romasevych (2018): crank offset 0...90 deg for coupling damping 2000 and 8000 (Table 1) -------------
-# Started at the nominal crank speed 102.1/9.8 = 10.42 rad/s, like the scenes of seeds 003/004: from
-# rest the motor's starting torque (~1 kN*m at the crank) cannot turn the as-printed roller loads
-# at 80 deg ("motor stalled at t = 0 s"). 20 s leaves >= 5 steady revolutions where there are any.
+# Started at the nominal crank speed ω_n/u = 102.1/9.8 = 10.42 rad/s and run for 20 s, exactly as
+# the Table 1 comparison of `rollerdyn validate` (validation/report.md): Table 1 lists steady
+# swings, and from rest the motor cannot turn the as-printed roller loads at some offsets (the
+# report's sensitivity table runs that start). 20 s leaves >= 5 steady revolutions where there are any.
 TCOLS="coupling_torque_swing twist_swing twist_rate_swing twist_accel_swing delta omega_crank_mean steady_state_reached"
 TPUB="coupling_torque_swing twist_swing twist_rate_swing twist_accel_swing"
 START="--set initial.crank_speed=10.42 --set simulation.t_end=20"
 sweep model/balanced-4cart.yaml --param coupling.damping --values 2000,8000 \
   --param crank.offset_deg --values 0:90:10 --model reduced $START \
-  --minimize coupling_torque_swing --out $OUT/seed000_dphi_damping
-join_tables $OUT/seed000_dphi_damping/sweep.csv "crank.offset_deg coupling.damping" "$TCOLS" \
-  $PUB/seed000_table1.csv "dphi_deg k" "$TPUB" > $OUT/seed000_dphi_damping.csv
+  --minimize coupling_torque_swing --out $OUT/loveikin2018_dphi_damping
+join_tables $OUT/loveikin2018_dphi_damping/sweep.csv "crank.offset_deg coupling.damping" "$TCOLS" \
+  $PUB/loveikin2018_table1.csv "dphi_deg k" "$TPUB" > $OUT/loveikin2018_dphi_damping.csv
 sweep model/balanced-4cart.yaml --param coupling.damping --values 2000,8000 \
   --param crank.offset_deg --values 60,90 --model multibody $START \
-  --out $OUT/seed000_dphi_damping_multibody
-join_tables $OUT/seed000_dphi_damping_multibody/sweep.csv "crank.offset_deg coupling.damping" "$TCOLS" \
-  $PUB/seed000_table1.csv "dphi_deg k" "$TPUB" > $OUT/seed000_dphi_damping_multibody.csv
+  --out $OUT/loveikin2018_dphi_damping_multibody
+join_tables $OUT/loveikin2018_dphi_damping_multibody/sweep.csv "crank.offset_deg coupling.damping" "$TCOLS" \
+  $PUB/loveikin2018_table1.csv "dphi_deg k" "$TPUB" > $OUT/loveikin2018_dphi_damping_multibody.csv
 
 # --- Loveikin, Pochka, Romasevych (2018): coupling stiffness, where is the minimum of the coupling torque swing? -----------
 # The paper finds c = 200000 N*m/rad "by a numerical experiment" before adding damping (eq. (39)),
@@ -95,7 +96,7 @@ join_tables $OUT/seed000_dphi_damping_multibody/sweep.csv "crank.offset_deg coup
 C_VALUES=10000,25000,50000,75000,100000,125000,150000,175000,200000,225000,250000,300000,400000,600000,1000000
 for k in 0 8000; do
   sweep model/balanced-4cart.yaml --param coupling.stiffness --values $C_VALUES --model reduced $START \
-    --set coupling.damping=$k --minimize coupling_torque_swing --out $OUT/seed000_stiffness_k$k
+    --set coupling.damping=$k --minimize coupling_torque_swing --out $OUT/loveikin2018_stiffness_k$k
 done
 
 # --- Loveikin and Pochka (cam drive): cam drive against a crank of equal stroke and cycle time --------------------------
@@ -105,4 +106,6 @@ cp $OUT/cam/cam_vs_crank.csv $OUT/cam_vs_crank.csv
 # --- Dyomin (two rotors): two rotors on an elastic chain, simulation vs closed form ------------------------
 "$R" chain --out $OUT/chain
 "$R" chain --omega 23.15 --out $OUT/chain_resonance3   # p0 = 69.45 rad/s ≈ 3ω
+# --- the pages: every *.md here, written from the tables above -------------------------------------
+"$R" validate --studies $OUT
 echo "studies written to $OUT/"

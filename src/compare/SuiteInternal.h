@@ -1,0 +1,95 @@
+// Internals of the validation suite shared by its source files (ValidationSuite.cpp: the
+// runner, equivalence and analytic sections; ValidationDifferences.cpp: where the physics differ;
+// ValidationPapers.cpp: the papers' sweeps and the sensitivity table). Not a public header.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "compare/ValidationSuite.h"
+#include "multibody/MultibodySimulation.h"
+#include "reduced/ReducedModel.h"
+#include "scene/SceneParser.h"
+
+namespace rollerdyn::validation::detail {
+
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+inline std::string g(double v, int prec = 3) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
+  return buf;
+}
+
+// A value for --set that round-trips exactly.
+inline std::string exact(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+inline std::vector<std::string> concat(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// Settings that make the two models' physics identical: the papers' split rods, no guide
+// friction, exact kinematics, CVODE, and tight accuracy for both.
+inline const std::vector<std::string> kEquivalentPhysics = {
+    "rods.model=split", "loads.guide_friction.coefficient=0", "reduced.kinematics=exact",
+    "reduced.integrator=cvode"};
+
+class Suite {
+ public:
+  explicit Suite(const ValidationOptions& o) : o_(o) {}
+
+  ValidationResults run();
+
+ private:
+  void log(const std::string& line) const {
+    if (o_.log) o_.log(line);
+  }
+  bool interrupted() const { return o_.interrupt && o_.interrupt->load(); }
+  Scene load(const std::string& file, const std::vector<std::string>& sets) const {
+    return parseSceneFile(o_.model_dir + "/" + file, sets);
+  }
+  static std::string command(const std::string& verb, const std::string& file,
+                             const std::vector<std::string>& sets) {
+    std::string c = "rollerdyn " + verb + " model/" + file;
+    for (const auto& s : sets) c += " --set " + s;
+    return c;
+  }
+  double timeForRevolutions(const std::string& file, const std::vector<std::string>& sets, double revs) const;
+  ComparisonCase compareCase(const std::string& label, const std::string& description, const std::string& file,
+                             const std::vector<std::string>& sets, double revs, ModelComparison* keep);
+  RunMetrics reducedMetrics(const std::string& file, const std::vector<std::string>& sets) const {
+    const Scene sc = load(file, sets);
+    return runMetrics(sc, runReducedModel(sc));
+  }
+  RunMetrics multibodyMetrics(const std::string& file, const std::vector<std::string>& sets) const {
+    const Scene sc = load(file, sets);
+    RunControl rc;
+    rc.interrupt = o_.interrupt;
+    return runMetrics(sc, runMultibodyModel(sc, rc));
+  }
+
+  SweepPoint paperPoint(const PaperSweep& p, const std::vector<std::string>& sets,
+                        const std::vector<std::string>& variant, const std::string& multibody_log) const;
+  bool sweepPaper(PaperSweep& p, const std::vector<double>& xs, const std::vector<double>& multibody_at,
+                  const std::string& published_key, const std::function<std::string(double)>& describe);
+
+  void equivalence(ValidationResults& r);
+  void differences(ValidationResults& r);
+  void papers(ValidationResults& r);
+  void sensitivity(ValidationResults& r);
+  void findings(ValidationResults& r);
+  void analytic(ValidationResults& r);
+
+  const ValidationOptions& o_;
+};
+
+}  // namespace rollerdyn::validation::detail
