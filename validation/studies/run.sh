@@ -21,13 +21,14 @@ PUB=validation/published
 sweep() { "$R" sweep "$@" || [ $? -eq 3 ]; }
 
 # join OURS PUB KEYS... : print ours (selected columns, renamed "ours_*") beside the published
-# row with the same key values. Column names are looked up in the headers; '#' lines skipped.
+# row with the same key values. Column names are looked up in the headers (a unit in brackets,
+# e.g. delta[-], is ignored); '#' lines skipped.
 # usage: join_tables ours.csv ours_key_cols ours_cols pub.csv pub_key_cols pub_cols > out.csv
 join_tables() {
   awk -F, -v OFS=, -v okeys="$2" -v ocols="$3" -v pkeys="$5" -v pcols="$6" '
-    function idx(hdr, names, out,   n, i, k, a) {
+    function idx(hdr, names, out,   n, i, k, a, h) {
       n = split(names, a, " ")
-      for (i = 1; i <= n; i++) { out[i] = 0; for (k in hdr) if (hdr[k] == a[i]) out[i] = k
+      for (i = 1; i <= n; i++) { out[i] = 0; for (k in hdr) { h = hdr[k]; sub(/\[.*\]$/, "", h); if (h == a[i]) out[i] = k }
         if (!out[i]) { print "join_tables: no column " a[i] > "/dev/stderr"; exit 2 } }
       return n
     }
