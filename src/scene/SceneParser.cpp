@@ -142,6 +142,8 @@ SimulationSettings readSimulation(const Reader& in) {
   s.t_end = in.number("simulation.t_end");
   s.accuracy = in.number("simulation.accuracy");
   s.integrator = in.choice("simulation.integrator");
+  s.formulation = in.choice("simulation.formulation") == "minimal" ? Formulation::Minimal
+                                                                   : Formulation::Constrained;
   s.output_step = in.number("simulation.output_step");
   if (s.output_step > s.t_end) {
     const std::string t = formatNumber(s.t_end), dt = formatNumber(s.output_step);
