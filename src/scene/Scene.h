@@ -34,6 +34,8 @@ struct SimulationSettings {
   Formulation formulation = Formulation::Constrained;  // equations the multibody model integrates:
                                 // all coordinates under Simbody's constraints (constrained) or
                                 // the independent ones only (minimal) [-]      simulation.formulation
+                                // (scene files default to minimal, SceneSchema.cpp; a Scene
+                                // built in code keeps the constrained formulation unless set)
 };
 
 struct InitialState {

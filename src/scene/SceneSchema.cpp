@@ -48,7 +48,7 @@ std::vector<KeySpec> buildSchema() {
               "ExplicitEuler", "Verlet", "SemiExplicitEuler2", "CPodes"},
              "RungeKuttaMerson",
              "Simbody integrator of the multibody model's constrained formulation"),
-      choice("simulation.formulation", P::Optional, {"constrained", "minimal"}, "constrained",
+      choice("simulation.formulation", P::Optional, {"constrained", "minimal"}, "minimal",
              "equations of the multibody model: all coordinates under Simbody's constraints "
              "(constrained) or only the independent ones, integrated by CVODE Adams (minimal)"),
       number("simulation.output_step", "s", P::Optional, positive(), 0.005,
