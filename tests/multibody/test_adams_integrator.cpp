@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "multibody/cvode/AdamsIntegrator.h"
 
@@ -83,6 +84,18 @@ TEST(AdamsIntegrator, FailingRightHandSideIsReportedNotThrown) {
   EXPECT_FALSE(integ.advanceTo(1.0));
   EXPECT_FALSE(integ.error().empty());
   EXPECT_LT(integ.time(), 1.0);
+}
+
+TEST(AdamsIntegrator, ThrowingRightHandSideEndsTheRunWithItsMessage) {
+  AdamsProblem p = oscillator(1e-6);
+  p.rhs = [](double t, const double*, double* yd) -> bool {
+    if (t > 0.25) throw std::runtime_error("geometry out of range");
+    yd[0] = yd[1] = 0.0;
+    return true;
+  };
+  AdamsIntegrator integ(p);
+  EXPECT_FALSE(integ.advanceTo(1.0));
+  EXPECT_NE(integ.error().find("geometry out of range"), std::string::npos) << integ.error();
 }
 
 TEST(AdamsIntegrator, MismatchedToleranceSizesAreRejected) {

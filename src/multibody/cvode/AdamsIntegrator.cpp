@@ -25,6 +25,7 @@ struct AdamsIntegrator::Impl {
   double t = 0;
   long rhs_evals = 0;
   std::string error;
+  std::string rhs_exception;  // what the right-hand side threw, if it did
 
   ~Impl() {
     if (cv) CVodeFree(&cv);
@@ -40,7 +41,13 @@ struct AdamsIntegrator::Impl {
     ++self->rhs_evals;
     const long n = NV_LENGTH_S(y);
     double* d = NV_DATA_S(ydot);
-    if (!self->problem.rhs(t, NV_DATA_S(y), d)) return 1;
+    // No C++ exception may cross CVODE's C frames: report it as an unrecoverable failure.
+    try {
+      if (!self->problem.rhs(t, NV_DATA_S(y), d)) return 1;
+    } catch (const std::exception& ex) {
+      self->rhs_exception = ex.what();
+      return -1;
+    }
     for (long i = 0; i < n; ++i)
       if (!std::isfinite(d[i])) return 1;  // recoverable: CVODE retries with a smaller step
     return 0;
@@ -105,7 +112,8 @@ bool AdamsIntegrator::advanceTo(double t_out) {
   const int flag = CVode(m.cv, t_out, m.y, &t_ret, CV_NORMAL);
   if (flag < 0) {
     char* name = CVodeGetReturnFlagName(flag);
-    m.error = std::string(name ? name : "?") + " " + m.error;
+    m.error = std::string(name ? name : "?") + " " + m.error +
+              (m.rhs_exception.empty() ? "" : " (right-hand side: " + m.rhs_exception + ")");
     std::free(name);
     return false;
   }
