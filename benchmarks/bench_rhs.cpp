@@ -6,6 +6,8 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_fixture.h"
+#include "multibody/MinimalCoordinates.h"
+#include "multibody/MinimalDynamics.h"
 #include "multibody/MultibodyModel.h"
 
 namespace {
@@ -28,6 +30,22 @@ void multibodyRhs(benchmark::State& state, SimTK::Stage invalidated) {
 void BM_MultibodyRhsPosition(benchmark::State& state) { multibodyRhs(state, SimTK::Stage::Position); }
 void BM_MultibodyRhsVelocity(benchmark::State& state) { multibodyRhs(state, SimTK::Stage::Velocity); }
 
+// The minimal formulation's right-hand side (README "Multibody formulations"): all q and u from
+// the closed forms, realization to Dynamics, projected equations, guide-reaction pass.
+void BM_MinimalRhs(benchmark::State& state) {
+  const MultibodyModel model(sceneWithCarts(int(state.range(0))));
+  SimTK::State s = model.assembledState(kPhi, kOmega, kTwist);
+  MinimalCoordinates coords(model, s);
+  MinimalDynamics dyn(model, s);
+  IndependentState x = coords.extract(s);
+  for (auto _ : state) {
+    coords.apply(0.0, x, s);
+    dyn.evaluate(s, coords);
+    benchmark::DoNotOptimize(dyn.guideNormals(s)[0]);
+  }
+  state.counters["carts"] = double(state.range(0));
+}
+
 void BM_ReducedRhs(benchmark::State& state) {
   const ReducedModel model(sceneWithCarts(int(state.range(0))));
   const Eigen::VectorXd y = runningState(model);
@@ -42,4 +60,5 @@ void BM_ReducedRhs(benchmark::State& state) {
 
 BENCHMARK(BM_MultibodyRhsPosition)->Arg(1)->Arg(4)->Arg(32)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MultibodyRhsVelocity)->Arg(1)->Arg(4)->Arg(32)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MinimalRhs)->Arg(1)->Arg(4)->Arg(32)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ReducedRhs)->Arg(1)->Arg(4)->Arg(32)->Unit(benchmark::kMicrosecond);

@@ -53,6 +53,8 @@ struct RunStats {
   double cpu_seconds = 0;          // process CPU time of the integration
   double constraint_error_max = 0; // max over output rows of the constraint error norm [-]
   bool complete = true;            // false when the run ended before t_end
+  double formulation_self_check = -1;  // multibody minimal formulation: max relative difference of its
+                                       // accelerations from Simbody's constrained solve [-]; -1: not run
   std::string status = "completed";  // e.g. "completed", "motor stalled at t = 3.2 s"
 };
 

@@ -114,6 +114,9 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
       {"residual", num("energy.residual", en.residual())}};
   j["energy_residual_rel"] = num("energy_residual_rel", en.residualRelative());
   j["constraint_error_max"] = num("constraint_error_max", run.stats.constraint_error_max);
+  j["formulation_self_check"] = run.stats.formulation_self_check >= 0  // README, "Multibody formulations"
+                                    ? num("formulation_self_check", run.stats.formulation_self_check)
+                                    : json(nullptr);
   j["steps"] = run.stats.steps;
   j["realizations"] = run.stats.realizations;
   j["cpu_seconds"] = num("cpu_seconds", run.stats.cpu_seconds);

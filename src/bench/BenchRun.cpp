@@ -45,7 +45,15 @@ const char* toString(Outcome o) {
 Scene applySetting(const Scene& base, const SolverSetting& setting) {
   Scene s = base;
   if (setting.model == "multibody") {
+    s.simulation.formulation = Formulation::Constrained;
     s.simulation.integrator = setting.integrator;
+    s.simulation.accuracy = setting.accuracy;
+    s.simulation.constraint_tolerance = setting.accuracy;
+  } else if (setting.model == kMultibodyMinimal) {
+    if (setting.integrator != kMinimalIntegrator)
+      throw std::invalid_argument(std::string("bench: the multibody model's minimal formulation integrates with ") +
+                                  kMinimalIntegrator + ", got '" + setting.integrator + "'");
+    s.simulation.formulation = Formulation::Minimal;
     s.simulation.accuracy = setting.accuracy;
     s.simulation.constraint_tolerance = setting.accuracy;
   } else if (setting.model == "reduced") {
@@ -60,7 +68,8 @@ Scene applySetting(const Scene& base, const SolverSetting& setting) {
                                   setting.integrator + "'");
     }
   } else {
-    throw std::invalid_argument("bench: model must be multibody or reduced, got '" + setting.model + "'");
+    throw std::invalid_argument("bench: model must be multibody, multibody-minimal or reduced, got '" +
+                                setting.model + "'");
   }
   return s;
 }
@@ -83,7 +92,7 @@ OneRun runOnce(const Scene& scene, const SolverSetting& setting, const Budget& b
   try {
     const Scene s = applySetting(scene, setting);
     bool over_budget = false, user_stop = false;
-    if (setting.model == "multibody") {
+    if (setting.model == "multibody" || setting.model == kMultibodyMinimal) {
       std::atomic<bool> stop{false};
       const double c0 = cpuNow();
       RunControl control;

@@ -20,9 +20,14 @@
 
 namespace rollerdyn::bench {
 
+// The multibody model in its minimal formulation (simulation.formulation = minimal) is a model
+// of its own in bench tables, with its one integrator.
+constexpr const char* kMultibodyMinimal = "multibody-minimal";
+constexpr const char* kMinimalIntegrator = "cvode-adams";
+
 // One solver setting of one model.
 struct SolverSetting {
-  std::string model;          // "multibody" | "reduced"
+  std::string model;          // "multibody" (constrained formulation) | "multibody-minimal" | "reduced"
   std::string integrator;     // Simbody name (integratorNames()) | "cvode" | "baranov"
   double accuracy = 0;        // relative accuracy (multibody, cvode); 0 for baranov
   double baranov_step = 0;    // crank-angle step of the Baranov scheme [rad]; 0 otherwise
@@ -56,7 +61,7 @@ struct Measurement {
   RunResult run;              // of the first repetition (tables used for errors)
 };
 
-// The scene with the setting applied: integrator, accuracy and constraint tolerance
+// The scene with the setting applied: formulation (multibody), integrator, accuracy and constraint tolerance
 // (= accuracy, the scene schema's own default), reduced.integrator and baranov_step.
 Scene applySetting(const Scene& base, const SolverSetting& setting);
 

@@ -1,4 +1,5 @@
 #include "bench/BenchStudies.h"
+#include "bench/BenchText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +8,6 @@
 
 #include "io/AtomicFile.h"
 #include "multibody/IntegratorFactory.h"
-#include "report/Gnuplot.h"
 #include "scene/SceneParser.h"
 
 namespace rollerdyn::bench {
@@ -48,19 +48,7 @@ Scene benchScene(const Scene& scene, const BenchOptions& options) {
 
 namespace {
 
-constexpr const char* kMultibody = "multibody";
-constexpr const char* kReduced = "reduced";
-
-bool usable(Outcome o) { return o == Outcome::Ok || o == Outcome::Stalled; }
 bool stopRequested(const BenchOptions& o) { return o.interrupt && o.interrupt->load(); }
-
-std::string num(double v, int precision = 3) {
-  if (!std::isfinite(v)) return "—";
-  std::ostringstream os;
-  os.precision(precision);
-  os << v;
-  return os.str();
-}
 
 // A value for --set that round-trips exactly.
 std::string setValue(double v) {
@@ -192,6 +180,10 @@ std::vector<BenchRow> runIntegratorStudy(const SceneSource& source, const BenchO
       for (double a : grid) series.push_back({kMultibody, name, a, 0});
       runSeries(scene, series, have_ref ? &ref : nullptr, have_ref ? &ref_table : nullptr, opt, rows);
     }
+    // The minimal formulation of the same multibody model, against the same reference.
+    std::vector<SolverSetting> minimal;
+    for (double a : grid) minimal.push_back({kMinimal, kMinimalIntegrator, a, 0});
+    runSeries(scene, minimal, nullptr, have_ref ? &ref_table : nullptr, opt, rows);
   }
   // Reduced: CVODE at kReferenceAccuracy is the reference of both reduced integrators.
   {
@@ -222,6 +214,7 @@ void runBothModels(const std::string& study, const std::string& variant, double 
                    const BenchOptions& opt, std::vector<BenchRow>& rows) {
   const SolverSetting settings[] = {
       {kMultibody, scene.simulation.integrator, scene.simulation.accuracy, 0},
+      {kMinimal, kMinimalIntegrator, scene.simulation.accuracy, 0},
       {kReduced, "cvode", scene.simulation.accuracy, 0}};
   for (const SolverSetting& s : settings) {
     if (stopRequested(opt)) return;
@@ -240,7 +233,7 @@ void runVariant(const std::string& study, const std::string& variant, double x, 
   try {
     scene = benchScene(source.load(extra), opt);
   } catch (const std::exception& ex) {
-    for (const char* model : {kMultibody, kReduced}) {
+    for (const char* model : {kMultibody, kMinimal, kReduced}) {
       Measurement m;
       m.setting = {model, "", 0, 0};
       m.outcome = Outcome::Failed;
@@ -368,331 +361,6 @@ std::string rowsCsv(const std::vector<BenchRow>& rows) {
        << r.carts << ',' << f(per_cart) << ',' << f(us) << '\n';
   }
   return os.str();
-}
-
-namespace {
-
-std::string settingText(const SolverSetting& s) {
-  if (s.integrator == "baranov") return "baranov, Δφ = " + num(s.baranov_step * 180.0 / M_PI) + "°";
-  return s.integrator + ", accuracy " + num(s.accuracy, 2);
-}
-
-std::string timingNote(const BenchOptions& opt) {
-  std::ostringstream os;
-  os << "CPU times are process CPU seconds of the integration loop (RunStats.cpu_seconds; model "
-        "building excluded), "
-     << (opt.repeats > 1 ? "median of " + std::to_string(opt.repeats) + " repetitions"
-                         : std::string("one run each (use --repeat N for medians)"))
-     << ", on a machine that may be shared: treat differences under ~20 % as noise. CPU budget "
-     << num(opt.budget) << " s per run.";
-  return os.str();
-}
-
-const BenchRow* findRow(const std::vector<BenchRow>& rows, const std::string& variant, const std::string& model) {
-  for (const BenchRow& r : rows)
-    if (r.variant == variant && r.m.setting.model == model) return &r;
-  return nullptr;
-}
-
-}  // namespace
-
-std::string integratorReport(const Scene& scene, const std::vector<BenchRow>& rows, const BenchOptions& opt) {
-  std::ostringstream os;
-  const double T = scene.simulation.t_end;
-  os << "# Integrator benchmark: " << scene.name << "\n\n"
-     << "Simulated time " << num(T) << " s (output step " << num(scene.simulation.output_step)
-     << " s)" << (opt.quick ? ", --quick" : "") << ". " << timingNote(opt) << "\n\n"
-     << "**Error measure.** For each run, over the output grid it shares with the reference run of the "
-        "SAME model: error_omega = max_i |ω_i − ω_ref,i| / max_i |ω_ref,i| (crank speed), "
-        "error_coupling = the same for the coupling torque. References: multibody "
-     << "RungeKuttaMerson, reduced CVODE, both at accuracy " << num(kReferenceAccuracy, 2)
-     << " (Merson rather than the 5th-order Feldberg: at equal accuracy it takes ~3x smaller steps, the "
-        "safer reference for anything not fully under error control). Baranov's scheme is compared with "
-        "the reduced CVODE reference.\n\n";
-
-  // Reference check: the closest any other run of the same model comes to the reference (an
-  // estimate of the reference's own error when that run is an independent integrator).
-  for (const char* model : {kMultibody, kReduced}) {
-    const BenchRow* ref = nullptr;
-    double agree = NAN;
-    std::string who;
-    for (const BenchRow& r : rows) {
-      if (r.m.setting.model != model) continue;
-      if (r.reference) ref = &r;
-      else if (r.m.outcome == Outcome::Ok && std::isfinite(r.error_omega) && !(agree <= r.error_omega)) {
-        agree = r.error_omega;
-        who = settingText(r.m.setting);
-      }
-    }
-    if (!ref) {
-      os << "- " << model << ": no usable reference run; errors not measured.\n";
-      continue;
-    }
-    os << "- " << model << " reference: " << settingText(ref->m.setting) << ", "
-       << num(ref->m.cpu_seconds) << " s CPU, status " << ref->m.status;
-    if (std::isfinite(agree))
-      os << "; closest other run (" << who << ") differs by " << num(agree, 2)
-         << " in ω (when it is another integrator, the reference's own error is of this order or less)";
-    os << ".\n";
-  }
-
-  os << "\n## Recommended settings (cheapest run that reaches the error)\n\n"
-     << "| model | target | criterion | setting | CPU [s] | real-time factor | error ω | error coupling |\n"
-     << "|---|---|---|---|---|---|---|---|\n";
-  for (const char* model : {kMultibody, kReduced})
-    for (double target : {1e-3, 1e-6})
-      for (bool both : {false, true}) {
-        const BenchRow* r = cheapestReaching(rows, model, target, both);
-        os << "| " << model << " | " << num(target, 1) << " | " << (both ? "ω and coupling torque" : "ω") << " | ";
-        if (!r) {
-          os << "none reached | | | | |\n";
-          continue;
-        }
-        os << settingText(r->m.setting) << " | " << num(r->m.cpu_seconds) << " | "
-           << num(r->m.real_time_factor) << " | " << num(r->error_omega, 2) << " | "
-           << num(r->error_coupling, 2) << " |\n";
-      }
-
-  os << "\n## Performance targets (1e-6 relative crank-speed error)\n\n"
-     << "| model | cheapest setting at 1e-6 | real-time factor | target | met |\n|---|---|---|---|---|\n";
-  for (const char* model : {kMultibody, kReduced}) {
-    const double target = std::string(model) == kMultibody ? kTargetRealTimeMultibody : kTargetRealTimeReduced;
-    const BenchRow* r = cheapestReaching(rows, model, 1e-6, false);
-    os << "| " << model << " | " << (r ? settingText(r->m.setting) : "none reached") << " | "
-       << (r ? num(r->m.real_time_factor) : "—") << " | ≥ " << num(target) << "× | "
-       << (r ? (r->m.real_time_factor >= target ? "yes" : "no") : "no") << " |\n";
-  }
-  os << "\nThe targets are stated for model/balanced-4cart.yaml over 10 s; on other scenes or with "
-        "--quick (shorter run, start-up transient only) they are indicative.\n";
-
-  os << "\n## All runs\n\n| model | integrator | accuracy / step | outcome | CPU [s] | steps | RHS evals | "
-        "error ω | error coupling | energy residual | constraint error |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const BenchRow& r : rows) {
-    const SolverSetting& s = r.m.setting;
-    os << "| " << s.model << " | " << s.integrator << (r.reference ? " (ref)" : "") << " | "
-       << (s.integrator == "baranov" ? num(s.baranov_step * 180.0 / M_PI) + "°" : num(s.accuracy, 1)) << " | "
-       << toString(r.m.outcome) << " | " << num(r.m.cpu_seconds) << " | " << r.m.steps << " | "
-       << r.m.realizations << " | " << num(r.error_omega, 2) << " | " << num(r.error_coupling, 2) << " | "
-       << num(r.m.energy_residual_rel, 2) << " | " << num(r.m.constraint_error_max, 2) << " |\n";
-  }
-  os << "\nFigures: work_precision_omega.png/.svg, work_precision_coupling.png/.svg (error vs CPU time, "
-        "log-log, one line per integrator). Data: bench.csv.\n";
-  return os.str();
-}
-
-std::string cartsReport(const Scene& scene, const std::vector<BenchRow>& rows, const BenchOptions& opt) {
-  std::ostringstream os;
-  os << "# Cost vs number of carts: " << scene.name << "\n\n"
-     << "carts.count = n, carts.sides = same, crank.offset_deg = 360/n (0 for n = 1); motor breakdown "
-        "torque × n/" << scene.carts.count << " for n > " << scene.carts.count
-     << " so the drive carries the load. Each model at the scene's integrator and accuracy ("
-     << scene.simulation.integrator << " / cvode, " << num(scene.simulation.accuracy, 2) << "), "
-     << num(benchScene(scene, opt).simulation.t_end) << " s simulated. " << timingNote(opt) << "\n\n"
-     << "| n | model | outcome | CPU [s] | CPU per cart [s] | steps | RHS evals | µs per RHS eval per cart | "
-        "real-time factor |\n|---|---|---|---|---|---|---|---|---|\n";
-  for (const BenchRow& r : rows) {
-    const Measurement& m = r.m;
-    const double us = m.realizations > 0 ? 1e6 * m.cpu_seconds / m.realizations / r.x : NAN;
-    os << "| " << r.x << " | " << m.setting.model << " | " << toString(m.outcome) << " | " << num(m.cpu_seconds)
-       << " | " << num(m.cpu_seconds / r.x) << " | " << m.steps << " | " << m.realizations << " | " << num(us)
-       << " | " << num(m.real_time_factor) << " |\n";
-  }
-  os << "\n## Per-cart cost at 32 carts relative to 4 carts (target ≤ " << num(kTargetPerCartCostRatio)
-     << ")\n\n| model | per run (CPU/n) | per RHS evaluation (CPU/RHS/n) | met (per run) |\n|---|---|---|---|\n";
-  for (const char* model : {kMultibody, kReduced}) {
-    const BenchRow* a = findRow(rows, "n=4", model);
-    const BenchRow* b = findRow(rows, "n=32", model);
-    if (!a || !b || !usable(a->m.outcome) || !usable(b->m.outcome)) {
-      os << "| " << model << " | — | — | not measured |\n";
-      continue;
-    }
-    const double run_ratio = (b->m.cpu_seconds / 32) / (a->m.cpu_seconds / 4);
-    const double rhs_ratio = (b->m.cpu_seconds / b->m.realizations / 32) / (a->m.cpu_seconds / a->m.realizations / 4);
-    os << "| " << model << " | " << num(run_ratio) << " | " << num(rhs_ratio) << " | "
-       << (run_ratio <= kTargetPerCartCostRatio ? "yes" : "no") << " |\n";
-  }
-  os << "\nPer run includes any change in the number of steps the dynamics of n carts needs; per RHS "
-        "evaluation isolates the cost of evaluating the model. Figure: carts_cost.png/.svg. Data: carts.csv.\n";
-  return os.str();
-}
-
-std::string effectsReport(const Scene& scene, const std::vector<BenchRow>& rows, const BenchOptions& opt) {
-  std::ostringstream os;
-  os << "# Cost of each effect: " << scene.name << "\n\n"
-     << "Each variant changes one thing of the scene (--set) and runs both models at the scene's "
-        "integrator and accuracy ("
-     << scene.simulation.integrator << " / cvode, " << num(scene.simulation.accuracy, 2) << "), "
-     << num(benchScene(scene, opt).simulation.t_end) << " s simulated. Relative cost = CPU / CPU of the "
-        "baseline of the same model. " << timingNote(opt) << "\n\n"
-     << "| # | variant | model | outcome | CPU [s] | relative cost | steps | RHS evals | µs per RHS eval |\n"
-     << "|---|---|---|---|---|---|---|---|---|\n";
-  std::map<std::string, int> index;
-  for (const BenchRow& r : rows) {
-    if (!index.count(r.variant)) {
-      const int k = int(index.size());
-      index[r.variant] = k;
-    }
-    const BenchRow* base = findRow(rows, "baseline", r.m.setting.model);
-    const double rel = base && usable(base->m.outcome) ? r.m.cpu_seconds / base->m.cpu_seconds : NAN;
-    const double us = r.m.realizations > 0 ? 1e6 * r.m.cpu_seconds / r.m.realizations : NAN;
-    os << "| " << index[r.variant] << " | " << r.variant << " | " << r.m.setting.model << " | "
-       << toString(r.m.outcome) << (usable(r.m.outcome) ? "" : " (" + r.m.status + ")") << " | "
-       << num(r.m.cpu_seconds) << " | " << num(rel) << " | " << r.m.steps << " | " << r.m.realizations << " | "
-       << num(us) << " |\n";
-  }
-  if (!scene.hasGuideFriction() && !(scene.carts.geometry.b > 0))
-    os << "\nGuide friction: not applicable (the scene has no guide geometry, carts.geometry.b = 0).\n";
-  os << "\nFigures: effects_stiffness.png/.svg (CPU vs coupling stiffness, rigid coupling drawn as a flat "
-        "line), effects_relative.png/.svg (relative cost by variant number). Data: effects.csv.\n";
-  return os.str();
-}
-
-namespace {
-
-PlotSeries series(const std::string& title, const std::string& style) {
-  PlotSeries s;
-  s.title = title;
-  s.style = style;
-  return s;
-}
-
-// Draws a figure; a missing or failing gnuplot is reported in the returned note, not thrown, so
-// the CSV and markdown are still written.
-std::string tryPlot(const PlotSpec& spec, const std::string& base, std::vector<std::string>& written) {
-  try {
-    renderPlot(spec, base);
-    written.push_back(base + ".png");
-    written.push_back(base + ".svg");
-    return "";
-  } catch (const std::exception& ex) {
-    return std::string("\nFigure not drawn: ") + ex.what() + "\n";
-  }
-}
-
-}  // namespace
-
-std::vector<std::string> writeIntegratorStudy(const std::string& dir, const Scene& scene,
-                                              const std::vector<BenchRow>& rows, const BenchOptions& opt) {
-  std::vector<std::string> written;
-  writeFileAtomic(dir + "/bench.csv", rowsCsv(rows));
-  written.push_back(dir + "/bench.csv");
-  std::string notes;
-  for (bool coupling : {false, true}) {
-    PlotSpec spec;
-    spec.title = scene.name + ": work-precision, " + (coupling ? "coupling torque" : "crank speed");
-    spec.xlabel = "CPU time [s]";
-    spec.ylabel = coupling ? "max |M_{c} - M_{c,ref}| / max |M_{c,ref}| [-]" : "max |ω - ω_{ref}| / max |ω_{ref}| [-]";
-    spec.logx = spec.logy = true;
-    std::map<std::string, size_t> line_of;
-    for (const BenchRow& r : rows) {
-      const double e = coupling ? r.error_coupling : r.error_omega;
-      if (r.reference || !usable(r.m.outcome) || !std::isfinite(e)) continue;
-      const std::string title = r.m.setting.model + " " + r.m.setting.integrator;
-      if (!line_of.count(title)) {
-        line_of[title] = spec.series.size();
-        spec.series.push_back(series(title, "linespoints"));
-      }
-      PlotSeries& s = spec.series[line_of[title]];
-      s.x.push_back(r.m.cpu_seconds);
-      s.y.push_back(e);
-    }
-    notes += tryPlot(spec, dir + (coupling ? "/work_precision_coupling" : "/work_precision_omega"), written);
-  }
-  writeFileAtomic(dir + "/bench.md", integratorReport(scene, rows, opt) + notes);
-  written.push_back(dir + "/bench.md");
-  return written;
-}
-
-std::vector<std::string> writeCartsStudy(const std::string& dir, const Scene& scene,
-                                         const std::vector<BenchRow>& rows, const BenchOptions& opt) {
-  std::vector<std::string> written;
-  writeFileAtomic(dir + "/carts.csv", rowsCsv(rows));
-  written.push_back(dir + "/carts.csv");
-  PlotSpec spec;
-  spec.title = scene.name + ": CPU time per cart vs number of carts";
-  spec.xlabel = "carts n [-]";
-  spec.ylabel = "CPU time / n [s]";
-  spec.logx = spec.logy = true;
-  for (const char* model : {kMultibody, kReduced}) {
-    PlotSeries s = series(std::string(model) + " (per run)", "linespoints");
-    PlotSeries e = series(std::string(model) + " (per RHS evaluation × 1000)", "linespoints");
-    for (const BenchRow& r : rows)
-      if (r.m.setting.model == model && usable(r.m.outcome)) {
-        s.x.push_back(r.x);
-        s.y.push_back(r.m.cpu_seconds / r.x);
-        if (r.m.realizations > 0) {
-          e.x.push_back(r.x);
-          e.y.push_back(1000.0 * r.m.cpu_seconds / r.m.realizations / r.x);
-        }
-      }
-    spec.series.push_back(s);
-    spec.series.push_back(e);
-  }
-  const std::string notes = tryPlot(spec, dir + "/carts_cost", written);
-  writeFileAtomic(dir + "/carts.md", cartsReport(scene, rows, opt) + notes);
-  written.push_back(dir + "/carts.md");
-  return written;
-}
-
-std::vector<std::string> writeEffectsStudy(const std::string& dir, const Scene& scene,
-                                           const std::vector<BenchRow>& rows, const BenchOptions& opt) {
-  std::vector<std::string> written;
-  writeFileAtomic(dir + "/effects.csv", rowsCsv(rows));
-  written.push_back(dir + "/effects.csv");
-  std::string notes;
-  {
-    PlotSpec spec;
-    spec.title = scene.name + ": CPU time vs coupling stiffness";
-    spec.xlabel = "coupling stiffness c [N·m/rad]";
-    spec.ylabel = "CPU time [s]";
-    spec.logx = spec.logy = true;
-    for (const char* model : {kMultibody, kReduced}) {
-      PlotSeries s = series(std::string(model) + " elastic", "linespoints");
-      for (const BenchRow& r : rows)
-        if (r.m.setting.model == model && r.x > 0 && usable(r.m.outcome)) {
-          s.x.push_back(r.x);
-          s.y.push_back(r.m.cpu_seconds);
-        }
-      spec.series.push_back(s);
-      const BenchRow* rigid = findRow(rows, "rigid coupling", model);
-      if (!rigid && scene.coupling.type == CouplingType::Rigid) rigid = findRow(rows, "baseline", model);
-      if (rigid && usable(rigid->m.outcome) && !s.x.empty()) {
-        const auto [lo, hi] = std::minmax_element(s.x.begin(), s.x.end());
-        PlotSeries r = series(std::string(model) + " rigid", "lines");
-        r.x = {*lo, *hi};
-        r.y = {rigid->m.cpu_seconds, rigid->m.cpu_seconds};
-        spec.series.push_back(r);
-      }
-    }
-    notes += tryPlot(spec, dir + "/effects_stiffness", written);
-  }
-  {
-    PlotSpec spec;
-    spec.title = scene.name + ": relative cost of each variant (numbers as in effects.md)";
-    spec.xlabel = "variant # [-]";
-    spec.ylabel = "CPU time / baseline CPU time [-]";
-    spec.logy = true;
-    for (const char* model : {kMultibody, kReduced}) {
-      PlotSeries s = series(model, "points");
-      const BenchRow* base = findRow(rows, "baseline", model);
-      std::map<std::string, int> index;
-      for (const BenchRow& r : rows) {
-        if (!index.count(r.variant)) {
-          const int k = int(index.size());
-          index[r.variant] = k;
-        }
-        if (r.m.setting.model == model && usable(r.m.outcome) && base && usable(base->m.outcome)) {
-          s.x.push_back(index[r.variant]);
-          s.y.push_back(r.m.cpu_seconds / base->m.cpu_seconds);
-        }
-      }
-      spec.series.push_back(s);
-    }
-    notes += tryPlot(spec, dir + "/effects_relative", written);
-  }
-  writeFileAtomic(dir + "/effects.md", effectsReport(scene, rows, opt) + notes);
-  written.push_back(dir + "/effects.md");
-  return written;
 }
 
 }  // namespace rollerdyn::bench

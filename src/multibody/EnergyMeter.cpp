@@ -11,8 +11,9 @@ void EnergyMeter::realizeTopology(SimTK::State& s) const {
   z_start_ = forces_.allocateZ(s, SimTK::Vector(4, 0.0));
 }
 
-void EnergyMeter::realizeAcceleration(const SimTK::State& s) const {
-  SimTK::Vector& zdot = forces_.updZDot(s);
+void EnergyMeter::realizeAcceleration(const SimTK::State& s) const { calcRates(s, forces_.updZDot(s)); }
+
+void EnergyMeter::calcRates(const SimTK::State& s, SimTK::Vector& zdot) const {
   zdot[z_start_ + 0] = sources_.motor ? sources_.motor->power(s) : 0.0;
   zdot[z_start_ + 1] = sources_.coupling ? sources_.coupling->dampingPower(s) : 0.0;
   zdot[z_start_ + 2] = sources_.friction ? sources_.friction->dissipatedPower(s) : 0.0;

@@ -34,6 +34,9 @@ class EnergyMeter : public SimTK::Force::Custom::Implementation {
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
   void realizeTopology(SimTK::State& s) const override;
   void realizeAcceleration(const SimTK::State& s) const override;
+  // Writes the four work rates into zdot (indexed like the force subsystem's z); state realized
+  // to Velocity.
+  void calcRates(const SimTK::State& s, SimTK::Vector& zdot) const;
 
  private:
   double z(const SimTK::State& s, int i) const { return forces_.getZ(s)[z_start_ + i]; }

@@ -55,8 +55,13 @@ SimTK::Vector GuideFriction::currentNormals(const SimTK::State& s) const {
 }
 
 void GuideFriction::realizeAcceleration(const SimTK::State& s) const {
+  calcRates(s, currentNormals(s), forces_.updZDot(s));
+}
+
+void GuideFriction::calcRates(const SimTK::State& s, const SimTK::Vector& normals_now,
+                              SimTK::Vector& zdot) const {
   const int m = 2 * int(carts_.size());
-  forces_.updZDot(s)(z_start_, m) = (currentNormals(s) - frictionNormals(s)) / loads_.guide_friction_lag;
+  zdot(z_start_, m) = (normals_now - frictionNormals(s)) / loads_.guide_friction_lag;
 }
 
 void GuideFriction::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,

@@ -58,6 +58,9 @@ class GuideFriction : public SimTK::Force::Custom::Implementation {
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
   void realizeTopology(SimTK::State& s) const override;
   void realizeAcceleration(const SimTK::State& s) const override;
+  // dN̂/dt = (N - N̂)/τ_N for the guide normal forces `normals_now` (N), written into zdot
+  // (indexed like the force subsystem's z).
+  void calcRates(const SimTK::State& s, const SimTK::Vector& normals_now, SimTK::Vector& zdot) const;
 
  private:
   // Friction force along world x on cart j for the normal forces n.

@@ -236,6 +236,14 @@ SimTK::State MultibodyModel::initialState() const {
   return assembledState(scene_.initial.crank_angle, scene_.initial.crank_speed, scene_.initial.twist);
 }
 
+void MultibodyModel::auxiliaryRates(const SimTK::State& s, const SimTK::Vector& guide_normals_now,
+                                    SimTK::Vector& zdot) const {
+  zdot.resize(forces_.getZ(s).size());
+  zdot = 0.0;
+  energy_meter_->calcRates(s, zdot);
+  if (friction_force_) friction_force_->calcRates(s, guide_normals_now, zdot);
+}
+
 double MultibodyModel::motorSpeed(const SimTK::State& s) const {
   return motor_.getBodyAngularVelocity(s)[2];
 }

@@ -71,6 +71,21 @@ class MultibodyModel {
   const SimTK::SimbodyMatterSubsystem& matter() const { return matter_; }
   const MultibodyInventory& inventory() const { return inventory_; }
   const std::vector<CartRig>& carts() const { return carts_; }
+  const MultibodyOptions& options() const { return options_; }
+  const SimTK::GeneralForceSubsystem& forces() const { return forces_; }
+  const SimTK::MobilizedBody& crank() const { return crank_; }
+  // Motor-side body: mobilized on the crankshaft (its q is the twist) when the coupling is
+  // elastic, the crankshaft itself when it is rigid.
+  const SimTK::MobilizedBody& motorSide() const { return motor_; }
+  bool elastic() const { return motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex(); }
+  bool hasGuideFriction() const { return friction_force_ != nullptr; }
+  // Time derivatives of the force subsystem's auxiliary states z (energy audit, guide-friction
+  // normal-force lags; indexed like forces().getZ(s)) for the guide normal forces
+  // `guide_normals_now` (N_front, N_rear per cart; ignored without friction). State realized to
+  // Velocity. The constrained formulation computes the same rates in realizeAcceleration from
+  // Simbody's joint reactions.
+  void auxiliaryRates(const SimTK::State& s, const SimTK::Vector& guide_normals_now,
+                      SimTK::Vector& zdot) const;
 
   // A state assembled exactly at crank angle φ2, crank speed φ̇2 and coupling twist φ1 - φ2
   // (closed-form slider-crank positions and velocities, then a projection that only removes

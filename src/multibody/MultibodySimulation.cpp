@@ -8,6 +8,7 @@
 #include "analysis/OutputGrid.h"
 #include "analysis/StallDetector.h"
 #include "multibody/IntegratorFactory.h"
+#include "multibody/MinimalSimulation.h"
 
 namespace rollerdyn {
 namespace {
@@ -49,6 +50,7 @@ void sampleWithinStep(const SimTK::System& system, double t0, const SimTK::Vecto
 
 RunResult simulateMultibody(const MultibodyModel& model, const RunControl& control) {
   const Scene& sc = model.scene();
+  if (sc.simulation.formulation == Formulation::Minimal) return simulateMinimal(model, control);
   const SimTK::MultibodySystem& system = model.system();
   RunResult run;
   run.model = "multibody";

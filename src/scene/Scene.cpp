@@ -59,5 +59,6 @@ const char* toString(FlywheelLocation l) {
 }
 const char* toString(ReducedIntegrator i) { return i == ReducedIntegrator::Baranov ? "baranov" : "cvode"; }
 const char* toString(DriveType d) { return d == DriveType::Cam ? "cam" : "crank"; }
+const char* toString(Formulation f) { return f == Formulation::Minimal ? "minimal" : "constrained"; }
 
 }  // namespace rollerdyn

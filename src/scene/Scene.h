@@ -23,6 +23,7 @@ enum class KinematicsForm { Exact, Truncated };                 // reduced.kinem
 enum class FlywheelLocation { Crankshaft, MotorShaft };         // flywheel.location
 enum class ReducedIntegrator { Cvode, Baranov };                // reduced.integrator
 enum class DriveType { Crank, Cam };                            // drive.type
+enum class Formulation { Constrained, Minimal };                // simulation.formulation
 
 struct SimulationSettings {
   double t_end;                 // simulated time span [s]                       simulation.t_end
@@ -32,6 +33,11 @@ struct SimulationSettings {
   double constraint_tolerance;  // constraint projection tolerance [-]           simulation.constraint_tolerance
   double steady_window_revolutions;  // crank revolutions at the end of the run used for the
                                      // steady-state metrics [-]      simulation.steady_window_revolutions
+  Formulation formulation = Formulation::Constrained;  // equations the multibody model integrates:
+                                // all coordinates under Simbody's constraints (constrained) or
+                                // the independent ones only (minimal) [-]      simulation.formulation
+                                // (scene files default to minimal, SceneSchema.cpp; a Scene
+                                // built in code keeps the constrained formulation unless set)
 };
 
 struct InitialState {
@@ -191,6 +197,7 @@ const char* toString(RollerForceDirection d);
 const char* toString(KinematicsForm k);
 const char* toString(FlywheelLocation l);
 const char* toString(ReducedIntegrator i);
+const char* toString(Formulation f);
 const char* toString(DriveType d);
 
 }  // namespace rollerdyn

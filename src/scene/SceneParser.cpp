@@ -142,6 +142,18 @@ SimulationSettings readSimulation(const Reader& in) {
   s.t_end = in.number("simulation.t_end");
   s.accuracy = in.number("simulation.accuracy");
   s.integrator = in.choice("simulation.integrator");
+  s.formulation = in.choice("simulation.formulation") == "minimal" ? Formulation::Minimal
+                                                                   : Formulation::Constrained;
+  // A Simbody integrator only applies to the constrained formulation: never ignore it silently.
+  if (s.formulation == Formulation::Minimal && in.has("simulation.integrator")) {
+    const std::string why = "no simulation.integrator: the minimal formulation (simulation.formulation) "
+                            "always integrates with CVODE Adams; set simulation.formulation: constrained "
+                            "to use a Simbody integrator";
+    if (blameSecond(in.doc(), "simulation.integrator", "simulation.formulation"))
+      in.doc().fail("simulation.formulation", "constrained (simulation.integrator = " + s.integrator + " is set)",
+                    "minimal");
+    in.doc().fail("simulation.integrator", why, s.integrator);
+  }
   s.output_step = in.number("simulation.output_step");
   if (s.output_step > s.t_end) {
     const std::string t = formatNumber(s.t_end), dt = formatNumber(s.output_step);

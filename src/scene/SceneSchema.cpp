@@ -46,7 +46,11 @@ std::vector<KeySpec> buildSchema() {
       choice("simulation.integrator", P::Optional,
              {"RungeKuttaMerson", "RungeKutta3", "RungeKuttaFeldberg", "RungeKutta2",
               "ExplicitEuler", "Verlet", "SemiExplicitEuler2", "CPodes"},
-             "RungeKuttaMerson", "Simbody integrator of the multibody model"),
+             "RungeKuttaMerson",
+             "Simbody integrator of the multibody model's constrained formulation"),
+      choice("simulation.formulation", P::Optional, {"constrained", "minimal"}, "minimal",
+             "equations of the multibody model: all coordinates under Simbody's constraints "
+             "(constrained) or only the independent ones, integrated by CVODE Adams (minimal)"),
       number("simulation.output_step", "s", P::Optional, positive(), 0.005,
              "spacing of output rows (<= t_end)"),
       number("simulation.constraint_tolerance", "-", P::Conditional,

@@ -64,8 +64,23 @@ TEST(BenchRun, ApplySettingSetsAccuracyAndConstraintTolerance) {
   EXPECT_THROW(applySetting(shortScene(), {"reduced", "rk4", 1e-6, 0}), std::invalid_argument);
 }
 
+TEST(BenchRun, ApplySettingSelectsTheMultibodyFormulation) {
+  Scene minimal_default = shortScene();
+  minimal_default.simulation.formulation = Formulation::Minimal;
+  // "multibody" is the constrained formulation whatever the scene says.
+  EXPECT_EQ(applySetting(minimal_default, {"multibody", "RungeKutta3", 1e-4, 0}).simulation.formulation,
+            Formulation::Constrained);
+  const Scene m = applySetting(shortScene(), {kMultibodyMinimal, kMinimalIntegrator, 1e-5, 0});
+  EXPECT_EQ(m.simulation.formulation, Formulation::Minimal);
+  EXPECT_EQ(m.simulation.accuracy, 1e-5);
+  EXPECT_EQ(m.simulation.constraint_tolerance, 1e-5);
+  // The minimal formulation has one integrator; any other name is an error, not ignored.
+  EXPECT_THROW(applySetting(shortScene(), {kMultibodyMinimal, "RungeKuttaMerson", 1e-6, 0}), std::invalid_argument);
+}
+
 TEST(BenchRun, BothModelsMeasured) {
   for (const SolverSetting& set : {SolverSetting{"multibody", "RungeKuttaMerson", 1e-6, 0},
+                                   SolverSetting{kMultibodyMinimal, kMinimalIntegrator, 1e-6, 0},
                                    SolverSetting{"reduced", "cvode", 1e-6, 0}}) {
     const Measurement m = measure(shortScene(), set, Budget{60.0, nullptr}, 2);
     EXPECT_EQ(m.outcome, Outcome::Ok) << set.label() << ": " << m.status;

@@ -35,6 +35,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -117,8 +118,18 @@ inline double revolutions(const RunResult& r) {
 enum class Model { Multibody, Reduced };
 inline const char* name(Model m) { return m == Model::Multibody ? "multibody" : "reduced"; }
 
+// The multibody model runs in the formulation named by ROLLERDYN_MULTIBODY_FORMULATION
+// (constrained | minimal; tests/CMakeLists.txt runs this suite once more with minimal), else in
+// the scene's own.
+inline Scene inFormulation(Scene s) {
+  const char* f = std::getenv("ROLLERDYN_MULTIBODY_FORMULATION");
+  if (f && std::string(f) == "minimal") s.simulation.formulation = Formulation::Minimal;
+  if (f && std::string(f) == "constrained") s.simulation.formulation = Formulation::Constrained;
+  return s;
+}
+
 inline RunResult run(Model m, const Scene& s) {
-  return m == Model::Multibody ? runMultibodyModel(s) : runReducedModel(s);
+  return m == Model::Multibody ? runMultibodyModel(inFormulation(s)) : runReducedModel(s);
 }
 
 // What a case expects of how the run ends, and the error constants it claims per model.

@@ -74,6 +74,7 @@ simulation:
   t_end: 3.0
   accuracy: 1.0e-5
   integrator: CPodes
+  formulation: constrained
   output_step: 0.01
   constraint_tolerance: 1.0e-7
   steady_window_revolutions: 3

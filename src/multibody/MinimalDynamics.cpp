@@ -1,0 +1,77 @@
+#include "multibody/MinimalDynamics.h"
+
+#include <Eigen/Dense>
+
+#include "multibody/GuideReactions.h"
+
+namespace rollerdyn {
+
+MinimalDynamics::MinimalDynamics(const MultibodyModel& model, const SimTK::State& s) : model_(model) {
+  udot_.resize(s.getNU());
+  residual_.resize(s.getNU());
+}
+
+void MinimalDynamics::evaluate(const SimTK::State& s, const MinimalCoordinates& coords) {
+  const SimTK::MultibodySystem& system = model_.system();
+  const SimTK::SimbodyMatterSubsystem& matter = model_.matter();
+  system.realize(s, SimTK::Stage::Dynamics);
+  const SimTK::Vector& f_mobility = system.getMobilityForces(s, SimTK::Stage::Dynamics);
+  const SimTK::Vector_<SimTK::SpatialVec>& f_body = system.getRigidBodyForces(s, SimTK::Stage::Dynamics);
+  // r0 = M·(Ṅ·ν̇) + c - f
+  matter.calcResidualForceIgnoringConstraints(s, f_mobility, f_body, coords.bias(), residual_);
+  const int k = coords.freeSpeeds();
+  Eigen::Matrix2d A = Eigen::Matrix2d::Identity();
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();
+  for (int i = 0; i < k; ++i) matter.multiplyByM(s, coords.column(i), mn_[i]);
+  for (int i = 0; i < k; ++i) {
+    b(i) = -(~coords.column(i) * residual_);
+    for (int j = 0; j < k; ++j) A(i, j) = ~coords.column(i) * mn_[j];
+  }
+  nu_dot_.setZero();
+  if (k == 1) nu_dot_(0) = b(0) / A(0, 0);
+  if (k == 2) nu_dot_ = A.partialPivLu().solve(b);
+  udot_ = coords.bias();
+  for (int i = 0; i < k; ++i) {
+    udot_ += nu_dot_(i) * coords.column(i);
+    residual_ += nu_dot_(i) * mn_[i];  // now the generalized constraint forces M·u̇ + c - f
+  }
+}
+
+SimTK::Vector MinimalDynamics::guideNormals(const SimTK::State& s) const {
+  const std::vector<CartRig>& carts = model_.carts();
+  const SimTK::Vector_<SimTK::SpatialVec>& f_body =
+      model_.system().getRigidBodyForces(s, SimTK::Stage::Dynamics);
+  SimTK::Vector n(2 * int(carts.size()));
+  for (size_t j = 0; j < carts.size(); ++j) {
+    const CartRig& c = carts[j];
+    // Loop force on the cart at its hinge B (ground axes): its x component is the cart's
+    // generalized constraint force; its y component depends on the loop.
+    const double Fx = residual_[c.cart.getFirstUIndex(s)];
+    double Fy = 0.0;  // cam drive: the pusher force is horizontal
+    if (c.cam.isEmptyHandle()) {
+      const SimTK::Vec3 p_A = model_.crank().findStationLocationInGround(s, c.p_CrankPin);
+      const SimTK::Vec3 r_AB = c.cart.getBodyOriginLocation(s) - p_A;
+      if (c.rod.isEmptyHandle()) {
+        Fy = Fx * r_AB[1] / r_AB[0];  // a massless rod pushes along itself
+      } else {
+        // The rod's pin mobility carries the z moment about A of the loop force on the rod,
+        // -F: r_rod = -(r_AB × F)_z.
+        const double r_rod = residual_[c.rod.getFirstUIndex(s)];
+        Fy = (r_AB[1] * Fx - r_rod) / r_AB[0];
+      }
+    }
+    // The cart only translates: Σ forces = m·a, Σ moments about B = p_BC × m·a; the loop force
+    // acts at B. The slider joint supplies the rest (GuideReactions.h).
+    const double m = c.cart.getBodyMass(s);
+    const SimTK::Vec3 p_com = c.cart.getBodyMassCenterStation(s);
+    const SimTK::Vec3 ma(m * udot_[c.cart.getFirstUIndex(s)], 0, 0);
+    const SimTK::SpatialVec& applied = f_body[c.cart.getMobilizedBodyIndex()];
+    const SimTK::SpatialVec reaction(SimTK::cross(p_com, ma) - applied[0], ma - applied[1] - SimTK::Vec3(Fx, Fy, 0));
+    const GuideNormals g = solveGuideNormals(reaction, c.side, model_.scene().carts.geometry);
+    n[2 * int(j)] = g.front;
+    n[2 * int(j) + 1] = g.rear;
+  }
+  return n;
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,271 @@
+#include "multibody/MinimalSimulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <sstream>
+#include <stdexcept>
+
+#include "analysis/OutputGrid.h"
+#include "analysis/StallDetector.h"
+#include "multibody/MinimalCoordinates.h"
+#include "multibody/MinimalDynamics.h"
+#include "multibody/cvode/AdamsIntegrator.h"
+
+namespace rollerdyn {
+namespace {
+
+bool allFinite(const std::vector<double>& row) {
+  for (double v : row)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+std::string atTime(const char* what, double t) {
+  std::ostringstream os;
+  os.precision(4);
+  os << what << " at t = " << t << " s";
+  return os.str();
+}
+
+// Layout of the integrated vector y = [φ2, twist?, φ̇2?, twist rate?, z...].
+struct Layout {
+  int phi = 0, twist = -1, omega = -1, twist_rate = -1, z = 0, size = 0;
+  Layout(const MinimalCoordinates& c, int nz) {
+    int i = 1;
+    if (c.twistFree()) twist = i++;
+    if (c.crankFree()) omega = i++;
+    if (c.twistFree()) twist_rate = i++;
+    z = i;
+    size = i + nz;
+  }
+};
+
+// One evaluation context: the State the right-hand side writes into, and the map/solver.
+class MinimalSystem {
+ public:
+  MinimalSystem(const MultibodyModel& model, const SimTK::State& s0)
+      : model_(model), s_(s0), coords_(model, s0), dyn_(model, s0),
+        layout_(coords_, model.forces().getZ(s0).size()) {}
+
+  const Layout& layout() const { return layout_; }
+  SimTK::State& state() { return s_; }
+  const MinimalDynamics& dynamics() const { return dyn_; }
+
+  Eigen::VectorXd pack(const SimTK::State& s) const {
+    Eigen::VectorXd y(layout_.size);
+    const IndependentState x = coords_.extract(s);
+    y(layout_.phi) = x.crank_angle;
+    if (layout_.twist >= 0) y(layout_.twist) = x.twist;
+    if (layout_.omega >= 0) y(layout_.omega) = x.crank_speed;
+    if (layout_.twist_rate >= 0) y(layout_.twist_rate) = x.twist_rate;
+    const SimTK::Vector& z = model_.forces().getZ(s);
+    for (int i = 0; i < z.size(); ++i) y(layout_.z + i) = z[i];
+    return y;
+  }
+
+  // Sets the State exactly from y (closed-form loops) and evaluates the projected dynamics.
+  void set(double t, const double* y) {
+    IndependentState x;
+    x.crank_angle = y[layout_.phi];
+    if (layout_.twist >= 0) x.twist = y[layout_.twist];
+    if (layout_.omega >= 0) x.crank_speed = y[layout_.omega];
+    if (layout_.twist_rate >= 0) x.twist_rate = y[layout_.twist_rate];
+    coords_.apply(t, x, s_);
+    SimTK::Vector& z = model_.forces().updZ(s_);
+    for (int i = 0; i < z.size(); ++i) z[i] = y[layout_.z + i];
+    dyn_.evaluate(s_, coords_);
+  }
+
+  bool rhs(double t, const double* y, double* ydot) {
+    set(t, y);
+    const Eigen::Vector2d& nu_dot = dyn_.independentAccelerations();
+    const int i_crank = coords_.crankFree() ? 0 : -1, i_twist = coords_.crankFree() ? 1 : 0;
+    ydot[layout_.phi] = s_.getU()[model_.crank().getFirstUIndex(s_)];
+    if (layout_.twist >= 0) ydot[layout_.twist] = y[layout_.twist_rate];
+    if (layout_.omega >= 0) ydot[layout_.omega] = nu_dot(i_crank);
+    if (layout_.twist_rate >= 0) ydot[layout_.twist_rate] = nu_dot(i_twist);
+    if (model_.hasGuideFriction()) normals_ = dyn_.guideNormals(s_);
+    model_.auxiliaryRates(s_, normals_, zdot_);
+    for (int i = 0; i < zdot_.size(); ++i) ydot[layout_.z + i] = zdot_[i];
+    return true;
+  }
+
+ private:
+  const MultibodyModel& model_;
+  SimTK::State s_;
+  MinimalCoordinates coords_;
+  MinimalDynamics dyn_;
+  Layout layout_;
+  SimTK::Vector normals_, zdot_;
+};
+
+// Largest |a - b| relative to max(largest |a|, floor) (0 when both vanish).
+double relativeDifference(const SimTK::Vector& a, const SimTK::Vector& b, double floor = 0.0) {
+  double diff = 0, scale = floor;
+  for (int i = 0; i < a.size(); ++i) {
+    diff = std::max(diff, std::abs(a[i] - b[i]));
+    scale = std::max(scale, std::abs(a[i]));
+  }
+  return scale > 0 ? diff / scale : diff;
+}
+
+}  // namespace
+
+RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control) {
+  const Scene& sc = model.scene();
+  const SimTK::MultibodySystem& system = model.system();
+  RunResult run;
+  run.model = "multibody";
+  run.integrator = "cvode-adams (minimal coordinates)";
+  run.effects = sc.effects();
+  run.timeseries.columns = model.timeseriesColumns();
+  run.reactions.columns = model.reactionColumns();
+  run.stats.formulation_self_check = 0.0;
+
+  const SimTK::State s0 = model.initialState();
+  const EnergySnapshot e0 = model.energy(s0);
+  MinimalSystem ms(model, s0);
+  const Layout& L = ms.layout();
+  const Eigen::VectorXd y0 = ms.pack(s0);
+
+  // Tolerances: like the reduced model's CVODE (every state against its natural scale), with
+  // the constrained formulation's weights for the twist (coupling torque to accuracy·M_ref)
+  // and the friction normal forces (GuideFriction::setErrorWeights).
+  // CVODE's Adams error control (local error, RMS norm over the states) lets the crank speed
+  // drift ~100-250x further from the exact solution than Simbody's Runge-Kutta-Merson at the same
+  // nominal accuracy (balanced-4cart, 10 s, crank-speed error against a run at 1e-12: constrained
+  // 3.0e-8 / minimal 7.5e-6 at 1e-6, 2.5e-10 / 5.4e-8 at 1e-8). So simulation.accuracy means
+  // about the same error in both formulations, CVODE gets a tolerance 100x tighter.
+  constexpr double kAccuracyToCvodeTolerance = 0.01;
+  const double rtol = kAccuracyToCvodeTolerance * sc.simulation.accuracy;
+  const double w_sync = sc.motor.omega_sync / sc.reducer.ratio;
+  const double w_ref = model.options().prescribe_crank_speed
+                           ? std::max(std::abs(model.options().crank_speed), 1.0)
+                           : (sc.motor.enabled ? w_sync : std::max(std::abs(sc.initial.crank_speed), 1.0));
+  const double M_ref = std::max(
+      {sc.motor.breakdown_torque * sc.reducer.ratio * sc.reducer.efficiency,
+       sc.carts.count * (std::abs(sc.loads.roller_force_front) + std::abs(sc.loads.roller_force_rear)) *
+           std::max(sc.crank.radius, sc.hasCamDrive() ? sc.cam.stroke : 0.0),
+       1.0});
+  // E_ref: kinetic energy of the machine at the reference speed (its work integrals' scale).
+  SimTK::State kin = s0;
+  {
+    IndependentState x;
+    x.crank_angle = y0(L.phi);
+    x.crank_speed = w_ref;
+    MinimalCoordinates(model, kin).apply(0.0, x, kin);
+    system.realize(kin, SimTK::Stage::Velocity);
+  }
+  const double E_ref = std::max(system.calcKineticEnergy(kin), 1e-300);
+  AdamsProblem p;
+  p.t0 = 0.0;
+  p.stop_time = sc.simulation.t_end;
+  p.y0 = y0;
+  p.rtol = rtol;
+  p.atol = Eigen::VectorXd::Constant(L.size, rtol * E_ref);  // energy-audit integrals
+  p.absolute_only.assign(L.size, false);
+  p.atol(L.phi) = rtol * 1.0;  // [rad]
+  p.absolute_only[L.phi] = true;
+  if (L.omega >= 0) p.atol(L.omega) = rtol * w_ref;
+  if (L.twist >= 0) {
+    const double psi_ref = M_ref / sc.coupling.stiffness;
+    p.atol(L.twist) = rtol * psi_ref;
+    p.atol(L.twist_rate) =
+        rtol * psi_ref * std::sqrt(sc.coupling.stiffness / std::max(sc.motorSideInertia(), 1e-300));
+  }
+  if (model.hasGuideFriction()) {
+    // One unit of N̂: the error whose friction changes a cart's speed by 1 m/s in 1 s.
+    const double N_unit = sc.cartMassWithRodShare() * 1.0 / sc.loads.guide_friction;
+    const int n_normals = 2 * sc.carts.count;
+    // The friction element is built before the energy meter (MultibodyModel::buildForces), so
+    // its normal forces are the first z entries.
+    if (L.size - L.z != n_normals + 4)
+      throw std::logic_error("minimal formulation: unexpected auxiliary-state layout");
+    for (int i = 0; i < n_normals; ++i) p.atol(L.z + i) = rtol * N_unit;
+  }
+  // Cam drive: same step cap as the reduced model (ReducedIntegrators.cpp): the right-hand side
+  // is constant over most of a stroke and an unbounded step leaps across a reversal.
+  if (sc.hasCamDrive()) p.max_step = (M_PI / 6.0) / w_ref / 8.0;
+  p.rhs = [&ms](double t, const double* y, double* ydot) { return ms.rhs(t, y, ydot); };
+  AdamsIntegrator integ(p);
+
+  StallDetector stall(sc.hasMotor(), w_sync);
+  const std::vector<double> times = outputTimes(sc.simulation);
+  std::vector<double> ts_row, re_row;
+  EnergySnapshot e1 = e0;
+  SimTK::Vector udot_projected, normals_projected;
+  const int n_carts = sc.carts.count;
+  const bool friction = model.hasGuideFriction();
+  // Returns false when the run must stop (non-finite row, stall, interrupt).
+  auto record = [&](double t, const Eigen::VectorXd& y) {
+    ms.set(t, y.data());
+    SimTK::State& s = ms.state();
+    udot_projected = ms.dynamics().udot();
+    if (friction) normals_projected = ms.dynamics().guideNormals(s);
+    system.realize(s, SimTK::Stage::Acceleration);  // Simbody's full constrained solve
+    model.observe(s, ts_row, re_row);
+    run.timeseries.rows.push_back(ts_row);
+    run.reactions.rows.push_back(re_row);
+    run.stats.constraint_error_max = std::max(run.stats.constraint_error_max, model.constraintError(s));
+    // Scale of the accelerations: their own, or ω2²·(1 rad) when the machine runs steadily and
+    // its accelerations nearly vanish (a cam's constant-speed stretch: u̇ ~ 1e-7 from terms of
+    // order ω2², whose round-off would otherwise read as a relative 1e-7).
+    const double omega = model.crankSpeed(s);
+    double check = relativeDifference(s.getUDot(), udot_projected, omega * omega);
+    if (friction) {
+      SimTK::Vector normals_constrained(2 * n_carts);
+      for (int j = 0; j < n_carts; ++j) {  // N_front_j, N_rear_j: reaction columns 1 + 6j, 2 + 6j
+        normals_constrained[2 * j] = re_row[1 + 6 * j];
+        normals_constrained[2 * j + 1] = re_row[2 + 6 * j];
+      }
+      check = std::max(check, relativeDifference(normals_constrained, normals_projected));
+    }
+    if (std::isfinite(check))
+      run.stats.formulation_self_check = std::max(run.stats.formulation_self_check, check);
+    e1 = model.energy(s);
+    if (!allFinite(ts_row) || !allFinite(re_row)) {
+      run.stats.complete = false;
+      run.stats.status = atTime("numerical failure (non-finite value)", t);
+      return false;
+    }
+    if (stall.update(t, model.crankSpeed(s), model.motorSpeed(s))) {
+      run.stats.complete = false;
+      run.stats.status = stall.status();
+      return false;
+    }
+    return true;
+  };
+
+  const std::clock_t cpu0 = std::clock();
+  bool go = record(times.front(), y0);
+  for (std::size_t k = 1; go && k < times.size(); ++k) {
+    if (!integ.advanceTo(times[k])) {
+      run.stats.complete = false;
+      run.stats.status = atTime("integration failed", integ.time()) + ": " + integ.error();
+      break;
+    }
+    go = record(times[k], integ.y());
+    if (go && control.progress) control.progress(times[k], sc.simulation.t_end);
+    if (go && control.interrupt && control.interrupt->load()) {
+      run.stats.complete = false;
+      run.stats.status = atTime("interrupted", times[k]);
+      go = false;
+    }
+  }
+  run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  run.stats.steps = integ.steps();
+  run.stats.realizations = integ.rhsEvaluations();
+
+  run.energy.motor_work = e1.motor_work - e0.motor_work;
+  run.energy.damping_dissipation = e1.damping_dissipation - e0.damping_dissipation;
+  run.energy.friction_dissipation = e1.friction_dissipation - e0.friction_dissipation;
+  run.energy.load_work = e1.load_work - e0.load_work;
+  run.energy.kinetic_initial = e0.kinetic;
+  run.energy.kinetic_final = e1.kinetic;
+  run.energy.potential_initial = e0.potential;
+  run.energy.potential_final = e1.potential;
+  return run;
+}
+
+}  // namespace rollerdyn

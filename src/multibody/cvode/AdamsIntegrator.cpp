@@ -1,0 +1,135 @@
+#include "multibody/cvode/AdamsIntegrator.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include "reduced/EigenSundials.h"
+
+namespace rollerdyn {
+
+struct AdamsIntegrator::Impl {
+  AdamsProblem problem;
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr;
+  void* cv = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  SUNNonlinearSolver NLS = nullptr;
+  Eigen::VectorXd y_out;
+  double t = 0;
+  long rhs_evals = 0;
+  std::string error;
+  std::string rhs_exception;  // what the right-hand side threw, if it did
+
+  ~Impl() {
+    if (cv) CVodeFree(&cv);
+    if (NLS) SUNNonlinSolFree(NLS);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+
+  static int rhs(realtype t, N_Vector y, N_Vector ydot, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    ++self->rhs_evals;
+    const long n = NV_LENGTH_S(y);
+    double* d = NV_DATA_S(ydot);
+    // No C++ exception may cross CVODE's C frames: report it as an unrecoverable failure.
+    try {
+      if (!self->problem.rhs(t, NV_DATA_S(y), d)) return 1;
+    } catch (const std::exception& ex) {
+      self->rhs_exception = ex.what();
+      return -1;
+    }
+    for (long i = 0; i < n; ++i)
+      if (!std::isfinite(d[i])) return 1;  // recoverable: CVODE retries with a smaller step
+    return 0;
+  }
+
+  // CVODE's weights 1/(rtol·|y_i| + atol_i), except atol_i alone for absolute_only states.
+  static int weights(N_Vector y, N_Vector ewt, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    const AdamsProblem& p = self->problem;
+    const long n = NV_LENGTH_S(y);
+    const double* yv = NV_DATA_S(y);
+    double* w = NV_DATA_S(ewt);
+    for (long i = 0; i < n; ++i) {
+      const double tol = p.absolute_only[i] ? p.atol(i) : p.rtol * std::abs(yv[i]) + p.atol(i);
+      if (!(tol > 0.0)) return -1;
+      w[i] = 1.0 / tol;
+    }
+    return 0;
+  }
+
+  static void errHandler(int, const char*, const char* function, char* msg, void* user) {
+    static_cast<Impl*>(user)->error = std::string(function ? function : "") + ": " + (msg ? msg : "");
+  }
+};
+
+AdamsIntegrator::AdamsIntegrator(const AdamsProblem& problem) : impl_(new Impl) {
+  Impl& m = *impl_;
+  m.problem = problem;
+  const int n = int(problem.y0.size());
+  if (problem.atol.size() != n || int(problem.absolute_only.size()) != n)
+    throw std::invalid_argument("AdamsIntegrator: atol and absolute_only need one entry per state");
+  if (SUNContext_Create(nullptr, &m.ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
+  m.y = N_VNew_Serial(n, m.ctx);
+  useEigenVectorOps(m.y);  // before CVodeInit clones it (EigenSundials.h)
+  Eigen::Map<Eigen::VectorXd>(NV_DATA_S(m.y), n) = problem.y0;
+  m.y_out = problem.y0;
+  m.t = problem.t0;
+  m.cv = CVodeCreate(CV_ADAMS, m.ctx);
+  int flag = CVodeInit(m.cv, Impl::rhs, problem.t0, m.y);
+  if (flag == CV_SUCCESS) flag = CVodeSetUserData(m.cv, &m);
+  if (flag == CV_SUCCESS) flag = CVodeSetErrHandlerFn(m.cv, Impl::errHandler, &m);
+  if (flag == CV_SUCCESS) flag = CVodeWFtolerances(m.cv, Impl::weights);
+  if (problem.newton) {
+    m.A = SUNDenseMatrix(n, n, m.ctx);
+    m.LS = makeEigenDenseSolver(n, m.ctx);
+    if (flag == CV_SUCCESS) flag = CVodeSetLinearSolver(m.cv, m.LS, m.A);
+  } else {
+    m.NLS = SUNNonlinSol_FixedPoint(m.y, 0, m.ctx);
+    if (flag == CV_SUCCESS) flag = CVodeSetNonlinearSolver(m.cv, m.NLS);
+  }
+  if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(m.cv, 1000000);
+  if (flag == CV_SUCCESS) flag = CVodeSetStopTime(m.cv, problem.stop_time);
+  if (flag == CV_SUCCESS && problem.max_step > 0) flag = CVodeSetMaxStep(m.cv, problem.max_step);
+  if (flag != CV_SUCCESS) throw std::runtime_error("CVODE setup failed: " + m.error);
+}
+
+AdamsIntegrator::~AdamsIntegrator() = default;
+
+bool AdamsIntegrator::advanceTo(double t_out) {
+  Impl& m = *impl_;
+  realtype t_ret = m.t;
+  const int flag = CVode(m.cv, t_out, m.y, &t_ret, CV_NORMAL);
+  if (flag < 0) {
+    char* name = CVodeGetReturnFlagName(flag);
+    m.error = std::string(name ? name : "?") + " " + m.error +
+              (m.rhs_exception.empty() ? "" : " (right-hand side: " + m.rhs_exception + ")");
+    std::free(name);
+    return false;
+  }
+  m.t = t_ret;
+  m.y_out = Eigen::Map<const Eigen::VectorXd>(NV_DATA_S(m.y), NV_LENGTH_S(m.y));
+  return true;
+}
+
+double AdamsIntegrator::time() const { return impl_->t; }
+const Eigen::VectorXd& AdamsIntegrator::y() const { return impl_->y_out; }
+long AdamsIntegrator::steps() const {
+  long n = 0;
+  CVodeGetNumSteps(impl_->cv, &n);
+  return n;
+}
+long AdamsIntegrator::rhsEvaluations() const { return impl_->rhs_evals; }
+const std::string& AdamsIntegrator::error() const { return impl_->error; }
+
+}  // namespace rollerdyn
