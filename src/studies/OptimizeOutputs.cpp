@@ -1,9 +1,9 @@
 // Output files of `rollerdyn optimize` (Optimizer.h): optimize.json, history.csv and figures.
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "io/AtomicFile.h"
+#include "io/FieldFormat.h"
 #include "report/Gnuplot.h"
 #include "scene/SceneSchema.h"
 #include "studies/Optimizer.h"
@@ -11,22 +11,6 @@
 namespace rollerdyn {
 
 namespace {
-
-nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-std::string csvNumber(double v) {
-  if (!std::isfinite(v)) return "nan";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
-
-std::string csvText(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c == '\n' || c == '\r' ? ' ' : c);
-  return q + "\"";
-}
 
 // Gnuplot's enhanced text reads "_" as a subscript (Gnuplot.h).
 std::string gp(const std::string& text) {
