@@ -56,6 +56,12 @@ void render(const std::string& body, int w, int h, const std::string& base, bool
 
 }  // namespace
 
+std::string escapeUnderscores(const std::string& text) {
+  std::string out;
+  for (char c : text) out += (c == '_') ? std::string("\\_") : std::string(1, c);
+  return out;
+}
+
 bool gnuplotAvailable() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
 
 void renderPlot(const PlotSpec& spec, const std::string& base, bool png, bool svg) {

@@ -33,6 +33,11 @@ struct PlotSpec {
   std::string preamble;
 };
 
+// `text` for a title or label in enhanced mode with every "_" escaped, so a key path such as
+// crank.offset_deg prints as written instead of starting a subscript. Only "_" is escaped: "^"
+// and braces keep their enhanced meaning.
+std::string escapeUnderscores(const std::string& text);
+
 // True when a gnuplot executable is on PATH.
 bool gnuplotAvailable();
 

@@ -1,45 +1,16 @@
 // Output files of `rollerdyn optimize` (Optimizer.h): optimize.json, history.csv and figures.
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "io/AtomicFile.h"
+#include "io/FieldFormat.h"
 #include "report/Gnuplot.h"
-#include "scene/SceneSchema.h"
 #include "studies/Optimizer.h"
+#include "studies/SweepPlots.h"
 
 namespace rollerdyn {
 
 namespace {
-
-nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-std::string csvNumber(double v) {
-  if (!std::isfinite(v)) return "nan";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
-
-std::string csvText(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c == '\n' || c == '\r' ? ' ' : c);
-  return q + "\"";
-}
-
-// Gnuplot's enhanced text reads "_" as a subscript (Gnuplot.h).
-std::string gp(const std::string& text) {
-  std::string out;
-  for (char c : text) out += (c == '_') ? std::string("\\_") : std::string(1, c);
-  return out;
-}
-
-std::string withUnit(const std::string& key) {
-  const KeySpec* spec = findSceneKey(key);
-  if (spec && !spec->unit.empty() && spec->unit != "-") return key + " [" + spec->unit + "]";
-  return key;
-}
 
 nlohmann::json evaluationJson(const OptimizeOptions& o, const OptimizeEvaluation& e) {
   nlohmann::json at = nlohmann::json::object(), metrics = nlohmann::json::object(), cons = nlohmann::json::array();
@@ -94,9 +65,9 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
   } else {
     try {
       PlotSpec spec;
-      spec.title = gp("convergence: " + o.minimize + " (" + r.method + ", " + o.model + " model)");
+      spec.title = escapeUnderscores("convergence: " + o.minimize + " (" + r.method + ", " + o.model + " model)");
       spec.xlabel = "evaluation";
-      spec.ylabel = gp(withUnit(o.minimize));
+      spec.ylabel = escapeUnderscores(sweepParamLabel(o.minimize));
       spec.preamble = "set key below";
       PlotSeries all, bad, line;
       all.title = "usable design, constraints hold";
@@ -123,9 +94,9 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
         // The evaluated designs and the optimum: objective against the parameter (one), or the
         // designs in the plane of the two parameters.
         PlotSpec d;
-        d.title = gp("evaluated designs and the optimum (" + r.method + ")");
-        d.xlabel = gp(withUnit(o.params[0].key));
-        d.ylabel = gp(withUnit(o.params.size() == 1 ? o.minimize : o.params[1].key));
+        d.title = escapeUnderscores("evaluated designs and the optimum (" + r.method + ")");
+        d.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
+        d.ylabel = escapeUnderscores(sweepParamLabel(o.params.size() == 1 ? o.minimize : o.params[1].key));
         d.preamble = "set key below";
         PlotSeries ok, viol, opt;
         ok.title = "constraints hold";

@@ -1,9 +1,9 @@
 // sweep.csv and sweep.json of a sweep (the figures: SweepPlots.cpp). Declared in Sweep.h.
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "io/AtomicFile.h"
+#include "io/FieldFormat.h"
 #include "scene/SceneSchema.h"
 #include "studies/Sweep.h"
 #include "studies/SweepPlots.h"
@@ -11,22 +11,6 @@
 namespace rollerdyn {
 
 namespace {
-
-std::string csvNumber(double v) {
-  if (!std::isfinite(v)) return "nan";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
-
-std::string csvText(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c == '\n' || c == '\r' ? ' ' : c);
-  return q + "\"";
-}
-
-nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 // A parameter column: its key path and the schema unit (ASCII), e.g. coupling.damping[N*m*s/rad].
 std::string paramHeader(const std::string& key) {

@@ -16,19 +16,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Gnuplot draws titles as enhanced text, where "_" starts a subscript: escape it (Gnuplot.h).
-std::string gp(const std::string& text) {
-  std::string out;
-  for (char c : text) out += (c == '_') ? std::string("\\_") : std::string(1, c);
-  return out;
-}
-
-std::string paramLabel(const std::string& key) {
-  const KeySpec* spec = findSceneKey(key);
-  if (spec && !spec->unit.empty() && spec->unit != "-") return key + " [" + spec->unit + "]";
-  return key;
-}
-
 std::string num(double v) {
   std::ostringstream os;
   os.precision(12);
@@ -41,6 +28,12 @@ const char* kLegend =
     "failed (no value)";
 
 }  // namespace
+
+std::string sweepParamLabel(const std::string& key) {
+  const KeySpec* spec = findSceneKey(key);
+  if (spec && !spec->unit.empty() && spec->unit != "-") return key + " [" + spec->unit + "]";
+  return key;
+}
 
 std::string sweepMetricUnit(const std::string& m) {
   if (m == "delta" || m == "H" || m == "k_p" || m == "energy_residual_rel" ||
@@ -89,7 +82,7 @@ std::string sweepMetricLabel(const std::string& m) {
       {"crank_pin_equivalent_load", "crank-pin equivalent dynamic load P"},
       {"main_bearing_equivalent_load", "main-bearing equivalent dynamic load P"},
   };
-  std::string label = gp(m);
+  std::string label = escapeUnderscores(m);
   for (const auto& [k, v] : names)
     if (k == m) label = v;
   std::string unit = sweepMetricUnit(m);
@@ -156,8 +149,8 @@ std::vector<std::string> drawSweepPlots(const SweepOptions& o, const SweepResult
     if (!worth) continue;
     if (o.params.size() == 1) {
       PlotSpec spec;
-      spec.title = gp(m + " vs " + o.params[0].key + " (" + o.model + " model)");
-      spec.xlabel = gp(paramLabel(o.params[0].key));
+      spec.title = escapeUnderscores(m + " vs " + o.params[0].key + " (" + o.model + " model)");
+      spec.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
       spec.ylabel = sweepMetricLabel(m);
       PlotSeries steady, unsteady;
       steady.title = "turning, steady state";
@@ -255,9 +248,9 @@ std::vector<std::string> drawSweepPlots(const SweepOptions& o, const SweepResult
       }
     }
     PlotSpec spec;
-    spec.title = gp(m + " (" + o.model + " model)");
-    spec.xlabel = gp(paramLabel(px.key));
-    spec.ylabel = gp(paramLabel(py.key));
+    spec.title = escapeUnderscores(m + " (" + o.model + " model)");
+    spec.xlabel = escapeUnderscores(sweepParamLabel(px.key));
+    spec.ylabel = escapeUnderscores(sweepParamLabel(py.key));
     spec.width = 900;
     spec.height = 680;
     spec.preamble = pre.str();

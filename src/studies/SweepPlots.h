@@ -26,6 +26,9 @@ std::vector<std::pair<double, double>> heatMapCellEdges(const std::vector<double
 std::vector<std::string> drawSweepPlots(const SweepOptions& options, const SweepResult& result,
                                         const std::string& out_dir, std::string* note);
 
+// Axis label of a scene key: "key [unit]" with the schema unit, the bare key when the key has no
+// unit or is dimensionless ("-").
+std::string sweepParamLabel(const std::string& key);
 // Label of a sweep metric with its unit and, for the papers' coefficients, the equation.
 std::string sweepMetricLabel(const std::string& metric);
 // Unit of a sweep metric in the ASCII CSV convention (io/Table.h), "-" when dimensionless.

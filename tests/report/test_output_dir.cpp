@@ -6,30 +6,19 @@
 
 #include <filesystem>
 #include <fstream>
-#include <functional>
 
 #include "report/OutputDir.h"
+#include "support/FreshTempDir.h"
+#include "support/ThrownMessage.h"
 
 namespace rollerdyn {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path freshDir(const std::string& tag) {
-  const fs::path p = fs::temp_directory_path() / ("rollerdyn-outdir-" + tag + "-" + std::to_string(::getpid()));
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
+using test::messageOf;
 
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
+fs::path freshDir(const std::string& tag) { return test::freshTempDir("outdir-" + tag); }
 
 void touch(const fs::path& p) { std::ofstream(p) << "x"; }
 

@@ -5,33 +5,20 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <functional>
-
-#include <unistd.h>
 
 #include "io/AtomicFile.h"
 #include "report/OutputFolder.h"
+#include "support/FreshTempDir.h"
+#include "support/ThrownMessage.h"
 
 namespace rollerdyn {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path freshDir(const std::string& tag) {
-  const fs::path p = fs::temp_directory_path() / ("rollerdyn-report-" + tag + "-" + std::to_string(::getpid()));
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
+using test::messageOf;
 
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
+fs::path freshDir(const std::string& tag) { return test::freshTempDir("report-" + tag); }
 
 TEST(ReportCsv, RoundTripsToCsv) {
   Table t;

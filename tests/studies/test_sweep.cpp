@@ -170,6 +170,15 @@ TEST(SweepPlots, OnlyTurningPointsAtSteadyStateSetTheScale) {
   EXPECT_EQ(classifySweepPoint(p), SweepPointClass::NoValue);
 }
 
+// Axis labels of scene keys carry the unit of model/README.md; dimensionless keys and names that
+// are not scene keys (a metric) stay bare.
+TEST(SweepPlots, ParameterLabelsCarryTheSchemaUnit) {
+  EXPECT_EQ(sweepParamLabel("crank.offset_deg"), "crank.offset_deg [deg]");
+  EXPECT_EQ(sweepParamLabel("flywheel.inertia"), "flywheel.inertia [kg·m²]");
+  EXPECT_EQ(sweepParamLabel("simulation.accuracy"), "simulation.accuracy");
+  EXPECT_EQ(sweepParamLabel("delta"), "delta");
+}
+
 // Loveikin, Pochka, Romasevych (2018) at Δφ = 0: the four carts' loads rock the crank; at 90° it
 // turns. The rocking point is named in the point, sweep.csv and sweep.json, has no δ, and is never
 // the optimum even where its numbers are smaller.

@@ -1,0 +1,21 @@
+// How one value of a study output is written: a CSV field (number or text) or a JSON number.
+// Shared by the sweep and optimize writers so their sweep.csv/history.csv and JSON files print
+// values the same way. (Tables of doubles go through toCsv, io/AtomicFile.h.)
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace rollerdyn {
+
+// 12 significant digits (%.12g, as toCsv); "nan" for any non-finite value, so a CSV reader
+// sees one token for "no value".
+std::string csvNumber(double v);
+// Text as one CSV field: quoted (RFC 4180, inner quotes doubled) when it holds a comma, quote or
+// line break; line breaks become spaces so each record stays on one line.
+std::string csvText(const std::string& s);
+// A JSON number, or null when v is not finite (JSON has no NaN or infinity).
+nlohmann::json jsonNumber(double v);
+
+}  // namespace rollerdyn
