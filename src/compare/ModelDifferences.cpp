@@ -74,9 +74,13 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
                  true, false});
   else
     d.push_back({"integrator",
-                 "integration: Simbody " + s.simulation.integrator +
-                     " with constraint projection (multibody) vs CVODE Adams-Moulton on the "
-                     "reduced equations (reduced), both at relative accuracy " +
+                 std::string(s.simulation.formulation == Formulation::Minimal
+                                 ? "integration: CVODE Adams-Moulton on the multibody model's independent "
+                                   "coordinates, the others from the closed-form loop solution (multibody, "
+                                   "minimal formulation)"
+                                 : "integration: Simbody " + s.simulation.integrator +
+                                       " with constraint projection (multibody, constrained formulation)") +
+                     " vs CVODE Adams-Moulton on the reduced equations (reduced), both at relative accuracy " +
                      fmt("%.3g", s.simulation.accuracy) +
                      "; differences of this order are integration error, not modelling",
                  false, true});
