@@ -83,7 +83,9 @@ json sizingJson(const DriveSizing& s) {
                    {"method",
                     "energy method: δ ≈ ΔE/(J·ω²) with ΔE fixed by the loads, so J* = J·δ/δ*; "
                     "J = time mean of 2T/ω_crank² of this run (constant-inertia approximation, "
-                    "motor slip ignored): a first estimate, check it with a run with flywheel.inertia set"}};
+                    "motor slip ignored): a first estimate, check it with a run with flywheel.inertia set, or find the "
+                    "smallest flywheel that meets the target from runs with rollerdyn optimize --param flywheel.inertia "
+                    "--minimize flywheel.inertia --constraint 'delta<=TARGET'"}};
   const CouplingSizing& c = s.coupling;
   if (c.available) {
     j["coupling"] = {{"mean", num(c.mean)}, {"peak", num(c.peak)}, {"swing", num(c.swing)},
@@ -174,7 +176,11 @@ std::string sizingText(const json& summary) {
     o << "                                    for δ* = " << fmt(at(f, "target_delta"), "%.4g") << ": flywheel "
       << fmt(at(f, "flywheel_crankshaft"), "%.4g") << " kg·m² on the crankshaft or "
       << fmt(at(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n"
-      << "                                    (energy method, J·δ constant: a first estimate, check with a run)\n";
+      << "                                    (energy method, J·δ constant: a first estimate; it can be far off where\n"
+      << "                                    the carts' inertia or the motor's slip vary over a turn. The smallest\n"
+      << "                                    flywheel that meets δ*, from runs: rollerdyn optimize SCENE --param\n"
+      << "                                    flywheel.inertia --range 0:" << fmt(at(f, "flywheel_crankshaft"), "%.0f", 3.0)
+      << " --minimize flywheel.inertia --constraint 'delta<=" << fmt(at(f, "target_delta"), "%.4g") << "')\n";
   else
     o << "                                    target δ* not given (sizing.target_delta)\n";
   const json& c = at(s, "coupling");
