@@ -1,4 +1,4 @@
-// One output step of each model (issue #4): what the run loops do per output row on top of the
+// One output step of each model: what the run loops do per output row on top of the
 // integration. Multibody: MultibodyModel::observe (time series + joint reactions through
 // calcMobilizerReactionForces) and the constraint error, on a state already realized to
 // Acceleration, as MultibodySimulation's record() sees it. Reduced: ReducedModel::evaluate (the

@@ -1,4 +1,4 @@
-// One right-hand-side evaluation of each model (issue #4): the unit of work every integrator
+// One right-hand-side evaluation of each model: the unit of work every integrator
 // repeats. Multibody: a state realized to Acceleration after its Position (or only Velocity)
 // cache is invalidated, i.e. what an integrator stage costs after changing q and u (or only u).
 // Reduced: ReducedModel::derivatives (Loveikin, Pochka, Romasevych (2018) eq. (58) / Loveikin and Pochka (2007) eq. (1)). Argument: number of

@@ -1,4 +1,4 @@
-// A whole 1 s run of each model on the Loveikin, Pochka, Romasevych (2018) machine (issue #4): model building excluded,
+// A whole 1 s run of each model on the Loveikin, Pochka, Romasevych (2018) machine: model building excluded,
 // integration and output rows included, at the scene's accuracy 1e-6 and output step 5 ms
 // (multibody RungeKuttaMerson, reduced CVODE). Starts at a running speed (10.4 rad/s) so the
 // second is representative of operation, not of the start-up. Argument: number of carts n.
