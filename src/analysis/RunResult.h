@@ -68,4 +68,10 @@ struct RunResult {
   std::vector<std::string> effects;  // effects built, e.g. "kloss_motor", "elastic_coupling"
 };
 
+// Helpers of the run loops that fill a RunResult.
+// True when every value of an output row is finite (a NaN or inf ends a run as a numerical failure).
+bool rowIsFinite(const std::vector<double>& row);
+// A status line naming the time of an event, e.g. "integration failed at t = 3.125 s" (4 digits).
+std::string statusAt(const char* what, double t);
+
 }  // namespace rollerdyn

@@ -1,4 +1,5 @@
 #include "bench/BenchRun.h"
+#include "io/Pipe.h"
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -151,32 +152,6 @@ double timeReached(const RunResult& run) {
 // reached. A crash (SIGSEGV, abort) is contained the same way and becomes a "failed" row. The
 // child sends its result back through a pipe as text (outcome, status, statistics, timeseries).
 
-void writeAll(int fd, const std::string& text) {
-  const char* p = text.data();
-  size_t left = text.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, p, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return;
-    }
-    p += n;
-    left -= size_t(n);
-  }
-}
-
-std::string readAll(int fd) {
-  std::string out;
-  char buf[65536];
-  for (;;) {
-    const ssize_t n = ::read(fd, buf, sizeof buf);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    out.append(buf, size_t(n));
-  }
-  return out;
-}
-
 std::string oneLine(std::string s) {
   for (char& c : s)
     if (c == '\n' || c == '\r') c = ' ';
@@ -270,12 +245,12 @@ OneRun runIsolated(const Scene& scene, const SolverSetting& setting, const Budge
       }
       first.run.stats.cpu_seconds = (cpuNow() - c0) / n;
     }
-    writeAll(fds[1], serialize(first));
+    writeAllToFd(fds[1], serialize(first));
     ::close(fds[1]);
     ::_exit(0);
   }
   ::close(fds[1]);
-  const std::string text = readAll(fds[0]);
+  const std::string text = readAllFromFd(fds[0]);
   ::close(fds[0]);
   int wstatus = 0;
   while (::waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {

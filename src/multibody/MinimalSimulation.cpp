@@ -15,19 +15,6 @@
 namespace rollerdyn {
 namespace {
 
-bool allFinite(const std::vector<double>& row) {
-  for (double v : row)
-    if (!std::isfinite(v)) return false;
-  return true;
-}
-
-std::string atTime(const char* what, double t) {
-  std::ostringstream os;
-  os.precision(4);
-  os << what << " at t = " << t << " s";
-  return os.str();
-}
-
 // Layout of the integrated vector y = [φ2, twist?, φ̇2?, twist rate?, z...].
 struct Layout {
   int phi = 0, twist = -1, omega = -1, twist_rate = -1, z = 0, size = 0;
@@ -224,9 +211,9 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     if (std::isfinite(check))
       run.stats.formulation_self_check = std::max(run.stats.formulation_self_check, check);
     e1 = model.energy(s);
-    if (!allFinite(ts_row) || !allFinite(re_row)) {
+    if (!rowIsFinite(ts_row) || !rowIsFinite(re_row)) {
       run.stats.complete = false;
-      run.stats.status = atTime("numerical failure (non-finite value)", t);
+      run.stats.status = statusAt("numerical failure (non-finite value)", t);
       return false;
     }
     if (stall.update(t, model.crankSpeed(s), model.motorSpeed(s))) {
@@ -242,14 +229,14 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   for (std::size_t k = 1; go && k < times.size(); ++k) {
     if (!integ.advanceTo(times[k])) {
       run.stats.complete = false;
-      run.stats.status = atTime("integration failed", integ.time()) + ": " + integ.error();
+      run.stats.status = statusAt("integration failed", integ.time()) + ": " + integ.error();
       break;
     }
     go = record(times[k], integ.y());
     if (go && control.progress) control.progress(times[k], sc.simulation.t_end);
     if (go && control.interrupt && control.interrupt->load()) {
       run.stats.complete = false;
-      run.stats.status = atTime("interrupted", times[k]);
+      run.stats.status = statusAt("interrupted", times[k]);
       go = false;
     }
   }

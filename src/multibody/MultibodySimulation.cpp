@@ -13,19 +13,6 @@
 namespace rollerdyn {
 namespace {
 
-bool allFinite(const std::vector<double>& row) {
-  for (double v : row)
-    if (!std::isfinite(v)) return false;
-  return true;
-}
-
-std::string atTime(const char* what, double t) {
-  std::ostringstream os;
-  os.precision(4);
-  os << what << " at t = " << t << " s";
-  return os.str();
-}
-
 // The state at time t inside the step from (t0, y0, ẏ0) to `end` by cubic Hermite
 // interpolation of y (Simbody's own interpolant), with prescribed motion applied and projected
 // onto the constraints to `tol`, written into `sample` and realized to Velocity.
@@ -104,7 +91,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
       integ->stepTo(t_end, t_end);
     } catch (const std::exception& ex) {
       run.stats.complete = false;
-      run.stats.status = atTime("integration failed", integ->getTime()) + ": " + ex.what();
+      run.stats.status = statusAt("integration failed", integ->getTime()) + ": " + ex.what();
       break;
     }
     const SimTK::State& advanced = integ->getState();
@@ -118,9 +105,9 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
       const SimTK::State& s = at_step ? advanced : sample;
       record(s);
       last_row = &s;
-      if (!allFinite(ts_row) || !allFinite(re_row)) {
+      if (!rowIsFinite(ts_row) || !rowIsFinite(re_row)) {
         run.stats.complete = false;
-        run.stats.status = atTime("numerical failure (non-finite value)", t_out);
+        run.stats.status = statusAt("numerical failure (non-finite value)", t_out);
         stop = true;
       } else if (stall.update(t_out, model.crankSpeed(s), model.motorSpeed(s))) {
         run.stats.complete = false;
@@ -130,7 +117,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
         if (control.progress) control.progress(t_out, t_end);
         if (control.interrupt && control.interrupt->load()) {
           run.stats.complete = false;
-          run.stats.status = atTime("interrupted", t_out);
+          run.stats.status = statusAt("interrupted", t_out);
           stop = true;
         }
       }

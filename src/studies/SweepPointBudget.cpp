@@ -1,4 +1,5 @@
 #include "studies/SweepPointBudget.h"
+#include "io/Pipe.h"
 
 #include <sys/resource.h>
 #include <sys/time.h>
@@ -17,32 +18,6 @@
 namespace rollerdyn {
 
 namespace {
-
-void writeAll(int fd, const std::string& text) {
-  const char* p = text.data();
-  std::size_t left = text.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, p, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return;
-    }
-    p += n;
-    left -= std::size_t(n);
-  }
-}
-
-std::string readAll(int fd) {
-  std::string out;
-  char buf[65536];
-  for (;;) {
-    const ssize_t n = ::read(fd, buf, sizeof buf);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    out.append(buf, std::size_t(n));
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -63,12 +38,12 @@ SweepPoint runSweepPointWithBudget(const SweepOptions& o, const std::vector<std:
     const struct rlimit lim = {soft, soft + 1};
     ::setrlimit(RLIMIT_CPU, &lim);
     const SweepPoint p = runSweepPoint(o, texts, values);
-    writeAll(fds[1], sweepPointToJson(p).dump());
+    writeAllToFd(fds[1], sweepPointToJson(p).dump());
     ::close(fds[1]);
     ::_exit(0);
   }
   ::close(fds[1]);
-  const std::string text = readAll(fds[0]);
+  const std::string text = readAllFromFd(fds[0]);
   ::close(fds[0]);
   int wstatus = 0;
   struct rusage usage {};
