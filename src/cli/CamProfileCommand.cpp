@@ -1,5 +1,5 @@
 // `rollerdyn cam-profile SCENE [--set k=v]... [--out DIR] [--samples N] [--compare] [--model M]`:
-// the cam of Loveikin and Pochka (cam drive) for a scene: cam_profile.csv (motion law and radius ρ(θ), eq. (29)-(43)),
+// the cam of Loveikin and Pochka (cam drive paper) for a scene: cam_profile.csv (motion law and radius ρ(θ), eq. (29)-(43)),
 // figures, and with --compare the cam-driven cart against a crank-driven cart of equal stroke
 // and cycle time (cam_vs_crank.csv / .json).
 #include <cmath>
@@ -52,7 +52,7 @@ int runCamProfile(const CamArgs& a) {
               scene.name.c_str(), scene.cam.stroke, scene.cam.pusher_distance, M_PI / w, w);
   if (gnuplotAvailable()) {
     PlotSpec law;
-    law.title = "Loveikin and Pochka (cam drive) motion law at constant crank speed (eq. (29)-(34))";
+    law.title = "Loveikin and Pochka (cam drive paper) motion law at constant crank speed (eq. (29)-(34))";
     law.xlabel = "cam angle [deg]";
     law.ylabel = "x [m], v [m/s], a [m/s²], jerk [m/s³]";
     const char* names[] = {"x", "v", "a", "jerk"};
@@ -99,7 +99,7 @@ int runCamProfile(const CamArgs& a) {
 Subcommand addCamProfileCommand(CLI::App& app) {
   auto args = std::make_shared<CamArgs>();
   CLI::App* cmd = app.add_subcommand("cam-profile",
-                                     "cam drive of Loveikin and Pochka (cam drive): motion law and cam profile to CSV; --compare runs "
+                                     "cam drive with optimal reversal of Loveikin and Pochka: motion law and cam profile to CSV; --compare runs "
                                      "the cam against a crank of equal stroke");
   cmd->add_option("scene", args->scene.scene_path, "scene file (YAML) with cam.stroke")->required()->check(CLI::ExistingFile);
   cmd->add_option("--set", args->scene.overrides, "override a scene value, key.path=value (repeatable)")

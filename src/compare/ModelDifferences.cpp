@@ -90,7 +90,7 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
 std::vector<std::string> identicalPhysics(const Scene& s) {
   std::vector<std::string> same;
   if (s.hasCamDrive())
-    same.push_back("drive: cams with the motion law of Loveikin and Pochka (cam drive) eq. (29)-(34), x_B = sigma*x(theta), in both "
+    same.push_back("drive: cams with the motion law of Loveikin and Pochka (cam drive paper) eq. (29)-(34), x_B = sigma*x(theta), in both "
                    "(a coordinate coupler in multibody, the same transfer functions in reduced); no rods");
   if (s.coupling.type == CouplingType::Elastic)
     same.push_back("drive: two masses joined by an elastic, damped coupling c*psi + k*psi' "

@@ -1,5 +1,5 @@
-// Cam drive of Loveikin and Pochka (cam drive) in the multibody model: the cart's slider coordinate follows the cam
-// angle of the crankshaft, x_B - σ·x(θ) = 0 with θ = φ2 + j·Δφ (physics/CamMotionLaw.h, Loveikin and Pochka (cam drive)
+// Cam drive with optimal reversal of Loveikin and Pochka in the multibody model: the cart's slider coordinate follows the cam
+// angle of the crankshaft, x_B - σ·x(θ) = 0 with θ = φ2 + j·Δφ (physics/CamMotionLaw.h, Loveikin and Pochka (cam drive paper)
 // eq. (32)-(34), (41)-(43)). Used as the Function of a Constraint::CoordinateCoupler, which takes
 // the place of the rod: one holonomic equation between the crankshaft's and the cart's q. The
 // law is C³ in θ, so the function and the first and second partial derivatives Simbody needs for

@@ -13,7 +13,7 @@ struct CartRig {
   int side = 1;                  // σ: +1 cart on the +x side of the shaft, -1 on the -x side
   SimTK::MobilizedBody cart;     // slider along ground x, origin at hinge B
   SimTK::MobilizedBody rod;      // rod body (distributed model only; otherwise invalid handle)
-  SimTK::Constraint cam;         // cam drive (Loveikin and Pochka (cam drive)): coupler x_B = σ·x(θ); else empty handle
+  SimTK::Constraint cam;         // cam drive (Loveikin and Pochka (cam drive paper)): coupler x_B = σ·x(θ); else empty handle
   SimTK::Vec3 p_CrankPin;        // crank pin A in the crankshaft frame [m]
   double rod_mass = 0;           // mass of the rod body (0 unless distributed) [kg]
   double rod_length = 0;         // l [m]

@@ -5,7 +5,7 @@
 // speed φ̇2 (unless the crank speed is prescribed, MultibodyOptions) and, with an elastic
 // coupling, the twist φ1 - φ2 and its rate. Every other coordinate follows from them through
 // one loop per cart, in closed form (physics/SliderCrank.h: Loveikin, Pochka, Romasevych (2018)
-// eq. (31), (40)-(47); physics/CamMotionLaw.h: Loveikin and Pochka (cam drive) eq. (32)-(34),
+// eq. (31), (40)-(47); physics/CamMotionLaw.h: Loveikin and Pochka (cam drive paper) eq. (32)-(34),
 // (41)-(43)), at the cart's crank angle θ = φ2 + j·Δφ:
 //   cart   q = x_B(θ),   u = x_B'·φ̇2,            u̇ = x_B'·φ̈2 + x_B''·φ̇2²
 //   rod    q = ψ(θ) - φ2 with ψ the absolute rod angle, u = -(σ·β' + 1)·φ̇2,

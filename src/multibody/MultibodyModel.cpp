@@ -93,7 +93,7 @@ void MultibodyModel::buildCarts() {
     rig.cart = SimTK::MobilizedBody::Slider(matter_.Ground(), SimTK::Transform(), cart_body, SimTK::Transform());
 
     if (sc.hasCamDrive()) {
-      // Loveikin and Pochka (cam drive): the cam on the crankshaft pushes the cart; x_B = σ·x(φ2 + j·Δφ) replaces the rod.
+      // Loveikin and Pochka (cam drive paper): the cam on the crankshaft pushes the cart; x_B = σ·x(φ2 + j·Δφ) replaces the rod.
       rig.p_CrankPin = SimTK::Vec3(0);
       rig.cam = SimTK::Constraint::CoordinateCoupler(
           matter_, new CamFollowerFunction(sc.cam.stroke, rig.side, sc.crankPhase(j)),
@@ -202,7 +202,7 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
     const CartRig& c = carts_[j];
     const double theta = phi + sc.crankPhase(int(j));
     const SliderCrankPose pose = sc.hasCamDrive()
-                                     ? camDrivePose(theta, sc.cam.stroke, c.side)  // Loveikin and Pochka (cam drive)
+                                     ? camDrivePose(theta, sc.cam.stroke, c.side)  // Loveikin and Pochka (cam drive paper)
                                      : sliderCrankExact(theta, sc.crank.radius, sc.rods.length, c.side);
     c.cart.setOneQ(s, 0, pose.x_B);
     c.cart.setOneU(s, 0, pose.dx_B * omega);

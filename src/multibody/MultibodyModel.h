@@ -10,7 +10,7 @@
 //   Ground -Slider(x)-> cart j, origin at the rod hinge B_j
 //   loop closure at B_j: rod end on the cart's z axis through B_j (one PointOnLine, two
 //   equations), or, for split and massless rods, a Constraint::Rod of length l between A_j and B_j.
-//   cam drive (scene.drive = cam, Loveikin and Pochka (cam drive)): no rod; a Constraint::CoordinateCoupler
+//   cam drive (scene.drive = cam, Loveikin and Pochka (cam drive paper)): no rod; a Constraint::CoordinateCoupler
 //   x_B - σ·x(φ2 + j·Δφ) = 0 (CamFollower.h) ties cart j to the crankshaft.
 // Rods hang from the crankshaft, not from the carts, so the crankshaft never has zero
 // articulated inertia even when the scene gives it none of its own.

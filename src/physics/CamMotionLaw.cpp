@@ -57,7 +57,7 @@ SliderCrankPose camDrivePose(double theta, double stroke, int side) {
 }
 
 CamTimeSample camMotionTime(double t, double dx, double t3) {
-  // Loveikin and Pochka (cam drive) eq. (29)-(31) exactly as printed, each segment in its own local time.
+  // Loveikin and Pochka (cam drive paper) eq. (29)-(31) exactly as printed, each segment in its own local time.
   const double T2 = t3 * t3, T3 = T2 * t3, T4 = T3 * t3, T5 = T4 * t3, T6 = T5 * t3;
   if (t <= t3 / 6.0) {  // eq. (29)
     const double t2 = t * t, tt3 = t2 * t, tt4 = tt3 * t, tt5 = tt4 * t, tt6 = tt5 * t;

@@ -1,10 +1,10 @@
-// Cam drive of Loveikin and Pochka (cam drive) (Loveikin, Pochka, "Optimisation of the reversal of a roller forming
+// Cam drive with optimal reversal of Loveikin and Pochka (Loveikin, Pochka, "Optimisation of the reversal of a roller forming
 // installation by the third-order acceleration"): the cart follows the optimal-reversal motion
 // law, start-up and braking each over 1/6 of a stroke, constant speed in between, every stroke
 // made by half a turn of the cam.
 //
 // Time form, one stroke of duration t3 (the half-cycle time), position from the starting end
-// (Loveikin and Pochka (cam drive) eq. (29)-(31), with x1 = Δx/10 and ẋ_y = 6Δx/(5·t3), eq. (28)):
+// (Loveikin and Pochka (cam drive paper) eq. (29)-(31), with x1 = Δx/10 and ẋ_y = 6Δx/(5·t3), eq. (28)):
 //   start    0 <= t <= t3/6:      x = (648Δx/5)(72τ⁶ - 36τ⁵ + 5τ⁴),  τ = t/t3        (29)
 //   constant t3/6 <= t <= 5t3/6:  x = (Δx/10)(1 + 12τ'),  τ' = (t - t3/6)/t3           (30)
 //   braking  5t3/6 <= t <= t3:    x = Δx - (3Δx/5)(15552τ''⁶ - 7776τ''⁵ + 1080τ''⁴
@@ -44,7 +44,7 @@ struct CamMotionSample {
   double d3x;  // ∂³x/∂θ³ [m/rad³]
 };
 
-// x(θ) of Loveikin and Pochka (cam drive) eq. (32)-(34) / (41)-(43), 2π-periodic in θ (any finite θ). stroke = Δx > 0.
+// x(θ) of Loveikin and Pochka (cam drive paper) eq. (32)-(34) / (41)-(43), 2π-periodic in θ (any finite θ). stroke = Δx > 0.
 CamMotionSample camMotion(double theta, double stroke);
 
 // The cam drive in the slider-crank's terms, so both models can use it where they use the
@@ -54,24 +54,24 @@ CamMotionSample camMotion(double theta, double stroke);
 SliderCrankPose camDrivePose(double theta, double stroke, int side);
 
 // Position from the starting end (0 ... Δx), speed, acceleration and jerk at time t within one
-// stroke, 0 <= t <= t3 (Loveikin and Pochka (cam drive) eq. (29)-(31)); derivatives are with respect to time.
+// stroke, 0 <= t <= t3 (Loveikin and Pochka (cam drive paper) eq. (29)-(31)); derivatives are with respect to time.
 struct CamTimeSample {
   double x, v, a, jerk;  // [m], [m/s], [m/s²], [m/s³]
   double snap;           // x⁗ [m/s⁴]: d/dt of the printed jerk, the integrand of eq. (1)-(2)
 };
 CamTimeSample camMotionTime(double t, double stroke, double t3);
 
-// Cam radius ρ(θ) = b/2 + x(θ) [m], Loveikin and Pochka (cam drive) eq. (38)-(43). b = pusher_distance > stroke.
+// Cam radius ρ(θ) = b/2 + x(θ) [m], Loveikin and Pochka (cam drive paper) eq. (38)-(43). b = pusher_distance > stroke.
 double camProfileRadius(double theta, double stroke, double pusher_distance);
 
 // Segment boundaries of one stroke as fractions of it: start ends at 1/6, braking begins at 5/6.
 inline constexpr double kCamStartFraction = 1.0 / 6.0;
 inline constexpr double kCamBrakeFraction = 5.0 / 6.0;
 
-// --- Optimality criterion of the reversal (Loveikin and Pochka (cam drive) eq. (1)-(2): I_Z = (m/2)∫ (x⁗)² dt) ---
+// --- Optimality criterion of the reversal (Loveikin and Pochka (cam drive paper) eq. (1)-(2): I_Z = (m/2)∫ (x⁗)² dt) ---
 
 // x⁗ during braking from speed ẋ_y at x = -x1 to rest at x = 0 in time t2, with ẍ = x⃛ = 0 at
-// both ends, for any x1 (Loveikin and Pochka (cam drive) eq. (6)-(10)) [m/s⁴].
+// both ends, for any x1 (Loveikin and Pochka (cam drive paper) eq. (6)-(10)) [m/s⁴].
 double brakingSnap(double t, double x1, double speed, double t2);
 // x⁗ during the start from rest at x = 0 to speed -ẋ_y at x = -x1 in time tn (eq. (12)-(16)).
 double startSnap(double t, double x1, double speed, double tn);

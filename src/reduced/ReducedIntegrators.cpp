@@ -206,7 +206,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   if (flag == CV_SUCCESS) flag = CVodeSetLinearSolver(cv, LS, A);
   if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(cv, 1000000);
   if (flag == CV_SUCCESS) flag = CVodeSetStopTime(cv, times.back());
-  // Cam drive (Loveikin and Pochka (cam drive)): in steady state the right-hand side is exactly constant over the
+  // Cam drive (Loveikin and Pochka (cam drive paper)): in steady state the right-hand side is exactly constant over the
   // constant-speed 2/3 of every stroke, so an unbounded step grows until it leaps from one
   // constant segment to the next across the reversal without its error estimate ever seeing it
   // (measured: the speed froze while ε = 160 rad/s² at every reversal). Cap the step at 1/8 of

@@ -34,7 +34,7 @@ ReducedModel::ReducedModel(const Scene& scene)
 
 SliderCrankPose ReducedModel::cartPose(int j, double phi) const {
   const double theta = phi + scene_.crankPhase(j);
-  if (scene_.hasCamDrive())  // Loveikin and Pochka (cam drive) eq. (32)-(34): x(θ) replaces the slider-crank
+  if (scene_.hasCamDrive())  // Loveikin and Pochka (cam drive paper) eq. (32)-(34): x(θ) replaces the slider-crank
     return camDrivePose(theta, scene_.cam.stroke, scene_.carts.side[j]);
   const double r = scene_.crank.radius, l = scene_.rods.length;
   const int side = scene_.carts.side[j];

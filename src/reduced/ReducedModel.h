@@ -24,7 +24,7 @@
 // m_rod·g·y_S' (Loveikin and Pochka (2007) eq. (5)), split rods m_rod/2·g·r·cos θ (pin half-mass); carts move
 // horizontally and do no gravity work.
 //
-// Cam drive (scene.drive = cam, Loveikin and Pochka (cam drive)): cartPose() returns the cam law x_B = σ·x(θ) and its
+// Cam drive (scene.drive = cam, Loveikin and Pochka (cam drive paper)): cartPose() returns the cam law x_B = σ·x(θ) and its
 // θ-derivatives (physics/CamMotionLaw.h) in place of the slider-crank transfer functions; the
 // scene's rods are massless then and β = 0, so every formula above holds unchanged.
 //

@@ -32,7 +32,7 @@ std::vector<std::string> Scene::effects() const {
   if (hasMotor()) e.push_back("kloss_motor");
   e.push_back(coupling.type == CouplingType::Rigid ? "rigid_coupling" : "elastic_coupling");
   if (hasCouplingDamping()) e.push_back("coupling_damping");
-  if (hasCamDrive()) e.push_back("cam_drive");  // no rods: the cam pushes the cart (Loveikin and Pochka (cam drive))
+  if (hasCamDrive()) e.push_back("cam_drive");  // no rods: the cam pushes the cart (Loveikin and Pochka (cam drive paper))
   else e.push_back(std::string("rods_") + toString(rods.model));
   if (hasRollerLoads()) e.push_back("roller_loads");
   if (hasGuideFriction()) e.push_back("guide_friction");

@@ -54,8 +54,8 @@ struct CrankShaft {
   double shaft_inertia;     // shaft itself (excluding cranks) about its axis [kg·m²]  crank.shaft_inertia
 };
 
-// Cam drive of Loveikin and Pochka (cam drive) (drive.type = cam): each cart is pushed by a constant-diameter cam on the
-// crankshaft instead of a crank and rod, and follows the optimal-reversal motion law of Loveikin and Pochka (cam drive)
+// Cam drive with optimal reversal of Loveikin and Pochka (drive.type = cam): each cart is pushed by a constant-diameter cam on the
+// crankshaft instead of a crank and rod, and follows the optimal-reversal motion law of Loveikin and Pochka (cam drive paper)
 // eq. (29)-(34) as a function of the cam angle (src/physics/CamMotionLaw.h). One cam turn is one
 // full cycle, so the half-cycle (one stroke) time is t3 = π/ω at crank speed ω [s]: it follows
 // from the drive's speed and is not an input. Cart j's cam sits at θ = φ2 + j·Δφ (crank.offset_deg);

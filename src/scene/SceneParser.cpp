@@ -223,14 +223,14 @@ ConnectingRods readRods(const Reader& in, double r) {
   return rods;
 }
 
-// drive.type and cam.*: the cam drive of Loveikin and Pochka (cam drive) (Scene.h). Under a cam no rod is built, so the
+// drive.type and cam.*: the cam drive with optimal reversal of Loveikin and Pochka (Scene.h). Under a cam no rod is built, so the
 // Scene gets massless rods; the rod keys stay validated so `--set drive.type=crank` works.
 void readDrive(const Reader& in, Scene& s) {
   s.drive = in.choice("drive.type") == "cam" ? DriveType::Cam : DriveType::Crank;
   s.cam.stroke = s.drive == DriveType::Cam
                      ? in.requiredNumber("cam.stroke", "required when drive.type is cam")
                      : in.numberOr("cam.stroke", 0.0);
-  // ρ = b/2 + x(θ) >= b/2 - Δx/2 must stay positive (Loveikin and Pochka (cam drive) eq. (38)-(43)).
+  // ρ = b/2 + x(θ) >= b/2 - Δx/2 must stay positive (Loveikin and Pochka (cam drive paper) eq. (38)-(43)).
   s.cam.pusher_distance = in.numberOr("cam.pusher_distance", 2.0 * s.cam.stroke);
   if (in.has("cam.pusher_distance") && s.cam.pusher_distance <= s.cam.stroke) {
     in.doc().fail("cam.pusher_distance",

@@ -84,7 +84,7 @@ std::vector<KeySpec> buildSchema() {
              "rod inertia about its centre of mass (default m·l²/12)"),
 
       choice("drive.type", P::Optional, {"crank", "cam"}, "crank",
-             "crank-slider per cart, or the cam of Loveikin and Pochka (cam drive) (rods then unused)"),
+             "crank-slider per cart, or the cam of Loveikin and Pochka (cam drive paper) (rods then unused)"),
       number("cam.stroke", "m", P::Conditional, positive(), 0.0,
              "cam drive: full stroke of the cart (required when drive.type is cam)"),
       number("cam.pusher_distance", "m", P::Conditional, positive(), 0.0,

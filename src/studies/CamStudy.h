@@ -1,4 +1,4 @@
-// Cam drive studies (Loveikin and Pochka (cam drive)): the cam profile of a scene, and a cam-driven cart compared with a
+// Cam drive studies (Loveikin and Pochka (cam drive paper)): the cam profile of a scene, and a cam-driven cart compared with a
 // crank-driven cart of equal stroke and cycle time (same scene, `drive.type` switched, so motor,
 // reducer, coupling, cart and loads are identical and the cycle time 2π/ω follows from the same
 // drive speed).

@@ -1,4 +1,4 @@
-// The cam drive (drive.type: cam, Loveikin and Pochka (cam drive)) in the scene, the reduced model and the multibody
+// The cam drive (drive.type: cam, Loveikin and Pochka (cam drive paper)) in the scene, the reduced model and the multibody
 // model, and the comparison with a crank drive of equal stroke and cycle time.
 #include <gtest/gtest.h>
 

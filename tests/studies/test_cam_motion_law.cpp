@@ -1,4 +1,4 @@
-// The optimal-reversal motion law of Loveikin and Pochka (cam drive) and its cam profile (src/physics/CamMotionLaw.h).
+// The optimal-reversal motion law of Loveikin and Pochka (cam drive paper) and its cam profile (src/physics/CamMotionLaw.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,8 +9,8 @@
 namespace rollerdyn {
 namespace {
 
-constexpr double kStroke = 0.4;  // Loveikin and Pochka (cam drive) example Δx [m]
-constexpr double kT3 = 3.0;      // Loveikin and Pochka (cam drive) example t3 [s]
+constexpr double kStroke = 0.4;  // Loveikin and Pochka (cam drive paper) example Δx [m]
+constexpr double kT3 = 3.0;      // Loveikin and Pochka (cam drive paper) example t3 [s]
 
 double component(const CamMotionSample& s, int k) {
   return k == 0 ? s.x : k == 1 ? s.dx : k == 2 ? s.d2x : s.d3x;

@@ -1,4 +1,4 @@
-// The optimality criterion of Loveikin and Pochka (cam drive): I_Z = (m/2)∫ (x⁗)² dt (eq. (1)-(2); the paper's
+// The optimality criterion of Loveikin and Pochka (cam drive paper): I_Z = (m/2)∫ (x⁗)² dt (eq. (1)-(2); the paper's
 // "acceleration of the third order" is the fourth derivative, see physics/CamMotionLaw.h), its
 // closed forms (11), (17), (19) and the optimum x1 = ẋ_y·t1/2 (eq. (20)-(21)).
 #include <gtest/gtest.h>
