@@ -31,7 +31,7 @@ void BM_MultibodyRhsPosition(benchmark::State& state) { multibodyRhs(state, SimT
 void BM_MultibodyRhsVelocity(benchmark::State& state) { multibodyRhs(state, SimTK::Stage::Velocity); }
 
 // The minimal formulation's right-hand side (README "Multibody formulations"): all q and u from
-// the closed forms, realization to Dynamics, projected equations, guide-reaction pass.
+// the closed forms, realization to Velocity, applied forces summed, projected equations, guide-reaction pass.
 void BM_MinimalRhs(benchmark::State& state) {
   const MultibodyModel model(sceneWithCarts(int(state.range(0))));
   SimTK::State s = model.assembledState(kPhi, kOmega, kTwist);

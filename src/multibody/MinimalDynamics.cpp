@@ -9,16 +9,25 @@ namespace rollerdyn {
 MinimalDynamics::MinimalDynamics(const MultibodyModel& model, const SimTK::State& s) : model_(model) {
   udot_.resize(s.getNU());
   residual_.resize(s.getNU());
+  const SimTK::SimbodyMatterSubsystem& matter = model.matter();
+  f_body_.resize(matter.getNumBodies());
+  f_particle_.resize(matter.getNumParticles());
+  f_mobility_.resize(s.getNU());
 }
 
 void MinimalDynamics::evaluate(const SimTK::State& s, const MinimalCoordinates& coords) {
   const SimTK::MultibodySystem& system = model_.system();
   const SimTK::SimbodyMatterSubsystem& matter = model_.matter();
-  system.realize(s, SimTK::Stage::Dynamics);
-  const SimTK::Vector& f_mobility = system.getMobilityForces(s, SimTK::Stage::Dynamics);
-  const SimTK::Vector_<SimTK::SpatialVec>& f_body = system.getRigidBodyForces(s, SimTK::Stage::Dynamics);
+  // The inverse-dynamics pass and M·v need positions and velocities only (Simbody's tree
+  // position and velocity caches); the applied forces f are summed directly, which costs less
+  // than Simbody's generic realization of the Dynamics stage.
+  system.realize(s, SimTK::Stage::Velocity);
+  f_body_.setToZero();
+  f_particle_.setToZero();
+  f_mobility_.setToZero();
+  model_.addAppliedForces(s, f_body_, f_particle_, f_mobility_);
   // r0 = M·(Ṅ·ν̇) + c - f
-  matter.calcResidualForceIgnoringConstraints(s, f_mobility, f_body, coords.bias(), residual_);
+  matter.calcResidualForceIgnoringConstraints(s, f_mobility_, f_body_, coords.bias(), residual_);
   const int k = coords.freeSpeeds();
   Eigen::Matrix2d A = Eigen::Matrix2d::Identity();
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
@@ -39,8 +48,7 @@ void MinimalDynamics::evaluate(const SimTK::State& s, const MinimalCoordinates& 
 
 SimTK::Vector MinimalDynamics::guideNormals(const SimTK::State& s) const {
   const std::vector<CartRig>& carts = model_.carts();
-  const SimTK::Vector_<SimTK::SpatialVec>& f_body =
-      model_.system().getRigidBodyForces(s, SimTK::Stage::Dynamics);
+  const SimTK::Vector_<SimTK::SpatialVec>& f_body = f_body_;
   SimTK::Vector n(2 * int(carts.size()));
   for (size_t j = 0; j < carts.size(); ++j) {
     const CartRig& c = carts[j];

@@ -28,8 +28,9 @@ class MinimalDynamics {
  public:
   MinimalDynamics(const MultibodyModel& model, const SimTK::State& state);
 
-  // Realizes `s` (q, u, z set, e.g. by MinimalCoordinates::apply) to Dynamics and solves the
-  // projected equations with the N and Ṅ·ν̇ of `coords`.
+  // Realizes `s` (q, u, z set, e.g. by MinimalCoordinates::apply) to Velocity, sums the applied
+  // forces of every force element and solves the projected equations with the N and Ṅ·ν̇ of
+  // `coords`.
   void evaluate(const SimTK::State& s, const MinimalCoordinates& coords);
 
   // After evaluate: ν̈ (crank acceleration first if free, then twist acceleration) [rad/s²].
@@ -45,6 +46,11 @@ class MinimalDynamics {
   Eigen::Vector2d nu_dot_ = Eigen::Vector2d::Zero();
   SimTK::Vector udot_, residual_, mn_[2];
   SimTK::Vector_<SimTK::SpatialVec> no_body_forces_;
+  // Applied forces f of all force elements at the last evaluate (ground axes): body forces
+  // [N·m, N] per mobilized body, particle forces [N], mobility forces [N·m or N] per u.
+  SimTK::Vector_<SimTK::SpatialVec> f_body_;
+  SimTK::Vector_<SimTK::Vec3> f_particle_;
+  SimTK::Vector f_mobility_;
 };
 
 }  // namespace rollerdyn

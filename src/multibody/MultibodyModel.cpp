@@ -132,34 +132,40 @@ void MultibodyModel::buildForces() {
     auto* f = new KlossMotorForce(motor_, sc.motor, sc.reducer.ratio, sc.reducer.efficiency);
     SimTK::Force::Custom(forces_, f);
     motor_force_ = sources.motor = f;
+    applied_order_.push_back(f);
     inventory_.force_elements.push_back("KlossMotor");
   }
   if (sc.coupling.type == CouplingType::Elastic) {
     auto* f = new ElasticCoupling(motor_, sc.coupling.stiffness, sc.coupling.damping);
     SimTK::Force::Custom(forces_, f);
     coupling_force_ = sources.coupling = f;
+    applied_order_.push_back(f);
     inventory_.force_elements.push_back(sc.hasCouplingDamping() ? "ElasticCoupling(spring+damper)"
                                                                 : "ElasticCoupling(spring)");
   }
   if (sc.hasGravity()) {
-    SimTK::Force::Gravity(forces_, matter_, -SimTK::YAxis, sc.loads.gravity);
+    gravity_ = SimTK::Force::Gravity(forces_, matter_, -SimTK::YAxis, sc.loads.gravity);
+    applied_order_.push_back(nullptr);
     inventory_.force_elements.push_back("Gravity");
   }
   if (sc.hasRollerLoads()) {
     auto* f = new RollerLoadForce(carts_, sc.loads, sc.carts.geometry);
     SimTK::Force::Custom(forces_, f);
     load_force_ = sources.loads = f;
+    applied_order_.push_back(f);
     inventory_.force_elements.push_back("RollerLoads");
   }
   if (sc.hasGuideFriction()) {
     auto* f = new GuideFriction(forces_, matter_, carts_, sc.loads, sc.carts.geometry);
     SimTK::Force::Custom(forces_, f);
     friction_force_ = sources.friction = f;
+    applied_order_.push_back(f);
     inventory_.force_elements.push_back("GuideFriction");
   }
   auto* meter = new EnergyMeter(forces_, sources);
   SimTK::Force::Custom(forces_, meter);
   energy_meter_ = meter;
+  applied_order_.push_back(meter);
 }
 
 void MultibodyModel::fillInventory() {
@@ -242,6 +248,19 @@ void MultibodyModel::auxiliaryRates(const SimTK::State& s, const SimTK::Vector& 
   zdot = 0.0;
   energy_meter_->calcRates(s, zdot);
   if (friction_force_) friction_force_->calcRates(s, guide_normals_now, zdot);
+}
+
+void MultibodyModel::addAppliedForces(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
+                                      SimTK::Vector_<SimTK::Vec3>& particle_forces,
+                                      SimTK::Vector& mobility_forces) const {
+  // No element is ever disabled here, and none caches position-only forces in the subsystem
+  // (dependsOnlyOnPositions is false), so Simbody's sum is this loop, term for term.
+  for (const SimTK::Force::Custom::Implementation* f : applied_order_) {
+    if (f)
+      f->calcForce(s, body_forces, particle_forces, mobility_forces);
+    else
+      body_forces += gravity_.getBodyForces(s);  // what Force::Gravity's calcForce adds
+  }
 }
 
 double MultibodyModel::motorSpeed(const SimTK::State& s) const {

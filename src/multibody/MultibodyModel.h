@@ -86,6 +86,11 @@ class MultibodyModel {
   // Simbody's joint reactions.
   void auxiliaryRates(const SimTK::State& s, const SimTK::Vector& guide_normals_now,
                       SimTK::Vector& zdot) const;
+  // Adds every force element's applied forces to the arrays (sized for the matter subsystem),
+  // element by element in the force subsystem's order: the sums Simbody forms at Dynamics stage,
+  // without realizing the system to Dynamics. State realized to Velocity.
+  void addAppliedForces(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
+                        SimTK::Vector_<SimTK::Vec3>& particle_forces, SimTK::Vector& mobility_forces) const;
 
   // A state assembled exactly at crank angle φ2, crank speed φ̇2 and coupling twist φ1 - φ2
   // (closed-form slider-crank positions and velocities, then a projection that only removes
@@ -131,6 +136,9 @@ class MultibodyModel {
   const RollerLoadForce* load_force_ = nullptr;
   const GuideFriction* friction_force_ = nullptr;
   const EnergyMeter* energy_meter_ = nullptr;
+  // Force elements in the force subsystem's order (addAppliedForces); nullptr stands for gravity_.
+  std::vector<const SimTK::Force::Custom::Implementation*> applied_order_;
+  SimTK::Force::Gravity gravity_;  // empty handle without gravity
   MultibodyInventory inventory_;
 };
 

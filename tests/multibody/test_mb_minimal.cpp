@@ -179,6 +179,39 @@ TEST(MinimalCoordinates, SatisfiesSimbodyConstraints) {
 
 // MinimalDynamics' accelerations and guide normal forces equal Simbody's constrained solve
 // (realize Acceleration, calcMobilizerReactionForces) at arbitrary states, with friction on.
+// The applied forces MinimalDynamics sums without realizing Dynamics are Simbody's own sums at
+// Dynamics stage, term for term (same elements, same order): equal to the last bit. Motor,
+// elastic coupling with damping, gravity, roller loads and guide friction (non-zero lagged normal
+// forces) all act.
+TEST(MultibodyModel, AppliedForcesEqualSimbodysDynamicsStageSums) {
+  const Scene sc = shortScene("balanced-4cart.yaml", {"loads.guide_friction.coefficient=0.1"});
+  const MultibodyModel model(sc);
+  ASSERT_TRUE(model.hasGuideFriction());
+  SimTK::State s = model.assembledState(2.5, 7.0, 2e-4);
+  SimTK::Vector& z = model.forces().updZ(s);
+  for (int i = 0; i < z.size(); ++i) z[i] = 1000.0 * (i + 1) * (i % 2 ? -1 : 1);
+  model.system().realize(s, SimTK::Stage::Dynamics);
+  const SimTK::SimbodyMatterSubsystem& matter = model.matter();
+  SimTK::Vector_<SimTK::SpatialVec> body(matter.getNumBodies(), SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0)));
+  SimTK::Vector_<SimTK::Vec3> particle(matter.getNumParticles(), SimTK::Vec3(0));
+  SimTK::Vector mobility(s.getNU(), 0.0);
+  model.addAppliedForces(s, body, particle, mobility);
+  const SimTK::Vector_<SimTK::SpatialVec>& body_ref = model.system().getRigidBodyForces(s, SimTK::Stage::Dynamics);
+  const SimTK::Vector& mobility_ref = model.system().getMobilityForces(s, SimTK::Stage::Dynamics);
+  double largest = 0;
+  for (int b = 0; b < body.size(); ++b)
+    for (int k = 0; k < 2; ++k)
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(body[b][k][c], body_ref[b][k][c]) << "body " << b << " part " << k << " axis " << c;
+        largest = std::max(largest, std::abs(body_ref[b][k][c]));
+      }
+  for (int i = 0; i < mobility.size(); ++i) {
+    EXPECT_EQ(mobility[i], mobility_ref[i]) << "mobility " << i;
+    largest = std::max(largest, std::abs(mobility_ref[i]));
+  }
+  EXPECT_GT(largest, 1000.0);  // the comparison is not between zeros
+}
+
 TEST(MinimalDynamics, MatchesSimbodyConstrainedSolve) {
   for (const char* rods : {"distributed", "split", "massless", "cam"}) {
     const Scene sc = std::string(rods) == "cam"
