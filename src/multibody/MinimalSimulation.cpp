@@ -244,14 +244,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   run.stats.steps = integ.steps();
   run.stats.realizations = integ.rhsEvaluations();
 
-  run.energy.motor_work = e1.motor_work - e0.motor_work;
-  run.energy.damping_dissipation = e1.damping_dissipation - e0.damping_dissipation;
-  run.energy.friction_dissipation = e1.friction_dissipation - e0.friction_dissipation;
-  run.energy.load_work = e1.load_work - e0.load_work;
-  run.energy.kinetic_initial = e0.kinetic;
-  run.energy.kinetic_final = e1.kinetic;
-  run.energy.potential_initial = e0.potential;
-  run.energy.potential_final = e1.potential;
+  run.energy = energyAuditBetween(e0, e1);
   return run;
 }
 

@@ -283,6 +283,19 @@ double MultibodyModel::constraintError(const SimTK::State& s) const {
   return qerr.size() ? SimTK::max(SimTK::abs(qerr)) : 0.0;
 }
 
+EnergyAudit energyAuditBetween(const EnergySnapshot& first, const EnergySnapshot& last) {
+  EnergyAudit a;
+  a.motor_work = last.motor_work - first.motor_work;
+  a.damping_dissipation = last.damping_dissipation - first.damping_dissipation;
+  a.friction_dissipation = last.friction_dissipation - first.friction_dissipation;
+  a.load_work = last.load_work - first.load_work;
+  a.kinetic_initial = first.kinetic;
+  a.kinetic_final = last.kinetic;
+  a.potential_initial = first.potential;
+  a.potential_final = last.potential;
+  return a;
+}
+
 EnergySnapshot MultibodyModel::energy(const SimTK::State& s) const {
   EnergySnapshot e;
   e.kinetic = system_.calcKineticEnergy(s);

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "Simbody.h"
+#include "analysis/RunResult.h"
 #include "multibody/CartRig.h"
 #include "scene/Scene.h"
 
@@ -57,6 +58,10 @@ struct EnergySnapshot {
   double kinetic = 0, potential = 0;
   double motor_work = 0, damping_dissipation = 0, friction_dissipation = 0, load_work = 0;
 };
+
+// The energy audit of a run from the snapshots at its first and last recorded rows (the work
+// integrals are cumulative states, so the run's share is their difference).
+EnergyAudit energyAuditBetween(const EnergySnapshot& first, const EnergySnapshot& last);
 
 class MultibodyModel {
  public:

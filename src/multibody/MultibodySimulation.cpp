@@ -135,14 +135,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   const SimTK::State& s1 = *last_row;
   system.realize(s1, SimTK::Stage::Acceleration);
   const EnergySnapshot e1 = model.energy(s1);
-  run.energy.motor_work = e1.motor_work - e0.motor_work;
-  run.energy.damping_dissipation = e1.damping_dissipation - e0.damping_dissipation;
-  run.energy.friction_dissipation = e1.friction_dissipation - e0.friction_dissipation;
-  run.energy.load_work = e1.load_work - e0.load_work;
-  run.energy.kinetic_initial = e0.kinetic;
-  run.energy.kinetic_final = e1.kinetic;
-  run.energy.potential_initial = e0.potential;
-  run.energy.potential_final = e1.potential;
+  run.energy = energyAuditBetween(e0, e1);
   return run;
 }
 
