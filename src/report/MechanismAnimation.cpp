@@ -194,7 +194,14 @@ const char* const kScript = R"JS((function () {
     label.textContent = 't = ' + D.t[k].toFixed(3) + ' s';
     sec.setAttribute('data-frame', String(k));
     sec.setAttribute('data-t', D.t[k].toFixed(4));
-    if (selftest) sec.setAttribute('data-pixels', String(pixelHash()));
+    if (selftest) {
+      sec.setAttribute('data-pixels', String(pixelHash()));
+      if (!sec.hasAttribute('data-frame-first')) {  // the first frame drawn, to tell that it moved
+        sec.setAttribute('data-frame-first', String(k));
+        sec.setAttribute('data-t-first', D.t[k].toFixed(4));
+        sec.setAttribute('data-pixels-first', sec.getAttribute('data-pixels'));
+      }
+    }
     document.dispatchEvent(new CustomEvent('rollerdyn-time', {detail: {t: D.t[k]}}));
   }
   function restartClock() { simT0 = D.t[k]; wall0 = performance.now(); }

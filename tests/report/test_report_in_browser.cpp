@@ -2,7 +2,7 @@
 // scripts/setup.sh) loads a page written by `rollerdyn report` from a file:// URL and runs its
 // scripts under a virtual time budget; --dump-dom then shows the attributes the page's scripts
 // set. Checked: the animation plays (frame, time and a checksum of the mechanism canvas's pixels
-// differ between two virtual times), the interactive charts were made and painted, every
+// move on from the first frame drawn, in each of two page loads), the interactive charts were made and painted, every
 // embedded figure decoded, and no script error was raised. Without Chart.js on the page (the
 // fallback), the animation still plays and no script fails. Skipped, with the reason, when
 // chromium is not installed.
@@ -93,15 +93,17 @@ TEST_F(ReportInBrowser, AnimationPlaysAndFiguresRender) {
   EXPECT_EQ(htmlTag(early).find("data-script-errors"), std::string::npos) << htmlTag(early);
   EXPECT_EQ(htmlTag(late).find("data-script-errors"), std::string::npos) << htmlTag(late);
 
-  const auto m1 = attributesOf(early, "id=\"mechanism\""), m2 = attributesOf(late, "id=\"mechanism\"");
-  ASSERT_TRUE(m1.count("data-t") && m2.count("data-t") && m1.count("data-pixels") && m2.count("data-pixels"));
-  const double t1 = std::stod(m1.at("data-t")), t2 = std::stod(m2.at("data-t"));
-  // Chromium's animation frames do not follow the virtual clock exactly (and the animation loops
-  // over the 3 s run), so the two times are only required to differ.
-  EXPECT_GT(std::max(t1, t2), 0.0) << "the animation did not start";
-  EXPECT_NE(t1, t2) << "the animation did not advance";
-  EXPECT_NE(m1.at("data-frame"), m2.at("data-frame"));
-  EXPECT_NE(m1.at("data-pixels"), m2.at("data-pixels")) << "the mechanism canvas looks the same at both times";
+  // Chromium's animation frames follow the wall clock, not the virtual one, so two page loads
+  // can stop at the same frame whatever their budgets (measured: t = 0.23 ... 0.29 s at budgets
+  // of 0.6 and 1.8 s). Each load therefore has to show that the animation moved within it: the
+  // page (#selftest) records the first frame it drew beside the current one.
+  for (const std::string* dom : {&early, &late}) {
+    const auto m = attributesOf(*dom, "id=\"mechanism\"");
+    ASSERT_TRUE(m.count("data-t") && m.count("data-t-first") && m.count("data-pixels") && m.count("data-pixels-first"));
+    EXPECT_GT(std::stod(m.at("data-t")), std::stod(m.at("data-t-first"))) << "the animation did not advance";
+    EXPECT_NE(m.at("data-frame"), m.at("data-frame-first"));
+    EXPECT_NE(m.at("data-pixels"), m.at("data-pixels-first")) << "the mechanism canvas did not change";
+  }
 
   const auto plots = attributesOf(late, "id=\"time-plots\"");
   EXPECT_EQ(plots.count("data-charts") ? plots.at("data-charts") : "", "4");
@@ -134,9 +136,11 @@ TEST_F(ReportInBrowser, WithoutChartJsNoScriptFails) {
   ASSERT_FALSE(late.empty());
   EXPECT_EQ(htmlTag(late).find("data-script-errors"), std::string::npos) << htmlTag(late);
   EXPECT_NE(late.find("Interactive time plots left out"), std::string::npos);
-  const auto m1 = attributesOf(early, "id=\"mechanism\""), m2 = attributesOf(late, "id=\"mechanism\"");
-  ASSERT_TRUE(m1.count("data-pixels") && m2.count("data-pixels"));
-  EXPECT_NE(m1.at("data-pixels"), m2.at("data-pixels"));
+  for (const std::string* dom : {&early, &late}) {  // moved within each load (see above)
+    const auto m = attributesOf(*dom, "id=\"mechanism\"");
+    ASSERT_TRUE(m.count("data-pixels") && m.count("data-pixels-first"));
+    EXPECT_NE(m.at("data-pixels"), m.at("data-pixels-first"));
+  }
 }
 
 }  // namespace
