@@ -194,8 +194,15 @@ std::string sizingText(const json& summary) {
       o << "; rating not given (sizing.coupling_rated_torque)";
     o << "\n";
   }
-  o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
   const json& joints = at(s, "joints");
+  bool any_joint = false;
+  for (const char* kind : kJointKinds) any_joint = any_joint || at(at(joints, kind), "worst").is_object();
+  if (!any_joint) {
+    o << "  joint loads                       not computed: the run has no joint reactions "
+         "(simulation.reactions: false)\n";
+    return o.str();
+  }
+  o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
   const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearing"};
   for (std::size_t k = 0; k < 5; ++k) {
     const json& x = at(at(joints, kJointKinds[k]), "worst");

@@ -37,8 +37,7 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
     control.progress = [&progress](double t, double t_end) { progress(t, t_end); };
     run = runMultibodyModel(scene, control);
   }
-  writeCsvAtomic(out_dir + "/timeseries.csv", run.timeseries);
-  writeCsvAtomic(out_dir + "/reactions.csv", run.reactions);
+  writeRunTables(out_dir, run);
   const StartLoad start_load = startLoadOf(scene);  // explains a stall
   auto summary = makeSummary(scene, run, &start_load);
   summary["scene_path"] = absolutePath(args.scene_path);  // `plot DIR` finds it from anywhere

@@ -45,8 +45,7 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   } else {
     throw std::invalid_argument("--model: expected multibody or reduced, got '" + model + "'");
   }
-  writeCsvAtomic(out_dir + "/timeseries.csv", run.timeseries);
-  writeCsvAtomic(out_dir + "/reactions.csv", run.reactions);
+  writeRunTables(out_dir, run);
   const StartLoad start_load = startLoadOf(scene);  // explains a stall
   auto summary = makeSummary(scene, run, &start_load);
   summary["scene_path"] = absolutePath(args.scene_path);  // `plot DIR` finds it from anywhere

@@ -122,9 +122,9 @@ const QuantityComparison* ModelComparison::findKinetostatic(const std::string& n
   return nullptr;
 }
 
-std::vector<std::string> comparedQuantities(int carts) {
+std::vector<std::string> comparedQuantities(int carts, bool reactions) {
   std::vector<std::string> q = {"omega_crank", "coupling_torque"};
-  for (int j = 1; j <= carts; ++j)
+  for (int j = 1; reactions && j <= carts; ++j)
     for (const char* n : {"N_front_", "N_rear_", "F_rod_"}) q.push_back(n + std::to_string(j));
   return q;
 }
@@ -160,8 +160,9 @@ ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
 
   // Kinetostatic reactions of the reduced model on its own rows: φ, φ̇, φ̈ from its timeseries.
   const int n = scene.carts.count;
-  std::vector<std::vector<double>> kin(3 * n, std::vector<double>(t_red.size(), kNaN));
-  {
+  const bool reactions = scene.simulation.reactions;
+  std::vector<std::vector<double>> kin(reactions ? 3 * n : 0, std::vector<double>(t_red.size(), kNaN));
+  if (reactions) {
     const ReducedModel model(scene);
     const std::vector<double> phi = red.timeseries.column("phi_crank");
     const std::vector<double> w = red.timeseries.column("omega_crank");
@@ -178,7 +179,7 @@ ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
 
   c.table.columns = {"t"};
   std::vector<std::vector<double>> cols = {grid};
-  const std::vector<std::string> names = comparedQuantities(n);
+  const std::vector<std::string> names = comparedQuantities(n, reactions);
   for (std::size_t k = 0; k < names.size(); ++k) {
     const std::string& q = names[k];
     std::vector<double> ta, ya, tb, yb;
@@ -272,8 +273,11 @@ std::string comparisonText(const ModelComparison& c) {
   for (const auto& q : c.quantities)
     if (q.name != "omega_crank" && q.name != "coupling_torque") worst = std::max(worst, q.stats.max_rel_diff);
   for (const auto& q : c.kinetostatic) worst_kin = std::max(worst_kin, q.stats.max_rel_diff);
-  os << "  reactions      largest max_rel_diff " << worst << " (quasi-static reduced), " << worst_kin
-     << " (kinetostatic reduced)\n";
+  if (c.kinetostatic.empty())
+    os << "  reactions      not computed (simulation.reactions: false)\n";
+  else
+    os << "  reactions      largest max_rel_diff " << worst << " (quasi-static reduced), " << worst_kin
+       << " (kinetostatic reduced)\n";
   os << "motion       " << (c.motion_equivalent ? "equivalent physics" : "different physics") << '\n';
   for (const auto& d : c.differences) os << "  - " << d.sentence << '\n';
   os << "cpu          multibody " << c.cpuMultibody() << " s, reduced " << c.cpuReduced() << " s";

@@ -82,8 +82,9 @@ struct ModelComparison {
   double cpuReduced() const { return reduced.stats.cpu_seconds; }
 };
 
-// The quantities compared for a scene with `carts` carts, in output order.
-std::vector<std::string> comparedQuantities(int carts);
+// The quantities compared for a scene with `carts` carts, in output order: crank speed, coupling
+// torque and, when the runs computed reactions (simulation.reactions), each cart's guide and rod forces.
+std::vector<std::string> comparedQuantities(int carts, bool reactions = true);
 
 // Compares two finished runs of `scene` (pure: runs nothing but the reduced model's
 // kinetostatic cart statics on the reduced run's own rows).

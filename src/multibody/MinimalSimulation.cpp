@@ -107,7 +107,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   run.integrator = "cvode-adams (minimal coordinates)";
   run.effects = sc.effects();
   run.timeseries.columns = model.timeseriesColumns();
-  run.reactions.columns = model.reactionColumns();
+  if (sc.simulation.reactions) run.reactions.columns = model.reactionColumns();
   run.stats.formulation_self_check = 0.0;
 
   const SimTK::State s0 = model.initialState();
@@ -180,21 +180,17 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   StallDetector stall(sc.hasMotor(), w_sync);
   const std::vector<double> times = outputTimes(sc.simulation);
   std::vector<double> ts_row, re_row;
-  EnergySnapshot e1 = e0;
   SimTK::Vector udot_projected, normals_projected;
   const int n_carts = sc.carts.count;
   const bool friction = model.hasGuideFriction();
-  // Returns false when the run must stop (non-finite row, stall, interrupt).
-  auto record = [&](double t, const Eigen::VectorXd& y) {
-    ms.set(t, y.data());
-    SimTK::State& s = ms.state();
-    udot_projected = ms.dynamics().udot();
-    if (friction) normals_projected = ms.dynamics().guideNormals(s);
-    system.realize(s, SimTK::Stage::Acceleration);  // Simbody's full constrained solve
-    model.observe(s, ts_row, re_row);
-    run.timeseries.rows.push_back(ts_row);
-    run.reactions.rows.push_back(re_row);
-    run.stats.constraint_error_max = std::max(run.stats.constraint_error_max, model.constraintError(s));
+  const bool reactions = sc.simulation.reactions;
+  // Without reaction columns (simulation.reactions: false) a row needs no constrained solve: the
+  // projected accelerations are the motion's own. Simbody's constrained solve then runs only at
+  // every kSelfCheckStride-th row, for the self-check, which so still covers the whole run.
+  constexpr std::size_t kSelfCheckStride = 50;
+  // Compares Simbody's constrained solve at the row's state (realized to Acceleration) with the
+  // projected accelerations and guide normal forces of the same state.
+  auto selfCheck = [&](const SimTK::State& s, const std::vector<double>& reactions_row) {
     // Scale of the accelerations: their own, or ω2²·(1 rad) when the machine runs steadily and
     // its accelerations nearly vanish (a cam's constant-speed stretch: u̇ ~ 1e-7 from terms of
     // order ω2², whose round-off would otherwise read as a relative 1e-7).
@@ -203,14 +199,35 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     if (friction) {
       SimTK::Vector normals_constrained(2 * n_carts);
       for (int j = 0; j < n_carts; ++j) {  // N_front_j, N_rear_j: reaction columns 1 + 6j, 2 + 6j
-        normals_constrained[2 * j] = re_row[1 + 6 * j];
-        normals_constrained[2 * j + 1] = re_row[2 + 6 * j];
+        normals_constrained[2 * j] = reactions_row[1 + 6 * j];
+        normals_constrained[2 * j + 1] = reactions_row[2 + 6 * j];
       }
       check = std::max(check, relativeDifference(normals_constrained, normals_projected));
     }
     if (std::isfinite(check))
       run.stats.formulation_self_check = std::max(run.stats.formulation_self_check, check);
-    e1 = model.energy(s);
+  };
+  // Returns false when the run must stop (non-finite row, stall, interrupt).
+  auto record = [&](std::size_t k, double t, const Eigen::VectorXd& y) {
+    ms.set(t, y.data());
+    SimTK::State& s = ms.state();
+    udot_projected = ms.dynamics().udot();
+    if (friction) normals_projected = ms.dynamics().guideNormals(s);
+    if (reactions) {
+      system.realize(s, SimTK::Stage::Acceleration);  // Simbody's full constrained solve
+      model.observe(s, ts_row, re_row);
+      run.reactions.rows.push_back(re_row);
+      selfCheck(s, re_row);
+    } else {
+      model.observeMotion(s, udot_projected, ts_row);
+      if (k % kSelfCheckStride == 0) {
+        system.realize(s, SimTK::Stage::Acceleration);
+        model.observeReactions(s, re_row);
+        selfCheck(s, re_row);
+      }
+    }
+    run.timeseries.rows.push_back(ts_row);
+    run.stats.constraint_error_max = std::max(run.stats.constraint_error_max, model.constraintError(s));
     if (!rowIsFinite(ts_row) || !rowIsFinite(re_row)) {
       run.stats.complete = false;
       run.stats.status = statusAt("numerical failure (non-finite value)", t);
@@ -225,14 +242,18 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   };
 
   const std::clock_t cpu0 = std::clock();
-  bool go = record(times.front(), y0);
+  bool go = record(0, times.front(), y0);
+  double t_last = times.front();  // the last recorded row, whose state closes the energy audit
+  Eigen::VectorXd y_last = y0;
   for (std::size_t k = 1; go && k < times.size(); ++k) {
     if (!integ.advanceTo(times[k])) {
       run.stats.complete = false;
       run.stats.status = statusAt("integration failed", integ.time()) + ": " + integ.error();
       break;
     }
-    go = record(times[k], integ.y());
+    go = record(k, times[k], integ.y());
+    t_last = times[k];
+    y_last = integ.y();
     if (go && control.progress) control.progress(times[k], sc.simulation.t_end);
     if (go && control.interrupt && control.interrupt->load()) {
       run.stats.complete = false;
@@ -244,7 +265,9 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   run.stats.steps = integ.steps();
   run.stats.realizations = integ.rhsEvaluations();
 
-  run.energy = energyAuditBetween(e0, e1);
+  ms.set(t_last, y_last.data());
+  system.realize(ms.state(), SimTK::Stage::Dynamics);
+  run.energy = energyAuditBetween(e0, model.energy(ms.state()));
   return run;
 }
 

@@ -273,9 +273,13 @@ double MultibodyModel::motorTorque(const SimTK::State& s) const {
 
 double MultibodyModel::couplingTorque(const SimTK::State& s) const {
   if (coupling_force_) return coupling_force_->torque(s);
-  // Rigid coupling: the torque the motor-side inertia passes on to the crank side,
-  // M_motor - J_n1·φ̈ (needs Acceleration stage).
-  return motorTorque(s) - scene_.motorSideInertia() * crank_.getOneUDot(s, 0);
+  return couplingTorque(s, s.getUDot());  // needs Acceleration stage
+}
+
+double MultibodyModel::couplingTorque(const SimTK::State& s, const SimTK::Vector& udot) const {
+  if (coupling_force_) return coupling_force_->torque(s);
+  // Rigid coupling: the torque the motor-side inertia passes on to the crank side, M_motor - J_n1·φ̈.
+  return motorTorque(s) - scene_.motorSideInertia() * udot[crank_.getFirstUIndex(s)];
 }
 
 double MultibodyModel::constraintError(const SimTK::State& s) const {
@@ -327,23 +331,32 @@ std::vector<std::string> MultibodyModel::reactionColumns() const {
 
 void MultibodyModel::observe(const SimTK::State& s, std::vector<double>& ts,
                              std::vector<double>& re) const {
+  observeMotion(s, s.getUDot(), ts);
+  observeReactions(s, re);
+}
+
+void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& udot,
+                                   std::vector<double>& ts) const {
   // With an elastic coupling the motor side is mobilized on the crankshaft: its q, u, u̇ are the
   // twist and its rates; with a rigid coupling motor_ is the crankshaft and they are zero.
   const bool elastic = motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex();
-  const double phi2 = crank_.getOneQ(s, 0), w2 = crank_.getOneU(s, 0), e2 = crank_.getOneUDot(s, 0);
+  const double phi2 = crank_.getOneQ(s, 0), w2 = crank_.getOneU(s, 0);
+  const double e2 = udot[crank_.getFirstUIndex(s)];
   const double twist = elastic ? motor_.getOneQ(s, 0) : 0.0;
   const double twist_rate = elastic ? motor_.getOneU(s, 0) : 0.0;
-  const double twist_accel = elastic ? motor_.getOneUDot(s, 0) : 0.0;
+  const double twist_accel = elastic ? udot[motor_.getFirstUIndex(s)] : 0.0;
   const double phi1 = phi2 + twist, w1 = w2 + twist_rate, e1 = e2 + twist_accel;
-  const double torque_coupling = couplingTorque(s);
-  ts = {s.getTime(), phi1, phi2, w1, w2, e2, e1, twist, twist_rate, twist_accel, torque_coupling,
+  ts = {s.getTime(), phi1, phi2, w1, w2, e2, e1, twist, twist_rate, twist_accel, couplingTorque(s, udot),
         motorTorque(s)};
   for (const CartRig& c : carts_) {
     ts.push_back(c.x(s));
     ts.push_back(c.v(s));
-    ts.push_back(c.cart.getOneUDot(s, 0));
+    ts.push_back(udot[c.cart.getFirstUIndex(s)]);
   }
+}
 
+void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>& re) const {
+  const double torque_coupling = couplingTorque(s);
   SimTK::Vector_<SimTK::SpatialVec> reactions;
   matter_.calcMobilizerReactionForces(s, reactions);
   const SimTK::Vector_<SimTK::SpatialVec>& applied = system_.getRigidBodyForces(s, SimTK::Stage::Dynamics);

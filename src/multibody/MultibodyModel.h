@@ -110,12 +110,20 @@ class MultibodyModel {
   // One output row of each table from a state realized to Acceleration.
   void observe(const SimTK::State& s, std::vector<double>& timeseries_row,
                std::vector<double>& reactions_row) const;
+  // The timeseries row alone, from a state realized to Dynamics and its accelerations u̇
+  // (Simbody's, or the minimal formulation's projected ones): no constrained solve needed.
+  void observeMotion(const SimTK::State& s, const SimTK::Vector& udot,
+                     std::vector<double>& timeseries_row) const;
+  // The reactions row alone, from a state realized to Acceleration.
+  void observeReactions(const SimTK::State& s, std::vector<double>& reactions_row) const;
 
   double crankAngle(const SimTK::State& s) const { return crank_.getOneQ(s, 0); }
   double crankSpeed(const SimTK::State& s) const { return crank_.getOneU(s, 0); }
   double motorSpeed(const SimTK::State& s) const;   // reduced to the crank axis
   double motorTorque(const SimTK::State& s) const;  // reduced to the crank axis, 0 without motor
-  double couplingTorque(const SimTK::State& s) const;
+  double couplingTorque(const SimTK::State& s) const;  // rigid coupling: Acceleration stage
+  // The same from given accelerations u̇ (a rigid coupling's torque needs φ̈2) [N·m].
+  double couplingTorque(const SimTK::State& s, const SimTK::Vector& udot) const;
   // Largest absolute position-constraint error [m] (state realized to Position).
   double constraintError(const SimTK::State& s) const;
   EnergySnapshot energy(const SimTK::State& s) const;  // realized to Dynamics

@@ -44,7 +44,8 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   run.integrator = sc.simulation.integrator;
   run.effects = sc.effects();
   run.timeseries.columns = model.timeseriesColumns();
-  run.reactions.columns = model.reactionColumns();
+  const bool reactions = sc.simulation.reactions;
+  if (reactions) run.reactions.columns = model.reactionColumns();
 
   SimTK::State s0 = model.initialState();
   const EnergySnapshot e0 = model.energy(s0);
@@ -61,9 +62,12 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   std::vector<double> ts_row, re_row;
   auto record = [&](const SimTK::State& s) {
     system.realize(s, SimTK::Stage::Acceleration);
-    model.observe(s, ts_row, re_row);
+    model.observeMotion(s, s.getUDot(), ts_row);
     run.timeseries.rows.push_back(ts_row);
-    run.reactions.rows.push_back(re_row);
+    if (reactions) {
+      model.observeReactions(s, re_row);
+      run.reactions.rows.push_back(re_row);
+    }
     run.stats.constraint_error_max = std::max(run.stats.constraint_error_max, model.constraintError(s));
   };
 

@@ -39,6 +39,7 @@ void setupTables(const ReducedModel& m, RunResult& res) {
     rx.push_back("friction_" + s);
   }
   rx.push_back("coupling_torque");
+  if (!m.scene().simulation.reactions) rx.clear();  // no reactions table
 }
 
 // One output row of both tables from an evaluation (its eps/coupling fields may have been
@@ -50,6 +51,7 @@ void appendRows(const ReducedModel& m, double t, const ModelEvaluation& e, RunRe
   r.insert(r.end(), {t, e.phi_crank + e.twist, e.phi_crank, e.omega_motor, e.omega_crank,
                      e.eps_crank, e.eps_motor, e.twist, e.twist_rate, e.twist_accel,
                      e.coupling_torque, e.motor_torque, e.load_torque});
+  const bool reactions = !res.reactions.columns.empty();
   std::vector<double> q;
   q.reserve(res.reactions.columns.size());
   q.push_back(t);
@@ -66,7 +68,7 @@ void appendRows(const ReducedModel& m, double t, const ModelEvaluation& e, RunRe
   }
   q.push_back(e.coupling_torque);
   res.timeseries.rows.push_back(std::move(r));
-  res.reactions.rows.push_back(std::move(q));
+  if (reactions) res.reactions.rows.push_back(std::move(q));
 }
 
 double syncCrankSpeed(const Scene& s) { return s.motor.omega_sync / s.reducer.ratio; }

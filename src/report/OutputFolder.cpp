@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/AtomicFile.h"
 #include "io/ReadFile.h"
 
 namespace rollerdyn {
@@ -104,6 +105,19 @@ OutputFolder readOutputFolder(const std::string& dir) {
   return out;
 }
 
+void writeRunTables(const std::string& dir, const RunResult& run) {
+  namespace fs = std::filesystem;
+  writeCsvAtomic(dir + "/timeseries.csv", run.timeseries);
+  const std::string reactions = (fs::path(dir) / "reactions.csv").string();
+  if (!run.reactions.columns.empty()) {
+    writeCsvAtomic(reactions, run.reactions);
+  } else {
+    std::error_code ec;
+    fs::remove(reactions, ec);
+    if (ec) throw std::runtime_error("cannot remove the earlier run's '" + reactions + "': " + ec.message());
+  }
+}
+
 OutputFolder outputFolderOf(const std::string& dir, const RunResult& run, const nlohmann::json& summary) {
   namespace fs = std::filesystem;
   OutputFolder out;
@@ -111,7 +125,8 @@ OutputFolder outputFolderOf(const std::string& dir, const RunResult& run, const 
   out.timeseries = run.timeseries;
   out.reactions = run.reactions;
   out.summary = summary;
-  out.has_timeseries = out.has_reactions = out.has_summary = true;
+  out.has_timeseries = out.has_summary = true;
+  out.has_reactions = !run.reactions.columns.empty();
   const std::string comparison = (fs::path(dir) / "comparison.csv").string();
   if (fs::exists(comparison)) {
     out.comparison = readCsvFile(comparison);

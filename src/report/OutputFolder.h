@@ -30,6 +30,11 @@ struct OutputFolder {
 // folder, holds none of them, or one of them is malformed (the message names the file).
 OutputFolder readOutputFolder(const std::string& dir);
 
+// Writes a run's tables into `dir` atomically: timeseries.csv, and reactions.csv when the run
+// computed reactions; otherwise a reactions.csv left by an earlier run is removed, so the folder
+// never mixes two runs.
+void writeRunTables(const std::string& dir, const RunResult& run);
+
 // The folder a run has just been written to, from the tables still in memory (simulate --plot,
 // report); comparison.csv is read from `dir` if a `compare` run left one there.
 OutputFolder outputFolderOf(const std::string& dir, const RunResult& run, const nlohmann::json& summary);

@@ -38,6 +38,9 @@ struct SimulationSettings {
                                 // the independent ones only (minimal) [-]      simulation.formulation
                                 // (scene files default to minimal, SceneSchema.cpp; a Scene
                                 // built in code keeps the constrained formulation unless set)
+  bool reactions = true;        // joint reaction forces computed at every output row; false:
+                                // motion and drive torques only, no reactions table [-]
+                                //                                               simulation.reactions
 };
 
 struct InitialState {

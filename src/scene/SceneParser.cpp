@@ -155,6 +155,7 @@ SimulationSettings readSimulation(const Reader& in) {
     in.doc().fail("simulation.integrator", why, s.integrator);
   }
   s.output_step = in.number("simulation.output_step");
+  s.reactions = in.flag("simulation.reactions");
   if (s.output_step > s.t_end) {
     const std::string t = formatNumber(s.t_end), dt = formatNumber(s.output_step);
     if (blameSecond(in.doc(), "simulation.output_step", "simulation.t_end")) {

@@ -53,6 +53,9 @@ std::vector<KeySpec> buildSchema() {
              "(constrained) or only the independent ones, integrated by CVODE Adams (minimal)"),
       number("simulation.output_step", "s", P::Optional, positive(), 0.005,
              "spacing of output rows (<= t_end)"),
+      {"simulation.reactions", KeyKind::Flag, "-", P::Optional, anyFinite(), 1.0, "", {},
+       "compute the joint reaction forces at every output row (reactions.csv, joint loads); "
+       "false gives the motion and drive torques only, at a fraction of the multibody cost"},
       number("simulation.constraint_tolerance", "-", P::Conditional,
              between(0.0, false, 1.0, false), 0.0,
              "constraint projection tolerance (default: simulation.accuracy)"),

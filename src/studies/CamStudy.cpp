@@ -109,15 +109,19 @@ DriveResponse driveResponse(const Scene& sc, const RunResult& run) {
   r.delta = (wmax - wmin) / r.omega_mean;
   r.stroke = xmax - xmin;
   const Table& rx = run.reactions;
-  const int rt = rx.index("t"), rf = rx.index("F_rod_1");
-  r.force_max = -1e300;
-  r.force_min = 1e300;
-  for (const auto& row : rx.rows) {
-    if (row[rt] < ss.t_begin - 1e-12 || row[rt] > ss.t_end + 1e-12) continue;
-    r.force_max = std::max(r.force_max, row[rf]);
-    r.force_min = std::min(r.force_min, row[rf]);
+  if (rx.has("t") && rx.has("F_rod_1")) {
+    const int rt = rx.index("t"), rf = rx.index("F_rod_1");
+    r.force_max = -1e300;
+    r.force_min = 1e300;
+    for (const auto& row : rx.rows) {
+      if (row[rt] < ss.t_begin - 1e-12 || row[rt] > ss.t_end + 1e-12) continue;
+      r.force_max = std::max(r.force_max, row[rf]);
+      r.force_min = std::min(r.force_min, row[rf]);
+    }
+    r.force_abs_peak = std::max(std::abs(r.force_max), std::abs(r.force_min));
+  } else {  // simulation.reactions: false: the drive force is not computed
+    r.force_max = r.force_min = r.force_abs_peak = std::nan("");
   }
-  r.force_abs_peak = std::max(std::abs(r.force_max), std::abs(r.force_min));
   kinematicPeaks(sc, r.omega_mean, &r.accel_peak_kinematic, &r.jerk_peak_kinematic);
   return r;
 }

@@ -121,6 +121,22 @@ TEST(CompareRuns, KnownOffsetsOnDifferentGrids) {
   EXPECT_EQ(c.table.rows.size(), 11u);
 }
 
+TEST(CompareRuns, WithoutReactionsOnlyCrankSpeedAndCouplingTorque) {
+  // simulation.reactions: false: the runs have no reactions table; the motion is compared alone.
+  Scene sc = test_scenes::seed000Scene();
+  sc.simulation.reactions = false;
+  RunResult mb = syntheticRun("multibody", 0.1, 1.0, 4, 0.0, 1.0, 0.0);
+  RunResult red = syntheticRun("reduced", 0.05, 1.0, 4, 0.01, 0.98, 5.0);
+  mb.reactions = red.reactions = Table{};
+  const ModelComparison c = compareRuns(sc, mb, red);
+  ASSERT_EQ(c.quantities.size(), 2u);
+  EXPECT_NEAR(c.find("omega_crank")->stats.max_abs_diff, 0.01, 1e-12);
+  EXPECT_NEAR(c.find("coupling_torque")->stats.max_rel_diff, 0.02, 1e-12);
+  EXPECT_TRUE(c.kinetostatic.empty());
+  EXPECT_EQ(c.table.columns.size(), 1u + 2u * 2u);
+  EXPECT_NE(comparisonText(c).find("reactions      not computed"), std::string::npos);
+}
+
 TEST(CompareRuns, OnlyTheCommonSpanIsCompared) {
   // A multibody run that ended early (e.g. stalled) at t = 0.5: only t <= 0.5 is compared.
   const Scene sc = test_scenes::seed000Scene();

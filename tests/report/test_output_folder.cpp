@@ -33,6 +33,31 @@ TEST(ReportCsv, RoundTripsToCsv) {
   EXPECT_NEAR(back.rows[2][2], 1.0 / 3.0, 1e-12);
 }
 
+// A run without reactions (simulation.reactions: false) into a folder that holds an earlier
+// run's reactions.csv: the stale file goes, so the folder never mixes two runs.
+TEST(RunTables, RunWithoutReactionsRemovesTheEarlierRunsReactions) {
+  const fs::path dir = freshDir("run-tables");
+  RunResult with;
+  with.timeseries.columns = {"t", "omega_crank"};
+  with.timeseries.rows = {{0, 1}, {1, 2}};
+  with.reactions.columns = {"t", "N_front_1"};
+  with.reactions.rows = {{0, 5}, {1, 6}};
+  writeRunTables(dir.string(), with);
+  ASSERT_TRUE(fs::exists(dir / "reactions.csv"));
+  EXPECT_EQ(readOutputFolder(dir.string()).reactions.rows.size(), 2u);
+
+  RunResult without = with;
+  without.reactions = Table{};
+  without.timeseries.rows = {{0, 3}};
+  writeRunTables(dir.string(), without);
+  EXPECT_FALSE(fs::exists(dir / "reactions.csv"));
+  const OutputFolder back = readOutputFolder(dir.string());
+  EXPECT_FALSE(back.has_reactions);
+  ASSERT_EQ(back.timeseries.rows.size(), 1u);
+  EXPECT_EQ(back.timeseries.rows[0][1], 3.0);
+  fs::remove_all(dir);
+}
+
 TEST(ReportCsv, MalformedInputNamesFileAndLine) {
   EXPECT_EQ(messageOf([] { parseCsv("", "a.csv"); }), "a.csv: expected a header row, got an empty file");
   EXPECT_EQ(messageOf([] { parseCsv("t,x\n1,2\n3\n", "a.csv"); }), "a.csv:3: expected 2 fields, got 1");

@@ -76,6 +76,7 @@ simulation:
   integrator: CPodes
   formulation: constrained
   output_step: 0.01
+  reactions: false
   constraint_tolerance: 1.0e-7
   steady_window_revolutions: 3
 initial:
@@ -176,6 +177,7 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.simulation.accuracy, 1e-5);
   EXPECT_EQ(s.simulation.integrator, "CPodes");
   EXPECT_DOUBLE_EQ(s.simulation.output_step, 0.01);
+  EXPECT_FALSE(s.simulation.reactions);
   EXPECT_DOUBLE_EQ(s.simulation.constraint_tolerance, 1e-7);
   EXPECT_DOUBLE_EQ(s.simulation.steady_window_revolutions, 3.0);
   EXPECT_DOUBLE_EQ(s.initial.crank_angle, 45 * deg);
