@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -32,15 +33,22 @@ void writeFileAtomic(const std::string& path, const std::string& contents) {
 }
 
 std::string toCsv(const Table& table) {
-  std::ostringstream os;
-  os.precision(12);
-  for (size_t i = 0; i < table.columns.size(); ++i) os << (i ? "," : "") << headerWithUnit(table.columns[i]);
-  os << '\n';
+  std::string out;
+  for (size_t i = 0; i < table.columns.size(); ++i) out += (i ? "," : "") + headerWithUnit(table.columns[i]);
+  out += '\n';
+  // Numbers as printf's %.12g (what an ostream with precision 12 writes), by std::to_chars,
+  // which is specified to give exactly that text and costs a fraction of a stream insertion
+  // (a 2001-row run's tables were a fifth of the process's instructions).
+  char buf[32];
   for (const auto& row : table.rows) {
-    for (size_t i = 0; i < row.size(); ++i) os << (i ? "," : "") << row[i];
-    os << '\n';
+    for (size_t i = 0; i < row.size(); ++i) {
+      if (i) out += ',';
+      const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, row[i], std::chars_format::general, 12);
+      out.append(buf, r.ptr);
+    }
+    out += '\n';
   }
-  return os.str();
+  return out;
 }
 
 void writeCsvAtomic(const std::string& path, const Table& table) {

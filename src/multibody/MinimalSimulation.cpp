@@ -212,7 +212,8 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     ms.set(t, y.data());
     SimTK::State& s = ms.state();
     udot_projected = ms.dynamics().udot();
-    if (friction) normals_projected = ms.dynamics().guideNormals(s);
+    const bool check_row = reactions || k % kSelfCheckStride == 0;
+    if (friction && check_row) normals_projected = ms.dynamics().guideNormals(s);
     if (reactions) {
       system.realize(s, SimTK::Stage::Acceleration);  // Simbody's full constrained solve
       model.observe(s, ts_row, re_row);
@@ -220,7 +221,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
       selfCheck(s, re_row);
     } else {
       model.observeMotion(s, udot_projected, ts_row);
-      if (k % kSelfCheckStride == 0) {
+      if (check_row) {
         system.realize(s, SimTK::Stage::Acceleration);
         model.observeReactions(s, re_row);
         selfCheck(s, re_row);

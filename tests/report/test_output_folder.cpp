@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <vector>
 
 #include "io/AtomicFile.h"
 #include "report/OutputFolder.h"
@@ -56,6 +58,24 @@ TEST(RunTables, RunWithoutReactionsRemovesTheEarlierRunsReactions) {
   ASSERT_EQ(back.timeseries.rows.size(), 1u);
   EXPECT_EQ(back.timeseries.rows[0][1], 3.0);
   fs::remove_all(dir);
+}
+
+// The CSV numbers are what an ostream with precision 12 writes (printf's %.12g), the format the
+// files always had: same text for ordinary, tiny, huge, negative and non-finite values.
+TEST(ReportCsv, NumbersAsAStreamWithPrecision12WritesThem) {
+  const std::vector<double> values = {0.0, -0.0, 1.0, 0.1, 1.0 / 3.0, -2.0 / 3.0, 1e-5, 123456789012.5,
+                                      1234567890123456.0, 1e21, -2.5e-300, 4.9e-324, 1.7976931348623157e308,
+                                      NAN, INFINITY, -INFINITY, 299.99999999999994};
+  Table t;
+  t.columns = {"x"};
+  std::ostringstream expected;
+  expected.precision(12);
+  expected << "x\n";
+  for (double v : values) {
+    t.rows.push_back({v});
+    expected << v << '\n';
+  }
+  EXPECT_EQ(toCsv(t), expected.str());
 }
 
 TEST(ReportCsv, MalformedInputNamesFileAndLine) {
