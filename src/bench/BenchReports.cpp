@@ -19,9 +19,15 @@ std::string settingText(const SolverSetting& s) {
   return s.integrator + ", accuracy " + num(s.accuracy, 2);
 }
 
-std::string timingNote(const BenchOptions& opt) {
+std::string timingNote(const Scene& scene, const BenchOptions& opt) {
   std::ostringstream os;
-  os << "CPU times are process CPU seconds of the integration loop (RunStats.cpu_seconds; model "
+  os << (scene.simulation.reactions
+             ? "Every output row includes the joint reactions (the multibody model's minimal formulation does "
+               "Simbody's full constrained solve at each row for them). "
+             : "Runs without joint reactions (simulation.reactions: false): the rows hold the motion and the "
+               "drive torques only, and the multibody model's minimal formulation does Simbody's constrained "
+               "solve only at every 50th row, for its self-check. ")
+     << "CPU times are process CPU seconds of the integration loop (RunStats.cpu_seconds; model "
         "building excluded), "
      << (opt.repeats > 1 ? "median of " + std::to_string(opt.repeats) + " repetitions"
                          : std::string("one run each (use --repeat N for medians)"))
@@ -43,7 +49,7 @@ std::string integratorReport(const Scene& scene, const std::vector<BenchRow>& ro
   const double T = scene.simulation.t_end;
   os << "# Integrator benchmark: " << scene.name << "\n\n"
      << "Simulated time " << num(T) << " s (output step " << num(scene.simulation.output_step)
-     << " s)" << (opt.quick ? ", --quick" : "") << ". " << timingNote(opt) << "\n\n"
+     << " s)" << (opt.quick ? ", --quick" : "") << ". " << timingNote(scene, opt) << "\n\n"
      << "**Error measure.** For each run, over the output grid it shares with the reference run of the "
         "SAME model: error_omega = max_i |ω_i − ω_ref,i| / max_i |ω_ref,i| (crank speed), "
         "error_coupling = the same for the coupling torque. References: multibody "
@@ -136,7 +142,7 @@ std::string cartsReport(const Scene& scene, const std::vector<BenchRow>& rows, c
         "torque × n/" << scene.carts.count << " for n > " << scene.carts.count
      << " so the drive carries the load. Each model at the scene's integrator and accuracy ("
      << scene.simulation.integrator << " / cvode, " << num(scene.simulation.accuracy, 2) << "), "
-     << num(benchScene(scene, opt).simulation.t_end) << " s simulated. " << timingNote(opt) << "\n\n"
+     << num(benchScene(scene, opt).simulation.t_end) << " s simulated. " << timingNote(scene, opt) << "\n\n"
      << "| n | model | outcome | CPU [s] | CPU per cart [s] | steps | RHS evals | µs per RHS eval per cart | "
         "real-time factor |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const BenchRow& r : rows) {
@@ -172,7 +178,7 @@ std::string effectsReport(const Scene& scene, const std::vector<BenchRow>& rows,
         "integrator and accuracy ("
      << scene.simulation.integrator << " / cvode, " << num(scene.simulation.accuracy, 2) << "), "
      << num(benchScene(scene, opt).simulation.t_end) << " s simulated. Relative cost = CPU / CPU of the "
-        "baseline of the same model. " << timingNote(opt) << "\n\n"
+        "baseline of the same model. " << timingNote(scene, opt) << "\n\n"
      << "| # | variant | model | outcome | CPU [s] | relative cost | steps | RHS evals | µs per RHS eval |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";
   std::map<std::string, int> index;
