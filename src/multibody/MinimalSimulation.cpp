@@ -243,6 +243,8 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   run.stats.steps = integ.steps();
   run.stats.realizations = integ.rhsEvaluations();
+  run.stats.jacobian_evaluations = integ.jacobianEvaluations();
+  run.stats.newton_convergence_failures = integ.newtonConvergenceFailures();
 
   run.energy = energyAuditBetween(e0, e1);
   return run;

@@ -45,6 +45,8 @@ TEST(AdamsIntegrator, OscillatorMatchesClosedFormAndConvergesWithTolerance) {
     previous = err;
     EXPECT_GT(integ.steps(), 0);
     EXPECT_GE(integ.rhsEvaluations(), integ.steps());
+    EXPECT_GE(integ.jacobianEvaluations(), 1);  // Newton: at least the first step's matrix
+    EXPECT_GE(integ.newtonConvergenceFailures(), 0);
   }
 }
 
@@ -54,6 +56,7 @@ TEST(AdamsIntegrator, FixedPointIterationSolvesTheSameProblem) {
   AdamsIntegrator integ(p);
   ASSERT_TRUE(integ.advanceTo(2.0)) << integ.error();
   EXPECT_NEAR(integ.y()(0), std::cos(6.0), 1e-6);
+  EXPECT_EQ(integ.jacobianEvaluations(), 0);  // no Jacobian without Newton
 }
 
 TEST(AdamsIntegrator, AbsoluteOnlyStateIgnoresItsMagnitude) {

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include <cvode/cvode.h>
+#include <cvode/cvode_ls.h>
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
@@ -130,6 +131,16 @@ long AdamsIntegrator::steps() const {
   return n;
 }
 long AdamsIntegrator::rhsEvaluations() const { return impl_->rhs_evals; }
+long AdamsIntegrator::jacobianEvaluations() const {
+  long n = 0;
+  if (impl_->LS) CVodeGetNumJacEvals(impl_->cv, &n);
+  return n;
+}
+long AdamsIntegrator::newtonConvergenceFailures() const {
+  long n = 0;
+  CVodeGetNumNonlinSolvConvFails(impl_->cv, &n);
+  return n;
+}
 const std::string& AdamsIntegrator::error() const { return impl_->error; }
 
 }  // namespace rollerdyn

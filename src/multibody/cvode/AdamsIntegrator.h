@@ -47,6 +47,8 @@ class AdamsIntegrator {
   const Eigen::VectorXd& y() const;
   long steps() const;
   long rhsEvaluations() const;  // including the difference-quotient Jacobian's
+  long jacobianEvaluations() const;        // Jacobians formed for the Newton matrix (0: fixed point)
+  long newtonConvergenceFailures() const;  // corrector convergence failures
   const std::string& error() const;
 
  private:
