@@ -40,6 +40,8 @@ class EnergyMeter;
 struct MultibodyOptions {
   bool prescribe_crank_speed = false;  // drive the crankshaft at a constant speed (Motion::Steady)
   double crank_speed = 0.0;            // that speed [rad/s]
+  bool structured_jacobian = true;     // minimal formulation: Newton Jacobian by difference quotients
+                                       // of the mechanical states only (false: of every state)
 };
 
 // What the built system contains, for `rollerdyn check` and for tests.

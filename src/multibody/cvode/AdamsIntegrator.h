@@ -17,6 +17,23 @@
 
 namespace rollerdyn {
 
+// Structure of the Jacobian ∂f/∂y that the Newton corrector's matrix I - γ·∂f/∂y is built from.
+// Empty (the default): CVODE's dense difference quotients over every state, one evaluation of f
+// per state. Otherwise one entry per state: difference_quotient[j] true forms column j by a
+// difference quotient with CVODE's own increment; false takes column j as known, with
+// diagonal(j) on the diagonal and zeros elsewhere (e.g. a first-order lag dz/dt = (x - z)/τ:
+// diagonal -1/τ; an integral of powers that do not depend on it: 0).
+// Neglected entries only change the iteration matrix, not the equations being solved: the
+// corrector still drives the residual of the implicit Adams formula to CVODE's tolerance and the
+// local-error test still accepts or rejects each step, so accuracy is unchanged; a poor matrix
+// shows as more corrector iterations or convergence failures (counted below).
+struct JacobianStructure {
+  std::vector<bool> difference_quotient;  // per state: column by difference quotient
+  Eigen::VectorXd diagonal;               // per state: the known column's diagonal entry
+                                          // [1/s] (read where difference_quotient is false)
+  bool given() const { return !difference_quotient.empty(); }
+};
+
 struct AdamsProblem {
   // ẏ = f(t, y); returns false when f cannot be evaluated at y (CVODE then retries with a
   // smaller step).
@@ -29,8 +46,9 @@ struct AdamsProblem {
   std::vector<bool> absolute_only;  // states held to atol alone (angles: an error of 1e-6 rad
                                     // means the same after one turn or a thousand)
   double max_step = 0;        // largest step [s]; 0: unbounded
-  bool newton = true;         // Newton corrector on a dense difference-quotient Jacobian;
+  bool newton = true;         // Newton corrector on a dense Jacobian (structure below);
                               // false: fixed-point (functional) iteration
+  JacobianStructure jacobian; // Newton only; empty: difference quotients for every column
 };
 
 class AdamsIntegrator {
