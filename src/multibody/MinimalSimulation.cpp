@@ -53,15 +53,19 @@ class MinimalSystem {
 
   // Sets the State exactly from y (closed-form loops) and evaluates the projected dynamics.
   void set(double t, const double* y) {
-    IndependentState x;
-    x.crank_angle = y[layout_.phi];
-    if (layout_.twist >= 0) x.twist = y[layout_.twist];
-    if (layout_.omega >= 0) x.crank_speed = y[layout_.omega];
-    if (layout_.twist_rate >= 0) x.twist_rate = y[layout_.twist_rate];
-    coords_.apply(t, x, s_);
-    SimTK::Vector& z = model_.forces().updZ(s_);
-    for (int i = 0; i < z.size(); ++i) z[i] = y[layout_.z + i];
+    place(t, y);
     dyn_.evaluate(s_, coords_);
+  }
+
+  // Writes ∂(friction-dissipation rate)/∂N̂ at (t, y) into row `row` of jac, columns
+  // first_column... (one per normal-force state): the known Jacobian entries that depend on the
+  // state (see simulateMinimal).
+  bool frictionPowerEntries(double t, const double* y, int row, int first_column, Eigen::Ref<Eigen::MatrixXd> jac) {
+    place(t, y);
+    model_.system().realize(s_, SimTK::Stage::Velocity);
+    const SimTK::Vector g = model_.frictionPowerGradient(s_);
+    for (int k = 0; k < g.size(); ++k) jac(row, first_column + k) = g[k];
+    return true;
   }
 
   bool rhs(double t, const double* y, double* ydot) {
@@ -79,6 +83,18 @@ class MinimalSystem {
   }
 
  private:
+  // Sets q, u (closed-form loops) and z of the State exactly from y.
+  void place(double t, const double* y) {
+    IndependentState x;
+    x.crank_angle = y[layout_.phi];
+    if (layout_.twist >= 0) x.twist = y[layout_.twist];
+    if (layout_.omega >= 0) x.crank_speed = y[layout_.omega];
+    if (layout_.twist_rate >= 0) x.twist_rate = y[layout_.twist_rate];
+    coords_.apply(t, x, s_);
+    SimTK::Vector& z = model_.forces().updZ(s_);
+    for (int i = 0; i < z.size(); ++i) z[i] = y[layout_.z + i];
+  }
+
   const MultibodyModel& model_;
   SimTK::State s_;
   MinimalCoordinates coords_;
@@ -174,14 +190,20 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   // Newton matrix from a structured Jacobian (AdamsIntegrator.h): difference quotients only for
   // the mechanical states (φ2, twist, φ̇2, twist rate: at most 4 evaluations per Jacobian instead
   // of one per state, 72 at 32 carts), known columns for the auxiliary states:
-  //  - friction normal forces N̂ (GuideFriction.h: dN̂/dt = (N - N̂)/τ_N): diagonal -1/τ_N. Neglected:
-  //    N̂'s effect through the friction force on the accelerations, on N and on the friction power
-  //    (of order f·lever/inertia, f the friction coefficient, against 1/τ_N = 500/s at 2 ms);
+  //  - friction normal forces N̂ (GuideFriction.h: dN̂/dt = (N - N̂)/τ_N): diagonal -1/τ_N, and the
+  //    friction-dissipation integral's rate ∂P/∂N̂ (GuideFriction::dissipatedPowerGradient).
+  //    Neglected: N̂'s effect through the friction force on the accelerations and on N (of order
+  //    f·lever/inertia, f the friction coefficient, against 1/τ_N = 500/s at 2 ms);
   //  - energy-audit integrals (EnergyMeter.h): their rates are powers of the forces, which do not
   //    depend on the integrals: the column is exactly zero.
   // The neglected entries change only the iteration matrix, never the equations solved: CVODE's
   // corrector still converges to the same implicit Adams step and its local-error test still
   // decides acceptance, so the solution is that of the full Jacobian to the tolerance.
+  // ∂P/∂N̂ is not neglected because the energy audit is a consistency check at the level of the
+  // corrector's convergence tolerance: with that row missing, the friction-dissipation integral
+  // lags the N̂ corrections (large: N̂ relaxes in τ_N, shorter than a step) and the audit showed
+  // outliers of 0.4·accuracy·E (stiff-coupling hard case, 1 accuracy in 12; ≤ 8e-4 with the full
+  // Jacobian, ≤ 3e-3 with this row included).
   if (model.options().structured_jacobian) {
     const int n_aux = L.size - L.z;
     const int n_normals = model.hasGuideFriction() ? 2 * sc.carts.count : 0;
@@ -198,6 +220,12 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
             "minimal formulation: loads.guide_friction.normal_force_lag must be a positive time [s], got " +
             std::to_string(tau_N));
       p.jacobian.diagonal.segment(L.z, n_normals).setConstant(-1.0 / tau_N);
+      // Energy integrals in EnergyMeter.h's order: motor work, damping, friction, load work.
+      const int row_friction_dissipation = L.z + n_normals + 2, first_normal = L.z;
+      p.jacobian.known_entries = [&ms, row_friction_dissipation, first_normal](
+                                     double t, const double* y, Eigen::Ref<Eigen::MatrixXd> jac) {
+        return ms.frictionPowerEntries(t, y, row_friction_dissipation, first_normal, jac);
+      };
     }
   }
   // Cam drive: same step cap as the reduced model (ReducedIntegrators.cpp): the right-hand side

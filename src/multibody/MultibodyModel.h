@@ -93,6 +93,9 @@ class MultibodyModel {
   // Simbody's joint reactions.
   void auxiliaryRates(const SimTK::State& s, const SimTK::Vector& guide_normals_now,
                       SimTK::Vector& zdot) const;
+  // ∂(friction-dissipation rate)/∂N̂ [W/N] per guide normal-force state (GuideFriction.h); empty
+  // without guide friction. State realized to Velocity.
+  SimTK::Vector frictionPowerGradient(const SimTK::State& s) const;
   // Adds every force element's applied forces to the arrays (sized for the matter subsystem),
   // element by element in the force subsystem's order: the sums Simbody forms at Dynamics stage,
   // without realizing the system to Dynamics. State realized to Velocity.

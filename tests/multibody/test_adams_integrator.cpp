@@ -152,6 +152,43 @@ TEST(AdamsIntegrator, StructuredJacobianSolvesTheSameProblemWithFewerEvaluations
   EXPECT_LT(structured.rhsEvaluations(), full.rhsEvaluations());
 }
 
+TEST(AdamsIntegrator, KnownEntriesOfKnownColumnsAreAdded) {
+  // Adds w' = c·z, an integral of the lag state (like an energy integral of a power that depends
+  // on it): z's column is known, -1/τ on the diagonal and c in w's row (given by known_entries);
+  // w's column is zero. Closed form: w = c·∫z dt =
+  //   c·[(sin ωt/ω + τ·(1 - cos ωt))/(1 + ω²τ²) + (1 - 1/(1 + ω²τ²))·τ·(1 - e^(-t/τ))].
+  const double tau = 1e-3, c = 2.0, w = 3.0;
+  AdamsProblem p = oscillatorWithLag(1e-9, tau);
+  p.rhs = [w, tau, c](double, const double* y, double* yd) {
+    yd[0] = y[1];
+    yd[1] = -w * w * y[0];
+    yd[2] = (y[0] - y[2]) / tau;
+    yd[3] = c * y[2];
+    return true;
+  };
+  p.y0 = Eigen::Vector4d(1.0, 0.0, 1.0, 0.0);
+  p.atol = Eigen::Vector4d::Constant(1e-9);
+  p.absolute_only = {false, false, false, false};
+  p.jacobian.difference_quotient = {true, true, false, false};
+  p.jacobian.diagonal = Eigen::Vector4d(0.0, 0.0, -1.0 / tau, 0.0);
+  int calls = 0;
+  p.jacobian.known_entries = [&calls, c](double, const double*, Eigen::Ref<Eigen::MatrixXd> jac) {
+    EXPECT_EQ(jac(3, 2), 0.0);  // known column: only its diagonal before the callback
+    jac(3, 2) = c;
+    ++calls;
+    return true;
+  };
+  AdamsIntegrator integ(p);
+  for (int k = 1; k <= 20; ++k) {
+    const double t = 0.1 * k, d = 1.0 + w * w * tau * tau;
+    ASSERT_TRUE(integ.advanceTo(t)) << integ.error();
+    const double exact = c * ((std::sin(w * t) / w + tau * (1.0 - std::cos(w * t))) / d +
+                              (1.0 - 1.0 / d) * tau * (1.0 - std::exp(-t / tau)));
+    EXPECT_NEAR(integ.y()(3), exact, 1e-6) << t;
+  }
+  EXPECT_EQ(calls, integ.jacobianEvaluations());
+}
+
 TEST(AdamsIntegrator, MalformedJacobianStructureIsRejected) {
   AdamsProblem p = oscillatorWithLag(1e-6, 1e-3);
   p.jacobian.difference_quotient = {true, true};  // one entry short

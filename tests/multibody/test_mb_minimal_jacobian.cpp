@@ -1,6 +1,7 @@
 // The minimal formulation's structured Newton Jacobian (difference quotients for the mechanical
-// states only, known diagonal columns for the guide-friction normal-force lags and the energy
-// integrals) against CVODE's full difference-quotient Jacobian: the neglected entries change only
+// states only; known columns for the guide-friction normal-force lags, i.e. their diagonal and
+// the friction-dissipation rate's dependence on them, and for the energy integrals) against
+// CVODE's full difference-quotient Jacobian: the neglected entries change only
 // the corrector's iteration matrix, so at a tight accuracy both runs must give the same motion,
 // coupling torque and friction normal forces. The expected values come from the full-Jacobian
 // run, i.e. CVODE's own Jacobian, not from the structured one under test.
@@ -65,6 +66,47 @@ TEST(MinimalJacobian, StructuredJacobianGivesTheFullJacobiansSolution) {
   ASSERT_GT(full.stats.jacobian_evaluations, 0);
   ASSERT_GT(structured.stats.jacobian_evaluations, 0);
   EXPECT_LT(structured.stats.realizations, full.stats.realizations);
+}
+
+// The one state-dependent known entry: ∂(friction-dissipation rate)/∂N̂, against central
+// differences of the rate the model integrates (MultibodyModel::auxiliaryRates), at a running
+// state with carts moving both ways.
+TEST(MinimalJacobian, FrictionPowerGradientMatchesDifferencesOfTheDissipationRate) {
+  const Scene sc = parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml", {});
+  const MultibodyModel model(sc);
+  SimTK::State s = model.assembledState(0.7, 10.4, 1e-3);
+  const SimTK::MultibodySystem& system = model.system();
+  const int n_normals = 2 * sc.carts.count;
+  const int row = n_normals + 2;  // z = [N̂ ..., motor work, damping, friction dissipation, load work]
+  ASSERT_EQ(model.forces().getZ(s).size(), n_normals + 4);
+  const SimTK::Vector gradient = model.frictionPowerGradient(s);
+  ASSERT_EQ(gradient.size(), n_normals);
+  const SimTK::Vector normals_now(n_normals, 0.0);  // N does not enter the dissipation rate
+  auto rate = [&](const SimTK::State& st) {
+    SimTK::Vector zdot;
+    model.auxiliaryRates(st, normals_now, zdot);
+    return zdot[row];
+  };
+  int moving = 0;
+  for (int k = 0; k < n_normals; ++k) {
+    const double n_k = model.forces().getZ(s)[k], delta = 1e-3 * std::max(std::abs(n_k), 1.0);
+    ASSERT_GT(std::abs(n_k), delta);  // away from the kink of |N̂| at 0
+    SimTK::State plus = s, minus = s;
+    model.forces().updZ(plus)[k] += delta;
+    model.forces().updZ(minus)[k] -= delta;
+    system.realize(plus, SimTK::Stage::Velocity);
+    system.realize(minus, SimTK::Stage::Velocity);
+    const double difference = (rate(plus) - rate(minus)) / (2.0 * delta);
+    EXPECT_NEAR(gradient[k], difference, 1e-9 * std::max(std::abs(difference), 1.0)) << k;
+    // Dissipated power grows with |N̂|.
+    EXPECT_GE(gradient[k] * (n_k > 0 ? 1.0 : -1.0), 0.0) << k;
+    moving += std::abs(gradient[k]) > 1e-3;
+  }
+  EXPECT_GT(moving, 0);  // the state exercises the law (carts not at rest)
+  const Scene no_friction = parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml",
+                                           {"loads.guide_friction.coefficient=0"});
+  const MultibodyModel frictionless(no_friction);
+  EXPECT_EQ(frictionless.frictionPowerGradient(frictionless.initialState()).size(), 0);
 }
 
 }  // namespace

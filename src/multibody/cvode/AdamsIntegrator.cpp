@@ -113,6 +113,15 @@ struct AdamsIntegrator::Impl {
       const double inc_inv = 1.0 / inc;
       jac.col(j) = inc_inv * f1 - inc_inv * f0;
     }
+    if (js.known_entries) {
+      try {
+        if (!js.known_entries(t, yv, jac)) return 1;
+      } catch (const std::exception& ex) {
+        self->rhs_exception = ex.what();
+        return -1;
+      }
+      if (!jac.allFinite()) return 1;
+    }
     return 0;
   }
 

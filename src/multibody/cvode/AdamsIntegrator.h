@@ -31,6 +31,10 @@ struct JacobianStructure {
   std::vector<bool> difference_quotient;  // per state: column by difference quotient
   Eigen::VectorXd diagonal;               // per state: the known column's diagonal entry
                                           // [1/s] (read where difference_quotient is false)
+  // Optional: adds state-dependent off-diagonal entries of the known columns at (t, y) to jac
+  // (n×n, already holding the difference-quotient columns and the diagonal); it must write
+  // nothing else. False: cannot be evaluated at y (CVODE then retries with a smaller step).
+  std::function<bool(double t, const double* y, Eigen::Ref<Eigen::MatrixXd> jac)> known_entries;
   bool given() const { return !difference_quotient.empty(); }
 };
 
