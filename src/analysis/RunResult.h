@@ -50,6 +50,9 @@ struct EnergyAudit {
 struct RunStats {
   long steps = 0;                  // accepted integrator steps
   long realizations = 0;           // right-hand-side evaluations (Dynamics-stage realizations)
+  long jacobian_evaluations = -1;  // Newton iteration-matrix Jacobians formed; -1: not counted
+  long newton_convergence_failures = -1;  // corrector convergence failures (each retries the step
+                                          // smaller); -1: not counted
   double cpu_seconds = 0;          // process CPU time of the integration
   double constraint_error_max = 0; // max over output rows of the constraint error norm [-]
   bool complete = true;            // false when the run ended before t_end

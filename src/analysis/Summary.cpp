@@ -119,6 +119,9 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
                                     : json(nullptr);
   j["steps"] = run.stats.steps;
   j["realizations"] = run.stats.realizations;
+  j["jacobian_evaluations"] = run.stats.jacobian_evaluations >= 0 ? json(run.stats.jacobian_evaluations) : json(nullptr);
+  j["newton_convergence_failures"] =
+      run.stats.newton_convergence_failures >= 0 ? json(run.stats.newton_convergence_failures) : json(nullptr);
   j["cpu_seconds"] = num("cpu_seconds", run.stats.cpu_seconds);
   j["real_time_factor"] = run.stats.cpu_seconds > 0
                               ? num("real_time_factor", simulated_time / run.stats.cpu_seconds)

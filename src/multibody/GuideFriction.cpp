@@ -41,6 +41,20 @@ double GuideFriction::dissipatedPower(const SimTK::State& s) const {
   return p;
 }
 
+SimTK::Vector GuideFriction::dissipatedPowerGradient(const SimTK::State& s) const {
+  // dissipatedPower = -Σ_j frictionFrom_j·v_j with frictionFrom_j = σ_j·dir_j·f·(|N̂_front,j| + |N̂_rear,j|):
+  // each N̂ enters through its magnitude, so ∂/∂N̂ = -σ_j·dir_j·f·sign(N̂)·v_j.
+  const SimTK::Vector n = frictionNormals(s);
+  SimTK::Vector grad(n.size());
+  for (size_t j = 0; j < carts_.size(); ++j) {
+    const CartRig& c = carts_[j];
+    const double v = c.v(s);
+    const double per_unit_magnitude = -c.side * frictionDirection(loads_, c.side * v) * loads_.guide_friction * v;
+    for (int k : {2 * int(j), 2 * int(j) + 1}) grad[k] = per_unit_magnitude * double((n[k] > 0) - (n[k] < 0));
+  }
+  return grad;
+}
+
 SimTK::Vector GuideFriction::currentNormals(const SimTK::State& s) const {
   SimTK::Vector_<SimTK::SpatialVec> reactions;
   matter_.calcMobilizerReactionForces(s, reactions);

@@ -39,6 +39,10 @@ class GuideFriction : public SimTK::Force::Custom::Implementation {
   double frictionForce(const SimTK::State& s, int j) const;
   // Power dissipated by guide friction [W] (≥ 0).
   double dissipatedPower(const SimTK::State& s) const;
+  // ∂(dissipated power)/∂N̂ [W/N] for each normal-force state (N_front, N_rear per cart): how
+  // the friction-dissipation integral's rate depends on N̂, for the Newton matrix of an
+  // integrator that carries that integral as a state. State realized to Velocity.
+  SimTK::Vector dissipatedPowerGradient(const SimTK::State& s) const;
   // The normal forces N̂ the friction law uses (state variables): N_front, N_rear per cart.
   SimTK::Vector frictionNormals(const SimTK::State& s) const;
   // Set N̂ (used at t = 0 to start from the reactions themselves).

@@ -64,15 +64,19 @@ class MinimalSystem {
 
   // Sets the State exactly from y (closed-form loops) and evaluates the projected dynamics.
   void set(double t, const double* y) {
-    IndependentState x;
-    x.crank_angle = y[layout_.phi];
-    if (layout_.twist >= 0) x.twist = y[layout_.twist];
-    if (layout_.omega >= 0) x.crank_speed = y[layout_.omega];
-    if (layout_.twist_rate >= 0) x.twist_rate = y[layout_.twist_rate];
-    coords_.apply(t, x, s_);
-    SimTK::Vector& z = model_.forces().updZ(s_);
-    for (int i = 0; i < z.size(); ++i) z[i] = y[layout_.z + i];
+    place(t, y);
     dyn_.evaluate(s_, coords_);
+  }
+
+  // Writes ∂(friction-dissipation rate)/∂N̂ at (t, y) into row `row` of jac, columns
+  // first_column... (one per normal-force state): the known Jacobian entries that depend on the
+  // state (see simulateMinimal).
+  bool frictionPowerEntries(double t, const double* y, int row, int first_column, Eigen::Ref<Eigen::MatrixXd> jac) {
+    place(t, y);
+    model_.system().realize(s_, SimTK::Stage::Velocity);
+    const SimTK::Vector g = model_.frictionPowerGradient(s_);
+    for (int k = 0; k < g.size(); ++k) jac(row, first_column + k) = g[k];
+    return true;
   }
 
   bool rhs(double t, const double* y, double* ydot) {
@@ -90,6 +94,18 @@ class MinimalSystem {
   }
 
  private:
+  // Sets q, u (closed-form loops) and z of the State exactly from y.
+  void place(double t, const double* y) {
+    IndependentState x;
+    x.crank_angle = y[layout_.phi];
+    if (layout_.twist >= 0) x.twist = y[layout_.twist];
+    if (layout_.omega >= 0) x.crank_speed = y[layout_.omega];
+    if (layout_.twist_rate >= 0) x.twist_rate = y[layout_.twist_rate];
+    coords_.apply(t, x, s_);
+    SimTK::Vector& z = model_.forces().updZ(s_);
+    for (int i = 0; i < z.size(); ++i) z[i] = y[layout_.z + i];
+  }
+
   // The evaluations need no constraint: the closed forms satisfy them exactly, and the projected
   // equations use only Simbody's tree operators. With the constraints disabled in the evaluation
   // state, Simbody's realization no longer computes every loop's position and velocity errors
@@ -194,9 +210,60 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
       throw std::logic_error("minimal formulation: unexpected auxiliary-state layout");
     for (int i = 0; i < n_normals; ++i) p.atol(L.z + i) = rtol * N_unit;
   }
+  // Newton matrix from a structured Jacobian (AdamsIntegrator.h): difference quotients only for
+  // the mechanical states (φ2, twist, φ̇2, twist rate: at most 4 evaluations per Jacobian instead
+  // of one per state, 72 at 32 carts), known columns for the auxiliary states:
+  //  - friction normal forces N̂ (GuideFriction.h: dN̂/dt = (N - N̂)/τ_N): diagonal -1/τ_N, and the
+  //    friction-dissipation integral's rate ∂P/∂N̂ (GuideFriction::dissipatedPowerGradient).
+  //    Neglected: N̂'s effect through the friction force on the accelerations and on N (of order
+  //    f·lever/inertia, f the friction coefficient, against 1/τ_N = 500/s at 2 ms);
+  //  - energy-audit integrals (EnergyMeter.h): their rates are powers of the forces, which do not
+  //    depend on the integrals: the column is exactly zero.
+  // The neglected entries change only the iteration matrix, never the equations solved: CVODE's
+  // corrector still converges to the same implicit Adams step and its local-error test still
+  // decides acceptance, so the solution is that of the full Jacobian to the tolerance.
+  // ∂P/∂N̂ is not neglected because the energy audit is a consistency check at the level of the
+  // corrector's convergence tolerance: with that row missing, the friction-dissipation integral
+  // lags the N̂ corrections (large: N̂ relaxes in τ_N, shorter than a step) and the audit showed
+  // outliers of 0.4·accuracy·E (stiff-coupling hard case, 1 accuracy in 12; ≤ 8e-4 with the full
+  // Jacobian, ≤ 3e-3 with this row included).
+  if (model.options().structured_jacobian) {
+    const int n_aux = L.size - L.z;
+    const int n_normals = model.hasGuideFriction() ? 2 * sc.carts.count : 0;
+    if (n_aux != n_normals + 4)
+      throw std::logic_error(
+          "minimal formulation: auxiliary states are not [friction normal forces, 4 energy integrals]");
+    p.jacobian.difference_quotient.assign(L.size, false);
+    for (int i = 0; i < L.z; ++i) p.jacobian.difference_quotient[i] = true;
+    p.jacobian.diagonal = Eigen::VectorXd::Zero(L.size);
+    if (n_normals > 0) {
+      const double tau_N = sc.loads.guide_friction_lag;
+      if (!(tau_N > 0.0) || !std::isfinite(tau_N))
+        throw std::invalid_argument(
+            "minimal formulation: loads.guide_friction.normal_force_lag must be a positive time [s], got " +
+            std::to_string(tau_N));
+      p.jacobian.diagonal.segment(L.z, n_normals).setConstant(-1.0 / tau_N);
+      // Energy integrals in EnergyMeter.h's order: motor work, damping, friction, load work.
+      const int row_friction_dissipation = L.z + n_normals + 2, first_normal = L.z;
+      p.jacobian.known_entries = [&ms, row_friction_dissipation, first_normal](
+                                     double t, const double* y, Eigen::Ref<Eigen::MatrixXd> jac) {
+        return ms.frictionPowerEntries(t, y, row_friction_dissipation, first_normal, jac);
+      };
+    }
+  }
   // Cam drive: same step cap as the reduced model (ReducedIntegrators.cpp): the right-hand side
   // is constant over most of a stroke and an unbounded step leaps across a reversal.
   if (sc.hasCamDrive()) p.max_step = (M_PI / 6.0) / w_ref / 8.0;
+  // Highest Adams-Moulton order 5: the friction normal-force lag puts an eigenvalue λ = -1/τ_N
+  // (-500 1/s at 2 ms) in every run with guide friction, at hλ ≈ -0.5 ... -2 for the 1-4 ms
+  // steps of accuracies 1e-4 ... 1e-8. Adams-Moulton's stability interval on the negative real
+  // axis shrinks with the order (about [-1.8, 0] at order 5, [-1.2, 0] at 6, shorter above), so
+  // a run that climbs above order 5 there is intermittently unstable in that mode, which its
+  // error estimate sees only after the damage: measured on recuperative-2cart without gravity,
+  // 1 s at accuracy 0.7e-10 ... 1.5e-10, coupling-torque error 1.9e-10 ... 7.2e-10 with order ≤ 5
+  // against 4.2e-10 ... 2.9e-8 with order ≤ 12; balanced-4cart (10 s, accuracy 1e-2 ... 1e-6)
+  // costs the same either way (CVODE seldom goes above order 5 there).
+  p.max_order = 5;
   p.rhs = [&ms](double t, const double* y, double* ydot) { return ms.rhs(t, y, ydot); };
   AdamsIntegrator integ(p);
 
@@ -288,6 +355,8 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   run.stats.steps = integ.steps();
   run.stats.realizations = integ.rhsEvaluations();
+  run.stats.jacobian_evaluations = integ.jacobianEvaluations();
+  run.stats.newton_convergence_failures = integ.newtonConvergenceFailures();
 
   ms.set(t_last, y_last.data());
   system.realize(ms.state(), SimTK::Stage::Dynamics);

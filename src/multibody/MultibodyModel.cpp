@@ -250,6 +250,10 @@ void MultibodyModel::auxiliaryRates(const SimTK::State& s, const SimTK::Vector& 
   if (friction_force_) friction_force_->calcRates(s, guide_normals_now, zdot);
 }
 
+SimTK::Vector MultibodyModel::frictionPowerGradient(const SimTK::State& s) const {
+  return friction_force_ ? friction_force_->dissipatedPowerGradient(s) : SimTK::Vector();
+}
+
 void MultibodyModel::addAppliedForces(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
                                       SimTK::Vector_<SimTK::Vec3>& particle_forces,
                                       SimTK::Vector& mobility_forces) const {

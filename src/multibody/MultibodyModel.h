@@ -40,6 +40,8 @@ class EnergyMeter;
 struct MultibodyOptions {
   bool prescribe_crank_speed = false;  // drive the crankshaft at a constant speed (Motion::Steady)
   double crank_speed = 0.0;            // that speed [rad/s]
+  bool structured_jacobian = true;     // minimal formulation: Newton Jacobian by difference quotients
+                                       // of the mechanical states only (false: of every state)
 };
 
 // What the built system contains, for `rollerdyn check` and for tests.
@@ -91,6 +93,9 @@ class MultibodyModel {
   // Simbody's joint reactions.
   void auxiliaryRates(const SimTK::State& s, const SimTK::Vector& guide_normals_now,
                       SimTK::Vector& zdot) const;
+  // ∂(friction-dissipation rate)/∂N̂ [W/N] per guide normal-force state (GuideFriction.h); empty
+  // without guide friction. State realized to Velocity.
+  SimTK::Vector frictionPowerGradient(const SimTK::State& s) const;
   // Adds every force element's applied forces to the arrays (sized for the matter subsystem),
   // element by element in the force subsystem's order: the sums Simbody forms at Dynamics stage,
   // without realizing the system to Dynamics. State realized to Velocity.

@@ -92,12 +92,23 @@ TEST(Summary, HasRequiredKeysAndValues) {
   EXPECT_DOUBLE_EQ(j["energy"]["residual"].get<double>(), 0.0);
   EXPECT_EQ(j["steps"], 1234);
   EXPECT_EQ(j["realizations"], 5678);
+  EXPECT_TRUE(j["jacobian_evaluations"].is_null());  // not counted by this integrator
+  EXPECT_TRUE(j["newton_convergence_failures"].is_null());
   const double simulated = j["simulated_time"].get<double>();
   EXPECT_NEAR(j["real_time_factor"].get<double>(), simulated / 0.5, 1e-9);
   ASSERT_TRUE(j["reactions"].contains("F_rod_1"));
   EXPECT_NEAR(j["reactions"]["F_rod_1"]["abs_max"].get<double>(), 2500.0, 0.5);
   EXPECT_NEAR(j["reactions"]["F_rod_1"]["mean"].get<double>(), -2000.0, 1.0);
   EXPECT_FALSE(j["reactions"].contains("t"));
+}
+
+TEST(Summary, NewtonCountersAreWrittenWhenCounted) {
+  RunResult r = testRun();
+  r.stats.jacobian_evaluations = 12;
+  r.stats.newton_convergence_failures = 3;
+  const json j = makeSummary(testScene(), r);
+  EXPECT_EQ(j["jacobian_evaluations"], 12);
+  EXPECT_EQ(j["newton_convergence_failures"], 3);
 }
 
 TEST(Summary, NaNInputGivesValidJsonWithNullsAndStatusSaysSo) {

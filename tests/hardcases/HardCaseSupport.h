@@ -37,6 +37,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,18 @@ struct Claims {
   double speed = 0;   // C_ω: max_t |ω_a − ω_{a/10}| <= C_ω·a·W
   double torque = 0;  // C_M: max_t |M_a − M_{a/10}| <= C_M·a·M
 };
+
+// ROLLERDYN_HARDCASE_ACCURACY_SCALE (default 1) multiplies every case's accuracy a: the way the
+// constants are measured over several step sequences (see the file comment). Not for CI.
+inline double accuracyScale() {
+  const char* v = std::getenv("ROLLERDYN_HARDCASE_ACCURACY_SCALE");
+  if (!v || !*v) return 1.0;
+  char* end = nullptr;
+  const double x = std::strtod(v, &end);
+  if (*end != '\0' || !(x > 0.0))
+    throw std::invalid_argument(std::string("ROLLERDYN_HARDCASE_ACCURACY_SCALE: expected a positive number, got '") + v + "'");
+  return x;
+}
 
 inline double energyTolerance(double accuracy, double energy_scale, double claim) {
   return (claim * accuracy + kRoundoffFloor) * energy_scale;
@@ -189,6 +202,7 @@ inline CasePair checkCase(Model model, const Scene& scene, double a, const Expec
   EXPECT_GT(claim.energy, 0.0) << who << ": no energy error constant claimed";
   EXPECT_GT(claim.speed, 0.0) << who << ": no speed error constant claimed";
   EXPECT_GT(claim.torque, 0.0) << who << ": no coupling-torque error constant claimed";
+  a *= accuracyScale();
   CasePair p;
   RunResult &r1 = p.at_a, &r2 = p.at_a10;
   const Scene s1 = withAccuracy(scene, a), s2 = withAccuracy(scene, a / 10.0);

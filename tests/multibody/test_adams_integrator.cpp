@@ -45,6 +45,8 @@ TEST(AdamsIntegrator, OscillatorMatchesClosedFormAndConvergesWithTolerance) {
     previous = err;
     EXPECT_GT(integ.steps(), 0);
     EXPECT_GE(integ.rhsEvaluations(), integ.steps());
+    EXPECT_GE(integ.jacobianEvaluations(), 1);  // Newton: at least the first step's matrix
+    EXPECT_GE(integ.newtonConvergenceFailures(), 0);
   }
 }
 
@@ -54,6 +56,7 @@ TEST(AdamsIntegrator, FixedPointIterationSolvesTheSameProblem) {
   AdamsIntegrator integ(p);
   ASSERT_TRUE(integ.advanceTo(2.0)) << integ.error();
   EXPECT_NEAR(integ.y()(0), std::cos(6.0), 1e-6);
+  EXPECT_EQ(integ.jacobianEvaluations(), 0);  // no Jacobian without Newton
 }
 
 TEST(AdamsIntegrator, AbsoluteOnlyStateIgnoresItsMagnitude) {
@@ -101,6 +104,101 @@ TEST(AdamsIntegrator, ThrowingRightHandSideEndsTheRunWithItsMessage) {
 TEST(AdamsIntegrator, MismatchedToleranceSizesAreRejected) {
   AdamsProblem p = oscillator(1e-6);
   p.absolute_only = {false};
+  EXPECT_THROW(AdamsIntegrator{p}, std::invalid_argument);
+}
+
+// The oscillator plus a fast first-order lag that follows it and feeds nothing back:
+// ż = (x - z)/τ, z(0) = 1. Its Jacobian column is exactly (0, 0, -1/τ), so a structure that gives
+// it as known is exact. With x = cos ωt the closed form is
+//   z = (cos ωt + ωτ·sin ωt)/(1 + ω²τ²) + (1 - 1/(1 + ω²τ²))·e^(-t/τ).
+AdamsProblem oscillatorWithLag(double rtol, double tau) {
+  AdamsProblem p = oscillator(rtol);
+  const double w = 3.0;
+  p.rhs = [w, tau](double, const double* y, double* yd) {
+    yd[0] = y[1];
+    yd[1] = -w * w * y[0];
+    yd[2] = (y[0] - y[2]) / tau;
+    return true;
+  };
+  p.y0 = Eigen::Vector3d(1.0, 0.0, 1.0);
+  p.atol = Eigen::Vector3d::Constant(rtol);
+  p.absolute_only = {false, false, false};
+  return p;
+}
+
+double lagExact(double t, double tau) {
+  const double w = 3.0, d = 1.0 + w * w * tau * tau;
+  return (std::cos(w * t) + w * tau * std::sin(w * t)) / d + (1.0 - 1.0 / d) * std::exp(-t / tau);
+}
+
+TEST(AdamsIntegrator, StructuredJacobianSolvesTheSameProblemWithFewerEvaluations) {
+  const double tau = 1e-3;  // stiff against the step the oscillator needs: Newton has work to do
+  AdamsProblem full_problem = oscillatorWithLag(1e-9, tau);
+  AdamsProblem structured_problem = full_problem;
+  structured_problem.jacobian.difference_quotient = {true, true, false};
+  structured_problem.jacobian.diagonal = Eigen::Vector3d(0.0, 0.0, -1.0 / tau);
+  AdamsIntegrator full(full_problem), structured(structured_problem);
+  for (int k = 1; k <= 20; ++k) {
+    const double t = 0.1 * k;
+    ASSERT_TRUE(full.advanceTo(t)) << full.error();
+    ASSERT_TRUE(structured.advanceTo(t)) << structured.error();
+    EXPECT_NEAR(structured.y()(0), std::cos(3.0 * t), 1e-6) << t;
+    EXPECT_NEAR(structured.y()(2), lagExact(t, tau), 1e-6) << t;
+    EXPECT_NEAR(full.y()(2), lagExact(t, tau), 1e-6) << t;
+    EXPECT_NEAR(structured.y()(2), full.y()(2), 1e-8) << t;
+  }
+  ASSERT_GT(structured.jacobianEvaluations(), 0);
+  // Two difference-quotient columns per Jacobian instead of three.
+  EXPECT_LT(structured.rhsEvaluations(), full.rhsEvaluations());
+}
+
+TEST(AdamsIntegrator, KnownEntriesOfKnownColumnsAreAdded) {
+  // Adds w' = c·z, an integral of the lag state (like an energy integral of a power that depends
+  // on it): z's column is known, -1/τ on the diagonal and c in w's row (given by known_entries);
+  // w's column is zero. Closed form: w = c·∫z dt =
+  //   c·[(sin ωt/ω + τ·(1 - cos ωt))/(1 + ω²τ²) + (1 - 1/(1 + ω²τ²))·τ·(1 - e^(-t/τ))].
+  const double tau = 1e-3, c = 2.0, w = 3.0;
+  AdamsProblem p = oscillatorWithLag(1e-9, tau);
+  p.rhs = [w, tau, c](double, const double* y, double* yd) {
+    yd[0] = y[1];
+    yd[1] = -w * w * y[0];
+    yd[2] = (y[0] - y[2]) / tau;
+    yd[3] = c * y[2];
+    return true;
+  };
+  p.y0 = Eigen::Vector4d(1.0, 0.0, 1.0, 0.0);
+  p.atol = Eigen::Vector4d::Constant(1e-9);
+  p.absolute_only = {false, false, false, false};
+  p.jacobian.difference_quotient = {true, true, false, false};
+  p.jacobian.diagonal = Eigen::Vector4d(0.0, 0.0, -1.0 / tau, 0.0);
+  int calls = 0;
+  p.jacobian.known_entries = [&calls, c](double, const double*, Eigen::Ref<Eigen::MatrixXd> jac) {
+    EXPECT_EQ(jac(3, 2), 0.0);  // known column: only its diagonal before the callback
+    jac(3, 2) = c;
+    ++calls;
+    return true;
+  };
+  AdamsIntegrator integ(p);
+  for (int k = 1; k <= 20; ++k) {
+    const double t = 0.1 * k, d = 1.0 + w * w * tau * tau;
+    ASSERT_TRUE(integ.advanceTo(t)) << integ.error();
+    const double exact = c * ((std::sin(w * t) / w + tau * (1.0 - std::cos(w * t))) / d +
+                              (1.0 - 1.0 / d) * tau * (1.0 - std::exp(-t / tau)));
+    EXPECT_NEAR(integ.y()(3), exact, 1e-6) << t;
+  }
+  EXPECT_EQ(calls, integ.jacobianEvaluations());
+}
+
+TEST(AdamsIntegrator, MalformedJacobianStructureIsRejected) {
+  AdamsProblem p = oscillatorWithLag(1e-6, 1e-3);
+  p.jacobian.difference_quotient = {true, true};  // one entry short
+  p.jacobian.diagonal = Eigen::Vector2d::Zero();
+  EXPECT_THROW(AdamsIntegrator{p}, std::invalid_argument);
+  p.jacobian.difference_quotient = {true, true, false};
+  p.jacobian.diagonal = Eigen::Vector3d(0.0, 0.0, std::nan(""));  // known column without a value
+  EXPECT_THROW(AdamsIntegrator{p}, std::invalid_argument);
+  p.jacobian.diagonal = Eigen::Vector3d(0.0, 0.0, -1e3);
+  p.newton = false;  // a Jacobian needs the Newton corrector
   EXPECT_THROW(AdamsIntegrator{p}, std::invalid_argument);
 }
 

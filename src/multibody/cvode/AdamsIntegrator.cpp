@@ -1,10 +1,13 @@
 #include "multibody/cvode/AdamsIntegrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 
 #include <cvode/cvode.h>
+#include <cvode/cvode_ls.h>
 #include <nvector/nvector_serial.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
@@ -17,6 +20,7 @@ struct AdamsIntegrator::Impl {
   AdamsProblem problem;
   SUNContext ctx = nullptr;
   N_Vector y = nullptr;
+  N_Vector ewt = nullptr;  // CVODE's error weights, copied for the structured Jacobian
   void* cv = nullptr;
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
@@ -32,6 +36,7 @@ struct AdamsIntegrator::Impl {
     if (NLS) SUNNonlinSolFree(NLS);
     if (LS) SUNLinSolFree(LS);
     if (A) SUNMatDestroy(A);
+    if (ewt) N_VDestroy(ewt);
     if (y) N_VDestroy(y);
     if (ctx) SUNContext_Free(&ctx);
   }
@@ -68,6 +73,58 @@ struct AdamsIntegrator::Impl {
     return 0;
   }
 
+  // The Jacobian of a structured problem (AdamsProblem::jacobian): difference-quotient columns
+  // exactly as CVODE's own dense one forms them (cvLsDenseDQJac in SUNDIALS' cvode_ls.c), so
+  // those columns are the same numbers, and the known columns from the problem.
+  //   increment of y_j: max(sqrt(uround)·|y_j|, minInc/ewt_j),
+  //   minInc = 1000·|h|·uround·n·‖f(y)‖_WRMS (1 when f(y) = 0).
+  static int jacobian(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector tmp1,
+                      N_Vector, N_Vector) {
+    auto* self = static_cast<Impl*>(user);
+    const JacobianStructure& js = self->problem.jacobian;
+    const long n = NV_LENGTH_S(y);
+    if (CVodeGetErrWeights(self->cv, self->ewt) != CV_SUCCESS) return -1;
+    // The step h being attempted: CVODE's γ = h·rl1 with rl1 = 1/l1 of the current method.
+    realtype t_cur, gamma, rl1;
+    N_Vector y_pred, y_n, f_n, zn1;
+    void* data;
+    const int got = CVodeGetNonlinearSystemData(self->cv, &t_cur, &y_pred, &y_n, &f_n, &gamma, &rl1, &zn1, &data);
+    if (got != CV_SUCCESS || !(rl1 != 0.0)) return -1;
+    const double h = gamma / rl1;
+    const double uround = std::numeric_limits<double>::epsilon();  // SUNDIALS' UNIT_ROUNDOFF
+    const Eigen::Map<const Eigen::VectorXd> f0(NV_DATA_S(fy), n), w(NV_DATA_S(self->ewt), n),
+        f1(NV_DATA_S(tmp1), n);
+    const double f_norm = std::sqrt((f0.cwiseProduct(w)).squaredNorm() / double(n));
+    const double min_inc = f_norm != 0.0 ? 1000.0 * std::abs(h) * uround * double(n) * f_norm : 1.0;
+    Eigen::Map<Eigen::MatrixXd> jac(SUNDenseMatrix_Data(J), n, n);  // column-major, like SUNDIALS
+    jac.setZero();
+    double* yv = NV_DATA_S(y);
+    for (long j = 0; j < n; ++j) {
+      if (!js.difference_quotient[j]) {
+        jac(j, j) = js.diagonal(j);
+        continue;
+      }
+      const double y_saved = yv[j];
+      const double inc = std::max(std::sqrt(uround) * std::abs(y_saved), min_inc / w(j));
+      yv[j] += inc;
+      const int flag = rhs(t, y, tmp1, user);
+      yv[j] = y_saved;
+      if (flag != 0) return flag;
+      const double inc_inv = 1.0 / inc;
+      jac.col(j) = inc_inv * f1 - inc_inv * f0;
+    }
+    if (js.known_entries) {
+      try {
+        if (!js.known_entries(t, yv, jac)) return 1;
+      } catch (const std::exception& ex) {
+        self->rhs_exception = ex.what();
+        return -1;
+      }
+      if (!jac.allFinite()) return 1;
+    }
+    return 0;
+  }
+
   static void errHandler(int, const char*, const char* function, char* msg, void* user) {
     static_cast<Impl*>(user)->error = std::string(function ? function : "") + ": " + (msg ? msg : "");
   }
@@ -79,6 +136,18 @@ AdamsIntegrator::AdamsIntegrator(const AdamsProblem& problem) : impl_(new Impl) 
   const int n = int(problem.y0.size());
   if (problem.atol.size() != n || int(problem.absolute_only.size()) != n)
     throw std::invalid_argument("AdamsIntegrator: atol and absolute_only need one entry per state");
+  const JacobianStructure& js = problem.jacobian;
+  if (js.given()) {
+    if (!problem.newton)
+      throw std::invalid_argument("AdamsIntegrator: a Jacobian structure needs the Newton corrector");
+    if (int(js.difference_quotient.size()) != n || js.diagonal.size() != n)
+      throw std::invalid_argument("AdamsIntegrator: the Jacobian structure needs one entry per state (" +
+                                  std::to_string(n) + ")");
+    for (int j = 0; j < n; ++j)
+      if (!js.difference_quotient[j] && !std::isfinite(js.diagonal(j)))
+        throw std::invalid_argument("AdamsIntegrator: known Jacobian column " + std::to_string(j) +
+                                    " has a non-finite diagonal");
+  }
   if (SUNContext_Create(nullptr, &m.ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
   m.y = N_VNew_Serial(n, m.ctx);
   useEigenVectorOps(m.y);  // before CVodeInit clones it (EigenSundials.h)
@@ -94,11 +163,18 @@ AdamsIntegrator::AdamsIntegrator(const AdamsProblem& problem) : impl_(new Impl) 
     m.A = SUNDenseMatrix(n, n, m.ctx);
     m.LS = makeEigenDenseSolver(n, m.ctx);
     if (flag == CV_SUCCESS) flag = CVodeSetLinearSolver(m.cv, m.LS, m.A);
+    if (problem.jacobian.given()) {
+      m.ewt = N_VClone(m.y);
+      if (flag == CV_SUCCESS) flag = CVodeSetJacFn(m.cv, Impl::jacobian);
+    }
   } else {
     m.NLS = SUNNonlinSol_FixedPoint(m.y, 0, m.ctx);
     if (flag == CV_SUCCESS) flag = CVodeSetNonlinearSolver(m.cv, m.NLS);
   }
   if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(m.cv, 1000000);
+  if (problem.max_order < 1 || problem.max_order > 12)
+    throw std::invalid_argument("AdamsIntegrator: max_order must be 1 ... 12, got " + std::to_string(problem.max_order));
+  if (flag == CV_SUCCESS) flag = CVodeSetMaxOrd(m.cv, problem.max_order);
   if (flag == CV_SUCCESS) flag = CVodeSetStopTime(m.cv, problem.stop_time);
   if (flag == CV_SUCCESS && problem.max_step > 0) flag = CVodeSetMaxStep(m.cv, problem.max_step);
   if (flag != CV_SUCCESS) throw std::runtime_error("CVODE setup failed: " + m.error);
@@ -130,6 +206,16 @@ long AdamsIntegrator::steps() const {
   return n;
 }
 long AdamsIntegrator::rhsEvaluations() const { return impl_->rhs_evals; }
+long AdamsIntegrator::jacobianEvaluations() const {
+  long n = 0;
+  if (impl_->LS) CVodeGetNumJacEvals(impl_->cv, &n);
+  return n;
+}
+long AdamsIntegrator::newtonConvergenceFailures() const {
+  long n = 0;
+  CVodeGetNumNonlinSolvConvFails(impl_->cv, &n);
+  return n;
+}
 const std::string& AdamsIntegrator::error() const { return impl_->error; }
 
 }  // namespace rollerdyn

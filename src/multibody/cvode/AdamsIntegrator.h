@@ -17,6 +17,27 @@
 
 namespace rollerdyn {
 
+// Structure of the Jacobian ∂f/∂y that the Newton corrector's matrix I - γ·∂f/∂y is built from.
+// Empty (the default): CVODE's dense difference quotients over every state, one evaluation of f
+// per state. Otherwise one entry per state: difference_quotient[j] true forms column j by a
+// difference quotient with CVODE's own increment; false takes column j as known, with
+// diagonal(j) on the diagonal and zeros elsewhere (e.g. a first-order lag dz/dt = (x - z)/τ:
+// diagonal -1/τ; an integral of powers that do not depend on it: 0).
+// Neglected entries only change the iteration matrix, not the equations being solved: the
+// corrector still drives the residual of the implicit Adams formula to CVODE's tolerance and the
+// local-error test still accepts or rejects each step, so accuracy is unchanged; a poor matrix
+// shows as more corrector iterations or convergence failures (counted below).
+struct JacobianStructure {
+  std::vector<bool> difference_quotient;  // per state: column by difference quotient
+  Eigen::VectorXd diagonal;               // per state: the known column's diagonal entry
+                                          // [1/s] (read where difference_quotient is false)
+  // Optional: adds state-dependent off-diagonal entries of the known columns at (t, y) to jac
+  // (n×n, already holding the difference-quotient columns and the diagonal); it must write
+  // nothing else. False: cannot be evaluated at y (CVODE then retries with a smaller step).
+  std::function<bool(double t, const double* y, Eigen::Ref<Eigen::MatrixXd> jac)> known_entries;
+  bool given() const { return !difference_quotient.empty(); }
+};
+
 struct AdamsProblem {
   // ẏ = f(t, y); returns false when f cannot be evaluated at y (CVODE then retries with a
   // smaller step).
@@ -29,8 +50,10 @@ struct AdamsProblem {
   std::vector<bool> absolute_only;  // states held to atol alone (angles: an error of 1e-6 rad
                                     // means the same after one turn or a thousand)
   double max_step = 0;        // largest step [s]; 0: unbounded
-  bool newton = true;         // Newton corrector on a dense difference-quotient Jacobian;
+  int max_order = 12;         // highest Adams-Moulton order CVODE may use (1 ... 12) [-]
+  bool newton = true;         // Newton corrector on a dense Jacobian (structure below);
                               // false: fixed-point (functional) iteration
+  JacobianStructure jacobian; // Newton only; empty: difference quotients for every column
 };
 
 class AdamsIntegrator {
@@ -47,6 +70,8 @@ class AdamsIntegrator {
   const Eigen::VectorXd& y() const;
   long steps() const;
   long rhsEvaluations() const;  // including the difference-quotient Jacobian's
+  long jacobianEvaluations() const;        // Jacobians formed for the Newton matrix (0: fixed point)
+  long newtonConvergenceFailures() const;  // corrector convergence failures
   const std::string& error() const;
 
  private:
