@@ -40,11 +40,13 @@ class MinimalSystem {
   SimTK::State& state() { return s_; }
   // The last set() state in a copy with the model's constraints, realized to Acceleration:
   // Simbody's full constrained solve, for the reaction columns and the self-check.
-  const SimTK::State& constrainedState() {
-    constrained_.updTime() = s_.getTime();
-    constrained_.updQ() = s_.getQ();
-    constrained_.updU() = s_.getU();
-    constrained_.updZ() = s_.getZ();
+  // Sets the copy of the state that keeps the model's constraints exactly from y, evaluates the
+  // projected dynamics on it (which realizes it to Velocity) and then lets Simbody do its full
+  // constrained solve (realization to Acceleration, from Velocity on): the reaction columns and
+  // the self-check at an output row, with Position and Velocity realized once.
+  const SimTK::State& setConstrained(double t, const double* y) {
+    place(t, y, constrained_);
+    dyn_.evaluate(constrained_, coords_);
     model_.system().realize(constrained_, SimTK::Stage::Acceleration);
     return constrained_;
   }
@@ -95,14 +97,15 @@ class MinimalSystem {
 
  private:
   // Sets q, u (closed-form loops) and z of the State exactly from y.
-  void place(double t, const double* y) {
+  void place(double t, const double* y) { place(t, y, s_); }
+  void place(double t, const double* y, SimTK::State& s) {
     IndependentState x;
     x.crank_angle = y[layout_.phi];
     if (layout_.twist >= 0) x.twist = y[layout_.twist];
     if (layout_.omega >= 0) x.crank_speed = y[layout_.omega];
     if (layout_.twist_rate >= 0) x.twist_rate = y[layout_.twist_rate];
-    coords_.apply(t, x, s_);
-    SimTK::Vector& z = model_.forces().updZ(s_);
+    coords_.apply(t, x, s);
+    SimTK::Vector& z = model_.forces().updZ(s);
     for (int i = 0; i < z.size(); ++i) z[i] = y[layout_.z + i];
   }
 
@@ -299,15 +302,18 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   };
   // Returns false when the run must stop (non-finite row, stall, interrupt).
   auto record = [&](std::size_t k, double t, const Eigen::VectorXd& y) {
-    ms.set(t, y.data());
-    const SimTK::State& s = ms.state();
-    udot_projected = ms.dynamics().udot();
     const bool check_row = reactions || k % kSelfCheckStride == 0;
     const SimTK::State* constrained = nullptr;
     if (check_row) {
-      if (friction) normals_projected = ms.dynamics().guideNormals(s);
-      const SimTK::State& sc = ms.constrainedState();  // Simbody's full constrained solve
-      constrained = &sc;
+      constrained = &ms.setConstrained(t, y.data());  // Simbody's full constrained solve
+    } else {
+      ms.set(t, y.data());
+    }
+    const SimTK::State& s = check_row ? *constrained : ms.state();
+    udot_projected = ms.dynamics().udot();
+    if (check_row) {
+      const SimTK::State& sc = *constrained;
+      if (friction) normals_projected = ms.dynamics().guideNormals(sc);
       model.observeReactions(sc, re_row);
       selfCheck(sc, re_row);
       if (reactions) run.reactions.rows.push_back(re_row);
