@@ -234,7 +234,8 @@ std::vector<std::string> writeIntegratorStudy(const std::string& dir, const Scen
   std::string notes;
   for (bool coupling : {false, true}) {
     PlotSpec spec;
-    spec.title = scene.name + ": work-precision, " + (coupling ? "coupling torque" : "crank speed");
+    spec.title = scene.name + ": work-precision, " + (coupling ? "coupling torque" : "crank speed") +
+                 (scene.simulation.reactions ? "" : " (without joint reactions)");
     spec.xlabel = "CPU time [s]";
     spec.ylabel = coupling ? "max |M_{c} - M_{c,ref}| / max |M_{c,ref}| [-]" : "max |ω - ω_{ref}| / max |ω_{ref}| [-]";
     spec.logx = spec.logy = true;
@@ -264,7 +265,8 @@ std::vector<std::string> writeCartsStudy(const std::string& dir, const Scene& sc
   writeFileAtomic(dir + "/carts.csv", rowsCsv(rows));
   written.push_back(dir + "/carts.csv");
   PlotSpec spec;
-  spec.title = scene.name + ": CPU time per cart vs number of carts";
+  spec.title = scene.name + ": CPU time per cart vs number of carts" +
+               (scene.simulation.reactions ? "" : " (without joint reactions)");
   spec.xlabel = "carts n [-]";
   spec.ylabel = "CPU time / n [s]";
   spec.logx = spec.logy = true;
