@@ -38,8 +38,6 @@ class MinimalSystem {
   const Layout& layout() const { return layout_; }
   // The evaluation state (constraints disabled: see withoutConstraints).
   SimTK::State& state() { return s_; }
-  // The last set() state in a copy with the model's constraints, realized to Acceleration:
-  // Simbody's full constrained solve, for the reaction columns and the self-check.
   // Sets the copy of the state that keeps the model's constraints exactly from y, evaluates the
   // projected dynamics on it (which realizes it to Velocity) and then lets Simbody do its full
   // constrained solve (realization to Acceleration, from Velocity on): the reaction columns and
