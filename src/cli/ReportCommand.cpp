@@ -6,17 +6,14 @@
 
 #include "analysis/Summary.h"
 #include "cli/Commands.h"
-#include "cli/Progress.h"
+#include "cli/RunOutputs.h"
 #include "io/AtomicFile.h"
-#include "multibody/MultibodySimulation.h"
 #include "report/HtmlReport.h"
 #include "report/OutputDir.h"
 #include "report/OutputFolder.h"
 #include "report/RunFigures.h"
 #include "report/SceneTable.h"
 #include "scene/SceneParser.h"
-#include "studies/ResonanceCheck.h"
-#include "studies/StartLoad.h"
 
 namespace rollerdyn::cli {
 
@@ -29,21 +26,8 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   // nothing if it did not.
   const std::vector<SceneParameterRow> parameters = sceneParameterRows(args.scene_path, args.overrides);
 
-  RunResult run;
-  {
-    Progress progress;
-    RunControl control;
-    control.interrupt = &g_interrupted;
-    control.progress = [&progress](double t, double t_end) { progress(t, t_end); };
-    run = runMultibodyModel(scene, control);
-  }
-  writeRunTables(out_dir, run);
-  const StartLoad start_load = startLoadOf(scene);  // explains a stall
-  auto summary = makeSummary(scene, run, &start_load);
-  summary["scene_path"] = absolutePath(args.scene_path);  // `plot DIR` finds it from anywhere
-  for (const std::string& w : addResonanceWarnings(scene, summary))  // as simulate does
-    std::cerr << "rollerdyn: warning: " << w << '\n';
-  writeSummaryAtomic(out_dir + "/summary.json", summary);
+  const RunResult run = runMultibodyWithProgress(scene);
+  const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir);
 
   const OutputFolder folder = outputFolderOf(out_dir, run, summary);
   const FigureSet figures = drawRunFigures(folder, &scene, (fs::path(out_dir) / "figures").string());

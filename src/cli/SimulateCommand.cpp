@@ -7,12 +7,8 @@
 
 #include "analysis/SizingSummary.h"
 #include "analysis/Summary.h"
-#include "studies/ResonanceCheck.h"
-#include "studies/StartLoad.h"
 #include "cli/Commands.h"
-#include "cli/Progress.h"
-#include "io/AtomicFile.h"
-#include "multibody/MultibodySimulation.h"
+#include "cli/RunOutputs.h"
 #include "reduced/ReducedModel.h"
 #include "report/OutputDir.h"
 #include "report/OutputFolder.h"
@@ -35,23 +31,13 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   prepareOutputDir(out_dir, StaleOutputs::RunFiguresAndReport);  // before the run: a bad --out fails now
   RunResult run;
   if (model == "multibody") {
-    Progress progress;
-    RunControl control;
-    control.interrupt = &g_interrupted;
-    control.progress = [&progress](double t, double t_end) { progress(t, t_end); };
-    run = runMultibodyModel(scene, control);
+    run = runMultibodyWithProgress(scene);
   } else if (model == "reduced") {
     run = runReducedModel(scene);
   } else {
     throw std::invalid_argument("--model: expected multibody or reduced, got '" + model + "'");
   }
-  writeRunTables(out_dir, run);
-  const StartLoad start_load = startLoadOf(scene);  // explains a stall
-  auto summary = makeSummary(scene, run, &start_load);
-  summary["scene_path"] = absolutePath(args.scene_path);  // `plot DIR` finds it from anywhere
-  for (const std::string& w : addResonanceWarnings(scene, summary))  // Dyomin (two rotors) eq. (10)
-    std::cerr << "rollerdyn: warning: " << w << '\n';
-  writeSummaryAtomic(out_dir + "/summary.json", summary);
+  const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir);
   std::cout << summaryText(summary) << sizingText(summary) << "outputs in " << out_dir << "/\n";
   if (plot)  // figures from the tables in memory and the scene with its overrides
     std::cout << figureSetText(drawRunFigures(outputFolderOf(out_dir, run, summary), &scene, out_dir + "/figures"),

@@ -1,0 +1,24 @@
+// What `simulate` and `report` share around one run: the multibody model with the console's
+// progress line, and the run's files in its output folder.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/RunResult.h"
+#include "scene/Scene.h"
+
+namespace rollerdyn::cli {
+
+// The multibody model on `scene`, printing its progress and stopping at the next output row on
+// Ctrl-C (g_interrupted, Commands.h).
+RunResult runMultibodyWithProgress(const Scene& scene);
+
+// Writes the run's tables (writeRunTables) and summary.json, with the scene file's absolute path
+// so `plot DIR` finds it from anywhere, into out_dir; prints the resonance warnings (Dyomin (two
+// rotors) eq. (10)) on stderr. Returns the summary.
+nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
+                               const std::string& out_dir);
+
+}  // namespace rollerdyn::cli
