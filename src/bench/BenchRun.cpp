@@ -1,20 +1,17 @@
 #include "bench/BenchRun.h"
-#include "io/Pipe.h"
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "io/ChildProcess.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
 
@@ -210,27 +207,8 @@ bool deserialize(const std::string& text, OneRun& r, double& energy_rel) {
 }
 
 OneRun runIsolated(const Scene& scene, const SolverSetting& setting, const Budget& budget, double& energy_rel) {
-  OneRun r;
-  int fds[2];
-  if (::pipe(fds) != 0) {  // no isolation available: run in this process
-    r = runOnce(scene, setting, budget);
-    energy_rel = r.run.energy.residualRelative();
-    return r;
-  }
-  std::fflush(nullptr);
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    r = runOnce(scene, setting, budget);
-    energy_rel = r.run.energy.residualRelative();
-    return r;
-  }
-  if (pid == 0) {  // child
-    ::close(fds[0]);
-    const rlim_t soft = rlim_t(std::ceil(1.5 * budget.cpu_seconds + 2.0));
-    const struct rlimit lim = {soft, soft + 2};
-    ::setrlimit(RLIMIT_CPU, &lim);
+  const long soft = long(std::ceil(1.5 * budget.cpu_seconds + 2.0));
+  const std::optional<ChildOutcome> child = runInChild(soft, soft + 2, [&] {
     OneRun first = runOnce(scene, setting, budget);
     // Process CPU time is accounted in scheduler ticks (milliseconds on this kind of VM), so a run
     // of a few milliseconds (the reduced model) reads 0 or one tick. Short usable runs are
@@ -245,32 +223,29 @@ OneRun runIsolated(const Scene& scene, const SolverSetting& setting, const Budge
       }
       first.run.stats.cpu_seconds = (cpuNow() - c0) / n;
     }
-    writeAllToFd(fds[1], serialize(first));
-    ::close(fds[1]);
-    ::_exit(0);
+    return serialize(first);
+  });
+  OneRun r;
+  if (!child) {  // no isolation available: run in this process
+    r = runOnce(scene, setting, budget);
+    energy_rel = r.run.energy.residualRelative();
+    return r;
   }
-  ::close(fds[1]);
-  const std::string text = readAllFromFd(fds[0]);
-  ::close(fds[0]);
-  int wstatus = 0;
-  while (::waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {
-  }
-  if (WIFEXITED(wstatus) && WEXITSTATUS(wstatus) == 0 && deserialize(text, r, energy_rel)) return r;
+  if (child->exitedCleanly() && deserialize(child->text, r, energy_rel)) return r;
   r = OneRun{};
   r.run.stats.cpu_seconds = NAN;  // spent, but not reported by the killed process
   energy_rel = NAN;
   std::ostringstream os;
-  if (WIFSIGNALED(wstatus) && (WTERMSIG(wstatus) == SIGXCPU || WTERMSIG(wstatus) == SIGKILL)) {
+  if (child->stoppedByCpuLimit()) {
     r.outcome = Outcome::Timeout;
     os << "timeout: CPU budget " << budget.cpu_seconds
        << " s exceeded inside one output interval (stopped by the hard CPU limit)";
-  } else if (WIFSIGNALED(wstatus) && WTERMSIG(wstatus) == SIGINT) {
+  } else if (child->killedBy(SIGINT)) {
     r.outcome = Outcome::Interrupted;
     os << "interrupted";
   } else {
     r.outcome = Outcome::Failed;
-    os << "failed: run process ended abnormally (" << (WIFSIGNALED(wstatus) ? "signal " : "exit ")
-       << (WIFSIGNALED(wstatus) ? WTERMSIG(wstatus) : WEXITSTATUS(wstatus)) << ")";
+    os << "failed: run process ended abnormally (" << child->howItEnded() << ")";
   }
   r.status = os.str();
   return r;
