@@ -154,7 +154,7 @@ AdamsIntegrator::AdamsIntegrator(const AdamsProblem& problem) : impl_(new Impl) 
   Eigen::Map<Eigen::VectorXd>(NV_DATA_S(m.y), n) = problem.y0;
   m.y_out = problem.y0;
   m.t = problem.t0;
-  m.cv = CVodeCreate(CV_ADAMS, m.ctx);
+  m.cv = CVodeCreate(problem.bdf ? CV_BDF : CV_ADAMS, m.ctx);
   int flag = CVodeInit(m.cv, Impl::rhs, problem.t0, m.y);
   if (flag == CV_SUCCESS) flag = CVodeSetUserData(m.cv, &m);
   if (flag == CV_SUCCESS) flag = CVodeSetErrHandlerFn(m.cv, Impl::errHandler, &m);
@@ -172,9 +172,15 @@ AdamsIntegrator::AdamsIntegrator(const AdamsProblem& problem) : impl_(new Impl) 
     if (flag == CV_SUCCESS) flag = CVodeSetNonlinearSolver(m.cv, m.NLS);
   }
   if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(m.cv, 1000000);
-  if (problem.max_order < 1 || problem.max_order > 12)
-    throw std::invalid_argument("AdamsIntegrator: max_order must be 1 ... 12, got " + std::to_string(problem.max_order));
-  if (flag == CV_SUCCESS) flag = CVodeSetMaxOrd(m.cv, problem.max_order);
+  const int highest_order = problem.bdf ? 5 : 12;
+  const int max_order = problem.max_order == 0 ? highest_order : problem.max_order;
+  if (max_order < 1 || max_order > highest_order)
+    throw std::invalid_argument(std::string("AdamsIntegrator: max_order must be 1 ... ") +
+                                (problem.bdf ? "5 (BDF)" : "12 (Adams)") + ", got " +
+                                std::to_string(problem.max_order));
+  if (problem.bdf && !problem.newton)
+    throw std::invalid_argument("AdamsIntegrator: BDF needs the Newton corrector (newton = true)");
+  if (flag == CV_SUCCESS) flag = CVodeSetMaxOrd(m.cv, max_order);
   if (flag == CV_SUCCESS) flag = CVodeSetStopTime(m.cv, problem.stop_time);
   if (flag == CV_SUCCESS && problem.max_step > 0) flag = CVodeSetMaxStep(m.cv, problem.max_step);
   if (flag != CV_SUCCESS) throw std::runtime_error("CVODE setup failed: " + m.error);

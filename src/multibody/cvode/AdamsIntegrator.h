@@ -1,6 +1,6 @@
-// CVODE's Adams-Moulton method (orders 1-12, variable step) behind a small interface that
-// knows nothing of SUNDIALS, for the multibody model's minimal formulation
-// (MinimalSimulation.h).
+// CVODE's Adams-Moulton method (orders 1-12, variable step), or its BDF method (orders 1-5) for
+// stiff problems, behind a small interface that knows nothing of SUNDIALS, for the multibody
+// model's minimal formulation (MinimalSimulation.h) and any other ODE of the project.
 //
 // Why a separate shared library (CMakeLists.txt, rollerdyn_cvode): Simbody's SimTKmath exports
 // the N_Vector functions of its own, older SUNDIALS; the static SUNDIALS 6 archives the project
@@ -50,7 +50,11 @@ struct AdamsProblem {
   std::vector<bool> absolute_only;  // states held to atol alone (angles: an error of 1e-6 rad
                                     // means the same after one turn or a thousand)
   double max_step = 0;        // largest step [s]; 0: unbounded
-  int max_order = 12;         // highest Adams-Moulton order CVODE may use (1 ... 12) [-]
+  int max_order = 0;          // highest order CVODE may use (Adams 1 ... 12, BDF 1 ... 5);
+                              // 0: the method's highest [-]
+  bool bdf = false;           // backward differentiation formulas instead of Adams-Moulton: for
+                              // stiff problems (electrical time constants of milliseconds under a
+                              // mechanical motion of seconds); Newton corrector required
   bool newton = true;         // Newton corrector on a dense Jacobian (structure below);
                               // false: fixed-point (functional) iteration
   JacobianStructure jacobian; // Newton only; empty: difference quotients for every column
