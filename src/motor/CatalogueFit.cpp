@@ -18,6 +18,13 @@ namespace {
 constexpr double kSqrt3 = 1.7320508075688772;
 // Weights of the relative errors, in the order of compareWithCatalogue (header: why).
 constexpr double kCatalogueWeights[7] = {10, 3, 1, 1, 10, 3, 10};
+// Bounds of the unknowns in per-unit of Z_b = U_ph/I_n, in the order R_s, X_σs (= X_σr1), X_m,
+// R_r1, R_r2, X_σr2: a wide band around the values of squirrel-cage motors (leakage 0.05-0.2,
+// magnetizing 1.5-5, resistances 0.005-0.1 per unit), so that a catalogue the circuit cannot meet
+// gives a machine at a bound rather than a vanishing leakage inductance (an unphysical,
+// infinitely stiff machine).
+constexpr double kLowerPu[6] = {1e-4, 0.01, 0.5, 1e-4, 1e-4, 0.005};
+constexpr double kUpperPu[6] = {0.3, 1.0, 50.0, 0.5, 2.0, 2.0};
 
 // Torque at the rated supply and rotor speed ω_r.
 double torqueAt(const InductionMachineParameters& m, double omega_rotor) {
@@ -181,7 +188,8 @@ CatalogueFit computeFit(const MotorCatalogue& c, const CatalogueSupply& s, int c
   prob.base.frequency = s.frequency;
   prob.layout = {cages, prob.base.phase_voltage / c.current, 2.0 * M_PI * s.frequency};
   const int n = prob.layout.size();
-  const std::vector<double> x0 = initialGuess(c, s, cages);
+  std::vector<double> x0 = initialGuess(c, s, cages);
+  for (int i = 0; i < n; ++i) x0[i] = std::clamp(x0[i], std::log(kLowerPu[i]) + 1e-9, std::log(kUpperPu[i]) - 1e-9);
 
   std::vector<double> best = x0;
   double best_cost = prob.residuals(x0.data(), nullptr);
@@ -200,7 +208,10 @@ CatalogueFit computeFit(const MotorCatalogue& c, const CatalogueSupply& s, int c
       for (double& v : x) v += 1.5 * (2.0 * uniform() - 1.0);  // factor e^±1.5 around the guess
     nlopt::opt opt(nlopt::LN_BOBYQA, n);
     std::vector<double> lo(n), hi(n);
-    for (int i = 0; i < n; ++i) lo[i] = x0[i] - 8.0, hi[i] = x0[i] + 8.0;
+    for (int i = 0; i < n; ++i) {
+      lo[i] = std::log(kLowerPu[i]), hi[i] = std::log(kUpperPu[i]);
+      x[i] = std::clamp(x[i], lo[i] + 1e-9, hi[i] - 1e-9);
+    }
     opt.set_lower_bounds(lo);
     opt.set_upper_bounds(hi);
     opt.set_min_objective(objective, &prob);
