@@ -1,9 +1,11 @@
 // How the drive moved, named once for every output (console, summary.json, report, sweep):
-//   "stalled"  the motor stalled (StallDetector.h: crank or motor below 1 % of synchronous speed
-//              for 1 s); the run ended early,
-//   "rocking"  the crank swings back and forth in the metrics window instead of turning (loads
-//              that the motor cannot lift over a dead centre, Loveikin, Pochka, Romasevych (2018)
-//              at small crank offsets),
+//   "stalled"  the drive is held at rest by its load or driven backwards (StallDetector.h); the
+//              run ended early,
+//   "rocking"  the crank swings back and forth instead of turning: in the metrics window, or with
+//              swings that stopped growing (StallDetector.h; the run then ended early): loads that
+//              the motor cannot lift over a dead centre, Loveikin, Pochka, Romasevych (2018) at
+//              small crank offsets. A crank that rocks with growing swings and then turns is
+//              "turning" once it turns in the metrics window,
 //   "turning"  the crank turns one way: per-revolution metrics (δ, H, k_p, energy per revolution,
 //              the flywheel size) have a meaning,
 //   "at_rest", "unknown" (no finite crank speed in the window).

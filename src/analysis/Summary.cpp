@@ -5,8 +5,10 @@
 #include <sstream>
 
 #include "analysis/DriveSizing.h"
+#include "analysis/LoadWork.h"
 #include "analysis/Metrics.h"
 #include "analysis/SizingSummary.h"
+#include "analysis/StallDetector.h"
 #include "analysis/SteadyState.h"
 #include "io/AtomicFile.h"
 
@@ -138,8 +140,12 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["reactions"] = rx;
 
   const DriveSizing sizing =
-      computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN);
+      computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN, crank_motion);
   j["sizing"] = sizingJson(sizing);
+  const LoadWork load = computeLoadWork(scene, run, ss);
+  j["load"] = loadWorkJson(load);
+  if (!j.contains("warnings")) j["warnings"] = json::array();
+  if (!load.warning.empty()) j["warnings"].push_back(load.warning);
   if (!turning) {
     not_meaningful.push_back("sizing.flywheel");
     not_meaningful.push_back("sizing.motor.energy_per_revolution");
@@ -148,7 +154,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["stall"] = nullptr;
 
   std::string status = run.stats.status;
-  if (crank_motion == "rocking") {
+  if (crank_motion == "rocking" && StallDetector::motionOfStatus(status) != "rocking") {
     char buf[160];
     std::snprintf(buf, sizeof buf,
                   "; the crank rocks back and forth instead of turning (its speed ranges from "
@@ -211,13 +217,24 @@ std::string summaryText(const nlohmann::json& s) {
     << "  (Loveikin and Pochka (2007) eq. (12)-(14))\n";
   const json& st = at("steady_state");
   if (st.is_object()) {
+    // after_revolutions is the 0-based index of the first settled revolution: the speed repeats
+    // from the start of revolution after_revolutions + 1 (counted from 1) on.
     o << "steady state " << (st.value("reached", false) ? "reached" : "NOT reached");
     if (st.value("after_revolutions", -1) >= 0)
-      o << " from revolution " << st.value("after_revolutions", -1) << " of "
-        << st.value("revolutions", 0);
-    o << "; window " << st.value("window_revolutions", 0) << " rev, t = "
-      << f(st.value("t_begin", json(nullptr)), "%.4g") << " ... "
-      << f(st.value("t_end", json(nullptr)), "%.4g") << " s\n";
+      o << ": the crank speed repeats from revolution " << st.value("after_revolutions", -1) + 1 << " on (t = "
+        << f(st.value("t_settled", json(nullptr)), "%.4g") << " s), of " << st.value("revolutions", 0)
+        << " whole revolutions in the run";
+    o << "\n             metrics window: the last " << st.value("window_revolutions", 0) << " revolutions, t = "
+      << f(st.value("t_begin", json(nullptr)), "%.4g") << " ... " << f(st.value("t_end", json(nullptr)), "%.4g")
+      << " s\n";
+  }
+  const json ld = at("load");
+  if (ld.is_object() && ld.value("available", false)) {
+    o << "load         " << f(ld.value("power_mean_per_cart_steady", json(nullptr)), "%.4g")
+      << " W per cart net in the metrics window, " << f(ld.value("power_mean_per_cart_whole_run", json(nullptr)), "%.4g")
+      << " W per cart over the whole run (" << str(ld.value("reading", json(""))) << ")\n";
+    if (ld.value("warning", json(nullptr)).is_string())
+      o << "             WARNING: " << ld["warning"].get<std::string>() << "\n";
   }
   o << "coupling     torque swing " << f(at("coupling_torque_swing"), "%.4g")
     << " N·m, twist swing " << f(at("twist_swing"), "%.3g") << " rad\n";

@@ -55,7 +55,7 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   std::cout << summaryText(summary) << figureSetText(figures, (fs::path(out_dir) / "figures").string())
             << "report: " << page << '\n';
   if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
-  return run.stats.complete ? 0 : 3;
+  return runExitCode(run, summary);
 }
 
 }  // namespace rollerdyn::cli

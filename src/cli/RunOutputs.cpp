@@ -26,9 +26,17 @@ nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const s
   const StartLoad start_load = startLoadOf(scene);  // explains a stall
   nlohmann::json summary = makeSummary(scene, run, &start_load);
   summary["scene_path"] = absolutePath(scene_path);
-  for (const std::string& w : addResonanceWarnings(scene, summary)) std::cerr << "rollerdyn: warning: " << w << '\n';
+  addResonanceWarnings(scene, summary);  // appends to summary["warnings"] (the load's may be there)
+  for (const auto& w : summary["warnings"])
+    if (w.is_string()) std::cerr << "rollerdyn: warning: " << w.get<std::string>() << '\n';
   writeSummaryAtomic(out_dir + "/summary.json", summary);
   return summary;
+}
+
+int runExitCode(const RunResult& run, const nlohmann::json& summary) {
+  const std::string motion = summary.value("motion", "");
+  if (motion == "stalled" || motion == "rocking") return kExitDriveDoesNotTurn;
+  return run.stats.complete ? 0 : kExitRunFailed;
 }
 
 }  // namespace rollerdyn::cli

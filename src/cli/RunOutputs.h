@@ -21,4 +21,11 @@ RunResult runMultibodyWithProgress(const Scene& scene);
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
                                const std::string& out_dir);
 
+// Exit codes of a run's command: 0 the crank turns; 4 the drive stalls or rocks (a valid run of a
+// drive that does not work); 3 the run did not complete for another reason (numerical failure,
+// interrupted).
+inline constexpr int kExitDriveDoesNotTurn = 4;
+inline constexpr int kExitRunFailed = 3;
+int runExitCode(const RunResult& run, const nlohmann::json& summary);
+
 }  // namespace rollerdyn::cli

@@ -43,7 +43,7 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
     std::cout << figureSetText(drawRunFigures(outputFolderOf(out_dir, run, summary), &scene, out_dir + "/figures"),
                                out_dir + "/figures");
   if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
-  return run.stats.complete ? 0 : 3;
+  return runExitCode(run, summary);
 }
 
 }  // namespace rollerdyn::cli

@@ -406,6 +406,7 @@ Loads readLoads(const Reader& in) {
   l.guide_friction = in.number("loads.guide_friction.coefficient");
   l.gravity = in.number("loads.gravity");
   l.velocity_smoothing = in.number("loads.velocity_smoothing");
+  l.rolling_resistance = in.number("loads.rolling_resistance");
   l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
   return l;
 }

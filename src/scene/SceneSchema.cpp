@@ -161,6 +161,9 @@ std::vector<KeySpec> buildSchema() {
              "R_j2, upward reaction of the mix on the rear roller"),
       choice("loads.roller_force_direction", P::Optional, {"opposes_velocity", "as_printed"},
              "opposes_velocity", "direction law of the horizontal roller forces"),
+      number("loads.rolling_resistance", "-", P::Optional, between(0.0, true, 1.0, false), 0.0,
+             "mu_r, rolling resistance of the compacting rollers: a force mu_r*(R_j1 + R_j2) against the cart's "
+             "velocity, the energy compaction dissipates (docs/loads.md)"),
       number("loads.guide_friction.coefficient", "-", P::Optional,
              between(0.0, true, 1.0, false), 0.0, "f, reduced guide-roller friction coefficient"),
       number("loads.guide_friction.normal_force_lag", "s", P::Optional, between(0.0, false, 1.0, true),

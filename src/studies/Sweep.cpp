@@ -124,8 +124,7 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
     const StartLoad start_load = startLoadOf(scene);  // explains a stall in the status
     nlohmann::json summary = makeSummary(scene, run, &start_load);
     p.motion = summary.value("motion", "unknown");
-    addResonanceWarnings(scene, summary);
-    p.warnings = summary["warnings"];
+    p.warnings = addResonanceWarnings(scene, summary);  // the load's warning is a metric column
     const auto& src = metricSources();
     for (std::size_t k = 0; k < src.size(); ++k) p.metrics[k] = summaryNumber(summary, src[k].second);
     p.complete = run.stats.complete;
