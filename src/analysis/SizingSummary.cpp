@@ -1,5 +1,6 @@
 #include "analysis/SizingSummary.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -137,8 +138,8 @@ json sizingJson(const DriveSizing& s) {
 
 const std::vector<std::pair<std::string, std::string>>& sizingMetricPaths() {
   static const std::vector<std::pair<std::string, std::string>> p = {
-      {"motor_torque_rms", "sizing.motor.torque_shaft.rms"},
-      {"motor_torque_peak", "sizing.motor.torque_shaft.peak"},
+      {"motor_torque_rotor_rms", "sizing.motor.torque_shaft.rms"},
+      {"motor_torque_rotor_peak", "sizing.motor.torque_shaft.peak"},
       {"motor_rms_over_nominal", "sizing.motor.rms_over_nominal"},
       {"motor_peak_over_breakdown", "sizing.motor.peak_over_breakdown"},
       {"motor_power_mean", "sizing.motor.power_shaft.mean"},
@@ -148,7 +149,7 @@ const std::vector<std::pair<std::string, std::string>>& sizingMetricPaths() {
       {"coupling_torque_peak", "sizing.coupling.peak"},
       {"load_power_per_cart", "load.power_mean_per_cart_steady"},
       {"load_net_over_gross", "load.net_over_gross_steady"},
-      {"motor_torque_rms_whole_run", "sizing.motor.whole_run.torque_shaft.rms"},
+      {"motor_torque_rotor_rms_whole_run", "sizing.motor.whole_run.torque_shaft.rms"},
       {"motor_thermal_whole_run", "sizing.motor.whole_run.thermal_over_nominal"},
       {"motor_power_line_mean_whole_run", "sizing.motor.whole_run.power_line.mean"},
       {"coupling_torque_peak_whole_run", "sizing.coupling.peak_whole_run"},
@@ -210,17 +211,39 @@ std::string sizingText(const json& summary) {
   o << "  flywheel                          kinetic-energy swing ΔT " << fmt(at(f, "kinetic_energy_swing"), "%.4g")
     << " J per revolution; drive inertia at the crank J " << fmt(at(f, "inertia_effective"), "%.4g")
     << " kg·m²; δ " << fmt(at(f, "delta"), "%.4g") << "\n";
-  if (at(f, "target_delta").is_number())
+  if (at(f, "target_delta").is_number()) {
     o << "                                    for δ* = " << fmt(at(f, "target_delta"), "%.4g") << ": flywheel "
       << fmt(at(f, "flywheel_crankshaft"), "%.4g") << " kg·m² on the crankshaft or "
       << fmt(at(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n"
       << "                                    (energy method, J·δ constant: a first estimate; it can be far off where\n"
-      << "                                    the carts' inertia or the motor's slip vary over a turn. The smallest\n"
-      << "                                    flywheel that meets δ*, from runs: rollerdyn optimize SCENE --param\n"
-      << "                                    flywheel.inertia --range 0:" << fmt(at(f, "flywheel_crankshaft"), "%.0f", 3.0)
-      << " --minimize flywheel.inertia --constraint 'delta<=" << fmt(at(f, "target_delta"), "%.4g") << "')\n";
-  else
+      << "                                    the carts' inertia or the motor's slip vary over a turn)\n";
+    const json& added = at(f, "added_inertia_crankshaft");
+    if (added.is_number() && added.get<double>() > 0) {
+      // The smallest flywheel from runs, as a command that runs as printed: the scene file, the
+      // user's --set options, a range that holds the estimate with room to spare.
+      const bool motor_shaft = at(f, "location").is_string() && at(f, "location").get<std::string>() == "motor_shaft";
+      const json& estimate = at(f, motor_shaft ? "flywheel_motor_shaft" : "flywheel_crankshaft");
+      const double upper = std::max(10.0, 3.0 * (estimate.is_number() ? estimate.get<double>() : 0.0));
+      auto quoted = [](const std::string& a) {
+        if (a.find_first_of(" '\"$`\\*?;&|<>()") == std::string::npos) return a;
+        std::string q = "'";
+        for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return q + "'";
+      };
+      std::string cmd = "rollerdyn optimize " + quoted(str(at(summary, "scene_path")));
+      if (at(summary, "overrides").is_array())
+        for (const json& ov : at(summary, "overrides"))
+          if (ov.is_string()) cmd += " --set " + quoted(ov.get<std::string>());
+      cmd += " --param flywheel.inertia --range 0:" + fmt(json(upper), "%.0f") +
+             " --minimize flywheel.inertia --constraint 'delta<=" + fmt(at(f, "target_delta"), "%.4g") + "'";
+      o << "                                    the smallest flywheel (" << (motor_shaft ? "motor shaft" : "crankshaft")
+        << ") that meets δ*, from runs:\n      " << cmd << "\n";
+    } else if (added.is_number()) {
+      o << "                                    this run already meets δ* (no flywheel needs adding)\n";
+    }
+  } else {
     o << "                                    target δ* not given (sizing.target_delta)\n";
+  }
   const json& c = at(s, "coupling");
   if (c.is_object()) {
     o << "  coupling torque (crank axis)      mean " << fmt(at(c, "mean"), "%.4g") << ", peak |M| "

@@ -142,6 +142,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   const DriveSizing sizing =
       computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN, crank_motion);
   j["sizing"] = sizingJson(sizing);
+  j["sizing"]["flywheel"]["location"] = toString(scene.flywheel.location);
   const LoadWork load = computeLoadWork(scene, run, ss);
   j["load"] = loadWorkJson(load);
   if (!j.contains("warnings")) j["warnings"] = json::array();

@@ -21,11 +21,12 @@ RunResult runMultibodyWithProgress(const Scene& scene) {
 }
 
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
-                               const std::string& out_dir) {
+                               const std::string& out_dir, const std::vector<std::string>& overrides) {
   writeRunTables(out_dir, run);
   const StartLoad start_load = startLoadOf(scene);  // explains a stall
   nlohmann::json summary = makeSummary(scene, run, &start_load);
   summary["scene_path"] = absolutePath(scene_path);
+  summary["overrides"] = overrides;
   addResonanceWarnings(scene, summary);  // appends to summary["warnings"] (the load's may be there)
   for (const auto& w : summary["warnings"])
     if (w.is_string()) std::cerr << "rollerdyn: warning: " << w.get<std::string>() << '\n';

@@ -99,6 +99,7 @@ int runSweepCommand(const SweepArgs& a) {
   for (const SweepParameter& p : o.params) requireSceneKey("sweep: --param " + p.key, p.key);  // with a did-you-mean
   o.model = a.model;
   o.minimize = a.minimize;
+  if (!o.minimize.empty()) requireSweepMetric("sweep: --minimize", o.minimize);  // before any header or run
   o.threads = a.threads;
   o.interrupt = &g_interrupted;
   o.point_budget = a.point_budget;
@@ -214,7 +215,7 @@ Subcommand addSweepCommand(CLI::App& app) {
                   "metric whose minimum to report: delta, H, k_p, omega_crank_mean, coupling_torque_swing, "
                   "twist_swing, eps_crank_abs_max, energy_residual_rel, omega_crank_min, omega_crank_max, "
                   "omega_crank_midrange, twist_rate_swing, twist_accel_swing, or a drive-sizing metric "
-                  "(motor_torque_rms, motor_rms_over_nominal, motor_peak_over_breakdown, motor_power_mean, "
+                  "(motor_torque_rotor_rms, motor_rms_over_nominal, motor_peak_over_breakdown, motor_power_mean, "
                   "energy_per_revolution, coupling_torque_peak, guide_roller_peak, rod_force_peak, "
                   "crank_pin_peak, main_bearing_peak, ..._equivalent_load: see sweep.csv)");
   cmd->add_option("--threads", args->threads, "worker threads (default 2; under MPI one per rank)")->check(CLI::Range(1, 64));

@@ -12,17 +12,35 @@
 #include "cli/Commands.h"
 #include "compare/StudiesReport.h"
 #include "compare/ValidationSuite.h"
+#include <filesystem>
+#include <stdexcept>
+
 #include "io/AtomicFile.h"
 #include "report/Gnuplot.h"
 #include "report/OutputDir.h"
 
 namespace rollerdyn::cli {
 
+// The shipped scene files: ./model when it holds them (a checkout), else the model/ folder of the
+// sources this binary was built from, so `validate` runs from any working directory.
+std::string shippedModelDir() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists("model/balanced-4cart.yaml", ec)) return "model";
+#ifdef ROLLERDYN_MODEL_DIR
+  if (fs::exists(fs::path(ROLLERDYN_MODEL_DIR) / "balanced-4cart.yaml", ec)) return ROLLERDYN_MODEL_DIR;
+#endif
+  throw std::runtime_error(
+      "validate: the shipped scene files (model/balanced-4cart.yaml, ...) are neither in ./model nor in the "
+      "source tree this binary was built from; run it from the repository's top folder");
+}
+
 int runValidate(bool quick, const std::string& out_dir) {
   using namespace rollerdyn::validation;
   prepareOutputDir(out_dir);  // before the suite: a bad --out fails now
   ValidationOptions o;
   o.quick = quick;
+  o.model_dir = shippedModelDir();
   o.interrupt = &g_interrupted;
   const std::clock_t c0 = std::clock();
   o.log = [c0](const std::string& line) {

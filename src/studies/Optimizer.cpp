@@ -11,6 +11,7 @@
 
 #include <nlopt.hpp>
 
+#include "scene/DidYouMean.h"
 #include "scene/SceneSchema.h"
 
 namespace rollerdyn {
@@ -114,19 +115,30 @@ class Search {
   // violating design never looks best; with COBYLA the constraints carry the violation instead.
   double seen(const OptimizeEvaluation& e, bool constraints_by_method) {
     std::lock_guard<std::mutex> lock(mu_);
-    const double span = std::max({hi_ - lo_, 1e-3 * std::abs(hi_), 1e-12});
-    const double top = std::isfinite(hi_) ? hi_ : 1.0;
-    if (!e.run_ok) return top + 10.0 * span;
-    if (constraints_by_method || e.constraints_hold) return e.objective;
-    double violation = 0;
-    for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
-      violation += std::max(0.0, e.constraint_values[j]) / std::max(std::abs(o_.constraints[j].bound), 1e-12);
-    return top + span * (1.0 + violation);
+    // Before the first usable run there is no scale yet (hi_ = -inf, lo_ = +inf): a fixed, finite
+    // stand-in (the upper bound of the minimised parameter, or 1), never inf or NaN, which
+    // NLopt's models would turn into NaN steps.
+    const bool scaled = std::isfinite(hi_) && std::isfinite(lo_);
+    double fallback = 1.0;
+    for (const SampleRange& p : o_.params)
+      if (p.key == o_.minimize) fallback = p.upper;
+    const double top = scaled ? hi_ : fallback;
+    const double span = scaled ? std::max({hi_ - lo_, 1e-3 * std::abs(hi_), 1e-12}) : std::max(1.0, std::abs(fallback));
+    double value = top + 10.0 * span;
+    if (e.run_ok && (constraints_by_method || e.constraints_hold)) {
+      value = e.objective;
+    } else if (e.run_ok) {
+      double violation = 0;
+      for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
+        violation += std::max(0.0, e.constraint_values[j]) / std::max(std::abs(o_.constraints[j].bound), 1e-12);
+      value = top + span * (1.0 + std::min(violation, 1e6));
+    }
+    return std::isfinite(value) ? value : top + 10.0 * span;
   }
 
   // Constraint j as COBYLA sees it (<= 0 holds); a design that did not run usably violates all.
   double constraintSeen(const OptimizeEvaluation& e, std::size_t j) const {
-    if (!e.run_ok) return std::abs(o_.constraints[j].bound) + 1.0;
+    if (!e.run_ok || !std::isfinite(e.constraint_values[j])) return std::abs(o_.constraints[j].bound) + 1.0;
     return e.constraint_values[j];
   }
 
@@ -204,13 +216,16 @@ void validate(const OptimizeOptions& o) {
   }
   bool is_key = false;
   for (const SampleRange& p : o.params) is_key = is_key || p.key == o.minimize;
-  if (!is_key && !knownMetric(o.minimize))
-    throw std::invalid_argument("optimize: --minimize: expected a metric (" + metricList() +
-                                ") or one of the --param keys, got '" + o.minimize + "'");
+  if (!is_key && !knownMetric(o.minimize)) {
+    std::vector<std::string> names = sweepNumericMetrics();
+    for (const SampleRange& p : o.params) names.push_back(p.key);
+    throw std::invalid_argument("optimize: --minimize: unknown metric '" + o.minimize + "'" + didYouMean(o.minimize, names) +
+                                "; expected a metric (" + metricList() + ") or one of the --param keys");
+  }
   for (const OptimizeConstraint& c : o.constraints)
     if (!knownMetric(c.metric))
-      throw std::invalid_argument("optimize: --constraint '" + c.text + "': expected a metric (" + metricList() +
-                                  "), got '" + c.metric + "'");
+      throw std::invalid_argument("optimize: --constraint '" + c.text + "': unknown metric '" + c.metric + "'" +
+                                  didYouMean(c.metric, sweepNumericMetrics()) + "; expected one of " + metricList());
   const std::string& m = o.method;
   if (m != "auto" && m != "bobyqa" && m != "cobyla" && m != "direct-l" && m != "crs2" && m != "multistart")
     throw std::invalid_argument("optimize: --method: expected auto, bobyqa, cobyla, direct-l, crs2 or multistart, got '" +
@@ -303,7 +318,11 @@ bool bestFeasible(const OptimizeResult& r, std::size_t* best) {
 OptimizeResult runOptimize(const OptimizeOptions& o) {
   validate(o);
   OptimizeResult r;
-  r.method = o.method == "auto" ? (o.constraints.empty() ? "bobyqa" : "cobyla") : o.method;
+  // auto: a global stage (DIRECT-L) over the whole box, then the local method from its best
+  // design. A local method alone converges to the minimum nearest its start (the six-cart offset
+  // problem: 97.4° from the middle of 0:180 where 60° is best), so it is never the default.
+  const bool automatic = o.method == "auto";
+  r.method = automatic ? "direct-l" : o.method;
   Search search(o, r);
   const std::string local = o.constraints.empty() ? "bobyqa" : "cobyla";
   if (r.method == "multistart") {
@@ -327,6 +346,8 @@ OptimizeResult runOptimize(const OptimizeOptions& o) {
                                                                      std::max(1, o.max_evals / starts), 0.1); });
     for (std::thread& th : pool) th.join();
     r.method = "multistart " + local + " x" + std::to_string(starts);
+    r.scope = "local searches from " + std::to_string(starts) + " starts: the best of their minima (more starts, "
+              "--threads, cover the ranges better)";
     for (int t = 0; t < starts; ++t) r.stop_reason += (t ? "; " : "") + std::string("start ") + std::to_string(t + 1) +
                                                       ": " + reasons[std::size_t(t)];
     r.found = bestFeasible(r, &r.best);
@@ -336,11 +357,18 @@ OptimizeResult runOptimize(const OptimizeOptions& o) {
   // A global method gets 70 % of the evaluations; the rest polish its best design with the
   // local method (a global search stops far from the exact optimum, and a local one alone may
   // stop at the wrong one of several minima).
-  const int global_evals = global ? std::max(1, int(0.7 * o.max_evals)) : o.max_evals;
+  // auto gives the global stage 20 evaluations per parameter at most (DIRECT-L then has sampled
+  // every third of the range at least twice over), leaving the rest for the polish.
+  int global_evals = global ? std::max(1, int(0.7 * o.max_evals)) : o.max_evals;
+  if (automatic) global_evals = std::max(1, std::min(global_evals, 20 * int(o.params.size())));
   // Start in the middle of the box with steps of a quarter of each range.
   search.method = r.method;
   r.stop_reason = runMethod(search, r.method, std::vector<double>(o.params.size(), 0.5), global_evals, 0.25);
   r.found = bestFeasible(r, &r.best);
+  if (!global) r.scope = "local: " + r.method + " from the middle of the ranges finds the minimum nearest to that "
+                         "start, which need not be the global one (--method auto, direct-l, crs2 or multistart "
+                         "search the whole ranges)";
+  else r.scope = "global stage " + r.method + " over the whole ranges, then a local polish";
   const int left = o.max_evals - int(search.requests());
   if (global && r.found && left > 0 && r.stop_reason != "interrupted") {
     std::vector<double> u;

@@ -95,6 +95,10 @@ struct SweepResult {
 
 // Throws std::invalid_argument for an empty grid, an unknown model or metric; every per-point
 // failure is recorded in the point instead.
+// Throws std::invalid_argument "WHAT: unknown metric 'X' (did you mean 'Y'?); expected one of ..."
+// unless `metric` is a sweepNumericMetrics() name.
+void requireSweepMetric(const std::string& what, const std::string& metric);
+
 SweepResult runSweep(const SweepOptions& options);
 
 // One point: the scene with base_overrides and KEY=texts[k] applied, run, summarised (used by
