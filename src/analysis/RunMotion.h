@@ -13,6 +13,7 @@
 // the crank, against the load torque at the start angle and averaged over a revolution.
 #pragma once
 
+#include <limits>
 #include <string>
 
 #include "analysis/Metrics.h"
@@ -21,7 +22,11 @@
 
 namespace rollerdyn {
 
-std::string classifyMotion(const Scene& scene, const RunResult& run, const WindowMetrics& window);
+// `window_advance`: how far the crank turned over the metrics window [rad] (NaN: not known). A
+// crank whose speed changes sign in the window but that advanced a whole revolution or more
+// turns (with dips backwards, or with the start-up inside a short run's window), it does not rock.
+std::string classifyMotion(const Scene& scene, const RunResult& run, const WindowMetrics& window,
+                           double window_advance = std::numeric_limits<double>::quiet_NaN());
 
 // Whether per-revolution metrics mean anything for this motion.
 inline bool motionIsTurning(const std::string& motion) { return motion == "turning"; }

@@ -279,16 +279,21 @@ std::string sizingText(const json& summary) {
   for (std::size_t k = 0; k < 5; ++k) {
     const json& x = at(at(joints, kJointKinds[k]), "worst");
     if (!x.is_object()) continue;
+    // L10 in hours where the joint turns at a known speed, else in revolutions (the rod end
+    // swings through a small angle: its life is counted in the crank's revolutions).
+    std::string life = fmt(at(x, "L10_hours"), "%.3g");
+    if (life == "n/a" && at(x, "L10_revolutions").is_number()) life = fmt(at(x, "L10_revolutions"), "%.3g") + " rev";
     char buf[256];
     std::snprintf(buf, sizeof buf, "  %-24s  %4s  %9s  %14s  %9s  %6s  %6s  %7s\n", names[k],
                   at(x, "cart").is_number() ? std::to_string(at(x, "cart").get<int>()).c_str() : "-",
                   fmt(at(x, "mean"), "%.3f", 1e-3).c_str(), fmt(at(x, "amplitude"), "%.3f", 1e-3).c_str(),
                   fmt(at(x, "peak"), "%.3f", 1e-3).c_str(), fmt(at(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
-                  fmt(at(x, "rating"), "%.1f", 1e-3).c_str(), fmt(at(x, "L10_hours"), "%.3g").c_str());
+                  fmt(at(x, "rating"), "%.1f", 1e-3).c_str(), life.c_str());
     o << buf;
   }
   o << "  P equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation speed; "
-       "C dynamic load rating (sizing.bearing_rating.*); L10 = (C/P)³·10⁶ revolutions\n";
+       "C dynamic load rating (sizing.bearing_rating.*); L10 = (C/P)³·10⁶ revolutions, in hours at the joint's mean speed, "
+       "or in revolutions (rev) where the joint has no rotation speed\n";
   return o.str();
 }
 

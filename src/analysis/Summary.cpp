@@ -66,7 +66,12 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
                       {"midrange", num("omega_crank.midrange", m.omega_midrange)}};
   // "stalled", "rocking" (crank speed changes sign in the metrics window), "turning",
   // "at_rest", "unknown" (RunMotion.h); per-revolution metrics are null unless turning.
-  const std::string crank_motion = classifyMotion(scene, run, m);
+  double advance = NAN;  // how far the crank turned over the metrics window [rad]
+  if (run.timeseries.has("phi_crank") && ss.row_end >= ss.row_begin + 2 && ss.row_end <= run.timeseries.rows.size()) {
+    const int k = run.timeseries.index("phi_crank");
+    advance = run.timeseries.rows[ss.row_end - 1][k] - run.timeseries.rows[ss.row_begin][k];
+  }
+  const std::string crank_motion = classifyMotion(scene, run, m, advance);
   const bool turning = motionIsTurning(crank_motion);
   j["motion"] = crank_motion;
   j["crank_motion"] = crank_motion;

@@ -92,8 +92,10 @@ Subcommand addOptimizeCommand(CLI::App& app) {
       ->allow_extra_args(false);
   cmd->add_option("--model", args->model, "multibody (default) or reduced")->check(CLI::IsMember({"multibody", "reduced"}));
   cmd->add_option("--method", args->method,
-                  "auto (default: a global DIRECT-L stage over the whole ranges, at most 20 evaluations per "
-                  "parameter, then bobyqa without constraints or cobyla with them from its best design), bobyqa or "
+                  "auto (default: bobyqa without constraints or cobyla with them from the middle of the ranges, "
+                  "then a grid over the whole ranges (19 values of one parameter, 7 of two, 5 of more; for "
+                  "crank.offset_deg also the evenly spread offsets 360°·k/n), polished by the local method when "
+                  "its best lies elsewhere), bobyqa or "
                   "cobyla alone (LOCAL: the minimum nearest to the middle of the ranges), direct-l or crs2 (global, "
                   "constraints by penalty; the local method polishes their best design), multistart (the local "
                   "method from --threads starts in parallel)");

@@ -7,6 +7,7 @@
 #include "cli/Progress.h"
 #include "multibody/MultibodySimulation.h"
 #include "report/OutputFolder.h"
+#include "scene/Plausibility.h"
 #include "studies/ResonanceCheck.h"
 #include "studies/StartLoad.h"
 
@@ -28,6 +29,7 @@ nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const s
   summary["scene_path"] = absolutePath(scene_path);
   summary["overrides"] = overrides;
   addResonanceWarnings(scene, summary);  // appends to summary["warnings"] (the load's may be there)
+  for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
   for (const auto& w : summary["warnings"])
     if (w.is_string()) std::cerr << "rollerdyn: warning: " << w.get<std::string>() << '\n';
   writeSummaryAtomic(out_dir + "/summary.json", summary);

@@ -153,7 +153,9 @@ int runSweepCommand(const SweepArgs& a) {
   if (r.execution.value("points_resumed", 0) > 0)
     std::cout << "resumed " << r.execution["points_resumed"] << " saved point(s), computed "
               << r.execution["points_computed"] << "\n";
-  const auto files = writeSweepOutputs(o, r, out_dir);
+  std::string plot_note;
+  const auto files = writeSweepOutputs(o, r, out_dir, &plot_note);
+  if (!plot_note.empty()) std::cout << "figures: " << plot_note << " (sweep.csv has every point)\n";
   std::size_t failed = 0, unsteady = 0, warned = 0, not_turning = 0;
   for (const SweepPoint& p : r.points) {
     const bool drive_fails = p.motion == "stalled" || p.motion == "rocking";

@@ -1,6 +1,7 @@
 #include "studies/Optimizer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -12,6 +13,7 @@
 #include <nlopt.hpp>
 
 #include "scene/DidYouMean.h"
+#include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
 
 namespace rollerdyn {
@@ -133,7 +135,9 @@ class Search {
         violation += std::max(0.0, e.constraint_values[j]) / std::max(std::abs(o_.constraints[j].bound), 1e-12);
       value = top + span * (1.0 + std::min(violation, 1e6));
     }
-    return std::isfinite(value) ? value : top + 10.0 * span;
+    value = std::isfinite(value) ? value : top + 10.0 * span;
+    r_.values_handed.push_back(value);
+    return value;
   }
 
   // Constraint j as COBYLA sees it (<= 0 holds); a design that did not run usably violates all.
@@ -318,11 +322,8 @@ bool bestFeasible(const OptimizeResult& r, std::size_t* best) {
 OptimizeResult runOptimize(const OptimizeOptions& o) {
   validate(o);
   OptimizeResult r;
-  // auto: a global stage (DIRECT-L) over the whole box, then the local method from its best
-  // design. A local method alone converges to the minimum nearest its start (the six-cart offset
-  // problem: 97.4° from the middle of 0:180 where 60° is best), so it is never the default.
   const bool automatic = o.method == "auto";
-  r.method = automatic ? "direct-l" : o.method;
+  r.method = o.method;
   Search search(o, r);
   const std::string local = o.constraints.empty() ? "bobyqa" : "cobyla";
   if (r.method == "multistart") {
@@ -353,14 +354,94 @@ OptimizeResult runOptimize(const OptimizeOptions& o) {
     r.found = bestFeasible(r, &r.best);
     return r;
   }
+  if (automatic) {
+    // auto: (1) the local method from the middle of the box, the cheap answer when there is one
+    // minimum; (2) a global stage: a uniform grid over the whole box (19 values of one parameter,
+    // 7 of each of two, 5 of each of three or more), plus, for the crank offset, the evenly
+    // spread layouts Δφ = k·360°/n of the n carts (they cancel every harmonic of the load below
+    // the n-th, so δ has a sharp minimum there, which a grid or DIRECT's trisection can step
+    // over: six carts, δ = 0.0002 at 60° against 0.1 at 55° and 65°); (3) the local method again
+    // from the best design when it lies in another basin than (1)'s. A local method alone
+    // converges to the minimum nearest its start (six carts: 97.4° from the middle of 0:180).
+    const int n = int(o.params.size());
+    search.method = local;
+    const std::string first = runMethod(search, local, std::vector<double>(o.params.size(), 0.5),
+                                        std::max(1, o.max_evals / 3), 0.25);
+    r.stop_reason = local + " from the middle: " + first;
+    std::size_t local_best = 0;
+    const bool local_found = bestFeasible(r, &local_best);
+    const std::vector<double> x_local = local_found ? r.history[local_best].x : std::vector<double>{};
+    // The global stage's designs, in the unit box.
+    const int per = n == 1 ? 19 : n == 2 ? 7 : 5;
+    std::vector<std::vector<double>> grid(1, std::vector<double>());
+    for (int k = 0; k < n; ++k) {
+      std::vector<double> values;
+      for (int i = 0; i < per; ++i) values.push_back(double(i) / (per - 1));
+      if (o.params[k].key == "crank.offset_deg") {
+        int carts = 0;
+        try {
+          carts = parseSceneFile(o.scene_path, o.base_overrides).carts.count;
+        } catch (const std::exception&) {
+        }
+        for (int m = 1; m < carts; ++m)
+          for (int turn = 0; turn < 2; ++turn) {  // within 0..720°
+            const double deg = 360.0 * m / carts + 360.0 * turn;
+            const double u = (deg - o.params[k].lower) / (o.params[k].upper - o.params[k].lower);
+            if (u > 0 && u < 1) values.push_back(u);
+          }
+      }
+      std::vector<std::vector<double>> next;
+      for (const auto& g : grid)
+        for (double v : values) {
+          next.push_back(g);
+          next.back().push_back(v);
+        }
+      grid = std::move(next);
+    }
+    int left = o.max_evals - int(search.requests());
+    if (int(grid.size()) > left) grid.resize(std::size_t(std::max(0, left)));
+    if (first != "interrupted" && !grid.empty()) {
+      std::vector<std::thread> pool;
+      std::atomic<std::size_t> next{0};
+      for (int t = 0; t < std::max(1, o.threads); ++t)
+        pool.emplace_back([&] {
+          for (std::size_t i = next++; i < grid.size(); i = next++) {
+            if (o.interrupt && o.interrupt->load()) return;
+            search.evaluate(grid[i]);
+          }
+        });
+      for (std::thread& th : pool) th.join();
+      r.stop_reason += "; grid of " + std::to_string(grid.size()) + " designs over the whole ranges";
+    }
+    r.found = bestFeasible(r, &r.best);
+    bool elsewhere = r.found && !local_found;
+    if (r.found && local_found)
+      for (std::size_t k = 0; k < o.params.size(); ++k)
+        elsewhere = elsewhere || std::abs(r.history[r.best].x[k] - x_local[k]) >
+                                     10.0 * o.x_tolerance * (o.params[k].upper - o.params[k].lower);
+    left = o.max_evals - int(search.requests());
+    const bool interrupted = o.interrupt && o.interrupt->load();
+    if (elsewhere && left > 0 && !interrupted) {
+      std::vector<double> u;
+      for (std::size_t k = 0; k < o.params.size(); ++k)
+        u.push_back((r.history[r.best].x[k] - o.params[k].lower) / (o.params[k].upper - o.params[k].lower));
+      search.method = local;
+      r.stop_reason += "; " + local + " from the grid's best: " + runMethod(search, local, u, left, 0.02);
+      r.found = bestFeasible(r, &r.best);
+    }
+    r.method = local + ", grid, " + local;
+    r.scope = std::string("global: ") + local + " from the middle of the ranges, a grid over the whole ranges" +
+              (elsewhere ? ", whose best design lay in another basin and was polished by " + local
+                         : " (no better basin found)");
+    return r;
+  }
   const bool global = r.method == "direct-l" || r.method == "crs2";
   // A global method gets 70 % of the evaluations; the rest polish its best design with the
   // local method (a global search stops far from the exact optimum, and a local one alone may
   // stop at the wrong one of several minima).
   // auto gives the global stage 20 evaluations per parameter at most (DIRECT-L then has sampled
   // every third of the range at least twice over), leaving the rest for the polish.
-  int global_evals = global ? std::max(1, int(0.7 * o.max_evals)) : o.max_evals;
-  if (automatic) global_evals = std::max(1, std::min(global_evals, 20 * int(o.params.size())));
+  const int global_evals = global ? std::max(1, int(0.7 * o.max_evals)) : o.max_evals;
   // Start in the middle of the box with steps of a quarter of each range.
   search.method = r.method;
   r.stop_reason = runMethod(search, r.method, std::vector<double>(o.params.size(), 0.5), global_evals, 0.25);

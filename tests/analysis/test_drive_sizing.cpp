@@ -119,12 +119,69 @@ TEST(DriveSizing, NominalTorqueSourcesAndLinePowerWithMotorEfficiency) {
   EXPECT_NEAR(nominalMotorTorque(sc, &src), 19000.0 / 95, 1e-12);
   EXPECT_NE(src.find("P_n"), std::string::npos);
   const DriveSizing s = sized(sc, run(10000));
-  EXPECT_REL(s.motor.power_line_mean, u * (W * M0 + a * M1 / 2) / 0.8, 1e-4);  // P > 0 throughout
+  // Air-gap power M·ω0 × (1 - s_n)/η_m with s_n = 1 - ω_n/ω0: M·ω_n/η_m (M > 0 throughout).
+  EXPECT_REL(s.motor.power_line_mean, M0 * 95 / 0.8, 1e-4);
   sc.sizing.motor_nominal_power = 0;
   EXPECT_TRUE(std::isnan(nominalMotorTorque(sc, &src)));
   EXPECT_NE(src.find("not given"), std::string::npos);
   sc.sizing.motor_nominal_torque = 150;
   EXPECT_EQ(nominalMotorTorque(sc), 150);
+}
+
+// Finding of the 6-cart trial: a locked rotor (slip 1 throughout) passed "RMS / nominal 0.543" and
+// "peak / breakdown 0.226", and its line power read 0.0007 kW against an air-gap power of 12.3 kW.
+TEST(DriveSizing, LockedRotorFailsEveryMotorCheckAndDrawsItsAirGapPower) {
+  Scene sc = scene();
+  sc.sizing.motor_efficiency = 0.9;
+  RunResult rr;
+  rr.model = "reduced";
+  rr.timeseries.columns = {"t", "phi_crank", "omega_crank", "omega_motor", "motor_torque", "coupling_torque"};
+  const double M = 117;  // rotor torque at slip 1 [N·m], below M_n = 200
+  for (int i = 0; i <= 200; ++i)
+    rr.timeseries.rows.push_back({0.005 * i, 0.5, 5e-4, 5e-4, u * eta * M, u * eta * M});
+  const SteadyState w = detectSteadyState(rr.timeseries, sc.simulation.steady_window_revolutions);
+  const DriveSizing s = computeDriveSizing(sc, rr, w, false, NAN, "stalled");
+  ASSERT_EQ(s.checks.size(), 3u);
+  for (const SizingCheck& c : s.checks) EXPECT_NE(c.verdict, "pass") << c.name << ": " << c.reason;
+  EXPECT_EQ(s.checks[0].verdict, "FAIL");
+  EXPECT_EQ(s.checks[1].verdict, "FAIL");
+  EXPECT_NE(s.checks[0].reason.find("stalled"), std::string::npos);
+  // Locked: all the air-gap power M·ω0 is heat in the rotor; the line gives it plus the stator's
+  // share, (1 - s_n)/η_m as at the nominal point.
+  const double s_n = 1 - 95 / w0;
+  EXPECT_REL(s.motor.power_line_mean, M * w0 * (1 - s_n) / 0.9, 1e-3);
+  EXPECT_GT(s.motor.power_line_mean, 1000.0);
+  // Rotor heat s·M·ω0 against nominal s_n·M_n·ω0: √(M/(s_n·M_n)) ≈ 3.8, far above the RMS ratio 0.585.
+  EXPECT_REL(s.motor.whole_run.thermal_over_nominal, std::sqrt(M / (s_n * 200)), 1e-3);
+  EXPECT_EQ(s.checks[0].window, "whole run");
+}
+
+// Finding of the 6-cart trial: the coupling check saw only the steady window (peak 86 N·m, 0.011
+// pass) while the start-up peak was ~3000 N·m; the motor's start-up heating was ignored.
+TEST(DriveSizing, StartUpPeakAndHeatingDecideTheChecksAndNameTheirWindow) {
+  const Scene sc = scene();
+  RunResult rr = run(10000);
+  const std::size_t n_start = 2000;  // the first third of a revolution: a locked, overloaded start
+  for (std::size_t i = 0; i < n_start; ++i) {
+    rr.timeseries.rows[i][3] = 0.0;                     // rotor at rest: slip 1
+    rr.timeseries.rows[i][4] = u * eta * 400.0;         // 2 M_n at the rotor
+    rr.timeseries.rows[i][5] = 10.0 * (C0 + C1);        // coupling torque spike
+  }
+  const DriveSizing steady_only = sized(sc, run(10000));
+  const DriveSizing s = sized(sc, rr);
+  // The steady window is the same; its figures do not move.
+  EXPECT_REL(s.coupling.peak, steady_only.coupling.peak, 1e-9);
+  EXPECT_REL(s.motor.rms_over_nominal, steady_only.motor.rms_over_nominal, 1e-9);
+  ASSERT_EQ(s.checks.size(), 3u);
+  const SizingCheck &heat = s.checks[0], &coupling = s.checks[2];
+  EXPECT_EQ(steady_only.checks[2].verdict, "pass");
+  EXPECT_EQ(coupling.verdict, "FAIL");
+  EXPECT_EQ(coupling.window, "whole run");
+  EXPECT_NEAR(s.coupling.peak_whole_run, 10.0 * (C0 + C1), 1e-9);
+  EXPECT_LT(s.coupling.t_peak_whole_run, rr.timeseries.rows[n_start][0]);
+  EXPECT_EQ(heat.window, "whole run");
+  EXPECT_GT(heat.value, steady_only.checks[0].value);
+  EXPECT_EQ(s.checks[1].window, "steady window");  // the breakdown margin is a running check
 }
 
 TEST(DriveSizing, FlywheelFromKineticEnergyAndEnergyMethod) {
