@@ -21,18 +21,22 @@
 
 namespace rollerdyn::cli {
 
-// The shipped scene files: ./model when it holds them (a checkout), else the model/ folder of the
-// sources this binary was built from, so `validate` runs from any working directory.
-std::string shippedModelDir() {
+// The repository's top folder holding the shipped scene files and published tables: the working
+// directory when it holds them (a checkout), else the source tree this binary was built from, so
+// `validate` runs from any working directory.
+std::string repositoryDir() {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (fs::exists("model/balanced-4cart.yaml", ec)) return "model";
+  if (fs::exists("model/balanced-4cart.yaml", ec) && fs::exists("validation/published", ec)) return ".";
 #ifdef ROLLERDYN_MODEL_DIR
-  if (fs::exists(fs::path(ROLLERDYN_MODEL_DIR) / "balanced-4cart.yaml", ec)) return ROLLERDYN_MODEL_DIR;
+  const fs::path top = fs::path(ROLLERDYN_MODEL_DIR).parent_path();
+  if (fs::exists(top / "model/balanced-4cart.yaml", ec) && fs::exists(top / "validation/published", ec))
+    return top.string();
 #endif
   throw std::runtime_error(
-      "validate: the shipped scene files (model/balanced-4cart.yaml, ...) are neither in ./model nor in the "
-      "source tree this binary was built from; run it from the repository's top folder");
+      "validate: the shipped scene files and published tables (model/, validation/published/) are neither in "
+      "the working folder nor in the source tree this binary was built from; run it from the repository's top "
+      "folder");
 }
 
 int runValidate(bool quick, const std::string& out_dir) {
@@ -40,7 +44,10 @@ int runValidate(bool quick, const std::string& out_dir) {
   prepareOutputDir(out_dir);  // before the suite: a bad --out fails now
   ValidationOptions o;
   o.quick = quick;
-  o.model_dir = shippedModelDir();
+  const std::string top = repositoryDir();
+  const std::string prefix = top == "." ? "" : top + "/";  // as before from the top folder
+  o.model_dir = prefix + "model";
+  o.published_dir = prefix + "validation/published";
   o.interrupt = &g_interrupted;
   const std::clock_t c0 = std::clock();
   o.log = [c0](const std::string& line) {

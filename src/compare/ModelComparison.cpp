@@ -57,23 +57,31 @@ void columnWithTime(const RunResult& run, const std::string& name, std::vector<d
 }
 
 
-// `name` of the run's timeseries over its steady window folded onto one crank revolution: the
-// mean in each of 72 bins of 5° of φ mod 2π (NaN where a bin got no row).
+// `name` of the run's timeseries over its steady window folded onto one crank revolution: at 72
+// crank angles 5° apart, interpolated linearly between the rows whose angles bracket them and
+// averaged over the window's revolutions (NaN where the crank never passed an angle). Interpolating
+// in φ, not averaging rows in bins, makes the result independent of where each run's rows fall.
 std::vector<double> foldOnRevolution(const RunResult& run, const SteadyState& w, const std::string& name) {
-  constexpr int kBins = 72;
-  std::vector<double> sum(kBins, 0.0), count(kBins, 0.0);
+  constexpr int kAngles = 72;
+  std::vector<double> sum(kAngles, 0.0), count(kAngles, 0.0);
   const Table& ts = run.timeseries;
-  if (!ts.has(name) || !ts.has("phi_crank")) return std::vector<double>(kBins, kNaN);
+  if (!ts.has(name) || !ts.has("phi_crank")) return std::vector<double>(kAngles, kNaN);
   const int ip = ts.index("phi_crank"), iy = ts.index(name);
-  const double two_pi = 2.0 * M_PI;
-  for (std::size_t i = w.row_begin; i < w.row_end && i < ts.rows.size(); ++i) {
-    double a = std::fmod(ts.rows[i][ip], two_pi);
-    if (a < 0) a += two_pi;
-    const int b = std::min(kBins - 1, int(a / two_pi * kBins));
-    sum[b] += ts.rows[i][iy];
-    count[b] += 1;
+  const double step = 2.0 * M_PI / kAngles;
+  for (std::size_t i = w.row_begin; i + 1 < w.row_end && i + 1 < ts.rows.size(); ++i) {
+    const double a0 = ts.rows[i][ip], a1 = ts.rows[i + 1][ip];
+    if (!(a1 != a0) || !std::isfinite(a0) || !std::isfinite(a1)) continue;
+    const double lo = std::min(a0, a1), hi = std::max(a0, a1);
+    // grid angles k·step (all turns) in (lo, hi]
+    for (long g = long(std::floor(lo / step)) + 1; g * step <= hi; ++g) {
+      const double f = (g * step - a0) / (a1 - a0);
+      const double y = ts.rows[i][iy] + f * (ts.rows[i + 1][iy] - ts.rows[i][iy]);
+      const int k = int(((g % kAngles) + kAngles) % kAngles);
+      sum[k] += y;
+      count[k] += 1;
+    }
   }
-  for (int b = 0; b < kBins; ++b) sum[b] = count[b] > 0 ? sum[b] / count[b] : kNaN;
+  for (int k = 0; k < kAngles; ++k) sum[k] = count[k] > 0 ? sum[k] / count[k] : kNaN;
   return sum;
 }
 

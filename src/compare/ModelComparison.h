@@ -63,7 +63,7 @@ struct SteadyMetricComparison {
 
 // The two models' steady running compared at the same crank angle rather than at the same time:
 // the time series of a quantity over each run's steady window, folded onto one revolution
-// (bins of 5° of crank angle, means), so a model that runs a little faster or slower (its crank
+// (72 crank angles 5° apart, interpolated in φ between rows, averaged over the revolutions), so a model that runs a little faster or slower (its crank
 // a few degrees ahead after many revolutions: phase drift) does not read as a different shape.
 struct ShapeComparison {
   std::string name;            // omega_crank, coupling_torque
