@@ -136,7 +136,13 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   }
   if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(rq.mean)) {
     r.thermal_over_nominal = std::sqrt(std::max(0.0, rq.mean) / (s_n * m.nominal_torque * w0));
-    r.thermal_basis = "√(mean of s·M over the whole run / (s_n·M_n)): rotor heat s·M·ω0 against nominal";
+    char duty[200];
+    const double span = run_end >= 2 ? t[run_end - 1] - t[0] : kNaN;
+    std::snprintf(duty, sizeof duty,
+                  " (the whole run as a duty cycle repeated: a start every %.4g s, %.0f starts per hour)", span,
+                  3600.0 / span);
+    r.thermal_basis = "√(mean of s·M over the whole run / (s_n·M_n)): rotor heat s·M·ω0 against nominal" +
+                      std::string(duty);
   } else {
     r.thermal_over_nominal = r.rms_over_nominal;
     r.thermal_basis = "RMS torque over the whole run / M_n (s_n not known: motor.omega_nominal not given; "
