@@ -14,9 +14,11 @@
 //    thermal equivalent √(mean(s·M)/(s_n·M_n)) counts them. The whole run stands for a duty
 //    cycle that repeats this run (start, running for t_end); stator and iron losses are taken to
 //    scale like the rotor's (they follow the current, which follows √(s·M) off nominal too).
-//  * breakdown margin: peak |M| / M_kr over the steady window only: a start from rest passes
-//    through M_kr by design (the static law reaches exactly M_kr at s_kr), so the whole run
-//    always reads 1 there; a steady peak near M_kr means the motor falls off its running branch.
+//  * breakdown margin: peak |M| / M_kr over the steady window only, below 0.95² = 0.9025 (the
+//    breakdown torque goes with the square of the voltage, and IEC 60034-1 zone A allows the
+//    supply 5 % low): a start from rest passes through M_kr by design (the static law reaches
+//    exactly M_kr at s_kr), so the whole run always reads 1 there; a steady peak near M_kr means
+//    the motor falls off its running branch at the first dip of the supply.
 //  * coupling: peak |M| / rating over the whole run (start-up peaks included) and the steady
 //    window; the larger decides.
 // A drive that does not turn (stalled, rocking) fails the motor checks with the reason, and the

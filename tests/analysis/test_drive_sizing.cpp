@@ -184,6 +184,19 @@ TEST(DriveSizing, StartUpPeakAndHeatingDecideTheChecksAndNameTheirWindow) {
   EXPECT_EQ(s.checks[1].window, "steady window");  // the breakdown margin is a running check
 }
 
+// The 6-cart trial at 90°: the steady peak reached 0.966·M_kr and passed as "< 1"; 5 % below the
+// rated voltage (IEC 60034-1 zone A) the motor gives 0.9025·M_kr and stalls.
+TEST(DriveSizing, BreakdownCheckKeepsTheSupplyMargin) {
+  Scene sc = scene();
+  sc.motor.breakdown_torque = (M0 + M1) / 0.95;  // steady peak 0.95·M_kr
+  const DriveSizing near = sized(sc, run(10000));
+  EXPECT_NEAR(near.motor.peak_over_breakdown, 0.95, 1e-6);
+  EXPECT_EQ(near.checks[1].name, "motor_breakdown");
+  EXPECT_EQ(near.checks[1].verdict, "FAIL");
+  sc.motor.breakdown_torque = (M0 + M1) / 0.88;
+  EXPECT_EQ(sized(sc, run(10000)).checks[1].verdict, "pass");
+}
+
 TEST(DriveSizing, FlywheelFromKineticEnergyAndEnergyMethod) {
   const Scene sc = scene();
   const DriveSizing s = sized(sc, run(10000), 0.2);
