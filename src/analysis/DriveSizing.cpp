@@ -354,6 +354,10 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
   const MotorSizing& m = s.motor;
   const std::string not_turning =
       "the drive does not turn (" + (s.motion.empty() ? std::string("not turning") : s.motion) + ")";
+  // Still starting when the run ended: nothing is known of its running, so no verdict applies.
+  const bool starting = s.motion == "starting";
+  const std::string too_short = "the run ended before the drive settled (its speed still changes sign in the "
+                                "metrics window): run longer (simulation.t_end)";
   if (m.available) {
     SizingCheck h{"motor_heating", "thermal equivalent torque / nominal torque M_n, ≤ 1", kNaN, "", "", ""};
     const double steady = m.rms_over_nominal, whole = m.whole_run.thermal_over_nominal;
@@ -365,7 +369,10 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
                              : "RMS torque / M_n over the steady window (" + fmt3(steady) +
                                    "; whole run thermal equivalent " + fmt3(whole) + ")";
     h.verdict = verdictOf(h.value, false);
-    if (!turning) {
+    if (starting) {
+      h.verdict = "not applicable";
+      h.reason = too_short;
+    } else if (!turning) {
       h.verdict = "FAIL";
       h.reason = not_turning + ": a motor that cannot drive its load overheats whatever the torque; " + h.reason;
     }
@@ -380,7 +387,10 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
                   m.peak_over_breakdown, verdictOf(m.peak_over_breakdown / limit, true), kSteady, ""};
     k.reason = "peak " + fmt3(m.torque_shaft_peak) + " N·m in the steady window; whole run " +
                fmt3(m.whole_run.torque_shaft_peak) + " N·m";
-    if (!turning) {
+    if (starting) {
+      k.verdict = "not applicable";
+      k.reason = too_short;
+    } else if (!turning) {
       k.verdict = "FAIL";
       k.reason = not_turning + ": the load needs more than the motor gives";
     }

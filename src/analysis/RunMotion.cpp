@@ -8,7 +8,8 @@
 
 namespace rollerdyn {
 
-std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMetrics& m, double window_advance) {
+std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMetrics& m, double window_advance,
+                           bool steady_reached) {
   // The models end a hopeless run with the detector's own status line (StallDetector.h); the
   // same rule applied to the rows catches a table that was not produced by a model run.
   if (!run.stats.complete) {
@@ -25,7 +26,10 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
         return d.kind() == StallKind::RockingWithoutGain ? "rocking" : "stalled";
   }
   if (!std::isfinite(m.omega_min) || !std::isfinite(m.omega_max)) return "unknown";
-  if (m.omega_min < 0 && m.omega_max > 0 && !(std::abs(window_advance) >= 2.0 * M_PI)) return "rocking";
+  if (m.omega_min < 0 && m.omega_max > 0) {
+    if (!(std::abs(window_advance) >= 2.0 * M_PI)) return "rocking";
+    if (!steady_reached) return "starting";
+  }
   if (m.omega_min == 0 && m.omega_max == 0) return "at_rest";
   return "turning";
 }

@@ -71,7 +71,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
     const int k = run.timeseries.index("phi_crank");
     advance = run.timeseries.rows[ss.row_end - 1][k] - run.timeseries.rows[ss.row_begin][k];
   }
-  const std::string crank_motion = classifyMotion(scene, run, m, advance);
+  const std::string crank_motion = classifyMotion(scene, run, m, advance, ss.reached);
   const bool turning = motionIsTurning(crank_motion);
   j["motion"] = crank_motion;
   j["crank_motion"] = crank_motion;
@@ -213,6 +213,8 @@ std::string summaryText(const nlohmann::json& s) {
     << (motion == "turning"   ? "  (the crank turns one way)"
         : motion == "rocking" ? "  (the crank swings back and forth instead of turning)"
         : motion == "stalled" ? "  (the motor stalled; why: see status)"
+        : motion == "starting" ? "  (the crank got going but the run ended before it settled: run longer, "
+                                 "simulation.t_end; no sizing verdict applies yet)"
                               : "")
     << "\n";
   o << "status       " << str(at("status")) << "\n";

@@ -87,6 +87,22 @@ TEST(CliTrialFindings, SteadyStateLineSaysWhatItsNumbersMean) {
   EXPECT_NE(r.out.find("metrics window: the last"), std::string::npos) << r.out;
 }
 
+// A drive that rocked at first and then got going, in a run too short to settle, is "starting":
+// no δ from a window that holds its rocking (the 6-cart trial's sweep printed δ = 10.49 for it)
+// and no sizing verdict, while a drive that keeps rocking is "rocking".
+TEST(CliTrialFindings, ShortRunOfAStartingDriveGivesNoVerdict) {
+  TempDir out("starting");
+  const auto r = runRollerdyn({"simulate", model("balanced-4cart.yaml"), "--model", "reduced", "--set",
+                               "simulation.t_end=3", "--set", "crank.offset_deg=60", "--out", out.str()},
+                              60);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(slurp(out.path() / "summary.json"));
+  EXPECT_EQ(j["motion"], "starting");
+  EXPECT_TRUE(j["delta"].is_null());
+  for (const auto& c : j["sizing"]["checks"]) EXPECT_NE(c["verdict"], "pass") << c.dump();
+  EXPECT_EQ(j["sizing"]["checks"][0]["verdict"], "not applicable");
+}
+
 // `validate` only ran from the repository's top folder ("cannot read published table
 // 'validation/published/...'" from anywhere else). --quick: about 3 s of CPU.
 TEST(CliTrialFindings, ValidateRunsFromAnyFolder) {
