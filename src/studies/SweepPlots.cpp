@@ -24,7 +24,7 @@ std::string num(double v) {
 }
 
 const char* kLegend =
-    "black-hatched colour: turning, steady state not reached;  grey hatched: rocking, stalled or "
+    "black-hatched colour: turning, steady state not reached;  grey hatched: starting (run too short), rocking, stalled or "
     "failed (no value)";
 
 }  // namespace
@@ -204,7 +204,7 @@ std::vector<std::string> drawSweepPlots(const SweepOptions& o, const SweepResult
       for (const auto& e : edges) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
       if (xh > xl) pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
       if (any_bad)
-        pre << "set label 1 \"grey hatched: rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
+        pre << "set label 1 \"grey hatched: starting, rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
       spec.preamble = pre.str();
       spec.series.push_back(steady);
       if (!unsteady.x.empty()) spec.series.push_back(unsteady);
