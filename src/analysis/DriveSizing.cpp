@@ -134,6 +134,15 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
     r.slip_min = *lo;
     r.slip_max = *hi;
   }
+  r.start_heat = r.starts_per_hour = nan;
+  const Moments sq = moments(t, losses, b, e);
+  if (run_end >= 2 && std::isfinite(rq.mean) && std::isfinite(sq.mean)) {
+    const double span = t[run_end - 1] - t[0];
+    r.start_heat = std::max(0.0, (rq.mean - sq.mean) * span);
+    const double nominal_losses = s_n * m.nominal_torque * w0;  // s_n·M_n·ω0
+    if (s_n > 0 && m.nominal_torque > 0 && r.start_heat > 0)
+      r.starts_per_hour = std::max(0.0, 3600.0 * (nominal_losses - sq.mean) / r.start_heat);
+  }
   if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(rq.mean)) {
     r.thermal_over_nominal = std::sqrt(std::max(0.0, rq.mean) / (s_n * m.nominal_torque * w0));
     char duty[200];
@@ -141,8 +150,14 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
     std::snprintf(duty, sizeof duty,
                   " (the whole run as a duty cycle repeated: a start every %.4g s, %.0f starts per hour)", span,
                   3600.0 / span);
+    char starts[200] = "";
+    if (std::isfinite(r.starts_per_hour))
+      std::snprintf(starts, sizeof starts,
+                    "; the start adds %.3g kJ of rotor heat, so the rotor's heat balance allows about %.3g starts per "
+                    "hour at this load",
+                    r.start_heat * 1e-3, r.starts_per_hour);
     r.thermal_basis = "√(mean of s·M over the whole run / (s_n·M_n)): rotor heat s·M·ω0 against nominal" +
-                      std::string(duty);
+                      std::string(duty) + starts;
   } else {
     r.thermal_over_nominal = r.rms_over_nominal;
     r.thermal_basis = "RMS torque over the whole run / M_n (s_n not known: motor.omega_nominal not given; "

@@ -48,6 +48,10 @@ struct MotorWholeRun {
   double rotor_losses_mean = 0;    // mean of s·M·ω0, the rotor's copper losses [W]
   double thermal_over_nominal = 0; // √(mean(s·M)/(s_n·M_n)) [-]; RMS/M_n when s_n is not known
   std::string thermal_basis;       // which of the two
+  double start_heat = 0;           // rotor heat of the run above its steady level: ∫s·M·ω0 dt minus
+                                   // the steady window's mean losses × the run's duration [J]
+  double starts_per_hour = 0;      // starts per hour the rotor's heat balance allows at this load:
+                                   // 3600·(s_n·M_n·ω0 − steady losses)/start_heat [1/h]
   double power_line_mean = 0, power_line_peak = 0;  // drawn from the line [W]
   double slip_min = 0, slip_max = 0;  // s [-]
 };

@@ -90,6 +90,8 @@ json sizingJson(const DriveSizing& s) {
           {"rotor_losses_mean", num(r.rotor_losses_mean)},
           {"thermal_over_nominal", num(r.thermal_over_nominal)},
           {"thermal_basis", r.thermal_basis},
+          {"start_heat", num(r.start_heat)},
+          {"starts_per_hour", num(r.starts_per_hour)},
           {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
           {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}}}};
   } else {

@@ -182,6 +182,11 @@ TEST(DriveSizing, StartUpPeakAndHeatingDecideTheChecksAndNameTheirWindow) {
   EXPECT_EQ(heat.window, "whole run");
   EXPECT_GT(heat.value, steady_only.checks[0].value);
   EXPECT_EQ(s.checks[1].window, "steady window");  // the breakdown margin is a running check
+  // The start's rotor heat: s = 1 and M = 400 N·m for the replaced rows, s·M·ω0 = 40 kW over them.
+  const double t_start = rr.timeseries.rows[n_start][0];
+  EXPECT_NEAR(s.motor.whole_run.start_heat, 400.0 * w0 * t_start, 0.03 * 400.0 * w0 * t_start);
+  EXPECT_TRUE(std::isfinite(s.motor.whole_run.starts_per_hour));
+  EXPECT_GT(s.motor.whole_run.starts_per_hour, 0.0);
 }
 
 // The 6-cart trial at 90°: the steady peak reached 0.966·M_kr and passed as "< 1"; 5 % below the
