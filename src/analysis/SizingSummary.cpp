@@ -233,13 +233,28 @@ std::string sizingText(const json& summary) {
         return q + "'";
       };
       std::string cmd = "rollerdyn optimize " + quoted(str(at(summary, "scene_path")));
+      bool sets_speed = false;
       if (at(summary, "overrides").is_array())
         for (const json& ov : at(summary, "overrides"))
-          if (ov.is_string()) cmd += " --set " + quoted(ov.get<std::string>());
+          if (ov.is_string()) {
+            cmd += " --set " + quoted(ov.get<std::string>());
+            sets_speed = sets_speed || ov.get<std::string>().rfind("initial.crank_speed=", 0) == 0;
+          }
+      // The flywheel is sized for steady running: each run starts at this run's mean crank speed,
+      // so that a heavy flywheel's slow start from rest (which may not settle within t_end) does
+      // not make every design look unusable. Whether the drive starts from rest with the chosen
+      // flywheel is a separate run.
+      const json& w_mean = at(at(summary, "omega_crank"), "mean");
+      const bool start_at_speed = !sets_speed && w_mean.is_number() && w_mean.get<double>() > 0;
+      if (start_at_speed) cmd += " --set initial.crank_speed=" + fmt(w_mean, "%.4g");
       cmd += " --param flywheel.inertia --range 0:" + fmt(json(upper), "%.0f") +
              " --minimize flywheel.inertia --constraint 'delta<=" + fmt(at(f, "target_delta"), "%.4g") + "'";
       o << "                                    the smallest flywheel (" << (motor_shaft ? "motor shaft" : "crankshaft")
-        << ") that meets δ*, from runs:\n      " << cmd << "\n";
+        << ") that meets δ* in steady running, from runs"
+        << (start_at_speed ? " started at this run's mean crank speed (whether the drive starts from rest with it "
+                             "is a separate run)"
+                           : "")
+        << ":\n      " << cmd << "\n";
     } else if (added.is_number()) {
       o << "                                    this run already meets δ* (no flywheel needs adding)\n";
     }

@@ -165,7 +165,8 @@ class Search {
     if (!p.complete) {
       e.reason = "did not complete: " + p.status;
     } else if (!p.steady) {
-      e.reason = "no steady state by t_end";
+      e.reason = "no steady state by t_end (a longer simulation.t_end, or a start at speed with "
+                 "initial.crank_speed, may settle it)";
     } else if (!(omega_min > 0)) {
       std::ostringstream os;
       os << "the crank does not turn steadily (rocks or stops): omega_crank_min = " << omega_min << " rad/s";

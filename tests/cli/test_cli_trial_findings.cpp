@@ -56,6 +56,7 @@ TEST(CliTrialFindings, FlywheelHintRunsAsPrinted) {
   EXPECT_EQ(cmd.find("--range 0:0 "), std::string::npos) << cmd;
   EXPECT_NE(cmd.find(model("recuperative-2cart.yaml")), std::string::npos) << cmd;
   EXPECT_NE(cmd.find("--set sizing.target_delta=0.04 --set simulation.t_end=8"), std::string::npos) << cmd;
+  EXPECT_NE(cmd.find("--set initial.crank_speed="), std::string::npos) << cmd;  // sized for steady running
   // Run it as printed (reduced model, few evaluations, to keep the test short).
   TempDir opt("hint-run");
   const std::string line = std::string(ROLLERDYN_BINARY) + cmd.substr(std::string("rollerdyn").size()) +
