@@ -65,6 +65,27 @@ TEST(CliTrialFindings, FlywheelHintRunsAsPrinted) {
   EXPECT_TRUE(fs::exists(opt.path() / "optimize.json")) << line;
 }
 
+// designs.png plotted the minimised parameter against itself; why a figure is missing was only in
+// optimize.json. With a constraint the figure shows the constrained metric against the parameter.
+TEST(CliTrialFindings, OptimizeDesignsFigureIsNeverAParameterAgainstItself) {
+  TempDir out("designs");
+  auto r = runRollerdyn({"optimize", model("energy-balanced-3cart.yaml"), "--param", "flywheel.inertia", "--range",
+                         "0:400", "--minimize", "flywheel.inertia", "--model", "reduced", "--max-evals", "8", "--out",
+                         out.str()},
+                        120);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.err.find("figures: no designs figure"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out.path() / "designs.png"));
+  TempDir out2("designs2");
+  r = runRollerdyn({"optimize", model("energy-balanced-3cart.yaml"), "--param", "flywheel.inertia", "--range", "0:400",
+                    "--minimize", "flywheel.inertia", "--constraint", "delta<=0.05", "--model", "reduced", "--out",
+                    out2.str()},
+                   120);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(slurp(out2.path() / "optimize.json"));
+  EXPECT_EQ(j["plot_note"], "") << j["plot_note"];
+}
+
 // A sweep over designs from a file wrote no plots and did not say why.
 TEST(CliTrialFindings, ValuesFileSweepSaysWhyThereAreNoPlots) {
   TempDir out("vfile");
