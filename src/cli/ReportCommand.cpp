@@ -27,7 +27,7 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   const std::vector<SceneParameterRow> parameters = sceneParameterRows(args.scene_path, args.overrides);
 
   const RunResult run = runMultibodyWithProgress(scene);
-  const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir);
+  const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir, args.overrides);
 
   const OutputFolder folder = outputFolderOf(out_dir, run, summary);
   const FigureSet figures = drawRunFigures(folder, &scene, (fs::path(out_dir) / "figures").string());
@@ -55,7 +55,7 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   std::cout << summaryText(summary) << figureSetText(figures, (fs::path(out_dir) / "figures").string())
             << "report: " << page << '\n';
   if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
-  return run.stats.complete ? 0 : 3;
+  return runExitCode(run, summary);
 }
 
 }  // namespace rollerdyn::cli

@@ -7,6 +7,7 @@
 #include "cli/Progress.h"
 #include "multibody/MultibodySimulation.h"
 #include "report/OutputFolder.h"
+#include "scene/Plausibility.h"
 #include "studies/ResonanceCheck.h"
 #include "studies/StartLoad.h"
 
@@ -21,14 +22,24 @@ RunResult runMultibodyWithProgress(const Scene& scene) {
 }
 
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
-                               const std::string& out_dir) {
+                               const std::string& out_dir, const std::vector<std::string>& overrides) {
   writeRunTables(out_dir, run);
   const StartLoad start_load = startLoadOf(scene);  // explains a stall
   nlohmann::json summary = makeSummary(scene, run, &start_load);
   summary["scene_path"] = absolutePath(scene_path);
-  for (const std::string& w : addResonanceWarnings(scene, summary)) std::cerr << "rollerdyn: warning: " << w << '\n';
+  summary["overrides"] = overrides;
+  addResonanceWarnings(scene, summary);  // appends to summary["warnings"] (the load's may be there)
+  for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
+  for (const auto& w : summary["warnings"])
+    if (w.is_string()) std::cerr << "rollerdyn: warning: " << w.get<std::string>() << '\n';
   writeSummaryAtomic(out_dir + "/summary.json", summary);
   return summary;
+}
+
+int runExitCode(const RunResult& run, const nlohmann::json& summary) {
+  const std::string motion = summary.value("motion", "");
+  if (motion == "stalled" || motion == "rocking") return kExitDriveDoesNotTurn;
+  return run.stats.complete ? 0 : kExitRunFailed;
 }
 
 }  // namespace rollerdyn::cli

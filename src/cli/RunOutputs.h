@@ -18,7 +18,16 @@ RunResult runMultibodyWithProgress(const Scene& scene);
 // Writes the run's tables (writeRunTables) and summary.json, with the scene file's absolute path
 // so `plot DIR` finds it from anywhere, into out_dir; prints the resonance warnings (Dyomin (two
 // rotors) eq. (10)) on stderr. Returns the summary.
+// `overrides`: the user's --set options, kept in summary.json ("overrides") so that commands the
+// console suggests (the flywheel search) repeat them.
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
-                               const std::string& out_dir);
+                               const std::string& out_dir, const std::vector<std::string>& overrides = {});
+
+// Exit codes of a run's command: 0 the crank turns; 4 the drive stalls or rocks (a valid run of a
+// drive that does not work); 3 the run did not complete for another reason (numerical failure,
+// interrupted).
+inline constexpr int kExitDriveDoesNotTurn = 4;
+inline constexpr int kExitRunFailed = 3;
+int runExitCode(const RunResult& run, const nlohmann::json& summary);
 
 }  // namespace rollerdyn::cli

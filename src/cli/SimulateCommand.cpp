@@ -37,13 +37,13 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   } else {
     throw std::invalid_argument("--model: expected multibody or reduced, got '" + model + "'");
   }
-  const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir);
+  const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir, args.overrides);
   std::cout << summaryText(summary) << sizingText(summary) << "outputs in " << out_dir << "/\n";
   if (plot)  // figures from the tables in memory and the scene with its overrides
     std::cout << figureSetText(drawRunFigures(outputFolderOf(out_dir, run, summary), &scene, out_dir + "/figures"),
                                out_dir + "/figures");
   if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
-  return run.stats.complete ? 0 : 3;
+  return runExitCode(run, summary);
 }
 
 }  // namespace rollerdyn::cli

@@ -12,17 +12,42 @@
 #include "cli/Commands.h"
 #include "compare/StudiesReport.h"
 #include "compare/ValidationSuite.h"
+#include <filesystem>
+#include <stdexcept>
+
 #include "io/AtomicFile.h"
 #include "report/Gnuplot.h"
 #include "report/OutputDir.h"
 
 namespace rollerdyn::cli {
 
+// The repository's top folder holding the shipped scene files and published tables: the working
+// directory when it holds them (a checkout), else the source tree this binary was built from, so
+// `validate` runs from any working directory.
+std::string repositoryDir() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists("model/balanced-4cart.yaml", ec) && fs::exists("validation/published", ec)) return ".";
+#ifdef ROLLERDYN_MODEL_DIR
+  const fs::path top = fs::path(ROLLERDYN_MODEL_DIR).parent_path();
+  if (fs::exists(top / "model/balanced-4cart.yaml", ec) && fs::exists(top / "validation/published", ec))
+    return top.string();
+#endif
+  throw std::runtime_error(
+      "validate: the shipped scene files and published tables (model/, validation/published/) are neither in "
+      "the working folder nor in the source tree this binary was built from; run it from the repository's top "
+      "folder");
+}
+
 int runValidate(bool quick, const std::string& out_dir) {
   using namespace rollerdyn::validation;
   prepareOutputDir(out_dir);  // before the suite: a bad --out fails now
   ValidationOptions o;
   o.quick = quick;
+  const std::string top = repositoryDir();
+  const std::string prefix = top == "." ? "" : top + "/";  // as before from the top folder
+  o.model_dir = prefix + "model";
+  o.published_dir = prefix + "validation/published";
   o.interrupt = &g_interrupted;
   const std::clock_t c0 = std::clock();
   o.log = [c0](const std::string& line) {

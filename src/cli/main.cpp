@@ -42,7 +42,8 @@ int main(int argc, char** argv) {
       "  rollerdyn plot out/balanced-4cart                            figures of an output folder\n"
       "  rollerdyn report model/balanced-4cart.yaml --set crank.offset_deg=60 --out out/dphi60\n"
       "                                                               -> out/dphi60/report.html\n"
-      "Exit codes: 0 success, 2 bad input or set-up, 3 run ended early (outputs still written).\n"
+      "Exit codes: 0 success, 2 bad input or set-up, 3 a run failed (numerical failure, interrupted; outputs still "
+      "written), 4 the drive stalls or rocks instead of turning (outputs written; the sizing checks fail).\n"
       "Ctrl-C stops a run at the next output row and writes what it has.");
 
   SceneArgs check_args;

@@ -196,6 +196,9 @@ struct Loads {
   double guide_friction_lag = 2e-3;  // τ_N: time constant with which the multibody model's
                                // friction normal force follows the guide reaction [s]
                                //                     loads.guide_friction.normal_force_lag
+  double rolling_resistance = 0;  // μ_r, rolling resistance of the compacting rollers in the mix:
+                               // a force μ_r·(R_j1 + R_j2) against the cart's velocity, added to
+                               // F_j1 + F_j2 in either reading [-]      loads.rolling_resistance
 };
 
 struct ReducedSettings {

@@ -93,6 +93,9 @@ ConnectingRods readRods(const Reader& in, double r) {
   }
   if (rods.model == RodModel::Massless) {
     rods.mass = in.numberOr("rods.mass", 0.0);  // kept for reference; the models ignore it
+    // The range is checked here, not in the schema, so that one rule gives one message: >= 0
+    // for massless rods, > 0 otherwise.
+    if (rods.mass < 0.0) in.doc().fail("rods.mass", "a number >= 0 [kg]", formatNumber(rods.mass));
   } else {
     rods.mass = in.requiredNumber("rods.mass", "required unless rods.model is massless");
     if (rods.mass <= 0.0) {
@@ -227,6 +230,7 @@ Loads readLoads(const Reader& in) {
   l.guide_friction = in.number("loads.guide_friction.coefficient");
   l.gravity = in.number("loads.gravity");
   l.velocity_smoothing = in.number("loads.velocity_smoothing");
+  l.rolling_resistance = in.number("loads.rolling_resistance");
   l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
   return l;
 }
@@ -272,8 +276,8 @@ Scene readScene(const SceneDocument& doc) {
   Scene s;
   s.source_path = doc.file();
   s.name = std::filesystem::path(doc.file()).stem().string();
-  s.source = in.text("source");
-  if (s.source.find_first_not_of(" \t\n") == std::string::npos) {
+  s.source = in.text("source");  // optional: a scene of one's own need not cite a paper
+  if (in.has("source") && s.source.find_first_not_of(" \t\n") == std::string::npos) {
     doc.fail("source", "a citation of the source paper (non-empty text)", "empty text");
   }
   s.simulation = readSimulation(in);

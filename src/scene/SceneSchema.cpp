@@ -37,8 +37,8 @@ KeySpec choice(std::string path, Presence presence, std::vector<std::string> cho
 std::vector<KeySpec> buildSchema() {
   using P = Presence;
   return {
-      {"source", KeyKind::Text, "-", P::Required, anyFinite(), 0.0, "", {},
-       "citation of the paper the scene comes from (authors, year, title)"},
+      {"source", KeyKind::Text, "-", P::Optional, anyFinite(), 0.0, "", {},
+       "citation of the paper the scene comes from (authors, year, title); optional for a scene of your own"},
 
       number("simulation.t_end", "s", P::Required, positive(), 0.0, "simulated time span"),
       number("simulation.accuracy", "-", P::Optional, between(0.0, false, 1.0, false), 1e-6,
@@ -81,7 +81,7 @@ std::vector<KeySpec> buildSchema() {
              "connecting-rod mass model"),
       number("rods.length", "m", P::Required, positive(), 0.0,
              "rod length l, crank pin to cart hinge (l > r)"),
-      number("rods.mass", "kg", P::Conditional, nonNegative(), 0.0,
+      number("rods.mass", "kg", P::Conditional, anyFinite(), 0.0,
              "mass of one rod (required unless rods.model is massless)"),
       number("rods.inertia_com", "kg·m²", P::Conditional, nonNegative(), 0.0,
              "rod inertia about its centre of mass (default m·l²/12)"),
@@ -209,6 +209,9 @@ std::vector<KeySpec> buildSchema() {
              "R_j2, upward reaction of the mix on the rear roller"),
       choice("loads.roller_force_direction", P::Optional, {"opposes_velocity", "as_printed"},
              "opposes_velocity", "direction law of the horizontal roller forces"),
+      number("loads.rolling_resistance", "-", P::Optional, between(0.0, true, 1.0, false), 0.0,
+             "mu_r, rolling resistance of the compacting rollers: a force mu_r*(R_j1 + R_j2) against the cart's "
+             "velocity, the energy compaction dissipates (docs/loads.md)"),
       number("loads.guide_friction.coefficient", "-", P::Optional,
              between(0.0, true, 1.0, false), 0.0, "f, reduced guide-roller friction coefficient"),
       number("loads.guide_friction.normal_force_lag", "s", P::Optional, between(0.0, false, 1.0, true),

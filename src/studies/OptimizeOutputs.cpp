@@ -29,7 +29,7 @@ nlohmann::json evaluationJson(const OptimizeOptions& o, const OptimizeEvaluation
 }  // namespace
 
 std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const OptimizeResult& r,
-                                              const std::string& out_dir) {
+                                              const std::string& out_dir, std::string* plot_note_out) {
   std::vector<std::string> files;
   // --- history.csv: one row per distinct evaluation, in the order they were made ---
   std::ostringstream csv;
@@ -90,13 +90,23 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
       spec.series = {all, bad, line};
       renderPlot(spec, out_dir + "/convergence");
       plots.push_back(out_dir + "/convergence.png");
-      if (o.params.size() <= 2 && r.found) {
+      // One parameter that is itself the minimised quantity: plot the first constraint's metric
+      // against it instead (the objective against itself is a diagonal line and says nothing).
+      const bool self = o.params.size() == 1 && o.params[0].key == o.minimize;
+      if (self && o.constraints.empty())
+        plot_note = "no designs figure: the minimised quantity is the only parameter and there is no constraint "
+                    "to plot against it";
+      if (o.params.size() <= 2 && r.found && !(self && o.constraints.empty())) {
         // The evaluated designs and the optimum: objective against the parameter (one), or the
         // designs in the plane of the two parameters.
         PlotSpec d;
         d.title = escapeUnderscores("evaluated designs and the optimum (" + r.method + ")");
         d.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
-        d.ylabel = escapeUnderscores(sweepParamLabel(o.params.size() == 1 ? o.minimize : o.params[1].key));
+        const std::string y_name = o.params.size() == 2 ? o.params[1].key : self ? o.constraints[0].metric : o.minimize;
+        auto yOf = [&](const OptimizeEvaluation& e) {
+          return o.params.size() == 2 ? e.x[1] : self ? e.point.metric(o.constraints[0].metric) : e.objective;
+        };
+        d.ylabel = escapeUnderscores(sweepParamLabel(y_name));
         d.preamble = "set key below";
         PlotSeries ok, viol, opt;
         ok.title = "constraints hold";
@@ -110,11 +120,11 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
           if (o.params.size() == 1 && !e.run_ok) continue;
           PlotSeries& s = e.feasible() ? ok : viol;
           s.x.push_back(e.x[0]);
-          s.y.push_back(o.params.size() == 1 ? e.objective : e.x[1]);
+          s.y.push_back(yOf(e));
         }
         const OptimizeEvaluation& b = r.history[r.best];
         opt.x.push_back(b.x[0]);
-        opt.y.push_back(o.params.size() == 1 ? b.objective : b.x[1]);
+        opt.y.push_back(yOf(b));
         d.series = {ok, viol, opt};
         renderPlot(d, out_dir + "/designs");
         plots.push_back(out_dir + "/designs.png");
@@ -136,6 +146,7 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
   j["parameters"] = nlohmann::json::array();
   for (const SampleRange& p : o.params) j["parameters"].push_back({{"key", p.key}, {"lower", p.lower}, {"upper", p.upper}});
   j["method"] = r.method;
+  j["scope"] = r.scope;
   j["evaluations"] = r.history.size();
   j["evaluations_requested"] = r.requests;
   j["max_evals"] = o.max_evals;
@@ -151,6 +162,7 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
                 "ranges, raise --max-evals, or try --method direct-l";
   j["plots"] = plots;
   j["plot_note"] = plot_note;
+  if (plot_note_out) *plot_note_out = plot_note;
   writeFileAtomic(out_dir + "/optimize.json", j.dump(2) + "\n");
   files.push_back(out_dir + "/optimize.json");
   return files;

@@ -7,7 +7,10 @@
 //   crs2      Kaelo and Ali (2006) CRS2 with local mutation: global, random search.
 //   multistart  the local method (bobyqa or cobyla) from the middle of the box and from a Latin
 //             hypercube of further starts, one search per thread, side by side.
-// "auto" is bobyqa without constraints and cobyla with them (local, from the middle of the box).
+// "auto": the local method (bobyqa without constraints, cobyla with them) from the middle of the
+// box, then a grid over the whole box (with the evenly spread crank offsets 360°·k/n), then the
+// local method again from the best design when it lies in another basin (Optimizer.cpp);
+// bobyqa and cobyla alone are local and say so.
 // The global methods handle constraints and failed runs by a penalty, and the local method
 // polishes their best design (see Optimizer.cpp).
 //
@@ -74,6 +77,8 @@ struct OptimizeResult {
   bool found = false;                       // some evaluation is feasible
   std::size_t best = 0;                     // index into history of the feasible minimum
   std::string stop_reason;                  // NLopt's result, in words
+  std::string scope;                        // local or global, in words (printed with the optimum)
+  std::vector<double> values_handed;        // every objective value handed to NLopt, in order (finite)
 };
 
 // Throws std::invalid_argument for an unknown metric, key, method or model, a bad range or
@@ -82,7 +87,8 @@ OptimizeResult runOptimize(const OptimizeOptions& options);
 
 // optimize.json, history.csv, convergence figure (and, with one or two parameters, the evaluated
 // designs with the optimum marked). Returns the files written.
+// `plot_note` receives why figures are missing ("" when all were drawn).
 std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& options, const OptimizeResult& result,
-                                              const std::string& out_dir);
+                                              const std::string& out_dir, std::string* plot_note = nullptr);
 
 }  // namespace rollerdyn

@@ -1,5 +1,7 @@
 #include "studies/Sweep.h"
 
+#include <algorithm>
+
 #include <time.h>
 
 #include <cmath>
@@ -17,6 +19,7 @@
 #include "reduced/ReducedModel.h"
 #include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
+#include "scene/DidYouMean.h"
 #include "studies/ResonanceCheck.h"
 #include "studies/StartLoad.h"
 #include "studies/SweepExecution.h"
@@ -124,8 +127,7 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
     const StartLoad start_load = startLoadOf(scene);  // explains a stall in the status
     nlohmann::json summary = makeSummary(scene, run, &start_load);
     p.motion = summary.value("motion", "unknown");
-    addResonanceWarnings(scene, summary);
-    p.warnings = summary["warnings"];
+    p.warnings = addResonanceWarnings(scene, summary);  // the load's warning is a metric column
     const auto& src = metricSources();
     for (std::size_t k = 0; k < src.size(); ++k) p.metrics[k] = summaryNumber(summary, src[k].second);
     p.complete = run.stats.complete;
@@ -270,19 +272,20 @@ SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
   return opt;
 }
 
+void requireSweepMetric(const std::string& what, const std::string& metric) {
+  const std::vector<std::string>& names = sweepNumericMetrics();
+  if (std::find(names.begin(), names.end(), metric) != names.end()) return;
+  std::string list;
+  for (const std::string& m : names) list += (list.empty() ? "" : ", ") + m;
+  throw std::invalid_argument(what + ": unknown metric '" + metric + "'" + didYouMean(metric, names) +
+                              "; expected one of " + list);
+}
+
 SweepResult runSweep(const SweepOptions& o) {
   if (o.params.empty()) throw std::invalid_argument("sweep: give at least one --param with --values");
   if (o.model != "multibody" && o.model != "reduced")
     throw std::invalid_argument("sweep: --model must be multibody or reduced, got '" + o.model + "'");
-  if (!o.minimize.empty()) {
-    bool known = false;
-    for (const std::string& m : sweepNumericMetrics()) known = known || m == o.minimize;
-    if (!known) {
-      std::string list;
-      for (const std::string& m : sweepNumericMetrics()) list += (list.empty() ? "" : ", ") + m;
-      throw std::invalid_argument("sweep: --minimize: expected one of " + list + ", got '" + o.minimize + "'");
-    }
-  }
+  if (!o.minimize.empty()) requireSweepMetric("sweep: --minimize", o.minimize);
   for (const SweepParameter& p : o.params) {
     if (p.values.empty()) throw std::invalid_argument("sweep: --param " + p.key + " has no values");
     if (!findSceneKey(p.key))

@@ -95,6 +95,10 @@ struct SweepResult {
 
 // Throws std::invalid_argument for an empty grid, an unknown model or metric; every per-point
 // failure is recorded in the point instead.
+// Throws std::invalid_argument "WHAT: unknown metric 'X' (did you mean 'Y'?); expected one of ..."
+// unless `metric` is a sweepNumericMetrics() name.
+void requireSweepMetric(const std::string& what, const std::string& metric);
+
 SweepResult runSweep(const SweepOptions& options);
 
 // One point: the scene with base_overrides and KEY=texts[k] applied, run, summarised (used by
@@ -107,9 +111,10 @@ SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
                          const std::vector<SweepPoint>& points, const std::string& metric);
 
 // sweep.csv, sweep.json and the plots (skipped with a note in sweep.json when gnuplot is
-// missing or there are more than two parameters). Returns the files written.
+// missing or there are more than two parameters). Returns the files written; `plot_note`
+// receives why plots are missing ("" when all were drawn), for the console.
 std::vector<std::string> writeSweepOutputs(const SweepOptions& options, const SweepResult& result,
-                                           const std::string& out_dir);
+                                           const std::string& out_dir, std::string* plot_note = nullptr);
 
 // One line for the terminal, e.g. "minimum of delta = 0.151 at crank.offset_deg=90 (steady)".
 std::string describeOptimum(const SweepOptions& options, const SweepResult& result);

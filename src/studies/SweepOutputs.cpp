@@ -28,7 +28,7 @@ std::string paramHeader(const std::string& key) {
 }  // namespace
 
 std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepResult& r,
-                                           const std::string& out_dir) {
+                                           const std::string& out_dir, std::string* plot_note_out) {
   std::vector<std::string> files;
   const auto& metrics = sweepNumericMetrics();
   // --- sweep.csv ---
@@ -65,6 +65,7 @@ std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepRes
     plot_note = std::string("plotting failed: ") + e.what();
   }
   for (const std::string& p : plots) files.push_back(p);
+  if (plot_note_out) *plot_note_out = plot_note;
 
   // --- sweep.json ---
   nlohmann::json j;

@@ -159,6 +159,7 @@ loads:
     normal_force_lag: 0.004
   gravity: 9.8
   velocity_smoothing: 0.01
+  rolling_resistance: 0.05
 reduced:
   kinematics: truncated
   integrator: baranov
@@ -271,6 +272,7 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.loads.guide_friction, 0.02);
   EXPECT_DOUBLE_EQ(s.loads.gravity, 9.8);
   EXPECT_DOUBLE_EQ(s.loads.velocity_smoothing, 0.01);
+  EXPECT_DOUBLE_EQ(s.loads.rolling_resistance, 0.05);
   EXPECT_DOUBLE_EQ(s.loads.guide_friction_lag, 0.004);
   EXPECT_EQ(s.reduced.kinematics, KinematicsForm::Truncated);
   EXPECT_EQ(s.reduced.integrator, ReducedIntegrator::Baranov);
