@@ -68,10 +68,20 @@ class MultibodyDrive : public DriveModel {
     return M;
   }
 
+  // The friction normal-force lags N̂ set to the guide normal forces N of this state: the fixed
+  // point of N̂ = N(state, f·|N̂|) (the friction forces change the normals by a factor of order
+  // f = 0.008, so each pass gains about two digits; three passes reach round-off). Each pass is
+  // one evaluation plus the inverse-dynamics normals; the rate (N - N̂)/τ_N times τ_N moves N̂ to N.
   void setOperatingPoint(const DrivePoint& p) override {
     if (!model_.hasGuideFriction()) return;
-    const SimTK::State a = model_.assembledState(p.phi, p.omega, p.twist);
-    model_.forces().updZ(s_) = model_.forces().getZ(a);
+    place(p);
+    const double tau = model_.scene().loads.guide_friction_lag;
+    for (int pass = 0; pass < 3; ++pass) {
+      dyn_.evaluate(s_, coords_);
+      model_.auxiliaryRates(s_, dyn_.guideNormals(s_), zdot_);
+      SimTK::Vector& z = model_.forces().updZ(s_);
+      z += tau * zdot_;  // lags: N̂ + τ·(N - N̂)/τ = N; the energy integrals move, but no force reads them
+    }
   }
 
  private:
@@ -89,6 +99,7 @@ class MultibodyDrive : public DriveModel {
   SimTK::State s_;
   MinimalCoordinates coords_;
   MinimalDynamics dyn_;
+  SimTK::Vector zdot_;
 };
 
 }  // namespace

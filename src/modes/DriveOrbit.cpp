@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "modes/PeriodicFlow.h"
 #include "reduced/ReducedModel.h"
@@ -45,6 +46,16 @@ SteadyGuess steadyGuess(const Scene& scene) {
   return g;
 }
 
+Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_now) {
+  Scene s = scene;
+  const double w0 = scene.motor.omega_sync;
+  const double w0_new = w0 + scene.reducer.ratio * (omega_target - omega_now);
+  if (!(w0_new > 0)) throw std::invalid_argument("crank speed " + std::to_string(omega_target) + " rad/s is out of reach");
+  s.motor.omega_sync = w0_new;
+  s.motor.critical_slip = scene.motor.critical_slip * w0 / w0_new;
+  return s;
+}
+
 std::vector<ClassifiedMultiplier> classifyMultipliers(const std::vector<FloquetMultiplier>& m, bool elastic) {
   std::vector<ClassifiedMultiplier> out;
   for (const FloquetMultiplier& f : m) {
@@ -76,6 +87,13 @@ FloquetVerdict judge(const std::vector<ClassifiedMultiplier>& m) {
       v.torsional_frequency = c.m.frequency;
       v.torsional_damping_ratio = c.m.damping_ratio;
     }
+  // A multiplier below kResolvedModulus is only known to be small: the monodromy's entries carry
+  // the integration's absolute error (~1e-8), so its angle, and the frequency and damping ratio
+  // read from it, are noise.
+  if (v.has_torsional && v.torsional_modulus < kResolvedModulus) {
+    v.torsional_resolved = false;
+    v.torsional_frequency = v.torsional_damping_ratio = NAN;
+  }
   if (v.stable)
     v.text = "stable";
   else if (worst->kind == ModeKind::Torsional)
@@ -98,7 +116,10 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
       r.failure = g.failure;
       return r;
     }
-    start = r.elastic ? Eigen::Vector3d(g.omega, g.twist, 0.0) : Eigen::VectorXd::Constant(1, g.omega);
+    if (r.elastic)
+      start = Eigen::VectorXd(Eigen::Vector3d(g.omega, g.twist, 0.0));
+    else
+      start = Eigen::VectorXd::Constant(1, g.omega);
   }
   if (r.elastic) {
     const double M_ref = std::max(scene.motor.breakdown_torque * scene.reducer.ratio * scene.reducer.efficiency, 1.0);
@@ -109,8 +130,10 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
   sys.n = r.elastic ? 3 : 1;
   sys.quadratures = 1;
   sys.period = 2 * M_PI;
-  sys.scale = r.elastic ? Eigen::Vector3d(omega_scale, twist_scale, twist_scale * omega_scale).eval()
-                        : Eigen::VectorXd::Constant(1, omega_scale);
+  if (r.elastic)
+    sys.scale = Eigen::VectorXd(Eigen::Vector3d(omega_scale, twist_scale, twist_scale * omega_scale));
+  else
+    sys.scale = Eigen::VectorXd::Constant(1, omega_scale);
   const double phi0 = r.phi0;
   const bool elastic = r.elastic;
   sys.rhs = [&drive, phi0, elastic, quasi_static](double s, const Eigen::VectorXd& x, Eigen::VectorXd& f) {

@@ -44,6 +44,9 @@ struct ClassifiedMultiplier {
   ModeKind kind = ModeKind::Speed;
 };
 
+// Multipliers smaller than this are not resolved by the integration (see judge()).
+inline constexpr double kResolvedModulus = 1e-6;
+
 struct FloquetVerdict {
   bool stable = false;
   std::string text;         // "stable", "parametrically unstable", "unstable speed mode"
@@ -53,6 +56,7 @@ struct FloquetVerdict {
   // The torsional mode's numbers (elastic coupling): largest |μ| among its multipliers,
   // its frequency and damping ratio.
   bool has_torsional = false;
+  bool torsional_resolved = true;  // false: |μ| < kResolvedModulus, frequency and ζ unknown (NaN)
   double torsional_modulus = 0, torsional_frequency = 0, torsional_damping_ratio = 0;
 };
 
@@ -91,6 +95,14 @@ struct SteadyMotionOptions {
 // on a drive that does not run steadily: found = false and `failure` says why (stall, no motor,
 // no convergence).
 SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMotionOptions& o = {});
+
+// The scene run at another mean crank speed the way a frequency converter does it (V/f control):
+// the motor's torque-speed curve shifted along the speed axis, i.e. synchronous speed
+// ω0' = ω0 + u·(omega_target - omega_now) with the slip speed at breakdown s_kr·ω0 kept, so the
+// motor carries the same mean load at the same slip speed and the steady crank speed moves from
+// omega_now to omega_target (exactly when the mean load does not depend on the speed).
+// Throws std::invalid_argument when ω0' would not be positive.
+Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_now);
 
 // Classifies and judges multipliers of a drive's monodromy (elastic: states (φ̇2, ψ, ψ̇)).
 std::vector<ClassifiedMultiplier> classifyMultipliers(const std::vector<FloquetMultiplier>& m, bool elastic);

@@ -28,8 +28,9 @@ double frequencyBranch(std::complex<double> mu, double T, double ref) {
 
 std::vector<FloquetMultiplier> floquetMultipliers(const Eigen::MatrixXd& M, double T, double ref) {
   std::vector<FloquetMultiplier> out;
-  if (M.rows() == 0) return out;
+  if (M.rows() == 0 || !M.allFinite()) return out;
   Eigen::EigenSolver<Eigen::MatrixXd> es(M, true);
+  if (es.info() != Eigen::Success) return out;
   for (int i = 0; i < M.rows(); ++i) {
     FloquetMultiplier f;
     f.mu = es.eigenvalues()(i);

@@ -110,6 +110,7 @@ FrozenAngle frozenModes(DriveModel& drive, const Scene& scene, const DrivePoint&
   f.K = -f.M * Aq;
   f.C = -f.M * Av;
   // Undamped frozen modes: eigen-pairs of M⁻¹K = -Aq.
+  if (!Aq.allFinite() || !Av.allFinite()) return f;  // no modes where the accelerations are not finite
   Eigen::EigenSolver<Eigen::MatrixXd> es(-Aq, true);
   // Damped frozen modes: the state matrix [[0, I], [Aq, Av]].
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(2 * n, 2 * n);

@@ -19,6 +19,7 @@
 // estimate otherwise (the Floquet analysis, DriveOrbit.h, is the exact linear answer).
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 

@@ -135,11 +135,18 @@ FlowResult flowOverPeriod(const PeriodicSystem& sys, const Eigen::VectorXd& x0, 
     double en = 0;
     for (int i = 0; i < N; ++i) {
       const double sc = atol(i) + o.rtol * std::max(std::abs(z(i)), std::abs(y(i)));
-      en = std::max(en, std::abs(err(i)) / sc);
+      const double ei = std::abs(err(i)) / sc;
+      en = std::isfinite(ei) ? std::max(en, ei) : NAN;
+      if (!std::isfinite(en)) break;
     }
-    if (!std::isfinite(en)) {
-      r.failure = "non-finite state at s = " + std::to_string(s);
-      return r;
+    if (!std::isfinite(en)) {  // a stage left the region where f is defined: a smaller step
+      ++r.rejected;
+      h *= 0.1;
+      if (h < 1e-14 * S) {
+        r.failure = "non-finite state at s = " + std::to_string(s);
+        return r;
+      }
+      continue;
     }
     if (en <= 1.0) {
       s = clipped ? target : s + h;
@@ -189,9 +196,13 @@ PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd
     }
     x.head(n) = f.x_end.head(n);
   }
-  auto scaled = [&](const Eigen::VectorXd& d) {
+  auto scaled = [&](const Eigen::VectorXd& d) {  // NaN when any entry is not finite
     double m = 0;
-    for (int i = 0; i < n; ++i) m = std::max(m, std::abs(d(i)) / sys.scale(i));
+    for (int i = 0; i < n; ++i) {
+      const double e = std::abs(d(i)) / sys.scale(i);
+      if (!std::isfinite(e)) return double(NAN);
+      m = std::max(m, e);
+    }
     return m;
   };
   FlowOptions var = o.flow;
@@ -204,6 +215,10 @@ PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd
   }
   Eigen::VectorXd res = f.x_end.head(n) - x.head(n);
   double r = scaled(res);
+  if (!std::isfinite(r)) {
+    orbit.failure = "the period map is not finite at the first guess";
+    return orbit;
+  }
   int it = 0;
   for (; it < o.max_newton && r > o.tolerance; ++it) {
     const Eigen::MatrixXd J = f.monodromy - Eigen::MatrixXd::Identity(n, n);
@@ -221,7 +236,7 @@ PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd
       if (!ft.ok) continue;
       const Eigen::VectorXd rt = ft.x_end.head(n) - xt.head(n);
       const double st = scaled(rt);
-      if (st < r || st <= o.tolerance) {
+      if (std::isfinite(st) && (st < r || st <= o.tolerance)) {
         x = xt;
         f = std::move(ft);
         res = rt;
@@ -248,6 +263,10 @@ PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd
   FlowOptions fin = o.flow;
   fin.monodromy = true;
   FlowResult ff = run(x, fin);
+  if (ff.ok && (!ff.x_end.allFinite() || !ff.monodromy.allFinite())) {
+    ff.ok = false;
+    ff.failure = "non-finite orbit";
+  }
   if (!ff.ok) {
     orbit.failure = ff.failure;
     return orbit;
