@@ -26,7 +26,7 @@ int runCheck(const SceneArgs& args);
 int runSimulate(const SceneArgs& args, const std::string& out_dir, const std::string& model,
                 bool plot = false);  // plot: also draw the figures (as `rollerdyn plot`)
 int runCompare(const SceneArgs& args, const std::string& out_dir);  // CompareCommand.cpp
-int runValidate(bool quick, const std::string& out_dir);            // ValidateCommand.cpp
+int runValidate(bool quick, const std::string& out_dir, bool modes_only = false);  // ValidateCommand.cpp
 int runValidateStudies(const std::string& dir);                    // ValidateCommand.cpp
 
 // `rollerdyn bench` options (BenchCommand.cpp, src/bench/BenchStudies.h).

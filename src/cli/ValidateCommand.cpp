@@ -13,14 +13,29 @@
 #include "compare/StudiesReport.h"
 #include "compare/ValidationSuite.h"
 #include "io/AtomicFile.h"
+#include "modes/ModesValidation.h"
 #include "report/Gnuplot.h"
 #include "report/OutputDir.h"
 
 namespace rollerdyn::cli {
 
-int runValidate(bool quick, const std::string& out_dir) {
+// The torsional-modes checks (src/modes/ModesValidation.h): their lines on stdout, their page and
+// numbers under DIR/modes/. Returns the number of failed claims.
+int runModesChecks(const std::string& out_dir) {
+  std::cout << "torsional modes and Floquet stability:\n";
+  const modes::ModesValidationResult m =
+      modes::runModesValidation("model", [](const std::string& line) { std::cout << "  " << line << '\n' << std::flush; });
+  writeFileAtomic(out_dir + "/modes/validation.json", m.json.dump(2) + "\n");
+  writeFileAtomic(out_dir + "/modes/validation.md", modes::modesValidationMarkdown(m));
+  std::cout << "torsional modes: " << m.checks.size() << " checks, " << m.failed() << " failed (CPU " << m.cpu_seconds
+            << " s); " << out_dir << "/modes/validation.md\n";
+  return m.failed();
+}
+
+int runValidate(bool quick, const std::string& out_dir, bool modes_only) {
   using namespace rollerdyn::validation;
   prepareOutputDir(out_dir);  // before the suite: a bad --out fails now
+  if (modes_only) return runModesChecks(out_dir) == 0 ? 0 : 1;
   ValidationOptions o;
   o.quick = quick;
   o.interrupt = &g_interrupted;
@@ -54,6 +69,7 @@ int runValidate(bool quick, const std::string& out_dir) {
     std::cerr << "rollerdyn: interrupted; the report holds what was computed\n";
     return 3;
   }
+  failed += runModesChecks(out_dir);
   return failed == 0 ? 0 : 1;
 }
 

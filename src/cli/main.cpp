@@ -108,6 +108,9 @@ int main(int argc, char** argv) {
   auto* validate = app.add_subcommand("validate", "validation suite: model equivalence, papers, analytic checks; writes <out>/report.md");
   validate->add_flag("--quick", val_quick, "coarser sweeps and shorter runs (about a minute)");
   validate->add_option("--out", val_out, "output folder (default validation/)");
+  bool val_modes_only = false;
+  validate->add_flag("--modes-only", val_modes_only,
+                     "only the checks of the torsional modes and Floquet stability (seconds); writes <out>/modes/");
   std::string val_studies;
   validate->add_option("--studies", val_studies,
                        "only write the markdown pages of a studies folder (validation/studies) from the tables "
@@ -156,7 +159,7 @@ int main(int argc, char** argv) {
     if (*report) return runReport(report_args, report_out);
     if (*bench) return runBench(bench_args, bench_opts);
     if (*compare) return runCompare(cmp_args, cmp_out);
-    if (*validate) return val_studies.empty() ? runValidate(val_quick, val_out) : runValidateStudies(val_studies);
+    if (*validate) return val_studies.empty() ? runValidate(val_quick, val_out, val_modes_only) : runValidateStudies(val_studies);
   } catch (const std::exception& e) {
     std::cerr << "rollerdyn: " << e.what() << '\n';
     return kExitBadInput;
