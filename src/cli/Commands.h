@@ -24,7 +24,8 @@ extern std::atomic<bool> g_interrupted;
 
 int runCheck(const SceneArgs& args);
 int runSimulate(const SceneArgs& args, const std::string& out_dir, const std::string& model,
-                bool plot = false);  // plot: also draw the figures (as `rollerdyn plot`)
+                bool plot = false,         // plot: also draw the figures (as `rollerdyn plot`)
+                bool with_modes = false);  // with_modes: the torsional modes of `rollerdyn modes` too
 int runCompare(const SceneArgs& args, const std::string& out_dir);  // CompareCommand.cpp
 int runValidate(bool quick, const std::string& out_dir, bool modes_only = false);  // ValidateCommand.cpp
 int runValidateStudies(const std::string& dir);                    // ValidateCommand.cpp

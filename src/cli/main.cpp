@@ -59,6 +59,10 @@ int main(int argc, char** argv) {
       ->check(oneOf({"multibody", "reduced"}));
   bool sim_plot = false;  // PlotCommand.cpp
   simulate->add_flag("--plot", sim_plot, "also draw the figures of `rollerdyn plot` into <out>/figures/");
+  bool sim_modes = false;
+  simulate->add_flag("--modes", sim_modes,
+                     "also the torsional modes, Floquet stability and Campbell diagram of `rollerdyn modes` (no "
+                     "stability charts) and the run's order spectrum: modes.json, spectrum.csv, summary.json 'modes'");
   simulate->footer(
       "Examples:\n  rollerdyn simulate model/balanced-4cart.yaml\n"
       "  rollerdyn simulate model/recuperative-2cart.yaml --set crank.offset_deg=60 --out out/dphi60\n"
@@ -154,7 +158,7 @@ int main(int argc, char** argv) {
     if (*check) return runCheck(check_args);
     for (const Subcommand& c : studies)
       if (*c.cmd) return c.run();
-    if (*simulate) return runSimulate(sim_args, out_dir, model, sim_plot);
+    if (*simulate) return runSimulate(sim_args, out_dir, model, sim_plot, sim_modes);
     if (*plot) return runPlot(plot_dir, plot_scene, plot_overrides);
     if (*report) return runReport(report_args, report_out);
     if (*bench) return runBench(bench_args, bench_opts);
