@@ -217,7 +217,7 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
       for (double k : o.marked_dampings) k_top = std::max(k_top, k);
       k_top *= 2;
     }
-    r.charts.push_back(chartOverDamping(scene, c, linearGrid(0.0, k_top, o.chart_y)));
+    r.charts.push_back(chartOverDamping(scene, w_op, c, linearGrid(0.0, k_top, o.chart_y)));
     r.charts.back().marked = o.marked_dampings;
     if (!r.elastic) r.charts.back().operating_y = NAN;
   }

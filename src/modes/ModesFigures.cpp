@@ -65,7 +65,7 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
       fl.y = {r.steady.verdict.torsional_frequency, r.steady.verdict.torsional_frequency};
       s.series.push_back(fl);
     }
-    s.preamble = "set xrange [0:360]\nset xtics 45\nset key bottom right";
+    s.preamble = "set xrange [0:360]\nset xtics 45\nset key inside bottom right";
     renderPlot(s, dir + "/frozen_frequencies");
     set.figures.push_back(fileOf(dir, "frozen_frequencies",
                                  "Torsional natural frequency of the drive with the crank angle frozen, along the "
@@ -119,7 +119,7 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
       s.series.push_back(h);
     }
     std::ostringstream pre;
-    pre << "set xrange [0:" << wmax << "]\nset yrange [0:" << 1.3 * fmax << "]\nset key top left\n";
+    pre << "set xrange [0:" << wmax << "]\nset yrange [0:" << 1.3 * fmax << "]\nset key inside top left\n";
     for (int k : r.campbell.orders)
       if (k * wmax * 0.9 < 1.3 * fmax)
         pre << "set label '" << k << "ω' at " << 0.9 * wmax << "," << 0.9 * k * wmax << " tc rgb '#888888'\n";
@@ -154,6 +154,11 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
       first = false;
     }
     pre << ")\nset cbrange [*:1]\n";
+    if (x.size() > 1 && c.y.size() > 1) {  // the grid's cells, no padding around them
+      const double dx = (x.back() - x.front()) / (x.size() - 1), dy = (c.y.back() - c.y.front()) / (c.y.size() - 1);
+      pre << "set xrange [" << x.front() - dx / 2 << ":" << x.back() + dx / 2 << "]\nset yrange ["
+          << c.y.front() - dy / 2 << ":" << c.y.back() + dy / 2 << "]\n";
+    }
     if (std::isfinite(c.operating_c) && std::isfinite(c.operating_y))
       pre << "set label 1 '' at " << std::log10(c.operating_c) << "," << c.operating_y
           << " point pt 7 ps 2.5 lc rgb 'white' front\nset label 2 'scene' at " << std::log10(c.operating_c) << ","

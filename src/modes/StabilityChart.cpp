@@ -155,8 +155,10 @@ StabilityChart chartOverSpeed(const Scene& scene, double omega_op, const std::ve
   return ch;
 }
 
-StabilityChart chartOverDamping(const Scene& scene, const std::vector<double>& c, const std::vector<double>& k) {
+StabilityChart chartOverDamping(const Scene& scene, double omega_op, const std::vector<double>& c,
+                                const std::vector<double>& k) {
   StabilityChart ch;
+  ch.fixed_speed = omega_op;
   ch.y_key = "damping";
   ch.c = c;
   ch.y = k;
@@ -172,9 +174,6 @@ StabilityChart chartOverDamping(const Scene& scene, const std::vector<double>& c
     }
     ch.grid.push_back(row);
   }
-  for (const auto& row : ch.grid)  // the speed of the first point with a steady motion
-    for (const StabilityPoint& p : row)
-      if (p.found && !std::isfinite(ch.fixed_speed)) ch.fixed_speed = p.omega_mean;
   findZones(ch);
   return ch;
 }

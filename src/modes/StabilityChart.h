@@ -48,8 +48,9 @@ struct StabilityChart {
 // c × ω at coupling damping k; omega_operating is the scene's steady mean crank speed.
 StabilityChart chartOverSpeed(const Scene& scene, double omega_operating, const std::vector<double>& c,
                               const std::vector<double>& omega, double damping);
-// c × k at the scene's own speed.
-StabilityChart chartOverDamping(const Scene& scene, const std::vector<double>& c, const std::vector<double>& k);
+// c × k at the scene's own speed (omega_operating: its steady mean crank speed, the chart's label).
+StabilityChart chartOverDamping(const Scene& scene, double omega_operating, const std::vector<double>& c,
+                                const std::vector<double>& k);
 
 // Grids: n values from a to b, geometric (log) or linear.
 std::vector<double> geometricGrid(double a, double b, int n);
