@@ -163,6 +163,7 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
   oo.flow.atol_scale = o.rtol;
   oo.flow.samples = o.samples;
   oo.warmup_periods = o.warmup_periods;
+  oo.max_newton = o.max_newton;
   oo.tolerance = 10 * o.rtol;
   oo.accept_stagnation = 1e-5;
   const PeriodicOrbit orbit = findPeriodicOrbit(sys, start, oo);

@@ -85,6 +85,7 @@ struct SteadyMotionOptions {
   // Warm start: a neighbouring orbit's x0 (continuation over a chart); empty: steadyGuess.
   Eigen::VectorXd start;
   int warmup_periods = 3;           // revolutions integrated from the guess before Newton
+  int max_newton = 30;              // Newton iterations on the period map before giving up
   // Multibody model with guide friction: the friction normal-force lags are set to the normal
   // forces of each evaluated state (quasi-static, τ_N → 0), since they cannot be held at one
   // value along the orbit.

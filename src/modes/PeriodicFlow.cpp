@@ -229,7 +229,7 @@ PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd
     }
     double lambda = 1.0;
     bool accepted = false;
-    for (int half = 0; half < 12; ++half, lambda *= 0.5) {
+    for (int half = 0; half < 8; ++half, lambda *= 0.5) {
       Eigen::VectorXd xt = x;
       xt.head(n) += lambda * dx;
       FlowResult ft = run(xt, var);
