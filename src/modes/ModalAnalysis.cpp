@@ -240,16 +240,30 @@ std::vector<std::string> modalWarnings(const ModesReport& r) {
                   v.max_modulus, v.max_modulus, -v.slowest_decay_rate, r.steady.omega_mean);
     w.push_back(buf);
   }
-  const Band& b = r.frozen[0].torsional;
+  // Forced resonance: the torsional mode's Floquet frequency p_F within 5 % of k·ω for an order k
+  // that carries at least 1 % of the largest exciting torque harmonic: load torque plus the
+  // inertia's own torque ½·J_n2'·ω² (order k of J_n2 with amplitude J_k gives ½·k·J_k·ω²).
   const double w_op = r.steady.omega_mean;
-  for (int k : r.orders.all) {
-    const double f = k * w_op;
-    if (f >= 0.95 * b.min && f <= 1.05 * b.max) {
+  if (v.has_torsional && v.torsional_resolved && std::isfinite(v.torsional_frequency)) {
+    // Undamped natural frequency from the multipliers, √(σ² + ω_d²) = ω_d/√(1 - ζ²): where a forced
+    // response peaks.
+    const double zeta = v.torsional_damping_ratio;
+    const double pf = v.torsional_frequency / std::sqrt(std::max(1e-12, 1 - zeta * zeta));
+    double largest = 0;
+    for (const OrderContent& c : r.orders.table)
+      largest = std::max(largest, c.load_amplitude + 0.5 * c.order * c.inertia_amplitude * w_op * w_op);
+    for (const OrderContent& c : r.orders.table) {
+      const double torque = c.load_amplitude + 0.5 * c.order * c.inertia_amplitude * w_op * w_op;
+      if (!(largest > 0) || torque < 0.01 * largest) continue;
+      const double f = c.order * w_op;
+      if (std::abs(pf - f) > 0.05 * f) continue;
       std::snprintf(buf, sizeof buf,
-                    "torsional resonance: order %d of the crank speed (%d*omega = %.4g rad/s) lies within 5 %% of the "
-                    "coupling mode's natural-frequency band p = %.4g ... %.4g rad/s over the crank angle (frozen-angle "
-                    "modes); its damping ratio from the Floquet multipliers is %.3g",
-                    k, k, f, b.min, b.max, v.torsional_damping_ratio);
+                    "torsional resonance: the coupling mode's natural frequency from the Floquet multipliers, p = %.4g rad/s, "
+                    "is within 5 %% of order %d of the crank speed (%d*omega = %.4g rad/s), which carries %.3g N*m "
+                    "(%.0f %% of the largest exciting harmonic); damping ratio %.3g (frozen-angle band p = %.4g ... "
+                    "%.4g rad/s)",
+                    pf, c.order, c.order, f, torque, 100 * torque / largest, v.torsional_damping_ratio,
+                    r.frozen[0].torsional.min, r.frozen[0].torsional.max);
       w.push_back(buf);
     }
   }

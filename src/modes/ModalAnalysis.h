@@ -83,8 +83,10 @@ Table campbellTable(const ModesReport& r);  // campbell.csv
 Table stabilityTable(const ModesReport& r); // stability.csv (all charts, long format)
 std::string modesText(const ModesReport& r);  // the console's lines
 
-// Resonance warnings of the analysis (parametric instability; an excitation order inside the
-// torsional band at the operating speed).
+// Resonance warnings of the analysis: the steady motion unstable (a Floquet multiplier > 1), or the
+// torsional mode's Floquet frequency within 5 % of k·ω for an order k carrying at least 1 % of the
+// largest exciting torque harmonic (none when the mode decays more than a million-fold per
+// revolution: nothing can build up).
 std::vector<std::string> modalWarnings(const ModesReport& r);
 
 }  // namespace rollerdyn::modes

@@ -30,11 +30,20 @@ std::string conclusion(const ModesReport& r) {
   else if (below)
     between = "above the excitation orders up to " + std::to_string(below);
   const FloquetVerdict& v = r.steady.verdict;
+  std::string floquet;
+  if (v.has_torsional && v.torsional_resolved) {
+    char f[160];
+    std::snprintf(f, sizeof f, "; its Floquet frequency is %.4g rad/s (%.3g times the crank speed)", v.torsional_frequency,
+                  v.torsional_frequency / w);
+    floquet = f;
+  } else if (v.has_torsional) {
+    floquet = "; it decays more than a million-fold per revolution";
+  }
   std::snprintf(b, sizeof b,
-                "no torsional resonance at omega = %.4g rad/s: the coupling mode's frequency p = %.4g ... %.4g rad/s "
-                "(%.3g ... %.3g times the crank speed) lies %s, and the steady motion is %s (largest Floquet "
-                "multiplier %.3g per revolution)",
-                w, p.min, p.max, p.min / w, p.max / w, between.c_str(), v.text.c_str(), v.max_modulus);
+                "no torsional resonance at omega = %.4g rad/s: the coupling mode's frozen-angle frequency p = %.4g ... "
+                "%.4g rad/s (%.3g ... %.3g times the crank speed) lies %s%s, and the steady motion is %s (largest "
+                "Floquet multiplier %.3g per revolution)",
+                w, p.min, p.max, p.min / w, p.max / w, between.c_str(), floquet.c_str(), v.text.c_str(), v.max_modulus);
   return b;
 }
 
