@@ -293,9 +293,12 @@ std::string modesValidationMarkdown(const ModesValidationResult& r) {
   os << "# Torsional modes and Floquet stability: validation\n\n"
      << "Written by `rollerdyn validate`. Each line is one check against an independent reference "
         "(closed forms, published expansions, a simulated run); \"measurement\" lines make no claim.\n\n";
-  for (const ModesCheck& c : r.checks)
-    os << "- " << (c.is_claim ? (c.pass ? "**holds** " : "**FAILS** ") : "") << c.line.substr(c.line.find(": ") + 2)
-       << "\n";
+  for (const ModesCheck& c : r.checks) {
+    std::string text = c.line.substr(c.line.find(": ") + 2);  // without the "modes: " of the console
+    for (const char* verdict : {": holds", ": FAILS"})  // the verdict leads the markdown line instead
+      if (text.size() > 7 && text.compare(text.size() - 7, 7, verdict) == 0) text.resize(text.size() - 7);
+    os << "- " << (c.is_claim ? (c.pass ? "**holds**: " : "**FAILS**: ") : "") << text << "\n";
+  }
   os << "\nCPU " << r.cpu_seconds << " s. The stability charts of the shipped machines are in `modes/<scene>/` "
      << "(regenerate with validation/modes/run.sh).\n";
   return os.str();
