@@ -24,9 +24,10 @@ extern std::atomic<bool> g_interrupted;
 
 int runCheck(const SceneArgs& args);
 int runSimulate(const SceneArgs& args, const std::string& out_dir, const std::string& model,
-                bool plot = false);  // plot: also draw the figures (as `rollerdyn plot`)
+                bool plot = false,         // plot: also draw the figures (as `rollerdyn plot`)
+                bool with_modes = false);  // with_modes: the torsional modes of `rollerdyn modes` too
 int runCompare(const SceneArgs& args, const std::string& out_dir);  // CompareCommand.cpp
-int runValidate(bool quick, const std::string& out_dir);            // ValidateCommand.cpp
+int runValidate(bool quick, const std::string& out_dir, bool modes_only = false);  // ValidateCommand.cpp
 int runValidateStudies(const std::string& dir);                    // ValidateCommand.cpp
 
 // `rollerdyn bench` options (BenchCommand.cpp, src/bench/BenchStudies.h).
@@ -56,6 +57,7 @@ Subcommand addCamProfileCommand(CLI::App& app);  // CamProfileCommand.cpp: `roll
 Subcommand addChainCommand(CLI::App& app);       // ChainCommand.cpp: `rollerdyn chain`
 Subcommand addOptimizeCommand(CLI::App& app);    // OptimizeCommand.cpp: `rollerdyn optimize`
 Subcommand addMotorCommand(CLI::App& app);       // MotorCommand.cpp: `rollerdyn motor`
+Subcommand addModesCommand(CLI::App& app);       // ModesCommand.cpp: `rollerdyn modes`
 
 // out/<scene name>/ unless the user named a folder.
 std::string defaultOutDir(const std::string& scene_name);

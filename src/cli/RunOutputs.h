@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/RunResult.h"
+#include "modes/ModalAnalysis.h"
+#include "modes/OrderSpectrum.h"
 #include "scene/Scene.h"
 
 namespace rollerdyn::cli {
@@ -15,13 +17,23 @@ namespace rollerdyn::cli {
 // Ctrl-C (g_interrupted, Commands.h).
 RunResult runMultibodyWithProgress(const Scene& scene);
 
+// The modal analysis of the scene and the order spectrum of the run (`simulate --modes`, `report`).
+struct RunModal {
+  modes::ModesReport report;
+  modes::OrderSpectrum spectrum;
+};
+RunModal analyseRunModes(const Scene& scene, const RunResult& run, bool charts);
+
 // Writes the run's tables (writeRunTables) and summary.json, with the scene file's absolute path
-// so `plot DIR` finds it from anywhere, into out_dir; prints the resonance warnings (Dyomin (two
-// rotors) eq. (10)) on stderr. Returns the summary.
+// so `plot DIR` finds it from anywhere, into out_dir; prints the resonance warnings on stderr: the
+// two-mass check (Dyomin (two rotors) eq. (10)) as the first estimate, then the verdict of the
+// modal analysis (src/modes/RunModes.h). With `modal`, also its files (modes.json, frozen.csv,
+// campbell.csv, stability.csv, spectrum.csv) and summary["modes"]. Returns the summary.
 // `overrides`: the user's --set options, kept in summary.json ("overrides") so that commands the
 // console suggests (the flywheel search) repeat them.
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
-                               const std::string& out_dir, const std::vector<std::string>& overrides = {});
+                               const std::string& out_dir, const std::vector<std::string>& overrides = {},
+                               const RunModal* modal = nullptr);
 
 // Exit codes of a run's command: 0 the crank turns; 4 the drive stalls or rocks (a valid run of a
 // drive that does not work); 3 the run did not complete for another reason (numerical failure,

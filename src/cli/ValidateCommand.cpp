@@ -16,6 +16,7 @@
 #include <stdexcept>
 
 #include "io/AtomicFile.h"
+#include "modes/ModesValidation.h"
 #include "report/Gnuplot.h"
 #include "report/OutputDir.h"
 
@@ -39,13 +40,28 @@ std::string repositoryDir() {
       "folder");
 }
 
-int runValidate(bool quick, const std::string& out_dir) {
+
+// The torsional-modes checks (src/modes/ModesValidation.h): their lines on stdout, their page and
+// numbers under DIR/modes/. Returns the number of failed claims.
+int runModesChecks(const std::string& out_dir, const std::string& model_dir) {
+  std::cout << "torsional modes and Floquet stability:\n";
+  const modes::ModesValidationResult m =
+      modes::runModesValidation(model_dir, [](const std::string& line) { std::cout << "  " << line << '\n' << std::flush; });
+  writeFileAtomic(out_dir + "/modes/validation.json", m.json.dump(2) + "\n");
+  writeFileAtomic(out_dir + "/modes/validation.md", modes::modesValidationMarkdown(m));
+  std::cout << "torsional modes: " << m.checks.size() << " checks, " << m.failed() << " failed (CPU " << m.cpu_seconds
+            << " s); " << out_dir << "/modes/validation.md\n";
+  return m.failed();
+}
+
+int runValidate(bool quick, const std::string& out_dir, bool modes_only) {
   using namespace rollerdyn::validation;
   prepareOutputDir(out_dir);  // before the suite: a bad --out fails now
-  ValidationOptions o;
-  o.quick = quick;
   const std::string top = repositoryDir();
   const std::string prefix = top == "." ? "" : top + "/";  // as before from the top folder
+  if (modes_only) return runModesChecks(out_dir, prefix + "model") == 0 ? 0 : 1;
+  ValidationOptions o;
+  o.quick = quick;
   o.model_dir = prefix + "model";
   o.published_dir = prefix + "validation/published";
   o.interrupt = &g_interrupted;
@@ -89,6 +105,7 @@ int runValidate(bool quick, const std::string& out_dir) {
     std::cerr << "rollerdyn: interrupted; the report holds what was computed\n";
     return 3;
   }
+  failed += runModesChecks(out_dir, o.model_dir);
   return failed == 0 ? 0 : 1;
 }
 

@@ -60,6 +60,10 @@ int main(int argc, char** argv) {
       ->check(oneOf({"multibody", "reduced"}));
   bool sim_plot = false;  // PlotCommand.cpp
   simulate->add_flag("--plot", sim_plot, "also draw the figures of `rollerdyn plot` into <out>/figures/");
+  bool sim_modes = false;
+  simulate->add_flag("--modes", sim_modes,
+                     "also the torsional modes, Floquet stability and Campbell diagram of `rollerdyn modes` (no "
+                     "stability charts) and the run's order spectrum: modes.json, spectrum.csv, summary.json 'modes'");
   simulate->footer(
       "Examples:\n  rollerdyn simulate model/balanced-4cart.yaml\n"
       "  rollerdyn simulate model/recuperative-2cart.yaml --set crank.offset_deg=60 --out out/dphi60\n"
@@ -109,6 +113,9 @@ int main(int argc, char** argv) {
   auto* validate = app.add_subcommand("validate", "validation suite: model equivalence, papers, analytic checks; writes <out>/report.md");
   validate->add_flag("--quick", val_quick, "coarser sweeps and shorter runs (about a minute)");
   validate->add_option("--out", val_out, "output folder (default validation/)");
+  bool val_modes_only = false;
+  validate->add_flag("--modes-only", val_modes_only,
+                     "only the checks of the torsional modes and Floquet stability (seconds); writes <out>/modes/");
   std::string val_studies;
   validate->add_option("--studies", val_studies,
                        "only write the markdown pages of a studies folder (validation/studies) from the tables "
@@ -132,7 +139,7 @@ int main(int argc, char** argv) {
 
   // sweep, cam-profile, chain: the studies of the papers (src/cli/SweepCommand.cpp, ...)
   const Subcommand studies[] = {addSweepCommand(app), addCamProfileCommand(app), addChainCommand(app),
-                               addOptimizeCommand(app), addMotorCommand(app)};
+                               addOptimizeCommand(app), addMotorCommand(app), addModesCommand(app)};
 
   // Usage errors: exit code 2 and one line (src/cli/UsageError.h); help and version: exit 0.
   if (const std::string bad = checkCommandWord(app, argc, argv); !bad.empty()) return usageError(bad);
@@ -152,12 +159,12 @@ int main(int argc, char** argv) {
     if (*check) return runCheck(check_args);
     for (const Subcommand& c : studies)
       if (*c.cmd) return c.run();
-    if (*simulate) return runSimulate(sim_args, out_dir, model, sim_plot);
+    if (*simulate) return runSimulate(sim_args, out_dir, model, sim_plot, sim_modes);
     if (*plot) return runPlot(plot_dir, plot_scene, plot_overrides);
     if (*report) return runReport(report_args, report_out);
     if (*bench) return runBench(bench_args, bench_opts);
     if (*compare) return runCompare(cmp_args, cmp_out);
-    if (*validate) return val_studies.empty() ? runValidate(val_quick, val_out) : runValidateStudies(val_studies);
+    if (*validate) return val_studies.empty() ? runValidate(val_quick, val_out, val_modes_only) : runValidateStudies(val_studies);
   } catch (const std::exception& e) {
     std::cerr << "rollerdyn: " << e.what() << '\n';
     return kExitBadInput;

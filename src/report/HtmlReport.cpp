@@ -265,6 +265,7 @@ std::string renderReportHtml(const ReportContent& c) {
     h << "<figcaption><b>Figure " << i + 1 << "</b> (<code>" << htmlEscape(f.name) << "</code>). "
       << htmlEscape(f.caption) << "</figcaption></figure>\n";
   }
+  for (const std::string& section : c.extra_sections_html) h << section;
   if (!c.notes.empty()) {
     h << "<h2>Notes</h2>\n<ul>\n";
     for (const std::string& n : c.notes) h << "<li>" << htmlEscape(n) << "</li>\n";

@@ -33,6 +33,9 @@ struct ReportContent {
   std::string command;                    // command line that produced the report
   MechanismFrames animation;              // the mechanism in motion (empty: section left out)
   std::vector<TimePlot> time_plots;       // interactive time plots beside the animation
+  // Further sections, whole HTML fragments written by their own modules (each escapes its own
+  // text and embeds its own figures), placed after the figures: e.g. the torsional modes.
+  std::vector<std::string> extra_sections_html;
   std::string chartjs_path = kChartJsPath;  // Chart.js file inlined for them (missing: a note, PNGs only)
 };
 
