@@ -143,21 +143,34 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
     if (s_n > 0 && m.nominal_torque > 0 && r.start_heat > 0)
       r.starts_per_hour = std::max(0.0, 3600.0 * (nominal_losses - sq.mean) / r.start_heat);
   }
-  if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(rq.mean)) {
-    r.thermal_over_nominal = std::sqrt(std::max(0.0, rq.mean) / (s_n * m.nominal_torque * w0));
+  // The duty decides how often the start's heat comes: the run's length says nothing about it (a
+  // 10 s run is not a start every 10 s). With sizing.starts_per_hour the thermal equivalent is the
+  // steady losses plus that many starts' heat per hour; without it the drive runs continuously (S1)
+  // and the heating check reads the steady window, with the starts per hour the motor allows.
+  r.duty_starts_per_hour = z.starts_per_hour;
+  char starts[200] = "";
+  if (std::isfinite(r.starts_per_hour))
+    std::snprintf(starts, sizeof starts,
+                  "one start adds %.3g kJ of rotor heat, so the rotor's heat balance allows about %.3g starts per hour "
+                  "at this load",
+                  r.start_heat * 1e-3, r.starts_per_hour);
+  if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(sq.mean) && std::isfinite(r.start_heat) &&
+      z.starts_per_hour > 0) {
+    const double duty_losses = std::max(0.0, sq.mean) + z.starts_per_hour * r.start_heat / 3600.0;
+    r.thermal_over_nominal = std::sqrt(duty_losses / (s_n * m.nominal_torque * w0));
     char duty[200];
-    const double span = run_end >= 2 ? t[run_end - 1] - t[0] : kNaN;
-    std::snprintf(duty, sizeof duty,
-                  " (the whole run as a duty cycle repeated: a start every %.4g s, %.0f starts per hour)", span,
-                  3600.0 / span);
-    char starts[200] = "";
-    if (std::isfinite(r.starts_per_hour))
-      std::snprintf(starts, sizeof starts,
-                    "; the start adds %.3g kJ of rotor heat, so the rotor's heat balance allows about %.3g starts per "
-                    "hour at this load",
-                    r.start_heat * 1e-3, r.starts_per_hour);
-    r.thermal_basis = "√(mean of s·M over the whole run / (s_n·M_n)): rotor heat s·M·ω0 against nominal" +
-                      std::string(duty) + starts;
+    std::snprintf(duty, sizeof duty, "%.4g starts per hour (sizing.starts_per_hour)", z.starts_per_hour);
+    r.thermal_basis = "√((steady rotor losses s·M·ω0 + starts per hour × heat of one start) / (s_n·M_n·ω0)) for " +
+                      std::string(duty) + "; " + starts;
+  } else if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(sq.mean)) {
+    // No duty given: continuous running, the steady window's own losses (a locked rotor's s = 1
+    // shows here, where the RMS of its torque would not).
+    r.thermal_over_nominal = std::sqrt(std::max(0.0, sq.mean) / (s_n * m.nominal_torque * w0));
+    char eq[64];
+    std::snprintf(eq, sizeof eq, "%.3g", r.thermal_over_nominal);
+    r.thermal_basis = std::string("continuous running (sizing.starts_per_hour not given): √(steady-window rotor "
+                                  "losses s·M·ω0 / (s_n·M_n·ω0)) = ") + eq + "; " +
+                      (starts[0] ? starts : "the start's heat is not known");
   } else {
     r.thermal_over_nominal = r.rms_over_nominal;
     r.thermal_basis = "RMS torque over the whole run / M_n (s_n not known: motor.omega_nominal not given; "
@@ -350,6 +363,7 @@ double linePower(double M, double w0, double s_n, double eta_m) {
 namespace {
 
 const char* kWhole = "whole run";
+const char* kDuty = "duty cycle (steady running and starts)";
 constexpr double kBreakdownMargin = 0.95 * 0.95;  // M_kr at 95 % of the rated voltage [-]
 const char* kSteady = "steady window";
 
@@ -378,12 +392,24 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
     const double steady = m.rms_over_nominal, whole = m.whole_run.thermal_over_nominal;
     const bool whole_decides = !(whole <= steady);  // NaN steady: the whole run decides
     h.value = whole_decides ? whole : steady;
-    h.window = whole_decides ? kWhole : kSteady;
+    h.window = whole_decides ? (m.whole_run.duty_starts_per_hour > 0 ? kDuty : kWhole) : kSteady;
     h.reason = whole_decides ? m.whole_run.thermal_basis + " (" + fmt3(whole) + "; steady window RMS/M_n " +
                                    fmt3(steady) + ")"
                              : "RMS torque / M_n over the steady window (" + fmt3(steady) +
                                    "; whole run thermal equivalent " + fmt3(whole) + ")";
     h.verdict = verdictOf(h.value, false);
+    if (!(m.whole_run.duty_starts_per_hour > 0) && std::isfinite(m.whole_run.start_heat)) {
+      // Continuous running: the steady window decides, by the larger of the RMS rule and the
+      // steady losses.
+      h.value = std::isfinite(whole) ? std::max(steady, whole) : steady;
+      h.window = kSteady;
+      h.reason = "RMS torque / M_n over the steady window (" + fmt3(steady) + "); " + m.whole_run.thermal_basis;
+      h.verdict = verdictOf(h.value, false);
+      if (m.whole_run.starts_per_hour < 1.0) {  // NaN compares false: no verdict from an unknown start
+        h.verdict = "FAIL";
+        h.reason = "the motor cannot take even one start per hour at this load: " + h.reason;
+      }
+    }
     if (starting) {
       h.verdict = "not applicable";
       h.reason = too_short;

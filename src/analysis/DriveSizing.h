@@ -11,9 +11,12 @@
 //    power), and at nominal load s_n·M_n·ω0; on the running branch s ≈ s_n·M/M_n, so the mean of
 //    s·M over (s_n·M_n) is (RMS/M_n)², the usual RMS rule. At start-up (s near 1) the same
 //    losses are tens of times the running ones, which the RMS of the torque cannot show; the
-//    thermal equivalent √(mean(s·M)/(s_n·M_n)) counts them. The whole run stands for a duty
-//    cycle that repeats this run (start, running for t_end); stator and iron losses are taken to
-//    scale like the rotor's (they follow the current, which follows √(s·M) off nominal too).
+//    start's heat (the run's losses above the steady level) counts them. How often a start comes
+//    is the duty's, not the run's (a 10 s run is not a start every 10 s): with
+//    sizing.starts_per_hour the equivalent is √((steady s·M + starts per hour × start heat)/(s_n·M_n));
+//    without it the drive runs continuously, the steady window decides, and the check reports
+//    the starts per hour the rotor's heat allows (fails below one). Stator and iron losses are
+//    taken to scale like the rotor's (they follow the current, which follows √(s·M) off nominal).
 //  * breakdown margin: peak |M| / M_kr over the steady window only, below 0.95² = 0.9025 (the
 //    breakdown torque goes with the square of the voltage, and IEC 60034-1 zone A allows the
 //    supply 5 % low): a start from rest passes through M_kr by design (the static law reaches
@@ -46,10 +49,13 @@ struct MotorWholeRun {
   double torque_shaft_mean = 0, torque_shaft_rms = 0, torque_shaft_peak = 0;  // M at the rotor [N·m]
   double rms_over_nominal = 0;     // RMS / M_n [-]
   double rotor_losses_mean = 0;    // mean of s·M·ω0, the rotor's copper losses [W]
-  double thermal_over_nominal = 0; // √(mean(s·M)/(s_n·M_n)) [-]; RMS/M_n when s_n is not known
+  double thermal_over_nominal = 0; // duty thermal equivalent √((steady s·M + starts/h × start heat/3600 s)
+                                   // /(s_n·M_n)) [-]; NaN without a duty (continuous running);
+                                   // RMS/M_n over the whole run when s_n is not known
   std::string thermal_basis;       // which of the two
   double start_heat = 0;           // rotor heat of the run above its steady level: ∫s·M·ω0 dt minus
                                    // the steady window's mean losses × the run's duration [J]
+  double duty_starts_per_hour = 0; // starts per hour of the duty (sizing.starts_per_hour; 0: continuous) [1/h]
   double starts_per_hour = 0;      // starts per hour the rotor's heat balance allows at this load:
                                    // 3600·(s_n·M_n·ω0 − steady losses)/start_heat [1/h]
   double power_line_mean = 0, power_line_peak = 0;  // drawn from the line [W]

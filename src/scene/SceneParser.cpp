@@ -251,6 +251,7 @@ SizingInputs readSizing(const Reader& in) {
   z.motor_nominal_torque = in.number("sizing.motor_nominal_torque");
   z.motor_nominal_power = in.number("sizing.motor_nominal_power");
   z.motor_efficiency = in.number("sizing.motor_efficiency");
+  z.starts_per_hour = in.number("sizing.starts_per_hour");
   z.target_delta = in.number("sizing.target_delta");
   z.coupling_rated_torque = in.number("sizing.coupling_rated_torque");
   z.rating_guide_roller = in.number("sizing.bearing_rating.guide_roller");

@@ -227,6 +227,10 @@ std::vector<KeySpec> buildSchema() {
              "P_n, nominal motor shaft power; M_n = P_n/omega_n (needs motor.omega_nominal)"),
       number("sizing.motor_efficiency", "-", P::Optional, between(0.0, false, 1.0, true), 0.0,
              "eta_m, motor shaft power / power drawn from the line"),
+      number("sizing.starts_per_hour", "1/h", P::Optional, nonNegative(), 0.0,
+             "duty: starts of the motor per hour; the heating check adds each start's rotor heat to the "
+             "steady running (absent or 0: continuous running; the console then gives the starts per hour "
+             "the motor allows)"),
       number("sizing.target_delta", "-", P::Optional, positive(), 0.0,
              "coefficient of unevenness delta the flywheel should bring the run to"),
       number("sizing.coupling_rated_torque", "N·m", P::Optional, positive(), 0.0,

@@ -155,7 +155,8 @@ TEST(DriveSizing, LockedRotorFailsEveryMotorCheckAndDrawsItsAirGapPower) {
   EXPECT_GT(s.motor.power_line_mean, 1000.0);
   // Rotor heat s·M·ω0 against nominal s_n·M_n·ω0: √(M/(s_n·M_n)) ≈ 3.8, far above the RMS ratio 0.585.
   EXPECT_REL(s.motor.whole_run.thermal_over_nominal, std::sqrt(M / (s_n * 200)), 1e-3);
-  EXPECT_EQ(s.checks[0].window, "whole run");
+  EXPECT_EQ(s.checks[0].window, "steady window");  // continuous running (no duty given)
+  EXPECT_REL(s.checks[0].value, std::sqrt(M / (s_n * 200)), 1e-3);
 }
 
 // Finding of the 6-cart trial: the coupling check saw only the steady window (peak 86 N·m, 0.011
@@ -181,14 +182,33 @@ TEST(DriveSizing, StartUpPeakAndHeatingDecideTheChecksAndNameTheirWindow) {
   EXPECT_EQ(coupling.window, "whole run");
   EXPECT_NEAR(s.coupling.peak_whole_run, 10.0 * (C0 + C1), 1e-9);
   EXPECT_LT(s.coupling.t_peak_whole_run, rr.timeseries.rows[n_start][0]);
-  EXPECT_EQ(heat.window, "whole run");
-  EXPECT_GT(heat.value, steady_only.checks[0].value);
+  // No duty given: continuous running, the steady window decides the heating and the reason gives
+  // the starts per hour the start's heat allows (the run's length is no duty: a 10 s run is not a
+  // start every 10 s).
+  EXPECT_EQ(heat.window, "steady window");
+  EXPECT_REL(heat.value, steady_only.checks[0].value, 1e-9);
+  EXPECT_NE(heat.reason.find("starts per hour"), std::string::npos) << heat.reason;
+  // With a duty of 60 starts per hour each start's heat counts: s·M·ω0 = 40 kW over the start.
   EXPECT_EQ(s.checks[1].window, "steady window");  // the breakdown margin is a running check
   // The start's rotor heat: s = 1 and M = 400 N·m for the replaced rows, s·M·ω0 = 40 kW over them.
   const double t_start = rr.timeseries.rows[n_start][0];
   EXPECT_NEAR(s.motor.whole_run.start_heat, 400.0 * w0 * t_start, 0.03 * 400.0 * w0 * t_start);
   EXPECT_TRUE(std::isfinite(s.motor.whole_run.starts_per_hour));
   EXPECT_GT(s.motor.whole_run.starts_per_hour, 0.0);
+  Scene duty = sc;
+  duty.sizing.starts_per_hour = 60.0;
+  const DriveSizing d = sized(duty, rr);
+  const SizingCheck& dh = d.checks[0];
+  EXPECT_EQ(dh.window, "duty cycle (steady running and starts)");
+  EXPECT_GT(dh.value, heat.value);
+  // Independently: the steady run's rotor losses (the synthetic steady run repeats every
+  // revolution, so its whole-run mean is the steady window's to the sampling) plus 60 starts' heat
+  // per hour, against the nominal losses s_n·M_n·ω0.
+  const double s_n = 1.0 - sc.sizing.motor_omega_nominal / w0;
+  const double nominal_losses = s_n * s.motor.nominal_torque * w0;
+  const double expected = std::sqrt((steady_only.motor.whole_run.rotor_losses_mean +
+                                     60.0 * s.motor.whole_run.start_heat / 3600.0) / nominal_losses);
+  EXPECT_REL(dh.value, expected, 1e-3);
 }
 
 // The 6-cart trial at 90°: the steady peak reached 0.966·M_kr and passed as "< 1"; 5 % below the
