@@ -173,6 +173,7 @@ sizing:
   motor_nominal_torque: 120
   motor_efficiency: 0.9
   target_delta: 0.05
+  starts_per_hour: 6
   coupling_rated_torque: 9000
   bearing_rating:
     guide_roller: 1000
@@ -283,6 +284,7 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.sizing.motor_nominal_torque, 120.0);
   EXPECT_DOUBLE_EQ(s.sizing.motor_efficiency, 0.9);
   EXPECT_DOUBLE_EQ(s.sizing.target_delta, 0.05);
+  EXPECT_DOUBLE_EQ(s.sizing.starts_per_hour, 6.0);
   EXPECT_DOUBLE_EQ(s.sizing.coupling_rated_torque, 9000.0);
   EXPECT_DOUBLE_EQ(s.sizing.rating_guide_roller, 1000.0);
   EXPECT_DOUBLE_EQ(s.sizing.rating_rod_end, 2000.0);
