@@ -34,6 +34,12 @@ KeySpec choice(std::string path, Presence presence, std::vector<std::string> cho
           std::move(choices), std::move(meaning)};
 }
 
+// A number key that may also be given per cart as a list (KeySpec::per_cart).
+KeySpec perCart(KeySpec spec) {
+  spec.per_cart = true;
+  return spec;
+}
+
 std::vector<KeySpec> buildSchema() {
   using P = Presence;
   return {
@@ -70,8 +76,14 @@ std::vector<KeySpec> buildSchema() {
              "coupling twist phi1 - phi2 at t = 0"),
 
       number("crank.radius", "m", P::Required, positive(), 0.0, "crank radius r"),
-      number("crank.offset_deg", "deg", P::Required, between(0.0, true, 360.0, false), 0.0,
-             "angle between consecutive cranks"),
+      number("crank.offset_deg", "deg", P::Conditional, between(0.0, true, 360.0, false), 0.0,
+             "angle between consecutive cranks (required unless crank.angles_deg is given)"),
+      perCart(number("crank.angles_deg", "deg", P::Conditional, between(0.0, true, 360.0, false), 0.0,
+                     "instead of crank.offset_deg: a list with each cart's crank angle from cart 1's crank "
+                     "(first entry 0), e.g. a firing order [0, 180, 90, 270]")),
+      perCart(number("crank.angle_error_deg", "deg", P::Optional, between(-180.0, false, 180.0, false), 0.0,
+                     "per cart: deviation of its crank from the nominal angle (a manufacturing tolerance), "
+                     "a list with one value per cart")),
       number("crank.inertia_per_crank", "kg·m²", P::Optional, nonNegative(), 0.0,
              "J'_K, one crank about the shaft axis"),
       number("crank.shaft_inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
@@ -97,7 +109,8 @@ std::vector<KeySpec> buildSchema() {
               "number of carts n"),
       {"carts.sides", KeyKind::Sides, "-", P::Conditional, anyFinite(), 0.0, "same", {},
        "side of the shaft of each cart"},
-      number("carts.mass", "kg", P::Required, positive(), 0.0, "m'_B, one cart without rod"),
+      perCart(number("carts.mass", "kg", P::Required, positive(), 0.0,
+                     "m'_B, one cart without rod; a list gives each cart its own")),
       number("carts.geometry.a", "m", P::Optional, nonNegative(), 0.0,
              "half distance between the two compacting rollers"),
       number("carts.geometry.b", "m", P::Conditional, nonNegative(), 0.0,
@@ -199,19 +212,19 @@ std::vector<KeySpec> buildSchema() {
       choice("flywheel.location", P::Optional, {"crankshaft", "motor_shaft"}, "crankshaft",
              "shaft carrying the flywheel"),
 
-      number("loads.roller_force_front", "N", P::Optional, nonNegative(), 0.0,
-             "F_j1, horizontal force on the front compacting roller"),
-      number("loads.roller_force_rear", "N", P::Optional, nonNegative(), 0.0,
-             "F_j2, horizontal force on the rear compacting roller"),
-      number("loads.roller_normal_front", "N", P::Optional, nonNegative(), 0.0,
-             "R_j1, upward reaction of the mix on the front roller"),
-      number("loads.roller_normal_rear", "N", P::Optional, nonNegative(), 0.0,
-             "R_j2, upward reaction of the mix on the rear roller"),
+      perCart(number("loads.roller_force_front", "N", P::Optional, nonNegative(), 0.0,
+                     "F_j1, horizontal force on the front compacting roller (a list: per cart)")),
+      perCart(number("loads.roller_force_rear", "N", P::Optional, nonNegative(), 0.0,
+                     "F_j2, horizontal force on the rear compacting roller (a list: per cart)")),
+      perCart(number("loads.roller_normal_front", "N", P::Optional, nonNegative(), 0.0,
+                     "R_j1, upward reaction of the mix on the front roller (a list: per cart)")),
+      perCart(number("loads.roller_normal_rear", "N", P::Optional, nonNegative(), 0.0,
+                     "R_j2, upward reaction of the mix on the rear roller (a list: per cart)")),
       choice("loads.roller_force_direction", P::Optional, {"opposes_velocity", "as_printed"},
              "opposes_velocity", "direction law of the horizontal roller forces"),
-      number("loads.rolling_resistance", "-", P::Optional, between(0.0, true, 1.0, false), 0.0,
-             "mu_r, rolling resistance of the compacting rollers: a force mu_r*(R_j1 + R_j2) against the cart's "
-             "velocity, the energy compaction dissipates (docs/loads.md)"),
+      perCart(number("loads.rolling_resistance", "-", P::Optional, between(0.0, true, 1.0, false), 0.0,
+                     "mu_r, rolling resistance of the compacting rollers: a force mu_r*(R_j1 + R_j2) against the "
+                     "cart's velocity, the energy compaction dissipates (docs/loads.md; a list: per cart)")),
       number("loads.guide_friction.coefficient", "-", P::Optional,
              between(0.0, true, 1.0, false), 0.0, "f, reduced guide-roller friction coefficient"),
       number("loads.guide_friction.normal_force_lag", "s", P::Optional, between(0.0, false, 1.0, true),
@@ -284,6 +297,21 @@ const KeySpec* findSceneKey(const std::string& path) {
   return nullptr;
 }
 
+const KeySpec* findSceneKeyOrElement(const std::string& path, int* element) {
+  if (element) *element = -1;
+  if (const KeySpec* k = findSceneKey(path)) return k;
+  // "key[i]": digits only between the brackets, at the end of the path.
+  const size_t open = path.rfind('[');
+  if (open == std::string::npos || open == 0 || path.back() != ']' || open + 2 > path.size() - 1) return nullptr;
+  const std::string digits = path.substr(open + 1, path.size() - open - 2);
+  if (digits.empty() || digits.size() > 6 || digits.find_first_not_of("0123456789") != std::string::npos)
+    return nullptr;
+  const KeySpec* k = findSceneKey(path.substr(0, open));
+  if (!k || !k->per_cart) return nullptr;
+  if (element) *element = std::stoi(digits);
+  return k;
+}
+
 bool isSceneMap(const std::string& path) {
   if (path.empty()) return true;
   const std::string prefix = path + ".";
@@ -325,6 +353,13 @@ std::string describeExpected(const KeySpec& spec) {
              "same, opposite, alternate";
   }
   return "?";
+}
+
+std::string describeExpectedList(const KeySpec& spec, int count) {
+  const std::string unit = (spec.unit.empty() || spec.unit == "-") ? "" : " [" + spec.unit + "]";
+  const std::string range = describeRange(spec.range);
+  return "a list of " + std::to_string(count) + " numbers" + (range.empty() ? "" : " " + range) + unit +
+         ", one per cart (carts.count = " + std::to_string(count) + ")";
 }
 
 std::string formatNumber(double v) {

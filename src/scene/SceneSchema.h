@@ -46,6 +46,8 @@ struct KeySpec {
   std::string default_text;          // Optional Text / Choice
   std::vector<std::string> choices;  // Choice only
   std::string meaning;               // one line, for messages and docs
+  bool per_cart = false;             // Number key that may also be a list with one value per cart
+                                     // (docs/per-cart.md); its scalar form is the uniform value
 };
 
 // Every leaf key, in documentation order.
@@ -53,6 +55,11 @@ const std::vector<KeySpec>& sceneSchema();
 
 // The leaf spec of `path`, or nullptr if `path` is not a leaf key of the schema.
 const KeySpec* findSceneKey(const std::string& path);
+
+// A key path as the command line may name it (--set, --param): a leaf key, or one element
+// "key[i]" (i counted from 0: cart i + 1) of a per-cart key. The leaf's spec, or nullptr;
+// `element` (optional) receives i, or -1 for a whole key.
+const KeySpec* findSceneKeyOrElement(const std::string& path, int* element = nullptr);
 
 // Whether `path` names a map of the schema ("" is the top level, "carts.geometry" a nested map).
 bool isSceneMap(const std::string& path);
@@ -64,6 +71,10 @@ std::vector<std::string> sceneChildKeys(const std::string& map_path);
 // The expected-clause for a single value of `spec`, e.g. "a number > 0 [m]",
 // "an integer in [1, 1000]", "one of: elastic, rigid".
 std::string describeExpected(const KeySpec& spec);
+
+// The expected-clause of a per-cart key's list, e.g. "a list of 4 numbers > 0 [kg], one per
+// cart (carts.count = 4)".
+std::string describeExpectedList(const KeySpec& spec, int count);
 
 // Compact, round-trippable text of a number for messages ("0.2", "1e-06", "200000").
 std::string formatNumber(double v);
