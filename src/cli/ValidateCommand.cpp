@@ -88,6 +88,13 @@ int runValidate(bool quick, const std::string& out_dir, bool modes_only) {
   int failed = 0;
   for (const auto& c : results.equivalence)
     if (!c.pass) ++failed;
+  int per_cart_failed = 0;
+  for (const auto& c : results.per_cart) {
+    const bool fails = c.verdict != Finding::Verdict::Holds;
+    per_cart_failed += fails ? 1 : 0;
+    std::cout << "carts of their own " << c.label << (fails ? " FAILS: " : " holds: ") << c.description << '\n'
+              << "    " << (c.explanation.empty() ? "(no result)" : c.explanation) << '\n';
+  }
   int motor_failed = 0;
   for (const auto& c : results.motor) {
     const bool fails = c.verdict == Finding::Verdict::Fails;
@@ -98,9 +105,10 @@ int runValidate(bool quick, const std::string& out_dir, bool modes_only) {
   }
   std::cout << "validation report: " << out_dir << "/report.md (" << figures << " figures, "
             << results.equivalence.size() << " equivalence cases, " << failed << " failed; "
+            << results.per_cart.size() << " cases of carts of their own, " << per_cart_failed << " failed; "
             << results.motor.size() << " induction-motor claims, " << motor_failed << " failed; CPU "
             << results.cpu_seconds << " s)\n";
-  failed += motor_failed;
+  failed += motor_failed + per_cart_failed;
   if (g_interrupted) {
     std::cerr << "rollerdyn: interrupted; the report holds what was computed\n";
     return 3;
