@@ -124,8 +124,7 @@ void Suite::perCart(ValidationResults& r) {
         " revolutions (claim: at least 10 times that and 100 times the agreement bound). Its source: the change adds " +
         g(source, 4) + " N·m at order " + ks + " to the crank-side torque ½·J_n2'(φ)·ω̄² + M_load(φ, ω̄) (J_n2: " +
         "crank-side reduced inertia, M_load: load torque, ω̄: mean crank speed); the coupling torque carries " +
-        g(mb.amplitude[k] / source, 3) + " times that amplitude (far below the torsional natural frequency the " +
-        "crank side's torque fluctuation passes through the coupling to the motor).";
+        g(mb.amplitude[k] / source, 3) + " times that amplitude (a measured ratio, not a prediction of this check).";
     r.per_cart.push_back(cc);
   }
 }
