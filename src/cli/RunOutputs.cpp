@@ -2,13 +2,10 @@
 
 #include <iostream>
 
-#include "analysis/Summary.h"
 #include "cli/Commands.h"
 #include "cli/Progress.h"
 #include "multibody/MultibodySimulation.h"
-#include "report/OutputFolder.h"
-#include "studies/ResonanceCheck.h"
-#include "studies/StartLoad.h"
+#include "studies/RunSummary.h"
 
 namespace rollerdyn::cli {
 
@@ -22,12 +19,10 @@ RunResult runMultibodyWithProgress(const Scene& scene) {
 
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
                                const std::string& out_dir) {
-  writeRunTables(out_dir, run);
-  const StartLoad start_load = startLoadOf(scene);  // explains a stall
-  nlohmann::json summary = makeSummary(scene, run, &start_load);
-  summary["scene_path"] = absolutePath(scene_path);
-  for (const std::string& w : addResonanceWarnings(scene, summary)) std::cerr << "rollerdyn: warning: " << w << '\n';
-  writeSummaryAtomic(out_dir + "/summary.json", summary);
+  std::vector<std::string> warnings;
+  const nlohmann::json summary = summarizeRun(scene, run, scene_path, &warnings);
+  for (const std::string& w : warnings) std::cerr << "rollerdyn: warning: " << w << '\n';
+  writeRunFiles(out_dir, run, summary);
   return summary;
 }
 

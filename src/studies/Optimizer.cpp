@@ -62,6 +62,7 @@ class Search {
  public:
   Search(const OptimizeOptions& o, OptimizeResult& r) : o_(o), r_(r) {
     sweep_.scene_path = o.scene_path;
+    sweep_.scene_input = o.scene_input;
     sweep_.base_overrides = o.base_overrides;
     sweep_.model = o.model;
     sweep_.interrupt = o.interrupt;
@@ -137,14 +138,6 @@ class Search {
  private:
   void judge(OptimizeEvaluation& e) const {
     const SweepPoint& p = e.point;
-    e.objective = kNaN;
-    for (std::size_t k = 0; k < o_.params.size(); ++k)
-      if (o_.params[k].key == o_.minimize) e.objective = e.x[k];
-    if (!std::isfinite(e.objective)) e.objective = p.metric(o_.minimize);
-    for (const OptimizeConstraint& c : o_.constraints) {
-      const double m = p.metric(c.metric);
-      e.constraint_values.push_back(c.upper ? m - c.bound : c.bound - m);
-    }
     const double omega_min = p.metric("omega_crank_min");
     if (!p.complete) {
       e.reason = "did not complete: " + p.status;
@@ -154,11 +147,28 @@ class Search {
       std::ostringstream os;
       os << "the crank does not turn steadily (rocks or stops): omega_crank_min = " << omega_min << " rad/s";
       e.reason = os.str();
-    } else if (!std::isfinite(e.objective)) {
-      e.reason = o_.minimize + " not available";
+    }
+    const bool usable = e.reason.empty();  // the caller's functions see usable runs only
+    e.objective = kNaN;
+    if (o_.objective) {
+      if (usable) e.objective = o_.objective(e);
     } else {
-      for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
-        if (!std::isfinite(e.constraint_values[j])) e.reason = o_.constraints[j].metric + " not available";
+      for (std::size_t k = 0; k < o_.params.size(); ++k)
+        if (o_.params[k].key == o_.minimize) e.objective = e.x[k];
+      if (!std::isfinite(e.objective)) e.objective = p.metric(o_.minimize);
+    }
+    for (const OptimizeConstraint& c : o_.constraints) {
+      const double m = c.value ? (usable ? c.value(e) : kNaN) : p.metric(c.metric);
+      e.constraint_metrics.push_back(m);
+      e.constraint_values.push_back(c.upper ? m - c.bound : c.bound - m);
+    }
+    if (usable) {
+      if (!std::isfinite(e.objective)) {
+        e.reason = o_.minimize + " not available";
+      } else {
+        for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
+          if (!std::isfinite(e.constraint_values[j])) e.reason = o_.constraints[j].metric + " not available";
+      }
     }
     e.run_ok = e.reason.empty();
     e.constraints_hold = e.run_ok;
@@ -196,7 +206,7 @@ void validate(const OptimizeOptions& o) {
   for (std::size_t k = 0; k < o.params.size(); ++k) {
     const SampleRange& p = o.params[k];
     if (!findSceneKey(p.key))
-      throw std::invalid_argument("optimize: --param " + p.key + " is not a scene key (see model/README.md)");
+      throw std::invalid_argument("optimize: --param " + p.key + " is not a scene key (see docs/scene-reference.md)");
     if (!(p.lower < p.upper) || !std::isfinite(p.lower) || !std::isfinite(p.upper))
       throw std::invalid_argument("optimize: --range of " + p.key + ": expected a:b with a < b");
     for (std::size_t m = 0; m < k; ++m)
@@ -204,11 +214,11 @@ void validate(const OptimizeOptions& o) {
   }
   bool is_key = false;
   for (const SampleRange& p : o.params) is_key = is_key || p.key == o.minimize;
-  if (!is_key && !knownMetric(o.minimize))
+  if (!is_key && !o.objective && !knownMetric(o.minimize))
     throw std::invalid_argument("optimize: --minimize: expected a metric (" + metricList() +
                                 ") or one of the --param keys, got '" + o.minimize + "'");
   for (const OptimizeConstraint& c : o.constraints)
-    if (!knownMetric(c.metric))
+    if (!c.value && !knownMetric(c.metric))
       throw std::invalid_argument("optimize: --constraint '" + c.text + "': expected a metric (" + metricList() +
                                   "), got '" + c.metric + "'");
   const std::string& m = o.method;

@@ -17,8 +17,7 @@
 #include "reduced/ReducedModel.h"
 #include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
-#include "studies/ResonanceCheck.h"
-#include "studies/StartLoad.h"
+#include "studies/RunSummary.h"
 #include "studies/SweepExecution.h"
 
 namespace rollerdyn {
@@ -105,7 +104,7 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
   for (std::size_t i = 0; i < o.params.size(); ++i) overrides.push_back(o.params[i].key + "=" + texts[i]);
   Scene scene;
   try {
-    scene = parseSceneFile(o.scene_path, overrides);
+    scene = o.scene_input ? parseSceneInput(*o.scene_input, overrides) : parseSceneFile(o.scene_path, overrides);
   } catch (const std::exception& e) {
     p.status = std::string("invalid: ") + e.what();
     p.cpu_seconds = threadCpuSeconds() - cpu0;
@@ -121,10 +120,8 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
       run = runReducedModel(scene);
     }
     p.ran = true;
-    const StartLoad start_load = startLoadOf(scene);  // explains a stall in the status
-    nlohmann::json summary = makeSummary(scene, run, &start_load);
+    const nlohmann::json summary = summarizeRun(scene, run, "");  // stall cause, resonance warnings
     p.motion = summary.value("motion", "unknown");
-    addResonanceWarnings(scene, summary);
     p.warnings = summary["warnings"];
     const auto& src = metricSources();
     for (std::size_t k = 0; k < src.size(); ++k) p.metrics[k] = summaryNumber(summary, src[k].second);
@@ -286,7 +283,7 @@ SweepResult runSweep(const SweepOptions& o) {
   for (const SweepParameter& p : o.params) {
     if (p.values.empty()) throw std::invalid_argument("sweep: --param " + p.key + " has no values");
     if (!findSceneKey(p.key))
-      throw std::invalid_argument("sweep: --param " + p.key + " is not a scene key (see model/README.md)");
+      throw std::invalid_argument("sweep: --param " + p.key + " is not a scene key (see docs/scene-reference.md)");
   }
   // Grid (last parameter fastest) or explicit designs; threads or MPI, saved rows, resume.
   SweepResult result;
