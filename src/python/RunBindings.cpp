@@ -1,0 +1,136 @@
+// simulate and compare for Python: the command line's runs (the same functions `rollerdyn
+// simulate` and `rollerdyn compare` call), without the GIL, stoppable by Ctrl-C.
+#include <atomic>
+#include <limits>
+
+#include <pybind11/stl.h>
+
+#include "analysis/SizingSummary.h"
+#include "analysis/Summary.h"
+#include "compare/ModelComparison.h"
+#include "multibody/MultibodySimulation.h"
+#include "python/Bindings.h"
+#include "python/Interruptible.h"
+#include "python/PyConvert.h"
+#include "python/PyScene.h"
+#include "reduced/ReducedModel.h"
+#include "report/HtmlReport.h"
+#include "report/OutputDir.h"
+#include "report/OutputFolder.h"
+#include "report/RunFigures.h"
+#include "report/SizingSection.h"
+#include "scene/DidYouMean.h"
+#include "studies/RunSummary.h"
+
+namespace rollerdyn::python {
+
+namespace {
+
+// One finished (or interrupted) run with its summary, as `simulate` would write it.
+struct RunData {
+  PyScene scene;
+  RunResult run;
+  nlohmann::json summary;
+  std::vector<std::string> warnings;  // resonance warnings (the CLI prints them on stderr)
+};
+
+void checkModel(const std::string& model) {
+  const std::vector<std::string> models = {"multibody", "reduced"};
+  if (model != "multibody" && model != "reduced")
+    throw std::invalid_argument("model: expected one of multibody, reduced, got '" + model + "'" +
+                                didYouMean(model, models));
+}
+
+RunData summarized(const PyScene& scene, RunResult run) {
+  RunData d{scene, std::move(run), nullptr, {}};
+  d.summary = summarizeRun(scene.scene(), d.run, scene.file(), &d.warnings);
+  return d;
+}
+
+struct CompareData {
+  PyScene scene;
+  ModelComparison comparison;
+  RunData multibody, reduced;
+};
+
+}  // namespace
+
+void bindRuns(py::module_& m) {
+  py::class_<RunData>(m, "RunData")
+      .def_property_readonly("scene", [](const RunData& d) { return d.scene; })
+      .def_property_readonly("model", [](const RunData& d) { return d.run.model; })
+      .def_property_readonly("complete", [](const RunData& d) { return d.run.stats.complete; })
+      .def_property_readonly("status", [](const RunData& d) { return d.run.stats.status; })
+      .def_property_readonly("warnings", [](const RunData& d) { return d.warnings; })
+      .def("timeseries", [](const RunData& d) { return tableToPython(d.run.timeseries); })
+      .def("reactions",
+           [](const RunData& d) { return d.run.reactions.columns.empty() ? py::object(py::none()) : py::object(tableToPython(d.run.reactions)); })
+      .def("summary", [](const RunData& d) { return toPython(d.summary); })
+      .def("text", [](const RunData& d) { return summaryText(d.summary) + sizingText(d.summary); })
+      .def("html",
+           [](const RunData& d) {
+             return runStatusHtml(d.summary) + summaryMetricsHtml(d.summary) + sizingSectionHtml(d.summary) +
+                    reactionsTableHtml(d.summary, d.run.reactions.columns);
+           })
+      .def(
+          "write",
+          [](const RunData& d, const std::string& out_dir, bool figures) {
+            // What `rollerdyn simulate --out DIR [--plot]` writes, by the same functions.
+            prepareOutputDir(out_dir, StaleOutputs::RunFiguresAndReport, "out_dir");
+            writeRunFiles(out_dir, d.run, d.summary);
+            std::string text;
+            if (figures) {
+              py::gil_scoped_release release;  // gnuplot runs in child processes
+              text = figureSetText(drawRunFigures(outputFolderOf(out_dir, d.run, d.summary), &d.scene.scene(),
+                                                  out_dir + "/figures"),
+                                   out_dir + "/figures");
+            }
+            return text;
+          },
+          py::arg("out_dir"), py::arg("figures") = false);
+
+  m.def(
+      "simulate",
+      [](const PyScene& scene, const std::string& model) {
+        checkModel(model);
+        std::atomic<bool> stop{false};
+        bool interrupted = false;
+        RunData d = runInterruptible(
+            [&scene, &model, &stop] {
+              RunControl control;
+              control.interrupt = &stop;
+              return summarized(scene, model == "multibody" ? runMultibodyModel(scene.scene(), control)
+                                                            : runReducedModel(scene.scene()));
+            },
+            stop, &interrupted);
+        return py::make_tuple(std::move(d), interrupted);
+      },
+      py::arg("scene"), py::arg("model"));
+
+  py::class_<CompareData>(m, "CompareData")
+      .def_property_readonly("multibody", [](const CompareData& c) { return c.multibody; })
+      .def_property_readonly("reduced", [](const CompareData& c) { return c.reduced; })
+      .def("table", [](const CompareData& c) { return tableToPython(c.comparison.table); })
+      .def("json", [](const CompareData& c) { return toPython(comparisonJson(c.comparison)); })
+      .def("text", [](const CompareData& c) { return comparisonText(c.comparison); });
+
+  m.def(
+      "compare",
+      [](const PyScene& scene) {
+        std::atomic<bool> stop{false};
+        bool interrupted = false;
+        CompareData c = runInterruptible(
+            [&scene, &stop] {
+              CompareControl control;
+              control.interrupt = &stop;
+              ModelComparison mc = runComparison(scene.scene(), control);
+              RunData mb = summarized(scene, mc.multibody), red = summarized(scene, mc.reduced);
+              return CompareData{scene, std::move(mc), std::move(mb), std::move(red)};
+            },
+            stop, &interrupted);
+        return py::make_tuple(std::move(c), interrupted);
+      },
+      py::arg("scene"));
+}
+
+}  // namespace rollerdyn::python

@@ -1,0 +1,40 @@
+"""rollerdyn from Python: drive dynamics of roller forming installations.
+
+The same libraries as the ``rollerdyn`` command line, with its concepts: a scene (a scene file
+and overrides), a run of the multibody or the reduced model, its time series, joint reactions,
+summary and drive-sizing answers, the comparison of the two models, sweeps and optimizations.
+Numbers are the command line's numbers, to the last bit.
+
+    import rollerdyn as rd
+    scene = rd.Scene.load("model/balanced-4cart.yaml")
+    r = rd.simulate(scene.with_({"crank.offset_deg": 60}))
+    r.timeseries.plot(x="t", y="omega_crank")      # pandas; units in r.units
+    r.summary["delta"], r.sizing["motor"]["rms_over_nominal"]
+
+Documentation: docs/python.md in the repository.
+"""
+
+from . import _core
+from ._core import SceneError
+from .runs import Comparison, ResonanceWarning, Result, RunInterrupted, compare, simulate
+from .scene import Scene, scene_keys
+from .studies import OptimizeResult, optimize, sweep
+
+# The induction-motor catalogue fit (`rollerdyn motor`) is bound in the same way when it lands:
+# src/python/MotorBindings.cpp, wrapped here as `from .motor import fit_motor`.
+
+__version__ = _core.version
+__all__ = [
+    "Comparison",
+    "OptimizeResult",
+    "ResonanceWarning",
+    "Result",
+    "RunInterrupted",
+    "Scene",
+    "SceneError",
+    "compare",
+    "optimize",
+    "scene_keys",
+    "simulate",
+    "sweep",
+]
