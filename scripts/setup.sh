@@ -25,7 +25,7 @@ packages=(
   # notebook (examples/), which the tests execute:
   pybind11-dev python3-pybind11 python3-dev
   python3-numpy python3-pandas python3-matplotlib
-  python3-pytest
+  python3-pytest python3-yaml   # tests of the Python module and of the examples in the docs
   jupyter-nbconvert python3-nbconvert python3-ipykernel
   jupyter-notebook      # to open the notebooks: PYTHONPATH=build/python jupyter notebook examples/
 )
