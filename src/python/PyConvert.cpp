@@ -1,5 +1,6 @@
 #include "python/PyConvert.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <sstream>

@@ -60,7 +60,7 @@ def test_the_gil_is_released_during_a_run():
     ticker.start()
     try:
         t0 = time.perf_counter()
-        rd.simulate(rd.Scene.load(model("balanced-4cart.yaml")).with_({"simulation.t_end": 6}))
+        rd.simulate(rd.Scene.load(model("balanced-4cart.yaml")).with_({"simulation.t_end": 20}))
         t1 = time.perf_counter()
     finally:
         done.set()

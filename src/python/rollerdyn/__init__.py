@@ -14,7 +14,18 @@ Numbers are the command line's numbers, to the last bit.
 Documentation: docs/python.md in the repository.
 """
 
-from . import _core
+import sys
+
+try:
+    import numpy  # noqa: F401
+    import pandas  # noqa: F401
+    from . import _core
+except ImportError as error:  # another interpreter than the one the module was built for
+    raise ImportError(
+        f"rollerdyn runs with Debian's Python, /usr/bin/python3, which sees the numpy and pandas "
+        f"that scripts/setup.sh installs; this is {sys.executable} ({error}). Run your script with "
+        f"PYTHONPATH=build/python /usr/bin/python3") from error
+
 from ._core import SceneError
 from .runs import Comparison, ResonanceWarning, Result, RunInterrupted, compare, simulate
 from .scene import Scene, scene_keys
