@@ -15,7 +15,7 @@ nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlo
 
 LoadWork computeLoadWork(const Scene& sc, const RunResult& run, const SteadyState& w) {
   LoadWork out;
-  char buf[320];
+  char buf[640];  // the no-net-work warning is ~390 characters
   // Carts with their own loads (loads.* as lists): each value as the list of cart 1, 2, ...
   auto perCart = [&](double (*value)(const Loads&), const char* format) {
     const int n = sc.cart_loads.empty() ? 1 : sc.carts.count;
