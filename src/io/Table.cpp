@@ -38,6 +38,8 @@ const std::vector<std::pair<std::string, std::string>>& exactUnits() {
       {"twist", "rad"}, {"twist_rate", "rad/s"}, {"twist_accel", "rad/s^2"},
       {"coupling_torque", "N*m"}, {"motor_torque", "N*m"}, {"load_torque", "N*m"},
       {"bearing_x", "N"}, {"bearing_y", "N"},
+      {"stator_current", "A"}, {"supply_voltage_ratio", "-"}, {"supply_frequency_ratio", "-"},
+      {"brake_torque", "N*m"},
   };
   return u;
 }

@@ -62,6 +62,12 @@ class Supply {
   bool constant() const { return constant_; }
   bool hasBrake() const { return stop_.brake_torque > 0; }
 
+  // True in the stages where the motor gets its rated supply (rated, restarted): where a slow
+  // drive counts as stalled (a star or a ramp stage may legitimately be slow).
+  static bool fullSupply(const SupplyPhase& p) {
+    return p.stage == SupplyPhase::Stage::Rated || p.stage == SupplyPhase::Stage::Restarted;
+  }
+
   // The phase at t = 0 (events due at t = 0 applied: a switch-on at t_on = 0).
   SupplyPhase initialPhase() const;
 
@@ -104,5 +110,17 @@ class Supply {
   const MotorLaw* law_ = nullptr;
   bool constant_ = true;
 };
+
+struct Scene;
+
+// The supply of a scene's motor.start / motor.stop settings, for both models: ω0 from the motor,
+// f_n the motor's rated frequency, ω_b = u·v_s/r (the rotor speed at which the crank moves the
+// carts at the load laws' smoothing speed v_s; cam drive: r = stroke/2).
+Supply makeSupply(const Scene& scene, const MotorLaw* law);
+
+// The scene's motor is energised at t = 0 in steady state: connected at t = 0 while the machine
+// already turns (initial.crank_speed != 0), i.e. it was running before; otherwise its electrical
+// states start from zero (a start from rest, or a switch-on later).
+bool motorSteadyAtStart(const Scene& scene, const Supply& supply);
 
 }  // namespace rollerdyn
