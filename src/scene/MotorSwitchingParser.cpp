@@ -22,22 +22,22 @@ std::string laterThan(const char* what, double bound, const char* key) {
 
 // A time key that must come after an earlier event: blames whichever of the two a --set changed
 // last, like the other cross-key rules.
-void requireLater(const SceneReader& in, const std::string& later_key, double later, const std::string& earlier_key,
+void requireLater(const scene_detail::Reader& in, const std::string& later_key, double later, const std::string& earlier_key,
                   double earlier, const char* earlier_name, const char* later_name) {
   if (later > earlier) return;
-  if (blameSecond(in.doc(), later_key, earlier_key))
+  if (scene_detail::blameSecond(in.doc(), later_key, earlier_key))
     in.doc().fail(earlier_key,
                   std::string("a number < ") + later_name + " = " + formatNumber(later) + " [s] (" + later_key + ")",
                   formatNumber(earlier));
   in.doc().fail(later_key, laterThan(earlier_name, earlier, earlier_key.c_str()), formatNumber(later));
 }
 
-void readStarDelta(const SceneReader& in, MotorStart& m, double omega_sync) {
+void readStarDelta(const scene_detail::Reader& in, MotorStart& m, double omega_sync) {
   const SceneDocument& doc = in.doc();
   const bool by_time = in.has("motor.start.changeover_time"), by_speed = in.has("motor.start.changeover_speed");
   const std::string ways = "exactly one of motor.start.changeover_time or motor.start.changeover_speed";
   if (by_time && by_speed) {
-    const bool speed_last = blameSecond(doc, "motor.start.changeover_time", "motor.start.changeover_speed");
+    const bool speed_last = scene_detail::blameSecond(doc, "motor.start.changeover_time", "motor.start.changeover_speed");
     const std::string blamed = speed_last ? "motor.start.changeover_speed" : "motor.start.changeover_time";
     const std::string other = speed_last ? "motor.start.changeover_time" : "motor.start.changeover_speed";
     doc.fail(blamed, ways + " (" + other + " is given too)", describeNode(doc.find(blamed)));
@@ -57,7 +57,7 @@ void readStarDelta(const SceneReader& in, MotorStart& m, double omega_sync) {
 
 }  // namespace
 
-void readMotorSwitching(const SceneReader& in, Scene& scene) {
+void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
   const SceneDocument& doc = in.doc();
   MotorStart& m = scene.motor_start;
   m.method = methodOf(in.choice("motor.start.method"));

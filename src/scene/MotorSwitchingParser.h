@@ -12,6 +12,6 @@ namespace rollerdyn {
 // validated but not used, so `--set motor.start.method=...` works on a scene written for another
 // method (as a rigid coupling keeps its stiffness key). Needs scene.motor read already (the
 // changeover speed must lie below the synchronous speed).
-void readMotorSwitching(const SceneReader& in, Scene& scene);
+void readMotorSwitching(const scene_detail::Reader& in, Scene& scene);
 
 }  // namespace rollerdyn

@@ -14,9 +14,10 @@
 
 namespace rollerdyn {
 
-namespace {
+using scene_detail::blameSecond;
+using scene_detail::Reader;
 
-using Reader = SceneReader;
+namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
 
@@ -185,68 +186,6 @@ Carts readCarts(const Reader& in) {
   return c;
 }
 
-// Kloss critical slip from exactly one of three equivalent descriptions.
-double readCriticalSlip(const Reader& in, double omega0) {
-  const SceneDocument& doc = in.doc();
-  const std::string ways_txt =
-      "exactly one of motor.critical_slip, motor.omega_critical, or "
-      "motor.omega_nominal + motor.overload_ratio";
-  std::vector<std::string> given;  // first key of each way present, in schema order
-  if (in.has("motor.critical_slip")) given.push_back("motor.critical_slip");
-  if (in.has("motor.omega_critical")) given.push_back("motor.omega_critical");
-  if (in.has("motor.omega_nominal")) given.push_back("motor.omega_nominal");
-  else if (in.has("motor.overload_ratio")) given.push_back("motor.overload_ratio");
-  if (given.empty()) doc.failMissing("motor.critical_slip", ways_txt);
-  if (given.size() > 1) {
-    // Two descriptions could disagree; refuse rather than pick one silently. Blame the one a
-    // --set added, if any (the latest), else the second in schema order.
-    size_t blamed = 1;
-    for (size_t i = 0; i < given.size(); ++i)
-      if (doc.overrideFor(given[i]) > doc.overrideFor(given[blamed])) blamed = i;
-    const std::string& other = given[blamed == 0 ? 1 : 0];
-    doc.fail(given[blamed], ways_txt + " (" + other + " is given too)",
-             describeNode(doc.find(given[blamed])));
-  }
-  const std::string& way = given[0];
-  if (way == "motor.critical_slip") return in.number(way);  // range (0, 1) from the schema
-
-  const std::string w0_txt = formatNumber(omega0);
-  if (way == "motor.omega_critical") {
-    const double w_kr = in.number(way);
-    if (w_kr >= omega0) {
-      doc.fail(way, "a number in (0, omega_sync = " + w0_txt + ") [rad/s]", formatNumber(w_kr));
-    }
-    return 1.0 - w_kr / omega0;  // Loveikin and Pochka (2007) eq. (7)
-  }
-  const double w_n =
-      in.requiredNumber("motor.omega_nominal", "required with motor.overload_ratio");
-  const double lambda =
-      in.requiredNumber("motor.overload_ratio", "required with motor.omega_nominal");
-  if (w_n >= omega0) {
-    doc.fail("motor.omega_nominal", "a number in (0, omega_sync = " + w0_txt + ") [rad/s]",
-             formatNumber(w_n));
-  }
-  const double s_n = 1.0 - w_n / omega0;
-  const double s_kr = s_n * (lambda + std::sqrt(lambda * lambda - 1.0));  // Loveikin, Pochka, Romasevych (2018) eq. (37)
-  if (s_kr >= 1.0) {
-    doc.fail("motor.overload_ratio",
-             "a value giving critical slip s_kr = s_n(lambda + sqrt(lambda^2 - 1)) < 1 with s_n = " +
-                 formatNumber(s_n),
-             formatNumber(lambda) + " (s_kr = " + formatNumber(s_kr) + ")");
-  }
-  return s_kr;
-}
-
-KlossMotor readMotor(const Reader& in) {
-  KlossMotor m;
-  m.enabled = in.flag("motor.enabled");
-  m.omega_sync = in.number("motor.omega_sync");
-  m.breakdown_torque = in.number("motor.breakdown_torque");
-  m.critical_slip = readCriticalSlip(in, m.omega_sync);
-  m.rotor_inertia = in.number("motor.rotor_inertia");
-  return m;
-}
-
 Reducer readReducer(const Reader& in) {
   Reducer r;
   r.ratio = in.number("reducer.ratio");
@@ -343,7 +282,7 @@ Scene readScene(const SceneDocument& doc) {
   s.crank = readCrank(in);
   s.rods = readRods(in, s.crank.radius);
   s.carts = readCarts(in);
-  s.motor = readMotor(in);
+  scene_detail::readMotor(in, s.motor, s.induction);
   s.reducer = readReducer(in);
   s.coupling = readCoupling(in);
   s.flywheel = readFlywheel(in);

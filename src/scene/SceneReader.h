@@ -1,22 +1,23 @@
-// Typed, range-checked reading of single scene keys (internal to the scene parser: SceneParser.cpp
-// and the readers of single sections, e.g. MotorSwitchingParser.cpp).
+// Internals of the scene parser shared by its source files (SceneParser.cpp: the installation;
+// MotorSceneParser.cpp: the motor section). Not a public header: everything else reads a Scene.
 #pragma once
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "scene/Scene.h"
 #include "scene/SceneDocument.h"
 #include "scene/SceneSchema.h"
 
-namespace rollerdyn {
+namespace rollerdyn::scene_detail {
 
 // Typed, range-checked access to single keys of a SceneDocument, driven by the schema table:
 // each read checks the YAML type, finiteness and the key's range and either returns the value,
 // the key's default, or throws a located SceneError.
-class SceneReader {
+class Reader {
  public:
-  explicit SceneReader(const SceneDocument& doc) : doc_(doc) {}
+  explicit Reader(const SceneDocument& doc) : doc_(doc) {}
 
   bool has(const std::string& path) const { return doc_.find(path).IsDefined(); }
 
@@ -132,4 +133,8 @@ inline bool blameSecond(const SceneDocument& doc, const std::string& first, cons
   return doc.overrideFor(second) > doc.overrideFor(first);
 }
 
-}  // namespace rollerdyn
+// The motor section: Kloss's M_kr, s_kr (`motor`) and the machine behind the other laws
+// (`induction`: motor.model, rated supply, motor.circuit.*, motor.catalogue.*), validated together.
+void readMotor(const Reader& in, KlossMotor& motor, InductionMotor& induction);
+
+}  // namespace rollerdyn::scene_detail

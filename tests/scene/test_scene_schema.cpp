@@ -25,7 +25,7 @@ std::string readme() {
 // Key paths in the first column of the README's key table: rows starting "| `key` |".
 std::set<std::string> documentedKeys() {
   std::set<std::string> keys;
-  const std::regex row(R"(^\| `([a-z_.A-Z]+)` \|)");
+  const std::regex row(R"(^\| `([a-z_.A-Z0-9]+)` \|)");
   std::istringstream in(readme());
   for (std::string line; std::getline(in, line);) {
     std::smatch m;
@@ -107,10 +107,34 @@ carts:
     com_height: 0.7
 motor:
   enabled: false
-  omega_sync: 157.08
+  omega_sync: 125.664
   breakdown_torque: 300
   critical_slip: 0.2
   rotor_inertia: 0.25
+  model: park
+  torque_time_constant: 0.05
+  voltage: 400
+  frequency: 60
+  connection: delta
+  pole_pairs: 3
+  circuit:
+    R_s: 0.1
+    L_sigma_s: 0.002
+    L_m: 0.05
+    R_r: 0.3
+    L_sigma_r: 0.001
+    R_r2: 0.05
+    L_sigma_r2: 0.004
+  catalogue:
+    power: 15000
+    omega_nominal: 122
+    current: 30
+    power_factor: 0.87
+    efficiency: 0.88
+    starting_torque_ratio: 1.2
+    breakdown_torque_ratio: 2.0
+    starting_current_ratio: 6.0
+    cages: 1
   start:
     method: soft_starter
     t_on: 0.5
@@ -219,10 +243,33 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.carts.geometry.d, 0.06);
   EXPECT_DOUBLE_EQ(s.carts.geometry.com_height, 0.7);
   EXPECT_FALSE(s.motor.enabled);
-  EXPECT_DOUBLE_EQ(s.motor.omega_sync, 157.08);
+  EXPECT_DOUBLE_EQ(s.motor.omega_sync, 125.664);
   EXPECT_DOUBLE_EQ(s.motor.breakdown_torque, 300.0);
   EXPECT_DOUBLE_EQ(s.motor.critical_slip, 0.2);
   EXPECT_DOUBLE_EQ(s.motor.rotor_inertia, 0.25);
+  const InductionMotor& im = s.induction;
+  EXPECT_EQ(im.model, MotorModel::Park);
+  EXPECT_DOUBLE_EQ(im.torque_time_constant, 0.05);
+  EXPECT_DOUBLE_EQ(im.voltage, 400.0);
+  EXPECT_DOUBLE_EQ(im.frequency, 60.0);
+  EXPECT_EQ(im.connection, WindingConnection::Delta);
+  EXPECT_EQ(im.pole_pairs, 3);
+  EXPECT_DOUBLE_EQ(im.circuit.R_s, 0.1);
+  EXPECT_DOUBLE_EQ(im.circuit.L_sigma_s, 0.002);
+  EXPECT_DOUBLE_EQ(im.circuit.L_m, 0.05);
+  EXPECT_DOUBLE_EQ(im.circuit.R_r, 0.3);
+  EXPECT_DOUBLE_EQ(im.circuit.L_sigma_r, 0.001);
+  EXPECT_DOUBLE_EQ(im.circuit.R_r2, 0.05);
+  EXPECT_DOUBLE_EQ(im.circuit.L_sigma_r2, 0.004);
+  EXPECT_DOUBLE_EQ(im.catalogue.power, 15000.0);
+  EXPECT_DOUBLE_EQ(im.catalogue.omega_nominal, 122.0);
+  EXPECT_DOUBLE_EQ(im.catalogue.current, 30.0);
+  EXPECT_DOUBLE_EQ(im.catalogue.power_factor, 0.87);
+  EXPECT_DOUBLE_EQ(im.catalogue.efficiency, 0.88);
+  EXPECT_DOUBLE_EQ(im.catalogue.starting_torque_ratio, 1.2);
+  EXPECT_DOUBLE_EQ(im.catalogue.breakdown_torque_ratio, 2.0);
+  EXPECT_DOUBLE_EQ(im.catalogue.starting_current_ratio, 6.0);
+  EXPECT_EQ(im.catalogue.cages, 1);
   EXPECT_EQ(s.motor_start.method, StartMethod::SoftStarter);
   EXPECT_DOUBLE_EQ(s.motor_start.t_on, 0.5);
   EXPECT_DOUBLE_EQ(s.motor_start.phase, 30 * deg);

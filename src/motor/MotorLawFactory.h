@@ -1,0 +1,18 @@
+// The one place a scene's motor.model becomes a MotorLaw: both drive models, the start-up
+// analysis and `rollerdyn motor` call this, so each model runs the same law.
+#pragma once
+
+#include <memory>
+
+#include "motor/MotorLaw.h"
+#include "scene/Scene.h"
+
+namespace rollerdyn {
+
+// The law of the scene's motor.model.
+std::unique_ptr<MotorLaw> makeMotorLaw(const Scene& scene);
+// The law of `model` for the scene's motor (e.g. every model side by side in `rollerdyn motor`).
+// Throws std::invalid_argument when the scene lacks what that model needs.
+std::unique_ptr<MotorLaw> makeMotorLaw(const Scene& scene, MotorModel model);
+
+}  // namespace rollerdyn
