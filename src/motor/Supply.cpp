@@ -197,14 +197,10 @@ SupplyState Supply::atSwitchOn() const {
   return state(p, start_.t_on, 0.0);
 }
 
-// Rated supply frequency f_n [Hz] of the scene's motor. The Kloss data carry none; the papers'
-// motors (4A series) are 50 Hz machines.
-static double ratedFrequencyOf(const Scene&) { return 50.0; }
-
 Supply makeSupply(const Scene& scene, const MotorLaw* law) {
   const double r = scene.hasCamDrive() ? 0.5 * scene.cam.stroke : scene.crank.radius;
   const double brake_speed = scene.reducer.ratio * scene.loads.velocity_smoothing / r;
-  return Supply(scene.motor_start, scene.motor_stop, scene.motor.omega_sync, ratedFrequencyOf(scene), brake_speed,
+  return Supply(scene.motor_start, scene.motor_stop, scene.motor.omega_sync, scene.induction.frequency, brake_speed,
                 law);
 }
 

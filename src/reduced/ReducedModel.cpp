@@ -5,15 +5,23 @@
 #include <string>
 
 #include "physics/CamMotionLaw.h"
-#include "physics/KlossMotor.h"
+#include "motor/MotorLawFactory.h"
 #include "physics/RollerLoads.h"
 
 namespace rollerdyn {
 
 ReducedModel::ReducedModel(const Scene& scene) : ReducedModel(scene, nullptr) {}
 
+namespace {
+// The given law, else the scene's motor.model; none without a motor.
+std::shared_ptr<const MotorLaw> lawOf(const Scene& scene, std::shared_ptr<const MotorLaw> given) {
+  if (!scene.motor.enabled) return nullptr;
+  return given ? given : std::shared_ptr<const MotorLaw>(makeMotorLaw(scene));
+}
+}  // namespace
+
 ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law)
-    : scene_(scene), rigid_(scene.coupling.type == CouplingType::Rigid), law_(scene.motor.enabled ? law : nullptr) {
+    : scene_(scene), rigid_(scene.coupling.type == CouplingType::Rigid), law_(lawOf(scene, std::move(law))) {
   const int n = scene_.carts.count;
   if (n < 1) throw std::invalid_argument("reduced model: carts.count must be >= 1");
   if (static_cast<int>(scene_.carts.side.size()) != n)
@@ -106,7 +114,6 @@ double ReducedModel::motorTorque(double omega_motor) const {
   if (!scene_.motor.enabled) return 0.0;
   const double u = scene_.reducer.ratio;
   // Loveikin, Pochka, Romasevych (2018) eq. (37) / Loveikin and Pochka (2007) eq. (7)-(8), in the singularity-free form of KlossMotor.h
-  if (!law_) return klossCrankTorque(scene_.motor, u, scene_.reducer.efficiency, omega_motor);
   return law_->steadyTorque(SupplyState{}, omega_motor * u) * u * scene_.reducer.efficiency;
 }
 
@@ -249,10 +256,6 @@ void ReducedModel::evaluateMotor(double t, const SupplyPhase& phase, const doubl
   const double w_r = e.omega_motor * u;
   e.supply = supply_.state(phase, t, w_r);
   e.brake_torque = supply_.brakeTorque(phase, w_r) * u * eta;
-  if (!law_) {  // the scene's Kloss formula
-    e.motor_torque = e.supply.connected ? motorTorque(e.omega_motor) : 0.0;
-    return;
-  }
   MotorEvaluation out;
   law_->evaluate(e.supply, w_r, y + iMotorStates(), out, motorStateCount() > 0 ? e.motor_state_rates.data() : nullptr);
   e.motor_torque = out.torque * u * eta;

@@ -92,7 +92,8 @@ class ReducedModel {
  public:
   // Validates the kinematic preconditions (std::invalid_argument on a bad scene).
   explicit ReducedModel(const Scene& scene);
-  // With a given motor law (instead of the scene's motor.model), e.g. a law written in a test.
+  // With a given motor law (instead of the scene's motor.model; null: the scene's), e.g. a law
+  // written in a test.
   ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law);
 
   const Scene& scene() const { return scene_; }

@@ -79,6 +79,22 @@ void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
                             ? in.requiredNumber("motor.start.initial_frequency", "required when " + needed_by)
                             : in.numberOr("motor.start.initial_frequency", 0.0);
   m.boost = in.number("motor.start.boost");
+  if (m.method == StartMethod::FrequencyConverter && !(m.initial_frequency < scene.induction.frequency))
+    doc.fail("motor.start.initial_frequency",
+             "a frequency in (0, f_n = " + formatNumber(scene.induction.frequency) + ") [Hz] (motor.frequency)",
+             formatNumber(m.initial_frequency));
+  // A current limit needs a law that knows the stator current (motor/Supply.h).
+  const bool law_has_current =
+      scene.induction.model == MotorModel::Circuit || scene.induction.model == MotorModel::Park;
+  if (m.method == StartMethod::SoftStarter && m.current_limit > 0 && !law_has_current) {
+    if (scene_detail::blameSecond(doc, "motor.start.current_limit", "motor.model"))
+      doc.fail("motor.model", "circuit or park (motor.start.current_limit needs a model of the stator current)",
+               toString(scene.induction.model));
+    doc.fail("motor.start.current_limit",
+             std::string("0 with motor.model ") + toString(scene.induction.model) +
+                 " (no stator current in that law; use motor.model circuit or park)",
+             formatNumber(m.current_limit));
+  }
 
   MotorStop& st = scene.motor_stop;
   st.t_off = in.number("motor.stop.t_off");

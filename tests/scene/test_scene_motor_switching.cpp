@@ -128,5 +128,25 @@ TEST(SceneMotorSwitching, UnknownMethodSuggestsNothingAndListsTheChoices) {
                    {"motor.start.method=star-delta"});
 }
 
+TEST(SceneMotorSwitching, CurrentLimitNeedsALawWithACurrent) {
+  expectSceneError(kMinimalScene,
+                   {"motor.start.current_limit: expected 0 with motor.model kloss (no stator current in that law; "
+                    "use motor.model circuit or park), got 80"},
+                   {"motor.start.method=soft_starter", "motor.start.ramp_time=2", "motor.start.initial_voltage=0.3",
+                    "motor.start.current_limit=80"});
+  expectSceneError(kMinimalScene,
+                   {"--set #5", "motor.model: expected circuit or park (motor.start.current_limit needs a model of the "
+                    "stator current), got kloss_dynamic"},
+                   {"motor.start.method=soft_starter", "motor.start.ramp_time=2", "motor.start.initial_voltage=0.3",
+                    "motor.start.current_limit=80", "motor.model=kloss_dynamic"});
+}
+
+TEST(SceneMotorSwitching, ConverterStartsBelowTheRatedFrequency) {
+  expectSceneError(kMinimalScene,
+                   {"motor.start.initial_frequency: expected a frequency in (0, f_n = 50) [Hz] (motor.frequency), got 50"},
+                   {"motor.start.method=frequency_converter", "motor.start.ramp_time=2",
+                    "motor.start.initial_frequency=50"});
+}
+
 }  // namespace
 }  // namespace rollerdyn
