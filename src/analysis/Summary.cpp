@@ -2,13 +2,16 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <sstream>
 
 #include "analysis/DriveSizing.h"
 #include "analysis/Metrics.h"
 #include "analysis/SizingSummary.h"
+#include "analysis/StartUpSummary.h"
 #include "analysis/SteadyState.h"
 #include "io/AtomicFile.h"
+#include "motor/MotorLawFactory.h"
 
 namespace rollerdyn {
 
@@ -146,6 +149,14 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   }
   j["not_meaningful"] = not_meaningful;
   j["stall"] = nullptr;
+  // Start-up and stopping answers (StartUp.h) with the scene's motor law.
+  std::unique_ptr<MotorLaw> law;
+  if (scene.motor.enabled) try {
+      law = makeMotorLaw(scene);
+    } catch (const std::exception&) {
+      // a law the scene cannot build: no start-up answers
+    }
+  j["start_up"] = startUpJson(computeStartUp(scene, run, law.get(), start_load));
 
   std::string status = run.stats.status;
   if (crank_motion == "rocking") {

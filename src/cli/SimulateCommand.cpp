@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "analysis/SizingSummary.h"
+#include "analysis/StartUpSummary.h"
 #include "analysis/Summary.h"
 #include "cli/Commands.h"
 #include "cli/RunOutputs.h"
@@ -38,7 +39,7 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
     throw std::invalid_argument("--model: expected multibody or reduced, got '" + model + "'");
   }
   const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir);
-  std::cout << summaryText(summary) << sizingText(summary) << "outputs in " << out_dir << "/\n";
+  std::cout << summaryText(summary) << startUpText(summary) << sizingText(summary) << "outputs in " << out_dir << "/\n";
   if (plot)  // figures from the tables in memory and the scene with its overrides
     std::cout << figureSetText(drawRunFigures(outputFolderOf(out_dir, run, summary), &scene, out_dir + "/figures"),
                                out_dir + "/figures");
