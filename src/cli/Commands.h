@@ -55,6 +55,7 @@ Subcommand addSweepCommand(CLI::App& app);       // SweepCommand.cpp: `rollerdyn
 Subcommand addCamProfileCommand(CLI::App& app);  // CamProfileCommand.cpp: `rollerdyn cam-profile`
 Subcommand addChainCommand(CLI::App& app);       // ChainCommand.cpp: `rollerdyn chain`
 Subcommand addOptimizeCommand(CLI::App& app);    // OptimizeCommand.cpp: `rollerdyn optimize`
+Subcommand addMotorCommand(CLI::App& app);       // MotorCommand.cpp: `rollerdyn motor`
 
 // out/<scene name>/ unless the user named a folder.
 std::string defaultOutDir(const std::string& scene_name);

@@ -47,9 +47,19 @@ int runValidate(bool quick, const std::string& out_dir) {
   int failed = 0;
   for (const auto& c : results.equivalence)
     if (!c.pass) ++failed;
+  int motor_failed = 0;
+  for (const auto& c : results.motor) {
+    const bool fails = c.verdict == Finding::Verdict::Fails;
+    motor_failed += fails ? 1 : 0;
+    std::cout << "induction motor " << c.id << (fails ? " FAILS: " : c.verdict == Finding::Verdict::Holds ? " holds: " : ": ")
+              << c.title << '\n';
+    for (const auto& l : c.lines) std::cout << "    " << l << '\n';
+  }
   std::cout << "validation report: " << out_dir << "/report.md (" << figures << " figures, "
-            << results.equivalence.size() << " equivalence cases, " << failed << " failed; CPU "
+            << results.equivalence.size() << " equivalence cases, " << failed << " failed; "
+            << results.motor.size() << " induction-motor claims, " << motor_failed << " failed; CPU "
             << results.cpu_seconds << " s)\n";
+  failed += motor_failed;
   if (g_interrupted) {
     std::cerr << "rollerdyn: interrupted; the report holds what was computed\n";
     return 3;

@@ -263,6 +263,7 @@ ValidationReport ReportWriter::build() {
   }
   sensitivity();
   analytic();
+  md_ << motorReportMarkdown(r_.motor);
   out_.markdown = md_.str();
 
   // results.json
@@ -276,6 +277,7 @@ ValidationReport ReportWriter::build() {
   for (const auto& c : r_.convergence) j["convergence"].push_back(caseJson(c));
   j["differences"] = nlohmann::json::array();
   for (const auto& c : r_.differences) j["differences"].push_back(caseJson(c));
+  j["motor"] = motorReportJson(r_.motor);
   j["papers"] = nlohmann::json::object();
   for (const auto& p : r_.papers) {
     nlohmann::json pts = nlohmann::json::array();

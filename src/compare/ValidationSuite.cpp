@@ -188,6 +188,10 @@ ValidationResults Suite::run() {
     log("(4) analytic, Dyomin (two rotors)");
     analytic(r);
   }
+  if (!interrupted()) {
+    log("(5) induction motor");
+    r.motor = runMotorValidation(o_);
+  }
   r.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
   return r;
 }
