@@ -5,7 +5,7 @@
 
 #include "analysis/StallDetector.h"
 #include "analysis/StartUp.h"
-#include "motor/MotorLawFactory.h"
+#include "motor/SharedMotorLaw.h"
 
 namespace rollerdyn {
 
@@ -36,7 +36,7 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
 double startingTorqueAtCrank(const Scene& sc) {
   // The scene's motor law at standstill under the rated supply (MotorLaw::steadyTorque).
   try {
-    return makeMotorLaw(sc)->steadyTorque(SupplyState{}, 0.0) * sc.reducer.ratio * sc.reducer.efficiency;
+    return sharedMotorLaw(sc)->steadyTorque(SupplyState{}, 0.0) * sc.reducer.ratio * sc.reducer.efficiency;
   } catch (const std::exception&) {
     return NAN;  // no law for this scene: the explanation says there are no motor data
   }
@@ -47,7 +47,7 @@ double breakdownTorqueAtCrank(const Scene& sc) {
   if (sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic)
     return sc.motor.breakdown_torque * sc.reducer.ratio * sc.reducer.efficiency;
   try {
-    return largestSteadyTorque(*makeMotorLaw(sc), SupplyState{}) * sc.reducer.ratio * sc.reducer.efficiency;
+    return largestSteadyTorque(*sharedMotorLaw(sc), SupplyState{}) * sc.reducer.ratio * sc.reducer.efficiency;
   } catch (const std::exception&) {
     return NAN;
   }

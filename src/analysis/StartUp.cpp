@@ -195,7 +195,17 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   r.steady_reached = ss.reached;
   r.steady_begin = ss.t_begin;
   r.steady_end = ss.t_end;
-  const std::size_t w0 = ss.row_begin, w1 = std::min(ss.row_end, t.size());
+  std::size_t w0 = ss.row_begin, w1 = std::min(ss.row_end, t.size());
+  if (!ss.reached && !ss.revolutions.empty()) {
+    // No steady state within the run: its last whole revolution stands in for it (said in the notes).
+    r.steady_begin = ss.revolutions.back().t_begin;
+    r.steady_end = ss.revolutions.back().t_end;
+    w0 = firstRowAtOrAfter(t, r.steady_begin);
+    w1 = std::min(t.size(), firstRowAtOrAfter(t, r.steady_end) + 1);
+    r.notes.push_back("The run reaches no steady state (SteadyState: the last revolutions' mean speeds differ by more "
+                      "than 1e-3): its last whole revolution, t = " + fmt("%.4g", r.steady_begin) + " ... " +
+                      fmt("%.4g", r.steady_end) + " s, stands in for the steady window.");
+  }
   const double window_time = w1 > w0 + 1 ? t[w1 - 1] - t[w0] : 0.0;
   r.steady_mean_speed = window_time > 0 ? integrate(t, w0, w1, [&](std::size_t i) { return w[i]; }) / window_time : kNaN;
   double window_min = std::numeric_limits<double>::infinity();
@@ -220,7 +230,8 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   r.starts = turning && std::isfinite(r.run_up_time);
 
   // The start interval [t_on, steady window begin).
-  r.start_end = ss.t_begin > r.t_on ? ss.t_begin : (before_off.rows.empty() ? t.back() : t[before_off.rows.size() - 1]);
+  r.start_end = r.steady_begin > r.t_on ? r.steady_begin
+                                        : (before_off.rows.empty() ? t.back() : t[before_off.rows.size() - 1]);
   const std::size_t s0 = i_on, s1 = std::max(s0 + 1, firstRowAtOrAfter(t, r.start_end) + 1);
   const std::size_t s1c = std::min(s1, t.size());
   auto peakOf = [&](const std::vector<double>& c, std::size_t a, std::size_t b, bool absolute, bool lowest = false) {

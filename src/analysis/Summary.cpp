@@ -11,7 +11,7 @@
 #include "analysis/StartUpSummary.h"
 #include "analysis/SteadyState.h"
 #include "io/AtomicFile.h"
-#include "motor/MotorLawFactory.h"
+#include "motor/SharedMotorLaw.h"
 
 namespace rollerdyn {
 
@@ -150,9 +150,9 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["not_meaningful"] = not_meaningful;
   j["stall"] = nullptr;
   // Start-up and stopping answers (StartUp.h) with the scene's motor law.
-  std::unique_ptr<MotorLaw> law;
+  std::shared_ptr<const MotorLaw> law;
   if (scene.motor.enabled) try {
-      law = makeMotorLaw(scene);
+      law = sharedMotorLaw(scene);
     } catch (const std::exception&) {
       // a law the scene cannot build: no start-up answers
     }

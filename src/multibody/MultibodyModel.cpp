@@ -9,7 +9,7 @@
 #include "multibody/EnergyMeter.h"
 #include "multibody/GuideFriction.h"
 #include "motor/MotorColumns.h"
-#include "motor/MotorLawFactory.h"
+#include "motor/SharedMotorLaw.h"
 #include "motor/Supply.h"
 #include "multibody/MotorForce.h"
 #include "multibody/RollerLoadForce.h"
@@ -133,7 +133,7 @@ void MultibodyModel::buildForces() {
   EnergyMeter::Sources sources;
   if (sc.hasMotor()) {
     std::shared_ptr<const MotorLaw> law = options_.motor_law;
-    if (!law) law = makeMotorLaw(sc);
+    if (!law) law = sharedMotorLaw(sc);
     Supply supply = makeSupply(sc, law.get());
     auto* f = new MotorForce(forces_, motor_, law, std::move(supply), sc.reducer.ratio, sc.reducer.efficiency);
     SimTK::Force::Custom(forces_, f);

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "physics/CamMotionLaw.h"
-#include "motor/MotorLawFactory.h"
+#include "motor/SharedMotorLaw.h"
 #include "physics/RollerLoads.h"
 
 namespace rollerdyn {
@@ -16,7 +16,7 @@ namespace {
 // The given law, else the scene's motor.model; none without a motor.
 std::shared_ptr<const MotorLaw> lawOf(const Scene& scene, std::shared_ptr<const MotorLaw> given) {
   if (!scene.motor.enabled) return nullptr;
-  return given ? given : std::shared_ptr<const MotorLaw>(makeMotorLaw(scene));
+  return given ? given : sharedMotorLaw(scene);
 }
 }  // namespace
 

@@ -98,4 +98,21 @@ TEST(EquivalenceStartUp, LateSwitchOnSwitchOffBrakeAndRestart) {
               1e-6 * c.multibody.energy.brake_dissipation);
 }
 
+// The space-phasor machine fitted to the paper's catalogue (4 flux states, switching transient).
+TEST(EquivalenceStartUp, ParkDirectOnLineAndStarDelta) {
+  expectAgreement(compareOn({"motor.model=park", "simulation.output_step=0.001"}), "park, direct on line at t = 0");
+  const ModelComparison c = compareOn({"motor.model=park", "motor.start.method=star_delta",
+                                       "motor.start.changeover_time=0.6", "motor.start.changeover_gap=0.02"});
+  expectAgreement(c, "park, star-delta at 0.6 s, 20 ms open");
+  expectSameMotorColumns(c, {"stator_current", "supply_voltage_ratio"});
+}
+
+TEST(EquivalenceStartUp, ParkSoftStartWithCurrentLimitAndRestartAtSpeed) {
+  expectAgreement(compareOn({"motor.model=park", "motor.start.method=soft_starter", "motor.start.initial_voltage=0.35",
+                             "motor.start.ramp_time=0.8", "motor.start.current_limit=120"}),
+                  "park, soft starter 0.35 U_n over 0.8 s, 120 A limit");
+  expectAgreement(compareOn({"motor.model=park", "motor.stop.t_off=0.9", "motor.stop.t_restart=1.0"}),
+                  "park, off at 0.9 s, on again at 1.0 s (residual flux)");
+}
+
 }  // namespace
