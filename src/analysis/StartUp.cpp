@@ -171,6 +171,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   r.t_on = sc.motor_start.t_on;
   if (r.t_on > t.back()) return r;  // switched on after the end of the run
   r.applicable = true;
+  r.supply_switches = !supply.constant();
   r.method = methodWords(sc.motor_start.method);
   r.motor_law = law->description();
   r.model_word = toString(sc.induction.model);

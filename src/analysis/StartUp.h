@@ -49,6 +49,7 @@ struct StartUp {
   std::string motor_law;        // MotorLaw::description()
   std::string model_word;       // motor.model: kloss, kloss_dynamic, circuit, park
   double t_on = 0;              // switch-on [s]
+  bool supply_switches = false; // the starting method changes the supply during the run (Supply::constant false)
   bool from_rest = true;        // the machine is at rest when the motor is switched on at t = 0
                                 // (false: the run begins already turning, initial.crank_speed)
   // Whether it can start (from the law and the loads, before looking at the run).

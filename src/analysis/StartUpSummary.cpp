@@ -44,6 +44,7 @@ json startUpJson(const StartUp& s) {
   j["motor_model"] = s.model_word;
   j["t_on"] = s.t_on;
   j["from_rest"] = s.from_rest;
+  j["supply_switches"] = s.supply_switches;
   j["starts"] = s.starts;
   j["verdict"] = s.verdict;
   j["starting_torque_crank"] = num(s.starting_torque_crank);
@@ -134,6 +135,12 @@ std::string startUpText(const json& summary) {
   o << "  (torques at the crank axis; M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω0 "
        "synchronous speed, f/f_n supply frequency ratio)\n";
   return o.str();
+}
+
+bool startUpHasOwnFigures(const json& s) {
+  if (!s.is_object()) return false;
+  const bool switches = s.value("supply_switches", false);
+  return switches || s.value("motor_model", std::string("kloss")) != "kloss";
 }
 
 }  // namespace rollerdyn

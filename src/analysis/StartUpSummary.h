@@ -11,7 +11,7 @@
 namespace rollerdyn {
 
 // start_up: null when no motor is switched on in the run; else {method, motor_law, motor_model,
-// t_on, from_rest, starts, verdict, starting_torque_crank, starting_torque_rated_crank,
+// t_on, supply_switches, from_rest, starts, verdict, starting_torque_crank, starting_torque_rated_crank,
 // largest_torque_crank, load_torque_start, load_torque_mean, steady {mean_speed, reached,
 // t_begin, t_end}, run_up_time, start_end, motor_torque {peak, min, steady_peak},
 // coupling_torque {peak, steady_peak, ratio}, joints {kind: {peak, steady_peak, ratio, column}},
@@ -22,5 +22,10 @@ nlohmann::json startUpJson(const StartUp& s);
 
 // The console block, from summary.json's start_up; "" when it is null or absent.
 std::string startUpText(const nlohmann::json& summary);
+
+// Whether a start needs figures of its own (the report's start-up figures): a motor law other
+// than static Kloss, or a supply that switches. A static Kloss start direct on line is shown by
+// the run's time figures (crank speed, motor and coupling torque against time) already.
+bool startUpHasOwnFigures(const nlohmann::json& start_up);
 
 }  // namespace rollerdyn

@@ -156,7 +156,12 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
     } catch (const std::exception&) {
       // a law the scene cannot build: no start-up answers
     }
-  j["start_up"] = startUpJson(computeStartUp(scene, run, law.get(), start_load));
+  j["start_up"] = nullptr;
+  try {
+    j["start_up"] = startUpJson(computeStartUp(scene, run, law.get(), start_load));
+  } catch (const std::exception&) {
+    // a scene the starting method cannot be built for (e.g. a test scene without loads' data)
+  }
 
   std::string status = run.stats.status;
   if (crank_motion == "rocking") {

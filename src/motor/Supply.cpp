@@ -44,7 +44,8 @@ Supply::Supply(const MotorStart& start, const MotorStop& stop, double omega_sync
     : start_(start), stop_(stop), omega_sync_(omega_sync), rated_frequency_(rated_frequency),
       brake_speed_(brake_smoothing_speed), law_(law) {
   if (!(omega_sync > 0)) throw std::invalid_argument("Supply: the synchronous speed must be > 0");
-  if (!(brake_smoothing_speed > 0)) throw std::invalid_argument("Supply: the brake smoothing speed must be > 0");
+  if (stop.brake_torque > 0 && !(brake_smoothing_speed > 0))
+    throw std::invalid_argument("Supply: the brake smoothing speed must be > 0");
   if (start_.method == StartMethod::FrequencyConverter) {
     if (!(rated_frequency > 0)) throw std::invalid_argument("Supply: the rated frequency must be > 0");
     if (!(start_.initial_frequency > 0 && start_.initial_frequency < rated_frequency))

@@ -1,5 +1,6 @@
 #include "report/StartUpFigures.h"
 
+#include "analysis/StartUpSummary.h"
 #include "report/FigureSupport.h"
 
 namespace rollerdyn {
@@ -40,10 +41,9 @@ const std::vector<std::string>& startUpFigureNames() {
 void planStartUpFigures(const OutputFolder& out, const TimeWindow& window, const std::string& scene_label,
                         std::vector<FigurePlan>& plans, std::vector<std::string>& notes) {
   const nlohmann::json su = out.has_summary && out.summary.contains("start_up") ? out.summary["start_up"] : nlohmann::json();
-  if (!su.is_object()) {
-    notes.push_back("start-up figures left out: summary.json has no start-up answers (no motor switched on)");
-    return;
-  }
+  // A static Kloss start direct on line is drawn by the time figures already (crank speed, motor
+  // and coupling torque against time); no motor switched on: nothing to draw.
+  if (!startUpHasOwnFigures(su)) return;
   const Table& ts = out.timeseries;
   const std::vector<double> t = col(ts, "t");
   if (t.empty()) return;

@@ -4,7 +4,8 @@
 //   start_up_speed    crank and motor speed (reduced to the crank), the 95 % run-up level
 //   start_up_torque   motor torque M·u·η and coupling torque at the crank axis
 //   start_up_current  RMS stator phase current and the supply voltage ratio ×100 (laws with a current)
-// Left out, with a note, when the folder has no start-up answers (no motor, an old summary).
+// Drawn where the start needs them (StartUpSummary.h, startUpHasOwnFigures): a static Kloss start
+// direct on line is shown by the run's time figures already.
 #pragma once
 
 #include <string>

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "analysis/StartUpSummary.h"
 #include "report/HtmlReport.h"
 
 namespace rollerdyn {
@@ -101,8 +102,12 @@ std::string startUpSectionHtml(const json& summary) {
     line("carts' run-out (largest path of a cart)", num(at(stop, "run_out_cart_path"), "%.3g"), "m");
     h << "</table>\n";
   }
-  h << "<p class=\"small\">Figures: <a href=\"#start_up_speed\">speeds</a>, <a href=\"#start_up_torque\">torques</a>"
-    << (I.is_object() ? ", <a href=\"#start_up_current\">current</a>" : "") << " against time.</p>\n";
+  if (startUpHasOwnFigures(s))
+    h << "<p class=\"small\">Figures below: <code>start_up_speed</code>, <code>start_up_torque</code>"
+      << (I.is_object() ? ", <code>start_up_current</code>" : "") << " (against time).</p>\n";
+  else
+    h << "<p class=\"small\">Figures below: <code>crank_speed_vs_time</code>, <code>motor_torque_vs_time</code>, "
+         "<code>coupling_torque_vs_time</code> (against time, the steady window marked).</p>\n";
   return h.str();
 }
 
