@@ -183,6 +183,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
         break;
       }
       system.realize(integ->getState(), SimTK::Stage::Acceleration);
+      sample = integ->getState();  // rows interpolated from now on carry the new supply phase
       t_stop = nextStop(integ->getState());
       trigger = triggerOf(integ->getState());
       y_prev = integ->getState().getY();

@@ -278,7 +278,9 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
       while (true) {
         flag = CVode(cv, t, y, &tret, CV_NORMAL);
         if (flag < 0) break;
-        if (events && (flag == CV_ROOT_RETURN || flag == CV_TSTOP_RETURN) &&
+        // CVODE returns at the stop time with CV_TSTOP_RETURN, or with CV_SUCCESS when the output
+        // time is the stop time: either way the events due there are applied here.
+        if (events &&
             m.supply().applyDueEvents(phase, tret, m.rotorSpeed(ym.data()), flag == CV_ROOT_RETURN, m.motorLaw(),
                                       ym.data() + m.iMotorStates())) {
           long n = 0;

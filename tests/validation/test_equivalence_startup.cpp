@@ -8,6 +8,8 @@
 // start itself, where the switching happens.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,19 @@ void expectAgreement(const ModelComparison& c, const std::string& what) {
   std::printf("  %-60s max rel. diff: crank speed %.3g, coupling torque %.3g\n", what.c_str(), dw, dM);
   EXPECT_LE(dw, 1e-6) << what;
   EXPECT_LE(dM, 1e-6) << what;
+  // The motor columns of the rows (motor torque, the supply) agree as well: every row of both
+  // tables is evaluated in the supply phase the run is in (rows interpolated after an event too).
+  const Table &a = c.multibody.timeseries, &b = c.reduced.timeseries;
+  for (const char* col : {"motor_torque", "supply_voltage_ratio", "stator_current"}) {
+    if (!a.has(col) || !b.has(col)) continue;
+    const int ia = a.index(col), ib = b.index(col);
+    double diff = 0, scale = 0;
+    for (std::size_t i = 0; i < a.rows.size() && i < b.rows.size(); ++i) {
+      diff = std::max(diff, std::abs(a.rows[i][ia] - b.rows[i][ib]));
+      scale = std::max(scale, std::abs(a.rows[i][ia]));
+    }
+    EXPECT_LE(diff, 1e-6 * scale) << what << ": column " << col << " differs by " << diff << " (scale " << scale << ")";
+  }
 }
 
 // The motor state, the supply columns and the stator-current column exist in both tables alike.
