@@ -125,6 +125,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   double t_prev = integ->getTime();
   double t_stop = nextStop(integ->getState()), trigger = triggerOf(integ->getState());
   SimTK::State switched;  // the state at an event, switched
+  long steps_before = 0, realizations_before = 0;  // counted before the last restart at an event
   std::size_t k = 1;
   bool stop = false;
   while (!stop && t_prev < t_end - 1e-12) {
@@ -146,6 +147,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
       event = by_speed = true;
     } else if (events && t_stop < t_end && t_now >= t_stop - 1e-12 * std::max(1.0, t_stop)) {
       switched = advanced;
+      system.realize(switched, SimTK::Stage::Velocity);  // a State copy starts with its cache invalid
       event = true;
     }
     for (; !stop && k < times.size() && times[k] <= t_now + 1e-12 && !(event && times[k] >= t_now - 1e-12); ++k) {
@@ -175,6 +177,9 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
     }
     if (event && !stop) {
       motor->applyDueEvents(switched, by_speed);
+      // initialize() starts the integrator's statistics afresh: keep what it counted so far.
+      steps_before += integ->getNumStepsTaken();
+      realizations_before += integ->getNumRealizations();
       try {
         integ->initialize(switched);  // a fresh start from the switched state (statistics keep counting)
       } catch (const std::exception& ex) {
@@ -196,8 +201,8 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
     t_prev = t_now;
   }
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
-  run.stats.steps = integ->getNumStepsTaken();
-  run.stats.realizations = integ->getNumRealizations();
+  run.stats.steps = steps_before + integ->getNumStepsTaken();
+  run.stats.realizations = realizations_before + integ->getNumRealizations();
 
   // The audit ends at the last recorded row, where the tables end too (a run stopped early may
   // have integrated past it).

@@ -9,6 +9,14 @@
 // 20 ms oscillation and then step over it once it has decayed. The energy audit is the
 // mechanical one (motor work = ∫M·ω dt, brake, damping, friction, loads, ΔT, ΔV): the electrical
 // side is the law's own (validated with the motor laws).
+//
+// Claims: as in test_hardcases.cpp, 3x the constants measured on this build (Release, g++ 12), the
+// multibody model per formulation (constrained: Runge-Kutta-Merson, the scene default; minimal:
+// CVODE Adams, the largest over a·{0.7, 0.85, 1, 1.2, 1.4}), given beside each claim as
+// "measured": residual/(a·E) (larger of a and a/10), dw/(a·W), dM/(a·M); the models' agreement
+// max|dw|/W, max|dM|/M at a/10 (their one physical difference, the guide friction's normal forces,
+// as in every case with friction). The electrical law is not stiff enough here for BDF
+// (motor/Stiffness.h: 1.6 ms against the 0.5 ms switch), so CVODE runs Adams in both models.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,11 +69,18 @@ double maxOver(const Table& t, const std::string& column, double t0, double t1, 
 // the supply frequency (Krause, ch. 6 free acceleration), then the drive runs up (≈ 0.5 s).
 TEST(HardCasesStartUp, ParkDirectOnLineStart) {
   const Scene s = parkScene("park-dol", 1.0);
-  const BothModels b = checkBothModels(s, 1e-6, claims({1e9, 1e9, 1e9}, {1e9, 1e9, 1e9}, {1e9, 1e9, 1e9}, 1, 1));
+  // measured: multibody 1.4e-3, 0.68, 56; minimal 0.048, 0.093, 1.8; reduced 1.4, 2.6, 1.0e2;
+  // models 3.0e-4, 1.8e-3.
+  const BothModels b = checkBothModels(s, 1e-6, claims({4.2e-3, 2.0, 170}, {0.15, 0.28, 5.4}, {4.2, 7.8, 310}, 9e-4, 5.4e-3));
   for (Model m : {Model::Multibody, Model::Reduced}) {
     const Table& t = (m == Model::Multibody ? b.multibody : b.reduced).at_a.timeseries;
-    std::printf("  %-9s park-dol: peak motor torque in 0.1 s %.5g N*m, max current %.5g A\n", name(m),
-                maxOver(t, "motor_torque", 0, 0.1, false), maxOver(t, "stator_current", 0, 0.1));
+    const double peak = maxOver(t, "motor_torque", 0, 0.1, false);
+    std::printf("  %-9s park-dol: peak motor torque in 0.1 s %.5g N*m, max current %.5g A\n", name(m), peak,
+                maxOver(t, "stator_current", 0, 0.1));
+    // The switching transient: within 0.1 s the torque rises above the law's largest steady
+    // torque (517.3 N·m at the rotor, × u·η = 4563 N·m), which no static law can give.
+    // Measured 5005 N·m, 1.097x; claimed above 1.05x.
+    EXPECT_GT(peak, 1.05 * 517.3365 * s.reducer.ratio * s.reducer.efficiency) << name(m);
   }
 }
 
@@ -75,14 +90,25 @@ TEST(HardCasesStartUp, StarDeltaChangeoverAtSpeed) {
   Scene s = parkScene("star-delta", 1.8);
   s.motor_start.method = StartMethod::StarDelta;
   s.motor_start.changeover_speed = 80.0;
-  const BothModels b = checkBothModels(s, 1e-6, claims({1e9, 1e9, 1e9}, {1e9, 1e9, 1e9}, {1e9, 1e9, 1e9}, 1, 1));
+  // measured: multibody 7.4e-4, 0.52, 44; minimal 0.026, 0.36, 3.9; reduced 0.62, 5.6, 62;
+  // models 9.7e-4, 8.7e-3.
+  const BothModels b = checkBothModels(s, 1e-6, claims({2.2e-3, 1.6, 130}, {0.078, 1.1, 12}, {1.9, 17, 190}, 2.9e-3, 0.026));
   for (Model m : {Model::Multibody, Model::Reduced}) {
     const Table& t = (m == Model::Multibody ? b.multibody : b.reduced).at_a.timeseries;
     const int iu = t.index("supply_voltage_ratio"), iw = t.index("omega_motor"), it = t.index("t");
+    int changeovers = 0;
     for (size_t i = 1; i < t.rows.size(); ++i)
-      if (t.rows[i][iu] == 1.0 && t.rows[i - 1][iu] < 1.0)
+      if (t.rows[i][iu] == 1.0 && t.rows[i - 1][iu] < 1.0) {
+        ++changeovers;
+        const double w_before = s.reducer.ratio * t.rows[i - 1][iw];
         std::printf("  %-9s star-delta: changeover between t = %.4f and %.4f s, rotor speed %.5g ... %.5g rad/s\n",
-                    name(m), t.rows[i - 1][it], t.rows[i][it], 9.8 * t.rows[i - 1][iw], 9.8 * t.rows[i][iw]);
+                    name(m), t.rows[i - 1][it], t.rows[i][it], w_before, s.reducer.ratio * t.rows[i][iw]);
+        // Found by root finding: the last star row lies below the changeover speed, within the
+        // speed gained in one 1 ms row (≈ 0.1 rad/s here).
+        EXPECT_LT(w_before, 80.0) << name(m);
+        EXPECT_GT(w_before, 79.8) << name(m);
+      }
+    EXPECT_EQ(changeovers, 1) << name(m);
   }
 }
 
@@ -93,11 +119,16 @@ TEST(HardCasesStartUp, SoftStartRampWithCurrentLimit) {
   s.motor_start.initial_voltage = 0.35;
   s.motor_start.ramp_time = 1.0;
   s.motor_start.current_limit = 150.0;
-  const BothModels b = checkBothModels(s, 1e-6, claims({1e9, 1e9, 1e9}, {1e9, 1e9, 1e9}, {1e9, 1e9, 1e9}, 1, 1));
+  // measured: multibody 7.4e-4, 0.57, 58; minimal 0.11, 0.096, 2.0; reduced 0.63, 3.0, 1.0e2;
+  // models 3.2e-4, 1.5e-3.
+  const BothModels b = checkBothModels(s, 1e-6, claims({2.2e-3, 1.7, 170}, {0.33, 0.29, 6}, {1.9, 9, 310}, 9.6e-4, 4.5e-3));
   for (Model m : {Model::Multibody, Model::Reduced}) {
     const Table& t = (m == Model::Multibody ? b.multibody : b.reduced).at_a.timeseries;
-    std::printf("  %-9s soft-start: max current in the ramp after 0.1 s %.5g A\n", name(m),
-                maxOver(t, "stator_current", 0.1, 1.0));
+    const double I = maxOver(t, "stator_current", 0.1, 1.0);
+    std::printf("  %-9s soft-start: max current in the ramp after 0.1 s %.5g A\n", name(m), I);
+    // The limit is quasi-static (Supply.h): the machine's flux transient overshoots it a little.
+    // Measured 150.9 A (0.6 %); claimed within 2 %.
+    EXPECT_LT(I, 150.0 * 1.02) << name(m);
   }
 }
 
@@ -110,7 +141,9 @@ TEST(HardCasesStartUp, SwitchOffAndRestartAtSpeed) {
   s.initial.crank_speed = 10.42;
   s.motor_stop.t_off = 0.3;
   s.motor_stop.t_restart = 0.45;
-  const BothModels b = checkBothModels(s, 1e-6, claims({1e9, 1e9, 1e9}, {1e9, 1e9, 1e9}, {1e9, 1e9, 1e9}, 1, 1));
+  // measured: multibody 3.0e-3, 0.024, 1.8; minimal 0.059, 0.033, 1.3; reduced 0.13, 2.2, 1.2e2;
+  // models 2.5e-4, 9.9e-3.
+  const BothModels b = checkBothModels(s, 1e-6, claims({9e-3, 0.072, 5.4}, {0.18, 0.1, 3.9}, {0.39, 6.6, 360}, 7.5e-4, 0.03));
   for (Model m : {Model::Multibody, Model::Reduced}) {
     const Table& t = (m == Model::Multibody ? b.multibody : b.reduced).at_a.timeseries;
     std::printf("  %-9s restart: steady |M| before %.5g, peak after restart %.5g N*m, current %.5g A\n", name(m),
