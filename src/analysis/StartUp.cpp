@@ -203,7 +203,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
     r.steady_end = ss.revolutions.back().t_end;
     w0 = firstRowAtOrAfter(t, r.steady_begin);
     w1 = std::min(t.size(), firstRowAtOrAfter(t, r.steady_end) + 1);
-    r.notes.push_back("The run reaches no steady state (SteadyState: the last revolutions' mean speeds differ by more "
+    r.notes.push_back("The run reaches no steady state (the last revolutions' mean crank speeds differ by more "
                       "than 1e-3): its last whole revolution, t = " + fmt("%.4g", r.steady_begin) + " ... " +
                       fmt("%.4g", r.steady_end) + " s, stands in for the steady window.");
   }
