@@ -347,7 +347,7 @@ MotorClaim catalogueFit(const ValidationOptions& o, const std::string& file, con
                         double m_s_printed, double m_k_printed, const std::string& id) {
   MotorClaim c;
   c.id = id;
-  c.title = "Catalogue fit of the " + motor + " (model/" + file + ", double cage): the model at every catalogue point";
+  c.title = "Catalogue fit of the " + motor + ", double cage (model/" + file + "): the model at every catalogue point";
   const Scene scene = parseSceneFile(o.model_dir + "/" + file);
   const CatalogueFit fit = fitSceneCatalogue(scene, 2);
   c.lines.push_back("fitted per phase of the equivalent star: " + fit.machine.summary() + " (" +
@@ -400,8 +400,8 @@ std::vector<MotorClaim> runMotorValidation(const ValidationOptions& o) {
   for (MotorClaim& c : mslStart()) add(std::move(c));
   add(krauseFreeAcceleration());
   add(dynamicKlossLag());
-  add(catalogueFit(o, "balanced-4cart.yaml", "4A200M6U3 (Loveikin, Pochka, Romasevych (2018))", 215.475, 280.1, 517.14, "M8"));
-  add(catalogueFit(o, "energy-balanced-3cart.yaml", "4A160M6U3 (energy-balanced drive paper)", 146.9, 176.3, 293.8, "M9"));
+  add(catalogueFit(o, "balanced-4cart.yaml", "4A200M6U3 of Loveikin, Pochka, Romasevych (2018)", 215.475, 280.1, 517.14, "M8"));
+  add(catalogueFit(o, "energy-balanced-3cart.yaml", "4A160M6U3 of the energy-balanced drive paper", 146.9, 176.3, 293.8, "M9"));
   std::sort(claims.begin(), claims.end(), [](const MotorClaim& a, const MotorClaim& b) {
     return std::stoi(a.id.substr(1)) < std::stoi(b.id.substr(1));
   });
