@@ -14,6 +14,8 @@
 #include <memory>
 
 #include "analysis/StartUp.h"
+#include "analysis/StartUpSummary.h"
+#include "analysis/Summary.h"
 #include "motor/MotorLawFactory.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
@@ -105,6 +107,27 @@ TEST(StartUpAnswers, AStartInStarTheMotorCannotMakeIsExplained) {
   EXPECT_NE(a.verdict.find("does not start"), std::string::npos) << a.verdict;
   EXPECT_NE(a.verdict.find("star-delta"), std::string::npos) << a.verdict;
   EXPECT_NE(a.verdict.find("below the load torque"), std::string::npos) << a.verdict;
+}
+
+// The default scene keeps the papers' static Kloss law: its start-up answers must say plainly
+// what that law cannot show and point to the catalogue model, in summary.json and on the console.
+TEST(StartUpAnswers, TheDefaultSceneSaysWhatKlossCannotShow) {
+  const Scene s = parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml");
+  const StartLoad load = startLoadOf(s);
+  const nlohmann::json summary = makeSummary(s, runReducedModel(s), &load);
+  const nlohmann::json& su = summary["start_up"];
+  ASSERT_TRUE(su.is_object());
+  EXPECT_TRUE(su["starts"].get<bool>());
+  EXPECT_NEAR(su["run_up_time"].get<double>(), 0.915, 0.01);  // measured 0.915 s (multibody and reduced)
+  ASSERT_FALSE(su["notes"].empty());
+  const std::string note = su["notes"][0];
+  for (const char* words : {"cannot show the switching transient", "understates the starting torque",
+                            "against the catalogue's M_s = 280.1 N·m", "motor.model: park"})
+    EXPECT_NE(note.find(words), std::string::npos) << words << " not in: " << note;
+  const std::string text = startUpText(summary);
+  EXPECT_NE(text.find("start-up     direct on line at t = 0 s, motor law: Kloss formula (static)"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("note: The static Kloss law cannot show the switching transient"), std::string::npos) << text;
 }
 
 }  // namespace
