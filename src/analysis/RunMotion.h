@@ -45,8 +45,9 @@ struct StartLoad {
   double revolution_mean; // the same averaged over one crank revolution [N·m at the crank]
 };
 
-// Torques of the motor reduced to the crank (Kloss law, Loveikin, Pochka, Romasevych (2018)
-// eq. (37), × u·η): starting torque at slip 1 and breakdown torque M_kr·u·η [N·m].
+// Torques of the motor reduced to the crank (× u·η, Loveikin, Pochka, Romasevych (2018) eq. (37)):
+// the scene's motor law (motor.model) at standstill under the rated supply, and its largest torque
+// (M_kr·u·η for the Kloss laws) [N·m]; NaN when the scene's law cannot be built.
 double startingTorqueAtCrank(const Scene& scene);
 double breakdownTorqueAtCrank(const Scene& scene);
 

@@ -34,12 +34,13 @@ struct EnergyAudit {
   double damping_dissipation = 0; // ∫ k·(Δω)² dt ≥ 0, lost in the coupling damper
   double friction_dissipation = 0;// ∫ -F_friction·v dt, lost in the guides (≥ 0 when friction opposes v)
   double load_work = 0;           // ∫ -F_load·v dt: work the machine does on the concrete
+  double brake_dissipation = 0;   // ∫ -M_brake·ω_motor dt ≥ 0, lost in the brake (motor.stop.brake_torque)
   double kinetic_initial = 0, kinetic_final = 0;
   double potential_initial = 0, potential_final = 0;  // gravity + coupling spring
 
   // motor work - dissipation - load work - ΔT - ΔV
   double residual() const {
-    return motor_work - damping_dissipation - friction_dissipation - load_work -
+    return motor_work - damping_dissipation - friction_dissipation - load_work - brake_dissipation -
            (kinetic_final - kinetic_initial) - (potential_final - potential_initial);
   }
   // residual divided by the largest energy flow term (motor work, or the kinetic energy when

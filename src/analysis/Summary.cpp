@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <sstream>
 
 #include "analysis/DriveSizing.h"
@@ -9,8 +10,10 @@
 #include "analysis/Metrics.h"
 #include "analysis/SizingSummary.h"
 #include "analysis/StallDetector.h"
+#include "analysis/StartUpSummary.h"
 #include "analysis/SteadyState.h"
 #include "io/AtomicFile.h"
+#include "motor/SharedMotorLaw.h"
 
 namespace rollerdyn {
 
@@ -158,6 +161,19 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   }
   j["not_meaningful"] = not_meaningful;
   j["stall"] = nullptr;
+  // Start-up and stopping answers (StartUp.h) with the scene's motor law.
+  std::shared_ptr<const MotorLaw> law;
+  if (scene.motor.enabled) try {
+      law = sharedMotorLaw(scene);
+    } catch (const std::exception&) {
+      // a law the scene cannot build: no start-up answers
+    }
+  j["start_up"] = nullptr;
+  try {
+    j["start_up"] = startUpJson(computeStartUp(scene, run, law.get(), start_load));
+  } catch (const std::exception&) {
+    // a scene the starting method cannot be built for (e.g. a test scene without loads' data)
+  }
 
   std::string status = run.stats.status;
   if (crank_motion == "rocking" && StallDetector::motionOfStatus(status) != "rocking") {

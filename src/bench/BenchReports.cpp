@@ -202,6 +202,39 @@ std::string effectsReport(const Scene& scene, const std::vector<BenchRow>& rows,
   return os.str();
 }
 
+std::string motorsReport(const Scene& scene, const std::vector<BenchRow>& rows, const BenchOptions& opt) {
+  std::ostringstream os;
+  os << "# Cost of each motor model: " << scene.name << "\n\n"
+     << "The same scene and starting method with each motor model (motor.model: kloss = static Kloss "
+        "formula, kloss_dynamic = dynamic Kloss characteristic (one state), circuit = quasi-static "
+        "equivalent circuit fitted to the catalogue, park = space-phasor machine, 4-6 flux states), both "
+        "models at the scene's integrator and accuracy ("
+     << scene.simulation.integrator << " / cvode, " << num(scene.simulation.accuracy, 2) << "), "
+     << num(benchScene(scene, opt).simulation.t_end)
+     << " s simulated from the scene's initial state. Relative cost = CPU / CPU of motor.model kloss for the "
+        "same model; the step and right-hand-side counts do not depend on the machine's load. "
+     << timingNote(scene, opt) << "\n\n"
+     << "| motor model | model | outcome | CPU [s] | relative cost | steps | RHS evals | relative RHS evals | µs per "
+        "RHS eval |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
+  for (const BenchRow& r : rows) {
+    const BenchRow* base = findRow(rows, "motor.model kloss", r.m.setting.model);
+    const bool ok = base && usable(base->m.outcome) && usable(r.m.outcome);
+    const double rel = ok ? r.m.cpu_seconds / base->m.cpu_seconds : NAN;
+    const double rel_rhs = ok && base->m.realizations > 0 ? double(r.m.realizations) / base->m.realizations : NAN;
+    const double us = r.m.realizations > 0 ? 1e6 * r.m.cpu_seconds / r.m.realizations : NAN;
+    os << "| " << r.variant.substr(std::string("motor.model ").size()) << " | " << r.m.setting.model << " | "
+       << toString(r.m.outcome)
+       << (usable(r.m.outcome) ? "" : " (" + r.m.status + ")") << " | " << num(r.m.cpu_seconds) << " | " << num(rel)
+       << " | " << r.m.steps << " | " << r.m.realizations << " | " << num(rel_rhs) << " | " << num(us) << " |\n";
+  }
+  os << "\nThe space-phasor machine adds its electrical transient after every switching (supply-frequency "
+        "oscillation, time constants of ms) and 4 (single cage) or 6 (double cage) states; the static laws add "
+        "no state. Whether a law makes the equations stiff and the integrators switch to BDF: docs/startup.md. "
+        "Data: motors.csv.\n";
+  return os.str();
+}
+
 namespace {
 
 PlotSeries series(const std::string& title, const std::string& style) {
@@ -350,6 +383,13 @@ std::vector<std::string> writeEffectsStudy(const std::string& dir, const Scene& 
   writeFileAtomic(dir + "/effects.md", effectsReport(scene, rows, opt) + notes);
   written.push_back(dir + "/effects.md");
   return written;
+}
+
+std::vector<std::string> writeMotorsStudy(const std::string& dir, const Scene& scene, const std::vector<BenchRow>& rows,
+                                          const BenchOptions& opt) {
+  writeFileAtomic(dir + "/motors.csv", rowsCsv(rows));
+  writeFileAtomic(dir + "/motors.md", motorsReport(scene, rows, opt));
+  return {dir + "/motors.csv", dir + "/motors.md"};
 }
 
 }  // namespace rollerdyn::bench

@@ -251,6 +251,16 @@ void runVariant(const std::string& study, const std::string& variant, double x, 
 
 }  // namespace
 
+std::vector<BenchRow> runMotorsStudy(const SceneSource& source, const BenchOptions& opt) {
+  std::vector<BenchRow> rows;
+  for (const char* model : {"kloss", "kloss_dynamic", "circuit", "park"}) {
+    if (stopRequested(opt)) break;
+    runVariant("motors", std::string("motor.model ") + model, 0, source, {std::string("motor.model=") + model}, opt,
+               rows);
+  }
+  return rows;
+}
+
 std::vector<BenchRow> runCartsStudy(const SceneSource& source, const BenchOptions& opt) {
   const Scene base = source.load();
   std::vector<BenchRow> rows;

@@ -18,6 +18,10 @@
 //                coupling, coupling stiffness 2e5 ... 1e9 N·m/rad, guide friction on/off, each
 //                rod model, gravity on/off. -> effects.csv, effects_stiffness.{png,svg},
 //                effects_relative.{png,svg}, effects.md.
+//   motors       cost of each motor model (motor.model kloss, kloss_dynamic, circuit, park) on the
+//                same scene and starting method, both models (the multibody model in both
+//                formulations) at the scene's integrator and accuracy; relative cost against
+//                static Kloss. -> motors.csv, motors.md.
 //
 // Every run has a CPU-time budget (BenchRun.h): a slow or failing combination becomes a
 // "timeout" or "failed" row, never a hang. Once an integrator exceeds the budget at some
@@ -55,7 +59,7 @@ struct BenchOptions {
 
 // One row of bench.csv / carts.csv / effects.csv.
 struct BenchRow {
-  std::string study;        // "integrators" | "carts" | "effects"
+  std::string study;        // "integrators" | "carts" | "effects" | "motors"
   std::string variant;      // "" (integrators), "n=8", "coupling stiffness 1e+07 N·m/rad", ...
   double x = 0;             // numeric value of the variant: carts n, stiffness c; 0 otherwise
   int carts = 0;            // number of carts of the scene run
@@ -79,6 +83,7 @@ Scene benchScene(const Scene& scene, const BenchOptions& options);
 std::vector<BenchRow> runIntegratorStudy(const SceneSource& source, const BenchOptions& options);
 std::vector<BenchRow> runCartsStudy(const SceneSource& source, const BenchOptions& options);
 std::vector<BenchRow> runEffectsStudy(const SceneSource& source, const BenchOptions& options);
+std::vector<BenchRow> runMotorsStudy(const SceneSource& source, const BenchOptions& options);
 
 // The cheapest (median CPU time) non-reference row of `model` with outcome ok whose error is at
 // most `target`: error_omega, or max(error_omega, error_coupling) when with_coupling. nullptr
@@ -96,6 +101,7 @@ std::string cartsReport(const Scene& scene, const std::vector<BenchRow>& rows,
                         const BenchOptions& options);
 std::string effectsReport(const Scene& scene, const std::vector<BenchRow>& rows,
                           const BenchOptions& options);
+std::string motorsReport(const Scene& scene, const std::vector<BenchRow>& rows, const BenchOptions& options);
 
 // Write the CSV, the figures (when gnuplot is available; otherwise a note in the .md) and the
 // markdown of one study to out_dir. Returns the paths written.
@@ -108,6 +114,8 @@ std::vector<std::string> writeCartsStudy(const std::string& out_dir, const Scene
 std::vector<std::string> writeEffectsStudy(const std::string& out_dir, const Scene& scene,
                                            const std::vector<BenchRow>& rows,
                                            const BenchOptions& options);
+std::vector<std::string> writeMotorsStudy(const std::string& out_dir, const Scene& scene,
+                                          const std::vector<BenchRow>& rows, const BenchOptions& options);
 
 // Performance targets (real-time factors) at 1e-6 relative crank-speed error, and for the
 // multibody model also at 1e-3 (a fixed-step soft-constraint engine's accuracy on the same

@@ -10,6 +10,8 @@
 #include "analysis/StallDetector.h"
 #include "multibody/MinimalCoordinates.h"
 #include "multibody/MinimalDynamics.h"
+#include "multibody/MotorForce.h"
+#include "motor/Stiffness.h"
 #include "multibody/cvode/AdamsIntegrator.h"
 
 namespace rollerdyn {
@@ -78,6 +80,21 @@ class MinimalSystem {
     for (int k = 0; k < g.size(); ++k) jac(row, first_column + k) = g[k];
     return true;
   }
+
+  // Applies the motor's switching events due at t to y (MotorForce::applyDueEvents: the law's
+  // states mapped, the supply phase latched in both states); true when anything switched.
+  bool applyEvents(double t, Eigen::VectorXd& y, bool speed_reached) {
+    const MotorForce* motor = model_.motorForce();
+    if (!motor) return false;
+    set(t, y.data());
+    if (!motor->applyDueEvents(s_, speed_reached)) return false;
+    motor->setPhase(constrained_, motor->phase(s_));
+    const SimTK::Vector& z = model_.forces().getZ(s_);
+    for (int i = 0; i < z.size(); ++i) y(layout_.z + i) = z[i];
+    return true;
+  }
+  // The supply phase the run is in.
+  SupplyPhase phase() const { return model_.motorForce()->phase(s_); }
 
   bool rhs(double t, const double* y, double* ydot) {
     set(t, y);
@@ -201,15 +218,23 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     p.atol(L.twist_rate) =
         rtol * psi_ref * std::sqrt(sc.coupling.stiffness / std::max(sc.motorSideInertia(), 1e-300));
   }
+  // The motor element's z come first (MultibodyModel::buildForces): the law's states against
+  // their natural magnitudes, then the brake work (an energy integral, atol as above).
+  const int n_motor = model.motorStateCount();
+  const int z_normals = L.z + n_motor;  // first friction normal force
+  if (const MotorForce* motor = model.motorForce()) {
+    const std::vector<double> scales = motor->law().stateScales();
+    for (int i = 0; i < motor->lawStateCount(); ++i) p.atol(L.z + i) = rtol * scales.at(i);
+  }
   if (model.hasGuideFriction()) {
     // One unit of N̂: the error whose friction changes a cart's speed by 1 m/s in 1 s.
     const double N_unit = sc.cartMassWithRodShare() * 1.0 / sc.loads.guide_friction;
     const int n_normals = 2 * sc.carts.count;
     // The friction element is built before the energy meter (MultibodyModel::buildForces), so
-    // its normal forces are the first z entries.
-    if (L.size - L.z != n_normals + 4)
+    // its normal forces are the next z entries.
+    if (L.size - L.z != n_motor + n_normals + 4)
       throw std::logic_error("minimal formulation: unexpected auxiliary-state layout");
-    for (int i = 0; i < n_normals; ++i) p.atol(L.z + i) = rtol * N_unit;
+    for (int i = 0; i < n_normals; ++i) p.atol(z_normals + i) = rtol * N_unit;
   }
   // Newton matrix from a structured Jacobian (AdamsIntegrator.h): difference quotients only for
   // the mechanical states (φ2, twist, φ̇2, twist rate: at most 4 evaluations per Jacobian instead
@@ -228,14 +253,18 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   // lags the N̂ corrections (large: N̂ relaxes in τ_N, shorter than a step) and the audit showed
   // outliers of 0.4·accuracy·E (stiff-coupling hard case, 1 accuracy in 12; ≤ 8e-4 with the full
   // Jacobian, ≤ 3e-3 with this row included).
+  //  - the motor law's states (MotorForce.h): difference quotients like the mechanical states
+  //    (they couple to the speed both ways); the brake work: an energy integral, column zero.
   if (model.options().structured_jacobian) {
     const int n_aux = L.size - L.z;
     const int n_normals = model.hasGuideFriction() ? 2 * sc.carts.count : 0;
-    if (n_aux != n_normals + 4)
+    if (n_aux != n_motor + n_normals + 4)
       throw std::logic_error(
-          "minimal formulation: auxiliary states are not [friction normal forces, 4 energy integrals]");
+          "minimal formulation: auxiliary states are not [motor states, friction normal forces, 4 energy integrals]");
     p.jacobian.difference_quotient.assign(L.size, false);
     for (int i = 0; i < L.z; ++i) p.jacobian.difference_quotient[i] = true;
+    if (const MotorForce* motor = model.motorForce())
+      for (int i = 0; i < motor->lawStateCount(); ++i) p.jacobian.difference_quotient[L.z + i] = true;
     p.jacobian.diagonal = Eigen::VectorXd::Zero(L.size);
     if (n_normals > 0) {
       const double tau_N = sc.loads.guide_friction_lag;
@@ -243,9 +272,9 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
         throw std::invalid_argument(
             "minimal formulation: loads.guide_friction.normal_force_lag must be a positive time [s], got " +
             std::to_string(tau_N));
-      p.jacobian.diagonal.segment(L.z, n_normals).setConstant(-1.0 / tau_N);
+      p.jacobian.diagonal.segment(z_normals, n_normals).setConstant(-1.0 / tau_N);
       // Energy integrals in EnergyMeter.h's order: motor work, damping, friction, load work.
-      const int row_friction_dissipation = L.z + n_normals + 2, first_normal = L.z;
+      const int row_friction_dissipation = z_normals + n_normals + 2, first_normal = z_normals;
       p.jacobian.known_entries = [&ms, row_friction_dissipation, first_normal](
                                      double t, const double* y, Eigen::Ref<Eigen::MatrixXd> jac) {
         return ms.frictionPowerEntries(t, y, row_friction_dissipation, first_normal, jac);
@@ -265,8 +294,31 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   // against 4.2e-10 ... 2.9e-8 with order ≤ 12; balanced-4cart (10 s, accuracy 1e-2 ... 1e-6)
   // costs the same either way (CVODE seldom goes above order 5 there).
   p.max_order = 5;
+  // A stiff motor law (motor/Stiffness.h: the space-phasor machine's electrical modes) switches
+  // to BDF, with the same structured Newton matrix.
+  const MotorForce* motor = model.motorForce();
+  p.bdf = motor && lawIsStiff(&motor->law());
+  if (p.bdf) run.integrator = "cvode-bdf (minimal coordinates)";
   p.rhs = [&ms](double t, const double* y, double* ydot) { return ms.rhs(t, y, ydot); };
+  // Switching events of the starting method (motor/Supply.h): CVODE stops at the next timed one
+  // (stop time) and at a speed-triggered one (root finding of ω_r - ω_switch on its
+  // interpolant); the event is applied to y and CVODE restarts from there.
+  const bool events = motor && !motor->supply().constant();
+  double trigger_speed = std::nan("");
+  const double ratio = sc.reducer.ratio;
+  p.root = [&trigger_speed, &L, ratio](double, const double* y) {
+    const double w_crank = L.omega >= 0 ? y[L.omega] : 0.0, w_twist = L.twist_rate >= 0 ? y[L.twist_rate] : 0.0;
+    return ratio * (w_crank + w_twist) - trigger_speed;
+  };
   AdamsIntegrator integ(p);
+  auto arm = [&]() {
+    const SupplyPhase phase = ms.phase();
+    const double te = motor->supply().nextEventTime(phase);
+    if (te > integ.time()) integ.setStopTime(std::min(te, sc.simulation.t_end));
+    trigger_speed = motor->supply().triggerSpeed(phase);
+    integ.enableRoot(!std::isnan(trigger_speed));
+  };
+  if (events) arm();
 
   StallDetector stall(sc.hasMotor(), w_sync);
   const std::vector<double> times = outputTimes(sc.simulation);
@@ -328,7 +380,8 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
       run.stats.status = statusAt("numerical failure (non-finite value)", t);
       return false;
     }
-    if (stall.update(t, model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s))) {
+    if ((!motor || Supply::fullSupply(motor->phase(s))) &&
+        stall.update(t, model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s))) {
       run.stats.complete = false;
       run.stats.status = stall.status();
       return false;
@@ -341,7 +394,22 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   double t_last = times.front();  // the last recorded row, whose state closes the energy audit
   Eigen::VectorXd y_last = y0;
   for (std::size_t k = 1; go && k < times.size(); ++k) {
-    if (!integ.advanceTo(times[k])) {
+    bool failed = false;
+    while (true) {
+      if (!integ.advanceTo(times[k])) {
+        failed = true;
+        break;
+      }
+      if (events) {
+        Eigen::VectorXd y = integ.y();
+        if (ms.applyEvents(integ.time(), y, integ.rootFound())) {
+          integ.restart(integ.time(), y);
+          arm();
+        }
+      }
+      if (integ.time() >= times[k]) break;
+    }
+    if (failed) {
       run.stats.complete = false;
       run.stats.status = statusAt("integration failed", integ.time()) + ": " + integ.error();
       break;

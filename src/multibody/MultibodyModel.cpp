@@ -8,7 +8,10 @@
 #include "multibody/ElasticCoupling.h"
 #include "multibody/EnergyMeter.h"
 #include "multibody/GuideFriction.h"
-#include "multibody/KlossMotorForce.h"
+#include "motor/MotorColumns.h"
+#include "motor/SharedMotorLaw.h"
+#include "motor/Supply.h"
+#include "multibody/MotorForce.h"
 #include "multibody/RollerLoadForce.h"
 #include "physics/CamMotionLaw.h"
 #include "physics/SliderCrank.h"
@@ -129,11 +132,16 @@ void MultibodyModel::buildForces() {
   const Scene& sc = scene_;
   EnergyMeter::Sources sources;
   if (sc.hasMotor()) {
-    auto* f = new KlossMotorForce(motor_, sc.motor, sc.reducer.ratio, sc.reducer.efficiency);
+    std::shared_ptr<const MotorLaw> law = options_.motor_law;
+    if (!law) law = sharedMotorLaw(sc);
+    Supply supply = makeSupply(sc, law.get());
+    auto* f = new MotorForce(forces_, motor_, law, std::move(supply), sc.reducer.ratio, sc.reducer.efficiency);
     SimTK::Force::Custom(forces_, f);
     motor_force_ = sources.motor = f;
     applied_order_.push_back(f);
-    inventory_.force_elements.push_back("KlossMotor");
+    inventory_.force_elements.push_back(sc.induction.model == MotorModel::Kloss && !options_.motor_law
+                                            ? "KlossMotor"
+                                            : "InductionMotor(" + law->description() + ")");
   }
   if (sc.coupling.type == CouplingType::Elastic) {
     auto* f = new ElasticCoupling(motor_, sc.coupling.stiffness, sc.coupling.damping);
@@ -187,6 +195,7 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
   SimTK::State s = system_.getDefaultState();
   system_.realizeModel(s);
   if (friction_force_) friction_force_->setErrorWeights(s, scene_.cartMassWithRodShare());
+  if (motor_force_) motor_force_->setErrorWeights(s);
   if (motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex()) {
     // Simbody counts 1 rad (1 rad/s) as a unit change of every coordinate (speed), but the
     // coupling twist is ~torque/c: 1e-6 rad at c = 1e9, so it was held to ~100 % of itself and
@@ -225,6 +234,14 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
   system_.projectQ(s, 1e-13);
   system_.realize(s, SimTK::Stage::Velocity);
   system_.projectU(s, 1e-13);
+  if (motor_force_) {
+    // The motor's own states at t = 0, then the supply's events due at t = 0 (a speed trigger the
+    // initial speed has passed already).
+    const bool steady = motorSteadyAtStart(scene_, motor_force_->supply());
+    motor_force_->initialize(s, steady);
+    system_.realize(s, SimTK::Stage::Velocity);
+    motor_force_->applyDueEvents(s, false);
+  }
   if (friction_force_) {
     // Start the friction normal forces at the reactions they produce themselves (fixed point;
     // it contracts by a factor of order f per pass).
@@ -242,11 +259,14 @@ SimTK::State MultibodyModel::initialState() const {
   return assembledState(scene_.initial.crank_angle, scene_.initial.crank_speed, scene_.initial.twist);
 }
 
+int MultibodyModel::motorStateCount() const { return motor_force_ ? motor_force_->stateCount() : 0; }
+
 void MultibodyModel::auxiliaryRates(const SimTK::State& s, const SimTK::Vector& guide_normals_now,
                                     SimTK::Vector& zdot) const {
   zdot.resize(forces_.getZ(s).size());
   zdot = 0.0;
   energy_meter_->calcRates(s, zdot);
+  if (motor_force_) motor_force_->calcRates(s, zdot);
   if (friction_force_) friction_force_->calcRates(s, guide_normals_now, zdot);
 }
 
@@ -282,8 +302,12 @@ double MultibodyModel::couplingTorque(const SimTK::State& s) const {
 
 double MultibodyModel::couplingTorque(const SimTK::State& s, const SimTK::Vector& udot) const {
   if (coupling_force_) return coupling_force_->torque(s);
-  // Rigid coupling: the torque the motor-side inertia passes on to the crank side, M_motor - J_n1·φ̈.
-  return motorTorque(s) - scene_.motorSideInertia() * udot[crank_.getFirstUIndex(s)];
+  // Rigid coupling: the torque the motor-side inertia passes on to the crank side,
+  // M_motor (+ brake) - J_n1·φ̈.
+  const double M_drive = motor_force_ && motor_force_->supply().hasBrake()
+                             ? motorTorque(s) + motor_force_->brakeTorque(s)
+                             : motorTorque(s);
+  return M_drive - scene_.motorSideInertia() * udot[crank_.getFirstUIndex(s)];
 }
 
 double MultibodyModel::constraintError(const SimTK::State& s) const {
@@ -297,6 +321,7 @@ EnergyAudit energyAuditBetween(const EnergySnapshot& first, const EnergySnapshot
   a.damping_dissipation = last.damping_dissipation - first.damping_dissipation;
   a.friction_dissipation = last.friction_dissipation - first.friction_dissipation;
   a.load_work = last.load_work - first.load_work;
+  a.brake_dissipation = last.brake_dissipation - first.brake_dissipation;
   a.kinetic_initial = first.kinetic;
   a.kinetic_final = last.kinetic;
   a.potential_initial = first.potential;
@@ -312,6 +337,7 @@ EnergySnapshot MultibodyModel::energy(const SimTK::State& s) const {
   e.damping_dissipation = energy_meter_->dampingDissipation(s);
   e.friction_dissipation = energy_meter_->frictionDissipation(s);
   e.load_work = energy_meter_->loadWork(s);
+  if (motor_force_) e.brake_dissipation = motor_force_->brakeWork(s);
   return e;
 }
 
@@ -321,6 +347,8 @@ std::vector<std::string> MultibodyModel::timeseriesColumns() const {
                                 "twist_rate",  "twist_accel", "coupling_torque", "motor_torque"};
   for (size_t j = 1; j <= carts_.size(); ++j)
     for (const char* n : {"x_cart_", "v_cart_", "a_cart_"}) c.push_back(n + std::to_string(j));
+  if (motor_force_)
+    for (const std::string& m : motorColumns(&motor_force_->law(), motor_force_->supply())) c.push_back(m);
   return c;
 }
 
@@ -356,6 +384,12 @@ void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& u
     ts.push_back(c.x(s));
     ts.push_back(c.v(s));
     ts.push_back(udot[c.cart.getFirstUIndex(s)]);
+  }
+  if (motor_force_) {
+    const MotorForce& m = *motor_force_;
+    const bool current = lawHasCurrent(&m.law());
+    appendMotorColumns(&m.law(), m.supply(), current ? m.evaluate(s).stator_current : 0.0, m.supplyState(s),
+                       m.brakeTorque(s), ts);
   }
 }
 

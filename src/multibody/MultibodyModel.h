@@ -26,12 +26,13 @@
 
 #include "Simbody.h"
 #include "analysis/RunResult.h"
+#include "motor/MotorLaw.h"
 #include "multibody/CartRig.h"
 #include "scene/Scene.h"
 
 namespace rollerdyn {
 
-class KlossMotorForce;
+class MotorForce;
 class ElasticCoupling;
 class RollerLoadForce;
 class GuideFriction;
@@ -42,6 +43,7 @@ struct MultibodyOptions {
   double crank_speed = 0.0;            // that speed [rad/s]
   bool structured_jacobian = true;     // minimal formulation: Newton Jacobian by difference quotients
                                        // of the mechanical states only (false: of every state)
+  std::shared_ptr<const MotorLaw> motor_law;  // the motor's law; null: the scene's motor.model
 };
 
 // What the built system contains, for `rollerdyn check` and for tests.
@@ -59,6 +61,7 @@ struct MultibodyInventory {
 struct EnergySnapshot {
   double kinetic = 0, potential = 0;
   double motor_work = 0, damping_dissipation = 0, friction_dissipation = 0, load_work = 0;
+  double brake_dissipation = 0;
 };
 
 // The energy audit of a run from the snapshots at its first and last recorded rows (the work
@@ -86,6 +89,11 @@ class MultibodyModel {
   const SimTK::MobilizedBody& motorSide() const { return motor_; }
   bool elastic() const { return motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex(); }
   bool hasGuideFriction() const { return friction_force_ != nullptr; }
+  // The motor force element (null without a motor): its law, supply, phase and z states.
+  const MotorForce* motorForce() const { return motor_force_; }
+  // z entries of the motor element (law states, brake work): the first entries of the force
+  // subsystem's z, before the guide-friction normal forces and the energy integrals.
+  int motorStateCount() const;
   // Time derivatives of the force subsystem's auxiliary states z (energy audit, guide-friction
   // normal-force lags; indexed like forces().getZ(s)) for the guide normal forces
   // `guide_normals_now` (N_front, N_rear per cart; ignored without friction). State realized to
@@ -149,7 +157,7 @@ class MultibodyModel {
   std::vector<CartRig> carts_;
   int constraint_count_ = 0;
   // Owned by the force subsystem once wrapped in SimTK::Force::Custom.
-  const KlossMotorForce* motor_force_ = nullptr;
+  const MotorForce* motor_force_ = nullptr;
   const ElasticCoupling* coupling_force_ = nullptr;
   const RollerLoadForce* load_force_ = nullptr;
   const GuideFriction* friction_force_ = nullptr;

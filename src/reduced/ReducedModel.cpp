@@ -5,13 +5,23 @@
 #include <string>
 
 #include "physics/CamMotionLaw.h"
-#include "physics/KlossMotor.h"
+#include "motor/SharedMotorLaw.h"
 #include "physics/RollerLoads.h"
 
 namespace rollerdyn {
 
-ReducedModel::ReducedModel(const Scene& scene)
-    : scene_(scene), rigid_(scene.coupling.type == CouplingType::Rigid) {
+ReducedModel::ReducedModel(const Scene& scene) : ReducedModel(scene, nullptr) {}
+
+namespace {
+// The given law, else the scene's motor.model; none without a motor.
+std::shared_ptr<const MotorLaw> lawOf(const Scene& scene, std::shared_ptr<const MotorLaw> given) {
+  if (!scene.motor.enabled) return nullptr;
+  return given ? given : sharedMotorLaw(scene);
+}
+}  // namespace
+
+ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law)
+    : scene_(scene), rigid_(scene.coupling.type == CouplingType::Rigid), law_(lawOf(scene, std::move(law))) {
   const int n = scene_.carts.count;
   if (n < 1) throw std::invalid_argument("reduced model: carts.count must be >= 1");
   if (static_cast<int>(scene_.carts.side.size()) != n)
@@ -30,6 +40,14 @@ ReducedModel::ReducedModel(const Scene& scene)
   m_B_ = scene_.cartMassWithRodShare();  // Loveikin, Pochka, Romasevych (2018) eq. (3)
   if (!rigid_ && !(J_n1_ > 0.0))
     throw std::invalid_argument("reduced model: elastic coupling needs a motor-side inertia J_n1 > 0");
+  if (motorStateCount() > ModelEvaluation::kMaxMotorStates)
+    throw std::invalid_argument("reduced model: the motor law has more states than the model carries");
+  supply_ = scene_.motor.enabled ? makeSupply(scene_, law_.get()) : Supply();
+  initial_phase_ = supply_.initialPhase();
+}
+
+double ReducedModel::rotorSpeed(const double* y) const {
+  return (y[iOmega()] + (rigid_ ? 0.0 : y[iTwistRate()])) * scene_.reducer.ratio;
 }
 
 SliderCrankPose ReducedModel::cartPose(int j, double phi) const {
@@ -94,8 +112,9 @@ double ReducedModel::reducedInertiaDerivative(double phi) const {
 
 double ReducedModel::motorTorque(double omega_motor) const {
   if (!scene_.motor.enabled) return 0.0;
+  const double u = scene_.reducer.ratio;
   // Loveikin, Pochka, Romasevych (2018) eq. (37) / Loveikin and Pochka (2007) eq. (7)-(8), in the singularity-free form of KlossMotor.h
-  return klossCrankTorque(scene_.motor, scene_.reducer.ratio, scene_.reducer.efficiency, omega_motor);
+  return law_->steadyTorque(SupplyState{}, omega_motor * u) * u * scene_.reducer.efficiency;
 }
 
 CartEvaluation ReducedModel::evaluateCart(int j, double phi, double omega, double Fin) const {
@@ -145,6 +164,11 @@ Eigen::VectorXd ReducedModel::initialState() const {
     y(iTwist()) = scene_.initial.twist;
     y(iTwistRate()) = 0.0;  // motor starts at the same reduced speed (Scene.h)
   }
+  if (motorStateCount() > 0) {
+    const double w_r = rotorSpeed(y.data());
+    law_->initialState(supply_.state(initial_phase_, 0.0, w_r), w_r, motorSteadyAtStart(scene_, supply_),
+                       y.data() + iMotorStates());
+  }
   return y;
 }
 
@@ -161,6 +185,13 @@ Eigen::VectorXd ReducedModel::derivatives(double /*t*/, const Eigen::VectorXd& y
 }
 
 void ReducedModel::evaluate(const double* y, ModelEvaluation& e, bool keep_carts) const {
+  evaluate(0.0, initial_phase_, y, e, keep_carts);
+}
+
+void ReducedModel::derivatives(const double* y, double* d) const { derivatives(0.0, initial_phase_, y, d); }
+
+void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y, ModelEvaluation& e,
+                            bool keep_carts) const {
   e.phi_crank = y[iPhi()];
   e.omega_crank = y[iOmega()];
   e.twist = rigid_ ? 0.0 : y[iTwist()];
@@ -187,34 +218,53 @@ void ReducedModel::evaluate(const double* y, ModelEvaluation& e, bool keep_carts
   }
   e.J_n2 = J;
   e.dJ_n2 = dJ;
-  e.motor_torque = motorTorque(e.omega_motor);
+  evaluateMotor(t, phase, y, e);
   e.load_torque = M;
+  const double M_drive = e.motor_torque + e.brake_torque;  // on the motor side, at the crank axis
   if (rigid_) {
     // Loveikin and Pochka (2007) eq. (1) in time form: J·φ̈ = M_p - M_o - ½·J'·φ̇²
-    e.eps_crank = (e.motor_torque - e.load_torque - 0.5 * e.dJ_n2 * w2 * w2) / (J_n1_ + e.J_n2);
+    e.eps_crank = (M_drive - e.load_torque - 0.5 * e.dJ_n2 * w2 * w2) / (J_n1_ + e.J_n2);
     e.eps_motor = e.eps_crank;
     e.twist_accel = 0.0;
     // Torque the rigid coupling passes to the crank side: what the motor gives minus what the
     // motor-side inertia takes.
-    e.coupling_torque = e.motor_torque - J_n1_ * e.eps_crank;
+    e.coupling_torque = M_drive - J_n1_ * e.eps_crank;
     e.damping_power = 0.0;
   } else {
     // Loveikin, Pochka, Romasevych (2018) eq. (58)
     const double c = scene_.coupling.stiffness, k = scene_.coupling.damping;
     e.coupling_torque = c * e.twist + k * e.twist_rate;
-    e.eps_motor = (e.motor_torque - e.coupling_torque) / J_n1_;
+    e.eps_motor = (M_drive - e.coupling_torque) / J_n1_;
     e.eps_crank = (e.coupling_torque - e.load_torque - 0.5 * e.dJ_n2 * w2 * w2) / e.J_n2;
     e.twist_accel = e.eps_motor - e.eps_crank;
     e.damping_power = k * e.twist_rate * e.twist_rate;
   }
   e.motor_power = e.motor_torque * e.omega_motor;
+  e.brake_power = -e.brake_torque * e.omega_motor;
   e.friction_power = P_friction;
   e.load_power = P_load;
 }
 
-void ReducedModel::derivatives(const double* y, double* d) const {
+void ReducedModel::evaluateMotor(double t, const SupplyPhase& phase, const double* y, ModelEvaluation& e) const {
+  e.brake_torque = 0.0;
+  e.stator_current = MotorEvaluation::kNotModelled;
+  if (!scene_.motor.enabled) {
+    e.motor_torque = 0.0;
+    return;
+  }
+  const double u = scene_.reducer.ratio, eta = scene_.reducer.efficiency;
+  const double w_r = e.omega_motor * u;
+  e.supply = supply_.state(phase, t, w_r);
+  e.brake_torque = supply_.brakeTorque(phase, w_r) * u * eta;
+  MotorEvaluation out;
+  law_->evaluate(e.supply, w_r, y + iMotorStates(), out, motorStateCount() > 0 ? e.motor_state_rates.data() : nullptr);
+  e.motor_torque = out.torque * u * eta;
+  e.stator_current = out.stator_current;
+}
+
+void ReducedModel::derivatives(double t, const SupplyPhase& phase, const double* y, double* d) const {
   ModelEvaluation e;  // carts stays empty: no allocation
-  evaluate(y, e, false);
+  evaluate(t, phase, y, e, false);
   d[iPhi()] = e.omega_crank;
   d[iOmega()] = e.eps_crank;
   if (!rigid_) {
@@ -225,6 +275,8 @@ void ReducedModel::derivatives(const double* y, double* d) const {
   d[iMotorWork()] = e.motor_power;
   d[iFrictionWork()] = e.friction_power;
   d[iLoadWork()] = e.load_power;
+  if (iBrakeWork() >= 0) d[iBrakeWork()] = e.brake_power;
+  for (int i = 0; i < motorStateCount(); ++i) d[iMotorStates() + i] = e.motor_state_rates[i];
 }
 
 double ReducedModel::kineticEnergy(const Eigen::VectorXd& y) const {

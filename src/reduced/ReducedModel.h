@@ -34,13 +34,23 @@
 // of variables. Work integrals ride along as extra states (energy audit, RunResult.h).
 //   rigid:   [φ, φ̇, W_motor, W_friction, W_load]
 //   elastic: [φ2, φ̇2, ψ, ψ̇, W_motor, W_damping, W_friction, W_load]
+// then, only when the scene asks for them: the brake's dissipation W_brake (motor.stop.brake_torque)
+// and the motor law's own states (MotorLaw.h: none for the static laws).
+//
+// Motor: the scene's motor law (motor.model) at the rotor, M(supply, ω_r = u·φ̇1, x), fed by the
+// starting method's supply (motor/Supply.h) in the run's SupplyPhase; at the crank M·u·η
+// (Loveikin, Pochka, Romasevych (2018) eq. (37)); a brake torque M_b on the motor shaft likewise.
 #pragma once
 
+#include <array>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "analysis/RunResult.h"
+#include "motor/MotorLaw.h"
+#include "motor/Supply.h"
 #include "physics/SliderCrank.h"
 #include "reduced/CartStatics.h"
 #include "scene/Scene.h"
@@ -62,6 +72,12 @@ struct ModelEvaluation {
   double phi_crank = 0, omega_crank = 0, twist = 0, twist_rate = 0, omega_motor = 0;
   double J_n2 = 0, dJ_n2 = 0;     // crank-side reduced inertia and its φ-derivative
   double motor_torque = 0;        // M_n1 at the crank axis [N·m]
+  double brake_torque = 0;        // mechanical brake on the motor shaft, at the crank axis [N·m]
+  double stator_current = 0;      // RMS stator phase current [A]; NaN when the law has none
+  SupplyState supply;             // what the starting method applies (motor/Supply.h)
+  double brake_power = 0;         // -M_brake·φ̇1 ≥ 0, dissipated in the brake [W]
+  static constexpr int kMaxMotorStates = 8;
+  std::array<double, kMaxMotorStates> motor_state_rates{};  // the motor law's dx/dt
   double load_torque = 0;         // M_load [N·m] (rollers + friction + gravity)
   double coupling_torque = 0;     // elastic: c·ψ + k·ψ̇; rigid: M_motor - J_n1·φ̈
   double eps_crank = 0, eps_motor = 0, twist_accel = 0;
@@ -76,11 +92,14 @@ class ReducedModel {
  public:
   // Validates the kinematic preconditions (std::invalid_argument on a bad scene).
   explicit ReducedModel(const Scene& scene);
+  // With a given motor law (instead of the scene's motor.model; null: the scene's), e.g. a law
+  // written in a test.
+  ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law);
 
   const Scene& scene() const { return scene_; }
   bool rigid() const { return rigid_; }
   int cartCount() const { return scene_.carts.count; }
-  int stateSize() const { return rigid_ ? 5 : 8; }
+  int stateSize() const { return mechanicalSize() + (supply_.hasBrake() ? 1 : 0) + motorStateCount(); }
 
   // State indices (-1 where the model has no such state).
   int iPhi() const { return 0; }
@@ -91,6 +110,15 @@ class ReducedModel {
   int iDampingWork() const { return rigid_ ? -1 : 5; }
   int iFrictionWork() const { return rigid_ ? 3 : 6; }
   int iLoadWork() const { return rigid_ ? 4 : 7; }
+  int iBrakeWork() const { return supply_.hasBrake() ? mechanicalSize() : -1; }
+  int iMotorStates() const { return mechanicalSize() + (supply_.hasBrake() ? 1 : 0); }  // first of them
+  int motorStateCount() const { return law_ ? law_->stateCount() : 0; }
+
+  // The motor law (null without a motor) and the supply of the scene's starting method.
+  const MotorLaw* motorLaw() const { return law_.get(); }
+  const Supply& supply() const { return supply_; }
+  // Rotor speed ω_r = u·φ̇1 [rad/s] of state y.
+  double rotorSpeed(const double* y) const;
 
   // Kinematics of cart j (0-based) at crank angle φ2 of cart 1.
   SliderCrankPose cartPose(int j, double phi_crank) const;
@@ -104,7 +132,8 @@ class ReducedModel {
   double reducedInertia(double phi) const;
   double reducedInertiaDerivative(double phi) const;
 
-  // Kloss torque at the crank axis, 0 when the motor is disabled.
+  // Motor torque at the crank axis under the rated supply (the static laws' torque-speed
+  // curve; a law with states at rest), 0 when the motor is disabled.
   double motorTorque(double omega_motor) const;
   // Resisting torque M_load(φ, φ̇) [N·m]; fills per-cart details when carts != nullptr.
   double loadTorque(double phi, double omega, std::vector<CartEvaluation>* carts = nullptr) const;
@@ -120,6 +149,10 @@ class ReducedModel {
   // passed again.
   void evaluate(const double* y, ModelEvaluation& e, bool carts) const;
   void derivatives(const double* y, double* dydt) const;
+  // The same at time t in supply phase p (the overloads above: the phase at t = 0, enough for a
+  // constant supply).
+  void evaluate(double t, const SupplyPhase& p, const double* y, ModelEvaluation& e, bool carts) const;
+  void derivatives(double t, const SupplyPhase& p, const double* y, double* dydt) const;
   // Kinetic ½J_n1φ̇1² + ½J_n2φ̇2² (rigid: ½Jφ̇²) and potential ½cψ² + rod gravity [J].
   double kineticEnergy(const Eigen::VectorXd& y) const;
   double potentialEnergy(const Eigen::VectorXd& y) const;
@@ -137,8 +170,16 @@ class ReducedModel {
   double cartInertiaDerivative(const SliderCrankPose& p) const;  // its dJ/dφ [kg·m²/rad]
   double rodGravityTorque(const SliderCrankPose& p, double theta) const;  // [N·m]
 
+  int mechanicalSize() const { return rigid_ ? 5 : 8; }
+  // Motor and brake torque at the crank, stator current, supply and the law's state rates into e
+  // (e.omega_motor set).
+  void evaluateMotor(double t, const SupplyPhase& phase, const double* y, ModelEvaluation& e) const;
+
   Scene scene_;
   bool rigid_;
+  std::shared_ptr<const MotorLaw> law_;  // null without a motor
+  Supply supply_;
+  SupplyPhase initial_phase_;
   double J_n1_;       // motor side, Loveikin, Pochka, Romasevych (2018) eq. (1)
   double J_crank_;    // crankshaft without rods + split pin half-masses (Loveikin, Pochka, Romasevych (2018) eq. (2))
   double m_B_;        // cart mass used with x_B', Loveikin, Pochka, Romasevych (2018) eq. (3)
@@ -158,5 +199,7 @@ class ReducedModel {
 // early with stats.complete = false and stats.status = "motor stalled at t = X s" (X = onset),
 // never with an exception.
 RunResult runReducedModel(const Scene& scene);
+// The same with a given motor law (e.g. one written in a test).
+RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law);
 
 }  // namespace rollerdyn

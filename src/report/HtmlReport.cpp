@@ -1,5 +1,6 @@
 #include "report/HtmlReport.h"
 #include "report/SizingSection.h"
+#include "report/StartUpSection.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -225,6 +226,7 @@ std::string renderReportHtml(const ReportContent& c) {
   h << "</table>\n";
 
   h << sizingSectionHtml(s);  // motion, stall cause, drive sizing (SizingSection.h)
+  h << startUpSectionHtml(s);  // start-up and stopping (StartUpSection.h)
 
   // Reactions
   const json rx = at(s, "reactions");

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/MotorSwitching.h"
 #include "scene/SizingInputs.h"
 
 namespace rollerdyn {
@@ -226,6 +227,8 @@ struct Scene {
   DriveType drive = DriveType::Crank;  // crank | cam                              drive.type
   CamDrive cam;                        // cam.* (used when drive == Cam)
   SizingInputs sizing;                 // sizing.*: ratings and targets, no effect on the run
+  MotorStart motor_start;              // motor.start.*: starting method (MotorSwitching.h)
+  MotorStop motor_stop;                // motor.stop.*: switch-off, brake, restart
 
   // --- Derived quantities, defined once so both models use the same formula. ---
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/MotorSwitchingParser.h"
 #include "scene/SceneDocument.h"
 #include "scene/SceneReader.h"
 #include "scene/SceneSchema.h"
@@ -294,6 +295,7 @@ Scene readScene(const SceneDocument& doc) {
   s.reduced = readReduced(in);
   readDrive(in, s);
   s.sizing = readSizing(in);
+  readMotorSwitching(in, s);
 
   // Guide reactions (Loveikin, Pochka, Romasevych (2018) eq. (18)-(25)) divide by 2b; with friction they drive the load.
   if (s.loads.guide_friction > 0.0) {

@@ -135,6 +135,22 @@ motor:
     breakdown_torque_ratio: 2.0
     starting_current_ratio: 6.0
     cages: 1
+  start:
+    method: soft_starter
+    t_on: 0.5
+    phase_deg: 30
+    changeover_time: 1.5
+    changeover_gap: 0.04
+    ramp_time: 2.5
+    initial_voltage: 0.4
+    current_limit: 80
+    initial_frequency: 5
+    boost: 0.05
+  stop:
+    t_off: 2.0
+    brake_torque: 150
+    brake_delay: 0.1
+    t_restart: 2.8
 reducer:
   ratio: 12
   efficiency: 0.8
@@ -188,7 +204,8 @@ TEST(SceneSchema, FullSceneCoversTheSchema) {
     // The critical slip has three alternative ways; the full scene uses way 1.
     if (k.path == "motor.omega_critical" || k.path == "motor.omega_nominal" ||
         k.path == "motor.overload_ratio" ||
-        k.path == "sizing.motor_nominal_power")  // excludes motor_nominal_torque: test_scene_sizing
+        k.path == "sizing.motor_nominal_power" ||  // excludes motor_nominal_torque: test_scene_sizing
+        k.path == "motor.start.changeover_speed")  // the changeover's other way (changeover_time)
       continue;
     const std::string leaf = k.path.substr(k.path.rfind('.') + 1);
     EXPECT_NE(std::string(kFullScene).find(leaf + ":"), std::string::npos) << k.path;
@@ -255,6 +272,20 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(im.catalogue.breakdown_torque_ratio, 2.0);
   EXPECT_DOUBLE_EQ(im.catalogue.starting_current_ratio, 6.0);
   EXPECT_EQ(im.catalogue.cages, 1);
+  EXPECT_EQ(s.motor_start.method, StartMethod::SoftStarter);
+  EXPECT_DOUBLE_EQ(s.motor_start.t_on, 0.5);
+  EXPECT_DOUBLE_EQ(s.motor_start.phase, 30 * deg);
+  EXPECT_DOUBLE_EQ(s.motor_start.changeover_time, 1.5);
+  EXPECT_DOUBLE_EQ(s.motor_start.changeover_gap, 0.04);
+  EXPECT_DOUBLE_EQ(s.motor_start.ramp_time, 2.5);
+  EXPECT_DOUBLE_EQ(s.motor_start.initial_voltage, 0.4);
+  EXPECT_DOUBLE_EQ(s.motor_start.current_limit, 80.0);
+  EXPECT_DOUBLE_EQ(s.motor_start.initial_frequency, 5.0);
+  EXPECT_DOUBLE_EQ(s.motor_start.boost, 0.05);
+  EXPECT_DOUBLE_EQ(s.motor_stop.t_off, 2.0);
+  EXPECT_DOUBLE_EQ(s.motor_stop.brake_torque, 150.0);
+  EXPECT_DOUBLE_EQ(s.motor_stop.brake_delay, 0.1);
+  EXPECT_DOUBLE_EQ(s.motor_stop.t_restart, 2.8);
   EXPECT_DOUBLE_EQ(s.reducer.ratio, 12.0);
   EXPECT_DOUBLE_EQ(s.reducer.efficiency, 0.8);
   EXPECT_DOUBLE_EQ(s.reducer.inertia, 0.05);
