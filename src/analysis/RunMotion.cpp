@@ -32,6 +32,18 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
       if (d.update(row[it], row[ip], row[ic], row[im]))
         return d.kind() == StallKind::RockingWithoutGain ? "rocking" : "stalled";
     }
+    // A drive still held at rest when the run ends, with the motor connected in a stage the rule
+    // skips (star that never changes over, a ramp longer than the run), did not start in this run:
+    // the held rule's band and time, counted back from the last row, at any supply but none.
+    if (iu >= 0 && !ts.rows.empty()) {
+      const double band = StallDetector::kSpeedFraction * sc.motor.omega_sync / sc.reducer.ratio;
+      double held_since = NAN;
+      for (auto row = ts.rows.rbegin(); row != ts.rows.rend(); ++row) {
+        if (!(std::abs((*row)[ic]) <= band && std::abs((*row)[im]) <= band && (*row)[iu] > 0)) break;
+        held_since = (*row)[it];
+      }
+      if (ts.rows.back()[it] - held_since >= StallDetector::kRestWindow) return "stalled";
+    }
   }
   if (!std::isfinite(m.omega_min) || !std::isfinite(m.omega_max)) return "unknown";
   if (m.omega_min < 0 && m.omega_max > 0) {

@@ -91,6 +91,8 @@ json sizingJson(const DriveSizing& s) {
           {"thermal_over_nominal", num(r.thermal_over_nominal)},
           {"thermal_basis", r.thermal_basis},
           {"start_heat", num(r.start_heat)},
+          {"start_duration", num(r.start_duration)},
+          {"start_heat_above_steady", num(r.start_heat_above_steady)},
           {"starts_per_hour", num(r.starts_per_hour)},
           {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
           {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}}}};

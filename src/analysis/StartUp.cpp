@@ -162,7 +162,8 @@ double largestSteadyTorque(const MotorLaw& law, const SupplyState& supply) {
   return std::max({best_M, Mc, Md});
 }
 
-StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* law, const StartLoad* load) {
+StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* law, const StartLoad* load,
+                       const std::string& motion) {
   StartUp r;
   const Table& ts = run.timeseries;
   if (!sc.motor.enabled || !law || !ts.has("t") || !ts.has("omega_crank") || ts.rows.size() < 2) return r;
@@ -187,12 +188,9 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
 
   // The steady window: on the rows before the switch-off.
   r.t_off = std::isfinite(sc.motor_stop.t_off) ? sc.motor_stop.t_off : kNaN;
-  Table before_off = ts;
-  if (std::isfinite(r.t_off)) {
-    const std::size_t n = firstRowAtOrAfter(t, r.t_off);
-    before_off.rows.resize(std::min(before_off.rows.size(), n));
-  }
-  const SteadyState ss = detectSteadyState(before_off, sc.simulation.steady_window_revolutions);
+  std::size_t n_running = t.size();  // rows before the switch-off
+  if (std::isfinite(r.t_off)) n_running = std::min(n_running, firstRowAtOrAfter(t, r.t_off));
+  const SteadyState ss = detectRunningSteadyState(ts, sc.simulation.steady_window_revolutions, r.t_off);
   r.steady_reached = ss.reached;
   r.steady_begin = ss.t_begin;
   r.steady_end = ss.t_end;
@@ -218,10 +216,15 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   // Turning: the crank turns one way in the window, faster than the stall rule's creep limit
   // (StallDetector.h: 1 % of the synchronous crank speed ω0/u).
   const double creep = StallDetector::kSpeedFraction * sc.motor.omega_sync / u;
-  const bool turning = std::isfinite(r.steady_mean_speed) && r.steady_mean_speed > creep && window_min > 0;
+  bool turning = std::isfinite(r.steady_mean_speed) && r.steady_mean_speed > creep && window_min > 0;
+  // The run's motion, where known, decides (RunMotion.h): a turning crank may dip backwards at a
+  // dead centre; a stalled, rocking or still starting one does not turn.
+  if (motion == "turning") turning = std::isfinite(r.steady_mean_speed) && r.steady_mean_speed > creep;
+  else if (!motion.empty() && motion != "unknown") turning = false;
+  r.still_starting = motion == "starting";
   if (turning) {
     const double target = kRunUpFraction * r.steady_mean_speed;
-    for (std::size_t i = std::max<std::size_t>(i_on, 1); i < before_off.rows.size(); ++i)
+    for (std::size_t i = std::max<std::size_t>(i_on, 1); i < n_running; ++i)
       if (w[i] >= target) {
         const double a = w[i] > w[i - 1] && i > i_on ? (target - w[i - 1]) / (w[i] - w[i - 1]) : 1.0;
         r.run_up_time = t[i - 1] + std::clamp(a, 0.0, 1.0) * (t[i] - t[i - 1]) - r.t_on;
@@ -232,7 +235,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
 
   // The start interval [t_on, steady window begin).
   r.start_end = r.steady_begin > r.t_on ? r.steady_begin
-                                        : (before_off.rows.empty() ? t.back() : t[before_off.rows.size() - 1]);
+                                        : (n_running == 0 ? t.back() : t[n_running - 1]);
   const std::size_t s0 = i_on, s1 = std::max(s0 + 1, firstRowAtOrAfter(t, r.start_end) + 1);
   const std::size_t s1c = std::min(s1, t.size());
   auto peakOf = [&](const std::vector<double>& c, std::size_t a, std::size_t b, bool absolute, bool lowest = false) {
@@ -330,6 +333,10 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   if (r.starts) {
     r.verdict = "the drive starts: the crank reaches 95 % of its steady mean speed " + fmt("%.4g", r.steady_mean_speed) +
                 " rad/s " + fmt("%.3g", r.run_up_time) + " s after switch-on";
+  } else if (r.still_starting) {
+    r.verdict = "the drive is still starting when the run ends: the crank gets over its dead centres but has not "
+                "settled (its speed still changes sign within a revolution), so no run-up time can be given yet: "
+                "run longer (simulation.t_end)";
   } else if (std::isfinite(r.load_torque_start) && r.starting_torque_crank <= r.load_torque_start) {
     r.verdict = "the drive does not start: its starting torque " + fmt("%.4g", r.starting_torque_crank) + " N·m" +
                 at_start + " is below the load torque " + fmt("%.4g", r.load_torque_start) +

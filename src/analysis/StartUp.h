@@ -60,6 +60,8 @@ struct StartUp {
   double load_torque_mean = 0;             // load averaged over a revolution [N·m at the crank]
   // What the run did.
   bool starts = false;          // the crank reached 95 % of the steady mean speed
+  bool still_starting = false;  // the run ended before the drive settled (motion "starting",
+                                // RunMotion.h): whether it starts is not known yet
   std::string verdict;          // one or two sentences: starts in ..., or does not start because ...
   double steady_mean_speed = 0; // mean crank speed of the steady window [rad/s]
   bool steady_reached = false;  // SteadyState::reached for the window used
@@ -84,8 +86,12 @@ struct StartUp {
 };
 
 // `law`: the scene's motor law (null: none, e.g. the motor disabled); `load`: the load torques at
-// the start (studies/StartLoad.h), may be null.
-StartUp computeStartUp(const Scene& scene, const RunResult& run, const MotorLaw* law, const StartLoad* load);
+// the start (studies/StartLoad.h), may be null; `motion`: the run's motion (RunMotion.h, found on
+// the same running window) when known, so that the answers never contradict it: a stalled or
+// rocking drive does not start, a drive still "starting" has no run-up time yet, a "turning"
+// crank may dip backwards at a dead centre; "" judges from the rows alone.
+StartUp computeStartUp(const Scene& scene, const RunResult& run, const MotorLaw* law, const StartLoad* load,
+                       const std::string& motion = "");
 
 // The largest steady torque of a law under `supply` over rotor speeds 0 ... ω0·f [N·m at the
 // rotor]: a scan of 400 speeds refined by golden-section search.

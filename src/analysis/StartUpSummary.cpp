@@ -46,6 +46,7 @@ json startUpJson(const StartUp& s) {
   j["from_rest"] = s.from_rest;
   j["supply_switches"] = s.supply_switches;
   j["starts"] = s.starts;
+  j["still_starting"] = s.still_starting;
   j["verdict"] = s.verdict;
   j["starting_torque_crank"] = num(s.starting_torque_crank);
   j["starting_torque_rated_crank"] = num(s.starting_torque_rated_crank);

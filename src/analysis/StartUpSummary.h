@@ -11,7 +11,7 @@
 namespace rollerdyn {
 
 // start_up: null when no motor is switched on in the run; else {method, motor_law, motor_model,
-// t_on, supply_switches, from_rest, starts, verdict, starting_torque_crank, starting_torque_rated_crank,
+// t_on, supply_switches, from_rest, starts, still_starting, verdict, starting_torque_crank, starting_torque_rated_crank,
 // largest_torque_crank, load_torque_start, load_torque_mean, steady {mean_speed, reached,
 // t_begin, t_end}, run_up_time, start_end, motor_torque {peak, min, steady_peak},
 // coupling_torque {peak, steady_peak, ratio}, joints {kind: {peak, steady_peak, ratio, column}},

@@ -41,8 +41,9 @@ std::string joined(const std::vector<std::string>& items) {
 }  // namespace
 
 json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* start_load) {
-  const SteadyState ss =
-      detectSteadyState(run.timeseries, scene.simulation.steady_window_revolutions);
+  // The machine's running: the coast-down after a switch-off is no steady state (SteadyState.h).
+  const SteadyState ss = detectRunningSteadyState(run.timeseries, scene.simulation.steady_window_revolutions,
+                                                  scene.motor.enabled ? scene.motor_stop.t_off : NAN);
   const WindowMetrics m = computeMetrics(run, ss);
   FiniteWriter num;
   json j;
@@ -147,8 +148,22 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   }
   j["reactions"] = rx;
 
-  const DriveSizing sizing =
-      computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN, crank_motion);
+  // Start-up and stopping answers (StartUp.h) with the scene's motor law, told the motion so they
+  // agree with it; the sizing's heating check reads the start's heat from them.
+  std::shared_ptr<const MotorLaw> law;
+  if (scene.motor.enabled) try {
+      law = sharedMotorLaw(scene);
+    } catch (const std::exception&) {
+      // a law the scene cannot build: no start-up answers
+    }
+  std::unique_ptr<StartUp> start_up;
+  if (law) try {
+      start_up = std::make_unique<StartUp>(computeStartUp(scene, run, law.get(), start_load, crank_motion));
+    } catch (const std::exception&) {
+      // a scene the starting method cannot be built for (e.g. a test scene without loads' data)
+    }
+  const DriveSizing sizing = computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN,
+                                                crank_motion, start_up.get());
   j["sizing"] = sizingJson(sizing);
   j["sizing"]["flywheel"]["location"] = toString(scene.flywheel.location);
   const LoadWork load = computeLoadWork(scene, run, ss);
@@ -161,19 +176,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   }
   j["not_meaningful"] = not_meaningful;
   j["stall"] = nullptr;
-  // Start-up and stopping answers (StartUp.h) with the scene's motor law.
-  std::shared_ptr<const MotorLaw> law;
-  if (scene.motor.enabled) try {
-      law = sharedMotorLaw(scene);
-    } catch (const std::exception&) {
-      // a law the scene cannot build: no start-up answers
-    }
-  j["start_up"] = nullptr;
-  try {
-    j["start_up"] = startUpJson(computeStartUp(scene, run, law.get(), start_load));
-  } catch (const std::exception&) {
-    // a scene the starting method cannot be built for (e.g. a test scene without loads' data)
-  }
+  j["start_up"] = start_up ? startUpJson(*start_up) : nullptr;
 
   std::string status = run.stats.status;
   if (crank_motion == "rocking" && StallDetector::motionOfStatus(status) != "rocking") {

@@ -61,6 +61,7 @@ json startUpOf(const std::string& dir, const std::string& scene, const std::stri
 
 std::string startsText(const json& su) {
   if (su.value("starts", false)) return "starts, " + g(su.value("run_up_time", json())) + " s";
+  if (su.value("still_starting", false)) return "still starting when the run ends";
   return "does not start";
 }
 
@@ -91,18 +92,18 @@ void machineTable(std::ostringstream& md, const std::string& dir, const std::str
   md << "\n";
   for (const std::string& n : not_run) md << "Not run, " << n << "\n\n";
   for (const auto& [law, su] : by_law)
-    if (!su.value("starts", false)) md << "Why " << law << " does not start: " << su.value("verdict", std::string()) << ".\n\n";
+    if (!su.value("starts", false)) md << "Why " << law << (su.value("still_starting", false) ? " has not started: " : " does not start: ") << su.value("verdict", std::string()) << ".\n\n";
   if (!by_law.count("kloss")) return;
   const json& k = by_law["kloss"];
   std::ostringstream f;
-  f << title << ": Kloss " << (k.value("starts", false) ? "starts in " + g(k["run_up_time"]) + " s" : "does not start");
+  f << title << ": Kloss " << (k.value("starts", false) ? "starts in " + g(k["run_up_time"]) + " s" : startsText(k));
   if (!by_law.count("park")) {
     findings.push_back(f.str() + " (starting torque at the crank " + g(k.value("starting_torque_crank", json()), 4) +
                        " N·m); no catalogue motor to compare with.");
     return;
   }
   const json& p = by_law["park"];
-  f << ", the catalogue motor (space-phasor) " << (p.value("starts", false) ? "starts in " + g(p["run_up_time"]) + " s" : "does not start")
+  f << ", the catalogue motor (space-phasor) " << (p.value("starts", false) ? "starts in " + g(p["run_up_time"]) + " s" : startsText(p))
     << "; starting torque at the crank " << g(k.value("starting_torque_crank", json()), 4) << " against "
     << g(p.value("starting_torque_crank", json()), 4) << " N·m";
   if (k.value("starts", false) && p.value("starts", false))

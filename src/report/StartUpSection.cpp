@@ -46,7 +46,8 @@ std::string startUpSectionHtml(const json& summary) {
     << num(at(s, "t_on")) << " s; motor law: " << htmlEscape(at(s, "motor_law").get<std::string>())
     << ". Torques at the crank axis (M at the rotor × u·η: u reducer ratio, η its efficiency); the start runs from "
        "the switch-on to the steady window (shaded in the start-up figures).</p>\n";
-  h << "<div class=\"status " << (starts ? "ok" : "bad") << "\">" << htmlEscape(at(s, "verdict").get<std::string>())
+  const bool still_starting = at(s, "still_starting").is_boolean() && at(s, "still_starting").get<bool>();
+  h << "<div class=\"status " << (starts ? "ok" : still_starting ? "warn" : "bad") << "\">" << htmlEscape(at(s, "verdict").get<std::string>())
     << "</div>\n";
   for (const json& n : at(s, "notes"))
     h << "<div class=\"status warn\">" << htmlEscape(n.get<std::string>()) << "</div>\n";

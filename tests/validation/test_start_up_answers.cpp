@@ -12,6 +12,8 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "analysis/StartUp.h"
 #include "analysis/StartUpSummary.h"
@@ -128,6 +130,76 @@ TEST(StartUpAnswers, TheDefaultSceneSaysWhatKlossCannotShow) {
   EXPECT_NE(text.find("start-up     direct on line at t = 0 s, motor law: Kloss formula (static)"), std::string::npos)
       << text;
   EXPECT_NE(text.find("note: The static Kloss law cannot show the switching transient"), std::string::npos) << text;
+}
+
+
+Scene defaultScene(const std::vector<std::string>& overrides) {
+  return parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml", overrides);
+}
+
+nlohmann::json reducedSummary(const Scene& s) {
+  const StartLoad load = startLoadOf(s);
+  return makeSummary(s, runReducedModel(s), &load);
+}
+
+nlohmann::json multibodySummary(const Scene& s) {
+  const StartLoad load = startLoadOf(s);
+  return makeSummary(s, runMultibodyModel(s), &load);
+}
+
+// The heating check's start heat and the start-up answers' rotor energy loss are one computation
+// (StartUp.h): the same number in summary.json, direct on line and in star-delta, in both models.
+TEST(StartUpAnswers, TheHeatingChecksStartHeatIsTheStartsRotorEnergyLoss) {
+  for (const std::vector<std::string>& o :
+       {std::vector<std::string>{"motor.start.method=direct_on_line"},
+        std::vector<std::string>{"motor.start.method=star_delta", "motor.start.changeover_time=0.6"}})
+  for (const bool multibody : {false, true}) {
+    const Scene s = defaultScene(o);
+    const nlohmann::json j = multibody ? multibodySummary(s) : reducedSummary(s);
+    const nlohmann::json& wr = j["sizing"]["motor"]["whole_run"];
+    ASSERT_TRUE(j["start_up"].is_object());
+    ASSERT_TRUE(wr["start_heat"].is_number()) << wr.dump();
+    const double E = j["start_up"]["rotor_energy_loss"].get<double>();
+    std::printf("  %-9s %s: start heat %.6g J, rotor energy loss of the start %.6g J, above steady running %.6g J\n",
+                multibody ? "multibody" : "reduced", o.back().c_str(), wr["start_heat"].get<double>(), E,
+                wr["start_heat_above_steady"].get<double>());
+    EXPECT_GT(E, 0.0);
+    EXPECT_EQ(wr["start_heat"].get<double>(), E);
+    EXPECT_NEAR(wr["start_duration"].get<double>(),
+                j["start_up"]["start_end"].get<double>() - j["start_up"]["t_on"].get<double>(), 1e-12);
+    EXPECT_LE(wr["start_heat_above_steady"].get<double>(), E);
+    EXPECT_TRUE(wr["starts_per_hour"].is_number());
+  }
+}
+
+// The start-up verdict and the run's motion (RunMotion.h) never contradict each other.
+TEST(StartUpAnswers, TheStartUpVerdictAgreesWithTheMotion) {
+  // Held in star (the changeover speed is never reached): the stall rule skips the star rows, yet
+  // the run ends with the drive at rest; it has not started, and both say so.
+  const nlohmann::json held = reducedSummary(
+      defaultScene({"loads.roller_force_direction=opposes_velocity", "motor.start.method=star_delta",
+                    "motor.start.changeover_speed=80", "simulation.t_end=1.5"}));
+  EXPECT_EQ(held["motion"], "stalled") << held["status"];
+  EXPECT_FALSE(held["start_up"]["starts"].get<bool>());
+  EXPECT_NE(held["start_up"]["verdict"].get<std::string>().find("does not start"), std::string::npos);
+  // A run too short to settle: "starting", and the start-up answer says it is still starting
+  // instead of giving a run-up time to the mean speed of a revolution that still rocks.
+  const nlohmann::json starting = reducedSummary(defaultScene({"simulation.t_end=3", "crank.offset_deg=60"}));
+  EXPECT_EQ(starting["motion"], "starting");
+  EXPECT_FALSE(starting["start_up"]["starts"].get<bool>());
+  EXPECT_TRUE(starting["start_up"]["still_starting"].get<bool>());
+  EXPECT_TRUE(starting["start_up"]["run_up_time"].is_null());
+  EXPECT_NE(starting["start_up"]["verdict"].get<std::string>().find("still starting"), std::string::npos)
+      << starting["start_up"]["verdict"];
+  // A switch-off: the steady window, the motion and the sizing are those of the running machine
+  // before it (the coast-down is no steady state), as the start-up answers' are.
+  const nlohmann::json off = reducedSummary(defaultScene({"motor.stop.t_off=5"}));
+  EXPECT_EQ(off["motion"], "turning");
+  EXPECT_TRUE(off["start_up"]["starts"].get<bool>());
+  EXPECT_TRUE(off["steady_state"]["reached"].get<bool>());
+  EXPECT_LE(off["steady_state"]["t_end"].get<double>(), 5.0);
+  EXPECT_EQ(off["steady_state"]["t_begin"], off["start_up"]["steady"]["t_begin"]);
+  EXPECT_GT(off["sizing"]["motor"]["torque_shaft"]["rms"].get<double>(), 1.0);  // not the coasting motor's 0
 }
 
 }  // namespace
