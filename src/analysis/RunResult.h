@@ -20,6 +20,7 @@
 //             pin or bearing forces).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,14 @@ struct EnergyAudit {
   double residualRelative() const;
 };
 
+// One reaction column of the multibody minimal formulation's self-check: its O(n) value against
+// Simbody's constrained solve over the checked rows.
+struct ReactionCheck {
+  std::string column;          // reactions.csv column, e.g. "N_front_2", "bearing_x"
+  double max_difference = 0;   // largest |O(n) value - Simbody's| over the checked rows [N, N·m]
+  double max_value = 0;        // largest |Simbody's value| there [N, N·m]
+};
+
 struct RunStats {
   long steps = 0;                  // accepted integrator steps
   long realizations = 0;           // right-hand-side evaluations (Dynamics-stage realizations)
@@ -57,7 +66,10 @@ struct RunStats {
   double constraint_error_max = 0; // max over output rows of the constraint error norm [-]
   bool complete = true;            // false when the run ended before t_end
   double formulation_self_check = -1;  // multibody minimal formulation: max relative difference of its
-                                       // accelerations from Simbody's constrained solve [-]; -1: not run
+                                       // accelerations and guide normal forces from Simbody's
+                                       // constrained solve [-]; -1: not run
+  long self_check_rows = 0;            // output rows checked against Simbody's constrained solve
+  std::vector<ReactionCheck> reaction_self_check;  // per reaction column (empty: none checked)
   std::string status = "completed";  // e.g. "completed", "motor stalled at t = 3.2 s"
 };
 
@@ -69,6 +81,13 @@ struct RunResult {
   RunStats stats;
   EnergyAudit energy;
   std::vector<std::string> effects;  // effects built, e.g. "kloss_motor", "elastic_coupling"
+  // Normal force of the guide friction (and of the reduced model's reactions), in words for the
+  // user: e.g. "algebraic (guide reaction of the same instant)"; empty without guide friction
+  // in a model that has no reactions of its own to describe.
+  std::string guide_normals;
+  // Reduced model with the papers' quasi-static normals: the friction work the same run would
+  // have done with kinetostatic normals at its own accelerations [J]; NaN where not computed.
+  double friction_work_kinetostatic = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Helpers of the run loops that fill a RunResult.

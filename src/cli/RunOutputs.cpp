@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "analysis/FrictionChecks.h"
 #include "analysis/Summary.h"
 #include "cli/Commands.h"
 #include "cli/Progress.h"
@@ -27,6 +28,7 @@ nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const s
   nlohmann::json summary = makeSummary(scene, run, &start_load);
   summary["scene_path"] = absolutePath(scene_path);
   for (const std::string& w : addResonanceWarnings(scene, summary)) std::cerr << "rollerdyn: warning: " << w << '\n';
+  for (const std::string& w : addFrictionWarnings(scene, run, summary)) std::cerr << "rollerdyn: warning: " << w << '\n';
   writeSummaryAtomic(out_dir + "/summary.json", summary);
   return summary;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <ctime>
 #include <sstream>
+#include <stdexcept>
 
 #include "analysis/OutputGrid.h"
 #include "analysis/StallDetector.h"
@@ -38,11 +39,17 @@ void sampleWithinStep(const SimTK::System& system, double t0, const SimTK::Vecto
 RunResult simulateMultibody(const MultibodyModel& model, const RunControl& control) {
   const Scene& sc = model.scene();
   if (sc.simulation.formulation == Formulation::Minimal) return simulateMinimal(model, control);
+  if (model.hasGuideFriction() && !model.hasFrictionLagStates())
+    throw std::invalid_argument(
+        "multibody model: loads.guide_friction.normal_force = algebraic needs simulation.formulation = minimal "
+        "(the constrained formulation knows the guide reactions only after Simbody's constrained solve); "
+        "use loads.guide_friction.normal_force = lagged");
   const SimTK::MultibodySystem& system = model.system();
   RunResult run;
   run.model = "multibody";
   run.integrator = sc.simulation.integrator;
   run.effects = sc.effects();
+  run.guide_normals = model.guideNormalsDescription();
   run.timeseries.columns = model.timeseriesColumns();
   const bool reactions = sc.simulation.reactions;
   if (reactions) run.reactions.columns = model.reactionColumns();

@@ -80,6 +80,8 @@ struct CvodeUserData {
   const ReducedModel* model = nullptr;
   long rhs_evals = 0;
   std::string last_error;
+  std::string friction_failure;  // the first evaluation whose guide-friction loop failed, in words
+  double friction_failure_phi = 0;
   double rtol = 0;
   Eigen::VectorXd atol;  // per state, see runCvode
 };
@@ -105,8 +107,18 @@ int cvodeRhs(realtype /*t*/, N_Vector y, N_Vector ydot, void* user) {
   auto* u = static_cast<CvodeUserData*>(user);
   const int n = u->model->stateSize();
   realtype* d = NV_DATA_S(ydot);
-  u->model->derivatives(NV_DATA_S(y), d);  // allocation-free
   ++u->rhs_evals;
+  if (!u->model->derivatives(NV_DATA_S(y), d)) {  // allocation-free
+    // A cart locks at this trial state: recoverable (a smaller step may stay clear of it); where
+    // it cannot, CVODE gives up and the run's status names the cause.
+    if (u->friction_failure.empty()) {
+      ModelEvaluation e;
+      u->model->evaluate(NV_DATA_S(y), e, false);
+      u->friction_failure = describeLoopFailure(e.friction_loop);
+      u->friction_failure_phi = NV_DATA_S(y)[u->model->iPhi()];
+    }
+    return 1;
+  }
   for (int i = 0; i < n; ++i)
     if (!std::isfinite(d[i])) return 1;  // recoverable: CVODE retries with a smaller step
   return 0;
@@ -233,6 +245,10 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
       flag = CVode(cv, t, y, &tret, CV_NORMAL);
       if (flag < 0) {
         res.stats.complete = false;
+        if (!ud.friction_failure.empty()) {
+          res.stats.status = statusAt("the run stopped", tret) + ": the " + ud.friction_failure;
+          break;
+        }
         char* name = CVodeGetReturnFlagName(flag);
         res.stats.status = std::string("integrator failure at t = ") + std::to_string(tret) +
                            " s: " + (name ? name : "?") + " " + ud.last_error;
@@ -243,6 +259,11 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
     }
     y_last = ym;
     m.evaluate(y_last.data(), e, true);
+    if (e.friction_loop.status != LoopStatus::Solved) {
+      res.stats.complete = false;
+      res.stats.status = statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop);
+      break;
+    }
     appendRows(m, t, e, res);
     if (stall.update(t, e.omega_crank, e.omega_motor)) {
       res.stats.complete = false;
@@ -263,6 +284,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   res.energy.load_work = y_last(m.iLoadWork());
   res.energy.kinetic_final = m.kineticEnergy(y_last);
   res.energy.potential_final = m.potentialEnergy(y_last);
+  if (m.checksFrictionWork()) res.friction_work_kinetostatic = y_last(m.iFrictionWorkKinetostatic());
   return res;
 }
 
@@ -283,7 +305,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
   double phi = s.initial.crank_angle;
   double w = std::max(s.initial.crank_speed, 0.0);  // the scheme only marches forward in φ
   double t = 0.0;
-  double W_motor = 0.0, W_friction = 0.0, W_load = 0.0;
+  double W_motor = 0.0, W_friction = 0.0, W_load = 0.0, W_friction_kinetostatic = 0.0;
 
   Eigen::VectorXd y(m.stateSize());
   y.setZero();
@@ -318,6 +340,11 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     yi(m.iOmega()) = w;
     const ModelEvaluation e = m.evaluate(yi);
     ++res.stats.realizations;
+    if (e.friction_loop.status != LoopStatus::Solved) {
+      res.stats.complete = false;
+      res.stats.status = statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop);
+      break;
+    }
     const double M = e.motor_torque - e.load_torque;  // M_p(ω_i) - M_o(φ_i)
     const double J_next = m.reducedInertia(phi + dphi);
     double w_next;
@@ -339,6 +366,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     const double eps = (w_next - w) / (t_next - t);        // Loveikin and Pochka (2007) eq. (11)
     // Work over the step by the same left-point rule as the scheme: dW = (force·x_B')·Δφ.
     W_motor += e.motor_torque * dphi;
+    if (w > 0.0) W_friction_kinetostatic += e.friction_power_kinetostatic / w * dphi;  // P/ω·Δφ
     for (int j = 0; j < m.cartCount(); ++j) {
       const CartEvaluation& c = e.carts[j];
       const double sigma = s.carts.side[j];
@@ -365,6 +393,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
   res.energy.load_work = W_load;
   res.energy.kinetic_final = m.kineticEnergy(y);
   res.energy.potential_final = m.potentialEnergy(y);
+  if (m.checksFrictionWork()) res.friction_work_kinetostatic = W_friction_kinetostatic;
   return res;
 }
 
@@ -375,6 +404,7 @@ RunResult runReducedModel(const Scene& scene) {
   RunResult res;
   res.model = "reduced";
   res.effects = scene.effects();
+  res.guide_normals = model.guideNormalsDescription();
   setupTables(model, res);
   if (scene.reduced.integrator == ReducedIntegrator::Baranov) {
     res.integrator = "baranov";

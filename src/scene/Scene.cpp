@@ -60,5 +60,9 @@ const char* toString(FlywheelLocation l) {
 const char* toString(ReducedIntegrator i) { return i == ReducedIntegrator::Baranov ? "baranov" : "cvode"; }
 const char* toString(DriveType d) { return d == DriveType::Cam ? "cam" : "crank"; }
 const char* toString(Formulation f) { return f == Formulation::Minimal ? "minimal" : "constrained"; }
+const char* toString(GuideNormalForce g) { return g == GuideNormalForce::Algebraic ? "algebraic" : "lagged"; }
+const char* toString(ReducedGuideNormals g) {
+  return g == ReducedGuideNormals::Kinetostatic ? "kinetostatic" : "quasi_static";
+}
 
 }  // namespace rollerdyn

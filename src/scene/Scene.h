@@ -24,6 +24,8 @@ enum class FlywheelLocation { Crankshaft, MotorShaft };         // flywheel.loca
 enum class ReducedIntegrator { Cvode, Baranov };                // reduced.integrator
 enum class DriveType { Crank, Cam };                            // drive.type
 enum class Formulation { Constrained, Minimal };                // simulation.formulation
+enum class GuideNormalForce { Lagged, Algebraic };             // loads.guide_friction.normal_force
+enum class ReducedGuideNormals { QuasiStatic, Kinetostatic };  // reduced.guide_normals
 
 struct SimulationSettings {
   double t_end;                 // simulated time span [s]                       simulation.t_end
@@ -41,6 +43,9 @@ struct SimulationSettings {
   bool reactions = true;        // joint reaction forces computed at every output row; false:
                                 // motion and drive torques only, no reactions table [-]
                                 //                                               simulation.reactions
+  int self_check_interval = 50; // minimal formulation: every k-th output row is also solved by
+                                // Simbody's constrained solve and compared (accelerations,
+                                // reaction columns) [rows]           simulation.self_check_interval
 };
 
 struct InitialState {
@@ -140,14 +145,25 @@ struct Loads {
   double gravity;              // g [m/s²]; 0 = no gravity                            loads.gravity
   double velocity_smoothing;   // v_s: sign(v) is replaced by tanh(v/v_s) [m/s]       loads.velocity_smoothing
   double guide_friction_lag = 2e-3;  // τ_N: time constant with which the multibody model's
-                               // friction normal force follows the guide reaction [s]
+                               // lagged friction normal force follows the guide reaction [s]
                                //                     loads.guide_friction.normal_force_lag
+  GuideNormalForce guide_normal_force = GuideNormalForce::Lagged;  // normal force of the multibody
+                               // model's guide friction: the guide reaction of the same instant,
+                               // solved with the motion (algebraic), or followed with the lag τ_N
+                               // (lagged) [-]; scene files default to algebraic with the minimal
+                               // formulation (SceneParser.cpp)   loads.guide_friction.normal_force
 };
 
 struct ReducedSettings {
   KinematicsForm kinematics;   // exact (eq. (40)-(47)) | truncated (eq. (52)-(57))   reduced.kinematics
   ReducedIntegrator integrator;  // cvode | baranov (Loveikin and Pochka (2007) eq. (4), (10), (11))  reduced.integrator
   double baranov_step;         // crank-angle step of the Baranov scheme [rad]        reduced.baranov_step_deg
+  ReducedGuideNormals guide_normals = ReducedGuideNormals::QuasiStatic;  // guide normal forces of
+                               // the reduced model's friction and reactions: the papers' cart
+                               // statics without inertial forces (quasi_static) or with the cart's
+                               // and rod's inertial forces, solved with the motion (kinetostatic,
+                               // the multibody algebraic law) [-]; scene files default to
+                               // kinetostatic (SceneParser.cpp)                  reduced.guide_normals
 };
 
 struct Scene {
@@ -202,5 +218,7 @@ const char* toString(FlywheelLocation l);
 const char* toString(ReducedIntegrator i);
 const char* toString(Formulation f);
 const char* toString(DriveType d);
+const char* toString(GuideNormalForce g);     // "lagged" | "algebraic"
+const char* toString(ReducedGuideNormals g);  // "quasi_static" | "kinetostatic"
 
 }  // namespace rollerdyn
