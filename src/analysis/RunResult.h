@@ -12,12 +12,18 @@
 // reactions:  t, per cart j: N_front_j, N_rear_j, F_rod_j, friction_j, crankpin_x_j, crankpin_y_j,
 //             then bearing_x, bearing_y, coupling_torque.
 //             N_* > 0 when the guide presses the cart's guide rollers downward (Loveikin, Pochka, Romasevych (2018) fig. 3);
-//             F_rod > 0 in tension (pulls the cart towards the shaft, Loveikin, Pochka, Romasevych (2018) eq. (14));
+//             F_rod > 0 in tension (pulls the cart towards the shaft, Loveikin, Pochka, Romasevych (2018) eq. (14)):
+//             the rod's force on the cart at B along B -> A (a rod with mass also pushes across
+//             its axis; the reduced model's quasi-static statics report eq. (14)'s axial force,
+//             which differs from it by half the rod weight times sin β);
 //             friction_j is the guide friction force on cart j along x (N);
 //             crankpin_* is the force the rod exerts on crank pin j, world frame (N);
 //             bearing_* is the force the main bearing exerts on the crankshaft, world frame (N).
 //             A model that cannot compute a column leaves it out (the reduced model has no crank
 //             pin or bearing forces).
+//             Guide normal forces and the friction: multibody, the constraint reactions (friction
+//             by loads.guide_friction.normal_force); reduced, the cart statics of
+//             reduced.guide_normals (kinetostatic: with inertial forces; quasi_static: the papers').
 #pragma once
 
 #include <limits>

@@ -18,10 +18,10 @@
 //     and the friction uses N̂: a pure function of the state, so the constrained formulation's
 //     integrators can carry it. Physically a guide with a little compliance: the friction trails
 //     the reaction by about τ_N. That is NOT a small error where the reactions change fast:
-//     measured on balanced-4cart at r/l = 0.95 (rods.length = 0.2105 m), the applied friction
-//     differs from f·(|N_front| + |N_rear|) of the same instant by up to 348 N, with friction
-//     forces up to 2732 N (36 N with τ_N = 0.2 ms); at the shipped r/l = 0.25, by up to 22 N of
-//     367 N. The lag states also cost steps: every cart reversal flips the friction within
+//     measured on balanced-4cart (10 s) at r/l = 0.95 (rods.length = 0.2105 m), the applied
+//     friction differs from f·(|N_front| + |N_rear|) of the same instant by up to 348 N, with
+//     friction forces up to 2682 N (13 %; 36 N with τ_N = 0.2 ms); at the shipped r/l = 0.25 by
+//     up to 2.9 N of 143 N (2 %). The lag states also cost steps: every cart reversal flips the friction within
 //     ~v_s/a and N̂ relaxes within τ_N, a transient the error control resolves (docs/friction-and-
 //     reactions.md, "Cost"). Kept because the constrained formulation has no other way to close
 //     the loop, and as the reference of the earlier releases.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "analysis/OutputGrid.h"
+#include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
 #include "multibody/MinimalCoordinates.h"
 #include "multibody/MinimalDynamics.h"
@@ -310,6 +311,8 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   AdamsIntegrator integ(p);
 
   StallDetector stall(sc.hasMotor(), w_sync);
+  RestDetector rest(!sc.hasMotor() && !model.options().prescribe_crank_speed, sc.loads.velocity_smoothing);
+  std::vector<double> cart_speeds(sc.carts.count);
   const std::vector<double> times = outputTimes(sc.simulation);
   std::vector<double> ts_row, re_row, re_simbody;
   SimTK::Vector udot_projected;
@@ -383,6 +386,12 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     if (stall.update(t, model.crankSpeed(s), model.motorSpeed(s))) {
       run.stats.complete = false;
       run.stats.status = stall.status();
+      return false;
+    }
+    for (int j = 0; j < n_carts; ++j) cart_speeds[j] = model.carts()[j].v(s);
+    if (rest.update(t, cart_speeds, n_carts)) {
+      run.stats.complete = false;
+      run.stats.status = rest.status();
       return false;
     }
     return true;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "analysis/OutputGrid.h"
+#include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
 #include "multibody/IntegratorFactory.h"
 #include "multibody/MinimalSimulation.h"
@@ -66,6 +67,12 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   integ->initialize(s0);
 
   StallDetector stall(sc.hasMotor(), sc.motor.omega_sync / sc.reducer.ratio);
+  RestDetector rest(!sc.hasMotor() && !model.options().prescribe_crank_speed, sc.loads.velocity_smoothing);
+  std::vector<double> cart_speeds(model.carts().size());
+  auto atRest = [&](double t, const SimTK::State& s) {
+    for (size_t j = 0; j < cart_speeds.size(); ++j) cart_speeds[j] = model.carts()[j].v(s);
+    return rest.update(t, cart_speeds, int(cart_speeds.size()));
+  };
   std::vector<double> ts_row, re_row;
   auto record = [&](const SimTK::State& s) {
     system.realize(s, SimTK::Stage::Acceleration);
@@ -92,6 +99,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   const std::clock_t cpu0 = std::clock();
   record(integ->getState());
   stall.update(integ->getTime(), model.crankSpeed(integ->getState()), model.motorSpeed(integ->getState()));
+  atRest(integ->getTime(), integ->getState());
   const SimTK::State* last_row = &integ->getState();
   SimTK::Vector y_prev = integ->getState().getY(), ydot_prev = integ->getState().getYDot();
   double t_prev = integ->getTime();
@@ -123,6 +131,10 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
       } else if (stall.update(t_out, model.crankSpeed(s), model.motorSpeed(s))) {
         run.stats.complete = false;
         run.stats.status = stall.status();
+        stop = true;
+      } else if (atRest(t_out, s)) {
+        run.stats.complete = false;
+        run.stats.status = rest.status();
         stop = true;
       } else {
         if (control.progress) control.progress(t_out, t_end);

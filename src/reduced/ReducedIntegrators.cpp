@@ -14,6 +14,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "analysis/OutputGrid.h"
+#include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
 #include "reduced/EigenSundials.h"
 #include "reduced/ReducedModel.h"
@@ -233,6 +234,8 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   res.energy.potential_initial = m.potentialEnergy(y0);
 
   StallDetector stall(s.motor.enabled, syncCrankSpeed(s));  // the rule both models share
+  RestDetector rest(!s.motor.enabled, s.loads.velocity_smoothing);  // likewise
+  std::vector<double> cart_speeds(m.cartCount());
   const std::clock_t c0 = std::clock();
   res.timeseries.rows.reserve(times.size());
   res.reactions.rows.reserve(times.size());
@@ -268,6 +271,12 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
     if (stall.update(t, e.omega_crank, e.omega_motor)) {
       res.stats.complete = false;
       res.stats.status = stall.status();
+      break;
+    }
+    for (int j = 0; j < m.cartCount(); ++j) cart_speeds[j] = e.carts[j].pose.dx_B * e.omega_crank;
+    if (rest.update(t, cart_speeds, m.cartCount())) {
+      res.stats.complete = false;
+      res.stats.status = rest.status();
       break;
     }
   }

@@ -74,7 +74,12 @@ CartStaticsResult ReducedModel::kinetostaticStatics(int j, const CartEvaluation&
   rodLoadAtHinge(j, c.pose, w, V0, V1);
   // d'Alembert force of the cart along local x': -m_B·σ·(x_B''·ω² + x_B'·ε).
   const double Fin = -m_B_ * sigma * (c.pose.d2x_B * w * w + c.pose.dx_B * eps);
-  return cartStaticsWithFriction(scene_, c.pose.beta, c.roller_force, sigma * friction_world, Fin, V0 + V1 * eps);
+  const double V = V0 + V1 * eps;
+  CartStaticsResult r = cartStaticsWithFriction(scene_, c.pose.beta, c.roller_force, sigma * friction_world, Fin, V);
+  // F_rod as reactions.csv defines it for both models: the rod's force on the cart along B -> A,
+  // (-cos β, sin β) locally; of the rod's vertical load -V that is -V·sin β.
+  r.F_rod -= V * std::sin(c.pose.beta);
+  return r;
 }
 
 void ReducedModel::loopTerms(int j, const CartEvaluation& c, double w, GuideLoopCart& t) const {
