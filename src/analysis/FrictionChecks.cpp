@@ -27,12 +27,12 @@ std::vector<std::string> lockingWarnings(const Scene& scene) {
   if (!m.applicable) return w;
   const double lam = scene.crank.radius / scene.rods.length;
   if (m.self_locking_index >= 1.0) {
-    w.push_back(fmt("guide friction self-locks the carts: self-locking index f·tan β_max·max(1, |p|/(b - f·d/2)) = "
+    w.push_back(fmt("guide friction self-locks the carts: self-locking index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = "
                     "%.3g >= 1 (f = %.3g, r/l = %.4g, β_max = %.1f°): near the largest rod angle the friction a rod "
                     "force causes exceeds that force's push, so the mechanism jams there",
                     m.self_locking_index, scene.loads.guide_friction, lam, m.beta_max * kRadToDeg));
   } else if (m.self_locking_index > kLockingIndexWarning) {
-    w.push_back(fmt("guide friction near self-locking: index f·tan β_max·max(1, |p|/(b - f·d/2)) = %.3g (locks at "
+    w.push_back(fmt("guide friction near self-locking: index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = %.3g (locks at "
                     "1); at the largest rod angle the friction is amplified up to %.3gx its open-loop value "
                     "f·(|N_front| + |N_rear|) (f = %.3g, r/l = %.4g)",
                     m.self_locking_index, m.friction_amplification, scene.loads.guide_friction, lam));
@@ -91,7 +91,7 @@ std::string lockingReport(const Scene& scene) {
            m.beta_max * kRadToDeg, scene.crank.radius / scene.rods.length, m.transmission_angle_min * kRadToDeg,
            m.rod_force_factor);
   if (scene.hasGuideFriction())
-    o << fmt("self-locking index f·tan β_max·max(1, |p|/(b - f·d/2)) = %.3g (the cart locks at 1; friction amplified "
+    o << fmt("self-locking index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = %.3g (the cart locks at 1; friction amplified "
              "up to %.3gx)\n",
              m.self_locking_index, m.friction_amplification);
   else

@@ -187,14 +187,9 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   MinimalSystem ms(model, s0);
   const Layout& L = ms.layout();
   Eigen::VectorXd y0 = ms.pack(s0);
-  if (model.hasFrictionLagStates() && !ms.startLagStates(0.0, y0)) {
+  if ((model.hasFrictionLagStates() && !ms.startLagStates(0.0, y0)) || !ms.set(0.0, y0.data())) {
     run.stats.complete = false;
-    run.stats.status = "the run cannot start: at t = 0 the " + ms.loopFailure();
-    return run;
-  }
-  if (!ms.set(0.0, y0.data())) {
-    run.stats.complete = false;
-    run.stats.status = "the run cannot start: at t = 0 the " + ms.loopFailure();
+    run.stats.status = statusAt("the run stopped", 0.0) + ": the " + ms.loopFailure();
     return run;
   }
   system.realize(ms.state(), SimTK::Stage::Dynamics);

@@ -20,9 +20,9 @@ LockingMargins lockingMargins(const Scene& scene) {
   const CartGeometry& g = scene.carts.geometry;
   const double f = scene.loads.guide_friction;
   if (f > 0.0) {
-    const double arm = g.b - 0.5 * f * g.d;  // b - f·d/2: the tipping case's lever
-    const double tip = arm > 0.0 ? std::abs(g.p) / arm : std::numeric_limits<double>::infinity();
-    m.self_locking_index = f * std::tan(m.beta_max) * std::max(1.0, tip);
+    const double t = std::tan(m.beta_max);
+    const double tipping = g.b > 0.0 ? (std::abs(g.p) * t + 0.5 * g.d) / g.b : std::numeric_limits<double>::infinity();
+    m.self_locking_index = f * std::max(t, tipping);
   }
   m.friction_amplification = m.self_locking_index < 1.0 ? 1.0 / (1.0 - m.self_locking_index)
                                                          : std::numeric_limits<double>::infinity();

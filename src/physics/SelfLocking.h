@@ -6,18 +6,21 @@
 // cart's velocity and of N_i), the cart's equilibrium in (F_rod, N_front, N_rear) has the
 // determinant
 //     det = -cos β·(2b + (k2 - k1)·d/2) + sin β·((k1 - k2)·p + (k1 + k2)·b),
-// -2b·cos β without friction. The friction's feedback gain g = 1 - det/det_0 reaches 1 (the
-// determinant vanishes: any rod force is eaten by the friction it causes) when
-//   - both normal forces have the same sign (k1 = k2 = ±f):    g = f·tan β;
-//   - they have opposite signs (k1 = -k2 = ±f), i.e. the rod's vertical force tips the cart
-//     about its guide rollers:                                 g = f·tan β·|p| / (b ∓ f·d/2).
-// The larger, at the largest rod angle, is the self-locking index
-//     κ = f·tan β_max·max(1, |p| / (b - f·d/2))
-// (≈ f·(p/b)·tan β_max for the papers' carts, p > b): κ >= 1 locks the cart at the rod angles
-// where g >= 1; below, the friction is amplified by up to 1/(1 - κ) over its open-loop value
-// f·(|N_front| + |N_rear|) at fixed rod force. The cart's and rod's inertial forces do not change
-// g (they enter the right-hand side, physics/GuideFrictionLoop.h), so κ is the same for the
-// quasi-static and the kinetostatic normal forces.
+// det_0 = -2b·cos β without friction. Every force of the solution scales with 1/det, so the
+// friction's feedback gain is g = 1 - det/det_0 (the loop amplifies the friction by 1/(1 - g));
+// at g = 1 the determinant vanishes: any rod force is eaten by the friction it causes. Per sign
+// pattern, with β signed:
+//   - both normal forces of the same sign (k1 = k2 = k):       g = k·tan β;
+//   - opposite signs (k1 = -k2 = k; the rod's vertical force tips the cart about its guide
+//     rollers):                                                g = k·(p·tan β + d/2)/b.
+// The largest over the patterns and both signs of β, at the largest rod angle, is the
+// self-locking index
+//     κ = f·max(tan β_max, (|p|·tan β_max + d/2)/b)
+// (≈ f·(p/b)·tan β_max for the papers' carts, p > b, d ≪ p·tan β_max): κ >= 1 locks the cart at
+// the rod angles where g >= 1; below, the friction is amplified by up to 1/(1 - κ) over its
+// open-loop value f·(|N_front| + |N_rear|) at a fixed rod force. The cart's and rod's inertial
+// forces do not change g (they enter the right-hand side, physics/GuideFrictionLoop.h), so κ is
+// the same for the quasi-static and the kinetostatic normal forces.
 //
 // Dead centre. The rod pushes the cart along the guide with cos β of its force, so the rod force
 // reaches 1/cos β_max times the cart's horizontal load, and the transmission angle (between rod

@@ -81,6 +81,7 @@ CartStaticsResult solveCartStatics(const Scene& scene, double beta, double H, do
   // friction-free value -2b·cos β (< 0).
   const double k1 = phi_f * f * ((x(1) < 0.0) ? -1.0 : 1.0), k2 = phi_f * f * ((x(2) < 0.0) ? -1.0 : 1.0);
   const double det = -cb * (2.0 * g.b + (k2 - k1) * 0.5 * g.d) + sb * ((k1 - k2) * g.p + (k1 + k2) * g.b);
+  res.gain = 1.0 - det / (-2.0 * g.b * cb);
   res.locked = f > 0.0 && !(det < 0.0);
   return res;
 }

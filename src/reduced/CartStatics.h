@@ -48,6 +48,7 @@ struct CartStaticsResult {
   double friction = 0;  // guide friction force along the LOCAL x' axis [N]
   bool locked = false;  // the friction's feedback gain reached 1 for the sign pattern of the
                         // solution (physics/SelfLocking.h): the cart locks, the forces are void
+  double gain = 0;      // that gain, 1 - det/det_0 (0 without friction) [-]
 };
 
 // Solves the cart equilibrium above. beta: rod angle β [rad]; horizontal_roller_force: H along

@@ -265,7 +265,7 @@ void ReducedModel::evaluate(const double* y, ModelEvaluation& e, bool keep_carts
       if (c.statics.locked && e.friction_loop.status == LoopStatus::Solved) {
         e.friction_loop.status = LoopStatus::SelfLocking;
         e.friction_loop.cart = j;
-        e.friction_loop.gain = 1.0;
+        e.friction_loop.gain = c.statics.gain;
       }
     }
     P_load -= sigma * c.roller_force * v;
