@@ -29,8 +29,12 @@ void GuideFriction::setNormalsInUse(SimTK::State& s, const SimTK::Vector& normal
 }
 
 double GuideFriction::frictionPerNormal(const SimTK::State& s, int j) const {
+  return frictionPerNormal(j, carts_[j].v(s));
+}
+
+double GuideFriction::frictionPerNormal(int j, double v) const {
   const CartRig& c = carts_[j];
-  return c.side * frictionDirection(loads_, c.side * c.v(s)) * loads_.guide_friction;
+  return c.side * frictionDirection(loads_, c.side * v) * loads_.guide_friction;
 }
 
 void GuideFriction::setErrorWeights(SimTK::State& s, double cart_mass) const {

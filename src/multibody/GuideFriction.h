@@ -54,6 +54,8 @@ class GuideFriction : public SimTK::Force::Custom::Implementation {
   // Friction along world x per unit of |N_front| + |N_rear| on cart j: σ·f·φ_f(v') [-]
   // (physics/RollerLoads.h). State realized to Velocity.
   double frictionPerNormal(const SimTK::State& s, int j) const;
+  // The same for cart j moving at v [m/s] (world x).
+  double frictionPerNormal(int j, double v) const;
   // Power dissipated by guide friction [W] (≥ 0).
   double dissipatedPower(const SimTK::State& s) const;
   // Lagged law: ∂(dissipated power)/∂N̂ [W/N] for each normal-force state (N_front, N_rear per

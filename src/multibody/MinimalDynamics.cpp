@@ -1,5 +1,6 @@
 #include "multibody/MinimalDynamics.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include <Eigen/Dense>
@@ -31,6 +32,21 @@ MinimalDynamics::MinimalDynamics(const MultibodyModel& model, const SimTK::State
   f_particle_.resize(matter.getNumParticles());
   f_mobility_.resize(s.getNU());
   const int n = int(model.carts().size());
+  q_crank_ = model.crank().getFirstQIndex(s);
+  for (const CartRig& c : model.carts()) {
+    CartData d;
+    d.q_cart = c.cart.getFirstQIndex(s);
+    d.u_cart = c.cart.getFirstUIndex(s);
+    d.u_rod = c.rod.isEmptyHandle() ? -1 : int(c.rod.getFirstUIndex(s));
+    d.body = c.cart.getMobilizedBodyIndex();
+    d.side = c.side;
+    d.cam = !c.cam.isEmptyHandle();
+    d.massless_rod = !d.cam && c.rod.isEmptyHandle();
+    d.mass = c.cart.getBodyMass(s);
+    d.p_com = c.cart.getBodyMassCenterStation(s);
+    d.p_pin = c.p_CrankPin;
+    carts_.push_back(d);
+  }
   loop_carts_.resize(n);
   loop_friction_.resize(n);
   loop_normals_.resize(2 * n);
@@ -85,6 +101,7 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
     residual += nu_dot_(i) * view(mn_[i]);  // now the generalized constraint forces M·u̇ + c - f
   }
   loop_ = GuideLoopResult{};
+  placeLoops(s);
   if (!solve_loop) return true;
 
   // The friction loop (GuideFrictionLoop.h). Everything above is linear in the cart frictions
@@ -94,25 +111,23 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
   // crank column moves the carts and rods (the motor side, the twist column, is no ancestor of
   // either), so a cart's normal forces depend on ν̈ through ε alone.
   const GuideFriction& friction = model_.frictionElement();
-  const std::vector<CartRig>& carts = model_.carts();
-  const int n = int(carts.size());
+  const int n = int(carts_.size());
   const double eps0 = k_crank_ >= 0 ? nu_dot_(k_crank_) : 0.0;
   const double half_d = 0.5 * model_.scene().carts.geometry.d;
   const SimTK::SpatialVec unit_friction(SimTK::Vec3(0, 0, -half_d), SimTK::Vec3(1, 0, 0));
   const SimTK::SpatialVec none(SimTK::Vec3(0), SimTK::Vec3(0));
   const SimTK::Vector* crank_column = k_crank_ >= 0 ? &coords.column(k_crank_) : nullptr;
   const SimTK::Vector* crank_mn = k_crank_ >= 0 ? &mn_[k_crank_] : nullptr;
+  const SimTK::Vector& u = s.getU();
   for (int j = 0; j < n; ++j) {
-    const CartRig& c = carts[j];
-    const int uc = c.cart.getFirstUIndex(s);
-    const int ur = c.rod.isEmptyHandle() ? -1 : int(c.rod.getFirstUIndex(s));
+    const CartData& c = carts_[j];
+    const int uc = c.u_cart, ur = c.u_rod;
     GuideLoopCart& t = loop_carts_[j];
-    const GuideNormals n0 = cartNormals(s, j, residual_[uc], ur >= 0 ? residual_[ur] : 0.0, udot_[uc],
-                                        f_body_[c.cart.getMobilizedBodyIndex()]);
+    const GuideNormals n0 = cartNormals(j, residual_[uc], ur >= 0 ? residual_[ur] : 0.0, udot_[uc], f_body_[c.body]);
     GuideNormals ne{0, 0};
     if (crank_column)
-      ne = cartNormals(s, j, (*crank_mn)[uc], ur >= 0 ? (*crank_mn)[ur] : 0.0, (*crank_column)[uc], none);
-    const GuideNormals nf = cartNormals(s, j, -1.0, 0.0, 0.0, unit_friction);
+      ne = cartNormals(j, (*crank_mn)[uc], ur >= 0 ? (*crank_mn)[ur] : 0.0, (*crank_column)[uc], none);
+    const GuideNormals nf = cartNormals(j, -1.0, 0.0, 0.0, unit_friction);
     // n0 holds the normals at ε0: shift to ε = 0 for the loop's affine form.
     t.n0[0] = n0.front - ne.front * eps0;
     t.n0[1] = n0.rear - ne.rear * eps0;
@@ -120,7 +135,7 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
     t.n_eps[1] = ne.rear;
     t.n_F[0] = nf.front;
     t.n_F[1] = nf.rear;
-    t.c = friction.frictionPerNormal(s, j);
+    t.c = friction.frictionPerNormal(j, u[uc]);
     t.w = crank_column ? A_inv(k_crank_, k_crank_) * (*crank_column)[uc] : 0.0;
   }
   loop_ = solveGuideFrictionLoop(loop_carts_.data(), n, eps0, loop_friction_.data(), &loop_normals_[0]);
@@ -129,11 +144,13 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
   // The solution's friction into the accelerations, constraint forces and applied forces.
   Eigen::Vector2d db = Eigen::Vector2d::Zero();
   for (int j = 0; j < n; ++j) {
-    const CartRig& c = carts[j];
-    const int uc = c.cart.getFirstUIndex(s);
+    const CartData& c = carts_[j];
+    const int uc = c.u_cart;
     for (int i = 0; i < k; ++i) db(i) += coords.column(i)[uc] * loop_friction_[j];
     residual_[uc] -= loop_friction_[j];
-    friction.addCartForce(s, loop_normals_, j, f_body_);
+    // The friction's spatial force on the cart (GuideFriction::calcForce applies the same at the
+    // two guide contacts, both d/2 above B): force F, moment -(d/2)·F about B.
+    f_body_[c.body] += loop_friction_[j] * unit_friction;
   }
   const Eigen::Vector2d dnu = A_inv * db;
   for (int i = 0; i < k; ++i) {
@@ -145,47 +162,52 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
   return true;
 }
 
-double MinimalDynamics::loopForceY(const SimTK::State& s, int j, double Fx, double r_rod) const {
-  const CartRig& c = model_.carts()[j];
-  if (!c.cam.isEmptyHandle()) return 0.0;  // cam drive: the pusher force is horizontal
-  const SimTK::Vec3 p_A = model_.crank().findStationLocationInGround(s, c.p_CrankPin);
-  const SimTK::Vec3 r_AB = c.cart.getBodyOriginLocation(s) - p_A;
-  if (c.rod.isEmptyHandle()) return Fx * r_AB[1] / r_AB[0];  // a massless rod pushes along itself
+void MinimalDynamics::placeLoops(const SimTK::State& s) {
+  const SimTK::Vector& q = s.getQ();
+  const double phi = q[q_crank_], cp = std::cos(phi), sp = std::sin(phi);
+  for (CartData& c : carts_) {
+    if (c.cam) continue;
+    // A = R_z(φ2)·p_pin (the crankshaft turns about ground z through the origin), B = (x_B, 0).
+    const double Ax = cp * c.p_pin[0] - sp * c.p_pin[1], Ay = sp * c.p_pin[0] + cp * c.p_pin[1];
+    c.r_AB = SimTK::Vec3(q[c.q_cart] - Ax, -Ay, 0.0);
+  }
+}
+
+double MinimalDynamics::loopForceY(int j, double Fx, double r_rod) const {
+  const CartData& c = carts_[j];
+  if (c.cam) return 0.0;  // cam drive: the pusher force is horizontal
+  const SimTK::Vec3& r_AB = c.r_AB;
+  if (c.massless_rod) return Fx * r_AB[1] / r_AB[0];  // a massless rod pushes along itself
   // The rod's pin mobility carries the z moment about A of the loop force on the rod, -F:
   // r_rod = -(r_AB × F)_z.
   return (r_AB[1] * Fx - r_rod) / r_AB[0];
 }
 
-GuideNormals MinimalDynamics::cartNormals(const SimTK::State& s, int j, double Fx, double r_rod, double a,
+GuideNormals MinimalDynamics::cartNormals(int j, double Fx, double r_rod, double a,
                                           const SimTK::SpatialVec& applied) const {
-  const CartRig& c = model_.carts()[j];
-  const double Fy = loopForceY(s, j, Fx, r_rod);
+  const CartData& c = carts_[j];
+  const double Fy = loopForceY(j, Fx, r_rod);
   // The cart only translates: Σ forces = m·a, Σ moments about B = p_BC × m·a; the loop force
   // acts at B. The slider joint supplies the rest (GuideReactions.h).
-  const double m = c.cart.getBodyMass(s);
-  const SimTK::Vec3 p_com = c.cart.getBodyMassCenterStation(s);
-  const SimTK::Vec3 ma(m * a, 0, 0);
-  const SimTK::SpatialVec reaction(SimTK::cross(p_com, ma) - applied[0], ma - applied[1] - SimTK::Vec3(Fx, Fy, 0));
+  const SimTK::Vec3 ma(c.mass * a, 0, 0);
+  const SimTK::SpatialVec reaction(SimTK::cross(c.p_com, ma) - applied[0], ma - applied[1] - SimTK::Vec3(Fx, Fy, 0));
   return solveGuideNormals(reaction, c.side, model_.scene().carts.geometry);
 }
 
-SimTK::Vec2 MinimalDynamics::loopForce(const SimTK::State& s, int j) const {
-  const CartRig& c = model_.carts()[j];
+SimTK::Vec2 MinimalDynamics::loopForce(const SimTK::State&, int j) const {
+  const CartData& c = carts_[j];
   // Its x component is the cart's generalized constraint force; its y component depends on the loop.
-  const double Fx = residual_[c.cart.getFirstUIndex(s)];
-  const double r_rod = c.rod.isEmptyHandle() ? 0.0 : residual_[c.rod.getFirstUIndex(s)];
-  return SimTK::Vec2(Fx, loopForceY(s, j, Fx, r_rod));
+  const double Fx = residual_[c.u_cart];
+  const double r_rod = c.u_rod >= 0 ? residual_[c.u_rod] : 0.0;
+  return SimTK::Vec2(Fx, loopForceY(j, Fx, r_rod));
 }
 
-SimTK::Vector MinimalDynamics::guideNormals(const SimTK::State& s) const {
-  const std::vector<CartRig>& carts = model_.carts();
-  SimTK::Vector n(2 * int(carts.size()));
-  for (size_t j = 0; j < carts.size(); ++j) {
-    const CartRig& c = carts[j];
-    const int uc = c.cart.getFirstUIndex(s);
-    const GuideNormals g = cartNormals(s, int(j), residual_[uc],
-                                       c.rod.isEmptyHandle() ? 0.0 : residual_[c.rod.getFirstUIndex(s)],
-                                       udot_[uc], f_body_[c.cart.getMobilizedBodyIndex()]);
+SimTK::Vector MinimalDynamics::guideNormals(const SimTK::State&) const {
+  SimTK::Vector n(2 * int(carts_.size()));
+  for (size_t j = 0; j < carts_.size(); ++j) {
+    const CartData& c = carts_[j];
+    const GuideNormals g = cartNormals(int(j), residual_[c.u_cart], c.u_rod >= 0 ? residual_[c.u_rod] : 0.0,
+                                       udot_[c.u_cart], f_body_[c.body]);
     n[2 * int(j)] = g.front;
     n[2 * int(j) + 1] = g.rear;
   }

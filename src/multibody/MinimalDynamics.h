@@ -69,14 +69,32 @@ class MinimalDynamics {
 
  private:
   bool evaluateImpl(SimTK::State& s, const MinimalCoordinates& coords, bool solve_loop, bool keep_normals);
+  // Fills each cart's r_AB from the state's crank angle and cart positions (no Simbody accessor:
+  // the crank turns about ground z, the carts slide along ground x with their origin at B).
+  void placeLoops(const SimTK::State& s);
   // Cart j's guide normals for a loop-force x component Fx, rod-pin constraint force r_rod,
-  // cart acceleration a and applied spatial force on the cart: linear in all four.
-  GuideNormals cartNormals(const SimTK::State& s, int j, double Fx, double r_rod, double a,
-                           const SimTK::SpatialVec& applied) const;
-  double loopForceY(const SimTK::State& s, int j, double Fx, double r_rod) const;
+  // cart acceleration a and applied spatial force on the cart: linear in all four (placeLoops
+  // first).
+  GuideNormals cartNormals(int j, double Fx, double r_rod, double a, const SimTK::SpatialVec& applied) const;
+  double loopForceY(int j, double Fx, double r_rod) const;
+
+  // What the per-cart passes need, read once from the model (indices, constant mass properties)
+  // or per evaluation (r_AB).
+  struct CartData {
+    int q_cart = 0, u_cart = 0, u_rod = -1;  // rod: distributed rods only
+    SimTK::MobilizedBodyIndex body;
+    int side = 1;
+    bool cam = false, massless_rod = false;
+    double mass = 0;
+    SimTK::Vec3 p_com{0};        // centre of mass from B (cart frame = ground axes)
+    SimTK::Vec3 p_pin{0};        // crank pin A in the crankshaft frame
+    SimTK::Vec3 r_AB{0};         // A -> B in ground, this evaluation
+  };
 
   const MultibodyModel& model_;
   const int k_crank_;  // column of N for the crank speed, -1 when prescribed
+  int q_crank_ = 0;
+  std::vector<CartData> carts_;
   Eigen::Vector2d nu_dot_ = Eigen::Vector2d::Zero();
   SimTK::Vector udot_, residual_, mn_[2];
   SimTK::Vector_<SimTK::SpatialVec> no_body_forces_;
