@@ -137,7 +137,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
       k["relative"] = std::max(k["relative"].get<double>(), rel);
     }
     j["reaction_self_check"] = {{"rows_checked", run.stats.self_check_rows},
-                                {"interval_rows", scene.simulation.self_check_interval},
+                                {"interval_rows", scene.selfCheckInterval()},
                                 {"columns", kinds}};
   }
   j["guide_normal_forces"] = run.guide_normals.empty() ? json(nullptr) : json(run.guide_normals);

@@ -317,7 +317,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   // Every row's reactions come from the O(n) inverse-dynamics pass (MinimalReactions.h);
   // Simbody's constrained solve runs at every k-th row (simulation.self_check_interval, from row
   // 0) as the reference: accelerations, guide normal forces and every reaction column compared.
-  const std::size_t check_interval = std::size_t(std::max(1, sc.simulation.self_check_interval));
+  const std::size_t check_interval = std::size_t(std::max(1, sc.selfCheckInterval()));
   {
     const std::vector<std::string> columns = model.reactionColumns();
     for (std::size_t i = 1; i < columns.size(); ++i) run.stats.reaction_self_check.push_back({columns[i], 0.0, 0.0});

@@ -1,5 +1,7 @@
 #include "scene/Scene.h"
 
+#include <algorithm>
+
 namespace rollerdyn {
 
 double Scene::motorSideInertia() const {
@@ -60,6 +62,11 @@ const char* toString(FlywheelLocation l) {
 const char* toString(ReducedIntegrator i) { return i == ReducedIntegrator::Baranov ? "baranov" : "cvode"; }
 const char* toString(DriveType d) { return d == DriveType::Cam ? "cam" : "crank"; }
 const char* toString(Formulation f) { return f == Formulation::Minimal ? "minimal" : "constrained"; }
+int Scene::selfCheckInterval() const {
+  if (simulation.self_check_interval > 0) return simulation.self_check_interval;
+  return std::max(50, 10 * carts.count);
+}
+
 const char* toString(GuideNormalForce g) { return g == GuideNormalForce::Algebraic ? "algebraic" : "lagged"; }
 const char* toString(ReducedGuideNormals g) {
   return g == ReducedGuideNormals::Kinetostatic ? "kinetostatic" : "quasi_static";

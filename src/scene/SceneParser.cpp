@@ -156,7 +156,7 @@ SimulationSettings readSimulation(const Reader& in) {
   }
   s.output_step = in.number("simulation.output_step");
   s.reactions = in.flag("simulation.reactions");
-  s.self_check_interval = in.integer("simulation.self_check_interval");
+  s.self_check_interval = in.has("simulation.self_check_interval") ? in.integer("simulation.self_check_interval") : 0;
   if (s.output_step > s.t_end) {
     const std::string t = formatNumber(s.t_end), dt = formatNumber(s.output_step);
     if (blameSecond(in.doc(), "simulation.output_step", "simulation.t_end")) {

@@ -56,9 +56,10 @@ std::vector<KeySpec> buildSchema() {
       {"simulation.reactions", KeyKind::Flag, "-", P::Optional, anyFinite(), 1.0, "", {},
        "compute the joint reaction forces at every output row (reactions.csv, joint loads); "
        "false gives the motion and drive torques only, at a fraction of the multibody cost"},
-      integer("simulation.self_check_interval", P::Optional, between(1.0, true, 1e9, true), 50.0,
+      integer("simulation.self_check_interval", P::Conditional, between(1.0, true, 1e9, true), 0.0,
               "minimal formulation: every k-th output row is also solved by Simbody's constrained "
-              "solve and compared (accelerations, guide normal forces, reaction columns)"),
+              "solve and compared (accelerations, guide normal forces, reaction columns); default "
+              "max(50, 10 x carts.count)"),
       number("simulation.constraint_tolerance", "-", P::Conditional,
              between(0.0, false, 1.0, false), 0.0,
              "constraint projection tolerance (default: simulation.accuracy)"),
