@@ -21,6 +21,20 @@ nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : 
 
 }  // namespace
 
+std::string guideNormalsDescription(const Scene& scene, bool reduced_model) {
+  if (reduced_model)
+    return scene.reduced.guide_normals == ReducedGuideNormals::Kinetostatic
+               ? "kinetostatic: guide reactions with the carts' and rods' inertial forces, solved with the motion "
+                 "(the multibody model's algebraic law)"
+               : "quasi-static: the papers' cart statics without inertial forces (Loveikin, Pochka, Romasevych "
+                 "(2018) eq. (14)-(25))";
+  if (!scene.hasGuideFriction()) return "";
+  if (scene.loads.guide_normal_force == GuideNormalForce::Algebraic)
+    return "algebraic: the friction uses the guide reactions of the same instant, solved with the motion";
+  return fmt("lagged: the friction uses the guide reactions followed with a time constant tau_N = %.3g s",
+             scene.loads.guide_friction_lag);
+}
+
 std::vector<std::string> lockingWarnings(const Scene& scene) {
   std::vector<std::string> w;
   const LockingMargins m = lockingMargins(scene);

@@ -29,6 +29,11 @@ inline constexpr double kLockingIndexWarning = 0.1;        // κ [-]
 inline constexpr double kTransmissionAngleWarning = 40.0;  // μ_min [deg]
 inline constexpr double kFrictionWorkWarning = 0.05;       // |W_qs/W_kin - 1| [-]
 
+// The normal force of the guide friction (and, for the reduced model, of its reactions) in words,
+// for every result (RunResult::guide_normals): the multibody model's law (empty without guide
+// friction) or the reduced model's statics.
+std::string guideNormalsDescription(const Scene& scene, bool reduced_model);
+
 // Scene-level warnings (self-locking, dead centre), for `check` and every run's summary.
 std::vector<std::string> lockingWarnings(const Scene& scene);
 

@@ -164,6 +164,16 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   const DriveSizing sizing =
       computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN);
   j["sizing"] = sizingJson(sizing);
+  // Where the joint loads come from, and what is missing: the reduced model computes the cart
+  // statics only (guide rollers, rod end), not the crank pin or the main bearing.
+  if (run.model == "reduced" && !run.reactions.columns.empty())
+    j["sizing"]["joints_basis"] =
+        std::string(scene.reduced.guide_normals == ReducedGuideNormals::QuasiStatic
+                        ? "reduced model, quasi-static cart statics (the papers': no inertial forces)"
+                        : "reduced model, kinetostatic cart statics (the carts' and rods' inertial forces included)") +
+        "; not computed by the reduced model: crank pin, main bearing (run the multibody model)";
+  else if (!run.reactions.columns.empty())
+    j["sizing"]["joints_basis"] = "multibody model, joint reaction forces";
   if (!turning) {
     not_meaningful.push_back("sizing.flywheel");
     not_meaningful.push_back("sizing.motor.energy_per_revolution");

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "analysis/FrictionChecks.h"
 #include "multibody/CamFollower.h"
 #include "multibody/ElasticCoupling.h"
 #include "multibody/EnergyMeter.h"
@@ -248,14 +249,7 @@ SimTK::State MultibodyModel::initialState() const {
 bool MultibodyModel::hasFrictionLagStates() const { return friction_force_ && friction_force_->lagged(); }
 
 std::string MultibodyModel::guideNormalsDescription() const {
-  if (!friction_force_) return "";
-  if (!friction_force_->lagged())
-    return "algebraic: the friction uses the guide reactions of the same instant, solved with the motion";
-  char buf[200];
-  std::snprintf(buf, sizeof buf,
-                "lagged: the friction uses the guide reactions followed with a time constant tau_N = %.3g s",
-                scene_.loads.guide_friction_lag);
-  return buf;
+  return friction_force_ ? rollerdyn::guideNormalsDescription(scene_, false) : "";
 }
 
 void MultibodyModel::auxiliaryRates(const SimTK::State& s, const SimTK::Vector& guide_normals_now,

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "analysis/FrictionChecks.h"
 #include "physics/CamMotionLaw.h"
 #include "physics/KlossMotor.h"
 #include "physics/RollerLoads.h"
@@ -39,13 +40,7 @@ ReducedModel::ReducedModel(const Scene& scene)
   scratch_carts_.reserve(n);
 }
 
-std::string ReducedModel::guideNormalsDescription() const {
-  if (kinetostatic_)
-    return "kinetostatic: guide reactions with the carts' and rods' inertial forces, solved with the motion "
-           "(the multibody model's algebraic law)";
-  return "quasi-static: the papers' cart statics without inertial forces (Loveikin, Pochka, Romasevych (2018) "
-         "eq. (14)-(25))";
-}
+std::string ReducedModel::guideNormalsDescription() const { return rollerdyn::guideNormalsDescription(scene_, true); }
 
 void ReducedModel::rodLoadAtHinge(int j, const SliderCrankPose& p, double w, double& V0, double& V1) const {
   V0 = V1 = 0.0;
