@@ -17,8 +17,9 @@
 //   ε = (ε0 + Σ w_j·α_j) / E,  E = 1 - Σ w_j·β_j
 // (the "equation in ε", piecewise linear in the signs): one solve per sign pattern. The signs are
 // then checked against the solution and the wrong ones flipped; with the small f of guide rollers
-// the first pattern (the signs of the normal forces without friction) is nearly always right, and
-// a flip settles in one more pass.
+// the first pattern (the signs of the normal forces without friction) is wrong only where a normal
+// force crosses zero, and a flip settles it in one more pass (test: at most 6 passes over 500
+// random loops with f up to 0.1).
 //
 // When the loop has no unique solution. The map F -> c·|N(F)| is a contraction when
 // |c_j|·(|n_F_j| + |n_eps_j|·Σ|w|) < 1, i.e. for f well below the self-locking limit
