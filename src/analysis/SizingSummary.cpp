@@ -293,6 +293,7 @@ std::string sizingText(const json& summary) {
          "(simulation.reactions: false)\n";
     return o.str();
   }
+  if (at(s, "joints_basis").is_string()) o << "  joint loads from the " << str(at(s, "joints_basis")) << "\n";
   o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
   const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearing"};
   for (std::size_t k = 0; k < 5; ++k) {

@@ -1,5 +1,6 @@
 #include "analysis/Summary.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -128,6 +129,29 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["formulation_self_check"] = run.stats.formulation_self_check >= 0  // README, "Multibody formulations"
                                     ? num("formulation_self_check", run.stats.formulation_self_check)
                                     : json(nullptr);
+  // The O(n) reaction columns against Simbody's constrained solve, per column kind (the largest
+  // over the carts): absolute [N, N·m] and relative to the column's largest value.
+  if (run.stats.reaction_self_check.empty()) {
+    j["reaction_self_check"] = nullptr;
+  } else {
+    json kinds = json::object();
+    for (const ReactionCheck& c : run.stats.reaction_self_check) {
+      std::string kind = c.column;
+      const std::size_t us = kind.find_last_of('_');
+      if (us != std::string::npos && us + 1 < kind.size() &&
+          kind.find_first_not_of("0123456789", us + 1) == std::string::npos)
+        kind = kind.substr(0, us);
+      const double rel = c.max_value > 0 ? c.max_difference / c.max_value : c.max_difference;
+      json& k = kinds[kind];
+      if (k.is_null()) k = {{"max_difference", 0.0}, {"relative", 0.0}};
+      k["max_difference"] = std::max(k["max_difference"].get<double>(), c.max_difference);
+      k["relative"] = std::max(k["relative"].get<double>(), rel);
+    }
+    j["reaction_self_check"] = {{"rows_checked", run.stats.self_check_rows},
+                                {"interval_rows", scene.selfCheckInterval()},
+                                {"columns", kinds}};
+  }
+  j["guide_normal_forces"] = run.guide_normals.empty() ? json(nullptr) : json(run.guide_normals);
   j["steps"] = run.stats.steps;
   j["realizations"] = run.stats.realizations;
   j["jacobian_evaluations"] = run.stats.jacobian_evaluations >= 0 ? json(run.stats.jacobian_evaluations) : json(nullptr);
@@ -170,6 +194,16 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["load"] = loadWorkJson(load);
   if (!j.contains("warnings")) j["warnings"] = json::array();
   if (!load.warning.empty()) j["warnings"].push_back(load.warning);
+  // Where the joint loads come from, and what is missing: the reduced model computes the cart
+  // statics only (guide rollers, rod end), not the crank pin or the main bearing.
+  if (run.model == "reduced" && !run.reactions.columns.empty())
+    j["sizing"]["joints_basis"] =
+        std::string(scene.reduced.guide_normals == ReducedGuideNormals::QuasiStatic
+                        ? "reduced model, quasi-static cart statics (the papers': no inertial forces)"
+                        : "reduced model, kinetostatic cart statics (the carts' and rods' inertial forces included)") +
+        "; not computed by the reduced model: crank pin, main bearing (run the multibody model)";
+  else if (!run.reactions.columns.empty())
+    j["sizing"]["joints_basis"] = "multibody model, joint reaction forces";
   if (!turning) {
     not_meaningful.push_back("sizing.flywheel");
     not_meaningful.push_back("sizing.motor.energy_per_revolution");
@@ -269,6 +303,8 @@ std::string summaryText(const nlohmann::json& s) {
   o << "energy       residual " << f(at("energy", "residual"), "%.3g") << " J (relative "
     << f(at("energy_residual_rel"), "%.2e") << ")\n";
   o << "constraints  max error " << f(at("constraint_error_max"), "%.2e") << "\n";
+  if (at("guide_normal_forces").is_string())
+    o << "guide normal forces  " << str(at("guide_normal_forces")) << "\n";
   o << "steps        " << str(at("steps")) << " steps, " << str(at("realizations"))
     << " right-hand-side evaluations\n";
   o << "cpu          " << f(at("cpu_seconds"), "%.3g") << " s for "

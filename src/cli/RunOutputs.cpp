@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "analysis/FrictionChecks.h"
 #include "analysis/Summary.h"
 #include "cli/Commands.h"
 #include "cli/Progress.h"
@@ -42,6 +43,7 @@ nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const s
   summary["scene_path"] = absolutePath(scene_path);
   summary["overrides"] = overrides;
   for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
+  addFrictionWarnings(scene, run, summary);  // self-locking, dead centre, quasi-static friction work
   for (const auto& w : summary["warnings"])  // the load's and the plausibility warnings
     if (w.is_string()) std::cerr << "rollerdyn: warning: " << w.get<std::string>() << '\n';
   const std::vector<std::string> first_estimate = addResonanceWarnings(scene, summary);  // appends to summary["warnings"]

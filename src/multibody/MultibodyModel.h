@@ -94,6 +94,14 @@ class MultibodyModel {
   // z entries of the motor element (law states, brake work): the first entries of the force
   // subsystem's z, before the guide-friction normal forces and the energy integrals.
   int motorStateCount() const;
+  // The guide-friction element (precondition: hasGuideFriction()).
+  const GuideFriction& frictionElement() const { return *friction_force_; }
+  // True when the guide friction carries normal-force lag states (loads.guide_friction.normal_force
+  // = lagged); false without friction or with the algebraic law.
+  bool hasFrictionLagStates() const;
+  // The normal force of the guide friction in words, for every multibody result
+  // (RunResult::guide_normals); empty without guide friction.
+  std::string guideNormalsDescription() const;
   // Time derivatives of the force subsystem's auxiliary states z (energy audit, guide-friction
   // normal-force lags; indexed like forces().getZ(s)) for the guide normal forces
   // `guide_normals_now` (N_front, N_rear per cart; ignored without friction). State realized to
@@ -106,16 +114,24 @@ class MultibodyModel {
   SimTK::Vector frictionPowerGradient(const SimTK::State& s) const;
   // Adds every force element's applied forces to the arrays (sized for the matter subsystem),
   // element by element in the force subsystem's order: the sums Simbody forms at Dynamics stage,
-  // without realizing the system to Dynamics. State realized to Velocity.
+  // without realizing the system to Dynamics. State realized to Velocity. include_friction =
+  // false leaves the guide friction out (the minimal formulation adds it once its loop is solved).
   void addAppliedForces(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
-                        SimTK::Vector_<SimTK::Vec3>& particle_forces, SimTK::Vector& mobility_forces) const;
+                        SimTK::Vector_<SimTK::Vec3>& particle_forces, SimTK::Vector& mobility_forces,
+                        bool include_friction = true) const;
 
   // A state assembled exactly at crank angle φ2, crank speed φ̇2 and coupling twist φ1 - φ2
   // (closed-form slider-crank positions and velocities, then a projection that only removes
-  // round-off), with consistent guide-friction normal forces. Realized to Acceleration.
+  // round-off), with consistent guide-friction normal forces. Realized to Acceleration (Simbody's
+  // constrained solve: dense in the constraints; the minimal formulation uses closedFormState).
   SimTK::State assembledState(double crank_angle, double crank_speed, double twist) const;
-  // The scene's initial state.
+  // The scene's initial state (assembledState).
   SimTK::State initialState() const;
+  // The same configuration from the closed forms alone (MinimalCoordinates.h: exact to round-off,
+  // no projection), realized to Velocity; O(n). The motor's states are set as in assembledState
+  // (startMotor); the guide-friction normal forces (lag states or algebraic) are left at zero:
+  // the minimal formulation sets them from its friction loop.
+  SimTK::State closedFormState(double crank_angle, double crank_speed, double twist) const;
 
   // Output columns; see src/analysis/RunResult.h for their meaning.
   std::vector<std::string> timeseriesColumns() const;
@@ -142,6 +158,12 @@ class MultibodyModel {
   EnergySnapshot energy(const SimTK::State& s) const;  // realized to Dynamics
 
  private:
+  // closedFormState without the motor's states.
+  SimTK::State closedFormKinematics(double crank_angle, double crank_speed, double twist) const;
+  // The motor's own states at t = 0 (steady when the motor ran before, MotorLaw::initialState),
+  // then the supply's events due at t = 0 (a speed trigger the initial speed has passed already).
+  // State realized to Velocity on return; nothing without a motor.
+  void startMotor(SimTK::State& s) const;
   void buildDrive();
   void buildCarts();
   void buildForces();

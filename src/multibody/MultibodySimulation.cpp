@@ -4,8 +4,10 @@
 #include <cmath>
 #include <ctime>
 #include <sstream>
+#include <stdexcept>
 
 #include "analysis/OutputGrid.h"
+#include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
 #include "multibody/IntegratorFactory.h"
 #include "multibody/MinimalSimulation.h"
@@ -56,11 +58,17 @@ double locateSpeedTrigger(const MultibodyModel& model, double t0, const SimTK::V
 RunResult simulateMultibody(const MultibodyModel& model, const RunControl& control) {
   const Scene& sc = model.scene();
   if (sc.simulation.formulation == Formulation::Minimal) return simulateMinimal(model, control);
+  if (model.hasGuideFriction() && !model.hasFrictionLagStates())
+    throw std::invalid_argument(
+        "multibody model: loads.guide_friction.normal_force = algebraic needs simulation.formulation = minimal "
+        "(the constrained formulation knows the guide reactions only after Simbody's constrained solve); "
+        "use loads.guide_friction.normal_force = lagged");
   const SimTK::MultibodySystem& system = model.system();
   RunResult run;
   run.model = "multibody";
   run.integrator = sc.simulation.integrator;
   run.effects = sc.effects();
+  run.guide_normals = model.guideNormalsDescription();
   run.timeseries.columns = model.timeseriesColumns();
   const bool reactions = sc.simulation.reactions;
   if (reactions) run.reactions.columns = model.reactionColumns();
@@ -95,6 +103,12 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
 
   StallDetector stall(sc.hasMotor(), sc.motor.omega_sync / sc.reducer.ratio);
   auto fullSupply = [&](const SimTK::State& s) { return !motor || Supply::fullSupply(motor->phase(s)); };
+  RestDetector rest(!sc.hasMotor() && !model.options().prescribe_crank_speed, sc.loads.velocity_smoothing);
+  std::vector<double> cart_speeds(model.carts().size());
+  auto atRest = [&](double t, const SimTK::State& s) {
+    for (size_t j = 0; j < cart_speeds.size(); ++j) cart_speeds[j] = model.carts()[j].v(s);
+    return rest.update(t, cart_speeds, int(cart_speeds.size()));
+  };
   std::vector<double> ts_row, re_row;
   auto record = [&](const SimTK::State& s) {
     system.realize(s, SimTK::Stage::Acceleration);
@@ -121,6 +135,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   if (fullSupply(integ->getState()))
     stall.update(integ->getTime(), model.crankAngle(integ->getState()), model.crankSpeed(integ->getState()),
                  model.motorSpeed(integ->getState()));
+  atRest(integ->getTime(), integ->getState());
   const SimTK::State* last_row = &integ->getState();
   SimTK::Vector y_prev = integ->getState().getY(), ydot_prev = integ->getState().getYDot();
   double t_prev = integ->getTime();
@@ -166,6 +181,10 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
       } else if (fullSupply(s) && stall.update(t_out, model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s))) {
         run.stats.complete = false;
         run.stats.status = stall.status();
+        stop = true;
+      } else if (atRest(t_out, s)) {
+        run.stats.complete = false;
+        run.stats.status = rest.status();
         stop = true;
       } else {
         if (control.progress) control.progress(t_out, t_end);

@@ -14,6 +14,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "analysis/OutputGrid.h"
+#include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
 #include "motor/MotorColumns.h"
 #include "motor/Stiffness.h"
@@ -86,6 +87,8 @@ struct CvodeUserData {
   double trigger_speed = 0;            // rotor speed of a speed-triggered event [rad/s]
   long rhs_evals = 0;
   std::string last_error;
+  std::string friction_failure;  // the first evaluation whose guide-friction loop failed, in words
+  double friction_failure_phi = 0;
   double rtol = 0;
   Eigen::VectorXd atol;  // per state, see runCvode
 };
@@ -111,8 +114,18 @@ int cvodeRhs(realtype t, N_Vector y, N_Vector ydot, void* user) {
   auto* u = static_cast<CvodeUserData*>(user);
   const int n = u->model->stateSize();
   realtype* d = NV_DATA_S(ydot);
-  u->model->derivatives(t, *u->phase, NV_DATA_S(y), d);  // allocation-free
   ++u->rhs_evals;
+  if (!u->model->derivatives(t, *u->phase, NV_DATA_S(y), d)) {  // allocation-free
+    // A cart locks at this trial state: recoverable (a smaller step may stay clear of it); where
+    // it cannot, CVODE gives up and the run's status names the cause.
+    if (u->friction_failure.empty()) {
+      ModelEvaluation e;
+      u->model->evaluate(t, *u->phase, NV_DATA_S(y), e, false);
+      u->friction_failure = describeLoopFailure(e.friction_loop);
+      u->friction_failure_phi = NV_DATA_S(y)[u->model->iPhi()];
+    }
+    return 1;
+  }
   for (int i = 0; i < n; ++i)
     if (!std::isfinite(d[i])) return 1;  // recoverable: CVODE retries with a smaller step
   return 0;
@@ -266,6 +279,8 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   if (events) arm(times.front());
 
   StallDetector stall(s.motor.enabled, syncCrankSpeed(s));  // the rule both models share
+  RestDetector rest(!s.motor.enabled, s.loads.velocity_smoothing);  // likewise
+  std::vector<double> cart_speeds(m.cartCount());
   const std::clock_t c0 = std::clock();
   res.timeseries.rows.reserve(times.size());
   res.reactions.rows.reserve(times.size());
@@ -294,6 +309,10 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
       }
       if (flag < 0) {
         res.stats.complete = false;
+        if (!ud.friction_failure.empty()) {
+          res.stats.status = statusAt("the run stopped", tret) + ": the " + ud.friction_failure;
+          break;
+        }
         char* name = CVodeGetReturnFlagName(flag);
         res.stats.status = std::string("integrator failure at t = ") + std::to_string(tret) +
                            " s: " + (name ? name : "?") + " " + ud.last_error;
@@ -304,10 +323,21 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
     }
     y_last = ym;
     m.evaluate(t, phase, y_last.data(), e, true);
+    if (e.friction_loop.status != LoopStatus::Solved) {
+      res.stats.complete = false;
+      res.stats.status = statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop);
+      break;
+    }
     appendRows(m, t, e, res);
     if (Supply::fullSupply(phase) && stall.update(t, e.phi_crank, e.omega_crank, e.omega_motor)) {
       res.stats.complete = false;
       res.stats.status = stall.status();
+      break;
+    }
+    for (int j = 0; j < m.cartCount(); ++j) cart_speeds[j] = e.carts[j].pose.dx_B * e.omega_crank;
+    if (rest.update(t, cart_speeds, m.cartCount())) {
+      res.stats.complete = false;
+      res.stats.status = rest.status();
       break;
     }
   }
@@ -325,6 +355,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   if (m.iBrakeWork() >= 0) res.energy.brake_dissipation = y_last(m.iBrakeWork());
   res.energy.kinetic_final = m.kineticEnergy(y_last);
   res.energy.potential_final = m.potentialEnergy(y_last);
+  if (m.checksFrictionWork()) res.friction_work_kinetostatic = y_last(m.iFrictionWorkKinetostatic());
   return res;
 }
 
@@ -350,7 +381,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
   double phi = s.initial.crank_angle;
   double w = std::max(s.initial.crank_speed, 0.0);  // the scheme only marches forward in φ
   double t = 0.0;
-  double W_motor = 0.0, W_friction = 0.0, W_load = 0.0;
+  double W_motor = 0.0, W_friction = 0.0, W_load = 0.0, W_friction_kinetostatic = 0.0;
 
   Eigen::VectorXd y(m.stateSize());
   y.setZero();
@@ -385,6 +416,11 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     yi(m.iOmega()) = w;
     const ModelEvaluation e = m.evaluate(yi);
     ++res.stats.realizations;
+    if (e.friction_loop.status != LoopStatus::Solved) {
+      res.stats.complete = false;
+      res.stats.status = statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop);
+      break;
+    }
     const double M = e.motor_torque - e.load_torque;  // M_p(ω_i) - M_o(φ_i)
     const double J_next = m.reducedInertia(phi + dphi);
     double w_next;
@@ -406,6 +442,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     const double eps = (w_next - w) / (t_next - t);        // Loveikin and Pochka (2007) eq. (11)
     // Work over the step by the same left-point rule as the scheme: dW = (force·x_B')·Δφ.
     W_motor += e.motor_torque * dphi;
+    if (w > 0.0) W_friction_kinetostatic += e.friction_power_kinetostatic / w * dphi;  // P/ω·Δφ
     for (int j = 0; j < m.cartCount(); ++j) {
       const CartEvaluation& c = e.carts[j];
       const double sigma = s.carts.side[j];
@@ -432,6 +469,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
   res.energy.load_work = W_load;
   res.energy.kinetic_final = m.kineticEnergy(y);
   res.energy.potential_final = m.potentialEnergy(y);
+  if (m.checksFrictionWork()) res.friction_work_kinetostatic = W_friction_kinetostatic;
   return res;
 }
 
@@ -444,6 +482,7 @@ RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> la
   RunResult res;
   res.model = "reduced";
   res.effects = scene.effects();
+  res.guide_normals = model.guideNormalsDescription();
   setupTables(model, res);
   if (scene.reduced.integrator == ReducedIntegrator::Baranov) {
     res.integrator = "baranov";

@@ -1,5 +1,6 @@
 #include "scene/Scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rollerdyn {
@@ -76,5 +77,14 @@ double InductionMotor::phaseVoltage() const { return voltage / std::sqrt(3.0); }
 double InductionMotor::supplyAngularFrequency() const { return 2.0 * M_PI * frequency; }
 
 const char* toString(Formulation f) { return f == Formulation::Minimal ? "minimal" : "constrained"; }
+int Scene::selfCheckInterval() const {
+  if (simulation.self_check_interval > 0) return simulation.self_check_interval;
+  return std::max(50, 10 * carts.count);
+}
+
+const char* toString(GuideNormalForce g) { return g == GuideNormalForce::Algebraic ? "algebraic" : "lagged"; }
+const char* toString(ReducedGuideNormals g) {
+  return g == ReducedGuideNormals::Kinetostatic ? "kinetostatic" : "quasi_static";
+}
 
 }  // namespace rollerdyn

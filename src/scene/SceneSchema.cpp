@@ -56,6 +56,10 @@ std::vector<KeySpec> buildSchema() {
       {"simulation.reactions", KeyKind::Flag, "-", P::Optional, anyFinite(), 1.0, "", {},
        "compute the joint reaction forces at every output row (reactions.csv, joint loads); "
        "false gives the motion and drive torques only, at a fraction of the multibody cost"},
+      integer("simulation.self_check_interval", P::Conditional, between(1.0, true, 1e9, true), 0.0,
+              "minimal formulation: every k-th output row is also solved by Simbody's constrained "
+              "solve and compared (accelerations, guide normal forces, reaction columns); default "
+              "max(50, 10 x carts.count)"),
       number("simulation.constraint_tolerance", "-", P::Conditional,
              between(0.0, false, 1.0, false), 0.0,
              "constraint projection tolerance (default: simulation.accuracy)"),
@@ -246,8 +250,13 @@ std::vector<KeySpec> buildSchema() {
              "velocity, the energy compaction dissipates (docs/loads.md)"),
       number("loads.guide_friction.coefficient", "-", P::Optional,
              between(0.0, true, 1.0, false), 0.0, "f, reduced guide-roller friction coefficient"),
+      choice("loads.guide_friction.normal_force", P::Conditional, {"algebraic", "lagged"}, "",
+             "normal force of the multibody model's guide friction: the guide reaction of the same "
+             "instant, solved with the motion (algebraic; minimal formulation) or followed with the "
+             "lag tau_N (lagged); default algebraic with the minimal formulation, lagged with the "
+             "constrained one"),
       number("loads.guide_friction.normal_force_lag", "s", P::Optional, between(0.0, false, 1.0, true),
-             2e-3, "tau_N, time constant of the friction normal force following the guide reaction (multibody)"),
+             2e-3, "tau_N, time constant of the lagged friction normal force following the guide reaction (multibody)"),
       number("loads.gravity", "m/s²", P::Optional, nonNegative(), 9.81,
              "g; 0 = no gravity"),
       number("loads.velocity_smoothing", "m/s", P::Optional, positive(), 1e-3,
@@ -282,6 +291,10 @@ std::vector<KeySpec> buildSchema() {
              "integrator of the reduced model"),
       number("reduced.baranov_step_deg", "deg", P::Optional, between(0.0, false, 10.0, true),
              1.0, "crank-angle step of the Baranov scheme"),
+      choice("reduced.guide_normals", P::Optional, {"kinetostatic", "quasi_static"}, "kinetostatic",
+             "guide normal forces of the reduced model (friction, reactions): with the cart's and "
+             "rod's inertial forces, solved with the motion (kinetostatic), or the papers' cart "
+             "statics without them (quasi_static)"),
   };
 }
 

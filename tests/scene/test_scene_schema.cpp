@@ -77,6 +77,7 @@ simulation:
   formulation: constrained
   output_step: 0.01
   reactions: false
+  self_check_interval: 7
   constraint_tolerance: 1.0e-7
   steady_window_revolutions: 3
 initial:
@@ -172,6 +173,7 @@ loads:
   roller_force_direction: as_printed
   guide_friction:
     coefficient: 0.02
+    normal_force: lagged
     normal_force_lag: 0.004
   gravity: 9.8
   velocity_smoothing: 0.01
@@ -180,6 +182,7 @@ reduced:
   kinematics: truncated
   integrator: baranov
   baranov_step_deg: 2
+  guide_normals: quasi_static
 drive:
   type: crank
 cam:
@@ -221,6 +224,9 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_EQ(s.simulation.integrator, "CPodes");
   EXPECT_DOUBLE_EQ(s.simulation.output_step, 0.01);
   EXPECT_FALSE(s.simulation.reactions);
+  EXPECT_EQ(s.simulation.self_check_interval, 7);
+  EXPECT_EQ(s.loads.guide_normal_force, GuideNormalForce::Lagged);
+  EXPECT_EQ(s.reduced.guide_normals, ReducedGuideNormals::QuasiStatic);
   EXPECT_DOUBLE_EQ(s.simulation.constraint_tolerance, 1e-7);
   EXPECT_DOUBLE_EQ(s.simulation.steady_window_revolutions, 3.0);
   EXPECT_DOUBLE_EQ(s.initial.crank_angle, 45 * deg);

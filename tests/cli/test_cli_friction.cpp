@@ -1,0 +1,47 @@
+// What the command line tells about the guide friction: `check` names the rod angle, the
+// transmission angle and the self-locking index and warns near dead centre (r/l = 0.995 was
+// accepted silently before); every reduced result names its guide normal forces; a quasi-static
+// reduced run whose friction work is off warns on stderr and in summary.json.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/CliTestSupport.h"
+
+namespace rollerdyn {
+namespace {
+
+using namespace test;
+
+TEST(CliFriction, CheckWarnsNearDeadCentreAndPrintsTheMargins) {
+  const auto r = runRollerdyn({"check", model("balanced-4cart.yaml"), "--set", "rods.length=0.201"}, 60);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("smallest transmission angle 5.72°"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("self-locking index"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("warning: crank-slider close to dead centre: r/l = 0.995"), std::string::npos) << r.err;
+  // The shipped geometry: margins printed, no warning.
+  const auto ok = runRollerdyn({"check", model("balanced-4cart.yaml")}, 60);
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("self-locking index"), std::string::npos) << ok.out;
+  EXPECT_EQ(ok.err.find("warning"), std::string::npos) << ok.err;
+}
+
+TEST(CliFriction, ReducedResultsNameTheirNormalForcesAndWarnWhenQuasiStaticIsOff) {
+  TempDir dir("friction");
+  const auto r = runRollerdyn({"simulate", model("balanced-4cart.yaml"), "--model", "reduced", "--set",
+                               "rods.length=0.2105263157894737", "--set", "reduced.guide_normals=quasi_static",
+                               "--out", dir.str()},
+                              120);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("guide normal forces  quasi-static"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("quasi-static normal forces (no inertial forces): its friction work"), std::string::npos) << r.err;
+  const nlohmann::json s = nlohmann::json::parse(slurp(dir.path() / "summary.json"));
+  EXPECT_GT(s["guide_friction"]["friction_work_deviation"].get<double>(), 0.3);
+  EXPECT_NE(s["guide_normal_forces"].get<std::string>().find("quasi-static"), std::string::npos);
+  bool in_json = false;
+  for (const auto& w : s["warnings"]) in_json = in_json || w.get<std::string>().find("friction work") != std::string::npos;
+  EXPECT_TRUE(in_json);
+}
+
+}  // namespace
+}  // namespace rollerdyn
