@@ -42,7 +42,8 @@ class RestDetector {
     return t - since_ >= kWindow;
   }
 
-  // The status line both models write.
+  // The status line both models write; it starts with "the machine came to rest", which
+  // motionOfStatus() reads back.
   std::string status() const {
     char buf[400];
     std::snprintf(buf, sizeof buf,
@@ -51,6 +52,10 @@ class RestDetector {
                   "smoothed law only lets it creep)",
                   since_, v_s_, kWindow);
     return buf;
+  }
+  // "at_rest" or "" from a run's status line.
+  static std::string motionOfStatus(const std::string& status) {
+    return status.rfind("the machine came to rest", 0) == 0 ? "at_rest" : "";
   }
 
  private:

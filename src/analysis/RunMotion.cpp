@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
+#include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
 #include "analysis/StartUp.h"
 #include "motor/SharedMotorLaw.h"
@@ -11,13 +14,31 @@ namespace rollerdyn {
 
 std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMetrics& m, double window_advance,
                            bool steady_reached) {
-  // The models end a hopeless run with the detector's own status line (StallDetector.h); the
-  // same rule applied to the rows catches a table that was not produced by a model run.
+  // One word from three rules, each of which ends a run with its own status line: the stall rule
+  // (StallDetector.h: a motor at the rated supply that holds the drive at rest or is driven
+  // backwards, "stalled"; swings that no longer grow, "rocking"), the held rule below (a motor
+  // connected in a stage the stall rule skips that never got the drive going, "stalled"), and the
+  // rest rule (RestDetector.h: no motor, friction and loads have stopped the machine, "at_rest").
+  // The models end a run with the detector's status line; the same rules applied to the rows catch
+  // a table that was not produced by a model run.
   if (!run.stats.complete) {
-    const std::string from_status = StallDetector::motionOfStatus(run.stats.status);
+    std::string from_status = StallDetector::motionOfStatus(run.stats.status);
+    if (from_status.empty()) from_status = RestDetector::motionOfStatus(run.stats.status);
     if (!from_status.empty()) return from_status;
   }
   const Table& ts = run.timeseries;
+  if (!sc.motor.enabled && ts.has("t") && ts.has("v_cart_1")) {
+    // The rest rule on the rows: every cart slower than v_s for RestDetector::kWindow.
+    RestDetector rest(true, sc.loads.velocity_smoothing);
+    std::vector<int> iv;
+    for (int j = 1; ts.has("v_cart_" + std::to_string(j)); ++j) iv.push_back(ts.index("v_cart_" + std::to_string(j)));
+    std::vector<double> v(iv.size());
+    const int it = ts.index("t");
+    for (const auto& row : ts.rows) {
+      for (std::size_t j = 0; j < iv.size(); ++j) v[j] = row[iv[j]];
+      if (rest.update(row[it], v, int(v.size()))) return "at_rest";
+    }
+  }
   if (sc.motor.enabled && sc.reducer.ratio > 0 && ts.has("t") && ts.has("omega_crank") && ts.has("phi_crank")) {
     StallDetector d(true, sc.motor.omega_sync / sc.reducer.ratio);
     const int it = ts.index("t"), ip = ts.index("phi_crank"), ic = ts.index("omega_crank");

@@ -10,7 +10,9 @@
 //              (its speed still changes sign in the metrics window): run longer,
 //   "turning"  the crank turns one way: per-revolution metrics (δ, H, k_p, energy per revolution,
 //              the flywheel size) have a meaning,
-//   "at_rest", "unknown" (no finite crank speed in the window).
+//   "at_rest"  no motor, and friction and loads have brought the machine to rest (RestDetector.h:
+//              the run ended early), or the crank never moved,
+//   "unknown"  no finite crank speed in the window.
 // And, for a stalled run, why: the motor's starting torque and its breakdown torque, reduced to
 // the crank, against the load torque at the start angle and averaged over a revolution.
 #pragma once

@@ -266,6 +266,7 @@ std::string summaryText(const nlohmann::json& s) {
     << (motion == "turning"   ? "  (the crank turns one way)"
         : motion == "rocking" ? "  (the crank swings back and forth instead of turning)"
         : motion == "stalled" ? "  (the motor stalled; why: see status)"
+        : motion == "at_rest" ? "  (the machine is at rest: with the motor off, friction and loads hold it)"
         : motion == "starting" ? "  (the crank got going but the run ended before it settled: run longer, "
                                  "simulation.t_end; no sizing verdict applies yet)"
                               : "")

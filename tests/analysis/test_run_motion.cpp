@@ -167,3 +167,36 @@ TEST(RunMotion, ADriveHeldInStarUntilTheRunEndsHasNotStarted) {
   const json off = makeSummary(s, supplyRun({{4.0, 10.0, 1.0}, {2.0, 1e-3, 0.0}}));
   EXPECT_NE(off["motion"], "stalled") << off["status"];
 }
+
+// A machine without a motor that friction has stopped is "at_rest" by the same rule the models
+// end such a run with (RestDetector.h): every cart slower than v_s for a second, read from the rows
+// of a table whose run completed, and from the detector's status line of a run it ended.
+TEST(RunMotion, AMachineThatFrictionStoppedIsAtRest) {
+  Scene s = motorScene();
+  s.motor.enabled = false;
+  s.loads.velocity_smoothing = 1e-3;
+  RunResult r;
+  r.model = "reduced";
+  r.timeseries.columns = {"t", "phi_crank", "omega_crank", "v_cart_1", "v_cart_2"};
+  // 1 s turning at 5 rad/s, then creeping backwards at 4e-5 rad/s (carts at 1e-5 m/s) for 1.5 s.
+  for (int i = 0; i <= 250; ++i) {
+    const double t = 0.01 * i;
+    const bool moving = t < 1.0;
+    r.timeseries.rows.push_back({t, moving ? 5 * t : 5.0 - 4e-5 * (t - 1), moving ? 5.0 : -4e-5,
+                                 moving ? 0.5 : 1e-5, moving ? -0.5 : -1e-5});
+  }
+  r.reactions.columns = {"t"};
+  r.stats.complete = true;
+  const json rows = makeSummary(s, r);
+  EXPECT_EQ(rows["motion"], "at_rest") << rows["status"];
+  EXPECT_TRUE(rows["delta"].is_null());
+  // The same rows cut short by the detector in a model run: its status line decides.
+  r.stats.complete = false;
+  r.stats.status = "the machine came to rest at t = 1 s: with the motor off, friction and loads hold it";
+  EXPECT_EQ(makeSummary(s, r)["motion"], "at_rest");
+  // Carts faster than v_s throughout: not at rest.
+  for (auto& row : r.timeseries.rows) row[3] = row[4] = 0.01;
+  r.stats.complete = true;
+  r.stats.status = "ok";
+  EXPECT_NE(makeSummary(s, r)["motion"], "at_rest");
+}

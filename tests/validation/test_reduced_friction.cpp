@@ -118,5 +118,12 @@ TEST(ReducedFriction, AMachineThatFrictionStopsEndsAtRestInBothModels) {
     EXPECT_EQ(run.stats.status.rfind("the machine came to rest at t = 0.82 s", 0), 0u) << run.stats.status;
     const std::vector<double> t = run.timeseries.column("t");
     EXPECT_NEAR(t.back(), 1.82, 1e-9);
+    // The run's motion says so too (it read "turning" from the last second's creep), with no
+    // per-revolution figures and no integrator error in the status.
+    const nlohmann::json j = makeSummary(minimal, run);
+    EXPECT_EQ(j["motion"], "at_rest") << run.model << ": " << j["status"];
+    EXPECT_TRUE(j["delta"].is_null()) << run.model;
+    EXPECT_EQ(j["status"].get<std::string>().find("integrator failure"), std::string::npos) << j["status"];
+    EXPECT_NE(summaryText(j).find("motion       at_rest  (the machine is at rest"), std::string::npos);
   }
 }
