@@ -87,7 +87,7 @@ struct RunResult {
   Table reactions;
   RunStats stats;
   EnergyAudit energy;
-  std::vector<std::string> effects;  // effects built, e.g. "kloss_motor", "elastic_coupling"
+  std::vector<std::string> effects;  // effects built (Scene::effects), e.g. "kloss_motor", "elastic_coupling"
   // Normal force of the guide friction (and of the reduced model's reactions), in words for the
   // user: e.g. "algebraic (guide reaction of the same instant)"; empty without guide friction
   // in a model that has no reactions of its own to describe.

@@ -32,7 +32,8 @@ bool Scene::hasRollerLoads() const {
 
 std::vector<std::string> Scene::effects() const {
   std::vector<std::string> e;
-  if (hasMotor()) e.push_back("kloss_motor");
+  // The motor by its law (motor.model): kloss_motor, kloss_dynamic_motor, circuit_motor, park_motor.
+  if (hasMotor()) e.push_back(std::string(toString(induction.model)) + "_motor");
   e.push_back(coupling.type == CouplingType::Rigid ? "rigid_coupling" : "elastic_coupling");
   if (hasCouplingDamping()) e.push_back("coupling_damping");
   if (hasCamDrive()) e.push_back("cam_drive");  // no rods: the cam pushes the cart (Loveikin and Pochka (cam drive paper))
