@@ -16,7 +16,7 @@ nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlo
 LoadWork computeLoadWork(const Scene& sc, const RunResult& run, const SteadyState& w) {
   LoadWork out;
   const Loads& L = sc.loads;
-  char buf[320];
+  char buf[640];  // the no-net-work warning is ~390 characters
   std::snprintf(buf, sizeof buf, "roller forces F_j1 + F_j2 = %.6g N %s; rolling resistance μ_r = %.4g of R_j1 + R_j2 = %.6g N",
                 L.roller_force_front + L.roller_force_rear,
                 L.roller_force_direction == RollerForceDirection::AsPrinted

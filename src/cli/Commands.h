@@ -58,6 +58,7 @@ Subcommand addChainCommand(CLI::App& app);       // ChainCommand.cpp: `rollerdyn
 Subcommand addOptimizeCommand(CLI::App& app);    // OptimizeCommand.cpp: `rollerdyn optimize`
 Subcommand addMotorCommand(CLI::App& app);       // MotorCommand.cpp: `rollerdyn motor`
 Subcommand addModesCommand(CLI::App& app);       // ModesCommand.cpp: `rollerdyn modes`
+Subcommand addSchemaCommand(CLI::App& app);      // SchemaCommand.cpp: `rollerdyn schema`
 
 // out/<scene name>/ unless the user named a folder.
 std::string defaultOutDir(const std::string& scene_name);

@@ -11,7 +11,6 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
-#include "io/AtomicFile.h"
 #include "modes/ModalAnalysis.h"
 #include "modes/ModesFigures.h"
 #include "report/OutputDir.h"
@@ -53,18 +52,10 @@ int runModes(const ModesArgs& a) {
     std::istringstream ss(a.stiffness);
     if (!(ss >> lo >> colon >> hi) || colon != ':' || !(lo > 0) || !(hi > lo))
       throw std::invalid_argument("--stiffness: expected LO:HI in N·m/rad with 0 < LO < HI, got '" + a.stiffness + "'");
-    const double c_ref = scene.coupling.type == CouplingType::Elastic ? scene.coupling.stiffness : 0.0;
-    if (!(c_ref > 0))
-      throw std::invalid_argument("--stiffness: the scene's coupling is rigid; set coupling.type=elastic and "
-                                  "coupling.stiffness to give a range");
-    o.c_low = lo / c_ref;
-    o.c_high = hi / c_ref;
+    modes::setChartStiffness(o, scene, lo, hi, "--stiffness");
   }
   const modes::ModesReport r = modes::analyseModes(scene, o);
-  writeFileAtomic(out + "/modes.json", modes::modesJson(r).dump(2) + "\n");
-  writeCsvAtomic(out + "/frozen.csv", modes::frozenTable(r));
-  writeCsvAtomic(out + "/campbell.csv", modes::campbellTable(r));
-  writeCsvAtomic(out + "/stability.csv", modes::stabilityTable(r));
+  modes::writeModesFiles(out, r);
   const FigureSet figs = modes::drawModesFigures(r, out + "/figures");
   std::cout << modes::modesText(r);
   for (const std::string& w : r.warnings) std::cerr << "rollerdyn: warning: " << w << '\n';

@@ -45,7 +45,8 @@ int runOptimizeCommand(const OptimizeArgs& a) {
     std::cout << "[" << number << "]";
     for (std::size_t k = 0; k < o.params.size(); ++k) std::cout << ' ' << o.params[k].key << '=' << e.texts[k];
     std::cout << "  " << o.minimize << ' ' << e.objective;
-    for (const OptimizeConstraint& c : o.constraints) std::cout << "  " << c.metric << ' ' << e.point.metric(c.metric);
+    for (std::size_t j = 0; j < o.constraints.size(); ++j)
+      std::cout << "  " << o.constraints[j].metric << ' ' << e.constraint_metrics[j];
     std::cout << (e.feasible() ? "  feasible" : e.run_ok ? "  constraint violated" : "  infeasible: " + e.reason)
               << std::endl;
   };

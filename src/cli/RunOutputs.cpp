@@ -2,16 +2,10 @@
 
 #include <iostream>
 
-#include "analysis/FrictionChecks.h"
-#include "analysis/Summary.h"
+#include "analysis/RestDetector.h"
 #include "cli/Commands.h"
 #include "cli/Progress.h"
-#include "modes/RunModes.h"
 #include "multibody/MultibodySimulation.h"
-#include "report/OutputFolder.h"
-#include "scene/Plausibility.h"
-#include "studies/ResonanceCheck.h"
-#include "studies/StartLoad.h"
 
 namespace rollerdyn::cli {
 
@@ -23,42 +17,30 @@ RunResult runMultibodyWithProgress(const Scene& scene) {
   return runMultibodyModel(scene, control);
 }
 
-RunModal analyseRunModes(const Scene& scene, const RunResult& run, bool charts) {
-  modes::ModesOptions o;
-  o.charts = charts;
-  o.chart_c = 12;
-  o.chart_y = 8;
-  RunModal m;
-  m.report = modes::analyseModes(scene, o);
-  m.spectrum = modes::runSpectrum(scene, run);
-  return m;
-}
-
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
                                const std::string& out_dir, const std::vector<std::string>& overrides,
-                               const RunModal* modal) {
-  writeRunTables(out_dir, run);
-  const StartLoad start_load = startLoadOf(scene);  // explains a stall
-  nlohmann::json summary = makeSummary(scene, run, &start_load);
-  summary["scene_path"] = absolutePath(scene_path);
-  summary["overrides"] = overrides;
-  for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
-  addFrictionWarnings(scene, run, summary);  // self-locking, dead centre, quasi-static friction work
-  for (const auto& w : summary["warnings"])  // the load's and the plausibility warnings
-    if (w.is_string()) std::cerr << "rollerdyn: warning: " << w.get<std::string>() << '\n';
-  const std::vector<std::string> first_estimate = addResonanceWarnings(scene, summary);  // appends to summary["warnings"]
-  // The resonance verdict rests on the modal analysis; the two-mass check is its first estimate.
-  for (const std::string& line :
-       modes::writeResonanceVerdict(scene, summary, first_estimate, modal ? &modal->report : nullptr))
-    std::cerr << (line.rfind("resonance verdict:", 0) == 0 ? "rollerdyn: " : "rollerdyn: warning: ") << line << '\n';
-  if (modal) modes::writeRunModes(out_dir, modal->report, modal->spectrum, summary);
-  writeSummaryAtomic(out_dir + "/summary.json", summary);
+                               const modes::RunModal* modal) {
+  RunSummaryOptions options;
+  options.scene_file = scene_path;
+  options.overrides = overrides;
+  options.modal = modal;
+  RunMessages messages;
+  const nlohmann::json summary = summarizeRun(scene, run, options, &messages);
+  // The load's and the plausibility warnings, the first estimate's and the modal analysis'
+  // resonance warnings, then the verdict that reconciles them.
+  for (const std::string& w : messages.run_warnings) std::cerr << "rollerdyn: warning: " << w << '\n';
+  for (const std::string& w : messages.resonance_warnings) std::cerr << "rollerdyn: warning: " << w << '\n';
+  if (!messages.resonance_verdict.empty()) std::cerr << "rollerdyn: " << messages.resonance_verdict << '\n';
+  writeRunFiles(out_dir, run, summary, modal);
   return summary;
 }
 
 int runExitCode(const RunResult& run, const nlohmann::json& summary) {
   const std::string motion = summary.value("motion", "");
   if (motion == "stalled" || motion == "rocking") return kExitDriveDoesNotTurn;
+  // A machine without a motor that friction and loads brought to rest ended its run early by the
+  // rest rule (RestDetector.h): a finished result, not a failed run.
+  if (motion == "at_rest" && RestDetector::motionOfStatus(run.stats.status) == "at_rest") return 0;
   return run.stats.complete ? 0 : kExitRunFailed;
 }
 

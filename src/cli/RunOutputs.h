@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/RunResult.h"
-#include "modes/ModalAnalysis.h"
-#include "modes/OrderSpectrum.h"
+#include "modes/RunModes.h"
 #include "scene/Scene.h"
+#include "studies/RunSummary.h"
 
 namespace rollerdyn::cli {
 
@@ -17,20 +17,18 @@ namespace rollerdyn::cli {
 // Ctrl-C (g_interrupted, Commands.h).
 RunResult runMultibodyWithProgress(const Scene& scene);
 
-// The modal analysis of the scene and the order spectrum of the run (`simulate --modes`, `report`).
-struct RunModal {
-  modes::ModesReport report;
-  modes::OrderSpectrum spectrum;
-};
-RunModal analyseRunModes(const Scene& scene, const RunResult& run, bool charts);
+// The modal analysis beside the run (`simulate --modes`, `report`): modes/RunModes.h.
+using modes::analyseRunModes;
+using modes::RunModal;
 
-// Writes the run's tables (writeRunTables) and summary.json, with the scene file's absolute path
-// so `plot DIR` finds it from anywhere, into out_dir; prints the resonance warnings on stderr: the
-// two-mass check (Dyomin (two rotors) eq. (10)) as the first estimate, then the verdict of the
-// modal analysis (src/modes/RunModes.h). With `modal`, also its files (modes.json, frozen.csv,
-// campbell.csv, stability.csv, spectrum.csv) and summary["modes"]. Returns the summary.
-// `overrides`: the user's --set options, kept in summary.json ("overrides") so that commands the
-// console suggests (the flywheel search) repeat them.
+// Summarizes the run (studies/RunSummary.h, the summary every caller of a run shares) and writes
+// its files into out_dir: the tables, summary.json with the scene file's absolute path so `plot
+// DIR` finds it from anywhere, and with `modal` the modal analysis' files (modes.json, frozen.csv,
+// campbell.csv, stability.csv, spectrum.csv). Prints the warnings on stderr: the load's and the
+// scene's plausibility, the two-mass resonance check (Dyomin (two rotors) eq. (10)) as the first
+// estimate, then the verdict of the modal analysis. Returns the summary. `overrides`: the user's
+// --set options, kept in summary.json ("overrides") so that commands the console suggests (the
+// flywheel search) repeat them.
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
                                const std::string& out_dir, const std::vector<std::string>& overrides = {},
                                const RunModal* modal = nullptr);

@@ -17,6 +17,7 @@
 #include "cli/UsageError.h"
 #include "report/OutputDir.h"
 #include "scene/SceneParser.h"
+#include "scene/SceneSchema.h"
 #include "studies/Sweep.h"
 #include "studies/SweepDesigns.h"
 #include "studies/SweepMpi.h"

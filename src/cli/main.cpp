@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   app.footer(
       "A typical session (each command has --help with examples):\n"
       "  rollerdyn check model/balanced-4cart.yaml                    validate the scene\n"
+      "  rollerdyn schema coupling                                    the scene keys under coupling\n"
       "  rollerdyn simulate model/balanced-4cart.yaml --plot          -> out/balanced-4cart/ (+ figures/)\n"
       "  rollerdyn plot out/balanced-4cart                            figures of an output folder\n"
       "  rollerdyn report model/balanced-4cart.yaml --set crank.offset_deg=60 --out out/dphi60\n"
@@ -141,7 +142,8 @@ int main(int argc, char** argv) {
 
   // sweep, cam-profile, chain: the studies of the papers (src/cli/SweepCommand.cpp, ...)
   const Subcommand studies[] = {addSweepCommand(app), addCamProfileCommand(app), addChainCommand(app),
-                               addOptimizeCommand(app), addMotorCommand(app), addModesCommand(app)};
+                               addOptimizeCommand(app), addMotorCommand(app), addModesCommand(app),
+                               addSchemaCommand(app)};
 
   // Usage errors: exit code 2 and one line (src/cli/UsageError.h); help and version: exit 0.
   if (const std::string bad = checkCommandWord(app, argc, argv); !bad.empty()) return usageError(bad);

@@ -83,6 +83,15 @@ Table campbellTable(const ModesReport& r);  // campbell.csv
 Table stabilityTable(const ModesReport& r); // stability.csv (all charts, long format)
 std::string modesText(const ModesReport& r);  // the console's lines
 
+// What `rollerdyn modes` writes into out_dir (which must exist): modes.json, frozen.csv,
+// campbell.csv, stability.csv.
+void writeModesFiles(const std::string& out_dir, const ModesReport& r);
+
+// The charts' stiffness range lo ... hi [N·m/rad] (`modes --stiffness LO:HI`) as the factors of
+// the scene's coupling stiffness the options hold. Throws std::invalid_argument starting with
+// `what` unless 0 < lo < hi and the coupling is elastic.
+void setChartStiffness(ModesOptions& o, const Scene& scene, double lo, double hi, const std::string& what);
+
 // Resonance warnings of the analysis: the steady motion unstable (a Floquet multiplier > 1), or the
 // torsional mode's Floquet frequency within 5 % of k·ω for an order k carrying at least 1 % of the
 // largest exciting torque harmonic (none when the mode decays more than a million-fold per

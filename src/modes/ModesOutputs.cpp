@@ -6,6 +6,10 @@
 
 #include "modes/ModalAnalysis.h"
 
+#include <stdexcept>
+
+#include "io/AtomicFile.h"
+
 namespace rollerdyn::modes {
 namespace {
 
@@ -292,6 +296,24 @@ std::string modesText(const ModesReport& r) {
   std::snprintf(b, sizeof b, "  analysis CPU %.2f s\n", r.cpu_seconds);
   os << b;
   return os.str();
+}
+
+void writeModesFiles(const std::string& out_dir, const ModesReport& r) {
+  writeFileAtomic(out_dir + "/modes.json", modesJson(r).dump(2) + "\n");
+  writeCsvAtomic(out_dir + "/frozen.csv", frozenTable(r));
+  writeCsvAtomic(out_dir + "/campbell.csv", campbellTable(r));
+  writeCsvAtomic(out_dir + "/stability.csv", stabilityTable(r));
+}
+
+void setChartStiffness(ModesOptions& o, const Scene& scene, double lo, double hi, const std::string& what) {
+  if (!(lo > 0) || !(hi > lo))
+    throw std::invalid_argument(what + ": expected LO:HI in N·m/rad with 0 < LO < HI");
+  const double c_ref = scene.coupling.type == CouplingType::Elastic ? scene.coupling.stiffness : 0.0;
+  if (!(c_ref > 0))
+    throw std::invalid_argument(what + ": the scene's coupling is rigid; set coupling.type=elastic and "
+                                "coupling.stiffness to give a range");
+  o.c_low = lo / c_ref;
+  o.c_high = hi / c_ref;
 }
 
 }  // namespace rollerdyn::modes

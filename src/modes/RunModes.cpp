@@ -130,16 +130,21 @@ OrderSpectrum runSpectrum(const Scene& scene, const RunResult& run) {
   return s;
 }
 
-void writeRunModes(const std::string& out_dir, const ModesReport& report, const OrderSpectrum& spectrum,
-                   nlohmann::json& summary) {
-  const nlohmann::json j = modesJson(report);
-  writeFileAtomic(out_dir + "/modes.json", j.dump(2) + "\n");
-  writeCsvAtomic(out_dir + "/frozen.csv", frozenTable(report));
-  if (report.campbell.applicable) writeCsvAtomic(out_dir + "/campbell.csv", campbellTable(report));
-  if (!report.charts.empty()) writeCsvAtomic(out_dir + "/stability.csv", stabilityTable(report));
-  summary["modes"] = j;
+RunModal analyseRunModes(const Scene& scene, const RunResult& run, bool charts) {
+  ModesOptions o;
+  o.charts = charts;
+  o.chart_c = 12;
+  o.chart_y = 8;
+  RunModal m;
+  m.report = analyseModes(scene, o);
+  m.spectrum = runSpectrum(scene, run);
+  return m;
+}
+
+void addRunModes(const RunModal& modal, nlohmann::json& summary) {
+  summary["modes"] = modesJson(modal.report);
+  const OrderSpectrum& spectrum = modal.spectrum;
   if (spectrum.ok) {
-    writeCsvAtomic(out_dir + "/spectrum.csv", spectrumTable(spectrum));
     nlohmann::json sp;
     sp["revolutions"] = spectrum.revolutions;
     sp["window"] = {spectrum.t_begin, spectrum.t_end};
@@ -154,6 +159,15 @@ void writeRunModes(const std::string& out_dir, const ModesReport& report, const 
   } else {
     summary["order_spectrum"] = {{"note", spectrum.note}};
   }
+}
+
+void writeRunModesFiles(const std::string& out_dir, const RunModal& modal) {
+  const ModesReport& report = modal.report;
+  writeFileAtomic(out_dir + "/modes.json", modesJson(report).dump(2) + "\n");
+  writeCsvAtomic(out_dir + "/frozen.csv", frozenTable(report));
+  if (report.campbell.applicable) writeCsvAtomic(out_dir + "/campbell.csv", campbellTable(report));
+  if (!report.charts.empty()) writeCsvAtomic(out_dir + "/stability.csv", stabilityTable(report));
+  if (modal.spectrum.ok) writeCsvAtomic(out_dir + "/spectrum.csv", spectrumTable(modal.spectrum));
 }
 
 }  // namespace rollerdyn::modes

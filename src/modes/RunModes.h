@@ -34,10 +34,22 @@ std::vector<std::string> writeResonanceVerdict(const Scene& scene, nlohmann::jso
 // window (the scene's simulation.steady_window_revolutions).
 OrderSpectrum runSpectrum(const Scene& scene, const RunResult& run);
 
+// The modal analysis of a scene beside one of its runs (`simulate --modes`, `report`, Python's
+// simulate(modes=True)): the analysis and the run's order spectrum.
+struct RunModal {
+  ModesReport report;
+  OrderSpectrum spectrum;
+};
+// `charts`: also the stability charts, coarse (12 stiffnesses x 8 speeds or dampings), as the
+// report shows them.
+RunModal analyseRunModes(const Scene& scene, const RunResult& run, bool charts);
+
+// Puts the analysis under summary["modes"] (as modes.json) and the spectrum's strongest orders
+// under summary["order_spectrum"].
+void addRunModes(const RunModal& modal, nlohmann::json& summary);
+
 // Writes modes.json, frozen.csv, campbell.csv, stability.csv (when charts were made) and
-// spectrum.csv into out_dir and puts the analysis under summary["modes"] (and the spectrum's
-// strongest orders under summary["order_spectrum"]).
-void writeRunModes(const std::string& out_dir, const ModesReport& report, const OrderSpectrum& spectrum,
-                   nlohmann::json& summary);
+// spectrum.csv (when the spectrum was computed) into out_dir.
+void writeRunModesFiles(const std::string& out_dir, const RunModal& modal);
 
 }  // namespace rollerdyn::modes

@@ -175,7 +175,7 @@ void readMotor(const Reader& in, KlossMotor& m, InductionMotor& im) {
   m.rotor_inertia = in.number("motor.rotor_inertia");
 
   im.model = modelOf(in.choice("motor.model"));
-  im.torque_time_constant = in.number("motor.torque_time_constant");
+  im.torque_time_constant = in.numberOr("motor.torque_time_constant", 0.0);  // 0: 1/(ω1·s_kr)
   im.frequency = in.number("motor.frequency");
   im.connection = in.choice("motor.connection") == "delta" ? WindingConnection::Delta : WindingConnection::Star;
   im.catalogue = readCatalogue(in, m.omega_sync);

@@ -332,22 +332,32 @@ Scene readScene(const SceneDocument& doc) {
 
 }  // namespace
 
-Scene parseSceneText(const std::string& yaml_text, const std::string& file_label,
-                     const std::vector<std::string>& overrides) {
-  SceneDocument doc(yaml_text, file_label);
+Scene parseSceneInput(const SceneInput& input, const std::vector<std::string>& overrides) {
+  SceneDocument doc(input.text, input.label, !input.from_data);
   for (size_t i = 0; i < overrides.size(); ++i) doc.applyOverride(static_cast<int>(i + 1), overrides[i]);
   doc.checkStructure();
-  return readScene(doc);
+  Scene scene = readScene(doc);
+  if (input.from_data) scene.name = input.label;  // a name, not a file whose stem names the scene
+  return scene;
 }
 
-Scene parseSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+Scene parseSceneText(const std::string& yaml_text, const std::string& file_label,
+                     const std::vector<std::string>& overrides) {
+  return parseSceneInput(SceneInput{file_label, yaml_text, false}, overrides);
+}
+
+SceneInput readSceneInput(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   if (!f) {
     throw SceneError::inFile(path, 0, "", "a readable scene file", std::strerror(errno));
   }
   std::ostringstream text;
   text << f.rdbuf();
-  return parseSceneText(text.str(), path, overrides);
+  return SceneInput{path, text.str(), false};
+}
+
+Scene parseSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+  return parseSceneInput(readSceneInput(path), overrides);
 }
 
 }  // namespace rollerdyn

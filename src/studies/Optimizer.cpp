@@ -65,6 +65,7 @@ class Search {
  public:
   Search(const OptimizeOptions& o, OptimizeResult& r) : o_(o), r_(r) {
     sweep_.scene_path = o.scene_path;
+    sweep_.scene_input = o.scene_input;
     sweep_.base_overrides = o.base_overrides;
     sweep_.model = o.model;
     sweep_.interrupt = o.interrupt;
@@ -153,14 +154,6 @@ class Search {
  private:
   void judge(OptimizeEvaluation& e) const {
     const SweepPoint& p = e.point;
-    e.objective = kNaN;
-    for (std::size_t k = 0; k < o_.params.size(); ++k)
-      if (o_.params[k].key == o_.minimize) e.objective = e.x[k];
-    if (!std::isfinite(e.objective)) e.objective = p.metric(o_.minimize);
-    for (const OptimizeConstraint& c : o_.constraints) {
-      const double m = p.metric(c.metric);
-      e.constraint_values.push_back(c.upper ? m - c.bound : c.bound - m);
-    }
     const double omega_min = p.metric("omega_crank_min");
     if (!p.complete) {
       e.reason = "did not complete: " + p.status;
@@ -171,11 +164,28 @@ class Search {
       std::ostringstream os;
       os << "the crank does not turn steadily (rocks or stops): omega_crank_min = " << omega_min << " rad/s";
       e.reason = os.str();
-    } else if (!std::isfinite(e.objective)) {
-      e.reason = o_.minimize + " not available";
+    }
+    const bool usable = e.reason.empty();  // the caller's functions see usable runs only
+    e.objective = kNaN;
+    if (o_.objective) {
+      if (usable) e.objective = o_.objective(e);
     } else {
-      for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
-        if (!std::isfinite(e.constraint_values[j])) e.reason = o_.constraints[j].metric + " not available";
+      for (std::size_t k = 0; k < o_.params.size(); ++k)
+        if (o_.params[k].key == o_.minimize) e.objective = e.x[k];
+      if (!std::isfinite(e.objective)) e.objective = p.metric(o_.minimize);
+    }
+    for (const OptimizeConstraint& c : o_.constraints) {
+      const double m = c.value ? (usable ? c.value(e) : kNaN) : p.metric(c.metric);
+      e.constraint_metrics.push_back(m);
+      e.constraint_values.push_back(c.upper ? m - c.bound : c.bound - m);
+    }
+    if (usable) {
+      if (!std::isfinite(e.objective)) {
+        e.reason = o_.minimize + " not available";
+      } else {
+        for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
+          if (!std::isfinite(e.constraint_values[j])) e.reason = o_.constraints[j].metric + " not available";
+      }
     }
     e.run_ok = e.reason.empty();
     e.constraints_hold = e.run_ok;
@@ -213,7 +223,7 @@ void validate(const OptimizeOptions& o) {
   for (std::size_t k = 0; k < o.params.size(); ++k) {
     const SampleRange& p = o.params[k];
     if (!findSceneKey(p.key))
-      throw std::invalid_argument("optimize: --param " + p.key + " is not a scene key (see model/README.md)");
+      throw std::invalid_argument("optimize: --param " + p.key + " is not a scene key (see docs/scene-reference.md)");
     if (!(p.lower < p.upper) || !std::isfinite(p.lower) || !std::isfinite(p.upper))
       throw std::invalid_argument("optimize: --range of " + p.key + ": expected a:b with a < b");
     for (std::size_t m = 0; m < k; ++m)
@@ -221,14 +231,14 @@ void validate(const OptimizeOptions& o) {
   }
   bool is_key = false;
   for (const SampleRange& p : o.params) is_key = is_key || p.key == o.minimize;
-  if (!is_key && !knownMetric(o.minimize)) {
+  if (!is_key && !o.objective && !knownMetric(o.minimize)) {
     std::vector<std::string> names = sweepNumericMetrics();
     for (const SampleRange& p : o.params) names.push_back(p.key);
     throw std::invalid_argument("optimize: --minimize: unknown metric '" + o.minimize + "'" + didYouMean(o.minimize, names) +
                                 "; expected a metric (" + metricList() + ") or one of the --param keys");
   }
   for (const OptimizeConstraint& c : o.constraints)
-    if (!knownMetric(c.metric))
+    if (!c.value && !knownMetric(c.metric))
       throw std::invalid_argument("optimize: --constraint '" + c.text + "': unknown metric '" + c.metric + "'" +
                                   didYouMean(c.metric, sweepNumericMetrics()) + "; expected one of " + metricList());
   const std::string& m = o.method;
@@ -381,7 +391,9 @@ OptimizeResult runOptimize(const OptimizeOptions& o) {
       if (o.params[k].key == "crank.offset_deg") {
         int carts = 0;
         try {
-          carts = parseSceneFile(o.scene_path, o.base_overrides).carts.count;
+          carts = (o.scene_input ? parseSceneInput(*o.scene_input, o.base_overrides)
+                                 : parseSceneFile(o.scene_path, o.base_overrides))
+                      .carts.count;
         } catch (const std::exception&) {
         }
         for (int m = 1; m < carts; ++m)

@@ -20,8 +20,7 @@
 #include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
 #include "scene/DidYouMean.h"
-#include "studies/ResonanceCheck.h"
-#include "studies/StartLoad.h"
+#include "studies/RunSummary.h"
 #include "studies/SweepExecution.h"
 
 namespace rollerdyn {
@@ -108,7 +107,7 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
   for (std::size_t i = 0; i < o.params.size(); ++i) overrides.push_back(o.params[i].key + "=" + texts[i]);
   Scene scene;
   try {
-    scene = parseSceneFile(o.scene_path, overrides);
+    scene = o.scene_input ? parseSceneInput(*o.scene_input, overrides) : parseSceneFile(o.scene_path, overrides);
   } catch (const std::exception& e) {
     p.status = std::string("invalid: ") + e.what();
     p.cpu_seconds = threadCpuSeconds() - cpu0;
@@ -124,10 +123,15 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
       run = runReducedModel(scene);
     }
     p.ran = true;
-    const StartLoad start_load = startLoadOf(scene);  // explains a stall in the status
-    nlohmann::json summary = makeSummary(scene, run, &start_load);
+    // The summary every run gets (stall cause, two-mass resonance check), without the modal
+    // analysis' verdict: the resonance_warnings column counts the first estimate.
+    RunSummaryOptions summary_options;
+    summary_options.overrides = overrides;
+    summary_options.resonance_verdict = false;
+    RunMessages messages;
+    const nlohmann::json summary = summarizeRun(scene, run, summary_options, &messages);
     p.motion = summary.value("motion", "unknown");
-    p.warnings = addResonanceWarnings(scene, summary);  // the load's warning is a metric column
+    p.warnings = messages.first_estimate;  // the load's warning is a metric column
     const auto& src = metricSources();
     for (std::size_t k = 0; k < src.size(); ++k) p.metrics[k] = summaryNumber(summary, src[k].second);
     p.complete = run.stats.complete;
@@ -289,7 +293,7 @@ SweepResult runSweep(const SweepOptions& o) {
   for (const SweepParameter& p : o.params) {
     if (p.values.empty()) throw std::invalid_argument("sweep: --param " + p.key + " has no values");
     if (!findSceneKey(p.key))
-      throw std::invalid_argument("sweep: --param " + p.key + " is not a scene key (see model/README.md)");
+      throw std::invalid_argument("sweep: --param " + p.key + " is not a scene key (see docs/scene-reference.md)");
   }
   // Grid (last parameter fastest) or explicit designs; threads or MPI, saved rows, resume.
   SweepResult result;

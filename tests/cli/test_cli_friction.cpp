@@ -43,5 +43,28 @@ TEST(CliFriction, ReducedResultsNameTheirNormalForcesAndWarnWhenQuasiStaticIsOff
   EXPECT_TRUE(in_json);
 }
 
+// A machine without a motor that friction brings to rest: both models end with the rest rule's
+// status, the motion at_rest on the console and in summary.json with the self-locking warning, and
+// exit code 0 (a finished run, not a failed one: it was 3 before).
+TEST(CliFriction, AMachineThatFrictionStopsIsAtRestWithExitCodeZero) {
+  for (const char* m : {"reduced", "multibody"}) {
+    TempDir dir("at-rest");
+    const auto r = runRollerdyn({"simulate", model("balanced-4cart.yaml"), "--model", m, "--set",
+                                 "loads.guide_friction.coefficient=0.3", "--set", "motor.enabled=false", "--set",
+                                 "initial.crank_speed=10.42", "--out", dir.str()},
+                                120);
+    EXPECT_EQ(r.exit_code, 0) << m << ": " << r.err;
+    EXPECT_NE(r.out.find("motion       at_rest"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("guide friction near self-locking"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("integrator failure"), std::string::npos) << r.err;
+    const nlohmann::json s = nlohmann::json::parse(slurp(dir.path() / "summary.json"));
+    EXPECT_EQ(s["motion"], "at_rest") << m;
+    EXPECT_EQ(s["status"].get<std::string>().rfind("the machine came to rest at t = 0.82 s", 0), 0u) << s["status"];
+    bool warned = false;
+    for (const auto& w : s["warnings"]) warned = warned || w.get<std::string>().find("self-locking") != std::string::npos;
+    EXPECT_TRUE(warned) << m;
+  }
+}
+
 }  // namespace
 }  // namespace rollerdyn

@@ -1,5 +1,6 @@
-// The schema table, the parser and model/README.md agree: every key is documented, every
-// documented key exists, and every key's value actually reaches the Scene.
+// The schema table, the parser and the scene file reference agree: the reference generated from
+// the schema documents every key and is the committed docs/scene-reference.md, and every key's
+// value actually reaches the Scene.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,23 +11,24 @@
 #include <string>
 
 #include "scene/SceneParser.h"
+#include "scene/SceneReference.h"
 #include "scene/SceneSchema.h"
 
 namespace rollerdyn {
 namespace {
 
-std::string readme() {
-  std::ifstream in(std::string(ROLLERDYN_SOURCE_DIR) + "/model/README.md");
+std::string committedReference() {
+  std::ifstream in(std::string(ROLLERDYN_SOURCE_DIR) + "/docs/scene-reference.md");
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
 }
 
-// Key paths in the first column of the README's key table: rows starting "| `key` |".
-std::set<std::string> documentedKeys() {
+// Key paths in the first column of the reference's tables: rows starting "| `key` |".
+std::set<std::string> documentedKeys(const std::string& markdown) {
   std::set<std::string> keys;
-  const std::regex row(R"(^\| `([a-z_.A-Z0-9]+)` \|)");
-  std::istringstream in(readme());
+  const std::regex row(R"(^\| `([a-z_.A-Z0-9]+)` \|)");  // digits: motor.circuit.R_r2
+  std::istringstream in(markdown);
   for (std::string line; std::getline(in, line);) {
     std::smatch m;
     if (std::regex_search(line, m, row)) keys.insert(m[1]);
@@ -34,13 +36,52 @@ std::set<std::string> documentedKeys() {
   return keys;
 }
 
-TEST(SceneSchema, ReadmeDocumentsEveryKeyAndNoOther) {
-  const std::set<std::string> documented = documentedKeys();
+TEST(SceneReference, DocumentsEveryKeyAndNoOther) {
+  const std::set<std::string> documented = documentedKeys(sceneReferenceMarkdown());
   std::set<std::string> schema;
   for (const KeySpec& k : sceneSchema()) schema.insert(k.path);
-  for (const std::string& k : schema) EXPECT_TRUE(documented.count(k)) << "README lacks " << k;
-  for (const std::string& k : documented) EXPECT_TRUE(schema.count(k)) << "README has extra " << k;
+  EXPECT_EQ(documented, schema);
   EXPECT_GE(schema.size(), 50u);
+}
+
+TEST(SceneReference, CommittedPageIsTheGeneratedOne) {
+  // docs/scene-reference.md is generated from the schema: regenerate it after changing the
+  // schema with ./build/rollerdyn schema --markdown > docs/scene-reference.md
+  const std::string committed = committedReference();
+  ASSERT_FALSE(committed.empty()) << "docs/scene-reference.md is missing";
+  EXPECT_TRUE(committed == sceneReferenceMarkdown())
+      << "docs/scene-reference.md differs from the schema's reference: run\n"
+         "  ./build/rollerdyn schema --markdown > docs/scene-reference.md";
+}
+
+TEST(SceneReference, EveryKeyHasMeaningAndEveryConditionalKeySaysWhen) {
+  for (const SceneKeyDoc& k : sceneKeyDocs()) {
+    EXPECT_FALSE(k.meaning.empty()) << k.key;
+    EXPECT_FALSE(k.allowed.empty()) << k.key;
+    if (k.presence == "conditional") {
+      EXPECT_FALSE(k.condition.empty()) << k.key << ": say when it is required";
+    }
+    // An optional key has a default, except free text, which may be left out (source).
+    if (k.presence == "optional" && findSceneKey(k.key)->kind != KeyKind::Text) {
+      EXPECT_FALSE(k.default_value.empty()) << k.key;
+    }
+  }
+  // Physical quantities of the papers carry their source.
+  for (const char* key : {"crank.radius", "rods.length", "motor.breakdown_torque", "coupling.stiffness",
+                          "loads.roller_force_front", "reduced.kinematics"})
+    EXPECT_NE(findSceneKey(key)->source.find("("), std::string::npos) << key;
+}
+
+TEST(SceneReference, TableCellsEscapeTheBar) {
+  const std::string md = sceneReferenceMarkdown();
+  std::istringstream in(md);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("| `", 0) != 0) continue;
+    std::size_t bars = 0;
+    for (std::size_t i = 0; i < line.size(); ++i)
+      if (line[i] == '|' && (i == 0 || line[i - 1] != '\\')) ++bars;
+    EXPECT_EQ(bars, 7u) << line;  // six columns
+  }
 }
 
 TEST(SceneSchema, FixedKeyPathsExist) {
