@@ -121,8 +121,10 @@ for scene in balanced-4cart recuperative-2cart energy-balanced-3cart; do
   for law in kloss circuit park; do
     d=$OUT/startup_$scene/$law
     mkdir -p $d
-    if "$R" simulate model/$scene.yaml --set motor.model=$law --set initial.crank_speed=0 --out $d > $d/console.txt 2>&1 \
-        || [ $? -eq 3 ]; then rm -f $d/timeseries.csv $d/reactions.csv
+    rc=0; "$R" simulate model/$scene.yaml --set motor.model=$law --set initial.crank_speed=0 --out $d > $d/console.txt 2>&1 \
+        || rc=$?
+    # 3: a run that ended early, 4: a drive that does not start; both are results of this study.
+    if [ $rc -eq 0 ] || [ $rc -eq 3 ] || [ $rc -eq 4 ]; then rm -f $d/timeseries.csv $d/reactions.csv
     else why=$(tail -1 $d/console.txt); echo "not run: $why" > $d/console.txt; fi
   done
 done
