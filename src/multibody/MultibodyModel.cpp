@@ -96,7 +96,12 @@ void MultibodyModel::buildCarts() {
     rig.rod_length = l;
     const double m_cart = sc.cartMassWithRodShare(j);
     const SimTK::Vec3 com_cart(rig.side * sc.carts.geometry.p, sc.carts.geometry.com_height, 0);
-    SimTK::Body::Rigid cart_body(SimTK::MassProperties(m_cart, com_cart, SimTK::Inertia(com_cart, m_cart)));
+    // The cart only slides, so its rotational inertia never enters the motion; it is a point mass
+    // at its centre of mass plus a token central inertia. Without the token, Simbody's central
+    // inertia Inertia(com, m) - Inertia(com, m) can round to -3e-14 and be rejected (a 700 kg cart).
+    const SimTK::Inertia token_central(1e-9 * m_cart);  // [kg·m²], isotropic
+    SimTK::Body::Rigid cart_body(
+        SimTK::MassProperties(m_cart, com_cart, token_central.shiftFromMassCenter(com_cart, m_cart)));
     rig.cart = SimTK::MobilizedBody::Slider(matter_.Ground(), SimTK::Transform(), cart_body, SimTK::Transform());
 
     if (sc.hasCamDrive()) {
