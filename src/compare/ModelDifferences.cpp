@@ -41,7 +41,7 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
                    "terms m_rod*(x_S'^2 + y_S'^2) + I_S*beta'^2 (reduced, Loveikin and Pochka (2007) eq. (9)); both are "
                    "the exact kinetic energy of the rods, so the motion agrees, but the rods' own "
                    "inertial forces reach the carts' guides only in multibody (the reduced quasi-static statics "
-                   "pass half the rod weight to the hinge, CartStatics.h)",
+                   "pass half the rod weight to the hinge)",
                    false, false});
   }
 
@@ -114,9 +114,14 @@ std::vector<std::string> identicalPhysics(const Scene& s) {
   else
     same.push_back("drive: rigid coupling, one rotating body (multibody) and the one-mass model "
                    "J(phi) (Loveikin and Pochka (2007) eq. (1)) (reduced)");
-  if (s.hasMotor())
-    same.push_back("motor: the same Kloss law 2*M_kr*s*s_kr/(s^2 + s_kr^2)*u*eta (Loveikin, Pochka, Romasevych (2018) eq. "
-                   "(37), physics/KlossMotor.h) in both");
+  if (s.hasMotor()) {
+    if (s.motor.model == MotorModel::Kloss)
+      same.push_back("motor: the same Kloss law 2*M_kr*s*s_kr/(s^2 + s_kr^2)*u*eta (Loveikin, Pochka, Romasevych (2018) "
+                     "eq. (37)) in both");
+    else
+      same.push_back(std::string("motor: the same motor law (motor.model: ") + toString(s.motor.model) +
+                     ") and starting method in both, its electrical states integrated with the motion");
+  }
   if (s.rods.model == RodModel::Split)
     same.push_back("rods: half the rod mass on the crank pin, half on the cart (Loveikin, Pochka, Romasevych (2018) eq. "
                    "(2)-(3)) in both, including the pin half-masses' weight");
@@ -125,7 +130,7 @@ std::vector<std::string> identicalPhysics(const Scene& s) {
   if (s.hasRollerLoads())
     same.push_back(std::string("roller loads: the same direction law (") +
                    toString(s.loads.roller_force_direction) +
-                   ", physics/RollerLoads.h) in both; vertical roller forces do no work");
+                   ") in both; vertical roller forces do no work");
   const bool kinetostatic = s.reduced.guide_normals == ReducedGuideNormals::Kinetostatic;
   if (kinetostatic)
     same.push_back("reactions: the cart's and the rod's Newton equations with their inertial forces in both "
@@ -134,7 +139,7 @@ std::vector<std::string> identicalPhysics(const Scene& s) {
     same.push_back("guide friction: none in either model");
   else if (kinetostatic && s.loads.guide_normal_force == GuideNormalForce::Algebraic)
     same.push_back("guide friction: f*(|N_front| + |N_rear|) with the guide reactions of the same instant, the loop "
-                   "solved with the motion by one law in both (physics/GuideFrictionLoop.h)");
+                   "solved with the motion by one law in both");
   if (s.reduced.kinematics == KinematicsForm::Exact && !s.hasCamDrive())
     same.push_back("kinematics: exact slider-crank (Loveikin, Pochka, Romasevych (2018) eq. (40)-(47)) in the reduced "
                    "model, exact loop closure in multibody");
