@@ -115,11 +115,11 @@ std::vector<std::string> identicalPhysics(const Scene& s) {
     same.push_back("drive: rigid coupling, one rotating body (multibody) and the one-mass model "
                    "J(phi) (Loveikin and Pochka (2007) eq. (1)) (reduced)");
   if (s.hasMotor()) {
-    if (s.motor.model == MotorModel::Kloss)
+    if (s.induction.model == MotorModel::Kloss)
       same.push_back("motor: the same Kloss law 2*M_kr*s*s_kr/(s^2 + s_kr^2)*u*eta (Loveikin, Pochka, Romasevych (2018) "
                      "eq. (37)) in both");
     else
-      same.push_back(std::string("motor: the same motor law (motor.model: ") + toString(s.motor.model) +
+      same.push_back(std::string("motor: the same motor law (motor.model: ") + toString(s.induction.model) +
                      ") and starting method in both, its electrical states integrated with the motion");
   }
   if (s.rods.model == RodModel::Split)
