@@ -11,7 +11,10 @@
 //    order v_s (1e-3 m/s, a crank speed ~5e-3 rad/s), far inside ±1 % (0.107 rad/s for the
 //    papers' drives); a drive with any margin leaves that band within thr·J/ΔM (0.1 s for
 //    ΔM = 150 N·m on 150 kg·m²), and a turning or swinging crank only passes through the band at
-//    its dead centres or turning points, in a few hundredths of a second;
+//    its dead centres or turning points, in a few hundredths of a second. A drive with a small
+//    margin on a large inertia (a 10 000 kg·m² flywheel: 1032 N·m against 76 N·m, ~1.1 s to leave
+//    the band) is still gaining speed there: a spell in which the crank speed grows by a tenth of
+//    the band starts again, so only a crank that stays put is held;
 //  * driven backwards: the crank has turned more than one revolution backwards from the furthest
 //    forward angle it reached: the load overpowers the motor (whose torque only falls at slip
 //    above 1) and turns the machine the wrong way;
@@ -50,6 +53,9 @@ class StallDetector {
  public:
   static constexpr double kSpeedFraction = 0.01;  // band of "at rest", of ω0/u [-]
   static constexpr double kRestWindow = 1.0;      // time at rest that means held [s]
+  static constexpr double kBreakawayGain = 0.1;   // forward speed gain within a spell, of the band,
+                                                  // that restarts it (creep under a balanced load
+                                                  // stays far below: ~5e-3 rad/s of 0.107) [-]
   static constexpr double kSwingGain = 0.01;      // relative growth of a swing that counts as gain [-]
   static constexpr int kSwingsWithoutGain = 3;    // successive oscillations without gain
   static constexpr double kTwoPi = 6.283185307179586476925286766559;
@@ -73,7 +79,11 @@ class StallDetector {
     if (phi_max_ - phi_crank > kTwoPi) return stall(StallKind::DrivenBackwards, t_max_);
     // Held at rest.
     if (std::abs(omega_crank) <= threshold_ && std::abs(omega_motor) <= threshold_) {
-      if (rest_since_ < 0) rest_since_ = t;
+      // A crank gaining speed forwards is breaking away, not held: on a large inertia (a heavy
+      // flywheel, a large rotor) it may need longer than kRestWindow to leave the band. The spell
+      // starts again whenever the speed has grown by kBreakawayGain of the band since it began.
+      if (rest_since_ < 0 || omega_crank - omega_rest_start_ > kBreakawayGain * threshold_)
+        rest_since_ = t, omega_rest_start_ = omega_crank;
       if (t - rest_since_ >= kRestWindow) return stall(StallKind::Held, rest_since_);
     } else {
       rest_since_ = -1.0;
@@ -150,6 +160,7 @@ class StallDetector {
   double since_ = -1.0;
   double phi_max_ = 0, t_max_ = 0;   // furthest forward angle and when [rad], [s]
   double rest_since_ = -1.0;         // start of the current spell at rest [s]
+  double omega_rest_start_ = 0;      // crank speed when that spell began [rad/s]
   int direction_ = 0;                // +1 forwards, -1 backwards, 0 not yet moved
   double swing_begin_ = 0, extreme_ = 0;  // the current swing's start and furthest angle [rad]
   double last_forward_turn_ = 0;     // where the last forward swing turned back [rad]
