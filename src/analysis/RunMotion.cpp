@@ -12,6 +12,40 @@
 
 namespace rollerdyn {
 
+namespace {
+
+// Whether a crank that turns one way, in a run that never settled, is still running up: fewer
+// than three whole revolutions (too few to see it settle), or mean speeds of the last three whole
+// revolutions each above the one before by more than kRise. A settling or beating drive has
+// revolution means that fall back or level off; a drive running up on a large inertia keeps
+// gaining for many revolutions (its verdicts would read the run-up as running).
+bool stillGainingSpeed(const Table& ts) {
+  constexpr double kRise = 0.005;  // [-] relative gain per revolution that counts as running up
+  const int it = ts.index("t"), ip = ts.index("phi_crank");
+  std::vector<double> t_rev;  // times at which the crank completed each whole revolution
+  double phi0 = NAN, next = NAN;
+  for (const auto& row : ts.rows) {
+    if (!std::isfinite(row[ip]) || !std::isfinite(row[it])) continue;
+    if (!std::isfinite(phi0)) {
+      phi0 = row[ip];
+      t_rev.push_back(row[it]);
+      next = phi0 + 2.0 * M_PI;
+      continue;
+    }
+    while (row[ip] >= next) {
+      t_rev.push_back(row[it]);
+      next += 2.0 * M_PI;
+    }
+  }
+  const int n = int(t_rev.size()) - 1;  // whole revolutions
+  if (n < 3) return true;
+  const double w1 = 1.0 / (t_rev[n - 2] - t_rev[n - 3]), w2 = 1.0 / (t_rev[n - 1] - t_rev[n - 2]),
+               w3 = 1.0 / (t_rev[n] - t_rev[n - 1]);  // revolutions per second, proportional to the means
+  return w2 > w1 * (1.0 + kRise) && w3 > w2 * (1.0 + kRise);
+}
+
+}  // namespace
+
 std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMetrics& m, double window_advance,
                            bool steady_reached) {
   // One word from three rules, each of which ends a run with its own status line: the stall rule
@@ -72,6 +106,7 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
     if (!steady_reached) return "starting";
   }
   if (m.omega_min == 0 && m.omega_max == 0) return "at_rest";
+  if (!steady_reached && ts.has("t") && ts.has("phi_crank") && stillGainingSpeed(ts)) return "starting";
   return "turning";
 }
 

@@ -200,3 +200,27 @@ TEST(RunMotion, AMachineThatFrictionStoppedIsAtRest) {
   r.stats.status = "ok";
   EXPECT_NE(makeSummary(s, r)["motion"], "at_rest");
 }
+
+// Finding of the 6-cart trial: a run that ended during a slow run-up (a 5000 kg·m² flywheel, 17 s
+// to 95 % of a speed still far below synchronous) was "turning" and its heating FAILed on a window
+// that was no steady state. A crank turning one way whose revolutions keep getting faster, in a run
+// that never settled, is still "starting"; one that turns at a steady mean speed is "turning".
+TEST(RunMotion, ACrankStillGainingSpeedRevolutionAfterRevolutionIsStarting) {
+  const Scene s = motorScene();
+  auto run = [](double alpha) {  // ω = 2 + α·t rad/s for 20 s
+    RunResult r;
+    r.model = "reduced";
+    r.timeseries.columns = {"t", "phi_crank", "omega_crank", "omega_motor"};
+    for (int i = 0; i <= 2000; ++i) {
+      const double t = 0.01 * i;
+      r.timeseries.rows.push_back({t, 0.5 + 2 * t + 0.5 * alpha * t * t, 2 + alpha * t, 2 + alpha * t});
+    }
+    return r;
+  };
+  WindowMetrics m;
+  m.omega_min = 2.0;
+  m.omega_max = 6.0;
+  EXPECT_EQ(classifyMotion(s, run(0.2), m, 20.0, /*steady_reached=*/false), "starting");
+  EXPECT_EQ(classifyMotion(s, run(0.0), m, 20.0, /*steady_reached=*/false), "turning");
+  EXPECT_EQ(classifyMotion(s, run(0.2), m, 20.0, /*steady_reached=*/true), "turning");
+}
