@@ -222,6 +222,7 @@ ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
   c.differences = modelDifferences(scene);
   c.identical = identicalPhysics(scene);
   c.motion_equivalent = motionEquivalent(scene);
+  c.reduced_kinetostatic = scene.reduced.guide_normals == ReducedGuideNormals::Kinetostatic;
   if (!mb.timeseries.has("t") || mb.timeseries.rows.empty() || !red.timeseries.has("t") ||
       red.timeseries.rows.empty())
     throw std::runtime_error("compare: a model produced no output rows");
@@ -409,8 +410,10 @@ std::string comparisonText(const ModelComparison& c) {
   if (c.kinetostatic.empty())
     os << "  reactions      not computed (simulation.reactions: false)\n";
   else
-    os << "  reactions      largest max_rel_diff " << worst << " (quasi-static reduced), " << worst_kin
-       << " (kinetostatic reduced)\n";
+    os << "  reactions      largest max_rel_diff " << worst << " (the reduced run's own rows, "
+       << (c.reduced_kinetostatic ? "kinetostatic" : "the papers' quasi-static") << " guide normals), " << worst_kin
+       << " (the reduced rows with only the carts' d'Alembert forces added afterwards: no rod inertia, no "
+          "friction loop)\n";
   os << "physics      " << (c.motion_equivalent ? "the same equations of motion" : "the models differ in what they model (below)")
      << '\n';
   for (const auto& d : c.differences) os << "  - " << d.sentence << '\n';

@@ -91,6 +91,8 @@ struct ModelComparison {
   std::vector<ModelDifference> differences;   // modelDifferences(scene)
   std::vector<std::string> identical;         // identicalPhysics(scene)
   bool motion_equivalent = false;             // motionEquivalent(scene)
+  bool reduced_kinetostatic = false;          // the reduced run's own guide normals are kinetostatic
+                                              // (reduced.guide_normals), not the papers' quasi-static ones
   double t_begin = 0, t_end = 0;              // compared time span [s]
   std::size_t rows = 0;                       // compared rows
   double grid_max_time_offset = 0;            // max distance of a multibody row time from the
