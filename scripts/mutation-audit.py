@@ -174,20 +174,33 @@ def matches(expect, failed):
     return [n for n in names if any(re.search(p, n) for p in expect)]
 
 
+def merged(out_dir, results, plants):
+    """With --only: the earlier audit's results for the plants not run now, in plant order."""
+    path = os.path.join(out_dir, "audit.json")
+    earlier = json.load(open(path))["results"] if os.path.exists(path) else []
+    now = {r["id"]: r for r in results}
+    keep = {r["id"]: r for r in earlier}
+    keep.update(now)
+    return [keep[p["id"]] for p in plants if p["id"] in keep]
+
+
 def write_outputs(out_dir, meta, results, plants):
     os.makedirs(out_dir, exist_ok=True)
     with open(os.path.join(out_dir, "audit.json"), "w") as f:
         json.dump({"meta": meta, "results": results}, f, indent=2)
     by_id = {p["id"]: p for p in plants}
     done = [r for r in results if r.get("status") == "done"]
+    commits = sorted({r.get("commit", meta["commit"])[:10] for r in done})
     caught = sum(1 for r in done if r["failed"])
     own = sum(1 for r in done if r["by_law_test"])
     lines = [
         "# Mutation audit",
         "",
-        f"Made by `{meta['command']}` at commit {meta['commit']} on {meta['started']}, in "
+        f"Made by `{meta['command']}` at commit {meta['commit'][:10]} on {meta['started']}, in "
         f"{meta.get('minutes', 0):.0f} minutes ({len(done)} of {len(plants)} plants; "
-        f"{meta.get('tests', '?')} ctest tests per plant, `rollerdyn validate` included as validate.claims).",
+        f"{meta.get('tests', '?')} ctest tests per plant, `rollerdyn validate` included as validate.claims)."
+        + (f" Rows from earlier runs are kept where this run did not repeat them (commits {', '.join(commits)})."
+           if len(commits) > 1 else ""),
         "",
         "Each plant is a small, realistic error put into a scratch copy of the code, which is rebuilt and "
         "tested with the whole suite, then taken out again. Plants and their code snippets: "
@@ -197,8 +210,8 @@ def write_outputs(out_dir, meta, results, plants):
         "",
         f"**{caught} of {len(done)} plants caught, {own} by a test written for their law.**",
         "",
-        "| plant | law | caught | by its law's test | all failing tests | minutes |",
-        "|---|---|---|---|---|---|",
+        "| plant | law | caught | by its law's test | all failing tests | minutes | commit |",
+        "|---|---|---|---|---|---|---|",
     ]
     for r in results:
         p = by_id[r["id"]]
@@ -208,7 +221,8 @@ def write_outputs(out_dir, meta, results, plants):
         failed = r["failed"]
         shown = ", ".join(failed[:12]) + (f", … ({len(failed)} in all)" if len(failed) > 12 else "")
         lines.append(f"| {r['id']} {p['name']} | {p['law']} | {'yes' if failed else '**SURVIVED**'} | "
-                     f"{', '.join(r['by_law_test']) if r['by_law_test'] else '**none**'} | {shown} | {r['minutes']:.1f} |")
+                     f"{', '.join(r['by_law_test']) if r['by_law_test'] else '**none**'} | {shown} | {r['minutes']:.1f} | "
+                     f"{r.get('commit', meta['commit'])[:10]} |")
     with open(os.path.join(out_dir, "audit.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
 
@@ -224,7 +238,7 @@ def main():
     ap.add_argument("--test-timeout", type=int, default=600)
     args = ap.parse_args()
 
-    plants = parse_plants(PLANTS)
+    plants = all_plants = parse_plants(PLANTS)
     if args.only:
         wanted = set(args.only.split(","))
         unknown = wanted - {p["id"] for p in plants}
@@ -265,7 +279,7 @@ def main():
     results = []
     for p in plants:
         t1 = time.time()
-        r = {"id": p["id"], "name": p["name"]}
+        r = {"id": p["id"], "name": p["name"], "commit": commit}
         try:
             apply_plant(scratch, p)
             build = run(["cmake", "--build", "build", f"-j{args.jobs}"], scratch, log, scratch_env(scratch), check=False)
@@ -280,7 +294,7 @@ def main():
         r["minutes"] = (time.time() - t1) / 60
         results.append(r)
         meta["minutes"] = (time.time() - t0) / 60
-        write_outputs(args.out, meta, results, plants)
+        write_outputs(args.out, meta, merged(args.out, results, all_plants) if args.only else results, all_plants)
         verdict = ("caught by " + ", ".join(r["by_law_test"]) if r.get("by_law_test") else
                    "caught only by " + ", ".join(r["failed"][:4]) if r.get("failed") else
                    r.get("status") if r.get("status") != "done" else "SURVIVED")
@@ -288,7 +302,7 @@ def main():
     # leave the scratch build as the unplanted code
     run(["cmake", "--build", "build", f"-j{args.jobs}"], scratch, log, scratch_env(scratch), check=False)
     meta["minutes"] = (time.time() - t0) / 60
-    write_outputs(args.out, meta, results, plants)
+    write_outputs(args.out, meta, merged(args.out, results, all_plants) if args.only else results, all_plants)
     ok = all(r.get("status") == "done" and r["by_law_test"] for r in results)
     print(f"{sum(1 for r in results if r.get('by_law_test'))} of {len(results)} plants caught by their law's test; "
           f"{meta['minutes']:.0f} minutes", flush=True)
