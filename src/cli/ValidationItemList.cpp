@@ -9,6 +9,7 @@ std::vector<validation::NamedItem> validationItems() {
   return {
       {"motor torque against Kloss's formula", &motorLawChecks},
       {"cart kinematics against the slider-crank closed form", &kinematicsChecks},
+      {"energy balance of the shipped scenes", &energyBalanceChecks},
       {"drive sizing recomputed from the run's tables", &driveSizingChecks},
       {"sweep rows and optimization evaluations against separate runs", &sweepRowChecks},
   };

@@ -57,4 +57,8 @@ ValidationSection motorLawChecks(const ItemContext& ctx);
 // of its crank (offset and side), both models (ValidationKinematics.cpp).
 ValidationSection kinematicsChecks(const ItemContext& ctx);
 
+// The energy audit of every shipped scene in both models closes at accuracy 1e-9
+// (ValidationEnergy.cpp).
+ValidationSection energyBalanceChecks(const ItemContext& ctx);
+
 }  // namespace rollerdyn::validation
