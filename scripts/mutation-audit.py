@@ -184,6 +184,23 @@ def merged(out_dir, results, plants):
     return [keep[p["id"]] for p in plants if p["id"] in keep]
 
 
+def cell(text):
+    return str(text).replace("|", "\\|")
+
+
+def build_targets(scratch):
+    """rollerdyn and the test executables: what ctest runs (the benchmarks are not tests)."""
+    areas = sorted(d for d in os.listdir(os.path.join(scratch, "tests"))
+                   if os.path.isdir(os.path.join(scratch, "tests", d)) and
+                   any(f.endswith(".cpp") for f in os.listdir(os.path.join(scratch, "tests", d))))
+    return ["rollerdyn"] + ["test_" + a for a in areas]
+
+
+def build(scratch, jobs, log):
+    cmd = ["cmake", "--build", "build", f"-j{jobs}", "--target"] + build_targets(scratch)
+    return run(cmd, scratch, log, scratch_env(scratch), check=False)
+
+
 def write_outputs(out_dir, meta, results, plants):
     os.makedirs(out_dir, exist_ok=True)
     with open(os.path.join(out_dir, "audit.json"), "w") as f:
@@ -216,11 +233,11 @@ def write_outputs(out_dir, meta, results, plants):
     for r in results:
         p = by_id[r["id"]]
         if r.get("status") != "done":
-            lines.append(f"| {r['id']} {p['name']} | {p['law']} | {r.get('status')} | | {r.get('error', '')} | |")
+            lines.append(f"| {r['id']} {p['name']} | {cell(p['law'])} | {r.get('status')} | | {cell(r.get('error', ''))} | | |")
             continue
         failed = r["failed"]
         shown = ", ".join(failed[:12]) + (f", … ({len(failed)} in all)" if len(failed) > 12 else "")
-        lines.append(f"| {r['id']} {p['name']} | {p['law']} | {'yes' if failed else '**SURVIVED**'} | "
+        lines.append(f"| {r['id']} {p['name']} | {cell(p['law'])} | {'yes' if failed else '**SURVIVED**'} | "
                      f"{', '.join(r['by_law_test']) if r['by_law_test'] else '**none**'} | {shown} | {r['minutes']:.1f} | "
                      f"{r.get('commit', meta['commit'])[:10]} |")
     with open(os.path.join(out_dir, "audit.md"), "w") as f:
@@ -282,9 +299,9 @@ def main():
         r = {"id": p["id"], "name": p["name"], "commit": commit}
         try:
             apply_plant(scratch, p)
-            build = run(["cmake", "--build", "build", f"-j{args.jobs}"], scratch, log, scratch_env(scratch), check=False)
-            if build.returncode != 0:
-                r.update(status="does not compile", error=build.stdout.strip().splitlines()[-1][:200])
+            built = build(scratch, args.jobs, log)
+            if built.returncode != 0:
+                r.update(status="does not compile", error=built.stdout.strip().splitlines()[-1][:200])
             else:
                 failed, _, _ = run_tests(scratch, args.jobs, args.test_timeout, log)
                 r.update(status="done", failed=failed, by_law_test=matches(p["expect"], failed))
@@ -300,7 +317,7 @@ def main():
                    r.get("status") if r.get("status") != "done" else "SURVIVED")
         print(f"{p['id']} {p['name']}: {verdict} ({r['minutes']:.1f} min)", flush=True)
     # leave the scratch build as the unplanted code
-    run(["cmake", "--build", "build", f"-j{args.jobs}"], scratch, log, scratch_env(scratch), check=False)
+    build(scratch, args.jobs, log)
     meta["minutes"] = (time.time() - t0) / 60
     write_outputs(args.out, meta, merged(args.out, results, all_plants) if args.only else results, all_plants)
     ok = all(r.get("status") == "done" and r["by_law_test"] for r in results)
