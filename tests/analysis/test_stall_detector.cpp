@@ -41,3 +41,14 @@ TEST(StallDetector, SceneWithoutMotorNeverStalls) {
   StallDetector d(false, kSync);
   for (double t = 0; t <= 3.0; t += 0.1) EXPECT_FALSE(d.update(t, 0.0, 0.0));
 }
+
+// The threshold is 1 % of the synchronous crank speed ω0/u (StallDetector.h): a crank creeping at
+// 1.5 % of it for 2 s is turning, one at 0.5 % for 1 s has stalled.
+TEST(StallDetector, ThresholdIsOnePercentOfTheSynchronousCrankSpeed) {
+  StallDetector creeping(true, kSync), stopped(true, kSync);
+  bool stalled = false;
+  for (double t = 0; t <= 2.0; t += 0.005) stalled = stalled || creeping.update(t, 0.015 * kSync, 0.015 * kSync);
+  EXPECT_FALSE(stalled) << "a crank at 1.5 % of ω0/u is not stalled";
+  for (double t = 0; t <= 1.0 + 1e-9; t += 0.005) stalled = stopped.update(t, 0.005 * kSync, 0.005 * kSync);
+  EXPECT_TRUE(stalled) << "a crank at 0.5 % of ω0/u for 1 s is stalled";
+}
