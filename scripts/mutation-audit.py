@@ -225,8 +225,17 @@ def write_outputs(out_dir, meta, results, plants):
         "names the failing tests written for that law (the plant's expected tests); \"all failing tests\" "
         "lists every test that failed.",
         "",
-        f"**{caught} of {len(done)} plants caught, {own} by a test written for their law.**",
+        f"**{caught} of {len(done)} plants run caught, {own} by a test written for their law.**",
         "",
+    ]
+    not_run = [p["id"] for p in plants if p["id"] not in {r["id"] for r in results}]
+    if not_run:
+        lines += [
+            f"**Partial audit: {len(plants) - len(not_run)} of {len(plants)} plants run.** Not run yet (no verdict, "
+            f"caught or not): {', '.join(not_run)}.",
+            "",
+        ]
+    lines += [
         "| plant | law | caught | by its law's test | all failing tests | minutes | commit |",
         "|---|---|---|---|---|---|---|",
     ]
