@@ -10,13 +10,17 @@ plant is *caught* when at least one test fails, and *caught by its law's test* w
 failing tests matches the plant's `expect:` patterns (a test written for that law, not a
 cross-model comparison that happened to notice).
 
-Usage (from the repository root; long: about 3-4 minutes per plant on 2 cores):
+Usage (from the repository root; long: one whole-suite run per plant):
   nice -n 19 /usr/bin/python3 scripts/mutation-audit.py                  # every plant
   /usr/bin/python3 scripts/mutation-audit.py --check                     # only verify the plants apply
   nice -n 19 /usr/bin/python3 scripts/mutation-audit.py --only P03,P12   # some plants
   options: --scratch DIR (default /tmp/rollerdyn-mutation; kept between runs, so its build stays
   warm), --commit REV (default HEAD), --out DIR (default validation/mutation), --jobs N (default 2),
-  --test-timeout S (default 600: a plant that makes a test hang is caught by the timeout)
+  --test-timeout S (default 600: a plant that makes a test hang is caught by the timeout),
+  --fresh-baseline (run the unplanted suite again even when it passed at this commit in the scratch
+  build before; by default that earlier pass is reused, so a re-run of one plant costs one suite run)
+Cost: a plant costs one incremental build of the test executables and rollerdyn (seconds with a
+warm ccache, up to a minute for a header) plus one whole-suite run, which is 90-98 % of it.
 Writes OUT/audit.md (the table, the command and the duration) and OUT/audit.json, updated after
 every plant. Exit status 0 when every plant is caught by its law's test, 1 otherwise.
 """
@@ -126,7 +130,7 @@ def run(cmd, cwd, log=None, env=None, check=True):
     proc = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     if log:
         with open(log, "a") as f:
-            f.write(f"$ {' '.join(cmd)}\n{proc.stdout}\n")
+            f.write(f"[{datetime.datetime.now():%H:%M:%S}] $ {' '.join(cmd)}\n{proc.stdout}\n")
     if check and proc.returncode != 0:
         raise RuntimeError(f"command failed ({proc.returncode}): {' '.join(cmd)}\n{proc.stdout[-3000:]}")
     return proc
@@ -147,7 +151,25 @@ def prepare_scratch(scratch, commit, jobs, log):
     env = scratch_env(scratch)
     run(["cmake", "-S", ".", "-B", "build", "-DCMAKE_BUILD_TYPE=Release",
          "-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"], scratch, log, env)
-    run(["cmake", "--build", "build", f"-j{jobs}"], scratch, log, env)
+    build(scratch, jobs, log, check=True)
+
+
+BASELINE = os.path.join("build", "mutation-audit-baseline.json")
+
+
+def baseline_passed(scratch, commit):
+    """The number of tests when the unplanted code at this commit passed the whole suite in this
+    scratch build before (recorded by record_baseline), else None."""
+    path = os.path.join(scratch, BASELINE)
+    if not os.path.exists(path):
+        return None
+    rec = json.load(open(path))
+    return rec["tests"] if rec.get("commit") == commit else None
+
+
+def record_baseline(scratch, commit, tests):
+    with open(os.path.join(scratch, BASELINE), "w") as f:
+        json.dump({"commit": commit, "tests": tests}, f)
 
 
 FAILED_LINE = re.compile(r"^\s*\d+\s+-\s+(\S+)\s+\(([^)]*)\)")
@@ -196,9 +218,15 @@ def build_targets(scratch):
     return ["rollerdyn"] + ["test_" + a for a in areas]
 
 
-def build(scratch, jobs, log):
+def build(scratch, jobs, log, check=False):
     cmd = ["cmake", "--build", "build", f"-j{jobs}", "--target"] + build_targets(scratch)
-    return run(cmd, scratch, log, scratch_env(scratch), check=False)
+    return run(cmd, scratch, log, scratch_env(scratch), check=check)
+
+
+def minutes(r):
+    if "test_minutes" in r:
+        return f"{r['minutes']:.1f} ({r['build_minutes']:.1f} + {r['test_minutes']:.1f})"
+    return f"{r['minutes']:.1f}"
 
 
 def write_outputs(out_dir, meta, results, plants):
@@ -236,7 +264,7 @@ def write_outputs(out_dir, meta, results, plants):
             "",
         ]
     lines += [
-        "| plant | law | caught | by its law's test | all failing tests | minutes | commit |",
+        "| plant | law | caught | by its law's test | all failing tests | minutes (build + tests) | commit |",
         "|---|---|---|---|---|---|---|",
     ]
     for r in results:
@@ -247,7 +275,7 @@ def write_outputs(out_dir, meta, results, plants):
         failed = r["failed"]
         shown = ", ".join(failed[:12]) + (f", … ({len(failed)} in all)" if len(failed) > 12 else "")
         lines.append(f"| {r['id']} {p['name']} | {cell(p['law'])} | {'yes' if failed else '**SURVIVED**'} | "
-                     f"{', '.join(r['by_law_test']) if r['by_law_test'] else '**none**'} | {shown} | {r['minutes']:.1f} | "
+                     f"{', '.join(r['by_law_test']) if r['by_law_test'] else '**none**'} | {shown} | {minutes(r)} | "
                      f"{r.get('commit', meta['commit'])[:10]} |")
     with open(os.path.join(out_dir, "audit.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -262,6 +290,8 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "validation", "mutation"))
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--test-timeout", type=int, default=600)
+    ap.add_argument("--fresh-baseline", action="store_true",
+                    help="run the unplanted suite even when it passed at this commit in the scratch build before")
     args = ap.parse_args()
 
     plants = all_plants = parse_plants(PLANTS)
@@ -296,12 +326,18 @@ def main():
     prepare_scratch(scratch, commit, args.jobs, log)
     for p in plants:  # every snippet must be where the plant says before anything runs
         check_plant(scratch, p)
-    failed, total, rc = run_tests(scratch, args.jobs, args.test_timeout, log)
-    if failed or rc != 0:
-        sys.exit(f"mutation-audit: the unplanted code fails tests ({', '.join(failed) or 'ctest exit ' + str(rc)}); "
-                 "an audit needs a passing suite")
+    total = None if args.fresh_baseline else baseline_passed(scratch, commit)
+    if total is not None:
+        print(f"baseline: the unplanted code at {commit[:10]} passed all {total} tests in this scratch build "
+              "before (--fresh-baseline runs it again)", flush=True)
+    else:
+        failed, total, rc = run_tests(scratch, args.jobs, args.test_timeout, log)
+        if failed or rc != 0:
+            sys.exit(f"mutation-audit: the unplanted code fails tests ({', '.join(failed) or 'ctest exit ' + str(rc)}); "
+                     "an audit needs a passing suite")
+        record_baseline(scratch, commit, total)
+        print(f"baseline: {total} tests pass ({(time.time() - t0) / 60:.1f} min)", flush=True)
     meta["tests"] = total
-    print(f"baseline: {total} tests pass ({(time.time() - t0) / 60:.1f} min)", flush=True)
     results = []
     for p in plants:
         t1 = time.time()
@@ -309,10 +345,13 @@ def main():
         try:
             apply_plant(scratch, p)
             built = build(scratch, args.jobs, log)
+            r["build_minutes"] = (time.time() - t1) / 60
             if built.returncode != 0:
                 r.update(status="does not compile", error=built.stdout.strip().splitlines()[-1][:200])
             else:
+                t2 = time.time()
                 failed, _, _ = run_tests(scratch, args.jobs, args.test_timeout, log)
+                r["test_minutes"] = (time.time() - t2) / 60
                 r.update(status="done", failed=failed, by_law_test=matches(p["expect"], failed))
         finally:
             for file_, _, _ in p["edits"]:
