@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # One-step set-up on Debian 12: installs the Debian packages rollerdyn needs (only those that
 # are missing, so a second run costs nothing), then configures and builds it in Release under
-# build/. Run as root (or with sudo available). Usage: bash scripts/setup.sh
+# build/: the command line build/rollerdyn and the Python package build/python/rollerdyn (for
+# /usr/bin/python3). Run as root (or with sudo available). Usage: bash scripts/setup.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,6 +21,13 @@ packages=(
   chromium              # headless browser: the report page test (tests/report), scripts/check-report.sh
   libopenmpi-dev openmpi-bin  # sweeps over MPI ranks (mpirun/srun rollerdyn sweep) and their tests
   libnlopt-cxx-dev      # design optimization (rollerdyn optimize)
+  # The Python module (src/python), built for Debian's /usr/bin/python3, its tests and the example
+  # notebook (examples/), which the tests execute:
+  pybind11-dev python3-pybind11 python3-dev
+  python3-numpy python3-pandas python3-matplotlib
+  python3-pytest python3-yaml   # tests of the Python module and of the examples in the docs
+  jupyter-nbconvert python3-nbconvert python3-ipykernel
+  jupyter-notebook      # to open the notebooks: PYTHONPATH=build/python jupyter notebook examples/
 )
 
 missing=()

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace rollerdyn {
@@ -59,39 +60,43 @@ std::vector<double> magnitude(const std::vector<double>& x, const std::vector<do
   return m;
 }
 
-MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size_t e,
+MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size_t e, std::size_t run_end,
                       double revolutions, bool turning) {
   MotorSizing m;
   const double u = sc.reducer.ratio, eta = sc.reducer.efficiency, w0 = sc.motor.omega_sync;
   const SizingInputs& z = sc.sizing;
+  const double s_n = z.motor_omega_nominal > 0 ? 1.0 - z.motor_omega_nominal / w0 : kNaN;
   m.breakdown_torque = sc.motor.breakdown_torque;
   m.nominal_torque = nominalMotorTorque(sc, &m.nominal_source);
   m.line_power_basis =
-      z.motor_efficiency > 0
-          ? "shaft power / η_m (η_m = sizing.motor_efficiency; × η_m when generating)"
-          : "air-gap power M·ω0: rotor copper losses s·M·ω0 only, stator and iron losses "
-            "neglected (give sizing.motor_efficiency for shaft power / η_m)";
+      z.motor_efficiency > 0 && s_n > 0
+          ? "air-gap power M·ω0 (shaft power plus rotor copper losses) × (1 - s_n)/η_m, stator and iron "
+            "losses as at the nominal point (η_m = sizing.motor_efficiency; ÷ when generating)"
+          : "air-gap power M·ω0: shaft power plus rotor copper losses s·M·ω0; stator and iron losses "
+            "neglected (give sizing.motor_efficiency and motor.omega_nominal to include them)";
   const double nan = kNaN;
   m.torque_shaft_mean = m.torque_shaft_rms = m.torque_shaft_peak = nan;
   m.torque_crank_mean = m.torque_crank_rms = m.torque_crank_peak = nan;
   m.rms_over_nominal = m.peak_over_breakdown = nan;
   m.power_shaft_mean = m.power_shaft_peak = m.power_line_mean = m.power_line_peak = nan;
   m.slip_min = m.slip_max = m.energy_per_revolution = nan;
+  MotorWholeRun& r = m.whole_run;
+  r.torque_shaft_mean = r.torque_shaft_rms = r.torque_shaft_peak = r.rms_over_nominal = nan;
+  r.rotor_losses_mean = r.thermal_over_nominal = r.power_line_mean = r.power_line_peak = nan;
+  r.slip_min = r.slip_max = nan;
   if (!sc.motor.enabled || !ts.has("t") || !ts.has("motor_torque") || !ts.has("omega_motor"))
     return m;
   m.available = true;
   const std::vector<double> t = ts.column("t"), M_crank = ts.column("motor_torque"),
                             w_crank_axis = ts.column("omega_motor");
-  std::vector<double> M(t.size()), P(t.size()), P_line(t.size()), s(t.size());
+  std::vector<double> M(t.size()), P(t.size()), P_line(t.size()), s(t.size()), losses(t.size());
   for (std::size_t i = 0; i < t.size(); ++i) {
     M[i] = M_crank[i] / (u * eta);          // rotor torque
     const double w_r = u * w_crank_axis[i];  // rotor speed
     P[i] = M[i] * w_r;
     s[i] = 1.0 - w_r / w0;
-    if (z.motor_efficiency > 0)
-      P_line[i] = P[i] >= 0 ? P[i] / z.motor_efficiency : P[i] * z.motor_efficiency;
-    else
-      P_line[i] = M[i] * w0;
+    P_line[i] = linePower(M[i], w0, s_n, z.motor_efficiency);
+    losses[i] = s[i] * M[i] * w0;  // rotor copper losses s·P_ag
   }
   const Moments ms = moments(t, M, b, e), mc = moments(t, M_crank, b, e), mp = moments(t, P, b, e),
                 ml = moments(t, P_line, b, e);
@@ -114,6 +119,63 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   }
   if (turning && revolutions >= 0.5)
     m.energy_per_revolution = mp.mean * (t[e - 1] - t[b]) / revolutions;
+
+  const Moments rs = moments(t, M, 0, run_end), rl = moments(t, P_line, 0, run_end),
+                rq = moments(t, losses, 0, run_end);
+  r.torque_shaft_mean = rs.mean;
+  r.torque_shaft_rms = rs.rms;
+  r.torque_shaft_peak = rs.peak;
+  r.rms_over_nominal = rs.rms / m.nominal_torque;
+  r.rotor_losses_mean = rq.mean;
+  r.power_line_mean = rl.mean;
+  r.power_line_peak = rl.max;
+  if (run_end >= 2) {
+    const auto [lo, hi] = std::minmax_element(s.begin(), s.begin() + run_end);
+    r.slip_min = *lo;
+    r.slip_max = *hi;
+  }
+  r.start_heat = r.starts_per_hour = nan;
+  const Moments sq = moments(t, losses, b, e);
+  if (run_end >= 2 && std::isfinite(rq.mean) && std::isfinite(sq.mean)) {
+    const double span = t[run_end - 1] - t[0];
+    r.start_heat = std::max(0.0, (rq.mean - sq.mean) * span);
+    const double nominal_losses = s_n * m.nominal_torque * w0;  // s_n·M_n·ω0
+    if (s_n > 0 && m.nominal_torque > 0 && r.start_heat > 0)
+      r.starts_per_hour = std::max(0.0, 3600.0 * (nominal_losses - sq.mean) / r.start_heat);
+  }
+  // The duty decides how often the start's heat comes: the run's length says nothing about it (a
+  // 10 s run is not a start every 10 s). With sizing.starts_per_hour the thermal equivalent is the
+  // steady losses plus that many starts' heat per hour; without it the drive runs continuously (S1)
+  // and the heating check reads the steady window, with the starts per hour the motor allows.
+  r.duty_starts_per_hour = z.starts_per_hour;
+  char starts[200] = "";
+  if (std::isfinite(r.starts_per_hour))
+    std::snprintf(starts, sizeof starts,
+                  "one start adds %.3g kJ of rotor heat, so the rotor's heat balance allows about %.3g starts per hour "
+                  "at this load",
+                  r.start_heat * 1e-3, r.starts_per_hour);
+  if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(sq.mean) && std::isfinite(r.start_heat) &&
+      z.starts_per_hour > 0) {
+    const double duty_losses = std::max(0.0, sq.mean) + z.starts_per_hour * r.start_heat / 3600.0;
+    r.thermal_over_nominal = std::sqrt(duty_losses / (s_n * m.nominal_torque * w0));
+    char duty[200];
+    std::snprintf(duty, sizeof duty, "%.4g starts per hour (sizing.starts_per_hour)", z.starts_per_hour);
+    r.thermal_basis = "√((steady rotor losses s·M·ω0 + starts per hour × heat of one start) / (s_n·M_n·ω0)) for " +
+                      std::string(duty) + "; " + starts;
+  } else if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(sq.mean)) {
+    // No duty given: continuous running, the steady window's own losses (a locked rotor's s = 1
+    // shows here, where the RMS of its torque would not).
+    r.thermal_over_nominal = std::sqrt(std::max(0.0, sq.mean) / (s_n * m.nominal_torque * w0));
+    char eq[64];
+    std::snprintf(eq, sizeof eq, "%.3g", r.thermal_over_nominal);
+    r.thermal_basis = std::string("continuous running (sizing.starts_per_hour not given): √(steady-window rotor "
+                                  "losses s·M·ω0 / (s_n·M_n·ω0)) = ") + eq + "; " +
+                      (starts[0] ? starts : "the start's heat is not known");
+  } else {
+    r.thermal_over_nominal = r.rms_over_nominal;
+    r.thermal_basis = "RMS torque over the whole run / M_n (s_n not known: motor.omega_nominal not given; "
+                      "start-up heating at high slip is underestimated)";
+  }
   return m;
 }
 
@@ -149,8 +211,9 @@ FlywheelSizing sizeFlywheel(const Scene& sc, const Table& ts, const SteadyState&
   return f;
 }
 
-CouplingSizing sizeCoupling(const Scene& sc, const Table& ts, std::size_t b, std::size_t e) {
-  CouplingSizing c{false, kNaN, kNaN, kNaN, given(sc.sizing.coupling_rated_torque), kNaN};
+CouplingSizing sizeCoupling(const Scene& sc, const Table& ts, std::size_t b, std::size_t e,
+                            std::size_t run_end) {
+  CouplingSizing c{false, kNaN, kNaN, kNaN, given(sc.sizing.coupling_rated_torque), kNaN, kNaN, kNaN, kNaN};
   if (!ts.has("t") || !ts.has("coupling_torque")) return c;
   const std::vector<double> t = ts.column("t"), M = ts.column("coupling_torque");
   const Moments m = moments(t, M, b, e);
@@ -162,6 +225,12 @@ CouplingSizing sizeCoupling(const Scene& sc, const Table& ts, std::size_t b, std
     c.swing = *hi - *lo;
   }
   c.peak_over_rating = c.peak / c.rating;
+  for (std::size_t i = 0; i < run_end && i < M.size(); ++i)
+    if (std::isfinite(M[i]) && !(std::abs(M[i]) <= c.peak_whole_run)) {
+      c.peak_whole_run = std::abs(M[i]);
+      c.t_peak_whole_run = t[i];
+    }
+  c.peak_over_rating_whole_run = c.peak_whole_run / c.rating;
   return c;
 }
 
@@ -284,23 +353,137 @@ std::vector<double> kineticEnergy(const Scene& sc, const Table& ts) {
   return T;
 }
 
+double linePower(double M, double w0, double s_n, double eta_m) {
+  const double P_ag = M * w0;
+  if (!(eta_m > 0) || !(s_n > 0)) return P_ag;
+  const double k = (1.0 - s_n) / eta_m;  // P_line/P_ag at the nominal point (≥ 1 for real motors)
+  return P_ag >= 0 ? P_ag * k : P_ag / k;
+}
+
+namespace {
+
+const char* kWhole = "whole run";
+const char* kDuty = "duty cycle (steady running and starts)";
+constexpr double kBreakdownMargin = 0.95 * 0.95;  // M_kr at 95 % of the rated voltage [-]
+const char* kSteady = "steady window";
+
+std::string verdictOf(double ratio, bool strict) {
+  if (!std::isfinite(ratio)) return "";
+  return (strict ? ratio < 1.0 : ratio <= 1.0) ? "pass" : "FAIL";
+}
+
+std::string fmt3(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
+  std::vector<SizingCheck> out;
+  const MotorSizing& m = s.motor;
+  const std::string not_turning =
+      "the drive does not turn (" + (s.motion.empty() ? std::string("not turning") : s.motion) + ")";
+  // Still starting when the run ended: nothing is known of its running, so no verdict applies.
+  const bool starting = s.motion == "starting";
+  const std::string too_short = "the run ended before the drive settled (its speed still changes sign in the "
+                                "metrics window): run longer (simulation.t_end)";
+  if (m.available) {
+    SizingCheck h{"motor_heating", "thermal equivalent torque / nominal torque M_n, ≤ 1", kNaN, "", "", ""};
+    const double steady = m.rms_over_nominal, whole = m.whole_run.thermal_over_nominal;
+    const bool whole_decides = !(whole <= steady);  // NaN steady: the whole run decides
+    h.value = whole_decides ? whole : steady;
+    h.window = whole_decides ? (m.whole_run.duty_starts_per_hour > 0 ? kDuty : kWhole) : kSteady;
+    h.reason = whole_decides ? m.whole_run.thermal_basis + " (" + fmt3(whole) + "; steady window RMS/M_n " +
+                                   fmt3(steady) + ")"
+                             : "RMS torque / M_n over the steady window (" + fmt3(steady) +
+                                   "; whole run thermal equivalent " + fmt3(whole) + ")";
+    h.verdict = verdictOf(h.value, false);
+    if (!(m.whole_run.duty_starts_per_hour > 0) && std::isfinite(m.whole_run.start_heat)) {
+      // Continuous running: the steady window decides, by the larger of the RMS rule and the
+      // steady losses.
+      h.value = std::isfinite(whole) ? std::max(steady, whole) : steady;
+      h.window = kSteady;
+      h.reason = "RMS torque / M_n over the steady window (" + fmt3(steady) + "); " + m.whole_run.thermal_basis;
+      h.verdict = verdictOf(h.value, false);
+      if (m.whole_run.starts_per_hour < 1.0) {  // NaN compares false: no verdict from an unknown start
+        h.verdict = "FAIL";
+        h.reason = "the motor cannot take even one start per hour at this load: " + h.reason;
+      }
+    }
+    if (starting) {
+      h.verdict = "not applicable";
+      h.reason = too_short;
+    } else if (!turning) {
+      h.verdict = "FAIL";
+      h.reason = not_turning + ": a motor that cannot drive its load overheats whatever the torque; " + h.reason;
+    }
+    out.push_back(h);
+    // Margin for the supply: the breakdown torque falls with the square of the voltage, and
+    // IEC 60034-1 (zone A) lets the supply sit 5 % low, where M_kr is 0.95² = 0.9025 of its
+    // rating. A steady peak above that stalls the motor on a supply within its tolerance.
+    const double limit = kBreakdownMargin;
+    SizingCheck k{"motor_breakdown",
+                  "peak |M| / breakdown torque M_kr over the steady window, < 0.9025 (M_kr at 95 % supply voltage, "
+                  "IEC 60034-1 zone A; a start passes M_kr by design)",
+                  m.peak_over_breakdown, verdictOf(m.peak_over_breakdown / limit, true), kSteady, ""};
+    k.reason = "peak " + fmt3(m.torque_shaft_peak) + " N·m in the steady window; whole run " +
+               fmt3(m.whole_run.torque_shaft_peak) + " N·m";
+    if (starting) {
+      k.verdict = "not applicable";
+      k.reason = too_short;
+    } else if (!turning) {
+      k.verdict = "FAIL";
+      k.reason = not_turning + ": the load needs more than the motor gives";
+    }
+    out.push_back(k);
+  }
+  const CouplingSizing& c = s.coupling;
+  if (c.available) {
+    SizingCheck k{"coupling", "peak |M| / rated torque of the coupling, ≤ 1", kNaN, "", "", ""};
+    const bool whole_decides = !(c.peak_whole_run <= c.peak);
+    k.value = whole_decides ? c.peak_over_rating_whole_run : c.peak_over_rating;
+    k.window = whole_decides ? kWhole : kSteady;
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "peak %.4g N·m at t = %.4g s (whole run); steady window peak %.4g N·m",
+                  c.peak_whole_run, c.t_peak_whole_run, c.peak);
+    k.reason = buf;
+    if (!std::isfinite(c.rating)) k.reason += "; rating not given (sizing.coupling_rated_torque)";
+    k.verdict = verdictOf(k.value, false);
+    if (!turning && k.verdict == "pass") {
+      k.verdict = "not applicable";
+      k.reason = not_turning + ": the coupling torque of a working drive is not known; " + k.reason;
+    }
+    out.push_back(k);
+  }
+  return out;
+}
+
+}  // namespace
+
 DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const SteadyState& w,
-                               bool turning, double delta) {
+                               bool turning, double delta, const std::string& motion) {
   DriveSizing s;
   const Table& ts = run.timeseries;
   s.t_begin = w.t_begin;
   s.t_end = w.t_end;
+  s.motion = motion.empty() ? (turning ? "turning" : "not turning") : motion;
   s.revolutions = kNaN;
   const std::size_t n = std::min(w.finite_rows, ts.rows.size());
   const std::size_t b = std::min(w.row_begin, n), e = std::min(w.row_end, n);
+  s.run_t_begin = s.run_t_end = kNaN;
+  if (ts.has("t") && n >= 1) {
+    s.run_t_begin = ts.rows.front()[ts.index("t")];
+    s.run_t_end = ts.rows[n - 1][ts.index("t")];
+  }
   if (ts.has("phi_crank") && e >= b + 2) {
     const int k = ts.index("phi_crank");
     s.revolutions = std::abs(ts.rows[e - 1][k] - ts.rows[b][k]) / kTwoPi;
   }
-  s.motor = sizeMotor(sc, ts, b, e, s.revolutions, turning);
+  s.motor = sizeMotor(sc, ts, b, e, n, s.revolutions, turning);
   s.flywheel = sizeFlywheel(sc, ts, w, b, e, turning, delta);
-  s.coupling = sizeCoupling(sc, ts, b, e);
+  s.coupling = sizeCoupling(sc, ts, b, e, n);
   s.joints = sizeJoints(sc, run, w);
+  s.checks = sizingChecks(s, turning);
   return s;
 }
 

@@ -1,8 +1,32 @@
 // The answers a drive is sized with, computed once from a RunResult (so the multibody and the
-// reduced model get the same figures from the same columns) over the steady-state window
-// (SteadyState.h): motor torques, powers and slip against the motor's nominal and breakdown
-// torque, the flywheel that would bring the coefficient of unevenness δ to a target, the coupling
-// torque against its rating, and the bearing loads of every joint (BearingLoad.h).
+// reduced model get the same figures from the same columns) over two windows: the steady-state
+// window (SteadyState.h) and the whole run (start-up from the initial state, the steady running,
+// and whatever else the run holds). Motor torques, powers and slip against the motor's nominal and
+// breakdown torque, the flywheel that would bring the coefficient of unevenness δ to a target, the
+// coupling torque against its rating, and the bearing loads of every joint (BearingLoad.h).
+//
+// The checks (SizingCheck) each name the window that decided them:
+//  * motor heating: the larger of RMS/M_n over the steady window and the thermal equivalent of the
+//    whole run. Heat in an induction motor's rotor is s·P_ag = s·M·ω0 exactly (slip times air-gap
+//    power), and at nominal load s_n·M_n·ω0; on the running branch s ≈ s_n·M/M_n, so the mean of
+//    s·M over (s_n·M_n) is (RMS/M_n)², the usual RMS rule. At start-up (s near 1) the same
+//    losses are tens of times the running ones, which the RMS of the torque cannot show; the
+//    start's heat (the run's losses above the steady level) counts them. How often a start comes
+//    is the duty's, not the run's (a 10 s run is not a start every 10 s): with
+//    sizing.starts_per_hour the equivalent is √((steady s·M + starts per hour × start heat)/(s_n·M_n));
+//    without it the drive runs continuously, the steady window decides, and the check reports
+//    the starts per hour the rotor's heat allows (fails below one). Stator and iron losses are
+//    taken to scale like the rotor's (they follow the current, which follows √(s·M) off nominal).
+//  * breakdown margin: peak |M| / M_kr over the steady window only, below 0.95² = 0.9025 (the
+//    breakdown torque goes with the square of the voltage, and IEC 60034-1 zone A allows the
+//    supply 5 % low): a start from rest passes through M_kr by design (the static law reaches
+//    exactly M_kr at s_kr), so the whole run always reads 1 there; a steady peak near M_kr means
+//    the motor falls off its running branch at the first dip of the supply.
+//  * coupling: peak |M| / rating over the whole run (start-up peaks included) and the steady
+//    window; the larger decides.
+// A drive that does not turn (stalled, rocking) fails the motor checks with the reason, and the
+// other checks do not apply: the loads of a working drive are unknown.
+
 //
 // Notation: u reducer ratio, η reducer efficiency, ω0 synchronous rotor speed, ω_r rotor speed,
 // M motor torque at the rotor shaft, M·u·η the same at the crank (the `motor_torque` column),
@@ -20,6 +44,24 @@
 namespace rollerdyn {
 
 // Every double is NaN when it cannot be computed (column absent, no motor, nothing given).
+// Motor figures over the whole run (NaN when not computable).
+struct MotorWholeRun {
+  double torque_shaft_mean = 0, torque_shaft_rms = 0, torque_shaft_peak = 0;  // M at the rotor [N·m]
+  double rms_over_nominal = 0;     // RMS / M_n [-]
+  double rotor_losses_mean = 0;    // mean of s·M·ω0, the rotor's copper losses [W]
+  double thermal_over_nominal = 0; // duty thermal equivalent √((steady s·M + starts/h × start heat/3600 s)
+                                   // /(s_n·M_n)) [-]; NaN without a duty (continuous running);
+                                   // RMS/M_n over the whole run when s_n is not known
+  std::string thermal_basis;       // which of the two
+  double start_heat = 0;           // rotor heat of the run above its steady level: ∫s·M·ω0 dt minus
+                                   // the steady window's mean losses × the run's duration [J]
+  double duty_starts_per_hour = 0; // starts per hour of the duty (sizing.starts_per_hour; 0: continuous) [1/h]
+  double starts_per_hour = 0;      // starts per hour the rotor's heat balance allows at this load:
+                                   // 3600·(s_n·M_n·ω0 − steady losses)/start_heat [1/h]
+  double power_line_mean = 0, power_line_peak = 0;  // drawn from the line [W]
+  double slip_min = 0, slip_max = 0;  // s [-]
+};
+
 struct MotorSizing {
   bool available = false;          // motor on and the run has motor_torque and omega_motor
   double torque_shaft_mean = 0, torque_shaft_rms = 0, torque_shaft_peak = 0;  // M at the rotor [N·m]
@@ -34,6 +76,7 @@ struct MotorSizing {
   std::string line_power_basis;    // the efficiency assumption behind the line power
   double slip_min = 0, slip_max = 0;  // s over the window [-]
   double energy_per_revolution = 0;   // ∫ M·ω_r dt per crank revolution [J]; NaN unless turning
+  MotorWholeRun whole_run;            // the same over the whole run
 };
 
 struct FlywheelSizing {
@@ -52,6 +95,18 @@ struct CouplingSizing {
   double mean = 0, peak = 0, swing = 0;  // coupling torque at the crank axis: mean, max |M|, max - min [N·m]
   double rating = 0;               // sizing.coupling_rated_torque [N·m]; NaN when not given
   double peak_over_rating = 0;     // [-], passes when ≤ 1
+  double peak_whole_run = 0, t_peak_whole_run = 0;  // max |M| over the whole run and when [N·m], [s]
+  double peak_over_rating_whole_run = 0;            // [-]
+};
+
+// One check a drive is signed off with.
+struct SizingCheck {
+  std::string name;     // motor_heating, motor_breakdown, coupling
+  std::string what;     // in words, with the limit
+  double value = 0;     // the deciding ratio [-] (NaN when not computable)
+  std::string verdict;  // "pass", "FAIL", "not applicable" or "" (nothing to compare with)
+  std::string window;   // "whole run" or "steady window": where the deciding value comes from
+  std::string reason;   // why FAIL or not applicable; what decided
 };
 
 struct JointSizing {
@@ -66,12 +121,15 @@ struct JointSizing {
 };
 
 struct DriveSizing {
-  double t_begin = 0, t_end = 0;  // window [s]
+  double t_begin = 0, t_end = 0;  // steady window [s]
+  double run_t_begin = 0, run_t_end = 0;  // whole run: the finite rows [s]
+  std::string motion;             // the crank's motion (RunMotion.h)
   double revolutions = 0;         // crank revolutions in the window [-]
   MotorSizing motor;
   FlywheelSizing flywheel;
   CouplingSizing coupling;
   std::vector<JointSizing> joints;  // per cart: guide rollers, rod end, crank pin; then main bearing
+  std::vector<SizingCheck> checks;  // motor_heating, motor_breakdown, coupling
   // The most loaded joint of each kind (largest P, else largest peak); nullptr when none.
   const JointSizing* worst(const std::string& joint) const;
 };
@@ -82,9 +140,17 @@ struct DriveSizing {
 double nominalMotorTorque(const Scene& scene, std::string* source = nullptr);
 
 // `turning`: whether the crank turns in the window (per-revolution figures are NaN otherwise);
-// `delta`: the run's coefficient of unevenness (Metrics.h).
+// `delta`: the run's coefficient of unevenness (Metrics.h); `motion`: the crank's motion in words
+// (RunMotion.h; "" = "turning" or "not turning" from `turning`), named by a failed check.
 DriveSizing computeDriveSizing(const Scene& scene, const RunResult& run, const SteadyState& window,
-                               bool turning, double delta);
+                               bool turning, double delta, const std::string& motion = "");
+
+// Power drawn from the line for a motor torque M at the rotor [W]: the air-gap power M·ω0 (what
+// crosses to the rotor: shaft power plus the rotor's copper losses s·M·ω0), times (1 - s_n)/η_m
+// for the stator and iron losses as at the nominal point (η_m = sizing.motor_efficiency; there
+// the formula gives P_n/η_m), divided by it when generating. Without η_m: the air-gap power.
+// A locked rotor thus draws its full air-gap power as heat, never "no power".
+double linePower(double M, double omega_sync, double slip_nominal, double motor_efficiency);
 
 // The machine's kinetic energy at each timeseries row [J], rigid-body parts at the crank axis:
 //   T = ½J_n1·ω_motor² + ½J_c·ω_crank² + Σ_j ½(m'_B + m_rod/2)·v_j² + n·½(m_rod/2)·r²·ω_crank²,

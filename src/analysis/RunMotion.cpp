@@ -8,20 +8,28 @@
 
 namespace rollerdyn {
 
-std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMetrics& m) {
-  // The models end a stalled run with the detector's own status line; the same rule applied to
-  // the rows catches a table that was not produced by a model run.
-  if (!run.stats.complete && run.stats.status.rfind("motor stalled", 0) == 0) return "stalled";
+std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMetrics& m, double window_advance,
+                           bool steady_reached) {
+  // The models end a hopeless run with the detector's own status line (StallDetector.h); the
+  // same rule applied to the rows catches a table that was not produced by a model run.
+  if (!run.stats.complete) {
+    const std::string from_status = StallDetector::motionOfStatus(run.stats.status);
+    if (!from_status.empty()) return from_status;
+  }
   const Table& ts = run.timeseries;
-  if (sc.motor.enabled && sc.reducer.ratio > 0 && ts.has("t") && ts.has("omega_crank")) {
+  if (sc.motor.enabled && sc.reducer.ratio > 0 && ts.has("t") && ts.has("omega_crank") && ts.has("phi_crank")) {
     StallDetector d(true, sc.motor.omega_sync / sc.reducer.ratio);
-    const int it = ts.index("t"), ic = ts.index("omega_crank");
+    const int it = ts.index("t"), ip = ts.index("phi_crank"), ic = ts.index("omega_crank");
     const int im = ts.has("omega_motor") ? ts.index("omega_motor") : ic;
     for (const auto& row : ts.rows)
-      if (d.update(row[it], row[ic], row[im])) return "stalled";
+      if (d.update(row[it], row[ip], row[ic], row[im]))
+        return d.kind() == StallKind::RockingWithoutGain ? "rocking" : "stalled";
   }
   if (!std::isfinite(m.omega_min) || !std::isfinite(m.omega_max)) return "unknown";
-  if (m.omega_min < 0 && m.omega_max > 0) return "rocking";
+  if (m.omega_min < 0 && m.omega_max > 0) {
+    if (!(std::abs(window_advance) >= 2.0 * M_PI)) return "rocking";
+    if (!steady_reached) return "starting";
+  }
   if (m.omega_min == 0 && m.omega_max == 0) return "at_rest";
   return "turning";
 }

@@ -1,9 +1,13 @@
 // How the drive moved, named once for every output (console, summary.json, report, sweep):
-//   "stalled"  the motor stalled (StallDetector.h: crank or motor below 1 % of synchronous speed
-//              for 1 s); the run ended early,
-//   "rocking"  the crank swings back and forth in the metrics window instead of turning (loads
-//              that the motor cannot lift over a dead centre, Loveikin, Pochka, Romasevych (2018)
-//              at small crank offsets),
+//   "stalled"  the drive is held at rest by its load or driven backwards (StallDetector.h); the
+//              run ended early,
+//   "rocking"  the crank swings back and forth instead of turning: in the metrics window, or with
+//              swings that stopped growing (StallDetector.h; the run then ended early): loads that
+//              the motor cannot lift over a dead centre, Loveikin, Pochka, Romasevych (2018) at
+//              small crank offsets. A crank that rocks with growing swings and then turns is
+//              "turning" once it turns in the metrics window,
+//   "starting" the crank got over its dead centres and turns, but the run ended before it settled
+//              (its speed still changes sign in the metrics window): run longer,
 //   "turning"  the crank turns one way: per-revolution metrics (δ, H, k_p, energy per revolution,
 //              the flywheel size) have a meaning,
 //   "at_rest", "unknown" (no finite crank speed in the window).
@@ -11,6 +15,7 @@
 // the crank, against the load torque at the start angle and averaged over a revolution.
 #pragma once
 
+#include <limits>
 #include <string>
 
 #include "analysis/Metrics.h"
@@ -19,7 +24,15 @@
 
 namespace rollerdyn {
 
-std::string classifyMotion(const Scene& scene, const RunResult& run, const WindowMetrics& window);
+// `window_advance`: how far the crank turned over the metrics window [rad] (NaN: not known). A
+// crank whose speed changes sign in the window but that advanced a whole revolution or more
+// turns (with dips backwards, or with the start-up inside a short run's window), it does not rock.
+// `steady_reached`: whether the run settled (SteadyState.h); a crank that turns through the window
+// with its speed changing sign, in a run that never settled, is still "starting" (the window holds
+// its rocking start): per-revolution figures and sizing verdicts do not apply, the run is too short.
+std::string classifyMotion(const Scene& scene, const RunResult& run, const WindowMetrics& window,
+                           double window_advance = std::numeric_limits<double>::quiet_NaN(),
+                           bool steady_reached = true);
 
 // Whether per-revolution metrics mean anything for this motion.
 inline bool motionIsTurning(const std::string& motion) { return motion == "turning"; }

@@ -1,5 +1,6 @@
 #include "analysis/SizingSummary.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -11,12 +12,6 @@ namespace {
 using nlohmann::json;
 
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-// "pass"/"FAIL" of ratio ≤ limit (strictly below when `strict`), null when the ratio is unknown.
-json check(double ratio, bool strict) {
-  if (!std::isfinite(ratio)) return nullptr;
-  return (strict ? ratio < 1.0 : ratio <= 1.0) ? "pass" : "FAIL";
-}
 
 json jointJson(const JointSizing& j) {
   return {{"cart", j.cart > 0 ? json(j.cart) : json(nullptr)},
@@ -52,8 +47,28 @@ const json& at(const json& j, const char* k) {
 json sizingJson(const DriveSizing& s) {
   json j;
   j["window"] = {{"t_begin", num(s.t_begin)}, {"t_end", num(s.t_end)}, {"revolutions", num(s.revolutions)}};
+  j["whole_run"] = {{"t_begin", num(s.run_t_begin)}, {"t_end", num(s.run_t_end)}};
+  j["motion"] = s.motion;
+  json checks = json::array();
+  const SizingCheck* by_name[3] = {nullptr, nullptr, nullptr};
+  for (const SizingCheck& c : s.checks) {
+    checks.push_back({{"check", c.name},
+                      {"what", c.what},
+                      {"value", num(c.value)},
+                      {"verdict", c.verdict.empty() ? json(nullptr) : json(c.verdict)},
+                      {"window", c.window},
+                      {"reason", c.reason}});
+    if (c.name == "motor_heating") by_name[0] = &c;
+    if (c.name == "motor_breakdown") by_name[1] = &c;
+    if (c.name == "coupling") by_name[2] = &c;
+  }
+  j["checks"] = checks;
+  auto verdict = [&](int k) -> json {
+    return by_name[k] && !by_name[k]->verdict.empty() ? json(by_name[k]->verdict) : json(nullptr);
+  };
   const MotorSizing& m = s.motor;
   if (m.available) {
+    const MotorWholeRun& r = m.whole_run;
     j["motor"] = {
         {"torque_shaft", {{"mean", num(m.torque_shaft_mean)}, {"rms", num(m.torque_shaft_rms)}, {"peak", num(m.torque_shaft_peak)}}},
         {"torque_crank", {{"mean", num(m.torque_crank_mean)}, {"rms", num(m.torque_crank_rms)}, {"peak", num(m.torque_crank_peak)}}},
@@ -61,14 +76,24 @@ json sizingJson(const DriveSizing& s) {
         {"nominal_torque_source", m.nominal_source},
         {"breakdown_torque", num(m.breakdown_torque)},
         {"rms_over_nominal", num(m.rms_over_nominal)},
-        {"rms_check", check(m.rms_over_nominal, false)},
+        {"rms_check", verdict(0)},
         {"peak_over_breakdown", num(m.peak_over_breakdown)},
-        {"peak_check", check(m.peak_over_breakdown, true)},
+        {"peak_check", verdict(1)},
         {"power_shaft", {{"mean", num(m.power_shaft_mean)}, {"peak", num(m.power_shaft_peak)}}},
         {"power_line", {{"mean", num(m.power_line_mean)}, {"peak", num(m.power_line_peak)}}},
         {"line_power_basis", m.line_power_basis},
         {"slip", {{"min", num(m.slip_min)}, {"max", num(m.slip_max)}}},
-        {"energy_per_revolution", num(m.energy_per_revolution)}};
+        {"energy_per_revolution", num(m.energy_per_revolution)},
+        {"whole_run",
+         {{"torque_shaft", {{"mean", num(r.torque_shaft_mean)}, {"rms", num(r.torque_shaft_rms)}, {"peak", num(r.torque_shaft_peak)}}},
+          {"rms_over_nominal", num(r.rms_over_nominal)},
+          {"rotor_losses_mean", num(r.rotor_losses_mean)},
+          {"thermal_over_nominal", num(r.thermal_over_nominal)},
+          {"thermal_basis", r.thermal_basis},
+          {"start_heat", num(r.start_heat)},
+          {"starts_per_hour", num(r.starts_per_hour)},
+          {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
+          {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}}}};
   } else {
     j["motor"] = nullptr;
   }
@@ -90,7 +115,9 @@ json sizingJson(const DriveSizing& s) {
   if (c.available) {
     j["coupling"] = {{"mean", num(c.mean)}, {"peak", num(c.peak)}, {"swing", num(c.swing)},
                      {"rated_torque", num(c.rating)}, {"peak_over_rating", num(c.peak_over_rating)},
-                     {"check", check(c.peak_over_rating, false)}};
+                     {"peak_whole_run", num(c.peak_whole_run)}, {"t_peak_whole_run", num(c.t_peak_whole_run)},
+                     {"peak_over_rating_whole_run", num(c.peak_over_rating_whole_run)},
+                     {"check", verdict(2)}};
   } else {
     j["coupling"] = nullptr;
   }
@@ -113,8 +140,8 @@ json sizingJson(const DriveSizing& s) {
 
 const std::vector<std::pair<std::string, std::string>>& sizingMetricPaths() {
   static const std::vector<std::pair<std::string, std::string>> p = {
-      {"motor_torque_rms", "sizing.motor.torque_shaft.rms"},
-      {"motor_torque_peak", "sizing.motor.torque_shaft.peak"},
+      {"motor_torque_rotor_rms", "sizing.motor.torque_shaft.rms"},
+      {"motor_torque_rotor_peak", "sizing.motor.torque_shaft.peak"},
       {"motor_rms_over_nominal", "sizing.motor.rms_over_nominal"},
       {"motor_peak_over_breakdown", "sizing.motor.peak_over_breakdown"},
       {"motor_power_mean", "sizing.motor.power_shaft.mean"},
@@ -122,6 +149,12 @@ const std::vector<std::pair<std::string, std::string>>& sizingMetricPaths() {
       {"energy_per_revolution", "sizing.motor.energy_per_revolution"},
       {"kinetic_energy_swing", "sizing.flywheel.kinetic_energy_swing"},
       {"coupling_torque_peak", "sizing.coupling.peak"},
+      {"load_power_per_cart", "load.power_mean_per_cart_steady"},
+      {"load_net_over_gross", "load.net_over_gross_steady"},
+      {"motor_torque_rotor_rms_whole_run", "sizing.motor.whole_run.torque_shaft.rms"},
+      {"motor_thermal_whole_run", "sizing.motor.whole_run.thermal_over_nominal"},
+      {"motor_power_line_mean_whole_run", "sizing.motor.whole_run.power_line.mean"},
+      {"coupling_torque_peak_whole_run", "sizing.coupling.peak_whole_run"},
       {"guide_roller_peak", "sizing.joints.guide_roller_front.worst.peak"},
       {"guide_roller_rear_peak", "sizing.joints.guide_roller_rear.worst.peak"},
       {"rod_force_peak", "sizing.joints.rod_end.worst.peak"},
@@ -141,29 +174,37 @@ std::string sizingText(const json& summary) {
   auto chk = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
   auto str = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
   const json& w = at(s, "window");
+  const json& wr = at(s, "whole_run");
   o << "drive sizing over the steady window t = " << fmt(at(w, "t_begin"), "%.4g") << " ... "
-    << fmt(at(w, "t_end"), "%.4g") << " s (" << fmt(at(w, "revolutions"), "%.3g") << " crank revolutions)\n"
+    << fmt(at(w, "t_end"), "%.4g") << " s (" << fmt(at(w, "revolutions"), "%.3g") << " crank revolutions)"
+    << " and over the whole run t = " << fmt(at(wr, "t_begin"), "%.4g") << " ... " << fmt(at(wr, "t_end"), "%.4g")
+    << " s (start-up included)\n"
     << "  M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω_r rotor speed, ω0 synchronous speed\n";
   const json& m = at(s, "motor");
   if (m.is_object()) {
     const json &ts = at(m, "torque_shaft"), &tc = at(m, "torque_crank");
+    const json& r = at(m, "whole_run");
     o << "  motor torque at the rotor M       mean " << fmt(at(ts, "mean"), "%.4g") << ", RMS "
-      << fmt(at(ts, "rms"), "%.4g") << ", peak |M| " << fmt(at(ts, "peak"), "%.4g") << " N·m\n";
+      << fmt(at(ts, "rms"), "%.4g") << ", peak |M| " << fmt(at(ts, "peak"), "%.4g") << " N·m (steady window)\n"
+      << "                                    mean " << fmt(at(at(r, "torque_shaft"), "mean"), "%.4g") << ", RMS "
+      << fmt(at(at(r, "torque_shaft"), "rms"), "%.4g") << ", peak |M| " << fmt(at(at(r, "torque_shaft"), "peak"), "%.4g")
+      << " N·m (whole run)\n";
     o << "  motor torque at the crank M·u·η   mean " << fmt(at(tc, "mean"), "%.4g") << ", RMS "
-      << fmt(at(tc, "rms"), "%.4g") << ", peak " << fmt(at(tc, "peak"), "%.4g") << " N·m\n";
-    o << "  RMS / nominal torque M_n          " << fmt(at(ts, "rms"), "%.4g") << " / "
-      << fmt(at(m, "nominal_torque"), "%.4g") << " N·m = " << fmt(at(m, "rms_over_nominal"), "%.3f") << "  "
-      << chk(at(m, "rms_check")) << "  (thermal equivalent; M_n: " << str(at(m, "nominal_torque_source")) << ")\n";
-    o << "  peak / breakdown torque M_kr      " << fmt(at(ts, "peak"), "%.4g") << " / "
-      << fmt(at(m, "breakdown_torque"), "%.4g") << " N·m = " << fmt(at(m, "peak_over_breakdown"), "%.3f") << "  "
-      << chk(at(m, "peak_check")) << "\n";
+      << fmt(at(tc, "rms"), "%.4g") << ", peak " << fmt(at(tc, "peak"), "%.4g") << " N·m (steady window)\n";
+    o << "  nominal torque M_n                " << fmt(at(m, "nominal_torque"), "%.4g") << " N·m ("
+      << str(at(m, "nominal_torque_source")) << "); breakdown torque M_kr " << fmt(at(m, "breakdown_torque"), "%.4g")
+      << " N·m\n";
     const json &ps = at(m, "power_shaft"), &pl = at(m, "power_line"), &sl = at(m, "slip");
     o << "  shaft power M·ω_r                 mean " << fmt(at(ps, "mean"), "%.4g", 1e-3) << ", peak "
-      << fmt(at(ps, "peak"), "%.4g", 1e-3) << " kW\n";
+      << fmt(at(ps, "peak"), "%.4g", 1e-3) << " kW (steady window)\n";
     o << "  power drawn from the line         mean " << fmt(at(pl, "mean"), "%.4g", 1e-3) << ", peak "
-      << fmt(at(pl, "peak"), "%.4g", 1e-3) << " kW  (" << str(at(m, "line_power_basis")) << ")\n";
+      << fmt(at(pl, "peak"), "%.4g", 1e-3) << " kW (steady window); mean "
+      << fmt(at(at(r, "power_line"), "mean"), "%.4g", 1e-3) << ", peak " << fmt(at(at(r, "power_line"), "peak"), "%.4g", 1e-3)
+      << " kW (whole run)\n"
+      << "                                    (" << str(at(m, "line_power_basis")) << ")\n";
     o << "  slip s = 1 - ω_r/ω0               " << fmt(at(sl, "min"), "%.4f") << " ... "
-      << fmt(at(sl, "max"), "%.4f") << "\n";
+      << fmt(at(sl, "max"), "%.4f") << " (steady window); " << fmt(at(at(r, "slip"), "min"), "%.4f") << " ... "
+      << fmt(at(at(r, "slip"), "max"), "%.4f") << " (whole run)\n";
     o << "  motor energy per crank revolution " << fmt(at(m, "energy_per_revolution"), "%.4g", 1e-3) << " kJ\n";
   } else {
     o << "  motor                             n/a (no motor torque in this run)\n";
@@ -172,27 +213,75 @@ std::string sizingText(const json& summary) {
   o << "  flywheel                          kinetic-energy swing ΔT " << fmt(at(f, "kinetic_energy_swing"), "%.4g")
     << " J per revolution; drive inertia at the crank J " << fmt(at(f, "inertia_effective"), "%.4g")
     << " kg·m²; δ " << fmt(at(f, "delta"), "%.4g") << "\n";
-  if (at(f, "target_delta").is_number())
+  if (at(f, "target_delta").is_number()) {
     o << "                                    for δ* = " << fmt(at(f, "target_delta"), "%.4g") << ": flywheel "
       << fmt(at(f, "flywheel_crankshaft"), "%.4g") << " kg·m² on the crankshaft or "
       << fmt(at(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n"
       << "                                    (energy method, J·δ constant: a first estimate; it can be far off where\n"
-      << "                                    the carts' inertia or the motor's slip vary over a turn. The smallest\n"
-      << "                                    flywheel that meets δ*, from runs: rollerdyn optimize SCENE --param\n"
-      << "                                    flywheel.inertia --range 0:" << fmt(at(f, "flywheel_crankshaft"), "%.0f", 3.0)
-      << " --minimize flywheel.inertia --constraint 'delta<=" << fmt(at(f, "target_delta"), "%.4g") << "')\n";
-  else
+      << "                                    the carts' inertia or the motor's slip vary over a turn)\n";
+    const json& added = at(f, "added_inertia_crankshaft");
+    if (added.is_number() && added.get<double>() > 0) {
+      // The smallest flywheel from runs, as a command that runs as printed: the scene file, the
+      // user's --set options, a range that holds the estimate with room to spare.
+      const bool motor_shaft = at(f, "location").is_string() && at(f, "location").get<std::string>() == "motor_shaft";
+      const json& estimate = at(f, motor_shaft ? "flywheel_motor_shaft" : "flywheel_crankshaft");
+      const double upper = std::max(10.0, 3.0 * (estimate.is_number() ? estimate.get<double>() : 0.0));
+      auto quoted = [](const std::string& a) {
+        if (a.find_first_of(" '\"$`\\*?;&|<>()") == std::string::npos) return a;
+        std::string q = "'";
+        for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return q + "'";
+      };
+      std::string cmd = "rollerdyn optimize " + quoted(str(at(summary, "scene_path")));
+      bool sets_speed = false;
+      if (at(summary, "overrides").is_array())
+        for (const json& ov : at(summary, "overrides"))
+          if (ov.is_string()) {
+            cmd += " --set " + quoted(ov.get<std::string>());
+            sets_speed = sets_speed || ov.get<std::string>().rfind("initial.crank_speed=", 0) == 0;
+          }
+      // The flywheel is sized for steady running: each run starts at this run's mean crank speed,
+      // so that a heavy flywheel's slow start from rest (which may not settle within t_end) does
+      // not make every design look unusable. Whether the drive starts from rest with the chosen
+      // flywheel is a separate run.
+      const json& w_mean = at(at(summary, "omega_crank"), "mean");
+      const bool start_at_speed = !sets_speed && w_mean.is_number() && w_mean.get<double>() > 0;
+      if (start_at_speed) cmd += " --set initial.crank_speed=" + fmt(w_mean, "%.4g");
+      cmd += " --param flywheel.inertia --range 0:" + fmt(json(upper), "%.0f") +
+             " --minimize flywheel.inertia --constraint 'delta<=" + fmt(at(f, "target_delta"), "%.4g") + "'";
+      o << "                                    the smallest flywheel (" << (motor_shaft ? "motor shaft" : "crankshaft")
+        << ") that meets δ* in steady running, from runs"
+        << (start_at_speed ? " started at this run's mean crank speed (whether the drive starts from rest with it "
+                             "is a separate run)"
+                           : "")
+        << ":\n      " << cmd << "\n";
+    } else if (added.is_number()) {
+      o << "                                    this run already meets δ* (no flywheel needs adding)\n";
+    }
+  } else {
     o << "                                    target δ* not given (sizing.target_delta)\n";
+  }
   const json& c = at(s, "coupling");
   if (c.is_object()) {
     o << "  coupling torque (crank axis)      mean " << fmt(at(c, "mean"), "%.4g") << ", peak |M| "
-      << fmt(at(c, "peak"), "%.4g") << ", swing " << fmt(at(c, "swing"), "%.4g") << " N·m";
-    if (at(c, "rated_torque").is_number())
-      o << "; peak / rating " << fmt(at(c, "rated_torque"), "%.4g") << " N·m = "
-        << fmt(at(c, "peak_over_rating"), "%.3f") << "  " << chk(at(c, "check"));
-    else
-      o << "; rating not given (sizing.coupling_rated_torque)";
-    o << "\n";
+      << fmt(at(c, "peak"), "%.4g") << ", swing " << fmt(at(c, "swing"), "%.4g") << " N·m (steady window); peak |M| "
+      << fmt(at(c, "peak_whole_run"), "%.4g") << " N·m at t = " << fmt(at(c, "t_peak_whole_run"), "%.4g")
+      << " s (whole run)\n";
+    o << "  coupling rated torque             "
+      << (at(c, "rated_torque").is_number() ? fmt(at(c, "rated_torque"), "%.4g") + " N·m"
+                                            : std::string("not given (sizing.coupling_rated_torque)"))
+      << "\n";
+  }
+  const json& checks = at(s, "checks");
+  if (checks.is_array() && !checks.empty()) {
+    o << "  checks (the window named decided each):\n";
+    for (const json& k : checks) {
+      const std::string v = chk(at(k, "verdict"));
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "    %-15s %8s  %-14s decided by the %s", str(at(k, "check")).c_str(),
+                    fmt(at(k, "value"), "%.3f").c_str(), v.c_str(), str(at(k, "window")).c_str());
+      o << buf << "\n      " << str(at(k, "what")) << "; " << str(at(k, "reason")) << "\n";
+    }
   }
   const json& joints = at(s, "joints");
   bool any_joint = false;
@@ -207,16 +296,21 @@ std::string sizingText(const json& summary) {
   for (std::size_t k = 0; k < 5; ++k) {
     const json& x = at(at(joints, kJointKinds[k]), "worst");
     if (!x.is_object()) continue;
+    // L10 in hours where the joint turns at a known speed, else in revolutions (the rod end
+    // swings through a small angle: its life is counted in the crank's revolutions).
+    std::string life = fmt(at(x, "L10_hours"), "%.3g");
+    if (life == "n/a" && at(x, "L10_revolutions").is_number()) life = fmt(at(x, "L10_revolutions"), "%.3g") + " rev";
     char buf[256];
     std::snprintf(buf, sizeof buf, "  %-24s  %4s  %9s  %14s  %9s  %6s  %6s  %7s\n", names[k],
                   at(x, "cart").is_number() ? std::to_string(at(x, "cart").get<int>()).c_str() : "-",
                   fmt(at(x, "mean"), "%.3f", 1e-3).c_str(), fmt(at(x, "amplitude"), "%.3f", 1e-3).c_str(),
                   fmt(at(x, "peak"), "%.3f", 1e-3).c_str(), fmt(at(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
-                  fmt(at(x, "rating"), "%.1f", 1e-3).c_str(), fmt(at(x, "L10_hours"), "%.3g").c_str());
+                  fmt(at(x, "rating"), "%.1f", 1e-3).c_str(), life.c_str());
     o << buf;
   }
   o << "  P equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation speed; "
-       "C dynamic load rating (sizing.bearing_rating.*); L10 = (C/P)³·10⁶ revolutions\n";
+       "C dynamic load rating (sizing.bearing_rating.*); L10 = (C/P)³·10⁶ revolutions, in hours at the joint's mean speed, "
+       "or in revolutions (rev) where the joint has no rotation speed\n";
   return o.str();
 }
 

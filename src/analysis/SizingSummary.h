@@ -11,7 +11,9 @@
 
 namespace rollerdyn {
 
-// sizing: {window {t_begin, t_end, revolutions}, motor {...} | null, flywheel {...},
+// sizing: {window {t_begin, t_end, revolutions}, whole_run {t_begin, t_end}, motion,
+// checks [{check, what, value, verdict (pass | FAIL | not applicable | null), window, reason}],
+// motor {..., whole_run {...}} | null, flywheel {...},
 // coupling {...} | null, joints {guide_roller_front, guide_roller_rear, rod_end, crank_pin,
 // main_bearing: {worst {...}, per_cart [...]} | null}, life_exponent, notes}; units in the key
 // names' documentation (README, "Drive sizing").

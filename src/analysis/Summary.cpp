@@ -5,8 +5,10 @@
 #include <sstream>
 
 #include "analysis/DriveSizing.h"
+#include "analysis/LoadWork.h"
 #include "analysis/Metrics.h"
 #include "analysis/SizingSummary.h"
+#include "analysis/StallDetector.h"
 #include "analysis/SteadyState.h"
 #include "io/AtomicFile.h"
 
@@ -64,7 +66,12 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
                       {"midrange", num("omega_crank.midrange", m.omega_midrange)}};
   // "stalled", "rocking" (crank speed changes sign in the metrics window), "turning",
   // "at_rest", "unknown" (RunMotion.h); per-revolution metrics are null unless turning.
-  const std::string crank_motion = classifyMotion(scene, run, m);
+  double advance = NAN;  // how far the crank turned over the metrics window [rad]
+  if (run.timeseries.has("phi_crank") && ss.row_end >= ss.row_begin + 2 && ss.row_end <= run.timeseries.rows.size()) {
+    const int k = run.timeseries.index("phi_crank");
+    advance = run.timeseries.rows[ss.row_end - 1][k] - run.timeseries.rows[ss.row_begin][k];
+  }
+  const std::string crank_motion = classifyMotion(scene, run, m, advance, ss.reached);
   const bool turning = motionIsTurning(crank_motion);
   j["motion"] = crank_motion;
   j["crank_motion"] = crank_motion;
@@ -138,8 +145,13 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["reactions"] = rx;
 
   const DriveSizing sizing =
-      computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN);
+      computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN, crank_motion);
   j["sizing"] = sizingJson(sizing);
+  j["sizing"]["flywheel"]["location"] = toString(scene.flywheel.location);
+  const LoadWork load = computeLoadWork(scene, run, ss);
+  j["load"] = loadWorkJson(load);
+  if (!j.contains("warnings")) j["warnings"] = json::array();
+  if (!load.warning.empty()) j["warnings"].push_back(load.warning);
   if (!turning) {
     not_meaningful.push_back("sizing.flywheel");
     not_meaningful.push_back("sizing.motor.energy_per_revolution");
@@ -148,7 +160,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["stall"] = nullptr;
 
   std::string status = run.stats.status;
-  if (crank_motion == "rocking") {
+  if (crank_motion == "rocking" && StallDetector::motionOfStatus(status) != "rocking") {
     char buf[160];
     std::snprintf(buf, sizeof buf,
                   "; the crank rocks back and forth instead of turning (its speed ranges from "
@@ -201,6 +213,8 @@ std::string summaryText(const nlohmann::json& s) {
     << (motion == "turning"   ? "  (the crank turns one way)"
         : motion == "rocking" ? "  (the crank swings back and forth instead of turning)"
         : motion == "stalled" ? "  (the motor stalled; why: see status)"
+        : motion == "starting" ? "  (the crank got going but the run ended before it settled: run longer, "
+                                 "simulation.t_end; no sizing verdict applies yet)"
                               : "")
     << "\n";
   o << "status       " << str(at("status")) << "\n";
@@ -211,13 +225,25 @@ std::string summaryText(const nlohmann::json& s) {
     << "  (Loveikin and Pochka (2007) eq. (12)-(14))\n";
   const json& st = at("steady_state");
   if (st.is_object()) {
+    // after_revolutions is the 0-based index of the first settled revolution: the speed repeats
+    // from the start of revolution after_revolutions + 1 (counted from 1) on.
     o << "steady state " << (st.value("reached", false) ? "reached" : "NOT reached");
     if (st.value("after_revolutions", -1) >= 0)
-      o << " from revolution " << st.value("after_revolutions", -1) << " of "
-        << st.value("revolutions", 0);
-    o << "; window " << st.value("window_revolutions", 0) << " rev, t = "
-      << f(st.value("t_begin", json(nullptr)), "%.4g") << " ... "
-      << f(st.value("t_end", json(nullptr)), "%.4g") << " s\n";
+      o << ": the crank speed repeats from revolution " << st.value("after_revolutions", -1) + 1 << " on (t = "
+        << f(st.value("t_settled", json(nullptr)), "%.4g") << " s), of " << st.value("revolutions", 0)
+        << " whole revolutions in the run";
+    o << "\n             metrics window: the last " << st.value("window_revolutions", 0) << " revolutions, t = "
+      << f(st.value("t_begin", json(nullptr)), "%.4g") << " ... " << f(st.value("t_end", json(nullptr)), "%.4g")
+      << " s\n";
+  }
+  const json ld = at("load");
+  if (ld.is_object() && ld.value("available", false)) {
+    o << "load         " << f(ld.value("power_mean_per_cart_steady", json(nullptr)), "%.4g")
+      << " W per cart net in the metrics window, " << f(ld.value("power_mean_per_cart_whole_run", json(nullptr)), "%.4g")
+      << " W per cart over the whole run (" << str(ld.value("reading", json(""))) << ")\n";
+    if (ld.value("warning", json(nullptr)).is_string())
+      o << "             WARNING: the load does almost no net work (compaction costs the motor nothing): every motor "
+           "verdict below is that of an idling machine (warning on stderr, docs/loads.md)\n";
   }
   o << "coupling     torque swing " << f(at("coupling_torque_swing"), "%.4g")
     << " N·m, twist swing " << f(at("twist_swing"), "%.3g") << " rad\n";

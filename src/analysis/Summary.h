@@ -26,9 +26,11 @@ namespace rollerdyn {
 //   cpu_seconds, real_time_factor (simulated time / cpu_seconds; null when cpu_seconds <= 0,
 //   i.e. not measured, which is not flagged), reactions {column: {min, max, mean, abs_max}},
 //   non_finite (list of keys written as null because the value was NaN/inf),
-//   motion (= crank_motion: stalled, rocking, turning, at_rest, unknown; RunMotion.h),
+//   motion (= crank_motion: stalled, rocking, starting, turning, at_rest, unknown; RunMotion.h),
 //   not_meaningful (keys written as null because the motion is not turning), stall (why a
-//   stalled run stalled, or null), sizing (SizingSummary.h).
+//   stalled run stalled, or null), sizing (SizingSummary.h: both windows and the checks),
+//   load (LoadWork.h: the technological load's work and mean power per cart), warnings (list of
+//   sentences: the load's no-work warning here; callers append resonance and plausibility ones).
 // `start_load`: the load torques at the start (RunMotion.h) that explain a stall; may be null.
 nlohmann::json makeSummary(const Scene& scene, const RunResult& run,
                            const StartLoad* start_load = nullptr);

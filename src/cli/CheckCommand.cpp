@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/Commands.h"
+#include "scene/Plausibility.h"
 #include "multibody/MultibodyModel.h"
 #include "scene/SceneParser.h"
 
@@ -12,6 +13,7 @@ int runCheck(const SceneArgs& args) {
   const MultibodyModel model(scene);
   const MultibodyInventory& inv = model.inventory();
   std::cout << "scene " << scene.name << ": valid (" << scene.source_path << ")\n";
+  for (const std::string& w : plausibilityWarnings(scene)) std::cerr << "rollerdyn: warning: " << w << '\n';
   std::cout << "effects built:";
   for (const auto& e : inv.effects) std::cout << ' ' << e;
   std::cout << "\nforce elements:";

@@ -24,9 +24,10 @@ extern std::atomic<bool> g_interrupted;
 
 int runCheck(const SceneArgs& args);
 int runSimulate(const SceneArgs& args, const std::string& out_dir, const std::string& model,
-                bool plot = false);  // plot: also draw the figures (as `rollerdyn plot`)
+                bool plot = false,         // plot: also draw the figures (as `rollerdyn plot`)
+                bool with_modes = false);  // with_modes: the torsional modes of `rollerdyn modes` too
 int runCompare(const SceneArgs& args, const std::string& out_dir);  // CompareCommand.cpp
-int runValidate(bool quick, const std::string& out_dir);            // ValidateCommand.cpp
+int runValidate(bool quick, const std::string& out_dir, bool modes_only = false);  // ValidateCommand.cpp
 int runValidateStudies(const std::string& dir);                    // ValidateCommand.cpp
 
 // `rollerdyn bench` options (BenchCommand.cpp, src/bench/BenchStudies.h).
@@ -55,6 +56,9 @@ Subcommand addSweepCommand(CLI::App& app);       // SweepCommand.cpp: `rollerdyn
 Subcommand addCamProfileCommand(CLI::App& app);  // CamProfileCommand.cpp: `rollerdyn cam-profile`
 Subcommand addChainCommand(CLI::App& app);       // ChainCommand.cpp: `rollerdyn chain`
 Subcommand addOptimizeCommand(CLI::App& app);    // OptimizeCommand.cpp: `rollerdyn optimize`
+Subcommand addMotorCommand(CLI::App& app);       // MotorCommand.cpp: `rollerdyn motor`
+Subcommand addModesCommand(CLI::App& app);       // ModesCommand.cpp: `rollerdyn modes`
+Subcommand addSchemaCommand(CLI::App& app);      // SchemaCommand.cpp: `rollerdyn schema`
 
 // out/<scene name>/ unless the user named a folder.
 std::string defaultOutDir(const std::string& scene_name);

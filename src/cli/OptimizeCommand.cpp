@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "report/OutputDir.h"
 #include "scene/SceneParser.h"
 #include "studies/Optimizer.h"
 
@@ -44,14 +45,19 @@ int runOptimizeCommand(const OptimizeArgs& a) {
     std::cout << "[" << number << "]";
     for (std::size_t k = 0; k < o.params.size(); ++k) std::cout << ' ' << o.params[k].key << '=' << e.texts[k];
     std::cout << "  " << o.minimize << ' ' << e.objective;
-    for (const OptimizeConstraint& c : o.constraints) std::cout << "  " << c.metric << ' ' << e.point.metric(c.metric);
+    for (std::size_t j = 0; j < o.constraints.size(); ++j)
+      std::cout << "  " << o.constraints[j].metric << ' ' << e.constraint_metrics[j];
     std::cout << (e.feasible() ? "  feasible" : e.run_ok ? "  constraint violated" : "  infeasible: " + e.reason)
               << std::endl;
   };
+  prepareOutputDir(out_dir);  // before the runs: a bad --out fails now
   std::cout << "optimize " << base.name << ": minimize " << o.minimize << ", " << o.model << " model\n";
   const OptimizeResult r = runOptimize(o);
-  const auto files = writeOptimizeOutputs(o, r, out_dir);
+  std::string plot_note;
+  const auto files = writeOptimizeOutputs(o, r, out_dir, &plot_note);
   std::cout << r.method << ": " << r.history.size() << " evaluations (" << r.stop_reason << ")\n";
+  if (!r.scope.empty()) std::cout << "search: " << r.scope << "\n";
+  if (!plot_note.empty()) std::cerr << "rollerdyn: figures: " << plot_note << "\n";
   if (r.found) {
     const OptimizeEvaluation& b = r.history[r.best];
     std::cout << "optimum: " << o.minimize << " = " << b.objective << " at";
@@ -87,10 +93,13 @@ Subcommand addOptimizeCommand(CLI::App& app) {
       ->allow_extra_args(false);
   cmd->add_option("--model", args->model, "multibody (default) or reduced")->check(CLI::IsMember({"multibody", "reduced"}));
   cmd->add_option("--method", args->method,
-                  "auto (default: bobyqa without constraints, cobyla with them; local, from the middle of the "
-                  "ranges), bobyqa, cobyla, direct-l or crs2 (global, for metrics with several minima; constraints "
-                  "by penalty; the local method polishes their best design), multistart (the local method from "
-                  "--threads starts in parallel)");
+                  "auto (default: bobyqa without constraints or cobyla with them from the middle of the ranges, "
+                  "then a grid over the whole ranges (19 values of one parameter, 7 of two, 5 of more; for "
+                  "crank.offset_deg also the evenly spread offsets 360°·k/n), polished by the local method when "
+                  "its best lies elsewhere), bobyqa or "
+                  "cobyla alone (LOCAL: the minimum nearest to the middle of the ranges), direct-l or crs2 (global, "
+                  "constraints by penalty; the local method polishes their best design), multistart (the local "
+                  "method from --threads starts in parallel)");
   cmd->add_option("--threads", args->threads, "parallel local searches of --method multistart (default 2)")
       ->check(CLI::Range(1, 64));
   cmd->add_option("--max-evals", args->max_evals, "evaluations at most (default 100)")->check(CLI::PositiveNumber);

@@ -8,6 +8,7 @@
 #include "cli/Commands.h"
 #include "cli/RunOutputs.h"
 #include "io/AtomicFile.h"
+#include "modes/ModesFigures.h"
 #include "report/HtmlReport.h"
 #include "report/OutputDir.h"
 #include "report/OutputFolder.h"
@@ -27,7 +28,8 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   const std::vector<SceneParameterRow> parameters = sceneParameterRows(args.scene_path, args.overrides);
 
   const RunResult run = runMultibodyWithProgress(scene);
-  const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir);
+  const RunModal modal = analyseRunModes(scene, run, /*charts=*/true);  // coarse charts (12 x 8)
+  const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir, args.overrides, &modal);
 
   const OutputFolder folder = outputFolderOf(out_dir, run, summary);
   const FigureSet figures = drawRunFigures(folder, &scene, (fs::path(out_dir) / "figures").string());
@@ -47,6 +49,13 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   content.command = "rollerdyn report " + args.scene_path;
   for (const std::string& o : args.overrides) content.command += " --set " + o;
   content.command += " --out " + out_dir;
+  {  // torsional modes and the run's order spectrum: figures and a section of their own
+    FigureSet mf = modes::drawModesFigures(modal.report, (fs::path(out_dir) / "figures").string());
+    const FigureSet sp = modes::drawSpectrumFigures(modal.spectrum, (fs::path(out_dir) / "figures").string());
+    mf.figures.insert(mf.figures.end(), sp.figures.begin(), sp.figures.end());
+    content.extra_sections_html.push_back(modes::modesHtmlSection(modal.report, mf, &modal.spectrum));
+    for (const std::string& n : mf.notes) content.notes.push_back(n);
+  }
   content.animation = mechanismFrames(scene, run.timeseries, run.reactions);
   content.time_plots = mainTimePlots(run.timeseries, run.reactions);
   const std::string page = (fs::path(out_dir) / "report.html").string();
@@ -55,7 +64,7 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   std::cout << summaryText(summary) << figureSetText(figures, (fs::path(out_dir) / "figures").string())
             << "report: " << page << '\n';
   if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
-  return run.stats.complete ? 0 : 3;
+  return runExitCode(run, summary);
 }
 
 }  // namespace rollerdyn::cli

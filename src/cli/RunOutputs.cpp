@@ -2,13 +2,9 @@
 
 #include <iostream>
 
-#include "analysis/Summary.h"
 #include "cli/Commands.h"
 #include "cli/Progress.h"
 #include "multibody/MultibodySimulation.h"
-#include "report/OutputFolder.h"
-#include "studies/ResonanceCheck.h"
-#include "studies/StartLoad.h"
 
 namespace rollerdyn::cli {
 
@@ -21,14 +17,27 @@ RunResult runMultibodyWithProgress(const Scene& scene) {
 }
 
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
-                               const std::string& out_dir) {
-  writeRunTables(out_dir, run);
-  const StartLoad start_load = startLoadOf(scene);  // explains a stall
-  nlohmann::json summary = makeSummary(scene, run, &start_load);
-  summary["scene_path"] = absolutePath(scene_path);
-  for (const std::string& w : addResonanceWarnings(scene, summary)) std::cerr << "rollerdyn: warning: " << w << '\n';
-  writeSummaryAtomic(out_dir + "/summary.json", summary);
+                               const std::string& out_dir, const std::vector<std::string>& overrides,
+                               const modes::RunModal* modal) {
+  RunSummaryOptions options;
+  options.scene_file = scene_path;
+  options.overrides = overrides;
+  options.modal = modal;
+  RunMessages messages;
+  const nlohmann::json summary = summarizeRun(scene, run, options, &messages);
+  // The load's and the plausibility warnings, the first estimate's and the modal analysis'
+  // resonance warnings, then the verdict that reconciles them.
+  for (const std::string& w : messages.run_warnings) std::cerr << "rollerdyn: warning: " << w << '\n';
+  for (const std::string& w : messages.resonance_warnings) std::cerr << "rollerdyn: warning: " << w << '\n';
+  if (!messages.resonance_verdict.empty()) std::cerr << "rollerdyn: " << messages.resonance_verdict << '\n';
+  writeRunFiles(out_dir, run, summary, modal);
   return summary;
+}
+
+int runExitCode(const RunResult& run, const nlohmann::json& summary) {
+  const std::string motion = summary.value("motion", "");
+  if (motion == "stalled" || motion == "rocking") return kExitDriveDoesNotTurn;
+  return run.stats.complete ? 0 : kExitRunFailed;
 }
 
 }  // namespace rollerdyn::cli

@@ -7,7 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/RunResult.h"
+#include "modes/RunModes.h"
 #include "scene/Scene.h"
+#include "studies/RunSummary.h"
 
 namespace rollerdyn::cli {
 
@@ -15,10 +17,27 @@ namespace rollerdyn::cli {
 // Ctrl-C (g_interrupted, Commands.h).
 RunResult runMultibodyWithProgress(const Scene& scene);
 
-// Writes the run's tables (writeRunTables) and summary.json, with the scene file's absolute path
-// so `plot DIR` finds it from anywhere, into out_dir; prints the resonance warnings (Dyomin (two
-// rotors) eq. (10)) on stderr. Returns the summary.
+// The modal analysis beside the run (`simulate --modes`, `report`): modes/RunModes.h.
+using modes::analyseRunModes;
+using modes::RunModal;
+
+// Summarizes the run (studies/RunSummary.h, the summary every caller of a run shares) and writes
+// its files into out_dir: the tables, summary.json with the scene file's absolute path so `plot
+// DIR` finds it from anywhere, and with `modal` the modal analysis' files (modes.json, frozen.csv,
+// campbell.csv, stability.csv, spectrum.csv). Prints the warnings on stderr: the load's and the
+// scene's plausibility, the two-mass resonance check (Dyomin (two rotors) eq. (10)) as the first
+// estimate, then the verdict of the modal analysis. Returns the summary. `overrides`: the user's
+// --set options, kept in summary.json ("overrides") so that commands the console suggests (the
+// flywheel search) repeat them.
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,
-                               const std::string& out_dir);
+                               const std::string& out_dir, const std::vector<std::string>& overrides = {},
+                               const RunModal* modal = nullptr);
+
+// Exit codes of a run's command: 0 the crank turns; 4 the drive stalls or rocks (a valid run of a
+// drive that does not work); 3 the run did not complete for another reason (numerical failure,
+// interrupted).
+inline constexpr int kExitDriveDoesNotTurn = 4;
+inline constexpr int kExitRunFailed = 3;
+int runExitCode(const RunResult& run, const nlohmann::json& summary);
 
 }  // namespace rollerdyn::cli

@@ -3,12 +3,14 @@
 // with --plot the figures of `rollerdyn plot` to DIR/figures/).
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 
 #include "analysis/SizingSummary.h"
 #include "analysis/Summary.h"
 #include "cli/Commands.h"
 #include "cli/RunOutputs.h"
+#include "modes/ModesFigures.h"
 #include "reduced/ReducedModel.h"
 #include "report/OutputDir.h"
 #include "report/OutputFolder.h"
@@ -25,7 +27,8 @@ std::string absolutePath(const std::string& path) {
   return std::filesystem::absolute(path).lexically_normal().string();
 }
 
-int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std::string& model, bool plot) {
+int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std::string& model, bool plot,
+                bool with_modes) {
   const Scene scene = parseSceneFile(args.scene_path, args.overrides);
   const std::string out_dir = out_dir_arg.empty() ? defaultOutDir(scene.name) : out_dir_arg;
   prepareOutputDir(out_dir, StaleOutputs::RunFiguresAndReport);  // before the run: a bad --out fails now
@@ -37,13 +40,24 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   } else {
     throw std::invalid_argument("--model: expected multibody or reduced, got '" + model + "'");
   }
-  const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir);
-  std::cout << summaryText(summary) << sizingText(summary) << "outputs in " << out_dir << "/\n";
-  if (plot)  // figures from the tables in memory and the scene with its overrides
+  std::unique_ptr<RunModal> modal;
+  if (with_modes) modal = std::make_unique<RunModal>(analyseRunModes(scene, run, /*charts=*/false));
+  const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir, args.overrides, modal.get());
+  std::cout << summaryText(summary) << sizingText(summary);
+  if (modal) std::cout << modes::modesText(modal->report);
+  std::cout << "outputs in " << out_dir << "/\n";
+  if (plot) {  // figures from the tables in memory and the scene with its overrides
     std::cout << figureSetText(drawRunFigures(outputFolderOf(out_dir, run, summary), &scene, out_dir + "/figures"),
                                out_dir + "/figures");
+    if (modal) {
+      FigureSet f = modes::drawModesFigures(modal->report, out_dir + "/figures");
+      const FigureSet sp = modes::drawSpectrumFigures(modal->spectrum, out_dir + "/figures");
+      f.figures.insert(f.figures.end(), sp.figures.begin(), sp.figures.end());
+      std::cout << figureSetText(f, out_dir + "/figures");
+    }
+  }
   if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
-  return run.stats.complete ? 0 : 3;
+  return runExitCode(run, summary);
 }
 
 }  // namespace rollerdyn::cli

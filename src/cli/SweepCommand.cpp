@@ -17,6 +17,7 @@
 #include "cli/UsageError.h"
 #include "report/OutputDir.h"
 #include "scene/SceneParser.h"
+#include "scene/SceneSchema.h"
 #include "studies/Sweep.h"
 #include "studies/SweepDesigns.h"
 #include "studies/SweepMpi.h"
@@ -99,6 +100,7 @@ int runSweepCommand(const SweepArgs& a) {
   for (const SweepParameter& p : o.params) requireSceneKey("sweep: --param " + p.key, p.key);  // with a did-you-mean
   o.model = a.model;
   o.minimize = a.minimize;
+  if (!o.minimize.empty()) requireSweepMetric("sweep: --minimize", o.minimize);  // before any header or run
   o.threads = a.threads;
   o.interrupt = &g_interrupted;
   o.point_budget = a.point_budget;
@@ -152,10 +154,14 @@ int runSweepCommand(const SweepArgs& a) {
   if (r.execution.value("points_resumed", 0) > 0)
     std::cout << "resumed " << r.execution["points_resumed"] << " saved point(s), computed "
               << r.execution["points_computed"] << "\n";
-  const auto files = writeSweepOutputs(o, r, out_dir);
-  std::size_t failed = 0, unsteady = 0, warned = 0;
+  std::string plot_note;
+  const auto files = writeSweepOutputs(o, r, out_dir, &plot_note);
+  if (!plot_note.empty()) std::cout << "figures: " << plot_note << " (sweep.csv has every point)\n";
+  std::size_t failed = 0, unsteady = 0, warned = 0, not_turning = 0;
   for (const SweepPoint& p : r.points) {
-    failed += !p.complete;
+    const bool drive_fails = p.motion == "stalled" || p.motion == "rocking";
+    not_turning += drive_fails;
+    failed += !p.complete && !drive_fails;
     unsteady += p.complete && !p.steady;
     warned += !p.warnings.empty();
   }
@@ -167,8 +173,11 @@ int runSweepCommand(const SweepArgs& a) {
     std::cout << rocking << " point(s) rocking, " << stalled << " stalled (motion column; their δ, H, k_p are n/a)\n";
   if (warned) std::cerr << "rollerdyn: warning: " << warned << " point(s) near a torsional resonance (sweep.json)\n";
   std::cout << "outputs in " << out_dir << "/ (" << files.size() << " files)\n";
-  if (failed) std::cerr << "rollerdyn: " << failed << " of " << r.points.size() << " points did not complete (status column)\n";
-  return failed ? 3 : 0;
+  if (failed)
+    std::cerr << "rollerdyn: " << failed << " of " << r.points.size()
+              << " points failed to run (numerical failure, invalid values or interrupted: status column)\n";
+  // 3: some point failed to run; 4: every point ran but some drive stalls or rocks; 0: all turn.
+  return failed ? 3 : not_turning ? 4 : 0;
 }
 
 }  // namespace
@@ -209,14 +218,15 @@ Subcommand addSweepCommand(CLI::App& app) {
                   "metric whose minimum to report: delta, H, k_p, omega_crank_mean, coupling_torque_swing, "
                   "twist_swing, eps_crank_abs_max, energy_residual_rel, omega_crank_min, omega_crank_max, "
                   "omega_crank_midrange, twist_rate_swing, twist_accel_swing, or a drive-sizing metric "
-                  "(motor_torque_rms, motor_rms_over_nominal, motor_peak_over_breakdown, motor_power_mean, "
+                  "(motor_torque_rotor_rms, motor_rms_over_nominal, motor_peak_over_breakdown, motor_power_mean, "
                   "energy_per_revolution, coupling_torque_peak, guide_roller_peak, rod_force_peak, "
                   "crank_pin_peak, main_bearing_peak, ..._equivalent_load: see sweep.csv)");
   cmd->add_option("--threads", args->threads, "worker threads (default 2; under MPI one per rank)")->check(CLI::Range(1, 64));
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/sweep_<keys>)");
   cmd->footer(
       "Each value is applied as --set KEY=VALUE, so it is validated like a scene file; a point that fails "
-      "is reported in its row (status) and the sweep goes on. Exit code 3 when any point did not complete.\n"
+      "is reported in its row (status) and the sweep goes on. Exit code 3 when any point failed to run (numerical "
+      "failure, invalid values, interrupted), else 4 when a drive stalls or rocks at some point, else 0.\n"
       "Every finished point is appended to DIR/sweep.progress.jsonl at once, so a killed sweep loses only the "
       "points in flight: run the same command with --resume (without it the file is started afresh). The final "
       "files are written at the end, atomically.\n"

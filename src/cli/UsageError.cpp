@@ -83,14 +83,6 @@ int usageError(const std::string& message) {
   return kExitBadInput;
 }
 
-void requireSceneKey(const std::string& what, const std::string& key) {
-  if (findSceneKey(key)) return;
-  std::vector<std::string> keys;
-  for (const KeySpec& k : sceneSchema()) keys.push_back(k.path);
-  throw std::invalid_argument(what + ": expected a key of the scene schema (model/README.md), got an unknown key" +
-                              didYouMean(key, keys));
-}
-
 CLI::Validator oneOf(std::vector<std::string> choices) {
   const std::string list = joined(choices);
   return CLI::Validator(

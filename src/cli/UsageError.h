@@ -25,11 +25,6 @@ std::string usageMessage(CLI::App& app, const CLI::ParseError& error);
 // Prints "rollerdyn: <message>" on stderr and returns kExitBadInput.
 int usageError(const std::string& message);
 
-// Throws std::invalid_argument "<what>: expected a key of the scene schema (model/README.md), got
-// an unknown key (did you mean '...'?)" unless `key` is a leaf key of the scene schema (e.g. a
-// `sweep --param`): the same hint as --set gives, before anything runs.
-void requireSceneKey(const std::string& what, const std::string& key);
-
 // A validator accepting exactly one of `choices`; its message names them and the closest one,
 // e.g. "expected one of multibody, reduced, got 'reducd' (did you mean 'reduced'?)".
 CLI::Validator oneOf(std::vector<std::string> choices);

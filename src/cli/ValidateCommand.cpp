@@ -8,24 +8,65 @@
 #include <unistd.h>
 
 #include <ctime>
+#include <filesystem>
 #include <iostream>
+#include <stdexcept>
 
 #include "cli/Commands.h"
 #include "cli/ValidationItemList.h"
 #include "compare/StudiesReport.h"
 #include "compare/ValidationSuite.h"
 #include "io/AtomicFile.h"
+#include "modes/ModesValidation.h"
 #include "report/Gnuplot.h"
 #include "report/OutputDir.h"
 
 namespace rollerdyn::cli {
 
-int runValidate(bool quick, const std::string& out_dir) {
+// The repository's top folder holding the shipped scene files and published tables: the working
+// directory when it holds them (a checkout), else the source tree this binary was built from, so
+// `validate` runs from any working directory.
+std::string repositoryDir() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists("model/balanced-4cart.yaml", ec) && fs::exists("validation/published", ec)) return ".";
+#ifdef ROLLERDYN_MODEL_DIR
+  const fs::path top = fs::path(ROLLERDYN_MODEL_DIR).parent_path();
+  if (fs::exists(top / "model/balanced-4cart.yaml", ec) && fs::exists(top / "validation/published", ec))
+    return top.string();
+#endif
+  throw std::runtime_error(
+      "validate: the shipped scene files and published tables (model/, validation/published/) are neither in "
+      "the working folder nor in the source tree this binary was built from; run it from the repository's top "
+      "folder");
+}
+
+
+// `validate --modes-only`: the torsional-modes checks alone (src/modes/ModesValidation.h), their
+// lines on stdout, their page and numbers under DIR/modes/. Returns the number of failed claims.
+// (A full `validate` runs them as its last validation item, ValidationItemList.cpp, so their claims
+// are counted with every other claim.)
+int runModesChecks(const std::string& out_dir, const std::string& model_dir) {
+  std::cout << "torsional modes and Floquet stability:\n";
+  const modes::ModesValidationResult m =
+      modes::runModesValidation(model_dir, [](const std::string& line) { std::cout << "  " << line << '\n' << std::flush; });
+  writeModesPage(out_dir, m);
+  std::cout << "torsional modes: " << m.checks.size() << " checks, " << m.failed() << " failed (CPU " << m.cpu_seconds
+            << " s); " << out_dir << "/modes/validation.md\n";
+  return m.failed();
+}
+
+int runValidate(bool quick, const std::string& out_dir, bool modes_only) {
   using namespace rollerdyn::validation;
   prepareOutputDir(out_dir);  // before the suite: a bad --out fails now
+  const std::string top = repositoryDir();
+  const std::string prefix = top == "." ? "" : top + "/";  // as before from the top folder
+  if (modes_only) return runModesChecks(out_dir, prefix + "model") == 0 ? 0 : 1;
   ValidationOptions o;
   o.quick = quick;
-  o.items = validationItems();
+  o.model_dir = prefix + "model";
+  o.published_dir = prefix + "validation/published";
+  o.items = validationItems(out_dir);
   o.interrupt = &g_interrupted;
   const std::clock_t c0 = std::clock();
   o.log = [c0](const std::string& line) {
@@ -47,6 +88,12 @@ int runValidate(bool quick, const std::string& out_dir) {
   writeFileAtomic(out_dir + "/results.json", report.results.dump(2) + "\n");
   writeFileAtomic(out_dir + "/report.md", report.markdown);
 
+  for (const auto& c : results.motor) {
+    const bool fails = c.verdict == Finding::Verdict::Fails;
+    std::cout << "induction motor " << c.id << (fails ? " FAILS: " : c.verdict == Finding::Verdict::Holds ? " holds: " : ": ")
+              << c.title << '\n';
+    for (const auto& l : c.lines) std::cout << "    " << l << '\n';
+  }
   std::cout << "validation report: " << out_dir << "/report.md (" << figures << " figures; CPU " << results.cpu_seconds
             << " s)\n"
             << validationSummary(results, report);
@@ -54,8 +101,9 @@ int runValidate(bool quick, const std::string& out_dir) {
     std::cerr << "rollerdyn: interrupted; the report holds what was computed\n";
     return 3;
   }
-  // 1 when any claim is FAILED or any equivalence case fails: a check that cannot fail the run
-  // is not a check (CI runs `validate` as a test).
+  // 1 when any claim is FAILED (the induction-motor claims and the torsional-modes checks
+  // included) or any equivalence case fails: a check that cannot fail the run is not a check (CI
+  // runs `validate` as a test).
   return validationExitStatus(results, report);
 }
 

@@ -38,11 +38,13 @@ int main(int argc, char** argv) {
   app.footer(
       "A typical session (each command has --help with examples):\n"
       "  rollerdyn check model/balanced-4cart.yaml                    validate the scene\n"
+      "  rollerdyn schema coupling                                    the scene keys under coupling\n"
       "  rollerdyn simulate model/balanced-4cart.yaml --plot          -> out/balanced-4cart/ (+ figures/)\n"
       "  rollerdyn plot out/balanced-4cart                            figures of an output folder\n"
       "  rollerdyn report model/balanced-4cart.yaml --set crank.offset_deg=60 --out out/dphi60\n"
       "                                                               -> out/dphi60/report.html\n"
-      "Exit codes: 0 success, 2 bad input or set-up, 3 run ended early (outputs still written).\n"
+      "Exit codes: 0 success, 2 bad input or set-up, 3 a run failed (numerical failure, interrupted; outputs still "
+      "written), 4 the drive stalls or rocks instead of turning (outputs written; the sizing checks fail).\n"
       "Ctrl-C stops a run at the next output row and writes what it has.");
 
   SceneArgs check_args;
@@ -59,6 +61,10 @@ int main(int argc, char** argv) {
       ->check(oneOf({"multibody", "reduced"}));
   bool sim_plot = false;  // PlotCommand.cpp
   simulate->add_flag("--plot", sim_plot, "also draw the figures of `rollerdyn plot` into <out>/figures/");
+  bool sim_modes = false;
+  simulate->add_flag("--modes", sim_modes,
+                     "also the torsional modes, Floquet stability and Campbell diagram of `rollerdyn modes` (no "
+                     "stability charts) and the run's order spectrum: modes.json, spectrum.csv, summary.json 'modes'");
   simulate->footer(
       "Examples:\n  rollerdyn simulate model/balanced-4cart.yaml\n"
       "  rollerdyn simulate model/recuperative-2cart.yaml --set crank.offset_deg=60 --out out/dphi60\n"
@@ -108,6 +114,9 @@ int main(int argc, char** argv) {
   auto* validate = app.add_subcommand("validate", "validation suite: model equivalence, papers, analytic checks, drive sizing by hand; writes <out>/report.md; exits 1 when a claim FAILED");
   validate->add_flag("--quick", val_quick, "coarser sweeps and shorter runs (about a minute)");
   validate->add_option("--out", val_out, "output folder (default validation/)");
+  bool val_modes_only = false;
+  validate->add_flag("--modes-only", val_modes_only,
+                     "only the checks of the torsional modes and Floquet stability (seconds); writes <out>/modes/");
   std::string val_studies;
   validate->add_option("--studies", val_studies,
                        "only write the markdown pages of a studies folder (validation/studies) from the tables "
@@ -133,7 +142,8 @@ int main(int argc, char** argv) {
 
   // sweep, cam-profile, chain: the studies of the papers (src/cli/SweepCommand.cpp, ...)
   const Subcommand studies[] = {addSweepCommand(app), addCamProfileCommand(app), addChainCommand(app),
-                               addOptimizeCommand(app)};
+                               addOptimizeCommand(app), addMotorCommand(app), addModesCommand(app),
+                               addSchemaCommand(app)};
 
   // Usage errors: exit code 2 and one line (src/cli/UsageError.h); help and version: exit 0.
   if (const std::string bad = checkCommandWord(app, argc, argv); !bad.empty()) return usageError(bad);
@@ -153,12 +163,12 @@ int main(int argc, char** argv) {
     if (*check) return runCheck(check_args);
     for (const Subcommand& c : studies)
       if (*c.cmd) return c.run();
-    if (*simulate) return runSimulate(sim_args, out_dir, model, sim_plot);
+    if (*simulate) return runSimulate(sim_args, out_dir, model, sim_plot, sim_modes);
     if (*plot) return runPlot(plot_dir, plot_scene, plot_overrides);
     if (*report) return runReport(report_args, report_out);
     if (*bench) return runBench(bench_args, bench_opts);
     if (*compare) return runCompare(cmp_args, cmp_out);
-    if (*validate) return val_studies.empty() ? runValidate(val_quick, val_out) : runValidateStudies(val_studies);
+    if (*validate) return val_studies.empty() ? runValidate(val_quick, val_out, val_modes_only) : runValidateStudies(val_studies);
   } catch (const std::exception& e) {
     std::cerr << "rollerdyn: " << e.what() << '\n';
     return kExitBadInput;

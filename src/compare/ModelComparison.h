@@ -53,6 +53,24 @@ struct QuantityComparison {
   DifferenceStats stats;
 };
 
+// One steady-state answer of both models, each over its own steady window (SteadyState.h).
+struct SteadyMetricComparison {
+  std::string name;        // delta, coupling_torque_swing, coupling_torque_rms, coupling_torque_mean, ...
+  std::string unit;
+  double multibody = 0, reduced = 0;
+  double rel_diff = 0;     // (reduced - multibody)/|multibody| [-]
+};
+
+// The two models' steady running compared at the same crank angle rather than at the same time:
+// the time series of a quantity over each run's steady window, folded onto one revolution
+// (72 crank angles 5° apart, interpolated in φ between rows, averaged over the revolutions), so a model that runs a little faster or slower (its crank
+// a few degrees ahead after many revolutions: phase drift) does not read as a different shape.
+struct ShapeComparison {
+  std::string name;            // omega_crank, coupling_torque
+  double max_abs_diff = 0;     // max over the bins of |a(φ) - b(φ)|
+  double rel_diff = 0;         // max_abs_diff / (max - min of a(φ)): against the quantity's swing [-]
+};
+
 struct ModelComparison {
   std::string scene_name;
   RunResult multibody;   // the two runs as they came back
@@ -66,6 +84,10 @@ struct ModelComparison {
   std::vector<QuantityComparison> quantities;
   // multibody reactions vs the reduced model's kinetostatic reactions (same names).
   std::vector<QuantityComparison> kinetostatic;
+  std::vector<SteadyMetricComparison> steady;  // the headline: steady-window answers of both
+  std::vector<ShapeComparison> shapes;          // same crank angle, steady windows
+  double phase_drift = 0;  // φ_multibody - φ_reduced at the end of the compared span [rad]
+  double speed_difference = 0;  // ω_mean reduced - multibody over the steady windows [rad/s]
   std::vector<ModelDifference> differences;   // modelDifferences(scene)
   std::vector<std::string> identical;         // identicalPhysics(scene)
   bool motion_equivalent = false;             // motionEquivalent(scene)

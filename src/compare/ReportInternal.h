@@ -103,7 +103,9 @@ class ReportWriter {
   void loveikin2018(const PaperSweep& p);
   void sensitivity();
   void analytic();
+  void motor();
   void items();
+  int firstItemNumber() const;  // (5) when there is no motor section, else (6)
 
   const ValidationResults& r_;
   std::string figdir_;

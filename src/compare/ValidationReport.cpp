@@ -86,8 +86,9 @@ void ReportWriter::header() {
       << "Contents: (1) equivalence of the two models where their physics is identical; "
       << "(2) where the physics differ; (3) the papers' tables; (4) the analytic two-rotor check "
       << "of Dyomin (two rotors)";
+  if (!r_.motor.empty()) md_ << "; (5) the induction-motor laws";
   for (std::size_t i = 0; i < r_.sections.size(); ++i)
-    md_ << "; (" << i + 5 << ") " << r_.sections[i].title();
+    md_ << "; (" << i + firstItemNumber() << ") " << r_.sections[i].title();
   md_ << ".\n";
 }
 
@@ -278,6 +279,7 @@ ValidationReport ReportWriter::build() {
   }
   sensitivity();
   analytic();
+  motor();
   items();
   out_.markdown = md_.str();
 
@@ -292,6 +294,7 @@ ValidationReport ReportWriter::build() {
   for (const auto& c : r_.convergence) j["convergence"].push_back(caseJson(c));
   j["differences"] = nlohmann::json::array();
   for (const auto& c : r_.differences) j["differences"].push_back(caseJson(c));
+  j["motor"] = motorReportJson(r_.motor);
   j["papers"] = nlohmann::json::object();
   for (const auto& p : r_.papers) {
     nlohmann::json pts = nlohmann::json::array();
@@ -346,10 +349,24 @@ ValidationReport ReportWriter::build() {
   return std::move(out_);
 }
 
+// Section (5): each induction-motor claim (M1, ...) is a claim of the report like any other, so it is
+// counted in the summary and decides the exit status.
+void ReportWriter::motor() {
+  md_ << motorReportMarkdown(r_.motor);
+  for (const MotorClaim& c : r_.motor) {
+    if (c.verdict == Verdict::Measurement) continue;
+    std::string text = c.title;
+    for (const std::string& l : c.lines) text += "; " + l;
+    out_.claims.push_back({c.id, "(5) The induction-motor laws", text, c.verdict});
+  }
+}
+
+int ReportWriter::firstItemNumber() const { return r_.motor.empty() ? 5 : 6; }
+
 void ReportWriter::items() {
   for (std::size_t i = 0; i < r_.sections.size(); ++i) {
     const ValidationSection& s = r_.sections[i];
-    md_ << "\n## (" << i + 5 << ") " << s.title() << "\n\n" << s.markdown();
+    md_ << "\n## (" << i + firstItemNumber() << ") " << s.title() << "\n\n" << s.markdown();
     for (const Claim& c : s.claims()) out_.claims.push_back(c);
   }
 }

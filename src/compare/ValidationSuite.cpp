@@ -189,6 +189,10 @@ ValidationResults Suite::run() {
     analytic(r);
   }
   if (!interrupted()) {
+    log("(5) induction motor");
+    r.motor = runMotorValidation(o_);
+  }
+  if (!interrupted()) {
     ItemContext ctx;
     ctx.model_dir = o_.model_dir;
     ctx.quick = o_.quick;

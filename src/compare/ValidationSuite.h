@@ -143,6 +143,22 @@ struct AnalyticResults {
   double accuracy = 0;
 };
 
+// (5) The induction-motor laws on their own (ValidationMotor.cpp): the space-phasor machine
+// against the equivalent circuit's closed form, Kloss as the circuit's limit, the Modelica
+// Standard Library's default machine (rated point, direct-on-line start), Krause's 3 hp free
+// acceleration, the electrical energy audit and the catalogue fit of the papers' motors.
+struct MotorClaim {
+  std::string id;                  // "M1", ...
+  std::string title;               // what is checked, with its reference
+  std::vector<std::string> lines;  // the numbers, one sentence each
+  Finding::Verdict verdict = Finding::Verdict::Measurement;  // Holds / Fails where a claim is made
+};
+// Computes every motor claim (a few seconds); `model_dir` holds the papers' scenes.
+std::vector<MotorClaim> runMotorValidation(const ValidationOptions& options);
+// Markdown section and results.json entry of the motor claims.
+std::string motorReportMarkdown(const std::vector<MotorClaim>& claims);
+nlohmann::json motorReportJson(const std::vector<MotorClaim>& claims);
+
 struct ValidationResults {
   bool quick = false;
   double cpu_seconds = 0;                         // whole suite
@@ -155,6 +171,7 @@ struct ValidationResults {
   std::vector<PaperSweep> papers;
   std::vector<SensitivityRow> sensitivity;
   AnalyticResults analytic;
+  std::vector<MotorClaim> motor;                  // (5) the induction-motor laws
   std::vector<ValidationSection> sections;        // the validation items (ValidationItems.h), in order
 };
 

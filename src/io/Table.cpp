@@ -36,7 +36,8 @@ const std::vector<std::pair<std::string, std::string>>& exactUnits() {
       {"omega_motor", "rad/s"}, {"omega_crank", "rad/s"},
       {"eps_crank", "rad/s^2"}, {"eps_motor", "rad/s^2"},
       {"twist", "rad"}, {"twist_rate", "rad/s"}, {"twist_accel", "rad/s^2"},
-      {"coupling_torque", "N*m"}, {"motor_torque", "N*m"}, {"load_torque", "N*m"},
+      {"coupling_torque", "N*m at the crank axis"}, {"motor_torque", "N*m at the crank axis"},
+      {"load_torque", "N*m at the crank axis"},
       {"bearing_x", "N"}, {"bearing_y", "N"},
   };
   return u;

@@ -328,7 +328,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
       run.stats.status = statusAt("numerical failure (non-finite value)", t);
       return false;
     }
-    if (stall.update(t, model.crankSpeed(s), model.motorSpeed(s))) {
+    if (stall.update(t, model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s))) {
       run.stats.complete = false;
       run.stats.status = stall.status();
       return false;

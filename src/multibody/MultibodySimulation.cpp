@@ -84,7 +84,8 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
 
   const std::clock_t cpu0 = std::clock();
   record(integ->getState());
-  stall.update(integ->getTime(), model.crankSpeed(integ->getState()), model.motorSpeed(integ->getState()));
+  stall.update(integ->getTime(), model.crankAngle(integ->getState()), model.crankSpeed(integ->getState()),
+               model.motorSpeed(integ->getState()));
   const SimTK::State* last_row = &integ->getState();
   SimTK::Vector y_prev = integ->getState().getY(), ydot_prev = integ->getState().getYDot();
   double t_prev = integ->getTime();
@@ -113,7 +114,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
         run.stats.complete = false;
         run.stats.status = statusAt("numerical failure (non-finite value)", t_out);
         stop = true;
-      } else if (stall.update(t_out, model.crankSpeed(s), model.motorSpeed(s))) {
+      } else if (stall.update(t_out, model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s))) {
         run.stats.complete = false;
         run.stats.status = stall.status();
         stop = true;

@@ -258,7 +258,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
     y_last = ym;
     m.evaluate(y_last.data(), e, true);
     appendRows(m, t, e, res);
-    if (stall.update(t, e.omega_crank, e.omega_motor)) {
+    if (stall.update(t, e.phi_crank, e.omega_crank, e.omega_motor)) {
       res.stats.complete = false;
       res.stats.status = stall.status();
       break;

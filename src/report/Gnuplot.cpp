@@ -105,7 +105,8 @@ void renderPlot(const PlotSpec& spec, const std::string& base, bool png, bool sv
 
 void renderHeatMap(const std::string& title, const std::string& xlabel, const std::string& ylabel,
                    const std::string& zlabel, const std::vector<double>& x, const std::vector<double>& y,
-                   const std::vector<std::vector<double>>& z, const std::string& base, bool png, bool svg) {
+                   const std::vector<std::vector<double>>& z, const std::string& base, bool png, bool svg,
+                   const std::string& preamble) {
   std::ostringstream os;
   os.precision(12);
   os << "set title " << quoted(title) << "\nset xlabel " << quoted(xlabel) << "\nset ylabel " << quoted(ylabel)
@@ -119,7 +120,8 @@ void renderHeatMap(const std::string& title, const std::string& xlabel, const st
     }
     os << '\n';
   }
-  os << "EOD\nplot $G using 1:2:3 with image notitle\n";
+  os << "EOD\n" << preamble << (preamble.empty() || preamble.back() == '\n' ? "" : "\n")
+     << "plot $G using 1:2:3 with image notitle\n";
   render(os.str(), 900, 640, base, png, svg);
 }
 

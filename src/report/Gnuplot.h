@@ -47,9 +47,10 @@ bool gnuplotAvailable();
 void renderPlot(const PlotSpec& spec, const std::string& base, bool png = true, bool svg = true);
 
 // Heat map of z over a grid (rows follow y, columns follow x), same files and guarantees.
+// `preamble`: extra gnuplot commands run before `plot` (tics, a marked point, lines), as PlotSpec's.
 void renderHeatMap(const std::string& title, const std::string& xlabel, const std::string& ylabel,
                    const std::string& zlabel, const std::vector<double>& x, const std::vector<double>& y,
                    const std::vector<std::vector<double>>& z, const std::string& base, bool png = true,
-                   bool svg = true);
+                   bool svg = true, const std::string& preamble = "");
 
 }  // namespace rollerdyn

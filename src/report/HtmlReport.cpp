@@ -133,18 +133,8 @@ std::string base64Encode(const std::string& bytes) {
   return out;
 }
 
-std::string renderReportHtml(const ReportContent& c) {
-  const json& s = c.summary;
+std::string runStatusHtml(const nlohmann::json& s) {
   std::ostringstream h;
-  const std::string name = htmlEscape(c.scene_name);
-  h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-    << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-    << "<title>rollerdyn report: " << name << "</title>\n<style>" << kStyle << "</style>\n"
-    << inlineScriptBlock(kErrorRecorder) << "</head>\n<body>\n";
-  h << "<h1>rollerdyn report: " << name << "</h1>\n";
-  h << "<div class=\"small\">Drive dynamics of a roller forming installation, " << htmlEscape(number(at(s, "model")))
-    << " model, integrator " << htmlEscape(number(at(s, "integrator"))) << ".</div>\n";
-
   const bool complete = at(s, "complete").is_boolean() && at(s, "complete").get<bool>();
   h << "<div class=\"status " << (complete ? "ok" : "bad") << "\">" << (complete ? "Run complete" : "Run INCOMPLETE")
     << ": " << htmlEscape(number(at(s, "status"))) << "</div>\n";
@@ -155,33 +145,11 @@ std::string renderReportHtml(const ReportContent& c) {
     h << "</ul></div>\n";
   }
 
-  // The mechanism in motion beside the interactive time plots.
-  if (!c.animation.empty() || !c.time_plots.empty()) {
-    const json t0 = at(s, "steady_state.t_begin"), t1 = at(s, "steady_state.t_end");
-    h << "<h2>Mechanism in motion</h2>\n<p class=\"small\">Drawn to scale from this run's time series (crank "
-         "angle &phi;<sub>2</sub>, cart positions) and reactions, one lane per cart because the crank planes lie "
-         "one behind the other along the shaft; cart j's crank is at &phi;<sub>2</sub> + (j&minus;1)&middot;&Delta;&phi;. "
-         "Arrows: guide reactions at the guide rollers and the rod force at the hinge B, each kind scaled to "
-         "its largest value over the run.</p>\n<div class=\"motion\"><div>"
-      << mechanismAnimationHtml(c.animation) << "</div><div>"
-      << timePlotsHtml(c.time_plots, c.chartjs_path, t0.is_number() ? t0.get<double>() : 0.0,
-                       t1.is_number() ? t1.get<double>() : 0.0)
-      << "</div></div>\n";
-  }
+  return h.str();
+}
 
-  // Scene
-  h << "<h2>Scene</h2>\n<table>\n";
-  h << "<tr><th>name</th><td>" << name << "</td></tr>\n";
-  h << "<tr><th>file</th><td><code>" << htmlEscape(c.scene_path) << "</code></td></tr>\n";
-  h << "<tr><th>source</th><td>" << htmlEscape(c.scene_source) << "</td></tr>\n";
-  h << "<tr><th>overrides (--set)</th><td>";
-  if (c.overrides.empty()) h << "none";
-  for (size_t i = 0; i < c.overrides.size(); ++i)
-    h << (i ? "<br>" : "") << "#" << i + 1 << " <code>" << htmlEscape(c.overrides[i]) << "</code>";
-  h << "</td></tr>\n<tr><th>effects built</th><td>";
-  for (const std::string& e : c.effects) h << "<span class=\"chip\">" << htmlEscape(e) << "</span>";
-  h << "</td></tr>\n</table>\n";
-
+std::string summaryMetricsHtml(const nlohmann::json& s) {
+  std::ostringstream h;
   // Summary metrics
   struct Metric {
     const char* path;
@@ -224,8 +192,11 @@ std::string renderReportHtml(const ReportContent& c) {
       << "</td><td>" << m.unit << "</td></tr>\n";
   h << "</table>\n";
 
-  h << sizingSectionHtml(s);  // motion, stall cause, drive sizing (SizingSection.h)
+  return h.str();
+}
 
+std::string reactionsTableHtml(const nlohmann::json& s, const std::vector<std::string>& reaction_columns) {
+  std::ostringstream h;
   // Reactions
   const json rx = at(s, "reactions");
   h << "<h2>Joint reactions over the steady window</h2>\n";
@@ -233,7 +204,7 @@ std::string renderReportHtml(const ReportContent& c) {
     h << "<p>No reactions in summary.json.</p>\n";
   } else {
     std::vector<std::string> order;
-    for (const std::string& col : c.reaction_columns)
+    for (const std::string& col : reaction_columns)
       if (rx.contains(col)) order.push_back(col);
     for (auto it = rx.begin(); it != rx.end(); ++it)
       if (std::find(order.begin(), order.end(), it.key()) == order.end()) order.push_back(it.key());
@@ -253,6 +224,77 @@ std::string renderReportHtml(const ReportContent& c) {
     h << "</table>\n";
   }
 
+  return h.str();
+}
+
+std::string sceneParametersHtml(const std::vector<SceneParameterRow>& parameters,
+                                const std::vector<SceneParameterRow>& derived) {
+  std::ostringstream h;
+  // Parameters
+  h << "<h2>Scene parameters</h2>\n<p class=\"small\">Every key of the scene schema the run used: "
+       "from the file, from a --set override, or the schema default.</p>\n"
+    << "<table>\n<tr><th>key</th><th>value</th><th>unit</th><th>from</th><th>meaning</th></tr>\n";
+  for (const SceneParameterRow& r : parameters)
+    h << "<tr><td><code>" << htmlEscape(r.key) << "</code></td><td class=\"n\">" << htmlEscape(r.value) << "</td><td>"
+      << htmlEscape(r.unit) << "</td><td>" << htmlEscape(r.origin) << "</td><td>" << htmlEscape(r.meaning)
+      << "</td></tr>\n";
+  h << "</table>\n";
+  if (!derived.empty()) {
+    h << "<h3>Derived quantities</h3>\n<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>meaning</th></tr>\n";
+    for (const SceneParameterRow& r : derived)
+      h << "<tr><td>" << htmlEscape(r.key) << "</td><td class=\"n\">" << htmlEscape(r.value) << "</td><td>"
+        << htmlEscape(r.unit) << "</td><td>" << htmlEscape(r.meaning) << "</td></tr>\n";
+    h << "</table>\n";
+  }
+  return h.str();
+}
+
+std::string renderReportHtml(const ReportContent& c) {
+  const json& s = c.summary;
+  std::ostringstream h;
+  const std::string name = htmlEscape(c.scene_name);
+  h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+    << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+    << "<title>rollerdyn report: " << name << "</title>\n<style>" << kStyle << "</style>\n"
+    << inlineScriptBlock(kErrorRecorder) << "</head>\n<body>\n";
+  h << "<h1>rollerdyn report: " << name << "</h1>\n";
+  h << "<div class=\"small\">Drive dynamics of a roller forming installation, " << htmlEscape(number(at(s, "model")))
+    << " model, integrator " << htmlEscape(number(at(s, "integrator"))) << ".</div>\n";
+
+  h << runStatusHtml(s);
+
+  // The mechanism in motion beside the interactive time plots.
+  if (!c.animation.empty() || !c.time_plots.empty()) {
+    const json t0 = at(s, "steady_state.t_begin"), t1 = at(s, "steady_state.t_end");
+    h << "<h2>Mechanism in motion</h2>\n<p class=\"small\">Drawn to scale from this run's time series (crank "
+         "angle &phi;<sub>2</sub>, cart positions) and reactions, one lane per cart because the crank planes lie "
+         "one behind the other along the shaft; cart j's crank is at &phi;<sub>2</sub> + (j&minus;1)&middot;&Delta;&phi;. "
+         "Arrows: guide reactions at the guide rollers and the rod force at the hinge B, each kind scaled to "
+         "its largest value over the run.</p>\n<div class=\"motion\"><div>"
+      << mechanismAnimationHtml(c.animation) << "</div><div>"
+      << timePlotsHtml(c.time_plots, c.chartjs_path, t0.is_number() ? t0.get<double>() : 0.0,
+                       t1.is_number() ? t1.get<double>() : 0.0)
+      << "</div></div>\n";
+  }
+
+  // Scene
+  h << "<h2>Scene</h2>\n<table>\n";
+  h << "<tr><th>name</th><td>" << name << "</td></tr>\n";
+  h << "<tr><th>file</th><td><code>" << htmlEscape(c.scene_path) << "</code></td></tr>\n";
+  h << "<tr><th>source</th><td>" << htmlEscape(c.scene_source) << "</td></tr>\n";
+  h << "<tr><th>overrides (--set)</th><td>";
+  if (c.overrides.empty()) h << "none";
+  for (size_t i = 0; i < c.overrides.size(); ++i)
+    h << (i ? "<br>" : "") << "#" << i + 1 << " <code>" << htmlEscape(c.overrides[i]) << "</code>";
+  h << "</td></tr>\n<tr><th>effects built</th><td>";
+  for (const std::string& e : c.effects) h << "<span class=\"chip\">" << htmlEscape(e) << "</span>";
+  h << "</td></tr>\n</table>\n";
+
+  h << summaryMetricsHtml(s);
+  h << sizingSectionHtml(s);  // motion, stall cause, drive sizing (SizingSection.h)
+
+  h << reactionsTableHtml(s, c.reaction_columns);
+
   // Figures
   h << "<h2>Figures</h2>\n";
   if (c.figures.empty()) h << "<p>No figures.</p>\n";
@@ -265,28 +307,14 @@ std::string renderReportHtml(const ReportContent& c) {
     h << "<figcaption><b>Figure " << i + 1 << "</b> (<code>" << htmlEscape(f.name) << "</code>). "
       << htmlEscape(f.caption) << "</figcaption></figure>\n";
   }
+  for (const std::string& section : c.extra_sections_html) h << section;
   if (!c.notes.empty()) {
     h << "<h2>Notes</h2>\n<ul>\n";
     for (const std::string& n : c.notes) h << "<li>" << htmlEscape(n) << "</li>\n";
     h << "</ul>\n";
   }
 
-  // Parameters
-  h << "<h2>Scene parameters</h2>\n<p class=\"small\">Every key of the scene schema the run used: "
-       "from the file, from a --set override, or the schema default.</p>\n"
-    << "<table>\n<tr><th>key</th><th>value</th><th>unit</th><th>from</th><th>meaning</th></tr>\n";
-  for (const SceneParameterRow& r : c.parameters)
-    h << "<tr><td><code>" << htmlEscape(r.key) << "</code></td><td class=\"n\">" << htmlEscape(r.value) << "</td><td>"
-      << htmlEscape(r.unit) << "</td><td>" << htmlEscape(r.origin) << "</td><td>" << htmlEscape(r.meaning)
-      << "</td></tr>\n";
-  h << "</table>\n";
-  if (!c.derived.empty()) {
-    h << "<h3>Derived quantities</h3>\n<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>meaning</th></tr>\n";
-    for (const SceneParameterRow& r : c.derived)
-      h << "<tr><td>" << htmlEscape(r.key) << "</td><td class=\"n\">" << htmlEscape(r.value) << "</td><td>"
-        << htmlEscape(r.unit) << "</td><td>" << htmlEscape(r.meaning) << "</td></tr>\n";
-    h << "</table>\n";
-  }
+  h << sceneParametersHtml(c.parameters, c.derived);
   h << "<p class=\"small\">Generated by <code>" << htmlEscape(c.command)
     << "</code>. Files next to this page: timeseries.csv, reactions.csv, summary.json, figures/*.png|svg.</p>\n";
   h << inlineScriptBlock(kFigureCounter) << "</body>\n</html>\n";

@@ -33,8 +33,23 @@ struct ReportContent {
   std::string command;                    // command line that produced the report
   MechanismFrames animation;              // the mechanism in motion (empty: section left out)
   std::vector<TimePlot> time_plots;       // interactive time plots beside the animation
+  // Further sections, whole HTML fragments written by their own modules (each escapes its own
+  // text and embeds its own figures), placed after the figures: e.g. the torsional modes.
+  std::vector<std::string> extra_sections_html;
   std::string chartjs_path = kChartJsPath;  // Chart.js file inlined for them (missing: a note, PNGs only)
 };
+
+// The report's parts for one run as HTML fragments (no page around them), each text escaped; the
+// Python interface shows the same tables in Jupyter.
+// "Run complete/INCOMPLETE: status" and the run's warnings (summary.json `warnings`).
+std::string runStatusHtml(const nlohmann::json& summary);
+// "Summary metrics": speed, δ, H, k_p, torque swings, steady window, energy audit, cost.
+std::string summaryMetricsHtml(const nlohmann::json& summary);
+// "Joint reactions over the steady window": min, max, mean, |max| per reactions column.
+std::string reactionsTableHtml(const nlohmann::json& summary, const std::vector<std::string>& reaction_columns);
+// "Scene parameters": every key with its value, unit, origin and meaning, and the derived quantities.
+std::string sceneParametersHtml(const std::vector<SceneParameterRow>& parameters,
+                                const std::vector<SceneParameterRow>& derived);
 
 // The page as one string. Every text from the scene or the run is HTML-escaped. Throws
 // std::runtime_error if a figure's PNG cannot be read.

@@ -26,15 +26,6 @@ std::string valueText(const YAML::Node& node) {
   return "{" + s + "}";
 }
 
-std::string defaultText(const KeySpec& spec) {
-  switch (spec.kind) {
-    case KeyKind::Number:
-    case KeyKind::Integer: return formatNumber(spec.default_number);
-    case KeyKind::Flag: return spec.default_number != 0 ? "true" : "false";
-    default: return spec.default_text;
-  }
-}
-
 }  // namespace
 
 std::vector<SceneParameterRow> sceneParameterRows(const std::string& scene_path,
@@ -43,7 +34,12 @@ std::vector<SceneParameterRow> sceneParameterRows(const std::string& scene_path,
   if (!in) throw SceneError::inFile(scene_path, 0, "", "a readable scene file", "cannot open it");
   std::ostringstream text;
   text << in.rdbuf();
-  SceneDocument doc(text.str(), scene_path);
+  return sceneParameterRows(SceneInput{scene_path, text.str(), false}, overrides);
+}
+
+std::vector<SceneParameterRow> sceneParameterRows(const SceneInput& input,
+                                                  const std::vector<std::string>& overrides) {
+  SceneDocument doc(input.text, input.label, !input.from_data);
   for (size_t i = 0; i < overrides.size(); ++i) doc.applyOverride(static_cast<int>(i) + 1, overrides[i]);
 
   std::vector<SceneParameterRow> rows;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "scene/Scene.h"
+#include "scene/SceneParser.h"
 
 namespace rollerdyn {
 
@@ -24,6 +25,9 @@ struct SceneParameterRow {
 // (Optional keys) or not at all (keys whose default depends on other keys: see derived rows).
 // Throws SceneError like parseSceneFile() for a bad file.
 std::vector<SceneParameterRow> sceneParameterRows(const std::string& scene_path,
+                                                  const std::vector<std::string>& overrides);
+// The same for a scene input kept in memory (scene/SceneParser.h).
+std::vector<SceneParameterRow> sceneParameterRows(const SceneInput& input,
                                                   const std::vector<std::string>& overrides);
 
 // Quantities derived from the scene: critical slip, synchronous crank speed, breakdown torque at

@@ -27,8 +27,9 @@ std::string text(const json& v) { return v.is_string() ? htmlEscape(v.get<std::s
 
 std::string checkCell(const json& v) {
   if (!v.is_string()) return "<td>n/a</td>";
-  const bool pass = v.get<std::string>() == "pass";
-  return std::string("<td class=\"") + (pass ? "ok" : "bad") + "\">" + (pass ? "pass" : "FAIL") + "</td>";
+  const std::string verdict = v.get<std::string>();
+  const bool pass = verdict == "pass";
+  return std::string("<td class=\"") + (pass ? "ok" : "bad") + "\">" + htmlEscape(verdict) + "</td>";
 }
 
 void row(std::ostringstream& h, const std::string& what, const std::string& value, const char* unit,
@@ -58,7 +59,8 @@ std::string sizingSectionHtml(const json& s) {
   }
   const json& w = at(z, "window");
   h << "<p class=\"small\">Over the steady window t = " << n(at(w, "t_begin")) << " … " << n(at(w, "t_end"))
-    << " s (" << n(at(w, "revolutions"), "%.3g") << " crank revolutions). M: motor torque at the rotor; "
+    << " s (" << n(at(w, "revolutions"), "%.3g") << " crank revolutions), and where marked over the whole run "
+    << "(start-up included). M: motor torque at the rotor; "
        "u: reducer ratio; η: reducer efficiency; ω_r: rotor speed; ω0: synchronous speed; "
        "s = 1 − ω_r/ω0: slip.</p>\n";
   const json& m = at(z, "motor");
@@ -81,11 +83,39 @@ std::string sizingSectionHtml(const json& s) {
         text(at(m, "line_power_basis")));
     row(h, "slip s: min … max", n(at(at(m, "slip"), "min"), "%.4f") + " … " + n(at(at(m, "slip"), "max"), "%.4f"), "-");
     row(h, "motor energy per crank revolution", n(at(m, "energy_per_revolution"), "%.4g", 1e-3), "kJ");
-    h << "</table>\n<table>\n<tr><th>check</th><th>ratio</th><th>result</th></tr>\n";
-    h << "<tr><td>RMS torque / nominal torque M_n (thermal equivalent), ≤ 1</td><td class=\"n\">"
-      << n(at(m, "rms_over_nominal"), "%.3f") << "</td>" << checkCell(at(m, "rms_check")) << "</tr>\n";
-    h << "<tr><td>peak torque / breakdown torque M_kr, &lt; 1</td><td class=\"n\">"
-      << n(at(m, "peak_over_breakdown"), "%.3f") << "</td>" << checkCell(at(m, "peak_check")) << "</tr>\n</table>\n";
+    const json& r = at(m, "whole_run");
+    row(h, "whole run: torque M at the rotor mean / RMS / peak |M|",
+        n(at(at(r, "torque_shaft"), "mean")) + " / " + n(at(at(r, "torque_shaft"), "rms")) + " / " +
+            n(at(at(r, "torque_shaft"), "peak")),
+        "N·m", "start-up included");
+    row(h, "whole run: power from the line mean / peak",
+        n(at(at(r, "power_line"), "mean"), "%.4g", 1e-3) + " / " + n(at(at(r, "power_line"), "peak"), "%.4g", 1e-3), "kW");
+    row(h, "whole run: mean rotor losses s·M·ω0", n(at(r, "rotor_losses_mean"), "%.4g", 1e-3), "kW");
+    h << "</table>\n";
+  }
+  const json& checks = at(z, "checks");
+  if (checks.is_array() && !checks.empty()) {
+    h << "<h3>Checks</h3>\n<p class=\"small\">Each check names the window that decided it: the steady window or "
+         "the whole run (start-up included).</p>\n<table>\n<tr><th>check</th><th>ratio</th><th>result</th>"
+         "<th>decided by</th><th>why</th></tr>\n";
+    for (const json& c : checks)
+      h << "<tr><td>" << text(at(c, "what")) << "</td><td class=\"n\">" << n(at(c, "value"), "%.3f") << "</td>"
+        << checkCell(at(c, "verdict")) << "<td>" << text(at(c, "window")) << "</td><td class=\"small\">"
+        << text(at(c, "reason")) << "</td></tr>\n";
+    h << "</table>\n";
+  }
+  const json& load = at(s, "load");
+  if (load.is_object() && at(load, "available").is_boolean() && at(load, "available").get<bool>()) {
+    h << "<h3>Technological load</h3>\n<p>" << text(at(load, "reading")) << "</p>\n";
+    if (at(load, "warning").is_string())
+      h << "<div class=\"status bad\">" << text(at(load, "warning")) << "</div>\n";
+    h << "<table>\n<tr><th>cart</th><th>work, whole run [kJ]</th><th>work, steady window [kJ]</th>"
+         "<th>mean power, steady window [W]</th></tr>\n";
+    for (const json& c : at(load, "per_cart"))
+      h << "<tr><td class=\"n\">" << at(c, "cart").dump() << "</td><td class=\"n\">"
+        << n(at(c, "work_whole_run"), "%.4g", 1e-3) << "</td><td class=\"n\">" << n(at(c, "work_steady"), "%.4g", 1e-3)
+        << "</td><td class=\"n\">" << n(at(c, "power_mean_steady")) << "</td></tr>\n";
+    h << "</table>\n";
   }
   const json& f = at(z, "flywheel");
   h << "<h3>Flywheel</h3>\n<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
@@ -101,9 +131,10 @@ std::string sizingSectionHtml(const json& s) {
     h << "<h3>Coupling</h3>\n<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
     row(h, "torque at the crank axis: mean / peak |M| / swing",
         n(at(c, "mean")) + " / " + n(at(c, "peak")) + " / " + n(at(c, "swing")), "N·m");
+    row(h, "whole run: peak |M| and when", n(at(c, "peak_whole_run")) + " at t = " + n(at(c, "t_peak_whole_run")) + " s",
+        "N·m", "start-up included");
     row(h, "rated torque (sizing.coupling_rated_torque)", n(at(c, "rated_torque")), "N·m");
-    h << "<tr><td>peak / rating, ≤ 1</td><td class=\"n\">" << n(at(c, "peak_over_rating"), "%.3f")
-      << "</td><td>-</td>" << checkCell(at(c, "check")) << "</tr>\n</table>\n";
+    h << "</table>\n";
   }
   h << "<h3>Joints and bearings</h3>\n<p class=\"small\">P: equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), "
        "n the joint's rotation speed (ISO 281 style); L10 = (C/P)³·10⁶ revolutions, in hours at the mean "

@@ -1,5 +1,7 @@
 #include "scene/Scene.h"
 
+#include <cmath>
+
 namespace rollerdyn {
 
 double Scene::motorSideInertia() const {
@@ -59,6 +61,20 @@ const char* toString(FlywheelLocation l) {
 }
 const char* toString(ReducedIntegrator i) { return i == ReducedIntegrator::Baranov ? "baranov" : "cvode"; }
 const char* toString(DriveType d) { return d == DriveType::Cam ? "cam" : "crank"; }
+const char* toString(MotorModel m) {
+  switch (m) {
+    case MotorModel::Kloss: return "kloss";
+    case MotorModel::KlossDynamic: return "kloss_dynamic";
+    case MotorModel::Circuit: return "circuit";
+    case MotorModel::Park: return "park";
+  }
+  return "?";
+}
+const char* toString(WindingConnection c) { return c == WindingConnection::Delta ? "delta" : "star"; }
+
+double InductionMotor::phaseVoltage() const { return voltage / std::sqrt(3.0); }
+double InductionMotor::supplyAngularFrequency() const { return 2.0 * M_PI * frequency; }
+
 const char* toString(Formulation f) { return f == Formulation::Minimal ? "minimal" : "constrained"; }
 
 }  // namespace rollerdyn

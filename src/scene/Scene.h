@@ -24,6 +24,8 @@ enum class FlywheelLocation { Crankshaft, MotorShaft };         // flywheel.loca
 enum class ReducedIntegrator { Cvode, Baranov };                // reduced.integrator
 enum class DriveType { Crank, Cam };                            // drive.type
 enum class Formulation { Constrained, Minimal };                // simulation.formulation
+enum class MotorModel { Kloss, KlossDynamic, Circuit, Park };   // motor.model
+enum class WindingConnection { Star, Delta };                   // motor.connection
 
 struct SimulationSettings {
   double t_end;                 // simulated time span [s]                       simulation.t_end
@@ -111,6 +113,58 @@ struct KlossMotor {
   double rotor_inertia;    // J_p about the rotor axis [kg·m²]                  motor.rotor_inertia
 };
 
+// The induction machine behind the motor laws other than static Kloss (src/motor/MotorLaw.h):
+// which law runs, the rated supply, and the machine either as an equivalent circuit or as
+// catalogue data to fit one to. Every resistance and inductance here is per phase of the
+// EQUIVALENT STAR: a delta winding's per-winding values R_Δ, L_Δ enter as R_Δ/3, L_Δ/3, and
+// U_ph = U_n/√3 whatever the connection (docs/motor.md). Keys not given stay 0 = not given.
+struct MotorCircuit {
+  double R_s = 0;          // stator resistance R_s [Ω]                               motor.circuit.R_s
+  double L_sigma_s = 0;    // stator leakage inductance L_σs [H]                      motor.circuit.L_sigma_s
+  double L_m = 0;          // magnetizing inductance L_m [H]                          motor.circuit.L_m
+  double R_r = 0;          // rotor (first cage) resistance R_r, referred to the stator [Ω]
+                           //                                                        motor.circuit.R_r
+  double L_sigma_r = 0;    // rotor (first cage) leakage inductance L_σr [H]          motor.circuit.L_sigma_r
+  double R_r2 = 0;         // second cage's resistance [Ω]; 0: single cage            motor.circuit.R_r2
+  double L_sigma_r2 = 0;   // second cage's leakage inductance [H]                    motor.circuit.L_sigma_r2
+  bool given() const { return R_r > 0; }
+  bool doubleCage() const { return R_r2 > 0; }
+};
+
+// Catalogue (data-sheet) values the circuit is fitted to (src/motor/CatalogueFit.h).
+struct MotorCatalogue {
+  double power = 0;                  // P_n, rated shaft power [W]                  motor.catalogue.power
+  double omega_nominal = 0;          // ω_n, rated rotor speed [rad/s]              motor.catalogue.omega_nominal
+  double current = 0;                // I_n, rated line current [A]                 motor.catalogue.current
+  double power_factor = 0;           // cos φ_n at the rated point [-]              motor.catalogue.power_factor
+  double efficiency = 0;             // η_n at the rated point [-]                  motor.catalogue.efficiency
+  double starting_torque_ratio = 0;  // M_s/M_n, torque at standstill [-]          motor.catalogue.starting_torque_ratio
+  double breakdown_torque_ratio = 0; // M_k/M_n, largest torque [-]                 motor.catalogue.breakdown_torque_ratio
+  double starting_current_ratio = 0; // I_s/I_n, current at standstill [-]         motor.catalogue.starting_current_ratio
+  int cages = 2;                     // rotor cages of the fitted circuit: 1 | 2 [-] motor.catalogue.cages
+  bool given() const { return power > 0; }
+  double nominalTorque() const { return power / omega_nominal; }  // M_n = P_n/ω_n [N·m]
+};
+
+struct InductionMotor {
+  MotorModel model = MotorModel::Kloss;  // law of the motor torque: kloss | kloss_dynamic |
+                                         // circuit | park [-]                           motor.model
+  double torque_time_constant = 0;  // T_e of the dynamic Kloss characteristic [s]; 0: the
+                                    // default 1/(2π·f_n·s_kr)                motor.torque_time_constant
+  double voltage = 0;               // U_n, rated line-to-line RMS voltage [V]       motor.voltage
+  double frequency = 50;            // f_n, rated supply frequency [Hz]              motor.frequency
+  WindingConnection connection = WindingConnection::Star;  // winding connection at rated
+                                    // voltage: star | delta [-]                     motor.connection
+  int pole_pairs = 0;               // p [-]; from motor.pole_pairs, else round(2π·f_n/ω0)
+                                    //                                               motor.pole_pairs
+  MotorCircuit circuit;             // motor.circuit.*
+  MotorCatalogue catalogue;         // motor.catalogue.*
+  // Rated phase voltage of the equivalent star U_ph = U_n/√3 [V].
+  double phaseVoltage() const;
+  // Rated supply angular frequency ω1 = 2π·f_n [rad/s] (electrical).
+  double supplyAngularFrequency() const;
+};
+
 struct Reducer {
   double ratio;        // u = ω_rotor / ω_crank [-]                                 reducer.ratio
   double efficiency;   // η in (0, 1] [-]                                           reducer.efficiency
@@ -142,6 +196,9 @@ struct Loads {
   double guide_friction_lag = 2e-3;  // τ_N: time constant with which the multibody model's
                                // friction normal force follows the guide reaction [s]
                                //                     loads.guide_friction.normal_force_lag
+  double rolling_resistance = 0;  // μ_r, rolling resistance of the compacting rollers in the mix:
+                               // a force μ_r·(R_j1 + R_j2) against the cart's velocity, added to
+                               // F_j1 + F_j2 in either reading [-]      loads.rolling_resistance
 };
 
 struct ReducedSettings {
@@ -160,6 +217,7 @@ struct Scene {
   ConnectingRods rods;
   Carts carts;
   KlossMotor motor;
+  InductionMotor induction;  // motor.model and the machine data of the other laws
   Reducer reducer;
   Coupling coupling;
   Flywheel flywheel;
@@ -202,5 +260,7 @@ const char* toString(FlywheelLocation l);
 const char* toString(ReducedIntegrator i);
 const char* toString(Formulation f);
 const char* toString(DriveType d);
+const char* toString(MotorModel m);
+const char* toString(WindingConnection c);
 
 }  // namespace rollerdyn

@@ -163,17 +163,17 @@ std::string describeNode(const YAML::Node& node) {
   return "nothing";
 }
 
-SceneDocument::SceneDocument(const std::string& yaml_text, std::string file_label)
-    : file_(std::move(file_label)) {
+SceneDocument::SceneDocument(const std::string& yaml_text, std::string file_label, bool line_numbers)
+    : file_(std::move(file_label)), line_numbers_(line_numbers) {
   DocumentScan scan;
   try {
     scan = scanDocuments(yaml_text);  // never YAML::LoadAll(): see scanDocuments()
   } catch (const YAML::ParserException& e) {
-    throw SceneError::inFile(file_, lineOfMark(e.mark), "", "valid YAML",
+    throw SceneError::inFile(file_, lineAt(e.mark), "", "valid YAML",
                              "a syntax error: " + e.msg);
   }
   if (scan.stuck) {
-    throw SceneError::inFile(file_, std::max(1, lineOfMark(scan.stuck_at)), "", "valid YAML",
+    throw SceneError::inFile(file_, atLeastLine1(lineAt(scan.stuck_at)), "", "valid YAML",
                              "a syntax error: " + strayToken(yaml_text, scan.stuck_at));
   }
   if (scan.documents == 0) {
@@ -182,22 +182,22 @@ SceneDocument::SceneDocument(const std::string& yaml_text, std::string file_labe
   }
   if (scan.documents > 1) {
     // A second document would be silently dropped by a single-document loader.
-    throw SceneError::inFile(file_, lineOfMark(scan.second), "",
+    throw SceneError::inFile(file_, lineAt(scan.second), "",
                              "exactly one YAML document per scene file",
                              "a second document (after '---')");
   }
   try {
     root_ = YAML::Load(yaml_text);
   } catch (const YAML::ParserException& e) {  // not expected: the scan parsed the same text
-    throw SceneError::inFile(file_, lineOfMark(e.mark), "", "valid YAML",
+    throw SceneError::inFile(file_, lineAt(e.mark), "", "valid YAML",
                              "a syntax error: " + e.msg);
   }
   if (!root_.IsMap()) {
-    throw SceneError::inFile(file_, std::max(1, lineOfMark(root_.Mark())), "",
+    throw SceneError::inFile(file_, atLeastLine1(lineAt(root_.Mark())), "",
                              "a map of scene keys (" + allowedKeys("") + ")",
                              describeNode(root_));
   }
-  lines_[""] = std::max(1, lineOfMark(root_.Mark()));
+  lines_[""] = atLeastLine1(lineAt(root_.Mark()));
   recordLines(root_, "");
 }
 
@@ -206,17 +206,21 @@ void SceneDocument::recordLines(const YAML::Node& node, const std::string& path)
     for (auto it = node.begin(); it != node.end(); ++it) {
       if (!it->first.IsScalar()) continue;  // checkStructure() rejects it with its line
       const std::string child = childPath(path, it->first.Scalar());
-      lines_.emplace(child, lineOfMark(it->first.Mark()));  // first occurrence wins
+      lines_.emplace(child, lineAt(it->first.Mark()));  // first occurrence wins
       recordLines(it->second, child);
     }
   } else if (node.IsSequence()) {
     for (size_t i = 0; i < node.size(); ++i) {
       const std::string child = path + "[" + std::to_string(i) + "]";
-      lines_.emplace(child, lineOfMark(node[i].Mark()));
+      lines_.emplace(child, lineAt(node[i].Mark()));
       recordLines(node[i], child);
     }
   }
 }
+
+int SceneDocument::lineAt(const YAML::Mark& m) const { return line_numbers_ ? lineOfMark(m) : 0; }
+
+int SceneDocument::atLeastLine1(int line) const { return line_numbers_ ? std::max(1, line) : 0; }
 
 int SceneDocument::lineOf(const std::string& path) const {
   std::string p = path;
@@ -347,7 +351,7 @@ void SceneDocument::checkMap(const YAML::Node& node, const std::string& path) co
 
   std::map<std::string, int> seen;  // key -> line of its first occurrence
   for (auto it = node.begin(); it != node.end(); ++it) {
-    const int key_line = lineOfMark(it->first.Mark());
+    const int key_line = lineAt(it->first.Mark());
     if (!it->first.IsScalar()) {
       failAt(childPath(path, "?"), key_line, "a plain key name (" + allowedKeys(path) + ")",
              describeNode(it->first));

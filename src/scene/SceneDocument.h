@@ -20,8 +20,9 @@ namespace rollerdyn {
 class SceneDocument {
  public:
   // Parses `yaml_text`. A YAML syntax error, an empty file, a second document or a top level
-  // that is not a map is a SceneError located in `file_label`.
-  SceneDocument(const std::string& yaml_text, std::string file_label);
+  // that is not a map is a SceneError located in `file_label`. Without `line_numbers` (text
+  // generated from data, whose lines the user never saw) errors name the label and key only.
+  SceneDocument(const std::string& yaml_text, std::string file_label, bool line_numbers = true);
 
   // Applies the n-th (1-based) --set argument "key.path=value". The key path must be in the
   // schema; the value is parsed as a YAML scalar or flow node and replaces (or adds) that key.
@@ -63,8 +64,13 @@ class SceneDocument {
   [[noreturn]] void failOverride(int n, const std::string& arg, const std::string& key,
                                  const std::string& expected, const std::string& got) const;
   void checkMap(const YAML::Node& node, const std::string& path) const;
+  // 1-based line of a mark of this document; 0 for nodes built in memory or without line numbers.
+  int lineAt(const YAML::Mark& m) const;
+  // `line`, at least 1 (a whole-document complaint points at the top); 0 without line numbers.
+  int atLeastLine1(int line) const;
 
   std::string file_;
+  bool line_numbers_ = true;
   YAML::Node root_;
   std::vector<Override> overrides_;
   std::map<std::string, int> lines_;

@@ -8,134 +8,17 @@
 #include <sstream>
 
 #include "scene/SceneDocument.h"
+#include "scene/SceneReader.h"
 #include "scene/SceneSchema.h"
 
 namespace rollerdyn {
 
+using scene_detail::blameSecond;
+using scene_detail::Reader;
+
 namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
-
-// Typed, range-checked access to single keys of a SceneDocument, driven by the schema table:
-// each read checks the YAML type, finiteness and the key's range and either returns the value,
-// the key's default, or throws a located SceneError.
-class Reader {
- public:
-  explicit Reader(const SceneDocument& doc) : doc_(doc) {}
-
-  bool has(const std::string& path) const { return doc_.find(path).IsDefined(); }
-
-  // A Number key: its value, or its default when Optional and absent.
-  double number(const std::string& path) const {
-    const KeySpec& s = spec(path);
-    if (!has(path)) return absent(s);
-    return checkedNumber(s, doc_.find(path));
-  }
-  // A Number key that must be present here for a reason the schema cannot express.
-  double requiredNumber(const std::string& path, const std::string& why) const {
-    const KeySpec& s = spec(path);
-    if (!has(path)) doc_.failMissing(path, describeExpected(s) + " (" + why + ")");
-    return checkedNumber(s, doc_.find(path));
-  }
-  // A Conditional Number key with a fallback decided by the caller.
-  double numberOr(const std::string& path, double fallback) const {
-    return has(path) ? checkedNumber(spec(path), doc_.find(path)) : fallback;
-  }
-
-  int integer(const std::string& path) const {
-    const KeySpec& s = spec(path);
-    if (!has(path)) return static_cast<int>(absent(s));
-    const YAML::Node n = scalar(s, doc_.find(path));
-    long long v = 0;
-    if (n.Tag() == "!" || !YAML::convert<long long>::decode(n, v)) fail(s, describeNode(n));
-    if (!inRange(s.range, static_cast<double>(v))) fail(s, describeNode(n));
-    return static_cast<int>(v);
-  }
-
-  std::string text(const std::string& path) const {
-    const KeySpec& s = spec(path);
-    if (!has(path)) {
-      if (s.presence == Presence::Required) doc_.failMissing(path, describeExpected(s));
-      return s.default_text;
-    }
-    return scalar(s, doc_.find(path)).Scalar();
-  }
-
-  // A Choice key: one of its words (case-sensitive, so a misspelling is never guessed at).
-  std::string choice(const std::string& path) const {
-    const std::string word = text(path);
-    const KeySpec& s = spec(path);
-    for (const std::string& c : s.choices)
-      if (c == word) return word;
-    fail(s, describeNode(doc_.find(path)));
-  }
-
-  bool flag(const std::string& path) const {
-    const KeySpec& s = spec(path);
-    if (!has(path)) return absent(s) != 0.0;
-    const std::string v = scalar(s, doc_.find(path)).Scalar();
-    // YAML 1.2 core booleans only; yaml-cpp would also take yes/no/on/off/y/n.
-    if (v == "true" || v == "True" || v == "TRUE") return true;
-    if (v == "false" || v == "False" || v == "FALSE") return false;
-    fail(s, describeNode(doc_.find(path)));
-  }
-
-  [[noreturn]] void fail(const KeySpec& s, const std::string& got) const {
-    doc_.fail(s.path, describeExpected(s), got);
-  }
-
-  const SceneDocument& doc() const { return doc_; }
-
- private:
-  static const KeySpec& spec(const std::string& path) {
-    const KeySpec* s = findSceneKey(path);
-    if (!s) throw std::logic_error("SceneParser reads key '" + path + "' missing from the schema");
-    return *s;
-  }
-
-  static bool inRange(const Range& r, double v) {
-    if (r.lo_inclusive ? v < r.lo : v <= r.lo) return false;
-    if (r.hi_inclusive ? v > r.hi : v >= r.hi) return false;
-    return true;
-  }
-
-  double absent(const KeySpec& s) const {
-    if (s.presence != Presence::Optional) doc_.failMissing(s.path, describeExpected(s));
-    return s.default_number;
-  }
-
-  // The node itself if it is a scalar; otherwise a "got a map / a list / null" error.
-  YAML::Node scalar(const KeySpec& s, const YAML::Node& n) const {
-    if (!n.IsScalar()) fail(s, describeNode(n));
-    return n;
-  }
-
-  double checkedNumber(const KeySpec& s, const YAML::Node& node) const {
-    const YAML::Node n = scalar(s, node);
-    double v = 0.0;
-    // A quoted "10" is a string in YAML; a number must be written as a number.
-    if (n.Tag() == "!" || !YAML::convert<double>::decode(n, v)) fail(s, describeNode(n));
-    if (!std::isfinite(v)) doc_.fail(s.path, finite(describeExpected(s)), n.Scalar());
-    if (!inRange(s.range, v)) fail(s, describeNode(n));
-    return v;
-  }
-
-  // "a number > 0 [m]" -> "a finite number > 0 [m]": .nan and .inf parse as doubles in YAML.
-  static std::string finite(const std::string& expected) {
-    const std::string a_number = "a number";
-    if (expected.compare(0, a_number.size(), a_number) == 0)
-      return "a finite number" + expected.substr(a_number.size());
-    return expected;
-  }
-
-  const SceneDocument& doc_;
-};
-
-// Whichever of two coupled keys came from a --set is the one to blame, so that an override that
-// breaks a cross-key rule is reported as that override's fault.
-bool blameSecond(const SceneDocument& doc, const std::string& first, const std::string& second) {
-  return doc.overrideFor(second) > doc.overrideFor(first);
-}
 
 SimulationSettings readSimulation(const Reader& in) {
   SimulationSettings s;
@@ -210,6 +93,9 @@ ConnectingRods readRods(const Reader& in, double r) {
   }
   if (rods.model == RodModel::Massless) {
     rods.mass = in.numberOr("rods.mass", 0.0);  // kept for reference; the models ignore it
+    // The range is checked here, not in the schema, so that one rule gives one message: >= 0
+    // for massless rods, > 0 otherwise.
+    if (rods.mass < 0.0) in.doc().fail("rods.mass", "a number >= 0 [kg]", formatNumber(rods.mass));
   } else {
     rods.mass = in.requiredNumber("rods.mass", "required unless rods.model is massless");
     if (rods.mass <= 0.0) {
@@ -302,68 +188,6 @@ Carts readCarts(const Reader& in) {
   return c;
 }
 
-// Kloss critical slip from exactly one of three equivalent descriptions.
-double readCriticalSlip(const Reader& in, double omega0) {
-  const SceneDocument& doc = in.doc();
-  const std::string ways_txt =
-      "exactly one of motor.critical_slip, motor.omega_critical, or "
-      "motor.omega_nominal + motor.overload_ratio";
-  std::vector<std::string> given;  // first key of each way present, in schema order
-  if (in.has("motor.critical_slip")) given.push_back("motor.critical_slip");
-  if (in.has("motor.omega_critical")) given.push_back("motor.omega_critical");
-  if (in.has("motor.omega_nominal")) given.push_back("motor.omega_nominal");
-  else if (in.has("motor.overload_ratio")) given.push_back("motor.overload_ratio");
-  if (given.empty()) doc.failMissing("motor.critical_slip", ways_txt);
-  if (given.size() > 1) {
-    // Two descriptions could disagree; refuse rather than pick one silently. Blame the one a
-    // --set added, if any (the latest), else the second in schema order.
-    size_t blamed = 1;
-    for (size_t i = 0; i < given.size(); ++i)
-      if (doc.overrideFor(given[i]) > doc.overrideFor(given[blamed])) blamed = i;
-    const std::string& other = given[blamed == 0 ? 1 : 0];
-    doc.fail(given[blamed], ways_txt + " (" + other + " is given too)",
-             describeNode(doc.find(given[blamed])));
-  }
-  const std::string& way = given[0];
-  if (way == "motor.critical_slip") return in.number(way);  // range (0, 1) from the schema
-
-  const std::string w0_txt = formatNumber(omega0);
-  if (way == "motor.omega_critical") {
-    const double w_kr = in.number(way);
-    if (w_kr >= omega0) {
-      doc.fail(way, "a number in (0, omega_sync = " + w0_txt + ") [rad/s]", formatNumber(w_kr));
-    }
-    return 1.0 - w_kr / omega0;  // Loveikin and Pochka (2007) eq. (7)
-  }
-  const double w_n =
-      in.requiredNumber("motor.omega_nominal", "required with motor.overload_ratio");
-  const double lambda =
-      in.requiredNumber("motor.overload_ratio", "required with motor.omega_nominal");
-  if (w_n >= omega0) {
-    doc.fail("motor.omega_nominal", "a number in (0, omega_sync = " + w0_txt + ") [rad/s]",
-             formatNumber(w_n));
-  }
-  const double s_n = 1.0 - w_n / omega0;
-  const double s_kr = s_n * (lambda + std::sqrt(lambda * lambda - 1.0));  // Loveikin, Pochka, Romasevych (2018) eq. (37)
-  if (s_kr >= 1.0) {
-    doc.fail("motor.overload_ratio",
-             "a value giving critical slip s_kr = s_n(lambda + sqrt(lambda^2 - 1)) < 1 with s_n = " +
-                 formatNumber(s_n),
-             formatNumber(lambda) + " (s_kr = " + formatNumber(s_kr) + ")");
-  }
-  return s_kr;
-}
-
-KlossMotor readMotor(const Reader& in) {
-  KlossMotor m;
-  m.enabled = in.flag("motor.enabled");
-  m.omega_sync = in.number("motor.omega_sync");
-  m.breakdown_torque = in.number("motor.breakdown_torque");
-  m.critical_slip = readCriticalSlip(in, m.omega_sync);
-  m.rotor_inertia = in.number("motor.rotor_inertia");
-  return m;
-}
-
 Reducer readReducer(const Reader& in) {
   Reducer r;
   r.ratio = in.number("reducer.ratio");
@@ -406,6 +230,7 @@ Loads readLoads(const Reader& in) {
   l.guide_friction = in.number("loads.guide_friction.coefficient");
   l.gravity = in.number("loads.gravity");
   l.velocity_smoothing = in.number("loads.velocity_smoothing");
+  l.rolling_resistance = in.number("loads.rolling_resistance");
   l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
   return l;
 }
@@ -426,6 +251,7 @@ SizingInputs readSizing(const Reader& in) {
   z.motor_nominal_torque = in.number("sizing.motor_nominal_torque");
   z.motor_nominal_power = in.number("sizing.motor_nominal_power");
   z.motor_efficiency = in.number("sizing.motor_efficiency");
+  z.starts_per_hour = in.number("sizing.starts_per_hour");
   z.target_delta = in.number("sizing.target_delta");
   z.coupling_rated_torque = in.number("sizing.coupling_rated_torque");
   z.rating_guide_roller = in.number("sizing.bearing_rating.guide_roller");
@@ -451,8 +277,8 @@ Scene readScene(const SceneDocument& doc) {
   Scene s;
   s.source_path = doc.file();
   s.name = std::filesystem::path(doc.file()).stem().string();
-  s.source = in.text("source");
-  if (s.source.find_first_not_of(" \t\n") == std::string::npos) {
+  s.source = in.text("source");  // optional: a scene of one's own need not cite a paper
+  if (in.has("source") && s.source.find_first_not_of(" \t\n") == std::string::npos) {
     doc.fail("source", "a citation of the source paper (non-empty text)", "empty text");
   }
   s.simulation = readSimulation(in);
@@ -460,7 +286,7 @@ Scene readScene(const SceneDocument& doc) {
   s.crank = readCrank(in);
   s.rods = readRods(in, s.crank.radius);
   s.carts = readCarts(in);
-  s.motor = readMotor(in);
+  scene_detail::readMotor(in, s.motor, s.induction);
   s.reducer = readReducer(in);
   s.coupling = readCoupling(in);
   s.flywheel = readFlywheel(in);
@@ -481,22 +307,32 @@ Scene readScene(const SceneDocument& doc) {
 
 }  // namespace
 
-Scene parseSceneText(const std::string& yaml_text, const std::string& file_label,
-                     const std::vector<std::string>& overrides) {
-  SceneDocument doc(yaml_text, file_label);
+Scene parseSceneInput(const SceneInput& input, const std::vector<std::string>& overrides) {
+  SceneDocument doc(input.text, input.label, !input.from_data);
   for (size_t i = 0; i < overrides.size(); ++i) doc.applyOverride(static_cast<int>(i + 1), overrides[i]);
   doc.checkStructure();
-  return readScene(doc);
+  Scene scene = readScene(doc);
+  if (input.from_data) scene.name = input.label;  // a name, not a file whose stem names the scene
+  return scene;
 }
 
-Scene parseSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+Scene parseSceneText(const std::string& yaml_text, const std::string& file_label,
+                     const std::vector<std::string>& overrides) {
+  return parseSceneInput(SceneInput{file_label, yaml_text, false}, overrides);
+}
+
+SceneInput readSceneInput(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   if (!f) {
     throw SceneError::inFile(path, 0, "", "a readable scene file", std::strerror(errno));
   }
   std::ostringstream text;
   text << f.rdbuf();
-  return parseSceneText(text.str(), path, overrides);
+  return SceneInput{path, text.str(), false};
+}
+
+Scene parseSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+  return parseSceneInput(readSceneInput(path), overrides);
 }
 
 }  // namespace rollerdyn

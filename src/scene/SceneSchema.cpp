@@ -3,6 +3,10 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include "scene/DidYouMean.h"
 
 namespace rollerdyn {
 
@@ -36,166 +40,378 @@ KeySpec choice(std::string path, Presence presence, std::vector<std::string> cho
 
 std::vector<KeySpec> buildSchema() {
   using P = Presence;
+  const std::string L2018 = "Loveikin, Pochka, Romasevych (2018)";
+  const std::string L2007 = "Loveikin and Pochka (2007)";
+  const std::string CAM = "Loveikin and Pochka (cam drive paper)";
+  const std::string EB = "the energy-balanced drive paper";
   return {
-      {"source", KeyKind::Text, "-", P::Required, anyFinite(), 0.0, "", {},
-       "citation of the paper the scene comes from (authors, year, title)"},
+      KeySpec{"source", KeyKind::Text, "-", P::Optional, anyFinite(), 0.0, "", {},
+              "citation of the paper the scene comes from (authors, year, title); a scene of your own "
+              "may leave it out, but not give it empty"},
 
       number("simulation.t_end", "s", P::Required, positive(), 0.0, "simulated time span"),
       number("simulation.accuracy", "-", P::Optional, between(0.0, false, 1.0, false), 1e-6,
-             "integrator relative accuracy"),
+             "integrator relative accuracy (the minimal formulation gives CVODE accuracy/100, "
+             "which makes the key mean about the same error in both formulations)"),
       choice("simulation.integrator", P::Optional,
              {"RungeKuttaMerson", "RungeKutta3", "RungeKuttaFeldberg", "RungeKutta2",
               "ExplicitEuler", "Verlet", "SemiExplicitEuler2", "CPodes"},
              "RungeKuttaMerson",
-             "Simbody integrator of the multibody model's constrained formulation"),
+             "Simbody integrator of the multibody model's constrained formulation (the minimal "
+             "formulation always uses CVODE Adams; setting this key with it is an error)"),
       choice("simulation.formulation", P::Optional, {"constrained", "minimal"}, "minimal",
-             "equations of the multibody model: all coordinates under Simbody's constraints "
-             "(constrained) or only the independent ones, integrated by CVODE Adams (minimal)"),
+             "equations of the multibody model: constrained integrates every coordinate and lets "
+             "Simbody enforce the loop constraints; minimal integrates only the crank angle (and "
+             "the coupling twist) with CVODE Adams and takes every other coordinate from the "
+             "slider-crank or cam closed forms"),
       number("simulation.output_step", "s", P::Optional, positive(), 0.005,
-             "spacing of output rows (<= t_end)"),
-      {"simulation.reactions", KeyKind::Flag, "-", P::Optional, anyFinite(), 1.0, "", {},
-       "compute the joint reaction forces at every output row (reactions.csv, joint loads); "
-       "false gives the motion and drive torques only, at a fraction of the multibody cost"},
+             "spacing of output rows (at most t_end)"),
+      KeySpec{"simulation.reactions", KeyKind::Flag, "-", P::Optional, anyFinite(), 1.0, "", {},
+              "compute the joint reaction forces (guide rollers, rods, crank pins, main bearing) "
+              "at every output row; false writes no reactions table and no joint loads, only the "
+              "motion and the drive torques, at a fraction of the multibody cost"},
       number("simulation.constraint_tolerance", "-", P::Conditional,
              between(0.0, false, 1.0, false), 0.0,
-             "constraint projection tolerance (default: simulation.accuracy)"),
+             "constraint projection tolerance of the constrained formulation")
+          .when("= simulation.accuracy"),
       number("simulation.steady_window_revolutions", "-", P::Optional, positive(), 5.0,
-             "crank revolutions at the end of the run used for steady-state metrics"),
+             "crank revolutions at the end of the run over which the steady-state metrics are taken"),
 
       number("initial.crank_angle_deg", "deg", P::Optional, anyFinite(), 0.0,
-             "crank angle of cart 1's crank at t = 0"),
+             "crank angle φ of cart 1's crank at t = 0, from +x"),
       number("initial.crank_speed", "rad/s", P::Optional, anyFinite(), 0.0,
-             "crank speed at t = 0 (motor starts at the same reduced speed)"),
+             "crank speed at t = 0; the motor starts at the same speed reduced to the crank axis"),
       number("initial.twist", "rad", P::Optional, anyFinite(), 0.0,
-             "coupling twist phi1 - phi2 at t = 0"),
+             "coupling twist φ1 − φ2 at t = 0"),
 
-      number("crank.radius", "m", P::Required, positive(), 0.0, "crank radius r"),
+      number("crank.radius", "m", P::Required, positive(), 0.0, "crank radius r")
+          .from(L2018 + " eq. (40)"),
       number("crank.offset_deg", "deg", P::Required, between(0.0, true, 360.0, false), 0.0,
-             "angle between consecutive cranks"),
+             "angle Δφ between consecutive cranks: cart j's crank sits at φ + (j − 1)·Δφ")
+          .from(L2018 + " eq. (31); " + L2007),
       number("crank.inertia_per_crank", "kg·m²", P::Optional, nonNegative(), 0.0,
-             "J'_K, one crank about the shaft axis"),
+             "J'_K, one crank about the shaft axis")
+          .from(L2018 + " eq. (2)"),
       number("crank.shaft_inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
-             "crankshaft without cranks about its axis"),
+             "crankshaft without cranks, about its axis"),
 
       choice("rods.model", P::Required, {"distributed", "split", "massless"}, "",
-             "connecting-rod mass model"),
+             "connecting-rod mass model: distributed (uniform bar), split (half of the mass at "
+             "the crank pin, half at the cart) or massless")
+          .from(L2018 + " eq. (2)-(3) (split); " + L2007 + " eq. (9) (distributed)"),
       number("rods.length", "m", P::Required, positive(), 0.0,
-             "rod length l, crank pin to cart hinge (l > r)"),
-      number("rods.mass", "kg", P::Conditional, nonNegative(), 0.0,
-             "mass of one rod (required unless rods.model is massless)"),
+             "rod length l, crank pin to the cart's hinge B; must exceed crank.radius (l > r)")
+          .from(L2018 + " eq. (40)"),
+      // Any finite number here: the parser checks the range with rods.model, so that one rule gives
+      // one message (> 0, or >= 0 when the rods are massless).
+      number("rods.mass", "kg", P::Conditional, anyFinite(), 0.0,
+             "mass of one rod: > 0, or >= 0 when rods.model is massless")
+          .from(L2018 + " eq. (3); " + L2007 + " (q·l)")
+          .when("required unless rods.model is massless (then 0)"),
       number("rods.inertia_com", "kg·m²", P::Conditional, nonNegative(), 0.0,
-             "rod inertia about its centre of mass (default m·l²/12)"),
+             "rod inertia about its centre of mass")
+          .from(L2007 + " eq. (9): I_s = q·l³/12")
+          .when("m·l²/12"),
 
       choice("drive.type", P::Optional, {"crank", "cam"}, "crank",
-             "crank-slider per cart, or the cam of Loveikin and Pochka (cam drive paper) (rods then unused)"),
+             "crank: one crank-slider per cart; cam: the constant-diameter cam pushes each cart "
+             "along the optimal-reversal law (the rod keys are then unused)")
+          .from(CAM),
       number("cam.stroke", "m", P::Conditional, positive(), 0.0,
-             "cam drive: full stroke of the cart (required when drive.type is cam)"),
+             "Δx, full stroke of the cart under the cam drive")
+          .from(CAM + " (Δx = 0.4 m)")
+          .when("required when drive.type is cam"),
       number("cam.pusher_distance", "m", P::Conditional, positive(), 0.0,
-             "cam drive: distance b between the pushers = cam diameter (> stroke; default 2·stroke)"),
+             "b, distance between the two pushers = the cam's constant diameter (> cam.stroke); "
+             "shapes the profile ρ = b/2 + x(θ) only")
+          .from(CAM + " eq. (38)-(43)")
+          .when("2·cam.stroke"),
 
       integer("carts.count", P::Required, between(1.0, true, 1000.0, true), 0.0,
               "number of carts n"),
-      {"carts.sides", KeyKind::Sides, "-", P::Conditional, anyFinite(), 0.0, "same", {},
-       "side of the shaft of each cart"},
-      number("carts.mass", "kg", P::Required, positive(), 0.0, "m'_B, one cart without rod"),
+      KeySpec{"carts.sides", KeyKind::Sides, "-", P::Conditional, anyFinite(), 0.0, "same", {},
+              "side of the shaft of each cart: same runs on the +x side, opposite on the −x "
+              "side; a list with one entry per cart, or one word for all (alternate: same, "
+              "opposite, same, ...)"}
+          .from(L2018 + " eq. (40) (same); " + L2007 + " eq. (6) (opposite)")
+          .when("all same"),
+      number("carts.mass", "kg", P::Required, positive(), 0.0, "m'_B, one cart without its rod")
+          .from(L2018 + " eq. (3)"),
       number("carts.geometry.a", "m", P::Optional, nonNegative(), 0.0,
-             "half distance between the two compacting rollers"),
+             "half distance between the two compacting rollers (they touch the mix at p ∓ a from B)")
+          .from(L2018 + " fig. 3, eq. (10)"),
       number("carts.geometry.b", "m", P::Conditional, nonNegative(), 0.0,
-             "half distance between the two guide rollers (> 0 with guide friction)"),
+             "half distance between the two guide rollers; the guide reactions divide by 2b")
+          .from(L2018 + " eq. (18)-(25)")
+          .when("0; required (> 0) when loads.guide_friction.coefficient > 0"),
       number("carts.geometry.p", "m", P::Optional, anyFinite(), 0.0,
-             "horizontal distance hinge B -> cart centre of mass / roller midpoint"),
+             "horizontal distance from the hinge B to the cart's centre of mass (= roller midpoint)")
+          .from(L2018 + " fig. 3"),
       number("carts.geometry.e", "m", P::Optional, anyFinite(), 0.0,
-             "depth of the compacting-roller contact below B"),
+             "depth of the compacting-roller contact below B (arm of the horizontal roller forces)")
+          .from(L2018 + " fig. 3"),
       number("carts.geometry.D", "m", P::Optional, nonNegative(), 0.0,
-             "compacting roller diameter (informational)"),
+             "compacting-roller diameter (informational)")
+          .from(L2018),
       number("carts.geometry.d", "m", P::Optional, nonNegative(), 0.0,
-             "guide roller diameter (friction moment arm d/2)"),
+             "guide-roller diameter; friction moment arm d/2")
+          .from(L2018 + " eq. (18)-(25)"),
       number("carts.geometry.com_height", "m", P::Optional, anyFinite(), 0.0,
-             "height of the cart's centre of mass above B"),
+             "height of the cart's centre of mass above B (the papers put it at B)"),
 
-      {"motor.enabled", KeyKind::Flag, "-", P::Optional, anyFinite(), 1.0, "", {},
-       "whether the motor torque is applied"},
+      KeySpec{"motor.enabled", KeyKind::Flag, "-", P::Optional, anyFinite(), 1.0, "", {},
+              "whether the motor torque is applied (false: the machine runs free from its initial "
+              "speed)"},
       number("motor.omega_sync", "rad/s", P::Required, positive(), 0.0,
-             "synchronous rotor speed omega0"),
-      number("motor.breakdown_torque", "N·m", P::Required, positive(), 0.0,
-             "breakdown (critical) torque M_kr at the rotor"),
+             "synchronous rotor speed ω0")
+          .from(L2018 + " eq. (37)"),
+      number("motor.breakdown_torque", "N·m", P::Conditional, positive(), 0.0,
+             "breakdown (critical) torque M_kr at the rotor, Kloss's formula")
+          .from(L2018 + " eq. (37); " + L2007 + " eq. (7)")
+          .when("required unless motor.catalogue is given (then M_k/M_n·P_n/ω_n of the catalogue)"),
       number("motor.critical_slip", "-", P::Conditional, between(0.0, false, 1.0, false), 0.0,
-             "critical slip s_kr (way 1 of 3)"),
+             "critical slip s_kr of the Kloss formula (way 1 of 3)")
+          .from(L2018 + " eq. (37)")
+          .when("give the critical slip exactly one way"),
       number("motor.omega_critical", "rad/s", P::Conditional, positive(), 0.0,
-             "critical rotor speed omega_kr, s_kr = 1 - omega_kr/omega0 (way 2 of 3)"),
+             "critical rotor speed ω_kr < ω0; s_kr = 1 − ω_kr/ω0 (way 2 of 3)")
+          .from(L2007 + " eq. (7)")
+          .when("give the critical slip exactly one way"),
       number("motor.omega_nominal", "rad/s", P::Conditional, positive(), 0.0,
-             "nominal rotor speed omega_n (way 3 of 3, with motor.overload_ratio)"),
+             "nominal rotor speed ω_n < ω0, s_n = 1 − ω_n/ω0 (way 3 of 3, with motor.overload_ratio)")
+          .from(L2018 + " eq. (37)")
+          .when("give the critical slip exactly one way"),
       number("motor.overload_ratio", "-", P::Conditional, between(1.0, false, kInf, false), 0.0,
-             "lambda = M_kr / M_n (way 3 of 3, with motor.omega_nominal)"),
+             "λ = M_kr/M_n (way 3 of 3, with motor.omega_nominal); s_kr = s_n·(λ + √(λ² − 1)) < 1")
+          .from(L2018 + " eq. (37)")
+          .when("with motor.omega_nominal"),
       number("motor.rotor_inertia", "kg·m²", P::Required, positive(), 0.0,
-             "rotor inertia J_p"),
+             "rotor inertia J_p")
+          .from(L2018 + " eq. (1)"),
+      choice("motor.model", P::Optional, {"kloss", "kloss_dynamic", "circuit", "park"}, "kloss",
+             "law of the motor torque: kloss, the static Kloss formula; kloss_dynamic, the Kloss torque "
+             "lagging by T_e; circuit, the steady-state equivalent circuit (single or double cage); "
+             "park, the space-phasor machine with its flux linkages as states (motor.md)")
+          .from(L2018 + " eq. (37) (kloss); Klyuchev (1985) (kloss_dynamic); Pedra (2008) fig. 1 "
+                "(circuit); Krause, Wasynczuk, Sudhoff, ch. 6 (park)"),
+      number("motor.torque_time_constant", "s", P::Conditional, positive(), 0.0,
+             "T_e of the dynamic Kloss characteristic T_e·dM/dt + M = M_static")
+          .from("Klyuchev (1985)")
+          .when("1/(2π·f_n·s_kr)"),
+      number("motor.voltage", "V", P::Conditional, positive(), 0.0,
+             "U_n, rated line-to-line RMS voltage")
+          .when("required for motor.model circuit and park, and with motor.circuit or motor.catalogue"),
+      number("motor.frequency", "Hz", P::Optional, positive(), 50.0,
+             "f_n, rated supply frequency"),
+      choice("motor.connection", P::Optional, {"star", "delta"}, "star",
+             "stator winding connection at the rated voltage; the circuit's values are per phase of "
+             "the equivalent star either way, delta allows a star-delta start"),
+      integer("motor.pole_pairs", P::Conditional, between(1.0, true, 64.0, true), 0.0,
+              "p, pole pairs; ω0 must equal 2π·f_n/p where the machine's data are used")
+          .when("round(2π·f_n/ω0)"),
+      number("motor.circuit.R_s", "Ω", P::Conditional, nonNegative(), 0.0,
+             "stator resistance per phase of the equivalent star")
+          .from("Pedra (2008) fig. 1")
+          .when("the five running-cage values together, or none"),
+      number("motor.circuit.L_sigma_s", "H", P::Conditional, positive(), 0.0,
+             "stator leakage inductance per phase of the equivalent star")
+          .from("Pedra (2008) fig. 1")
+          .when("the five running-cage values together, or none"),
+      number("motor.circuit.L_m", "H", P::Conditional, positive(), 0.0,
+             "magnetizing inductance per phase of the equivalent star")
+          .from("Pedra (2008) fig. 1")
+          .when("the five running-cage values together, or none"),
+      number("motor.circuit.R_r", "Ω", P::Conditional, positive(), 0.0,
+             "rotor (first cage) resistance referred to the stator, per phase")
+          .from("Pedra (2008) fig. 1")
+          .when("the five running-cage values together, or none"),
+      number("motor.circuit.L_sigma_r", "H", P::Conditional, positive(), 0.0,
+             "rotor (first cage) leakage inductance referred to the stator, per phase")
+          .from("Pedra (2008) fig. 1")
+          .when("the five running-cage values together, or none"),
+      number("motor.circuit.R_r2", "Ω", P::Conditional, positive(), 0.0,
+             "second rotor cage's resistance (double cage), referred to the stator, per phase")
+          .from("Pedra (2008) fig. 1")
+          .when("with motor.circuit.L_sigma_r2, or neither (single cage)"),
+      number("motor.circuit.L_sigma_r2", "H", P::Conditional, positive(), 0.0,
+             "second rotor cage's leakage inductance (double cage), referred to the stator, per phase")
+          .from("Pedra (2008) fig. 1")
+          .when("with motor.circuit.R_r2, or neither (single cage)"),
+      number("motor.catalogue.power", "W", P::Conditional, positive(), 0.0, "P_n, rated shaft power")
+          .from("the motor's data sheet")
+          .when("the eight catalogue values together, or none"),
+      number("motor.catalogue.omega_nominal", "rad/s", P::Conditional, positive(), 0.0,
+             "ω_n, rated rotor speed (< ω0)")
+          .from("the motor's data sheet")
+          .when("the eight catalogue values together, or none"),
+      number("motor.catalogue.current", "A", P::Conditional, positive(), 0.0,
+             "I_n, rated line current at motor.voltage")
+          .from("the motor's data sheet")
+          .when("the eight catalogue values together, or none"),
+      number("motor.catalogue.power_factor", "-", P::Conditional, between(0.0, false, 1.0, false), 0.0,
+             "cos φ_n at the rated point")
+          .from("the motor's data sheet")
+          .when("the eight catalogue values together, or none"),
+      number("motor.catalogue.efficiency", "-", P::Conditional, between(0.0, false, 1.0, false), 0.0,
+             "η_n at the rated point")
+          .from("the motor's data sheet")
+          .when("the eight catalogue values together, or none"),
+      number("motor.catalogue.starting_torque_ratio", "-", P::Conditional, positive(), 0.0,
+             "M_s/M_n, torque at standstill over the rated torque")
+          .from("the motor's data sheet")
+          .when("the eight catalogue values together, or none"),
+      number("motor.catalogue.breakdown_torque_ratio", "-", P::Conditional,
+             between(1.0, false, kInf, false), 0.0, "M_k/M_n, largest torque over the rated torque")
+          .from("the motor's data sheet")
+          .when("the eight catalogue values together, or none"),
+      number("motor.catalogue.starting_current_ratio", "-", P::Conditional,
+             between(1.0, false, kInf, false), 0.0, "I_s/I_n, current at standstill over the rated current")
+          .from("the motor's data sheet")
+          .when("the eight catalogue values together, or none"),
+      integer("motor.catalogue.cages", P::Optional, between(1.0, true, 2.0, true), 2.0,
+              "rotor cages of the circuit fitted to the catalogue (2 honours the starting torque)")
+          .from("Pedra (2008)"),
 
-      number("reducer.ratio", "-", P::Required, positive(), 0.0, "u = omega_rotor / omega_crank"),
+      number("reducer.ratio", "-", P::Required, positive(), 0.0, "u = ω_rotor/ω_crank")
+          .from(L2018 + " eq. (1), (37)"),
       number("reducer.efficiency", "-", P::Required, between(0.0, false, 1.0, true), 0.0,
-             "efficiency eta"),
+             "η, multiplies the motor torque at the crank")
+          .from(L2018 + " eq. (37); " + L2007 + " eq. (8)"),
       number("reducer.inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
-             "J_red referred to the motor shaft"),
+             "J_red referred to the motor shaft")
+          .from(L2007 + " (I_o = I_motor + I_m + I_red)"),
       number("reducer.delta", "-", P::Optional, positive(), 1.0,
-             "delta, Loveikin, Pochka, Romasevych (2018) eq. (1) factor on the motor-side inertia"),
+             "δ, factor on the motor-side inertia (J_p + J_m + J_red)·δ·u²")
+          .from(L2018 + " eq. (1)"),
 
-      choice("coupling.type", P::Required, {"elastic", "rigid"}, "", "coupling model"),
+      choice("coupling.type", P::Required, {"elastic", "rigid"}, "",
+             "elastic: two-mass model with a torsional spring-damper; rigid: one mass")
+          .from(L2018 + " eq. (58) (elastic); " + L2007 + ", " + EB + " (rigid)"),
       number("coupling.stiffness", "N·m/rad", P::Conditional, positive(), 0.0,
-             "c reduced to the crank axis (required when elastic)"),
+             "c, reduced to the crank axis (ignored when rigid)")
+          .from(L2018 + " eq. (58)")
+          .when("required when coupling.type is elastic"),
       number("coupling.damping", "N·m·s/rad", P::Optional, nonNegative(), 0.0,
-             "k reduced to the crank axis"),
+             "k, reduced to the crank axis (ignored when rigid)")
+          .from(L2018 + " eq. (58), Table 1"),
       number("coupling.inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
-             "J_m, coupling hub on the motor shaft"),
+             "J_m, coupling hub on the motor shaft")
+          .from(L2018 + " eq. (1)"),
 
       number("flywheel.inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
-             "flywheel about its own shaft; 0 = none"),
+             "flywheel about its own shaft; 0 = none")
+          .from(EB + " Table 1"),
       choice("flywheel.location", P::Optional, {"crankshaft", "motor_shaft"}, "crankshaft",
-             "shaft carrying the flywheel"),
+             "shaft carrying the flywheel (on the motor shaft it counts u² times)"),
 
       number("loads.roller_force_front", "N", P::Optional, nonNegative(), 0.0,
-             "F_j1, horizontal force on the front compacting roller"),
+             "F_j1, horizontal force on the front compacting roller (magnitude)")
+          .from(L2018 + " fig. 3, eq. (10)"),
       number("loads.roller_force_rear", "N", P::Optional, nonNegative(), 0.0,
-             "F_j2, horizontal force on the rear compacting roller"),
+             "F_j2, horizontal force on the rear compacting roller (magnitude)")
+          .from(L2018 + " fig. 3, eq. (10)"),
       number("loads.roller_normal_front", "N", P::Optional, nonNegative(), 0.0,
-             "R_j1, upward reaction of the mix on the front roller"),
+             "R_j1, upward reaction of the mix on the front roller")
+          .from(L2018 + " fig. 3, eq. (10)"),
       number("loads.roller_normal_rear", "N", P::Optional, nonNegative(), 0.0,
-             "R_j2, upward reaction of the mix on the rear roller"),
+             "R_j2, upward reaction of the mix on the rear roller")
+          .from(L2018 + " fig. 3, eq. (10)"),
       choice("loads.roller_force_direction", P::Optional, {"opposes_velocity", "as_printed"},
-             "opposes_velocity", "direction law of the horizontal roller forces"),
+             "opposes_velocity",
+             "opposes_velocity: the roller forces resist the cart's motion (a rolling "
+             "resistance); as_printed: they keep the one direction of the figure")
+          .from(L2007 + " eq. (5) (opposes_velocity); " + L2018 + " fig. 3 (as_printed)"),
+      number("loads.rolling_resistance", "-", P::Optional, between(0.0, true, 1.0, false), 0.0,
+             "μ_r, rolling resistance of the compacting rollers: a force μ_r·(R_j1 + R_j2) against the "
+             "cart's velocity, added to the roller forces in either direction law; the energy "
+             "compaction dissipates (loads.md)"),
       number("loads.guide_friction.coefficient", "-", P::Optional,
-             between(0.0, true, 1.0, false), 0.0, "f, reduced guide-roller friction coefficient"),
+             between(0.0, true, 1.0, false), 0.0, "f, reduced guide-roller friction coefficient")
+          .from(L2018 + " eq. (14)-(25)"),
       number("loads.guide_friction.normal_force_lag", "s", P::Optional, between(0.0, false, 1.0, true),
-             2e-3, "tau_N, time constant of the friction normal force following the guide reaction (multibody)"),
+             2e-3,
+             "τ_N: the multibody model's friction uses a normal force that follows the actual guide "
+             "reaction with this time constant (dN̂/dt = (N − N̂)/τ_N), because friction cannot "
+             "depend on the constraint reactions it helps determine"),
       number("loads.gravity", "m/s²", P::Optional, nonNegative(), 9.81,
              "g; 0 = no gravity"),
       number("loads.velocity_smoothing", "m/s", P::Optional, positive(), 1e-3,
-             "v_s in sign(v) ~ tanh(v/v_s)"),
+             "v_s: sign(v) is replaced by tanh(v/v_s) in the load and friction laws"),
 
       number("sizing.motor_nominal_torque", "N·m", P::Optional, positive(), 0.0,
-             "M_n, nominal motor torque at the rotor (else P_n/omega_n, else M_kr/lambda)"),
+             "M_n, nominal motor torque at the rotor, the rating of the heating check "
+             "(else P_n/ω_n, else M_kr/λ); at most one of this and sizing.motor_nominal_power"),
       number("sizing.motor_nominal_power", "W", P::Optional, positive(), 0.0,
-             "P_n, nominal motor shaft power; M_n = P_n/omega_n (needs motor.omega_nominal)"),
+             "P_n, nominal motor shaft power; M_n = P_n/ω_n (needs motor.omega_nominal)"),
       number("sizing.motor_efficiency", "-", P::Optional, between(0.0, false, 1.0, true), 0.0,
-             "eta_m, motor shaft power / power drawn from the line"),
+             "η_m, motor shaft power / power drawn from the line; without it the line power is "
+             "the air-gap power M·ω0 (rotor copper losses only)"),
+      number("sizing.starts_per_hour", "1/h", P::Optional, nonNegative(), 0.0,
+             "duty: starts of the motor per hour; the heating check adds each start's rotor heat to "
+             "the steady running (0: continuous running; the console then gives the starts per hour "
+             "the motor allows)"),
       number("sizing.target_delta", "-", P::Optional, positive(), 0.0,
-             "coefficient of unevenness delta the flywheel should bring the run to"),
+             "δ*, coefficient of unevenness the flywheel estimate should bring the run to")
+          .from(L2007 + " eq. (12) (δ)"),
       number("sizing.coupling_rated_torque", "N·m", P::Optional, positive(), 0.0,
-             "rated coupling torque, reduced to the crank axis"),
+             "rated coupling torque, reduced to the crank axis like coupling.stiffness"),
       number("sizing.bearing_rating.guide_roller", "N", P::Optional, positive(), 0.0,
-             "C, basic dynamic load rating of one guide-roller bearing"),
+             "C, basic dynamic load rating of one guide-roller bearing")
+          .from("ISO 281 (L10 = (C/P)³·10⁶ revolutions)"),
       number("sizing.bearing_rating.rod_end", "N", P::Optional, positive(), 0.0,
-             "C, basic dynamic load rating of the rod's small-end bearing (cart hinge)"),
+             "C of the rod's small-end bearing at the cart hinge B")
+          .from("ISO 281"),
       number("sizing.bearing_rating.crank_pin", "N", P::Optional, positive(), 0.0,
-             "C, basic dynamic load rating of the rod's big-end bearing on the crank pin"),
+             "C of the rod's big-end bearing on the crank pin")
+          .from("ISO 281"),
       number("sizing.bearing_rating.main_bearing", "N", P::Optional, positive(), 0.0,
-             "C, basic dynamic load rating of the crankshaft main bearing"),
+             "C of the crankshaft main bearing (one bearing carrying the whole bearing force)")
+          .from("ISO 281"),
 
       choice("reduced.kinematics", P::Optional, {"exact", "truncated"}, "exact",
-             "slider-crank kinematics of the reduced model"),
+             "slider-crank kinematics of the reduced model: exact, or the truncated series")
+          .from(L2018 + " eq. (40)-(47) (exact), (52)-(57) (truncated)"),
       choice("reduced.integrator", P::Optional, {"cvode", "baranov"}, "cvode",
-             "integrator of the reduced model"),
+             "integrator of the reduced model: cvode (adaptive) or the papers' fixed step in φ")
+          .from(L2007 + " eq. (4), (10), (11) (Baranov's scheme)"),
       number("reduced.baranov_step_deg", "deg", P::Optional, between(0.0, false, 10.0, true),
-             1.0, "crank-angle step of the Baranov scheme"),
+             1.0, "crank-angle step of the Baranov scheme")
+          .from(L2007 + " eq. (4)"),
   };
+}
+
+// One sentence per map of the schema, for the reference's section headings.
+const std::vector<std::pair<std::string, std::string>>& mapDescriptions() {
+  static const std::vector<std::pair<std::string, std::string>> d = {
+      {"simulation", "How the run is integrated and what it writes."},
+      {"initial", "The state at t = 0."},
+      {"crank", "The crankshaft and its cranks."},
+      {"rods", "The connecting rods, crank pin to cart hinge B."},
+      {"drive", "Crank-slider or cam drive of the carts."},
+      {"cam", "The cam drive of Loveikin and Pochka (cam drive paper), used when drive.type is cam."},
+      {"carts", "The carts, all alike."},
+      {"carts.geometry",
+       "Measured from the rod hinge B in the cart's own direction (+x' away from the shaft; "
+       "mirrored for an opposite cart), Loveikin, Pochka, Romasevych (2018) fig. 3."},
+      {"motor",
+       "The induction motor: Kloss's formula of the papers, or the law motor.model names (motor.md); "
+       "Kloss's critical slip is given exactly one of three ways."},
+      {"motor.circuit",
+       "The equivalent circuit per phase of the equivalent star (circuit and park models); left out, "
+       "it is fitted to motor.catalogue."},
+      {"motor.catalogue", "The motor's data sheet at the rated supply, to which the circuit is fitted."},
+      {"reducer", "The reducer between motor and crankshaft."},
+      {"coupling", "The coupling between motor side and crank side, reduced to the crank axis."},
+      {"flywheel", "An optional flywheel."},
+      {"loads", "Technological loads on the compacting rollers, guide friction and gravity."},
+      {"loads.guide_friction", "Friction of the guide rollers from the dynamic guide reactions."},
+      {"sizing",
+       "Ratings and targets the run is compared with (the drive-sizing answers); they change "
+       "nothing in the simulation, and a figure whose rating is left out is null (n/a)."},
+      {"sizing.bearing_rating", "Basic dynamic load ratings C of the joints' bearings."},
+      {"reduced", "Settings of the papers' reduced-mass model only."},
+  };
+  return d;
 }
 
 std::string joinChoices(const std::vector<std::string>& words) {
@@ -270,6 +486,48 @@ std::string describeExpected(const KeySpec& spec) {
              "same, opposite, alternate";
   }
   return "?";
+}
+
+std::string sceneMapDescription(const std::string& map_path) {
+  for (const auto& [path, text] : mapDescriptions())
+    if (path == map_path) return text;
+  return "";
+}
+
+std::string describeAllowed(const KeySpec& spec) {
+  switch (spec.kind) {
+    case KeyKind::Number: {
+      const std::string range = describeRange(spec.range);
+      return range.empty() ? "any finite number" : range;
+    }
+    case KeyKind::Integer: {
+      const std::string range = describeRange(spec.range);
+      return range.empty() ? "an integer" : "an integer " + range;
+    }
+    case KeyKind::Text: return "text";
+    case KeyKind::Choice: return "one of: " + joinChoices(spec.choices);
+    case KeyKind::Flag: return "true or false";
+    case KeyKind::Sides: return "a list of same/opposite (one per cart), or same, opposite, alternate";
+  }
+  return "?";
+}
+
+std::string defaultText(const KeySpec& spec) {
+  if (spec.presence != Presence::Optional) return "";
+  switch (spec.kind) {
+    case KeyKind::Number:
+    case KeyKind::Integer: return formatNumber(spec.default_number);
+    case KeyKind::Flag: return spec.default_number != 0 ? "true" : "false";
+    default: return spec.default_text;
+  }
+}
+
+void requireSceneKey(const std::string& what, const std::string& key) {
+  if (findSceneKey(key)) return;
+  std::vector<std::string> keys;
+  for (const KeySpec& k : sceneSchema()) keys.push_back(k.path);
+  throw std::invalid_argument(what + ": expected a key of the scene schema (docs/scene-reference.md), got an "
+                              "unknown key" + didYouMean(key, keys));
 }
 
 std::string formatNumber(double v) {

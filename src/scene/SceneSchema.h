@@ -1,9 +1,11 @@
 // The scene-file schema as data: every key path a scene file may contain, its type, unit,
 // whether it is required, its default and its allowed range.
 //
-// One table serves three readers, so they cannot drift apart: the parser rejects any key not in
+// One table serves four readers, so they cannot drift apart: the parser rejects any key not in
 // it (a typo is never silently ignored), the --set override checks its key path against it
-// before touching the tree, and the tests check that model/README.md documents every key.
+// before touching the tree, the report and the Python interface show it beside the values, and
+// the scene file reference (docs/scene-reference.md, `rollerdyn schema --markdown`,
+// SceneReference.h) is generated from it; a test fails when the committed reference differs.
 // Rules that couple several keys (l > r, one way to give the critical slip, b > 0 with guide
 // friction, ...) are not expressible per key and live in SceneParser.cpp.
 #pragma once
@@ -45,8 +47,25 @@ struct KeySpec {
   double default_number;             // Optional Number / Integer / Flag (0 or 1)
   std::string default_text;          // Optional Text / Choice
   std::vector<std::string> choices;  // Choice only
-  std::string meaning;               // one line, for messages and docs
+  std::string meaning;               // one or two sentences, for messages, the report and the docs
+  std::string source{};              // where the quantity is defined: paper, equation, figure
+                                     // ("" for numerical settings of rollerdyn itself)
+  std::string condition{};           // Conditional keys: when required, or how the default follows
+                                     // from other keys (e.g. "m·l²/12")
+
+  // Builders for the table: number(...).from("Loveikin and Pochka (2007) eq. (7)").
+  KeySpec from(std::string paper) && {
+    source = std::move(paper);
+    return std::move(*this);
+  }
+  KeySpec when(std::string text) && {
+    condition = std::move(text);
+    return std::move(*this);
+  }
 };
+
+// One sentence about a map of the schema (e.g. "carts.geometry"), for the docs; "" if none.
+std::string sceneMapDescription(const std::string& map_path);
 
 // Every leaf key, in documentation order.
 const std::vector<KeySpec>& sceneSchema();
@@ -64,6 +83,19 @@ std::vector<std::string> sceneChildKeys(const std::string& map_path);
 // The expected-clause for a single value of `spec`, e.g. "a number > 0 [m]",
 // "an integer in [1, 1000]", "one of: elastic, rigid".
 std::string describeExpected(const KeySpec& spec);
+
+// What a value may be, without the unit: "> 0", "in (0, 1]", "any finite number",
+// "an integer in [1, 1000]", "one of: elastic, rigid", "true or false", "text".
+std::string describeAllowed(const KeySpec& spec);
+
+// The default of an Optional key as text ("1e-06", "true", "crankshaft"); "" for other keys.
+std::string defaultText(const KeySpec& spec);
+
+// Throws std::invalid_argument "<what>: expected a key of the scene schema
+// (docs/scene-reference.md), got an unknown key (did you mean '...'?)" unless `key` is a leaf key
+// of the schema (a sweep or optimization parameter): the same hint as --set gives, before
+// anything runs.
+void requireSceneKey(const std::string& what, const std::string& key);
 
 // Compact, round-trippable text of a number for messages ("0.2", "1e-06", "200000").
 std::string formatNumber(double v);

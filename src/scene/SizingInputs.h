@@ -13,6 +13,8 @@ struct SizingInputs {
                                     //                                           sizing.motor_efficiency
   double motor_omega_nominal = 0;   // ω_n [rad/s], copied from motor.omega_nominal when given
   double motor_overload_ratio = 0;  // λ = M_kr/M_n [-], copied from motor.overload_ratio when given
+  double starts_per_hour = 0;       // duty: motor starts per hour [1/h]; 0 = continuous running (S1)
+                                    //                                           sizing.starts_per_hour
   double target_delta = 0;          // δ the flywheel should bring the run to [-]  sizing.target_delta
   double coupling_rated_torque = 0; // rated torque of the coupling, reduced to the crank axis [N·m]
                                     //                                           sizing.coupling_rated_torque

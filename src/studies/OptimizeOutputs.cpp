@@ -18,7 +18,7 @@ nlohmann::json evaluationJson(const OptimizeOptions& o, const OptimizeEvaluation
   for (const std::string& m : sweepNumericMetrics()) metrics[m] = jsonNumber(e.point.metric(m));
   for (std::size_t j = 0; j < o.constraints.size(); ++j)
     cons.push_back({{"constraint", o.constraints[j].text},
-                    {"value", jsonNumber(e.point.metric(o.constraints[j].metric))},
+                    {"value", jsonNumber(e.constraint_metrics[j])},
                     {"holds", e.run_ok && e.constraint_values[j] <= 0.0}});
   return {{"parameters", at},        {"objective", jsonNumber(e.objective)}, {"metrics", metrics},
           {"constraints", cons},     {"constraints_hold", e.constraints_hold}, {"usable_run", e.run_ok},
@@ -28,10 +28,91 @@ nlohmann::json evaluationJson(const OptimizeOptions& o, const OptimizeEvaluation
 
 }  // namespace
 
+nlohmann::json optimizeJson(const OptimizeOptions& o, const OptimizeResult& r) {
+  nlohmann::json j;
+  j["scene"] = o.scene_path;
+  j["model"] = o.model;
+  j["base_overrides"] = o.base_overrides;
+  j["minimize"] = o.minimize;
+  j["constraints"] = nlohmann::json::array();
+  for (const OptimizeConstraint& c : o.constraints) j["constraints"].push_back(c.text);
+  j["parameters"] = nlohmann::json::array();
+  for (const SampleRange& p : o.params) j["parameters"].push_back({{"key", p.key}, {"lower", p.lower}, {"upper", p.upper}});
+  j["method"] = r.method;
+  j["scope"] = r.scope;
+  j["evaluations"] = r.history.size();
+  j["evaluations_requested"] = r.requests;
+  j["max_evals"] = o.max_evals;
+  j["stop_reason"] = r.stop_reason;
+  j["parallel"] = r.method.rfind("multistart", 0) == 0
+                      ? "multistart: one local search per thread, side by side"
+                      : "sequential: NLopt asks for one design at a time; each evaluation is one run on one thread";
+  j["found"] = r.found;
+  j["constraints_hold"] = r.found;
+  j["optimum"] = r.found ? evaluationJson(o, r.history[r.best]) : nlohmann::json(nullptr);
+  if (!r.found)
+    j["note"] = "no evaluated design is usable (complete, steady, turning) and keeps every constraint: widen the "
+                "ranges, raise --max-evals, or try --method direct-l";
+  return j;
+}
+
+std::vector<StudyColumn> optimizeHistoryTable(const OptimizeOptions& o, const OptimizeResult& r) {
+  std::vector<StudyColumn> t;
+  auto numeric = [&t](const std::string& name, const std::string& unit = "") {
+    StudyColumn c;
+    c.name = name;
+    c.unit = unit;
+    t.push_back(c);
+    return t.size() - 1;
+  };
+  auto text = [&t](const std::string& name) {
+    StudyColumn c;
+    c.name = name;
+    c.is_text = true;
+    t.push_back(c);
+    return t.size() - 1;
+  };
+  const std::size_t evaluation = numeric("evaluation");
+  const std::size_t params = t.size();
+  for (const SampleRange& p : o.params) {
+    const std::size_t i = numeric(p.key);
+    t[i].parameter = true;
+  }
+  const std::size_t objective = numeric("objective");
+  const std::size_t constraints = t.size();
+  for (const OptimizeConstraint& c : o.constraints) numeric(c.text);
+  const std::size_t usable = numeric("usable_run"), hold = numeric("constraints_hold"), best_col = numeric("best_so_far");
+  const std::size_t metrics = t.size();
+  for (const std::string& m : sweepNumericMetrics()) numeric(m);
+  const std::size_t status = text("status"), reason = text("reason"), cpu = numeric("cpu_seconds");
+  double best = NAN;
+  for (std::size_t i = 0; i < r.history.size(); ++i) {
+    const OptimizeEvaluation& e = r.history[i];
+    if (e.feasible() && !(e.objective >= best)) best = e.objective;
+    t[evaluation].numbers.push_back(double(i + 1));
+    for (std::size_t k = 0; k < o.params.size(); ++k) {
+      t[params + k].texts.push_back(e.texts[k]);
+      t[params + k].numbers.push_back(e.x[k]);
+    }
+    t[objective].numbers.push_back(e.objective);
+    for (std::size_t j = 0; j < o.constraints.size(); ++j) t[constraints + j].numbers.push_back(e.constraint_metrics[j]);
+    t[usable].numbers.push_back(e.run_ok ? 1 : 0);
+    t[hold].numbers.push_back(e.constraints_hold ? 1 : 0);
+    t[best_col].numbers.push_back(best);
+    const auto& names = sweepNumericMetrics();
+    for (std::size_t m = 0; m < names.size(); ++m) t[metrics + m].numbers.push_back(e.point.metric(names[m]));
+    t[status].texts.push_back(e.point.status);
+    t[reason].texts.push_back(e.reason);
+    t[cpu].numbers.push_back(e.point.cpu_seconds);
+  }
+  return t;
+}
+
 std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const OptimizeResult& r,
-                                              const std::string& out_dir) {
+                                              const std::string& out_dir, std::string* plot_note_out) {
   std::vector<std::string> files;
   // --- history.csv: one row per distinct evaluation, in the order they were made ---
+  const std::vector<StudyColumn> table = optimizeHistoryTable(o, r);
   std::ostringstream csv;
   csv << "evaluation";
   for (const SampleRange& p : o.params) csv << ',' << csvText(p.key);
@@ -40,20 +121,19 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
   csv << ",usable_run,constraints_hold,best_so_far";
   for (const std::string& m : sweepNumericMetrics()) csv << ',' << m;
   csv << ",status,reason,cpu_seconds\n";
-  double best = NAN;
   std::vector<double> best_curve;
-  for (std::size_t i = 0; i < r.history.size(); ++i) {
-    const OptimizeEvaluation& e = r.history[i];
-    if (e.feasible() && !(e.objective >= best)) best = e.objective;
-    best_curve.push_back(best);
-    csv << i + 1;
-    for (const std::string& t : e.texts) csv << ',' << csvText(t);
-    csv << ',' << csvNumber(e.objective);
-    for (const OptimizeConstraint& c : o.constraints) csv << ',' << csvNumber(e.point.metric(c.metric));
-    csv << ',' << int(e.run_ok) << ',' << int(e.constraints_hold) << ',' << csvNumber(best);
-    for (const std::string& m : sweepNumericMetrics()) csv << ',' << csvNumber(e.point.metric(m));
-    csv << ',' << csvText(e.point.status) << ',' << csvText(e.reason) << ',' << csvNumber(e.point.cpu_seconds) << '\n';
-  }
+  for (std::size_t i = 0; i < r.history.size(); ++i)
+    for (std::size_t c = 0; c < table.size(); ++c) {
+      const StudyColumn& col = table[c];
+      if (col.name == "best_so_far") best_curve.push_back(col.numbers[i]);
+      if (col.name == "evaluation" || col.name == "usable_run" || col.name == "constraints_hold")
+        csv << static_cast<long>(col.numbers[i]);
+      else if (col.parameter || col.is_text)
+        csv << csvText(col.texts[i]);
+      else
+        csv << csvNumber(col.numbers[i]);
+      csv << (c + 1 < table.size() ? "," : "\n");
+    }
   writeFileAtomic(out_dir + "/history.csv", csv.str());
   files.push_back(out_dir + "/history.csv");
 
@@ -90,13 +170,23 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
       spec.series = {all, bad, line};
       renderPlot(spec, out_dir + "/convergence");
       plots.push_back(out_dir + "/convergence.png");
-      if (o.params.size() <= 2 && r.found) {
+      // One parameter that is itself the minimised quantity: plot the first constraint's metric
+      // against it instead (the objective against itself is a diagonal line and says nothing).
+      const bool self = o.params.size() == 1 && o.params[0].key == o.minimize;
+      if (self && o.constraints.empty())
+        plot_note = "no designs figure: the minimised quantity is the only parameter and there is no constraint "
+                    "to plot against it";
+      if (o.params.size() <= 2 && r.found && !(self && o.constraints.empty())) {
         // The evaluated designs and the optimum: objective against the parameter (one), or the
         // designs in the plane of the two parameters.
         PlotSpec d;
         d.title = escapeUnderscores("evaluated designs and the optimum (" + r.method + ")");
         d.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
-        d.ylabel = escapeUnderscores(sweepParamLabel(o.params.size() == 1 ? o.minimize : o.params[1].key));
+        const std::string y_name = o.params.size() == 2 ? o.params[1].key : self ? o.constraints[0].metric : o.minimize;
+        auto yOf = [&](const OptimizeEvaluation& e) {
+          return o.params.size() == 2 ? e.x[1] : self ? e.constraint_metrics[0] : e.objective;
+        };
+        d.ylabel = escapeUnderscores(sweepParamLabel(y_name));
         d.preamble = "set key below";
         PlotSeries ok, viol, opt;
         ok.title = "constraints hold";
@@ -110,11 +200,11 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
           if (o.params.size() == 1 && !e.run_ok) continue;
           PlotSeries& s = e.feasible() ? ok : viol;
           s.x.push_back(e.x[0]);
-          s.y.push_back(o.params.size() == 1 ? e.objective : e.x[1]);
+          s.y.push_back(yOf(e));
         }
         const OptimizeEvaluation& b = r.history[r.best];
         opt.x.push_back(b.x[0]);
-        opt.y.push_back(o.params.size() == 1 ? b.objective : b.x[1]);
+        opt.y.push_back(yOf(b));
         d.series = {ok, viol, opt};
         renderPlot(d, out_dir + "/designs");
         plots.push_back(out_dir + "/designs.png");
@@ -126,31 +216,10 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
   for (const std::string& p : plots) files.push_back(p);
 
   // --- optimize.json ---
-  nlohmann::json j;
-  j["scene"] = o.scene_path;
-  j["model"] = o.model;
-  j["base_overrides"] = o.base_overrides;
-  j["minimize"] = o.minimize;
-  j["constraints"] = nlohmann::json::array();
-  for (const OptimizeConstraint& c : o.constraints) j["constraints"].push_back(c.text);
-  j["parameters"] = nlohmann::json::array();
-  for (const SampleRange& p : o.params) j["parameters"].push_back({{"key", p.key}, {"lower", p.lower}, {"upper", p.upper}});
-  j["method"] = r.method;
-  j["evaluations"] = r.history.size();
-  j["evaluations_requested"] = r.requests;
-  j["max_evals"] = o.max_evals;
-  j["stop_reason"] = r.stop_reason;
-  j["parallel"] = r.method.rfind("multistart", 0) == 0
-                      ? "multistart: one local search per thread, side by side"
-                      : "sequential: NLopt asks for one design at a time; each evaluation is one run on one thread";
-  j["found"] = r.found;
-  j["constraints_hold"] = r.found;
-  j["optimum"] = r.found ? evaluationJson(o, r.history[r.best]) : nlohmann::json(nullptr);
-  if (!r.found)
-    j["note"] = "no evaluated design is usable (complete, steady, turning) and keeps every constraint: widen the "
-                "ranges, raise --max-evals, or try --method direct-l";
+  nlohmann::json j = optimizeJson(o, r);
   j["plots"] = plots;
   j["plot_note"] = plot_note;
+  if (plot_note_out) *plot_note_out = plot_note;
   writeFileAtomic(out_dir + "/optimize.json", j.dump(2) + "\n");
   files.push_back(out_dir + "/optimize.json");
   return files;

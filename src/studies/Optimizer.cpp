@@ -1,6 +1,7 @@
 #include "studies/Optimizer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -11,6 +12,8 @@
 
 #include <nlopt.hpp>
 
+#include "scene/DidYouMean.h"
+#include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
 
 namespace rollerdyn {
@@ -62,6 +65,7 @@ class Search {
  public:
   Search(const OptimizeOptions& o, OptimizeResult& r) : o_(o), r_(r) {
     sweep_.scene_path = o.scene_path;
+    sweep_.scene_input = o.scene_input;
     sweep_.base_overrides = o.base_overrides;
     sweep_.model = o.model;
     sweep_.interrupt = o.interrupt;
@@ -114,19 +118,32 @@ class Search {
   // violating design never looks best; with COBYLA the constraints carry the violation instead.
   double seen(const OptimizeEvaluation& e, bool constraints_by_method) {
     std::lock_guard<std::mutex> lock(mu_);
-    const double span = std::max({hi_ - lo_, 1e-3 * std::abs(hi_), 1e-12});
-    const double top = std::isfinite(hi_) ? hi_ : 1.0;
-    if (!e.run_ok) return top + 10.0 * span;
-    if (constraints_by_method || e.constraints_hold) return e.objective;
-    double violation = 0;
-    for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
-      violation += std::max(0.0, e.constraint_values[j]) / std::max(std::abs(o_.constraints[j].bound), 1e-12);
-    return top + span * (1.0 + violation);
+    // Before the first usable run there is no scale yet (hi_ = -inf, lo_ = +inf): a fixed, finite
+    // stand-in (the upper bound of the minimised parameter, or 1), never inf or NaN, which
+    // NLopt's models would turn into NaN steps.
+    const bool scaled = std::isfinite(hi_) && std::isfinite(lo_);
+    double fallback = 1.0;
+    for (const SampleRange& p : o_.params)
+      if (p.key == o_.minimize) fallback = p.upper;
+    const double top = scaled ? hi_ : fallback;
+    const double span = scaled ? std::max({hi_ - lo_, 1e-3 * std::abs(hi_), 1e-12}) : std::max(1.0, std::abs(fallback));
+    double value = top + 10.0 * span;
+    if (e.run_ok && (constraints_by_method || e.constraints_hold)) {
+      value = e.objective;
+    } else if (e.run_ok) {
+      double violation = 0;
+      for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
+        violation += std::max(0.0, e.constraint_values[j]) / std::max(std::abs(o_.constraints[j].bound), 1e-12);
+      value = top + span * (1.0 + std::min(violation, 1e6));
+    }
+    value = std::isfinite(value) ? value : top + 10.0 * span;
+    r_.values_handed.push_back(value);
+    return value;
   }
 
   // Constraint j as COBYLA sees it (<= 0 holds); a design that did not run usably violates all.
   double constraintSeen(const OptimizeEvaluation& e, std::size_t j) const {
-    if (!e.run_ok) return std::abs(o_.constraints[j].bound) + 1.0;
+    if (!e.run_ok || !std::isfinite(e.constraint_values[j])) return std::abs(o_.constraints[j].bound) + 1.0;
     return e.constraint_values[j];
   }
 
@@ -137,28 +154,38 @@ class Search {
  private:
   void judge(OptimizeEvaluation& e) const {
     const SweepPoint& p = e.point;
-    e.objective = kNaN;
-    for (std::size_t k = 0; k < o_.params.size(); ++k)
-      if (o_.params[k].key == o_.minimize) e.objective = e.x[k];
-    if (!std::isfinite(e.objective)) e.objective = p.metric(o_.minimize);
-    for (const OptimizeConstraint& c : o_.constraints) {
-      const double m = p.metric(c.metric);
-      e.constraint_values.push_back(c.upper ? m - c.bound : c.bound - m);
-    }
     const double omega_min = p.metric("omega_crank_min");
     if (!p.complete) {
       e.reason = "did not complete: " + p.status;
     } else if (!p.steady) {
-      e.reason = "no steady state by t_end";
+      e.reason = "no steady state by t_end (a longer simulation.t_end, or a start at speed with "
+                 "initial.crank_speed, may settle it)";
     } else if (!(omega_min > 0)) {
       std::ostringstream os;
       os << "the crank does not turn steadily (rocks or stops): omega_crank_min = " << omega_min << " rad/s";
       e.reason = os.str();
-    } else if (!std::isfinite(e.objective)) {
-      e.reason = o_.minimize + " not available";
+    }
+    const bool usable = e.reason.empty();  // the caller's functions see usable runs only
+    e.objective = kNaN;
+    if (o_.objective) {
+      if (usable) e.objective = o_.objective(e);
     } else {
-      for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
-        if (!std::isfinite(e.constraint_values[j])) e.reason = o_.constraints[j].metric + " not available";
+      for (std::size_t k = 0; k < o_.params.size(); ++k)
+        if (o_.params[k].key == o_.minimize) e.objective = e.x[k];
+      if (!std::isfinite(e.objective)) e.objective = p.metric(o_.minimize);
+    }
+    for (const OptimizeConstraint& c : o_.constraints) {
+      const double m = c.value ? (usable ? c.value(e) : kNaN) : p.metric(c.metric);
+      e.constraint_metrics.push_back(m);
+      e.constraint_values.push_back(c.upper ? m - c.bound : c.bound - m);
+    }
+    if (usable) {
+      if (!std::isfinite(e.objective)) {
+        e.reason = o_.minimize + " not available";
+      } else {
+        for (std::size_t j = 0; j < e.constraint_values.size(); ++j)
+          if (!std::isfinite(e.constraint_values[j])) e.reason = o_.constraints[j].metric + " not available";
+      }
     }
     e.run_ok = e.reason.empty();
     e.constraints_hold = e.run_ok;
@@ -196,7 +223,7 @@ void validate(const OptimizeOptions& o) {
   for (std::size_t k = 0; k < o.params.size(); ++k) {
     const SampleRange& p = o.params[k];
     if (!findSceneKey(p.key))
-      throw std::invalid_argument("optimize: --param " + p.key + " is not a scene key (see model/README.md)");
+      throw std::invalid_argument("optimize: --param " + p.key + " is not a scene key (see docs/scene-reference.md)");
     if (!(p.lower < p.upper) || !std::isfinite(p.lower) || !std::isfinite(p.upper))
       throw std::invalid_argument("optimize: --range of " + p.key + ": expected a:b with a < b");
     for (std::size_t m = 0; m < k; ++m)
@@ -204,13 +231,16 @@ void validate(const OptimizeOptions& o) {
   }
   bool is_key = false;
   for (const SampleRange& p : o.params) is_key = is_key || p.key == o.minimize;
-  if (!is_key && !knownMetric(o.minimize))
-    throw std::invalid_argument("optimize: --minimize: expected a metric (" + metricList() +
-                                ") or one of the --param keys, got '" + o.minimize + "'");
+  if (!is_key && !o.objective && !knownMetric(o.minimize)) {
+    std::vector<std::string> names = sweepNumericMetrics();
+    for (const SampleRange& p : o.params) names.push_back(p.key);
+    throw std::invalid_argument("optimize: --minimize: unknown metric '" + o.minimize + "'" + didYouMean(o.minimize, names) +
+                                "; expected a metric (" + metricList() + ") or one of the --param keys");
+  }
   for (const OptimizeConstraint& c : o.constraints)
-    if (!knownMetric(c.metric))
-      throw std::invalid_argument("optimize: --constraint '" + c.text + "': expected a metric (" + metricList() +
-                                  "), got '" + c.metric + "'");
+    if (!c.value && !knownMetric(c.metric))
+      throw std::invalid_argument("optimize: --constraint '" + c.text + "': unknown metric '" + c.metric + "'" +
+                                  didYouMean(c.metric, sweepNumericMetrics()) + "; expected one of " + metricList());
   const std::string& m = o.method;
   if (m != "auto" && m != "bobyqa" && m != "cobyla" && m != "direct-l" && m != "crs2" && m != "multistart")
     throw std::invalid_argument("optimize: --method: expected auto, bobyqa, cobyla, direct-l, crs2 or multistart, got '" +
@@ -303,7 +333,8 @@ bool bestFeasible(const OptimizeResult& r, std::size_t* best) {
 OptimizeResult runOptimize(const OptimizeOptions& o) {
   validate(o);
   OptimizeResult r;
-  r.method = o.method == "auto" ? (o.constraints.empty() ? "bobyqa" : "cobyla") : o.method;
+  const bool automatic = o.method == "auto";
+  r.method = o.method;
   Search search(o, r);
   const std::string local = o.constraints.empty() ? "bobyqa" : "cobyla";
   if (r.method == "multistart") {
@@ -327,20 +358,111 @@ OptimizeResult runOptimize(const OptimizeOptions& o) {
                                                                      std::max(1, o.max_evals / starts), 0.1); });
     for (std::thread& th : pool) th.join();
     r.method = "multistart " + local + " x" + std::to_string(starts);
+    r.scope = "local searches from " + std::to_string(starts) + " starts: the best of their minima (more starts, "
+              "--threads, cover the ranges better)";
     for (int t = 0; t < starts; ++t) r.stop_reason += (t ? "; " : "") + std::string("start ") + std::to_string(t + 1) +
                                                       ": " + reasons[std::size_t(t)];
     r.found = bestFeasible(r, &r.best);
+    return r;
+  }
+  if (automatic) {
+    // auto: (1) the local method from the middle of the box, the cheap answer when there is one
+    // minimum; (2) a global stage: a uniform grid over the whole box (19 values of one parameter,
+    // 7 of each of two, 5 of each of three or more), plus, for the crank offset, the evenly
+    // spread layouts Δφ = k·360°/n of the n carts (they cancel every harmonic of the load below
+    // the n-th, so δ has a sharp minimum there, which a grid or DIRECT's trisection can step
+    // over: six carts, δ = 0.0002 at 60° against 0.1 at 55° and 65°); (3) the local method again
+    // from the best design when it lies in another basin than (1)'s. A local method alone
+    // converges to the minimum nearest its start (six carts: 97.4° from the middle of 0:180).
+    const int n = int(o.params.size());
+    search.method = local;
+    const std::string first = runMethod(search, local, std::vector<double>(o.params.size(), 0.5),
+                                        std::max(1, o.max_evals / 3), 0.25);
+    r.stop_reason = local + " from the middle: " + first;
+    std::size_t local_best = 0;
+    const bool local_found = bestFeasible(r, &local_best);
+    const std::vector<double> x_local = local_found ? r.history[local_best].x : std::vector<double>{};
+    // The global stage's designs, in the unit box.
+    const int per = n == 1 ? 19 : n == 2 ? 7 : 5;
+    std::vector<std::vector<double>> grid(1, std::vector<double>());
+    for (int k = 0; k < n; ++k) {
+      std::vector<double> values;
+      for (int i = 0; i < per; ++i) values.push_back(double(i) / (per - 1));
+      if (o.params[k].key == "crank.offset_deg") {
+        int carts = 0;
+        try {
+          carts = (o.scene_input ? parseSceneInput(*o.scene_input, o.base_overrides)
+                                 : parseSceneFile(o.scene_path, o.base_overrides))
+                      .carts.count;
+        } catch (const std::exception&) {
+        }
+        for (int m = 1; m < carts; ++m)
+          for (int turn = 0; turn < 2; ++turn) {  // within 0..720°
+            const double deg = 360.0 * m / carts + 360.0 * turn;
+            const double u = (deg - o.params[k].lower) / (o.params[k].upper - o.params[k].lower);
+            if (u > 0 && u < 1) values.push_back(u);
+          }
+      }
+      std::vector<std::vector<double>> next;
+      for (const auto& g : grid)
+        for (double v : values) {
+          next.push_back(g);
+          next.back().push_back(v);
+        }
+      grid = std::move(next);
+    }
+    int left = o.max_evals - int(search.requests());
+    if (int(grid.size()) > left) grid.resize(std::size_t(std::max(0, left)));
+    if (first != "interrupted" && !grid.empty()) {
+      std::vector<std::thread> pool;
+      std::atomic<std::size_t> next{0};
+      for (int t = 0; t < std::max(1, o.threads); ++t)
+        pool.emplace_back([&] {
+          for (std::size_t i = next++; i < grid.size(); i = next++) {
+            if (o.interrupt && o.interrupt->load()) return;
+            search.evaluate(grid[i]);
+          }
+        });
+      for (std::thread& th : pool) th.join();
+      r.stop_reason += "; grid of " + std::to_string(grid.size()) + " designs over the whole ranges";
+    }
+    r.found = bestFeasible(r, &r.best);
+    bool elsewhere = r.found && !local_found;
+    if (r.found && local_found)
+      for (std::size_t k = 0; k < o.params.size(); ++k)
+        elsewhere = elsewhere || std::abs(r.history[r.best].x[k] - x_local[k]) >
+                                     10.0 * o.x_tolerance * (o.params[k].upper - o.params[k].lower);
+    left = o.max_evals - int(search.requests());
+    const bool interrupted = o.interrupt && o.interrupt->load();
+    if (elsewhere && left > 0 && !interrupted) {
+      std::vector<double> u;
+      for (std::size_t k = 0; k < o.params.size(); ++k)
+        u.push_back((r.history[r.best].x[k] - o.params[k].lower) / (o.params[k].upper - o.params[k].lower));
+      search.method = local;
+      r.stop_reason += "; " + local + " from the grid's best: " + runMethod(search, local, u, left, 0.02);
+      r.found = bestFeasible(r, &r.best);
+    }
+    r.method = local + ", grid, " + local;
+    r.scope = std::string("global: ") + local + " from the middle of the ranges, a grid over the whole ranges" +
+              (elsewhere ? ", whose best design lay in another basin and was polished by " + local
+                         : " (no better basin found)");
     return r;
   }
   const bool global = r.method == "direct-l" || r.method == "crs2";
   // A global method gets 70 % of the evaluations; the rest polish its best design with the
   // local method (a global search stops far from the exact optimum, and a local one alone may
   // stop at the wrong one of several minima).
+  // auto gives the global stage 20 evaluations per parameter at most (DIRECT-L then has sampled
+  // every third of the range at least twice over), leaving the rest for the polish.
   const int global_evals = global ? std::max(1, int(0.7 * o.max_evals)) : o.max_evals;
   // Start in the middle of the box with steps of a quarter of each range.
   search.method = r.method;
   r.stop_reason = runMethod(search, r.method, std::vector<double>(o.params.size(), 0.5), global_evals, 0.25);
   r.found = bestFeasible(r, &r.best);
+  if (!global) r.scope = "local: " + r.method + " from the middle of the ranges finds the minimum nearest to that "
+                         "start, which need not be the global one (--method auto, direct-l, crs2 or multistart "
+                         "search the whole ranges)";
+  else r.scope = "global stage " + r.method + " over the whole ranges, then a local polish";
   const int left = o.max_evals - int(search.requests());
   if (global && r.found && left > 0 && r.stop_reason != "interrupted") {
     std::vector<double> u;

@@ -38,7 +38,7 @@ const std::vector<std::pair<const char*, std::vector<const char*>>>& compared() 
       {"omega_crank_min", {"omega_crank", "min"}},
       {"omega_crank_max", {"omega_crank", "max"}},
       {"eps_crank_abs_max", {"eps_crank_abs_max"}},
-      {"motor_torque_rms", {"sizing", "motor", "torque_shaft", "rms"}},
+      {"motor_torque_rotor_rms", {"sizing", "motor", "torque_shaft", "rms"}},
   };
   return m;
 }

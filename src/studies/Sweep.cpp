@@ -1,5 +1,7 @@
 #include "studies/Sweep.h"
 
+#include <algorithm>
+
 #include <time.h>
 
 #include <cmath>
@@ -17,8 +19,8 @@
 #include "reduced/ReducedModel.h"
 #include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
-#include "studies/ResonanceCheck.h"
-#include "studies/StartLoad.h"
+#include "scene/DidYouMean.h"
+#include "studies/RunSummary.h"
 #include "studies/SweepExecution.h"
 
 namespace rollerdyn {
@@ -105,7 +107,7 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
   for (std::size_t i = 0; i < o.params.size(); ++i) overrides.push_back(o.params[i].key + "=" + texts[i]);
   Scene scene;
   try {
-    scene = parseSceneFile(o.scene_path, overrides);
+    scene = o.scene_input ? parseSceneInput(*o.scene_input, overrides) : parseSceneFile(o.scene_path, overrides);
   } catch (const std::exception& e) {
     p.status = std::string("invalid: ") + e.what();
     p.cpu_seconds = threadCpuSeconds() - cpu0;
@@ -121,11 +123,15 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
       run = runReducedModel(scene);
     }
     p.ran = true;
-    const StartLoad start_load = startLoadOf(scene);  // explains a stall in the status
-    nlohmann::json summary = makeSummary(scene, run, &start_load);
+    // The summary every run gets (stall cause, two-mass resonance check), without the modal
+    // analysis' verdict: the resonance_warnings column counts the first estimate.
+    RunSummaryOptions summary_options;
+    summary_options.overrides = overrides;
+    summary_options.resonance_verdict = false;
+    RunMessages messages;
+    const nlohmann::json summary = summarizeRun(scene, run, summary_options, &messages);
     p.motion = summary.value("motion", "unknown");
-    addResonanceWarnings(scene, summary);
-    p.warnings = summary["warnings"];
+    p.warnings = messages.first_estimate;  // the load's warning is a metric column
     const auto& src = metricSources();
     for (std::size_t k = 0; k < src.size(); ++k) p.metrics[k] = summaryNumber(summary, src[k].second);
     p.complete = run.stats.complete;
@@ -270,23 +276,24 @@ SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
   return opt;
 }
 
+void requireSweepMetric(const std::string& what, const std::string& metric) {
+  const std::vector<std::string>& names = sweepNumericMetrics();
+  if (std::find(names.begin(), names.end(), metric) != names.end()) return;
+  std::string list;
+  for (const std::string& m : names) list += (list.empty() ? "" : ", ") + m;
+  throw std::invalid_argument(what + ": unknown metric '" + metric + "'" + didYouMean(metric, names) +
+                              "; expected one of " + list);
+}
+
 SweepResult runSweep(const SweepOptions& o) {
   if (o.params.empty()) throw std::invalid_argument("sweep: give at least one --param with --values");
   if (o.model != "multibody" && o.model != "reduced")
     throw std::invalid_argument("sweep: --model must be multibody or reduced, got '" + o.model + "'");
-  if (!o.minimize.empty()) {
-    bool known = false;
-    for (const std::string& m : sweepNumericMetrics()) known = known || m == o.minimize;
-    if (!known) {
-      std::string list;
-      for (const std::string& m : sweepNumericMetrics()) list += (list.empty() ? "" : ", ") + m;
-      throw std::invalid_argument("sweep: --minimize: expected one of " + list + ", got '" + o.minimize + "'");
-    }
-  }
+  if (!o.minimize.empty()) requireSweepMetric("sweep: --minimize", o.minimize);
   for (const SweepParameter& p : o.params) {
     if (p.values.empty()) throw std::invalid_argument("sweep: --param " + p.key + " has no values");
     if (!findSceneKey(p.key))
-      throw std::invalid_argument("sweep: --param " + p.key + " is not a scene key (see model/README.md)");
+      throw std::invalid_argument("sweep: --param " + p.key + " is not a scene key (see docs/scene-reference.md)");
   }
   // Grid (last parameter fastest) or explicit designs; threads or MPI, saved rows, resume.
   SweepResult result;

@@ -17,10 +17,13 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "scene/SceneParser.h"
 
 namespace rollerdyn {
 
@@ -56,6 +59,9 @@ struct SweepPoint {
 
 struct SweepOptions {
   std::string scene_path;
+  // The scene when it is kept in memory (the Python interface): parsed from it at each point
+  // instead of reading scene_path, which then only names it in the outputs.
+  std::shared_ptr<const SceneInput> scene_input;
   std::vector<std::string> base_overrides;  // --set given to the sweep itself, applied first
   std::vector<SweepParameter> params;
   std::string model = "multibody";          // multibody | reduced
@@ -95,6 +101,10 @@ struct SweepResult {
 
 // Throws std::invalid_argument for an empty grid, an unknown model or metric; every per-point
 // failure is recorded in the point instead.
+// Throws std::invalid_argument "WHAT: unknown metric 'X' (did you mean 'Y'?); expected one of ..."
+// unless `metric` is a sweepNumericMetrics() name.
+void requireSweepMetric(const std::string& what, const std::string& metric);
+
 SweepResult runSweep(const SweepOptions& options);
 
 // One point: the scene with base_overrides and KEY=texts[k] applied, run, summarised (used by
@@ -106,10 +116,30 @@ SweepPoint runSweepPoint(const SweepOptions& options, const std::vector<std::str
 SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
                          const std::vector<SweepPoint>& points, const std::string& metric);
 
+// One column of a study's table (sweep.csv, history.csv of optimize): a parameter (key path,
+// schema unit), a metric (sweepMetricColumns()) or a text column.
+struct StudyColumn {
+  std::string name;                // key path or metric name
+  std::string unit;                // ASCII unit of the CSV header, e.g. N*m ("" for none)
+  bool parameter = false;          // a parameter column: its texts are the values as applied (--set)
+  bool is_text = false;            // text cells (status, motion; a parameter with words such as rigid)
+  std::vector<double> numbers;     // one per point (NaN where not computed; empty for metric text columns)
+  std::vector<std::string> texts;  // one per point for text columns and parameters
+};
+
+// sweep.csv as columns, one cell per point in grid order: what writeSweepOutputs writes and the
+// Python interface returns as a table.
+std::vector<StudyColumn> sweepTable(const SweepOptions& options, const SweepResult& result);
+
+// sweep.json's "optimum": metric, found, note, and where found the point (index, at, value,
+// steady_state_reached, parabola); null when no metric was minimised.
+nlohmann::json sweepOptimumJson(const SweepOptions& options, const SweepResult& result);
+
 // sweep.csv, sweep.json and the plots (skipped with a note in sweep.json when gnuplot is
-// missing or there are more than two parameters). Returns the files written.
+// missing or there are more than two parameters). Returns the files written; `plot_note`
+// receives why plots are missing ("" when all were drawn), for the console.
 std::vector<std::string> writeSweepOutputs(const SweepOptions& options, const SweepResult& result,
-                                           const std::string& out_dir);
+                                           const std::string& out_dir, std::string* plot_note = nullptr);
 
 // One line for the terminal, e.g. "minimum of delta = 0.151 at crank.offset_deg=90 (steady)".
 std::string describeOptimum(const SweepOptions& options, const SweepResult& result);

@@ -27,32 +27,80 @@ std::string paramHeader(const std::string& key) {
 
 }  // namespace
 
+std::vector<StudyColumn> sweepTable(const SweepOptions& o, const SweepResult& r) {
+  std::vector<StudyColumn> table;
+  for (std::size_t k = 0; k < o.params.size(); ++k) {
+    StudyColumn c;
+    c.name = o.params[k].key;
+    const std::string header = paramHeader(c.name);
+    c.unit = header.size() > c.name.size() ? header.substr(c.name.size() + 1, header.size() - c.name.size() - 2) : "";
+    c.parameter = true;
+    c.is_text = !o.params[k].numeric();
+    for (const SweepPoint& p : r.points) {
+      c.texts.push_back(p.texts[k]);
+      c.numbers.push_back(p.values[k]);
+    }
+    table.push_back(std::move(c));
+  }
+  for (const std::string& name : sweepMetricColumns()) {
+    StudyColumn c;
+    c.name = name;
+    c.unit = sweepMetricUnit(name);
+    c.is_text = name == "status" || name == "motion";
+    for (const SweepPoint& p : r.points) {
+      if (name == "status") c.texts.push_back(p.status);
+      else if (name == "motion") c.texts.push_back(p.motion);
+      else if (name == "steady_state_reached") c.numbers.push_back(p.steady ? 1 : 0);
+      else if (name == "cpu_seconds") c.numbers.push_back(p.cpu_seconds);
+      else if (name == "resonance_warnings") c.numbers.push_back(double(p.warnings.size()));
+      else c.numbers.push_back(p.metric(name));
+    }
+    table.push_back(std::move(c));
+  }
+  return table;
+}
+
+nlohmann::json sweepOptimumJson(const SweepOptions& o, const SweepResult& r) {
+  if (r.optimum.metric.empty()) return nullptr;
+  const SweepOptimum& opt = r.optimum;
+  nlohmann::json jo = {{"metric", opt.metric}, {"found", opt.found}, {"note", opt.note}};
+  if (opt.found) {
+    nlohmann::json at = nlohmann::json::object();
+    for (std::size_t k = 0; k < o.params.size(); ++k)
+      at[o.params[k].key] = std::isfinite(r.points[opt.index].values[k])
+                                ? nlohmann::json(r.points[opt.index].values[k])
+                                : nlohmann::json(r.points[opt.index].texts[k]);
+    jo["index"] = opt.index;
+    jo["at"] = at;
+    jo["value"] = opt.value;
+    jo["steady_state_reached"] = opt.steady;
+    if (opt.refined)
+      jo["parabola"] = {{"parameter", opt.refined_parameter}, {"value", opt.refined_value},
+                        {"note", "vertex of the parabola through the best grid point and its two neighbours"}};
+  }
+  return jo;
+}
+
 std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepResult& r,
-                                           const std::string& out_dir) {
+                                           const std::string& out_dir, std::string* plot_note_out) {
   std::vector<std::string> files;
   const auto& metrics = sweepNumericMetrics();
   // --- sweep.csv ---
+  // Headers as name[unit] (io/Table.h convention); text and count columns stay bare. Parameter
+  // values as they were applied (--set), metrics as numbers.
+  const std::vector<StudyColumn> table = sweepTable(o, r);
   std::ostringstream csv;
-  // Headers as name[unit] (io/Table.h convention); text and count columns stay bare.
-  for (const SweepParameter& p : o.params) csv << csvText(paramHeader(p.key)) << ',';
-  const auto& cols = sweepMetricColumns();
-  for (std::size_t c = 0; c < cols.size(); ++c) {
-    const std::string unit = sweepMetricUnit(cols[c]);
-    csv << cols[c] << (unit.empty() ? "" : "[" + unit + "]") << (c + 1 < cols.size() ? "," : "\n");
+  for (std::size_t c = 0; c < table.size(); ++c) {
+    const StudyColumn& col = table[c];
+    const std::string header = col.unit.empty() ? col.name : col.name + "[" + col.unit + "]";
+    csv << (col.parameter ? csvText(header) : header) << (c + 1 < table.size() ? "," : "\n");
   }
-  for (const SweepPoint& p : r.points) {
-    for (const std::string& t : p.texts) csv << csvText(t) << ',';
-    for (std::size_t c = 0; c < cols.size(); ++c) {
-      const std::string& name = cols[c];
-      if (name == "steady_state_reached") csv << (p.steady ? 1 : 0);
-      else if (name == "status") csv << csvText(p.status);
-      else if (name == "motion") csv << csvText(p.motion);
-      else if (name == "cpu_seconds") csv << csvNumber(p.cpu_seconds);
-      else if (name == "resonance_warnings") csv << p.warnings.size();
-      else csv << csvNumber(p.metric(name));
-      csv << (c + 1 < cols.size() ? "," : "\n");
+  for (std::size_t i = 0; i < r.points.size(); ++i)
+    for (std::size_t c = 0; c < table.size(); ++c) {
+      const StudyColumn& col = table[c];
+      csv << (col.parameter || col.is_text ? csvText(col.texts[i]) : csvNumber(col.numbers[i]))
+          << (c + 1 < table.size() ? "," : "\n");
     }
-  }
   writeFileAtomic(out_dir + "/sweep.csv", csv.str());
   files.push_back(out_dir + "/sweep.csv");
 
@@ -65,6 +113,7 @@ std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepRes
     plot_note = std::string("plotting failed: ") + e.what();
   }
   for (const std::string& p : plots) files.push_back(p);
+  if (plot_note_out) *plot_note_out = plot_note;
 
   // --- sweep.json ---
   nlohmann::json j;
@@ -73,7 +122,7 @@ std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepRes
   j["base_overrides"] = o.base_overrides;
   j["parameters"] = nlohmann::json::array();
   for (const SweepParameter& p : o.params) j["parameters"].push_back({{"key", p.key}, {"values", p.texts}});
-  j["columns"] = cols;
+  j["columns"] = sweepMetricColumns();
   j["points"] = nlohmann::json::array();
   for (std::size_t i = 0; i < r.points.size(); ++i) {
     const SweepPoint& p = r.points[i];
@@ -91,27 +140,7 @@ std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepRes
                            {"cpu_seconds", jsonNumber(p.cpu_seconds)},
                            {"warnings", p.warnings}});
   }
-  if (!r.optimum.metric.empty()) {
-    const SweepOptimum& opt = r.optimum;
-    nlohmann::json jo = {{"metric", opt.metric}, {"found", opt.found}, {"note", opt.note}};
-    if (opt.found) {
-      nlohmann::json at = nlohmann::json::object();
-      for (std::size_t k = 0; k < o.params.size(); ++k)
-        at[o.params[k].key] = std::isfinite(r.points[opt.index].values[k])
-                                  ? nlohmann::json(r.points[opt.index].values[k])
-                                  : nlohmann::json(r.points[opt.index].texts[k]);
-      jo["index"] = opt.index;
-      jo["at"] = at;
-      jo["value"] = opt.value;
-      jo["steady_state_reached"] = opt.steady;
-      if (opt.refined)
-        jo["parabola"] = {{"parameter", opt.refined_parameter}, {"value", opt.refined_value},
-                          {"note", "vertex of the parabola through the best grid point and its two neighbours"}};
-    }
-    j["optimum"] = jo;
-  } else {
-    j["optimum"] = nullptr;
-  }
+  j["optimum"] = sweepOptimumJson(o, r);
   j["plots"] = plots;
   j["plot_note"] = plot_note;
   for (const auto& [key, value] : r.execution.items()) j[key] = value;  // ranks, points_per_rank, ...

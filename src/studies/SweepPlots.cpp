@@ -24,7 +24,7 @@ std::string num(double v) {
 }
 
 const char* kLegend =
-    "black-hatched colour: turning, steady state not reached;  grey hatched: rocking, stalled or "
+    "black-hatched colour: turning, steady state not reached;  grey hatched: starting (run too short), rocking, stalled or "
     "failed (no value)";
 
 }  // namespace
@@ -37,8 +37,10 @@ std::string sweepParamLabel(const std::string& key) {
 
 std::string sweepMetricUnit(const std::string& m) {
   if (m == "delta" || m == "H" || m == "k_p" || m == "energy_residual_rel" ||
-      m.find("_over_") != std::string::npos)
+      m.find("_over_") != std::string::npos || m == "motor_thermal_whole_run")
     return "-";
+  if (m == "load_power_per_cart" || m == "motor_power_line_mean_whole_run") return "W";
+  if (m == "coupling_torque_peak_whole_run") return "N*m";
   if (m.rfind("omega_crank", 0) == 0 || m == "twist_rate_swing") return "rad/s";
   if (m == "twist_swing") return "rad";
   if (m == "twist_accel_swing" || m == "eps_crank_abs_max") return "rad/s^2";
@@ -64,8 +66,8 @@ std::string sweepMetricLabel(const std::string& m) {
       {"twist_accel_swing", "twist acceleration swing"},
       {"eps_crank_abs_max", "max |ε_{crank}|, crank angular acceleration"},
       {"energy_residual_rel", "energy residual (relative)"},
-      {"motor_torque_rms", "RMS motor torque at the rotor"},
-      {"motor_torque_peak", "peak motor torque at the rotor"},
+      {"motor_torque_rotor_rms", "RMS motor torque at the rotor"},
+      {"motor_torque_rotor_peak", "peak motor torque at the rotor"},
       {"motor_rms_over_nominal", "RMS motor torque / nominal torque M_n"},
       {"motor_peak_over_breakdown", "peak motor torque / breakdown torque M_{kr}"},
       {"motor_power_mean", "mean motor shaft power"},
@@ -73,6 +75,12 @@ std::string sweepMetricLabel(const std::string& m) {
       {"energy_per_revolution", "motor energy per crank revolution"},
       {"kinetic_energy_swing", "kinetic-energy swing per revolution"},
       {"coupling_torque_peak", "peak coupling torque"},
+      {"coupling_torque_peak_whole_run", "peak coupling torque over the whole run (start-up included)"},
+      {"motor_torque_rotor_rms_whole_run", "RMS motor torque at the rotor over the whole run"},
+      {"motor_thermal_whole_run", "motor thermal equivalent / nominal over the whole run"},
+      {"motor_power_line_mean_whole_run", "mean power from the line over the whole run"},
+      {"load_power_per_cart", "mean power the load absorbs per cart"},
+      {"load_net_over_gross", "net / gross work of the load"},
       {"guide_roller_peak", "peak front guide-roller force"},
       {"guide_roller_rear_peak", "peak rear guide-roller force"},
       {"rod_force_peak", "peak rod force"},
@@ -196,7 +204,7 @@ std::vector<std::string> drawSweepPlots(const SweepOptions& o, const SweepResult
       for (const auto& e : edges) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
       if (xh > xl) pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
       if (any_bad)
-        pre << "set label 1 \"grey hatched: rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
+        pre << "set label 1 \"grey hatched: starting, rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
       spec.preamble = pre.str();
       spec.series.push_back(steady);
       if (!unsteady.x.empty()) spec.series.push_back(unsteady);

@@ -75,7 +75,7 @@ SweepPoint sweepPointFromJson(const nlohmann::json& j) {
 }
 
 std::string sweepFingerprint(const SweepOptions& o, const std::vector<std::vector<std::string>>& designs) {
-  nlohmann::json what = {{"scene_text", readFileContents(o.scene_path, "scene")},
+  nlohmann::json what = {{"scene_text", o.scene_input ? o.scene_input->text : readFileContents(o.scene_path, "scene")},
                          {"model", o.model},
                          {"base_overrides", o.base_overrides},
                          {"designs", designs},

@@ -11,7 +11,9 @@ TEST(ColumnUnits, KnownColumnsCarryTheirUnits) {
   EXPECT_EQ(headerWithUnit("t"), "t[s]");
   EXPECT_EQ(headerWithUnit("omega_crank"), "omega_crank[rad/s]");
   EXPECT_EQ(headerWithUnit("eps_crank"), "eps_crank[rad/s^2]");
-  EXPECT_EQ(headerWithUnit("coupling_torque"), "coupling_torque[N*m]");
+  // Torques say at which shaft they are (the console's motor torque is at the rotor).
+  EXPECT_EQ(headerWithUnit("coupling_torque"), "coupling_torque[N*m at the crank axis]");
+  EXPECT_EQ(headerWithUnit("motor_torque"), "motor_torque[N*m at the crank axis]");
   EXPECT_EQ(headerWithUnit("v_cart_12"), "v_cart_12[m/s]");
   EXPECT_EQ(headerWithUnit("N_front_3"), "N_front_3[N]");
   EXPECT_EQ(headerWithUnit("crankpin_y_1"), "crankpin_y_1[N]");

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "analysis/DriveSizing.h"
+#include "analysis/SizingSummary.h"
 #include "analysis/SteadyState.h"
 
 using namespace rollerdyn;
@@ -119,12 +121,107 @@ TEST(DriveSizing, NominalTorqueSourcesAndLinePowerWithMotorEfficiency) {
   EXPECT_NEAR(nominalMotorTorque(sc, &src), 19000.0 / 95, 1e-12);
   EXPECT_NE(src.find("P_n"), std::string::npos);
   const DriveSizing s = sized(sc, run(10000));
-  EXPECT_REL(s.motor.power_line_mean, u * (W * M0 + a * M1 / 2) / 0.8, 1e-4);  // P > 0 throughout
+  // Air-gap power M·ω0 × (1 - s_n)/η_m with s_n = 1 - ω_n/ω0: M·ω_n/η_m (M > 0 throughout).
+  EXPECT_REL(s.motor.power_line_mean, M0 * 95 / 0.8, 1e-4);
   sc.sizing.motor_nominal_power = 0;
   EXPECT_TRUE(std::isnan(nominalMotorTorque(sc, &src)));
   EXPECT_NE(src.find("not given"), std::string::npos);
   sc.sizing.motor_nominal_torque = 150;
   EXPECT_EQ(nominalMotorTorque(sc), 150);
+}
+
+// Finding of the 6-cart trial: a locked rotor (slip 1 throughout) passed "RMS / nominal 0.543" and
+// "peak / breakdown 0.226", and its line power read 0.0007 kW against an air-gap power of 12.3 kW.
+TEST(DriveSizing, LockedRotorFailsEveryMotorCheckAndDrawsItsAirGapPower) {
+  Scene sc = scene();
+  sc.sizing.motor_efficiency = 0.9;
+  RunResult rr;
+  rr.model = "reduced";
+  rr.timeseries.columns = {"t", "phi_crank", "omega_crank", "omega_motor", "motor_torque", "coupling_torque"};
+  const double M = 117;  // rotor torque at slip 1 [N·m], below M_n = 200
+  for (int i = 0; i <= 200; ++i)
+    rr.timeseries.rows.push_back({0.005 * i, 0.5, 5e-4, 5e-4, u * eta * M, u * eta * M});
+  const SteadyState w = detectSteadyState(rr.timeseries, sc.simulation.steady_window_revolutions);
+  const DriveSizing s = computeDriveSizing(sc, rr, w, false, NAN, "stalled");
+  ASSERT_EQ(s.checks.size(), 3u);
+  for (const SizingCheck& c : s.checks) EXPECT_NE(c.verdict, "pass") << c.name << ": " << c.reason;
+  EXPECT_EQ(s.checks[0].verdict, "FAIL");
+  EXPECT_EQ(s.checks[1].verdict, "FAIL");
+  EXPECT_NE(s.checks[0].reason.find("stalled"), std::string::npos);
+  // Locked: all the air-gap power M·ω0 is heat in the rotor; the line gives it plus the stator's
+  // share, (1 - s_n)/η_m as at the nominal point.
+  const double s_n = 1 - 95 / w0;
+  EXPECT_REL(s.motor.power_line_mean, M * w0 * (1 - s_n) / 0.9, 1e-3);
+  EXPECT_GT(s.motor.power_line_mean, 1000.0);
+  // Rotor heat s·M·ω0 against nominal s_n·M_n·ω0: √(M/(s_n·M_n)) ≈ 3.8, far above the RMS ratio 0.585.
+  EXPECT_REL(s.motor.whole_run.thermal_over_nominal, std::sqrt(M / (s_n * 200)), 1e-3);
+  EXPECT_EQ(s.checks[0].window, "steady window");  // continuous running (no duty given)
+  EXPECT_REL(s.checks[0].value, std::sqrt(M / (s_n * 200)), 1e-3);
+}
+
+// Finding of the 6-cart trial: the coupling check saw only the steady window (peak 86 N·m, 0.011
+// pass) while the start-up peak was ~3000 N·m; the motor's start-up heating was ignored.
+TEST(DriveSizing, StartUpPeakAndHeatingDecideTheChecksAndNameTheirWindow) {
+  const Scene sc = scene();
+  RunResult rr = run(10000);
+  const std::size_t n_start = 2000;  // the first third of a revolution: a locked, overloaded start
+  for (std::size_t i = 0; i < n_start; ++i) {
+    rr.timeseries.rows[i][3] = 0.0;                     // rotor at rest: slip 1
+    rr.timeseries.rows[i][4] = u * eta * 400.0;         // 2 M_n at the rotor
+    rr.timeseries.rows[i][5] = 10.0 * (C0 + C1);        // coupling torque spike
+  }
+  const DriveSizing steady_only = sized(sc, run(10000));
+  const DriveSizing s = sized(sc, rr);
+  // The steady window is the same; its figures do not move.
+  EXPECT_REL(s.coupling.peak, steady_only.coupling.peak, 1e-9);
+  EXPECT_REL(s.motor.rms_over_nominal, steady_only.motor.rms_over_nominal, 1e-9);
+  ASSERT_EQ(s.checks.size(), 3u);
+  const SizingCheck &heat = s.checks[0], &coupling = s.checks[2];
+  EXPECT_EQ(steady_only.checks[2].verdict, "pass");
+  EXPECT_EQ(coupling.verdict, "FAIL");
+  EXPECT_EQ(coupling.window, "whole run");
+  EXPECT_NEAR(s.coupling.peak_whole_run, 10.0 * (C0 + C1), 1e-9);
+  EXPECT_LT(s.coupling.t_peak_whole_run, rr.timeseries.rows[n_start][0]);
+  // No duty given: continuous running, the steady window decides the heating and the reason gives
+  // the starts per hour the start's heat allows (the run's length is no duty: a 10 s run is not a
+  // start every 10 s).
+  EXPECT_EQ(heat.window, "steady window");
+  EXPECT_REL(heat.value, steady_only.checks[0].value, 1e-9);
+  EXPECT_NE(heat.reason.find("starts per hour"), std::string::npos) << heat.reason;
+  // With a duty of 60 starts per hour each start's heat counts: s·M·ω0 = 40 kW over the start.
+  EXPECT_EQ(s.checks[1].window, "steady window");  // the breakdown margin is a running check
+  // The start's rotor heat: s = 1 and M = 400 N·m for the replaced rows, s·M·ω0 = 40 kW over them.
+  const double t_start = rr.timeseries.rows[n_start][0];
+  EXPECT_NEAR(s.motor.whole_run.start_heat, 400.0 * w0 * t_start, 0.03 * 400.0 * w0 * t_start);
+  EXPECT_TRUE(std::isfinite(s.motor.whole_run.starts_per_hour));
+  EXPECT_GT(s.motor.whole_run.starts_per_hour, 0.0);
+  Scene duty = sc;
+  duty.sizing.starts_per_hour = 60.0;
+  const DriveSizing d = sized(duty, rr);
+  const SizingCheck& dh = d.checks[0];
+  EXPECT_EQ(dh.window, "duty cycle (steady running and starts)");
+  EXPECT_GT(dh.value, heat.value);
+  // Independently: the steady run's rotor losses (the synthetic steady run repeats every
+  // revolution, so its whole-run mean is the steady window's to the sampling) plus 60 starts' heat
+  // per hour, against the nominal losses s_n·M_n·ω0.
+  const double s_n = 1.0 - sc.sizing.motor_omega_nominal / w0;
+  const double nominal_losses = s_n * s.motor.nominal_torque * w0;
+  const double expected = std::sqrt((steady_only.motor.whole_run.rotor_losses_mean +
+                                     60.0 * s.motor.whole_run.start_heat / 3600.0) / nominal_losses);
+  EXPECT_REL(dh.value, expected, 1e-3);
+}
+
+// The 6-cart trial at 90°: the steady peak reached 0.966·M_kr and passed as "< 1"; 5 % below the
+// rated voltage (IEC 60034-1 zone A) the motor gives 0.9025·M_kr and stalls.
+TEST(DriveSizing, BreakdownCheckKeepsTheSupplyMargin) {
+  Scene sc = scene();
+  sc.motor.breakdown_torque = (M0 + M1) / 0.95;  // steady peak 0.95·M_kr
+  const DriveSizing near = sized(sc, run(10000));
+  EXPECT_NEAR(near.motor.peak_over_breakdown, 0.95, 1e-6);
+  EXPECT_EQ(near.checks[1].name, "motor_breakdown");
+  EXPECT_EQ(near.checks[1].verdict, "FAIL");
+  sc.motor.breakdown_torque = (M0 + M1) / 0.88;
+  EXPECT_EQ(sized(sc, run(10000)).checks[1].verdict, "pass");
 }
 
 TEST(DriveSizing, FlywheelFromKineticEnergyAndEnergyMethod) {
@@ -188,6 +285,24 @@ TEST(DriveSizing, JointLoadsAndLivesMatchClosedForms) {
   EXPECT_REL(rod->load.amplitude, R1, 1e-6);
   EXPECT_TRUE(std::isnan(rod->life_hours));  // it does not rotate
   EXPECT_EQ(s.worst("guide_roller_rear"), nullptr);  // no N_rear column
+}
+
+// The 6-cart trial: the rod end's L10 showed n/a on the console though summary.json had it (in
+// revolutions: the rod end swings, it has no rotation speed for hours).
+TEST(DriveSizing, RodEndLifeInRevolutionsReachesTheConsole) {
+  const Scene sc = scene();
+  const DriveSizing s = sized(sc, run(10000));
+  const JointSizing* rod = s.worst("rod_end");
+  ASSERT_NE(rod, nullptr);
+  ASSERT_TRUE(std::isfinite(rod->life_revolutions));
+  const nlohmann::json summary = {{"sizing", sizingJson(s)}};
+  const std::string text = sizingText(summary);
+  const std::size_t line = text.find("  rod end");
+  ASSERT_NE(line, std::string::npos) << text;
+  const std::string row = text.substr(line, text.find('\n', line) - line);
+  char life[32];
+  std::snprintf(life, sizeof life, "%.3g rev", rod->life_revolutions);
+  EXPECT_NE(row.find(life), std::string::npos) << row;
 }
 
 TEST(DriveSizing, NotTurningLeavesPerRevolutionFiguresNaN) {

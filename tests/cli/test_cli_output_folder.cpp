@@ -42,6 +42,7 @@ TEST(CliOutputFolder, UnusableOutFailsBeforeAnyComputation) {
       {"validate", "--out", below_file},
       {"cam-profile", model("cam-drive.yaml"), "--compare", "--out", below_file},
       {"chain", "--t-end", "1e6", "--out", below_file},
+      {"motor", scene, "--out", below_file},
   };
   for (const auto& args : commands) {
     SCOPED_TRACE(args[0] + " " + args.back());

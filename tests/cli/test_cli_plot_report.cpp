@@ -127,10 +127,18 @@ TEST(CliReport, WritesOneSelfContainedPage) {
     EXPECT_TRUE(html.find(std::string("<h2>") + section) != std::string::npos ||
                 html.find(std::string("<h3>") + section) != std::string::npos)
         << "missing section " << section;
-  // Every figure embedded, none linked.
-  size_t embedded = 0;
+  // Every figure embedded, none linked: the run's and those of the torsional-modes section.
+  size_t embedded = 0, modes_figures = 0;
   for (size_t at = 0; (at = html.find("src=\"data:image/png;base64,", at)) != std::string::npos; ++at) ++embedded;
-  EXPECT_EQ(embedded, kElasticFigures.size());
+  for (const auto& f : fs::directory_iterator(out.path() / "figures")) {
+    const std::string n = f.path().filename().string();
+    if (f.path().extension() == ".png" && (n.rfind("frozen_", 0) == 0 || n.rfind("campbell", 0) == 0 ||
+                                           n.rfind("stability_", 0) == 0 || n.rfind("spectrum_", 0) == 0))
+      ++modes_figures;
+  }
+  EXPECT_GE(modes_figures, 3u);  // frozen-angle frequencies, Campbell diagram, stability charts
+  EXPECT_EQ(embedded, kElasticFigures.size() + modes_figures);
+  EXPECT_NE(html.find("<h2 id=\"modes\">Torsional modes and stability</h2>"), std::string::npos);
   for (const char* remote : {"src=\"http", "href=", "src=\"figures/", "<script src", "<link", "@import"})
     EXPECT_EQ(html.find(remote), std::string::npos) << "page refers to " << remote;
   // The mechanism in motion and, with Debian's Chart.js installed, the interactive plots.

@@ -115,9 +115,10 @@ TEST(SceneRejects, MissingRequiredKeyNamedAtParentLine) {
   EXPECT_EQ(e.line(), 7);
 }
 
-TEST(SceneRejects, MissingSource) {
-  expectSceneError(without("source: unit-test scene"),
-                   {"test.yaml:1: source: expected a text scalar, got nothing (key missing)"});
+// A user's own scene need not cite a paper: `source` may be left out (but not given empty).
+TEST(SceneRejects, SourceIsOptionalInAUsersOwnScene) {
+  const Scene s = parseSceneText(without("source: unit-test scene"), "test.yaml");
+  EXPECT_EQ(s.source, "");
 }
 
 TEST(SceneRejects, EmptySource) {
@@ -136,6 +137,10 @@ TEST(SceneRejects, RodMassRequiredUnlessMassless) {
   expectSceneError(replaced("  mass: 64", "  mass: 0"),
                    {"test.yaml:10: rods.mass: expected a number > 0 [kg] (0 only with rods.model "
                     "massless), got 0"});
+  // A negative mass gets the same rule, not ">= 0", which 0 would then contradict.
+  expectSceneError(replaced("  mass: 64", "  mass: -64"),
+                   {"test.yaml:10: rods.mass: expected a number > 0 [kg] (0 only with rods.model "
+                    "massless), got -64"});
 }
 
 TEST(SceneRejects, ElasticCouplingNeedsStiffness) {

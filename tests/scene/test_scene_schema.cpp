@@ -1,5 +1,6 @@
-// The schema table, the parser and model/README.md agree: every key is documented, every
-// documented key exists, and every key's value actually reaches the Scene.
+// The schema table, the parser and the scene file reference agree: the reference generated from
+// the schema documents every key and is the committed docs/scene-reference.md, and every key's
+// value actually reaches the Scene.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,23 +11,24 @@
 #include <string>
 
 #include "scene/SceneParser.h"
+#include "scene/SceneReference.h"
 #include "scene/SceneSchema.h"
 
 namespace rollerdyn {
 namespace {
 
-std::string readme() {
-  std::ifstream in(std::string(ROLLERDYN_SOURCE_DIR) + "/model/README.md");
+std::string committedReference() {
+  std::ifstream in(std::string(ROLLERDYN_SOURCE_DIR) + "/docs/scene-reference.md");
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
 }
 
-// Key paths in the first column of the README's key table: rows starting "| `key` |".
-std::set<std::string> documentedKeys() {
+// Key paths in the first column of the reference's tables: rows starting "| `key` |".
+std::set<std::string> documentedKeys(const std::string& markdown) {
   std::set<std::string> keys;
-  const std::regex row(R"(^\| `([a-z_.A-Z]+)` \|)");
-  std::istringstream in(readme());
+  const std::regex row(R"(^\| `([a-z_.A-Z0-9]+)` \|)");  // digits: motor.circuit.R_r2
+  std::istringstream in(markdown);
   for (std::string line; std::getline(in, line);) {
     std::smatch m;
     if (std::regex_search(line, m, row)) keys.insert(m[1]);
@@ -34,13 +36,52 @@ std::set<std::string> documentedKeys() {
   return keys;
 }
 
-TEST(SceneSchema, ReadmeDocumentsEveryKeyAndNoOther) {
-  const std::set<std::string> documented = documentedKeys();
+TEST(SceneReference, DocumentsEveryKeyAndNoOther) {
+  const std::set<std::string> documented = documentedKeys(sceneReferenceMarkdown());
   std::set<std::string> schema;
   for (const KeySpec& k : sceneSchema()) schema.insert(k.path);
-  for (const std::string& k : schema) EXPECT_TRUE(documented.count(k)) << "README lacks " << k;
-  for (const std::string& k : documented) EXPECT_TRUE(schema.count(k)) << "README has extra " << k;
+  EXPECT_EQ(documented, schema);
   EXPECT_GE(schema.size(), 50u);
+}
+
+TEST(SceneReference, CommittedPageIsTheGeneratedOne) {
+  // docs/scene-reference.md is generated from the schema: regenerate it after changing the
+  // schema with ./build/rollerdyn schema --markdown > docs/scene-reference.md
+  const std::string committed = committedReference();
+  ASSERT_FALSE(committed.empty()) << "docs/scene-reference.md is missing";
+  EXPECT_TRUE(committed == sceneReferenceMarkdown())
+      << "docs/scene-reference.md differs from the schema's reference: run\n"
+         "  ./build/rollerdyn schema --markdown > docs/scene-reference.md";
+}
+
+TEST(SceneReference, EveryKeyHasMeaningAndEveryConditionalKeySaysWhen) {
+  for (const SceneKeyDoc& k : sceneKeyDocs()) {
+    EXPECT_FALSE(k.meaning.empty()) << k.key;
+    EXPECT_FALSE(k.allowed.empty()) << k.key;
+    if (k.presence == "conditional") {
+      EXPECT_FALSE(k.condition.empty()) << k.key << ": say when it is required";
+    }
+    // An optional key has a default, except free text, which may be left out (source).
+    if (k.presence == "optional" && findSceneKey(k.key)->kind != KeyKind::Text) {
+      EXPECT_FALSE(k.default_value.empty()) << k.key;
+    }
+  }
+  // Physical quantities of the papers carry their source.
+  for (const char* key : {"crank.radius", "rods.length", "motor.breakdown_torque", "coupling.stiffness",
+                          "loads.roller_force_front", "reduced.kinematics"})
+    EXPECT_NE(findSceneKey(key)->source.find("("), std::string::npos) << key;
+}
+
+TEST(SceneReference, TableCellsEscapeTheBar) {
+  const std::string md = sceneReferenceMarkdown();
+  std::istringstream in(md);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("| `", 0) != 0) continue;
+    std::size_t bars = 0;
+    for (std::size_t i = 0; i < line.size(); ++i)
+      if (line[i] == '|' && (i == 0 || line[i - 1] != '\\')) ++bars;
+    EXPECT_EQ(bars, 7u) << line;  // six columns
+  }
 }
 
 TEST(SceneSchema, FixedKeyPathsExist) {
@@ -107,10 +148,34 @@ carts:
     com_height: 0.7
 motor:
   enabled: false
-  omega_sync: 157.08
+  omega_sync: 125.664
   breakdown_torque: 300
   critical_slip: 0.2
   rotor_inertia: 0.25
+  model: park
+  torque_time_constant: 0.05
+  voltage: 400
+  frequency: 60
+  connection: delta
+  pole_pairs: 3
+  circuit:
+    R_s: 0.1
+    L_sigma_s: 0.002
+    L_m: 0.05
+    R_r: 0.3
+    L_sigma_r: 0.001
+    R_r2: 0.05
+    L_sigma_r2: 0.004
+  catalogue:
+    power: 15000
+    omega_nominal: 122
+    current: 30
+    power_factor: 0.87
+    efficiency: 0.88
+    starting_torque_ratio: 1.2
+    breakdown_torque_ratio: 2.0
+    starting_current_ratio: 6.0
+    cages: 1
 reducer:
   ratio: 12
   efficiency: 0.8
@@ -135,6 +200,7 @@ loads:
     normal_force_lag: 0.004
   gravity: 9.8
   velocity_smoothing: 0.01
+  rolling_resistance: 0.05
 reduced:
   kinematics: truncated
   integrator: baranov
@@ -148,6 +214,7 @@ sizing:
   motor_nominal_torque: 120
   motor_efficiency: 0.9
   target_delta: 0.05
+  starts_per_hour: 6
   coupling_rated_torque: 9000
   bearing_rating:
     guide_roller: 1000
@@ -202,10 +269,33 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.carts.geometry.d, 0.06);
   EXPECT_DOUBLE_EQ(s.carts.geometry.com_height, 0.7);
   EXPECT_FALSE(s.motor.enabled);
-  EXPECT_DOUBLE_EQ(s.motor.omega_sync, 157.08);
+  EXPECT_DOUBLE_EQ(s.motor.omega_sync, 125.664);
   EXPECT_DOUBLE_EQ(s.motor.breakdown_torque, 300.0);
   EXPECT_DOUBLE_EQ(s.motor.critical_slip, 0.2);
   EXPECT_DOUBLE_EQ(s.motor.rotor_inertia, 0.25);
+  const InductionMotor& im = s.induction;
+  EXPECT_EQ(im.model, MotorModel::Park);
+  EXPECT_DOUBLE_EQ(im.torque_time_constant, 0.05);
+  EXPECT_DOUBLE_EQ(im.voltage, 400.0);
+  EXPECT_DOUBLE_EQ(im.frequency, 60.0);
+  EXPECT_EQ(im.connection, WindingConnection::Delta);
+  EXPECT_EQ(im.pole_pairs, 3);
+  EXPECT_DOUBLE_EQ(im.circuit.R_s, 0.1);
+  EXPECT_DOUBLE_EQ(im.circuit.L_sigma_s, 0.002);
+  EXPECT_DOUBLE_EQ(im.circuit.L_m, 0.05);
+  EXPECT_DOUBLE_EQ(im.circuit.R_r, 0.3);
+  EXPECT_DOUBLE_EQ(im.circuit.L_sigma_r, 0.001);
+  EXPECT_DOUBLE_EQ(im.circuit.R_r2, 0.05);
+  EXPECT_DOUBLE_EQ(im.circuit.L_sigma_r2, 0.004);
+  EXPECT_DOUBLE_EQ(im.catalogue.power, 15000.0);
+  EXPECT_DOUBLE_EQ(im.catalogue.omega_nominal, 122.0);
+  EXPECT_DOUBLE_EQ(im.catalogue.current, 30.0);
+  EXPECT_DOUBLE_EQ(im.catalogue.power_factor, 0.87);
+  EXPECT_DOUBLE_EQ(im.catalogue.efficiency, 0.88);
+  EXPECT_DOUBLE_EQ(im.catalogue.starting_torque_ratio, 1.2);
+  EXPECT_DOUBLE_EQ(im.catalogue.breakdown_torque_ratio, 2.0);
+  EXPECT_DOUBLE_EQ(im.catalogue.starting_current_ratio, 6.0);
+  EXPECT_EQ(im.catalogue.cages, 1);
   EXPECT_DOUBLE_EQ(s.reducer.ratio, 12.0);
   EXPECT_DOUBLE_EQ(s.reducer.efficiency, 0.8);
   EXPECT_DOUBLE_EQ(s.reducer.inertia, 0.05);
@@ -224,6 +314,7 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.loads.guide_friction, 0.02);
   EXPECT_DOUBLE_EQ(s.loads.gravity, 9.8);
   EXPECT_DOUBLE_EQ(s.loads.velocity_smoothing, 0.01);
+  EXPECT_DOUBLE_EQ(s.loads.rolling_resistance, 0.05);
   EXPECT_DOUBLE_EQ(s.loads.guide_friction_lag, 0.004);
   EXPECT_EQ(s.reduced.kinematics, KinematicsForm::Truncated);
   EXPECT_EQ(s.reduced.integrator, ReducedIntegrator::Baranov);
@@ -234,6 +325,7 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.sizing.motor_nominal_torque, 120.0);
   EXPECT_DOUBLE_EQ(s.sizing.motor_efficiency, 0.9);
   EXPECT_DOUBLE_EQ(s.sizing.target_delta, 0.05);
+  EXPECT_DOUBLE_EQ(s.sizing.starts_per_hour, 6.0);
   EXPECT_DOUBLE_EQ(s.sizing.coupling_rated_torque, 9000.0);
   EXPECT_DOUBLE_EQ(s.sizing.rating_guide_roller, 1000.0);
   EXPECT_DOUBLE_EQ(s.sizing.rating_rod_end, 2000.0);

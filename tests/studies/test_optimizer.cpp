@@ -39,8 +39,10 @@ TEST(Optimizer, TwoCartOffsetOptimumAgreesWithTheSweepParabola) {
   o.params = {{"crank.offset_deg", 0.0, 180.0}};
   o.model = "reduced";
   o.minimize = "delta";
+  o.method = "bobyqa";  // the local method alone: its cost against the sweep's
   const OptimizeResult r = runOptimize(o);
   EXPECT_EQ(r.method, "bobyqa");
+  EXPECT_NE(r.scope.find("local"), std::string::npos);
   ASSERT_TRUE(r.found) << r.stop_reason;
   const OptimizeEvaluation& best = r.history[r.best];
   EXPECT_NEAR(best.x[0], vertex, 0.5) << "sweep best " << sweep.points[b].values[0];
@@ -87,6 +89,7 @@ TEST(Optimizer, ThreeCartFlywheelForDelta005AgreesWithAFineSweep) {
   o.model = "reduced";
   o.minimize = "flywheel.inertia";
   o.constraints = {parseConstraint("delta<=0.05")};
+  o.method = "cobyla";  // the local method alone: its cost against the sweep's
   const OptimizeResult r = runOptimize(o);
   EXPECT_EQ(r.method, "cobyla");
   ASSERT_TRUE(r.found) << r.stop_reason;
@@ -100,6 +103,80 @@ TEST(Optimizer, ThreeCartFlywheelForDelta005AgreesWithAFineSweep) {
 // Loveikin, Pochka, Romasevych (2018): the balanced four-cart drive rocks at small Δφ (δ is then
 // meaningless, here even negative) and stalls at 80°. Such designs have the lowest δ numbers
 // but must never be the optimum.
+// The 6-cart trial: six carts of the balanced drive, δ against the crank offset over 0:180°. The
+// evenly spread layout 60° has δ ≈ 2e-4 (a sharp minimum: 0.1 at 55° and 65°); BOBYQA alone from
+// the middle of the range ends in the local minimum near 97.4° (δ ≈ 0.165), and said nothing.
+// The default must find 60° and say it searched globally; the local method must say it is local.
+TEST(Optimizer, DefaultFindsTheGlobalOffsetOfSixCartsAndLocalSaysItIsLocal) {
+  OptimizeOptions o;
+  o.scene_path = model("balanced-4cart.yaml");
+  o.base_overrides = {"carts.count=6"};
+  o.params = {{"crank.offset_deg", 0.0, 180.0}};
+  o.model = "reduced";
+  o.minimize = "delta";
+  const OptimizeResult r = runOptimize(o);
+  ASSERT_TRUE(r.found) << r.stop_reason;
+  EXPECT_NEAR(r.history[r.best].x[0], 60.0, 0.5) << r.stop_reason;
+  EXPECT_LT(r.history[r.best].objective, 0.01);
+  EXPECT_NE(r.scope.find("global"), std::string::npos) << r.scope;
+  for (double v : r.values_handed) EXPECT_TRUE(std::isfinite(v));  // no NaN or inf ever reaches NLopt
+
+  o.method = "bobyqa";
+  const OptimizeResult local = runOptimize(o);
+  ASSERT_TRUE(local.found);
+  EXPECT_GT(std::abs(local.history[local.best].x[0] - 60.0), 10.0);  // the trap this test is about
+  EXPECT_NE(local.scope.find("local"), std::string::npos) << local.scope;
+}
+
+// Early runs that are all unusable (six carts against forces opposing the velocity: every design
+// stalls) gave BOBYQA inf (top + 10·span with span = 1e-3·|-inf|); the values handed over must be
+// finite, and the search must end with "nothing usable", not an NLopt failure.
+TEST(Optimizer, UnusableEarlyRunsNeverHandNonFiniteValuesToNLopt) {
+  OptimizeOptions o;
+  o.scene_path = model("balanced-4cart.yaml");
+  o.base_overrides = {"carts.count=6", "loads.roller_force_direction=opposes_velocity", "simulation.t_end=2"};
+  o.params = {{"crank.offset_deg", 0.0, 180.0}};
+  o.model = "reduced";
+  o.minimize = "delta";
+  o.method = "bobyqa";
+  o.max_evals = 15;
+  const OptimizeResult r = runOptimize(o);
+  EXPECT_FALSE(r.found);
+  ASSERT_FALSE(r.values_handed.empty());
+  for (double v : r.values_handed) EXPECT_TRUE(std::isfinite(v)) << v;
+  EXPECT_EQ(r.stop_reason.find("NLopt failed"), std::string::npos) << r.stop_reason;
+}
+
+// The 6-cart trial at Δφ = 90° from rest: with a flywheel of 100 or 150 kg·m² the crank first
+// rocks (swinging back at about -1 rad/s for over a second) and then turns. The fixed 1 s rule
+// called those drives stalled, so the sweep showed them stalled and optimize found every
+// flywheel infeasible. Both must now turn, and optimize must find a feasible flywheel.
+TEST(Optimizer, RockingThenStartingDrivesAreFeasibleFlywheels) {
+  SweepOptions s;
+  s.scene_path = model("balanced-4cart.yaml");
+  s.base_overrides = {"carts.count=6", "crank.offset_deg=90", "simulation.t_end=20"};
+  s.params = {parseSweepValues("flywheel.inertia", "100,150")};
+  s.model = "reduced";
+  const SweepResult sweep = runSweep(s);
+  ASSERT_EQ(sweep.points.size(), 2u);
+  for (const SweepPoint& p : sweep.points) {
+    EXPECT_EQ(p.motion, "turning") << p.values[0] << ": " << p.status;
+    EXPECT_TRUE(p.complete) << p.status;
+    EXPECT_GT(p.metric("omega_crank_min"), 0.0);
+  }
+  OptimizeOptions o;
+  o.scene_path = s.scene_path;
+  o.base_overrides = s.base_overrides;
+  o.params = {{"flywheel.inertia", 0.0, 300.0}};
+  o.model = "reduced";
+  o.minimize = "flywheel.inertia";
+  o.constraints = {parseConstraint("delta<=0.16")};
+  const OptimizeResult r = runOptimize(o);
+  ASSERT_TRUE(r.found) << r.stop_reason;
+  EXPECT_LE(r.history[r.best].point.metric("delta"), 0.16);
+  EXPECT_LT(r.history[r.best].x[0], 150.0);  // δ(150) = 0.153 < 0.16: the optimum is below 150
+}
+
 TEST(Optimizer, RockingAndStalledDesignsAreNeverTheOptimum) {
   OptimizeOptions o;
   o.scene_path = model("balanced-4cart.yaml");
@@ -161,7 +238,7 @@ TEST(OptimizeCommand, ErrorsExitWithCode2AndSayWhy) {
   };
   test::CliResult r = with({"--range", "0:180", "--minimize", "deltaa"});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--minimize: expected a metric"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--minimize: unknown metric 'deltaa' (did you mean 'delta'?)"), std::string::npos) << r.err;
   r = with({"--range", "180:0", "--minimize", "delta"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--range for crank.offset_deg"), std::string::npos) << r.err;
@@ -178,7 +255,7 @@ TEST(OptimizeCommand, WritesOptimizeJsonAndHistory) {
       120);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(test::slurp(dir.path() / "optimize.json"));
-  EXPECT_EQ(j["method"], "cobyla");
+  EXPECT_EQ(j["method"], "cobyla, grid, cobyla");
   EXPECT_TRUE(j["constraints_hold"].get<bool>());
   const double inertia = j["optimum"]["parameters"]["flywheel.inertia"];
   EXPECT_LE(j["optimum"]["metrics"]["delta"].get<double>(), 0.05);

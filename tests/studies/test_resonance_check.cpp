@@ -41,14 +41,14 @@ TEST(ResonanceCheck, SummaryGetsWarningsForAnElasticSceneOnly) {
   Scene s = test_scenes::seed000Scene();
   const double J1 = s.motorSideInertia(), J2 = meanCrankSideInertia(s);
   const double omega = 10.4;
-  // Stiffness that puts p0 at 3ω·1.03: c = p0²·J1·J2/(J1 + J2).
-  const double p0 = 3 * omega * 1.03;
+  // Stiffness that puts p0 at 4ω·1.03 (four carts at 90° excite 4ω): c = p0²·J1·J2/(J1 + J2).
+  const double p0 = 4 * omega * 1.03;
   s.coupling.stiffness = p0 * p0 * J1 * J2 / (J1 + J2);
   nlohmann::json summary = {{"omega_crank", {{"mean", omega}}}, {"warnings", {"kept"}}};
   const auto added = addResonanceWarnings(s, summary);
   ASSERT_EQ(added.size(), 1u);
   EXPECT_EQ(summary["warnings"].size(), 2u);  // earlier warnings are kept
-  EXPECT_EQ(summary["resonance"]["hits"][0]["harmonic"], 3);
+  EXPECT_EQ(summary["resonance"]["hits"][0]["harmonic"], 4);
   EXPECT_NEAR(summary["resonance"]["p0"].get<double>(), p0, 1e-9 * p0);
 
   s.coupling.type = CouplingType::Rigid;
@@ -56,6 +56,32 @@ TEST(ResonanceCheck, SummaryGetsWarningsForAnElasticSceneOnly) {
   EXPECT_TRUE(addResonanceWarnings(s, rigid).empty());
   EXPECT_TRUE(rigid["warnings"].empty());
   EXPECT_FALSE(rigid["resonance"]["applicable"].get<bool>());
+}
+
+// The 6-cart trial: six equal carts at 60° on one side excite only 6ω, 12ω, ...; p0 = 6.09ω must
+// be flagged at order 6, and p0 = 3ω or 5ω, which this layout does not excite, must not be.
+TEST(ResonanceCheck, OrdersComeFromTheCartLayout) {
+  Scene s = test_scenes::seed000Scene();
+  s.carts.count = 6;
+  s.carts.side.assign(6, 1);
+  s.crank.offset = M_PI / 3;
+  EXPECT_EQ(excitationOrders(s), (std::vector<int>{6, 12}));
+  const double p0 = checkResonance(s, 10.0).p0;
+  const ResonanceReport near6 = checkResonance(s, p0 / 6.09);
+  ASSERT_EQ(near6.hits.size(), 1u);
+  EXPECT_EQ(near6.hits[0].harmonic, 6);
+  EXPECT_TRUE(checkResonance(s, p0 / 3.0).hits.empty());
+  EXPECT_TRUE(checkResonance(s, p0 / 5.0).hits.empty());
+
+  s.carts.count = 4;  // the papers' four carts at 90°: 4ω, 8ω, 12ω
+  s.carts.side.assign(4, 1);
+  s.crank.offset = M_PI / 2;
+  EXPECT_EQ(excitationOrders(s), (std::vector<int>{4, 8, 12}));
+  s.crank.offset = M_PI / 3;  // four carts at 0, 60, 120, 180°: only 3ω and 9ω cancel
+  EXPECT_EQ(excitationOrders(s), (std::vector<int>{1, 2, 4, 5, 6, 7, 8, 10, 11, 12}));
+  s.crank.offset = M_PI / 2;  // both sides (mirrored slider-cranks): every order
+  s.carts.side = {1, -1, 1, -1};
+  EXPECT_EQ(excitationOrders(s).size(), 12u);
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ void expectSameMetrics(const SweepPoint& row, const nlohmann::json& own, const s
       {"omega_crank_mean", own["omega_crank"]["mean"].get<double>()},
       {"omega_crank_max", own["omega_crank"]["max"].get<double>()},
       {"eps_crank_abs_max", own["eps_crank_abs_max"].get<double>()},
-      {"motor_torque_rms", own["sizing"]["motor"]["torque_shaft"]["rms"].get<double>()}};
+      {"motor_torque_rotor_rms", own["sizing"]["motor"]["torque_shaft"]["rms"].get<double>()}};
   for (const auto& [name, value] : m) EXPECT_EQ(row.metric(name), value) << what << ": " << name;
 }
 

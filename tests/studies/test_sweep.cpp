@@ -112,9 +112,11 @@ TEST(Sweep, WritesCsvJsonAndPlots) {
             "crank.offset_deg[deg],delta[-],H[-],k_p[-],omega_crank_mean[rad/s],coupling_torque_swing[N*m],"
             "twist_swing[rad],eps_crank_abs_max[rad/s^2],energy_residual_rel[-],steady_state_reached,motion,status,"
             "cpu_seconds[s],omega_crank_min[rad/s],omega_crank_max[rad/s],omega_crank_midrange[rad/s],"
-            "twist_rate_swing[rad/s],twist_accel_swing[rad/s^2],resonance_warnings,motor_torque_rms[N*m],"
-            "motor_torque_peak[N*m],motor_rms_over_nominal[-],motor_peak_over_breakdown[-],motor_power_mean[W],"
+            "twist_rate_swing[rad/s],twist_accel_swing[rad/s^2],resonance_warnings,motor_torque_rotor_rms[N*m],"
+            "motor_torque_rotor_peak[N*m],motor_rms_over_nominal[-],motor_peak_over_breakdown[-],motor_power_mean[W],"
             "motor_power_peak[W],energy_per_revolution[J],kinetic_energy_swing[J],coupling_torque_peak[N*m],"
+            "load_power_per_cart[W],load_net_over_gross[-],motor_torque_rotor_rms_whole_run[N*m],"
+            "motor_thermal_whole_run[-],motor_power_line_mean_whole_run[W],coupling_torque_peak_whole_run[N*m],"
             "guide_roller_peak[N],guide_roller_rear_peak[N],rod_force_peak[N],crank_pin_peak[N],"
             "main_bearing_peak[N],guide_roller_equivalent_load[N],crank_pin_equivalent_load[N],"
             "main_bearing_equivalent_load[N]");

@@ -18,7 +18,8 @@ PUB=validation/published
 [ -x "$R" ] || { echo "no rollerdyn executable at $R (set ROLLERDYN=...)" >&2; exit 2; }
 
 # A point that fails is recorded in its row and the sweep exits 3; keep going, the CSV says why.
-sweep() { "$R" sweep "$@" || [ $? -eq 3 ]; }
+# Exit 3: some point failed to run; 4: some drive stalls or rocks (both reported in sweep.csv).
+sweep() { local rc=0; "$R" sweep "$@" || rc=$?; [ $rc -eq 0 ] || [ $rc -eq 3 ] || [ $rc -eq 4 ]; }
 
 # join OURS PUB KEYS... : print ours (selected columns, renamed "ours_*") beside the published
 # row with the same key values. Column names are looked up in the headers (a unit in brackets,

@@ -1,0 +1,121 @@
+#include "modes/Campbell.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "modes/DriveOrbit.h"
+
+namespace rollerdyn::modes {
+
+namespace {
+
+// Speeds where f(ω) = line(ω) between grid points (linear interpolation of the difference).
+std::vector<double> crossingsOf(const std::vector<double>& w, const std::vector<double>& f, double slope) {
+  std::vector<double> out;
+  for (size_t i = 1; i < w.size(); ++i) {
+    const double a = f[i - 1] - slope * w[i - 1], b = f[i] - slope * w[i];
+    if (!std::isfinite(a) || !std::isfinite(b)) continue;
+    if (a == 0) out.push_back(w[i - 1]);
+    if ((a < 0) != (b < 0) && b != 0) out.push_back(w[i - 1] + (w[i] - w[i - 1]) * a / (a - b));
+  }
+  return out;
+}
+
+}  // namespace
+
+CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::vector<double>& speeds,
+                                const std::vector<int>& orders, int angles) {
+  CampbellDiagram d;
+  if (scene.coupling.type != CouplingType::Elastic) {
+    d.note = "rigid coupling: the drive has no torsional mode";
+    return d;
+  }
+  if (!scene.motor.enabled) {
+    d.note = "no motor: no steady running to vary";
+    return d;
+  }
+  d.applicable = true;
+  d.orders = orders;
+  Eigen::VectorXd warm;
+  for (double w : speeds) {
+    CampbellPoint p;
+    p.omega_target = w;
+    try {
+      const Scene s = sceneAtCrankSpeed(scene, w, omega_op);
+      auto drive = makeReducedDrive(s);
+      SteadyMotionOptions o;
+      o.samples = angles;
+      o.rtol = 1e-7;
+      if (warm.size()) {
+        o.start = warm;
+        o.start(0) = w;
+        o.warmup_periods = 0;
+      }
+      // Reference for the Floquet branch: frozen frequency at uniform rotation.
+      DrivePoint p0;
+      p0.phi = s.initial.crank_angle;
+      p0.omega = w;
+      o.reference_frequency = frozenModes(*drive, s, p0).torsional_frequency();
+      SteadyMotion m = steadyMotion(*drive, s, o);
+      if (!m.found) {
+        p.failure = m.failure;
+      } else {
+        p.found = true;
+        p.omega_mean = m.omega_mean;
+        warm = m.x0;
+        std::vector<double> f;
+        for (const DrivePoint& q : m.samples) f.push_back(frozenModes(*drive, s, q).torsional_frequency());
+        p.frozen = bandOf(f);
+        // Floquet frequency nearest the frozen mean.
+        const auto mult = classifyMultipliers(floquetMultipliers(m.monodromy, m.period, p.frozen.mean), true);
+        const FloquetVerdict v = judge(mult);
+        p.max_modulus = v.max_modulus;
+        if (v.has_torsional) {
+          p.floquet_frequency = v.torsional_frequency;
+          p.floquet_damping_ratio = v.torsional_damping_ratio;
+        }
+      }
+    } catch (const std::exception& e) {
+      p.failure = e.what();
+    }
+    d.points.push_back(p);
+  }
+  std::vector<double> w, fmean, fmin, fmax;
+  for (const CampbellPoint& p : d.points) {
+    if (!p.found) continue;
+    w.push_back(p.omega_mean);
+    fmean.push_back(p.frozen.mean);
+    fmin.push_back(p.frozen.min);
+    fmax.push_back(p.frozen.max);
+  }
+  for (int k : orders)
+    for (bool parametric : {false, true}) {
+      const double slope = parametric ? 0.5 * k : double(k);
+      const std::vector<double> cm = crossingsOf(w, fmean, slope);
+      const std::vector<double> clo = crossingsOf(w, fmin, slope), chi = crossingsOf(w, fmax, slope);
+      for (double x : cm) {
+        CampbellCrossing c;
+        c.order = k;
+        c.parametric = parametric;
+        c.omega = x;
+        c.frequency = slope * x;
+        // The band's edges: the crossings of the lowest and highest frequency nearest this one.
+        auto nearest = [x](const std::vector<double>& v) {
+          double best = NAN;
+          for (double y : v)
+            if (!std::isfinite(best) || std::abs(y - x) < std::abs(best - x)) best = y;
+          return best;
+        };
+        const double a = nearest(clo), b = nearest(chi);
+        c.omega_band_low = std::isfinite(a) && std::isfinite(b) ? std::min(a, b) : NAN;
+        c.omega_band_high = std::isfinite(a) && std::isfinite(b) ? std::max(a, b) : NAN;
+        d.crossings.push_back(c);
+      }
+    }
+  std::sort(d.crossings.begin(), d.crossings.end(),
+            [](const CampbellCrossing& a, const CampbellCrossing& b) { return a.omega < b.omega; });
+  return d;
+}
+
+}  // namespace rollerdyn::modes

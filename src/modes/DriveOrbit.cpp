@@ -1,0 +1,204 @@
+#include "modes/DriveOrbit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "modes/PeriodicFlow.h"
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn::modes {
+
+const char* toString(ModeKind k) { return k == ModeKind::Torsional ? "torsional (coupling)" : "speed (whole drive)"; }
+
+SteadyGuess steadyGuess(const Scene& scene) {
+  SteadyGuess g;
+  if (!scene.motor.enabled) {
+    g.failure = "no motor (motor.enabled is false): the drive has no steady running to linearize about";
+    return g;
+  }
+  const ReducedModel model(scene);
+  const double u = scene.reducer.ratio;
+  const double w_sync = scene.motor.omega_sync / u;                            // crank axis
+  const double w_kr = scene.motor.omega_sync * (1 - scene.motor.critical_slip) / u;  // breakdown
+  const int n = 720;
+  double mean = 0;
+  for (int i = 0; i < n; ++i) mean += model.loadTorque(2 * M_PI * i / n, 0.98 * w_sync);
+  mean /= n;
+  g.mean_load_torque = mean;
+  // The motor torque at the crank falls from breakdown (w_kr) to 0 (w_sync): bisect there.
+  if (mean > model.motorTorque(w_kr)) {
+    g.failure = "the mean load torque exceeds the motor's breakdown torque at the crank: the drive stalls";
+    return g;
+  }
+  double lo = w_kr, hi = w_sync;
+  if (mean <= 0) {
+    g.omega = w_sync;  // no net load (or driving loads): synchronous speed
+  } else {
+    for (int it = 0; it < 100; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (model.motorTorque(mid) > mean ? lo : hi) = mid;
+    }
+    g.omega = 0.5 * (lo + hi);
+  }
+  if (scene.coupling.type == CouplingType::Elastic) g.twist = mean / scene.coupling.stiffness;
+  g.ok = true;
+  return g;
+}
+
+Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_now) {
+  Scene s = scene;
+  const double w0 = scene.motor.omega_sync;
+  const double w0_new = w0 + scene.reducer.ratio * (omega_target - omega_now);
+  if (!(w0_new > 0)) throw std::invalid_argument("crank speed " + std::to_string(omega_target) + " rad/s is out of reach");
+  s.motor.omega_sync = w0_new;
+  s.motor.critical_slip = scene.motor.critical_slip * w0 / w0_new;
+  return s;
+}
+
+std::vector<ClassifiedMultiplier> classifyMultipliers(const std::vector<FloquetMultiplier>& m, bool elastic) {
+  std::vector<ClassifiedMultiplier> out;
+  for (const FloquetMultiplier& f : m) {
+    ClassifiedMultiplier c;
+    c.m = f;
+    // Speed mode: motor and crank side move together (the twist rate is a small part of the
+    // speed change). Torsional: they move against each other, |δψ̇| > |δφ̇2|.
+    c.kind = (elastic && f.vector.size() == 3 && std::abs(f.vector(2)) > std::abs(f.vector(0))) ? ModeKind::Torsional
+                                                                                               : ModeKind::Speed;
+    out.push_back(c);
+  }
+  return out;
+}
+
+FloquetVerdict judge(const std::vector<ClassifiedMultiplier>& m) {
+  FloquetVerdict v;
+  if (m.empty()) return v;
+  const ClassifiedMultiplier* worst = &m.front();
+  for (const auto& c : m)
+    if (c.m.modulus > worst->m.modulus) worst = &c;
+  v.max_modulus = worst->m.modulus;
+  v.margin = 1 - v.max_modulus;
+  v.slowest_decay_rate = -worst->m.growth_rate;
+  v.stable = v.max_modulus < 1;
+  for (const auto& c : m)
+    if (c.kind == ModeKind::Torsional && (!v.has_torsional || c.m.modulus > v.torsional_modulus)) {
+      v.has_torsional = true;
+      v.torsional_modulus = c.m.modulus;
+      v.torsional_frequency = c.m.frequency;
+      v.torsional_damping_ratio = c.m.damping_ratio;
+    }
+  // A multiplier below kResolvedModulus is only known to be small: the monodromy's entries carry
+  // the integration's absolute error (~1e-8), so its angle, and the frequency and damping ratio
+  // read from it, are noise.
+  if (v.has_torsional && v.torsional_modulus < kResolvedModulus) {
+    v.torsional_resolved = false;
+    v.torsional_frequency = v.torsional_damping_ratio = NAN;
+  }
+  if (v.stable)
+    v.text = "stable";
+  else if (worst->kind == ModeKind::Torsional)
+    v.text = "parametrically unstable";
+  else
+    v.text = "unstable speed mode";
+  return v;
+}
+
+SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMotionOptions& o) {
+  SteadyMotion r;
+  r.elastic = drive.elastic();
+  r.phi0 = scene.initial.crank_angle;
+  Eigen::VectorXd start = o.start;
+  double omega_scale = scene.motor.omega_sync / scene.reducer.ratio;
+  double twist_scale = 1e-6;
+  if (start.size() == 0) {
+    const SteadyGuess g = steadyGuess(scene);
+    if (!g.ok) {
+      r.failure = g.failure;
+      return r;
+    }
+    if (r.elastic)
+      start = Eigen::VectorXd(Eigen::Vector3d(g.omega, g.twist, 0.0));
+    else
+      start = Eigen::VectorXd::Constant(1, g.omega);
+  }
+  if (r.elastic) {
+    const double M_ref = std::max(scene.motor.breakdown_torque * scene.reducer.ratio * scene.reducer.efficiency, 1.0);
+    twist_scale = M_ref / scene.coupling.stiffness;
+  }
+  const bool quasi_static = o.quasi_static_auxiliary;
+  PeriodicSystem sys;
+  sys.n = r.elastic ? 3 : 1;
+  sys.quadratures = 1;
+  sys.period = 2 * M_PI;
+  if (r.elastic)
+    sys.scale = Eigen::VectorXd(Eigen::Vector3d(omega_scale, twist_scale, twist_scale * omega_scale));
+  else
+    sys.scale = Eigen::VectorXd::Constant(1, omega_scale);
+  const double phi0 = r.phi0;
+  const bool elastic = r.elastic;
+  sys.rhs = [&drive, phi0, elastic, quasi_static](double s, const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    DrivePoint p;
+    p.phi = phi0 + s;
+    p.omega = x(0);
+    if (elastic) {
+      p.twist = x(1);
+      p.twist_rate = x(2);
+    }
+    f.resize(x.size());
+    if (!(p.omega > 0)) {  // stalled or reversed: φ2 is no clock any more
+      f.setConstant(NAN);
+      return;
+    }
+    if (quasi_static) drive.setOperatingPoint(p);
+    const Eigen::Vector2d a = drive.accelerations(p);
+    f(0) = a(0) / p.omega;
+    if (elastic) {
+      f(1) = p.twist_rate / p.omega;
+      f(2) = a(1) / p.omega;
+    }
+    f(x.size() - 1) = 1.0 / p.omega;  // dt/dφ2
+  };
+  OrbitOptions oo;
+  oo.flow.rtol = o.rtol;
+  oo.flow.atol_scale = o.rtol;
+  oo.flow.samples = o.samples;
+  oo.warmup_periods = o.warmup_periods;
+  oo.max_newton = o.max_newton;
+  oo.tolerance = 10 * o.rtol;
+  oo.accept_stagnation = 1e-5;
+  const PeriodicOrbit orbit = findPeriodicOrbit(sys, start, oo);
+  r.evaluations = orbit.evaluations;
+  if (!orbit.found) {
+    r.failure = orbit.failure;
+    return r;
+  }
+  r.found = true;
+  r.x0 = orbit.x0;
+  r.monodromy = orbit.monodromy;
+  r.newton_iterations = orbit.newton_iterations;
+  r.period = orbit.quadratures(0);
+  r.omega_mean = 2 * M_PI / r.period;
+  for (size_t k = 0; k < orbit.s_samples.size(); ++k) {
+    const Eigen::VectorXd& x = orbit.x_samples[k];
+    DrivePoint p;
+    p.phi = phi0 + orbit.s_samples[k];
+    p.omega = x(0);
+    if (elastic) {
+      p.twist = x(1);
+      p.twist_rate = x(2);
+    }
+    r.samples.push_back(p);
+    r.sample_time.push_back(x(x.size() - 1));
+  }
+  r.multipliers = classifyMultipliers(floquetMultipliers(r.monodromy, r.period, o.reference_frequency), elastic);
+  for (ClassifiedMultiplier& c : r.multipliers)
+    if (c.kind == ModeKind::Speed) {  // its frequency (if any) is the principal branch, not the torsional one
+      c.m.frequency = std::abs(std::arg(c.m.mu)) / r.period;
+      const double wn = std::hypot(c.m.growth_rate, c.m.frequency);
+      c.m.damping_ratio = wn > 0 ? -c.m.growth_rate / wn : NAN;
+    }
+  r.verdict = judge(r.multipliers);
+  return r;
+}
+
+}  // namespace rollerdyn::modes

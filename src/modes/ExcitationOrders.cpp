@@ -1,0 +1,76 @@
+#include "modes/ExcitationOrders.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+#include <unsupported/Eigen/FFT>
+
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn::modes {
+
+double layoutFactor(const Scene& scene, int k) {
+  std::complex<double> sum = 0;
+  const int n = scene.carts.count;
+  for (int j = 0; j < n; ++j) {
+    const double theta = scene.crankPhase(j) + (scene.carts.side[j] < 0 ? M_PI : 0.0);
+    sum += std::polar(1.0, k * theta);
+  }
+  return std::abs(sum) / n;
+}
+
+namespace {
+
+std::vector<double> harmonics(const std::vector<double>& samples) {
+  Eigen::FFT<double> fft;
+  std::vector<std::complex<double>> spec;
+  fft.fwd(spec, samples);
+  const int n = int(samples.size());
+  std::vector<double> a(n / 2);
+  for (int k = 0; k < n / 2; ++k) a[k] = (k == 0 ? 1.0 : 2.0) * std::abs(spec[k]) / n;
+  return a;
+}
+
+}  // namespace
+
+ExcitationOrders excitationOrders(const Scene& scene, double omega, int max_order) {
+  ExcitationOrders e;
+  const ReducedModel model(scene);
+  const int n = 256;
+  std::vector<double> J(n), M(n);
+  for (int i = 0; i < n; ++i) {
+    const double phi = 2 * M_PI * i / n;
+    J[i] = model.crankSideInertia(phi);
+    M[i] = model.loadTorque(phi, omega);
+  }
+  const auto [jmin, jmax] = std::minmax_element(J.begin(), J.end());
+  const std::vector<double> hJ = harmonics(J), hM = harmonics(M);
+  e.inertia_mean = hJ[0];
+  e.inertia_relative_swing = hJ[0] > 0 ? (*jmax - *jmin) / hJ[0] : 0;
+  double maxJ = 0, maxM = 0;
+  for (int k = 1; k < n / 2; ++k) {
+    maxJ = std::max(maxJ, hJ[k]);
+    maxM = std::max(maxM, hM[k]);
+  }
+  // Floors: round-off of 256 samples of a smooth function is ~1e-15 of its size; 1e-9 of the
+  // largest harmonic keeps every physical order (the slider-crank's decay as (r/l)^k reaches
+  // 1e-9 only past order 15 at r/l = 0.25) and drops the cancelled ones.
+  const double floorJ = std::max(1e-9 * maxJ, 1e-12 * hJ[0]), floorM = 1e-9 * maxM;
+  for (int k = 1; k <= max_order && k < n / 2; ++k) {
+    OrderContent c;
+    c.order = k;
+    c.layout_factor = layoutFactor(scene, k);
+    c.inertia_amplitude = hJ[k];
+    c.load_amplitude = hM[k];
+    e.table.push_back(c);
+    if (c.layout_factor > 1e-9) e.layout.push_back(k);
+    const bool inJ = maxJ > 0 && hJ[k] > floorJ, inM = maxM > 0 && hM[k] > floorM;
+    if (inJ) e.inertia.push_back(k);
+    if (inM) e.load.push_back(k);
+    if (inJ || inM) e.all.push_back(k);
+  }
+  return e;
+}
+
+}  // namespace rollerdyn::modes

@@ -1,0 +1,47 @@
+// Which orders of the crank speed excite the drive: the harmonics k·ω of the crank-side reduced
+// inertia J_n2(φ2) (parametric excitation) and of the load torque (forced excitation).
+//
+// From the layout: every cart contributes the same function of its own crank angle θ_j, so a
+// harmonic of order k of the whole machine carries the factor Σ_j exp(i·k·θ_j) with the carts'
+// effective phases θ_j = j·Δφ, plus π for a cart on the opposite side (its slider-crank is the
+// same-side one turned by half a revolution and mirrored: x_B,opposite(θ) = -x_B,same(θ + π), so
+// its inertia x_B'² and its load torque are the same-side ones at θ + π). Order k survives when
+// that sum is not zero. N equal carts at equal offsets 2π/N on one side: only k·N; unequal
+// offsets: every order. The rods' own weight (distributed rods with gravity) does not follow the
+// mirror rule (their centre of mass rises and falls the same way on either side) and adds order 1
+// per cart with the phases j·Δφ.
+//
+// Measured: the Fourier series of J_n2(φ2) and of the load torque over one revolution of the
+// reduced model (Eigen's FFT, 256 samples), orders whose amplitude exceeds 1e-9 of the largest.
+#pragma once
+
+#include <vector>
+
+#include "scene/Scene.h"
+
+namespace rollerdyn::modes {
+
+struct OrderContent {
+  int order = 0;
+  double layout_factor = 0;     // |Σ_j exp(i·k·θ_j)| / n (1: all carts in phase, 0: cancelled)
+  double inertia_amplitude = 0; // amplitude of J_n2's harmonic k [kg·m²]
+  double load_amplitude = 0;    // amplitude of the load torque's harmonic k [N·m] at the speed given
+};
+
+struct ExcitationOrders {
+  std::vector<int> layout;          // orders 1..max_order that survive the layout's phase sums
+  std::vector<int> inertia;         // orders present in J_n2(φ2) (measured)
+  std::vector<int> load;            // orders present in the load torque (measured)
+  std::vector<int> all;             // union of inertia and load: the orders the Campbell diagram draws
+  std::vector<OrderContent> table;  // orders 1..max_order
+  double inertia_mean = 0;          // J_n2's mean [kg·m²]
+  double inertia_relative_swing = 0;  // (max - min)/mean of J_n2 over a revolution [-]
+};
+
+// Orders up to max_order; the load torque at crank speed `omega` [rad/s].
+ExcitationOrders excitationOrders(const Scene& scene, double omega, int max_order = 24);
+
+// The layout's phase factor for order k (see above) [-].
+double layoutFactor(const Scene& scene, int k);
+
+}  // namespace rollerdyn::modes

@@ -1,0 +1,234 @@
+#include "modes/ModalAnalysis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <sstream>
+
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn::modes {
+namespace {
+
+ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::vector<DrivePoint>& points) {
+  ModelFrozenModes m;
+  m.model = drive.name();
+  std::vector<double> p, z, em, es, ec;
+  for (const DrivePoint& q : points) {
+    FrozenAngle f = frozenModes(drive, scene, q);
+    for (const FrozenMode& mode : f.modes) {
+      if (mode.torsional) {
+        p.push_back(mode.frequency);
+        z.push_back(mode.damping_ratio);
+        em.push_back(mode.energy_motor_side);
+        es.push_back(mode.energy_shaft_rods);
+        ec.push_back(mode.energy_carts);
+        m.torsional_name = mode.name;
+      } else {
+        m.rigid_name = mode.name;
+      }
+    }
+    m.angles.push_back(std::move(f));
+  }
+  m.torsional = bandOf(p);
+  m.torsional_damping = bandOf(z);
+  m.energy_motor_side = bandOf(em).mean;
+  m.energy_shaft_rods = bandOf(es).mean;
+  m.energy_carts = bandOf(ec).mean;
+  m.ok = true;
+  return m;
+}
+
+}  // namespace
+
+ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
+  const std::clock_t c0 = std::clock();
+  ModesReport r;
+  r.scene = scene.name;
+  r.elastic = scene.coupling.type == CouplingType::Elastic;
+  r.motor = scene.motor.enabled;
+  const ReducedModel rm(scene);
+
+  // First estimate: two constant inertias (Dyomin (two rotors) eq. (10)).
+  {
+    double J2 = 0;
+    const int n = 720;
+    for (int i = 0; i < n; ++i) J2 += rm.crankSideInertia(2 * M_PI * i / n);
+    r.two_mass.J2_mean = J2 / n;
+    r.two_mass.J1 = scene.motorSideInertia();
+    if (r.elastic) {
+      r.two_mass.applicable = true;
+      r.two_mass.stiffness = scene.coupling.stiffness;
+      const double J1 = r.two_mass.J1, J2m = r.two_mass.J2_mean;
+      r.two_mass.p0 = std::sqrt(r.two_mass.stiffness * (J1 + J2m) / (J1 * J2m));
+    }
+  }
+
+  // 1. Steady motion (reduced model) and its Floquet multipliers.
+  auto reduced = makeReducedDrive(scene);
+  SteadyMotionOptions so;
+  so.samples = o.angles;
+  {
+    DrivePoint p0;
+    p0.phi = scene.initial.crank_angle;
+    const SteadyGuess g = steadyGuess(scene);
+    p0.omega = g.ok ? g.omega : std::max(std::abs(scene.initial.crank_speed), 1.0);
+    p0.twist = g.twist;
+    so.reference_frequency = r.elastic ? frozenModes(*reduced, scene, p0).torsional_frequency() : 0.0;
+  }
+  r.steady = steadyMotion(*reduced, scene, so);
+  std::vector<DrivePoint> points = r.steady.samples;
+  if (!r.steady.found) {
+    r.notes.push_back("no steady motion (" + r.steady.failure +
+                      "): frozen-angle modes at uniform rotation with the initial speed instead; no Floquet analysis");
+    const double w = std::max(std::abs(scene.initial.crank_speed), 1.0);
+    for (int k = 0; k < o.angles; ++k) {
+      DrivePoint p;
+      p.phi = scene.initial.crank_angle + 2 * M_PI * k / o.angles;
+      p.omega = w;
+      p.twist = scene.initial.twist;
+      points.push_back(p);
+    }
+  }
+
+  // 2. Frozen-angle modes, both models.
+  r.frozen.push_back(frozenAlong(*reduced, scene, points));
+  if (r.elastic && r.steady.found) {  // refine the Floquet frequency branch with the frozen mean
+    r.steady.multipliers = classifyMultipliers(
+        floquetMultipliers(r.steady.monodromy, r.steady.period, r.frozen[0].torsional.mean), true);
+    for (ClassifiedMultiplier& c : r.steady.multipliers)
+      if (c.kind == ModeKind::Speed) {
+        c.m.frequency = std::abs(std::arg(c.m.mu)) / r.steady.period;
+        const double wn = std::hypot(c.m.growth_rate, c.m.frequency);
+        c.m.damping_ratio = wn > 0 ? -c.m.growth_rate / wn : NAN;
+      }
+    r.steady.verdict = judge(r.steady.multipliers);
+  }
+  if (o.multibody) {
+    try {
+      auto mb = makeMultibodyDrive(scene);
+      r.frozen.push_back(frozenAlong(*mb, scene, points));
+      if (r.elastic) {
+        double d = 0;
+        for (size_t i = 0; i < points.size(); ++i) {
+          const double a = r.frozen[0].angles[i].torsional_frequency(), b = r.frozen[1].angles[i].torsional_frequency();
+          if (std::isfinite(a) && std::isfinite(b)) d = std::max(d, std::abs(a - b) / a);
+        }
+        r.model_difference = d;
+      }
+      if (o.multibody_floquet && r.steady.found) {
+        SteadyMotionOptions mo = so;
+        mo.samples = 0;
+        mo.rtol = 1e-8;
+        mo.start = r.steady.x0;
+        mo.warmup_periods = 0;
+        mo.reference_frequency = r.elastic ? r.frozen[0].torsional.mean : 0.0;
+        r.steady_multibody = steadyMotion(*mb, scene, mo);
+        r.has_multibody_steady = true;
+      }
+    } catch (const std::exception& e) {
+      ModelFrozenModes m;
+      m.model = "multibody";
+      m.failure = e.what();
+      r.frozen.push_back(m);
+    }
+  }
+
+  // 3. Excitation orders at the operating speed.
+  const double w_op = r.steady.found ? r.steady.omega_mean : (points.empty() ? 1.0 : points[0].omega);
+  r.orders = excitationOrders(scene, w_op);
+
+  // 4. Campbell diagram.
+  if (o.campbell && r.elastic && r.steady.found) {
+    std::vector<int> orders;
+    const double p_top = 1.3 * std::max(r.frozen[0].torsional.max, r.two_mass.p0);
+    for (int k : r.orders.all)
+      if (0.5 * k * o.speed_low * w_op <= p_top) orders.push_back(k);
+    r.campbell = campbellDiagram(scene, w_op, linearGrid(o.speed_low * w_op, o.speed_high * w_op, o.speeds), orders,
+                                 36);
+    int failed = 0;
+    std::string first;
+    for (const CampbellPoint& p : r.campbell.points)
+      if (!p.found && failed++ == 0) first = p.failure;
+    if (failed)
+      r.notes.push_back("Campbell diagram: no steady motion at " + std::to_string(failed) + " of " +
+                        std::to_string(r.campbell.points.size()) + " speeds (" + first + ")");
+  } else if (o.campbell) {
+    r.campbell.note = !r.elastic ? "rigid coupling: the drive has no torsional mode" : "no steady motion";
+  }
+
+  // 5. Stability charts.
+  if (o.charts && r.steady.found) {
+    double c_ref = scene.coupling.stiffness;
+    if (!r.elastic) {  // the stiffness that would put the two-mass p0 at 6ω
+      const double J1 = r.two_mass.J1, J2 = r.two_mass.J2_mean, p = 6 * w_op;
+      c_ref = p * p * J1 * J2 / (J1 + J2);
+      r.notes.push_back("rigid coupling: the stability charts show what an elastic coupling of stiffness c would do");
+    }
+    const std::vector<double> c = geometricGrid(o.c_low * c_ref, o.c_high * c_ref, o.chart_c);
+    std::vector<double> dampings = o.chart_dampings;
+    if (dampings.empty()) dampings.push_back(r.elastic ? scene.coupling.damping : 0.0);
+    for (double k : dampings)
+      r.charts.push_back(chartOverSpeed(scene, w_op,
+                                        c, linearGrid(o.chart_speed_low * w_op, o.chart_speed_high * w_op, o.chart_y), k));
+    double k_top = o.damping_high;
+    if (!(k_top > 0)) {
+      k_top = std::max(1000.0, r.elastic ? scene.coupling.damping : 0.0);
+      for (double k : o.marked_dampings) k_top = std::max(k_top, k);
+      k_top *= 2;
+    }
+    r.charts.push_back(chartOverDamping(scene, w_op, c, linearGrid(0.0, k_top, o.chart_y)));
+    r.charts.back().marked = o.marked_dampings;
+    if (!r.elastic) r.charts.back().operating_y = NAN;
+  }
+  r.warnings = modalWarnings(r);
+  r.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
+  return r;
+}
+
+std::vector<std::string> modalWarnings(const ModesReport& r) {
+  std::vector<std::string> w;
+  if (!r.elastic || !r.steady.found || r.frozen.empty()) return w;
+  const FloquetVerdict& v = r.steady.verdict;
+  char buf[512];
+  if (!v.stable) {
+    std::snprintf(buf, sizeof buf,
+                  "%s: the largest Floquet multiplier of the drive linearized about its steady motion has "
+                  "|mu| = %.4g per crank revolution (> 1: a disturbance grows %.3g-fold each turn, growth rate "
+                  "%.3g 1/s); the steady running at omega = %.4g rad/s is unstable",
+                  v.text == "parametrically unstable" ? "parametric resonance" : "unstable steady motion",
+                  v.max_modulus, v.max_modulus, -v.slowest_decay_rate, r.steady.omega_mean);
+    w.push_back(buf);
+  }
+  // Forced resonance: the torsional mode's Floquet frequency p_F within 5 % of k·ω for an order k
+  // that carries at least 1 % of the largest exciting torque harmonic: load torque plus the
+  // inertia's own torque ½·J_n2'·ω² (order k of J_n2 with amplitude J_k gives ½·k·J_k·ω²).
+  const double w_op = r.steady.omega_mean;
+  if (v.has_torsional && v.torsional_resolved && std::isfinite(v.torsional_frequency)) {
+    // Undamped natural frequency from the multipliers, √(σ² + ω_d²) = ω_d/√(1 - ζ²): where a forced
+    // response peaks.
+    const double zeta = v.torsional_damping_ratio;
+    const double pf = v.torsional_frequency / std::sqrt(std::max(1e-12, 1 - zeta * zeta));
+    double largest = 0;
+    for (const OrderContent& c : r.orders.table)
+      largest = std::max(largest, c.load_amplitude + 0.5 * c.order * c.inertia_amplitude * w_op * w_op);
+    for (const OrderContent& c : r.orders.table) {
+      const double torque = c.load_amplitude + 0.5 * c.order * c.inertia_amplitude * w_op * w_op;
+      if (!(largest > 0) || torque < 0.01 * largest) continue;
+      const double f = c.order * w_op;
+      if (std::abs(pf - f) > 0.05 * f) continue;
+      std::snprintf(buf, sizeof buf,
+                    "torsional resonance: the coupling mode's natural frequency from the Floquet multipliers, p = %.4g rad/s, "
+                    "is within 5 %% of order %d of the crank speed (%d*omega = %.4g rad/s), which carries %.3g N*m "
+                    "(%.0f %% of the largest exciting harmonic); damping ratio %.3g (frozen-angle band p = %.4g ... "
+                    "%.4g rad/s)",
+                    pf, c.order, c.order, f, torque, 100 * torque / largest, v.torsional_damping_ratio,
+                    r.frozen[0].torsional.min, r.frozen[0].torsional.max);
+      w.push_back(buf);
+    }
+  }
+  return w;
+}
+
+}  // namespace rollerdyn::modes

@@ -1,0 +1,101 @@
+// `rollerdyn modes`: the torsional modes and the stability of a drive in one analysis.
+//   1. steady motion of the reduced model (a periodic orbit, DriveOrbit.h) at the scene's operating
+//      point, its Floquet multipliers and verdict (and the multibody model's, where asked);
+//   2. frozen-angle modes along that motion from both models (FrozenModes.h), side by side;
+//   3. the excitation orders of the layout (ExcitationOrders.h);
+//   4. the Campbell diagram over crank speed (Campbell.h);
+//   5. stability charts over coupling stiffness × crank speed and × damping (StabilityChart.h).
+// The two-mass estimate of Dyomin (two rotors) eq. (10) with the mean crank-side inertia is given
+// beside it as the first, cheap estimate it is.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/Table.h"
+#include "modes/Campbell.h"
+#include "modes/DriveOrbit.h"
+#include "modes/ExcitationOrders.h"
+#include "modes/FrozenModes.h"
+#include "modes/StabilityChart.h"
+#include "scene/Scene.h"
+
+namespace rollerdyn::modes {
+
+struct ModesOptions {
+  bool multibody = true;         // frozen-angle modes (and Floquet) of the multibody model too
+  bool multibody_floquet = true; // the multibody model's own steady motion and multipliers
+  int angles = 72;               // frozen-angle samples per revolution
+  bool campbell = true;
+  int speeds = 21;               // Campbell speeds from speed_low·ω to speed_high·ω
+  double speed_low = 0.3, speed_high = 1.5;
+  bool charts = true;
+  int chart_c = 16, chart_y = 10;  // grid points: stiffness, speed (or damping)
+  double c_low = 0.05, c_high = 5.0;  // stiffness range as factors of the scene's c (rigid: of the
+                                      // stiffness that puts the two-mass p0 at 6ω)
+  double chart_speed_low = 0.4, chart_speed_high = 1.3;
+  std::vector<double> chart_dampings;  // c × ω charts at these k; empty: the scene's k
+  std::vector<double> marked_dampings; // k values marked on the c × k chart (e.g. a paper's)
+  double damping_high = 0;             // top of the c × k chart; 0: 2·max(scene k, marked, 1000)
+};
+
+struct ModelFrozenModes {
+  std::string model;             // "reduced" | "multibody"
+  bool ok = false;
+  std::string failure;
+  std::vector<FrozenAngle> angles;  // along the steady motion
+  Band torsional;                // torsional frequency over the revolution [rad/s]
+  Band torsional_damping;        // its frozen damping ratio [-]
+  std::string torsional_name, rigid_name;
+  double energy_motor_side = NAN, energy_shaft_rods = NAN, energy_carts = NAN;  // torsional mode, mean
+};
+
+struct TwoMassEstimate {
+  bool applicable = false;
+  double J1 = 0, J2_mean = 0, stiffness = 0, p0 = 0;  // Dyomin (two rotors) eq. (10)
+};
+
+struct ModesReport {
+  std::string scene;
+  bool elastic = false, motor = false;
+  double cpu_seconds = 0;
+  TwoMassEstimate two_mass;
+  SteadyMotion steady;            // reduced model
+  SteadyMotion steady_multibody;  // when asked
+  bool has_multibody_steady = false;
+  ExcitationOrders orders;
+  std::vector<ModelFrozenModes> frozen;  // reduced first
+  double model_difference = NAN;  // max relative difference of the torsional frequencies
+  CampbellDiagram campbell;
+  std::vector<StabilityChart> charts;
+  std::vector<std::string> warnings;  // resonance warnings resting on this analysis
+  std::vector<std::string> notes;     // what was not done and why
+};
+
+ModesReport analyseModes(const Scene& scene, const ModesOptions& options = {});
+
+nlohmann::json modesJson(const ModesReport& r);
+Table frozenTable(const ModesReport& r);    // frozen.csv
+Table campbellTable(const ModesReport& r);  // campbell.csv
+Table stabilityTable(const ModesReport& r); // stability.csv (all charts, long format)
+std::string modesText(const ModesReport& r);  // the console's lines
+
+// What `rollerdyn modes` writes into out_dir (which must exist): modes.json, frozen.csv,
+// campbell.csv, stability.csv.
+void writeModesFiles(const std::string& out_dir, const ModesReport& r);
+
+// The charts' stiffness range lo ... hi [N·m/rad] (`modes --stiffness LO:HI`) as the factors of
+// the scene's coupling stiffness the options hold. Throws std::invalid_argument starting with
+// `what` unless 0 < lo < hi and the coupling is elastic.
+void setChartStiffness(ModesOptions& o, const Scene& scene, double lo, double hi, const std::string& what);
+
+// Resonance warnings of the analysis: the steady motion unstable (a Floquet multiplier > 1), or the
+// torsional mode's Floquet frequency within 5 % of k·ω for an order k carrying at least 1 % of the
+// largest exciting torque harmonic (none when the mode decays more than a million-fold per
+// revolution: nothing can build up).
+std::vector<std::string> modalWarnings(const ModesReport& r);
+
+}  // namespace rollerdyn::modes

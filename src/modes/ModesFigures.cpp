@@ -1,0 +1,314 @@
+#include "modes/ModesFigures.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "io/ReadFile.h"
+#include "report/Gnuplot.h"
+#include "report/HtmlReport.h"
+
+namespace rollerdyn::modes {
+namespace {
+
+FigureFile fileOf(const std::string& dir, const std::string& name, const std::string& caption) {
+  return {name, caption, dir + "/" + name + ".png", dir + "/" + name + ".svg"};
+}
+
+std::string g(double v, const char* f = "%.4g") {
+  if (!std::isfinite(v)) return "–";
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+}  // namespace
+
+FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
+  FigureSet set;
+  if (!gnuplotAvailable()) {
+    set.notes.push_back("gnuplot not found (Debian package gnuplot-nox): no figures of the torsional modes");
+    return set;
+  }
+  // Frozen-angle frequencies over the crank angle, both models.
+  if (r.elastic && !r.frozen.empty()) {
+    PlotSpec s;
+    s.title = "Frozen-angle torsional natural frequency over one crank revolution";
+    s.xlabel = "crank angle φ_2 [deg]";
+    s.ylabel = "p [rad/s]";
+    const char* colors[] = {"#1f77b4", "#d62728"};
+    for (size_t m = 0; m < r.frozen.size(); ++m) {
+      if (!r.frozen[m].ok) continue;
+      PlotSeries line;
+      line.title = r.frozen[m].model + " model";
+      line.color = colors[m % 2];
+      line.dash = m ? 2 : 0;
+      line.line_width = 2;
+      for (const FrozenAngle& a : r.frozen[m].angles) {
+        line.x.push_back(std::fmod(a.point.phi, 2 * M_PI) * 180 / M_PI);
+        line.y.push_back(a.torsional_frequency());
+      }
+      s.series.push_back(line);
+    }
+    PlotSeries est;
+    est.title = "first estimate: two constant inertias (Dyomin p_0)";
+    est.color = "#7f7f7f";
+    est.dash = 3;
+    est.x = {0, 360};
+    est.y = {r.two_mass.p0, r.two_mass.p0};
+    s.series.push_back(est);
+    if (r.steady.found && r.steady.verdict.has_torsional && r.steady.verdict.torsional_resolved) {
+      PlotSeries fl;
+      fl.title = "Floquet frequency of the steady motion";
+      fl.color = "#2ca02c";
+      fl.x = {0, 360};
+      fl.y = {r.steady.verdict.torsional_frequency, r.steady.verdict.torsional_frequency};
+      s.series.push_back(fl);
+    }
+    s.preamble = "set xrange [0:360]\nset xtics 45\nset key inside bottom right";
+    renderPlot(s, dir + "/frozen_frequencies");
+    set.figures.push_back(fileOf(dir, "frozen_frequencies",
+                                 "Torsional natural frequency of the drive with the crank angle frozen, along the "
+                                 "steady motion: both models, the two-mass first estimate and the Floquet frequency."));
+  }
+  // Campbell diagram.
+  int campbell_found = 0;
+  for (const CampbellPoint& p : r.campbell.points) campbell_found += p.found;
+  if (r.campbell.applicable && campbell_found >= 2) {
+    PlotSpec s;
+    s.title = "Campbell diagram: torsional frequency against the orders of the crank speed";
+    s.xlabel = "mean crank speed ω [rad/s]";
+    s.ylabel = "frequency [rad/s]";
+    PlotSeries mean, lo, hi, fl;
+    mean.title = "p, frozen-angle mean";
+    mean.color = "#1f77b4";
+    mean.line_width = 2.5;
+    lo.title = "p band over the crank angle";
+    lo.color = hi.color = "#1f77b4";
+    lo.dash = hi.dash = 2;
+    hi.title = "";
+    fl.title = "Floquet frequency";
+    fl.color = "#2ca02c";
+    fl.style = "linespoints";
+    double wmax = 0, fmax = 0;
+    for (const CampbellPoint& p : r.campbell.points) {
+      if (!p.found) continue;
+      mean.x.push_back(p.omega_mean);
+      mean.y.push_back(p.frozen.mean);
+      lo.x.push_back(p.omega_mean);
+      lo.y.push_back(p.frozen.min);
+      hi.x.push_back(p.omega_mean);
+      hi.y.push_back(p.frozen.max);
+      fl.x.push_back(p.omega_mean);
+      fl.y.push_back(p.floquet_frequency);
+      wmax = std::max(wmax, p.omega_mean);
+      fmax = std::max(fmax, p.frozen.max);
+    }
+    s.series = {mean, lo, hi, fl};
+    for (int k : r.campbell.orders) {
+      PlotSeries o;
+      o.title = "";
+      o.color = "#bbbbbb";
+      o.x = {0, wmax};
+      o.y = {0, k * wmax};
+      s.series.push_back(o);
+      PlotSeries h = o;
+      h.dash = 3;
+      h.color = "#e8a0a0";
+      h.y = {0, 0.5 * k * wmax};
+      s.series.push_back(h);
+    }
+    std::ostringstream pre;
+    pre << "set xrange [0:" << wmax << "]\nset yrange [0:" << 1.3 * fmax << "]\nset key inside top left\n";
+    for (int k : r.campbell.orders)
+      if (k * wmax * 0.9 < 1.3 * fmax)
+        pre << "set label '" << k << "ω' at " << 0.9 * wmax << "," << 0.9 * k * wmax << " tc rgb '#888888'\n";
+    if (r.steady.found)
+      pre << "set arrow from " << r.steady.omega_mean << ",graph 0 to " << r.steady.omega_mean
+          << ",graph 1 nohead dt 2 lc rgb 'black'\nset label 'operating speed' at " << r.steady.omega_mean
+          << ",graph 0.97 left offset 0.5,0\n";
+    s.preamble = pre.str();
+    renderPlot(s, dir + "/campbell");
+    set.figures.push_back(fileOf(dir, "campbell",
+                                 "Campbell diagram: solid grey lines k·ω (forced resonance where the torsional "
+                                 "frequency meets them), dotted red lines k·ω/2 (principal parametric resonance, "
+                                 "2p = k·ω), for the orders k that excite this layout; crank speed varied as by a "
+                                 "frequency converter."));
+  }
+  // Stability charts.
+  for (size_t n = 0; n < r.charts.size(); ++n) {
+    const StabilityChart& c = r.charts[n];
+    std::vector<double> x;
+    for (double v : c.c) x.push_back(std::log10(v));
+    std::vector<std::vector<double>> z;
+    for (const auto& row : c.grid) {
+      std::vector<double> zr;
+      for (const StabilityPoint& p : row) zr.push_back(p.found ? std::log10(std::max(p.max_modulus, 1e-12)) : NAN);
+      z.push_back(zr);
+    }
+    std::ostringstream pre;
+    pre << "set xtics (";
+    bool first = true;
+    for (int e = int(std::floor(x.front())); e <= int(std::ceil(x.back())); ++e) {
+      pre << (first ? "" : ", ") << "'10^{" << e << "}' " << e;
+      first = false;
+    }
+    pre << ")\nset cbrange [*:1]\n";
+    if (x.size() > 1 && c.y.size() > 1) {  // the grid's cells, no padding around them
+      const double dx = (x.back() - x.front()) / (x.size() - 1), dy = (c.y.back() - c.y.front()) / (c.y.size() - 1);
+      pre << "set xrange [" << x.front() - dx / 2 << ":" << x.back() + dx / 2 << "]\nset yrange ["
+          << c.y.front() - dy / 2 << ":" << c.y.back() + dy / 2 << "]\n";
+    }
+    if (std::isfinite(c.operating_c) && std::isfinite(c.operating_y))
+      pre << "set label 1 '' at " << std::log10(c.operating_c) << "," << c.operating_y
+          << " point pt 7 ps 2.5 lc rgb 'white' front\nset label 2 'scene' at " << std::log10(c.operating_c) << ","
+          << c.operating_y << " offset 1.2,0.8 tc rgb 'white' front\n";
+    int label = 10;
+    for (double m : c.marked)  // e.g. a paper's dampings: a dashed line across the chart
+      pre << "set arrow from graph 0, first " << m << " to graph 1, first " << m
+          << " nohead dt 2 lw 2 lc rgb 'white' front\nset label " << label++ << " '" << c.y_key_label() << " = " << g(m)
+          << "' at graph 0.02, first " << m << " offset 0,0.6 tc rgb 'white' front\n";
+    for (const StabilityZone& zz : c.zones)
+      pre << "set object rect from " << std::log10(zz.c_min) << "," << zz.y_min << " to " << std::log10(zz.c_max)
+          << "," << zz.y_max << " fs empty border lc rgb 'white' lw 2 front\n";
+    const std::string title =
+        c.y_key == "omega" ? "Stability of the steady motion: largest Floquet multiplier, k = " + g(c.fixed_damping) +
+                                 " N·m·s/rad"
+                           : "Stability of the steady motion: largest Floquet multiplier, ω = " + g(c.fixed_speed) +
+                                 " rad/s";
+    const std::string name = "stability_" + std::to_string(n + 1);
+    renderHeatMap(title, "coupling stiffness c [N·m/rad] (log scale)",
+                  c.y_key == "omega" ? "mean crank speed ω [rad/s]" : "coupling damping k [N·m·s/rad]",
+                  "log_{10} max|μ| per revolution (> 0: unstable)", x, c.y, z, dir + "/" + name, true, true,
+                  pre.str());
+    set.figures.push_back(fileOf(dir, name,
+                                 "Stability chart from the Floquet multipliers of the steady motion (reduced model): "
+                                 "colour = log10 of the largest multiplier modulus per crank revolution (0 and above: "
+                                 "unstable; white boxes: unstable zones); white dot: the scene."));
+  }
+  return set;
+}
+
+FigureSet drawSpectrumFigures(const OrderSpectrum& s, const std::string& dir) {
+  FigureSet set;
+  if (!s.ok || !gnuplotAvailable()) return set;
+  // One figure per group: coupling torque (and motor torque), guide reactions, rod and pin forces.
+  struct Group {
+    std::string name, title, prefix1, prefix2;
+  };
+  const Group groups[] = {{"spectrum_torque", "coupling torque", "coupling_torque", "motor_torque"},
+                          {"spectrum_guides", "guide reactions", "N_front_", "N_rear_"},
+                          {"spectrum_rods", "rod forces and bearing", "F_rod_", "bearing_"}};
+  for (const Group& gr : groups) {
+    PlotSpec p;
+    p.title = "Order spectrum over the steady window (" + std::to_string(s.revolutions) + " revolutions): " + gr.title;
+    p.xlabel = "order of the crank speed k [-]";
+    p.ylabel = "amplitude [N·m or N] (log scale)";
+    p.logy = true;
+    for (size_t i = 0; i < s.signals.size(); ++i) {
+      const std::string& c = s.signals[i];
+      if (c.rfind(gr.prefix1, 0) != 0 && c.rfind(gr.prefix2, 0) != 0) continue;
+      PlotSeries line;
+      line.title = escapeUnderscores(c);
+      line.style = "linespoints";
+      for (size_t b = 1; b < s.orders.size(); ++b) {
+        line.x.push_back(s.orders[b]);
+        line.y.push_back(std::max(s.amplitude[i][b], 1e-9));
+      }
+      p.series.push_back(line);
+    }
+    if (p.series.empty()) continue;
+    p.preamble = "set xtics 1\nset grid xtics";
+    renderPlot(p, dir + "/" + gr.name);
+    set.figures.push_back(fileOf(dir, gr.name,
+                                 "Order spectrum of the " + gr.title +
+                                     ": one-sided amplitude of each harmonic of the crank revolution over the steady "
+                                     "window; a peak between whole orders is a vibration not locked to the crank "
+                                     "(e.g. half an order: parametric resonance)."));
+  }
+  return set;
+}
+
+std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, const OrderSpectrum* spectrum) {
+  std::ostringstream h;
+  h << "<h2 id=\"modes\">Torsional modes and stability</h2>\n";
+  h << "<p class=\"small\">The drive linearized about its steady motion: frozen-angle modes (the crank angle held, "
+       "both models), Floquet multipliers of the steady motion over one revolution (exact for the linearized "
+       "periodic motion), Campbell diagram and stability charts. The two-mass value is the first, cheap estimate "
+       "(two constant inertias, Dyomin (two rotors) eq. (10)).</p>\n";
+  h << "<table>\n<tr><th>quantity</th><th>value</th></tr>\n";
+  auto row = [&](const std::string& k, const std::string& v) {
+    h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"n\">" << htmlEscape(v) << "</td></tr>\n";
+  };
+  row("coupling", r.elastic ? "elastic" : "rigid");
+  if (r.two_mass.applicable) row("first estimate p0, two constant inertias [rad/s]", g(r.two_mass.p0, "%.5g"));
+  for (const ModelFrozenModes& m : r.frozen)
+    if (m.ok && r.elastic)
+      row("frozen-angle p, " + m.model + " model: mean (min … max) [rad/s]",
+          g(m.torsional.mean, "%.6g") + " (" + g(m.torsional.min, "%.6g") + " … " + g(m.torsional.max, "%.6g") + ")");
+  if (std::isfinite(r.model_difference)) row("multibody against reduced, largest relative difference of p", g(r.model_difference, "%.2e"));
+  if (r.elastic && !r.frozen.empty() && r.frozen[0].ok) {
+    const ModelFrozenModes& m = r.frozen[0];
+    row("mode shape", m.torsional_name + ": kinetic energy motor side " + g(100 * m.energy_motor_side, "%.0f") +
+                          " %, crankshaft and rods " + g(100 * m.energy_shaft_rods, "%.0f") + " %, carts " +
+                          g(100 * m.energy_carts, "%.0f") + " %");
+  }
+  if (r.steady.found) {
+    const FloquetVerdict& v = r.steady.verdict;
+    row("mean crank speed of the steady motion [rad/s]", g(r.steady.omega_mean, "%.6g"));
+    row("Floquet verdict (reduced model)", v.text + ", largest |μ| = " + g(v.max_modulus) + " per revolution, margin " +
+                                              g(v.margin));
+    if (v.has_torsional && !v.torsional_resolved)
+      row("torsional mode from the multipliers", "decays more than a million-fold per revolution (not resolved)");
+    else if (v.has_torsional)
+      row("torsional mode from the multipliers", g(v.torsional_frequency, "%.5g") + " rad/s, damping ratio " +
+                                                    g(v.torsional_damping_ratio, "%.3g"));
+  } else {
+    row("steady motion", "not found: " + r.steady.failure);
+  }
+  if (r.has_multibody_steady && r.steady_multibody.found)
+    row("Floquet verdict (multibody model)", r.steady_multibody.verdict.text + ", largest |μ| = " +
+                                                 g(r.steady_multibody.verdict.max_modulus));
+  std::string orders;
+  for (size_t i = 0; i < r.orders.layout.size() && i < 12; ++i) orders += (i ? ", " : "") + std::to_string(r.orders.layout[i]);
+  row("excitation orders of the layout", orders);
+  for (const StabilityChart& c : r.charts)
+    row(c.y_key == "omega" ? "stability chart c × ω at k = " + g(c.fixed_damping) + " N·m·s/rad"
+                           : "stability chart c × k at ω = " + g(c.fixed_speed) + " rad/s",
+        std::to_string(c.unstable_points) + " unstable points, " + std::to_string(c.zones.size()) + " zone(s)");
+  h << "</table>\n";
+  if (!r.campbell.crossings.empty()) {
+    h << "<h3>Campbell crossings</h3>\n<table>\n<tr><th>order k</th><th>kind</th><th>crank speed [rad/s]</th>"
+         "<th>frequency [rad/s]</th><th>band crossed between [rad/s]</th></tr>\n";
+    for (const CampbellCrossing& c : r.campbell.crossings)
+      h << "<tr><td class=\"n\">" << c.order << "</td><td>" << (c.parametric ? "parametric, 2p = kω" : "forced, p = kω")
+        << "</td><td class=\"n\">" << g(c.omega) << "</td><td class=\"n\">" << g(c.frequency) << "</td><td class=\"n\">"
+        << g(c.omega_band_low) << " … " << g(c.omega_band_high) << "</td></tr>\n";
+    h << "</table>\n";
+  }
+  if (spectrum && spectrum->ok) {
+    h << "<h3>Order spectrum of the run (steady window, " << spectrum->revolutions << " revolutions)</h3>\n"
+      << "<table>\n<tr><th>signal</th><th>strongest orders (amplitude)</th><th>share at whole orders</th></tr>\n";
+    for (size_t i = 0; i < spectrum->signals.size(); ++i) {
+      std::string peaks;
+      for (size_t k = 0; k < spectrum->peaks[i].size() && k < 4; ++k)
+        peaks += (k ? ", " : "") + g(spectrum->peaks[i][k].order, "%.3g") + " (" +
+                 g(spectrum->peaks[i][k].amplitude, "%.3g") + ")";
+      h << "<tr><td><code>" << htmlEscape(spectrum->signals[i]) << "</code></td><td>" << htmlEscape(peaks)
+        << "</td><td class=\"n\">" << g(100 * spectrum->whole_order_share[i], "%.4g") << " %</td></tr>\n";
+    }
+    h << "</table>\n";
+  }
+  for (const std::string& w : r.warnings) h << "<p><b>Warning:</b> " << htmlEscape(w) << "</p>\n";
+  for (const std::string& n : r.notes) h << "<p class=\"small\">Note: " << htmlEscape(n) << "</p>\n";
+  for (const FigureFile& f : figures.figures) {
+    h << "<figure id=\"" << htmlEscape(f.name) << "\">";
+    if (!f.png.empty())
+      h << "<img alt=\"" << htmlEscape(f.name) << "\" src=\"data:image/png;base64,"
+        << base64Encode(readFileContents(f.png, "figure")) << "\">";
+    h << "<figcaption>" << htmlEscape(f.caption) << "</figcaption></figure>\n";
+  }
+  return h.str();
+}
+
+}  // namespace rollerdyn::modes

@@ -1,0 +1,319 @@
+// What `rollerdyn modes` writes and prints from a ModesReport (ModalAnalysis.h): modes.json,
+// frozen.csv, campbell.csv, stability.csv and the console's lines.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "modes/ModalAnalysis.h"
+
+#include <stdexcept>
+
+#include "io/AtomicFile.h"
+
+namespace rollerdyn::modes {
+namespace {
+
+nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json multipliersJson(const SteadyMotion& m) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const ClassifiedMultiplier& c : m.multipliers)
+    a.push_back({{"real", c.m.mu.real()},
+                 {"imag", c.m.mu.imag()},
+                 {"modulus", c.m.modulus},
+                 {"mode", toString(c.kind)},
+                 {"growth_rate", num(c.m.growth_rate)},
+                 {"frequency", num(c.m.frequency)},
+                 {"damping_ratio", num(c.m.damping_ratio)}});
+  return a;
+}
+
+nlohmann::json steadyJson(const SteadyMotion& m) {
+  if (!m.found) return {{"found", false}, {"failure", m.failure}};
+  const FloquetVerdict& v = m.verdict;
+  return {{"found", true},
+          {"omega_mean", m.omega_mean},
+          {"period", m.period},
+          {"newton_iterations", m.newton_iterations},
+          {"evaluations", m.evaluations},
+          {"multipliers", multipliersJson(m)},
+          {"verdict", v.text},
+          {"stable", v.stable},
+          {"max_modulus", v.max_modulus},
+          {"margin", v.margin},
+          {"slowest_decay_rate", num(v.slowest_decay_rate)},
+          {"torsional_modulus", v.has_torsional ? num(v.torsional_modulus) : nlohmann::json(nullptr)},
+          {"torsional_frequency", v.has_torsional ? num(v.torsional_frequency) : nlohmann::json(nullptr)},
+          {"torsional_damping_ratio", v.has_torsional ? num(v.torsional_damping_ratio) : nlohmann::json(nullptr)},
+          {"torsional_resolved", v.has_torsional && v.torsional_resolved},
+          {"resolution_note", "multipliers below 1e-6 are only known to be that small: their frequency and damping "
+                              "ratio are not resolved by the integration"}};
+}
+
+nlohmann::json bandJson(const Band& b) { return {{"mean", num(b.mean)}, {"min", num(b.min)}, {"max", num(b.max)}}; }
+
+}  // namespace
+
+nlohmann::json modesJson(const ModesReport& r) {
+  nlohmann::json j;
+  j["scene"] = r.scene;
+  j["coupling"] = r.elastic ? "elastic" : "rigid";
+  j["cpu_seconds"] = r.cpu_seconds;
+  j["first_estimate_two_mass"] = {
+      {"method", "two constant inertias, Dyomin (two rotors) eq. (10), crank side at its mean over a revolution"},
+      {"applicable", r.two_mass.applicable},
+      {"J1", r.two_mass.J1},
+      {"J2_mean", r.two_mass.J2_mean},
+      {"stiffness", r.elastic ? num(r.two_mass.stiffness) : nlohmann::json(nullptr)},
+      {"p0", r.two_mass.applicable ? num(r.two_mass.p0) : nlohmann::json(nullptr)}};
+  j["steady_motion"] = steadyJson(r.steady);
+  j["steady_motion"]["model"] = "reduced";
+  if (r.has_multibody_steady) {
+    j["steady_motion_multibody"] = steadyJson(r.steady_multibody);
+    j["steady_motion_multibody"]["friction_normal_force_lags"] = "quasi-static (normal forces of each state)";
+  }
+  nlohmann::json fz = nlohmann::json::array();
+  for (const ModelFrozenModes& m : r.frozen) {
+    if (!m.ok) {
+      fz.push_back({{"model", m.model}, {"failure", m.failure}});
+      continue;
+    }
+    fz.push_back({{"model", m.model},
+                  {"torsional_mode", m.torsional_name.empty() ? nlohmann::json(nullptr) : nlohmann::json(m.torsional_name)},
+                  {"rigid_mode", m.rigid_name},
+                  {"torsional_frequency", bandJson(m.torsional)},
+                  {"torsional_damping_ratio", bandJson(m.torsional_damping)},
+                  {"kinetic_energy_share", {{"motor_side", num(m.energy_motor_side)},
+                                            {"crankshaft_and_rods", num(m.energy_shaft_rods)},
+                                            {"carts", num(m.energy_carts)}}},
+                  {"angles", m.angles.size()}});
+  }
+  j["frozen_angle_modes"] = fz;
+  j["models_max_relative_difference"] = num(r.model_difference);
+  nlohmann::json ord = nlohmann::json::array();
+  for (const OrderContent& c : r.orders.table)
+    ord.push_back({{"order", c.order},
+                   {"layout_factor", c.layout_factor},
+                   {"inertia_amplitude", c.inertia_amplitude},
+                   {"load_torque_amplitude", c.load_amplitude}});
+  j["excitation_orders"] = {{"layout", r.orders.layout},
+                            {"inertia", r.orders.inertia},
+                            {"load_torque", r.orders.load},
+                            {"all", r.orders.all},
+                            {"inertia_mean", r.orders.inertia_mean},
+                            {"inertia_relative_swing", r.orders.inertia_relative_swing},
+                            {"table", ord}};
+  nlohmann::json cm;
+  cm["applicable"] = r.campbell.applicable;
+  if (!r.campbell.note.empty()) cm["note"] = r.campbell.note;
+  cm["orders"] = r.campbell.orders;
+  nlohmann::json cr = nlohmann::json::array();
+  for (const CampbellCrossing& c : r.campbell.crossings)
+    cr.push_back({{"order", c.order},
+                  {"kind", c.parametric ? "parametric: 2p = k*omega" : "forced: p = k*omega"},
+                  {"omega", c.omega},
+                  {"frequency", c.frequency},
+                  {"omega_band_low", num(c.omega_band_low)},
+                  {"omega_band_high", num(c.omega_band_high)}});
+  cm["crossings"] = cr;
+  j["campbell"] = cm;
+  nlohmann::json ch = nlohmann::json::array();
+  for (const StabilityChart& c : r.charts) {
+    nlohmann::json zones = nlohmann::json::array();
+    for (const StabilityZone& z : c.zones)
+      zones.push_back({{"points", z.points},
+                       {"c_min", z.c_min},
+                       {"c_max", z.c_max},
+                       {c.y_key + "_min", z.y_min},
+                       {c.y_key + "_max", z.y_max},
+                       {"worst_modulus", z.worst_modulus}});
+    ch.push_back({{"axes", c.y_key == "omega" ? "stiffness x crank speed" : "stiffness x damping"},
+                  {"damping", num(c.fixed_damping)},
+                  {"omega", num(c.fixed_speed)},
+                  {"c_range", {c.c.front(), c.c.back()}},
+                  {c.y_key + "_range", {c.y.front(), c.y.back()}},
+                  {"grid", {c.c.size(), c.y.size()}},
+                  {"operating_point", {{"c", num(c.operating_c)}, {c.y_key, num(c.operating_y)}}},
+                  {"unstable_points", c.unstable_points},
+                  {"failed_points", c.failed_points},
+                  {"zones", zones}});
+  }
+  j["stability_charts"] = ch;
+  j["warnings"] = r.warnings;
+  j["notes"] = r.notes;
+  return j;
+}
+
+Table frozenTable(const ModesReport& r) {
+  Table t;
+  t.columns = {"phi_crank", "omega_crank", "twist", "twist_rate"};
+  for (const ModelFrozenModes& m : r.frozen) {
+    if (!m.ok) continue;
+    t.columns.push_back("p_torsional_" + m.model + "[rad/s]");
+    t.columns.push_back("zeta_torsional_" + m.model);
+    t.columns.push_back("lambda_rigid_" + m.model + "[1/s^2]");
+  }
+  if (r.frozen.empty()) return t;
+  for (size_t i = 0; i < r.frozen[0].angles.size(); ++i) {
+    const DrivePoint& p = r.frozen[0].angles[i].point;
+    std::vector<double> row{p.phi, p.omega, p.twist, p.twist_rate};
+    for (const ModelFrozenModes& m : r.frozen) {
+      if (!m.ok) continue;
+      double pt = NAN, zt = NAN, lr = NAN;
+      for (const FrozenMode& mode : m.angles[i].modes)
+        if (mode.torsional) {
+          pt = mode.frequency;
+          zt = mode.damping_ratio;
+        } else {
+          lr = mode.lambda;
+        }
+      row.insert(row.end(), {pt, zt, lr});
+    }
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+Table campbellTable(const ModesReport& r) {
+  Table t;
+  t.columns = {"omega_set[rad/s]", "omega_crank_mean[rad/s]", "p_mean[rad/s]", "p_min[rad/s]", "p_max[rad/s]",
+               "p_floquet[rad/s]", "zeta_floquet", "max_multiplier_modulus"};
+  for (const CampbellPoint& p : r.campbell.points)
+    t.rows.push_back({p.omega_target, p.found ? p.omega_mean : NAN, p.frozen.mean, p.frozen.min, p.frozen.max,
+                      p.floquet_frequency, p.floquet_damping_ratio, p.max_modulus});
+  return t;
+}
+
+Table stabilityTable(const ModesReport& r) {
+  Table t;
+  t.columns = {"chart", "c[N*m/rad]", "k[N*m*s/rad]", "omega_set[rad/s]", "omega_crank_mean[rad/s]",
+               "max_multiplier_modulus", "zeta_torsional", "p_torsional[rad/s]", "stable"};
+  for (size_t n = 0; n < r.charts.size(); ++n) {
+    const StabilityChart& c = r.charts[n];
+    for (const auto& row : c.grid)
+      for (const StabilityPoint& p : row) {
+        const double k = c.y_key == "damping" ? p.y : c.fixed_damping;
+        const double w = c.y_key == "omega" ? p.y : NAN;
+        t.rows.push_back({double(n + 1), p.c, k, w, p.omega_mean, p.max_modulus, p.torsional_damping_ratio,
+                          p.torsional_frequency, p.found ? (p.stable ? 1.0 : 0.0) : NAN});
+      }
+  }
+  return t;
+}
+
+std::string modesText(const ModesReport& r) {
+  std::ostringstream os;
+  char b[512];
+  os << "torsional modes of " << r.scene << " (" << (r.elastic ? "elastic" : "rigid") << " coupling)\n";
+  if (r.two_mass.applicable) {
+    std::snprintf(b, sizeof b,
+                  "  first estimate, two constant inertias (Dyomin (two rotors) eq. (10)): J1 = %.4g, J2 mean = %.4g "
+                  "kg*m^2, p0 = %.5g rad/s\n",
+                  r.two_mass.J1, r.two_mass.J2_mean, r.two_mass.p0);
+    os << b;
+  }
+  if (r.steady.found) {
+    std::snprintf(b, sizeof b, "  steady motion (reduced model): mean crank speed %.5g rad/s, revolution %.4g s\n",
+                  r.steady.omega_mean, r.steady.period);
+    os << b;
+  } else {
+    os << "  steady motion: not found (" << r.steady.failure << ")\n";
+  }
+  for (const ModelFrozenModes& m : r.frozen) {
+    if (!m.ok) {
+      os << "  frozen-angle modes, " << m.model << " model: failed (" << m.failure << ")\n";
+      continue;
+    }
+    if (r.elastic) {
+      std::snprintf(b, sizeof b,
+                    "  frozen-angle torsional frequency, %-9s p = %.6g rad/s mean, %.6g ... %.6g over the crank "
+                    "angle; damping ratio %.3g ... %.3g\n",
+                    (m.model + ":").c_str(), m.torsional.mean, m.torsional.min, m.torsional.max,
+                    m.torsional_damping.min, m.torsional_damping.max);
+      os << b;
+    }
+  }
+  if (r.elastic && !r.frozen.empty() && r.frozen[0].ok) {
+    const ModelFrozenModes& m = r.frozen[0];
+    std::snprintf(b, sizeof b, "  mode shape: %s (kinetic energy: motor side %.0f %%, crankshaft and rods %.0f %%, carts %.0f %%)\n",
+                  m.torsional_name.c_str(), 100 * m.energy_motor_side, 100 * m.energy_shaft_rods, 100 * m.energy_carts);
+    os << b;
+  }
+  if (std::isfinite(r.model_difference)) {
+    std::snprintf(b, sizeof b, "  multibody against reduced: largest relative difference of p %.2e\n", r.model_difference);
+    os << b;
+  }
+  auto floquetLine = [&](const SteadyMotion& m, const char* model) {
+    if (!m.found) {
+      os << "  Floquet (" << model << "): no steady motion (" << m.failure << ")\n";
+      return;
+    }
+    const FloquetVerdict& v = m.verdict;
+    std::snprintf(b, sizeof b, "  Floquet (%s): %s, largest |multiplier| %.4g per revolution (margin %.4g)", model,
+                  v.text.c_str(), v.max_modulus, v.margin);
+    os << b;
+    if (v.has_torsional && v.torsional_resolved) {
+      std::snprintf(b, sizeof b, "; torsional mode %.5g rad/s, damping ratio %.3g", v.torsional_frequency,
+                    v.torsional_damping_ratio);
+      os << b;
+    } else if (v.has_torsional) {
+      os << "; torsional mode decays more than a million-fold per revolution (its frequency is not resolved)";
+    }
+    os << "\n";
+  };
+  floquetLine(r.steady, "reduced");
+  if (r.has_multibody_steady) floquetLine(r.steady_multibody, "multibody");
+  os << "  excitation orders (layout): ";
+  for (size_t i = 0; i < r.orders.layout.size() && i < 12; ++i) os << (i ? ", " : "") << r.orders.layout[i];
+  if (r.orders.layout.size() > 12) os << ", ...";
+  std::snprintf(b, sizeof b, "; inertia swing %.3g %% of its mean\n", 100 * r.orders.inertia_relative_swing);
+  os << b;
+  if (r.campbell.applicable) {
+    os << "  Campbell crossings (" << r.campbell.crossings.size() << "):";
+    int shown = 0;
+    for (const CampbellCrossing& c : r.campbell.crossings) {
+      if (shown++ == 8) {
+        os << " ...";
+        break;
+      }
+      std::snprintf(b, sizeof b, " %s%d at %.4g rad/s;", c.parametric ? "2p=" : "p=", c.order, c.omega);
+      os << b;
+    }
+    os << "\n";
+  }
+  for (const StabilityChart& c : r.charts) {
+    if (c.y_key == "omega")
+      std::snprintf(b, sizeof b, "  stability chart c x omega at k = %.4g N*m*s/rad: %d of %zu points unstable, %zu zone(s)",
+                    c.fixed_damping, c.unstable_points, c.c.size() * c.y.size(), c.zones.size());
+    else
+      std::snprintf(b, sizeof b, "  stability chart c x k at omega = %.4g rad/s: %d of %zu points unstable, %zu zone(s)",
+                    c.fixed_speed, c.unstable_points, c.c.size() * c.y.size(), c.zones.size());
+    os << b;
+    if (c.failed_points) os << ", " << c.failed_points << " without steady running";
+    os << "\n";
+  }
+  for (const std::string& n : r.notes) os << "  note: " << n << "\n";
+  std::snprintf(b, sizeof b, "  analysis CPU %.2f s\n", r.cpu_seconds);
+  os << b;
+  return os.str();
+}
+
+void writeModesFiles(const std::string& out_dir, const ModesReport& r) {
+  writeFileAtomic(out_dir + "/modes.json", modesJson(r).dump(2) + "\n");
+  writeCsvAtomic(out_dir + "/frozen.csv", frozenTable(r));
+  writeCsvAtomic(out_dir + "/campbell.csv", campbellTable(r));
+  writeCsvAtomic(out_dir + "/stability.csv", stabilityTable(r));
+}
+
+void setChartStiffness(ModesOptions& o, const Scene& scene, double lo, double hi, const std::string& what) {
+  if (!(lo > 0) || !(hi > lo))
+    throw std::invalid_argument(what + ": expected LO:HI in N·m/rad with 0 < LO < HI");
+  const double c_ref = scene.coupling.type == CouplingType::Elastic ? scene.coupling.stiffness : 0.0;
+  if (!(c_ref > 0))
+    throw std::invalid_argument(what + ": the scene's coupling is rigid; set coupling.type=elastic and "
+                                "coupling.stiffness to give a range");
+  o.c_low = lo / c_ref;
+  o.c_high = hi / c_ref;
+}
+
+}  // namespace rollerdyn::modes

@@ -1,0 +1,119 @@
+#include "modes/OrderSpectrum.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+#include <unsupported/Eigen/FFT>
+
+#include "analysis/SteadyState.h"
+
+namespace rollerdyn::modes {
+
+OrderSpectrum orderSpectrum(const Table& ts, const Table& table, const std::vector<std::string>& columns,
+                            double window_revolutions, int M, double max_order, int n_peaks) {
+  OrderSpectrum s;
+  s.samples_per_revolution = M;
+  if (!ts.has("t") || !ts.has("phi_crank")) {
+    s.note = "the timeseries has no t or phi_crank column";
+    return s;
+  }
+  const SteadyState ss = detectSteadyState(ts, window_revolutions);
+  if (ss.window_revolutions < 1 || ss.revolutions.empty()) {
+    s.note = "no whole crank revolution in the steady window";
+    return s;
+  }
+  const int R = ss.window_revolutions;
+  const std::vector<double> t = ts.column("t"), phi = ts.column("phi_crank");
+  // Window: the last R whole revolutions; crank angle from its start.
+  const CrankRevolution& first = ss.revolutions[ss.revolutions.size() - R];
+  const CrankRevolution& last = ss.revolutions.back();
+  s.t_begin = first.t_begin;
+  s.t_end = last.t_end;
+  s.revolutions = R;
+  // Crank angle at the window's start (interpolated) and the direction of rotation.
+  auto interp = [](const std::vector<double>& x, const std::vector<double>& y, double xq, size_t& i) {
+    while (i + 2 < x.size() && x[i + 1] < xq) ++i;
+    const double w = (x[i + 1] - x[i]) != 0 ? (xq - x[i]) / (x[i + 1] - x[i]) : 0.0;
+    return y[i] + w * (y[i + 1] - y[i]);
+  };
+  size_t i0 = 0;
+  const double phi_start = interp(t, phi, s.t_begin, i0);
+  const double sign = last.omega_mean >= 0 ? 1.0 : -1.0;
+  // Rows of the window, monotonic in φ (the crank turns one way in steady running).
+  std::vector<double> phi_w, t_w;
+  for (size_t r = 0; r < t.size(); ++r)
+    if (t[r] >= s.t_begin - 1e-12 && t[r] <= s.t_end + 1e-12) {
+      phi_w.push_back(sign * (phi[r] - phi_start));
+      t_w.push_back(t[r]);
+    }
+  if (phi_w.size() < 8) {
+    s.note = "too few output rows in the steady window";
+    return s;
+  }
+  for (size_t k = 1; k < phi_w.size(); ++k)
+    if (!(phi_w[k] > phi_w[k - 1])) {
+      s.note = "the crank does not turn steadily one way in the window";
+      return s;
+    }
+  const int N = M * R;
+  // Time at each equally spaced crank angle; the signals are then interpolated in time (rows
+  // of `table` may be a different table with the same time column).
+  std::vector<double> tq(N);
+  size_t ia = 0;
+  for (int q = 0; q < N; ++q) {
+    const double pq = 2 * M_PI * R * q / N;
+    tq[q] = (pq <= phi_w.front()) ? t_w.front() : interp(phi_w, t_w, pq, ia);
+  }
+  if (!table.has("t")) {
+    s.note = "the table has no t column";
+    return s;
+  }
+  const std::vector<double> tt = table.column("t");
+  Eigen::FFT<double> fft;
+  const int bins = std::min(N / 2, int(std::floor(max_order * R)) + 1);
+  for (int b = 0; b < bins; ++b) s.orders.push_back(double(b) / R);
+  for (const std::string& c : columns) {
+    if (!table.has(c)) continue;
+    const std::vector<double> y = table.column(c);
+    std::vector<double> yq(N);
+    size_t ib = 0;
+    for (int q = 0; q < N; ++q) yq[q] = interp(tt, y, tq[q], ib);
+    std::vector<std::complex<double>> spec;
+    fft.fwd(spec, yq);
+    std::vector<double> a(bins);
+    for (int b = 0; b < bins; ++b) a[b] = (b == 0 ? 1.0 : 2.0) * std::abs(spec[b]) / N;
+    double total = 0, whole = 0;
+    for (int b = 1; b < N / 2; ++b) {
+      const double ab = 2.0 * std::abs(spec[b]) / N;
+      total += ab * ab;
+      if (b % R == 0) whole += ab * ab;
+    }
+    std::vector<int> idx;
+    for (int b = 1; b < bins; ++b) idx.push_back(b);
+    std::sort(idx.begin(), idx.end(), [&](int p, int q) { return a[p] > a[q]; });
+    std::vector<SpectrumPeak> peaks;
+    for (int k = 0; k < n_peaks && k < int(idx.size()); ++k) peaks.push_back({s.orders[idx[k]], a[idx[k]]});
+    s.signals.push_back(c);
+    s.amplitude.push_back(a);
+    s.peaks.push_back(peaks);
+    s.whole_order_share.push_back(total > 0 ? whole / total : 1.0);
+  }
+  s.ok = !s.signals.empty();
+  if (!s.ok) s.note = "none of the signals is in the table";
+  return s;
+}
+
+Table spectrumTable(const OrderSpectrum& s) {
+  Table t;
+  t.columns.push_back("order");
+  for (const std::string& c : s.signals) t.columns.push_back(c);
+  for (size_t b = 0; b < s.orders.size(); ++b) {
+    std::vector<double> row{s.orders[b]};
+    for (const auto& a : s.amplitude) row.push_back(a[b]);
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+}  // namespace rollerdyn::modes

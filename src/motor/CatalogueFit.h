@@ -1,0 +1,81 @@
+// Equivalent-circuit parameters from a motor's catalogue data by least squares, after Pedra
+// (2008), "On the determination of induction motor parameters from manufacturer data for
+// electromagnetic transient programs", IEEE Trans. Power Systems 23(4): the model's values at
+// the catalogue's points (rated point, standstill, breakdown) are made equal to the catalogue's.
+//
+// Catalogue points, all of the equivalent star at the rated supply (U_ph = U_n/√3, f_n):
+//   rated slip s_n = 1 − ω_n/ω0:  torque M_n = P_n/ω_n, current I_n, power factor cos φ_n,
+//                                 efficiency η_n = M·ω_n/P_in;
+//   standstill (s = 1):           torque M_s, current I_s;
+//   breakdown:                    the largest torque over 0 < s ≤ 1, M_k.
+// Residuals are relative errors model/catalogue − 1, weighted 10 for the three torques, 3 for
+// the two currents, 1 for cos φ_n and η_n. Why not alike: a circuit without saturation of the
+// leakage paths cannot in general meet a high starting current together with a moderate
+// breakdown torque (a low standstill reactance lowers the breakdown leakage too), and with
+// copper losses only it meets P_in and the losses only approximately; with equal weights the
+// best fit of the 4A200M6U3 misses η_n by 3.2 % and M_k by 1.8 %, of the 4A160M6U3 I_s by 7.3 %
+// and M_k by 5.8 %. The drive's dynamics depend on the torques first, its start-up current
+// answers on I_s, and only the energy figures on cos φ_n and η_n: the weights say so, and every
+// point's error is printed beside the catalogue value (`rollerdyn motor`). Unknowns (log-scaled,
+// so they stay positive): double cage R_s, X_σs, X_m, R_r1, R_r2, X_σr2, with the running cage's
+// leakage equal to the stator's, X_σr1 = X_σs (our assumption: seven parameters against six
+// independent data, since η_n follows from P_n, I_n, cos φ_n when the catalogue is consistent,
+// P_n = √3·U_n·I_n·cos φ_n·η_n; the equal split of the running leakage is IEEE Std 112's for
+// design classes A and D). Single cage: R_s, X_σs = X_σr, X_m, R_r: four unknowns against seven
+// points, so it cannot meet the starting torque (the point of the double cage).
+// The circuit has copper losses only: matching P_in and the shaft power puts iron, friction and
+// stray losses into the copper resistances (mostly R_s), and the torque at s_n is the shaft torque.
+// Method: NLopt's BOBYQA from an initial guess built from the catalogue (Kloss's breakdown
+// relations for the leakage and rotor resistance, the reactive current for X_m, the losses for
+// R_s), restarted from deterministic perturbations of it until every residual is below 1e-9,
+// or six starts in a row bring no improvement, or 24 starts are used; the best fit is kept.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "motor/InductionMachine.h"
+
+namespace rollerdyn {
+
+struct MotorCatalogue;
+
+// One catalogue point: the catalogue's value beside the model's.
+struct CatalogueComparison {
+  std::string quantity;  // what it is, e.g. "starting torque"
+  std::string symbol;    // e.g. "M_s"
+  std::string unit;      // e.g. "N·m", "-"
+  double catalogue = 0;
+  double model = 0;
+  double relativeError() const { return (model - catalogue) / catalogue; }
+};
+
+// The rated supply and machine the catalogue speaks of.
+struct CatalogueSupply {
+  double line_voltage = 0;  // U_n [V]
+  double frequency = 50;    // f_n [Hz]
+  int pole_pairs = 1;       // p [-]
+};
+
+// The model `machine` at every catalogue point (7 rows, in the order listed above).
+std::vector<CatalogueComparison> compareWithCatalogue(const InductionMachineParameters& machine,
+                                                      const MotorCatalogue& catalogue);
+// Slip of the largest torque over 0 < s ≤ 1 at the rated supply, and that torque.
+double breakdownSlip(const InductionMachineParameters& machine, double* torque = nullptr);
+
+struct CatalogueFit {
+  InductionMachineParameters machine;
+  std::vector<CatalogueComparison> points;  // compareWithCatalogue(machine, catalogue)
+  double max_relative_error = 0;            // over the points
+  int starts = 0;                           // optimizer starts used
+  int evaluations = 0;                      // model evaluations over all starts
+};
+
+// Fits a circuit with `cages` (1 or 2) rotor cages. Deterministic, so a fit is computed once per
+// process and data (both drive models and every run of a sweep build the law from the scene);
+// use_cache false computes it afresh. Throws std::invalid_argument for an incomplete catalogue
+// or supply.
+CatalogueFit fitCatalogue(const MotorCatalogue& catalogue, const CatalogueSupply& supply, int cages,
+                          bool use_cache = true);
+
+}  // namespace rollerdyn

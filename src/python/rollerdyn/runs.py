@@ -1,0 +1,225 @@
+"""Runs of one scene: simulate (one model) and compare (both models)."""
+
+import html
+import os
+import warnings
+
+import pandas as pd
+
+from . import _core
+from ._tables import frame
+from .scene import Scene, as_scene
+
+
+class RunWarning(UserWarning):
+    """A warning about a run that the command line prints on stderr: a load that does almost no
+    net work, or a scene value that is implausible (a length typed in millimetres)."""
+
+
+class ResonanceWarning(RuntimeWarning):
+    """The drive's torsional mode is near an order of the crank speed that the cart layout
+    excites: the two-mass first estimate (Dyomin (two rotors) eq. (10)) or the modal analysis
+    of the drive about its steady motion; the command line prints the same warning on stderr."""
+
+
+class RunInterrupted(KeyboardInterrupt):
+    """Ctrl-C (or a notebook's interrupt) stopped a run. The part computed is kept, as the
+    command line keeps it: ``.result`` holds it (its summary says complete: false and
+    status "interrupted at t = ...")."""
+
+    def __init__(self, result):
+        super().__init__(f"interrupted: {getattr(result, 'status', 'partial result in .result')}")
+        self.result = result
+
+
+class Result:
+    """One run, as ``rollerdyn simulate`` writes it.
+
+    - ``timeseries``, ``reactions``: DataFrames with the columns of timeseries.csv and
+      reactions.csv (bare names; units in ``df.attrs["units"]`` and ``units``); reactions is None
+      when the run computed none (simulation.reactions: false).
+    - ``summary``: summary.json as a dict (the same keys); ``sizing`` its drive-sizing answers.
+    - ``write(dir)``: the files ``simulate --out dir`` writes, byte for byte.
+    """
+
+    def __init__(self, data):
+        self._d = data
+        self._timeseries = None
+        self._reactions = None
+        self._summary = None
+
+    @property
+    def scene(self):
+        return Scene(self._d.scene)
+
+    @property
+    def model(self):
+        """multibody or reduced."""
+        return self._d.model
+
+    @property
+    def complete(self):
+        """Whether the run reached t_end (a stall, a failure or Ctrl-C end it early)."""
+        return self._d.complete
+
+    @property
+    def status(self):
+        return self._d.status
+
+    @property
+    def warnings(self):
+        """Every warning of the run, as summary["warnings"] and in the order the command line
+        prints them: the load's and the scene's (also issued as RunWarning), then the resonance
+        warnings (also issued as ResonanceWarning)."""
+        return list(self._d.run_warnings) + list(self._d.resonance_warnings)
+
+    @property
+    def resonance_verdict(self):
+        """Why the modal analysis finds no resonance where the two-mass first estimate warned
+        ("resonance verdict: ..."), or "" when there is nothing to reconcile."""
+        return self._d.resonance_verdict
+
+    @property
+    def modes(self):
+        """With ``simulate(..., modes=True)``: summary["modes"], the modal analysis of the drive
+        about its steady motion (as modes.json), else None."""
+        return self.summary.get("modes")
+
+    @property
+    def frozen(self):
+        """With modes=True: the frozen-angle modes along the steady motion (frozen.csv)."""
+        table = self._d.frozen()
+        return None if table is None else frame(table)
+
+    @property
+    def campbell(self):
+        """With modes=True: the Campbell diagram (campbell.csv); None for a rigid coupling."""
+        table = self._d.campbell()
+        return None if table is None else frame(table)
+
+    @property
+    def spectrum(self):
+        """With modes=True: the order spectrum of the torques and reactions over the steady
+        window (spectrum.csv)."""
+        table = self._d.spectrum()
+        return None if table is None else frame(table)
+
+    @property
+    def timeseries(self):
+        if self._timeseries is None:
+            self._timeseries = frame(self._d.timeseries())
+        return self._timeseries
+
+    @property
+    def reactions(self):
+        if self._reactions is None:
+            table = self._d.reactions()
+            if table is None:
+                return None
+            self._reactions = frame(table)
+        return self._reactions
+
+    @property
+    def units(self):
+        """Unit of every column of timeseries and reactions, e.g. units["coupling_torque"] == "N*m"."""
+        u = dict(self.timeseries.attrs["units"])
+        if self.reactions is not None:
+            u.update(self.reactions.attrs["units"])
+        return u
+
+    @property
+    def summary(self):
+        """summary.json as a dict: the same keys and values."""
+        if self._summary is None:
+            self._summary = self._d.summary()
+        return self._summary
+
+    @property
+    def sizing(self):
+        """The drive-sizing answers (summary["sizing"]): motor, flywheel, coupling, joints."""
+        return self.summary["sizing"]
+
+    def write(self, out_dir, figures=False):
+        """Writes timeseries.csv, reactions.csv and summary.json into ``out_dir`` (created), as
+        ``rollerdyn simulate --out out_dir`` does (with modes=True also modes.json, frozen.csv,
+        campbell.csv and spectrum.csv, as ``--modes``); with ``figures`` also its --plot figures.
+        Returns the folder."""
+        text = self._d.write(os.fspath(out_dir), figures)
+        if text:
+            print(text, end="")
+        return out_dir
+
+    def __str__(self):
+        """The summary and drive-sizing table ``rollerdyn simulate`` prints."""
+        return self._d.text()
+
+    def __repr__(self):
+        return f"<rollerdyn.Result {self.scene.name}, {self.model} model: {self.status}>"
+
+    def _repr_html_(self):
+        return f"<p><b>{html.escape(self.scene.name)}</b>, {self.model} model</p>" + self._d.html()
+
+
+def _warn(data, stacklevel):
+    for w in data.run_warnings:
+        warnings.warn(w, RunWarning, stacklevel=stacklevel)
+    for w in data.resonance_warnings:
+        warnings.warn(w, ResonanceWarning, stacklevel=stacklevel)
+
+
+def _run(data, interrupted):
+    result = Result(data)
+    _warn(data, 4)
+    if interrupted:
+        raise RunInterrupted(result)
+    return result
+
+
+def simulate(scene, model="multibody", modes=False):
+    """Runs ``model`` ("multibody", the Simbody model, or "reduced", the papers' reduced-mass
+    model) on ``scene`` (a Scene or a scene file path) to its t_end, as ``rollerdyn simulate``.
+    With ``modes``, also the modal analysis of the drive about its steady motion (torsional
+    modes, Floquet stability, Campbell diagram) and the run's order spectrum, as ``simulate
+    --modes``: ``result.modes``, ``frozen``, ``campbell``, ``spectrum``; the resonance verdict
+    rests on it.
+
+    The GIL is released while it runs. Ctrl-C stops it at the next output row and raises
+    RunInterrupted (a KeyboardInterrupt) with the partial Result in ``.result``.
+    """
+    return _run(*_core.simulate(as_scene(scene)._s, model, bool(modes)))
+
+
+class Comparison:
+    """Both models on one scene, as ``rollerdyn compare`` (comparison.csv and comparison.json)."""
+
+    def __init__(self, data):
+        self._d = data
+        self.table = frame(data.table())
+        self.summary = data.json()
+        self.multibody = Result(data.multibody)
+        self.reduced = Result(data.reduced)
+
+    def differences(self):
+        """max_abs_diff, rms_diff, max_rel_diff, ... per compared quantity (comparison.json)."""
+        return pd.DataFrame.from_dict(self.summary["quantities"], orient="index")
+
+    def __str__(self):
+        return self._d.text()
+
+    def _repr_html_(self):
+        items = "".join(f"<li>{html.escape(s)}</li>" for s in self.summary.get("differences", []))
+        return (
+            f"<p><b>multibody vs reduced</b>: {self.multibody.status} / {self.reduced.status}</p>"
+            + self.differences().to_html()
+            + (f"<p>Modelling differences that apply to this scene:</p><ul>{items}</ul>" if items else "")
+        )
+
+
+def compare(scene):
+    """Runs both models on ``scene`` and compares them, as ``rollerdyn compare``. Ctrl-C raises
+    RunInterrupted with the partial Comparison."""
+    data, interrupted = _core.compare(as_scene(scene)._s)
+    result = Comparison(data)
+    if interrupted:
+        raise RunInterrupted(result)
+    return result

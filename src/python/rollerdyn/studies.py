@@ -1,0 +1,98 @@
+"""Studies over many runs: sweep (a table of runs) and optimize (NLopt, with Python objectives
+and constraints)."""
+
+import html
+
+import pandas as pd
+
+from . import _core
+from ._tables import study_frame
+from .runs import RunInterrupted
+from .scene import as_scene
+
+
+def sweep(scene, params=None, *, designs=None, model="multibody", minimize=None, threads=2):
+    """One run per point, as ``rollerdyn sweep``; returns sweep.csv as a DataFrame.
+
+    ``params``: {"key.path": values}, a grid over all of them (the last varies fastest); values
+    are a list (numbers, or words such as "rigid") or the command line's spec "a:b:step" or
+    "v1,v2". ``designs``: instead of a grid, a DataFrame (or list of dicts) with one column per
+    key and one row per design. The runs share ``threads`` worker threads; the GIL is released.
+
+    Columns: the parameters, then delta, H, k_p, ... status, cpu_seconds and the drive-sizing
+    metrics (see docs/outputs.md); units in ``df.attrs["units"]``. With ``minimize`` (a metric),
+    ``df.attrs["optimum"]`` is sweep.json's optimum. Ctrl-C raises RunInterrupted with the table
+    of the points done (the others say "not run (interrupted)").
+    """
+    s = as_scene(scene)
+    keys, rows, grid = [], [], []
+    if designs is not None:
+        d = pd.DataFrame(designs)
+        keys = [str(c) for c in d.columns]
+        rows = [list(r) for r in d.itertuples(index=False)]
+    elif params:
+        grid = list(params.items())
+    else:
+        raise ValueError("sweep: give params ({key: values}) or designs")
+    table, optimum, execution, interrupted = _core.sweep(s._s, grid, keys, rows, model, minimize or "", threads)
+    df = study_frame(table)
+    df.attrs.update({"scene": s.name, "model": model, "optimum": optimum, "execution": execution})
+    if interrupted:
+        raise RunInterrupted(df)
+    return df
+
+
+class OptimizeResult:
+    """What ``rollerdyn optimize`` writes: ``history`` (history.csv: every evaluation),
+    ``summary`` (optimize.json), ``found`` and ``optimum`` (the best feasible design)."""
+
+    def __init__(self, history, summary):
+        self.history = history
+        self.summary = summary
+
+    @property
+    def found(self):
+        return self.summary["found"]
+
+    @property
+    def optimum(self):
+        """optimize.json's optimum: parameters, objective, metrics, constraints; None if none found."""
+        return self.summary["optimum"]
+
+    def __repr__(self):
+        if not self.found:
+            return f"<rollerdyn.OptimizeResult: no feasible design in {self.summary['evaluations']} evaluations>"
+        at = ", ".join(f"{k}={v:.6g}" for k, v in self.optimum["parameters"].items())
+        return (f"<rollerdyn.OptimizeResult {self.summary['minimize']} = {self.optimum['objective']:.6g} at {at} "
+                f"({self.summary['method']}, {self.summary['evaluations']} evaluations; "
+                f"{self.summary.get('scope', '')})>")
+
+    def _repr_html_(self):
+        return f"<p>{html.escape(repr(self))}</p>" + self.history.to_html(max_rows=20)
+
+
+def optimize(scene, params, minimize, constraints=(), *, model="multibody", method="auto", max_evals=100,
+             threads=2):
+    """The design within ``params`` ({"key.path": (lower, upper)}) that minimises ``minimize``
+    subject to ``constraints``, with NLopt, as ``rollerdyn optimize``.
+
+    ``minimize``: a metric of the sweep table (e.g. "delta"), one of the parameter keys, or a
+    function of the run's row. ``constraints``: "METRIC<=VALUE", "METRIC>=VALUE" or functions of
+    the row that are <= 0 where the constraint holds. A row is a dict: every parameter by key,
+    every metric of the sweep table, motion, status, steady_state_reached, complete, cpu_seconds.
+    The functions see usable runs only (complete, steady, turning). An exception in one stops the
+    search and is raised. Ctrl-C raises RunInterrupted with the OptimizeResult so far.
+
+    ``method``: as ``rollerdyn optimize --method``: "auto" (the local method from the middle of
+    the ranges, then a grid over the whole ranges, then the local method again from the grid's
+    best: a global search; ``summary["scope"]`` says so), "bobyqa" or "cobyla" alone (local: the
+    minimum nearest to the start), "direct-l", "crs2", "multistart".
+    """
+    s = as_scene(scene)
+    ranges = [(k, float(lo), float(hi)) for k, (lo, hi) in params.items()]
+    history, summary, interrupted = _core.optimize(s._s, ranges, minimize, list(constraints), model, method,
+                                                   int(max_evals), int(threads))
+    result = OptimizeResult(study_frame(history), summary)
+    if interrupted:
+        raise RunInterrupted(result)
+    return result

@@ -1,0 +1,279 @@
+#include "studies/MotorStudy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <memory>
+
+#include "io/AtomicFile.h"
+#include "motor/CatalogueFit.h"
+#include "motor/CircuitLaw.h"
+#include "motor/KlossLaw.h"
+#include "motor/MotorLawFactory.h"
+#include "motor/ParkLaw.h"
+#include "report/Gnuplot.h"
+
+namespace rollerdyn {
+
+namespace {
+
+// printf into a string.
+void appendf(std::string& out, const char* format, ...) {
+  char buf[1024];
+  va_list args;
+  va_start(args, format);
+  const int n = std::vsnprintf(buf, sizeof buf, format, args);
+  va_end(args);
+  if (n < 0) return;
+  if (static_cast<std::size_t>(n) < sizeof buf) {
+    out += buf;
+    return;
+  }
+  std::string big(static_cast<std::size_t>(n) + 1, '\0');
+  va_start(args, format);
+  std::vsnprintf(big.data(), big.size(), format, args);
+  va_end(args);
+  big.resize(static_cast<std::size_t>(n));
+  out += big;
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+nlohmann::json machineJson(const InductionMachineParameters& m) {
+  nlohmann::json j = {{"per_phase_of", "equivalent star"},
+                      {"R_s[Ω]", m.R_s},
+                      {"L_sigma_s[H]", m.L_sigma_s},
+                      {"L_m[H]", m.L_m},
+                      {"R_r[Ω]", m.R_r[0]},
+                      {"L_sigma_r[H]", m.L_sigma_r[0]},
+                      {"cages", m.cages},
+                      {"pole_pairs", m.pole_pairs},
+                      {"phase_voltage[V]", m.phase_voltage},
+                      {"frequency[Hz]", m.frequency}};
+  if (m.cages == 2) {
+    j["R_r2[Ω]"] = m.R_r[1];
+    j["L_sigma_r2[H]"] = m.L_sigma_r[1];
+  }
+  return j;
+}
+
+std::string machineText(const InductionMachineParameters& m, WindingConnection connection) {
+  std::string text;
+  const double w1 = m.supplyAngularFrequency();
+  appendf(text, "  per phase of the equivalent star (U_ph = %.5g V, f_n = %.4g Hz, p = %d):\n", m.phase_voltage, m.frequency,
+              m.pole_pairs);
+  appendf(text, "    R_s      = %-10.5g Ω\n    L_sigma_s = %-10.5g H   (X = %.4g Ω)\n    L_m      = %-10.5g H   (X = %.4g Ω)\n",
+              m.R_s, m.L_sigma_s, w1 * m.L_sigma_s, m.L_m, w1 * m.L_m);
+  appendf(text, "    R_r      = %-10.5g Ω\n    L_sigma_r = %-10.5g H   (X = %.4g Ω)\n", m.R_r[0], m.L_sigma_r[0],
+              w1 * m.L_sigma_r[0]);
+  if (m.cages == 2)
+    appendf(text, "    R_r2     = %-10.5g Ω\n    L_sigma_r2 = %-9.5g H   (X = %.4g Ω)\n", m.R_r[1], m.L_sigma_r[1],
+                w1 * m.L_sigma_r[1]);
+  if (connection == WindingConnection::Delta)
+    appendf(text, "  the winding is in delta: its own per-winding values are 3× these resistances and inductances\n");
+  return text;
+}
+
+}  // namespace
+
+MotorStudy studyMotor(const Scene& scene, const std::string& scene_label, const std::vector<std::string>& overrides) {
+  MotorStudy study;
+  std::string& text = study.text;
+  const InductionMotor& im = scene.induction;
+
+  const KlossLaw kloss(scene.motor);
+  const auto dynamic = makeMotorLaw(scene, MotorModel::KlossDynamic);
+  appendf(text, "motor of %s (motor.model: %s)\n", scene.name.c_str(), toString(im.model));
+  appendf(text, "  Kloss: omega0 = %.5g rad/s, M_kr = %.5g N·m, s_kr = %.4g; dynamic Kloss T_e = %.4g s\n",
+              scene.motor.omega_sync, scene.motor.breakdown_torque, scene.motor.critical_slip,
+              dynamic->fastestTimeConstant());
+
+  nlohmann::json j = {{"scene", scene_label},
+                      {"overrides", overrides},
+                      {"motor_model", toString(im.model)},
+                      {"kloss", {{"omega_sync[rad/s]", scene.motor.omega_sync},
+                                 {"breakdown_torque[N·m]", scene.motor.breakdown_torque},
+                                 {"critical_slip", scene.motor.critical_slip},
+                                 {"dynamic_time_constant[s]", dynamic->fastestTimeConstant()}}}};
+
+  // The machine: the scene's circuit, else fitted to the catalogue; none: Kloss only.
+  std::unique_ptr<InductionMachineParameters> machine;
+  std::vector<CatalogueComparison> points;
+  if (im.circuit.given()) {
+    machine = std::make_unique<InductionMachineParameters>(InductionMachineParameters::fromScene(im));
+    appendf(text, "equivalent circuit from motor.circuit (%s cage):\n", machine->cages == 2 ? "double" : "single");
+    j["machine_source"] = "motor.circuit";
+    if (im.catalogue.given()) points = compareWithCatalogue(*machine, im.catalogue);
+  } else if (im.catalogue.given()) {
+    const CatalogueFit fit = fitSceneCatalogue(scene, im.catalogue.cages);
+    machine = std::make_unique<InductionMachineParameters>(fit.machine);
+    points = fit.points;
+    appendf(text, "equivalent circuit fitted to motor.catalogue (%s cage; weighted least squares, Pedra (2008); "
+                "%d optimizer starts, %d evaluations):\n",
+                fit.machine.cages == 2 ? "double" : "single", fit.starts, fit.evaluations);
+    j["machine_source"] = "motor.catalogue (fitted)";
+    j["fit"] = {{"starts", fit.starts}, {"evaluations", fit.evaluations}, {"max_relative_error", fit.max_relative_error}};
+  } else {
+    appendf(text, "no equivalent circuit: the scene gives neither motor.circuit nor motor.catalogue (Kloss curves only)\n");
+  }
+  std::unique_ptr<CircuitLaw> circuit;
+  std::unique_ptr<ParkLaw> park;
+  double s_k = NAN, m_k = NAN;
+  if (machine) {
+    text += machineText(*machine, im.connection);
+    circuit = std::make_unique<CircuitLaw>(*machine);
+    park = std::make_unique<ParkLaw>(*machine);
+    s_k = breakdownSlip(*machine, &m_k);
+    appendf(text, "  breakdown: M_k = %.5g N·m at slip %.4g; fastest electrical time constant %.3g ms\n", m_k, s_k,
+                1e3 * park->fastestTimeConstant());
+    j["machine"] = machineJson(*machine);
+    j["machine"]["breakdown_slip"] = s_k;
+    j["machine"]["breakdown_torque[N·m]"] = m_k;
+    j["machine"]["fastest_time_constant[s]"] = park->fastestTimeConstant();
+  }
+
+  // Catalogue points: model beside catalogue, with Kloss's torque where it has one.
+  std::string cat_csv = "quantity,symbol,unit,catalogue,model,relative_error[-],kloss\n";
+  if (!points.empty()) {
+    const MotorCatalogue& c = im.catalogue;
+    const double s_n = 1.0 - c.omega_nominal / scene.motor.omega_sync;
+    auto klossAt = [&](const CatalogueComparison& p) -> double {
+      if (p.symbol == "M_n") return kloss.steadyTorque({}, c.omega_nominal);
+      if (p.symbol == "M_s") return kloss.steadyTorque({}, 0.0);
+      if (p.symbol == "M_k") return scene.motor.breakdown_torque;
+      return NAN;
+    };
+    appendf(text, "\nthe model at every catalogue point (rated slip s_n = %.4g):\n", s_n);
+    appendf(text, "  %-20s %-8s %12s %12s %10s %12s\n", "quantity", "symbol", "catalogue", "model", "error", "Kloss");
+    nlohmann::json pj = nlohmann::json::array();
+    for (size_t i = 0; i < points.size(); ++i) {
+      const CatalogueComparison& p = points[i];
+      const double k = klossAt(p);
+      appendf(text, "  %-20s %-8s %12.5g %12.5g %+9.2f%% %12s\n", p.quantity.c_str(), p.symbol.c_str(), p.catalogue, p.model,
+                  100 * p.relativeError(), std::isfinite(k) ? fmt("%.5g", k).c_str() : "–");
+      cat_csv += p.quantity + "," + p.symbol + "," + p.unit + "," + fmt("%.10g", p.catalogue) + "," +
+                 fmt("%.10g", p.model) + "," + fmt("%.6g", p.relativeError()) + "," +
+                 (std::isfinite(k) ? fmt("%.10g", k) : std::string("")) + "\n";
+      pj.push_back({{"quantity", p.quantity}, {"symbol", p.symbol}, {"unit", p.unit}, {"catalogue", p.catalogue},
+                    {"model", p.model}, {"relative_error", p.relativeError()},
+                    {"kloss", std::isfinite(k) ? nlohmann::json(k) : nlohmann::json(nullptr)}});
+    }
+    appendf(text, "  (points 1-7: M_n, I_n, cos φ_n, η_n at s_n; M_s, I_s at standstill; M_k the largest torque; "
+                "torques [N·m], currents RMS line [A]; the circuit has copper losses only, see docs/motor.md)\n");
+    j["catalogue_points"] = pj;
+    study.catalogue_csv = cat_csv;
+  }
+
+  // Steady curves over 0 ≤ s ≤ 1 (each law at its own synchronous speed).
+  Table& curves = study.curves;
+  // ASCII units in the header, as every CSV of rollerdyn (io/Table.h).
+  curves.columns = {"slip[-]", "omega_rotor_kloss[rad/s]", "omega_rotor_circuit[rad/s]", "M_kloss[N*m]",
+                    "M_circuit[N*m]", "M_park[N*m]", "I_circuit[A]", "I_park[A]"};
+  const int n = 500;
+  for (int i = 0; i <= n; ++i) {
+    const double s = double(i) / n;
+    const double wk = scene.motor.omega_sync * (1 - s);
+    std::vector<double> row = {s, wk, NAN, kloss.steadyTorque({}, wk), NAN, NAN, NAN, NAN};
+    if (machine) {
+      const double w = machine->synchronousSpeed() * (1 - s);
+      row[2] = w;
+      row[4] = circuit->steadyTorque({}, w);
+      row[5] = park->steadyTorque({}, w);
+      row[6] = circuit->steadyCurrent({}, w);
+      row[7] = park->steadyCurrent({}, w);
+    }
+    curves.rows.push_back(row);
+  }
+  study.has_machine = machine != nullptr;
+  study.json = std::move(j);
+  return study;
+}
+
+
+std::string writeMotorStudy(const std::string& out, const Scene& scene, const MotorStudy& study) {
+  writeFileAtomic(out + "/motor.json", study.json.dump(2) + "\n");
+  writeCsvAtomic(out + "/motor_curves.csv", study.curves);
+  if (!study.catalogue_csv.empty()) writeFileAtomic(out + "/motor_catalogue.csv", study.catalogue_csv);
+  const Table& curves = study.curves;
+  const bool machine = study.has_machine;
+  const InductionMotor& im = scene.induction;
+  if (gnuplotAvailable()) {
+    const std::vector<double> s = curves.column("slip[-]");
+    PlotSpec tq;
+    tq.title = "torque-slip curves, " + escapeUnderscores(scene.name) + ", rated supply";
+    tq.xlabel = "slip s [-]";
+    tq.ylabel = "torque at the rotor M [N·m]";
+    auto line = [&](const std::string& title, const std::string& col, const std::string& color, int dash, double lw) {
+      PlotSeries p;
+      p.title = title;
+      p.x = s;
+      p.y = curves.column(col);
+      p.color = color;
+      p.dash = dash;
+      p.line_width = lw;
+      return p;
+    };
+    tq.series.push_back(line("Kloss (static; dynamic Kloss: same static curve)", "M_kloss[N*m]", "#1f77b4", 0, 2));
+    if (machine) {
+      tq.series.push_back(line("equivalent circuit", "M_circuit[N*m]", "#d62728", 0, 2));
+      tq.series.push_back(line("Park machine, steady state", "M_park[N*m]", "#2ca02c", 2, 1.5));
+    }
+    PlotSpec cur = tq;
+    cur.title = "stator current-slip curves, " + escapeUnderscores(scene.name) + ", rated supply";
+    cur.ylabel = "RMS stator (line) current I [A]";
+    cur.series.clear();
+    if (machine) {
+      cur.series.push_back(line("equivalent circuit", "I_circuit[A]", "#d62728", 0, 2));
+      cur.series.push_back(line("Park machine, steady state", "I_park[A]", "#2ca02c", 2, 1.5));
+    }
+    if (im.catalogue.given()) {
+      const MotorCatalogue& c = im.catalogue;
+      const double s_n = 1.0 - c.omega_nominal / scene.motor.omega_sync, m_n = c.nominalTorque();
+      PlotSeries pts;
+      pts.title = "catalogue: M_n at s_n, M_s at s = 1";
+      pts.x = {s_n, 1.0};
+      pts.y = {m_n, c.starting_torque_ratio * m_n};
+      pts.style = "points";
+      pts.color = "#000000";
+      pts.line_width = 2;
+      tq.series.push_back(pts);
+      PlotSeries mk;
+      mk.title = "catalogue breakdown torque M_k";
+      mk.x = {0.0, 1.0};
+      mk.y = {c.breakdown_torque_ratio * m_n, c.breakdown_torque_ratio * m_n};
+      mk.color = "#000000";
+      mk.dash = 3;
+      tq.series.push_back(mk);
+      PlotSeries ip;
+      ip.title = "catalogue: I_n at s_n, I_s at s = 1";
+      ip.x = {s_n, 1.0};
+      ip.y = {c.current, c.starting_current_ratio * c.current};
+      ip.style = "points";
+      ip.color = "#000000";
+      ip.line_width = 2;
+      cur.series.push_back(ip);
+    }
+    // Head room above the curves for the key.
+    auto top = [](const PlotSpec& p) {
+      double m = 0;
+      for (const auto& ser : p.series)
+        for (double v : ser.y)
+          if (std::isfinite(v)) m = std::max(m, v);
+      return fmt("%.6g", 1.45 * m);
+    };
+    tq.preamble = "set key inside top right\nset xrange [0:1]\nset yrange [0:" + top(tq) + "]";
+    cur.preamble = "set key inside top left\nset xrange [0:1]\nset yrange [0:" + top(cur) + "]";
+    renderPlot(tq, out + "/motor_torque_slip");
+    if (!cur.series.empty()) renderPlot(cur, out + "/motor_current_slip");
+  } else {
+    return "gnuplot not found (Debian package gnuplot-nox): no figures";
+  }
+  return "";
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,51 @@
+#include "studies/RunSummary.h"
+
+#include <filesystem>
+
+#include "analysis/Summary.h"
+#include "report/OutputFolder.h"
+#include "scene/Plausibility.h"
+#include "studies/ResonanceCheck.h"
+#include "studies/StartLoad.h"
+
+namespace rollerdyn {
+
+nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunSummaryOptions& options,
+                            RunMessages* messages) {
+  const StartLoad start_load = startLoadOf(scene);  // explains a stall
+  nlohmann::json summary = makeSummary(scene, run, &start_load);
+  summary["scene_path"] =
+      options.scene_file.empty()
+          ? nlohmann::json(nullptr)
+          : nlohmann::json(std::filesystem::absolute(options.scene_file).lexically_normal().string());
+  summary["overrides"] = options.overrides;
+  if (!summary.contains("warnings") || !summary["warnings"].is_array()) summary["warnings"] = nlohmann::json::array();
+  for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
+  const std::size_t run_warnings = summary["warnings"].size();
+  // The two-mass check is the first estimate; the verdict rests on the modal analysis.
+  const std::vector<std::string> first_estimate = addResonanceWarnings(scene, summary);
+  std::vector<std::string> verdict_lines;
+  if (options.resonance_verdict)
+    verdict_lines = modes::writeResonanceVerdict(scene, summary, first_estimate,
+                                                 options.modal ? &options.modal->report : nullptr);
+  if (options.modal) modes::addRunModes(*options.modal, summary);
+  if (messages) {
+    for (std::size_t i = 0; i < summary["warnings"].size(); ++i)
+      if (summary["warnings"][i].is_string())
+        (i < run_warnings ? messages->run_warnings : messages->resonance_warnings)
+            .push_back(summary["warnings"][i].get<std::string>());
+    for (const std::string& line : verdict_lines)
+      if (line.rfind("resonance verdict:", 0) == 0) messages->resonance_verdict = line;
+    messages->first_estimate = first_estimate;
+  }
+  return summary;
+}
+
+void writeRunFiles(const std::string& out_dir, const RunResult& run, const nlohmann::json& summary,
+                   const modes::RunModal* modal) {
+  writeRunTables(out_dir, run);
+  if (modal) modes::writeRunModesFiles(out_dir, *modal);
+  writeSummaryAtomic(out_dir + "/summary.json", summary);
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,64 @@
+// What every caller of one run writes or returns about it, in one place, so that `simulate`,
+// `report`, the sweep points and the Python interface give the same summary.json and files:
+//   - the summary (analysis/Summary.h) with the load at the start that explains a stall
+//     (StartLoad.h), the user's overrides (so that a command the console suggests repeats them),
+//     the plausibility warnings of the scene (Plausibility.h), the resonance check of the two-mass
+//     drive, Dyomin (two rotors) eq. (10) (ResonanceCheck.h), as the first estimate, and the
+//     resonance verdict of the modal analysis (modes/RunModes.h), and the scene file's absolute
+//     path, so `rollerdyn plot DIR` finds it from any folder;
+//   - the run's files in an output folder: timeseries.csv, reactions.csv (when computed),
+//     summary.json and, with a modal analysis, its files; each written to a temporary name and
+//     renamed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/RunResult.h"
+#include "modes/RunModes.h"
+#include "scene/Scene.h"
+
+namespace rollerdyn {
+
+struct RunSummaryOptions {
+  // The scene file as given (made absolute and normalised in summary["scene_path"]), or "" for a
+  // scene that is not a file (then scene_path is null).
+  std::string scene_file;
+  // The overrides applied to the file (--set key=value), in order: summary["overrides"].
+  std::vector<std::string> overrides;
+  // The resonance verdict of the modal analysis. Without `modal` a light analysis is made (reduced
+  // model, no Campbell diagram or charts: tens of milliseconds). false: the two-mass first
+  // estimate only, unlabelled (a sweep's points, whose resonance_warnings column counts it).
+  bool resonance_verdict = true;
+  // A full modal analysis made for this run (simulate --modes, report): the verdict rests on it,
+  // and summary["modes"] and summary["order_spectrum"] hold it.
+  const modes::RunModal* modal = nullptr;
+};
+
+// What a terminal prints about the run once it is summarized: the warnings of summary["warnings"]
+// in order, run_warnings then resonance_warnings, then the resonance verdict.
+struct RunMessages {
+  // The load's warnings (a load that does no net work) and the scene's plausibility warnings.
+  std::vector<std::string> run_warnings;
+  // The first estimate's resonance warnings (labelled as such where the verdict is made) and the
+  // modal analysis' warnings.
+  std::vector<std::string> resonance_warnings;
+  // "resonance verdict: ..." when the first estimate warned and the modal analysis does not (why
+  // not), else "".
+  std::string resonance_verdict;
+  // The two-mass check's warnings as it gave them (before the label).
+  std::vector<std::string> first_estimate;
+};
+
+// summary.json of `run` on `scene`.
+nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunSummaryOptions& options,
+                            RunMessages* messages = nullptr);
+
+// Writes the run's tables, `summary` and, with `modal`, the modal analysis' files into `out_dir`
+// (which must exist), atomically.
+void writeRunFiles(const std::string& out_dir, const RunResult& run, const nlohmann::json& summary,
+                   const modes::RunModal* modal = nullptr);
+
+}  // namespace rollerdyn

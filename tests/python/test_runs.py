@@ -1,0 +1,58 @@
+"""Results of one run: tables with units, the summary's sizing answers, HTML for Jupyter, and
+the reactions left out when the scene says so."""
+
+import rollerdyn as rd
+from conftest import model
+
+
+def short(scene_file, **changes):
+    return rd.Scene.load(model(scene_file)).with_({"simulation.t_end": 2, **changes})
+
+
+def test_tables_summary_and_units():
+    r = rd.simulate(short("balanced-4cart.yaml"))
+    ts, rx = r.timeseries, r.reactions
+    assert list(ts.columns[:5]) == ["t", "phi_motor", "phi_crank", "omega_motor", "omega_crank"]
+    assert ts["t"].iloc[-1] == 2.0 and len(ts) == 401
+    assert ts.attrs["units"]["omega_crank"] == "rad/s" and r.units["F_rod_1"] == "N"
+    assert rx is not None and "N_front_4" in rx.columns
+    assert r.summary["complete"] is True and r.summary["model"] == "multibody"
+    assert set(r.sizing) >= {"motor", "flywheel", "coupling", "joints"}
+    assert r.sizing["motor"]["torque_shaft"]["rms"] > 0
+    text = str(r)
+    assert "drive sizing over the steady window" in text and "crank speed" in text
+
+
+def test_html_has_the_report_tables():
+    r = rd.simulate(short("recuperative-2cart.yaml"), model="reduced")
+    h = r._repr_html_()
+    for part in ("Summary metrics", "<table>", "Joint reactions over the steady window", "recuperative-2cart"):
+        assert part in h
+    assert "<table>" in rd.Scene.load(model("recuperative-2cart.yaml"))._repr_html_()
+
+
+def test_no_reactions_when_the_scene_leaves_them_out():
+    r = rd.simulate(short("balanced-4cart.yaml", **{"simulation.reactions": False}))
+    assert r.reactions is None
+    assert r.summary["reactions"] == {}
+
+
+def test_compare_runs_both_models():
+    c = rd.compare(short("recuperative-2cart.yaml"))
+    assert c.multibody.model == "multibody" and c.reduced.model == "reduced"
+    assert "omega_crank_multibody" in c.table.columns
+    d = c.differences()
+    assert d.loc["omega_crank", "max_rel_diff"] < 1e-2
+    assert "max_rel_diff" in str(c) or "omega_crank" in str(c)
+
+
+def test_write_refuses_a_file_as_folder(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    r = rd.simulate(short("recuperative-2cart.yaml"), model="reduced")
+    try:
+        r.write(blocker / "out")
+    except RuntimeError as e:
+        assert "out_dir" in str(e)
+    else:
+        raise AssertionError("write into a path below a file must fail")

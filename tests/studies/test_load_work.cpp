@@ -1,0 +1,73 @@
+// What the technological load takes from the drive (src/analysis/LoadWork.h), through the one
+// load law both models share (src/physics/RollerLoads.h). The 6-cart trial: with the papers'
+// printed roller forces (the shipped as_printed reading) the load did 0.004 J of work in 10 s and
+// nobody was told; the other reading needs ~130 kW. Now the work per cart is in every summary, a
+// warning names the no-work case, and loads.rolling_resistance specifies a dissipation physically.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analysis/Summary.h"
+#include "cli/CliTestSupport.h"
+#include "multibody/MultibodySimulation.h"
+#include "reduced/ReducedModel.h"
+#include "scene/SceneParser.h"
+
+namespace rollerdyn {
+namespace {
+
+using test::model;
+
+nlohmann::json summaryOf(const Scene& s, bool multibody) {
+  const RunResult run = multibody ? runMultibodyModel(s) : runReducedModel(s);
+  return makeSummary(s, run);
+}
+
+bool hasNoWorkWarning(const nlohmann::json& j) {
+  for (const auto& w : j["warnings"])
+    if (w.get<std::string>().find("almost no net work") != std::string::npos) return true;
+  return false;
+}
+
+TEST(LoadWork, PrintedRollerForcesDoNoNetWorkAndSaySo) {
+  const Scene s = parseSceneFile(model("balanced-4cart.yaml"), {"simulation.t_end=6", "simulation.reactions=false"});
+  for (bool mb : {false, true}) {
+    const nlohmann::json j = summaryOf(s, mb);
+    ASSERT_TRUE(j["load"]["available"].get<bool>()) << mb;
+    // A constant force gives back on the return stroke what it took: net ≈ 0 against the gross.
+    EXPECT_LT(std::abs(j["load"]["net_over_gross_steady"].get<double>()), 1e-3) << mb;
+    EXPECT_LT(std::abs(j["load"]["power_mean_per_cart_steady"].get<double>()), 1.0) << mb;  // W
+    EXPECT_TRUE(hasNoWorkWarning(j)) << mb << " " << j["warnings"].dump();
+    EXPECT_EQ(j["load"]["per_cart"].size(), 4u);
+  }
+}
+
+// μ_r = 0.05 on R_j1 + R_j2 = 19480 N: each cart absorbs μ_r·R·mean|v'|, where mean|v'| is the
+// cart's mean speed from the run's own rows (both models, the same law). No warning.
+TEST(LoadWork, RollingResistanceDissipatesInBothModels) {
+  const Scene s = parseSceneFile(model("balanced-4cart.yaml"),
+                                 {"simulation.t_end=6", "simulation.reactions=false", "loads.rolling_resistance=0.05"});
+  double power[2] = {0, 0};
+  for (int mb = 0; mb < 2; ++mb) {
+    const RunResult run = mb ? runMultibodyModel(s) : runReducedModel(s);
+    const nlohmann::json j = makeSummary(s, run);
+    EXPECT_FALSE(hasNoWorkWarning(j)) << j["warnings"].dump();
+    const double t0 = j["steady_state"]["t_begin"], t1 = j["steady_state"]["t_end"];
+    // mean |v| of cart 1 over the same window, trapezoidal on the rows
+    const Table& ts = run.timeseries;
+    const int it = ts.index("t"), iv = ts.index("v_cart_1");
+    double integral = 0;
+    for (std::size_t i = 1; i < ts.rows.size(); ++i)
+      if (ts.rows[i - 1][it] >= t0 - 1e-12 && ts.rows[i][it] <= t1 + 1e-12)
+        integral += 0.5 * (std::abs(ts.rows[i - 1][iv]) + std::abs(ts.rows[i][iv])) * (ts.rows[i][it] - ts.rows[i - 1][it]);
+    const double mean_speed = integral / (t1 - t0);
+    const double expected = 0.05 * 19480.0 * mean_speed;  // W per cart; the printed F does no net work
+    power[mb] = j["load"]["per_cart"][0]["power_mean_steady"].get<double>();
+    EXPECT_NEAR(power[mb], expected, 0.02 * expected) << (mb ? "multibody" : "reduced");
+    EXPECT_GT(j["load"]["net_over_gross_steady"].get<double>(), 0.05);
+  }
+  EXPECT_NEAR(power[0], power[1], 0.01 * power[1]);  // one law in both models
+}
+
+}  // namespace
+}  // namespace rollerdyn
