@@ -272,5 +272,32 @@ TEST(PaperFindings, SchemeIsNotTheCauseOnlyIfItsFittedStepLeavesTheGap) {
   EXPECT_EQ(f.front().verdict, Verdict::Fails) << "a gap whose reason fails is not explained";
 }
 
+// Section (5), the induction-motor claims, goes through the same counting: a motor claim that
+// fails is a FAILED claim of the report (summary, results.json, exit status 1), and the validation
+// items are numbered after it.
+TEST(ValidationReport, MotorClaimsAreCountedAndDecideTheExitStatus) {
+  ValidationResults r;
+  r.equivalence = {comparison("E0", 1e-9, 3e-8, 2e-7, true)};
+  MotorClaim m1{"M1", "a motor law against its reference", {"numbers 1.0 against 1.0"}, Verdict::Holds};
+  MotorClaim m2{"M2", "another motor law", {"numbers 2.0 against 1.0"}, Verdict::Holds};
+  r.motor = {m1, m2};
+  ValidationSection item("extra", "An item of its own");
+  item.claim(true, "a comparison that held");
+  r.sections = {item};
+  ValidationReport rep = buildValidationReport(r, "figures");
+  EXPECT_EQ(countClaims(rep.claims).holds, 3);
+  EXPECT_EQ(validationExitStatus(r, rep), 0);
+  EXPECT_TRUE(contains(rep.markdown, "## (5) The induction-motor laws"));
+  EXPECT_TRUE(contains(rep.markdown, "## (6) An item of its own"));
+
+  r.motor[1].verdict = Verdict::Fails;
+  rep = buildValidationReport(r, "figures");
+  EXPECT_EQ(countClaims(rep.claims).failed, 1);
+  EXPECT_EQ(validationExitStatus(r, rep), 1);
+  EXPECT_TRUE(contains(validationSummary(r, rep), "FAILED M2")) << validationSummary(r, rep);
+  EXPECT_TRUE(contains(rep.markdown, "- **M2** another motor law: **FAILED**"));
+  EXPECT_EQ(rep.results["claim_count"]["failed"], 1);
+}
+
 }  // namespace
 }  // namespace rollerdyn::validation
