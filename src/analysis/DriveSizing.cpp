@@ -335,19 +335,22 @@ std::vector<double> kineticEnergy(const Scene& sc, const Table& ts) {
   const double m_rod_half = sc.rods.model == RodModel::Massless ? 0.0 : 0.5 * sc.rods.mass;
   const double r = sc.hasCamDrive() ? 0.0 : sc.crank.radius;
   const double Jc = sc.crankSideInertia() + sc.carts.count * m_rod_half * r * r;
-  const double m_cart = sc.carts.mass + m_rod_half;
   const int iw1 = ts.has("omega_motor") ? ts.index("omega_motor") : -1;
   const int iw2 = ts.has("omega_crank") ? ts.index("omega_crank") : -1;
   std::vector<int> iv;
+  std::vector<double> m_cart;  // per cart column: its mass with half a rod
   for (int j = 1; j <= sc.carts.count; ++j)
-    if (ts.has("v_cart_" + std::to_string(j))) iv.push_back(ts.index("v_cart_" + std::to_string(j)));
+    if (ts.has("v_cart_" + std::to_string(j))) {
+      iv.push_back(ts.index("v_cart_" + std::to_string(j)));
+      m_cart.push_back(sc.cartMass(j - 1) + m_rod_half);
+    }
   for (std::size_t i = 0; i < n; ++i) {
     const auto& row = ts.rows[i];
     const double w2 = iw2 >= 0 ? row[iw2] : kNaN;
     // Rigid coupling: the motor turns with the crank (omega_motor may be absent).
     const double w1 = iw1 >= 0 ? row[iw1] : w2;
     double t = 0.5 * J1 * w1 * w1 + 0.5 * Jc * w2 * w2;
-    for (int k : iv) t += 0.5 * m_cart * row[k] * row[k];
+    for (std::size_t c = 0; c < iv.size(); ++c) t += 0.5 * m_cart[c] * row[iv[c]] * row[iv[c]];
     T[i] = t;
   }
   return T;

@@ -15,15 +15,26 @@ nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlo
 
 LoadWork computeLoadWork(const Scene& sc, const RunResult& run, const SteadyState& w) {
   LoadWork out;
-  const Loads& L = sc.loads;
   char buf[640];  // the no-net-work warning is ~390 characters
-  std::snprintf(buf, sizeof buf, "roller forces F_j1 + F_j2 = %.6g N %s; rolling resistance μ_r = %.4g of R_j1 + R_j2 = %.6g N",
-                L.roller_force_front + L.roller_force_rear,
-                L.roller_force_direction == RollerForceDirection::AsPrinted
-                    ? "of one direction as printed (loads.roller_force_direction: as_printed)"
-                    : "against the cart's velocity (loads.roller_force_direction: opposes_velocity)",
-                L.rolling_resistance, L.roller_normal_front + L.roller_normal_rear);
-  out.reading = buf;
+  // Carts with their own loads (loads.* as lists): each value as the list of cart 1, 2, ...
+  auto perCart = [&](double (*value)(const Loads&), const char* format) {
+    const int n = sc.cart_loads.empty() ? 1 : sc.carts.count;
+    std::string text;
+    for (int j = 0; j < n; ++j) {
+      std::snprintf(buf, sizeof buf, format, value(sc.cartLoads(j)));
+      text += (j ? ", " : "") + std::string(buf);
+    }
+    return n > 1 ? text + " (carts 1 to " + std::to_string(n) + ")" : text;
+  };
+  const Loads& L = sc.loads;
+  out.reading = "roller forces F_j1 + F_j2 = " +
+                perCart([](const Loads& l) { return l.roller_force_front + l.roller_force_rear; }, "%.6g") + " N " +
+                (L.roller_force_direction == RollerForceDirection::AsPrinted
+                     ? "of one direction as printed (loads.roller_force_direction: as_printed)"
+                     : "against the cart's velocity (loads.roller_force_direction: opposes_velocity)") +
+                "; rolling resistance μ_r = " + perCart([](const Loads& l) { return l.rolling_resistance; }, "%.4g") +
+                " of R_j1 + R_j2 = " +
+                perCart([](const Loads& l) { return l.roller_normal_front + l.roller_normal_rear; }, "%.6g") + " N";
   const Table& ts = run.timeseries;
   if (!sc.hasRollerLoads() || !ts.has("t") || sc.carts.count < 1) return out;
   const std::size_t n = std::min(w.finite_rows, ts.rows.size());
@@ -37,6 +48,7 @@ LoadWork computeLoadWork(const Scene& sc, const RunResult& run, const SteadyStat
     const int sigma = j - 1 < int(sc.carts.side.size()) ? sc.carts.side[j - 1] : 1;
     CartLoadWork c;
     c.cart = j;
+    const Loads L = sc.cartLoads(j - 1);
     auto P = [&](std::size_t i) { return rollerLoadPower(L, sigma * ts.rows[i][iv]); };
     for (std::size_t i = 1; i < n; ++i) {
       const double dt = ts.rows[i][it] - ts.rows[i - 1][it];

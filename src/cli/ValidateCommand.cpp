@@ -88,6 +88,11 @@ int runValidate(bool quick, const std::string& out_dir, bool modes_only) {
   writeFileAtomic(out_dir + "/results.json", report.results.dump(2) + "\n");
   writeFileAtomic(out_dir + "/report.md", report.markdown);
 
+  for (const auto& c : results.per_cart) {
+    const bool fails = c.verdict != Finding::Verdict::Holds;
+    std::cout << "carts of their own " << c.label << (fails ? " FAILS: " : " holds: ") << c.description << '\n'
+              << "    " << (c.explanation.empty() ? "(no result)" : c.explanation) << '\n';
+  }
   for (const auto& c : results.motor) {
     const bool fails = c.verdict == Finding::Verdict::Fails;
     std::cout << "induction motor " << c.id << (fails ? " FAILS: " : c.verdict == Finding::Verdict::Holds ? " holds: " : ": ")
@@ -101,9 +106,9 @@ int runValidate(bool quick, const std::string& out_dir, bool modes_only) {
     std::cerr << "rollerdyn: interrupted; the report holds what was computed\n";
     return 3;
   }
-  // 1 when any claim is FAILED (the induction-motor claims and the torsional-modes checks
-  // included) or any equivalence case fails: a check that cannot fail the run is not a check (CI
-  // runs `validate` as a test).
+  // 1 when any claim is FAILED (the cases of carts of their own, the induction-motor claims and
+  // the torsional-modes checks included) or any equivalence case fails: a check that cannot fail
+  // the run is not a check (CI runs `validate` as a test).
   return validationExitStatus(results, report);
 }
 

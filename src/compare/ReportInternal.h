@@ -93,6 +93,7 @@ class ReportWriter {
   }
   void header();
   void equivalence();
+  void perCart();
   void differences();
   // Published, reduced, [Baranov 1 deg,] multibody against the swept value (seeds 004 and 003).
   void coefficientFigure(const std::string& name, PlotSpec spec, const std::string& published_title,

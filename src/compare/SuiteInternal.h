@@ -83,6 +83,7 @@ class Suite {
                   const std::string& published_key, const std::function<std::string(double)>& describe);
 
   void equivalence(ValidationResults& r);
+  void perCart(ValidationResults& r);
   void differences(ValidationResults& r);
   void papers(ValidationResults& r);
   void sensitivity(ValidationResults& r);

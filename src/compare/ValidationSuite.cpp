@@ -174,6 +174,7 @@ ValidationResults Suite::run() {
   const std::clock_t c0 = std::clock();
   log("(1) equivalence");
   equivalence(r);
+  if (!interrupted()) perCart(r);
   if (!interrupted()) {
     log("(2) where the physics differ");
     differences(r);

@@ -11,6 +11,9 @@
 //   (3) the papers' tables (validation/published/*.csv) beside our numbers: Loveikin and Pochka (2007) Δφ sweep,
 //       the energy-balanced drive paper flywheel sweep, Loveikin, Pochka, Romasevych (2018) Table 1; inputs are the shipped scenes, never tuned;
 //   (4) Dyomin's closed-form two-rotor response against the multibody ElasticCoupling.
+// Beside (1), carts of their own (docs/per-cart.md): one empty cart, one crank 2° off, each
+// compared between the models and with the order of the crank speed it adds to the coupling
+// torque (ValidationPerCart.cpp).
 // runValidation() computes; buildValidationReport() turns the results into report.md text,
 // figure specifications (drawn by the caller through src/report/Gnuplot.h) and results.json.
 #pragma once
@@ -164,6 +167,7 @@ struct ValidationResults {
   double cpu_seconds = 0;                         // whole suite
   std::vector<ComparisonCase> equivalence;        // E0 (the README's command, 1e-9), E1-E7 (1e-11)
   std::vector<ComparisonCase> convergence;        // E4, E3 at several accuracies
+  std::vector<ComparisonCase> per_cart;           // P1 (one empty cart), P2 (one crank 2° off)
   Table equivalence_example;                      // comparison.csv of E0 (for the figures)
   std::vector<ComparisonCase> differences;
   Table friction_example;                         // comparison.csv of the friction case

@@ -64,7 +64,8 @@ ExcitationOrders excitationOrders(const Scene& scene, double omega, int max_orde
     c.inertia_amplitude = hJ[k];
     c.load_amplitude = hM[k];
     e.table.push_back(c);
-    if (c.layout_factor > 1e-9) e.layout.push_back(k);
+    // Carts of different masses or loads each bring their own harmonics: no phase sum cancels them.
+    if (c.layout_factor > 1e-9 || !scene.cartsIdentical()) e.layout.push_back(k);
     const bool inJ = maxJ > 0 && hJ[k] > floorJ, inM = maxM > 0 && hM[k] > floorM;
     if (inJ) e.inertia.push_back(k);
     if (inM) e.load.push_back(k);

@@ -7,7 +7,9 @@
 // same-side one turned by half a revolution and mirrored: x_B,opposite(θ) = -x_B,same(θ + π), so
 // its inertia x_B'² and its load torque are the same-side ones at θ + π). Order k survives when
 // that sum is not zero. N equal carts at equal offsets 2π/N on one side: only k·N; unequal
-// offsets: every order. The rods' own weight (distributed rods with gravity) does not follow the
+// offsets (crank.angles_deg, crank.angle_error_deg): every order. Carts of different masses or
+// loads (carts.mass or loads.* as lists) are not the same function of their crank angle: every
+// order survives whatever the phases. The rods' own weight (distributed rods with gravity) does not follow the
 // mirror rule (their centre of mass rises and falls the same way on either side) and adds order 1
 // per cart with the phases j·Δφ.
 //
@@ -30,6 +32,7 @@ struct OrderContent {
 
 struct ExcitationOrders {
   std::vector<int> layout;          // orders 1..max_order that survive the layout's phase sums
+                                    // (all of them when the carts' masses or loads differ)
   std::vector<int> inertia;         // orders present in J_n2(φ2) (measured)
   std::vector<int> load;            // orders present in the load torque (measured)
   std::vector<int> all;             // union of inertia and load: the orders the Campbell diagram draws

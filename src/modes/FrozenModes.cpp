@@ -40,10 +40,9 @@ void nameMode(FrozenMode& m, const Scene& scene, double phi, bool elastic) {
   const double dphi2 = m.shape(0), dpsi = elastic ? m.shape(1) : 0.0;
   const double dphi1 = dphi2 + dpsi;
   double carts = 0;
-  const double mB = scene.cartMassWithRodShare();
   for (int j = 0; j < scene.carts.count; ++j) {
     const double dx = rm.cartPose(j, phi).dx_B;
-    carts += mB * dx * dx;
+    carts += scene.cartMassWithRodShare(j) * dx * dx;
   }
   const double J2 = rm.crankSideInertia(phi);
   const double e_motor = J1 * dphi1 * dphi1, e_carts = carts * dphi2 * dphi2,

@@ -172,8 +172,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
                            : (sc.motor.enabled ? w_sync : std::max(std::abs(sc.initial.crank_speed), 1.0));
   const double M_ref = std::max(
       {sc.motor.breakdown_torque * sc.reducer.ratio * sc.reducer.efficiency,
-       sc.carts.count * (std::abs(sc.loads.roller_force_front) + std::abs(sc.loads.roller_force_rear)) *
-           std::max(sc.crank.radius, sc.hasCamDrive() ? sc.cam.stroke : 0.0),
+       sc.rollerForceSum() * std::max(sc.crank.radius, sc.hasCamDrive() ? sc.cam.stroke : 0.0),
        1.0});
   // E_ref: kinetic energy of the machine at the reference speed (its work integrals' scale).
   SimTK::State kin = s0;
@@ -203,7 +202,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   }
   if (model.hasGuideFriction()) {
     // One unit of N̂: the error whose friction changes a cart's speed by 1 m/s in 1 s.
-    const double N_unit = sc.cartMassWithRodShare() * 1.0 / sc.loads.guide_friction;
+    const double N_unit = sc.lightestCartMassWithRodShare() * 1.0 / sc.loads.guide_friction;
     const int n_normals = 2 * sc.carts.count;
     // The friction element is built before the energy meter (MultibodyModel::buildForces), so
     // its normal forces are the first z entries.

@@ -87,7 +87,7 @@ void MultibodyModel::buildCarts() {
     rig.side = sc.carts.side[j];
     rig.p_CrankPin = crankPin(sc, j);
     rig.rod_length = l;
-    const double m_cart = sc.cartMassWithRodShare();
+    const double m_cart = sc.cartMassWithRodShare(j);
     const SimTK::Vec3 com_cart(rig.side * sc.carts.geometry.p, sc.carts.geometry.com_height, 0);
     SimTK::Body::Rigid cart_body(SimTK::MassProperties(m_cart, com_cart, SimTK::Inertia(com_cart, m_cart)));
     rig.cart = SimTK::MobilizedBody::Slider(matter_.Ground(), SimTK::Transform(), cart_body, SimTK::Transform());
@@ -149,7 +149,9 @@ void MultibodyModel::buildForces() {
     inventory_.force_elements.push_back("Gravity");
   }
   if (sc.hasRollerLoads()) {
-    auto* f = new RollerLoadForce(carts_, sc.loads, sc.carts.geometry);
+    std::vector<Loads> per_cart;
+    for (int j = 0; j < sc.carts.count; ++j) per_cart.push_back(sc.cartLoads(j));
+    auto* f = new RollerLoadForce(carts_, per_cart, sc.carts.geometry);
     SimTK::Force::Custom(forces_, f);
     load_force_ = sources.loads = f;
     applied_order_.push_back(f);
@@ -186,7 +188,8 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
   const Scene& sc = scene_;
   SimTK::State s = system_.getDefaultState();
   system_.realizeModel(s);
-  if (friction_force_) friction_force_->setErrorWeights(s, scene_.cartMassWithRodShare());
+  // Carts of different masses: the lightest is the one a friction error moves most.
+  if (friction_force_) friction_force_->setErrorWeights(s, scene_.lightestCartMassWithRodShare());
   if (motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex()) {
     // Simbody counts 1 rad (1 rad/s) as a unit change of every coordinate (speed), but the
     // coupling twist is ~torque/c: 1e-6 rad at c = 1e9, so it was held to ~100 % of itself and

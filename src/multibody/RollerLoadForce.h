@@ -1,7 +1,8 @@
 // Technological loads of the compacting rollers on every cart (Loveikin, Pochka, Romasevych (2018) fig. 3: F_j1, F_j2
 // horizontal, R_j1, R_j2 vertical), applied at the roller contacts so their moments load the
 // guide rollers as in eq. (10). The horizontal direction follows loads.roller_force_direction
-// (physics/RollerLoads.h). Built only when the scene has roller loads.
+// (physics/RollerLoads.h). Each cart has its own loads (Scene::cartLoads). Built only when the
+// scene has roller loads.
 #pragma once
 
 #include <vector>
@@ -12,8 +13,9 @@ namespace rollerdyn {
 
 class RollerLoadForce : public SimTK::Force::Custom::Implementation {
  public:
-  RollerLoadForce(std::vector<CartRig> carts, const Loads& loads, const CartGeometry& geometry)
-      : carts_(std::move(carts)), loads_(loads), geometry_(geometry) {}
+  // loads: one entry per cart.
+  RollerLoadForce(std::vector<CartRig> carts, std::vector<Loads> loads, const CartGeometry& geometry)
+      : carts_(std::move(carts)), loads_(std::move(loads)), geometry_(geometry) {}
 
   // Horizontal roller force on cart j along world x [N].
   double horizontalForce(const SimTK::State& s, int j) const;
@@ -26,7 +28,7 @@ class RollerLoadForce : public SimTK::Force::Custom::Implementation {
 
  private:
   std::vector<CartRig> carts_;
-  Loads loads_;
+  std::vector<Loads> loads_;  // per cart
   CartGeometry geometry_;
 };
 

@@ -19,7 +19,13 @@ namespace {
 // A value text of the parameter table as the Python value it stands for, by the key's kind.
 py::object typedValue(const KeySpec& spec, const std::string& text) {
   switch (spec.kind) {
-    case KeyKind::Number: return py::float_(YAML::Load(text).as<double>());
+    case KeyKind::Number: {
+      const YAML::Node n = YAML::Load(text);
+      if (!n.IsSequence()) return py::float_(n.as<double>());
+      py::list l;  // a per-cart key given as a list: one float per cart
+      for (const auto& e : n) l.append(py::float_(e.as<double>()));
+      return std::move(l);
+    }
     case KeyKind::Integer: return py::int_(YAML::Load(text).as<long long>());
     case KeyKind::Flag: return py::bool_(text == "true" || text == "True" || text == "TRUE");
     case KeyKind::Sides: {

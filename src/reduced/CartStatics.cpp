@@ -1,6 +1,7 @@
 #include "reduced/CartStatics.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/Dense>
 
@@ -10,11 +11,18 @@ namespace rollerdyn {
 
 CartStaticsResult solveCartStatics(const Scene& scene, double beta, double H, double phi_f,
                                    double Fin) {
+  if (!scene.cartsIdentical())
+    throw std::logic_error("solveCartStatics: the carts' masses or loads differ; say which cart");
+  return solveCartStatics(scene, 0, beta, H, phi_f, Fin);
+}
+
+CartStaticsResult solveCartStatics(const Scene& scene, int cart, double beta, double H, double phi_f,
+                                   double Fin) {
   const CartGeometry& g = scene.carts.geometry;
-  const Loads& L = scene.loads;
+  const Loads L = scene.cartLoads(cart);
   const double f = L.guide_friction;
   const double R1 = L.roller_normal_front, R2 = L.roller_normal_rear;
-  const double G = scene.cartMassWithRodShare() * L.gravity;  // Loveikin, Pochka, Romasevych (2018) eq. (3), G at x' = p
+  const double G = scene.cartMassWithRodShare(cart) * L.gravity;  // Loveikin, Pochka, Romasevych (2018) eq. (3), G at x' = p
   // Distributed rod: half its weight reaches the cart at B (see header).
   const double V = (scene.rods.model == RodModel::Distributed) ? 0.5 * scene.rods.mass * L.gravity : 0.0;
   const double cb = std::cos(beta), sb = std::sin(beta);

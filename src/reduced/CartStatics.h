@@ -48,9 +48,13 @@ struct CartStaticsResult {
   double friction = 0;  // guide friction force along the LOCAL x' axis [N]
 };
 
-// Solves the cart equilibrium above. beta: rod angle β [rad]; horizontal_roller_force: H along
-// local +x' [N] (rollerHorizontalForce); friction_direction: φ_f in [-1, 1] (frictionDirection);
-// inertial_force_x: Fin along local +x' [N]. Never throws for finite inputs.
+// Solves the cart equilibrium above for cart `cart` (0-based; its own m_B, R_j1, R_j2: Scene::
+// cartMassWithRodShare(j), Scene::cartLoads(j)). beta: rod angle β [rad]; horizontal_roller_force:
+// H along local +x' [N] (rollerHorizontalForce); friction_direction: φ_f in [-1, 1]
+// (frictionDirection); inertial_force_x: Fin along local +x' [N]. Never throws for finite inputs.
+CartStaticsResult solveCartStatics(const Scene& scene, int cart, double beta, double horizontal_roller_force,
+                                   double friction_direction, double inertial_force_x = 0.0);
+// The same for a scene whose carts all have the same mass and loads (std::logic_error otherwise).
 CartStaticsResult solveCartStatics(const Scene& scene, double beta, double horizontal_roller_force,
                                    double friction_direction, double inertial_force_x = 0.0);
 

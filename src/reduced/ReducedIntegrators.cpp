@@ -149,16 +149,14 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   //   angle φ        1 rad (an error of rtol rad is negligible against a revolution)
   //   speed φ̇        ω_ref = ω0/u, the synchronous crank speed (motor off: max(|φ̇(0)|, 1 rad/s))
   //   twist ψ        ψ_ref = M_ref/c, M_ref = the larger of the breakdown torque at the crank
-  //                  M_kr·u·η and the roller-force torque scale n·(F1+F2)·r: the twist the
+  //                  M_kr·u·η and the roller-force torque scale Σ_j (F_j1+F_j2)·r: the twist the
   //                  coupling takes under the largest torques of the scene
   //   twist rate ψ̇   ψ_ref·√(c/J_n1) (the coupling's own time scale)
   //   work integrals E_ref = ½·J(φ0)·ω_ref², the kinetic energy at synchronous speed
   const double w_ref = s.motor.enabled ? syncCrankSpeed(s)
                                        : std::max(std::abs(s.initial.crank_speed), 1.0);
   const double M_ref = std::max({s.motor.breakdown_torque * s.reducer.ratio * s.reducer.efficiency,
-                                 s.carts.count * (std::abs(s.loads.roller_force_front) +
-                                                  std::abs(s.loads.roller_force_rear)) *
-                                     s.crank.radius,
+                                 s.rollerForceSum() * s.crank.radius,
                                  1.0});
   const double E_ref = 0.5 * (m.reducedInertia(s.initial.crank_angle) + m.motorSideInertia()) *
                        w_ref * w_ref;

@@ -27,7 +27,10 @@ ReducedModel::ReducedModel(const Scene& scene)
     const double r = scene_.crank.radius;
     J_crank_ += n * 0.5 * scene_.rods.mass * r * r;
   }
-  m_B_ = scene_.cartMassWithRodShare();  // Loveikin, Pochka, Romasevych (2018) eq. (3)
+  for (int j = 0; j < n; ++j) {
+    m_B_.push_back(scene_.cartMassWithRodShare(j));  // Loveikin, Pochka, Romasevych (2018) eq. (3)
+    loads_.push_back(scene_.cartLoads(j));
+  }
   if (!rigid_ && !(J_n1_ > 0.0))
     throw std::invalid_argument("reduced model: elastic coupling needs a motor-side inertia J_n1 > 0");
 }
@@ -46,16 +49,16 @@ SliderCrankPose ReducedModel::cartPose(int j, double phi) const {
 // One cart's share of J_n2(φ) and of dJ_n2/dφ: Loveikin, Pochka, Romasevych (2018) eq. (9) (cart, x_B'²) + the rod terms of
 // Loveikin and Pochka (2007) eq. (9) (distributed rod: centre-of-mass speed and rotation), and their φ-derivatives
 // (Loveikin, Pochka, Romasevych (2018) eq. (38), analytic).
-double ReducedModel::cartInertia(const SliderCrankPose& p) const {
-  double J = m_B_ * p.dx_B * p.dx_B;
+double ReducedModel::cartInertia(int j, const SliderCrankPose& p) const {
+  double J = m_B_[j] * p.dx_B * p.dx_B;
   if (scene_.rods.model == RodModel::Distributed)
     J += scene_.rods.mass * (p.dx_S * p.dx_S + p.dy_S * p.dy_S) +
          scene_.rods.inertia_com * p.dbeta * p.dbeta;
   return J;
 }
 
-double ReducedModel::cartInertiaDerivative(const SliderCrankPose& p) const {
-  double dJ = 2.0 * m_B_ * p.dx_B * p.d2x_B;
+double ReducedModel::cartInertiaDerivative(int j, const SliderCrankPose& p) const {
+  double dJ = 2.0 * m_B_[j] * p.dx_B * p.d2x_B;
   if (scene_.rods.model == RodModel::Distributed)
     dJ += 2.0 * scene_.rods.mass * (p.dx_S * p.d2x_S + p.dy_S * p.d2y_S) +
           2.0 * scene_.rods.inertia_com * p.dbeta * p.d2beta;
@@ -74,13 +77,13 @@ double ReducedModel::rodGravityTorque(const SliderCrankPose& p, double theta) co
 
 double ReducedModel::crankSideInertia(double phi) const {
   double J = J_crank_;
-  for (int j = 0; j < cartCount(); ++j) J += cartInertia(cartPose(j, phi));
+  for (int j = 0; j < cartCount(); ++j) J += cartInertia(j, cartPose(j, phi));
   return J;
 }
 
 double ReducedModel::crankSideInertiaDerivative(double phi) const {
   double dJ = 0.0;
-  for (int j = 0; j < cartCount(); ++j) dJ += cartInertiaDerivative(cartPose(j, phi));
+  for (int j = 0; j < cartCount(); ++j) dJ += cartInertiaDerivative(j, cartPose(j, phi));
   return dJ;
 }
 
@@ -104,9 +107,9 @@ CartEvaluation ReducedModel::evaluateCart(int j, double phi, double omega, doubl
   c.theta = phi + scene_.crankPhase(j);
   c.pose = cartPose(j, phi);
   c.v_local = sigma * c.pose.dx_B * omega;                        // v' = σ·ẋ_B
-  c.roller_force = rollerHorizontalForce(scene_.loads, c.v_local);  // H along local +x'
-  const double phi_f = frictionDirection(scene_.loads, c.v_local);
-  c.statics = solveCartStatics(scene_, c.pose.beta, c.roller_force, phi_f, Fin);
+  c.roller_force = rollerHorizontalForce(loads_[j], c.v_local);  // H along local +x'
+  const double phi_f = frictionDirection(loads_[j], c.v_local);
+  c.statics = solveCartStatics(scene_, j, c.pose.beta, c.roller_force, phi_f, Fin);
   // Virtual work in world x: the local force (H + friction) is σ·(H + friction) in world x.
   c.generalized_force = sigma * (c.roller_force + c.statics.friction) * c.pose.dx_B;
   return c;
@@ -176,8 +179,8 @@ void ReducedModel::evaluate(const double* y, ModelEvaluation& e, bool keep_carts
   for (int j = 0; j < cartCount(); ++j) {
     const CartEvaluation c = evaluateCart(j, phi, w2, 0.0);  // quasi-static friction
     const SliderCrankPose& p = c.pose;
-    J += cartInertia(p);
-    dJ += cartInertiaDerivative(p);
+    J += cartInertia(j, p);
+    dJ += cartInertiaDerivative(j, p);
     M += rodGravityTorque(p, c.theta) - c.generalized_force;
     const double sigma = scene_.carts.side[j];
     const double v = p.dx_B * w2;  // world ẋ_B
@@ -248,7 +251,7 @@ std::vector<CartEvaluation> ReducedModel::cartReactions(double phi, double omega
     if (include_inertia) {
       const SliderCrankPose p = cartPose(j, phi);
       const double a_world = p.d2x_B * omega * omega + p.dx_B * eps;
-      Fin = -m_B_ * scene_.carts.side[j] * a_world;  // d'Alembert, local x'
+      Fin = -m_B_[j] * scene_.carts.side[j] * a_world;  // d'Alembert, local x'
     }
     out.push_back(evaluateCart(j, phi, omega, Fin));
   }

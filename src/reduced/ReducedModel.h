@@ -12,6 +12,7 @@
 // J_n1 = Scene::motorSideInertia() (Loveikin, Pochka, Romasevych (2018) eq. (1)); J_n2(φ) = Scene::crankSideInertia() +
 // Σ_j [m_B·x_Bj'² + rod terms] (Loveikin, Pochka, Romasevych (2018) eq. (9), Loveikin and Pochka (2007) eq. (9)):
 //   distributed rods: m_rod·(x_S'² + y_S'²) + I_com·β'²   (Loveikin and Pochka (2007) eq. (9)), m_B = carts.mass
+// (each cart with its own m_B and loads when the scene gives them per cart, docs/per-cart.md)
 //   split rods:       m_rod/2·r² at the crank pin (Loveikin, Pochka, Romasevych (2018) eq. (2)), m_B = m'_B + m_rod/2 (eq. (3))
 //   massless rods:    nothing
 // M_load (resisting torque, Loveikin, Pochka, Romasevych (2018) eq. (30), Loveikin and Pochka (2007) eq. (5)) by virtual work in world x:
@@ -133,15 +134,16 @@ class ReducedModel {
 
  private:
   CartEvaluation evaluateCart(int j, double phi, double omega, double inertial_force) const;
-  double cartInertia(const SliderCrankPose& p) const;            // one cart's share of J_n2 [kg·m²]
-  double cartInertiaDerivative(const SliderCrankPose& p) const;  // its dJ/dφ [kg·m²/rad]
+  double cartInertia(int j, const SliderCrankPose& p) const;            // cart j's share of J_n2 [kg·m²]
+  double cartInertiaDerivative(int j, const SliderCrankPose& p) const;  // its dJ/dφ [kg·m²/rad]
   double rodGravityTorque(const SliderCrankPose& p, double theta) const;  // [N·m]
 
   Scene scene_;
   bool rigid_;
   double J_n1_;       // motor side, Loveikin, Pochka, Romasevych (2018) eq. (1)
   double J_crank_;    // crankshaft without rods + split pin half-masses (Loveikin, Pochka, Romasevych (2018) eq. (2))
-  double m_B_;        // cart mass used with x_B', Loveikin, Pochka, Romasevych (2018) eq. (3)
+  std::vector<double> m_B_;   // per cart: mass used with x_B', Loveikin, Pochka, Romasevych (2018) eq. (3)
+  std::vector<Loads> loads_;  // per cart: the loads acting on it (Scene::cartLoads)
 };
 
 // Runs the reduced model of a scene from its initial state to simulation.t_end and fills the

@@ -36,6 +36,9 @@ const char* const kScript = R"JS((function () {
   var yMix = block ? -0.5 * U : -cg.e;                // surface of the mix
   var reach = Math.max(cg.a + cg.D / 2, cg.b + cg.d / 2);
   var c0 = block ? -0.9 * U : Math.min(0, cg.p - reach), c1 = block ? 0.9 * U : cg.p + reach;  // cart extent from B
+  // Per-cart values (crank.angles_deg, crank.angle_error_deg, carts.mass as a list): labelled per lane.
+  var ownMass = G.masses.some(function (m) { return m !== G.masses[0]; });
+  var ownAngle = G.phases.some(function (p, j) { return G.offset === null || Math.abs(p - j * G.offset) > 1e-9; });
   var travel = [];                                   // per cart: x range of its cart over the run
   var xmin = -1.15 * U, xmax = 1.15 * U;
   for (var j = 0; j < n; j++) {
@@ -107,12 +110,13 @@ const char* const kScript = R"JS((function () {
     line(0, laneTop, W, laneTop, '#ddd', 1);
     ctx.font = '11px "DejaVu Sans", Arial, sans-serif'; ctx.textBaseline = 'top';
     text('cart ' + (j + 1) + (s > 0 ? ' (+x side)' : ' (\u2212x side)') + ', crank at \u03c6\u2082 + ' +
-         (j * G.offset * 180 / Math.PI).toFixed(0) + '\u00b0' +
+         (G.phases[j] * 180 / Math.PI).toFixed(ownAngle ? 1 : 0) + '\u00b0' +
+         (ownMass ? ', m\u2032_B = ' + G.masses[j].toFixed(0) + ' kg' : '') +
          (block ? '; no cart geometry in the scene: drawn as a block' : '') +
          (G.cam ? '; cam drive: the model puts B on the shaft axis at mid-stroke' : ''), 4, laneTop + 3, '#555');
     var xs = X(0);
     if (G.cam) {                                       // the cam under the cart, outline only
-      var th = D.phi[k] + j * G.offset, rc = scale * G.cam_radius;
+      var th = D.phi[k] + G.phases[j], rc = scale * G.cam_radius;
       circle(xs, y0, rc, 'rgba(160,110,20,0.8)', null, 1.5);
       line(xs, y0, xs + rc * Math.cos(th), y0 - rc * Math.sin(th), 'rgba(160,110,20,0.9)', 2.5);
     }
@@ -256,6 +260,10 @@ MechanismFrames mechanismFrames(const Scene& scene, const Table& ts, const Table
   g.cam_drive = scene.hasCamDrive();
   g.rod_length = g.cam_drive ? 0.0 : scene.rods.length;
   g.crank_offset = scene.crank.offset;
+  for (int j = 0; j < n; ++j) {
+    g.crank_phases.push_back(scene.crankPhase(j));
+    g.masses.push_back(scene.cartMass(j));
+  }
   g.sides = scene.carts.side;
   g.cart = scene.carts.geometry;
   g.cam_radius = g.cam_drive ? 0.5 * scene.cam.pusher_distance : 0.0;
@@ -317,6 +325,7 @@ nlohmann::json mechanismFramesJson(const MechanismFrames& f) {
   const MechanismGeometry& g = f.geometry;
   json j;
   j["geometry"] = {{"r", g.crank_radius},  {"l", g.rod_length}, {"offset", g.crank_offset},
+                   {"phases", g.crank_phases}, {"masses", g.masses},
                    {"sides", g.sides},      {"cam", g.cam_drive}, {"cam_radius", g.cam_radius},
                    {"cart", {{"a", g.cart.a}, {"b", g.cart.b}, {"p", g.cart.p}, {"e", g.cart.e}, {"D", g.cart.D},
                              {"d", g.cart.d}, {"com_height", g.cart.com_height}}}};

@@ -29,7 +29,9 @@ namespace rollerdyn {
 struct MechanismGeometry {
   double crank_radius = 0;       // r [m]
   double rod_length = 0;         // l [m]; 0 with a cam drive (no rods)
-  double crank_offset = 0;       // Δφ between consecutive cranks [rad]
+  double crank_offset = 0;       // Δφ between consecutive cranks [rad] (NaN: crank.angles_deg)
+  std::vector<double> crank_phases;  // θ_j - φ2 of each cart's crank, Scene::crankPhase(j) [rad]
+  std::vector<double> masses;    // m'_B of each cart, Scene::cartMass(j) [kg]
   std::vector<int> sides;        // σ_j = +1 (cart on the +x side) or -1, per cart [-]
   CartGeometry cart;             // a, b, p, e, D, d, com_height of every cart [m]
   bool cam_drive = false;        // carts pushed by cams on the shaft: no crank pins, no rods

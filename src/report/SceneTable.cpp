@@ -1,5 +1,6 @@
 #include "report/SceneTable.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -62,6 +63,17 @@ std::vector<SceneParameterRow> sceneParameterRows(const SceneInput& input,
   return rows;
 }
 
+// A per-cart value as it reads in a table: one number when every cart has it, else the list.
+std::string perCartText(const Scene& s, double (*value)(const Scene&, int)) {
+  std::string list;
+  bool same = true;
+  for (int j = 0; j < s.carts.count; ++j) {
+    list += (j ? ", " : "") + formatNumber(value(s, j));
+    same = same && value(s, j) == value(s, 0);
+  }
+  return same ? formatNumber(value(s, 0)) : "[" + list + "]";
+}
+
 std::vector<SceneParameterRow> derivedParameterRows(const Scene& s) {
   const double u = s.reducer.ratio;
   std::vector<SceneParameterRow> rows = {
@@ -77,9 +89,18 @@ std::vector<SceneParameterRow> derivedParameterRows(const Scene& s) {
        "derived"},
       {"crank-side inertia", formatNumber(s.crankSideInertia()), "kg·m²",
        "cranks, shaft and crankshaft flywheel about the shaft axis, without rods and carts", "derived"},
-      {"cart mass with rod share m_B", formatNumber(s.cartMassWithRodShare()), "kg",
-       "cart mass plus half a rod under the split rod model (Loveikin, Pochka, Romasevych (2018) eq. (3))", "derived"},
+      {"cart mass with rod share m_B",
+       perCartText(s, [](const Scene& sc, int j) { return sc.cartMassWithRodShare(j); }), "kg",
+       "cart mass plus half a rod under the split rod model (Loveikin, Pochka, Romasevych (2018) eq. (3)); a list: "
+       "cart 1, 2, ...",
+       "derived"},
   };
+  if (!s.crank.angles.empty() || !s.crank.angle_errors.empty())
+    rows.push_back({"crank angles θ_j − φ2",
+                    perCartText(s, [](const Scene& sc, int j) { return sc.crankPhase(j) * 180.0 / M_PI; }), "deg",
+                    "each cart's crank from the shaft's reference (cart 1's nominal crank): crank.angles_deg or "
+                    "j·Δφ, plus crank.angle_error_deg",
+                    "derived"});
   if (s.rods.model != RodModel::Massless)
     rows.push_back({"rod inertia about its centre of mass", formatNumber(s.rods.inertia_com), "kg·m²",
                     "rods.inertia_com as used (default m·l²/12)", "derived"});

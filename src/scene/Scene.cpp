@@ -1,6 +1,8 @@
 #include "scene/Scene.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace rollerdyn {
 
@@ -20,11 +22,71 @@ double Scene::crankSideInertia() const {
   return carts.count * crank.inertia_per_crank + crank.shaft_inertia + flywheel_crank;
 }
 
+double Scene::crankPhase(int j) const {
+  // The uniform layout keeps its one expression, so a scene without lists gives the same bits.
+  if (crank.angles.empty() && crank.angle_errors.empty()) return j * crank.offset;
+  const double nominal = crank.angles.empty() ? j * crank.offset : crank.angles[j];
+  return crank.angle_errors.empty() ? nominal : nominal + crank.angle_errors[j];
+}
+
+double Scene::cartMassWithRodShare(int j) const {
+  return cartMass(j) + (rods.model == RodModel::Split ? 0.5 * rods.mass : 0.0);
+}
+
 double Scene::cartMassWithRodShare() const {
+  if (!carts.masses.empty())
+    throw std::logic_error("Scene::cartMassWithRodShare(): carts.mass is a list; ask for cart j's mass");
   return carts.mass + (rods.model == RodModel::Split ? 0.5 * rods.mass : 0.0);
 }
 
+double Scene::lightestCartMassWithRodShare() const {
+  if (carts.masses.empty()) return cartMassWithRodShare();
+  double m = cartMassWithRodShare(0);
+  for (int j = 1; j < carts.count; ++j) m = std::min(m, cartMassWithRodShare(j));
+  return m;
+}
+
+Loads Scene::cartLoads(int j) const {
+  if (cart_loads.empty()) return loads;
+  Loads l = loads;
+  const CartLoads& c = cart_loads[j];
+  l.roller_force_front = c.roller_force_front;
+  l.roller_force_rear = c.roller_force_rear;
+  l.roller_normal_front = c.roller_normal_front;
+  l.roller_normal_rear = c.roller_normal_rear;
+  l.rolling_resistance = c.rolling_resistance;
+  return l;
+}
+
+double Scene::rollerForceSum() const {
+  if (cart_loads.empty())
+    return carts.count * (std::abs(loads.roller_force_front) + std::abs(loads.roller_force_rear));
+  double sum = 0.0;
+  for (const CartLoads& c : cart_loads) sum += std::abs(c.roller_force_front) + std::abs(c.roller_force_rear);
+  return sum;
+}
+
+bool Scene::cartsIdentical() const {
+  for (int j = 1; j < carts.count; ++j) {
+    if (cartMass(j) != cartMass(0)) return false;
+    if (cart_loads.empty()) continue;
+    const CartLoads &a = cart_loads[j], &b = cart_loads[0];
+    if (a.roller_force_front != b.roller_force_front || a.roller_force_rear != b.roller_force_rear ||
+        a.roller_normal_front != b.roller_normal_front || a.roller_normal_rear != b.roller_normal_rear ||
+        a.rolling_resistance != b.rolling_resistance)
+      return false;
+  }
+  return true;
+}
+
 bool Scene::hasRollerLoads() const {
+  if (!cart_loads.empty()) {
+    for (const CartLoads& c : cart_loads)
+      if (c.roller_force_front != 0.0 || c.roller_force_rear != 0.0 || c.roller_normal_front != 0.0 ||
+          c.roller_normal_rear != 0.0)
+        return true;
+    return false;
+  }
   return loads.roller_force_front != 0.0 || loads.roller_force_rear != 0.0 ||
          loads.roller_normal_front != 0.0 || loads.roller_normal_rear != 0.0;
 }

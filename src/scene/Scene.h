@@ -54,9 +54,16 @@ struct InitialState {
 
 struct CrankShaft {
   double radius;            // crank radius r [m]                                crank.radius
-  double offset;            // angle between consecutive cranks Δφ [rad]         crank.offset_deg
+  double offset;            // angle between consecutive cranks Δφ [rad]; NaN when crank.angles_deg
+                            // gives every crank's angle instead (read Scene::crankPhase(j))
+                            //                                                   crank.offset_deg
   double inertia_per_crank; // J'_K, one crank about the shaft axis [kg·m²]      crank.inertia_per_crank
   double shaft_inertia;     // shaft itself (excluding cranks) about its axis [kg·m²]  crank.shaft_inertia
+  std::vector<double> angles = {};   // per cart j: nominal angle of its crank from cart 1's crank
+                                     // (angles[0] = 0) [rad]; empty: j·Δφ   crank.angles_deg
+  std::vector<double> angle_errors = {};  // per cart j: deviation of its crank from the nominal angle,
+                                     // e.g. a manufacturing tolerance [rad]; empty: none
+                                     //                                      crank.angle_error_deg
 };
 
 // Cam drive with optimal reversal of Loveikin and Pochka (drive.type = cam): each cart is pushed by a constant-diameter cam on the
@@ -99,7 +106,10 @@ struct Carts {
   int count;                 // number of carts n [-]                         carts.count
   std::vector<int> side;     // per cart: +1 same side as cart 1's crank (x > 0), -1 opposite [-]
                              //                                               carts.sides
-  double mass;               // m'_B, one cart without rod [kg]               carts.mass
+  double mass;               // m'_B, one cart without rod [kg]; NaN when carts.mass is a list
+                             // (read Scene::cartMass(j))                     carts.mass
+  std::vector<double> masses;  // per cart: m'_B of cart j when carts.mass is a list, else empty [kg]
+                               //                                             carts.mass: [...]
   CartGeometry geometry;     // carts.geometry.*
 };
 
@@ -201,6 +211,16 @@ struct Loads {
                                // F_j1 + F_j2 in either reading [-]      loads.rolling_resistance
 };
 
+// One cart's values of the loads.* keys that may be given per cart (a list, one value per cart);
+// Scene::cartLoads(j) merges them into the Loads every law reads.
+struct CartLoads {
+  double roller_force_front = 0;   // F_j1 of this cart [N]                  loads.roller_force_front[j]
+  double roller_force_rear = 0;    // F_j2 [N]                               loads.roller_force_rear[j]
+  double roller_normal_front = 0;  // R_j1 [N]                               loads.roller_normal_front[j]
+  double roller_normal_rear = 0;   // R_j2 [N]                               loads.roller_normal_rear[j]
+  double rolling_resistance = 0;   // μ_r [-]                                loads.rolling_resistance[j]
+};
+
 struct ReducedSettings {
   KinematicsForm kinematics;   // exact (eq. (40)-(47)) | truncated (eq. (52)-(57))   reduced.kinematics
   ReducedIntegrator integrator;  // cvode | baranov (Loveikin and Pochka (2007) eq. (4), (10), (11))  reduced.integrator
@@ -221,7 +241,10 @@ struct Scene {
   Reducer reducer;
   Coupling coupling;
   Flywheel flywheel;
-  Loads loads;
+  Loads loads;               // a per-cart key given as a list is NaN here (read Scene::cartLoads(j))
+  std::vector<CartLoads> cart_loads;  // per cart when any of loads.roller_force_front/_rear,
+                             // roller_normal_front/_rear, rolling_resistance is a list (the others
+                             // repeat their scalar); empty when all are scalars  loads.*: [...]
   ReducedSettings reduced;
   DriveType drive = DriveType::Crank;  // crank | cam                              drive.type
   CamDrive cam;                        // cam.* (used when drive == Cam)
@@ -234,10 +257,28 @@ struct Scene {
   double motorSideInertia() const;
   // Crankshaft inertia about its axis without rods: n·J'_K + shaft + crank-side flywheel [kg·m²].
   double crankSideInertia() const;
-  // Angle of cart j's crank (0-based j) relative to cart 1's crank: j·Δφ [rad].
-  double crankPhase(int j) const { return j * crank.offset; }
-  // Cart centre-of-mass mass including half a rod under the split model [kg], Loveikin, Pochka, Romasevych (2018) eq. (3).
+  // --- Per-cart values (docs/per-cart.md): the uniform scalar unless the scene gives a list. ---
+
+  // Angle of cart j's crank (0-based j) relative to the shaft's reference, which is cart 1's
+  // nominal crank angle φ2: j·Δφ, or crank.angles_deg[j], plus crank.angle_error_deg[j] [rad].
+  double crankPhase(int j) const;
+  // m'_B of cart j (0-based), without rod [kg].
+  double cartMass(int j) const { return carts.masses.empty() ? carts.mass : carts.masses[j]; }
+  // Cart j's centre-of-mass mass including half a rod under the split model [kg], Loveikin, Pochka, Romasevych (2018) eq. (3).
+  double cartMassWithRodShare(int j) const;
+  // The same for a scene whose carts all have one mass; std::logic_error when carts.mass is a list.
   double cartMassWithRodShare() const;
+  // The smallest of the carts' masses with rod share [kg] (tolerance scales: the lightest cart
+  // is the one a force error moves most).
+  double lightestCartMassWithRodShare() const;
+  // The loads acting on cart j (0-based): Loads with that cart's F_j1, F_j2, R_j1, R_j2, μ_r.
+  Loads cartLoads(int j) const;
+  // Σ_j (|F_j1| + |F_j2|) over the carts [N] (a force scale for tolerances).
+  double rollerForceSum() const;
+  // Whether every cart has the same mass and loads (whatever their crank angles and sides): only
+  // then is each cart's torque the same function of its own crank angle, which the layout's phase
+  // sums (modes/ExcitationOrders.h, studies/ResonanceCheck.h) assume.
+  bool cartsIdentical() const;
   // Whether each optional effect is present in this scene.
   bool hasMotor() const { return motor.enabled; }
   bool hasRollerLoads() const;

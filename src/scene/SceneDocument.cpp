@@ -287,7 +287,9 @@ void SceneDocument::applyOverride(int n, const std::string& arg) {
   const std::string text = trim(arg.substr(eq + 1));
 
   // The key path must exist in the schema before anything is touched.
-  if (path.empty() || !(findSceneKey(path) || isSceneMap(path))) {
+  int element = -1;  // key[i] of a per-cart key: i
+  const KeySpec* leaf = findSceneKeyOrElement(path, &element);
+  if (path.empty() || !(leaf || isSceneMap(path))) {
     std::string map_path;
     std::string missing = path;
     for (const std::string& seg : splitPath(path)) {
@@ -322,9 +324,11 @@ void SceneDocument::applyOverride(int n, const std::string& arg) {
     failOverride(n, arg, path, "a YAML scalar or flow value", "'" + text + "' (" + e.msg + ")");
   }
 
+  if (element >= 0) value = listWithElement(n, arg, path, *leaf, element, value);
+
   // Walk to the parent map, creating maps the file omits (an override may set an optional key
   // of a section the file leaves out entirely).
-  const std::vector<std::string> segs = splitPath(path);
+  const std::vector<std::string> segs = splitPath(element >= 0 ? leaf->path : path);
   YAML::Node cur = root_;
   std::string cur_path;
   for (size_t i = 0; i + 1 < segs.size(); ++i) {
@@ -341,6 +345,44 @@ void SceneDocument::applyOverride(int n, const std::string& arg) {
   }
   cur[segs.back()] = value;
   overrides_.push_back({n, arg, path});
+}
+
+YAML::Node SceneDocument::listWithElement(int n, const std::string& arg, const std::string& path,
+                                          const KeySpec& spec, int element, const YAML::Node& value) const {
+  if (!value.IsScalar())
+    failOverride(n, arg, path, "one value for one cart (the whole list: --set " + spec.path + "=[...])",
+                 describeNode(value));
+  const YAML::Node current = find(spec.path);
+  YAML::Node list(YAML::NodeType::Sequence);
+  if (current.IsDefined() && current.IsSequence()) {
+    for (size_t i = 0; i < current.size(); ++i) list.push_back(YAML::Clone(current[i]));
+  } else {
+    // A scalar (or an optional key's default) is the uniform value: repeat it for every cart.
+    const YAML::Node count_node = find("carts.count");
+    long long count = 0;
+    if (!count_node.IsDefined() || !count_node.IsScalar() || !YAML::convert<long long>::decode(count_node, count) ||
+        count < 1 || count > 1000)
+      failOverride(n, arg, path, "a scene with a valid carts.count (a list element needs the number of carts)",
+                   describeNode(count_node));
+    YAML::Node uniform;
+    if (current.IsDefined() && current.IsScalar()) {
+      uniform = YAML::Clone(current);
+    } else if (spec.presence == Presence::Optional) {
+      uniform = YAML::Node(formatNumber(spec.default_number));
+    } else {
+      failOverride(n, arg, path, "a scene that gives " + spec.path + " (an element replaces one of its values)",
+                   current.IsDefined() ? describeNode(current) : "no " + spec.path);
+    }
+    for (long long i = 0; i < count; ++i) list.push_back(YAML::Clone(uniform));
+  }
+  if (static_cast<size_t>(element) >= list.size())
+    failOverride(n, arg, path,
+                 "an index from 0 to " + std::to_string(list.size() - 1) + " (" + spec.path + " has " +
+                     std::to_string(list.size()) + " values, one per cart; [0] is cart 1)",
+                 std::to_string(element));
+  list[static_cast<size_t>(element)] = value;
+  list.SetStyle(YAML::EmitterStyle::Flow);
+  return list;
 }
 
 void SceneDocument::checkStructure() const { checkMap(root_, ""); }

@@ -17,6 +17,8 @@
 
 namespace rollerdyn {
 
+struct KeySpec;
+
 class SceneDocument {
  public:
   // Parses `yaml_text`. A YAML syntax error, an empty file, a second document or a top level
@@ -26,6 +28,9 @@ class SceneDocument {
 
   // Applies the n-th (1-based) --set argument "key.path=value". The key path must be in the
   // schema; the value is parsed as a YAML scalar or flow node and replaces (or adds) that key.
+  // "key[i]=value" of a per-cart key (KeySpec::per_cart) replaces element i (from 0: cart i + 1)
+  // of its list; a scalar (or an absent optional key's default) is first repeated carts.count
+  // times (docs/per-cart.md).
   void applyOverride(int n, const std::string& arg);
 
   // Rejects duplicate keys, keys not in the schema and non-maps where the schema has a map.
@@ -64,6 +69,9 @@ class SceneDocument {
   [[noreturn]] void failOverride(int n, const std::string& arg, const std::string& key,
                                  const std::string& expected, const std::string& got) const;
   void checkMap(const YAML::Node& node, const std::string& path) const;
+  // The list of per-cart key `spec` with element `element` replaced by `value` (--set key[i]=value).
+  YAML::Node listWithElement(int n, const std::string& arg, const std::string& path, const KeySpec& spec,
+                             int element, const YAML::Node& value) const;
   // 1-based line of a mark of this document; 0 for nodes built in memory or without line numbers.
   int lineAt(const YAML::Mark& m) const;
   // `line`, at least 1 (a whole-document complaint points at the top); 0 without line numbers.

@@ -63,10 +63,28 @@ InitialState readInitial(const Reader& in) {
   return s;
 }
 
+// Whether crank.angles_deg gives the cranks' angles instead of crank.offset_deg: when it alone is
+// given, or when a later --set gave it than the offset (so `--set crank.angles_deg=[...]` works on a
+// scene file with an offset, and a --set of the offset on a file with angles). Both in the same
+// place (the file, or one --set) could disagree: an error.
+bool anglesReplaceOffset(const Reader& in) {
+  const bool has_angles = in.has("crank.angles_deg"), has_offset = in.has("crank.offset_deg");
+  if (!has_angles || !has_offset) return has_angles;
+  const SceneDocument& doc = in.doc();
+  const int set_angles = doc.overrideFor("crank.angles_deg"), set_offset = doc.overrideFor("crank.offset_deg");
+  if (set_angles == set_offset)
+    doc.fail("crank.angles_deg", "at most one of crank.offset_deg and crank.angles_deg (they could disagree)",
+             describeNode(doc.find("crank.angles_deg")));
+  return set_angles > set_offset;
+}
+
 CrankShaft readCrank(const Reader& in) {
   CrankShaft c;
   c.radius = in.number("crank.radius");
-  c.offset = in.number("crank.offset_deg") * kDegToRad;
+  // crank.angles_deg may replace crank.offset_deg (readCrankAngles()); one of them is required.
+  c.offset = anglesReplaceOffset(in)
+                 ? std::nan("")
+                 : in.requiredNumber("crank.offset_deg", "required unless crank.angles_deg is given") * kDegToRad;
   c.inertia_per_crank = in.number("crank.inertia_per_crank");
   c.shaft_inertia = in.number("crank.shaft_inertia");
   return c;
@@ -172,11 +190,37 @@ std::vector<int> readSides(const Reader& in, int count) {
   return sides;
 }
 
+// crank.angles_deg (each crank's nominal angle, instead of j·Δφ) and crank.angle_error_deg (each
+// crank's deviation from it), docs/per-cart.md. Empty lists keep the uniform j·Δφ.
+void readCrankAngles(const Reader& in, CrankShaft& c, int count) {
+  const SceneDocument& doc = in.doc();
+  if (anglesReplaceOffset(in)) {
+    double uniform = 0.0;
+    const std::vector<double> deg = in.perCartNumbers("crank.angles_deg", count, uniform);
+    if (deg.empty())  // a single angle says nothing about the other cranks
+      doc.fail("crank.angles_deg", describeExpectedList(*findSceneKey("crank.angles_deg"), count) +
+                                       ", the first 0 (cart 1's crank)", formatNumber(uniform));
+    if (deg[0] != 0.0)
+      doc.fail("crank.angles_deg[0]",
+               "0 for cart 1: the angles are measured from cart 1's crank (turn the whole shaft with "
+               "initial.crank_angle_deg)",
+               formatNumber(deg[0]));
+    for (double a : deg) c.angles.push_back(a * kDegToRad);
+  }
+  double uniform_error = 0.0;
+  const std::vector<double> errors = in.perCartNumbers("crank.angle_error_deg", count, uniform_error);
+  for (double e : errors) c.angle_errors.push_back(e * kDegToRad);
+  // One error common to every crank turns the whole shaft: allowed, kept as a list so that a
+  // scene without the key keeps the uniform expression of Scene::crankPhase.
+  if (errors.empty() && uniform_error != 0.0)
+    c.angle_errors.assign(static_cast<size_t>(count), uniform_error * kDegToRad);
+}
+
 Carts readCarts(const Reader& in) {
   Carts c;
   c.count = in.integer("carts.count");
   c.side = readSides(in, c.count);
-  c.mass = in.number("carts.mass");
+  c.masses = in.perCartNumbers("carts.mass", c.count, c.mass);
   CartGeometry& g = c.geometry;
   g.a = in.number("carts.geometry.a");
   g.b = in.numberOr("carts.geometry.b", 0.0);  // required with guide friction: see readScene()
@@ -218,19 +262,29 @@ Flywheel readFlywheel(const Reader& in) {
   return f;
 }
 
-Loads readLoads(const Reader& in) {
+// The loads; per_cart gets one entry per cart when any per-cart load key is a list (the others
+// repeat their scalar there), and stays empty otherwise.
+Loads readLoads(const Reader& in, int count, std::vector<CartLoads>& per_cart) {
   Loads l;
-  l.roller_force_front = in.number("loads.roller_force_front");
-  l.roller_force_rear = in.number("loads.roller_force_rear");
-  l.roller_normal_front = in.number("loads.roller_normal_front");
-  l.roller_normal_rear = in.number("loads.roller_normal_rear");
+  const std::vector<double> F1 = in.perCartNumbers("loads.roller_force_front", count, l.roller_force_front);
+  const std::vector<double> F2 = in.perCartNumbers("loads.roller_force_rear", count, l.roller_force_rear);
+  const std::vector<double> R1 = in.perCartNumbers("loads.roller_normal_front", count, l.roller_normal_front);
+  const std::vector<double> R2 = in.perCartNumbers("loads.roller_normal_rear", count, l.roller_normal_rear);
+  const std::vector<double> mu = in.perCartNumbers("loads.rolling_resistance", count, l.rolling_resistance);
+  per_cart.clear();
+  if (!F1.empty() || !F2.empty() || !R1.empty() || !R2.empty() || !mu.empty()) {
+    auto at = [](const std::vector<double>& list, double uniform, int j) { return list.empty() ? uniform : list[j]; };
+    for (int j = 0; j < count; ++j)
+      per_cart.push_back({at(F1, l.roller_force_front, j), at(F2, l.roller_force_rear, j),
+                          at(R1, l.roller_normal_front, j), at(R2, l.roller_normal_rear, j),
+                          at(mu, l.rolling_resistance, j)});
+  }
   l.roller_force_direction = in.choice("loads.roller_force_direction") == "as_printed"
                                  ? RollerForceDirection::AsPrinted
                                  : RollerForceDirection::OpposesVelocity;
   l.guide_friction = in.number("loads.guide_friction.coefficient");
   l.gravity = in.number("loads.gravity");
   l.velocity_smoothing = in.number("loads.velocity_smoothing");
-  l.rolling_resistance = in.number("loads.rolling_resistance");
   l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
   return l;
 }
@@ -286,11 +340,12 @@ Scene readScene(const SceneDocument& doc) {
   s.crank = readCrank(in);
   s.rods = readRods(in, s.crank.radius);
   s.carts = readCarts(in);
+  readCrankAngles(in, s.crank, s.carts.count);
   scene_detail::readMotor(in, s.motor, s.induction);
   s.reducer = readReducer(in);
   s.coupling = readCoupling(in);
   s.flywheel = readFlywheel(in);
-  s.loads = readLoads(in);
+  s.loads = readLoads(in, s.carts.count, s.cart_loads);
   s.reduced = readReduced(in);
   readDrive(in, s);
   s.sizing = readSizing(in);

@@ -5,12 +5,19 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "scene/Scene.h"
 #include "scene/SceneDocument.h"
 #include "scene/SceneSchema.h"
 
 namespace rollerdyn::scene_detail {
+
+// Whichever of two coupled keys came from a --set is the one to blame, so that an override that
+// breaks a cross-key rule is reported as that override's fault.
+inline bool blameSecond(const SceneDocument& doc, const std::string& first, const std::string& second) {
+  return doc.overrideFor(second) > doc.overrideFor(first);
+}
 
 // Typed, range-checked access to single keys of a SceneDocument, driven by the schema table:
 // each read checks the YAML type, finiteness and the key's range and either returns the value,
@@ -36,6 +43,35 @@ class Reader {
   // A Conditional Number key with a fallback decided by the caller.
   double numberOr(const std::string& path, double fallback) const {
     return has(path) ? checkedNumber(spec(path), doc_.find(path)) : fallback;
+  }
+
+  // A per-cart Number key (KeySpec::per_cart, docs/per-cart.md). A scalar (or the default when
+  // absent): `uniform` gets it and the list returned is empty. A list: it must hold `count`
+  // numbers, one per cart, each in the key's range; `uniform` gets NaN and the list is returned.
+  // A wrong length blames carts.count instead when a later --set changed it; a bad element is
+  // named key[i] (i from 0) with its cart number.
+  std::vector<double> perCartNumbers(const std::string& path, int count, double& uniform) const {
+    const KeySpec& s = spec(path);
+    const YAML::Node node = doc_.find(path);
+    if (!node.IsDefined() || !node.IsSequence()) {
+      if (node.IsDefined() && !node.IsScalar())
+        doc_.fail(path, describeExpected(s) + ", or " + describeExpectedList(s, count), describeNode(node));
+      uniform = number(path);
+      return {};
+    }
+    if (node.size() != static_cast<size_t>(count)) {
+      if (blameSecond(doc_, path, "carts.count"))
+        doc_.fail("carts.count",
+                  "an integer equal to the length of " + path + " (" + std::to_string(node.size()) + ")",
+                  std::to_string(count));
+      doc_.fail(path, describeExpectedList(s, count), describeNode(node));
+    }
+    std::vector<double> values(node.size());
+    for (size_t j = 0; j < node.size(); ++j)
+      values[j] = checkedNumber(s, node[j], path + "[" + std::to_string(j) + "]",
+                                " for cart " + std::to_string(j + 1));
+    uniform = std::nan("");
+    return values;
   }
 
   int integer(const std::string& path) const {
@@ -116,6 +152,19 @@ class Reader {
     return v;
   }
 
+  // The same check for one element of a per-cart list, located at `where` (key[i]), the
+  // expected-clause ending in `which` (" for cart 3").
+  double checkedNumber(const KeySpec& s, const YAML::Node& n, const std::string& where,
+                       const std::string& which) const {
+    const std::string expected = describeExpected(s) + which;
+    double v = 0.0;
+    if (!n.IsScalar() || n.Tag() == "!" || !YAML::convert<double>::decode(n, v))
+      doc_.fail(where, expected, describeNode(n));
+    if (!std::isfinite(v)) doc_.fail(where, finite(expected), n.Scalar());
+    if (!inRange(s.range, v)) doc_.fail(where, expected, describeNode(n));
+    return v;
+  }
+
   // "a number > 0 [m]" -> "a finite number > 0 [m]": .nan and .inf parse as doubles in YAML.
   static std::string finite(const std::string& expected) {
     const std::string a_number = "a number";
@@ -127,11 +176,6 @@ class Reader {
   const SceneDocument& doc_;
 };
 
-// Whichever of two coupled keys came from a --set is the one to blame, so that an override that
-// breaks a cross-key rule is reported as that override's fault.
-inline bool blameSecond(const SceneDocument& doc, const std::string& first, const std::string& second) {
-  return doc.overrideFor(second) > doc.overrideFor(first);
-}
 
 // The motor section: Kloss's M_kr, s_kr (`motor`) and the machine behind the other laws
 // (`induction`: motor.model, rated supply, motor.circuit.*, motor.catalogue.*), validated together.

@@ -38,6 +38,12 @@ KeySpec choice(std::string path, Presence presence, std::vector<std::string> cho
           std::move(choices), std::move(meaning)};
 }
 
+// A number key that may also be given per cart as a list (KeySpec::per_cart).
+KeySpec perCart(KeySpec spec) {
+  spec.per_cart = true;
+  return spec;
+}
+
 std::vector<KeySpec> buildSchema() {
   using P = Presence;
   const std::string L2018 = "Loveikin, Pochka, Romasevych (2018)";
@@ -86,9 +92,17 @@ std::vector<KeySpec> buildSchema() {
 
       number("crank.radius", "m", P::Required, positive(), 0.0, "crank radius r")
           .from(L2018 + " eq. (40)"),
-      number("crank.offset_deg", "deg", P::Required, between(0.0, true, 360.0, false), 0.0,
+      number("crank.offset_deg", "deg", P::Conditional, between(0.0, true, 360.0, false), 0.0,
              "angle Δφ between consecutive cranks: cart j's crank sits at φ + (j − 1)·Δφ")
-          .from(L2018 + " eq. (31); " + L2007),
+          .from(L2018 + " eq. (31); " + L2007)
+          .when("required unless crank.angles_deg is given"),
+      perCart(number("crank.angles_deg", "deg", P::Conditional, between(0.0, true, 360.0, false), 0.0,
+                     "instead of crank.offset_deg: a list with each cart's crank angle from cart 1's crank "
+                     "(first entry 0), e.g. the firing order [0, 180, 90, 270] (per-cart.md)")
+                  .when("(j − 1)·Δφ from crank.offset_deg; give one of the two")),
+      perCart(number("crank.angle_error_deg", "deg", P::Optional, between(-180.0, false, 180.0, false), 0.0,
+                     "deviation of each crank from its nominal angle (a manufacturing tolerance): a list with "
+                     "one value per cart, or one value that turns every crank (per-cart.md)")),
       number("crank.inertia_per_crank", "kg·m²", P::Optional, nonNegative(), 0.0,
              "J'_K, one crank about the shaft axis")
           .from(L2018 + " eq. (2)"),
@@ -135,8 +149,9 @@ std::vector<KeySpec> buildSchema() {
               "opposite, same, ...)"}
           .from(L2018 + " eq. (40) (same); " + L2007 + " eq. (6) (opposite)")
           .when("all same"),
-      number("carts.mass", "kg", P::Required, positive(), 0.0, "m'_B, one cart without its rod")
-          .from(L2018 + " eq. (3)"),
+      perCart(number("carts.mass", "kg", P::Required, positive(), 0.0,
+                     "m'_B, one cart without its rod; a list gives each cart its own (per-cart.md)")
+                  .from(L2018 + " eq. (3)")),
       number("carts.geometry.a", "m", P::Optional, nonNegative(), 0.0,
              "half distance between the two compacting rollers (they touch the mix at p ∓ a from B)")
           .from(L2018 + " fig. 3, eq. (10)"),
@@ -304,27 +319,27 @@ std::vector<KeySpec> buildSchema() {
       choice("flywheel.location", P::Optional, {"crankshaft", "motor_shaft"}, "crankshaft",
              "shaft carrying the flywheel (on the motor shaft it counts u² times)"),
 
-      number("loads.roller_force_front", "N", P::Optional, nonNegative(), 0.0,
-             "F_j1, horizontal force on the front compacting roller (magnitude)")
-          .from(L2018 + " fig. 3, eq. (10)"),
-      number("loads.roller_force_rear", "N", P::Optional, nonNegative(), 0.0,
-             "F_j2, horizontal force on the rear compacting roller (magnitude)")
-          .from(L2018 + " fig. 3, eq. (10)"),
-      number("loads.roller_normal_front", "N", P::Optional, nonNegative(), 0.0,
-             "R_j1, upward reaction of the mix on the front roller")
-          .from(L2018 + " fig. 3, eq. (10)"),
-      number("loads.roller_normal_rear", "N", P::Optional, nonNegative(), 0.0,
-             "R_j2, upward reaction of the mix on the rear roller")
-          .from(L2018 + " fig. 3, eq. (10)"),
+      perCart(number("loads.roller_force_front", "N", P::Optional, nonNegative(), 0.0,
+                     "F_j1, horizontal force on the front compacting roller (magnitude); a list: per cart")
+                  .from(L2018 + " fig. 3, eq. (10)")),
+      perCart(number("loads.roller_force_rear", "N", P::Optional, nonNegative(), 0.0,
+                     "F_j2, horizontal force on the rear compacting roller (magnitude); a list: per cart")
+                  .from(L2018 + " fig. 3, eq. (10)")),
+      perCart(number("loads.roller_normal_front", "N", P::Optional, nonNegative(), 0.0,
+                     "R_j1, upward reaction of the mix on the front roller; a list: per cart")
+                  .from(L2018 + " fig. 3, eq. (10)")),
+      perCart(number("loads.roller_normal_rear", "N", P::Optional, nonNegative(), 0.0,
+                     "R_j2, upward reaction of the mix on the rear roller; a list: per cart")
+                  .from(L2018 + " fig. 3, eq. (10)")),
       choice("loads.roller_force_direction", P::Optional, {"opposes_velocity", "as_printed"},
              "opposes_velocity",
              "opposes_velocity: the roller forces resist the cart's motion (a rolling "
              "resistance); as_printed: they keep the one direction of the figure")
           .from(L2007 + " eq. (5) (opposes_velocity); " + L2018 + " fig. 3 (as_printed)"),
-      number("loads.rolling_resistance", "-", P::Optional, between(0.0, true, 1.0, false), 0.0,
-             "μ_r, rolling resistance of the compacting rollers: a force μ_r·(R_j1 + R_j2) against the "
-             "cart's velocity, added to the roller forces in either direction law; the energy "
-             "compaction dissipates (loads.md)"),
+      perCart(number("loads.rolling_resistance", "-", P::Optional, between(0.0, true, 1.0, false), 0.0,
+                     "μ_r, rolling resistance of the compacting rollers: a force μ_r·(R_j1 + R_j2) against the "
+                     "cart's velocity, added to the roller forces in either direction law; the energy "
+                     "compaction dissipates (loads.md); a list: per cart")),
       number("loads.guide_friction.coefficient", "-", P::Optional,
              between(0.0, true, 1.0, false), 0.0, "f, reduced guide-roller friction coefficient")
           .from(L2018 + " eq. (14)-(25)"),
@@ -445,6 +460,21 @@ const KeySpec* findSceneKey(const std::string& path) {
   return nullptr;
 }
 
+const KeySpec* findSceneKeyOrElement(const std::string& path, int* element) {
+  if (element) *element = -1;
+  if (const KeySpec* k = findSceneKey(path)) return k;
+  // "key[i]": digits only between the brackets, at the end of the path.
+  const size_t open = path.rfind('[');
+  if (open == std::string::npos || open == 0 || path.back() != ']' || open + 2 > path.size() - 1) return nullptr;
+  const std::string digits = path.substr(open + 1, path.size() - open - 2);
+  if (digits.empty() || digits.size() > 6 || digits.find_first_not_of("0123456789") != std::string::npos)
+    return nullptr;
+  const KeySpec* k = findSceneKey(path.substr(0, open));
+  if (!k || !k->per_cart) return nullptr;
+  if (element) *element = std::stoi(digits);
+  return k;
+}
+
 bool isSceneMap(const std::string& path) {
   if (path.empty()) return true;
   const std::string prefix = path + ".";
@@ -488,6 +518,13 @@ std::string describeExpected(const KeySpec& spec) {
   return "?";
 }
 
+std::string describeExpectedList(const KeySpec& spec, int count) {
+  const std::string unit = (spec.unit.empty() || spec.unit == "-") ? "" : " [" + spec.unit + "]";
+  const std::string range = describeRange(spec.range);
+  return "a list of " + std::to_string(count) + " numbers" + (range.empty() ? "" : " " + range) + unit +
+         ", one per cart (carts.count = " + std::to_string(count) + ")";
+}
+
 std::string sceneMapDescription(const std::string& map_path) {
   for (const auto& [path, text] : mapDescriptions())
     if (path == map_path) return text;
@@ -498,7 +535,9 @@ std::string describeAllowed(const KeySpec& spec) {
   switch (spec.kind) {
     case KeyKind::Number: {
       const std::string range = describeRange(spec.range);
-      return range.empty() ? "any finite number" : range;
+      const std::string one = range.empty() ? "any finite number" : range;
+      if (spec.path == "crank.angles_deg") return "a list of carts.count values " + one + ", one per cart, the first 0";
+      return spec.per_cart ? one + "; or a list of carts.count such values, one per cart" : one;
     }
     case KeyKind::Integer: {
       const std::string range = describeRange(spec.range);

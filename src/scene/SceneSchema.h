@@ -52,6 +52,8 @@ struct KeySpec {
                                      // ("" for numerical settings of rollerdyn itself)
   std::string condition{};           // Conditional keys: when required, or how the default follows
                                      // from other keys (e.g. "m·l²/12")
+  bool per_cart = false;             // Number key that may also be a list with one value per cart
+                                     // (docs/per-cart.md); its scalar form is the uniform value
 
   // Builders for the table: number(...).from("Loveikin and Pochka (2007) eq. (7)").
   KeySpec from(std::string paper) && {
@@ -73,6 +75,11 @@ const std::vector<KeySpec>& sceneSchema();
 // The leaf spec of `path`, or nullptr if `path` is not a leaf key of the schema.
 const KeySpec* findSceneKey(const std::string& path);
 
+// A key path as the command line may name it (--set, --param): a leaf key, or one element
+// "key[i]" (i counted from 0: cart i + 1) of a per-cart key. The leaf's spec, or nullptr;
+// `element` (optional) receives i, or -1 for a whole key.
+const KeySpec* findSceneKeyOrElement(const std::string& path, int* element = nullptr);
+
 // Whether `path` names a map of the schema ("" is the top level, "carts.geometry" a nested map).
 bool isSceneMap(const std::string& path);
 
@@ -83,6 +90,10 @@ std::vector<std::string> sceneChildKeys(const std::string& map_path);
 // The expected-clause for a single value of `spec`, e.g. "a number > 0 [m]",
 // "an integer in [1, 1000]", "one of: elastic, rigid".
 std::string describeExpected(const KeySpec& spec);
+
+// The expected-clause of a per-cart key's list, e.g. "a list of 4 numbers > 0 [kg], one per
+// cart (carts.count = 4)".
+std::string describeExpectedList(const KeySpec& spec, int count);
 
 // What a value may be, without the unit: "> 0", "in (0, 1]", "any finite number",
 // "an integer in [1, 1000]", "one of: elastic, rigid", "true or false", "text".

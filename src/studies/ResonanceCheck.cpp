@@ -27,7 +27,9 @@ std::vector<int> excitationOrders(const Scene& scene) {
   for (int j = 0; j < n && j < int(scene.carts.side.size()); ++j) one_side = one_side && scene.carts.side[j] == scene.carts.side[0];
   std::vector<int> orders;
   for (int k = 1; k <= k_max; ++k) {
-    if (!one_side) {
+    // Carts on both sides, or carts of different masses or loads (Scene::cartsIdentical): their
+    // harmonics do not cancel by the phase sum.
+    if (!one_side || !scene.cartsIdentical()) {
       orders.push_back(k);
       continue;
     }
@@ -103,7 +105,8 @@ std::vector<std::string> addResonanceWarnings(const Scene& scene, nlohmann::json
                           {"harmonics_checked", r.orders},
                           {"harmonics_basis",
                            "orders of the crank speed the cart layout excites: multiples of n for n carts on one "
-                           "side at equal offsets spread over the turn, every order otherwise"},
+                           "side at equal offsets spread over the turn, every order otherwise (also when the carts' "
+                           "masses or loads differ)"},
                           {"hits", hits}};
   for (const std::string& w : r.warnings) summary["warnings"].push_back(w);
   return r.warnings;

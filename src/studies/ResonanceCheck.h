@@ -11,8 +11,10 @@
 // offsets spread over the turn (n·Δφ a multiple of 360°) the factor vanishes unless k is a
 // multiple of n: six carts at 60° excite 6ω, 12ω, ..., and neither 3ω nor 5ω. Carts on both
 // sides are mirrored slider-cranks (a cart on the far side at crank angle θ moves like one on the
-// near side at π - θ, run backwards), whose harmonics do not cancel that way: such layouts, and
-// any layout whose factor does not vanish, are checked at every order up to the highest kept.
+// near side at π - θ, run backwards), whose harmonics do not cancel that way: such layouts, carts
+// of different masses or loads (carts.mass, loads.* given per cart: each cart its own torque
+// function), and any layout whose factor does not vanish (crank angles of their own,
+// crank.angles_deg, crank.angle_error_deg), are checked at every order up to the highest kept.
 //
 // Here J1 = Scene::motorSideInertia() (Loveikin, Pochka, Romasevych (2018) eq. (1)), J2 = the mean over one crank
 // revolution of the crank-side reduced inertia J_n2(φ) (Loveikin, Pochka, Romasevych (2018) eq. (9), ReducedModel), and

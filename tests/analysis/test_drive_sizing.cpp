@@ -10,6 +10,7 @@
 #include "analysis/DriveSizing.h"
 #include "analysis/SizingSummary.h"
 #include "analysis/SteadyState.h"
+#include "support/Seed000Scene.h"
 
 using namespace rollerdyn;
 
@@ -315,3 +316,25 @@ TEST(DriveSizing, NotTurningLeavesPerRevolutionFiguresNaN) {
   EXPECT_TRUE(std::isnan(s.flywheel.flywheel_crankshaft));
   EXPECT_REL(s.motor.torque_shaft_mean, M0, 1e-4);  // torques still mean something
 }
+
+namespace rollerdyn {
+// Per-cart masses: each cart's ½(m'_B,j + m_rod/2)·v_j², by hand on one row.
+TEST(DriveSizing, KineticEnergyCountsEachCartsOwnMass) {
+  Scene s = test_scenes::seed000Scene();
+  s.rods.model = RodModel::Split;
+  s.carts.masses = {1000, 400, 1000, 700};
+  s.carts.mass = std::nan("");
+  s.flywheel.inertia = 0;
+  Table ts;
+  ts.columns = {"t", "omega_motor", "omega_crank", "v_cart_1", "v_cart_2", "v_cart_3", "v_cart_4"};
+  ts.rows = {{0.0, 9.0, 10.0, 1.0, -2.0, 0.5, 3.0}};
+  const double m_half = 0.5 * s.rods.mass, r = s.crank.radius;
+  const double expected = 0.5 * s.motorSideInertia() * 81.0 +
+                          0.5 * (s.crankSideInertia() + 4 * m_half * r * r) * 100.0 +
+                          0.5 * (1000 + m_half) * 1.0 + 0.5 * (400 + m_half) * 4.0 + 0.5 * (1000 + m_half) * 0.25 +
+                          0.5 * (700 + m_half) * 9.0;
+  const std::vector<double> T = kineticEnergy(s, ts);
+  ASSERT_EQ(T.size(), 1u);
+  EXPECT_NEAR(T[0], expected, 1e-12 * expected);
+}
+}  // namespace rollerdyn

@@ -144,3 +144,37 @@ TEST(CartStatics, WithoutGuideBaseOnlyTheSumOfReactionsIsDetermined) {
 
 }  // namespace
 }  // namespace rollerdyn
+
+namespace rollerdyn {
+TEST(CartStatics, EachCartUsesItsOwnMassAndLoads) {
+  // Cart j of a scene with per-cart values must see exactly what a uniform scene with cart j's
+  // values gives every cart.
+  Scene lists = test::seed000LikeScene();
+  lists.carts.masses = {1000, 400, 1000, 700};
+  lists.carts.mass = std::nan("");
+  const Loads& L = lists.loads;
+  lists.cart_loads = {{L.roller_force_front, L.roller_force_rear, L.roller_normal_front, L.roller_normal_rear, 0.0},
+                      {0, 0, 0, 0, 0},
+                      {L.roller_force_front, 0.5 * L.roller_force_rear, 2000, 3000, 0.0},
+                      {L.roller_force_front, L.roller_force_rear, L.roller_normal_front, L.roller_normal_rear, 0.0}};
+  for (int j = 0; j < 4; ++j) {
+    Scene one = test::seed000LikeScene();
+    one.carts.mass = lists.carts.masses[j];
+    const CartLoads& c = lists.cart_loads[j];
+    one.loads.roller_force_front = c.roller_force_front;
+    one.loads.roller_force_rear = c.roller_force_rear;
+    one.loads.roller_normal_front = c.roller_normal_front;
+    one.loads.roller_normal_rear = c.roller_normal_rear;
+    for (double beta : {-0.2, 0.0, 0.13}) {
+      const double H = c.roller_force_front + c.roller_force_rear;
+      const CartStaticsResult a = solveCartStatics(lists, j, beta, H, 1.0, 350.0);
+      const CartStaticsResult b = solveCartStatics(one, beta, H, 1.0, 350.0);
+      EXPECT_EQ(a.F_rod, b.F_rod) << "cart " << j + 1;
+      EXPECT_EQ(a.N_front, b.N_front) << "cart " << j + 1;
+      EXPECT_EQ(a.N_rear, b.N_rear) << "cart " << j + 1;
+      EXPECT_EQ(a.friction, b.friction) << "cart " << j + 1;
+    }
+  }
+  EXPECT_THROW(solveCartStatics(lists, 0.0, 0.0, 1.0), std::logic_error);  // which cart?
+}
+}  // namespace rollerdyn

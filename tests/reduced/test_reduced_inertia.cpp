@@ -208,3 +208,53 @@ TEST(ReducedLoads, GravityTorqueIsTheDerivativeOfTheRodsPotential) {
 
 }  // namespace
 }  // namespace rollerdyn
+
+namespace rollerdyn {
+
+// Per-cart inputs (docs/per-cart.md): each cart its own m'_B and crank angle.
+TEST(ReducedInertia, PerCartMassesAndCrankErrorsFollowTheHandSum) {
+  Scene s = test::seed000LikeScene();  // 4 carts, split rods: m_B = m'_B + 32 kg
+  s.carts.masses = {1000, 400, 1000, 1000};  // cart 2 empty: the steel frame only, ASSUMED 400 kg
+  s.carts.mass = std::nan("");
+  s.crank.angle_errors = {0, 0, 2 * M_PI / 180, 0};  // cart 3's crank 2° ahead
+  const ReducedModel m(s);
+  const double r = 0.2, l = 0.8;
+  const double theta0[4] = {0, M_PI / 2, M_PI + 2 * M_PI / 180, 3 * M_PI / 2};
+  const double mB[4] = {1032, 432, 1032, 1032};
+  for (double phi = 0.0; phi < 6.3; phi += 0.31) {
+    double J = 4 * 32 * r * r;  // eq. (2): the rods' halves at the pins, J'_K = 0
+    for (int j = 0; j < 4; ++j) {
+      const double th = phi + theta0[j];
+      const double dx = -r * std::sin(th) -
+                        r * r / l * std::sin(th) * std::cos(th) /
+                            std::sqrt(1 - std::pow(r / l * std::sin(th), 2));
+      J += mB[j] * dx * dx;  // eq. (9) cart by cart
+    }
+    EXPECT_NEAR(m.crankSideInertia(phi), J, 1e-12 * J) << "phi " << phi;
+    const double h = 1e-5;
+    const double fd = (m.reducedInertia(phi + h) - m.reducedInertia(phi - h)) / (2 * h);
+    EXPECT_NEAR(m.reducedInertiaDerivative(phi), fd, 1e-7 * std::max(1.0, std::abs(fd))) << "phi " << phi;
+  }
+}
+
+TEST(ReducedLoads, AnEmptyCartDropsExactlyItsOwnLoadTorque) {
+  // Without guide friction each cart's generalized force is its own roller force times x_B',
+  // so emptying cart 2 (no mix: F_j1 = F_j2 = R_j1 = R_j2 = 0) must change M_load by exactly
+  // the term that cart contributed in the uniform scene.
+  Scene u = test::seed000LikeScene();
+  u.loads.guide_friction = 0;
+  u.loads.roller_force_direction = RollerForceDirection::OpposesVelocity;
+  Scene e = u;
+  e.cart_loads.assign(4, CartLoads{u.loads.roller_force_front, u.loads.roller_force_rear,
+                                   u.loads.roller_normal_front, u.loads.roller_normal_rear, 0.0});
+  e.cart_loads[1] = CartLoads{};
+  const ReducedModel mu(u), me(e);
+  for (double phi = 0.05; phi < 6.3; phi += 0.29) {
+    std::vector<CartEvaluation> cu;
+    const double Mu = mu.loadTorque(phi, 10.0, &cu);
+    const double Me = me.loadTorque(phi, 10.0);
+    ASSERT_NE(cu[1].generalized_force, 0.0);
+    EXPECT_NEAR(Me, Mu + cu[1].generalized_force, 1e-9 * (1 + std::abs(Mu))) << "phi " << phi;
+  }
+}
+}  // namespace rollerdyn

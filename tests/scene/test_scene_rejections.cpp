@@ -71,8 +71,12 @@ TEST(SceneRejects, MapWhereNumberExpected) {
 }
 
 TEST(SceneRejects, ListWhereNumberExpected) {
-  expectSceneError(replaced("  mass: 1000", "  mass: [1000, 1000]"),
-                   {"test.yaml:13: carts.mass: expected a number > 0 [kg], got a list of 2"});
+  // carts.mass may be a list of carts.count numbers (docs/per-cart.md), not of any other length;
+  // a number key that is not per cart takes no list.
+  expectSceneError(replaced("  mass: 1000", "  mass: [1000, 1000, 1000]"),
+                   {"test.yaml:13: carts.mass: expected a list of 2 numbers > 0 [kg], one per cart (carts.count = 2), got a list of 3"});
+  expectSceneError(replaced("  radius: 0.2", "  radius: [0.2, 0.2]"),
+                   {"test.yaml:5: crank.radius: expected a number > 0 [m], got a list of 2"});
 }
 
 TEST(SceneRejects, NullWhereNumberExpected) {

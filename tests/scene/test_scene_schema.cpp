@@ -127,6 +127,7 @@ initial:
 crank:
   radius: 0.25
   offset_deg: 60
+  angle_error_deg: [0, 2, -1]
   inertia_per_crank: 0.5
   shaft_inertia: 0.7
 rods:
@@ -229,7 +230,8 @@ TEST(SceneSchema, FullSceneCoversTheSchema) {
     // The critical slip has three alternative ways; the full scene uses way 1.
     if (k.path == "motor.omega_critical" || k.path == "motor.omega_nominal" ||
         k.path == "motor.overload_ratio" ||
-        k.path == "sizing.motor_nominal_power")  // excludes motor_nominal_torque: test_scene_sizing
+        k.path == "sizing.motor_nominal_power" ||  // excludes motor_nominal_torque: test_scene_sizing
+        k.path == "crank.angles_deg")  // the alternative of crank.offset_deg: test_scene_per_cart
       continue;
     const std::string leaf = k.path.substr(k.path.rfind('.') + 1);
     EXPECT_NE(std::string(kFullScene).find(leaf + ":"), std::string::npos) << k.path;
@@ -252,6 +254,8 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.initial.twist, 0.001);
   EXPECT_DOUBLE_EQ(s.crank.radius, 0.25);
   EXPECT_DOUBLE_EQ(s.crank.offset, 60 * deg);
+  EXPECT_EQ(s.crank.angle_errors, (std::vector<double>{0.0, 2 * deg, -1 * deg}));
+  EXPECT_DOUBLE_EQ(s.crankPhase(1), 60 * deg + 2 * deg);
   EXPECT_DOUBLE_EQ(s.crank.inertia_per_crank, 0.5);
   EXPECT_DOUBLE_EQ(s.crank.shaft_inertia, 0.7);
   EXPECT_EQ(s.rods.model, RodModel::Split);

@@ -69,5 +69,22 @@ TEST(LoadWork, RollingResistanceDissipatesInBothModels) {
   EXPECT_NEAR(power[0], power[1], 0.01 * power[1]);  // one law in both models
 }
 
+// Per-cart loads: an empty cart (no mix: no roller forces, no reactions) absorbs nothing; the
+// others keep their own rolling resistance, μ_r·R·mean|v'| as above.
+TEST(LoadWork, AnEmptyCartAbsorbsNothingInBothModels) {
+  const Scene s = parseSceneFile(model("balanced-4cart.yaml"),
+                                 {"simulation.t_end=4", "simulation.reactions=false", "loads.rolling_resistance=0.05",
+                                  "loads.roller_force_front[1]=0", "loads.roller_force_rear[1]=0",
+                                  "loads.roller_normal_front[1]=0", "loads.roller_normal_rear[1]=0"});
+  for (bool mb : {false, true}) {
+    const nlohmann::json j = summaryOf(s, mb);
+    ASSERT_EQ(j["load"]["per_cart"].size(), 4u);
+    EXPECT_EQ(j["load"]["per_cart"][1]["work_whole_run"].get<double>(), 0.0) << mb;
+    for (int c : {0, 2, 3}) EXPECT_GT(j["load"]["per_cart"][c]["power_mean_steady"].get<double>(), 100.0) << mb << c;
+    EXPECT_NE(j["load"]["reading"].get<std::string>().find("15924, 0, 15924, 15924 (carts 1 to 4)"), std::string::npos)
+        << j["load"]["reading"];
+  }
+}
+
 }  // namespace
 }  // namespace rollerdyn

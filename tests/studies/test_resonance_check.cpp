@@ -84,5 +84,26 @@ TEST(ResonanceCheck, OrdersComeFromTheCartLayout) {
   EXPECT_EQ(excitationOrders(s).size(), 12u);
 }
 
+// Carts of their own (per-cart inputs): the four carts at 90° cancel all but 4ω, 8ω, 12ω only
+// while they are equal and at their places; an empty cart or a crank 2° off excites every order.
+TEST(ResonanceCheck, CartsOfTheirOwnExciteEveryOrder) {
+  Scene s = test_scenes::seed000Scene();
+  s.carts.count = 4;
+  s.carts.side.assign(4, 1);
+  s.crank.offset = M_PI / 2;
+  ASSERT_EQ(excitationOrders(s), (std::vector<int>{4, 8, 12}));
+  Scene lists = s;  // lists equal to the uniform value change nothing
+  lists.cart_loads.assign(4, CartLoads{s.loads.roller_force_front, s.loads.roller_force_rear,
+                                       s.loads.roller_normal_front, s.loads.roller_normal_rear, s.loads.rolling_resistance});
+  lists.crank.angle_errors.assign(4, 0.0);
+  EXPECT_EQ(excitationOrders(lists), (std::vector<int>{4, 8, 12}));
+  Scene empty = lists;
+  empty.cart_loads[1] = CartLoads{};
+  EXPECT_EQ(excitationOrders(empty).size(), 12u);
+  Scene off = s;
+  off.crank.angle_errors = {0, 0, 2 * M_PI / 180, 0};
+  EXPECT_EQ(excitationOrders(off).size(), 12u);
+}
+
 }  // namespace
 }  // namespace rollerdyn

@@ -299,5 +299,30 @@ TEST(ValidationReport, MotorClaimsAreCountedAndDecideTheExitStatus) {
   EXPECT_EQ(rep.results["claim_count"]["failed"], 1);
 }
 
+TEST(ValidationReport, CartsOfTheirOwnPrintTheirVerdicts) {
+  ValidationResults r;
+  ComparisonCase held = comparison("P1", 1e-11, 3e-10, 2e-9, true);
+  held.explanation = "Claim (a) ... Claim (b): order 1 rises.";
+  held.verdict = Finding::Verdict::Holds;
+  ComparisonCase failed = comparison("P2", 1e-11, 3e-10, 2e-9, false);
+  failed.explanation = "Claim (b): order 2 stays in the noise.";
+  failed.verdict = Finding::Verdict::Fails;
+  failed.measured = {{"coupling torque order 2 multibody / reduced / uniform scene [N·m]", "1 / 1 / 0.5"}};
+  r.per_cart = {held, failed};
+  const ValidationReport rep = buildValidationReport(r, "figures");
+  EXPECT_TRUE(contains(rep.markdown, "### Carts of their own"));
+  EXPECT_TRUE(contains(rep.markdown, "Claim (b): order 1 rises. **holds**"));
+  EXPECT_TRUE(contains(rep.markdown, "Claim (b): order 2 stays in the noise. **FAILED**"));
+  EXPECT_TRUE(contains(rep.markdown, "uniform scene [N·m]: 1 / 1 / 0.5"));
+  ASSERT_EQ(rep.results["per_cart"].size(), 2u);
+  EXPECT_EQ(rep.results["per_cart"][0]["verdict"], "holds");
+  EXPECT_EQ(rep.results["per_cart"][1]["verdict"], "failed");
+  // Both cases are claims of the report: the failed one is counted and makes validate exit 1.
+  EXPECT_EQ(countClaims(rep.claims).holds, 1);
+  EXPECT_EQ(countClaims(rep.claims).failed, 1);
+  EXPECT_EQ(validationExitStatus(r, rep), 1);
+  EXPECT_TRUE(contains(validationSummary(r, rep), "FAILED P2")) << validationSummary(r, rep);
+}
+
 }  // namespace
 }  // namespace rollerdyn::validation
