@@ -13,7 +13,7 @@ cross-model comparison that happened to notice).
 Usage (from the repository root; long: one whole-suite run per plant):
   nice -n 19 /usr/bin/python3 scripts/mutation-audit.py                  # every plant
   /usr/bin/python3 scripts/mutation-audit.py --check                     # only verify the plants apply
-  nice -n 19 /usr/bin/python3 scripts/mutation-audit.py --only P03,P12   # some plants
+  nice -n 19 /usr/bin/python3 scripts/mutation-audit.py --only P12,P03   # some plants, in this order
   options: --scratch DIR (default /tmp/rollerdyn-mutation; kept between runs, so its build stays
   warm), --commit REV (default HEAD), --out DIR (default validation/mutation), --jobs N (default 2),
   --test-timeout S (default 600: a plant that makes a test hang is caught by the timeout),
@@ -300,7 +300,8 @@ def main():
         unknown = wanted - {p["id"] for p in plants}
         if unknown:
             sys.exit(f"mutation-audit: no such plant: {', '.join(sorted(unknown))}")
-        plants = [p for p in plants if p["id"] in wanted]
+        by_id = {p["id"]: p for p in plants}
+        plants = [by_id[i] for i in dict.fromkeys(args.only.split(","))]  # in the order given
     if args.check:
         bad = []
         for p in plants:
