@@ -271,6 +271,10 @@ def write_outputs(out_dir, meta, results, plants):
         lines.append(f"| {r['id']} {p['name']} | {cell(p['law'])} | {'yes' if failed else '**SURVIVED**'} | "
                      f"{', '.join(r['by_law_test']) if r['by_law_test'] else '**none**'} | {shown} | {minutes(r)} | "
                      f"{r.get('commit', meta['commit'])[:10]} |")
+    notes = [r for r in results if r.get("note")]
+    if notes:
+        lines += ["", "Notes (written by hand into audit.json beside the row; a re-run of the plant replaces the row):", ""]
+        lines += [f"- {r['id']}: {r['note']}" for r in notes]
     with open(os.path.join(out_dir, "audit.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
 

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
+
+#include "motor/SharedMotorLaw.h"
 
 namespace rollerdyn {
 
@@ -61,7 +64,7 @@ std::vector<double> magnitude(const std::vector<double>& x, const std::vector<do
 }
 
 MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size_t e, std::size_t run_end,
-                      double revolutions, bool turning) {
+                      double revolutions, bool turning, const StartUp* start_up) {
   MotorSizing m;
   const double u = sc.reducer.ratio, eta = sc.reducer.efficiency, w0 = sc.motor.omega_sync;
   const SizingInputs& z = sc.sizing;
@@ -134,43 +137,56 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
     r.slip_min = *lo;
     r.slip_max = *hi;
   }
-  r.start_heat = r.starts_per_hour = nan;
+  r.start_heat = r.start_duration = r.start_heat_above_steady = r.starts_per_hour = nan;
+  r.continuous_running = false;
   const Moments sq = moments(t, losses, b, e);
-  if (run_end >= 2 && std::isfinite(rq.mean) && std::isfinite(sq.mean)) {
-    const double span = t[run_end - 1] - t[0];
-    r.start_heat = std::max(0.0, (rq.mean - sq.mean) * span);
-    const double nominal_losses = s_n * m.nominal_torque * w0;  // s_n·M_n·ω0
-    if (s_n > 0 && m.nominal_torque > 0 && r.start_heat > 0)
-      r.starts_per_hour = std::max(0.0, 3600.0 * (nominal_losses - sq.mean) / r.start_heat);
+  const double nominal_losses = s_n * m.nominal_torque * w0;  // s_n·M_n·ω0
+  // The start's rotor heat is the start-up answers' rotor energy loss (StartUp.h): one
+  // computation for both. A start takes the place of that much time of steady running, so what it
+  // adds to the heat balance is its heat less the steady losses over its duration.
+  const bool start_known = start_up && start_up->applicable && start_up->from_rest &&
+                           std::isfinite(start_up->rotor_energy_loss) && std::isfinite(sq.mean);
+  if (start_known) {
+    r.start_heat = start_up->rotor_energy_loss;
+    r.start_duration = start_up->start_end - start_up->t_on;
+    r.start_heat_above_steady = std::max(0.0, r.start_heat - std::max(0.0, sq.mean) * r.start_duration);
+    if (s_n > 0 && m.nominal_torque > 0 && r.start_heat_above_steady > 0)
+      r.starts_per_hour = std::max(0.0, 3600.0 * (nominal_losses - sq.mean) / r.start_heat_above_steady);
   }
   // The duty decides how often the start's heat comes: the run's length says nothing about it (a
   // 10 s run is not a start every 10 s). With sizing.starts_per_hour the thermal equivalent is the
   // steady losses plus that many starts' heat per hour; without it the drive runs continuously (S1)
   // and the heating check reads the steady window, with the starts per hour the motor allows.
   r.duty_starts_per_hour = z.starts_per_hour;
-  char starts[200] = "";
+  char starts[300] = "";
   if (std::isfinite(r.starts_per_hour))
     std::snprintf(starts, sizeof starts,
-                  "one start adds %.3g kJ of rotor heat, so the rotor's heat balance allows about %.3g starts per hour "
-                  "at this load",
-                  r.start_heat * 1e-3, r.starts_per_hour);
-  if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(sq.mean) && std::isfinite(r.start_heat) &&
-      z.starts_per_hour > 0) {
-    const double duty_losses = std::max(0.0, sq.mean) + z.starts_per_hour * r.start_heat / 3600.0;
-    r.thermal_over_nominal = std::sqrt(duty_losses / (s_n * m.nominal_torque * w0));
+                  "one start puts %.3g kJ into the rotor (%.3g kJ more than %.3g s of steady running), so the rotor's "
+                  "heat balance allows about %.3g starts per hour at this load",
+                  r.start_heat * 1e-3, r.start_heat_above_steady * 1e-3, r.start_duration, r.starts_per_hour);
+  const std::string unknown_start =
+      start_up && start_up->applicable && !start_up->from_rest
+          ? "the run holds no start from rest (it begins turning, initial.crank_speed), so the start's heat is not known"
+          : "the start's heat is not known";
+  if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(sq.mean) && start_known && z.starts_per_hour > 0) {
+    const double duty_losses = std::max(0.0, sq.mean) + z.starts_per_hour * r.start_heat_above_steady / 3600.0;
+    r.thermal_over_nominal = std::sqrt(duty_losses / nominal_losses);
     char duty[200];
     std::snprintf(duty, sizeof duty, "%.4g starts per hour (sizing.starts_per_hour)", z.starts_per_hour);
-    r.thermal_basis = "√((steady rotor losses s·M·ω0 + starts per hour × heat of one start) / (s_n·M_n·ω0)) for " +
+    r.thermal_basis = "√((steady rotor losses s·M·ω0 + starts per hour × what one start adds) / (s_n·M_n·ω0)) for " +
                       std::string(duty) + "; " + starts;
   } else if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(sq.mean)) {
-    // No duty given: continuous running, the steady window's own losses (a locked rotor's s = 1
-    // shows here, where the RMS of its torque would not).
-    r.thermal_over_nominal = std::sqrt(std::max(0.0, sq.mean) / (s_n * m.nominal_torque * w0));
+    // No duty given (or no start to count): continuous running, the steady window's own losses (a
+    // locked rotor's s = 1 shows here, where the RMS of its torque would not).
+    r.continuous_running = true;
+    r.thermal_over_nominal = std::sqrt(std::max(0.0, sq.mean) / nominal_losses);
     char eq[64];
     std::snprintf(eq, sizeof eq, "%.3g", r.thermal_over_nominal);
-    r.thermal_basis = std::string("continuous running (sizing.starts_per_hour not given): √(steady-window rotor "
-                                  "losses s·M·ω0 / (s_n·M_n·ω0)) = ") + eq + "; " +
-                      (starts[0] ? starts : "the start's heat is not known");
+    r.thermal_basis = std::string(z.starts_per_hour > 0 ? "continuous running (sizing.starts_per_hour given, but "
+                                                          "there is no start to count)"
+                                                        : "continuous running (sizing.starts_per_hour not given)") +
+                      ": √(steady-window rotor losses s·M·ω0 / (s_n·M_n·ω0)) = " + eq + "; " +
+                      (starts[0] ? std::string(starts) : unknown_start);
   } else {
     r.thermal_over_nominal = r.rms_over_nominal;
     r.thermal_basis = "RMS torque over the whole run / M_n (s_n not known: motor.omega_nominal not given; "
@@ -401,7 +417,7 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
                              : "RMS torque / M_n over the steady window (" + fmt3(steady) +
                                    "; whole run thermal equivalent " + fmt3(whole) + ")";
     h.verdict = verdictOf(h.value, false);
-    if (!(m.whole_run.duty_starts_per_hour > 0) && std::isfinite(m.whole_run.start_heat)) {
+    if (m.whole_run.continuous_running) {
       // Continuous running: the steady window decides, by the larger of the RMS rule and the
       // steady losses.
       h.value = std::isfinite(whole) ? std::max(steady, whole) : steady;
@@ -465,6 +481,24 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
 
 DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const SteadyState& w,
                                bool turning, double delta, const std::string& motion) {
+  // The start-up answers with the scene's motor law, for the start's heat (none without a law).
+  std::shared_ptr<const MotorLaw> law;
+  if (sc.motor.enabled) try {
+      law = sharedMotorLaw(sc);
+    } catch (const std::exception&) {
+    }
+  if (!law) return computeDriveSizing(sc, run, w, turning, delta, motion, nullptr);
+  StartUp start_up;
+  try {
+    start_up = computeStartUp(sc, run, law.get(), nullptr, motion);
+  } catch (const std::exception&) {
+    return computeDriveSizing(sc, run, w, turning, delta, motion, nullptr);
+  }
+  return computeDriveSizing(sc, run, w, turning, delta, motion, &start_up);
+}
+
+DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const SteadyState& w,
+                               bool turning, double delta, const std::string& motion, const StartUp* start_up) {
   DriveSizing s;
   const Table& ts = run.timeseries;
   s.t_begin = w.t_begin;
@@ -482,7 +516,7 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
     const int k = ts.index("phi_crank");
     s.revolutions = std::abs(ts.rows[e - 1][k] - ts.rows[b][k]) / kTwoPi;
   }
-  s.motor = sizeMotor(sc, ts, b, e, n, s.revolutions, turning);
+  s.motor = sizeMotor(sc, ts, b, e, n, s.revolutions, turning, start_up);
   s.flywheel = sizeFlywheel(sc, ts, w, b, e, turning, delta);
   s.coupling = sizeCoupling(sc, ts, b, e, n);
   s.joints = sizeJoints(sc, run, w);

@@ -11,7 +11,8 @@
 //    power), and at nominal load s_n·M_n·ω0; on the running branch s ≈ s_n·M/M_n, so the mean of
 //    s·M over (s_n·M_n) is (RMS/M_n)², the usual RMS rule. At start-up (s near 1) the same
 //    losses are tens of times the running ones, which the RMS of the torque cannot show; the
-//    start's heat (the run's losses above the steady level) counts them. How often a start comes
+//    start's heat counts them: the start-up answers' rotor energy loss (StartUp.h, one
+//    computation), of which a start adds what exceeds the steady losses over its duration. How often a start comes
 //    is the duty's, not the run's (a 10 s run is not a start every 10 s): with
 //    sizing.starts_per_hour the equivalent is √((steady s·M + starts per hour × start heat)/(s_n·M_n));
 //    without it the drive runs continuously, the steady window decides, and the check reports
@@ -38,6 +39,7 @@
 
 #include "analysis/BearingLoad.h"
 #include "analysis/RunResult.h"
+#include "analysis/StartUp.h"
 #include "analysis/SteadyState.h"
 #include "scene/Scene.h"
 
@@ -53,11 +55,16 @@ struct MotorWholeRun {
                                    // /(s_n·M_n)) [-]; NaN without a duty (continuous running);
                                    // RMS/M_n over the whole run when s_n is not known
   std::string thermal_basis;       // which of the two
-  double start_heat = 0;           // rotor heat of the run above its steady level: ∫s·M·ω0 dt minus
-                                   // the steady window's mean losses × the run's duration [J]
+  bool continuous_running = false; // the heating check reads the steady window (no duty given, s_n known)
+  double start_heat = 0;           // the start's rotor heat: the start-up answers' rotor energy loss
+                                   // (StartUp.h, ∫M·(ω0·f/f_n − ω_r) dt from the switch-on to the
+                                   // steady window while connected; the same number) [J]
+  double start_duration = 0;       // that start, switch-on to the steady window [s]
+  double start_heat_above_steady = 0;  // what a start adds to steady running: start_heat minus the
+                                       // steady window's mean losses × start_duration [J]
   double duty_starts_per_hour = 0; // starts per hour of the duty (sizing.starts_per_hour; 0: continuous) [1/h]
   double starts_per_hour = 0;      // starts per hour the rotor's heat balance allows at this load:
-                                   // 3600·(s_n·M_n·ω0 − steady losses)/start_heat [1/h]
+                                   // 3600·(s_n·M_n·ω0 − steady losses)/start_heat_above_steady [1/h]
   double power_line_mean = 0, power_line_peak = 0;  // drawn from the line [W]
   double slip_min = 0, slip_max = 0;  // s [-]
 };
@@ -141,9 +148,14 @@ double nominalMotorTorque(const Scene& scene, std::string* source = nullptr);
 
 // `turning`: whether the crank turns in the window (per-revolution figures are NaN otherwise);
 // `delta`: the run's coefficient of unevenness (Metrics.h); `motion`: the crank's motion in words
-// (RunMotion.h; "" = "turning" or "not turning" from `turning`), named by a failed check.
+// (RunMotion.h; "" = "turning" or "not turning" from `turning`), named by a failed check;
+// `start_up`: the run's start-up answers (StartUp.h), whose rotor energy loss is the start's heat
+// in the heating check (null: no start-up answers, the start's heat is not known). Without the
+// argument they are computed here with the scene's motor law.
 DriveSizing computeDriveSizing(const Scene& scene, const RunResult& run, const SteadyState& window,
                                bool turning, double delta, const std::string& motion = "");
+DriveSizing computeDriveSizing(const Scene& scene, const RunResult& run, const SteadyState& window,
+                               bool turning, double delta, const std::string& motion, const StartUp* start_up);
 
 // Power drawn from the line for a motor torque M at the rotor [W]: the air-gap power M·ω0 (what
 // crosses to the rotor: shaft power plus the rotor's copper losses s·M·ω0), times (1 - s_n)/η_m

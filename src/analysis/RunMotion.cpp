@@ -2,28 +2,69 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
+#include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
-#include "physics/KlossMotor.h"
+#include "analysis/StartUp.h"
+#include "motor/SharedMotorLaw.h"
 
 namespace rollerdyn {
 
 std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMetrics& m, double window_advance,
                            bool steady_reached) {
-  // The models end a hopeless run with the detector's own status line (StallDetector.h); the
-  // same rule applied to the rows catches a table that was not produced by a model run.
+  // One word from three rules, each of which ends a run with its own status line: the stall rule
+  // (StallDetector.h: a motor at the rated supply that holds the drive at rest or is driven
+  // backwards, "stalled"; swings that no longer grow, "rocking"), the held rule below (a motor
+  // connected in a stage the stall rule skips that never got the drive going, "stalled"), and the
+  // rest rule (RestDetector.h: no motor, friction and loads have stopped the machine, "at_rest").
+  // The models end a run with the detector's status line; the same rules applied to the rows catch
+  // a table that was not produced by a model run.
   if (!run.stats.complete) {
-    const std::string from_status = StallDetector::motionOfStatus(run.stats.status);
+    std::string from_status = StallDetector::motionOfStatus(run.stats.status);
+    if (from_status.empty()) from_status = RestDetector::motionOfStatus(run.stats.status);
     if (!from_status.empty()) return from_status;
   }
   const Table& ts = run.timeseries;
+  if (!sc.motor.enabled && ts.has("t") && ts.has("v_cart_1")) {
+    // The rest rule on the rows: every cart slower than v_s for RestDetector::kWindow.
+    RestDetector rest(true, sc.loads.velocity_smoothing);
+    std::vector<int> iv;
+    for (int j = 1; ts.has("v_cart_" + std::to_string(j)); ++j) iv.push_back(ts.index("v_cart_" + std::to_string(j)));
+    std::vector<double> v(iv.size());
+    const int it = ts.index("t");
+    for (const auto& row : ts.rows) {
+      for (std::size_t j = 0; j < iv.size(); ++j) v[j] = row[iv[j]];
+      if (rest.update(row[it], v, int(v.size()))) return "at_rest";
+    }
+  }
   if (sc.motor.enabled && sc.reducer.ratio > 0 && ts.has("t") && ts.has("omega_crank") && ts.has("phi_crank")) {
     StallDetector d(true, sc.motor.omega_sync / sc.reducer.ratio);
     const int it = ts.index("t"), ip = ts.index("phi_crank"), ic = ts.index("omega_crank");
     const int im = ts.has("omega_motor") ? ts.index("omega_motor") : ic;
-    for (const auto& row : ts.rows)
+    // With a starting method the rule counts only the rows at the rated supply (as the models'
+    // run loops do, Supply::fullSupply): a drive may legitimately be slow in star, on a ramp, or
+    // after a switch-off.
+    const int iu = ts.has("supply_voltage_ratio") ? ts.index("supply_voltage_ratio") : -1;
+    const int ifr = ts.has("supply_frequency_ratio") ? ts.index("supply_frequency_ratio") : -1;
+    for (const auto& row : ts.rows) {
+      if ((iu >= 0 && row[iu] != 1.0) || (ifr >= 0 && row[ifr] != 1.0)) continue;
       if (d.update(row[it], row[ip], row[ic], row[im]))
         return d.kind() == StallKind::RockingWithoutGain ? "rocking" : "stalled";
+    }
+    // A drive still held at rest when the run ends, with the motor connected in a stage the rule
+    // skips (star that never changes over, a ramp longer than the run), did not start in this run:
+    // the held rule's band and time, counted back from the last row, at any supply but none.
+    if (iu >= 0 && !ts.rows.empty()) {
+      const double band = StallDetector::kSpeedFraction * sc.motor.omega_sync / sc.reducer.ratio;
+      double held_since = NAN;
+      for (auto row = ts.rows.rbegin(); row != ts.rows.rend(); ++row) {
+        if (!(std::abs((*row)[ic]) <= band && std::abs((*row)[im]) <= band && (*row)[iu] > 0)) break;
+        held_since = (*row)[it];
+      }
+      if (ts.rows.back()[it] - held_since >= StallDetector::kRestWindow) return "stalled";
+    }
   }
   if (!std::isfinite(m.omega_min) || !std::isfinite(m.omega_max)) return "unknown";
   if (m.omega_min < 0 && m.omega_max > 0) {
@@ -35,11 +76,23 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
 }
 
 double startingTorqueAtCrank(const Scene& sc) {
-  return klossCrankTorque(sc.motor, sc.reducer.ratio, sc.reducer.efficiency, 0.0);
+  // The scene's motor law at standstill under the rated supply (MotorLaw::steadyTorque).
+  try {
+    return sharedMotorLaw(sc)->steadyTorque(SupplyState{}, 0.0) * sc.reducer.ratio * sc.reducer.efficiency;
+  } catch (const std::exception&) {
+    return NAN;  // no law for this scene: the explanation says there are no motor data
+  }
 }
 
 double breakdownTorqueAtCrank(const Scene& sc) {
-  return sc.motor.breakdown_torque * sc.reducer.ratio * sc.reducer.efficiency;
+  // Kloss's M_kr for the Kloss laws; the largest torque of the law's curve otherwise.
+  if (sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic)
+    return sc.motor.breakdown_torque * sc.reducer.ratio * sc.reducer.efficiency;
+  try {
+    return largestSteadyTorque(*sharedMotorLaw(sc), SupplyState{}) * sc.reducer.ratio * sc.reducer.efficiency;
+  } catch (const std::exception&) {
+    return NAN;
+  }
 }
 
 std::string stallExplanation(const Scene& sc, const StartLoad* load) {
@@ -48,8 +101,8 @@ std::string stallExplanation(const Scene& sc, const StartLoad* load) {
   if (!std::isfinite(M_start) || !(M_kr > 0)) return "the scene gives no motor data to compare the loads with";
   if (!load || !std::isfinite(load->at_start_angle) || !std::isfinite(load->revolution_mean)) {
     std::snprintf(buf, sizeof buf,
-                  "the motor gives %.4g N·m at the crank when starting (Kloss torque at slip 1 × u·η) "
-                  "and at most %.4g N·m (breakdown torque M_kr·u·η); the load torques were not "
+                  "the motor gives %.4g N·m at the crank when starting (the motor law's torque at standstill × u·η) "
+                  "and at most %.4g N·m (its largest torque × u·η); the load torques were not "
                   "evaluated",
                   M_start, M_kr);
     return buf;
@@ -63,9 +116,9 @@ std::string stallExplanation(const Scene& sc, const StartLoad* load) {
                       : "the motor can start and carry the mean load, so the stall comes from the "
                         "load peaks near a dead centre together with the inertia";
   std::snprintf(buf, sizeof buf,
-                "starting torque at the crank %.4g N·m (Kloss torque at slip 1 × u·η) against a "
+                "starting torque at the crank %.4g N·m (the motor law's torque at standstill × u·η) against a "
                 "load torque of %.4g N·m at the start angle %.4g deg; breakdown torque at the crank "
-                "%.4g N·m (M_kr·u·η) against a load torque of %.4g N·m averaged over a revolution: %s",
+                "%.4g N·m (the law's largest torque × u·η) against a load torque of %.4g N·m averaged over a revolution: %s",
                 M_start, L0, sc.initial.crank_angle * 180.0 / M_PI, M_kr, Lm, verdict);
   return buf;
 }

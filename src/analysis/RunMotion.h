@@ -10,7 +10,9 @@
 //              (its speed still changes sign in the metrics window): run longer,
 //   "turning"  the crank turns one way: per-revolution metrics (δ, H, k_p, energy per revolution,
 //              the flywheel size) have a meaning,
-//   "at_rest", "unknown" (no finite crank speed in the window).
+//   "at_rest"  no motor, and friction and loads have brought the machine to rest (RestDetector.h:
+//              the run ended early), or the crank never moved,
+//   "unknown"  no finite crank speed in the window.
 // And, for a stalled run, why: the motor's starting torque and its breakdown torque, reduced to
 // the crank, against the load torque at the start angle and averaged over a revolution.
 #pragma once
@@ -45,8 +47,9 @@ struct StartLoad {
   double revolution_mean; // the same averaged over one crank revolution [N·m at the crank]
 };
 
-// Torques of the motor reduced to the crank (Kloss law, Loveikin, Pochka, Romasevych (2018)
-// eq. (37), × u·η): starting torque at slip 1 and breakdown torque M_kr·u·η [N·m].
+// Torques of the motor reduced to the crank (× u·η, Loveikin, Pochka, Romasevych (2018) eq. (37)):
+// the scene's motor law (motor.model) at standstill under the rated supply, and its largest torque
+// (M_kr·u·η for the Kloss laws) [N·m]; NaN when the scene's law cannot be built.
 double startingTorqueAtCrank(const Scene& scene);
 double breakdownTorqueAtCrank(const Scene& scene);
 

@@ -12,14 +12,21 @@
 // reactions:  t, per cart j: N_front_j, N_rear_j, F_rod_j, friction_j, crankpin_x_j, crankpin_y_j,
 //             then bearing_x, bearing_y, coupling_torque.
 //             N_* > 0 when the guide presses the cart's guide rollers downward (Loveikin, Pochka, Romasevych (2018) fig. 3);
-//             F_rod > 0 in tension (pulls the cart towards the shaft, Loveikin, Pochka, Romasevych (2018) eq. (14));
+//             F_rod > 0 in tension (pulls the cart towards the shaft, Loveikin, Pochka, Romasevych (2018) eq. (14)):
+//             the rod's force on the cart at B along B -> A (a rod with mass also pushes across
+//             its axis; the reduced model's quasi-static statics report eq. (14)'s axial force,
+//             which differs from it by half the rod weight times sin β);
 //             friction_j is the guide friction force on cart j along x (N);
 //             crankpin_* is the force the rod exerts on crank pin j, world frame (N);
 //             bearing_* is the force the main bearing exerts on the crankshaft, world frame (N).
 //             A model that cannot compute a column leaves it out (the reduced model has no crank
 //             pin or bearing forces).
+//             Guide normal forces and the friction: multibody, the constraint reactions (friction
+//             by loads.guide_friction.normal_force); reduced, the cart statics of
+//             reduced.guide_normals (kinetostatic: with inertial forces; quasi_static: the papers').
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -34,17 +41,26 @@ struct EnergyAudit {
   double damping_dissipation = 0; // ∫ k·(Δω)² dt ≥ 0, lost in the coupling damper
   double friction_dissipation = 0;// ∫ -F_friction·v dt, lost in the guides (≥ 0 when friction opposes v)
   double load_work = 0;           // ∫ -F_load·v dt: work the machine does on the concrete
+  double brake_dissipation = 0;   // ∫ -M_brake·ω_motor dt ≥ 0, lost in the brake (motor.stop.brake_torque)
   double kinetic_initial = 0, kinetic_final = 0;
   double potential_initial = 0, potential_final = 0;  // gravity + coupling spring
 
   // motor work - dissipation - load work - ΔT - ΔV
   double residual() const {
-    return motor_work - damping_dissipation - friction_dissipation - load_work -
+    return motor_work - damping_dissipation - friction_dissipation - load_work - brake_dissipation -
            (kinetic_final - kinetic_initial) - (potential_final - potential_initial);
   }
   // residual divided by the largest energy flow term (motor work, or the kinetic energy when
   // the motor is off), so it stays meaningful for a free-running machine.
   double residualRelative() const;
+};
+
+// One reaction column of the multibody minimal formulation's self-check: its O(n) value against
+// Simbody's constrained solve over the checked rows.
+struct ReactionCheck {
+  std::string column;          // reactions.csv column, e.g. "N_front_2", "bearing_x"
+  double max_difference = 0;   // largest |O(n) value - Simbody's| over the checked rows [N, N·m]
+  double max_value = 0;        // largest |Simbody's value| there [N, N·m]
 };
 
 struct RunStats {
@@ -57,7 +73,10 @@ struct RunStats {
   double constraint_error_max = 0; // max over output rows of the constraint error norm [-]
   bool complete = true;            // false when the run ended before t_end
   double formulation_self_check = -1;  // multibody minimal formulation: max relative difference of its
-                                       // accelerations from Simbody's constrained solve [-]; -1: not run
+                                       // accelerations and guide normal forces from Simbody's
+                                       // constrained solve [-]; -1: not run
+  long self_check_rows = 0;            // output rows checked against Simbody's constrained solve
+  std::vector<ReactionCheck> reaction_self_check;  // per reaction column (empty: none checked)
   std::string status = "completed";  // e.g. "completed", "motor stalled at t = 3.2 s"
 };
 
@@ -68,7 +87,14 @@ struct RunResult {
   Table reactions;
   RunStats stats;
   EnergyAudit energy;
-  std::vector<std::string> effects;  // effects built, e.g. "kloss_motor", "elastic_coupling"
+  std::vector<std::string> effects;  // effects built (Scene::effects), e.g. "kloss_motor", "elastic_coupling"
+  // Normal force of the guide friction (and of the reduced model's reactions), in words for the
+  // user: e.g. "algebraic (guide reaction of the same instant)"; empty without guide friction
+  // in a model that has no reactions of its own to describe.
+  std::string guide_normals;
+  // Reduced model with the papers' quasi-static normals: the friction work the same run would
+  // have done with kinetostatic normals at its own accelerations [J]; NaN where not computed.
+  double friction_work_kinetostatic = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Helpers of the run loops that fill a RunResult.

@@ -91,6 +91,8 @@ json sizingJson(const DriveSizing& s) {
           {"thermal_over_nominal", num(r.thermal_over_nominal)},
           {"thermal_basis", r.thermal_basis},
           {"start_heat", num(r.start_heat)},
+          {"start_duration", num(r.start_duration)},
+          {"start_heat_above_steady", num(r.start_heat_above_steady)},
           {"starts_per_hour", num(r.starts_per_hour)},
           {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
           {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}}}};
@@ -291,6 +293,7 @@ std::string sizingText(const json& summary) {
          "(simulation.reactions: false)\n";
     return o.str();
   }
+  if (at(s, "joints_basis").is_string()) o << "  joint loads from the " << str(at(s, "joints_basis")) << "\n";
   o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
   const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearing"};
   for (std::size_t k = 0; k < 5; ++k) {

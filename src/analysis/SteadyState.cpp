@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace rollerdyn {
@@ -99,6 +100,29 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions,
   s.t_begin = s.revolutions[count - s.window_revolutions].t_begin;
   s.t_end = s.revolutions.back().t_end;
   setRowRange(t, n, s);
+  return s;
+}
+
+SteadyState detectRunningSteadyState(const Table& ts, double window_revolutions, double t_off) {
+  if (!std::isfinite(t_off) || !ts.has("t") || !ts.has("phi_crank")) return detectSteadyState(ts, window_revolutions);
+  const int it = ts.index("t");
+  const auto first_off = std::find_if(ts.rows.begin(), ts.rows.end(),
+                                      [&](const std::vector<double>& row) { return row[it] >= t_off - 1e-12; });
+  if (first_off == ts.rows.end()) return detectSteadyState(ts, window_revolutions);
+  Table running;
+  running.columns = ts.columns;
+  running.rows.assign(ts.rows.begin(), first_off);
+  SteadyState s = detectSteadyState(running, window_revolutions);
+  // Whole-run figures read finite_rows: count them over every row.
+  const int ip = ts.index("phi_crank"), iw = ts.has("omega_crank") ? ts.index("omega_crank") : -1;
+  std::size_t n = 0;
+  while (n < ts.rows.size() && std::isfinite(ts.rows[n][it]) && std::isfinite(ts.rows[n][ip]) &&
+         (iw < 0 || std::isfinite(ts.rows[n][iw])))
+    ++n;
+  if (s.finite_rows == running.rows.size()) s.finite_rows = n;
+  char why[96];
+  std::snprintf(why, sizeof why, "steady window searched before the switch-off at t = %.4g s", t_off);
+  s.note = s.note.empty() ? why : s.note + "; " + why;
   return s;
 }
 

@@ -70,4 +70,11 @@ struct SteadyState {
 SteadyState detectSteadyState(const Table& timeseries, double window_revolutions,
                               double relative_tolerance = kSteadyStateRelativeTolerance);
 
+// The steady state of the machine's running when the motor is switched off at `t_off` within the
+// run (motor.stop.t_off; +inf or NaN: never): detectSteadyState on the rows before t_off, since
+// the coast-down after it is no steady state. Rows at t_off already show the switched-off state.
+// `finite_rows` still counts the whole run's finite rows, so whole-run figures keep the
+// coast-down. The summary, the sizing and the start-up answers all read this one window.
+SteadyState detectRunningSteadyState(const Table& timeseries, double window_revolutions, double t_off);
+
 }  // namespace rollerdyn

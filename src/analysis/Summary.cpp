@@ -1,7 +1,9 @@
 #include "analysis/Summary.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <sstream>
 
 #include "analysis/DriveSizing.h"
@@ -9,8 +11,10 @@
 #include "analysis/Metrics.h"
 #include "analysis/SizingSummary.h"
 #include "analysis/StallDetector.h"
+#include "analysis/StartUpSummary.h"
 #include "analysis/SteadyState.h"
 #include "io/AtomicFile.h"
+#include "motor/SharedMotorLaw.h"
 
 namespace rollerdyn {
 
@@ -38,8 +42,9 @@ std::string joined(const std::vector<std::string>& items) {
 }  // namespace
 
 json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* start_load) {
-  const SteadyState ss =
-      detectSteadyState(run.timeseries, scene.simulation.steady_window_revolutions);
+  // The machine's running: the coast-down after a switch-off is no steady state (SteadyState.h).
+  const SteadyState ss = detectRunningSteadyState(run.timeseries, scene.simulation.steady_window_revolutions,
+                                                  scene.motor.enabled ? scene.motor_stop.t_off : NAN);
   const WindowMetrics m = computeMetrics(run, ss);
   FiniteWriter num;
   json j;
@@ -124,6 +129,29 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["formulation_self_check"] = run.stats.formulation_self_check >= 0  // README, "Multibody formulations"
                                     ? num("formulation_self_check", run.stats.formulation_self_check)
                                     : json(nullptr);
+  // The O(n) reaction columns against Simbody's constrained solve, per column kind (the largest
+  // over the carts): absolute [N, N·m] and relative to the column's largest value.
+  if (run.stats.reaction_self_check.empty()) {
+    j["reaction_self_check"] = nullptr;
+  } else {
+    json kinds = json::object();
+    for (const ReactionCheck& c : run.stats.reaction_self_check) {
+      std::string kind = c.column;
+      const std::size_t us = kind.find_last_of('_');
+      if (us != std::string::npos && us + 1 < kind.size() &&
+          kind.find_first_not_of("0123456789", us + 1) == std::string::npos)
+        kind = kind.substr(0, us);
+      const double rel = c.max_value > 0 ? c.max_difference / c.max_value : c.max_difference;
+      json& k = kinds[kind];
+      if (k.is_null()) k = {{"max_difference", 0.0}, {"relative", 0.0}};
+      k["max_difference"] = std::max(k["max_difference"].get<double>(), c.max_difference);
+      k["relative"] = std::max(k["relative"].get<double>(), rel);
+    }
+    j["reaction_self_check"] = {{"rows_checked", run.stats.self_check_rows},
+                                {"interval_rows", scene.selfCheckInterval()},
+                                {"columns", kinds}};
+  }
+  j["guide_normal_forces"] = run.guide_normals.empty() ? json(nullptr) : json(run.guide_normals);
   j["steps"] = run.stats.steps;
   j["realizations"] = run.stats.realizations;
   j["jacobian_evaluations"] = run.stats.jacobian_evaluations >= 0 ? json(run.stats.jacobian_evaluations) : json(nullptr);
@@ -144,20 +172,45 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   }
   j["reactions"] = rx;
 
-  const DriveSizing sizing =
-      computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN, crank_motion);
+  // Start-up and stopping answers (StartUp.h) with the scene's motor law, told the motion so they
+  // agree with it; the sizing's heating check reads the start's heat from them.
+  std::shared_ptr<const MotorLaw> law;
+  if (scene.motor.enabled) try {
+      law = sharedMotorLaw(scene);
+    } catch (const std::exception&) {
+      // a law the scene cannot build: no start-up answers
+    }
+  std::unique_ptr<StartUp> start_up;
+  if (law) try {
+      start_up = std::make_unique<StartUp>(computeStartUp(scene, run, law.get(), start_load, crank_motion));
+    } catch (const std::exception&) {
+      // a scene the starting method cannot be built for (e.g. a test scene without loads' data)
+    }
+  const DriveSizing sizing = computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN,
+                                                crank_motion, start_up.get());
   j["sizing"] = sizingJson(sizing);
   j["sizing"]["flywheel"]["location"] = toString(scene.flywheel.location);
   const LoadWork load = computeLoadWork(scene, run, ss);
   j["load"] = loadWorkJson(load);
   if (!j.contains("warnings")) j["warnings"] = json::array();
   if (!load.warning.empty()) j["warnings"].push_back(load.warning);
+  // Where the joint loads come from, and what is missing: the reduced model computes the cart
+  // statics only (guide rollers, rod end), not the crank pin or the main bearing.
+  if (run.model == "reduced" && !run.reactions.columns.empty())
+    j["sizing"]["joints_basis"] =
+        std::string(scene.reduced.guide_normals == ReducedGuideNormals::QuasiStatic
+                        ? "reduced model, quasi-static cart statics (the papers': no inertial forces)"
+                        : "reduced model, kinetostatic cart statics (the carts' and rods' inertial forces included)") +
+        "; not computed by the reduced model: crank pin, main bearing (run the multibody model)";
+  else if (!run.reactions.columns.empty())
+    j["sizing"]["joints_basis"] = "multibody model, joint reaction forces";
   if (!turning) {
     not_meaningful.push_back("sizing.flywheel");
     not_meaningful.push_back("sizing.motor.energy_per_revolution");
   }
   j["not_meaningful"] = not_meaningful;
   j["stall"] = nullptr;
+  j["start_up"] = start_up ? startUpJson(*start_up) : nullptr;
 
   std::string status = run.stats.status;
   if (crank_motion == "rocking" && StallDetector::motionOfStatus(status) != "rocking") {
@@ -213,6 +266,7 @@ std::string summaryText(const nlohmann::json& s) {
     << (motion == "turning"   ? "  (the crank turns one way)"
         : motion == "rocking" ? "  (the crank swings back and forth instead of turning)"
         : motion == "stalled" ? "  (the motor stalled; why: see status)"
+        : motion == "at_rest" ? "  (the machine is at rest: with the motor off, friction and loads hold it)"
         : motion == "starting" ? "  (the crank got going but the run ended before it settled: run longer, "
                                  "simulation.t_end; no sizing verdict applies yet)"
                               : "")
@@ -250,6 +304,8 @@ std::string summaryText(const nlohmann::json& s) {
   o << "energy       residual " << f(at("energy", "residual"), "%.3g") << " J (relative "
     << f(at("energy_residual_rel"), "%.2e") << ")\n";
   o << "constraints  max error " << f(at("constraint_error_max"), "%.2e") << "\n";
+  if (at("guide_normal_forces").is_string())
+    o << "guide normal forces  " << str(at("guide_normal_forces")) << "\n";
   o << "steps        " << str(at("steps")) << " steps, " << str(at("realizations"))
     << " right-hand-side evaluations\n";
   o << "cpu          " << f(at("cpu_seconds"), "%.3g") << " s for "

@@ -53,6 +53,7 @@ struct Measurement {
                               // under 0.2 s is timed as the mean of back-to-back repetitions
                               // filling 0.2 s (CPU time is accounted in ms ticks)
   double cpu_min = 0, cpu_max = 0;
+  double cpu_with_setup = 0;  // median process CPU of building the model and running it [s]
   long steps = 0, realizations = 0;
   double simulated_time = 0;  // time reached [s]
   double real_time_factor = 0;  // simulated_time / cpu_seconds [-]
@@ -61,7 +62,8 @@ struct Measurement {
   RunResult run;              // of the first repetition (tables used for errors)
 };
 
-// The scene with the setting applied: formulation (multibody), integrator, accuracy and constraint tolerance
+// The scene with the setting applied: formulation (multibody; the constrained one with the lagged
+// guide-friction law, the only one it can carry), integrator, accuracy and constraint tolerance
 // (= accuracy, the scene schema's own default), reduced.integrator and baranov_step.
 Scene applySetting(const Scene& base, const SolverSetting& setting);
 
@@ -85,6 +87,9 @@ Measurement measure(const Scene& scene, const SolverSetting& setting, const Budg
 // `ref` (to 1e-9 s). NaN when the column is missing in either table, no rows match, or the
 // reference is identically zero.
 double relativeMaxError(const Table& run, const Table& ref, const std::string& column);
+
+// max_i |X_i - X_ref,i| over the same rows [unit of X]; NaN as above.
+double absoluteMaxError(const Table& run, const Table& ref, const std::string& column);
 
 // Median of a non-empty list (mean of the two middle values for an even count).
 double median(std::vector<double> v);

@@ -73,10 +73,11 @@ void logRow(const BenchOptions& opt, const BenchRow& r, size_t index) {
 // Fills the errors against `ref` (a usable reference timeseries, or nullptr) and drops the
 // row's tables.
 void finishRow(BenchRow& r, const Table* ref) {
-  r.error_omega = r.error_coupling = NAN;
+  r.error_omega = r.error_coupling = r.error_angle = NAN;
   if (ref && usable(r.m.outcome)) {
     r.error_omega = relativeMaxError(r.m.run.timeseries, *ref, "omega_crank");
     r.error_coupling = relativeMaxError(r.m.run.timeseries, *ref, "coupling_torque");
+    r.error_angle = absoluteMaxError(r.m.run.timeseries, *ref, "phi_crank");
   }
   r.m.run.timeseries = Table{};
   r.m.run.reactions = Table{};
@@ -104,7 +105,7 @@ BenchRow skippedRow(const std::string& study, const Scene& scene, const SolverSe
   m.cpu_seconds = m.cpu_min = m.cpu_max = NAN;
   m.real_time_factor = m.energy_residual_rel = m.constraint_error_max = NAN;
   BenchRow r = makeRow(study, "", 0, scene, std::move(m));
-  r.error_omega = r.error_coupling = NAN;
+  r.error_omega = r.error_coupling = r.error_angle = NAN;
   return r;
 }
 
@@ -180,10 +181,22 @@ std::vector<BenchRow> runIntegratorStudy(const SceneSource& source, const BenchO
       for (double a : grid) series.push_back({kMultibody, name, a, 0});
       runSeries(scene, series, have_ref ? &ref : nullptr, have_ref ? &ref_table : nullptr, opt, rows);
     }
-    // The minimal formulation of the same multibody model, against the same reference.
+  }
+  // The minimal formulation of the same multibody model against its own reference at
+  // kReferenceAccuracy: it runs the scene's guide-friction law, which the constrained
+  // formulation cannot when it is the algebraic one (GuideFriction.h).
+  {
+    BenchRow ref;
+    Table ref_table;
+    const bool have_ref =
+        runReference(scene, {{kMinimal, kMinimalIntegrator, kReferenceAccuracy, 0}}, opt, ref, ref_table);
+    if (have_ref) {
+      rows.push_back(ref);
+      logRow(opt, rows.back(), rows.size());
+    }
     std::vector<SolverSetting> minimal;
     for (double a : grid) minimal.push_back({kMinimal, kMinimalIntegrator, a, 0});
-    runSeries(scene, minimal, nullptr, have_ref ? &ref_table : nullptr, opt, rows);
+    runSeries(scene, minimal, have_ref ? &ref : nullptr, have_ref ? &ref_table : nullptr, opt, rows);
   }
   // Reduced: CVODE at kReferenceAccuracy is the reference of both reduced integrators.
   {
@@ -209,14 +222,16 @@ std::vector<BenchRow> runIntegratorStudy(const SceneSource& source, const BenchO
 
 namespace {
 
-// Runs both models on one scene variant at the scene's own integrator and accuracy.
+// Runs both models on one scene variant at the scene's own integrator and accuracy (the
+// constrained formulation only while `constrained` is true).
 void runBothModels(const std::string& study, const std::string& variant, double x, const Scene& scene,
-                   const BenchOptions& opt, std::vector<BenchRow>& rows) {
+                   const BenchOptions& opt, std::vector<BenchRow>& rows, bool constrained = true) {
   const SolverSetting settings[] = {
       {kMultibody, scene.simulation.integrator, scene.simulation.accuracy, 0},
       {kMinimal, kMinimalIntegrator, scene.simulation.accuracy, 0},
       {kReduced, "cvode", scene.simulation.accuracy, 0}};
   for (const SolverSetting& s : settings) {
+    if (!constrained && s.model == kMultibody) continue;
     if (stopRequested(opt)) return;
     Budget b{opt.budget, opt.interrupt};
     BenchRow r = makeRow(study, variant, x, scene, measure(scene, s, b, opt.repeats));
@@ -228,7 +243,8 @@ void runBothModels(const std::string& study, const std::string& variant, double 
 
 // A variant whose scene does not parse becomes a failed row for each model.
 void runVariant(const std::string& study, const std::string& variant, double x, const SceneSource& source,
-                const std::vector<std::string>& extra, const BenchOptions& opt, std::vector<BenchRow>& rows) {
+                const std::vector<std::string>& extra, const BenchOptions& opt, std::vector<BenchRow>& rows,
+                bool constrained = true) {
   Scene scene;
   try {
     scene = benchScene(source.load(extra), opt);
@@ -240,21 +256,34 @@ void runVariant(const std::string& study, const std::string& variant, double x, 
       m.status = std::string("failed: scene rejected: ") + ex.what();
       m.cpu_seconds = m.cpu_min = m.cpu_max = m.real_time_factor = NAN;
       BenchRow r = makeRow(study, variant, x, Scene{}, std::move(m));
-      r.error_omega = r.error_coupling = NAN;
+      r.error_omega = r.error_coupling = r.error_angle = NAN;
       rows.push_back(std::move(r));
       logRow(opt, rows.back(), rows.size());
     }
     return;
   }
-  runBothModels(study, variant, x, scene, opt, rows);
+  runBothModels(study, variant, x, scene, opt, rows, constrained);
 }
 
 }  // namespace
 
+std::vector<BenchRow> runMotorsStudy(const SceneSource& source, const BenchOptions& opt) {
+  std::vector<BenchRow> rows;
+  for (const char* model : {"kloss", "kloss_dynamic", "circuit", "park"}) {
+    if (stopRequested(opt)) break;
+    runVariant("motors", std::string("motor.model ") + model, 0, source, {std::string("motor.model=") + model}, opt,
+               rows);
+  }
+  return rows;
+}
+
 std::vector<BenchRow> runCartsStudy(const SceneSource& source, const BenchOptions& opt) {
   const Scene base = source.load();
   std::vector<BenchRow> rows;
-  for (int n : {1, 2, 4, 8, 16, 32}) {
+  // The constrained formulation's evaluation is O(n²) (Simbody's G·M⁻¹·Gᵀ): 32 carts take
+  // ~40 s at 1e-6, 64 would take minutes, so it stops at 32.
+  const std::vector<int> counts = opt.quick ? std::vector<int>{1, 2, 4, 8} : std::vector<int>{1, 2, 4, 8, 16, 32, 64, 256};
+  for (int n : counts) {
     if (stopRequested(opt)) break;
     // The motor grows with the machine (breakdown torque × n / n_scene for n above the scene's
     // count), so an installation with more carts still carries its load instead of stalling
@@ -264,7 +293,7 @@ std::vector<BenchRow> runCartsStudy(const SceneSource& source, const BenchOption
         "carts.count=" + std::to_string(n), "carts.sides=same",
         "crank.offset_deg=" + setValue(n == 1 ? 0.0 : 360.0 / n),
         "motor.breakdown_torque=" + setValue(base.motor.breakdown_torque * scale)};
-    runVariant("carts", "n=" + std::to_string(n), n, source, extra, opt, rows);
+    runVariant("carts", "n=" + std::to_string(n), n, source, extra, opt, rows, n <= 32);
   }
   return rows;
 }
@@ -328,6 +357,16 @@ const BenchRow* cheapestReaching(const std::vector<BenchRow>& rows, const std::s
   return best;
 }
 
+const BenchRow* cheapestReachingAngle(const std::vector<BenchRow>& rows, const std::string& model, double target) {
+  const BenchRow* best = nullptr;
+  for (const BenchRow& r : rows) {
+    if (r.reference || r.m.setting.model != model || r.m.outcome != Outcome::Ok) continue;
+    if (!(r.error_angle <= target) || !std::isfinite(r.m.cpu_seconds)) continue;
+    if (!best || r.m.cpu_seconds < best->m.cpu_seconds) best = &r;
+  }
+  return best;
+}
+
 std::string rowsCsv(const std::vector<BenchRow>& rows) {
   auto f = [](double v) -> std::string {
     if (!std::isfinite(v)) return "";
@@ -345,7 +384,7 @@ std::string rowsCsv(const std::vector<BenchRow>& rows) {
   os << "study,variant,x,model,integrator,accuracy,baranov_step_deg,reference,outcome,status,repeats,"
         "cpu_seconds,cpu_seconds_min,cpu_seconds_max,steps,realizations,simulated_time,real_time_factor,"
         "error_omega,error_coupling,energy_residual_rel,constraint_error_max,carts,cpu_per_cart,"
-        "us_per_realization\n";
+        "us_per_realization,error_angle_rad,cpu_with_setup\n";
   for (const BenchRow& r : rows) {
     const Measurement& m = r.m;
     const bool bar = m.setting.integrator == "baranov";
@@ -358,7 +397,8 @@ std::string rowsCsv(const std::vector<BenchRow>& rows) {
        << f(m.cpu_min) << ',' << f(m.cpu_max) << ',' << m.steps << ',' << m.realizations << ','
        << f(m.simulated_time) << ',' << f(m.real_time_factor) << ',' << f(r.error_omega) << ','
        << f(r.error_coupling) << ',' << f(m.energy_residual_rel) << ',' << f(m.constraint_error_max) << ','
-       << r.carts << ',' << f(per_cart) << ',' << f(us) << '\n';
+       << r.carts << ',' << f(per_cart) << ',' << f(us) << ',' << f(r.error_angle) << ',' << f(m.cpu_with_setup)
+       << '\n';
   }
   return os.str();
 }

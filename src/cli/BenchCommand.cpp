@@ -1,4 +1,4 @@
-// `rollerdyn bench SCENE [--set k=v]... [--study integrators|carts|effects|all] [--quick]
+// `rollerdyn bench SCENE [--set k=v]... [--study integrators|carts|effects|reactions|all|motors] [--quick]
 //  [--budget S] [--repeat N] [--out DIR]`: accuracy vs CPU time of every integrator of both
 // models, cost vs number of carts, cost of each effect (src/bench/BenchStudies.h).
 #include <iostream>
@@ -24,8 +24,10 @@ int runBench(const SceneArgs& args, const BenchArgs& bench) {
   opt.log = [](const std::string& line) { std::cerr << line << '\n'; };
 
   const std::string& study = bench.study;
-  if (study != "integrators" && study != "carts" && study != "effects" && study != "all")
-    throw std::invalid_argument("--study: expected integrators, carts, effects or all, got '" + study + "'");
+  if (study != "integrators" && study != "carts" && study != "effects" && study != "reactions" && study != "motors" &&
+      study != "all")
+    throw std::invalid_argument("--study: expected integrators, carts, effects, reactions, motors or all, got '" + study +
+                                "'");
   std::vector<std::string> written;
   auto add = [&written](const std::vector<std::string>& w) { written.insert(written.end(), w.begin(), w.end()); };
   if (study == "integrators" || study == "all")
@@ -34,6 +36,10 @@ int runBench(const SceneArgs& args, const BenchArgs& bench) {
     add(bench::writeCartsStudy(out_dir, scene, bench::runCartsStudy(source, opt), opt));
   if ((study == "effects" || study == "all") && !g_interrupted)
     add(bench::writeEffectsStudy(out_dir, scene, bench::runEffectsStudy(source, opt), opt));
+  if (study == "motors" && !g_interrupted)  // not part of all: its own table
+    add(bench::writeMotorsStudy(out_dir, scene, bench::runMotorsStudy(source, opt), opt));
+  if ((study == "reactions" || study == "all") && !g_interrupted)
+    add(bench::writeReactionsStudy(out_dir, scene, bench::runReactionsStudy(source, opt), opt));
 
   for (const std::string& w : written) std::cout << w << '\n';
   if (g_interrupted) {

@@ -1,6 +1,7 @@
 // `rollerdyn check SCENE`: validate the scene and show what the multibody model would build.
 #include <iostream>
 
+#include "analysis/FrictionChecks.h"
 #include "cli/Commands.h"
 #include "scene/Plausibility.h"
 #include "multibody/MultibodyModel.h"
@@ -21,6 +22,8 @@ int runCheck(const SceneArgs& args) {
   std::cout << "\nbodies: " << inv.bodies << "\nmobilities: " << inv.mobilities
             << "\nconstraints: " << inv.constraints << " (" << inv.constraint_equations
             << " equations)\ndegrees of freedom: " << inv.degrees_of_freedom << '\n';
+  std::cout << lockingReport(scene);
+  for (const std::string& w : lockingWarnings(scene)) std::cerr << "rollerdyn: warning: " << w << '\n';
   return 0;
 }
 

@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "analysis/RestDetector.h"
 #include "cli/Commands.h"
 #include "cli/Progress.h"
 #include "multibody/MultibodySimulation.h"
@@ -37,6 +38,9 @@ nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const s
 int runExitCode(const RunResult& run, const nlohmann::json& summary) {
   const std::string motion = summary.value("motion", "");
   if (motion == "stalled" || motion == "rocking") return kExitDriveDoesNotTurn;
+  // A machine without a motor that friction and loads brought to rest ended its run early by the
+  // rest rule (RestDetector.h): a finished result, not a failed run.
+  if (motion == "at_rest" && RestDetector::motionOfStatus(run.stats.status) == "at_rest") return 0;
   return run.stats.complete ? 0 : kExitRunFailed;
 }
 

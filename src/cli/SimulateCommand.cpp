@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "analysis/SizingSummary.h"
+#include "analysis/StartUpSummary.h"
 #include "analysis/Summary.h"
 #include "cli/Commands.h"
 #include "cli/RunOutputs.h"
@@ -43,7 +44,7 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   std::unique_ptr<RunModal> modal;
   if (with_modes) modal = std::make_unique<RunModal>(analyseRunModes(scene, run, /*charts=*/false));
   const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir, args.overrides, modal.get());
-  std::cout << summaryText(summary) << sizingText(summary);
+  std::cout << summaryText(summary) << startUpText(summary) << sizingText(summary);
   if (modal) std::cout << modes::modesText(modal->report);
   std::cout << "outputs in " << out_dir << "/\n";
   if (plot) {  // figures from the tables in memory and the scene with its overrides

@@ -129,10 +129,12 @@ int main(int argc, char** argv) {
   // bench (src/cli/BenchCommand.cpp)
   SceneArgs bench_args;
   BenchArgs bench_opts;
-  auto* bench = app.add_subcommand("bench", "accuracy vs CPU time of every integrator, cost vs carts, cost of each effect");
+  auto* bench = app.add_subcommand("bench", "accuracy vs CPU time of every integrator, cost vs carts, cost of each effect and motor model");
   addSceneArgs(bench, bench_args);
-  bench->add_option("--study", bench_opts.study, "integrators (default), carts, effects or all")
-      ->check(oneOf({"integrators", "carts", "effects", "all"}));
+  bench->add_option("--study", bench_opts.study,
+                    "integrators (default), carts, effects, reactions (with vs without joint reactions), all (these "
+                    "four) or motors")
+      ->check(oneOf({"integrators", "carts", "effects", "reactions", "all", "motors"}));
   bench->add_flag("--quick", bench_opts.quick, "fewer accuracies, 1 s runs, 1 s budget per run (integrators: under a minute)");
   bench->add_option("--budget", bench_opts.budget, "CPU seconds per run before it is recorded as a timeout");
   bench->add_option("--repeat", bench_opts.repeats, "timed repetitions per run (median reported)")->check(CLI::Range(1, 1000));

@@ -18,38 +18,54 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
   std::vector<ModelDifference> d;
   const double r = s.crank.radius, l = s.rods.length, lam = r / l;
 
-  // Reactions: always. The reduced model's reaction columns come from CartStatics (no inertial
-  // force); the multibody model's from the slider's constraint force.
-  std::string reactions =
-      "guide reactions and rod forces: dynamic constraint forces of the slider and rod joints "
-      "(multibody) vs quasi-static cart equilibrium without the carts' inertial forces (reduced, "
-      "Loveikin, Pochka, Romasevych (2018) eq. (10)-(25)); they differ by the effect of each cart's d'Alembert force "
-      "-m_B*a (comparison.csv also lists the reduced model's kinetostatic reactions, with that "
-      "force added)";
-  if (s.carts.geometry.com_height != 0.0)
-    reactions += fmt("; the cart's centre of mass %.3g m above the hinge adds the moment of that "
-                     "force to the guide reactions",
-                     s.carts.geometry.com_height);
-  d.push_back({"reactions", reactions, false, false});
+  const bool kinetostatic = s.reduced.guide_normals == ReducedGuideNormals::Kinetostatic;
+  // Reactions. The reduced model's reaction columns come from its cart statics: with the
+  // papers' quasi-static normals without any inertial force; with kinetostatic normals the carts'
+  // d'Alembert forces and the rods' inertial loads at their hinges are in, the same Newton
+  // equations the multibody model's constraint forces satisfy (identicalPhysics).
+  if (!kinetostatic) {
+    std::string reactions =
+        "guide reactions and rod forces: dynamic constraint forces of the slider and rod joints "
+        "(multibody) vs quasi-static cart equilibrium without the carts' inertial forces (reduced, "
+        "reduced.guide_normals = quasi_static, Loveikin, Pochka, Romasevych (2018) eq. (10)-(25)); they differ by the "
+        "effect of each cart's d'Alembert force -m_B*a (comparison.csv also lists the reduced model's kinetostatic "
+        "reactions, with that force added)";
+    if (s.carts.geometry.com_height != 0.0)
+      reactions += fmt("; the cart's centre of mass %.3g m above the hinge adds the moment of that "
+                       "force to the guide reactions",
+                       s.carts.geometry.com_height);
+    d.push_back({"reactions", reactions, false, false});
+    if (s.rods.model == RodModel::Distributed)
+      d.push_back({"rod_inertia",
+                   "rod inertia: distributed rod bodies (multibody) vs distributed reduced-inertia "
+                   "terms m_rod*(x_S'^2 + y_S'^2) + I_S*beta'^2 (reduced, Loveikin and Pochka (2007) eq. (9)); both are "
+                   "the exact kinetic energy of the rods, so the motion agrees, but the rods' own "
+                   "inertial forces reach the carts' guides only in multibody (the reduced quasi-static statics "
+                   "pass half the rod weight to the hinge)",
+                   false, false});
+  }
 
-  if (s.rods.model == RodModel::Distributed)
-    d.push_back({"rod_inertia",
-                 "rod inertia: distributed rod bodies (multibody) vs distributed reduced-inertia "
-                 "terms m_rod*(x_S'^2 + y_S'^2) + I_S*beta'^2 (reduced, Loveikin and Pochka (2007) eq. (9)); both are "
-                 "the exact kinetic energy of the rods, so the motion agrees, but the rods' own "
-                 "inertial forces reach the carts' guides only in multibody (the reduced statics "
-                 "pass half the rod weight to the hinge, CartStatics.h)",
-                 false, false});
-
-  if (s.hasGuideFriction())
-    d.push_back({"guide_friction",
-                 fmt("guide friction (f = %.3g): f*(|N_front| + |N_rear|) from the dynamic "
-                     "reactions, followed with a lag tau_N = %.3g s (multibody, GuideFriction.h) vs "
-                     "from the quasi-static reactions (reduced, Loveikin, Pochka, Romasevych (2018) eq. (14)-(25)); the friction "
-                     "torque, and with it crank speed and coupling torque, differ by about "
-                     "f*(cart inertial force)*tan(beta)*dx_B/dphi",
-                     s.loads.guide_friction, s.loads.guide_friction_lag),
-                 true, false});
+  if (s.hasGuideFriction()) {
+    const bool lagged = s.loads.guide_normal_force == GuideNormalForce::Lagged;
+    if (!kinetostatic)
+      d.push_back({"guide_friction",
+                   fmt("guide friction (f = %.3g): f*(|N_front| + |N_rear|) from the dynamic reactions (multibody, ",
+                       s.loads.guide_friction) +
+                       (lagged ? fmt("followed with a lag tau_N = %.3g s", s.loads.guide_friction_lag)
+                               : std::string("solved with the motion")) +
+                       ") vs from the quasi-static reactions (reduced, Loveikin, Pochka, Romasevych (2018) eq. "
+                       "(14)-(25)); the friction torque, and with it crank speed and coupling torque, differ by about "
+                       "f*(cart inertial force)*tan(beta)*dx_B/dphi (set reduced.guide_normals = kinetostatic for the "
+                       "same law in both)",
+                   true, false});
+    else if (lagged)
+      d.push_back({"guide_friction",
+                   fmt("guide friction (f = %.3g): the same kinetostatic normal forces in both, followed with a lag "
+                       "tau_N = %.3g s in multibody (loads.guide_friction.normal_force = lagged) and solved with the "
+                       "motion in reduced; the lag shifts the friction by about f*tau_N*dN/dt",
+                       s.loads.guide_friction, s.loads.guide_friction_lag),
+                   true, false});
+  }
 
   if (s.reduced.kinematics == KinematicsForm::Truncated && !s.hasCamDrive()) {
     // Largest position error of the series x_B = r cos θ + l(1 - λ² sin² θ / 2) against the
@@ -98,9 +114,14 @@ std::vector<std::string> identicalPhysics(const Scene& s) {
   else
     same.push_back("drive: rigid coupling, one rotating body (multibody) and the one-mass model "
                    "J(phi) (Loveikin and Pochka (2007) eq. (1)) (reduced)");
-  if (s.hasMotor())
-    same.push_back("motor: the same Kloss law 2*M_kr*s*s_kr/(s^2 + s_kr^2)*u*eta (Loveikin, Pochka, Romasevych (2018) eq. "
-                   "(37), physics/KlossMotor.h) in both");
+  if (s.hasMotor()) {
+    if (s.induction.model == MotorModel::Kloss)
+      same.push_back("motor: the same Kloss law 2*M_kr*s*s_kr/(s^2 + s_kr^2)*u*eta (Loveikin, Pochka, Romasevych (2018) "
+                     "eq. (37)) in both");
+    else
+      same.push_back(std::string("motor: the same motor law (motor.model: ") + toString(s.induction.model) +
+                     ") and starting method in both, its electrical states integrated with the motion");
+  }
   if (s.rods.model == RodModel::Split)
     same.push_back("rods: half the rod mass on the crank pin, half on the cart (Loveikin, Pochka, Romasevych (2018) eq. "
                    "(2)-(3)) in both, including the pin half-masses' weight");
@@ -109,8 +130,16 @@ std::vector<std::string> identicalPhysics(const Scene& s) {
   if (s.hasRollerLoads())
     same.push_back(std::string("roller loads: the same direction law (") +
                    toString(s.loads.roller_force_direction) +
-                   ", physics/RollerLoads.h) in both; vertical roller forces do no work");
-  if (!s.hasGuideFriction()) same.push_back("guide friction: none in either model");
+                   ") in both; vertical roller forces do no work");
+  const bool kinetostatic = s.reduced.guide_normals == ReducedGuideNormals::Kinetostatic;
+  if (kinetostatic)
+    same.push_back("reactions: the cart's and the rod's Newton equations with their inertial forces in both "
+                   "(constraint forces in multibody, kinetostatic cart statics in reduced)");
+  if (!s.hasGuideFriction())
+    same.push_back("guide friction: none in either model");
+  else if (kinetostatic && s.loads.guide_normal_force == GuideNormalForce::Algebraic)
+    same.push_back("guide friction: f*(|N_front| + |N_rear|) with the guide reactions of the same instant, the loop "
+                   "solved with the motion by one law in both");
   if (s.reduced.kinematics == KinematicsForm::Exact && !s.hasCamDrive())
     same.push_back("kinematics: exact slider-crank (Loveikin, Pochka, Romasevych (2018) eq. (40)-(47)) in the reduced "
                    "model, exact loop closure in multibody");

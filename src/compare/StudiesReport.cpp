@@ -344,6 +344,7 @@ std::vector<StudiesPage> buildStudiesPages(const std::string& dir) {
   pages.push_back(loveikin2018Stiffness(dir));
   pages.push_back(camPage(dir));
   pages.push_back(chainPage(dir));
+  pages.push_back(startUpStudyPage(dir));
   std::ostringstream md;
   md << "# Studies of the papers\n\n" << kGenerated
      << "Regenerate everything with `bash validation/studies/run.sh` from the repository root (set `ROLLERDYN=` to the "
@@ -355,7 +356,8 @@ std::vector<StudiesPage> buildStudiesPages(const std::string& dir) {
      << "| Loveikin, Pochka, Romasevych (2018) Table 1: Δφ = 0…90°, k = 2000/8000 | `loveikin2018_table1.md` | `loveikin2018_dphi_damping*.csv`, `loveikin2018_dphi_damping*/` |\n"
      << "| Loveikin, Pochka, Romasevych (2018): coupling stiffness | `loveikin2018_stiffness.md` | `loveikin2018_stiffness_k*/` |\n"
      << "| Loveikin and Pochka, cam drive with optimal reversal: cam vs crank | `cam_vs_crank.md` | `cam_vs_crank.csv`, `cam/` |\n"
-     << "| Dyomin (two rotors on an elastic chain) | `two_rotor_chain.md` | `chain/`, `chain_resonance3/` |\n";
+     << "| Dyomin (two rotors on an elastic chain) | `two_rotor_chain.md` | `chain/`, `chain_resonance3/` |\n"
+     << "| Start-up from rest with each motor law (the papers' machines; Table 1's offsets) | `startup.md` | `startup_*/` |\n";
   pages.insert(pages.begin(), {"README.md", md.str()});
   return pages;
 }

@@ -30,4 +30,8 @@ struct LooseTable {
 };
 LooseTable readLooseCsv(const std::string& path);
 
+// startup.md: the papers' machines started from rest with each motor law, and Table 1's offsets
+// from rest (StartUpStudyPage.cpp), from the startup_*/sweep.json under `dir`.
+StudiesPage startUpStudyPage(const std::string& dir);
+
 }  // namespace rollerdyn::validation

@@ -58,8 +58,12 @@ void frictionMeasurements(const Scene& sc, const ModelComparison& c, ComparisonC
       "The guide friction f·(|N_front| + |N_rear|) (f: friction coefficient, N: guide normal forces) differs because "
       "the normal forces differ: up to " + g(n_diff) + " N between dynamic and quasi-static reactions, i.e. " +
       g(f * n_diff) + " N of friction against a measured friction difference of " + g(fr_diff) +
-      " N. The multibody friction follows the reactions with a lag τ_N = " + g(sc.loads.guide_friction_lag) +
-      " s, which accounts for at most " + g(lag) + " N (applied friction against f·(|N|) of the same instant). "
+      " N. " +
+      (sc.loads.guide_normal_force == GuideNormalForce::Lagged
+           ? "The multibody friction follows the reactions with a lag τ_N = " + g(sc.loads.guide_friction_lag) +
+                 " s, which accounts for at most " + g(lag) + " N (applied friction against f·(|N|) of the same instant). "
+           : "The multibody friction uses the reactions of the same instant (loads.guide_friction.normal_force = "
+             "algebraic): applied friction and f·(|N|) of the same instant differ by at most " + g(lag) + " N. ") +
       "Claim: the motion difference comes from the reaction difference (f·ΔN within a factor 2 of the friction "
       "difference), not from the lag (under a fifth of it).";
 }

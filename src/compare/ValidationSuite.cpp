@@ -49,7 +49,7 @@ ComparisonCase Suite::compareCase(const std::string& label, const std::string& d
   cc.revolutions = revs;
   std::vector<std::string> sets = sets_in;
   try {
-    if (revs > 0) sets.push_back("simulation.t_end=" + exact(timeForRevolutions(file, sets_in, revs)));
+    if (revs > 0) sets.push_back("simulation.t_end=" + exact(timeForRevolutions(file, sets, revs)));
     const Scene sc = load(file, sets);
     cc.command = command("compare", file, sets);
     cc.t_end = sc.simulation.t_end;

@@ -39,6 +39,8 @@ const std::vector<std::pair<std::string, std::string>>& exactUnits() {
       {"coupling_torque", "N*m at the crank axis"}, {"motor_torque", "N*m at the crank axis"},
       {"load_torque", "N*m at the crank axis"},
       {"bearing_x", "N"}, {"bearing_y", "N"},
+      {"stator_current", "A"}, {"supply_voltage_ratio", "-"}, {"supply_frequency_ratio", "-"},
+      {"brake_torque", "N*m"},
   };
   return u;
 }

@@ -2,7 +2,7 @@
 
 #include "multibody/ElasticCoupling.h"
 #include "multibody/GuideFriction.h"
-#include "multibody/KlossMotorForce.h"
+#include "multibody/MotorForce.h"
 #include "multibody/RollerLoadForce.h"
 
 namespace rollerdyn {

@@ -8,7 +8,7 @@
 
 namespace rollerdyn {
 
-class KlossMotorForce;
+class MotorForce;
 class ElasticCoupling;
 class RollerLoadForce;
 class GuideFriction;
@@ -16,7 +16,7 @@ class GuideFriction;
 class EnergyMeter : public SimTK::Force::Custom::Implementation {
  public:
   struct Sources {
-    const KlossMotorForce* motor = nullptr;
+    const MotorForce* motor = nullptr;
     const ElasticCoupling* coupling = nullptr;
     const RollerLoadForce* loads = nullptr;
     const GuideFriction* friction = nullptr;

@@ -2,13 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
+#include "analysis/FrictionChecks.h"
 #include "multibody/CamFollower.h"
 #include "multibody/ElasticCoupling.h"
 #include "multibody/EnergyMeter.h"
 #include "multibody/GuideFriction.h"
-#include "multibody/KlossMotorForce.h"
+#include "motor/MotorColumns.h"
+#include "motor/SharedMotorLaw.h"
+#include "motor/Supply.h"
+#include "multibody/MinimalCoordinates.h"
+#include "multibody/MinimalDynamics.h"
+#include "multibody/MotorForce.h"
 #include "multibody/RollerLoadForce.h"
 #include "physics/CamMotionLaw.h"
 #include "physics/SliderCrank.h"
@@ -89,7 +96,12 @@ void MultibodyModel::buildCarts() {
     rig.rod_length = l;
     const double m_cart = sc.cartMassWithRodShare(j);
     const SimTK::Vec3 com_cart(rig.side * sc.carts.geometry.p, sc.carts.geometry.com_height, 0);
-    SimTK::Body::Rigid cart_body(SimTK::MassProperties(m_cart, com_cart, SimTK::Inertia(com_cart, m_cart)));
+    // The cart only slides, so its rotational inertia never enters the motion; it is a point mass
+    // at its centre of mass plus a token central inertia. Without the token, Simbody's central
+    // inertia Inertia(com, m) - Inertia(com, m) can round to -3e-14 and be rejected (a 700 kg cart).
+    const SimTK::Inertia token_central(1e-9 * m_cart);  // [kg·m²], isotropic
+    SimTK::Body::Rigid cart_body(
+        SimTK::MassProperties(m_cart, com_cart, token_central.shiftFromMassCenter(com_cart, m_cart)));
     rig.cart = SimTK::MobilizedBody::Slider(matter_.Ground(), SimTK::Transform(), cart_body, SimTK::Transform());
 
     if (sc.hasCamDrive()) {
@@ -129,11 +141,16 @@ void MultibodyModel::buildForces() {
   const Scene& sc = scene_;
   EnergyMeter::Sources sources;
   if (sc.hasMotor()) {
-    auto* f = new KlossMotorForce(motor_, sc.motor, sc.reducer.ratio, sc.reducer.efficiency);
+    std::shared_ptr<const MotorLaw> law = options_.motor_law;
+    if (!law) law = sharedMotorLaw(sc);
+    Supply supply = makeSupply(sc, law.get());
+    auto* f = new MotorForce(forces_, motor_, law, std::move(supply), sc.reducer.ratio, sc.reducer.efficiency);
     SimTK::Force::Custom(forces_, f);
     motor_force_ = sources.motor = f;
     applied_order_.push_back(f);
-    inventory_.force_elements.push_back("KlossMotor");
+    inventory_.force_elements.push_back(sc.induction.model == MotorModel::Kloss && !options_.motor_law
+                                            ? "KlossMotor"
+                                            : "InductionMotor(" + law->description() + ")");
   }
   if (sc.coupling.type == CouplingType::Elastic) {
     auto* f = new ElasticCoupling(motor_, sc.coupling.stiffness, sc.coupling.damping);
@@ -184,13 +201,28 @@ void MultibodyModel::fillInventory() {
   inventory_.effects = scene_.effects();
 }
 
-SimTK::State MultibodyModel::assembledState(double phi, double omega, double twist) const {
-  const Scene& sc = scene_;
+SimTK::State MultibodyModel::closedFormState(double phi, double omega, double twist) const {
+  SimTK::State s = closedFormKinematics(phi, omega, twist);
+  startMotor(s);
+  return s;
+}
+
+void MultibodyModel::startMotor(SimTK::State& s) const {
+  if (!motor_force_) return;
+  const bool steady = motorSteadyAtStart(scene_, motor_force_->supply());
+  motor_force_->initialize(s, steady);
+  system_.realize(s, SimTK::Stage::Velocity);
+  motor_force_->applyDueEvents(s, false);
+  system_.realize(s, SimTK::Stage::Velocity);
+}
+
+SimTK::State MultibodyModel::closedFormKinematics(double phi, double omega, double twist) const {
   SimTK::State s = system_.getDefaultState();
   system_.realizeModel(s);
   // Carts of different masses: the lightest is the one a friction error moves most.
   if (friction_force_) friction_force_->setErrorWeights(s, scene_.lightestCartMassWithRodShare());
-  if (motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex()) {
+  if (motor_force_) motor_force_->setErrorWeights(s);
+  if (elastic()) {
     // Simbody counts 1 rad (1 rad/s) as a unit change of every coordinate (speed), but the
     // coupling twist is ~torque/c: 1e-6 rad at c = 1e9, so it was held to ~100 % of itself and
     // the coupling torque carried errors of c·accuracy. One unit of twist is the twist that
@@ -201,41 +233,43 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
     s.updUWeights(matter_.getMySubsystemIndex())[motor_.getFirstUIndex(s)] =
         std::max(1.0, scene_.coupling.stiffness / torque_scale);
   }
-  crank_.setOneQ(s, 0, phi);
-  crank_.setOneU(s, 0, omega);
-  if (motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex()) {
-    motor_.setOneQ(s, 0, twist);  // relative to the crankshaft
-    motor_.setOneU(s, 0, 0.0);    // same speed as the crank
-  }
-  for (size_t j = 0; j < carts_.size(); ++j) {
-    const CartRig& c = carts_[j];
-    const double theta = phi + sc.crankPhase(int(j));
-    const SliderCrankPose pose = sc.hasCamDrive()
-                                     ? camDrivePose(theta, sc.cam.stroke, c.side)  // Loveikin and Pochka (cam drive paper)
-                                     : sliderCrankExact(theta, sc.crank.radius, sc.rods.length, c.side);
-    c.cart.setOneQ(s, 0, pose.x_B);
-    c.cart.setOneU(s, 0, pose.dx_B * omega);
-    if (!c.rod.isEmptyHandle()) {
-      // Direction A->B = l·(σ·cos β, -sin β): absolute rod angle ψ, rate ψ̇ = -σ·β̇.
-      const double psi = std::atan2(-std::sin(pose.beta), c.side * std::cos(pose.beta));
-      c.rod.setOneQ(s, 0, psi - phi);
-      c.rod.setOneU(s, 0, -c.side * pose.dbeta * omega - omega);
-    }
-  }
+  system_.realize(s, SimTK::Stage::Instance);
+  IndependentState x;
+  x.crank_angle = phi;
+  x.crank_speed = omega;
+  x.twist = twist;
+  x.twist_rate = 0.0;  // the motor side starts at the crank's speed
+  // A prescribed crank speed is the options' (MinimalCoordinates::apply writes it).
+  MinimalCoordinates(*this, s).apply(0.0, x, s);
+  system_.realize(s, SimTK::Stage::Velocity);
+  return s;
+}
+
+SimTK::State MultibodyModel::assembledState(double phi, double omega, double twist) const {
+  SimTK::State s = closedFormKinematics(phi, omega, twist);
   // The closed-form configuration already satisfies the loops; projection only removes
   // round-off and can therefore never jump to the other assembly branch.
   system_.realize(s, SimTK::Stage::Position);
   system_.projectQ(s, 1e-13);
   system_.realize(s, SimTK::Stage::Velocity);
   system_.projectU(s, 1e-13);
-  if (friction_force_) {
+  startMotor(s);
+  if (friction_force_ && friction_force_->lagged()) {
     // Start the friction normal forces at the reactions they produce themselves (fixed point;
     // it contracts by a factor of order f per pass).
     for (int pass = 0; pass < 8; ++pass) {
       system_.realize(s, SimTK::Stage::Acceleration);
       const SimTK::Vector n = friction_force_->currentNormals(s);
-      friction_force_->setFrictionNormals(s, n);
+      friction_force_->setNormalsInUse(s, n);
     }
+  } else if (friction_force_) {
+    // Algebraic law: the friction loop solved by the minimal formulation's inverse-dynamics pass.
+    MinimalCoordinates coords(*this, s);
+    coords.apply(0.0, coords.extract(s), s);
+    MinimalDynamics dyn(*this, s);
+    if (!dyn.evaluate(s, coords))
+      throw std::invalid_argument("multibody model: at the initial state the " +
+                                  describeLoopFailure(dyn.loopResult()));
   }
   system_.realize(s, SimTK::Stage::Acceleration);
   return s;
@@ -245,11 +279,20 @@ SimTK::State MultibodyModel::initialState() const {
   return assembledState(scene_.initial.crank_angle, scene_.initial.crank_speed, scene_.initial.twist);
 }
 
+int MultibodyModel::motorStateCount() const { return motor_force_ ? motor_force_->stateCount() : 0; }
+
+bool MultibodyModel::hasFrictionLagStates() const { return friction_force_ && friction_force_->lagged(); }
+
+std::string MultibodyModel::guideNormalsDescription() const {
+  return friction_force_ ? rollerdyn::guideNormalsDescription(scene_, false) : "";
+}
+
 void MultibodyModel::auxiliaryRates(const SimTK::State& s, const SimTK::Vector& guide_normals_now,
                                     SimTK::Vector& zdot) const {
   zdot.resize(forces_.getZ(s).size());
   zdot = 0.0;
   energy_meter_->calcRates(s, zdot);
+  if (motor_force_) motor_force_->calcRates(s, zdot);
   if (friction_force_) friction_force_->calcRates(s, guide_normals_now, zdot);
 }
 
@@ -259,10 +302,11 @@ SimTK::Vector MultibodyModel::frictionPowerGradient(const SimTK::State& s) const
 
 void MultibodyModel::addAppliedForces(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
                                       SimTK::Vector_<SimTK::Vec3>& particle_forces,
-                                      SimTK::Vector& mobility_forces) const {
+                                      SimTK::Vector& mobility_forces, bool include_friction) const {
   // No element is ever disabled here, and none caches position-only forces in the subsystem
   // (dependsOnlyOnPositions is false), so Simbody's sum is this loop, term for term.
   for (const SimTK::Force::Custom::Implementation* f : applied_order_) {
+    if (f && f == friction_force_ && !include_friction) continue;
     if (f)
       f->calcForce(s, body_forces, particle_forces, mobility_forces);
     else
@@ -285,8 +329,12 @@ double MultibodyModel::couplingTorque(const SimTK::State& s) const {
 
 double MultibodyModel::couplingTorque(const SimTK::State& s, const SimTK::Vector& udot) const {
   if (coupling_force_) return coupling_force_->torque(s);
-  // Rigid coupling: the torque the motor-side inertia passes on to the crank side, M_motor - J_n1·φ̈.
-  return motorTorque(s) - scene_.motorSideInertia() * udot[crank_.getFirstUIndex(s)];
+  // Rigid coupling: the torque the motor-side inertia passes on to the crank side,
+  // M_motor (+ brake) - J_n1·φ̈.
+  const double M_drive = motor_force_ && motor_force_->supply().hasBrake()
+                             ? motorTorque(s) + motor_force_->brakeTorque(s)
+                             : motorTorque(s);
+  return M_drive - scene_.motorSideInertia() * udot[crank_.getFirstUIndex(s)];
 }
 
 double MultibodyModel::constraintError(const SimTK::State& s) const {
@@ -300,6 +348,7 @@ EnergyAudit energyAuditBetween(const EnergySnapshot& first, const EnergySnapshot
   a.damping_dissipation = last.damping_dissipation - first.damping_dissipation;
   a.friction_dissipation = last.friction_dissipation - first.friction_dissipation;
   a.load_work = last.load_work - first.load_work;
+  a.brake_dissipation = last.brake_dissipation - first.brake_dissipation;
   a.kinetic_initial = first.kinetic;
   a.kinetic_final = last.kinetic;
   a.potential_initial = first.potential;
@@ -315,6 +364,7 @@ EnergySnapshot MultibodyModel::energy(const SimTK::State& s) const {
   e.damping_dissipation = energy_meter_->dampingDissipation(s);
   e.friction_dissipation = energy_meter_->frictionDissipation(s);
   e.load_work = energy_meter_->loadWork(s);
+  if (motor_force_) e.brake_dissipation = motor_force_->brakeWork(s);
   return e;
 }
 
@@ -324,6 +374,8 @@ std::vector<std::string> MultibodyModel::timeseriesColumns() const {
                                 "twist_rate",  "twist_accel", "coupling_torque", "motor_torque"};
   for (size_t j = 1; j <= carts_.size(); ++j)
     for (const char* n : {"x_cart_", "v_cart_", "a_cart_"}) c.push_back(n + std::to_string(j));
+  if (motor_force_)
+    for (const std::string& m : motorColumns(&motor_force_->law(), motor_force_->supply())) c.push_back(m);
   return c;
 }
 
@@ -359,6 +411,12 @@ void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& u
     ts.push_back(c.x(s));
     ts.push_back(c.v(s));
     ts.push_back(udot[c.cart.getFirstUIndex(s)]);
+  }
+  if (motor_force_) {
+    const MotorForce& m = *motor_force_;
+    const bool current = lawHasCurrent(&m.law());
+    appendMotorColumns(&m.law(), m.supply(), current ? m.evaluate(s).stator_current : 0.0, m.supplyState(s),
+                       m.brakeTorque(s), ts);
   }
 }
 

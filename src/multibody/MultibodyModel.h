@@ -26,12 +26,13 @@
 
 #include "Simbody.h"
 #include "analysis/RunResult.h"
+#include "motor/MotorLaw.h"
 #include "multibody/CartRig.h"
 #include "scene/Scene.h"
 
 namespace rollerdyn {
 
-class KlossMotorForce;
+class MotorForce;
 class ElasticCoupling;
 class RollerLoadForce;
 class GuideFriction;
@@ -42,6 +43,7 @@ struct MultibodyOptions {
   double crank_speed = 0.0;            // that speed [rad/s]
   bool structured_jacobian = true;     // minimal formulation: Newton Jacobian by difference quotients
                                        // of the mechanical states only (false: of every state)
+  std::shared_ptr<const MotorLaw> motor_law;  // the motor's law; null: the scene's motor.model
 };
 
 // What the built system contains, for `rollerdyn check` and for tests.
@@ -59,6 +61,7 @@ struct MultibodyInventory {
 struct EnergySnapshot {
   double kinetic = 0, potential = 0;
   double motor_work = 0, damping_dissipation = 0, friction_dissipation = 0, load_work = 0;
+  double brake_dissipation = 0;
 };
 
 // The energy audit of a run from the snapshots at its first and last recorded rows (the work
@@ -86,6 +89,19 @@ class MultibodyModel {
   const SimTK::MobilizedBody& motorSide() const { return motor_; }
   bool elastic() const { return motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex(); }
   bool hasGuideFriction() const { return friction_force_ != nullptr; }
+  // The motor force element (null without a motor): its law, supply, phase and z states.
+  const MotorForce* motorForce() const { return motor_force_; }
+  // z entries of the motor element (law states, brake work): the first entries of the force
+  // subsystem's z, before the guide-friction normal forces and the energy integrals.
+  int motorStateCount() const;
+  // The guide-friction element (precondition: hasGuideFriction()).
+  const GuideFriction& frictionElement() const { return *friction_force_; }
+  // True when the guide friction carries normal-force lag states (loads.guide_friction.normal_force
+  // = lagged); false without friction or with the algebraic law.
+  bool hasFrictionLagStates() const;
+  // The normal force of the guide friction in words, for every multibody result
+  // (RunResult::guide_normals); empty without guide friction.
+  std::string guideNormalsDescription() const;
   // Time derivatives of the force subsystem's auxiliary states z (energy audit, guide-friction
   // normal-force lags; indexed like forces().getZ(s)) for the guide normal forces
   // `guide_normals_now` (N_front, N_rear per cart; ignored without friction). State realized to
@@ -98,16 +114,24 @@ class MultibodyModel {
   SimTK::Vector frictionPowerGradient(const SimTK::State& s) const;
   // Adds every force element's applied forces to the arrays (sized for the matter subsystem),
   // element by element in the force subsystem's order: the sums Simbody forms at Dynamics stage,
-  // without realizing the system to Dynamics. State realized to Velocity.
+  // without realizing the system to Dynamics. State realized to Velocity. include_friction =
+  // false leaves the guide friction out (the minimal formulation adds it once its loop is solved).
   void addAppliedForces(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& body_forces,
-                        SimTK::Vector_<SimTK::Vec3>& particle_forces, SimTK::Vector& mobility_forces) const;
+                        SimTK::Vector_<SimTK::Vec3>& particle_forces, SimTK::Vector& mobility_forces,
+                        bool include_friction = true) const;
 
   // A state assembled exactly at crank angle φ2, crank speed φ̇2 and coupling twist φ1 - φ2
   // (closed-form slider-crank positions and velocities, then a projection that only removes
-  // round-off), with consistent guide-friction normal forces. Realized to Acceleration.
+  // round-off), with consistent guide-friction normal forces. Realized to Acceleration (Simbody's
+  // constrained solve: dense in the constraints; the minimal formulation uses closedFormState).
   SimTK::State assembledState(double crank_angle, double crank_speed, double twist) const;
-  // The scene's initial state.
+  // The scene's initial state (assembledState).
   SimTK::State initialState() const;
+  // The same configuration from the closed forms alone (MinimalCoordinates.h: exact to round-off,
+  // no projection), realized to Velocity; O(n). The motor's states are set as in assembledState
+  // (startMotor); the guide-friction normal forces (lag states or algebraic) are left at zero:
+  // the minimal formulation sets them from its friction loop.
+  SimTK::State closedFormState(double crank_angle, double crank_speed, double twist) const;
 
   // Output columns; see src/analysis/RunResult.h for their meaning.
   std::vector<std::string> timeseriesColumns() const;
@@ -134,6 +158,12 @@ class MultibodyModel {
   EnergySnapshot energy(const SimTK::State& s) const;  // realized to Dynamics
 
  private:
+  // closedFormState without the motor's states.
+  SimTK::State closedFormKinematics(double crank_angle, double crank_speed, double twist) const;
+  // The motor's own states at t = 0 (steady when the motor ran before, MotorLaw::initialState),
+  // then the supply's events due at t = 0 (a speed trigger the initial speed has passed already).
+  // State realized to Velocity on return; nothing without a motor.
+  void startMotor(SimTK::State& s) const;
   void buildDrive();
   void buildCarts();
   void buildForces();
@@ -149,7 +179,7 @@ class MultibodyModel {
   std::vector<CartRig> carts_;
   int constraint_count_ = 0;
   // Owned by the force subsystem once wrapped in SimTK::Force::Custom.
-  const KlossMotorForce* motor_force_ = nullptr;
+  const MotorForce* motor_force_ = nullptr;
   const ElasticCoupling* coupling_force_ = nullptr;
   const RollerLoadForce* load_force_ = nullptr;
   const GuideFriction* friction_force_ = nullptr;

@@ -4,11 +4,14 @@
 #include <cmath>
 #include <ctime>
 #include <sstream>
+#include <stdexcept>
 
 #include "analysis/OutputGrid.h"
+#include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
 #include "multibody/IntegratorFactory.h"
 #include "multibody/MinimalSimulation.h"
+#include "multibody/MotorForce.h"
 
 namespace rollerdyn {
 namespace {
@@ -33,16 +36,39 @@ void sampleWithinStep(const SimTK::System& system, double t0, const SimTK::Vecto
   system.projectU(sample, tol);
 }
 
+// Where, inside the step from (t0, y0, ẏ0) to `end`, the rotor speed first reaches `trigger`
+// (it is below at t0 and not below at the end): bisection on the same cubic Hermite interpolant
+// Simbody uses for its own event localization, to a time tolerance of 1e-12 of the step's scale.
+// Leaves the state at that time in `sample`.
+double locateSpeedTrigger(const MultibodyModel& model, double t0, const SimTK::Vector& y0, const SimTK::Vector& ydot0,
+                          const SimTK::State& end, double trigger, double tol, SimTK::State& sample) {
+  const MotorForce& motor = *model.motorForce();
+  double lo = t0, hi = end.getTime();
+  while (hi - lo > 1e-12 * std::max(1.0, hi)) {
+    const double mid = 0.5 * (lo + hi);
+    sampleWithinStep(model.system(), t0, y0, ydot0, end, mid, tol, sample);
+    (motor.rotorSpeed(sample) < trigger ? lo : hi) = mid;
+  }
+  sampleWithinStep(model.system(), t0, y0, ydot0, end, hi, tol, sample);
+  return hi;
+}
+
 }  // namespace
 
 RunResult simulateMultibody(const MultibodyModel& model, const RunControl& control) {
   const Scene& sc = model.scene();
   if (sc.simulation.formulation == Formulation::Minimal) return simulateMinimal(model, control);
+  if (model.hasGuideFriction() && !model.hasFrictionLagStates())
+    throw std::invalid_argument(
+        "multibody model: loads.guide_friction.normal_force = algebraic needs simulation.formulation = minimal "
+        "(the constrained formulation knows the guide reactions only after Simbody's constrained solve); "
+        "use loads.guide_friction.normal_force = lagged");
   const SimTK::MultibodySystem& system = model.system();
   RunResult run;
   run.model = "multibody";
   run.integrator = sc.simulation.integrator;
   run.effects = sc.effects();
+  run.guide_normals = model.guideNormalsDescription();
   run.timeseries.columns = model.timeseriesColumns();
   const bool reactions = sc.simulation.reactions;
   if (reactions) run.reactions.columns = model.reactionColumns();
@@ -55,10 +81,34 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   // Simbody gets tol/√m.
   const int n_constraint_eqs = std::max(1, s0.getNQErr());
   const double constraint_tol = sc.simulation.constraint_tolerance / std::sqrt(double(n_constraint_eqs));
+  const std::vector<double> times = outputTimes(sc.simulation);  // the grid the reduced model uses
+  const double t_end = sc.simulation.t_end;
   auto integ = makeIntegrator(sc.simulation.integrator, system, sc.simulation.accuracy, constraint_tol);
   integ->initialize(s0);
 
+  // Switching events of the starting method (motor/Supply.h): a timed one is the integrator's
+  // advance limit, so no step crosses it; a speed-triggered one (the star-delta changeover by
+  // speed) is found after the step that crosses it, on the step's interpolant, and the run goes
+  // on from there. At an event the motor element maps its states (MotorForce::applyDueEvents) and
+  // the integrator starts afresh from the switched state. Rows at an event's time show the state
+  // after it (as in the reduced model).
+  const MotorForce* motor = model.motorForce();
+  const bool events = motor && !motor->supply().constant();
+  auto nextStop = [&](const SimTK::State& s) {
+    return events ? std::min(t_end, motor->supply().nextEventTime(motor->phase(s))) : t_end;
+  };
+  auto triggerOf = [&](const SimTK::State& s) {
+    return events ? motor->supply().triggerSpeed(motor->phase(s)) : std::nan("");
+  };
+
   StallDetector stall(sc.hasMotor(), sc.motor.omega_sync / sc.reducer.ratio);
+  auto fullSupply = [&](const SimTK::State& s) { return !motor || Supply::fullSupply(motor->phase(s)); };
+  RestDetector rest(!sc.hasMotor() && !model.options().prescribe_crank_speed, sc.loads.velocity_smoothing);
+  std::vector<double> cart_speeds(model.carts().size());
+  auto atRest = [&](double t, const SimTK::State& s) {
+    for (size_t j = 0; j < cart_speeds.size(); ++j) cart_speeds[j] = model.carts()[j].v(s);
+    return rest.update(t, cart_speeds, int(cart_speeds.size()));
+  };
   std::vector<double> ts_row, re_row;
   auto record = [&](const SimTK::State& s) {
     system.realize(s, SimTK::Stage::Acceleration);
@@ -79,21 +129,24 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   // constraints like Simbody's reports, so rows satisfy them to the same tolerance.
   integ->setReturnEveryInternalStep(true);
   SimTK::State sample = integ->getState();
-  const std::vector<double> times = outputTimes(sc.simulation);  // the grid the reduced model uses
-  const double t_end = sc.simulation.t_end;
 
   const std::clock_t cpu0 = std::clock();
   record(integ->getState());
-  stall.update(integ->getTime(), model.crankAngle(integ->getState()), model.crankSpeed(integ->getState()),
-               model.motorSpeed(integ->getState()));
+  if (fullSupply(integ->getState()))
+    stall.update(integ->getTime(), model.crankAngle(integ->getState()), model.crankSpeed(integ->getState()),
+                 model.motorSpeed(integ->getState()));
+  atRest(integ->getTime(), integ->getState());
   const SimTK::State* last_row = &integ->getState();
   SimTK::Vector y_prev = integ->getState().getY(), ydot_prev = integ->getState().getYDot();
   double t_prev = integ->getTime();
+  double t_stop = nextStop(integ->getState()), trigger = triggerOf(integ->getState());
+  SimTK::State switched;  // the state at an event, switched
+  long steps_before = 0, realizations_before = 0;  // counted before the last restart at an event
   std::size_t k = 1;
   bool stop = false;
   while (!stop && t_prev < t_end - 1e-12) {
     try {
-      integ->stepTo(t_end, t_end);
+      integ->stepTo(t_end, t_stop);
     } catch (const std::exception& ex) {
       run.stats.complete = false;
       run.stats.status = statusAt("integration failed", integ->getTime()) + ": " + ex.what();
@@ -101,8 +154,19 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
     }
     const SimTK::State& advanced = integ->getState();
     system.realize(advanced, SimTK::Stage::Acceleration);  // the next step starts from this ẏ
-    const double t_now = advanced.getTime();
-    for (; !stop && k < times.size() && times[k] <= t_now + 1e-12; ++k) {
+    double t_now = advanced.getTime();
+    // An event in this step: the speed trigger crossed inside it, or the step ended at a timed event.
+    bool event = false, by_speed = false;
+    if (!std::isnan(trigger) && motor->rotorSpeed(advanced) >= trigger) {
+      switched = advanced;
+      t_now = locateSpeedTrigger(model, t_prev, y_prev, ydot_prev, advanced, trigger, constraint_tol, switched);
+      event = by_speed = true;
+    } else if (events && t_stop < t_end && t_now >= t_stop - 1e-12 * std::max(1.0, t_stop)) {
+      switched = advanced;
+      system.realize(switched, SimTK::Stage::Velocity);  // a State copy starts with its cache invalid
+      event = true;
+    }
+    for (; !stop && k < times.size() && times[k] <= t_now + 1e-12 && !(event && times[k] >= t_now - 1e-12); ++k) {
       const double t_out = times[k];
       const bool at_step = std::abs(t_out - t_now) <= 1e-12;
       if (!at_step)
@@ -114,9 +178,13 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
         run.stats.complete = false;
         run.stats.status = statusAt("numerical failure (non-finite value)", t_out);
         stop = true;
-      } else if (stall.update(t_out, model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s))) {
+      } else if (fullSupply(s) && stall.update(t_out, model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s))) {
         run.stats.complete = false;
         run.stats.status = stall.status();
+        stop = true;
+      } else if (atRest(t_out, s)) {
+        run.stats.complete = false;
+        run.stats.status = rest.status();
         stop = true;
       } else {
         if (control.progress) control.progress(t_out, t_end);
@@ -127,13 +195,34 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
         }
       }
     }
+    if (event && !stop) {
+      motor->applyDueEvents(switched, by_speed);
+      // initialize() starts the integrator's statistics afresh: keep what it counted so far.
+      steps_before += integ->getNumStepsTaken();
+      realizations_before += integ->getNumRealizations();
+      try {
+        integ->initialize(switched);  // a fresh start from the switched state (statistics keep counting)
+      } catch (const std::exception& ex) {
+        run.stats.complete = false;
+        run.stats.status = statusAt("integration failed", t_now) + ": " + ex.what();
+        break;
+      }
+      system.realize(integ->getState(), SimTK::Stage::Acceleration);
+      sample = integ->getState();  // rows interpolated from now on carry the new supply phase
+      t_stop = nextStop(integ->getState());
+      trigger = triggerOf(integ->getState());
+      y_prev = integ->getState().getY();
+      ydot_prev = integ->getState().getYDot();
+      t_prev = integ->getTime();
+      continue;
+    }
     y_prev = advanced.getY();
     ydot_prev = advanced.getYDot();
     t_prev = t_now;
   }
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
-  run.stats.steps = integ->getNumStepsTaken();
-  run.stats.realizations = integ->getNumRealizations();
+  run.stats.steps = steps_before + integ->getNumStepsTaken();
+  run.stats.realizations = realizations_before + integ->getNumRealizations();
 
   // The audit ends at the last recorded row, where the tables end too (a run stopped early may
   // have integrated past it).

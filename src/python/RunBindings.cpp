@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include "analysis/SizingSummary.h"
+#include "analysis/StartUpSummary.h"
 #include "analysis/Summary.h"
 #include "compare/ModelComparison.h"
 #include "multibody/MultibodySimulation.h"
@@ -20,6 +21,7 @@
 #include "report/OutputFolder.h"
 #include "report/RunFigures.h"
 #include "report/SizingSection.h"
+#include "report/StartUpSection.h"
 #include "scene/DidYouMean.h"
 #include "modes/ModalAnalysis.h"
 #include "modes/ModesFigures.h"
@@ -100,12 +102,13 @@ void bindRuns(py::module_& m) {
       .def("summary", [](const RunData& d) { return toPython(d.summary); })
       .def("text",
            [](const RunData& d) {
-             return summaryText(d.summary) + sizingText(d.summary) + (d.modal ? modes::modesText(d.modal->report) : "");
+             return summaryText(d.summary) + startUpText(d.summary) + sizingText(d.summary) +
+                    (d.modal ? modes::modesText(d.modal->report) : "");
            })
       .def("html",
            [](const RunData& d) {
              return runStatusHtml(d.summary) + summaryMetricsHtml(d.summary) + sizingSectionHtml(d.summary) +
-                    reactionsTableHtml(d.summary, d.run.reactions.columns) +
+                    startUpSectionHtml(d.summary) + reactionsTableHtml(d.summary, d.run.reactions.columns) +
                     (d.modal ? "<pre>" + htmlEscape(modes::modesText(d.modal->report)) + "</pre>" : std::string());
            })
       .def(

@@ -84,6 +84,37 @@ CartStaticsResult solveCartStatics(const Scene& scene, int cart, double beta, do
   res.N_front = x(1);
   res.N_rear = x(2);
   res.friction = phi_f * f * (std::abs(x(1)) + std::abs(x(2)));
+  // Self-locking (physics/SelfLocking.h): for the sign pattern of the solution, the determinant
+  // -cos β·(2b + (k2 - k1)·d/2) + sin β·((k1 - k2)·p + (k1 + k2)·b) has left the sign of its
+  // friction-free value -2b·cos β (< 0).
+  const double k1 = phi_f * f * ((x(1) < 0.0) ? -1.0 : 1.0), k2 = phi_f * f * ((x(2) < 0.0) ? -1.0 : 1.0);
+  const double det = -cb * (2.0 * g.b + (k2 - k1) * 0.5 * g.d) + sb * ((k1 - k2) * g.p + (k1 + k2) * g.b);
+  res.gain = 1.0 - det / (-2.0 * g.b * cb);
+  res.locked = f > 0.0 && !(det < 0.0);
+  return res;
+}
+
+CartStaticsResult cartStaticsWithFriction(const Scene& scene, int cart, double beta, double H, double fr,
+                                          double Fin, double V) {
+  const CartGeometry& g = scene.carts.geometry;
+  const Loads L = scene.cartLoads(cart);
+  const double R1 = L.roller_normal_front, R2 = L.roller_normal_rear;
+  const double G = scene.cartMassWithRodShare(cart) * L.gravity;
+  CartStaticsResult res;
+  // ΣX: -F·cos β + friction + H + Fin = 0
+  res.F_rod = (fr + H + Fin) / std::cos(beta);
+  // ΣY: F·sin β - N1 - N2 - G - V + R1 + R2 = 0  ->  S = N1 + N2
+  const double S = res.F_rod * std::sin(beta) - G - V + R1 + R2;
+  // ΣM about B: N1·(p - b) + N2·(p + b) = Mn
+  const double Mn = -G * g.p - fr * 0.5 * g.d + H * g.e + R1 * (g.p - g.a) + R2 * (g.p + g.a) -
+                    g.com_height * Fin;
+  if (g.b > 0.0) {
+    res.N_front = (S * (g.p + g.b) - Mn) / (2.0 * g.b);
+    res.N_rear = (Mn - S * (g.p - g.b)) / (2.0 * g.b);
+  } else {
+    res.N_front = res.N_rear = 0.5 * S;  // no guide base: only the sum is determined
+  }
+  res.friction = fr;
   return res;
 }
 

@@ -46,6 +46,9 @@ struct CartStaticsResult {
   double N_front = 0;   // N1, front guide reaction [N], > 0 when the guide presses down
   double N_rear = 0;    // N2, rear guide reaction [N]
   double friction = 0;  // guide friction force along the LOCAL x' axis [N]
+  bool locked = false;  // the friction's feedback gain reached 1 for the sign pattern of the
+                        // solution (physics/SelfLocking.h): the cart locks, the forces are void
+  double gain = 0;      // that gain, 1 - det/det_0 (0 without friction) [-]
 };
 
 // Solves the cart equilibrium above for cart `cart` (0-based; its own m_B, R_j1, R_j2: Scene::
@@ -57,5 +60,13 @@ CartStaticsResult solveCartStatics(const Scene& scene, int cart, double beta, do
 // The same for a scene whose carts all have the same mass and loads (std::logic_error otherwise).
 CartStaticsResult solveCartStatics(const Scene& scene, double beta, double horizontal_roller_force,
                                    double friction_direction, double inertial_force_x = 0.0);
+
+// The same equilibrium of cart `cart` (0-based) for a GIVEN guide friction force (local x') and a given vertical load V
+// of the rod at B (downward on the cart; quasi-statically half the rod's weight for distributed
+// rods, above; with the rod's inertia, ReducedModel's kinetostatic normals): no sign logic, the
+// three equations solved in closed form. Linear in (friction, H, Fin, V) plus the constant loads:
+// the kinetostatic friction loop (physics/GuideFrictionLoop.h) is built from it.
+CartStaticsResult cartStaticsWithFriction(const Scene& scene, int cart, double beta, double horizontal_roller_force,
+                                          double friction_local, double inertial_force_x, double rod_load_V);
 
 }  // namespace rollerdyn

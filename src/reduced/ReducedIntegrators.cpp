@@ -14,7 +14,10 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "analysis/OutputGrid.h"
+#include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
+#include "motor/MotorColumns.h"
+#include "motor/Stiffness.h"
 #include "reduced/EigenSundials.h"
 #include "reduced/ReducedModel.h"
 
@@ -40,6 +43,7 @@ void setupTables(const ReducedModel& m, RunResult& res) {
   }
   rx.push_back("coupling_torque");
   if (!m.scene().simulation.reactions) rx.clear();  // no reactions table
+  for (const std::string& c : motorColumns(m.motorLaw(), m.supply())) ts.push_back(c);
 }
 
 // One output row of both tables from an evaluation (its eps/coupling fields may have been
@@ -67,6 +71,7 @@ void appendRows(const ReducedModel& m, double t, const ModelEvaluation& e, RunRe
     q.push_back(m.scene().carts.side[j] * c.statics.friction);  // world x
   }
   q.push_back(e.coupling_torque);
+  appendMotorColumns(m.motorLaw(), m.supply(), e.stator_current, e.supply, e.brake_torque, r);
   res.timeseries.rows.push_back(std::move(r));
   if (reactions) res.reactions.rows.push_back(std::move(q));
 }
@@ -78,8 +83,12 @@ double syncCrankSpeed(const Scene& s) { return s.motor.omega_sync / s.reducer.ra
 
 struct CvodeUserData {
   const ReducedModel* model = nullptr;
+  const SupplyPhase* phase = nullptr;  // the run's supply phase; changes only between integrations
+  double trigger_speed = 0;            // rotor speed of a speed-triggered event [rad/s]
   long rhs_evals = 0;
   std::string last_error;
+  std::string friction_failure;  // the first evaluation whose guide-friction loop failed, in words
+  double friction_failure_phi = 0;
   double rtol = 0;
   Eigen::VectorXd atol;  // per state, see runCvode
 };
@@ -101,14 +110,32 @@ int cvodeErrorWeights(N_Vector y, N_Vector ewt, void* user) {
   return 0;
 }
 
-int cvodeRhs(realtype /*t*/, N_Vector y, N_Vector ydot, void* user) {
+int cvodeRhs(realtype t, N_Vector y, N_Vector ydot, void* user) {
   auto* u = static_cast<CvodeUserData*>(user);
   const int n = u->model->stateSize();
   realtype* d = NV_DATA_S(ydot);
-  u->model->derivatives(NV_DATA_S(y), d);  // allocation-free
   ++u->rhs_evals;
+  if (!u->model->derivatives(t, *u->phase, NV_DATA_S(y), d)) {  // allocation-free
+    // A cart locks at this trial state: recoverable (a smaller step may stay clear of it); where
+    // it cannot, CVODE gives up and the run's status names the cause.
+    if (u->friction_failure.empty()) {
+      ModelEvaluation e;
+      u->model->evaluate(t, *u->phase, NV_DATA_S(y), e, false);
+      u->friction_failure = describeLoopFailure(e.friction_loop);
+      u->friction_failure_phi = NV_DATA_S(y)[u->model->iPhi()];
+    }
+    return 1;
+  }
   for (int i = 0; i < n; ++i)
     if (!std::isfinite(d[i])) return 1;  // recoverable: CVODE retries with a smaller step
+  return 0;
+}
+
+// Event function of a speed-triggered switching event (the star-delta changeover by speed):
+// rotor speed minus the trigger speed, found rising by CVODE's root finding.
+int cvodeRoot(realtype, N_Vector y, realtype* gout, void* user) {
+  auto* u = static_cast<CvodeUserData*>(user);
+  gout[0] = u->model->rotorSpeed(NV_DATA_S(y)) - u->trigger_speed;
   return 0;
 }
 
@@ -169,7 +196,15 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   Eigen::Map<Eigen::VectorXd> ym(N_VGetArrayPointer(y), n);
   Eigen::VectorXd am(n);
   ym = m.initialState();
+  // The supply's events due at t = 0 (a speed trigger already met by the initial speed).
+  SupplyPhase phase = m.supply().initialPhase();
+  m.supply().applyDueEvents(phase, 0.0, m.rotorSpeed(ym.data()), false, m.motorLaw(), ym.data() + m.iMotorStates());
   am.setConstant(rtol * E_ref);
+  // The motor law's states against their natural magnitudes (MotorLaw::stateScales).
+  if (m.motorStateCount() > 0) {
+    const std::vector<double> scales = m.motorLaw()->stateScales();
+    for (int i = 0; i < m.motorStateCount(); ++i) am(m.iMotorStates() + i) = rtol * scales.at(i);
+  }
   am(m.iPhi()) = rtol * 1.0;
   am(m.iOmega()) = rtol * w_ref;
   if (!m.rigid()) {
@@ -180,6 +215,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
 
   CvodeUserData ud;
   ud.model = &m;
+  ud.phase = &phase;
   ud.rtol = rtol;
   ud.atol = am;
   // Adams-Moulton (orders 1-12) with a Newton corrector on a dense difference-quotient Jacobian.
@@ -209,7 +245,11 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   // error accepted within the first 5 ms of the stiff mode's start transient, not an order
   // effect; its claims cover them (test_hardcases.cpp).
   constexpr int kAdamsMaxOrder = 6;
-  void* cv = sun.cv = CVodeCreate(CV_ADAMS, ctx);
+  // A stiff motor law (motor/Stiffness.h: the space-phasor machine's electrical transients)
+  // switches to BDF: Adams would be held to steps set by the stability of those modes.
+  const bool stiff = lawIsStiff(m.motorLaw());
+  res.integrator = stiff ? "cvode-bdf" : "cvode-adams";
+  void* cv = sun.cv = CVodeCreate(stiff ? CV_BDF : CV_ADAMS, ctx);
   SUNMatrix A = sun.A = SUNDenseMatrix(n, n, ctx);
   SUNLinearSolver LS = sun.LS = makeEigenDenseSolver(int(n), ctx);  // EigenSundials.h
   int flag = CVodeInit(cv, cvodeRhs, times.front(), y);
@@ -218,7 +258,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   if (flag == CV_SUCCESS) flag = CVodeWFtolerances(cv, cvodeErrorWeights);
   if (flag == CV_SUCCESS) flag = CVodeSetLinearSolver(cv, LS, A);
   if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(cv, 1000000);
-  if (flag == CV_SUCCESS) flag = CVodeSetMaxOrd(cv, kAdamsMaxOrder);
+  if (flag == CV_SUCCESS && !stiff) flag = CVodeSetMaxOrd(cv, kAdamsMaxOrder);  // BDF keeps its 5
   if (flag == CV_SUCCESS) flag = CVodeSetStopTime(cv, times.back());
   // Cam drive (Loveikin and Pochka (cam drive paper)): in steady state the right-hand side is exactly constant over the
   // constant-speed 2/3 of every stroke, so an unbounded step grows until it leaps from one
@@ -232,19 +272,59 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   res.energy.kinetic_initial = m.kineticEnergy(y0);
   res.energy.potential_initial = m.potentialEnergy(y0);
 
+  // Switching events (motor/Supply.h): CVODE stops at the next timed event (its stop time) and
+  // at a speed-triggered one (its root finding on the interpolant); the event is applied there
+  // (the law's states mapped across it) and CVODE restarts from the new state. A constant supply
+  // has none, and the run is exactly the one without starting methods.
+  const bool events = !m.supply().constant();
+  long steps_before_restarts = 0;
+  auto arm = [&](double t_now) {
+    const double te = std::min(m.supply().nextEventTime(phase), times.back());
+    int f = te > t_now ? CVodeSetStopTime(cv, te) : CV_SUCCESS;
+    ud.trigger_speed = m.supply().triggerSpeed(phase);
+    const bool by_speed = !std::isnan(ud.trigger_speed);
+    if (f == CV_SUCCESS) f = CVodeRootInit(cv, by_speed ? 1 : 0, by_speed ? cvodeRoot : nullptr);
+    int rising = 1;
+    if (f == CV_SUCCESS && by_speed) f = CVodeSetRootDirection(cv, &rising);
+    if (f != CV_SUCCESS) throw std::runtime_error("CVODE event setup failed: " + ud.last_error);
+  };
+  if (events) arm(times.front());
+
   StallDetector stall(s.motor.enabled, syncCrankSpeed(s));  // the rule both models share
+  RestDetector rest(!s.motor.enabled, s.loads.velocity_smoothing);  // likewise
+  std::vector<double> cart_speeds(m.cartCount());
   const std::clock_t c0 = std::clock();
   res.timeseries.rows.reserve(times.size());
   res.reactions.rows.reserve(times.size());
   ModelEvaluation e;  // reused for every output row (keeps its carts' storage)
-  Eigen::VectorXd y_last = y0;
+  Eigen::VectorXd y_last = ym;
   for (size_t k = 0; k < times.size(); ++k) {
     double t = times[k];
     if (k > 0) {
       realtype tret = t;
-      flag = CVode(cv, t, y, &tret, CV_NORMAL);
+      while (true) {
+        flag = CVode(cv, t, y, &tret, CV_NORMAL);
+        if (flag < 0) break;
+        // CVODE returns at the stop time with CV_TSTOP_RETURN, or with CV_SUCCESS when the output
+        // time is the stop time: either way the events due there are applied here.
+        if (events &&
+            m.supply().applyDueEvents(phase, tret, m.rotorSpeed(ym.data()), flag == CV_ROOT_RETURN, m.motorLaw(),
+                                      ym.data() + m.iMotorStates())) {
+          long n = 0;
+          CVodeGetNumSteps(cv, &n);
+          steps_before_restarts += n;  // CVodeReInit zeroes the count
+          flag = CVodeReInit(cv, tret, y);
+          if (flag < 0) break;
+          arm(tret);
+        }
+        if (tret >= t) break;
+      }
       if (flag < 0) {
         res.stats.complete = false;
+        if (!ud.friction_failure.empty()) {
+          res.stats.status = statusAt("the run stopped", tret) + ": the " + ud.friction_failure;
+          break;
+        }
         char* name = CVodeGetReturnFlagName(flag);
         res.stats.status = std::string("integrator failure at t = ") + std::to_string(tret) +
                            " s: " + (name ? name : "?") + " " + ud.last_error;
@@ -254,11 +334,22 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
       t = tret;
     }
     y_last = ym;
-    m.evaluate(y_last.data(), e, true);
+    m.evaluate(t, phase, y_last.data(), e, true);
+    if (e.friction_loop.status != LoopStatus::Solved) {
+      res.stats.complete = false;
+      res.stats.status = statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop);
+      break;
+    }
     appendRows(m, t, e, res);
-    if (stall.update(t, e.phi_crank, e.omega_crank, e.omega_motor)) {
+    if (Supply::fullSupply(phase) && stall.update(t, e.phi_crank, e.omega_crank, e.omega_motor)) {
       res.stats.complete = false;
       res.stats.status = stall.status();
+      break;
+    }
+    for (int j = 0; j < m.cartCount(); ++j) cart_speeds[j] = e.carts[j].pose.dx_B * e.omega_crank;
+    if (rest.update(t, cart_speeds, m.cartCount())) {
+      res.stats.complete = false;
+      res.stats.status = rest.status();
       break;
     }
   }
@@ -266,15 +357,17 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
 
   long nsteps = 0;
   CVodeGetNumSteps(cv, &nsteps);
-  res.stats.steps = nsteps;
+  res.stats.steps = steps_before_restarts + nsteps;
   res.stats.realizations = ud.rhs_evals;  // includes the difference-quotient Jacobian calls
 
   res.energy.motor_work = y_last(m.iMotorWork());
   res.energy.damping_dissipation = m.rigid() ? 0.0 : y_last(m.iDampingWork());
   res.energy.friction_dissipation = y_last(m.iFrictionWork());
   res.energy.load_work = y_last(m.iLoadWork());
+  if (m.iBrakeWork() >= 0) res.energy.brake_dissipation = y_last(m.iBrakeWork());
   res.energy.kinetic_final = m.kineticEnergy(y_last);
   res.energy.potential_final = m.potentialEnergy(y_last);
+  if (m.checksFrictionWork()) res.friction_work_kinetostatic = y_last(m.iFrictionWorkKinetostatic());
   return res;
 }
 
@@ -289,13 +382,18 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
         "is for the one-mass model)");
   const double dphi = s.reduced.baranov_step;
   if (!(dphi > 0.0)) throw std::invalid_argument("reduced.baranov_step must be > 0");
+  if (!m.supply().constant() || m.motorStateCount() > 0)
+    throw std::invalid_argument(
+        "reduced.integrator = baranov steps in crank angle with a torque that depends on the speed alone: it takes "
+        "neither a starting method that switches in time (motor.start, motor.stop) nor a motor model with states "
+        "(motor.model kloss_dynamic, park); use reduced.integrator = cvode");
   const std::vector<double> times = outputTimes(s.simulation);
 
   const std::clock_t c0 = std::clock();
   double phi = s.initial.crank_angle;
   double w = std::max(s.initial.crank_speed, 0.0);  // the scheme only marches forward in φ
   double t = 0.0;
-  double W_motor = 0.0, W_friction = 0.0, W_load = 0.0;
+  double W_motor = 0.0, W_friction = 0.0, W_load = 0.0, W_friction_kinetostatic = 0.0;
 
   Eigen::VectorXd y(m.stateSize());
   y.setZero();
@@ -330,6 +428,11 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     yi(m.iOmega()) = w;
     const ModelEvaluation e = m.evaluate(yi);
     ++res.stats.realizations;
+    if (e.friction_loop.status != LoopStatus::Solved) {
+      res.stats.complete = false;
+      res.stats.status = statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop);
+      break;
+    }
     const double M = e.motor_torque - e.load_torque;  // M_p(ω_i) - M_o(φ_i)
     const double J_next = m.reducedInertia(phi + dphi);
     double w_next;
@@ -351,6 +454,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     const double eps = (w_next - w) / (t_next - t);        // Loveikin and Pochka (2007) eq. (11)
     // Work over the step by the same left-point rule as the scheme: dW = (force·x_B')·Δφ.
     W_motor += e.motor_torque * dphi;
+    if (w > 0.0) W_friction_kinetostatic += e.friction_power_kinetostatic / w * dphi;  // P/ω·Δφ
     for (int j = 0; j < m.cartCount(); ++j) {
       const CartEvaluation& c = e.carts[j];
       const double sigma = s.carts.side[j];
@@ -377,22 +481,25 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
   res.energy.load_work = W_load;
   res.energy.kinetic_final = m.kineticEnergy(y);
   res.energy.potential_final = m.potentialEnergy(y);
+  if (m.checksFrictionWork()) res.friction_work_kinetostatic = W_friction_kinetostatic;
   return res;
 }
 
 }  // namespace
 
-RunResult runReducedModel(const Scene& scene) {
-  const ReducedModel model(scene);
+RunResult runReducedModel(const Scene& scene) { return runReducedModel(scene, nullptr); }
+
+RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law) {
+  const ReducedModel model(scene, std::move(law));
   RunResult res;
   res.model = "reduced";
   res.effects = scene.effects();
+  res.guide_normals = model.guideNormalsDescription();
   setupTables(model, res);
   if (scene.reduced.integrator == ReducedIntegrator::Baranov) {
     res.integrator = "baranov";
     return runBaranov(model, std::move(res));
   }
-  res.integrator = "cvode-adams";
   return runCvode(model, std::move(res));
 }
 

@@ -1,17 +1,32 @@
 #include "reduced/ReducedModel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "analysis/FrictionChecks.h"
 #include "physics/CamMotionLaw.h"
-#include "physics/KlossMotor.h"
+#include "motor/SharedMotorLaw.h"
 #include "physics/RollerLoads.h"
 
 namespace rollerdyn {
 
-ReducedModel::ReducedModel(const Scene& scene)
-    : scene_(scene), rigid_(scene.coupling.type == CouplingType::Rigid) {
+ReducedModel::ReducedModel(const Scene& scene) : ReducedModel(scene, nullptr) {}
+
+namespace {
+// The given law, else the scene's motor.model; none without a motor.
+std::shared_ptr<const MotorLaw> lawOf(const Scene& scene, std::shared_ptr<const MotorLaw> given) {
+  if (!scene.motor.enabled) return nullptr;
+  return given ? given : sharedMotorLaw(scene);
+}
+}  // namespace
+
+ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law)
+    : scene_(scene),
+      rigid_(scene.coupling.type == CouplingType::Rigid),
+      kinetostatic_(scene.reduced.guide_normals == ReducedGuideNormals::Kinetostatic),
+      law_(lawOf(scene, std::move(law))) {
   const int n = scene_.carts.count;
   if (n < 1) throw std::invalid_argument("reduced model: carts.count must be >= 1");
   if (static_cast<int>(scene_.carts.side.size()) != n)
@@ -33,6 +48,71 @@ ReducedModel::ReducedModel(const Scene& scene)
   }
   if (!rigid_ && !(J_n1_ > 0.0))
     throw std::invalid_argument("reduced model: elastic coupling needs a motor-side inertia J_n1 > 0");
+  if (motorStateCount() > ModelEvaluation::kMaxMotorStates)
+    throw std::invalid_argument("reduced model: the motor law has more states than the model carries");
+  supply_ = scene_.motor.enabled ? makeSupply(scene_, law_.get()) : Supply();
+  initial_phase_ = supply_.initialPhase();
+  loop_carts_.resize(n);
+  loop_friction_.resize(n);
+  loop_normals_.resize(2 * n);
+  scratch_carts_.reserve(n);
+}
+
+double ReducedModel::rotorSpeed(const double* y) const {
+  return (y[iOmega()] + (rigid_ ? 0.0 : y[iTwistRate()])) * scene_.reducer.ratio;
+}
+
+std::string ReducedModel::guideNormalsDescription() const { return rollerdyn::guideNormalsDescription(scene_, true); }
+
+void ReducedModel::rodLoadAtHinge(int j, const SliderCrankPose& p, double w, double& V0, double& V1) const {
+  V0 = V1 = 0.0;
+  if (scene_.rods.model != RodModel::Distributed) return;  // split: in m_B; massless: none
+  // Rod moment balance about the crank pin A (a moving point): with F_c = F·(B->A)/l + (0, -V)
+  // the rod's force on the cart, (r_AB × F_c)_z = -Δx·V and
+  //   (r_AB × F_c)_z = (r_AS × m·(g - a_S))_z - I_S·ψ̈,   r_AS = r_AB/2 = (Δx, Δy)/2,
+  // a_S = (x_S''·ω² + x_S'·ε, y_S''·ω² + y_S'·ε), ψ̈ = -σ·(β''·ω² + β'·ε) (SliderCrank.h).
+  // Quasi-statically V = m·g/2, the half weight of CartStatics.h.
+  const double m = scene_.rods.mass, I = scene_.rods.inertia_com, g = scene_.loads.gravity;
+  const double sigma = scene_.carts.side[j];
+  const double l = scene_.rods.length;
+  const double dx = sigma * l * std::cos(p.beta), dy = -l * std::sin(p.beta);
+  const double w2 = w * w;
+  // RHS(ε) = m·[-(Δx/2)·(g + a_Sy) + (Δy/2)·a_Sx] - I·ψ̈, affine in ε.
+  const double rhs0 = m * (-(0.5 * dx) * (g + p.d2y_S * w2) + 0.5 * dy * p.d2x_S * w2) + I * sigma * p.d2beta * w2;
+  const double rhs1 = m * (-(0.5 * dx) * p.dy_S + 0.5 * dy * p.dx_S) + I * sigma * p.dbeta;
+  V0 = -rhs0 / dx;
+  V1 = -rhs1 / dx;
+}
+
+CartStaticsResult ReducedModel::kinetostaticStatics(int j, const CartEvaluation& c, double w, double eps,
+                                                    double friction_world) const {
+  const double sigma = scene_.carts.side[j];
+  double V0 = 0, V1 = 0;
+  rodLoadAtHinge(j, c.pose, w, V0, V1);
+  // d'Alembert force of the cart along local x': -m_B·σ·(x_B''·ω² + x_B'·ε).
+  const double Fin = -m_B_[j] * sigma * (c.pose.d2x_B * w * w + c.pose.dx_B * eps);
+  const double V = V0 + V1 * eps;
+  CartStaticsResult r = cartStaticsWithFriction(scene_, j, c.pose.beta, c.roller_force, sigma * friction_world, Fin, V);
+  // F_rod as reactions.csv defines it for both models: the rod's force on the cart along B -> A,
+  // (-cos β, sin β) locally; of the rod's vertical load -V that is -V·sin β.
+  r.F_rod -= V * std::sin(c.pose.beta);
+  return r;
+}
+
+void ReducedModel::loopTerms(int j, const CartEvaluation& c, double w, GuideLoopCart& t) const {
+  // cartStaticsWithFriction is affine in (friction, ε): its value and two unit differences.
+  const CartStaticsResult base = kinetostaticStatics(j, c, w, 0.0, 0.0);
+  const CartStaticsResult at_eps = kinetostaticStatics(j, c, w, 1.0, 0.0);
+  const CartStaticsResult at_friction = kinetostaticStatics(j, c, w, 0.0, 1.0);
+  t.n0[0] = base.N_front;
+  t.n0[1] = base.N_rear;
+  t.n_eps[0] = at_eps.N_front - base.N_front;
+  t.n_eps[1] = at_eps.N_rear - base.N_rear;
+  t.n_F[0] = at_friction.N_front - base.N_front;
+  t.n_F[1] = at_friction.N_rear - base.N_rear;
+  const double sigma = scene_.carts.side[j];
+  t.c = sigma * frictionDirection(loads_[j], c.v_local) * loads_[j].guide_friction;  // world x
+  t.w = c.pose.dx_B;  // divided by the crank equation's inertia by the caller
 }
 
 SliderCrankPose ReducedModel::cartPose(int j, double phi) const {
@@ -97,17 +177,24 @@ double ReducedModel::reducedInertiaDerivative(double phi) const {
 
 double ReducedModel::motorTorque(double omega_motor) const {
   if (!scene_.motor.enabled) return 0.0;
+  const double u = scene_.reducer.ratio;
   // Loveikin, Pochka, Romasevych (2018) eq. (37) / Loveikin and Pochka (2007) eq. (7)-(8), in the singularity-free form of KlossMotor.h
-  return klossCrankTorque(scene_.motor, scene_.reducer.ratio, scene_.reducer.efficiency, omega_motor);
+  return law_->steadyTorque(SupplyState{}, omega_motor * u) * u * scene_.reducer.efficiency;
 }
 
-CartEvaluation ReducedModel::evaluateCart(int j, double phi, double omega, double Fin) const {
+CartEvaluation ReducedModel::cartKinematics(int j, double phi, double omega) const {
   CartEvaluation c;
   const int sigma = scene_.carts.side[j];
   c.theta = phi + scene_.crankPhase(j);
   c.pose = cartPose(j, phi);
   c.v_local = sigma * c.pose.dx_B * omega;                        // v' = σ·ẋ_B
   c.roller_force = rollerHorizontalForce(loads_[j], c.v_local);  // H along local +x'
+  return c;
+}
+
+CartEvaluation ReducedModel::evaluateCart(int j, double phi, double omega, double Fin) const {
+  CartEvaluation c = cartKinematics(j, phi, omega);
+  const int sigma = scene_.carts.side[j];
   const double phi_f = frictionDirection(loads_[j], c.v_local);
   c.statics = solveCartStatics(scene_, j, c.pose.beta, c.roller_force, phi_f, Fin);
   // Virtual work in world x: the local force (H + friction) is σ·(H + friction) in world x.
@@ -148,6 +235,11 @@ Eigen::VectorXd ReducedModel::initialState() const {
     y(iTwist()) = scene_.initial.twist;
     y(iTwistRate()) = 0.0;  // motor starts at the same reduced speed (Scene.h)
   }
+  if (motorStateCount() > 0) {
+    const double w_r = rotorSpeed(y.data());
+    law_->initialState(supply_.state(initial_phase_, 0.0, w_r), w_r, motorSteadyAtStart(scene_, supply_),
+                       y.data() + iMotorStates());
+  }
   return y;
 }
 
@@ -159,65 +251,151 @@ ModelEvaluation ReducedModel::evaluate(const Eigen::VectorXd& y) const {
 
 Eigen::VectorXd ReducedModel::derivatives(double /*t*/, const Eigen::VectorXd& y) const {
   Eigen::VectorXd d(stateSize());
-  derivatives(y.data(), d.data());
+  if (!derivatives(y.data(), d.data())) d.setConstant(std::nan(""));  // void: a cart locks
   return d;
 }
 
 void ReducedModel::evaluate(const double* y, ModelEvaluation& e, bool keep_carts) const {
+  evaluate(0.0, initial_phase_, y, e, keep_carts);
+}
+
+bool ReducedModel::derivatives(const double* y, double* d) const { return derivatives(0.0, initial_phase_, y, d); }
+
+void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y, ModelEvaluation& e,
+                            bool keep_carts) const {
   e.phi_crank = y[iPhi()];
   e.omega_crank = y[iOmega()];
   e.twist = rigid_ ? 0.0 : y[iTwist()];
   e.twist_rate = rigid_ ? 0.0 : y[iTwistRate()];
   e.omega_motor = e.omega_crank + e.twist_rate;
+  e.friction_loop = GuideLoopResult{};
+  e.friction_power_kinetostatic = 0.0;
   const double phi = e.phi_crank, w2 = e.omega_crank;
+  const bool friction = scene_.hasGuideFriction();
 
   // One pass over the carts, each cart's pose computed once (crankSideInertia(),
   // crankSideInertiaDerivative() and loadTorque() would compute it three times), from the same
-  // per-cart terms those functions sum.
+  // per-cart terms those functions sum. Quasi-static normals: the friction is known per cart
+  // (CartStatics.h); kinetostatic: it is found below with the crank acceleration.
   double J = J_crank_, dJ = 0.0, M = 0.0, P_friction = 0.0, P_load = 0.0;
   e.carts.clear();  // keeps its capacity
+  scratch_carts_.clear();
   for (int j = 0; j < cartCount(); ++j) {
-    const CartEvaluation c = evaluateCart(j, phi, w2, 0.0);  // quasi-static friction
+    const CartEvaluation c = kinetostatic_ ? cartKinematics(j, phi, w2) : evaluateCart(j, phi, w2, 0.0);
     const SliderCrankPose& p = c.pose;
     J += cartInertia(j, p);
     dJ += cartInertiaDerivative(j, p);
-    M += rodGravityTorque(p, c.theta) - c.generalized_force;
     const double sigma = scene_.carts.side[j];
     const double v = p.dx_B * w2;  // world ẋ_B
-    P_friction -= sigma * c.statics.friction * v;
+    if (kinetostatic_) {
+      M += rodGravityTorque(p, c.theta) - sigma * c.roller_force * p.dx_B;
+    } else {
+      M += rodGravityTorque(p, c.theta) - c.generalized_force;
+      P_friction -= sigma * c.statics.friction * v;
+      if (c.statics.locked && e.friction_loop.status == LoopStatus::Solved) {
+        e.friction_loop.status = LoopStatus::SelfLocking;
+        e.friction_loop.cart = j;
+        e.friction_loop.gain = c.statics.gain;
+      }
+    }
     P_load -= sigma * c.roller_force * v;
-    if (keep_carts) e.carts.push_back(c);
+    if (kinetostatic_ || checksFrictionWork()) scratch_carts_.push_back(c);
+    if (keep_carts && !kinetostatic_) e.carts.push_back(c);
   }
   e.J_n2 = J;
   e.dJ_n2 = dJ;
-  e.motor_torque = motorTorque(e.omega_motor);
+  evaluateMotor(t, phase, y, e);
+  const double M_drive = e.motor_torque + e.brake_torque;  // on the motor side, at the crank axis
+  // The crank equation's inertia and its right-hand side without the load torque.
+  const double J_eq = rigid_ ? J_n1_ + J : J;
+  const double drive = rigid_ ? M_drive : scene_.coupling.stiffness * e.twist + scene_.coupling.damping * e.twist_rate;
+  if (kinetostatic_ && friction) {
+    // The friction loop (physics/GuideFrictionLoop.h): ε = ε0 + Σ_j (x_B'_j/J)·F_j, F_j the
+    // friction along world x, whose generalized force on φ2 is F_j·x_B'_j.
+    const int n = cartCount();
+    for (int j = 0; j < n; ++j) {
+      loopTerms(j, scratch_carts_[j], w2, loop_carts_[j]);
+      loop_carts_[j].w /= J_eq;
+    }
+    const double eps0 = (drive - M - 0.5 * dJ * w2 * w2) / J_eq;
+    e.friction_loop = solveGuideFrictionLoop(loop_carts_.data(), n, eps0, loop_friction_.data(), loop_normals_.data());
+    if (e.friction_loop.status != LoopStatus::Solved) std::fill(loop_friction_.begin(), loop_friction_.end(), 0.0);
+    for (int j = 0; j < n; ++j) {
+      const double dx = scratch_carts_[j].pose.dx_B;
+      M -= loop_friction_[j] * dx;
+      P_friction -= loop_friction_[j] * dx * w2;
+    }
+  }
   e.load_torque = M;
   if (rigid_) {
     // Loveikin and Pochka (2007) eq. (1) in time form: J·φ̈ = M_p - M_o - ½·J'·φ̇²
-    e.eps_crank = (e.motor_torque - e.load_torque - 0.5 * e.dJ_n2 * w2 * w2) / (J_n1_ + e.J_n2);
+    e.eps_crank = (M_drive - e.load_torque - 0.5 * e.dJ_n2 * w2 * w2) / (J_n1_ + e.J_n2);
     e.eps_motor = e.eps_crank;
     e.twist_accel = 0.0;
     // Torque the rigid coupling passes to the crank side: what the motor gives minus what the
     // motor-side inertia takes.
-    e.coupling_torque = e.motor_torque - J_n1_ * e.eps_crank;
+    e.coupling_torque = M_drive - J_n1_ * e.eps_crank;
     e.damping_power = 0.0;
   } else {
     // Loveikin, Pochka, Romasevych (2018) eq. (58)
-    const double c = scene_.coupling.stiffness, k = scene_.coupling.damping;
-    e.coupling_torque = c * e.twist + k * e.twist_rate;
-    e.eps_motor = (e.motor_torque - e.coupling_torque) / J_n1_;
+    const double k = scene_.coupling.damping;
+    e.coupling_torque = drive;
+    e.eps_motor = (M_drive - e.coupling_torque) / J_n1_;
     e.eps_crank = (e.coupling_torque - e.load_torque - 0.5 * e.dJ_n2 * w2 * w2) / e.J_n2;
     e.twist_accel = e.eps_motor - e.eps_crank;
     e.damping_power = k * e.twist_rate * e.twist_rate;
   }
   e.motor_power = e.motor_torque * e.omega_motor;
+  e.brake_power = -e.brake_torque * e.omega_motor;
   e.friction_power = P_friction;
   e.load_power = P_load;
+
+  if (kinetostatic_ && keep_carts) {
+    // The reactions of this instant: the cart statics at the crank acceleration just found.
+    for (int j = 0; j < cartCount(); ++j) {
+      CartEvaluation c = scratch_carts_[j];
+      const double F_world = friction ? loop_friction_[j] : 0.0;
+      c.statics = kinetostaticStatics(j, c, w2, e.eps_crank, F_world);
+      c.generalized_force = scene_.carts.side[j] * (c.roller_force + c.statics.friction) * c.pose.dx_B;
+      e.carts.push_back(c);
+    }
+  }
+  if (checksFrictionWork()) {
+    // What the kinetostatic normals would give at this run's own crank acceleration (each cart's
+    // loop at fixed ε: w = 0): the friction power behind the run's friction-work check.
+    const int n = cartCount();
+    for (int j = 0; j < n; ++j) {
+      loopTerms(j, scratch_carts_[j], w2, loop_carts_[j]);
+      loop_carts_[j].w = 0.0;
+    }
+    const GuideLoopResult r =
+        solveGuideFrictionLoop(loop_carts_.data(), n, e.eps_crank, loop_friction_.data(), loop_normals_.data());
+    double P = 0.0;
+    for (int j = 0; j < n; ++j) P -= loop_friction_[j] * scratch_carts_[j].pose.dx_B * w2;
+    e.friction_power_kinetostatic = r.status == LoopStatus::Solved ? P : std::nan("");
+  }
 }
 
-void ReducedModel::derivatives(const double* y, double* d) const {
+void ReducedModel::evaluateMotor(double t, const SupplyPhase& phase, const double* y, ModelEvaluation& e) const {
+  e.brake_torque = 0.0;
+  e.stator_current = MotorEvaluation::kNotModelled;
+  if (!scene_.motor.enabled) {
+    e.motor_torque = 0.0;
+    return;
+  }
+  const double u = scene_.reducer.ratio, eta = scene_.reducer.efficiency;
+  const double w_r = e.omega_motor * u;
+  e.supply = supply_.state(phase, t, w_r);
+  e.brake_torque = supply_.brakeTorque(phase, w_r) * u * eta;
+  MotorEvaluation out;
+  law_->evaluate(e.supply, w_r, y + iMotorStates(), out, motorStateCount() > 0 ? e.motor_state_rates.data() : nullptr);
+  e.motor_torque = out.torque * u * eta;
+  e.stator_current = out.stator_current;
+}
+
+bool ReducedModel::derivatives(double t, const SupplyPhase& phase, const double* y, double* d) const {
   ModelEvaluation e;  // carts stays empty: no allocation
-  evaluate(y, e, false);
+  evaluate(t, phase, y, e, false);
   d[iPhi()] = e.omega_crank;
   d[iOmega()] = e.eps_crank;
   if (!rigid_) {
@@ -228,6 +406,10 @@ void ReducedModel::derivatives(const double* y, double* d) const {
   d[iMotorWork()] = e.motor_power;
   d[iFrictionWork()] = e.friction_power;
   d[iLoadWork()] = e.load_power;
+  if (checksFrictionWork()) d[iFrictionWorkKinetostatic()] = e.friction_power_kinetostatic;
+  if (iBrakeWork() >= 0) d[iBrakeWork()] = e.brake_power;
+  for (int i = 0; i < motorStateCount(); ++i) d[iMotorStates() + i] = e.motor_state_rates[i];
+  return e.friction_loop.status == LoopStatus::Solved;
 }
 
 double ReducedModel::kineticEnergy(const Eigen::VectorXd& y) const {

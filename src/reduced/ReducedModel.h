@@ -17,9 +17,16 @@
 //   massless rods:    nothing
 // M_load (resisting torque, Loveikin, Pochka, Romasevych (2018) eq. (30), Loveikin and Pochka (2007) eq. (5)) by virtual work in world x:
 //   M_load = -Σ_j σ_j·(H_j + friction_j)·x_Bj' + dV_gravity/dφ
-// H_j (local +x') from rollerHorizontalForce(v'_j), friction_j (local) from the quasi-static cart
-// statics (CartStatics.h, without the cart's inertial force, as in the papers) at the local
-// velocity v'_j = σ_j·x_Bj'·φ̇. With the quasi-static rod force F_j this equals
+// H_j (local +x') from rollerHorizontalForce(v'_j), friction_j (local) at the local velocity
+// v'_j = σ_j·x_Bj'·φ̇ from the guide normal forces of reduced.guide_normals:
+//   quasi_static  the papers' cart statics (CartStatics.h, without inertial forces): a function
+//                 of φ and φ̇ alone;
+//   kinetostatic  the cart statics with the cart's d'Alembert force -m_B·a' and the rod's
+//                 inertial load at its hinge (distributed rods: the rod's moment balance about the
+//                 crank pin, I_S·ψ̈ + r_AS × m·a_S), at the crank acceleration ε the friction itself
+//                 helps determine: the loop of physics/GuideFrictionLoop.h, the law the multibody
+//                 model's algebraic normal force uses, solved directly at every evaluation.
+// With the quasi-static rod force F_j this equals
 // Σ F_j·r·(σ_j·sin θ_j·cos β_j + cos θ_j·sin β_j), i.e. Σ F_j·r·sin(θ_j + β_j) of eq. (26)-(30)
 // for σ = +1. Gravity: distributed rods add
 // m_rod·g·y_S' (Loveikin and Pochka (2007) eq. (5)), split rods m_rod/2·g·r·cos θ (pin half-mass); carts move
@@ -35,13 +42,26 @@
 // of variables. Work integrals ride along as extra states (energy audit, RunResult.h).
 //   rigid:   [φ, φ̇, W_motor, W_friction, W_load]
 //   elastic: [φ2, φ̇2, ψ, ψ̇, W_motor, W_damping, W_friction, W_load]
+// then, only when the scene asks for them: with quasi-static normals and guide friction, the
+// friction work the kinetostatic normals would give at the run's own accelerations W_friction_kin
+// (the run's friction-work check); the brake's dissipation W_brake (motor.stop.brake_torque); and
+// the motor law's own states (MotorLaw.h: none for the static laws).
+//
+// Motor: the scene's motor law (motor.model) at the rotor, M(supply, ω_r = u·φ̇1, x), fed by the
+// starting method's supply (motor/Supply.h) in the run's SupplyPhase; at the crank M·u·η
+// (Loveikin, Pochka, Romasevych (2018) eq. (37)); a brake torque M_b on the motor shaft likewise.
 #pragma once
 
+#include <array>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "analysis/RunResult.h"
+#include "motor/MotorLaw.h"
+#include "motor/Supply.h"
+#include "physics/GuideFrictionLoop.h"
 #include "physics/SliderCrank.h"
 #include "reduced/CartStatics.h"
 #include "scene/Scene.h"
@@ -63,6 +83,12 @@ struct ModelEvaluation {
   double phi_crank = 0, omega_crank = 0, twist = 0, twist_rate = 0, omega_motor = 0;
   double J_n2 = 0, dJ_n2 = 0;     // crank-side reduced inertia and its φ-derivative
   double motor_torque = 0;        // M_n1 at the crank axis [N·m]
+  double brake_torque = 0;        // mechanical brake on the motor shaft, at the crank axis [N·m]
+  double stator_current = 0;      // RMS stator phase current [A]; NaN when the law has none
+  SupplyState supply;             // what the starting method applies (motor/Supply.h)
+  double brake_power = 0;         // -M_brake·φ̇1 ≥ 0, dissipated in the brake [W]
+  static constexpr int kMaxMotorStates = 8;
+  std::array<double, kMaxMotorStates> motor_state_rates{};  // the motor law's dx/dt
   double load_torque = 0;         // M_load [N·m] (rollers + friction + gravity)
   double coupling_torque = 0;     // elastic: c·ψ + k·ψ̇; rigid: M_motor - J_n1·φ̈
   double eps_crank = 0, eps_motor = 0, twist_accel = 0;
@@ -70,6 +96,12 @@ struct ModelEvaluation {
   double damping_power = 0;       // k·ψ̇² ≥ 0
   double friction_power = 0;      // -Σ friction·v (≥ 0 when friction opposes v)
   double load_power = 0;          // -Σ H·v, power given to the concrete
+  // Quasi-static normals with friction: -Σ friction·v with the kinetostatic normals at eps_crank
+  // [W]; 0 otherwise.
+  double friction_power_kinetostatic = 0;
+  // Solved, unless the guide friction locks a cart or its loop has no solution (the evaluation's
+  // accelerations are then void): physics/GuideFrictionLoop.h.
+  GuideLoopResult friction_loop;
   std::vector<CartEvaluation> carts;
 };
 
@@ -77,11 +109,20 @@ class ReducedModel {
  public:
   // Validates the kinematic preconditions (std::invalid_argument on a bad scene).
   explicit ReducedModel(const Scene& scene);
+  // With a given motor law (instead of the scene's motor.model; null: the scene's), e.g. a law
+  // written in a test.
+  ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law);
 
   const Scene& scene() const { return scene_; }
   bool rigid() const { return rigid_; }
   int cartCount() const { return scene_.carts.count; }
-  int stateSize() const { return rigid_ ? 5 : 8; }
+  int stateSize() const {
+    return mechanicalSize() + (checksFrictionWork() ? 1 : 0) + (supply_.hasBrake() ? 1 : 0) + motorStateCount();
+  }
+  // reduced.guide_normals = kinetostatic (with guide friction: the loop is solved).
+  bool kinetostatic() const { return kinetostatic_; }
+  // Quasi-static normals with guide friction: the kinetostatic friction work is integrated too.
+  bool checksFrictionWork() const { return !kinetostatic_ && scene_.hasGuideFriction(); }
 
   // State indices (-1 where the model has no such state).
   int iPhi() const { return 0; }
@@ -92,6 +133,18 @@ class ReducedModel {
   int iDampingWork() const { return rigid_ ? -1 : 5; }
   int iFrictionWork() const { return rigid_ ? 3 : 6; }
   int iLoadWork() const { return rigid_ ? 4 : 7; }
+  int iFrictionWorkKinetostatic() const { return checksFrictionWork() ? mechanicalSize() : -1; }
+  int iBrakeWork() const { return supply_.hasBrake() ? mechanicalSize() + (checksFrictionWork() ? 1 : 0) : -1; }
+  int iMotorStates() const {  // first of them
+    return mechanicalSize() + (checksFrictionWork() ? 1 : 0) + (supply_.hasBrake() ? 1 : 0);
+  }
+  int motorStateCount() const { return law_ ? law_->stateCount() : 0; }
+
+  // The motor law (null without a motor) and the supply of the scene's starting method.
+  const MotorLaw* motorLaw() const { return law_.get(); }
+  const Supply& supply() const { return supply_; }
+  // Rotor speed ω_r = u·φ̇1 [rad/s] of state y.
+  double rotorSpeed(const double* y) const;
 
   // Kinematics of cart j (0-based) at crank angle φ2 of cart 1.
   SliderCrankPose cartPose(int j, double phi_crank) const;
@@ -105,7 +158,8 @@ class ReducedModel {
   double reducedInertia(double phi) const;
   double reducedInertiaDerivative(double phi) const;
 
-  // Kloss torque at the crank axis, 0 when the motor is disabled.
+  // Motor torque at the crank axis under the rated supply (the static laws' torque-speed
+  // curve; a law with states at rest), 0 when the motor is disabled.
   double motorTorque(double omega_motor) const;
   // Resisting torque M_load(φ, φ̇) [N·m]; fills per-cart details when carts != nullptr.
   double loadTorque(double phi, double omega, std::vector<CartEvaluation>* carts = nullptr) const;
@@ -120,10 +174,18 @@ class ReducedModel {
   // true (and left empty otherwise), reusing its capacity when the same ModelEvaluation is
   // passed again.
   void evaluate(const double* y, ModelEvaluation& e, bool carts) const;
-  void derivatives(const double* y, double* dydt) const;
+  // False when the evaluation is void (e.friction_loop not solved: a cart locks).
+  bool derivatives(const double* y, double* dydt) const;
+  // The same at time t in supply phase p (the overloads above: the phase at t = 0, enough for a
+  // constant supply).
+  void evaluate(double t, const SupplyPhase& p, const double* y, ModelEvaluation& e, bool carts) const;
+  bool derivatives(double t, const SupplyPhase& p, const double* y, double* dydt) const;
   // Kinetic ½J_n1φ̇1² + ½J_n2φ̇2² (rigid: ½Jφ̇²) and potential ½cψ² + rod gravity [J].
   double kineticEnergy(const Eigen::VectorXd& y) const;
   double potentialEnergy(const Eigen::VectorXd& y) const;
+
+  // The guide normal forces in words, for every reduced result (RunResult::guide_normals).
+  std::string guideNormalsDescription() const;
 
   // Cart reactions at crank angle φ, speed φ̇ and acceleration φ̈. include_inertia = false: the
   // quasi-static reactions of Loveikin, Pochka, Romasevych (2018) eq. (14)-(25) (what the equations of motion use);
@@ -133,17 +195,39 @@ class ReducedModel {
                                             bool include_inertia) const;
 
  private:
+  CartEvaluation cartKinematics(int j, double phi, double omega) const;  // pose, v', H (no statics)
   CartEvaluation evaluateCart(int j, double phi, double omega, double inertial_force) const;
   double cartInertia(int j, const SliderCrankPose& p) const;            // cart j's share of J_n2 [kg·m²]
   double cartInertiaDerivative(int j, const SliderCrankPose& p) const;  // its dJ/dφ [kg·m²/rad]
   double rodGravityTorque(const SliderCrankPose& p, double theta) const;  // [N·m]
+  // Vertical load of cart j's rod on the cart at B, downward, V = V0 + V1·ε (kinetostatic;
+  // CartStatics.h): the rod's moment balance about the crank pin.
+  void rodLoadAtHinge(int j, const SliderCrankPose& p, double omega, double& V0, double& V1) const;
+  // Fills the loop terms of cart j (kinetostatic normals) for φ̇ = omega, and w_per_J = x_B'.
+  void loopTerms(int j, const CartEvaluation& c, double omega, GuideLoopCart& t) const;
+  // Kinetostatic statics of cart j at ε with its friction along world x.
+  CartStaticsResult kinetostaticStatics(int j, const CartEvaluation& c, double omega, double eps,
+                                        double friction_world) const;
+
+  int mechanicalSize() const { return rigid_ ? 5 : 8; }
+  // Motor and brake torque at the crank, stator current, supply and the law's state rates into e
+  // (e.omega_motor set).
+  void evaluateMotor(double t, const SupplyPhase& phase, const double* y, ModelEvaluation& e) const;
 
   Scene scene_;
   bool rigid_;
+  bool kinetostatic_;                    // reduced.guide_normals = kinetostatic
+  std::shared_ptr<const MotorLaw> law_;  // null without a motor
+  Supply supply_;
+  SupplyPhase initial_phase_;
   double J_n1_;       // motor side, Loveikin, Pochka, Romasevych (2018) eq. (1)
   double J_crank_;    // crankshaft without rods + split pin half-masses (Loveikin, Pochka, Romasevych (2018) eq. (2))
   std::vector<double> m_B_;   // per cart: mass used with x_B', Loveikin, Pochka, Romasevych (2018) eq. (3)
   std::vector<Loads> loads_;  // per cart: the loads acting on it (Scene::cartLoads)
+  // Scratch of the friction loop, reused by every evaluation (the model is used by one thread).
+  mutable std::vector<GuideLoopCart> loop_carts_;
+  mutable std::vector<double> loop_friction_, loop_normals_;
+  mutable std::vector<CartEvaluation> scratch_carts_;
 };
 
 // Runs the reduced model of a scene from its initial state to simulation.t_end and fills the
@@ -160,5 +244,7 @@ class ReducedModel {
 // early with stats.complete = false and stats.status = "motor stalled at t = X s" (X = onset),
 // never with an exception.
 RunResult runReducedModel(const Scene& scene);
+// The same with a given motor law (e.g. one written in a test).
+RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law);
 
 }  // namespace rollerdyn

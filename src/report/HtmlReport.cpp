@@ -1,5 +1,6 @@
 #include "report/HtmlReport.h"
 #include "report/SizingSection.h"
+#include "report/StartUpSection.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -291,7 +292,8 @@ std::string renderReportHtml(const ReportContent& c) {
   h << "</td></tr>\n</table>\n";
 
   h << summaryMetricsHtml(s);
-  h << sizingSectionHtml(s);  // motion, stall cause, drive sizing (SizingSection.h)
+  h << sizingSectionHtml(s);   // motion, stall cause, drive sizing (SizingSection.h)
+  h << startUpSectionHtml(s);  // start-up and stopping (StartUpSection.h)
 
   h << reactionsTableHtml(s, c.reaction_columns);
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "analysis/DriveSizing.h"
-#include "physics/KlossMotor.h"
+#include "motor/SharedMotorLaw.h"
 #include "report/FigureSupport.h"
 
 namespace rollerdyn {
@@ -81,33 +81,46 @@ struct MotorPlanner {
       if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
     std::string marks;
     MotorMarks k;
-    if (scene) {
+    std::shared_ptr<const MotorLaw> law;
+    if (scene) try {
+        law = sharedMotorLaw(*scene);
+      } catch (const std::exception& ex) {
+        notes.push_back(std::string("motor operating point drawn without its curve: ") + ex.what());
+      }
+    if (scene && law) {
       k = motorMarks(*scene);
       const double u = k.u, eta = k.eta;
       hi = std::max(hi, 1.03 * scene->motor.omega_sync / u);
+      // The law's steady torque-speed curve at the rated supply (the Kloss curve for motor.model kloss).
+      auto curve = [&](double w_crank) { return law->steadyTorque(SupplyState{}, w_crank * u) * u * eta; };
       std::vector<double> cx, cy;
       const int n = 600;
       for (int i = 0; i <= n; ++i) {
         const double x = lo + (hi - lo) * i / n;
         cx.push_back(x);
-        cy.push_back(klossCrankTorque(scene->motor, u, eta, x));
+        cy.push_back(curve(x));
       }
-      p.series.push_back(series("Kloss curve (scene " + literal(scene->name) + ")", cx, cy, kGrey, 4.0));
-      // The run's torque is the same static law of the same speed: check the two agree, so a
-      // run made with other motor data (--set motor.*) is not silently drawn on a wrong curve.
+      const bool kloss = scene->induction.model == MotorModel::Kloss;
+      p.series.push_back(series((kloss ? "Kloss curve (scene " : "steady torque-speed curve (scene ") +
+                                    literal(scene->name) + ")",
+                                cx, cy, kGrey, 4.0));
+      // A static law's torque is its curve at the run's speed: check the two agree, so a run made
+      // with other motor data (--set motor.*) is not silently drawn on a wrong curve. (A law with
+      // states, or a starting method that changes the supply, leaves the curve by design.)
+      const bool on_curve = law->stateCount() == 0 && !out.timeseries.has("supply_voltage_ratio");
       double dev = 0;
-      for (size_t i = 0; i < w.size() && i < m.size(); ++i)
-        if (std::isfinite(w[i]) && std::isfinite(m[i]))
-          dev = std::max(dev, std::abs(m[i] - klossCrankTorque(scene->motor, u, eta, w[i])));
+      for (size_t i = 0; on_curve && i < w.size() && i < m.size(); ++i)
+        if (std::isfinite(w[i]) && std::isfinite(m[i])) dev = std::max(dev, std::abs(m[i] - curve(w[i])));
       const double scale = scene->motor.breakdown_torque * u * eta;
       if (scale > 0 && dev > 1e-3 * scale)
-        notes.push_back("motor operating point: the run's motor_torque differs from the Kloss curve of scene '" +
+        notes.push_back(std::string("motor operating point: the run's motor_torque differs from the ") +
+                        (kloss ? "Kloss curve" : "steady torque-speed curve") + " of scene '" +
                         scene->name + "' by up to " + fmt("%.3g", dev) +
                         " N·m; was the run made with other motor data (--set motor.* / reducer.*)? "
                         "Pass the same --scene and --set to `rollerdyn plot`.");
       marks = markPoint(101, k.w_kr / u, k.M_kr * u * eta, kRed, "breakdown M_{kr}") +
               markPoint(102, k.w_n / u, k.M_n * u * eta, kGreen, "nominal M_n");
-    } else {
+    } else if (!scene) {
       notes.push_back("motor operating point drawn without its Kloss curve: no scene file (pass --scene FILE)");
     }
     p.preamble += marks;

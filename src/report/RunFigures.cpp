@@ -11,6 +11,7 @@
 #include "analysis/SteadyState.h"
 #include "report/FigureSupport.h"
 #include "report/MotorFigures.h"
+#include "report/StartUpFigures.h"
 
 namespace rollerdyn {
 
@@ -384,6 +385,7 @@ std::vector<FigurePlan> planRunFigures(const OutputFolder& out, const Scene* sce
     p.crankFigures();
     p.couplingFigure();
     planMotorFigures(out, scene, p.window, p.scene_label, p.plans, notes);  // MotorFigures.h
+    planStartUpFigures(out, p.window, p.scene_label, p.plans, notes);     // StartUpFigures.h
     p.reactionFigures();
     p.twistFigures();
   } else if (out.has_summary || out.has_reactions) {
@@ -425,7 +427,9 @@ FigureSet drawRunFigures(const OutputFolder& out, const Scene* scene, const std:
 }
 
 bool isRunFigureName(const std::string& stem) {
-  return kFigureNames.count(stem) || stem.rfind("comparison_", 0) == 0;
+  const std::vector<std::string>& start_up = startUpFigureNames();
+  return kFigureNames.count(stem) || stem.rfind("comparison_", 0) == 0 ||
+         std::find(start_up.begin(), start_up.end(), stem) != start_up.end();
 }
 
 std::string figureSetText(const FigureSet& set, const std::string& fig_dir) {

@@ -93,7 +93,8 @@ bool Scene::hasRollerLoads() const {
 
 std::vector<std::string> Scene::effects() const {
   std::vector<std::string> e;
-  if (hasMotor()) e.push_back("kloss_motor");
+  // The motor by its law (motor.model): kloss_motor, kloss_dynamic_motor, circuit_motor, park_motor.
+  if (hasMotor()) e.push_back(std::string(toString(induction.model)) + "_motor");
   e.push_back(coupling.type == CouplingType::Rigid ? "rigid_coupling" : "elastic_coupling");
   if (hasCouplingDamping()) e.push_back("coupling_damping");
   if (hasCamDrive()) e.push_back("cam_drive");  // no rods: the cam pushes the cart (Loveikin and Pochka (cam drive paper))
@@ -138,5 +139,14 @@ double InductionMotor::phaseVoltage() const { return voltage / std::sqrt(3.0); }
 double InductionMotor::supplyAngularFrequency() const { return 2.0 * M_PI * frequency; }
 
 const char* toString(Formulation f) { return f == Formulation::Minimal ? "minimal" : "constrained"; }
+int Scene::selfCheckInterval() const {
+  if (simulation.self_check_interval > 0) return simulation.self_check_interval;
+  return std::max(50, 10 * carts.count);
+}
+
+const char* toString(GuideNormalForce g) { return g == GuideNormalForce::Algebraic ? "algebraic" : "lagged"; }
+const char* toString(ReducedGuideNormals g) {
+  return g == ReducedGuideNormals::Kinetostatic ? "kinetostatic" : "quasi_static";
+}
 
 }  // namespace rollerdyn

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/MotorSwitching.h"
 #include "scene/SizingInputs.h"
 
 namespace rollerdyn {
@@ -26,6 +27,8 @@ enum class DriveType { Crank, Cam };                            // drive.type
 enum class Formulation { Constrained, Minimal };                // simulation.formulation
 enum class MotorModel { Kloss, KlossDynamic, Circuit, Park };   // motor.model
 enum class WindingConnection { Star, Delta };                   // motor.connection
+enum class GuideNormalForce { Lagged, Algebraic };             // loads.guide_friction.normal_force
+enum class ReducedGuideNormals { QuasiStatic, Kinetostatic };  // reduced.guide_normals
 
 struct SimulationSettings {
   double t_end;                 // simulated time span [s]                       simulation.t_end
@@ -43,6 +46,10 @@ struct SimulationSettings {
   bool reactions = true;        // joint reaction forces computed at every output row; false:
                                 // motion and drive torques only, no reactions table [-]
                                 //                                               simulation.reactions
+  int self_check_interval = 0;  // minimal formulation: every k-th output row is also solved by
+                                // Simbody's constrained solve and compared (accelerations,
+                                // reaction columns) [rows]; 0: automatic, selfCheckInterval()
+                                //                                    simulation.self_check_interval
 };
 
 struct InitialState {
@@ -204,11 +211,16 @@ struct Loads {
   double gravity;              // g [m/s²]; 0 = no gravity                            loads.gravity
   double velocity_smoothing;   // v_s: sign(v) is replaced by tanh(v/v_s) [m/s]       loads.velocity_smoothing
   double guide_friction_lag = 2e-3;  // τ_N: time constant with which the multibody model's
-                               // friction normal force follows the guide reaction [s]
+                               // lagged friction normal force follows the guide reaction [s]
                                //                     loads.guide_friction.normal_force_lag
   double rolling_resistance = 0;  // μ_r, rolling resistance of the compacting rollers in the mix:
                                // a force μ_r·(R_j1 + R_j2) against the cart's velocity, added to
                                // F_j1 + F_j2 in either reading [-]      loads.rolling_resistance
+  GuideNormalForce guide_normal_force = GuideNormalForce::Lagged;  // normal force of the multibody
+                               // model's guide friction: the guide reaction of the same instant,
+                               // solved with the motion (algebraic), or followed with the lag τ_N
+                               // (lagged) [-]; scene files default to algebraic with the minimal
+                               // formulation (SceneParser.cpp)   loads.guide_friction.normal_force
 };
 
 // One cart's values of the loads.* keys that may be given per cart (a list, one value per cart);
@@ -225,6 +237,12 @@ struct ReducedSettings {
   KinematicsForm kinematics;   // exact (eq. (40)-(47)) | truncated (eq. (52)-(57))   reduced.kinematics
   ReducedIntegrator integrator;  // cvode | baranov (Loveikin and Pochka (2007) eq. (4), (10), (11))  reduced.integrator
   double baranov_step;         // crank-angle step of the Baranov scheme [rad]        reduced.baranov_step_deg
+  ReducedGuideNormals guide_normals = ReducedGuideNormals::QuasiStatic;  // guide normal forces of
+                               // the reduced model's friction and reactions: the papers' cart
+                               // statics without inertial forces (quasi_static) or with the cart's
+                               // and rod's inertial forces, solved with the motion (kinetostatic,
+                               // the multibody algebraic law) [-]; scene files default to
+                               // kinetostatic (SceneParser.cpp)                  reduced.guide_normals
 };
 
 struct Scene {
@@ -249,6 +267,8 @@ struct Scene {
   DriveType drive = DriveType::Crank;  // crank | cam                              drive.type
   CamDrive cam;                        // cam.* (used when drive == Cam)
   SizingInputs sizing;                 // sizing.*: ratings and targets, no effect on the run
+  MotorStart motor_start;              // motor.start.*: starting method (MotorSwitching.h)
+  MotorStop motor_stop;                // motor.stop.*: switch-off, brake, restart
 
   // --- Derived quantities, defined once so both models use the same formula. ---
 
@@ -257,6 +277,11 @@ struct Scene {
   double motorSideInertia() const;
   // Crankshaft inertia about its axis without rods: n·J'_K + shaft + crank-side flywheel [kg·m²].
   double crankSideInertia() const;
+  // The self-check interval in output rows: simulation.self_check_interval, or max(50, 10·n)
+  // when not given. Why 10·n: Simbody's constrained solve at a self-check row costs about 0.5·n
+  // times an O(n) evaluation of the minimal formulation (measured: 5x at 4 carts, 26x at 64,
+  // ~130x at 256), so one check every 10·n rows keeps it near 5 % of the rows' cost at any n.
+  int selfCheckInterval() const;
   // --- Per-cart values (docs/per-cart.md): the uniform scalar unless the scene gives a list. ---
 
   // Angle of cart j's crank (0-based j) relative to the shaft's reference, which is cart 1's
@@ -303,5 +328,7 @@ const char* toString(Formulation f);
 const char* toString(DriveType d);
 const char* toString(MotorModel m);
 const char* toString(WindingConnection c);
+const char* toString(GuideNormalForce g);     // "lagged" | "algebraic"
+const char* toString(ReducedGuideNormals g);  // "quasi_static" | "kinetostatic"
 
 }  // namespace rollerdyn

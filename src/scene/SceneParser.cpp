@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/MotorSwitchingParser.h"
 #include "scene/SceneDocument.h"
 #include "scene/SceneReader.h"
 #include "scene/SceneSchema.h"
@@ -39,6 +40,7 @@ SimulationSettings readSimulation(const Reader& in) {
   }
   s.output_step = in.number("simulation.output_step");
   s.reactions = in.flag("simulation.reactions");
+  s.self_check_interval = in.has("simulation.self_check_interval") ? in.integer("simulation.self_check_interval") : 0;
   if (s.output_step > s.t_end) {
     const std::string t = formatNumber(s.t_end), dt = formatNumber(s.output_step);
     if (blameSecond(in.doc(), "simulation.output_step", "simulation.t_end")) {
@@ -263,8 +265,12 @@ Flywheel readFlywheel(const Reader& in) {
 }
 
 // The loads; per_cart gets one entry per cart when any per-cart load key is a list (the others
-// repeat their scalar there), and stays empty otherwise.
-Loads readLoads(const Reader& in, int count, std::vector<CartLoads>& per_cart) {
+// repeat their scalar there), and stays empty otherwise. formulation: the multibody formulation,
+// which decides the default normal-force law of the guide friction: algebraic where the minimal
+// formulation's O(n) inverse-dynamics pass solves the loop (docs/friction-and-reactions.md,
+// "Which normal force"), lagged in the constrained formulation, where the guide reaction is only
+// known after Simbody's constrained solve.
+Loads readLoads(const Reader& in, int count, Formulation formulation, std::vector<CartLoads>& per_cart) {
   Loads l;
   const std::vector<double> F1 = in.perCartNumbers("loads.roller_force_front", count, l.roller_force_front);
   const std::vector<double> F2 = in.perCartNumbers("loads.roller_force_rear", count, l.roller_force_rear);
@@ -286,6 +292,22 @@ Loads readLoads(const Reader& in, int count, std::vector<CartLoads>& per_cart) {
   l.gravity = in.number("loads.gravity");
   l.velocity_smoothing = in.number("loads.velocity_smoothing");
   l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
+  const std::string normal_key = "loads.guide_friction.normal_force";
+  const std::string normal = in.has(normal_key) ? in.choice(normal_key)
+                             : formulation == Formulation::Minimal ? "algebraic"
+                                                                   : "lagged";
+  l.guide_normal_force = normal == "algebraic" ? GuideNormalForce::Algebraic : GuideNormalForce::Lagged;
+  if (l.guide_normal_force == GuideNormalForce::Algebraic && formulation == Formulation::Constrained) {
+    if (blameSecond(in.doc(), normal_key, "simulation.formulation"))
+      in.doc().fail("simulation.formulation",
+                    "minimal (loads.guide_friction.normal_force = algebraic needs the minimal formulation)",
+                    "constrained");
+    in.doc().fail(normal_key,
+                  "lagged with simulation.formulation: constrained (the constrained formulation knows the "
+                  "guide reaction only after Simbody's constrained solve, so it cannot solve the friction "
+                  "loop algebraically; use simulation.formulation: minimal)",
+                  normal);
+  }
   return l;
 }
 
@@ -296,6 +318,8 @@ ReducedSettings readReduced(const Reader& in) {
   r.integrator = in.choice("reduced.integrator") == "baranov" ? ReducedIntegrator::Baranov
                                                               : ReducedIntegrator::Cvode;
   r.baranov_step = in.number("reduced.baranov_step_deg") * kDegToRad;
+  r.guide_normals = in.choice("reduced.guide_normals") == "quasi_static" ? ReducedGuideNormals::QuasiStatic
+                                                                        : ReducedGuideNormals::Kinetostatic;
   return r;
 }
 
@@ -345,10 +369,11 @@ Scene readScene(const SceneDocument& doc) {
   s.reducer = readReducer(in);
   s.coupling = readCoupling(in);
   s.flywheel = readFlywheel(in);
-  s.loads = readLoads(in, s.carts.count, s.cart_loads);
+  s.loads = readLoads(in, s.carts.count, s.simulation.formulation, s.cart_loads);
   s.reduced = readReduced(in);
   readDrive(in, s);
   s.sizing = readSizing(in);
+  readMotorSwitching(in, s);
 
   // Guide reactions (Loveikin, Pochka, Romasevych (2018) eq. (18)-(25)) divide by 2b; with friction they drive the load.
   if (s.loads.guide_friction > 0.0) {

@@ -76,6 +76,11 @@ std::vector<KeySpec> buildSchema() {
               "compute the joint reaction forces (guide rollers, rods, crank pins, main bearing) "
               "at every output row; false writes no reactions table and no joint loads, only the "
               "motion and the drive torques, at a fraction of the multibody cost"},
+      integer("simulation.self_check_interval", P::Conditional, between(1.0, true, 1e9, true), 0.0,
+              "minimal formulation: every k-th output row is also solved by Simbody's constrained "
+              "solve and compared with the O(n) pass (accelerations, guide normal forces, reaction "
+              "columns)")
+          .when("max(50, 10 × carts.count)"),
       number("simulation.constraint_tolerance", "-", P::Conditional,
              between(0.0, false, 1.0, false), 0.0,
              "constraint projection tolerance of the constrained formulation")
@@ -287,6 +292,43 @@ std::vector<KeySpec> buildSchema() {
               "rotor cages of the circuit fitted to the catalogue (2 honours the starting torque)")
           .from("Pedra (2008)"),
 
+      // Starting method and switch-off (scene/MotorSwitching.h, motor/Supply.h).
+      choice("motor.start.method", P::Optional,
+             {"direct_on_line", "star_delta", "soft_starter", "frequency_converter"}, "direct_on_line",
+             "how the motor is switched on and brought up to speed"),
+      number("motor.start.t_on", "s", P::Optional, nonNegative(), 0.0, "switch-on time"),
+      number("motor.start.phase_deg", "deg", P::Optional, anyFinite(), 0.0,
+             "point on the wave at switch-on: angle of the supply voltage phasor (phase a at its peak = 0)"),
+      number("motor.start.changeover_time", "s", P::Conditional, positive(), 0.0,
+             "star-delta: changeover to delta at this time")
+          .when("star_delta: this or motor.start.changeover_speed"),
+      number("motor.start.changeover_speed", "rad/s", P::Conditional, positive(), 0.0,
+             "star-delta: changeover to delta when the rotor reaches this speed")
+          .when("star_delta: this or motor.start.changeover_time"),
+      number("motor.start.changeover_gap", "s", P::Optional, nonNegative(), 0.0,
+             "star-delta: dead time of the open transition, stator disconnected"),
+      number("motor.start.ramp_time", "s", P::Conditional, positive(), 0.0,
+             "soft starter, frequency converter: duration t_ramp of the voltage or frequency ramp")
+          .when("required with soft_starter and frequency_converter"),
+      number("motor.start.initial_voltage", "-", P::Conditional, between(0.0, false, 1.0, true), 0.0,
+             "soft starter: U_0/U_n at switch-on")
+          .when("required with soft_starter"),
+      number("motor.start.current_limit", "A", P::Optional, nonNegative(), 0.0,
+             "soft starter: RMS stator phase current the start is held to; 0 = none (motor models with a current only)"),
+      number("motor.start.initial_frequency", "Hz", P::Conditional, positive(), 0.0,
+             "frequency converter: f_0 at switch-on (< the rated frequency)")
+          .when("required with frequency_converter"),
+      number("motor.start.boost", "-", P::Optional, between(0.0, true, 1.0, false), 0.0,
+             "frequency converter: voltage boost U/U_n at zero frequency, U/U_n = boost + (1 - boost)·f/f_n"),
+      number("motor.stop.t_off", "s", P::Optional, positive(), kInf,
+             "switch-off time (coast-down); absent = never"),
+      number("motor.stop.brake_torque", "N·m", P::Optional, nonNegative(), 0.0,
+             "mechanical brake torque on the motor shaft after switch-off, at the rotor; 0 = no brake"),
+      number("motor.stop.brake_delay", "s", P::Optional, nonNegative(), 0.0,
+             "the brake engages this long after the switch-off"),
+      number("motor.stop.t_restart", "s", P::Optional, positive(), kInf,
+             "reconnection direct on line at the rated supply after a switch-off (brake released); absent = never"),
+
       number("reducer.ratio", "-", P::Required, positive(), 0.0, "u = ω_rotor/ω_crank")
           .from(L2018 + " eq. (1), (37)"),
       number("reducer.efficiency", "-", P::Required, between(0.0, false, 1.0, true), 0.0,
@@ -343,11 +385,15 @@ std::vector<KeySpec> buildSchema() {
       number("loads.guide_friction.coefficient", "-", P::Optional,
              between(0.0, true, 1.0, false), 0.0, "f, reduced guide-roller friction coefficient")
           .from(L2018 + " eq. (14)-(25)"),
+      choice("loads.guide_friction.normal_force", P::Conditional, {"algebraic", "lagged"}, "",
+             "normal force of the multibody model's guide friction: the guide reaction of the same "
+             "instant, solved with the motion (algebraic; minimal formulation only) or followed with "
+             "the lag τ_N (lagged)")
+          .when("algebraic with the minimal formulation, lagged with the constrained one"),
       number("loads.guide_friction.normal_force_lag", "s", P::Optional, between(0.0, false, 1.0, true),
              2e-3,
-             "τ_N: the multibody model's friction uses a normal force that follows the actual guide "
-             "reaction with this time constant (dN̂/dt = (N − N̂)/τ_N), because friction cannot "
-             "depend on the constraint reactions it helps determine"),
+             "τ_N of the lagged normal force: the multibody model's friction then uses a normal force "
+             "that follows the actual guide reaction with this time constant (dN̂/dt = (N − N̂)/τ_N)"),
       number("loads.gravity", "m/s²", P::Optional, nonNegative(), 9.81,
              "g; 0 = no gravity"),
       number("loads.velocity_smoothing", "m/s", P::Optional, positive(), 1e-3,
@@ -392,6 +438,11 @@ std::vector<KeySpec> buildSchema() {
       number("reduced.baranov_step_deg", "deg", P::Optional, between(0.0, false, 10.0, true),
              1.0, "crank-angle step of the Baranov scheme")
           .from(L2007 + " eq. (4)"),
+      choice("reduced.guide_normals", P::Optional, {"kinetostatic", "quasi_static"}, "kinetostatic",
+             "guide normal forces of the reduced model (friction, reactions): with the cart's and "
+             "rod's inertial forces, solved with the motion (kinetostatic), or the papers' cart "
+             "statics without them (quasi_static)")
+          .from(L2018 + " eq. (14)-(25) (quasi_static)"),
   };
 }
 

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "analysis/FrictionChecks.h"
 #include "analysis/Summary.h"
 #include "report/OutputFolder.h"
 #include "scene/Plausibility.h"
@@ -21,6 +22,8 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
   summary["overrides"] = options.overrides;
   if (!summary.contains("warnings") || !summary["warnings"].is_array()) summary["warnings"] = nlohmann::json::array();
   for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
+  // summary["guide_friction"] and its warnings: self-locking, dead centre, quasi-static friction work.
+  addFrictionWarnings(scene, run, summary);
   const std::size_t run_warnings = summary["warnings"].size();
   // The two-mass check is the first estimate; the verdict rests on the modal analysis.
   const std::vector<std::string> first_estimate = addResonanceWarnings(scene, summary);

@@ -2,7 +2,9 @@
 // `report`, the sweep points and the Python interface give the same summary.json and files:
 //   - the summary (analysis/Summary.h) with the load at the start that explains a stall
 //     (StartLoad.h), the user's overrides (so that a command the console suggests repeats them),
-//     the plausibility warnings of the scene (Plausibility.h), the resonance check of the two-mass
+//     the plausibility warnings of the scene (Plausibility.h), the guide friction's margins and
+//     warnings (analysis/FrictionChecks.h: self-locking, dead centre, the quasi-static friction
+//     work), the resonance check of the two-mass
 //     drive, Dyomin (two rotors) eq. (10) (ResonanceCheck.h), as the first estimate, and the
 //     resonance verdict of the modal analysis (modes/RunModes.h), and the scene file's absolute
 //     path, so `rollerdyn plot DIR` finds it from any folder;
@@ -40,7 +42,8 @@ struct RunSummaryOptions {
 // What a terminal prints about the run once it is summarized: the warnings of summary["warnings"]
 // in order, run_warnings then resonance_warnings, then the resonance verdict.
 struct RunMessages {
-  // The load's warnings (a load that does no net work) and the scene's plausibility warnings.
+  // The load's warnings (a load that does no net work), the scene's plausibility warnings and the
+  // guide friction's warnings.
   std::vector<std::string> run_warnings;
   // The first estimate's resonance warnings (labelled as such where the verdict is made) and the
   // modal analysis' warnings.

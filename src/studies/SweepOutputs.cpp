@@ -2,8 +2,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "analysis/FrictionChecks.h"
 #include "io/AtomicFile.h"
 #include "io/FieldFormat.h"
+#include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
 #include "studies/Sweep.h"
 #include "studies/SweepPlots.h"
@@ -119,6 +121,13 @@ std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepRes
   nlohmann::json j;
   j["scene"] = o.scene_path;
   j["model"] = o.model;
+  // The guide normal forces the points' friction (and the reduced model's reactions) use.
+  try {
+    const std::string g = guideNormalsDescription(parseSceneFile(o.scene_path, o.base_overrides), o.model == "reduced");
+    j["guide_normal_forces"] = g.empty() ? nlohmann::json(nullptr) : nlohmann::json(g);
+  } catch (const std::exception&) {
+    j["guide_normal_forces"] = nullptr;  // the scene was checked before the sweep; nothing to add here
+  }
   j["base_overrides"] = o.base_overrides;
   j["parameters"] = nlohmann::json::array();
   for (const SweepParameter& p : o.params) j["parameters"].push_back({{"key", p.key}, {"values", p.texts}});

@@ -191,9 +191,18 @@ TEST(DriveSizing, StartUpPeakAndHeatingDecideTheChecksAndNameTheirWindow) {
   EXPECT_NE(heat.reason.find("starts per hour"), std::string::npos) << heat.reason;
   // With a duty of 60 starts per hour each start's heat counts: s·M·ω0 = 40 kW over the start.
   EXPECT_EQ(s.checks[1].window, "steady window");  // the breakdown margin is a running check
-  // The start's rotor heat: s = 1 and M = 400 N·m for the replaced rows, s·M·ω0 = 40 kW over them.
+  // The start's rotor heat, from the switch-on (t = 0) to the steady window: s = 1 and M = 400 N·m
+  // for the replaced rows, s·M·ω0 = 40 kW over them, then the steady running's losses, whose mean
+  // is ω0·mean(s·M) = ω0·(0.05·M0 − 0.02·M1/2) = 840 W (s = 0.05 − 0.02·sin 2Ωt, M = M0 + M1·sin 2Ωt).
   const double t_start = rr.timeseries.rows[n_start][0];
-  EXPECT_NEAR(s.motor.whole_run.start_heat, 400.0 * w0 * t_start, 0.03 * 400.0 * w0 * t_start);
+  const double P_steady = w0 * (0.05 * M0 - 0.02 * M1 / 2);
+  const double t_window = s.t_begin;
+  EXPECT_NEAR(s.motor.whole_run.start_duration, t_window, 1e-9);
+  const double start_heat = 400.0 * w0 * t_start + P_steady * (t_window - t_start);
+  EXPECT_NEAR(s.motor.whole_run.start_heat, start_heat, 0.01 * start_heat);
+  // What a start adds to steady running: its heat less the steady losses over its duration.
+  const double above = 400.0 * w0 * t_start - P_steady * t_start;
+  EXPECT_NEAR(s.motor.whole_run.start_heat_above_steady, above, 0.01 * above);
   EXPECT_TRUE(std::isfinite(s.motor.whole_run.starts_per_hour));
   EXPECT_GT(s.motor.whole_run.starts_per_hour, 0.0);
   Scene duty = sc;
@@ -207,8 +216,8 @@ TEST(DriveSizing, StartUpPeakAndHeatingDecideTheChecksAndNameTheirWindow) {
   // per hour, against the nominal losses s_n·M_n·ω0.
   const double s_n = 1.0 - sc.sizing.motor_omega_nominal / w0;
   const double nominal_losses = s_n * s.motor.nominal_torque * w0;
-  const double expected = std::sqrt((steady_only.motor.whole_run.rotor_losses_mean +
-                                     60.0 * s.motor.whole_run.start_heat / 3600.0) / nominal_losses);
+  const double expected = std::sqrt((steady_only.motor.whole_run.rotor_losses_mean + 60.0 * above / 3600.0) /
+                                    nominal_losses);
   EXPECT_REL(dh.value, expected, 1e-3);
 }
 

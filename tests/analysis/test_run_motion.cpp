@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "analysis/RunMotion.h"
 #include "analysis/SizingSummary.h"
@@ -115,4 +116,87 @@ TEST(RunMotion, RockingRunIsNamedAndHasNoCoefficients) {
   EXPECT_TRUE(j["delta"].is_null());
   EXPECT_TRUE(j["stall"].is_null());
   EXPECT_NE(summaryText(j).find("motion       rocking"), std::string::npos);
+}
+
+namespace {
+
+// Rows of a drive with a starting method, in stages: each `duration` seconds at the crank speed
+// `omega` (1e-3 rad/s creeps inside the rest band of 1 % of ω0/u = 0.1 rad/s) under the supply
+// voltage ratio `u` (0: switched off). The supply columns are those a switching supply writes.
+struct Stage {
+  double duration, omega, u;
+};
+RunResult supplyRun(const std::vector<Stage>& stages) {
+  RunResult r;
+  r.model = "reduced";
+  r.timeseries.columns = {"t", "phi_crank", "omega_crank", "omega_motor", "motor_torque",
+                          "supply_voltage_ratio", "supply_frequency_ratio"};
+  double phi = 0.5, t = 0.0;
+  const double dt = 0.01;
+  for (const Stage& st : stages)
+    for (int i = 0; i < int(std::lround(st.duration / dt)); ++i, t += dt, phi += st.omega * dt)
+      r.timeseries.rows.push_back({t, phi, st.omega, st.omega, st.u > 0 ? 1000.0 : 0.0, st.u, st.u > 0 ? 1.0 : 0.0});
+  r.reactions.columns = {"t"};
+  return r;
+}
+
+const double kStar = 1.0 / std::sqrt(3.0);  // U/U_n of a delta-rated winding in star
+
+}  // namespace
+
+// The stall rule counts only the time at the rated supply: a drive may be slow in star (U/U_n =
+// 1/√3) for longer than the rule's second and then turn once in delta.
+TEST(RunMotion, TheStallRuleCountsOnlyTheTimeAtTheRatedSupply) {
+  const Scene s = motorScene();
+  const json star_then_delta = makeSummary(s, supplyRun({{2.0, 1e-3, kStar}, {4.0, 10.0, 1.0}}));
+  EXPECT_EQ(star_then_delta["motion"], "turning") << star_then_delta["status"];
+  // The same rows at the rated supply throughout: held for 2 s, a stall.
+  const json rated = makeSummary(s, supplyRun({{2.0, 1e-3, 1.0}, {4.0, 10.0, 1.0}}));
+  EXPECT_EQ(rated["motion"], "stalled") << rated["status"];
+}
+
+// A drive still held at rest when the run ends, with the motor connected in a stage the stall
+// rule skips (star that never changes over, a ramp longer than the run), has not started in this
+// run: "stalled", as its start-up answer says, not "turning" with a creeping speed.
+TEST(RunMotion, ADriveHeldInStarUntilTheRunEndsHasNotStarted) {
+  const Scene s = motorScene();
+  const json j = makeSummary(s, supplyRun({{3.0, 1e-3, kStar}}));
+  EXPECT_EQ(j["motion"], "stalled") << j["status"];
+  EXPECT_TRUE(j["delta"].is_null());
+  // A machine at rest after a switch-off (U = 0) did not stall.
+  const json off = makeSummary(s, supplyRun({{4.0, 10.0, 1.0}, {2.0, 1e-3, 0.0}}));
+  EXPECT_NE(off["motion"], "stalled") << off["status"];
+}
+
+// A machine without a motor that friction has stopped is "at_rest" by the same rule the models
+// end such a run with (RestDetector.h): every cart slower than v_s for a second, read from the rows
+// of a table whose run completed, and from the detector's status line of a run it ended.
+TEST(RunMotion, AMachineThatFrictionStoppedIsAtRest) {
+  Scene s = motorScene();
+  s.motor.enabled = false;
+  s.loads.velocity_smoothing = 1e-3;
+  RunResult r;
+  r.model = "reduced";
+  r.timeseries.columns = {"t", "phi_crank", "omega_crank", "v_cart_1", "v_cart_2"};
+  // 1 s turning at 5 rad/s, then creeping backwards at 4e-5 rad/s (carts at 1e-5 m/s) for 1.5 s.
+  for (int i = 0; i <= 250; ++i) {
+    const double t = 0.01 * i;
+    const bool moving = t < 1.0;
+    r.timeseries.rows.push_back({t, moving ? 5 * t : 5.0 - 4e-5 * (t - 1), moving ? 5.0 : -4e-5,
+                                 moving ? 0.5 : 1e-5, moving ? -0.5 : -1e-5});
+  }
+  r.reactions.columns = {"t"};
+  r.stats.complete = true;
+  const json rows = makeSummary(s, r);
+  EXPECT_EQ(rows["motion"], "at_rest") << rows["status"];
+  EXPECT_TRUE(rows["delta"].is_null());
+  // The same rows cut short by the detector in a model run: its status line decides.
+  r.stats.complete = false;
+  r.stats.status = "the machine came to rest at t = 1 s: with the motor off, friction and loads hold it";
+  EXPECT_EQ(makeSummary(s, r)["motion"], "at_rest");
+  // Carts faster than v_s throughout: not at rest.
+  for (auto& row : r.timeseries.rows) row[3] = row[4] = 0.01;
+  r.stats.complete = true;
+  r.stats.status = "ok";
+  EXPECT_NE(makeSummary(s, r)["motion"], "at_rest");
 }

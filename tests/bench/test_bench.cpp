@@ -176,11 +176,42 @@ TEST(BenchStudies, CsvHasTheRequiredColumnsAndEmptyFieldsForNaN) {
   std::getline(in, header);
   std::getline(in, line);
   for (const char* c : {"model", "integrator", "accuracy", "cpu_seconds", "steps", "realizations", "error_omega",
-                        "error_coupling", "outcome", "status"})
+                        "error_coupling", "outcome", "status", "error_angle_rad", "cpu_with_setup"})
     EXPECT_NE(header.find(c), std::string::npos) << c;
   EXPECT_NE(line.find("multibody,ExplicitEuler,1e-10,"), std::string::npos) << line;
   EXPECT_NE(line.find(",timeout,\"timeout: CPU budget 20 s exceeded, \"\"quoted\"\"\","), std::string::npos) << line;
   EXPECT_EQ(line.find("nan"), std::string::npos) << line;
+}
+
+TEST(BenchStudies, CheapestRunReachingACrankAngleError) {
+  std::vector<BenchRow> rows = {row("multibody-minimal", "cvode-adams", 1e-4, Outcome::Ok, 0.05, 1e-5, 1e-4),
+                                row("multibody-minimal", "cvode-adams", 1e-5, Outcome::Ok, 0.06, 1e-6, 1e-5),
+                                row("multibody-minimal", "cvode-adams", 1e-6, Outcome::Ok, 0.08, 4e-7, 1e-6)};
+  rows[0].error_angle = 7.7e-5;
+  rows[1].error_angle = 1.4e-6;
+  rows[2].error_angle = 5.6e-7;
+  const BenchRow* r = cheapestReachingAngle(rows, "multibody-minimal", 1e-5);
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(r->m.setting.accuracy, 1e-5);
+  EXPECT_EQ(cheapestReachingAngle(rows, "multibody-minimal", 1e-7), nullptr);
+}
+
+TEST(BenchStudies, ReactionsStudyTimesEachAccuracyWithAndWithout) {
+  BenchOptions opt;
+  opt.quick = true;
+  opt.budget = 5;
+  const SceneSource source{std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml", {"simulation.t_end=0.2"}};
+  const std::vector<BenchRow> rows = runReactionsStudy(source, opt);
+  ASSERT_EQ(rows.size(), 2 * accuracyGrid(true).size());  // the quick grid ends at 1e-8
+  for (size_t i = 0; i < rows.size(); i += 2) {
+    EXPECT_EQ(rows[i].variant, "reactions");
+    EXPECT_EQ(rows[i + 1].variant, "no reactions");
+    EXPECT_EQ(rows[i].x, rows[i + 1].x);
+    EXPECT_EQ(rows[i].m.outcome, Outcome::Ok) << rows[i].m.status;
+    EXPECT_EQ(rows[i + 1].m.outcome, Outcome::Ok) << rows[i + 1].m.status;
+    // Same integration (the rows never feed back): the same steps.
+    EXPECT_EQ(rows[i].m.steps, rows[i + 1].m.steps);
+  }
 }
 
 TEST(BenchStudies, Grids) {

@@ -70,7 +70,7 @@ TEST(CliUsageErrors, OptionsArgumentsAndValues) {
       {{"simulate", scene, "--model", "reducd"}, {"--model: expected one of multibody, reduced, got 'reducd'",
                                                   "did you mean 'reduced'?"}},
       {{"cam-profile", model("cam-drive.yaml"), "--model", "multbody"}, {"did you mean 'multibody'?"}},
-      {{"bench", scene, "--study", "integrator"}, {"--study: expected one of integrators, carts, effects, all",
+      {{"bench", scene, "--study", "integrator"}, {"--study: expected one of integrators, carts, effects, reactions, all",
                                                    "did you mean 'integrators'?"}},
       {{"bench", scene, "--repeat", "0"}, {"--repeat"}},
       {{"chain", "--J1", "abc"}, {"chain:", "--J1", "abc"}},

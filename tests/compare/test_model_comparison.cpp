@@ -183,6 +183,27 @@ TEST(ModelDifferences, ShippedSeed000SceneDiffersInFrictionAndRods) {
   EXPECT_FALSE(motionEquivalent(sc));
 }
 
+TEST(ModelDifferences, KinetostaticNormalsAndTheAlgebraicLawLeaveNoFrictionOrReactionDifference) {
+  // The defaults of scene files: the same friction law and the same Newton equations in both.
+  Scene sc = test_scenes::seed000Scene();
+  sc.reduced.guide_normals = ReducedGuideNormals::Kinetostatic;
+  sc.loads.guide_normal_force = GuideNormalForce::Algebraic;
+  sc.simulation.formulation = Formulation::Minimal;
+  const auto d = modelDifferences(sc);
+  EXPECT_FALSE(hasTopic(d, "reactions"));
+  EXPECT_FALSE(hasTopic(d, "rod_inertia"));
+  EXPECT_FALSE(hasTopic(d, "guide_friction"));
+  EXPECT_TRUE(motionEquivalent(sc));
+  bool named = false;
+  for (const std::string& same : identicalPhysics(sc)) named = named || same.rfind("guide friction: f*", 0) == 0;
+  EXPECT_TRUE(named);
+  // The multibody lag is then the one difference, and it moves the motion.
+  sc.loads.guide_normal_force = GuideNormalForce::Lagged;
+  ASSERT_TRUE(hasTopic(modelDifferences(sc), "guide_friction"));
+  EXPECT_TRUE(topic(modelDifferences(sc), "guide_friction")->affects_motion);
+  EXPECT_FALSE(motionEquivalent(sc));
+}
+
 TEST(ModelDifferences, EquivalentSceneAndEachSwitch) {
   Scene sc = test_scenes::seed000Scene();
   sc.rods.model = RodModel::Split;

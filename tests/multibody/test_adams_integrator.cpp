@@ -245,5 +245,42 @@ TEST(AdamsIntegrator, BdfOrderAboveFiveOrWithoutNewtonIsRejected) {
   EXPECT_THROW(AdamsIntegrator{p}, std::invalid_argument);
 }
 
+// Events of a run: the oscillator's x = cos 3t falls through 0.5 at t = π/9 (rising event
+// function g = 0.5 - x), the run then jumps the state (x -> -x) and continues from there; a stop
+// time keeps the integrator from stepping past a later discontinuity.
+TEST(AdamsIntegrator, StopsAtARootAndRestartsFromAChangedState) {
+  AdamsProblem p = oscillator(1e-10);
+  p.root = [](double, const double* y) { return 0.5 - y[0]; };
+  AdamsIntegrator integ(p);
+  integ.enableRoot(true);
+  ASSERT_TRUE(integ.advanceTo(1.0)) << integ.error();
+  ASSERT_TRUE(integ.rootFound());
+  const double t_root = M_PI / 9.0;
+  EXPECT_NEAR(integ.time(), t_root, 1e-8);
+  EXPECT_NEAR(integ.y()(0), 0.5, 1e-8);
+  const long steps_before = integ.steps(), jacobians_before = integ.jacobianEvaluations();
+  // Jump: x -> -x (the exact solution is then -cos 3t, passing the jump time).
+  integ.enableRoot(false);
+  Eigen::VectorXd y = integ.y();
+  y = -y;
+  integ.restart(integ.time(), y);
+  integ.setStopTime(0.6);
+  ASSERT_TRUE(integ.advanceTo(1.0)) << integ.error();
+  EXPECT_FALSE(integ.rootFound());
+  EXPECT_DOUBLE_EQ(integ.time(), 0.6);  // stopped at the stop time, not at t_out
+  EXPECT_NEAR(integ.y()(0), -std::cos(1.8), 1e-7);
+  integ.setStopTime(2.0);
+  ASSERT_TRUE(integ.advanceTo(2.0)) << integ.error();
+  EXPECT_NEAR(integ.y()(0), -std::cos(6.0), 1e-7);
+  // Counters keep counting across the restart (CVODE's own start from zero).
+  EXPECT_GT(integ.steps(), steps_before);
+  EXPECT_GT(integ.jacobianEvaluations(), jacobians_before);
+}
+
+TEST(AdamsIntegrator, EnablingAnAbsentEventFunctionIsAnError) {
+  AdamsIntegrator integ(oscillator(1e-6));
+  EXPECT_THROW(integ.enableRoot(true), std::logic_error);
+}
+
 }  // namespace
 }  // namespace rollerdyn

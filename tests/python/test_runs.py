@@ -56,3 +56,24 @@ def test_write_refuses_a_file_as_folder(tmp_path):
         assert "out_dir" in str(e)
     else:
         raise AssertionError("write into a path below a file must fail")
+
+
+def test_start_up_answers_and_friction_warnings_as_the_summary_has_them():
+    # The default scene starts from rest: the start-up answers, their console block and the
+    # report's section; the sizing's start heat is their rotor energy loss.
+    r = rd.simulate(short("balanced-4cart.yaml"), model="reduced")
+    su = r.start_up
+    assert su is not None and su == r.summary["start_up"]
+    assert su["rotor_energy_loss"] > 0
+    assert r.sizing["motor"]["whole_run"]["start_heat"] == su["rotor_energy_loss"]
+    assert "start-up" in str(r).lower() and su["verdict"] in str(r)
+    assert "Start-up" in r._repr_html_()
+    # Guide friction f = 0.3, motor off, from 10.42 rad/s: the self-locking warning reaches
+    # warnings as it reaches summary.json, and friction brings the machine to rest.
+    f = rd.simulate(short("balanced-4cart.yaml", **{"loads.guide_friction.coefficient": 0.3, "motor.enabled": False,
+                                                    "initial.crank_speed": 10.42}), model="reduced")
+    assert f.start_up is None
+    assert f.guide_friction == f.summary["guide_friction"] and f.guide_friction["self_locking_index"] > 0.1
+    assert any("self-locking" in w for w in f.warnings)
+    assert all(w in f.summary["warnings"] for w in f.warnings)
+    assert f.summary["motion"] == "at_rest" and not f.complete

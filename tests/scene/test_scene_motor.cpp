@@ -3,8 +3,10 @@
 // numbers are derived from the catalogue only when the scene gives no Kloss data.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "SceneTestSupport.h"
 #include "scene/SceneParser.h"
@@ -91,6 +93,19 @@ TEST(SceneMotor, EveryModelWordParses) {
   }
   expectSceneError(withMotorKeys("  model: parks"), {"test.yaml:19: motor.model: expected one of: kloss, "
                                                      "kloss_dynamic, circuit, park, got parks"});
+}
+
+// The effects a scene builds (console, summary.json, bench) name the motor by its law.
+TEST(SceneMotor, EffectsNameTheMotorByItsLaw) {
+  for (const char* w : {"kloss", "kloss_dynamic", "circuit", "park"}) {
+    const Scene s = parseSceneText(withMotorKeys(std::string("  model: ") + w + "\n" + kCircuit), "t.yaml");
+    const std::vector<std::string> e = s.effects();
+    EXPECT_EQ(e.front(), std::string(w) + "_motor");
+    EXPECT_EQ(std::count_if(e.begin(), e.end(), [](const std::string& x) { return x.find("motor") != std::string::npos; }),
+              1);
+  }
+  const Scene off = parseSceneText(withMotorKeys("  enabled: false"), "t.yaml");
+  for (const std::string& x : off.effects()) EXPECT_EQ(x.find("motor"), std::string::npos) << x;
 }
 
 TEST(SceneMotor, MachineModelNeedsCircuitOrCatalogue) {

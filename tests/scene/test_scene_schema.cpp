@@ -118,6 +118,7 @@ simulation:
   formulation: constrained
   output_step: 0.01
   reactions: false
+  self_check_interval: 7
   constraint_tolerance: 1.0e-7
   steady_window_revolutions: 3
 initial:
@@ -177,6 +178,22 @@ motor:
     breakdown_torque_ratio: 2.0
     starting_current_ratio: 6.0
     cages: 1
+  start:
+    method: soft_starter
+    t_on: 0.5
+    phase_deg: 30
+    changeover_time: 1.5
+    changeover_gap: 0.04
+    ramp_time: 2.5
+    initial_voltage: 0.4
+    current_limit: 80
+    initial_frequency: 5
+    boost: 0.05
+  stop:
+    t_off: 2.0
+    brake_torque: 150
+    brake_delay: 0.1
+    t_restart: 2.8
 reducer:
   ratio: 12
   efficiency: 0.8
@@ -198,6 +215,7 @@ loads:
   roller_force_direction: as_printed
   guide_friction:
     coefficient: 0.02
+    normal_force: lagged
     normal_force_lag: 0.004
   gravity: 9.8
   velocity_smoothing: 0.01
@@ -206,6 +224,7 @@ reduced:
   kinematics: truncated
   integrator: baranov
   baranov_step_deg: 2
+  guide_normals: quasi_static
 drive:
   type: crank
 cam:
@@ -231,7 +250,8 @@ TEST(SceneSchema, FullSceneCoversTheSchema) {
     if (k.path == "motor.omega_critical" || k.path == "motor.omega_nominal" ||
         k.path == "motor.overload_ratio" ||
         k.path == "sizing.motor_nominal_power" ||  // excludes motor_nominal_torque: test_scene_sizing
-        k.path == "crank.angles_deg")  // the alternative of crank.offset_deg: test_scene_per_cart
+        k.path == "crank.angles_deg" ||  // the alternative of crank.offset_deg: test_scene_per_cart
+        k.path == "motor.start.changeover_speed")  // the changeover's other way (changeover_time)
       continue;
     const std::string leaf = k.path.substr(k.path.rfind('.') + 1);
     EXPECT_NE(std::string(kFullScene).find(leaf + ":"), std::string::npos) << k.path;
@@ -247,6 +267,9 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_EQ(s.simulation.integrator, "CPodes");
   EXPECT_DOUBLE_EQ(s.simulation.output_step, 0.01);
   EXPECT_FALSE(s.simulation.reactions);
+  EXPECT_EQ(s.simulation.self_check_interval, 7);
+  EXPECT_EQ(s.loads.guide_normal_force, GuideNormalForce::Lagged);
+  EXPECT_EQ(s.reduced.guide_normals, ReducedGuideNormals::QuasiStatic);
   EXPECT_DOUBLE_EQ(s.simulation.constraint_tolerance, 1e-7);
   EXPECT_DOUBLE_EQ(s.simulation.steady_window_revolutions, 3.0);
   EXPECT_DOUBLE_EQ(s.initial.crank_angle, 45 * deg);
@@ -300,6 +323,20 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(im.catalogue.breakdown_torque_ratio, 2.0);
   EXPECT_DOUBLE_EQ(im.catalogue.starting_current_ratio, 6.0);
   EXPECT_EQ(im.catalogue.cages, 1);
+  EXPECT_EQ(s.motor_start.method, StartMethod::SoftStarter);
+  EXPECT_DOUBLE_EQ(s.motor_start.t_on, 0.5);
+  EXPECT_DOUBLE_EQ(s.motor_start.phase, 30 * deg);
+  EXPECT_DOUBLE_EQ(s.motor_start.changeover_time, 1.5);
+  EXPECT_DOUBLE_EQ(s.motor_start.changeover_gap, 0.04);
+  EXPECT_DOUBLE_EQ(s.motor_start.ramp_time, 2.5);
+  EXPECT_DOUBLE_EQ(s.motor_start.initial_voltage, 0.4);
+  EXPECT_DOUBLE_EQ(s.motor_start.current_limit, 80.0);
+  EXPECT_DOUBLE_EQ(s.motor_start.initial_frequency, 5.0);
+  EXPECT_DOUBLE_EQ(s.motor_start.boost, 0.05);
+  EXPECT_DOUBLE_EQ(s.motor_stop.t_off, 2.0);
+  EXPECT_DOUBLE_EQ(s.motor_stop.brake_torque, 150.0);
+  EXPECT_DOUBLE_EQ(s.motor_stop.brake_delay, 0.1);
+  EXPECT_DOUBLE_EQ(s.motor_stop.t_restart, 2.8);
   EXPECT_DOUBLE_EQ(s.reducer.ratio, 12.0);
   EXPECT_DOUBLE_EQ(s.reducer.efficiency, 0.8);
   EXPECT_DOUBLE_EQ(s.reducer.inertia, 0.05);

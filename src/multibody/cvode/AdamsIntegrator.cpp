@@ -28,6 +28,9 @@ struct AdamsIntegrator::Impl {
   Eigen::VectorXd y_out;
   double t = 0;
   long rhs_evals = 0;
+  long steps_before = 0, jacobians_before = 0, failures_before = 0;  // counted before the last restart
+  bool root_found = false;
+  double stop_time = 0;
   std::string error;
   std::string rhs_exception;  // what the right-hand side threw, if it did
 
@@ -125,6 +128,17 @@ struct AdamsIntegrator::Impl {
     return 0;
   }
 
+  static int rootFn(realtype t, N_Vector y, realtype* gout, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      gout[0] = self->problem.root(t, NV_DATA_S(y));
+    } catch (const std::exception& ex) {
+      self->rhs_exception = ex.what();
+      return -1;
+    }
+    return std::isfinite(gout[0]) ? 0 : -1;
+  }
+
   static void errHandler(int, const char*, const char* function, char* msg, void* user) {
     static_cast<Impl*>(user)->error = std::string(function ? function : "") + ": " + (msg ? msg : "");
   }
@@ -182,6 +196,7 @@ AdamsIntegrator::AdamsIntegrator(const AdamsProblem& problem) : impl_(new Impl) 
     throw std::invalid_argument("AdamsIntegrator: BDF needs the Newton corrector (newton = true)");
   if (flag == CV_SUCCESS) flag = CVodeSetMaxOrd(m.cv, max_order);
   if (flag == CV_SUCCESS) flag = CVodeSetStopTime(m.cv, problem.stop_time);
+  m.stop_time = problem.stop_time;
   if (flag == CV_SUCCESS && problem.max_step > 0) flag = CVodeSetMaxStep(m.cv, problem.max_step);
   if (flag != CV_SUCCESS) throw std::runtime_error("CVODE setup failed: " + m.error);
 }
@@ -192,6 +207,7 @@ bool AdamsIntegrator::advanceTo(double t_out) {
   Impl& m = *impl_;
   realtype t_ret = m.t;
   const int flag = CVode(m.cv, t_out, m.y, &t_ret, CV_NORMAL);
+  m.root_found = flag == CV_ROOT_RETURN;
   if (flag < 0) {
     char* name = CVodeGetReturnFlagName(flag);
     m.error = std::string(name ? name : "?") + " " + m.error +
@@ -204,23 +220,57 @@ bool AdamsIntegrator::advanceTo(double t_out) {
   return true;
 }
 
+bool AdamsIntegrator::rootFound() const { return impl_->root_found; }
+
+void AdamsIntegrator::setStopTime(double t_stop) {
+  Impl& m = *impl_;
+  m.stop_time = std::min(t_stop, m.problem.stop_time);
+  if (CVodeSetStopTime(m.cv, m.stop_time) != CV_SUCCESS) throw std::runtime_error("CVodeSetStopTime failed: " + m.error);
+}
+
+void AdamsIntegrator::enableRoot(bool on) {
+  Impl& m = *impl_;
+  if (on && !m.problem.root) throw std::logic_error("AdamsIntegrator: no event function to enable");
+  int flag = CVodeRootInit(m.cv, on ? 1 : 0, on ? Impl::rootFn : nullptr);
+  int rising = 1;
+  if (flag == CV_SUCCESS && on) flag = CVodeSetRootDirection(m.cv, &rising);
+  if (flag == CV_SUCCESS && on) flag = CVodeSetNoInactiveRootWarn(m.cv);
+  if (flag != CV_SUCCESS) throw std::runtime_error("CVodeRootInit failed: " + m.error);
+}
+
+void AdamsIntegrator::restart(double t, const Eigen::VectorXd& y) {
+  Impl& m = *impl_;
+  // CVodeReInit zeroes CVODE's counters: keep what they counted so far.
+  m.steps_before = steps();
+  m.jacobians_before = jacobianEvaluations();
+  m.failures_before = newtonConvergenceFailures();
+  Eigen::Map<Eigen::VectorXd>(NV_DATA_S(m.y), y.size()) = y;
+  int flag = CVodeReInit(m.cv, t, m.y);
+  // SUNDIALS 6.4 keeps a stop time once reached; set it again (it must lie ahead of t).
+  if (flag == CV_SUCCESS && m.stop_time > t) flag = CVodeSetStopTime(m.cv, m.stop_time);
+  if (flag != CV_SUCCESS) throw std::runtime_error("CVodeReInit failed: " + m.error);
+  m.t = t;
+  m.y_out = y;
+  m.root_found = false;
+}
+
 double AdamsIntegrator::time() const { return impl_->t; }
 const Eigen::VectorXd& AdamsIntegrator::y() const { return impl_->y_out; }
 long AdamsIntegrator::steps() const {
   long n = 0;
   CVodeGetNumSteps(impl_->cv, &n);
-  return n;
+  return impl_->steps_before + n;
 }
 long AdamsIntegrator::rhsEvaluations() const { return impl_->rhs_evals; }
 long AdamsIntegrator::jacobianEvaluations() const {
   long n = 0;
   if (impl_->LS) CVodeGetNumJacEvals(impl_->cv, &n);
-  return n;
+  return impl_->jacobians_before + n;
 }
 long AdamsIntegrator::newtonConvergenceFailures() const {
   long n = 0;
   CVodeGetNumNonlinSolvConvFails(impl_->cv, &n);
-  return n;
+  return impl_->failures_before + n;
 }
 const std::string& AdamsIntegrator::error() const { return impl_->error; }
 

@@ -58,6 +58,10 @@ struct AdamsProblem {
   bool newton = true;         // Newton corrector on a dense Jacobian (structure below);
                               // false: fixed-point (functional) iteration
   JacobianStructure jacobian; // Newton only; empty: difference quotients for every column
+  // Optional event function: while enabled (AdamsIntegrator::enableRoot), advanceTo stops where
+  // g(t, y) crosses zero upwards, located by CVODE's root finding on its interpolant (e.g. a rotor
+  // speed reaching a switching speed: g = ω - ω_switch).
+  std::function<double(double t, const double* y)> root;
 };
 
 class AdamsIntegrator {
@@ -70,6 +74,16 @@ class AdamsIntegrator {
   // Advances to t_out (interpolating within the last step, CVODE's normal mode) and leaves the
   // state at t_out in y(). False on an integrator failure (message in error()).
   bool advanceTo(double t_out);
+  // After advanceTo: whether it stopped short of t_out at a zero of the event function.
+  bool rootFound() const;
+  // Never integrate past t_stop (<= the problem's stop_time): a discontinuity there (an event of
+  // the run) is then never stepped across. advanceTo returns at t_stop when t_out lies beyond.
+  void setStopTime(double t_stop);
+  // Event function on or off (needs AdamsProblem::root).
+  void enableRoot(bool on);
+  // Continues from (t, y) as from a new initial value (after the run changed y or the equations
+  // discontinuously at t): the method restarts at order 1. Counters keep counting.
+  void restart(double t, const Eigen::VectorXd& y);
   double time() const;
   const Eigen::VectorXd& y() const;
   long steps() const;

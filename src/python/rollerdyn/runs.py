@@ -38,7 +38,9 @@ class Result:
     - ``timeseries``, ``reactions``: DataFrames with the columns of timeseries.csv and
       reactions.csv (bare names; units in ``df.attrs["units"]`` and ``units``); reactions is None
       when the run computed none (simulation.reactions: false).
-    - ``summary``: summary.json as a dict (the same keys); ``sizing`` its drive-sizing answers.
+    - ``summary``: summary.json as a dict (the same keys); ``sizing`` its drive-sizing answers,
+      ``start_up`` its start-up and stopping answers, ``guide_friction`` the friction's margins;
+      ``warnings`` every warning (the friction's self-locking and dead-centre ones included).
     - ``write(dir)``: the files ``simulate --out dir`` writes, byte for byte.
     """
 
@@ -139,6 +141,18 @@ class Result:
         """The drive-sizing answers (summary["sizing"]): motor, flywheel, coupling, joints."""
         return self.summary["sizing"]
 
+    @property
+    def start_up(self):
+        """The start-up and stopping answers (summary["start_up"]): whether and how fast the drive
+        starts, its peaks, the rotor's energy loss, the stopping time; None without a motor."""
+        return self.summary["start_up"]
+
+    @property
+    def guide_friction(self):
+        """The guide friction's margins (summary["guide_friction"]): the normal forces used, the
+        self-locking index, the smallest transmission angle, the friction work."""
+        return self.summary["guide_friction"]
+
     def write(self, out_dir, figures=False):
         """Writes timeseries.csv, reactions.csv and summary.json into ``out_dir`` (created), as
         ``rollerdyn simulate --out out_dir`` does (with modes=True also modes.json, frozen.csv,
@@ -150,7 +164,7 @@ class Result:
         return out_dir
 
     def __str__(self):
-        """The summary and drive-sizing table ``rollerdyn simulate`` prints."""
+        """The summary, start-up and drive-sizing tables ``rollerdyn simulate`` prints."""
         return self._d.text()
 
     def __repr__(self):

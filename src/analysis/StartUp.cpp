@@ -1,0 +1,371 @@
+#include "analysis/StartUp.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "analysis/StallDetector.h"
+#include "analysis/SteadyState.h"
+#include "motor/Supply.h"
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kRunUpFraction = 0.95;  // of the steady mean crank speed
+
+const char* methodWords(StartMethod m) {
+  switch (m) {
+    case StartMethod::DirectOnLine: return "direct on line";
+    case StartMethod::StarDelta: return "star-delta";
+    case StartMethod::SoftStarter: return "soft starter";
+    case StartMethod::FrequencyConverter: return "frequency converter (V/f ramp)";
+  }
+  return "?";
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// A column of the table, or empty when absent.
+std::vector<double> columnOr(const Table& t, const std::string& name) {
+  return t.has(name) ? t.column(name) : std::vector<double>{};
+}
+
+// ∫ f dt over rows [a, b) by the trapezoidal rule (pairs of rows both inside).
+template <class F>
+double integrate(const std::vector<double>& t, std::size_t a, std::size_t b, F f) {
+  double sum = 0;
+  for (std::size_t i = a + 1; i < b && i < t.size(); ++i) sum += 0.5 * (f(i - 1) + f(i)) * (t[i] - t[i - 1]);
+  return sum;
+}
+
+std::size_t firstRowAtOrAfter(const std::vector<double>& t, double when) {
+  return std::size_t(std::lower_bound(t.begin(), t.end(), when - 1e-12) - t.begin());
+}
+
+// The joint reactions of one kind at row i: the largest |force| over the carts, and its column.
+struct JointKind {
+  const char* joint;
+  std::vector<std::vector<double>> x, y;  // per cart: component columns (y empty: a scalar force)
+  std::vector<std::string> names;
+};
+
+std::vector<JointKind> jointKinds(const Table& r) {
+  std::vector<JointKind> kinds;
+  auto scalar = [&](const char* joint, const std::string& prefix) {
+    JointKind k{joint, {}, {}, {}};
+    for (int j = 1; r.has(prefix + std::to_string(j)); ++j) {
+      k.x.push_back(r.column(prefix + std::to_string(j)));
+      k.names.push_back(prefix + std::to_string(j));
+    }
+    if (!k.x.empty()) kinds.push_back(std::move(k));
+  };
+  scalar("guide_roller_front", "N_front_");
+  scalar("guide_roller_rear", "N_rear_");
+  scalar("rod_force", "F_rod_");
+  JointKind pin{"crank_pin", {}, {}, {}};
+  for (int j = 1; r.has("crankpin_x_" + std::to_string(j)); ++j) {
+    pin.x.push_back(r.column("crankpin_x_" + std::to_string(j)));
+    pin.y.push_back(r.column("crankpin_y_" + std::to_string(j)));
+    pin.names.push_back("crankpin_x_" + std::to_string(j) + "|crankpin_y_" + std::to_string(j));
+  }
+  if (!pin.x.empty()) kinds.push_back(std::move(pin));
+  if (r.has("bearing_x") && r.has("bearing_y"))
+    kinds.push_back({"main_bearing", {r.column("bearing_x")}, {r.column("bearing_y")}, {"bearing_x|bearing_y"}});
+  return kinds;
+}
+
+double magnitude(const JointKind& k, std::size_t cart, std::size_t i) {
+  const double x = k.x[cart][i];
+  return k.y.empty() ? std::abs(x) : std::hypot(x, k.y[cart][i]);
+}
+
+// Kloss's torque at standstill against the catalogue's, for the notes.
+std::string startingTorqueComparison(const Scene& sc, double kloss_start_rotor) {
+  const MotorCatalogue& c = sc.induction.catalogue;
+  if (c.given() && c.starting_torque_ratio > 0) {
+    const double M_s = c.starting_torque_ratio * c.nominalTorque();
+    return "Kloss's formula gives " + fmt("%.4g", kloss_start_rotor) + " N·m at standstill against the catalogue's M_s = " +
+           fmt("%.4g", M_s) + " N·m (" + fmt("%.2g", M_s / kloss_start_rotor) +
+           "x; motor.catalogue.starting_torque_ratio)";
+  }
+  return "Kloss's formula gives " + fmt("%.4g", kloss_start_rotor) +
+         " N·m at standstill, typically about a third of a catalogue motor's starting torque (the rotor's deep-bar "
+         "effect, which Kloss fitted to the rated and breakdown points leaves out)";
+}
+
+void addLawNotes(const Scene& sc, const MotorLaw& law, StartUp& r) {
+  const double M0 = law.steadyTorque(SupplyState{}, 0.0);
+  const std::string advice =
+      "For start-up answers use the catalogue model: motor.model: park (the space-phasor machine, with the switching "
+      "transient) or circuit (quasi-static), with the motor.catalogue keys (docs/startup.md).";
+  switch (sc.induction.model) {
+    case MotorModel::Kloss:
+      r.notes.push_back(
+          "The static Kloss law cannot show the switching transient (the supply-frequency torque oscillation of "
+          "several times the nominal torque right after switching on, which is what loads couplings and joints) and "
+          "understates the starting torque: " +
+          startingTorqueComparison(sc, M0) + ". " + advice);
+      break;
+    case MotorModel::KlossDynamic:
+      r.notes.push_back(
+          "The dynamic Kloss characteristic shows the electromagnetic lag of the torque but not the supply-frequency "
+          "oscillation after switching on, and its starting torque is Kloss's: " +
+          startingTorqueComparison(sc, M0) + ". " + advice);
+      break;
+    case MotorModel::Circuit:
+      r.notes.push_back(
+          "The equivalent circuit is quasi-static: it honours the catalogue's starting torque but shows no switching "
+          "transient (motor.model: park does).");
+      break;
+    case MotorModel::Park: {
+      const double dt = sc.simulation.output_step;
+      if (dt > 1e-3)
+        r.notes.push_back("I²t, the current RMS and the rotor loss are integrated over the output rows (Δt = " +
+                          fmt("%.3g", dt * 1e3) +
+                          " ms); the switching transient oscillates at the supply frequency: set "
+                          "simulation.output_step to 1 ms or less for these integrals and the transient's peaks.");
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+double largestSteadyTorque(const MotorLaw& law, const SupplyState& supply) {
+  const double w_top = law.synchronousSpeed() * supply.frequency;
+  constexpr int kScan = 400;
+  int best = 0;
+  double best_M = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= kScan; ++i) {
+    const double M = law.steadyTorque(supply, w_top * i / kScan);
+    if (M > best_M) best_M = M, best = i;
+  }
+  // Golden-section search on the bracket around the best scan point.
+  double a = w_top * std::max(0, best - 1) / kScan, b = w_top * std::min(kScan, best + 1) / kScan;
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double c = b - g * (b - a), d = a + g * (b - a);
+  double Mc = law.steadyTorque(supply, c), Md = law.steadyTorque(supply, d);
+  for (int it = 0; it < 80 && b - a > 1e-12 * w_top; ++it) {
+    if (Mc > Md) {
+      b = d, d = c, Md = Mc, c = b - g * (b - a), Mc = law.steadyTorque(supply, c);
+    } else {
+      a = c, c = d, Mc = Md, d = a + g * (b - a), Md = law.steadyTorque(supply, d);
+    }
+  }
+  return std::max({best_M, Mc, Md});
+}
+
+StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* law, const StartLoad* load,
+                       const std::string& motion) {
+  StartUp r;
+  const Table& ts = run.timeseries;
+  if (!sc.motor.enabled || !law || !ts.has("t") || !ts.has("omega_crank") || ts.rows.size() < 2) return r;
+  const Supply supply = makeSupply(sc, law);
+  const std::vector<double> t = ts.column("t"), w = ts.column("omega_crank");
+  r.t_on = sc.motor_start.t_on;
+  if (r.t_on > t.back()) return r;  // switched on after the end of the run
+  r.applicable = true;
+  r.supply_switches = !supply.constant();
+  r.method = methodWords(sc.motor_start.method);
+  r.motor_law = law->description();
+  r.model_word = toString(sc.induction.model);
+  const double u = sc.reducer.ratio, eta = sc.reducer.efficiency;
+
+  r.starting_torque_crank = law->steadyTorque(supply.atSwitchOn(), 0.0) * u * eta;
+  r.starting_torque_rated_crank = law->steadyTorque(SupplyState{}, 0.0) * u * eta;
+  const bool kloss_curve = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
+  r.largest_torque_crank =
+      (kloss_curve ? sc.motor.breakdown_torque : largestSteadyTorque(*law, SupplyState{})) * u * eta;
+  r.load_torque_start = load ? load->at_start_angle : kNaN;
+  r.load_torque_mean = load ? load->revolution_mean : kNaN;
+
+  // The steady window: on the rows before the switch-off.
+  r.t_off = std::isfinite(sc.motor_stop.t_off) ? sc.motor_stop.t_off : kNaN;
+  std::size_t n_running = t.size();  // rows before the switch-off
+  if (std::isfinite(r.t_off)) n_running = std::min(n_running, firstRowAtOrAfter(t, r.t_off));
+  const SteadyState ss = detectRunningSteadyState(ts, sc.simulation.steady_window_revolutions, r.t_off);
+  r.steady_reached = ss.reached;
+  r.steady_begin = ss.t_begin;
+  r.steady_end = ss.t_end;
+  std::size_t w0 = ss.row_begin, w1 = std::min(ss.row_end, t.size());
+  if (!ss.reached && !ss.revolutions.empty()) {
+    // No steady state within the run: its last whole revolution stands in for it (said in the notes).
+    r.steady_begin = ss.revolutions.back().t_begin;
+    r.steady_end = ss.revolutions.back().t_end;
+    w0 = firstRowAtOrAfter(t, r.steady_begin);
+    w1 = std::min(t.size(), firstRowAtOrAfter(t, r.steady_end) + 1);
+    r.notes.push_back("The run reaches no steady state (the last revolutions' mean crank speeds differ by more "
+                      "than 1e-3): its last whole revolution, t = " + fmt("%.4g", r.steady_begin) + " ... " +
+                      fmt("%.4g", r.steady_end) + " s, stands in for the steady window.");
+  }
+  const double window_time = w1 > w0 + 1 ? t[w1 - 1] - t[w0] : 0.0;
+  r.steady_mean_speed = window_time > 0 ? integrate(t, w0, w1, [&](std::size_t i) { return w[i]; }) / window_time : kNaN;
+  double window_min = std::numeric_limits<double>::infinity();
+  for (std::size_t i = w0; i < w1; ++i) window_min = std::min(window_min, w[i]);
+
+  // Run-up: first crossing of 95 % of the steady mean after the switch-on.
+  const std::size_t i_on = firstRowAtOrAfter(t, r.t_on);
+  r.run_up_time = kNaN;
+  // Turning: the crank turns one way in the window, faster than the stall rule's creep limit
+  // (StallDetector.h: 1 % of the synchronous crank speed ω0/u).
+  const double creep = StallDetector::kSpeedFraction * sc.motor.omega_sync / u;
+  bool turning = std::isfinite(r.steady_mean_speed) && r.steady_mean_speed > creep && window_min > 0;
+  // The run's motion, where known, decides (RunMotion.h): a turning crank may dip backwards at a
+  // dead centre; a stalled, rocking or still starting one does not turn.
+  if (motion == "turning") turning = std::isfinite(r.steady_mean_speed) && r.steady_mean_speed > creep;
+  else if (!motion.empty() && motion != "unknown") turning = false;
+  r.still_starting = motion == "starting";
+  if (turning) {
+    const double target = kRunUpFraction * r.steady_mean_speed;
+    for (std::size_t i = std::max<std::size_t>(i_on, 1); i < n_running; ++i)
+      if (w[i] >= target) {
+        const double a = w[i] > w[i - 1] && i > i_on ? (target - w[i - 1]) / (w[i] - w[i - 1]) : 1.0;
+        r.run_up_time = t[i - 1] + std::clamp(a, 0.0, 1.0) * (t[i] - t[i - 1]) - r.t_on;
+        break;
+      }
+  }
+  r.starts = turning && std::isfinite(r.run_up_time);
+
+  // The start interval [t_on, steady window begin).
+  r.start_end = r.steady_begin > r.t_on ? r.steady_begin
+                                        : (n_running == 0 ? t.back() : t[n_running - 1]);
+  const std::size_t s0 = i_on, s1 = std::max(s0 + 1, firstRowAtOrAfter(t, r.start_end) + 1);
+  const std::size_t s1c = std::min(s1, t.size());
+  auto peakOf = [&](const std::vector<double>& c, std::size_t a, std::size_t b, bool absolute, bool lowest = false) {
+    double m = lowest ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+    for (std::size_t i = a; i < b && i < c.size(); ++i) {
+      const double v = absolute ? std::abs(c[i]) : c[i];
+      m = lowest ? std::min(m, v) : std::max(m, v);
+    }
+    return std::isfinite(m) ? m : kNaN;
+  };
+  const std::vector<double> M = columnOr(ts, "motor_torque"), C = columnOr(ts, "coupling_torque");
+  r.motor_torque_peak = peakOf(M, s0, s1c, false);
+  r.motor_torque_min = peakOf(M, s0, s1c, false, true);
+  r.motor_torque_steady_peak = peakOf(M, w0, w1, true);
+  r.coupling_torque_peak = peakOf(C, s0, s1c, true);
+  r.coupling_torque_steady_peak = peakOf(C, w0, w1, true);
+
+  // Joints (the reactions table shares the timeseries' output grid).
+  const Table& rx = run.reactions;
+  if (rx.rows.size() == ts.rows.size())
+    for (const JointKind& k : jointKinds(rx)) {
+      StartJointPeak p;
+      p.joint = k.joint;
+      double best = -1, steady = 0;
+      for (std::size_t j = 0; j < k.x.size(); ++j) {
+        for (std::size_t i = s0; i < s1c; ++i)
+          if (magnitude(k, j, i) > best) best = magnitude(k, j, i), p.column = k.names[j];
+        for (std::size_t i = w0; i < w1; ++i) steady = std::max(steady, magnitude(k, j, i));
+      }
+      p.start_peak = best;
+      p.steady_peak = steady;
+      p.ratio = steady > 0 ? best / steady : kNaN;
+      r.joints.push_back(p);
+    }
+
+  // Stator current over the start.
+  const std::vector<double> I = columnOr(ts, "stator_current");
+  r.current_peak = r.current_rms = r.current_i2t = r.current_steady_rms = kNaN;
+  if (!I.empty()) {
+    r.current_peak = peakOf(I, s0, s1c, true);
+    r.current_i2t = integrate(t, s0, s1c, [&](std::size_t i) { return I[i] * I[i]; });
+    const double T = t[s1c - 1] - t[s0];
+    r.current_rms = T > 0 ? std::sqrt(r.current_i2t / T) : kNaN;
+    if (window_time > 0)
+      r.current_steady_rms = std::sqrt(integrate(t, w0, w1, [&](std::size_t i) { return I[i] * I[i]; }) / window_time);
+  }
+  // Rotor loss: slip power M·(ω0·f/f_n - ω_r) while connected.
+  const std::vector<double> wm = columnOr(ts, "omega_motor"), F = columnOr(ts, "supply_frequency_ratio"),
+                            U = columnOr(ts, "supply_voltage_ratio");
+  r.rotor_energy_loss = kNaN;
+  if (!M.empty() && !wm.empty()) {
+    const double w0_sync = sc.motor.omega_sync;
+    r.rotor_energy_loss = integrate(t, s0, s1c, [&](std::size_t i) {
+      const bool connected = U.empty() ? true : U[i] > 0;
+      if (!connected) return 0.0;
+      const double f = F.empty() ? 1.0 : F[i];
+      return M[i] / (u * eta) * (w0_sync * f - wm[i] * u);
+    });
+  }
+
+  // Stopping.
+  r.stopping_time = r.run_out_revolutions = r.run_out_cart_path = kNaN;
+  if (std::isfinite(r.t_off) && r.t_off <= t.back()) {
+    const double limit = StallDetector::kSpeedFraction * sc.motor.omega_sync / u;
+    const std::size_t i_off = firstRowAtOrAfter(t, r.t_off);
+    const double t_restart = sc.motor_stop.t_restart;
+    std::size_t i_stop = t.size() - 1;
+    for (std::size_t i = i_off; i < t.size() && t[i] < t_restart; ++i) {
+      i_stop = i;
+      if (std::abs(w[i]) <= limit) {
+        r.stopping_time = t[i] - r.t_off;
+        break;
+      }
+    }
+    if (ts.has("phi_crank")) {
+      const std::vector<double> phi = ts.column("phi_crank");
+      r.run_out_revolutions = std::abs(phi[i_stop] - phi[i_off]) / (2 * M_PI);
+    }
+    double path = 0;
+    for (int j = 1; ts.has("v_cart_" + std::to_string(j)); ++j) {
+      const std::vector<double> v = ts.column("v_cart_" + std::to_string(j));
+      path = std::max(path, integrate(t, i_off, i_stop + 1, [&](std::size_t i) { return std::abs(v[i]); }));
+    }
+    r.run_out_cart_path = path;
+    if (std::isnan(r.stopping_time))
+      r.notes.push_back(std::isfinite(t_restart) && t_restart <= t.back()
+                            ? "The motor was switched on again at t = " + fmt("%.4g", t_restart) +
+                                  " s before the machine came to rest (a restart at speed); the run-out is counted up to then."
+                            : "The machine had not come to rest when the run ended; the run-out is counted up to the end.");
+  }
+
+  // Verdict.
+  const std::string at_start = " at the crank (the motor law's torque at standstill under the supply at switch-on, " +
+                               r.method + ", × u·η)";
+  if (r.starts) {
+    r.verdict = "the drive starts: the crank reaches 95 % of its steady mean speed " + fmt("%.4g", r.steady_mean_speed) +
+                " rad/s " + fmt("%.3g", r.run_up_time) + " s after switch-on";
+  } else if (r.still_starting) {
+    r.verdict = "the drive is still starting when the run ends: the crank gets over its dead centres but has not "
+                "settled (its speed still changes sign within a revolution), so no run-up time can be given yet: "
+                "run longer (simulation.t_end)";
+  } else if (std::isfinite(r.load_torque_start) && r.starting_torque_crank <= r.load_torque_start) {
+    r.verdict = "the drive does not start: its starting torque " + fmt("%.4g", r.starting_torque_crank) + " N·m" +
+                at_start + " is below the load torque " + fmt("%.4g", r.load_torque_start) +
+                " N·m at the start angle " + fmt("%.4g", sc.initial.crank_angle * 180 / M_PI) + " deg";
+  } else if (std::isfinite(r.load_torque_mean) && r.largest_torque_crank <= r.load_torque_mean) {
+    r.verdict = "the drive does not run up: the motor's largest torque " + fmt("%.4g", r.largest_torque_crank) +
+                " N·m at the crank is below the load averaged over a revolution, " + fmt("%.4g", r.load_torque_mean) +
+                " N·m: no steady running is possible";
+  } else if (sc.motor_start.method == StartMethod::StarDelta && std::isfinite(sc.motor_start.changeover_speed) &&
+             (wm.empty() || peakOf(wm, 0, wm.size(), false) * u < sc.motor_start.changeover_speed)) {
+    r.verdict = "the drive does not run up: the changeover speed " + fmt("%.4g", sc.motor_start.changeover_speed) +
+                " rad/s was never reached in star (the star torque is a third of the delta torque)";
+  } else if (!turning) {
+    r.verdict = "the drive does not reach a steady turning motion within the run: the motor can break away (" +
+                fmt("%.4g", r.starting_torque_crank) + " N·m against " + fmt("%.4g", r.load_torque_start) +
+                " N·m at the start angle) and carry the mean load, so the load peaks near a dead centre together "
+                "with the inertia hold it back";
+  } else {
+    r.verdict = "the crank does not reach 95 % of its steady mean speed after switch-on within the run";
+  }
+  r.from_rest = !(r.t_on <= 0 && sc.initial.crank_speed != 0);
+  if (!r.from_rest)
+    r.notes.insert(r.notes.begin(),
+                   "The run begins with the machine already turning (initial.crank_speed = " +
+                       fmt("%.4g", sc.initial.crank_speed) +
+                       " rad/s) and the motor running: these answers describe no start from rest (set "
+                       "initial.crank_speed: 0 for one).");
+  addLawNotes(sc, *law, r);
+  return r;
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,100 @@
+// The start-up and stopping answers of one run, computed once from its tables (so both models get
+// the same figures from the same columns) with the scene's motor law (motor.model) and starting
+// method (motor.start, motor.stop):
+//   - does the drive start, and if not, why: the law's torque at standstill under the supply at
+//     switch-on (MotorLaw::steadyTorque at ω_r = 0, × u·η) against the load torque at the start
+//     angle, and the law's largest torque against the load averaged over a revolution;
+//   - the run-up time: from the switch-on until the crank first reaches 95 % of the steady mean
+//     crank speed;
+//   - the peaks during the start against the steady state's: motor torque (largest and most
+//     negative), |coupling torque|, and the joint reactions of every kind;
+//   - the stator current (where the law has one): peak, RMS and I²t over the start;
+//   - the rotor energy loss of the start, ∫ M·(ω0·f/f_n - ω_r) dt: the slip power, which for a
+//     start without load equals J·ω0²/2, the classical result (J the inertia at the rotor);
+//   - after a switch-off: the stopping time and how far the crank and the carts run on.
+//
+// Intervals. The start runs from the switch-on t_on to the beginning of the steady window; the
+// steady window is that of SteadyState.h found on the rows before the switch-off (the coast-down
+// after t_off is no steady state). Integrals over time use the trapezoidal rule on the output rows
+// (simulation.output_step): a supply-frequency transient (20 ms period at 50 Hz) needs an output
+// step of 1 ms or less for I²t and the rotor loss to be accurate to a few per cent.
+//
+// Notation: u reducer ratio, η reducer efficiency, ω_r rotor speed, ω0 synchronous rotor speed,
+// M motor torque at the rotor (the timeseries' motor_torque is M·u·η at the crank).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "analysis/RunMotion.h"
+#include "analysis/RunResult.h"
+#include "motor/MotorLaw.h"
+#include "scene/Scene.h"
+
+namespace rollerdyn {
+
+// One kind of joint: the largest |force| during the start and in the steady window [N].
+struct StartJointPeak {
+  std::string joint;      // guide_roller_front, guide_roller_rear, rod_force, crank_pin, main_bearing
+  std::string column;     // reactions column of the largest start value (crank pin, bearing: x|y resultant)
+  double start_peak = 0;  // [N]
+  double steady_peak = 0; // [N]
+  double ratio = 0;       // start_peak / steady_peak [-]
+};
+
+// Every double is NaN when it does not apply or cannot be computed.
+struct StartUp {
+  bool applicable = false;      // a motor is switched on within the run
+  std::string method;           // starting method, in words
+  std::string motor_law;        // MotorLaw::description()
+  std::string model_word;       // motor.model: kloss, kloss_dynamic, circuit, park
+  double t_on = 0;              // switch-on [s]
+  bool supply_switches = false; // the starting method changes the supply during the run (Supply::constant false)
+  bool from_rest = true;        // the machine is at rest when the motor is switched on at t = 0
+                                // (false: the run begins already turning, initial.crank_speed)
+  // Whether it can start (from the law and the loads, before looking at the run).
+  double starting_torque_crank = 0;        // steadyTorque(supply at switch-on, ω_r = 0)·u·η [N·m]
+  double starting_torque_rated_crank = 0;  // the same under the rated supply [N·m]
+  double largest_torque_crank = 0;         // max over ω_r of steadyTorque(rated)·u·η [N·m]
+  double load_torque_start = 0;            // load at the start angle (StartLoad) [N·m at the crank]
+  double load_torque_mean = 0;             // load averaged over a revolution [N·m at the crank]
+  // What the run did.
+  bool starts = false;          // the crank reached 95 % of the steady mean speed
+  bool still_starting = false;  // the run ended before the drive settled (motion "starting",
+                                // RunMotion.h): whether it starts is not known yet
+  std::string verdict;          // one or two sentences: starts in ..., or does not start because ...
+  double steady_mean_speed = 0; // mean crank speed of the steady window [rad/s]
+  bool steady_reached = false;  // SteadyState::reached for the window used
+  double steady_begin = 0, steady_end = 0;  // the steady window [s]
+  double run_up_time = 0;       // t(ω_crank ≥ 0.95·steady mean) - t_on [s]
+  double start_end = 0;         // end of the start interval = steady window begin [s]
+  // Peaks, start against steady.
+  double motor_torque_peak = 0, motor_torque_min = 0;  // largest and most negative M·u·η in the start [N·m, crank]
+  double motor_torque_steady_peak = 0;                 // max |M·u·η| in the steady window [N·m]
+  double coupling_torque_peak = 0, coupling_torque_steady_peak = 0;  // max |coupling torque| [N·m]
+  std::vector<StartJointPeak> joints;
+  // Stator current over the start (laws with a current).
+  double current_peak = 0, current_rms = 0, current_i2t = 0;  // [A], [A], [A²·s]
+  double current_steady_rms = 0;                              // [A]
+  double rotor_energy_loss = 0;  // ∫ M·(ω0·f/f_n - ω_r) dt over the start, while connected [J]
+  // Stopping.
+  double t_off = 0;                  // switch-off [s]; NaN: never
+  double stopping_time = 0;          // until |ω_crank| ≤ 1 % of ω0/u [s]; NaN: not within the run
+  double run_out_revolutions = 0;    // crank revolutions from t_off to the stop (or the run's end) [-]
+  double run_out_cart_path = 0;      // largest distance a cart travels in that time [m]
+  std::vector<std::string> notes;    // what the law cannot show; approximations named
+};
+
+// `law`: the scene's motor law (null: none, e.g. the motor disabled); `load`: the load torques at
+// the start (studies/StartLoad.h), may be null; `motion`: the run's motion (RunMotion.h, found on
+// the same running window) when known, so that the answers never contradict it: a stalled or
+// rocking drive does not start, a drive still "starting" has no run-up time yet, a "turning"
+// crank may dip backwards at a dead centre; "" judges from the rows alone.
+StartUp computeStartUp(const Scene& scene, const RunResult& run, const MotorLaw* law, const StartLoad* load,
+                       const std::string& motion = "");
+
+// The largest steady torque of a law under `supply` over rotor speeds 0 ... ω0·f [N·m at the
+// rotor]: a scan of 400 speeds refined by golden-section search.
+double largestSteadyTorque(const MotorLaw& law, const SupplyState& supply);
+
+}  // namespace rollerdyn

@@ -1,0 +1,147 @@
+#include "analysis/StartUpSummary.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace rollerdyn {
+
+namespace {
+
+using nlohmann::json;
+
+json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+double ratio(double a, double b) { return std::isfinite(a) && std::isfinite(b) && b > 0 ? a / b : NAN; }
+
+std::string f(const json& v, const char* format, double scale = 1.0) {
+  if (!v.is_number()) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v.get<double>() * scale);
+  return buf;
+}
+
+const json& at(const json& j, const char* k) {
+  static const json null_json;
+  return j.is_object() && j.contains(k) ? j.at(k) : null_json;
+}
+
+const char* jointWords(const std::string& joint) {
+  if (joint == "guide_roller_front") return "guide roller, front";
+  if (joint == "guide_roller_rear") return "guide roller, rear";
+  if (joint == "rod_force") return "rod force";
+  if (joint == "crank_pin") return "crank pin";
+  if (joint == "main_bearing") return "main bearing";
+  return "?";
+}
+
+}  // namespace
+
+json startUpJson(const StartUp& s) {
+  if (!s.applicable) return nullptr;
+  json j;
+  j["method"] = s.method;
+  j["motor_law"] = s.motor_law;
+  j["motor_model"] = s.model_word;
+  j["t_on"] = s.t_on;
+  j["from_rest"] = s.from_rest;
+  j["supply_switches"] = s.supply_switches;
+  j["starts"] = s.starts;
+  j["still_starting"] = s.still_starting;
+  j["verdict"] = s.verdict;
+  j["starting_torque_crank"] = num(s.starting_torque_crank);
+  j["starting_torque_rated_crank"] = num(s.starting_torque_rated_crank);
+  j["largest_torque_crank"] = num(s.largest_torque_crank);
+  j["load_torque_start"] = num(s.load_torque_start);
+  j["load_torque_mean"] = num(s.load_torque_mean);
+  j["steady"] = {{"mean_speed", num(s.steady_mean_speed)},
+                 {"reached", s.steady_reached},
+                 {"t_begin", num(s.steady_begin)},
+                 {"t_end", num(s.steady_end)}};
+  j["run_up_time"] = num(s.run_up_time);
+  j["start_end"] = num(s.start_end);
+  j["motor_torque"] = {{"peak", num(s.motor_torque_peak)},
+                       {"min", num(s.motor_torque_min)},
+                       {"steady_peak", num(s.motor_torque_steady_peak)},
+                       {"ratio", num(ratio(s.motor_torque_peak, s.motor_torque_steady_peak))}};
+  j["coupling_torque"] = {{"peak", num(s.coupling_torque_peak)},
+                          {"steady_peak", num(s.coupling_torque_steady_peak)},
+                          {"ratio", num(ratio(s.coupling_torque_peak, s.coupling_torque_steady_peak))}};
+  json joints = json::object();
+  for (const StartJointPeak& p : s.joints)
+    joints[p.joint] = {{"peak", num(p.start_peak)},
+                       {"steady_peak", num(p.steady_peak)},
+                       {"ratio", num(p.ratio)},
+                       {"column", p.column}};
+  j["joints"] = joints;
+  j["stator_current"] = std::isfinite(s.current_peak) ? json{{"peak", num(s.current_peak)},
+                                                             {"rms", num(s.current_rms)},
+                                                             {"i2t", num(s.current_i2t)},
+                                                             {"steady_rms", num(s.current_steady_rms)}}
+                                                       : json(nullptr);
+  j["rotor_energy_loss"] = num(s.rotor_energy_loss);
+  j["stop"] = std::isfinite(s.t_off) ? json{{"t_off", s.t_off},
+                                            {"stopping_time", num(s.stopping_time)},
+                                            {"run_out_revolutions", num(s.run_out_revolutions)},
+                                            {"run_out_cart_path", num(s.run_out_cart_path)}}
+                                      : json(nullptr);
+  j["notes"] = s.notes;
+  return j;
+}
+
+std::string startUpText(const json& summary) {
+  const json& s = at(summary, "start_up");
+  if (!s.is_object()) return "";
+  std::ostringstream o;
+  o << "start-up     " << at(s, "method").get<std::string>() << " at t = " << f(at(s, "t_on"), "%.4g")
+    << " s, motor law: " << at(s, "motor_law").get<std::string>() << "\n";
+  o << "             " << at(s, "verdict").get<std::string>() << "\n";
+  o << "  starting torque at the crank  " << f(at(s, "starting_torque_crank"), "%.4g")
+    << " N·m at switch-on (rated supply " << f(at(s, "starting_torque_rated_crank"), "%.4g") << ", largest "
+    << f(at(s, "largest_torque_crank"), "%.4g") << ") against a load of " << f(at(s, "load_torque_start"), "%.4g")
+    << " N·m at the start angle, " << f(at(s, "load_torque_mean"), "%.4g") << " N·m mean\n";
+  const json& st = at(s, "steady");
+  o << "  run-up time (to 95 % of " << f(at(st, "mean_speed"), "%.4g") << " rad/s)  "
+    << f(at(s, "run_up_time"), "%.3g") << " s; start = t_on ... " << f(at(s, "start_end"), "%.4g")
+    << " s, steady window " << f(at(st, "t_begin"), "%.4g") << " ... " << f(at(st, "t_end"), "%.4g") << " s"
+    << (at(st, "reached").is_boolean() && !at(st, "reached").get<bool>() ? " (steady state NOT reached)" : "")
+    << "\n";
+  const json &m = at(s, "motor_torque"), &c = at(s, "coupling_torque");
+  o << "  motor torque M·u·η            peak " << f(at(m, "peak"), "%.4g") << ", most negative "
+    << f(at(m, "min"), "%.4g") << " N·m in the start; steady peak |M| " << f(at(m, "steady_peak"), "%.4g")
+    << " N·m (x" << f(at(m, "ratio"), "%.3g") << ")\n";
+  o << "  coupling torque |M|           peak " << f(at(c, "peak"), "%.4g") << " N·m in the start, steady "
+    << f(at(c, "steady_peak"), "%.4g") << " N·m (x" << f(at(c, "ratio"), "%.3g") << ")\n";
+  const json& joints = at(s, "joints");
+  for (const char* kind : {"guide_roller_front", "guide_roller_rear", "rod_force", "crank_pin", "main_bearing"}) {
+    const json& p = at(joints, kind);
+    if (!p.is_object()) continue;
+    const std::string words = jointWords(kind);
+    o << "  " << words << std::string(30 - words.size(), ' ') << "peak " << f(at(p, "peak"), "%.4g", 1e-3)
+      << " kN in the start, steady " << f(at(p, "steady_peak"), "%.4g", 1e-3) << " kN (x" << f(at(p, "ratio"), "%.3g")
+      << ")\n";
+  }
+  const json& I = at(s, "stator_current");
+  if (I.is_object())
+    o << "  stator current (phase, RMS)   peak " << f(at(I, "peak"), "%.4g") << " A, RMS over the start "
+      << f(at(I, "rms"), "%.4g") << " A (steady " << f(at(I, "steady_rms"), "%.4g") << " A), I²t "
+      << f(at(I, "i2t"), "%.4g") << " A²·s\n";
+  o << "  rotor energy loss of the start " << f(at(s, "rotor_energy_loss"), "%.4g")
+    << " J (slip power ∫M·(ω0·f/f_n - ω_r)dt)\n";
+  const json& stop = at(s, "stop");
+  if (stop.is_object())
+    o << "  switch-off at " << f(at(stop, "t_off"), "%.4g") << " s: stopping time " << f(at(stop, "stopping_time"), "%.3g")
+      << " s, crank run-out " << f(at(stop, "run_out_revolutions"), "%.3g") << " rev, carts' run-out "
+      << f(at(stop, "run_out_cart_path"), "%.3g") << " m\n";
+  for (const json& n : at(s, "notes")) o << "  note: " << n.get<std::string>() << "\n";
+  o << "  (torques at the crank axis; M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω0 "
+       "synchronous speed, f/f_n supply frequency ratio)\n";
+  return o.str();
+}
+
+bool startUpHasOwnFigures(const json& s) {
+  if (!s.is_object()) return false;
+  const bool switches = s.value("supply_switches", false);
+  return switches || s.value("motor_model", std::string("kloss")) != "kloss";
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,212 @@
+#include "motor/Supply.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "scene/Scene.h"
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using Stage = SupplyPhase::Stage;
+
+// An event timed at te is due at t when te <= t up to round-off of the time itself.
+bool due(double te, double t) { return te <= t + 1e-12 * std::max(1.0, std::abs(t)); }
+
+bool sameSupply(const SupplyState& a, const SupplyState& b) {
+  return a.connected == b.connected && a.voltage == b.voltage && a.frequency == b.frequency && a.phase == b.phase;
+}
+
+}  // namespace
+
+const char* toString(SupplyPhase::Stage s) {
+  switch (s) {
+    case Stage::Waiting: return "waiting";
+    case Stage::Star: return "star";
+    case Stage::Gap: return "open transition";
+    case Stage::Ramp: return "ramp";
+    case Stage::Rated: return "rated";
+    case Stage::Off: return "off";
+    case Stage::Braking: return "braking";
+    case Stage::Restarted: return "restarted";
+  }
+  return "?";
+}
+
+Supply::Supply() = default;
+
+Supply::Supply(const MotorStart& start, const MotorStop& stop, double omega_sync, double rated_frequency,
+               double brake_smoothing_speed, const MotorLaw* law)
+    : start_(start), stop_(stop), omega_sync_(omega_sync), rated_frequency_(rated_frequency),
+      brake_speed_(brake_smoothing_speed), law_(law) {
+  if (!(omega_sync > 0)) throw std::invalid_argument("Supply: the synchronous speed must be > 0");
+  if (stop.brake_torque > 0 && !(brake_smoothing_speed > 0))
+    throw std::invalid_argument("Supply: the brake smoothing speed must be > 0");
+  if (start_.method == StartMethod::FrequencyConverter) {
+    if (!(rated_frequency > 0)) throw std::invalid_argument("Supply: the rated frequency must be > 0");
+    if (!(start_.initial_frequency > 0 && start_.initial_frequency < rated_frequency))
+      throw std::invalid_argument("motor.start.initial_frequency must lie in (0, f_n = " +
+                                  std::to_string(rated_frequency) + " Hz), got " +
+                                  std::to_string(start_.initial_frequency));
+  }
+  if ((start_.method == StartMethod::SoftStarter || start_.method == StartMethod::FrequencyConverter) &&
+      !(start_.ramp_time > 0))
+    throw std::invalid_argument("Supply: a ramped start needs motor.start.ramp_time > 0");
+  if (start_.method == StartMethod::StarDelta && std::isnan(start_.changeover_time) &&
+      std::isnan(start_.changeover_speed))
+    throw std::invalid_argument("Supply: a star-delta start needs a changeover time or speed");
+  if (start_.method == StartMethod::SoftStarter && start_.current_limit > 0) {
+    const bool has_current = law_ && std::isfinite(law_->steadyCurrent(SupplyState{}, 0.0));
+    if (!has_current)
+      throw std::invalid_argument(
+          "motor.start.current_limit needs a motor model with a stator current (motor.model circuit or park); "
+          "the Kloss laws have none");
+  }
+  constant_ = start_.method == StartMethod::DirectOnLine && start_.t_on <= 0 && std::isinf(stop_.t_off);
+}
+
+SupplyPhase Supply::initialPhase() const {
+  SupplyPhase p;
+  applyDueEvents(p, 0.0, 0.0, false, nullptr, nullptr);
+  return p;
+}
+
+SupplyState Supply::state(const SupplyPhase& p, double t, double omega_rotor) const {
+  SupplyState s;
+  s.phase = start_.phase;
+  switch (p.stage) {
+    case Stage::Waiting:
+    case Stage::Gap:
+    case Stage::Off:
+    case Stage::Braking:
+      s.connected = false;
+      s.voltage = 0.0;
+      if (start_.method == StartMethod::StarDelta && p.stage != Stage::Waiting && p.stage != Stage::Gap)
+        s.phase += M_PI / 6.0;
+      return s;
+    case Stage::Star:
+      s.voltage = 1.0 / std::sqrt(3.0);
+      return s;
+    case Stage::Rated:
+    case Stage::Restarted:
+      if (start_.method == StartMethod::StarDelta) s.phase += M_PI / 6.0;
+      return s;
+    case Stage::Ramp: {
+      const double x = std::clamp((t - start_.t_on) / start_.ramp_time, 0.0, 1.0);
+      if (start_.method == StartMethod::FrequencyConverter) {
+        const double F0 = start_.initial_frequency / rated_frequency_;
+        s.frequency = F0 + (1.0 - F0) * x;
+        s.voltage = start_.boost + (1.0 - start_.boost) * s.frequency;
+        return s;
+      }
+      s.voltage = start_.initial_voltage + (1.0 - start_.initial_voltage) * x;
+      if (start_.current_limit > 0 && law_) {
+        SupplyState rated;
+        rated.phase = s.phase;
+        const double I_rated_voltage = law_->steadyCurrent(rated, omega_rotor);
+        if (I_rated_voltage > 0 && std::isfinite(I_rated_voltage))
+          s.voltage = std::min(s.voltage, start_.current_limit / I_rated_voltage);
+      }
+      return s;
+    }
+  }
+  return s;
+}
+
+double Supply::brakeTorque(const SupplyPhase& p, double omega_rotor) const {
+  if (p.stage != Stage::Braking) return 0.0;
+  return -stop_.brake_torque * std::tanh(omega_rotor / brake_speed_);
+}
+
+double Supply::nextEventTime(const SupplyPhase& p) const {
+  const double t_off = stop_.t_off;
+  switch (p.stage) {
+    case Stage::Waiting: return start_.t_on;
+    case Stage::Star: return std::min(std::isnan(start_.changeover_time) ? kInf : start_.changeover_time, t_off);
+    case Stage::Gap: return std::min(p.since + start_.changeover_gap, t_off);
+    case Stage::Ramp: return std::min(start_.t_on + start_.ramp_time, t_off);
+    case Stage::Rated: return t_off;
+    case Stage::Off: return hasBrake() ? t_off + stop_.brake_delay : stop_.t_restart;
+    case Stage::Braking: return stop_.t_restart;
+    case Stage::Restarted: return kInf;
+  }
+  return kInf;
+}
+
+double Supply::triggerSpeed(const SupplyPhase& p) const {
+  return p.stage == Stage::Star ? start_.changeover_speed : kNaN;
+}
+
+SupplyPhase Supply::after(const SupplyPhase& p, double t, bool by_speed) const {
+  auto to = [t](Stage s) { return SupplyPhase{s, t}; };
+  const Stage delta = start_.changeover_gap > 0 ? Stage::Gap : Stage::Rated;
+  switch (p.stage) {
+    case Stage::Waiting:
+      switch (start_.method) {
+        case StartMethod::DirectOnLine: return to(Stage::Rated);
+        case StartMethod::StarDelta: return to(Stage::Star);
+        default: return to(Stage::Ramp);
+      }
+    case Stage::Star:
+      if (by_speed) return to(delta);
+      return due(stop_.t_off, t) ? to(Stage::Off) : to(delta);
+    case Stage::Gap:
+    case Stage::Ramp:
+      return due(stop_.t_off, t) ? to(Stage::Off) : to(Stage::Rated);
+    case Stage::Rated: return to(Stage::Off);
+    case Stage::Off: return hasBrake() && !due(stop_.t_restart, t) ? to(Stage::Braking) : to(Stage::Restarted);
+    case Stage::Braking: return to(Stage::Restarted);
+    case Stage::Restarted: return p;
+  }
+  return p;
+}
+
+bool Supply::applyDueEvents(SupplyPhase& p, double t, double omega_rotor, bool speed_reached, const MotorLaw* law,
+                            double* x) const {
+  bool changed = false;
+  for (int guard = 0; guard < 16; ++guard) {
+    const double w_trigger = triggerSpeed(p);
+    const bool by_speed = !std::isnan(w_trigger) && (speed_reached || omega_rotor >= w_trigger);
+    if (!by_speed && !due(nextEventTime(p), t)) return changed;
+    const SupplyState before = state(p, t, omega_rotor);
+    const SupplyPhase next = after(p, t, by_speed);
+    if (next == p) return changed;
+    p = next;
+    changed = true;
+    speed_reached = false;  // the speed event happens once
+    const SupplyState now = state(p, t, omega_rotor);
+    if (law && law->stateCount() > 0 && !sameSupply(before, now)) law->switchStates(before, now, omega_rotor, x);
+  }
+  throw std::logic_error("Supply: events at one instant do not settle");
+}
+
+double Supply::ratedFrom() const {
+  switch (start_.method) {
+    case StartMethod::DirectOnLine: return start_.t_on;
+    case StartMethod::StarDelta:
+      return std::isnan(start_.changeover_time) ? kNaN : start_.changeover_time + start_.changeover_gap;
+    default: return start_.t_on + start_.ramp_time;
+  }
+}
+
+SupplyState Supply::atSwitchOn() const {
+  const SupplyPhase p = after(SupplyPhase{}, start_.t_on, false);
+  return state(p, start_.t_on, 0.0);
+}
+
+Supply makeSupply(const Scene& scene, const MotorLaw* law) {
+  const double r = scene.hasCamDrive() ? 0.5 * scene.cam.stroke : scene.crank.radius;
+  const double brake_speed = scene.reducer.ratio * scene.loads.velocity_smoothing / r;
+  return Supply(scene.motor_start, scene.motor_stop, scene.motor.omega_sync, scene.induction.frequency, brake_speed,
+                law);
+}
+
+bool motorSteadyAtStart(const Scene& scene, const Supply& supply) {
+  return supply.state(supply.initialPhase(), 0.0, 0.0).connected && scene.initial.crank_speed != 0.0;
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,69 @@
+#include "multibody/MinimalReactions.h"
+
+#include "multibody/GuideFriction.h"
+#include "multibody/GuideReactions.h"
+
+namespace rollerdyn {
+namespace {
+
+// Acceleration of body b's centre of mass in ground from its spatial acceleration A_GB (about
+// the body origin): a_origin + α × r + ω × (ω × r), r the origin -> centre of mass in ground.
+SimTK::Vec3 centreOfMassAcceleration(const SimTK::State& s, const SimTK::MobilizedBody& b,
+                                     const SimTK::SpatialVec& A_GB) {
+  const SimTK::Vec3 r = b.getBodyTransform(s).R() * b.getBodyMassCenterStation(s);
+  const SimTK::Vec3 w = b.getBodyAngularVelocity(s);
+  return A_GB[1] + SimTK::cross(A_GB[0], r) + SimTK::cross(w, SimTK::cross(w, r));
+}
+
+}  // namespace
+
+MinimalReactions::MinimalReactions(const MultibodyModel& model, const SimTK::State&) : model_(model) {}
+
+void MinimalReactions::row(const SimTK::State& s, const MinimalDynamics& dyn, std::vector<double>& re) {
+  const SimTK::SimbodyMatterSubsystem& matter = model_.matter();
+  const Scene& scene = model_.scene();
+  const SimTK::Vector& udot = dyn.udot();
+  const SimTK::Vector_<SimTK::SpatialVec>& applied = dyn.appliedBodyForces();
+  matter.calcBodyAccelerationFromUDot(s, udot, body_accelerations_);
+  const SimTK::Vector normals = dyn.guideNormals(s);
+  const SimTK::Vec3 gravity(0, -scene.loads.gravity, 0);
+
+  re.clear();
+  re.push_back(s.getTime());
+  // The crankshaft subtree's free body: Σ (m·a - applied) over its bodies, minus the forces the
+  // carts put on it through the loops.
+  auto netForce = [&](const SimTK::MobilizedBody& b) {
+    const SimTK::MobilizedBodyIndex i = b.getMobilizedBodyIndex();
+    return b.getBodyMass(s) * centreOfMassAcceleration(s, b, body_accelerations_[i]) - applied[i][1];
+  };
+  SimTK::Vec3 bearing = netForce(model_.crank());
+  if (model_.elastic()) bearing += netForce(model_.motorSide());
+  for (size_t j = 0; j < model_.carts().size(); ++j) {
+    const CartRig& c = model_.carts()[j];
+    const double friction = model_.hasGuideFriction() ? model_.frictionElement().frictionForce(s, int(j)) : 0.0;
+    const double n_front = normals[2 * int(j)], n_rear = normals[2 * int(j) + 1];
+    const SimTK::Vec2 F = dyn.loopForce(s, int(j));  // on the cart at B
+    if (!c.cam.isEmptyHandle()) {
+      // Cam drive: "F_rod" > 0 pulls the cart towards the shaft, like a rod in tension; the pusher
+      // puts the opposite force on the cam. The coupler acts on mobilities only: no bearing load.
+      re.insert(re.end(), {n_front, n_rear, -c.side * F[0], friction, -F[0], 0.0});
+      continue;
+    }
+    const SimTK::Vec3 F_rod_on_cart(F[0], F[1], 0);
+    const SimTK::Vec3 p_A = model_.crank().findStationLocationInGround(s, c.p_CrankPin);
+    const SimTK::UnitVec3 e_BA(p_A - c.cart.getBodyOriginLocation(s));
+    // Force of the rod on the crank pin: rod free body m·a_S = F_A + (-F_B) + m·g.
+    SimTK::Vec3 F_rod_on_crank = -F_rod_on_cart;
+    if (!c.rod.isEmptyHandle()) {
+      const SimTK::MobilizedBodyIndex ir = c.rod.getMobilizedBodyIndex();
+      F_rod_on_crank += -c.rod_mass * centreOfMassAcceleration(s, c.rod, body_accelerations_[ir]) +
+                        c.rod_mass * gravity;
+      bearing += netForce(c.rod);
+    }
+    bearing += F_rod_on_cart;  // the cart pushes the subtree with -F at B (or at the pin)
+    re.insert(re.end(), {n_front, n_rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]});
+  }
+  re.insert(re.end(), {bearing[0], bearing[1], model_.couplingTorque(s, udot)});
+}
+
+}  // namespace rollerdyn

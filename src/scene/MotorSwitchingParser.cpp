@@ -1,0 +1,125 @@
+#include "scene/MotorSwitchingParser.h"
+
+#include <cmath>
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+StartMethod methodOf(const std::string& w) {
+  if (w == "star_delta") return StartMethod::StarDelta;
+  if (w == "soft_starter") return StartMethod::SoftStarter;
+  if (w == "frequency_converter") return StartMethod::FrequencyConverter;
+  return StartMethod::DirectOnLine;
+}
+
+// "a number > t_on = 0.5 [s] (motor.start.t_on)": a bound taken from another key.
+std::string laterThan(const char* what, double bound, const char* key) {
+  return std::string("a number > ") + what + " = " + formatNumber(bound) + " [s] (" + key + ")";
+}
+
+// A time key that must come after an earlier event: blames whichever of the two a --set changed
+// last, like the other cross-key rules.
+void requireLater(const scene_detail::Reader& in, const std::string& later_key, double later, const std::string& earlier_key,
+                  double earlier, const char* earlier_name, const char* later_name) {
+  if (later > earlier) return;
+  if (scene_detail::blameSecond(in.doc(), later_key, earlier_key))
+    in.doc().fail(earlier_key,
+                  std::string("a number < ") + later_name + " = " + formatNumber(later) + " [s] (" + later_key + ")",
+                  formatNumber(earlier));
+  in.doc().fail(later_key, laterThan(earlier_name, earlier, earlier_key.c_str()), formatNumber(later));
+}
+
+void readStarDelta(const scene_detail::Reader& in, MotorStart& m, double omega_sync) {
+  const SceneDocument& doc = in.doc();
+  const bool by_time = in.has("motor.start.changeover_time"), by_speed = in.has("motor.start.changeover_speed");
+  const std::string ways = "exactly one of motor.start.changeover_time or motor.start.changeover_speed";
+  if (by_time && by_speed) {
+    const bool speed_last = scene_detail::blameSecond(doc, "motor.start.changeover_time", "motor.start.changeover_speed");
+    const std::string blamed = speed_last ? "motor.start.changeover_speed" : "motor.start.changeover_time";
+    const std::string other = speed_last ? "motor.start.changeover_time" : "motor.start.changeover_speed";
+    doc.fail(blamed, ways + " (" + other + " is given too)", describeNode(doc.find(blamed)));
+  }
+  if (by_time) m.changeover_time = in.number("motor.start.changeover_time");
+  if (by_speed) m.changeover_speed = in.number("motor.start.changeover_speed");
+  if (m.method != StartMethod::StarDelta) return;  // validated, not used
+  if (!by_time && !by_speed) doc.failMissing("motor.start.changeover_time", ways + " (motor.start.method is star_delta)");
+  if (by_time)
+    requireLater(in, "motor.start.changeover_time", m.changeover_time, "motor.start.t_on", m.t_on, "t_on",
+                 "changeover_time");
+  if (by_speed && !(m.changeover_speed < omega_sync))
+    doc.fail("motor.start.changeover_speed",
+             "a rotor speed in (0, omega_sync = " + formatNumber(omega_sync) + ") [rad/s] (motor.omega_sync)",
+             formatNumber(m.changeover_speed));
+}
+
+}  // namespace
+
+void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
+  const SceneDocument& doc = in.doc();
+  MotorStart& m = scene.motor_start;
+  m.method = methodOf(in.choice("motor.start.method"));
+  m.t_on = in.number("motor.start.t_on");
+  m.phase = in.number("motor.start.phase_deg") * kDegToRad;
+  readStarDelta(in, m, scene.motor.omega_sync);
+  m.changeover_gap = in.number("motor.start.changeover_gap");
+
+  const bool ramped = m.method == StartMethod::SoftStarter || m.method == StartMethod::FrequencyConverter;
+  const char* method_word = m.method == StartMethod::SoftStarter ? "soft_starter" : "frequency_converter";
+  const std::string needed_by = std::string("motor.start.method is ") + method_word;
+  m.ramp_time = ramped ? in.requiredNumber("motor.start.ramp_time", "required when " + needed_by)
+                       : in.numberOr("motor.start.ramp_time", 0.0);
+  m.initial_voltage = m.method == StartMethod::SoftStarter
+                          ? in.requiredNumber("motor.start.initial_voltage", "required when " + needed_by)
+                          : in.numberOr("motor.start.initial_voltage", 1.0);
+  m.current_limit = in.number("motor.start.current_limit");
+  m.initial_frequency = m.method == StartMethod::FrequencyConverter
+                            ? in.requiredNumber("motor.start.initial_frequency", "required when " + needed_by)
+                            : in.numberOr("motor.start.initial_frequency", 0.0);
+  m.boost = in.number("motor.start.boost");
+  if (m.method == StartMethod::FrequencyConverter && !(m.initial_frequency < scene.induction.frequency))
+    doc.fail("motor.start.initial_frequency",
+             "a frequency in (0, f_n = " + formatNumber(scene.induction.frequency) + ") [Hz] (motor.frequency)",
+             formatNumber(m.initial_frequency));
+  // A current limit needs a law that knows the stator current (motor/Supply.h).
+  const bool law_has_current =
+      scene.induction.model == MotorModel::Circuit || scene.induction.model == MotorModel::Park;
+  if (m.method == StartMethod::SoftStarter && m.current_limit > 0 && !law_has_current) {
+    if (scene_detail::blameSecond(doc, "motor.start.current_limit", "motor.model"))
+      doc.fail("motor.model", "circuit or park (motor.start.current_limit needs a model of the stator current)",
+               toString(scene.induction.model));
+    doc.fail("motor.start.current_limit",
+             std::string("0 with motor.model ") + toString(scene.induction.model) +
+                 " (no stator current in that law; use motor.model circuit or park)",
+             formatNumber(m.current_limit));
+  }
+
+  MotorStop& st = scene.motor_stop;
+  st.t_off = in.number("motor.stop.t_off");
+  st.brake_torque = in.number("motor.stop.brake_torque");
+  st.brake_delay = in.number("motor.stop.brake_delay");
+  st.t_restart = in.number("motor.stop.t_restart");
+  const bool off = std::isfinite(st.t_off);
+  if (off) {
+    requireLater(in, "motor.stop.t_off", st.t_off, "motor.start.t_on", m.t_on, "t_on", "t_off");
+    if (m.method == StartMethod::StarDelta && std::isfinite(m.changeover_time))
+      requireLater(in, "motor.stop.t_off", st.t_off, "motor.start.changeover_time",
+                   m.changeover_time + m.changeover_gap, "changeover_time + changeover_gap", "t_off");
+  }
+  if (!off && st.brake_torque > 0)
+    doc.fail("motor.stop.brake_torque", "0 without motor.stop.t_off (the brake acts after the switch-off)",
+             formatNumber(st.brake_torque));
+  if (std::isfinite(st.t_restart)) {
+    if (!off) doc.failMissing("motor.stop.t_off", "a switch-off time before motor.stop.t_restart");
+    requireLater(in, "motor.stop.t_restart", st.t_restart, "motor.stop.t_off", st.t_off, "t_off", "t_restart");
+    if (st.brake_torque > 0 && !(st.t_off + st.brake_delay < st.t_restart))
+      doc.fail("motor.stop.brake_delay",
+               "a delay that engages the brake before motor.stop.t_restart = " + formatNumber(st.t_restart) +
+                   " s (t_off + brake_delay < t_restart)",
+               formatNumber(st.brake_delay));
+  }
+}
+
+}  // namespace rollerdyn

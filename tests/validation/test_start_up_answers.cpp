@@ -1,0 +1,206 @@
+// The start-up answers (analysis/StartUp.h) on runs of both models:
+//  * the rotor energy loss of a start without load is the classical J·ω0²/2 (J the inertia at
+//    the rotor): for a rigid drive ∫M dt = J·ω_end and ∫M·ω_r dt = J·ω_end²/2, so the slip
+//    power ∫M·(ω0 - ω_r) dt = J·(ω0·ω_end - ω_end²/2) -> J·ω0²/2 as ω_end -> ω0, whatever the
+//    motor law. Tolerance 2e-4 relative: the slip at the end is ~e^-60 (Kloss's time constant
+//    near synchronous speed J·ω0·s_kr/(2·M_kr) ≈ 15 ms, against ~2 s of running), the cart
+//    inertia varies the drive's J by ~1e-7, and the trapezoidal rule on 1 ms output rows errs by
+//    about h²/12·|f''|/|f| ~ 1e-5 for an integrand that changes on the run-up's ~0.1 s scale;
+//  * a switch-off gives a stopping time and a run-out, shorter with a brake;
+//  * a start the motor cannot make is named, with the torques that explain it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/StartUp.h"
+#include "analysis/StartUpSummary.h"
+#include "analysis/Summary.h"
+#include "motor/MotorLawFactory.h"
+#include "multibody/MultibodySimulation.h"
+#include "reduced/ReducedModel.h"
+#include "scene/SceneParser.h"
+#include "studies/StartLoad.h"
+#include "support/Seed000Scene.h"
+
+namespace rollerdyn {
+namespace {
+
+// The papers' motor on a crankshaft of 50 kg·m² with (almost) massless carts, no loads, no
+// gravity, a rigid coupling and η = 1: a pure inertia J = (J_p + J_m + J_red) + 50/u² at the rotor.
+Scene noLoadScene(MotorModel model) {
+  Scene s = test_scenes::seed000Scene();
+  s.name = "no-load-start";
+  s.carts.mass = 1e-6;
+  s.rods = {RodModel::Massless, 0.8, 0.0, 0.0};
+  s.crank.shaft_inertia = 50.0;
+  s.crank.inertia_per_crank = 0.0;
+  s.loads = {0, 0, 0, 0, RollerForceDirection::AsPrinted, 0.0, 0.0, 1e-3};
+  s.coupling.type = CouplingType::Rigid;
+  s.reducer.efficiency = 1.0;
+  s.simulation.t_end = 5.0;
+  s.simulation.output_step = 1e-3;
+  s.simulation.accuracy = 1e-8;
+  s.simulation.formulation = Formulation::Minimal;
+  s.induction.model = model;
+  return s;
+}
+
+TEST(StartUpAnswers, RotorLossOfANoLoadStartIsHalfJOmega0Squared) {
+  for (MotorModel model : {MotorModel::Kloss, MotorModel::KlossDynamic}) {
+    const Scene s = noLoadScene(model);
+    const double u = s.reducer.ratio;
+    const double J = s.motor.rotor_inertia + s.coupling.inertia + s.reducer.inertia + s.crank.shaft_inertia / (u * u);
+    const double expected = 0.5 * J * s.motor.omega_sync * s.motor.omega_sync;
+    const std::unique_ptr<MotorLaw> law = makeMotorLaw(s);
+    for (const RunResult& run : {runMultibodyModel(s), runReducedModel(s)}) {
+      ASSERT_TRUE(run.stats.complete) << run.stats.status;
+      const StartUp a = computeStartUp(s, run, law.get(), nullptr);
+      ASSERT_TRUE(a.applicable);
+      EXPECT_TRUE(a.starts) << a.verdict;
+      std::printf("  %-9s %-13s rotor loss %.6g J, J·ω0²/2 = %.6g J, relative difference %.2g\n", run.model.c_str(),
+                  toString(model), a.rotor_energy_loss, expected, a.rotor_energy_loss / expected - 1);
+      EXPECT_NEAR(a.rotor_energy_loss, expected, 2e-4 * expected) << run.model << " " << toString(model);
+    }
+  }
+}
+
+TEST(StartUpAnswers, SwitchOffGivesStoppingTimeAndRunOutShorterWithABrake) {
+  Scene s = noLoadScene(MotorModel::Kloss);
+  s.loads.guide_friction = 0.0;
+  s.simulation.output_step = 5e-3;
+  s.motor_stop.t_off = 3.0;
+  s.simulation.t_end = 12.0;
+  // Without loads the machine would coast for ever: a light roller resistance stops it.
+  s.carts.mass = 100.0;
+  s.loads.roller_force_front = s.loads.roller_force_rear = 300.0;
+  s.loads.roller_force_direction = RollerForceDirection::OpposesVelocity;
+  const std::unique_ptr<MotorLaw> law = makeMotorLaw(s);
+  const StartUp coast = computeStartUp(s, runReducedModel(s), law.get(), nullptr);
+  s.motor_stop.brake_torque = 100.0;
+  const RunResult braked_run = runReducedModel(s);
+  const StartUp braked = computeStartUp(s, braked_run, law.get(), nullptr);
+  std::printf("  coast-down: %.3g s, %.3g rev, carts %.3g m; with a 100 N·m brake: %.3g s, %.3g rev, %.3g m\n",
+              coast.stopping_time, coast.run_out_revolutions, coast.run_out_cart_path, braked.stopping_time,
+              braked.run_out_revolutions, braked.run_out_cart_path);
+  ASSERT_TRUE(std::isfinite(coast.stopping_time));
+  ASSERT_TRUE(std::isfinite(braked.stopping_time));
+  EXPECT_LT(braked.stopping_time, coast.stopping_time);
+  EXPECT_LT(braked.run_out_revolutions, coast.run_out_revolutions);
+  EXPECT_GT(braked.run_out_cart_path, 0.0);
+  // The brake's work is in the energy audit, which still closes.
+  EXPECT_GT(braked_run.energy.brake_dissipation, 0.0);
+  EXPECT_LT(std::abs(braked_run.energy.residualRelative()), 1e-4);
+}
+
+TEST(StartUpAnswers, AStartInStarTheMotorCannotMakeIsExplained) {
+  // The paper's drive with loads opposing the velocity (~6.4 kN·m at the start angle, StartLoad)
+  // in star: a third of Kloss's starting torque, ≈ 344 N·m at the crank.
+  const Scene s = parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml",
+                                 {"loads.roller_force_direction=opposes_velocity", "motor.start.method=star_delta",
+                                  "motor.start.changeover_speed=80", "simulation.t_end=1.5"});
+  const StartLoad load = startLoadOf(s);
+  const std::unique_ptr<MotorLaw> law = makeMotorLaw(s);
+  const StartUp a = computeStartUp(s, runReducedModel(s), law.get(), &load);
+  EXPECT_FALSE(a.starts);
+  EXPECT_NEAR(a.starting_torque_crank, a.starting_torque_rated_crank / 3.0, 1e-9 * a.starting_torque_crank);
+  EXPECT_NE(a.verdict.find("does not start"), std::string::npos) << a.verdict;
+  EXPECT_NE(a.verdict.find("star-delta"), std::string::npos) << a.verdict;
+  EXPECT_NE(a.verdict.find("below the load torque"), std::string::npos) << a.verdict;
+}
+
+// The default scene keeps the papers' static Kloss law: its start-up answers must say plainly
+// what that law cannot show and point to the catalogue model, in summary.json and on the console.
+TEST(StartUpAnswers, TheDefaultSceneSaysWhatKlossCannotShow) {
+  const Scene s = parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml");
+  const StartLoad load = startLoadOf(s);
+  const nlohmann::json summary = makeSummary(s, runReducedModel(s), &load);
+  const nlohmann::json& su = summary["start_up"];
+  ASSERT_TRUE(su.is_object());
+  EXPECT_TRUE(su["starts"].get<bool>());
+  EXPECT_NEAR(su["run_up_time"].get<double>(), 0.915, 0.01);  // measured 0.915 s (multibody and reduced)
+  ASSERT_FALSE(su["notes"].empty());
+  const std::string note = su["notes"][0];
+  for (const char* words : {"cannot show the switching transient", "understates the starting torque",
+                            "against the catalogue's M_s = 280.1 N·m", "motor.model: park"})
+    EXPECT_NE(note.find(words), std::string::npos) << words << " not in: " << note;
+  const std::string text = startUpText(summary);
+  EXPECT_NE(text.find("start-up     direct on line at t = 0 s, motor law: Kloss formula (static)"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("note: The static Kloss law cannot show the switching transient"), std::string::npos) << text;
+}
+
+
+Scene defaultScene(const std::vector<std::string>& overrides) {
+  return parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml", overrides);
+}
+
+nlohmann::json reducedSummary(const Scene& s) {
+  const StartLoad load = startLoadOf(s);
+  return makeSummary(s, runReducedModel(s), &load);
+}
+
+nlohmann::json multibodySummary(const Scene& s) {
+  const StartLoad load = startLoadOf(s);
+  return makeSummary(s, runMultibodyModel(s), &load);
+}
+
+// The heating check's start heat and the start-up answers' rotor energy loss are one computation
+// (StartUp.h): the same number in summary.json, direct on line and in star-delta, in both models.
+TEST(StartUpAnswers, TheHeatingChecksStartHeatIsTheStartsRotorEnergyLoss) {
+  for (const std::vector<std::string>& o :
+       {std::vector<std::string>{"motor.start.method=direct_on_line"},
+        std::vector<std::string>{"motor.start.method=star_delta", "motor.start.changeover_time=0.6"}})
+  for (const bool multibody : {false, true}) {
+    const Scene s = defaultScene(o);
+    const nlohmann::json j = multibody ? multibodySummary(s) : reducedSummary(s);
+    const nlohmann::json& wr = j["sizing"]["motor"]["whole_run"];
+    ASSERT_TRUE(j["start_up"].is_object());
+    ASSERT_TRUE(wr["start_heat"].is_number()) << wr.dump();
+    const double E = j["start_up"]["rotor_energy_loss"].get<double>();
+    std::printf("  %-9s %s: start heat %.6g J, rotor energy loss of the start %.6g J, above steady running %.6g J\n",
+                multibody ? "multibody" : "reduced", o.back().c_str(), wr["start_heat"].get<double>(), E,
+                wr["start_heat_above_steady"].get<double>());
+    EXPECT_GT(E, 0.0);
+    EXPECT_EQ(wr["start_heat"].get<double>(), E);
+    EXPECT_NEAR(wr["start_duration"].get<double>(),
+                j["start_up"]["start_end"].get<double>() - j["start_up"]["t_on"].get<double>(), 1e-12);
+    EXPECT_LE(wr["start_heat_above_steady"].get<double>(), E);
+    EXPECT_TRUE(wr["starts_per_hour"].is_number());
+  }
+}
+
+// The start-up verdict and the run's motion (RunMotion.h) never contradict each other.
+TEST(StartUpAnswers, TheStartUpVerdictAgreesWithTheMotion) {
+  // Held in star (the changeover speed is never reached): the stall rule skips the star rows, yet
+  // the run ends with the drive at rest; it has not started, and both say so.
+  const nlohmann::json held = reducedSummary(
+      defaultScene({"loads.roller_force_direction=opposes_velocity", "motor.start.method=star_delta",
+                    "motor.start.changeover_speed=80", "simulation.t_end=1.5"}));
+  EXPECT_EQ(held["motion"], "stalled") << held["status"];
+  EXPECT_FALSE(held["start_up"]["starts"].get<bool>());
+  EXPECT_NE(held["start_up"]["verdict"].get<std::string>().find("does not start"), std::string::npos);
+  // A run too short to settle: "starting", and the start-up answer says it is still starting
+  // instead of giving a run-up time to the mean speed of a revolution that still rocks.
+  const nlohmann::json starting = reducedSummary(defaultScene({"simulation.t_end=3", "crank.offset_deg=60"}));
+  EXPECT_EQ(starting["motion"], "starting");
+  EXPECT_FALSE(starting["start_up"]["starts"].get<bool>());
+  EXPECT_TRUE(starting["start_up"]["still_starting"].get<bool>());
+  EXPECT_TRUE(starting["start_up"]["run_up_time"].is_null());
+  EXPECT_NE(starting["start_up"]["verdict"].get<std::string>().find("still starting"), std::string::npos)
+      << starting["start_up"]["verdict"];
+  // A switch-off: the steady window, the motion and the sizing are those of the running machine
+  // before it (the coast-down is no steady state), as the start-up answers' are.
+  const nlohmann::json off = reducedSummary(defaultScene({"motor.stop.t_off=5"}));
+  EXPECT_EQ(off["motion"], "turning");
+  EXPECT_TRUE(off["start_up"]["starts"].get<bool>());
+  EXPECT_TRUE(off["steady_state"]["reached"].get<bool>());
+  EXPECT_LE(off["steady_state"]["t_end"].get<double>(), 5.0);
+  EXPECT_EQ(off["steady_state"]["t_begin"], off["start_up"]["steady"]["t_begin"]);
+  EXPECT_GT(off["sizing"]["motor"]["torque_shaft"]["rms"].get<double>(), 1.0);  // not the coasting motor's 0
+}
+
+}  // namespace
+}  // namespace rollerdyn
