@@ -237,7 +237,7 @@ def write_outputs(out_dir, meta, results, plants):
         "",
         f"Made by `{meta['command']}` at commit {meta['commit'][:10]} on {meta['started']}, in "
         f"{meta.get('minutes', 0):.0f} minutes ({len(done)} of {len(plants)} plants; "
-        f"{meta.get('tests', '?')} ctest tests per plant, `rollerdyn validate` included as validate.claims)."
+        f"{meta.get('tests', '?')} ctest tests per plant in this run, `rollerdyn validate` included as validate.claims)."
         + (f" Rows from earlier runs are kept where this run did not repeat them (commits {', '.join(commits)})."
            if len(commits) > 1 else ""),
         "",
