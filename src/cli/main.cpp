@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
                   "--set loads.guide_friction.coefficient=0 --set simulation.accuracy=1e-9");
   bool val_quick = false;
   std::string val_out = "validation";
-  auto* validate = app.add_subcommand("validate", "validation suite: model equivalence, papers, analytic checks; writes <out>/report.md");
+  auto* validate = app.add_subcommand("validate", "validation suite: model equivalence, papers, analytic checks, drive sizing by hand; writes <out>/report.md; exits 1 when a claim FAILED");
   validate->add_flag("--quick", val_quick, "coarser sweeps and shorter runs (about a minute)");
   validate->add_option("--out", val_out, "output folder (default validation/)");
   bool val_modes_only = false;
@@ -121,7 +121,9 @@ int main(int argc, char** argv) {
   validate->add_option("--studies", val_studies,
                        "only write the markdown pages of a studies folder (validation/studies) from the tables "
                        "validation/studies/run.sh left there; runs no simulation");
-  validate->footer("Examples:\n  rollerdyn validate --quick                # about a minute\n"
+  validate->footer("Exit status: 0 when every claim holds or is an explained gap (a published table the papers' own\n"
+                   "inputs cannot reproduce, with its numbers and reason) and every equivalence case passes; 1 otherwise.\n"
+                   "Examples:\n  rollerdyn validate --quick                # about a minute\n"
                    "  rollerdyn validate --out out/validation");
 
   // bench (src/cli/BenchCommand.cpp)

@@ -72,21 +72,20 @@ struct CoefficientCurves {
   std::vector<double> x, published, reduced, variant, x_multibody, multibody;
 };
 
-// The outcome of a claim as printed: bold, and FAILED in capitals so that it cannot be missed.
-inline std::string verdictText(Finding::Verdict v) {
-  switch (v) {
-    case Finding::Verdict::Holds: return "**holds**";
-    case Finding::Verdict::Fails: return "**FAILED**";
-    default: return "";
-  }
-}
-
 class ReportWriter {
  public:
   ReportWriter(const ValidationResults& r, const std::string& figdir) : r_(r), figdir_(figdir) {}
   ValidationReport build();
 
  private:
+  // Every verdict the report prints goes through here, so report.md, results.json, the summary
+  // and the exit status count the same claims. Returns verdictText(v); a Measurement is not
+  // recorded.
+  std::string verdict(const std::string& id, Verdict v, const std::string& text) {
+    if (v != Verdict::Measurement) out_.claims.push_back({id, section_, text, v});
+    return verdictText(v);
+  }
+  void section(const std::string& title) { section_ = title; }
   void figure(const std::string& name, PlotSpec spec, const std::string& caption) {
     if (spec.preamble.empty()) spec.preamble = "set key below";
     out_.figures.push_back({name, std::move(spec)});
@@ -105,11 +104,15 @@ class ReportWriter {
   void loveikin2018(const PaperSweep& p);
   void sensitivity();
   void analytic();
+  void motor();
+  void items();
+  int firstItemNumber() const;  // (5) when there is no motor section, else (6)
 
   const ValidationResults& r_;
   std::string figdir_;
   std::ostringstream md_;
   ValidationReport out_;
+  std::string section_;  // title of the section being written (Claim::section)
 };
 
 }  // namespace rollerdyn::validation::report_detail

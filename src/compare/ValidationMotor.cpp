@@ -417,7 +417,8 @@ std::string motorReportMarkdown(const std::vector<MotorClaim>& claims) {
         "[N·m]; I RMS stator (line) current [A]; s slip; ω1 supply angular frequency [rad/s]; per phase of the "
         "equivalent star (docs/motor.md).\n\n";
   for (const auto& c : claims) {
-    md << "- **" << c.id << "** " << c.title << ": **" << verdictWord(c.verdict) << "**\n";
+    md << "- **" << c.id << "** " << c.title << (c.verdict == Verdict::Measurement ? "" : ": " + verdictText(c.verdict))
+       << "\n";
     for (const auto& l : c.lines) md << "  - " << l << "\n";
   }
   return md.str();

@@ -69,8 +69,11 @@ void ReportWriter::header() {
       << "Written by `rollerdyn validate" << (r_.quick ? " --quick" : "")
       << "` (run from the repository root); every number below comes from that run"
       << (r_.quick ? " in **quick mode** (coarser sweeps, 5 instead of 20 revolutions)" : "")
-      << ", and every claim is a comparison made in that run, printed with its outcome (**holds** or "
-      << "**FAILED**). CPU time of the whole suite: " << g(r_.cpu_seconds, 3) << " s.\n\n"
+      << ", and every claim is a comparison made in that run, printed with its outcome: **holds**, "
+      << "**FAILED**, or, for a published table our inputs cannot reproduce, **gap, explained** (the gap's "
+      << "numbers and its reason, whose own claims are checked in the same run). `rollerdyn validate` exits "
+      << "with status 1 when any claim is FAILED or any equivalence case fails. CPU time of the whole suite: "
+      << g(r_.cpu_seconds, 3) << " s.\n\n"
       << "Two models of the same machine are compared: the multibody model (Simbody: every body, joint and "
       << "constraint) and the reduced model (one equation of motion per shaft in the crank angle φ, with the "
       << "reduced inertia J(φ) of the papers). Reference for all relative differences: the multibody model, "
@@ -85,10 +88,15 @@ void ReportWriter::header() {
       << "derivatives.\n\n"
       << "Contents: (1) equivalence of the two models where their physics is identical; "
       << "(2) where the physics differ; (3) the papers' tables; (4) the analytic two-rotor check "
-      << "of Dyomin (two rotors).\n";
+      << "of Dyomin (two rotors)";
+  if (!r_.motor.empty()) md_ << "; (5) the induction-motor laws";
+  for (std::size_t i = 0; i < r_.sections.size(); ++i)
+    md_ << "; (" << i + firstItemNumber() << ") " << r_.sections[i].title();
+  md_ << ".\n";
 }
 
 void ReportWriter::equivalence() {
+  section("(1) Equivalence: identical physics in both models");
   md_ << "\n## (1) Equivalence: identical physics in both models\n\n"
       << "Scenes made identical in physics: rods split into two point masses (Loveikin, Pochka, Romasevych (2018), eq. (2)-(3)), "
       << "no guide friction, exact kinematics, CVODE in the reduced model. Each run covers " << (r_.quick ? "5" : "20")
@@ -128,9 +136,11 @@ void ReportWriter::equivalence() {
       const double fw = std::pow(lo->max_rel_omega / hi->max_rel_omega, 1.0 / decades);
       const double fm = std::pow(lo->max_rel_torque / hi->max_rel_torque, 1.0 / decades);
       const bool holds = decades > 0 && fw >= 3.0 && fm >= 3.0;
-      md_ << "- " << label << ": from " << g(lo->accuracy) << " to " << g(hi->accuracy) << " the crank-speed difference "
-          << "falls by " << g(fw, 2) << "x and the coupling-torque difference by " << g(fm, 2) << "x per decade: "
-          << verdictText(holds ? Finding::Verdict::Holds : Finding::Verdict::Fails) << ".\n";
+      const std::string text = "from " + g(lo->accuracy) + " to " + g(hi->accuracy) + " the crank-speed difference " +
+                               "falls by " + g(fw, 2) + "x and the coupling-torque difference by " + g(fm, 2) +
+                               "x per decade (at least 3x required)";
+      md_ << "- " << label << ": " << text << ": "
+          << verdict(label + " convergence", holds ? Verdict::Holds : Verdict::Fails, text) << ".\n";
     }
     bool above = false;
     for (const auto& c : r_.convergence) above = above || (c.accuracy >= 1e-9 && !c.pass);
@@ -187,14 +197,17 @@ void ReportWriter::perCart() {
       << "Order amplitudes A_k of the coupling torque M over the last whole crank revolutions, in crank angle.\n\n";
   for (const auto& c : r_.per_cart) {
     md_ << "- **" << c.label << "** " << c.description << ". " << c.explanation;
-    if (c.verdict != Finding::Verdict::Measurement) md_ << " " << verdictText(c.verdict) << ".";
-    for (const auto& [k, v] : c.measured) md_ << " " << k << ": " << v << ".";
+    // Every case makes its claims (a) and (b): one without a verdict (no result) counts as FAILED.
+    const Verdict v = c.verdict == Verdict::Holds ? Verdict::Holds : Verdict::Fails;
+    md_ << " " << verdict(c.label, v, c.description + ". " + c.explanation) << ".";
+    for (const auto& [k, val] : c.measured) md_ << " " << k << ": " << val << ".";
     if (!c.command.empty()) md_ << " `" << c.command << "`";
     md_ << "\n";
   }
 }
 
 void ReportWriter::differences() {
+  section("(2) Where the physics differ");
   md_ << "\n## (2) Where the physics differ\n\n"
       << "Each case changes one modelling aspect away from (1) (or runs a shipped scene as it is); "
       << "the differences measured, and the measurement that explains them. \"reactions\" = largest "
@@ -216,7 +229,7 @@ void ReportWriter::differences() {
   md_ << "\n";
   for (const auto& c : r_.differences) {
     md_ << "- **" << c.label << "** " << c.explanation;
-    if (c.verdict != Finding::Verdict::Measurement) md_ << " " << verdictText(c.verdict) << ".";
+    if (c.verdict != Verdict::Measurement) md_ << " " << verdict(c.label, c.verdict, c.explanation) << ".";
     for (const auto& [k, v] : c.measured) md_ << " " << k << ": " << v << ".";
     if (!c.command.empty()) md_ << " `" << c.command << "`";
     md_ << "\n";
@@ -272,18 +285,24 @@ ValidationReport ReportWriter::build() {
       << "partly unstated inputs (listed in the scene files' headers); the likely causes of "
       << "each gap are listed after its table.\n";
   for (const auto& p : r_.papers) {
+    section("(3) " + p.title);
     if (p.id == "loveikin2007") loveikin2007(p);
     if (p.id == "energy_balanced") energyBalanced(p);
     if (p.id == "loveikin2018") loveikin2018(p);
     if (!p.findings.empty()) {
-      md_ << "\nLikely causes of the gap, each with the comparison behind it:\n\n";
-      for (const auto& f : p.findings)
-        md_ << "- " << f.text << (f.verdict == Finding::Verdict::Measurement ? "" : " " + verdictText(f.verdict)) << "\n";
+      md_ << "\nThe gap and its likely causes, each with the comparison behind it:\n\n";
+      int n = 0;
+      for (const auto& f : p.findings) {
+        const std::string id = p.id + "." + std::to_string(++n);
+        md_ << "- " << (f.verdict == Verdict::Measurement ? "" : "**" + id + "** ") << f.text
+            << (f.verdict == Verdict::Measurement ? "" : " " + verdict(id, f.verdict, f.text)) << "\n";
+      }
     }
   }
   sensitivity();
   analytic();
-  md_ << motorReportMarkdown(r_.motor);
+  motor();
+  items();
   out_.markdown = md_.str();
 
   // results.json
@@ -312,11 +331,7 @@ ValidationReport ReportWriter::build() {
       pts.push_back(pj);
     }
     nlohmann::json findings = nlohmann::json::array();
-    for (const auto& f : p.findings)
-      findings.push_back({{"text", f.text},
-                          {"verdict", f.verdict == Finding::Verdict::Holds   ? "holds"
-                                      : f.verdict == Finding::Verdict::Fails ? "failed"
-                                                                             : "measurement"}});
+    for (const auto& f : p.findings) findings.push_back({{"text", f.text}, {"verdict", verdictKey(f.verdict)}});
     nlohmann::json other = nlohmann::json::array();
     for (const auto& s : p.other_reading) other.push_back({{"x", s.x}, {"k", s.k}, {"reduced", metricsJson(s.reduced)}});
     j["papers"][p.id] = {{"title", p.title}, {"scene", p.scene_file}, {"start", p.start}, {"x_key", p.x_key},
@@ -348,14 +363,67 @@ ValidationReport ReportWriter::build() {
         {"harmonics_forced", harm(a.closed_forced, a.measured_forced)},
         {"harmonics_resonant", harm(a.closed_resonant, a.measured_resonant)}};
   }
+  j["claims"] = nlohmann::json::array();
+  for (const Claim& c : out_.claims)
+    j["claims"].push_back({{"id", c.id}, {"section", c.section}, {"verdict", verdictKey(c.verdict)}, {"text", c.text}});
+  const ClaimCount n = countClaims(out_.claims);
+  j["claim_count"] = {{"holds", n.holds}, {"gap_explained", n.gaps}, {"failed", n.failed}};
+  j["equivalence_failed"] = failedEquivalenceCases(r_);
   out_.results = j;
   return std::move(out_);
+}
+
+// Section (5): each induction-motor claim (M1, ...) is a claim of the report like any other, so it is
+// counted in the summary and decides the exit status.
+void ReportWriter::motor() {
+  md_ << motorReportMarkdown(r_.motor);
+  for (const MotorClaim& c : r_.motor) {
+    if (c.verdict == Verdict::Measurement) continue;
+    std::string text = c.title;
+    for (const std::string& l : c.lines) text += "; " + l;
+    out_.claims.push_back({c.id, "(5) The induction-motor laws", text, c.verdict});
+  }
+}
+
+int ReportWriter::firstItemNumber() const { return r_.motor.empty() ? 5 : 6; }
+
+void ReportWriter::items() {
+  for (std::size_t i = 0; i < r_.sections.size(); ++i) {
+    const ValidationSection& s = r_.sections[i];
+    md_ << "\n## (" << i + firstItemNumber() << ") " << s.title() << "\n\n" << s.markdown();
+    for (const Claim& c : s.claims()) out_.claims.push_back(c);
+  }
 }
 
 }  // namespace report_detail
 
 ValidationReport buildValidationReport(const ValidationResults& results, const std::string& figure_dir) {
   return report_detail::ReportWriter(results, figure_dir).build();
+}
+
+int failedEquivalenceCases(const ValidationResults& results) {
+  int failed = 0;
+  for (const auto& c : results.equivalence)
+    if (!c.pass) ++failed;
+  return failed;
+}
+
+int validationExitStatus(const ValidationResults& results, const ValidationReport& report) {
+  return failedEquivalenceCases(results) == 0 && countClaims(report.claims).failed == 0 ? 0 : 1;
+}
+
+std::string validationSummary(const ValidationResults& results, const ValidationReport& report) {
+  const ClaimCount n = countClaims(report.claims);
+  std::ostringstream o;
+  o << n.total() << " claims: " << n.holds << " hold, " << n.gaps << " gap(s) explained, " << n.failed << " FAILED; "
+    << results.equivalence.size() << " equivalence cases, " << failedEquivalenceCases(results) << " failed\n";
+  for (const Claim& c : report.claims)
+    if (c.verdict == Verdict::Fails) {
+      std::string head = c.text.substr(0, 160);
+      if (head.size() < c.text.size()) head += " ...";
+      o << "  FAILED " << c.id << " (" << c.section << "): " << head << "\n";
+    }
+  return o.str();
 }
 
 }  // namespace rollerdyn::validation

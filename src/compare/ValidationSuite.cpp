@@ -193,6 +193,14 @@ ValidationResults Suite::run() {
     log("(5) induction motor");
     r.motor = runMotorValidation(o_);
   }
+  if (!interrupted()) {
+    ItemContext ctx;
+    ctx.model_dir = o_.model_dir;
+    ctx.quick = o_.quick;
+    ctx.interrupt = o_.interrupt;
+    ctx.log_line = o_.log;
+    r.sections = runValidationItems(ctx, o_.items);
+  }
   r.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
   return r;
 }

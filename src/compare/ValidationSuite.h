@@ -20,6 +20,7 @@
 
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -29,6 +30,8 @@
 
 #include "compare/ModelComparison.h"
 #include "compare/TwoRotorCheck.h"
+#include "compare/ValidationClaims.h"
+#include "compare/ValidationItems.h"
 #include "io/Table.h"
 #include "report/Gnuplot.h"  // PlotSpec only (a plain struct): drawing is the caller's business
 #include "scene/Scene.h"
@@ -52,6 +55,8 @@ struct ValidationOptions {
   std::string published_dir = "validation/published";
   const std::atomic<bool>* interrupt = nullptr;     // Ctrl-C: the current run stops early
   std::function<void(const std::string&)> log;      // one line per step (may be empty)
+  std::vector<NamedItem> items;                     // run after (1)-(4), in order (ValidationItems.h;
+                                                    // the command's list: src/cli/ValidationItemList.cpp)
 };
 
 // Steady-state metrics of one run (analysis/Metrics.h) with what the tables need.
@@ -70,7 +75,7 @@ RunMetrics runMetrics(const Scene& scene, const RunResult& run);
 // A finding beside a paper's table: a sentence carrying the numbers of the run and, where it
 // states a claim, the outcome of the comparison behind it (computed in PaperFindings.cpp).
 struct Finding {
-  enum class Verdict { Measurement, Holds, Fails };
+  using Verdict = validation::Verdict;
   Verdict verdict = Verdict::Measurement;  // Measurement: numbers reported, no claim made
   std::string text;
 };
@@ -101,7 +106,8 @@ struct SweepPoint {
   RunMetrics reduced;           // the scene as shipped, reduced model (CVODE)
   RunMetrics variant;           // the paper's own modelling choices (see PaperSweep)
   RunMetrics multibody;
-  bool has_variant = false, has_multibody = false, has_published = false;
+  RunMetrics fitted;            // the Baranov scheme at PaperSweep::fitted_step_deg (energy-balanced drive paper)
+  bool has_variant = false, has_multibody = false, has_published = false, has_fitted = false;
   std::map<std::string, double> published;   // the published row (column -> value)
 };
 
@@ -118,6 +124,10 @@ struct PaperSweep {
   // the velocity), reduced model, k = 8000, at every Δφ of the sweep.
   std::vector<SweepPoint> other_reading;
   std::vector<Finding> findings;  // likely causes of the gap, each with its numbers and verdict
+  // The energy-balanced drive paper only: the step of the Baranov scheme that would close the
+  // gap without a flywheel, extrapolated to first order from the 1° step's move there [deg]
+  // (NaN: no positive step does); the sweep's points are run once more at it (SweepPoint::fitted).
+  double fitted_step_deg = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct SensitivityRow {
@@ -166,6 +176,7 @@ struct ValidationResults {
   std::vector<SensitivityRow> sensitivity;
   AnalyticResults analytic;
   std::vector<MotorClaim> motor;                  // (5) the induction-motor laws
+  std::vector<ValidationSection> sections;        // the validation items (ValidationItems.h), in order
 };
 
 ValidationResults runValidation(const ValidationOptions& options);
@@ -183,8 +194,19 @@ struct ValidationReport {
   std::vector<ReportFigure> figures;                      // to draw as <figure_dir>/<name>.png
   nlohmann::json results;                                 // results.json
   std::vector<std::pair<std::string, Table>> tables;      // our numbers as CSV: (file name, table)
+  std::vector<Claim> claims;                              // every verdict printed in report.md
 };
 // figure_dir: the figures' folder relative to report.md (links in the markdown).
 ValidationReport buildValidationReport(const ValidationResults& results, const std::string& figure_dir);
+
+// Equivalence cases (section (1)) that missed kEquivalenceTarget.
+int failedEquivalenceCases(const ValidationResults& results);
+
+// 0 when every equivalence case passes and every claim holds or is an explained gap; 1 otherwise.
+int validationExitStatus(const ValidationResults& results, const ValidationReport& report);
+
+// The closing lines of `validate`: claims (holding, explained gaps, FAILED, each FAILED one by id
+// and the start of its sentence) and equivalence cases.
+std::string validationSummary(const ValidationResults& results, const ValidationReport& report);
 
 }  // namespace rollerdyn::validation

@@ -32,7 +32,12 @@ TEST(ChildProcess, CpuLimitStopsTheChildAndIsReported) {
   EXPECT_FALSE(child->exitedCleanly());
   EXPECT_TRUE(child->stoppedByCpuLimit()) << child->howItEnded();
   EXPECT_TRUE(child->text.empty());
-  EXPECT_GE(child->cpu_seconds, 0.9);  // the limit is whole seconds of CPU, accounted in ticks
+  // The kernel sends SIGXCPU when the child's run time reaches the 1 s limit, but rusage reports
+  // utime + stime, sampled in ticks and without the time a loaded host stole from the virtual CPU:
+  // measured on this 2-core machine at load 14, 0.957 ... 0.999 s, and once 0.884 s. Half the
+  // limit tells a measured CPU time from a missing one (0) with room for any such accounting.
+  EXPECT_GE(child->cpu_seconds, 0.5);
+  EXPECT_LT(child->cpu_seconds, 2.5);  // stopped by the soft limit (1 s), long before the hard one (2 s) + margin
 }
 
 TEST(ChildProcess, ACrashIsReportedWithItsSignal) {

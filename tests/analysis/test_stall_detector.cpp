@@ -129,3 +129,21 @@ TEST(StallDetector, SlowBreakawayOnALargeInertiaIsNotHeld) {
   EXPECT_NEAR(held_at, StallDetector::kRestWindow, 0.01);
   EXPECT_EQ(creep.kind(), StallKind::Held);
 }
+
+// The band of "at rest" is 1 % of the synchronous crank speed ω0/u (StallDetector.h): a crank
+// creeping forwards at 1.5 % of it for 2 s is turning, one creeping at 0.5 % for 1 s is held.
+TEST(StallDetector, ThresholdIsOnePercentOfTheSynchronousCrankSpeed) {
+  StallDetector creeping(true, kSync), stopped(true, kSync);
+  bool stalled = false;
+  for (double t = 0; t <= 2.0; t += 0.005) {
+    const double w = 0.015 * kSync;
+    stalled = stalled || creeping.update(t, w * t, w, w);
+  }
+  EXPECT_FALSE(stalled) << "a crank at 1.5 % of ω0/u is not stalled";
+  for (double t = 0; t <= 1.0 + 1e-9; t += 0.005) {
+    const double w = 0.005 * kSync;
+    stalled = stopped.update(t, w * t, w, w);
+  }
+  EXPECT_TRUE(stalled) << "a crank at 0.5 % of ω0/u for 1 s is held";
+  EXPECT_EQ(stopped.kind(), StallKind::Held);
+}

@@ -5,8 +5,9 @@
 //
 // The test sends a real SIGINT to the real binary (test_cli does not link the multibody model,
 // so the flag cannot be set from inside a progress callback here). It waits until the process
-// has installed its handler (SigCgt in /proc/PID/status) and has been integrating for a moment,
-// so it never races the start-up.
+// has installed its handler (SigCgt in /proc/PID/status) and has used 0.5 s of CPU (utime +
+// stime in /proc/PID/stat): the whole default 10 s run costs about 0.3 s, so by then it has
+// integrated many rows however loaded the machine is (a wall-clock wait would not say that).
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,8 @@
 #include <fstream>
 #include <sstream>
 #include <thread>
+
+#include <unistd.h>
 
 #include "cli/CliTestSupport.h"
 
@@ -33,6 +36,25 @@ bool catchesSigint(pid_t pid) {
   for (std::string line; std::getline(in, line);)
     if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) & 0x2ull) != 0;
   return false;
+}
+
+// CPU seconds process `pid` has used (fields 14 and 15 of /proc/PID/stat, in clock ticks); -1
+// when it cannot be read or the process has ended (state Z).
+double cpuSecondsOf(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string text;
+  std::getline(in, text);
+  const std::size_t close = text.rfind(')');  // the command name may hold spaces
+  if (close == std::string::npos) return -1;
+  std::istringstream fields(text.substr(close + 2));
+  std::string f;
+  unsigned long long utime = 0, stime = 0;
+  for (int i = 3; i <= 15 && fields >> f; ++i) {
+    if (i == 3 && f == "Z") return -1;
+    if (i == 14) utime = std::stoull(f);
+    if (i == 15) stime = std::stoull(f);
+  }
+  return double(utime + stime) / double(::sysconf(_SC_CLK_TCK));
 }
 
 // A CSV is complete when it ends with a newline and every row has as many numeric fields as the
@@ -79,7 +101,12 @@ TEST(CliInterrupt, SigintStopsTheRunAndKeepsCompleteOutputs) {
         << "rollerdyn never installed its SIGINT handler";
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // let it integrate some rows
+  for (double cpu; (cpu = cpuSecondsOf(pid)) < 0.5;) {  // let it integrate some rows (file comment)
+    ASSERT_GE(cpu, 0.0) << "rollerdyn ended before the signal";
+    ASSERT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 300)
+        << "rollerdyn did not get 0.5 s of CPU in 300 s";
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
   ASSERT_EQ(::kill(pid, SIGINT), 0);
   const test::CliResult r = test::waitRollerdyn(pid, io.path(), 120);
   ASSERT_EQ(r.signal, 0) << "rollerdyn died of signal " << r.signal << "\n" << r.err;

@@ -81,6 +81,8 @@ void expectEquilibrium(const Scene& s, double beta, double H, double phi_f, doub
   EXPECT_NEAR(r.friction, fr, 1e-12 * scale);
 }
 
+// Random rod angle, rod force, friction (up to 0.1), inertia force, centre-of-mass height and
+// front and rear roller forces: the solution satisfies every equation of the balance.
 TEST(CartStatics, EquilibriumResidualVanishesForRandomInputsWithDepth) {
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> U(-1.0, 1.0);
@@ -91,6 +93,10 @@ TEST(CartStatics, EquilibriumResidualVanishesForRandomInputsWithDepth) {
     for (int i = 0; i < 500; ++i) {
       s.loads.guide_friction = 0.1 * (0.5 + 0.5 * U(rng));  // up to 0.1: stress the sign logic
       s.carts.geometry.com_height = 0.5 * U(rng);
+      // Front and rear compacting rollers pressing with different forces, so that each one's
+      // lever arm (p - a front, p + a rear) shows in the moment balance.
+      s.loads.roller_normal_front = 20000 * (0.5 + 0.5 * U(rng));
+      s.loads.roller_normal_rear = 20000 * (0.5 + 0.5 * U(rng));
       const double beta = 0.25 * U(rng);
       const double H = 30000 * U(rng);
       const double phi_f = U(rng);

@@ -165,6 +165,47 @@ TEST(ReducedLoads, OpposingRollerForcesAverageToSeed004MeanTorque) {
   EXPECT_NEAR(mean, 2 * 3562 * 2 * 0.2 / M_PI, 0.5);  // 907.03 N·m printed
 }
 
+// The rods' weight as the derivative of their potential, V written out here from the geometry:
+// a distributed rod's centre lies halfway between its crank pin (height r·sin θ) and its cart (on
+// the axis, height 0), V = Σ m_rod·g·r·sin θ_j/2; a split rod's pin half-mass sits at r·sin θ,
+// V = Σ (m_rod/2)·g·r·sin θ_j; a massless rod has none. With no roller forces and no friction
+// the resisting torque is dV/dφ (central difference, h = 1e-5: error ~h²·|V'''|/6 ≈ 1e-9 N·m),
+// both from loadTorque() and in the right-hand side the integrator uses (evaluate()).
+TEST(ReducedLoads, GravityTorqueIsTheDerivativeOfTheRodsPotential) {
+  for (RodModel rods : {RodModel::Distributed, RodModel::Split, RodModel::Massless}) {
+    Scene s = seed004LikeScene();
+    s.carts.count = 3;
+    s.carts.side = {1, -1, 1};
+    s.crank.offset = 2.0;
+    s.rods.model = rods;
+    s.loads.roller_force_front = s.loads.roller_force_rear = 0.0;
+    s.loads.roller_normal_front = s.loads.roller_normal_rear = 0.0;
+    s.loads.guide_friction = 0.0;
+    s.loads.gravity = 9.81;
+    const ReducedModel m(s);
+    const double r = s.crank.radius, g = s.loads.gravity;
+    const double mass = rods == RodModel::Distributed ? s.rods.mass : rods == RodModel::Split ? 0.5 * s.rods.mass : 0.0;
+    const double height = rods == RodModel::Distributed ? 0.5 : 1.0;
+    auto V = [&](double phi) {
+      double v = 0;
+      for (int j = 0; j < 3; ++j) v += mass * g * height * r * std::sin(phi + j * s.crank.offset);
+      return v;
+    };
+    const double h = 1e-5;
+    double largest = 0;
+    for (double phi = -1.0; phi < 6.0; phi += 0.37) {
+      const double dV = (V(phi + h) - V(phi - h)) / (2 * h);
+      largest = std::max(largest, std::abs(dV));
+      EXPECT_NEAR(m.loadTorque(phi, 3.0), dV, 1e-6) << toString(rods) << " phi " << phi;
+      Eigen::VectorXd y = m.initialState();
+      y(m.iPhi()) = phi;
+      y(m.iOmega()) = 3.0;
+      EXPECT_NEAR(m.evaluate(y).load_torque, dV, 1e-6) << toString(rods) << " phi " << phi << " (right-hand side)";
+    }
+    if (rods != RodModel::Massless) EXPECT_GT(largest, 10.0);  // torques of tens of N·m: the check has teeth
+  }
+}
+
 }  // namespace
 }  // namespace rollerdyn
 

@@ -1,0 +1,72 @@
+// Validation item: the motor torque of both models' runs against Kloss's formula written out
+// from the catalogue data of the scene file (Loveikin, Pochka, Romasevych (2018) eq. (37)):
+//   s_n = 1 - ω_n/ω0,  s_kr = s_n·(λ + √(λ² - 1)),  s = 1 - u·ω_motor/ω0,
+//   M = 2·M_kr / (s/s_kr + s_kr/s)  at the rotor,  M·u·η at the crank axis (the motor_torque column),
+// from motor.omega_sync, motor.omega_nominal, motor.overload_ratio, motor.breakdown_torque,
+// reducer.ratio and reducer.efficiency as given, not from the critical slip the scene parser
+// derives. Every row of the run is compared. Tolerance 1e-9 of the breakdown torque at the crank
+// M_kr·u·η: the two sides differ by the rounding of s (the run's ω_motor, a double, ~1e-16) and
+// the order of operations (~1e-15 of M_kr); a 1 % error in s_kr moves the torque by ~1 % of its
+// value near synchronous speed (M ≈ 2·M_kr·s/s_kr), i.e. by ~1e-4 of M_kr·u·η or more at the slips
+// of these runs.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "compare/ValidationItems.h"
+#include "multibody/MultibodySimulation.h"
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn::validation {
+namespace {
+
+std::string g(double v, int prec = 3) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
+  return buf;
+}
+
+constexpr double kRelativeToBreakdown = 1e-9;  // file comment
+
+}  // namespace
+
+ValidationSection motorLawChecks(const ItemContext& ctx) {
+  ValidationSection s("motor", "Motor torque against Kloss's formula from the catalogue data");
+  const std::string file = "balanced-4cart.yaml";
+  const Scene sc = ctx.load(file);
+  const double w0 = sc.motor.omega_sync, wn = sc.sizing.motor_omega_nominal, lam = sc.sizing.motor_overload_ratio;
+  const double Mkr = sc.motor.breakdown_torque, u = sc.reducer.ratio, eta = sc.reducer.efficiency;
+  if (!(wn > 0) || !(lam > 1)) throw std::runtime_error("the scene gives no motor.omega_nominal and motor.overload_ratio");
+  const double s_n = 1.0 - wn / w0, s_kr = s_n * (lam + std::sqrt(lam * lam - 1.0));
+  s.text() << "The scene `model/" << file << "` as shipped (`" << ctx.command("simulate", file)
+           << "`, both models). Catalogue data as given in the file: ω0 = " << g(w0, 5) << " rad/s, ω_n = " << g(wn, 5)
+           << " rad/s, λ = " << g(lam) << ", M_kr = " << g(Mkr, 5) << " N·m; reducer u = " << g(u) << ", η = " << g(eta)
+           << ". Hence s_n = 1 − ω_n/ω0 = " << g(s_n, 5) << " and s_kr = s_n·(λ + √(λ² − 1)) = " << g(s_kr, 5)
+           << " (Loveikin, Pochka, Romasevych (2018), eq. (37)). At every output row the motor_torque column (at the "
+              "crank axis) is compared with 2·M_kr/(s/s_kr + s_kr/s)·u·η at s = 1 − u·ω_motor/ω0 from the same row. "
+              "Tolerance 1e-9 of M_kr·u·η (round-off of s and of the order of operations is ~1e-15 of it).\n\n";
+  for (const bool multibody : {true, false}) {
+    if (ctx.interrupted()) break;
+    const RunResult run = multibody ? runMultibodyModel(sc) : runReducedModel(sc);
+    const Table& t = run.timeseries;
+    const std::vector<double> M = t.column("motor_torque"), w = t.column("omega_motor");
+    double worst = 0, s_lo = INFINITY, s_hi = -INFINITY;
+    for (std::size_t i = 0; i < M.size(); ++i) {
+      const double slip = 1.0 - u * w[i] / w0;
+      const double kloss = slip == 0.0 ? 0.0 : 2.0 * Mkr / (slip / s_kr + s_kr / slip) * u * eta;
+      worst = std::max(worst, std::abs(M[i] - kloss));
+      s_lo = std::min(s_lo, slip);
+      s_hi = std::max(s_hi, slip);
+    }
+    const double scale = Mkr * u * eta;
+    s.claim(!M.empty() && worst <= kRelativeToBreakdown * scale,
+            std::string(multibody ? "multibody model" : "reduced model") + ": " + std::to_string(M.size()) +
+                " rows, slip from " + g(s_lo, 3) + " to " + g(s_hi, 3) + "; largest |motor_torque − Kloss| = " + g(worst, 2) +
+                " N·m = " + g(worst / scale, 2) + " of M_kr·u·η = " + g(scale, 5) + " N·m (at most " +
+                g(kRelativeToBreakdown) + ").");
+  }
+  return s;
+}
+
+}  // namespace rollerdyn::validation

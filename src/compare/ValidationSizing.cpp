@@ -1,0 +1,388 @@
+// Validation item: the drive-sizing answers (src/analysis/DriveSizing.h, summary.json `sizing`)
+// recomputed by hand from the columns of the run's CSV tables, the files an engineer gets. The
+// hand computation follows the definitions the documentation states (steady window = the last N
+// whole crank revolutions; time means and RMS by the trapezoidal rule over the window's rows;
+// P = (∫|F|³·n dt / ∫n dt)^(1/3) with the joint's rotation speed n; L10 = (C/P)³·10⁶
+// revolutions, L10h = L10/(n̄/2π·3600); M_n = M_kr/λ) and shares no code with the sizing: only
+// the CSV text and the parsed summary.json are compared.
+//
+// Tolerance of every comparison: 1e-9 relative to the figure's scale, the size of the operands
+// it is computed from (its own size, except for a difference of nearly equal numbers: the slip
+// 1 - ω_r/ω0 against 1, δ = (ω_max - ω_min)/ω_mean against ω_max/ω_mean, ΔT = T_max - T_min
+// against T_max, the mean of a swinging signal against its peak). The CSV keeps 12 significant digits (a relative rounding
+// of 5e-13 per value) and the two sides sum the same ~600 trapezoids in different orders
+// (~1e-13); 1e-9 leaves three orders of margin for that,
+// while any error of definition moves a figure by far more: one row more or less at an end of
+// the window moves an integral by ~1/600 ≈ 2e-3, a factor u·η by ~10, the life exponent 3 → 10/3
+// moves L10 by (C/P)^(1/3), a few tens of per cent for the ratings used here. The window's ends
+// (times interpolated between rows) are compared to 1e-8 s: φ in the CSV carries ~1e-11 rad.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/Summary.h"
+#include "compare/ValidationItems.h"
+#include "io/AtomicFile.h"
+#include "multibody/MultibodySimulation.h"
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn::validation {
+namespace {
+
+using nlohmann::json;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+constexpr double kRelative = 1e-9;    // file comment
+constexpr double kTimeSeconds = 1e-8; // window ends [s], file comment
+
+std::string g(double v, int prec = 3) {
+  if (!std::isfinite(v)) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
+  return buf;
+}
+
+// A CSV as rollerdyn writes it (header of `name[unit]` cells, rows of numbers), read column-wise.
+struct Csv {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> columns;
+  bool has(const std::string& n) const { return std::find(names.begin(), names.end(), n) != names.end(); }
+  const std::vector<double>& col(const std::string& n) const {
+    const auto it = std::find(names.begin(), names.end(), n);
+    if (it == names.end()) throw std::runtime_error("CSV has no column " + n);
+    return columns[static_cast<std::size_t>(it - names.begin())];
+  }
+};
+
+Csv parseCsv(const std::string& text) {
+  Csv c;
+  std::istringstream in(text);
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string f;
+    std::size_t i = 0;
+    while (std::getline(fields, f, ',')) {
+      if (header) {
+        c.names.push_back(f.substr(0, f.find('[')));
+        c.columns.emplace_back();
+      } else {
+        if (i >= c.columns.size()) throw std::runtime_error("CSV row longer than its header");
+        c.columns[i].push_back(std::strtod(f.c_str(), nullptr));
+      }
+      ++i;
+    }
+    header = false;
+  }
+  return c;
+}
+
+// The last `n` whole crank revolutions: revolution k runs from the first time φ reaches
+// φ_0 + 2πk to the first time it reaches φ_0 + 2π(k+1) (linear between rows); the window's rows
+// are those with t_begin <= t <= t_end.
+struct Window {
+  double t_begin = kNaN, t_end = kNaN;
+  int revolutions = 0;
+  std::size_t b = 0, e = 0;      // rows [b, e)
+  std::vector<double> crossings; // t of φ_0 + 2πk, k = 0, 1, ... (the run's whole revolutions)
+};
+Window lastRevolutions(const std::vector<double>& t, const std::vector<double>& phi, int n) {
+  std::vector<double> cross{t.front()};
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    double target = phi.front() + kTwoPi * double(cross.size());
+    while (phi[i] >= target && phi[i - 1] < target) {
+      cross.push_back(t[i - 1] + (target - phi[i - 1]) / (phi[i] - phi[i - 1]) * (t[i] - t[i - 1]));
+      target = phi.front() + kTwoPi * double(cross.size());
+    }
+  }
+  Window w;
+  w.crossings = cross;
+  const int whole = int(cross.size()) - 1;
+  w.revolutions = std::min(n, whole);
+  if (w.revolutions < 1) return w;
+  w.t_begin = cross[cross.size() - 1 - std::size_t(w.revolutions)];
+  w.t_end = cross.back();
+  while (w.b < t.size() && t[w.b] < w.t_begin) ++w.b;
+  w.e = w.b;
+  while (w.e < t.size() && t[w.e] <= w.t_end) ++w.e;
+  return w;
+}
+
+// ∫ y dt over rows [b, e) by trapezoids.
+double integral(const std::vector<double>& t, const std::vector<double>& y, std::size_t b, std::size_t e) {
+  double s = 0;
+  for (std::size_t i = b + 1; i < e; ++i) s += 0.5 * (y[i] + y[i - 1]) * (t[i] - t[i - 1]);
+  return s;
+}
+
+// Relative differences of reported figures from the hand-computed ones, the largest kept.
+struct Comparison {
+  double worst = 0;
+  std::string worst_name;
+  int count = 0;
+  std::vector<std::string> missing;
+  // |hand - reported| / scale; `scale`: the size the figure is judged against (its own |value|
+  // unless that can be 0, e.g. the mean of a swinging force: then its peak).
+  void add(const std::string& name, double hand, const json& reported, double scale) {
+    ++count;
+    if (!reported.is_number() || !std::isfinite(hand)) {
+      if (std::isfinite(hand) || reported.is_number()) missing.push_back(name);
+      return;
+    }
+    const double d = std::abs(hand - reported.get<double>()) / std::max(scale, 1e-300);
+    if (d >= worst) {
+      worst = d;
+      worst_name = name;
+    }
+  }
+  void add(const std::string& name, double hand, const json& reported) { add(name, hand, reported, std::abs(hand)); }
+  bool holds() const { return count > 0 && missing.empty() && worst <= kRelative; }
+  std::string sentence() const {
+    std::string s = std::to_string(count) + " figures, largest relative difference " + g(worst, 2) +
+                    (worst_name.empty() ? "" : " (" + worst_name + ")") + ", at most " + g(kRelative) + " required";
+    if (!missing.empty()) {
+      s += "; null in summary.json but computable by hand, or the reverse:";
+      for (const auto& m : missing) s += " " + m;
+    }
+    return s;
+  }
+};
+
+const json& at(const json& j, std::initializer_list<const char*> path) {
+  static const json null_json;
+  const json* p = &j;
+  for (const char* k : path) {
+    if (!p->is_object() || !p->contains(k)) return null_json;
+    p = &p->at(k);
+  }
+  return *p;
+}
+
+// The checks on one run of the scene: its CSV text and its summary.json, as a user gets them.
+void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, const std::string& ts_csv,
+              const std::string& rx_csv, const json& summary) {
+  const Csv ts = parseCsv(ts_csv);
+  const Csv rx = rx_csv.empty() ? Csv{} : parseCsv(rx_csv);
+  const json& sz = summary.at("sizing");
+  const std::vector<double>& t = ts.col("t");
+  const std::vector<double>& phi = ts.col("phi_crank");
+  const std::vector<double>& w = ts.col("omega_crank");
+  const int N = std::max(1, int(std::floor(sc.simulation.steady_window_revolutions)));
+  const Window win = lastRevolutions(t, phi, N);
+  const std::size_t b = win.b, e = win.e;
+  if (win.revolutions < 1 || e < b + 2) throw std::runtime_error(who + ": fewer than one whole crank revolution");
+  const double span = t[e - 1] - t[b];
+
+  // The window and the crank-speed metrics (Loveikin and Pochka (2007), eq. (12)-(14)); the mean
+  // speed of whole revolutions in closed form, 2πN/(t_end - t_begin).
+  const double dtb = std::abs(win.t_begin - at(sz, {"window", "t_begin"}).get<double>());
+  const double dte = std::abs(win.t_end - at(sz, {"window", "t_end"}).get<double>());
+  const double revs_rows = (phi[e - 1] - phi[b]) / kTwoPi;
+  Comparison cw;
+  cw.add("revolutions in the window's rows", revs_rows, at(sz, {"window", "revolutions"}));
+  const double w_mean = kTwoPi * win.revolutions / (win.t_end - win.t_begin);
+  const auto [wlo, whi] = std::minmax_element(w.begin() + long(b), w.begin() + long(e));
+  double eps_max = 0;
+  for (std::size_t i = b; i < e; ++i) eps_max = std::max(eps_max, std::abs(ts.col("eps_crank")[i]));
+  const double delta = (*whi - *wlo) / w_mean, H = eps_max / (w_mean * w_mean);
+  cw.add("ω_mean = 2πN/Δt", w_mean, at(summary, {"omega_crank", "mean"}));
+  cw.add("ω_min", *wlo, at(summary, {"omega_crank", "min"}));
+  cw.add("ω_max", *whi, at(summary, {"omega_crank", "max"}));
+  cw.add("δ", delta, at(summary, {"delta"}), *whi / w_mean);  // a difference: judged against its operands
+  cw.add("H", H, at(summary, {"H"}));
+  cw.add("k_p", delta * delta + H, at(summary, {"k_p"}));
+  s.claim(cw.holds() && dtb <= kTimeSeconds && dte <= kTimeSeconds,
+          who + ": steady window = the last " + std::to_string(win.revolutions) + " whole crank revolutions, t = " +
+              g(win.t_begin, 6) + " ... " + g(win.t_end, 6) + " s by hand (summary.json differs by " + g(dtb, 2) +
+              " and " + g(dte, 2) + " s, at most " + g(kTimeSeconds) + " s required); its mean crank speed " +
+              g(w_mean, 6) + " rad/s, δ = " + g(delta, 4) + ", H = " + g(H, 4) + ": " + cw.sentence() + ".");
+
+  // Motor (DriveSizing.h notation): rotor torque M = motor_torque/(u·η), rotor speed ω_r =
+  // u·omega_motor, slip s = 1 - ω_r/ω0, energy per crank revolution ∫M·ω_r dt / revolutions.
+  if (at(sz, {"motor"}).is_object()) {
+    const double u = sc.reducer.ratio, eta = sc.reducer.efficiency, w0 = sc.motor.omega_sync;
+    std::vector<double> M, M2, P, slip;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const double m = ts.col("motor_torque")[i] / (u * eta), wr = u * ts.col("omega_motor")[i];
+      M.push_back(m);
+      M2.push_back(m * m);
+      P.push_back(m * wr);
+      slip.push_back(1.0 - wr / w0);
+    }
+    double peak = 0;
+    for (std::size_t i = b; i < e; ++i) peak = std::max(peak, std::abs(M[i]));
+    const double mean = integral(t, M, b, e) / span, rms = std::sqrt(integral(t, M2, b, e) / span);
+    const double M_n = sc.motor.breakdown_torque / sc.sizing.motor_overload_ratio;
+    const double energy = integral(t, P, b, e) / revs_rows;
+    const auto [slo, shi] = std::minmax_element(slip.begin() + long(b), slip.begin() + long(e));
+    const json& m = at(sz, {"motor"});
+    Comparison c;
+    c.add("mean M", mean, at(m, {"torque_shaft", "mean"}), peak);
+    c.add("RMS M", rms, at(m, {"torque_shaft", "rms"}));
+    c.add("peak |M|", peak, at(m, {"torque_shaft", "peak"}));
+    c.add("RMS at the crank", rms * u * eta, at(m, {"torque_crank", "rms"}));
+    c.add("M_n = M_kr/λ", M_n, at(m, {"nominal_torque"}));
+    c.add("RMS/M_n", rms / M_n, at(m, {"rms_over_nominal"}));
+    c.add("peak/M_kr", peak / sc.motor.breakdown_torque, at(m, {"peak_over_breakdown"}));
+    c.add("energy per revolution", energy, at(m, {"energy_per_revolution"}));
+    c.add("slip min", *slo, at(m, {"slip", "min"}), 1.0);  // s = 1 - ω_r/ω0: operands of size 1
+    c.add("slip max", *shi, at(m, {"slip", "max"}), 1.0);
+    s.claim(c.holds(), who + ": motor at the rotor, M = motor_torque/(u·η) (u = " + g(u) + ", η = " + g(eta) +
+                           "): mean " + g(mean, 4) + ", RMS " + g(rms, 4) + ", peak " + g(peak, 4) + " N·m; RMS/M_n = " +
+                           g(rms / M_n, 3) + " with M_n = M_kr/λ = " + g(M_n, 4) + " N·m; ∫M·ω_r dt per crank "
+                           "revolution " + g(energy, 5) + " J; slip " + g(*slo, 3) + " ... " + g(*shi, 3) + ": " +
+                           c.sentence() + ".");
+  }
+
+  // Coupling torque and the flywheel's energy method: T = ½J_n1·ω_motor² + ½(J_c + n·m_rod/2·r²)·ω² +
+  // Σ ½(m'_B + m_rod/2)·v_j² (DriveSizing.h), ΔT the largest max - min within one revolution,
+  // J = time mean of 2T/ω², ΔJ = J·(δ/δ* - 1) for the target δ*.
+  {
+    const std::vector<double>& Mc = ts.col("coupling_torque");
+    const auto [clo, chi] = std::minmax_element(Mc.begin() + long(b), Mc.begin() + long(e));
+    const double cpeak = std::max(std::abs(*clo), std::abs(*chi));
+    const double m_rod_half = sc.rods.model == RodModel::Massless ? 0.0 : 0.5 * sc.rods.mass;
+    const double J1 = sc.motorSideInertia(),
+                 Jc = sc.crankSideInertia() + sc.carts.count * m_rod_half * sc.crank.radius * sc.crank.radius;
+    std::vector<double> T(t.size()), Jt(t.size());
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const double w1 = ts.has("omega_motor") ? ts.col("omega_motor")[i] : w[i];
+      T[i] = 0.5 * J1 * w1 * w1 + 0.5 * Jc * w[i] * w[i];
+      for (int j = 1; j <= sc.carts.count; ++j) {
+        const double v = ts.col("v_cart_" + std::to_string(j))[i];
+        T[i] += 0.5 * (sc.carts.mass + m_rod_half) * v * v;
+      }
+      Jt[i] = 2.0 * T[i] / (w[i] * w[i]);
+    }
+    double dT = 0, T_max = 0;  // over each whole revolution of the window, the largest; T_max its operands' size
+    const std::vector<double>& cross = win.crossings;
+    for (std::size_t k = cross.size() - 1 - std::size_t(win.revolutions); k + 1 < cross.size(); ++k) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (std::size_t i = b; i < e; ++i)
+        if (t[i] >= cross[k] && t[i] <= cross[k + 1]) lo = std::min(lo, T[i]), hi = std::max(hi, T[i]);
+      if (hi >= lo) dT = std::max(dT, hi - lo), T_max = std::max(T_max, hi);
+    }
+    const double J = integral(t, Jt, b, e) / span;
+    const json& c = at(sz, {"coupling"});
+    const json& f = at(sz, {"flywheel"});
+    Comparison k;
+    k.add("coupling mean", integral(t, Mc, b, e) / span, at(c, {"mean"}), cpeak);
+    k.add("coupling peak", cpeak, at(c, {"peak"}));
+    k.add("coupling swing", *chi - *clo, at(c, {"swing"}));
+    k.add("ΔT per revolution", dT, at(f, {"kinetic_energy_swing"}), T_max);  // a difference of T values
+    k.add("J = mean 2T/ω²", J, at(f, {"inertia_effective"}));
+    const double target = sc.sizing.target_delta;
+    const double added = target > 0 ? std::max(0.0, J * (delta / target - 1.0)) : kNaN;
+    // ΔJ inherits δ's operands: judged against J·(ω_max/ω_mean)/δ*.
+    k.add("ΔJ = J·(δ/δ* - 1)", added, at(f, {"added_inertia_crankshaft"}), J * (*whi / w_mean) / target);
+    s.claim(k.holds(), who + ": coupling torque mean " + g(integral(t, Mc, b, e) / span, 4) + ", peak " + g(cpeak, 4) +
+                           ", swing " + g(*chi - *clo, 4) + " N·m; kinetic energy swing per revolution ΔT = " + g(dT, 4) +
+                           " J, J = " + g(J, 5) + " kg·m², flywheel to add for δ* = " + g(target) + ": " + g(added, 4) +
+                           " kg·m²: " + k.sentence() + ".");
+  }
+
+  // Joints: every per-cart row of every joint kind in summary.json against the CSV columns.
+  if (rx.names.empty()) return;
+  const std::vector<double>& rt = rx.col("t");
+  if (rt != t) throw std::runtime_error(who + ": reactions.csv and timeseries.csv rows differ in time");
+  const double d = sc.carts.geometry.d;
+  Comparison jc;
+  std::string lives;
+  for (const char* kind : {"guide_roller_front", "guide_roller_rear", "rod_end", "crank_pin", "main_bearing"}) {
+    const json& per = at(sz, {"joints", kind, "per_cart"});
+    if (!per.is_array()) continue;
+    for (const json& row : per) {
+      const int j = row.at("cart").is_number() ? row.at("cart").get<int>() : 0;
+      const std::string cart = std::to_string(j), label = std::string(kind) + (j ? " " + cart : "");
+      // |F| and the joint's rotation speed n (DriveSizing.h): guide rollers |v|/(d/2), crank pin
+      // and main bearing |ω_crank|, rod end none (every instant counts equally).
+      std::vector<double> F, n;
+      const std::string k(kind);
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        if (k == "guide_roller_front") F.push_back(rx.col("N_front_" + cart)[i]);
+        if (k == "guide_roller_rear") F.push_back(rx.col("N_rear_" + cart)[i]);
+        if (k == "rod_end") F.push_back(rx.col("F_rod_" + cart)[i]);
+        if (k == "crank_pin") F.push_back(std::hypot(rx.col("crankpin_x_" + cart)[i], rx.col("crankpin_y_" + cart)[i]));
+        if (k == "main_bearing") F.push_back(std::hypot(rx.col("bearing_x")[i], rx.col("bearing_y")[i]));
+        if (k == "guide_roller_front" || k == "guide_roller_rear")
+          n.push_back(d > 0 ? std::abs(ts.col("v_cart_" + cart)[i]) / (0.5 * d) : 1.0);
+        else if (k == "rod_end")
+          n.push_back(1.0);
+        else
+          n.push_back(std::abs(w[i]));
+      }
+      std::vector<double> Fn(t.size()), F3n(t.size());
+      double peak = 0, lo = INFINITY, hi = -INFINITY;
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        Fn[i] = F[i];
+        F3n[i] = std::pow(std::abs(F[i]), 3) * n[i];
+      }
+      for (std::size_t i = b; i < e; ++i) {
+        peak = std::max(peak, std::abs(F[i]));
+        lo = std::min(lo, F[i]);
+        hi = std::max(hi, F[i]);
+      }
+      const double n_int = integral(t, n, b, e);
+      const double P = std::cbrt(integral(t, F3n, b, e) / n_int);
+      const bool rotates = k != "rod_end";
+      const double n_mean = rotates ? n_int / span : kNaN;
+      const double C = row.at("rating").is_number() ? row.at("rating").get<double>() : kNaN;
+      const double L10 = std::pow(C / P, 3.0) * 1e6, L10h = L10 / (n_mean / kTwoPi * 3600.0);
+      jc.add(label + " mean", integral(t, Fn, b, e) / span, row.at("mean"), peak);
+      jc.add(label + " amplitude", 0.5 * (hi - lo), row.at("amplitude"), peak);
+      jc.add(label + " peak", peak, row.at("peak"));
+      jc.add(label + " P", P, row.at("equivalent_load"));
+      jc.add(label + " mean speed", n_mean, row.at("mean_speed"));
+      jc.add(label + " L10", L10, row.at("L10_revolutions"));
+      jc.add(label + " L10h", L10h, row.at("L10_hours"));
+      if (std::string(kind) == "main_bearing" || (j == 1 && std::string(kind) == "guide_roller_front"))
+        lives += (lives.empty() ? "" : "; ") + label + ": P = " + g(P, 4) + " N, L10 = " + g(L10, 3) + " revolutions";
+    }
+  }
+  s.claim(jc.holds(), who + ": joint loads of every cart (mean, amplitude (max - min)/2, peak |F|, the "
+                          "speed-weighted cubic mean P, mean speed n̄, L10 = (C/P)³·10⁶, L10h = L10/(n̄/2π·3600)) "
+                          "from reactions.csv, e.g. " + lives + ": " + jc.sentence() + ".");
+}
+
+}  // namespace
+
+ValidationSection driveSizingChecks(const ItemContext& ctx) {
+  ValidationSection s("sizing", "Drive sizing recomputed by hand from the run's tables");
+  // Ratings and a target δ, so that every sizing figure is computed (the scene gives none):
+  // assumed catalogue-like values, not a design; they only set C and δ* in the formulas.
+  const std::vector<std::string> sets = {"sizing.target_delta=0.005",       "sizing.bearing_rating.guide_roller=60000",
+                                         "sizing.bearing_rating.rod_end=150000", "sizing.bearing_rating.crank_pin=150000",
+                                         "sizing.bearing_rating.main_bearing=400000"};
+  const Scene sc = ctx.load("balanced-4cart.yaml", sets);
+  s.text() << "The scene `model/balanced-4cart.yaml` as shipped, run by both models, with bearing ratings C and a "
+              "target δ* given only so that every figure is computed: `"
+           << ctx.command("simulate", "balanced-4cart.yaml", sets)
+           << "` (and `--model reduced`). Every figure of the drive sizing (summary.json `sizing`, the table the "
+              "console prints) is recomputed here from the columns of timeseries.csv and reactions.csv as written, "
+              "by the definitions the documentation states, sharing no code with the sizing: the steady window as "
+              "the last N whole crank revolutions (N = simulation.steady_window_revolutions), time means and RMS by "
+              "trapezoids over its rows, the equivalent load P = (∫|F|³·n dt / ∫n dt)^(1/3) (F: joint force, n: the "
+              "joint's rotation speed), L10 = (C/P)³·10⁶ revolutions (ball-bearing exponent 3), L10h = "
+              "L10/(n̄/2π·3600), M_n = M_kr/λ. Tolerance 1e-9 of each figure's scale, the size of the operands "
+              "it is computed from (for the slip 1 − ω_r/ω0: 1; for δ: ω_max/ω_mean; for ΔT: the largest T; for "
+              "a mean of a swinging signal: its peak): the CSV's 12 digits and the summation order account for ~1e-12 of that, a wrong "
+              "definition moves a figure by 1e-3 or more.\n\n";
+  for (const bool multibody : {true, false}) {
+    if (ctx.interrupted()) break;
+    const RunResult run = multibody ? runMultibodyModel(sc) : runReducedModel(sc);
+    if (!run.stats.complete) throw std::runtime_error(run.model + " run ended early: " + run.stats.status);
+    const json summary = json::parse(makeSummary(sc, run).dump());  // as summary.json stores it
+    checkRun(s, sc, multibody ? "multibody model" : "reduced model", toCsv(run.timeseries),
+             run.reactions.columns.empty() ? std::string() : toCsv(run.reactions), summary);
+  }
+  return s;
+}
+
+}  // namespace rollerdyn::validation
