@@ -405,7 +405,8 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
   // Still starting when the run ended: nothing is known of its running, so no verdict applies.
   const bool starting = s.motion == "starting";
   const std::string too_short = "the run ended before the drive settled (its speed still changes sign in the "
-                                "metrics window, or it is still gaining speed): run longer (simulation.t_end)";
+                                "metrics window, it is still gaining speed, or its swings still grow): run "
+                                "longer (simulation.t_end)";
   if (m.available) {
     SizingCheck h{"motor_heating", "thermal equivalent torque / nominal torque M_n, ≤ 1", kNaN, "", "", ""};
     const double steady = m.rms_over_nominal, whole = m.whole_run.thermal_over_nominal;

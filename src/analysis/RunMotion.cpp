@@ -61,6 +61,7 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
     if (!from_status.empty()) return from_status;
   }
   const Table& ts = run.timeseries;
+  bool swings_growing = false;  // the stall rule's reading of the last oscillation, if the crank rocked
   if (!sc.motor.enabled && ts.has("t") && ts.has("v_cart_1")) {
     // The rest rule on the rows: every cart slower than v_s for RestDetector::kWindow.
     RestDetector rest(true, sc.loads.velocity_smoothing);
@@ -87,6 +88,7 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
       if (d.update(row[it], row[ip], row[ic], row[im]))
         return d.kind() == StallKind::RockingWithoutGain ? "rocking" : "stalled";
     }
+    swings_growing = d.swingsGrowing();
     // A drive still held at rest when the run ends, with the motor connected in a stage the rule
     // skips (star that never changes over, a ramp longer than the run), did not start in this run:
     // the held rule's band and time, counted back from the last row, at any supply but none.
@@ -102,7 +104,9 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
   }
   if (!std::isfinite(m.omega_min) || !std::isfinite(m.omega_max)) return "unknown";
   if (m.omega_min < 0 && m.omega_max > 0) {
-    if (!(std::abs(window_advance) >= 2.0 * M_PI)) return "rocking";
+    // Rocking in the window whose swings still grow when the run ends: a rocking-then-starting
+    // drive that has not yet got over its dead centre; undecided, not "rocking".
+    if (!(std::abs(window_advance) >= 2.0 * M_PI)) return swings_growing && !steady_reached ? "starting" : "rocking";
     if (!steady_reached) return "starting";
   }
   if (m.omega_min == 0 && m.omega_max == 0) return "at_rest";

@@ -8,7 +8,8 @@
 //              "turning" once it turns in the metrics window,
 //   "starting" the crank got over its dead centres and turns, but the run ended before it settled
 //              (its speed still changes sign in the metrics window, or it turns one way and is
-//              still gaining speed revolution after revolution): run longer,
+//              still gaining speed revolution after revolution), or it rocks with swings that
+//              still grow when the run ends (it may yet get over its dead centre): run longer,
 //   "turning"  the crank turns one way: per-revolution metrics (δ, H, k_p, energy per revolution,
 //              the flywheel size) have a meaning,
 //   "at_rest"  no motor, and friction and loads have brought the machine to rest (RestDetector.h:

@@ -115,6 +115,9 @@ class StallDetector {
   }
 
   StallKind kind() const { return kind_; }
+  // Whether the crank has rocked and its last completed oscillation still gained (it may yet get
+  // over a dead centre: the start is undecided, not hopeless).
+  bool swingsGrowing() const { return kind_ == StallKind::None && last_amplitude_ > 0 && without_gain_ == 0; }
   double since() const { return since_; }  // when the hopeless state began [s], -1 if none
 
   // The status line both models write; it starts with "motor stalled" (held, driven backwards)

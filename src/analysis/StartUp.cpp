@@ -334,9 +334,10 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
     r.verdict = "the drive starts: the crank reaches 95 % of its steady mean speed " + fmt("%.4g", r.steady_mean_speed) +
                 " rad/s " + fmt("%.3g", r.run_up_time) + " s after switch-on";
   } else if (r.still_starting) {
-    r.verdict = "the drive is still starting when the run ends: the crank gets over its dead centres but has not "
-                "settled (its speed still changes sign within a revolution, or still grows from one revolution to the next), so no run-up time can be given yet: "
-                "run longer (simulation.t_end)";
+    r.verdict = "the drive is still starting when the run ends: the crank has not settled (it rocks with swings "
+                "that still grow, its speed still changes sign within a revolution, or still grows from one "
+                "revolution to the next), so whether and when it runs up cannot be given yet: run longer "
+                "(simulation.t_end)";
   } else if (std::isfinite(r.load_torque_start) && r.starting_torque_crank <= r.load_torque_start) {
     r.verdict = "the drive does not start: its starting torque " + fmt("%.4g", r.starting_torque_crank) + " N·m" +
                 at_start + " is below the load torque " + fmt("%.4g", r.load_torque_start) +

@@ -267,8 +267,8 @@ std::string summaryText(const nlohmann::json& s) {
         : motion == "rocking" ? "  (the crank swings back and forth instead of turning)"
         : motion == "stalled" ? "  (the motor stalled; why: see status)"
         : motion == "at_rest" ? "  (the machine is at rest: with the motor off, friction and loads hold it)"
-        : motion == "starting" ? "  (the crank got going but the run ended before it settled: run longer, "
-                                 "simulation.t_end; no sizing verdict applies yet)"
+        : motion == "starting" ? "  (the drive is still starting when the run ends: turning but not settled, or rocking "
+                                 "with swings that still grow; run longer, simulation.t_end; no sizing verdict applies yet)"
                               : "")
     << "\n";
   o << "status       " << str(at("status")) << "\n";

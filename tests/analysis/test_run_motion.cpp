@@ -224,3 +224,27 @@ TEST(RunMotion, ACrankStillGainingSpeedRevolutionAfterRevolutionIsStarting) {
   EXPECT_EQ(classifyMotion(s, run(0.0), m, 20.0, /*steady_reached=*/false), "turning");
   EXPECT_EQ(classifyMotion(s, run(0.2), m, 20.0, /*steady_reached=*/true), "turning");
 }
+
+// Finding of the 6-cart trial (90 deg offset, 300 kg·m² flywheel, 20 s): the swings grew every 2 s
+// from ±1.65 to -3.95 ... +4.22 rad/s when the run ended, and the run was called "rocking ...
+// instead of turning" with a FAIL. Growing swings at the end are an undecided start; swings of
+// constant size are rocking.
+TEST(RunMotion, RockingWithSwingsStillGrowingAtTheEndIsStarting) {
+  const Scene s = motorScene();  // ω0/u = 10 rad/s, band 0.1 rad/s
+  auto run = [](double growth) {  // φ = 0.5 + a(t)·sin(3t), a = 0.3·(1 + growth·t), 10 s
+    RunResult r;
+    r.model = "reduced";
+    r.timeseries.columns = {"t", "phi_crank", "omega_crank", "omega_motor"};
+    for (int i = 0; i <= 10000; ++i) {
+      const double t = 1e-3 * i, a = 0.3 * (1 + growth * t);
+      const double w = 0.3 * growth * std::sin(3 * t) + 3 * a * std::cos(3 * t);
+      r.timeseries.rows.push_back({t, 0.5 + a * std::sin(3 * t), w, w});
+    }
+    return r;
+  };
+  WindowMetrics m;
+  m.omega_min = -2.0;
+  m.omega_max = 2.0;
+  EXPECT_EQ(classifyMotion(s, run(0.3), m, 0.0, /*steady_reached=*/false), "starting");
+  EXPECT_EQ(classifyMotion(s, run(0.0), m, 0.0, /*steady_reached=*/false), "rocking");
+}
