@@ -235,9 +235,10 @@ SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
   bool any_steady = false;
   for (const SweepPoint& p : points)
     any_steady = any_steady || (p.complete && p.steady && std::isfinite(p.metric(metric)));
-  // A rocking or stalled crank is never an optimum, whatever its number says.
+  // A rocking or stalled crank, or one still starting when its run ended, is never an optimum,
+  // whatever its number says.
   auto candidate = [&](const SweepPoint& p) {
-    return p.complete && p.motion != "rocking" && p.motion != "stalled" &&
+    return p.complete && p.motion != "rocking" && p.motion != "stalled" && p.motion != "starting" &&
            std::isfinite(p.metric(metric)) && (!any_steady || p.steady);
   };
   for (std::size_t i = 0; i < points.size(); ++i) {
