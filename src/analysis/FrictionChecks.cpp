@@ -1,5 +1,6 @@
 #include "analysis/FrictionChecks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -79,6 +80,22 @@ std::vector<std::string> addFrictionWarnings(const Scene& scene, const RunResult
                     "forces give on the same motion; the drive torques are biased accordingly (set "
                     "reduced.guide_normals: kinetostatic)",
                     run.energy.friction_dissipation, 100.0 * deviation, run.friction_work_kinetostatic));
+  if (run.model == "reduced" && scene.reduced.guide_normals == ReducedGuideNormals::QuasiStatic &&
+      scene.simulation.reactions && !scene.hasCamDrive()) {
+    // The papers' statics leave out each cart's d'Alembert force, whose amplitude at the crank
+    // speed ω is m_B·r·ω²·(1 + r/l) (the slider-crank's acceleration at the dead centre).
+    const double omega = scene.motor.enabled && scene.reducer.ratio > 0 ? scene.motor.omega_sync / scene.reducer.ratio
+                                                                        : std::abs(scene.initial.crank_speed);
+    const double r = scene.crank.radius, lambda = r / scene.rods.length;
+    double m_B = scene.lightestCartMassWithRodShare();
+    for (int j = 0; j < scene.carts.count; ++j) m_B = std::max(m_B, scene.cartMassWithRodShare(j));
+    const double inertial = m_B * r * omega * omega * (1.0 + lambda);
+    w.push_back(fmt("the reduced model's joint loads (guide reactions, rod forces, bearing loads) are the papers' "
+                    "quasi-static ones: they leave out the carts' and rods' inertial forces, up to m_B·r·ω²·(1 + r/l) "
+                    "= %.3g kN per cart at ω = %.4g rad/s, so rod-end and guide loads can be several times too low; "
+                    "size joints with reduced.guide_normals: kinetostatic or with the multibody model",
+                    inertial / 1000.0, omega));
+  }
   summary["guide_friction"] = {
       {"coefficient", scene.loads.guide_friction},
       {"normal_forces", run.guide_normals.empty() ? nlohmann::json(nullptr) : nlohmann::json(run.guide_normals)},
