@@ -14,15 +14,10 @@
 #include "compare/ValidationItems.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::validation {
 namespace {
-
-std::string g(double v, int prec = 3) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-  return buf;
-}
 
 constexpr double kAccuracy = 1e-9;
 constexpr double kRelativeResidual = 1e-6;  // file comment
@@ -31,10 +26,10 @@ constexpr double kRelativeResidual = 1e-6;  // file comment
 
 ValidationSection energyBalanceChecks(const ItemContext& ctx) {
   ValidationSection s("energy", "Energy balance of the shipped scenes");
-  s.text() << "Each shipped scene as it is, at accuracy " << g(kAccuracy)
+  s.text() << "Each shipped scene as it is, at accuracy " << significant(kAccuracy)
            << ", in both models: the work integrals each model carries along with the motion must close, "
               "motor work W_m − damper dissipation D_k − guide-friction dissipation D_f − work on the concrete W_l − "
-              "ΔT − ΔV = residual, to |residual| ≤ " << g(kRelativeResidual)
+              "ΔT − ΔV = residual, to |residual| ≤ " << significant(kRelativeResidual)
            << "·E (E: the largest of W_m, W_l and the kinetic energy). At this accuracy integration leaves at most "
               "~1e-7·E; a force applied with a value other than the one whose power is booked leaves far more.\n\n";
   for (const char* file : {"balanced-4cart.yaml", "recuperative-2cart.yaml", "energy-balanced-3cart.yaml"}) {
@@ -47,10 +42,10 @@ ValidationSection energyBalanceChecks(const ItemContext& ctx) {
       const double rel = e.residualRelative();
       s.claim(r.stats.complete && std::abs(rel) <= kRelativeResidual,
               std::string(multibody ? "multibody model" : "reduced model") + ", `" + ctx.command("simulate", file, sets) +
-                  "`: W_m = " + g(e.motor_work, 5) + " J, D_k = " + g(e.damping_dissipation, 4) + " J, D_f = " +
-                  g(e.friction_dissipation, 4) + " J, W_l = " + g(e.load_work, 5) + " J, ΔT = " +
-                  g(e.kinetic_final - e.kinetic_initial, 4) + " J, ΔV = " + g(e.potential_final - e.potential_initial, 4) +
-                  " J; residual " + g(e.residual(), 2) + " J = " + g(rel, 2) + "·E (at most " + g(kRelativeResidual) + ")" +
+                  "`: W_m = " + significant(e.motor_work, 5) + " J, D_k = " + significant(e.damping_dissipation, 4) + " J, D_f = " +
+                  significant(e.friction_dissipation, 4) + " J, W_l = " + significant(e.load_work, 5) + " J, ΔT = " +
+                  significant(e.kinetic_final - e.kinetic_initial, 4) + " J, ΔV = " + significant(e.potential_final - e.potential_initial, 4) +
+                  " J; residual " + significant(e.residual(), 2) + " J = " + significant(rel, 2) + "·E (at most " + significant(kRelativeResidual) + ")" +
                   (r.stats.complete ? "" : "; the run ended early: " + r.stats.status) + ".");
     }
   }

@@ -17,15 +17,10 @@
 #include "compare/ValidationItems.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::validation {
 namespace {
-
-std::string g(double v, int prec = 3) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-  return buf;
-}
 
 constexpr double kTolerance = 1e-9;  // file comment
 
@@ -74,9 +69,9 @@ ValidationSection kinematicsChecks(const ItemContext& ctx) {
       s.claim(run.stats.complete && dx <= kTolerance && dv <= v_tol,
               std::string(multibody ? "multibody model" : "reduced model") + " on `" + ctx.command("simulate", c.file, c.sets) +
                   "` (" + std::to_string(sc.carts.count) + " carts, sides " + sides + ", Δφ = " +
-                  g(dphi * 180 / M_PI) + "°, " + std::to_string(phi.size()) + " rows): largest |x − closed form| " +
-                  g(dx, 2) + " m (at most " + g(kTolerance) + "), |v − closed form| " + g(dv, 2) + " m/s (at most " +
-                  g(v_tol, 2) + ")" + (run.stats.complete ? "" : "; the run ended early: " + run.stats.status) + ".");
+                  significant(dphi * 180 / M_PI) + "°, " + std::to_string(phi.size()) + " rows): largest |x − closed form| " +
+                  significant(dx, 2) + " m (at most " + significant(kTolerance) + "), |v − closed form| " + significant(dv, 2) + " m/s (at most " +
+                  significant(v_tol, 2) + ")" + (run.stats.complete ? "" : "; the run ended early: " + run.stats.status) + ".");
     }
   }
   return s;

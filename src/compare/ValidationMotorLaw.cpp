@@ -17,15 +17,10 @@
 #include "compare/ValidationItems.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::validation {
 namespace {
-
-std::string g(double v, int prec = 3) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-  return buf;
-}
 
 constexpr double kRelativeToBreakdown = 1e-9;  // file comment
 
@@ -40,9 +35,9 @@ ValidationSection motorLawChecks(const ItemContext& ctx) {
   if (!(wn > 0) || !(lam > 1)) throw std::runtime_error("the scene gives no motor.omega_nominal and motor.overload_ratio");
   const double s_n = 1.0 - wn / w0, s_kr = s_n * (lam + std::sqrt(lam * lam - 1.0));
   s.text() << "The scene `model/" << file << "` as shipped (`" << ctx.command("simulate", file)
-           << "`, both models). Catalogue data as given in the file: ω0 = " << g(w0, 5) << " rad/s, ω_n = " << g(wn, 5)
-           << " rad/s, λ = " << g(lam) << ", M_kr = " << g(Mkr, 5) << " N·m; reducer u = " << g(u) << ", η = " << g(eta)
-           << ". Hence s_n = 1 − ω_n/ω0 = " << g(s_n, 5) << " and s_kr = s_n·(λ + √(λ² − 1)) = " << g(s_kr, 5)
+           << "`, both models). Catalogue data as given in the file: ω0 = " << significant(w0, 5) << " rad/s, ω_n = " << significant(wn, 5)
+           << " rad/s, λ = " << significant(lam) << ", M_kr = " << significant(Mkr, 5) << " N·m; reducer u = " << significant(u) << ", η = " << significant(eta)
+           << ". Hence s_n = 1 − ω_n/ω0 = " << significant(s_n, 5) << " and s_kr = s_n·(λ + √(λ² − 1)) = " << significant(s_kr, 5)
            << " (Loveikin, Pochka, Romasevych (2018), eq. (37)). At every output row the motor_torque column (at the "
               "crank axis) is compared with 2·M_kr/(s/s_kr + s_kr/s)·u·η at s = 1 − u·ω_motor/ω0 from the same row. "
               "Tolerance 1e-9 of M_kr·u·η (round-off of s and of the order of operations is ~1e-15 of it).\n\n";
@@ -62,9 +57,9 @@ ValidationSection motorLawChecks(const ItemContext& ctx) {
     const double scale = Mkr * u * eta;
     s.claim(!M.empty() && worst <= kRelativeToBreakdown * scale,
             std::string(multibody ? "multibody model" : "reduced model") + ": " + std::to_string(M.size()) +
-                " rows, slip from " + g(s_lo, 3) + " to " + g(s_hi, 3) + "; largest |motor_torque − Kloss| = " + g(worst, 2) +
-                " N·m = " + g(worst / scale, 2) + " of M_kr·u·η = " + g(scale, 5) + " N·m (at most " +
-                g(kRelativeToBreakdown) + ").");
+                " rows, slip from " + significant(s_lo, 3) + " to " + significant(s_hi, 3) + "; largest |motor_torque − Kloss| = " + significant(worst, 2) +
+                " N·m = " + significant(worst / scale, 2) + " of M_kr·u·η = " + significant(scale, 5) + " N·m (at most " +
+                significant(kRelativeToBreakdown) + ").");
   }
   return s;
 }

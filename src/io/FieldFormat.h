@@ -17,5 +17,7 @@ std::string csvNumber(double v);
 std::string csvText(const std::string& s);
 // A JSON number, or null when v is not finite (JSON has no NaN or infinity).
 nlohmann::json jsonNumber(double v);
+// `digits` significant digits (%.*g), as numbers read in validation lines and study pages.
+std::string significant(double v, int digits = 3);
 
 }  // namespace rollerdyn

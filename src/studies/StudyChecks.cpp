@@ -16,15 +16,10 @@
 #include "scene/SceneParser.h"
 #include "studies/Optimizer.h"
 #include "studies/Sweep.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::validation {
 namespace {
-
-std::string g(double v, int prec = 3) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-  return buf;
-}
 
 constexpr double kSameRun = 1e-12;  // file comment
 
@@ -96,14 +91,14 @@ ValidationSection sweepRowChecks(const ItemContext& ctx) {
   for (std::size_t i = 0; i < r.points.size(); ++i) {
     const SweepPoint& row = r.points[i];
     worst = std::max(worst, rowDifference(row, own({key + "=" + row.texts.at(0)})));
-    deltas += (i ? ", " : "") + row.texts.at(0) + "° → " + g(row.metric("delta"), 4);
+    deltas += (i ? ", " : "") + row.texts.at(0) + "° → " + significant(row.metric("delta"), 4);
     for (std::size_t k = 0; k < i; ++k)  // how different the points are: smallest relative δ difference
       closest = std::min(closest, std::abs(row.metric("delta") / r.points[k].metric("delta") - 1.0));
   }
   s.claim(r.points.size() == 4 && worst <= kSameRun && closest > 100 * kSameRun,
           "Sweep: " + std::to_string(r.points.size()) + " rows, δ by offset " + deltas +
-              " (the points' δ differ by at least " + g(100 * closest, 2) + " %); largest relative difference of a "
-              "row from its own point's run " + g(worst, 2) + " (at most " + g(kSameRun) + ").");
+              " (the points' δ differ by at least " + significant(100 * closest, 2) + " %); largest relative difference of a "
+              "row from its own point's run " + significant(worst, 2) + " (at most " + significant(kSameRun) + ").");
 
   OptimizeOptions p;
   p.scene_path = ctx.path(file);
@@ -132,7 +127,7 @@ ValidationSection sweepRowChecks(const ItemContext& ctx) {
   s.claim(q.history.size() >= 3 && distinct >= 3 && worst_q <= kSameRun && objective <= kSameRun,
           "Optimization: " + std::to_string(q.history.size()) + " evaluations (" + std::to_string(distinct) +
               " with distinct δ); largest relative difference of an evaluation's metrics from its own point's run " +
-              g(worst_q, 2) + ", of its objective from that run's δ " + g(objective, 2) + " (at most " + g(kSameRun) + ").");
+              significant(worst_q, 2) + ", of its objective from that run's δ " + significant(objective, 2) + " (at most " + significant(kSameRun) + ").");
   return s;
 }
 
