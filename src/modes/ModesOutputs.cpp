@@ -1,5 +1,6 @@
 // What `rollerdyn modes` writes and prints from a ModesReport (ModalAnalysis.h): modes.json,
 // frozen.csv, campbell.csv, stability.csv and the console's lines.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -269,9 +270,22 @@ std::string modesText(const ModesReport& r) {
   std::snprintf(b, sizeof b, "; inertia swing %.3g %% of its mean\n", 100 * r.orders.inertia_relative_swing);
   os << b;
   if (r.campbell.applicable) {
-    os << "  Campbell crossings (" << r.campbell.crossings.size() << "):";
+    os << "  Campbell crossings (" << r.campbell.crossings.size()
+       << "; the layout's orders first, each group nearest the running speed first):";
+    // The crossings that matter first: the orders the carts' layout excites (the others are
+    // harmonics of the loads' shape, often a thousandth of the layout's), nearest the speed the
+    // drive runs at.
+    std::vector<CampbellCrossing> sorted = r.campbell.crossings;
+    const auto& layout = r.orders.layout;
+    auto rank = [&](const CampbellCrossing& c) {
+      const bool of_layout = std::find(layout.begin(), layout.end(), c.order) != layout.end();
+      const double distance = std::isfinite(r.steady.omega_mean) ? std::abs(c.omega - r.steady.omega_mean) : c.omega;
+      return std::make_pair(of_layout ? 0 : 1, distance);
+    };
+    std::stable_sort(sorted.begin(), sorted.end(),
+                     [&](const CampbellCrossing& a, const CampbellCrossing& b) { return rank(a) < rank(b); });
     int shown = 0;
-    for (const CampbellCrossing& c : r.campbell.crossings) {
+    for (const CampbellCrossing& c : sorted) {
       if (shown++ == 8) {
         os << " ...";
         break;

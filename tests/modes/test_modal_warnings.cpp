@@ -37,3 +37,32 @@ TEST(ModalWarnings, NoneBetweenTheOrders) {
   EXPECT_TRUE(light({}).warnings.empty());
   EXPECT_TRUE(light({"coupling.stiffness=41000", "coupling.damping=0"}).warnings.empty());
 }
+
+// Finding of the 6-cart trial: the console listed the crossings of load-shape harmonics (orders
+// 14-20, about a thousandth of the layout's order 6) first and the order-6 crossing, 1.5 % from
+// the running speed, last. The layout's orders come first, nearest the running speed first.
+TEST(ModesConsole, CampbellCrossingsOfTheLayoutsOrdersNearestTheRunningSpeedComeFirst) {
+  ModesReport r;
+  r.scene = "synthetic";
+  r.elastic = r.motor = true;
+  r.steady.found = true;
+  r.steady.omega_mean = 10.68;
+  r.steady.period = 2 * M_PI / 10.68;
+  r.orders.layout = {6, 12};
+  r.campbell.applicable = true;
+  auto crossing = [](int k, bool parametric, double w) {
+    CampbellCrossing c;
+    c.order = k;
+    c.parametric = parametric;
+    c.omega = w;
+    return c;
+  };
+  r.campbell.crossings = {crossing(20, true, 3.25), crossing(14, true, 9.29), crossing(12, false, 5.42),
+                          crossing(6, false, 10.84)};
+  const std::string text = modesText(r);
+  const auto at = [&](const char* s) { return text.find(s); };
+  ASSERT_NE(at("p=6 at 10.84"), std::string::npos) << text;
+  EXPECT_LT(at("p=6 at 10.84"), at("p=12 at 5.42"));
+  EXPECT_LT(at("p=12 at 5.42"), at("2p=14 at 9.29"));
+  EXPECT_LT(at("2p=14 at 9.29"), at("2p=20 at 3.25"));
+}
