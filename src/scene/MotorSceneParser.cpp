@@ -153,8 +153,18 @@ int readPolePairs(const Reader& in, double omega0, double f, bool checked) {
   if (!checked) return p;
   const double w0_of_p = w1 / p;
   if (std::abs(w0_of_p - omega0) > kSyncSpeedTolerance * omega0) {
-    const std::string want = "omega_sync = 2·pi·f_n/p (" + formatNumber(w0_of_p) + " rad/s with f_n = " +
-                             formatNumber(f) + " Hz, p = " + std::to_string(p) + ") within 0.1 %";
+    // With p given, the speed it implies; without it, p was inferred from the wrong ω0 itself,
+    // so the speeds of the usual pole pairs are the useful hint.
+    std::string want;
+    if (in.has("motor.pole_pairs")) {
+      want = "omega_sync = 2·pi·f_n/p (" + formatNumber(w0_of_p) + " rad/s with f_n = " + formatNumber(f) +
+             " Hz, p = " + std::to_string(p) + ") within 0.1 %";
+    } else {
+      want = "omega_sync = 2·pi·f_n/p within 0.1 % at f_n = " + formatNumber(f) + " Hz:";
+      for (int q = 1; q <= 4; ++q)
+        want += std::string(q > 1 ? "," : "") + " " + formatNumber(w1 / q) + " rad/s (p = " + std::to_string(q) + ")";
+      want += ", ... (motor.pole_pairs)";
+    }
     if (in.has("motor.pole_pairs") && blameSecond(doc, "motor.omega_sync", "motor.pole_pairs"))
       doc.fail("motor.pole_pairs", "p with 2·pi·f_n/p = omega_sync = " + formatNumber(omega0) + " rad/s",
                std::to_string(p));

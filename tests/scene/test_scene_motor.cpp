@@ -153,6 +153,10 @@ TEST(SceneMotor, PolePairsMustMatchTheSynchronousSpeed) {
   // Without machine data a Kloss scene is not held to it (old scenes with any ω0 stay valid).
   const Scene s = parseSceneText(withMotorKeys("  pole_pairs: 2"), "t.yaml");
   EXPECT_EQ(s.induction.pole_pairs, 2);
+  // Without pole_pairs the hint lists the synchronous speeds of the usual pole pairs (a p inferred
+  // from the wrong ω0 itself would point at p = 1 whatever the machine).
+  expectSceneError(withMotorKeys(kCircuit), {"motor.omega_sync:", "314.159265359 rad/s (p = 1), 157.079632679 rad/s (p = 2), 104.719755" , "got 1000"},
+                   {"motor.omega_sync=1000"});
   // --set of the frequency is blamed as the override that broke the rule.
   expectSceneError(withMotorKeys(kCircuit), {"--set #1 (motor.frequency=60)", "motor.frequency:"},
                    {"motor.frequency=60"});
