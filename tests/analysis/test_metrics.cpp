@@ -192,6 +192,20 @@ TEST(Metrics, MeanSpeedIsTimeWeightedNotSampleMean) {
   sample_mean /= static_cast<double>(ss.row_end - ss.row_begin);
   EXPECT_NEAR(sample_mean, s.w0 + s.A * s.A / (2 * s.w0), 2e-4);  // the bias the metric avoids
   EXPECT_GT(std::abs(sample_mean - m.omega_mean), 1e-2);
+
+  // Nor the midrange (ω_min + ω_max)/2, which a symmetric sinusoid cannot tell from the mean:
+  // ω = ω0 + a·sin(ω0·t) + b·cos(2·ω0·t) has mean ω0 over each revolution (φ(t + 2π/ω0) = φ(t) + 2π)
+  // but, with a = 1, b = 0.5, extremes ω0 + 0.75 and ω0 - 1.5: midrange ω0 - 0.375 rad/s.
+  const double w0 = 10.0, a = 1.0, b = 0.5;
+  RunResult skew;
+  skew.timeseries.columns = {"t", "phi_crank", "omega_crank"};
+  for (double t = 0; t <= 8 * 2 * kPi / w0; t += 1e-3)
+    skew.timeseries.rows.push_back({t, w0 * t - (a / w0) * std::cos(w0 * t) + (b / (2 * w0)) * std::sin(2 * w0 * t),
+                                    w0 + a * std::sin(w0 * t) + b * std::cos(2 * w0 * t)});
+  const SteadyState sk = detectSteadyState(skew.timeseries, 4);
+  const WindowMetrics ms = computeMetrics(skew, sk);
+  EXPECT_NEAR(ms.omega_mean, w0, 1e-6);
+  EXPECT_NEAR(ms.omega_midrange, w0 - 0.375, 1e-3);  // Loveikin and Pochka's (2007) printed "mean"
 }
 
 TEST(Metrics, RigidDriveWithoutCouplingColumnsReportsZeroSwings) {
