@@ -1,4 +1,5 @@
 #include "analysis/SizingSummary.h"
+#include "io/FieldFormat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,11 +36,6 @@ std::string fmt(const json& v, const char* f, double scale = 1.0) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v.get<double>() * scale);
   return buf;
-}
-
-const json& at(const json& j, const char* k) {
-  static const json null_json;
-  return j.is_object() && j.contains(k) ? j.at(k) : null_json;
 }
 
 }  // namespace
@@ -170,63 +166,63 @@ const std::vector<std::pair<std::string, std::string>>& sizingMetricPaths() {
 }
 
 std::string sizingText(const json& summary) {
-  const json& s = at(summary, "sizing");
+  const json& s = jsonMember(summary, "sizing");
   if (!s.is_object()) return "";
   std::ostringstream o;
   auto chk = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
   auto str = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
-  const json& w = at(s, "window");
-  const json& wr = at(s, "whole_run");
-  o << "drive sizing over the steady window t = " << fmt(at(w, "t_begin"), "%.4g") << " ... "
-    << fmt(at(w, "t_end"), "%.4g") << " s (" << fmt(at(w, "revolutions"), "%.3g") << " crank revolutions)"
-    << " and over the whole run t = " << fmt(at(wr, "t_begin"), "%.4g") << " ... " << fmt(at(wr, "t_end"), "%.4g")
+  const json& w = jsonMember(s, "window");
+  const json& wr = jsonMember(s, "whole_run");
+  o << "drive sizing over the steady window t = " << fmt(jsonMember(w, "t_begin"), "%.4g") << " ... "
+    << fmt(jsonMember(w, "t_end"), "%.4g") << " s (" << fmt(jsonMember(w, "revolutions"), "%.3g") << " crank revolutions)"
+    << " and over the whole run t = " << fmt(jsonMember(wr, "t_begin"), "%.4g") << " ... " << fmt(jsonMember(wr, "t_end"), "%.4g")
     << " s (start-up included)\n"
     << "  M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω_r rotor speed, ω0 synchronous speed\n";
-  const json& m = at(s, "motor");
+  const json& m = jsonMember(s, "motor");
   if (m.is_object()) {
-    const json &ts = at(m, "torque_shaft"), &tc = at(m, "torque_crank");
-    const json& r = at(m, "whole_run");
-    o << "  motor torque at the rotor M       mean " << fmt(at(ts, "mean"), "%.4g") << ", RMS "
-      << fmt(at(ts, "rms"), "%.4g") << ", peak |M| " << fmt(at(ts, "peak"), "%.4g") << " N·m (steady window)\n"
-      << "                                    mean " << fmt(at(at(r, "torque_shaft"), "mean"), "%.4g") << ", RMS "
-      << fmt(at(at(r, "torque_shaft"), "rms"), "%.4g") << ", peak |M| " << fmt(at(at(r, "torque_shaft"), "peak"), "%.4g")
+    const json &ts = jsonMember(m, "torque_shaft"), &tc = jsonMember(m, "torque_crank");
+    const json& r = jsonMember(m, "whole_run");
+    o << "  motor torque at the rotor M       mean " << fmt(jsonMember(ts, "mean"), "%.4g") << ", RMS "
+      << fmt(jsonMember(ts, "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(ts, "peak"), "%.4g") << " N·m (steady window)\n"
+      << "                                    mean " << fmt(jsonMember(jsonMember(r, "torque_shaft"), "mean"), "%.4g") << ", RMS "
+      << fmt(jsonMember(jsonMember(r, "torque_shaft"), "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(jsonMember(r, "torque_shaft"), "peak"), "%.4g")
       << " N·m (whole run)\n";
-    o << "  motor torque at the crank M·u·η   mean " << fmt(at(tc, "mean"), "%.4g") << ", RMS "
-      << fmt(at(tc, "rms"), "%.4g") << ", peak " << fmt(at(tc, "peak"), "%.4g") << " N·m (steady window)\n";
-    o << "  nominal torque M_n                " << fmt(at(m, "nominal_torque"), "%.4g") << " N·m ("
-      << str(at(m, "nominal_torque_source")) << "); breakdown torque M_kr " << fmt(at(m, "breakdown_torque"), "%.4g")
+    o << "  motor torque at the crank M·u·η   mean " << fmt(jsonMember(tc, "mean"), "%.4g") << ", RMS "
+      << fmt(jsonMember(tc, "rms"), "%.4g") << ", peak " << fmt(jsonMember(tc, "peak"), "%.4g") << " N·m (steady window)\n";
+    o << "  nominal torque M_n                " << fmt(jsonMember(m, "nominal_torque"), "%.4g") << " N·m ("
+      << str(jsonMember(m, "nominal_torque_source")) << "); breakdown torque M_kr " << fmt(jsonMember(m, "breakdown_torque"), "%.4g")
       << " N·m\n";
-    const json &ps = at(m, "power_shaft"), &pl = at(m, "power_line"), &sl = at(m, "slip");
-    o << "  shaft power M·ω_r                 mean " << fmt(at(ps, "mean"), "%.4g", 1e-3) << ", peak "
-      << fmt(at(ps, "peak"), "%.4g", 1e-3) << " kW (steady window)\n";
-    o << "  power drawn from the line         mean " << fmt(at(pl, "mean"), "%.4g", 1e-3) << ", peak "
-      << fmt(at(pl, "peak"), "%.4g", 1e-3) << " kW (steady window); mean "
-      << fmt(at(at(r, "power_line"), "mean"), "%.4g", 1e-3) << ", peak " << fmt(at(at(r, "power_line"), "peak"), "%.4g", 1e-3)
+    const json &ps = jsonMember(m, "power_shaft"), &pl = jsonMember(m, "power_line"), &sl = jsonMember(m, "slip");
+    o << "  shaft power M·ω_r                 mean " << fmt(jsonMember(ps, "mean"), "%.4g", 1e-3) << ", peak "
+      << fmt(jsonMember(ps, "peak"), "%.4g", 1e-3) << " kW (steady window)\n";
+    o << "  power drawn from the line         mean " << fmt(jsonMember(pl, "mean"), "%.4g", 1e-3) << ", peak "
+      << fmt(jsonMember(pl, "peak"), "%.4g", 1e-3) << " kW (steady window); mean "
+      << fmt(jsonMember(jsonMember(r, "power_line"), "mean"), "%.4g", 1e-3) << ", peak " << fmt(jsonMember(jsonMember(r, "power_line"), "peak"), "%.4g", 1e-3)
       << " kW (whole run)\n"
-      << "                                    (" << str(at(m, "line_power_basis")) << ")\n";
-    o << "  slip s = 1 - ω_r/ω0               " << fmt(at(sl, "min"), "%.4f") << " ... "
-      << fmt(at(sl, "max"), "%.4f") << " (steady window); " << fmt(at(at(r, "slip"), "min"), "%.4f") << " ... "
-      << fmt(at(at(r, "slip"), "max"), "%.4f") << " (whole run)\n";
-    o << "  motor energy per crank revolution " << fmt(at(m, "energy_per_revolution"), "%.4g", 1e-3) << " kJ\n";
+      << "                                    (" << str(jsonMember(m, "line_power_basis")) << ")\n";
+    o << "  slip s = 1 - ω_r/ω0               " << fmt(jsonMember(sl, "min"), "%.4f") << " ... "
+      << fmt(jsonMember(sl, "max"), "%.4f") << " (steady window); " << fmt(jsonMember(jsonMember(r, "slip"), "min"), "%.4f") << " ... "
+      << fmt(jsonMember(jsonMember(r, "slip"), "max"), "%.4f") << " (whole run)\n";
+    o << "  motor energy per crank revolution " << fmt(jsonMember(m, "energy_per_revolution"), "%.4g", 1e-3) << " kJ\n";
   } else {
     o << "  motor                             n/a (no motor torque in this run)\n";
   }
-  const json& f = at(s, "flywheel");
-  o << "  flywheel                          kinetic-energy swing ΔT " << fmt(at(f, "kinetic_energy_swing"), "%.4g")
-    << " J per revolution; drive inertia at the crank J " << fmt(at(f, "inertia_effective"), "%.4g")
-    << " kg·m²; δ " << fmt(at(f, "delta"), "%.4g") << "\n";
-  if (at(f, "target_delta").is_number()) {
-    o << "                                    for δ* = " << fmt(at(f, "target_delta"), "%.4g") << ": flywheel "
-      << fmt(at(f, "flywheel_crankshaft"), "%.4g") << " kg·m² on the crankshaft or "
-      << fmt(at(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n"
+  const json& f = jsonMember(s, "flywheel");
+  o << "  flywheel                          kinetic-energy swing ΔT " << fmt(jsonMember(f, "kinetic_energy_swing"), "%.4g")
+    << " J per revolution; drive inertia at the crank J " << fmt(jsonMember(f, "inertia_effective"), "%.4g")
+    << " kg·m²; δ " << fmt(jsonMember(f, "delta"), "%.4g") << "\n";
+  if (jsonMember(f, "target_delta").is_number()) {
+    o << "                                    for δ* = " << fmt(jsonMember(f, "target_delta"), "%.4g") << ": flywheel "
+      << fmt(jsonMember(f, "flywheel_crankshaft"), "%.4g") << " kg·m² on the crankshaft or "
+      << fmt(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n"
       << "                                    (energy method, J·δ constant: a first estimate; it can be far off where\n"
       << "                                    the carts' inertia or the motor's slip vary over a turn)\n";
-    const json& added = at(f, "added_inertia_crankshaft");
+    const json& added = jsonMember(f, "added_inertia_crankshaft");
     if (added.is_number() && added.get<double>() > 0) {
       // The smallest flywheel from runs, as a command that runs as printed: the scene file, the
       // user's --set options, a range that holds the estimate with room to spare.
-      const bool motor_shaft = at(f, "location").is_string() && at(f, "location").get<std::string>() == "motor_shaft";
-      const json& estimate = at(f, motor_shaft ? "flywheel_motor_shaft" : "flywheel_crankshaft");
+      const bool motor_shaft = jsonMember(f, "location").is_string() && jsonMember(f, "location").get<std::string>() == "motor_shaft";
+      const json& estimate = jsonMember(f, motor_shaft ? "flywheel_motor_shaft" : "flywheel_crankshaft");
       const double upper = std::max(10.0, 3.0 * (estimate.is_number() ? estimate.get<double>() : 0.0));
       auto quoted = [](const std::string& a) {
         if (a.find_first_of(" '\"$`\\*?;&|<>()") == std::string::npos) return a;
@@ -234,10 +230,10 @@ std::string sizingText(const json& summary) {
         for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
         return q + "'";
       };
-      std::string cmd = "rollerdyn optimize " + quoted(str(at(summary, "scene_path")));
+      std::string cmd = "rollerdyn optimize " + quoted(str(jsonMember(summary, "scene_path")));
       bool sets_speed = false;
-      if (at(summary, "overrides").is_array())
-        for (const json& ov : at(summary, "overrides"))
+      if (jsonMember(summary, "overrides").is_array())
+        for (const json& ov : jsonMember(summary, "overrides"))
           if (ov.is_string()) {
             cmd += " --set " + quoted(ov.get<std::string>());
             sets_speed = sets_speed || ov.get<std::string>().rfind("initial.crank_speed=", 0) == 0;
@@ -246,11 +242,11 @@ std::string sizingText(const json& summary) {
       // so that a heavy flywheel's slow start from rest (which may not settle within t_end) does
       // not make every design look unusable. Whether the drive starts from rest with the chosen
       // flywheel is a separate run.
-      const json& w_mean = at(at(summary, "omega_crank"), "mean");
+      const json& w_mean = jsonMember(jsonMember(summary, "omega_crank"), "mean");
       const bool start_at_speed = !sets_speed && w_mean.is_number() && w_mean.get<double>() > 0;
       if (start_at_speed) cmd += " --set initial.crank_speed=" + fmt(w_mean, "%.4g");
       cmd += " --param flywheel.inertia --range 0:" + fmt(json(upper), "%.0f") +
-             " --minimize flywheel.inertia --constraint 'delta<=" + fmt(at(f, "target_delta"), "%.4g") + "'";
+             " --minimize flywheel.inertia --constraint 'delta<=" + fmt(jsonMember(f, "target_delta"), "%.4g") + "'";
       o << "                                    the smallest flywheel (" << (motor_shaft ? "motor shaft" : "crankshaft")
         << ") that meets δ* in steady running, from runs"
         << (start_at_speed ? " started at this run's mean crank speed (whether the drive starts from rest with it "
@@ -263,52 +259,52 @@ std::string sizingText(const json& summary) {
   } else {
     o << "                                    target δ* not given (sizing.target_delta)\n";
   }
-  const json& c = at(s, "coupling");
+  const json& c = jsonMember(s, "coupling");
   if (c.is_object()) {
-    o << "  coupling torque (crank axis)      mean " << fmt(at(c, "mean"), "%.4g") << ", peak |M| "
-      << fmt(at(c, "peak"), "%.4g") << ", swing " << fmt(at(c, "swing"), "%.4g") << " N·m (steady window); peak |M| "
-      << fmt(at(c, "peak_whole_run"), "%.4g") << " N·m at t = " << fmt(at(c, "t_peak_whole_run"), "%.4g")
+    o << "  coupling torque (crank axis)      mean " << fmt(jsonMember(c, "mean"), "%.4g") << ", peak |M| "
+      << fmt(jsonMember(c, "peak"), "%.4g") << ", swing " << fmt(jsonMember(c, "swing"), "%.4g") << " N·m (steady window); peak |M| "
+      << fmt(jsonMember(c, "peak_whole_run"), "%.4g") << " N·m at t = " << fmt(jsonMember(c, "t_peak_whole_run"), "%.4g")
       << " s (whole run)\n";
     o << "  coupling rated torque             "
-      << (at(c, "rated_torque").is_number() ? fmt(at(c, "rated_torque"), "%.4g") + " N·m"
+      << (jsonMember(c, "rated_torque").is_number() ? fmt(jsonMember(c, "rated_torque"), "%.4g") + " N·m"
                                             : std::string("not given (sizing.coupling_rated_torque)"))
       << "\n";
   }
-  const json& checks = at(s, "checks");
+  const json& checks = jsonMember(s, "checks");
   if (checks.is_array() && !checks.empty()) {
     o << "  checks (the window named decided each):\n";
     for (const json& k : checks) {
-      const std::string v = chk(at(k, "verdict"));
+      const std::string v = chk(jsonMember(k, "verdict"));
       char buf[200];
-      std::snprintf(buf, sizeof buf, "    %-15s %8s  %-14s decided by the %s", str(at(k, "check")).c_str(),
-                    fmt(at(k, "value"), "%.3f").c_str(), v.c_str(), str(at(k, "window")).c_str());
-      o << buf << "\n      " << str(at(k, "what")) << "; " << str(at(k, "reason")) << "\n";
+      std::snprintf(buf, sizeof buf, "    %-15s %8s  %-14s decided by the %s", str(jsonMember(k, "check")).c_str(),
+                    fmt(jsonMember(k, "value"), "%.3f").c_str(), v.c_str(), str(jsonMember(k, "window")).c_str());
+      o << buf << "\n      " << str(jsonMember(k, "what")) << "; " << str(jsonMember(k, "reason")) << "\n";
     }
   }
-  const json& joints = at(s, "joints");
+  const json& joints = jsonMember(s, "joints");
   bool any_joint = false;
-  for (const char* kind : kJointKinds) any_joint = any_joint || at(at(joints, kind), "worst").is_object();
+  for (const char* kind : kJointKinds) any_joint = any_joint || jsonMember(jsonMember(joints, kind), "worst").is_object();
   if (!any_joint) {
     o << "  joint loads                       not computed: the run has no joint reactions "
          "(simulation.reactions: false)\n";
     return o.str();
   }
-  if (at(s, "joints_basis").is_string()) o << "  joint loads from the " << str(at(s, "joints_basis")) << "\n";
+  if (jsonMember(s, "joints_basis").is_string()) o << "  joint loads from the " << str(jsonMember(s, "joints_basis")) << "\n";
   o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
   const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearing"};
   for (std::size_t k = 0; k < 5; ++k) {
-    const json& x = at(at(joints, kJointKinds[k]), "worst");
+    const json& x = jsonMember(jsonMember(joints, kJointKinds[k]), "worst");
     if (!x.is_object()) continue;
     // L10 in hours where the joint turns at a known speed, else in revolutions (the rod end
     // swings through a small angle: its life is counted in the crank's revolutions).
-    std::string life = fmt(at(x, "L10_hours"), "%.3g");
-    if (life == "n/a" && at(x, "L10_revolutions").is_number()) life = fmt(at(x, "L10_revolutions"), "%.3g") + " rev";
+    std::string life = fmt(jsonMember(x, "L10_hours"), "%.3g");
+    if (life == "n/a" && jsonMember(x, "L10_revolutions").is_number()) life = fmt(jsonMember(x, "L10_revolutions"), "%.3g") + " rev";
     char buf[256];
     std::snprintf(buf, sizeof buf, "  %-24s  %4s  %9s  %14s  %9s  %6s  %6s  %7s\n", names[k],
-                  at(x, "cart").is_number() ? std::to_string(at(x, "cart").get<int>()).c_str() : "-",
-                  fmt(at(x, "mean"), "%.3f", 1e-3).c_str(), fmt(at(x, "amplitude"), "%.3f", 1e-3).c_str(),
-                  fmt(at(x, "peak"), "%.3f", 1e-3).c_str(), fmt(at(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
-                  fmt(at(x, "rating"), "%.1f", 1e-3).c_str(), life.c_str());
+                  jsonMember(x, "cart").is_number() ? std::to_string(jsonMember(x, "cart").get<int>()).c_str() : "-",
+                  fmt(jsonMember(x, "mean"), "%.3f", 1e-3).c_str(), fmt(jsonMember(x, "amplitude"), "%.3f", 1e-3).c_str(),
+                  fmt(jsonMember(x, "peak"), "%.3f", 1e-3).c_str(), fmt(jsonMember(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
+                  fmt(jsonMember(x, "rating"), "%.1f", 1e-3).c_str(), life.c_str());
     o << buf;
   }
   o << "  P equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation speed; "

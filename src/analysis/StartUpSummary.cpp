@@ -1,4 +1,5 @@
 #include "analysis/StartUpSummary.h"
+#include "io/FieldFormat.h"
 
 #include <cmath>
 #include <cstdio>
@@ -18,11 +19,6 @@ std::string f(const json& v, const char* format, double scale = 1.0) {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, v.get<double>() * scale);
   return buf;
-}
-
-const json& at(const json& j, const char* k) {
-  static const json null_json;
-  return j.is_object() && j.contains(k) ? j.at(k) : null_json;
 }
 
 const char* jointWords(const std::string& joint) {
@@ -89,50 +85,50 @@ json startUpJson(const StartUp& s) {
 }
 
 std::string startUpText(const json& summary) {
-  const json& s = at(summary, "start_up");
+  const json& s = jsonMember(summary, "start_up");
   if (!s.is_object()) return "";
   std::ostringstream o;
-  o << "start-up     " << at(s, "method").get<std::string>() << " at t = " << f(at(s, "t_on"), "%.4g")
-    << " s, motor law: " << at(s, "motor_law").get<std::string>() << "\n";
-  o << "             " << at(s, "verdict").get<std::string>() << "\n";
-  o << "  starting torque at the crank  " << f(at(s, "starting_torque_crank"), "%.4g")
-    << " N·m at switch-on (rated supply " << f(at(s, "starting_torque_rated_crank"), "%.4g") << ", largest "
-    << f(at(s, "largest_torque_crank"), "%.4g") << ") against a load of " << f(at(s, "load_torque_start"), "%.4g")
-    << " N·m at the start angle, " << f(at(s, "load_torque_mean"), "%.4g") << " N·m mean\n";
-  const json& st = at(s, "steady");
-  o << "  run-up time (to 95 % of " << f(at(st, "mean_speed"), "%.4g") << " rad/s)  "
-    << f(at(s, "run_up_time"), "%.3g") << " s; start = t_on ... " << f(at(s, "start_end"), "%.4g")
-    << " s, steady window " << f(at(st, "t_begin"), "%.4g") << " ... " << f(at(st, "t_end"), "%.4g") << " s"
-    << (at(st, "reached").is_boolean() && !at(st, "reached").get<bool>() ? " (steady state NOT reached)" : "")
+  o << "start-up     " << jsonMember(s, "method").get<std::string>() << " at t = " << f(jsonMember(s, "t_on"), "%.4g")
+    << " s, motor law: " << jsonMember(s, "motor_law").get<std::string>() << "\n";
+  o << "             " << jsonMember(s, "verdict").get<std::string>() << "\n";
+  o << "  starting torque at the crank  " << f(jsonMember(s, "starting_torque_crank"), "%.4g")
+    << " N·m at switch-on (rated supply " << f(jsonMember(s, "starting_torque_rated_crank"), "%.4g") << ", largest "
+    << f(jsonMember(s, "largest_torque_crank"), "%.4g") << ") against a load of " << f(jsonMember(s, "load_torque_start"), "%.4g")
+    << " N·m at the start angle, " << f(jsonMember(s, "load_torque_mean"), "%.4g") << " N·m mean\n";
+  const json& st = jsonMember(s, "steady");
+  o << "  run-up time (to 95 % of " << f(jsonMember(st, "mean_speed"), "%.4g") << " rad/s)  "
+    << f(jsonMember(s, "run_up_time"), "%.3g") << " s; start = t_on ... " << f(jsonMember(s, "start_end"), "%.4g")
+    << " s, steady window " << f(jsonMember(st, "t_begin"), "%.4g") << " ... " << f(jsonMember(st, "t_end"), "%.4g") << " s"
+    << (jsonMember(st, "reached").is_boolean() && !jsonMember(st, "reached").get<bool>() ? " (steady state NOT reached)" : "")
     << "\n";
-  const json &m = at(s, "motor_torque"), &c = at(s, "coupling_torque");
-  o << "  motor torque M·u·η            peak " << f(at(m, "peak"), "%.4g") << ", most negative "
-    << f(at(m, "min"), "%.4g") << " N·m in the start; steady peak |M| " << f(at(m, "steady_peak"), "%.4g")
-    << " N·m (x" << f(at(m, "ratio"), "%.3g") << ")\n";
-  o << "  coupling torque |M|           peak " << f(at(c, "peak"), "%.4g") << " N·m in the start, steady "
-    << f(at(c, "steady_peak"), "%.4g") << " N·m (x" << f(at(c, "ratio"), "%.3g") << ")\n";
-  const json& joints = at(s, "joints");
+  const json &m = jsonMember(s, "motor_torque"), &c = jsonMember(s, "coupling_torque");
+  o << "  motor torque M·u·η            peak " << f(jsonMember(m, "peak"), "%.4g") << ", most negative "
+    << f(jsonMember(m, "min"), "%.4g") << " N·m in the start; steady peak |M| " << f(jsonMember(m, "steady_peak"), "%.4g")
+    << " N·m (x" << f(jsonMember(m, "ratio"), "%.3g") << ")\n";
+  o << "  coupling torque |M|           peak " << f(jsonMember(c, "peak"), "%.4g") << " N·m in the start, steady "
+    << f(jsonMember(c, "steady_peak"), "%.4g") << " N·m (x" << f(jsonMember(c, "ratio"), "%.3g") << ")\n";
+  const json& joints = jsonMember(s, "joints");
   for (const char* kind : {"guide_roller_front", "guide_roller_rear", "rod_force", "crank_pin", "main_bearing"}) {
-    const json& p = at(joints, kind);
+    const json& p = jsonMember(joints, kind);
     if (!p.is_object()) continue;
     const std::string words = jointWords(kind);
-    o << "  " << words << std::string(30 - words.size(), ' ') << "peak " << f(at(p, "peak"), "%.4g", 1e-3)
-      << " kN in the start, steady " << f(at(p, "steady_peak"), "%.4g", 1e-3) << " kN (x" << f(at(p, "ratio"), "%.3g")
+    o << "  " << words << std::string(30 - words.size(), ' ') << "peak " << f(jsonMember(p, "peak"), "%.4g", 1e-3)
+      << " kN in the start, steady " << f(jsonMember(p, "steady_peak"), "%.4g", 1e-3) << " kN (x" << f(jsonMember(p, "ratio"), "%.3g")
       << ")\n";
   }
-  const json& I = at(s, "stator_current");
+  const json& I = jsonMember(s, "stator_current");
   if (I.is_object())
-    o << "  stator current (phase, RMS)   peak " << f(at(I, "peak"), "%.4g") << " A, RMS over the start "
-      << f(at(I, "rms"), "%.4g") << " A (steady " << f(at(I, "steady_rms"), "%.4g") << " A), I²t "
-      << f(at(I, "i2t"), "%.4g") << " A²·s\n";
-  o << "  rotor energy loss of the start " << f(at(s, "rotor_energy_loss"), "%.4g")
+    o << "  stator current (phase, RMS)   peak " << f(jsonMember(I, "peak"), "%.4g") << " A, RMS over the start "
+      << f(jsonMember(I, "rms"), "%.4g") << " A (steady " << f(jsonMember(I, "steady_rms"), "%.4g") << " A), I²t "
+      << f(jsonMember(I, "i2t"), "%.4g") << " A²·s\n";
+  o << "  rotor energy loss of the start " << f(jsonMember(s, "rotor_energy_loss"), "%.4g")
     << " J (slip power ∫M·(ω0·f/f_n - ω_r)dt)\n";
-  const json& stop = at(s, "stop");
+  const json& stop = jsonMember(s, "stop");
   if (stop.is_object())
-    o << "  switch-off at " << f(at(stop, "t_off"), "%.4g") << " s: stopping time " << f(at(stop, "stopping_time"), "%.3g")
-      << " s, crank run-out " << f(at(stop, "run_out_revolutions"), "%.3g") << " rev, carts' run-out "
-      << f(at(stop, "run_out_cart_path"), "%.3g") << " m\n";
-  for (const json& n : at(s, "notes")) o << "  note: " << n.get<std::string>() << "\n";
+    o << "  switch-off at " << f(jsonMember(stop, "t_off"), "%.4g") << " s: stopping time " << f(jsonMember(stop, "stopping_time"), "%.3g")
+      << " s, crank run-out " << f(jsonMember(stop, "run_out_revolutions"), "%.3g") << " rev, carts' run-out "
+      << f(jsonMember(stop, "run_out_cart_path"), "%.3g") << " m\n";
+  for (const json& n : jsonMember(s, "notes")) o << "  note: " << n.get<std::string>() << "\n";
   o << "  (torques at the crank axis; M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω0 "
        "synchronous speed, f/f_n supply frequency ratio)\n";
   return o.str();

@@ -12,6 +12,18 @@ std::string csvNumber(double v) {
   return buf;
 }
 
+const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k) {
+  static const nlohmann::json null_json;
+  return j.is_object() && j.contains(k) ? j.at(k) : null_json;
+}
+
+std::string jsonNumberText(const nlohmann::json& v, const char* format, double scale) {
+  if (!v.is_number()) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v.get<double>() * scale);
+  return buf;
+}
+
 std::string significant(double v, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", digits, v);

@@ -17,6 +17,11 @@ std::string csvNumber(double v);
 std::string csvText(const std::string& s);
 // A JSON number, or null when v is not finite (JSON has no NaN or infinity).
 nlohmann::json jsonNumber(double v);
+// Member k of a JSON object; null when j is not an object or has no such member (summary.json
+// readers of the console and the report).
+const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k);
+// A JSON number as printf's `format` of v·scale; "n/a" when v is not a number (null, text).
+std::string jsonNumberText(const nlohmann::json& v, const char* format = "%.4g", double scale = 1.0);
 // `digits` significant digits (%.*g), as numbers read in validation lines and study pages.
 std::string significant(double v, int digits = 3);
 

@@ -6,24 +6,13 @@
 
 #include "analysis/StartUpSummary.h"
 #include "report/HtmlReport.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
 namespace {
 
 using nlohmann::json;
-
-const json& at(const json& j, const char* k) {
-  static const json null_json;
-  return j.is_object() && j.contains(k) ? j.at(k) : null_json;
-}
-
-std::string num(const json& v, const char* f = "%.4g", double scale = 1.0) {
-  if (!v.is_number()) return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v.get<double>() * scale);
-  return buf;
-}
 
 std::string row(const std::string& what, const std::string& start, const std::string& steady, const std::string& ratio,
                 const std::string& unit) {
@@ -36,20 +25,20 @@ std::string row(const std::string& what, const std::string& start, const std::st
 std::string startUpSectionHtml(const json& summary) {
   std::ostringstream h;
   h << "<h2>Start-up and stopping</h2>\n";
-  const json& s = at(summary, "start_up");
+  const json& s = jsonMember(summary, "start_up");
   if (!s.is_object()) {
     h << "<p>No start-up answers: the run switches no motor on.</p>\n";
     return h.str();
   }
-  const bool starts = at(s, "starts").is_boolean() && at(s, "starts").get<bool>();
-  h << "<p class=\"small\">Starting method: " << htmlEscape(at(s, "method").get<std::string>()) << " at t = "
-    << num(at(s, "t_on")) << " s; motor law: " << htmlEscape(at(s, "motor_law").get<std::string>())
+  const bool starts = jsonMember(s, "starts").is_boolean() && jsonMember(s, "starts").get<bool>();
+  h << "<p class=\"small\">Starting method: " << htmlEscape(jsonMember(s, "method").get<std::string>()) << " at t = "
+    << jsonNumberText(jsonMember(s, "t_on")) << " s; motor law: " << htmlEscape(jsonMember(s, "motor_law").get<std::string>())
     << ". Torques at the crank axis (M at the rotor × u·η: u reducer ratio, η its efficiency); the start runs from "
        "the switch-on to the steady window (shaded in the start-up figures).</p>\n";
-  const bool still_starting = at(s, "still_starting").is_boolean() && at(s, "still_starting").get<bool>();
-  h << "<div class=\"status " << (starts ? "ok" : still_starting ? "warn" : "bad") << "\">" << htmlEscape(at(s, "verdict").get<std::string>())
+  const bool still_starting = jsonMember(s, "still_starting").is_boolean() && jsonMember(s, "still_starting").get<bool>();
+  h << "<div class=\"status " << (starts ? "ok" : still_starting ? "warn" : "bad") << "\">" << htmlEscape(jsonMember(s, "verdict").get<std::string>())
     << "</div>\n";
-  for (const json& n : at(s, "notes"))
+  for (const json& n : jsonMember(s, "notes"))
     h << "<div class=\"status warn\">" << htmlEscape(n.get<std::string>()) << "</div>\n";
 
   h << "<table>\n<tr><th>can it start</th><th>value</th><th>unit</th></tr>\n";
@@ -58,49 +47,49 @@ std::string startUpSectionHtml(const json& summary) {
       << "</td></tr>\n";
   };
   line("starting torque at switch-on (the law's torque at standstill under the starting supply × u·η)",
-       num(at(s, "starting_torque_crank")), "N·m");
-  line("starting torque at the rated supply", num(at(s, "starting_torque_rated_crank")), "N·m");
-  line("largest torque of the law's steady curve × u·η", num(at(s, "largest_torque_crank")), "N·m");
-  line("load torque at the start angle (carts breaking away)", num(at(s, "load_torque_start")), "N·m");
-  line("load torque averaged over a revolution", num(at(s, "load_torque_mean")), "N·m");
-  const json& st = at(s, "steady");
-  line("steady mean crank speed", num(at(st, "mean_speed")), "rad/s");
-  line("run-up time to 95 % of it", num(at(s, "run_up_time"), "%.3g"), "s");
-  line("rotor energy loss of the start, ∫M·(ω0·f/f_n − ω_r)dt (no load: J·ω0²/2)", num(at(s, "rotor_energy_loss")),
+       jsonNumberText(jsonMember(s, "starting_torque_crank")), "N·m");
+  line("starting torque at the rated supply", jsonNumberText(jsonMember(s, "starting_torque_rated_crank")), "N·m");
+  line("largest torque of the law's steady curve × u·η", jsonNumberText(jsonMember(s, "largest_torque_crank")), "N·m");
+  line("load torque at the start angle (carts breaking away)", jsonNumberText(jsonMember(s, "load_torque_start")), "N·m");
+  line("load torque averaged over a revolution", jsonNumberText(jsonMember(s, "load_torque_mean")), "N·m");
+  const json& st = jsonMember(s, "steady");
+  line("steady mean crank speed", jsonNumberText(jsonMember(st, "mean_speed")), "rad/s");
+  line("run-up time to 95 % of it", jsonNumberText(jsonMember(s, "run_up_time"), "%.3g"), "s");
+  line("rotor energy loss of the start, ∫M·(ω0·f/f_n − ω_r)dt (no load: J·ω0²/2)", jsonNumberText(jsonMember(s, "rotor_energy_loss")),
        "J");
   h << "</table>\n";
 
   h << "<table>\n<tr><th>peak</th><th>in the start</th><th>steady window</th><th>start/steady</th><th>unit</th></tr>\n";
-  const json &m = at(s, "motor_torque"), &c = at(s, "coupling_torque");
-  h << row("motor torque M·u·η, largest", num(at(m, "peak")), num(at(m, "steady_peak")), num(at(m, "ratio"), "%.3g"),
+  const json &m = jsonMember(s, "motor_torque"), &c = jsonMember(s, "coupling_torque");
+  h << row("motor torque M·u·η, largest", jsonNumberText(jsonMember(m, "peak")), jsonNumberText(jsonMember(m, "steady_peak")), jsonNumberText(jsonMember(m, "ratio"), "%.3g"),
            "N·m");
-  h << row("motor torque M·u·η, most negative", num(at(m, "min")), "", "", "N·m");
-  h << row("|coupling torque|", num(at(c, "peak")), num(at(c, "steady_peak")), num(at(c, "ratio"), "%.3g"), "N·m");
+  h << row("motor torque M·u·η, most negative", jsonNumberText(jsonMember(m, "min")), "", "", "N·m");
+  h << row("|coupling torque|", jsonNumberText(jsonMember(c, "peak")), jsonNumberText(jsonMember(c, "steady_peak")), jsonNumberText(jsonMember(c, "ratio"), "%.3g"), "N·m");
   const char* kinds[][2] = {{"guide_roller_front", "guide roller, front (largest cart)"},
                             {"guide_roller_rear", "guide roller, rear"},
                             {"rod_force", "rod force"},
                             {"crank_pin", "crank pin (resultant)"},
                             {"main_bearing", "main bearing (resultant)"}};
   for (const auto& k : kinds) {
-    const json& p = at(at(s, "joints"), k[0]);
+    const json& p = jsonMember(jsonMember(s, "joints"), k[0]);
     if (p.is_object())
-      h << row(k[1], num(at(p, "peak"), "%.4g", 1e-3), num(at(p, "steady_peak"), "%.4g", 1e-3),
-               num(at(p, "ratio"), "%.3g"), "kN");
+      h << row(k[1], jsonNumberText(jsonMember(p, "peak"), "%.4g", 1e-3), jsonNumberText(jsonMember(p, "steady_peak"), "%.4g", 1e-3),
+               jsonNumberText(jsonMember(p, "ratio"), "%.3g"), "kN");
   }
-  const json& I = at(s, "stator_current");
+  const json& I = jsonMember(s, "stator_current");
   if (I.is_object()) {
-    h << row("stator current (RMS phase), largest", num(at(I, "peak")), "", "", "A");
-    h << row("stator current, RMS", num(at(I, "rms")), num(at(I, "steady_rms")), "", "A");
-    h << row("I²t of the start", num(at(I, "i2t")), "", "", "A²·s");
+    h << row("stator current (RMS phase), largest", jsonNumberText(jsonMember(I, "peak")), "", "", "A");
+    h << row("stator current, RMS", jsonNumberText(jsonMember(I, "rms")), jsonNumberText(jsonMember(I, "steady_rms")), "", "A");
+    h << row("I²t of the start", jsonNumberText(jsonMember(I, "i2t")), "", "", "A²·s");
   }
   h << "</table>\n";
 
-  const json& stop = at(s, "stop");
+  const json& stop = jsonMember(s, "stop");
   if (stop.is_object()) {
-    h << "<table>\n<tr><th>after the switch-off at t = " << num(at(stop, "t_off")) << " s</th><th>value</th><th>unit</th></tr>\n";
-    line("stopping time (crank below 1 % of the synchronous crank speed)", num(at(stop, "stopping_time"), "%.3g"), "s");
-    line("crank run-out", num(at(stop, "run_out_revolutions"), "%.3g"), "revolutions");
-    line("carts' run-out (largest path of a cart)", num(at(stop, "run_out_cart_path"), "%.3g"), "m");
+    h << "<table>\n<tr><th>after the switch-off at t = " << jsonNumberText(jsonMember(stop, "t_off")) << " s</th><th>value</th><th>unit</th></tr>\n";
+    line("stopping time (crank below 1 % of the synchronous crank speed)", jsonNumberText(jsonMember(stop, "stopping_time"), "%.3g"), "s");
+    line("crank run-out", jsonNumberText(jsonMember(stop, "run_out_revolutions"), "%.3g"), "revolutions");
+    line("carts' run-out (largest path of a cart)", jsonNumberText(jsonMember(stop, "run_out_cart_path"), "%.3g"), "m");
     h << "</table>\n";
   }
   if (startUpHasOwnFigures(s))
