@@ -233,9 +233,18 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   }
   r.starts = turning && std::isfinite(r.run_up_time);
 
-  // The start interval [t_on, steady window begin).
-  r.start_end = r.steady_begin > r.t_on ? r.steady_begin
-                                        : (n_running == 0 ? t.back() : t[n_running - 1]);
+  // The start interval [t_on, start_end). A drive that runs up: until its crank speed settles
+  // (SteadyState::t_settled, the first revolution from which every later one's mean speed is
+  // within tolerance of the final one), so the start is the same however long the run continues
+  // after it (the steady window is the run's last revolutions and moves with simulation.t_end).
+  // A drive that does not start: the whole running part of the run, since no part of it is steady.
+  const double run_last = n_running == 0 ? t.back() : t[n_running - 1];
+  if (r.starts && ss.reached && std::isfinite(ss.t_settled) && ss.t_settled > r.t_on && ss.t_settled <= r.steady_begin)
+    r.start_end = std::max(ss.t_settled, r.t_on + r.run_up_time);
+  else if (!r.starts && !r.still_starting)
+    r.start_end = run_last;
+  else
+    r.start_end = r.steady_begin > r.t_on ? r.steady_begin : run_last;
   const std::size_t s0 = i_on, s1 = std::max(s0 + 1, firstRowAtOrAfter(t, r.start_end) + 1);
   const std::size_t s1c = std::min(s1, t.size());
   auto peakOf = [&](const std::vector<double>& c, std::size_t a, std::size_t b, bool absolute, bool lowest = false) {

@@ -13,11 +13,14 @@
 //     start without load equals J·ω0²/2, the classical result (J the inertia at the rotor);
 //   - after a switch-off: the stopping time and how far the crank and the carts run on.
 //
-// Intervals. The start runs from the switch-on t_on to the beginning of the steady window; the
-// steady window is that of SteadyState.h found on the rows before the switch-off (the coast-down
-// after t_off is no steady state). Integrals over time use the trapezoidal rule on the output rows
-// (simulation.output_step): a supply-frequency transient (20 ms period at 50 Hz) needs an output
-// step of 1 ms or less for I²t and the rotor loss to be accurate to a few per cent.
+// Intervals. The start runs from the switch-on t_on until the crank speed settles (the first
+// revolution from which the per-revolution mean speed stays within the steady-state tolerance,
+// SteadyState.h), so it does not grow with simulation.t_end; for a drive that does not start it is
+// the whole run before any switch-off. The steady window is that of SteadyState.h found on the
+// rows before the switch-off (the coast-down after t_off is no steady state). Integrals over time
+// use the trapezoidal rule on the output rows (simulation.output_step): a supply-frequency
+// transient (20 ms period at 50 Hz) needs an output step of 1 ms or less for I²t and the rotor
+// loss to be accurate to a few per cent.
 //
 // Notation: u reducer ratio, η reducer efficiency, ω_r rotor speed, ω0 synchronous rotor speed,
 // M motor torque at the rotor (the timeseries' motor_torque is M·u·η at the crank).
@@ -67,7 +70,10 @@ struct StartUp {
   bool steady_reached = false;  // SteadyState::reached for the window used
   double steady_begin = 0, steady_end = 0;  // the steady window [s]
   double run_up_time = 0;       // t(ω_crank ≥ 0.95·steady mean) - t_on [s]
-  double start_end = 0;         // end of the start interval = steady window begin [s]
+  double start_end = 0;         // end of the start interval [s]: where the crank speed settles
+                                // (SteadyState::t_settled, not before the run-up ends) for a drive
+                                // that starts; the end of the running rows for one that does not;
+                                // else the steady window's begin
   // Peaks, start against steady.
   double motor_torque_peak = 0, motor_torque_min = 0;  // largest and most negative M·u·η in the start [N·m, crank]
   double motor_torque_steady_peak = 0;                 // max |M·u·η| in the steady window [N·m]

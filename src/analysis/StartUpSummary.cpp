@@ -91,21 +91,35 @@ std::string startUpText(const json& summary) {
   o << "start-up     " << jsonMember(s, "method").get<std::string>() << " at t = " << f(jsonMember(s, "t_on"), "%.4g")
     << " s, motor law: " << jsonMember(s, "motor_law").get<std::string>() << "\n";
   o << "             " << jsonMember(s, "verdict").get<std::string>() << "\n";
+  // The static characteristic's largest torque is the breakdown torque; a transient (the Park
+  // machine's switching oscillation) can exceed it, and the motor-torque line below shows that peak.
   o << "  starting torque at the crank  " << f(jsonMember(s, "starting_torque_crank"), "%.4g")
-    << " N·m at switch-on (rated supply " << f(jsonMember(s, "starting_torque_rated_crank"), "%.4g") << ", largest "
+    << " N·m at switch-on (" << f(jsonMember(s, "starting_torque_rated_crank"), "%.4g")
+    << " under the rated supply; the static characteristic's largest, the breakdown torque, "
     << f(jsonMember(s, "largest_torque_crank"), "%.4g") << ") against a load of " << f(jsonMember(s, "load_torque_start"), "%.4g")
     << " N·m at the start angle, " << f(jsonMember(s, "load_torque_mean"), "%.4g") << " N·m mean\n";
   const json& st = jsonMember(s, "steady");
-  o << "  run-up time (to 95 % of " << f(jsonMember(st, "mean_speed"), "%.4g") << " rad/s)  "
-    << f(jsonMember(s, "run_up_time"), "%.3g") << " s; start = t_on ... " << f(jsonMember(s, "start_end"), "%.4g")
-    << " s, steady window " << f(jsonMember(st, "t_begin"), "%.4g") << " ... " << f(jsonMember(st, "t_end"), "%.4g") << " s"
-    << (jsonMember(st, "reached").is_boolean() && !jsonMember(st, "reached").get<bool>() ? " (steady state NOT reached)" : "")
-    << "\n";
+  const bool starts = jsonMember(s, "starts").is_boolean() && jsonMember(s, "starts").get<bool>();
+  const bool still = jsonMember(s, "still_starting").is_boolean() && jsonMember(s, "still_starting").get<bool>();
+  const bool reached = jsonMember(st, "reached").is_boolean() && jsonMember(st, "reached").get<bool>();
+  if (starts)
+    o << "  run-up time (to 95 % of " << f(jsonMember(st, "mean_speed"), "%.4g") << " rad/s)  "
+      << f(jsonMember(s, "run_up_time"), "%.3g") << " s; start = t_on ... " << f(jsonMember(s, "start_end"), "%.4g")
+      << " s (until the crank speed settles), steady window " << f(jsonMember(st, "t_begin"), "%.4g") << " ... "
+      << f(jsonMember(st, "t_end"), "%.4g") << " s" << (reached ? "" : " (steady state NOT reached)") << "\n";
+  else
+    o << "  run-up time                   none: " << (still ? "the drive is still starting when the run ends" : "the drive does not start")
+      << "; peaks below over t_on ... " << f(jsonMember(s, "start_end"), "%.4g") << " s against the run's last part "
+      << f(jsonMember(st, "t_begin"), "%.4g") << " ... " << f(jsonMember(st, "t_end"), "%.4g") << " s (no steady state)\n";
+  // Words for the two intervals: a drive that never ran up has a run and its end, not a start and a steady state.
+  const std::string in_start = starts ? " in the start" : (still ? " so far" : " over the run");
+  const std::string steady = starts && reached ? "steady" : "at the end";
   const json &m = jsonMember(s, "motor_torque"), &c = jsonMember(s, "coupling_torque");
-  o << "  motor torque M·u·η            peak " << f(jsonMember(m, "peak"), "%.4g") << ", most negative "
-    << f(jsonMember(m, "min"), "%.4g") << " N·m in the start; steady peak |M| " << f(jsonMember(m, "steady_peak"), "%.4g")
+  const bool negative = jsonMember(m, "min").is_number() && jsonMember(m, "min").get<double>() < 0;
+  o << "  motor torque M·u·η            peak " << f(jsonMember(m, "peak"), "%.4g") << (negative ? ", most negative " : ", smallest ")
+    << f(jsonMember(m, "min"), "%.4g") << " N·m" << in_start << "; " << steady << " peak |M| " << f(jsonMember(m, "steady_peak"), "%.4g")
     << " N·m (x" << f(jsonMember(m, "ratio"), "%.3g") << ")\n";
-  o << "  coupling torque |M|           peak " << f(jsonMember(c, "peak"), "%.4g") << " N·m in the start, steady "
+  o << "  coupling torque |M|           peak " << f(jsonMember(c, "peak"), "%.4g") << " N·m" << in_start << ", " << steady << " "
     << f(jsonMember(c, "steady_peak"), "%.4g") << " N·m (x" << f(jsonMember(c, "ratio"), "%.3g") << ")\n";
   const json& joints = jsonMember(s, "joints");
   for (const char* kind : {"guide_roller_front", "guide_roller_rear", "rod_force", "crank_pin", "main_bearing"}) {
@@ -113,15 +127,15 @@ std::string startUpText(const json& summary) {
     if (!p.is_object()) continue;
     const std::string words = jointWords(kind);
     o << "  " << words << std::string(30 - words.size(), ' ') << "peak " << f(jsonMember(p, "peak"), "%.4g", 1e-3)
-      << " kN in the start, steady " << f(jsonMember(p, "steady_peak"), "%.4g", 1e-3) << " kN (x" << f(jsonMember(p, "ratio"), "%.3g")
+      << " kN" << in_start << ", " << steady << " " << f(jsonMember(p, "steady_peak"), "%.4g", 1e-3) << " kN (x" << f(jsonMember(p, "ratio"), "%.3g")
       << ")\n";
   }
   const json& I = jsonMember(s, "stator_current");
   if (I.is_object())
-    o << "  stator current (phase, RMS)   peak " << f(jsonMember(I, "peak"), "%.4g") << " A, RMS over the start "
-      << f(jsonMember(I, "rms"), "%.4g") << " A (steady " << f(jsonMember(I, "steady_rms"), "%.4g") << " A), I²t "
+    o << "  stator current (phase, RMS)   peak " << f(jsonMember(I, "peak"), "%.4g") << " A, RMS" << in_start << " "
+      << f(jsonMember(I, "rms"), "%.4g") << " A (" << steady << " " << f(jsonMember(I, "steady_rms"), "%.4g") << " A), I²t "
       << f(jsonMember(I, "i2t"), "%.4g") << " A²·s\n";
-  o << "  rotor energy loss of the start " << f(jsonMember(s, "rotor_energy_loss"), "%.4g")
+  o << "  rotor energy loss" << (starts ? " of the start " : in_start + " ") << f(jsonMember(s, "rotor_energy_loss"), "%.4g")
     << " J (slip power ∫M·(ω0·f/f_n - ω_r)dt)\n";
   const json& stop = jsonMember(s, "stop");
   if (stop.is_object())

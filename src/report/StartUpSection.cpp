@@ -33,8 +33,11 @@ std::string startUpSectionHtml(const json& summary) {
   const bool starts = jsonMember(s, "starts").is_boolean() && jsonMember(s, "starts").get<bool>();
   h << "<p class=\"small\">Starting method: " << htmlEscape(jsonMember(s, "method").get<std::string>()) << " at t = "
     << jsonNumberText(jsonMember(s, "t_on")) << " s; motor law: " << htmlEscape(jsonMember(s, "motor_law").get<std::string>())
-    << ". Torques at the crank axis (M at the rotor × u·η: u reducer ratio, η its efficiency); the start runs from "
-       "the switch-on to the steady window (shaded in the start-up figures).</p>\n";
+    << ". Torques at the crank axis (M at the rotor × u·η: u reducer ratio, η its efficiency); "
+    << (starts ? "the start runs from the switch-on until the crank speed settles (the first revolution from which "
+                 "every later one has the same mean speed within 1e-3)."
+               : "the drive did not run up, so the peaks are over the whole run and are compared with its last part.")
+    << "</p>\n";
   const bool still_starting = jsonMember(s, "still_starting").is_boolean() && jsonMember(s, "still_starting").get<bool>();
   h << "<div class=\"status " << (starts ? "ok" : still_starting ? "warn" : "bad") << "\">" << htmlEscape(jsonMember(s, "verdict").get<std::string>())
     << "</div>\n";
@@ -59,11 +62,16 @@ std::string startUpSectionHtml(const json& summary) {
        "J");
   h << "</table>\n";
 
-  h << "<table>\n<tr><th>peak</th><th>in the start</th><th>steady window</th><th>start/steady</th><th>unit</th></tr>\n";
+  if (starts)
+    h << "<table>\n<tr><th>peak</th><th>in the start</th><th>steady window</th><th>start/steady</th><th>unit</th></tr>\n";
+  else
+    h << "<table>\n<tr><th>peak</th><th>" << (still_starting ? "so far" : "over the run")
+      << "</th><th>the run's last part</th><th>ratio</th><th>unit</th></tr>\n";
   const json &m = jsonMember(s, "motor_torque"), &c = jsonMember(s, "coupling_torque");
+  const bool negative = jsonMember(m, "min").is_number() && jsonMember(m, "min").get<double>() < 0;
   h << row("motor torque M·u·η, largest", jsonNumberText(jsonMember(m, "peak")), jsonNumberText(jsonMember(m, "steady_peak")), jsonNumberText(jsonMember(m, "ratio"), "%.3g"),
            "N·m");
-  h << row("motor torque M·u·η, most negative", jsonNumberText(jsonMember(m, "min")), "", "", "N·m");
+  h << row(negative ? "motor torque M·u·η, most negative" : "motor torque M·u·η, smallest", jsonNumberText(jsonMember(m, "min")), "", "", "N·m");
   h << row("|coupling torque|", jsonNumberText(jsonMember(c, "peak")), jsonNumberText(jsonMember(c, "steady_peak")), jsonNumberText(jsonMember(c, "ratio"), "%.3g"), "N·m");
   const char* kinds[][2] = {{"guide_roller_front", "guide roller, front (largest cart)"},
                             {"guide_roller_rear", "guide roller, rear"},

@@ -202,5 +202,45 @@ TEST(StartUpAnswers, TheStartUpVerdictAgreesWithTheMotion) {
   EXPECT_GT(off["sizing"]["motor"]["torque_shaft"]["rms"].get<double>(), 1.0);  // not the coasting motor's 0
 }
 
+// The start ends where the crank speed settles, not where the steady window (the run's last
+// revolutions) begins: in the trial its peaks, its rotor loss and the starts per hour moved with
+// simulation.t_end. The same drive run for 10 s and for 20 s has the same start.
+TEST(StartUpAnswers, TheStartEndsWhereTheCrankSpeedSettlesWhateverTheRunsLength) {
+  const nlohmann::json a = reducedSummary(defaultScene({"simulation.t_end=10"}));
+  const nlohmann::json b = reducedSummary(defaultScene({"simulation.t_end=20"}));
+  for (const nlohmann::json* j : {&a, &b}) {
+    ASSERT_TRUE((*j)["start_up"]["starts"].get<bool>());
+    // The start holds the run-up and ends before the steady window of the long run.
+    EXPECT_GE((*j)["start_up"]["start_end"].get<double>(), (*j)["start_up"]["run_up_time"].get<double>());
+    EXPECT_NEAR((*j)["start_up"]["start_end"].get<double>(), (*j)["steady_state"]["t_settled"].get<double>(), 1e-12);
+  }
+  EXPECT_LT(b["start_up"]["start_end"].get<double>(), b["steady_state"]["t_begin"].get<double>() - 5.0);
+  // t_settled is the start of a revolution; one revolution of the default drive lasts ~0.6 s and
+  // both runs settle on the same one (their final speeds differ by far less than the 1e-3 tolerance).
+  EXPECT_NEAR(a["start_up"]["start_end"].get<double>(), b["start_up"]["start_end"].get<double>(), 1e-6);
+  EXPECT_NEAR(a["start_up"]["rotor_energy_loss"].get<double>(), b["start_up"]["rotor_energy_loss"].get<double>(),
+              1e-6 * a["start_up"]["rotor_energy_loss"].get<double>());
+  EXPECT_EQ(a["start_up"]["coupling_torque"]["peak"], b["start_up"]["coupling_torque"]["peak"]);
+}
+
+// A drive that never turns has no start and no steady state: the trial read "run-up time (to 95 %
+// of 0.0005305 rad/s)" and a "most negative" motor torque of +1032 N·m. The console says the drive
+// does not start, and its peaks are over the run against the run's last part.
+TEST(StartUpAnswers, ADriveThatDoesNotStartHasNoRunUpAndItsPeaksAreOverTheRun) {
+  const nlohmann::json j =
+      reducedSummary(defaultScene({"loads.roller_force_direction=opposes_velocity", "carts.count=6", "crank.offset_deg=60"}));
+  ASSERT_FALSE(j["start_up"]["starts"].get<bool>());
+  ASSERT_FALSE(j["start_up"]["still_starting"].get<bool>());
+  EXPECT_GT(j["start_up"]["motor_torque"]["min"].get<double>(), 0.0);  // held at standstill, never negative
+  const std::string text = startUpText(j);
+  EXPECT_EQ(text.find("95 %"), std::string::npos) << text;
+  EXPECT_EQ(text.find("most negative"), std::string::npos) << text;
+  EXPECT_EQ(text.find("in the start"), std::string::npos) << text;
+  EXPECT_NE(text.find("run-up time                   none: the drive does not start"), std::string::npos) << text;
+  EXPECT_NE(text.find("over the run"), std::string::npos) << text;
+  // The whole running part of the run is the interval of the peaks.
+  EXPECT_NEAR(j["start_up"]["start_end"].get<double>(), j["steady_state"]["t_end"].get<double>(), 1e-9);
+}
+
 }  // namespace
 }  // namespace rollerdyn
