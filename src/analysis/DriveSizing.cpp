@@ -434,8 +434,11 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
       h.verdict = "not applicable";
       h.reason = too_short;
     } else if (!turning) {
+      // A value within its limit beside FAIL would read as a contradiction: the figure of a rotor
+      // held at standstill is no margin, so it moves into the reason.
       h.verdict = "FAIL";
       h.reason = not_turning + ": a motor that cannot drive its load overheats whatever the torque; " + h.reason;
+      if (!(h.value > 1.0)) h.value = kNaN;
     }
     out.push_back(h);
     // Margin for the supply: the breakdown torque falls with the square of the voltage, and
@@ -453,7 +456,9 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
       k.reason = too_short;
     } else if (!turning) {
       k.verdict = "FAIL";
-      k.reason = not_turning + ": the load needs more than the motor gives";
+      k.reason = not_turning + ": the load needs more than the motor gives (the measured peak |M| / M_kr " +
+                 fmt3(m.peak_over_breakdown) + " is that of a drive that does not run, not a margin)";
+      if (!(k.value >= limit)) k.value = kNaN;
     }
     out.push_back(k);
   }

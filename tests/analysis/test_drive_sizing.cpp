@@ -158,6 +158,12 @@ TEST(DriveSizing, LockedRotorFailsEveryMotorCheckAndDrawsItsAirGapPower) {
   EXPECT_REL(s.motor.whole_run.thermal_over_nominal, std::sqrt(M / (s_n * 200)), 1e-3);
   EXPECT_EQ(s.checks[0].window, "steady window");  // continuous running (no duty given)
   EXPECT_REL(s.checks[0].value, std::sqrt(M / (s_n * 200)), 1e-3);
+  // The breakdown ratio of a rotor held at standstill (0.2 here) is no margin: a FAIL never shows a
+  // value within its limit (the trial read "0.226 FAIL" against a limit of 0.9025); the figure
+  // stays in the reason.
+  EXPECT_TRUE(std::isnan(s.checks[1].value)) << s.checks[1].value;
+  EXPECT_NE(s.checks[1].reason.find("not a margin"), std::string::npos) << s.checks[1].reason;
+  EXPECT_NEAR(s.motor.peak_over_breakdown, M / 500, 1e-6);  // the metric itself is kept
 }
 
 // Finding of the 6-cart trial: the coupling check saw only the steady window (peak 86 N·m, 0.011
