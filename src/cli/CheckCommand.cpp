@@ -15,10 +15,11 @@ int runCheck(const SceneArgs& args) {
   const MultibodyInventory& inv = model.inventory();
   std::cout << "scene " << scene.name << ": valid (" << scene.source_path << ")\n";
   for (const std::string& w : plausibilityWarnings(scene)) std::cerr << "rollerdyn: warning: " << w << '\n';
-  std::cout << "effects built:";
-  for (const auto& e : inv.effects) std::cout << ' ' << e;
-  std::cout << "\nforce elements:";
-  for (const auto& f : inv.force_elements) std::cout << ' ' << f;
+  // Effects in words (the scene key that sets each); the count of force elements is what the
+  // multibody model adds to Simbody's system for them.
+  std::cout << "effects built:\n";
+  for (const auto& e : inv.effects) std::cout << "  " << effectWords(e) << '\n';
+  std::cout << "force elements: " << inv.force_elements.size();
   std::cout << "\nbodies: " << inv.bodies << "\nmobilities: " << inv.mobilities
             << "\nconstraints: " << inv.constraints << " (" << inv.constraint_equations
             << " equations)\ndegrees of freedom: " << inv.degrees_of_freedom << '\n';

@@ -288,7 +288,7 @@ std::string renderReportHtml(const ReportContent& c) {
   for (size_t i = 0; i < c.overrides.size(); ++i)
     h << (i ? "<br>" : "") << "#" << i + 1 << " <code>" << htmlEscape(c.overrides[i]) << "</code>";
   h << "</td></tr>\n<tr><th>effects built</th><td>";
-  for (const std::string& e : c.effects) h << "<span class=\"chip\">" << htmlEscape(e) << "</span>";
+  for (const std::string& e : c.effects) h << "<span class=\"chip\">" << htmlEscape(effectWords(e)) << "</span>";
   h << "</td></tr>\n</table>\n";
 
   h << summaryMetricsHtml(s);

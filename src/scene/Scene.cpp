@@ -106,6 +106,25 @@ std::vector<std::string> Scene::effects() const {
   return e;
 }
 
+std::string effectWords(const std::string& e) {
+  if (e == "kloss_motor") return "induction motor, Kloss formula (motor.model: kloss)";
+  if (e == "kloss_dynamic_motor") return "induction motor, dynamic Kloss characteristic (motor.model: kloss_dynamic)";
+  if (e == "circuit_motor") return "induction motor, equivalent circuit (motor.model: circuit)";
+  if (e == "park_motor") return "induction motor, space-phasor model (motor.model: park)";
+  if (e == "rigid_coupling") return "rigid coupling (coupling.type: rigid)";
+  if (e == "elastic_coupling") return "torsional spring of the coupling (coupling.stiffness)";
+  if (e == "coupling_damping") return "damping of the coupling (coupling.damping)";
+  if (e == "cam_drive") return "cam drive, no rods (drive.type: cam)";
+  if (e == "rods_distributed") return "rods with distributed mass (rods.model: distributed)";
+  if (e == "rods_split") return "rods' mass split, half at the crank pin, half at the cart (rods.model: split)";
+  if (e == "rods_massless") return "massless rods (rods.model: massless)";
+  if (e == "roller_loads") return "technological roller loads (loads.*)";
+  if (e == "guide_friction") return "guide friction (loads.guide_friction)";
+  if (e == "gravity") return "gravity (loads.gravity)";
+  if (e == "flywheel") return "flywheel (flywheel.inertia)";
+  return e;
+}
+
 const char* toString(RodModel m) {
   switch (m) {
     case RodModel::Distributed: return "distributed";

@@ -318,6 +318,10 @@ struct Scene {
   std::vector<std::string> effects() const;
 };
 
+// What an effect name of Scene::effects() means, in the engineer's words with the scene key that
+// sets it, for the console and the report (the names stay the identifiers in summary.json).
+std::string effectWords(const std::string& effect);
+
 const char* toString(RodModel m);
 const char* toString(CouplingType t);
 const char* toString(RollerForceDirection d);

@@ -24,6 +24,12 @@ TEST(CliFriction, CheckWarnsNearDeadCentreAndPrintsTheMargins) {
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_NE(ok.out.find("self-locking index"), std::string::npos) << ok.out;
   EXPECT_EQ(ok.err.find("warning"), std::string::npos) << ok.err;
+  // What is built, in words with the scene key that sets it: the trial read the builder's class
+  // names (KlossMotor, ElasticCoupling(spring+damper)) and identifiers (rods_distributed).
+  EXPECT_NE(ok.out.find("  induction motor, Kloss formula (motor.model: kloss)\n"), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("  guide friction (loads.guide_friction)\n"), std::string::npos) << ok.out;
+  for (const char* internal : {"KlossMotor", "ElasticCoupling", "GuideFriction", "rods_distributed", "kloss_motor"})
+    EXPECT_EQ(ok.out.find(internal), std::string::npos) << internal << " in: " << ok.out;
 }
 
 TEST(CliFriction, ReducedResultsNameTheirNormalForcesAndWarnWhenQuasiStaticIsOff) {
