@@ -1,6 +1,10 @@
 """Results of one run: tables with units, the summary's sizing answers, HTML for Jupyter, and
 the reactions left out when the scene says so."""
 
+import json
+
+import pytest
+
 import rollerdyn as rd
 from conftest import model
 
@@ -77,3 +81,18 @@ def test_start_up_answers_and_friction_warnings_as_the_summary_has_them():
     assert any("self-locking" in w for w in f.warnings)
     assert all(w in f.summary["warnings"] for w in f.warnings)
     assert f.summary["motion"] == "at_rest" and not f.complete
+
+
+def test_a_summary_key_that_does_not_exist_says_where_the_value_is():
+    # The notebook trial looked for summary["steady_state_reached"] and got a bare KeyError.
+    r = rd.simulate(short("balanced-4cart.yaml"), model="reduced")
+    assert isinstance(r.summary["steady_state"]["reached"], bool)
+    with pytest.raises(KeyError) as e:
+        r.summary["steady_state_reached"]
+    assert 'summary["steady_state"]["reached"]' in str(e.value)
+    with pytest.raises(KeyError) as e:
+        r.summary["sizing"]["motor"]["rms_over_nominl"]  # misspelt, one level down
+    assert 'summary["sizing"]["motor"]["rms_over_nominal"]' in str(e.value)
+    # Still the summary.json dict: equal to it, serialisable, .get works as for a dict.
+    assert r.summary.get("no_such_key") is None
+    assert json.loads(json.dumps(r.summary)) == r.summary

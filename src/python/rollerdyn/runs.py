@@ -32,6 +32,35 @@ class RunInterrupted(KeyboardInterrupt):
         self.result = result
 
 
+class Summary(dict):
+    """summary.json as a dict (the same keys and values, nested dicts too). A key it does not have
+    raises a KeyError that names where the value lives: ``summary["steady_state_reached"]`` points
+    to ``summary["steady_state"]["reached"]``."""
+
+    def __init__(self, data, path=""):
+        super().__init__((k, Summary(v, f'{path}["{k}"]') if isinstance(v, dict) else v) for k, v in data.items())
+        self._path = path
+
+    def _paths(self, prefix=()):
+        for k, v in self.items():
+            yield prefix + (k,)
+            if isinstance(v, Summary):
+                yield from v._paths(prefix + (k,))
+
+    def __missing__(self, key):
+        import difflib
+        paths = list(self._paths())
+        flat = {"_".join(p): p for p in paths}
+        text = str(key)
+        found = [flat[text]] if text in flat else []
+        if not found:  # a leaf of the same name deeper down, or a close spelling
+            found = [p for p in paths if len(p) > 1 and p[-1] == text]
+            found += [flat[m] for m in difflib.get_close_matches(text, list(flat), n=3, cutoff=0.75) if flat[m] not in found]
+        where = " or ".join(f"summary{self._path}" + "".join(f'["{k}"]' for k in p) for p in found[:3])
+        raise KeyError(f"summary{self._path} has no key {key!r}" + (f"; did you mean {where}?" if where else
+                                                                       f"; its keys: {', '.join(self)}"))
+
+
 class Result:
     """One run, as ``rollerdyn simulate`` writes it.
 
@@ -133,7 +162,7 @@ class Result:
     def summary(self):
         """summary.json as a dict: the same keys and values."""
         if self._summary is None:
-            self._summary = self._d.summary()
+            self._summary = Summary(self._d.summary())
         return self._summary
 
     @property
@@ -209,7 +238,7 @@ class Comparison:
     def __init__(self, data):
         self._d = data
         self.table = frame(data.table())
-        self.summary = data.json()
+        self.summary = Summary(data.json())
         self.multibody = Result(data.multibody)
         self.reduced = Result(data.reduced)
 
