@@ -2,6 +2,8 @@
 // naming the key, the value and what was likely meant; the papers' own values get none.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "scene/Plausibility.h"
 #include "support/Seed000Scene.h"
 
@@ -16,6 +18,36 @@ TEST(Plausibility, LengthTypedInMillimetresIsNamedAndThePapersValuesAreNot) {
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("crank.radius = 200 m"), std::string::npos) << w[0];
   EXPECT_NE(w[0].find("write 0.2"), std::string::npos) << w[0];
+}
+
+// The 6-cart trial typed crank.offset_deg: 1.0472 (60° in radians) and carts.mass: 1 (tonnes):
+// both were accepted silently.
+TEST(Plausibility, AnAngleTypedInRadiansAndACartMassInTonnesAreNamed) {
+  Scene s = test_scenes::seed000Scene();
+  s.crank.offset = 1.0472 * M_PI / 180.0;  // the key is in degrees: 1.0472 deg
+  auto w = plausibilityWarnings(s);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("crank.offset_deg = 1.0472 is read as 1.0472°"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("write 60"), std::string::npos) << w[0];
+  for (double deg : {3.0, 5.0, 45.0, 90.0, 1.3}) {  // whole degrees, or no round angle in radians
+    s.crank.offset = deg * M_PI / 180.0;
+    EXPECT_TRUE(plausibilityWarnings(s).empty()) << deg;
+  }
+  s.crank.offset = M_PI / 2;
+  s.carts.mass = 1.0;
+  w = plausibilityWarnings(s);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("carts.mass = 1 kg"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("write 1000"), std::string::npos) << w[0];
+  s.carts.mass = 1e-6;  // a deliberately massless cart
+  EXPECT_TRUE(plausibilityWarnings(s).empty());
+  // Per-cart lists name the entry.
+  s.carts.mass = std::nan("");
+  s.carts.masses.assign(s.carts.count, 1000.0);
+  s.carts.masses[1] = 0.8;
+  w = plausibilityWarnings(s);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("carts.mass[1] = 0.8 kg"), std::string::npos) << w[0];
 }
 
 }  // namespace
