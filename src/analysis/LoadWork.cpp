@@ -74,14 +74,19 @@ LoadWork computeLoadWork(const Scene& sc, const RunResult& run, const SteadyStat
   out.power_mean_per_cart_whole_run = whole > 0 ? sum_whole / whole / sc.carts.count : kNaN;
   out.net_over_gross_steady = sum_gross > 0 ? sum_steady / sum_gross : kNaN;
   if (sum_gross > 0 && std::abs(out.net_over_gross_steady) < kNoNetWorkFraction) {
+    // What it falsifies depends on whether a motor drives the machine: its verdicts, or (motor
+    // off) the coasting machine's run-out, which then loses energy to friction alone.
+    out.consequence = sc.motor.enabled
+                          ? "compaction then costs the motor nothing and every motor verdict is that of an idling machine"
+                          : "compaction then takes no energy from the coasting machine (motor.enabled: false) and its "
+                            "run-out is that of friction and damping alone";
     std::snprintf(buf, sizeof buf,
                   "the technological load does almost no net work: %.3g W per cart on average in the steady "
-                  "window, %.2g %% of the %.3g W it takes and gives back within each stroke; compaction then "
-                  "costs the motor nothing and every motor verdict is that of an idling machine. Real "
+                  "window, %.2g %% of the %.3g W it takes and gives back within each stroke; %s. Real "
                   "compaction dissipates energy: give loads.rolling_resistance (μ_r) or "
                   "loads.roller_force_direction: opposes_velocity (docs/loads.md)",
                   out.power_mean_per_cart_steady, 100.0 * out.net_over_gross_steady,
-                  span > 0 ? sum_gross / span / sc.carts.count : kNaN);
+                  span > 0 ? sum_gross / span / sc.carts.count : kNaN, out.consequence.c_str());
     out.warning = buf;
   }
   return out;
@@ -102,7 +107,8 @@ nlohmann::json loadWorkJson(const LoadWork& w) {
           {"power_mean_per_cart_whole_run", num(w.power_mean_per_cart_whole_run)},
           {"net_over_gross_steady", num(w.net_over_gross_steady)},
           {"per_cart", per},
-          {"warning", w.warning.empty() ? nlohmann::json(nullptr) : nlohmann::json(w.warning)}};
+          {"warning", w.warning.empty() ? nlohmann::json(nullptr) : nlohmann::json(w.warning)},
+          {"warning_consequence", w.consequence.empty() ? nlohmann::json(nullptr) : nlohmann::json(w.consequence)}};
 }
 
 }  // namespace rollerdyn

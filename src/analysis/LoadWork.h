@@ -40,6 +40,8 @@ struct LoadWork {
   double net_over_gross_steady = 0;          // Σ work_steady / Σ gross_steady [-]
   std::string reading;                       // the direction law and μ_r in words
   std::string warning;                       // "" unless the load does (almost) no net work
+  std::string consequence;                   // what that falsifies (motor verdicts, or a coasting
+                                             // machine's run-out); "" without the warning
 };
 
 // From the run's v_cart_j columns (trapezoidal rule on the output rows).

@@ -296,8 +296,8 @@ std::string summaryText(const nlohmann::json& s) {
       << " W per cart net in the metrics window, " << f(ld.value("power_mean_per_cart_whole_run", json(nullptr)), "%.4g")
       << " W per cart over the whole run (" << str(ld.value("reading", json(""))) << ")\n";
     if (ld.value("warning", json(nullptr)).is_string())
-      o << "             WARNING: the load does almost no net work (compaction costs the motor nothing): every motor "
-           "verdict below is that of an idling machine (warning on stderr, docs/loads.md)\n";
+      o << "             WARNING: the load does almost no net work: " << str(ld.value("warning_consequence", json("")))
+        << " (warning on stderr, docs/loads.md)\n";
   }
   o << "coupling     torque swing " << f(at("coupling_torque_swing"), "%.4g")
     << " N·m, twist swing " << f(at("twist_swing"), "%.3g") << " rad\n";

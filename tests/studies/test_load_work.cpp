@@ -42,6 +42,24 @@ TEST(LoadWork, PrintedRollerForcesDoNoNetWorkAndSaySo) {
   }
 }
 
+// With the motor off there are no motor verdicts: the trial's coasting run still read "every motor
+// verdict is that of an idling machine". The warning names what it falsifies there, the run-out.
+TEST(LoadWork, WithTheMotorOffTheWarningSpeaksOfTheRunOutNotOfMotorVerdicts) {
+  const Scene s = parseSceneFile(model("balanced-4cart.yaml"), {"simulation.t_end=6", "simulation.reactions=false",
+                                                                "motor.enabled=false", "initial.crank_speed=10.4"});
+  const nlohmann::json j = summaryOf(s, false);
+  ASSERT_TRUE(hasNoWorkWarning(j)) << j["warnings"].dump();
+  const std::string consequence = j["load"]["warning_consequence"];
+  EXPECT_EQ(consequence.find("motor verdict"), std::string::npos) << consequence;
+  EXPECT_NE(consequence.find("run-out"), std::string::npos) << consequence;
+  EXPECT_EQ(j["load"]["warning"].get<std::string>().find("motor verdict"), std::string::npos);
+  EXPECT_EQ(summaryText(j).find("motor verdict"), std::string::npos) << summaryText(j);
+  // With the motor on, the motor verdicts are what it falsifies.
+  const nlohmann::json on = summaryOf(parseSceneFile(model("balanced-4cart.yaml"), {"simulation.t_end=6",
+                                                                                   "simulation.reactions=false"}), false);
+  EXPECT_NE(on["load"]["warning_consequence"].get<std::string>().find("every motor verdict"), std::string::npos);
+}
+
 // μ_r = 0.05 on R_j1 + R_j2 = 19480 N: each cart absorbs μ_r·R·mean|v'|, where mean|v'| is the
 // cart's mean speed from the run's own rows (both models, the same law). No warning.
 TEST(LoadWork, RollingResistanceDissipatesInBothModels) {
