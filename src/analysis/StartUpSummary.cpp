@@ -119,6 +119,11 @@ std::string startUpText(const json& summary) {
   o << "  motor torque M·u·η            peak " << f(jsonMember(m, "peak"), "%.4g") << (negative ? ", most negative " : ", smallest ")
     << f(jsonMember(m, "min"), "%.4g") << " N·m" << in_start << "; " << steady << " peak |M| " << f(jsonMember(m, "steady_peak"), "%.4g")
     << " N·m (x" << f(jsonMember(m, "ratio"), "%.3g") << ")\n";
+  const json &peak = jsonMember(m, "peak"), &largest = jsonMember(s, "largest_torque_crank");
+  if (peak.is_number() && largest.is_number() && peak.get<double>() > 1.001 * largest.get<double>())
+    o << "                                (the peak is the switching transient: above the static characteristic's "
+         "largest torque, "
+      << f(largest, "%.4g") << " N·m, which no steady running reaches)\n";
   o << "  coupling torque |M|           peak " << f(jsonMember(c, "peak"), "%.4g") << " N·m" << in_start << ", " << steady << " "
     << f(jsonMember(c, "steady_peak"), "%.4g") << " N·m (x" << f(jsonMember(c, "ratio"), "%.3g") << ")\n";
   const json& joints = jsonMember(s, "joints");

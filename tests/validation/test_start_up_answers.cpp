@@ -202,6 +202,17 @@ TEST(StartUpAnswers, TheStartUpVerdictAgreesWithTheMotion) {
   EXPECT_GT(off["sizing"]["motor"]["torque_shaft"]["rms"].get<double>(), 1.0);  // not the coasting motor's 0
 }
 
+// A transient peak above the static characteristic's largest torque says which one it is: the
+// trial read "largest 4561" beside a peak of 5005 N·m of the Park machine with no word on which.
+TEST(StartUpAnswers, AParkPeakAboveTheBreakdownTorqueIsNamedAsTheSwitchingTransient) {
+  const nlohmann::json j = reducedSummary(defaultScene({"motor.model=park", "simulation.t_end=3", "simulation.output_step=0.001"}));
+  const double peak = j["start_up"]["motor_torque"]["peak"], largest = j["start_up"]["largest_torque_crank"];
+  ASSERT_GT(peak, largest);
+  const std::string text = startUpText(j);
+  EXPECT_NE(text.find("(the peak is the switching transient: above the static characteristic's largest torque"),
+            std::string::npos) << text;
+}
+
 // The start ends where the crank speed settles, not where the steady window (the run's last
 // revolutions) begins: in the trial its peaks, its rotor loss and the starts per hour moved with
 // simulation.t_end. The same drive run for 10 s and for 20 s has the same start.
@@ -238,6 +249,7 @@ TEST(StartUpAnswers, ADriveThatDoesNotStartHasNoRunUpAndItsPeaksAreOverTheRun) {
   EXPECT_EQ(text.find("in the start"), std::string::npos) << text;
   EXPECT_NE(text.find("run-up time                   none: the drive does not start"), std::string::npos) << text;
   EXPECT_NE(text.find("over the run"), std::string::npos) << text;
+  EXPECT_EQ(text.find("switching transient: above"), std::string::npos) << text;  // a static law never exceeds it
   // The whole running part of the run is the interval of the peaks.
   EXPECT_NEAR(j["start_up"]["start_end"].get<double>(), j["steady_state"]["t_end"].get<double>(), 1e-9);
 }
