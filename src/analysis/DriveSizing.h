@@ -92,7 +92,12 @@ struct FlywheelSizing {
   double inertia_effective = 0;     // J, time mean of 2T/ω_crank² over the window [kg·m²] (crank axis)
   double delta = 0;                 // δ of the run [-]
   double target_delta = 0;          // the target δ* [-]; NaN when not given
-  double added_inertia_crank = 0;   // ΔJ = J·(δ/δ* - 1), ≥ 0, on the crankshaft [kg·m²]
+  double excess_work = 0;           // ΔA of a revolution at constant speed (StartLoad) [J]; NaN: not known
+  double omega_mean = 0;            // mean crank speed of the window [rad/s]
+  double inertia_required = 0;      // J* = ΔA/(δ*·ω̄²), the drive inertia at the crank for δ* [kg·m²]
+  double added_inertia_energy_method = 0;  // J·(δ/δ* - 1): the run's δ·J held constant [kg·m²]
+  std::string method;               // which of the two gave added_inertia_crank, in words
+  double added_inertia_crank = 0;   // ΔJ ≥ 0 on the crankshaft: J* - J, or without ΔA J·(δ/δ* - 1) [kg·m²]
   double flywheel_crankshaft = 0;   // flywheel on the crankshaft reaching δ* (present + ΔJ) [kg·m²]
   double flywheel_motor_shaft = 0;  // the same on the motor shaft: ΔJ/(δ_red·u²) + present [kg·m²]
 };
@@ -154,8 +159,12 @@ double nominalMotorTorque(const Scene& scene, std::string* source = nullptr);
 // argument they are computed here with the scene's motor law.
 DriveSizing computeDriveSizing(const Scene& scene, const RunResult& run, const SteadyState& window,
                                bool turning, double delta, const std::string& motion = "");
+// `load`: the load torques and the excess work of a revolution (StartLoad, RunMotion.h); with its
+// excess work the flywheel for δ* is ΔA/(δ*·ω̄²) less the drive's present inertia, else (null or
+// NaN) the run's δ·J extrapolated.
 DriveSizing computeDriveSizing(const Scene& scene, const RunResult& run, const SteadyState& window,
-                               bool turning, double delta, const std::string& motion, const StartUp* start_up);
+                               bool turning, double delta, const std::string& motion, const StartUp* start_up,
+                               const StartLoad* load = nullptr);
 
 // Power drawn from the line for a motor torque M at the rotor [W]: the air-gap power M·ω0 (what
 // crosses to the rotor: shaft power plus the rotor's copper losses s·M·ω0), times (1 - s_n)/η_m

@@ -47,6 +47,11 @@ struct StartLoad {
   double at_start_angle;  // resisting torque at initial.crank_angle_deg as the carts begin to
                           // move forwards (crank speed → 0+) [N·m at the crank]
   double revolution_mean; // the same averaged over one crank revolution [N·m at the crank]
+  // The excess work of one revolution at constant crank speed (the flywheel's design quantity,
+  // StartLoad.h): the largest swing of ∫(Q̄ - Q(φ))dφ, Q the load torque plus the carts' and rods'
+  // inertia torque ½·J_n2'(φ)·ω² at that speed [J]; NaN when not known.
+  double excess_work = std::numeric_limits<double>::quiet_NaN();
+  double excess_work_speed = std::numeric_limits<double>::quiet_NaN();  // that crank speed [rad/s]
 };
 
 // Torques of the motor reduced to the crank (× u·η, Loveikin, Pochka, Romasevych (2018) eq. (37)):

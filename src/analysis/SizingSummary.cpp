@@ -103,12 +103,11 @@ json sizingJson(const DriveSizing& s) {
                    {"added_inertia_crankshaft", num(f.added_inertia_crank)},
                    {"flywheel_crankshaft", num(f.flywheel_crankshaft)},
                    {"flywheel_motor_shaft", num(f.flywheel_motor_shaft)},
-                   {"method",
-                    "energy method: δ ≈ ΔE/(J·ω²) with ΔE fixed by the loads, so J* = J·δ/δ*; "
-                    "J = time mean of 2T/ω_crank² of this run (constant-inertia approximation, "
-                    "motor slip ignored): a first estimate, check it with a run with flywheel.inertia set, or find the "
-                    "smallest flywheel that meets the target from runs with rollerdyn optimize --param flywheel.inertia "
-                    "--minimize flywheel.inertia --constraint 'delta<=TARGET'"}};
+                   {"excess_work", num(f.excess_work)},
+                   {"omega_mean", num(f.omega_mean)},
+                   {"inertia_required", num(f.inertia_required)},
+                   {"added_inertia_energy_method", num(f.added_inertia_energy_method)},
+                   {"method", f.method.empty() ? json(nullptr) : json(f.method)}};
   const CouplingSizing& c = s.coupling;
   if (c.available) {
     j["coupling"] = {{"mean", num(c.mean)}, {"peak", num(c.peak)}, {"swing", num(c.swing)},
@@ -214,9 +213,18 @@ std::string sizingText(const json& summary) {
   if (jsonMember(f, "target_delta").is_number()) {
     o << "                                    for δ* = " << fmt(jsonMember(f, "target_delta"), "%.4g") << ": flywheel "
       << fmt(jsonMember(f, "flywheel_crankshaft"), "%.4g") << " kg·m² on the crankshaft or "
-      << fmt(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n"
-      << "                                    (energy method, J·δ constant: a first estimate; it can be far off where\n"
-      << "                                    the carts' inertia or the motor's slip vary over a turn)\n";
+      << fmt(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n";
+    if (jsonMember(f, "inertia_required").is_number())
+      o << "                                    (excess work ΔA " << fmt(jsonMember(f, "excess_work"), "%.4g")
+        << " J of a revolution at constant speed: J* = ΔA/(δ*·ω̄²) = " << fmt(jsonMember(f, "inertia_required"), "%.4g")
+        << " kg·m² at the crank, less the present J;\n"
+        << "                                    motor slip and coupling elasticity neglected (on the papers' machines the\n"
+        << "                                    flywheel it proposes gives δ = 0.86 ... 1.16 δ*); the run's own δ·J held constant\n"
+        << "                                    would give " << fmt(jsonMember(f, "added_inertia_energy_method"), "%.4g")
+        << " kg·m², which falls short where δ is large)\n";
+    else
+      o << "                                    (energy method, J·δ constant: a first estimate; it falls short where the\n"
+        << "                                    run's δ is large, the motor's slip and the carts' inertia varying over a turn)\n";
     const json& added = jsonMember(f, "added_inertia_crankshaft");
     if (added.is_number() && added.get<double>() > 0) {
       // The smallest flywheel from runs, as a command that runs as printed: the scene file, the

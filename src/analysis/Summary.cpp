@@ -187,7 +187,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
       // a scene the starting method cannot be built for (e.g. a test scene without loads' data)
     }
   const DriveSizing sizing = computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN,
-                                                crank_motion, start_up.get());
+                                                crank_motion, start_up.get(), start_load);
   j["sizing"] = sizingJson(sizing);
   j["sizing"]["flywheel"]["location"] = toString(scene.flywheel.location);
   const LoadWork load = computeLoadWork(scene, run, ss);

@@ -241,9 +241,10 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
                            c.sentence() + ".");
   }
 
-  // Coupling torque and the flywheel's energy method: T = ½J_n1·ω_motor² + ½(J_c + n·m_rod/2·r²)·ω² +
+  // Coupling torque and the flywheel's two estimates: T = ½J_n1·ω_motor² + ½(J_c + n·m_rod/2·r²)·ω² +
   // Σ ½(m'_B + m_rod/2)·v_j² (DriveSizing.h), ΔT the largest max - min within one revolution,
-  // J = time mean of 2T/ω², ΔJ = J·(δ/δ* - 1) for the target δ*.
+  // J = time mean of 2T/ω², ΔJ = J·(δ/δ* - 1) for the target δ* (energy method) and
+  // ΔJ = ΔA/(δ*·ω̄²) - J (excess work, the proposal when ΔA is known).
   {
     const std::vector<double>& Mc = ts.col("coupling_torque");
     const auto [clo, chi] = std::minmax_element(Mc.begin() + long(b), Mc.begin() + long(e));
@@ -279,9 +280,21 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
     k.add("ΔT per revolution", dT, at(f, {"kinetic_energy_swing"}), T_max);  // a difference of T values
     k.add("J = mean 2T/ω²", J, at(f, {"inertia_effective"}));
     const double target = sc.sizing.target_delta;
-    const double added = target > 0 ? std::max(0.0, J * (delta / target - 1.0)) : kNaN;
+    const double added_energy = target > 0 ? std::max(0.0, J * (delta / target - 1.0)) : kNaN;
     // ΔJ inherits δ's operands: judged against J·(ω_max/ω_mean)/δ*.
-    k.add("ΔJ = J·(δ/δ* - 1)", added, at(f, {"added_inertia_crankshaft"}), J * (*whi / w_mean) / target);
+    k.add("ΔJ = J·(δ/δ* - 1)", added_energy, at(f, {"added_inertia_energy_method"}), J * (*whi / w_mean) / target);
+    // The excess-work method: ΔA (from the load law at constant speed, checked on its own in the
+    // tests against ½ω²(J_max - J_min) of a load-free machine) over δ*·ω̄², ω̄ from the rows here.
+    const json& dA = at(f, {"excess_work"});
+    double added = added_energy;
+    if (dA.is_number() && target > 0) {
+      const double J_req = dA.get<double>() / (target * w_mean * w_mean);
+      added = std::max(0.0, J_req - J);
+      k.add("J* = ΔA/(δ*·ω̄²)", J_req, at(f, {"inertia_required"}));
+      k.add("ΔJ = J* - J", added, at(f, {"added_inertia_crankshaft"}), J_req);
+    } else {
+      k.add("ΔJ (no ΔA: energy method)", added_energy, at(f, {"added_inertia_crankshaft"}), J * (*whi / w_mean) / target);
+    }
     s.claim(k.holds(), who + ": coupling torque mean " + g(integral(t, Mc, b, e) / span, 4) + ", peak " + g(cpeak, 4) +
                            ", swing " + g(*chi - *clo, 4) + " N·m; kinetic energy swing per revolution ΔT = " + g(dT, 4) +
                            " J, J = " + g(J, 5) + " kg·m², flywheel to add for δ* = " + g(target) + ": " + g(added, 4) +

@@ -11,7 +11,9 @@ namespace rollerdyn {
 // Load torque at the crank at the scene's start angle and averaged over 360 crank angles, with
 // the carts moving forwards at a crank speed so small that inertia is nil but the smoothed
 // sign(v) = tanh(v/v_s) is ±1 (φ̇ = 50·v_s/r): the breakaway (static) load. NaN fields when the
-// reduced model cannot be built for the scene.
+// reduced model cannot be built for the scene. With a motor (and the crank drive) also the excess
+// work of one revolution at the steady crank speed the motor's static curve gives against the mean
+// load (the flywheel's design quantity, DriveSizing.h).
 StartLoad startLoadOf(const Scene& scene);
 
 }  // namespace rollerdyn
