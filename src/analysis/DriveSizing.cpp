@@ -189,8 +189,12 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
                       (starts[0] ? std::string(starts) : unknown_start);
   } else {
     r.thermal_over_nominal = r.rms_over_nominal;
-    r.thermal_basis = "RMS torque over the whole run / M_n (s_n not known: motor.omega_nominal not given; "
-                      "start-up heating at high slip is underestimated)";
+    // Say which input is missing: the trial read "motor.omega_nominal not given" for a run whose
+    // steady window merely held too few output rows.
+    const std::string why = !(s_n > 0) ? "s_n not known: motor.omega_nominal not given"
+                            : !(m.nominal_torque > 0) ? "the nominal torque M_n is not known"
+                                                      : "the steady window holds too few output rows for its losses";
+    r.thermal_basis = "RMS torque over the whole run / M_n (" + why + "; start-up heating at high slip is underestimated)";
   }
   return m;
 }

@@ -19,6 +19,10 @@ inline constexpr double kImplausibleLength = 5.0;
 // Cart masses below this are taken for tonnes typed as kilograms [kg] (the papers' carts: 1000 kg).
 inline constexpr double kImplausibleCartMass = 10.0;
 
+// Output rows per crank revolution below which δ and the peaks read from the rows are
+// under-sampled by more than about 1 % (order 2; Plausibility.cpp) [-].
+inline constexpr double kFewestRowsPerRevolution = 50.0;
+
 // One sentence per implausible value, naming the key, the value and the unit expected.
 std::vector<std::string> plausibilityWarnings(const Scene& scene);
 

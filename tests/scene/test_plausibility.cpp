@@ -50,5 +50,35 @@ TEST(Plausibility, AnAngleTypedInRadiansAndACartMassInTonnesAreNamed) {
   EXPECT_NE(w[0].find("carts.mass[1] = 0.8 kg"), std::string::npos) << w[0];
 }
 
+// The trial typed simulation.output_step: 5 (meaning 5 ms) and got "steady state reached" from 3
+// rows and a motor FAIL of a drive that ran well; a breakdown torque 1000x the catalogue's, a
+// gravity of 981 and a δ* of 5 were accepted silently.
+TEST(Plausibility, SparseRowsACatalogueMismatchGravityAndAPercentTargetAreNamed) {
+  Scene s = test_scenes::seed000Scene();
+  ASSERT_TRUE(plausibilityWarnings(s).empty());
+  const double t_rev = 2 * M_PI * s.reducer.ratio / s.motor.omega_sync;
+  s.simulation.output_step = t_rev / 40;  // 40 rows per revolution
+  auto w = plausibilityWarnings(s);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("about 40 output rows per crank revolution"), std::string::npos) << w[0];
+  s.simulation.output_step = t_rev / 60;
+  EXPECT_TRUE(plausibilityWarnings(s).empty());
+  s.induction.catalogue.power = 22000;
+  s.induction.catalogue.omega_nominal = 22000.0 * 2.4 / s.motor.breakdown_torque;  // consistent: M_kr = λ·P_n/ω_n
+  s.induction.catalogue.breakdown_torque_ratio = 2.4;
+  EXPECT_TRUE(plausibilityWarnings(s).empty());
+  s.motor.breakdown_torque *= 1000;
+  w = plausibilityWarnings(s);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("disagrees with the catalogue"), std::string::npos) << w[0];
+  s.motor.breakdown_torque /= 1000;
+  s.loads.gravity = 981;
+  s.sizing.target_delta = 5;
+  w = plausibilityWarnings(s);
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_NE(w[0].find("loads.gravity = 981"), std::string::npos) << w[0];
+  EXPECT_NE(w[1].find("write 0.05"), std::string::npos) << w[1];
+}
+
 }  // namespace
 }  // namespace rollerdyn
