@@ -110,6 +110,11 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
     if (!steady_reached) return "starting";
   }
   if (m.omega_min == 0 && m.omega_max == 0) return "at_rest";
+  // No motor and no steady state: nothing drives the machine, so a crank that turns one way but
+  // never settles is losing its kinetic energy to friction and loads; the run ended before it came
+  // to rest. Its speed swing is the deceleration, not an unevenness (the trial read δ = 0.22 of a
+  // coast-down from 10.4 to 6.5 rad/s as "turning").
+  if (!sc.motor.enabled && !steady_reached) return "coasting";
   if (!steady_reached && ts.has("t") && ts.has("phi_crank") && stillGainingSpeed(ts)) return "starting";
   return "turning";
 }

@@ -14,6 +14,8 @@
 //              the flywheel size) have a meaning,
 //   "at_rest"  no motor, and friction and loads have brought the machine to rest (RestDetector.h:
 //              the run ended early), or the crank never moved,
+//   "coasting" no motor, the crank still turns but has not settled: it is slowing down and the run
+//              ended before it came to rest; per-revolution metrics do not apply,
 //   "unknown"  no finite crank speed in the window.
 // And, for a stalled run, why: the motor's starting torque and its breakdown torque, reduced to
 // the crank, against the load torque at the start angle and averaged over a revolution.

@@ -267,6 +267,9 @@ std::string summaryText(const nlohmann::json& s) {
         : motion == "rocking" ? "  (the crank swings back and forth instead of turning)"
         : motion == "stalled" ? "  (the motor stalled; why: see status)"
         : motion == "at_rest" ? "  (the machine is at rest: with the motor off, friction and loads hold it)"
+        : motion == "coasting" ? "  (the motor is off and the machine slows down: the run ended before it came to rest; "
+                                 "its speed swing is the deceleration, not an unevenness, so δ, H and k_p do not apply; "
+                                 "run longer, simulation.t_end, for the run-out)"
         : motion == "starting" ? "  (the drive is still starting when the run ends: turning but not settled, or rocking "
                                  "with swings that still grow; run longer, simulation.t_end; no sizing verdict applies yet)"
                               : "")
@@ -282,7 +285,7 @@ std::string summaryText(const nlohmann::json& s) {
     // after_revolutions is the 0-based index of the first settled revolution: the speed repeats
     // from the start of revolution after_revolutions + 1 (counted from 1) on.
     o << "steady state " << (st.value("reached", false) ? "reached" : "NOT reached");
-    if (st.value("after_revolutions", -1) >= 0)
+    if (st.value("reached", false) && st.value("after_revolutions", -1) >= 0)
       o << ": the crank speed repeats from revolution " << st.value("after_revolutions", -1) + 1 << " on (t = "
         << f(st.value("t_settled", json(nullptr)), "%.4g") << " s), of " << st.value("revolutions", 0)
         << " whole revolutions in the run";

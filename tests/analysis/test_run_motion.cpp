@@ -248,3 +248,32 @@ TEST(RunMotion, RockingWithSwingsStillGrowingAtTheEndIsStarting) {
   EXPECT_EQ(classifyMotion(s, run(0.3), m, 0.0, /*steady_reached=*/false), "starting");
   EXPECT_EQ(classifyMotion(s, run(0.0), m, 0.0, /*steady_reached=*/false), "rocking");
 }
+
+// Finding of the 6-cart trial: the motor switched off at 10.4 rad/s, a 10 s run slowing steadily
+// to 6.5 rad/s, was "turning" with δ = 0.22 (the deceleration read as unevenness) and "steady
+// state NOT reached: the crank speed repeats from revolution 13 on". Without a motor, a crank that
+// turns one way but never settles is coasting; with the motor on the same rows stay "turning" or
+// "starting" as before, and a settled motor-off run (no losses) is still "turning".
+TEST(RunMotion, AMachineWithoutMotorThatSlowsDownIsCoastingWithoutDelta) {
+  Scene s = motorScene();
+  s.motor.enabled = false;
+  RunResult r;
+  r.model = "reduced";
+  r.timeseries.columns = {"t", "phi_crank", "omega_crank", "v_cart_1", "v_cart_2"};
+  for (int i = 0; i <= 1000; ++i) {  // ω = 10.4 - 0.39·t for 10 s, carts well above v_s
+    const double t = 0.01 * i;
+    r.timeseries.rows.push_back({t, 10.4 * t - 0.195 * t * t, 10.4 - 0.39 * t, 1.0, -1.0});
+  }
+  r.reactions.columns = {"t"};
+  r.stats.complete = true;
+  const json j = makeSummary(s, r);
+  EXPECT_EQ(j["motion"], "coasting");
+  EXPECT_TRUE(j["delta"].is_null());
+  const std::string text = summaryText(j);
+  EXPECT_NE(text.find("motion       coasting  (the motor is off and the machine slows down"), std::string::npos) << text;
+  EXPECT_EQ(text.find("repeats from revolution"), std::string::npos) << text;  // not while NOT reached
+  WindowMetrics m;
+  m.omega_min = 6.5;
+  m.omega_max = 10.4;
+  EXPECT_EQ(classifyMotion(s, r, m, 80.0, /*steady_reached=*/true), "turning");
+}
