@@ -253,6 +253,9 @@ std::string sizingText(const json& summary) {
       const json& w_mean = jsonMember(jsonMember(summary, "omega_crank"), "mean");
       const bool start_at_speed = !sets_speed && w_mean.is_number() && w_mean.get<double>() > 0;
       if (start_at_speed) cmd += " --set initial.crank_speed=" + fmt(w_mean, "%.4g");
+      // The same model as this run (optimize runs the multibody model unless told otherwise).
+      if (jsonMember(summary, "model").is_string() && jsonMember(summary, "model").get<std::string>() == "reduced")
+        cmd += " --model reduced";
       cmd += " --param flywheel.inertia --range 0:" + fmt(json(upper), "%.0f") +
              " --minimize flywheel.inertia --constraint 'delta<=" + fmt(jsonMember(f, "target_delta"), "%.4g") + "'";
       o << "                                    the smallest flywheel (" << (motor_shaft ? "motor shaft" : "crankshaft")

@@ -57,10 +57,12 @@ TEST(CliTrialFindings, FlywheelHintRunsAsPrinted) {
   EXPECT_NE(cmd.find(model("recuperative-2cart.yaml")), std::string::npos) << cmd;
   EXPECT_NE(cmd.find("--set sizing.target_delta=0.04 --set simulation.t_end=8"), std::string::npos) << cmd;
   EXPECT_NE(cmd.find("--set initial.crank_speed="), std::string::npos) << cmd;  // sized for steady running
-  // Run it as printed (reduced model, few evaluations, to keep the test short).
+  // The run's model: the trial's reduced run got a hint that optimized the multibody model.
+  EXPECT_NE(cmd.find(" --model reduced "), std::string::npos) << cmd;
+  // Run it as printed (few evaluations, to keep the test short).
   TempDir opt("hint-run");
   const std::string line = std::string(ROLLERDYN_BINARY) + cmd.substr(std::string("rollerdyn").size()) +
-                           " --model reduced --max-evals 6 --out " + opt.str() + " > /dev/null 2>&1";
+                           " --max-evals 6 --out " + opt.str() + " > /dev/null 2>&1";
   EXPECT_EQ(WEXITSTATUS(std::system(line.c_str())) == 2, false) << line;  // not a usage error
   EXPECT_TRUE(fs::exists(opt.path() / "optimize.json")) << line;
 }
