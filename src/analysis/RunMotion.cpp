@@ -155,8 +155,8 @@ std::string stallExplanation(const Scene& sc, const StartLoad* load) {
   const char* verdict =
       Lm >= M_kr   ? "the load averaged over a revolution exceeds even the breakdown torque, so "
                      "no steady running is possible"
-      : L0 >= M_start ? "the starting torque is below the load at the start angle, so the drive "
-                        "cannot break away from rest there"
+      : L0 >= M_start ? "the starting torque is below the load at the start angle, so the motor "
+                        "cannot turn the crank forwards from there"
                       : "the motor can start and carry the mean load, so the stall comes from the "
                         "load peaks near a dead centre together with the inertia";
   std::snprintf(buf, sizeof buf,
@@ -164,6 +164,33 @@ std::string stallExplanation(const Scene& sc, const StartLoad* load) {
                 "load torque of %.4g N·m at the start angle %.4g deg; breakdown torque at the crank "
                 "%.4g N·m (the law's largest torque × u·η) against a load torque of %.4g N·m averaged over a revolution: %s",
                 M_start, L0, sc.initial.crank_angle * 180.0 / M_PI, M_kr, Lm, verdict);
+  return buf;
+}
+
+std::string stalledCrankTravel(const Scene& sc, const RunResult& run) {
+  const Table& ts = run.timeseries;
+  if (!ts.has("phi_crank") || !ts.has("omega_crank") || ts.rows.empty()) return "";
+  const int ip = ts.index("phi_crank"), iw = ts.index("omega_crank");
+  const double phi0 = sc.initial.crank_angle;
+  double lo = phi0, hi = phi0, w_lo = 0, w_hi = 0, end = phi0;
+  for (const auto& row : ts.rows) {
+    if (!std::isfinite(row[ip]) || !std::isfinite(row[iw])) continue;
+    lo = std::min(lo, row[ip]), hi = std::max(hi, row[ip]);
+    w_lo = std::min(w_lo, row[iw]), w_hi = std::max(w_hi, row[iw]);
+    end = row[ip];
+  }
+  constexpr double kMoved = 5.0 * M_PI / 180.0;  // less is a creep at the start angle, not a motion
+  if (hi - phi0 < kMoved && phi0 - lo < kMoved) return "";
+  const double deg = 180.0 / M_PI;
+  char buf[400];
+  const char* how = phi0 - lo >= kMoved && hi - phi0 < kMoved  ? "the load drove it backwards"
+                    : hi - phi0 >= kMoved && phi0 - lo < kMoved ? "it moved forwards"
+                                                                : "it moved both ways";
+  const bool swung = w_lo < 0 && w_hi > 0;
+  std::snprintf(buf, sizeof buf,
+                "the crank did not stay at the start angle: %s, over %.4g ... %.4g deg%s (crank speed %.3g ... %.3g "
+                "rad/s), and is held at %.4g deg when the run ends",
+                how, lo * deg, hi * deg, swung ? ", swinging back and forth" : "", w_lo, w_hi, end * deg);
   return buf;
 }
 

@@ -66,4 +66,8 @@ double breakdownTorqueAtCrank(const Scene& scene);
 // loads are not known when `load` is null.
 std::string stallExplanation(const Scene& scene, const StartLoad* load);
 
+// For a drive that did not start: how far its crank moved from the start angle before it was
+// held (a load that drives it backwards, swings), one sentence; "" when it stayed within 5° of it.
+std::string stalledCrankTravel(const Scene& scene, const RunResult& run);
+
 }  // namespace rollerdyn

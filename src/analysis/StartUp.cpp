@@ -351,6 +351,8 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
     r.verdict = "the drive does not start: its starting torque " + fmt("%.4g", r.starting_torque_crank) + " N·m" +
                 at_start + " is below the load torque " + fmt("%.4g", r.load_torque_start) +
                 " N·m at the start angle " + fmt("%.4g", sc.initial.crank_angle * 180 / M_PI) + " deg";
+    const std::string travel = stalledCrankTravel(sc, run);
+    if (!travel.empty()) r.verdict += "; " + travel;
   } else if (std::isfinite(r.load_torque_mean) && r.largest_torque_crank <= r.load_torque_mean) {
     r.verdict = "the drive does not run up: the motor's largest torque " + fmt("%.4g", r.largest_torque_crank) +
                 " N·m at the crank is below the load averaged over a revolution, " + fmt("%.4g", r.load_torque_mean) +

@@ -222,7 +222,9 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
     status += buf;
   }
   if (crank_motion == "stalled") {
-    const std::string why = stallExplanation(scene, start_load);
+    std::string why = stallExplanation(scene, start_load);
+    const std::string travel = stalledCrankTravel(scene, run);
+    if (!travel.empty()) why += "; " + travel;
     j["stall"] = {{"explanation", why},
                   {"starting_torque_crank", startingTorqueAtCrank(scene)},
                   {"breakdown_torque_crank", breakdownTorqueAtCrank(scene)},

@@ -234,6 +234,26 @@ TEST(StartUpAnswers, TheStartEndsWhereTheCrankSpeedSettlesWhateverTheRunsLength)
   EXPECT_EQ(a["start_up"]["coupling_torque"]["peak"], b["start_up"]["coupling_torque"]["peak"]);
 }
 
+// The trial's six carts at 45° (circuit motor, rolling resistance): "the drive does not start ...
+// cannot break away from rest there" while the load had driven the crank backwards to -144° at
+// -4.8 rad/s and it swung for 4 s before it was held at -90°. The status and the start-up verdict
+// say how the crank moved.
+TEST(StartUpAnswers, ADriveTheLoadTurnsBackwardsSaysSo) {
+  const nlohmann::json j =
+      reducedSummary(defaultScene({"carts.count=6", "crank.offset_deg=45", "motor.model=circuit",
+                                   "loads.rolling_resistance=0.05"}));
+  ASSERT_EQ(j["motion"], "stalled") << j["status"];
+  const std::string status = j["status"], verdict = j["start_up"]["verdict"];
+  for (const std::string& text : {status, verdict}) {
+    EXPECT_NE(text.find("the crank did not stay at the start angle: the load drove it backwards, over -144.1 ... 0 deg, swinging"), std::string::npos) << text;
+    EXPECT_EQ(text.find("break away from rest"), std::string::npos) << text;
+  }
+  // And a drive held where it started says nothing of the kind.
+  const nlohmann::json held = reducedSummary(defaultScene({"loads.roller_force_direction=opposes_velocity"}));
+  ASSERT_EQ(held["motion"], "stalled");
+  EXPECT_EQ(held["status"].get<std::string>().find("did not stay"), std::string::npos) << held["status"];
+}
+
 // A drive that never turns has no start and no steady state: the trial read "run-up time (to 95 %
 // of 0.0005305 rad/s)" and a "most negative" motor torque of +1032 N·m. The console says the drive
 // does not start, and its peaks are over the run against the run's last part.
