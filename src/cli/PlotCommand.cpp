@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include "cli/Commands.h"
 #include "report/OutputDir.h"
@@ -27,8 +28,16 @@ int runPlot(const std::string& dir, const std::string& scene_arg, const std::vec
   if (!scene_arg.empty()) {
     scene = std::make_unique<Scene>(parseSceneFile(scene_path, overrides));  // the user's to fix
   } else if (!scene_path.empty() && std::filesystem::exists(scene_path)) {
+    // The scene as the run had it: the file plus the run's own --set (recorded in summary.json),
+    // then the user's. Without them a run made with motor.enabled=false or another motor law was
+    // drawn against the file's motor curve ("was the run made with other motor data?").
+    std::vector<std::string> all;
+    if (folder.summary.contains("overrides") && folder.summary["overrides"].is_array())
+      for (const auto& o : folder.summary["overrides"])
+        if (o.is_string()) all.push_back(o.get<std::string>());
+    all.insert(all.end(), overrides.begin(), overrides.end());
     try {
-      scene = std::make_unique<Scene>(parseSceneFile(scene_path, overrides));
+      scene = std::make_unique<Scene>(parseSceneFile(scene_path, all));
     } catch (const SceneError& e) {
       if (!overrides.empty()) throw;  // the user's --set is wrong
       std::cerr << "rollerdyn plot: note: scene '" << scene_path

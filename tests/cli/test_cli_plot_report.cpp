@@ -90,12 +90,24 @@ TEST(CliPlot, WarnsWhenTheSceneDoesNotMatchTheRunsMotor) {
   const auto sim = runRollerdyn({"simulate", model("recuperative-2cart.yaml"), "--set", "simulation.t_end=2",
                                  "--set", "motor.breakdown_torque=300", "--out", out.str(), "--model", "reduced"});
   ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  // The run's own --set (recorded in summary.json) apply: the trial's `plot` of a run made with
+  // another motor law, or with the motor off, warned "was the run made with other motor data?".
   const auto plain = runRollerdyn({"plot", out.str()});
   EXPECT_EQ(plain.exit_code, 0) << plain.err;
-  EXPECT_NE(plain.out.find("differs from the Kloss curve"), std::string::npos) << plain.out;
-  const auto same = runRollerdyn({"plot", out.str(), "--set", "motor.breakdown_torque=300"});
-  EXPECT_EQ(same.exit_code, 0) << same.err;
-  EXPECT_EQ(same.out.find("differs from the Kloss curve"), std::string::npos) << same.out;
+  EXPECT_EQ(plain.out.find("differs from the Kloss curve"), std::string::npos) << plain.out;
+  // Other motor data than the run's still warn.
+  const auto other = runRollerdyn({"plot", out.str(), "--set", "motor.breakdown_torque=500"});
+  EXPECT_EQ(other.exit_code, 0) << other.err;
+  EXPECT_NE(other.out.find("differs from the Kloss curve"), std::string::npos) << other.out;
+  // A run with the motor off draws no motor figures, and says why.
+  TempDir off("plot-motor-off");
+  ASSERT_EQ(runRollerdyn({"simulate", model("recuperative-2cart.yaml"), "--set", "simulation.t_end=2", "--set",
+                          "motor.enabled=false", "--out", off.str(), "--model", "reduced"})
+                .exit_code,
+            0);
+  const auto coast = runRollerdyn({"plot", off.str()});
+  EXPECT_EQ(coast.exit_code, 0) << coast.err;
+  EXPECT_NE(coast.out.find("motor figures left out: the scene's motor is disabled"), std::string::npos) << coast.out;
 }
 
 TEST(CliPlot, ErrorsAreBadInput) {
