@@ -376,9 +376,12 @@ OptimizeResult runOptimize(const OptimizeOptions& o) {
     // converges to the minimum nearest its start (six carts: 97.4° from the middle of 0:180).
     const int n = int(o.params.size());
     search.method = local;
-    const std::string first = runMethod(search, local, std::vector<double>(o.params.size(), 0.5),
-                                        std::max(1, o.max_evals / 3), 0.25);
-    r.stop_reason = local + " from the middle: " + first;
+    const int first_share = std::max(1, o.max_evals / 3);
+    const std::string first = runMethod(search, local, std::vector<double>(o.params.size(), 0.5), first_share, 0.25);
+    // Its budget is a third of --max-evals: "maximum number of evaluations reached" after 10 of
+    // 30 read as a contradiction in the trial.
+    r.stop_reason = local + " from the middle (its share: " + std::to_string(first_share) + " of the " +
+                    std::to_string(o.max_evals) + " evaluations): " + first;
     std::size_t local_best = 0;
     const bool local_found = bestFeasible(r, &local_best);
     const std::vector<double> x_local = local_found ? r.history[local_best].x : std::vector<double>{};
@@ -434,7 +437,8 @@ OptimizeResult runOptimize(const OptimizeOptions& o) {
                                      10.0 * o.x_tolerance * (o.params[k].upper - o.params[k].lower);
     left = o.max_evals - int(search.requests());
     const bool interrupted = o.interrupt && o.interrupt->load();
-    if (elsewhere && left > 0 && !interrupted) {
+    const bool polish = elsewhere && left > 0 && !interrupted;
+    if (polish) {
       std::vector<double> u;
       for (std::size_t k = 0; k < o.params.size(); ++k)
         u.push_back((r.history[r.best].x[k] - o.params[k].lower) / (o.params[k].upper - o.params[k].lower));
@@ -442,10 +446,13 @@ OptimizeResult runOptimize(const OptimizeOptions& o) {
       r.stop_reason += "; " + local + " from the grid's best: " + runMethod(search, local, u, left, 0.02);
       r.found = bestFeasible(r, &r.best);
     }
-    r.method = local + ", grid, " + local;
+    r.method = local + ", grid" + (polish ? ", " + local : std::string());
+    // Say what happened: the trial read "polished by bobyqa" where no evaluation was left for it.
     r.scope = std::string("global: ") + local + " from the middle of the ranges, a grid over the whole ranges" +
-              (elsewhere ? ", whose best design lay in another basin and was polished by " + local
-                         : " (no better basin found)");
+              (polish      ? ", whose best design lay in another basin and was polished by " + local
+               : elsewhere ? ", whose best design lay in another basin; no evaluations were left to polish it "
+                             "(raise --max-evals), so the optimum is the best grid design"
+                           : " (no better basin found)");
     return r;
   }
   const bool global = r.method == "direct-l" || r.method == "crs2";

@@ -120,6 +120,18 @@ TEST(Optimizer, DefaultFindsTheGlobalOffsetOfSixCartsAndLocalSaysItIsLocal) {
   EXPECT_LT(r.history[r.best].objective, 0.01);
   EXPECT_NE(r.scope.find("global"), std::string::npos) << r.scope;
   for (double v : r.values_handed) EXPECT_TRUE(std::isfinite(v));  // no NaN or inf ever reaches NLopt
+  // The trial's --max-evals 30: the grid used the rest, and the scope said "polished by bobyqa"
+  // with no polishing run. It says what happened: the polish only when evaluations were left.
+  {
+    OptimizeOptions few = o;
+    few.max_evals = 30;
+    const OptimizeResult q = runOptimize(few);
+    ASSERT_TRUE(q.found) << q.stop_reason;
+    const bool polished = q.stop_reason.find("from the grid's best") != std::string::npos;
+    EXPECT_EQ(q.scope.find("polished by") != std::string::npos, polished) << q.scope << " | " << q.stop_reason;
+    EXPECT_NE(q.stop_reason.find("its share: 10 of the 30 evaluations"), std::string::npos) << q.stop_reason;
+    if (!polished) EXPECT_NE(q.scope.find("no evaluations were left to polish it"), std::string::npos) << q.scope;
+  }
 
   o.method = "bobyqa";
   const OptimizeResult local = runOptimize(o);
