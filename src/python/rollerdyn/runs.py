@@ -19,7 +19,9 @@ class RunWarning(UserWarning):
 class ResonanceWarning(RuntimeWarning):
     """The drive's torsional mode is near an order of the crank speed that the cart layout
     excites: the two-mass first estimate (Dyomin (two rotors) eq. (10)) or the modal analysis
-    of the drive about its steady motion; the command line prints the same warning on stderr."""
+    of the drive about its steady motion; the command line prints the same warning on stderr.
+    When the modal analysis reconciles the first estimate's warning, its verdict (the command
+    line's next stderr line, ``result.resonance_verdict``) ends the message."""
 
 
 class RunInterrupted(KeyboardInterrupt):
@@ -206,8 +208,12 @@ class Result:
 def _warn(data, stacklevel):
     for w in data.run_warnings:
         warnings.warn(w, RunWarning, stacklevel=stacklevel)
+    # The first estimate's warning and the modal analysis' verdict on it belong together: the
+    # command line prints the verdict right after the warnings; a notebook sees only the warning,
+    # so the verdict rides in its message (also in ``result.resonance_verdict``).
+    verdict = data.resonance_verdict
     for w in data.resonance_warnings:
-        warnings.warn(w, ResonanceWarning, stacklevel=stacklevel)
+        warnings.warn(f"{w}; {verdict}" if verdict else w, ResonanceWarning, stacklevel=stacklevel)
 
 
 def _run(data, interrupted):
