@@ -202,7 +202,10 @@ std::string sizingText(const json& summary) {
     o << "  slip s = 1 - ω_r/ω0               " << fmt(jsonMember(sl, "min"), "%.4f") << " ... "
       << fmt(jsonMember(sl, "max"), "%.4f") << " (steady window); " << fmt(jsonMember(jsonMember(r, "slip"), "min"), "%.4f") << " ... "
       << fmt(jsonMember(jsonMember(r, "slip"), "max"), "%.4f") << " (whole run)\n";
-    o << "  motor energy per crank revolution " << fmt(jsonMember(m, "energy_per_revolution"), "%.4g", 1e-3) << " kJ\n";
+    const json& e_rev = jsonMember(m, "energy_per_revolution");
+    o << "  motor energy per crank revolution "
+      << (e_rev.is_number() ? fmt(e_rev, "%.4g", 1e-3) + " kJ" : std::string("n/a (the crank does not turn in the window)"))
+      << "\n";
   } else {
     o << "  motor                             n/a (no motor torque in this run)\n";
   }

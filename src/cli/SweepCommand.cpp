@@ -83,7 +83,7 @@ std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done
     std::snprintf(b, sizeof b, "%.4g", v);
     return std::isfinite(v) ? std::string(b) : std::string("n/a");
   };
-  std::snprintf(buf, sizeof buf, "  δ %s  H %s  k_p %s  ΔM %s N·m  %s  %.1f s cpu", f(p.metric("delta")).c_str(),
+  std::snprintf(buf, sizeof buf, "  δ %s  H %s  k_p %s  ΔM %s N·m  %s  %.2g s cpu", f(p.metric("delta")).c_str(),
                 f(p.metric("H")).c_str(), f(p.metric("k_p")).c_str(),
                 f(p.metric("coupling_torque_swing")).c_str(), state.c_str(), p.cpu_seconds);
   s += buf;

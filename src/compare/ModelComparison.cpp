@@ -389,10 +389,11 @@ std::string comparisonText(const ModelComparison& c) {
   {
     char buf[260];
     std::snprintf(buf, sizeof buf,
-                  "phase drift  the multibody crank is %.4g rad (%.3g°) ahead of the reduced one at t = %.4g s (mean "
+                  "phase drift  the multibody crank is %.4g rad (%.3g°) %s the reduced one at t = %.4g s (mean "
                   "speeds differ by %.3g rad/s): it shifts the time series against each other without changing "
                   "their shape\n",
-                  c.phase_drift, c.phase_drift * 180.0 / M_PI, c.t_end, -c.speed_difference);
+                  std::abs(c.phase_drift), std::abs(c.phase_drift) * 180.0 / M_PI,
+                  c.phase_drift >= 0 ? "ahead of" : "behind", c.t_end, -c.speed_difference);
     os << buf;
   }
   os << "row by row at equal times (whole span, start-up and phase drift included; normalised by the largest "

@@ -271,5 +271,9 @@ TEST(CompareRuns, SteadyAnswersAndShapeHeadlineAndPhaseDriftIsSeparated) {
   const std::string text = rollerdyn::comparisonText(c);
   EXPECT_NE(text.find("steady running"), std::string::npos) << text;
   EXPECT_NE(text.find("phase drift"), std::string::npos) << text;
+  // Behind in words, not "-0.1 rad ahead" (the trial's reading of a negative drift).
+  EXPECT_NE(text.find("rad ("), std::string::npos) << text;
+  EXPECT_NE(text.find("behind the reduced one"), std::string::npos) << text;
+  EXPECT_EQ(text.find("crank is -"), std::string::npos) << text;
   EXPECT_LT(text.find("steady running"), text.find("row by row")) << text;  // the headline comes first
 }
