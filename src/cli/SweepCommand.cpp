@@ -16,6 +16,7 @@
 #include "cli/Commands.h"
 #include "cli/UsageError.h"
 #include "report/OutputDir.h"
+#include "scene/Plausibility.h"
 #include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
 #include "studies/Sweep.h"
@@ -92,6 +93,43 @@ std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done
   return s;
 }
 
+// The plausibility warnings of the swept values themselves (an offset swept in radians, a length
+// in millimetres): each value of each parameter on the base scene, one line per parameter naming
+// the values concerned. simulate warns of a single such value; a sweep ran them silently.
+void warnImplausibleValues(const SweepOptions& o) {
+  for (std::size_t k = 0; k < o.params.size(); ++k) {
+    const std::string& key = o.params[k].key;
+    std::vector<std::string> texts = o.params[k].texts;
+    if (!o.designs.empty()) {
+      texts.clear();
+      for (const auto& d : o.designs)
+        if (k < d.size()) texts.push_back(d[k]);
+    }
+    std::vector<std::string> flagged;
+    std::string first;
+    for (const std::string& text : texts) {
+      if (flagged.size() >= 200) break;  // enough to say it
+      std::vector<std::string> overrides = o.base_overrides;
+      overrides.push_back(key + "=" + text);
+      try {
+        for (const std::string& w : plausibilityWarnings(parseSceneFile(o.scene_path, overrides)))
+          if (w.rfind(key, 0) == 0) {
+            if (first.empty()) first = w;
+            flagged.push_back(text);
+            break;
+          }
+      } catch (const std::exception&) {
+        // a value the scene rejects: the run of that point says so
+      }
+    }
+    if (flagged.empty()) continue;
+    std::string list;
+    for (std::size_t i = 0; i < flagged.size() && i < 6; ++i) list += (i ? ", " : "") + flagged[i];
+    if (flagged.size() > 6) list += ", ... (" + std::to_string(flagged.size()) + " values)";
+    std::cerr << "rollerdyn: warning: --param " << key << " " << list << ": " << first << '\n';
+  }
+}
+
 int runSweepCommand(const SweepArgs& a) {
   SweepOptions o;
   o.scene_path = a.scene.scene_path;
@@ -124,6 +162,7 @@ int runSweepCommand(const SweepArgs& a) {
     for (const SweepParameter& p : o.params) out_dir += "_" + p.key;
   }
   if (rank0) prepareOutputDir(out_dir);  // before any point: a bad --out fails now
+  if (rank0) warnImplausibleValues(o);
   std::size_t total = o.designs.size();
   if (o.designs.empty()) {
     total = 1;
@@ -139,7 +178,7 @@ int runSweepCommand(const SweepArgs& a) {
               << "\n"
               << "per point: δ coefficient of unevenness, H coefficient of dynamics, k_p generalised "
                  "coefficient (Loveikin and Pochka (2007) eq. (12)-(14)), ΔM coupling torque swing, "
-                 "then the motion (turning, rocking, stalled)\n";
+                 "then the motion (turning, starting, rocking, stalled, coasting, at_rest)\n";
   o.on_point = [&o](const SweepPoint& p, std::size_t done, std::size_t n) {
     std::cout << lineFor(o, p, done, n) << std::endl;
   };

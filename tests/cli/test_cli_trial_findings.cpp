@@ -136,5 +136,20 @@ TEST(CliTrialFindings, ValidateRunsFromAnyFolder) {
   EXPECT_TRUE(fs::exists(cwd.path() / "v" / "report.md")) << r.out << r.err;
 }
 
+// simulate warned of crank.offset_deg = 1.0472 (60° in radians); a sweep over 0:3.1416:0.5236 ran
+// silently. The swept values get the same warning, once per parameter, naming the values.
+TEST(CliTrialFindings, ASweepWarnsOfValuesTypedInTheWrongUnit) {
+  TempDir out("sweep-units");
+  const auto r = runRollerdyn({"sweep", model("balanced-4cart.yaml"), "--param", "crank.offset_deg", "--values",
+                               "0.5236,1.0472,60", "--model", "reduced", "--set", "simulation.t_end=2", "--out",
+                               out.str()},
+                              120);
+  EXPECT_NE(r.err.find("warning: --param crank.offset_deg 0.5236, 1.0472: crank.offset_deg = 0.5236 is read as "
+                       "0.5236°"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find(", 60:"), std::string::npos) << r.err;  // 60 is a plausible offset
+}
+
 }  // namespace
 }  // namespace rollerdyn
