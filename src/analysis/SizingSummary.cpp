@@ -304,7 +304,7 @@ std::string sizingText(const json& summary) {
     return o.str();
   }
   if (jsonMember(s, "joints_basis").is_string()) o << "  joint loads from the " << str(jsonMember(s, "joints_basis")) << "\n";
-  o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
+  o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h or rev]\n";
   const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearing"};
   for (std::size_t k = 0; k < 5; ++k) {
     const json& x = jsonMember(jsonMember(joints, kJointKinds[k]), "worst");

@@ -129,7 +129,7 @@ std::string sizingSectionHtml(const json& s) {
        "n the joint's rotation speed (ISO 281 style); L10 = (C/P)³·10⁶ revolutions, in hours at the mean "
        "speed, C the dynamic load rating from sizing.bearing_rating.*.</p>\n"
     << "<table>\n<tr><th>joint</th><th>cart</th><th>mean [kN]</th><th>amplitude [kN]</th><th>peak [kN]</th>"
-       "<th>P [kN]</th><th>C [kN]</th><th>L10 [h]</th><th>speed weighting</th></tr>\n";
+       "<th>P [kN]</th><th>C [kN]</th><th>L10 [h, or rev where the joint has no rotation speed]</th><th>speed weighting</th></tr>\n";
   const json& joints = jsonMember(z, "joints");
   const char* kinds[] = {"guide_roller_front", "guide_roller_rear", "rod_end", "crank_pin", "main_bearing"};
   const char* names[] = {"guide roller, front", "guide roller, rear", "rod end (cart hinge)", "crank pin (rod big end)",
