@@ -49,8 +49,9 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   content.command = "rollerdyn report " + args.scene_path;
   for (const std::string& o : args.overrides) content.command += " --set " + o;
   content.command += " --out " + out_dir;
+  FigureSet mf;
   {  // torsional modes and the run's order spectrum: figures and a section of their own
-    FigureSet mf = modes::drawModesFigures(modal.report, (fs::path(out_dir) / "figures").string());
+    mf = modes::drawModesFigures(modal.report, (fs::path(out_dir) / "figures").string());
     const FigureSet sp = modes::drawSpectrumFigures(modal.spectrum, (fs::path(out_dir) / "figures").string());
     mf.figures.insert(mf.figures.end(), sp.figures.begin(), sp.figures.end());
     content.extra_sections_html.push_back(modes::modesHtmlSection(modal.report, mf, &modal.spectrum));
@@ -61,7 +62,10 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   const std::string page = (fs::path(out_dir) / "report.html").string();
   writeFileAtomic(page, renderReportHtml(content));
 
-  std::cout << summaryText(summary) << figureSetText(figures, (fs::path(out_dir) / "figures").string())
+  // Both sets, so the count printed is the folder's (the trial read "16 figures" beside 23).
+  FigureSet all = figures;
+  all.figures.insert(all.figures.end(), mf.figures.begin(), mf.figures.end());
+  std::cout << summaryText(summary) << figureSetText(all, (fs::path(out_dir) / "figures").string())
             << "report: " << page << '\n';
   if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
   return runExitCode(run, summary);

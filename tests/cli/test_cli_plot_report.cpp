@@ -139,6 +139,10 @@ TEST(CliReport, WritesOneSelfContainedPage) {
     EXPECT_TRUE(html.find(std::string("<h2>") + section) != std::string::npos ||
                 html.find(std::string("<h3>") + section) != std::string::npos)
         << "missing section " << section;
+  // The count printed is the folder's: the trial read "16 figures" beside 23 (the modes' left out).
+  std::size_t pngs = 0;
+  for (const auto& f : fs::directory_iterator(out.path() / "figures")) pngs += f.path().extension() == ".png";
+  EXPECT_NE(r.out.find(std::to_string(pngs) + " figures in "), std::string::npos) << pngs << "\n" << r.out;
   // Every figure embedded, none linked: the run's and those of the torsional-modes section.
   size_t embedded = 0, modes_figures = 0;
   for (size_t at = 0; (at = html.find("src=\"data:image/png;base64,", at)) != std::string::npos; ++at) ++embedded;
