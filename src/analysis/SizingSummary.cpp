@@ -218,13 +218,14 @@ std::string sizingText(const json& summary) {
       << fmt(jsonMember(f, "flywheel_crankshaft"), "%.4g") << " kg·m² on the crankshaft or "
       << fmt(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n";
     if (jsonMember(f, "inertia_required").is_number())
-      o << "                                    (excess work ΔA " << fmt(jsonMember(f, "excess_work"), "%.4g")
-        << " J of a revolution at constant speed: J* = ΔA/(δ*·ω̄²) = " << fmt(jsonMember(f, "inertia_required"), "%.4g")
-        << " kg·m² at the crank, less the present J;\n"
-        << "                                    motor slip and coupling elasticity neglected (on the papers' machines the\n"
-        << "                                    flywheel it proposes gives δ = 0.86 ... 1.16 δ*); the run's own δ·J held constant\n"
-        << "                                    would give " << fmt(jsonMember(f, "added_inertia_energy_method"), "%.4g")
-        << " kg·m², which falls short where δ is large)\n";
+      o << "                                    (the larger of two estimates to add: by the excess work ΔA "
+        << fmt(jsonMember(f, "excess_work"), "%.4g") << " J of a revolution\n"
+        << "                                    at constant speed, J* = ΔA/(δ*·ω̄²) = " << fmt(jsonMember(f, "inertia_required"), "%.4g")
+        << " kg·m² at the crank less the present J " << fmt(jsonMember(f, "inertia_effective"), "%.4g") << ";\n"
+        << "                                    by the run's own δ·J held constant, "
+        << fmt(jsonMember(f, "added_inertia_energy_method"), "%.4g") << " kg·m² (short where the run's δ is large);\n"
+        << "                                    motor slip and coupling elasticity neglected: on the papers' machines the\n"
+        << "                                    flywheel proposed gives δ = 0.86 ... 1.16 δ*)\n";
     else
       o << "                                    (energy method, J·δ constant: a first estimate; it falls short where the\n"
         << "                                    run's δ is large, the motor's slip and the carts' inertia varying over a turn)\n";
@@ -267,8 +268,11 @@ std::string sizingText(const json& summary) {
                              "is a separate run)"
                            : "")
         << ":\n      " << cmd << "\n";
-    } else if (added.is_number()) {
-      o << "                                    this run already meets δ* (no flywheel needs adding)\n";
+    } else if (added.is_number() && jsonMember(f, "delta").is_number() &&
+               jsonMember(f, "delta").get<double>() <= jsonMember(f, "target_delta").get<double>()) {
+      // Met only by the run's measured δ, never by an estimate.
+      o << "                                    this run already meets δ* (δ = " << fmt(jsonMember(f, "delta"), "%.4g")
+        << " ≤ δ*: no flywheel needs adding)\n";
     }
   } else {
     o << "                                    target δ* not given (sizing.target_delta)\n";

@@ -289,9 +289,9 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
     double added = added_energy;
     if (dA.is_number() && target > 0) {
       const double J_req = dA.get<double>() / (target * w_mean * w_mean);
-      added = std::max(0.0, J_req - J);
+      added = std::max(std::max(0.0, J_req - J), added_energy);
       k.add("J* = ΔA/(δ*·ω̄²)", J_req, at(f, {"inertia_required"}));
-      k.add("ΔJ = J* - J", added, at(f, {"added_inertia_crankshaft"}), J_req);
+      k.add("ΔJ = max(J* - J, J·(δ/δ* - 1))", added, at(f, {"added_inertia_crankshaft"}), J_req);
     } else {
       k.add("ΔJ (no ΔA: energy method)", added_energy, at(f, {"added_inertia_crankshaft"}), J * (*whi / w_mean) / target);
     }
