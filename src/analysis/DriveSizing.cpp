@@ -68,8 +68,21 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   MotorSizing m;
   const double u = sc.reducer.ratio, eta = sc.reducer.efficiency, w0 = sc.motor.omega_sync;
   const SizingInputs& z = sc.sizing;
-  const double s_n = z.motor_omega_nominal > 0 ? 1.0 - z.motor_omega_nominal / w0 : kNaN;
+  // The checks read the motor the run simulated: a catalogue law (circuit, Park machine) has its
+  // own breakdown torque (the largest of its steady curve) and its catalogue's rated point; the
+  // Kloss keys belong to the Kloss laws (the trial's circuit run with motor.breakdown_torque = 700
+  // was checked against 700 N·m while its motor broke down at 517).
+  const MotorCatalogue& cat = sc.induction.catalogue;
+  const bool catalogue_law = (sc.induction.model == MotorModel::Circuit || sc.induction.model == MotorModel::Park);
+  const double omega_nominal =
+      z.motor_omega_nominal > 0 ? z.motor_omega_nominal : catalogue_law && cat.omega_nominal > 0 ? cat.omega_nominal : 0.0;
+  const double s_n = omega_nominal > 0 ? 1.0 - omega_nominal / w0 : kNaN;
   m.breakdown_torque = sc.motor.breakdown_torque;
+  if (catalogue_law) try {
+      m.breakdown_torque = largestSteadyTorque(*sharedMotorLaw(sc), SupplyState{});
+    } catch (const std::exception&) {
+      // no law for this scene: the Kloss key stands
+    }
   m.nominal_torque = nominalMotorTorque(sc, &m.nominal_source);
   m.line_power_basis =
       z.motor_efficiency > 0 && s_n > 0
@@ -375,6 +388,10 @@ double nominalMotorTorque(const Scene& sc, std::string* source) {
   } else if (z.motor_nominal_power > 0 && z.motor_omega_nominal > 0) {
     M_n = z.motor_nominal_power / z.motor_omega_nominal;
     src = "P_n/ω_n (sizing.motor_nominal_power, motor.omega_nominal)";
+  } else if ((sc.induction.model == MotorModel::Circuit || sc.induction.model == MotorModel::Park) &&
+             sc.induction.catalogue.given() && sc.induction.catalogue.omega_nominal > 0) {
+    M_n = sc.induction.catalogue.nominalTorque();
+    src = "P_n/ω_n of the motor's catalogue (motor.catalogue.power, motor.catalogue.omega_nominal)";
   } else if (z.motor_overload_ratio > 1) {
     M_n = sc.motor.breakdown_torque / z.motor_overload_ratio;
     src = "M_kr/λ (motor.breakdown_torque, motor.overload_ratio)";

@@ -213,6 +213,26 @@ TEST(StartUpAnswers, AParkPeakAboveTheBreakdownTorqueIsNamedAsTheSwitchingTransi
             std::string::npos) << text;
 }
 
+// The sizing checks read the motor the run simulated: the second trial's circuit-law run with a
+// mistyped motor.breakdown_torque = 700 was checked against 700 N·m (and M_n = 700/λ) while its
+// motor, fitted to the catalogue, broke down at 517 N·m; its heating and breakdown verdicts moved
+// with a key the law ignores.
+TEST(StartUpAnswers, CatalogueLawsAreSizedWithTheirOwnBreakdownAndRatedTorque) {
+  const std::vector<std::string> base = {"motor.model=circuit", "initial.crank_speed=10.4", "simulation.t_end=4"};
+  std::vector<std::string> typo = base;
+  typo.push_back("motor.breakdown_torque=700");
+  const nlohmann::json a = reducedSummary(defaultScene(base)), b = reducedSummary(defaultScene(typo));
+  const Scene s = defaultScene(base);
+  const double M_kr = largestSteadyTorque(*makeMotorLaw(s), SupplyState{});
+  for (const nlohmann::json* j : {&a, &b}) {
+    const nlohmann::json& m = (*j)["sizing"]["motor"];
+    EXPECT_NEAR(m["breakdown_torque"].get<double>(), M_kr, 1e-9 * M_kr) << m.dump();
+    EXPECT_NEAR(m["nominal_torque"].get<double>(), s.induction.catalogue.nominalTorque(), 1e-9);
+  }
+  EXPECT_NEAR(M_kr, 517.14, 0.03 * 517.14);  // the catalogue's M_kr = 2.4·M_n, fitted within 3 %
+  EXPECT_EQ(a["sizing"]["checks"].dump(), b["sizing"]["checks"].dump());  // the mistyped key changes nothing
+}
+
 // The start ends where the crank speed settles, not where the steady window (the run's last
 // revolutions) begins: in the trial its peaks, its rotor loss and the starts per hour moved with
 // simulation.t_end. The same drive run for 10 s and for 20 s has the same start.
