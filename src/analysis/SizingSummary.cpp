@@ -164,6 +164,15 @@ const std::vector<std::pair<std::string, std::string>>& sizingMetricPaths() {
   return p;
 }
 
+// What the whole run holds beyond the steady window, in words: a start from rest, or (a run that
+// begins at speed, or a machine without motor) no start at all.
+static std::string wholeRunWords(const json& summary) {
+  const json& su = jsonMember(summary, "start_up");
+  if (su.is_object() && jsonMember(su, "from_rest").is_boolean() && jsonMember(su, "from_rest").get<bool>())
+    return "start-up included";
+  return su.is_object() ? "begins at speed: no start-up" : "no motor start in the run";
+}
+
 std::string sizingText(const json& summary) {
   const json& s = jsonMember(summary, "sizing");
   if (!s.is_object()) return "";
@@ -175,7 +184,7 @@ std::string sizingText(const json& summary) {
   o << "drive sizing over the steady window t = " << fmt(jsonMember(w, "t_begin"), "%.4g") << " ... "
     << fmt(jsonMember(w, "t_end"), "%.4g") << " s (" << fmt(jsonMember(w, "revolutions"), "%.3g") << " crank revolutions)"
     << " and over the whole run t = " << fmt(jsonMember(wr, "t_begin"), "%.4g") << " ... " << fmt(jsonMember(wr, "t_end"), "%.4g")
-    << " s (start-up included)\n"
+    << " s (" << wholeRunWords(summary) << ")\n"
     << "  M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω_r rotor speed, ω0 synchronous speed\n";
   const json& m = jsonMember(s, "motor");
   if (m.is_object()) {

@@ -370,12 +370,20 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
     r.verdict = "the crank does not reach 95 % of its steady mean speed after switch-on within the run";
   }
   r.from_rest = !(r.t_on <= 0 && sc.initial.crank_speed != 0);
-  if (!r.from_rest)
-    r.notes.insert(r.notes.begin(),
-                   "The run begins with the machine already turning (initial.crank_speed = " +
-                       fmt("%.4g", sc.initial.crank_speed) +
-                       " rad/s) and the motor running: these answers describe no start from rest (set "
-                       "initial.crank_speed: 0 for one).");
+  if (!r.from_rest) {
+    // No start in this run: a run-up "0.005 s after switch-on", start peaks and a start's rotor
+    // loss of a machine that began at speed read as answers about a start (the second trial).
+    // What can be answered stays: the motor's torques against the loads, and the stop.
+    r.verdict = "no start from rest in this run: it begins with the machine already turning (initial.crank_speed = " +
+                fmt("%.4g", sc.initial.crank_speed) + " rad/s) and the motor running; set initial.crank_speed: 0 for "
+                "the start-up answers";
+    r.starts = false;
+    r.run_up_time = kNaN;
+    r.start_end = r.t_on;
+    r.motor_torque_peak = r.motor_torque_min = r.coupling_torque_peak = kNaN;
+    for (StartJointPeak& p : r.joints) p.start_peak = p.ratio = kNaN;
+    r.current_peak = r.current_rms = r.current_i2t = r.rotor_energy_loss = kNaN;
+  }
   addLawNotes(sc, *law, r);
   return r;
 }

@@ -30,6 +30,16 @@ const char* jointWords(const std::string& joint) {
   return "?";
 }
 
+// After a switch-off: the stopping time, or that the machine had not stopped (not "n/a s").
+std::string stopText(const json& stop) {
+  if (!stop.is_object()) return "";
+  const json& T = jsonMember(stop, "stopping_time");
+  return "  switch-off at " + f(jsonMember(stop, "t_off"), "%.4g") + " s: " +
+         (T.is_number() ? "stopping time " + f(T, "%.3g") + " s" : std::string("not at rest when the run ends")) +
+         ", crank run-out " + f(jsonMember(stop, "run_out_revolutions"), "%.3g") + " rev, carts' run-out " +
+         f(jsonMember(stop, "run_out_cart_path"), "%.3g") + " m" + (T.is_number() ? "" : " so far") + "\n";
+}
+
 }  // namespace
 
 json startUpJson(const StartUp& s) {
@@ -99,6 +109,13 @@ std::string startUpText(const json& summary) {
     << f(jsonMember(s, "largest_torque_crank"), "%.4g") << ") against a load of " << f(jsonMember(s, "load_torque_start"), "%.4g")
     << " N·m at the start angle, " << f(jsonMember(s, "load_torque_mean"), "%.4g") << " N·m mean\n";
   const json& st = jsonMember(s, "steady");
+  if (jsonMember(s, "from_rest").is_boolean() && !jsonMember(s, "from_rest").get<bool>()) {
+    // No start in the run: only the stop, the notes and the legend.
+    o << stopText(jsonMember(s, "stop"));
+    for (const json& n : jsonMember(s, "notes")) o << "  note: " << n.get<std::string>() << "\n";
+    o << "  (torques at the crank axis; M motor torque at the rotor, u reducer ratio, η reducer efficiency)\n";
+    return o.str();
+  }
   const bool starts = jsonMember(s, "starts").is_boolean() && jsonMember(s, "starts").get<bool>();
   const bool still = jsonMember(s, "still_starting").is_boolean() && jsonMember(s, "still_starting").get<bool>();
   const bool reached = jsonMember(st, "reached").is_boolean() && jsonMember(st, "reached").get<bool>();
@@ -142,11 +159,7 @@ std::string startUpText(const json& summary) {
       << f(jsonMember(I, "i2t"), "%.4g") << " A²·s\n";
   o << "  rotor energy loss" << (starts ? " of the start " : in_start + " ") << f(jsonMember(s, "rotor_energy_loss"), "%.4g")
     << " J (slip power ∫M·(ω0·f/f_n - ω_r)dt)\n";
-  const json& stop = jsonMember(s, "stop");
-  if (stop.is_object())
-    o << "  switch-off at " << f(jsonMember(stop, "t_off"), "%.4g") << " s: stopping time " << f(jsonMember(stop, "stopping_time"), "%.3g")
-      << " s, crank run-out " << f(jsonMember(stop, "run_out_revolutions"), "%.3g") << " rev, carts' run-out "
-      << f(jsonMember(stop, "run_out_cart_path"), "%.3g") << " m\n";
+  o << stopText(jsonMember(s, "stop"));
   for (const json& n : jsonMember(s, "notes")) o << "  note: " << n.get<std::string>() << "\n";
   o << "  (torques at the crank axis; M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω0 "
        "synchronous speed, f/f_n supply frequency ratio)\n";

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "analysis/StartUp.h"
+#include "analysis/SizingSummary.h"
 #include "analysis/StartUpSummary.h"
 #include "analysis/Summary.h"
 #include "motor/MotorLawFactory.h"
@@ -231,6 +232,27 @@ TEST(StartUpAnswers, CatalogueLawsAreSizedWithTheirOwnBreakdownAndRatedTorque) {
   }
   EXPECT_NEAR(M_kr, 517.14, 0.03 * 517.14);  // the catalogue's M_kr = 2.4·M_n, fitted within 3 %
   EXPECT_EQ(a["sizing"]["checks"].dump(), b["sizing"]["checks"].dump());  // the mistyped key changes nothing
+}
+
+// A run that begins at speed holds no start: the second trial read "the drive starts ... 0.005 s
+// after switch-on", start peaks and a start's rotor loss of 1.968e+04 J beside "the start's heat is
+// not known". No run-up, no start peaks, no start loss; the stop is still answered, and a stop not
+// reached within the run says so instead of "stopping time n/a s".
+TEST(StartUpAnswers, ARunThatBeginsAtSpeedHasNoStartAnswers) {
+  const nlohmann::json j = reducedSummary(
+      defaultScene({"initial.crank_speed=10.4", "simulation.t_end=6", "motor.stop.t_off=5"}));
+  const nlohmann::json& su = j["start_up"];
+  ASSERT_TRUE(su.is_object());
+  EXPECT_FALSE(su["from_rest"].get<bool>());
+  EXPECT_FALSE(su["starts"].get<bool>());
+  for (const char* k : {"run_up_time", "rotor_energy_loss"}) EXPECT_TRUE(su[k].is_null()) << k;
+  EXPECT_TRUE(su["coupling_torque"]["peak"].is_null());
+  EXPECT_NE(su["verdict"].get<std::string>().find("no start from rest in this run"), std::string::npos);
+  const std::string text = startUpText(j);
+  EXPECT_EQ(text.find("run-up"), std::string::npos) << text;
+  EXPECT_EQ(text.find("rotor energy loss"), std::string::npos) << text;
+  EXPECT_NE(text.find("switch-off at 5 s: not at rest when the run ends"), std::string::npos) << text;
+  EXPECT_NE(sizingText(j).find("(begins at speed: no start-up)"), std::string::npos);
 }
 
 // The start ends where the crank speed settles, not where the steady window (the run's last
