@@ -382,6 +382,19 @@ Scene readScene(const SceneDocument& doc) {
     if (!in.has("carts.geometry.b")) doc.failMissing("carts.geometry.b", want);
     if (s.carts.geometry.b <= 0.0) doc.fail("carts.geometry.b", want, formatNumber(s.carts.geometry.b));
   }
+  // Fewer than 10 output rows per crank revolution leave no metric worth printing: δ, the peaks,
+  // the steady state and the run-up are read from the rows (the second trial's 0.5 s step, 1.2
+  // rows per revolution, printed a run-up "to 95 % of 11.19 rad/s", above the synchronous crank
+  // speed of 10.69). Between 10 and 50 rows a warning says what it costs (Plausibility.h).
+  if (s.motor.enabled && s.motor.omega_sync > 0 && s.reducer.ratio > 0) {
+    const double t_rev = 2.0 * M_PI * s.reducer.ratio / s.motor.omega_sync;
+    if (s.simulation.output_step > t_rev / 10.0)
+      doc.fail("simulation.output_step",
+               "at most " + formatNumber(t_rev / 10.0) + " s: 10 output rows per crank revolution (" +
+                   formatNumber(t_rev) + " s at the synchronous crank speed ω0/u), better 50 or more (" +
+                   formatNumber(t_rev / 50.0) + " s), since δ, the peaks and the steady state are read from the rows",
+               formatNumber(s.simulation.output_step));
+  }
   return s;
 }
 

@@ -78,6 +78,15 @@ TEST(Plausibility, SparseRowsACatalogueMismatchGravityAndAPercentTargetAreNamed)
   ASSERT_EQ(w.size(), 2u);
   EXPECT_NE(w[0].find("loads.gravity = 981"), std::string::npos) << w[0];
   EXPECT_NE(w[1].find("write 0.05"), std::string::npos) << w[1];
+  // The rotor speed typed for the crank's.
+  s.loads.gravity = 9.81;
+  s.sizing.target_delta = 0.05;
+  s.initial.crank_speed = 102;
+  w = plausibilityWarnings(s);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("initial.crank_speed = 102 rad/s is"), std::string::npos) << w[0];
+  s.initial.crank_speed = 10.4;
+  EXPECT_TRUE(plausibilityWarnings(s).empty());
 }
 
 }  // namespace

@@ -236,6 +236,11 @@ TEST(SceneRejects, TimeSpanAndOutputStep) {
                     "got 2"});
   expectSceneError(replaced("  t_end: 1.0", "  t_end: 1.0\n  accuracy: 1"),
                    {"test.yaml:4: simulation.accuracy: expected a number in (0, 1), got 1"});
+  // Fewer than 10 output rows per crank revolution: the second trial's 0.5 s step printed a
+  // run-up to a mean speed above the synchronous one. The limit is T/10, T = 2π·u/ω0.
+  expectSceneError(replaced("  t_end: 1.0", "  t_end: 1.0\n  output_step: 0.5"),
+                   {"test.yaml:4: simulation.output_step: expected at most", "10 output rows per crank revolution",
+                    "got 0.5"});
 }
 
 TEST(SceneRejects, FrictionCoefficientRange) {
