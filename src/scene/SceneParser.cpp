@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -388,11 +389,16 @@ Scene readScene(const SceneDocument& doc) {
   // speed of 10.69). Between 10 and 50 rows a warning says what it costs (Plausibility.h).
   if (s.motor.enabled && s.motor.omega_sync > 0 && s.reducer.ratio > 0) {
     const double t_rev = 2.0 * M_PI * s.reducer.ratio / s.motor.omega_sync;
+    auto g3 = [](double v) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.3g", v);
+      return std::string(b);
+    };
     if (s.simulation.output_step > t_rev / 10.0)
       doc.fail("simulation.output_step",
-               "at most " + formatNumber(t_rev / 10.0) + " s: 10 output rows per crank revolution (" +
-                   formatNumber(t_rev) + " s at the synchronous crank speed ω0/u), better 50 or more (" +
-                   formatNumber(t_rev / 50.0) + " s), since δ, the peaks and the steady state are read from the rows",
+               "at most " + g3(t_rev / 10.0) + " s: 10 output rows per crank revolution (" + g3(t_rev) +
+                   " s at the synchronous crank speed ω0/u), better 50 or more (" + g3(t_rev / 50.0) +
+                   " s), since δ, the peaks and the steady state are read from the rows",
                formatNumber(s.simulation.output_step));
   }
   return s;
