@@ -77,9 +77,22 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   const double omega_nominal =
       z.motor_omega_nominal > 0 ? z.motor_omega_nominal : catalogue_law && cat.omega_nominal > 0 ? cat.omega_nominal : 0.0;
   const double s_n = omega_nominal > 0 ? 1.0 - omega_nominal / w0 : kNaN;
-  m.breakdown_torque = sc.motor.breakdown_torque;
+  m.breakdown_torque = m.breakdown_torque_generating = sc.motor.breakdown_torque;
   if (catalogue_law) try {
-      m.breakdown_torque = largestSteadyTorque(*sharedMotorLaw(sc), SupplyState{});
+      const std::shared_ptr<const MotorLaw> law = sharedMotorLaw(sc);
+      m.breakdown_torque = largestSteadyTorque(*law, SupplyState{});
+      // Generating: the braking torque's first extremum above synchronous speed, the fitted
+      // law's pull-out torque of the generator branch. The catalogue gives none, and a circuit
+      // fitted to the motoring points extrapolates it (4.6 kN·m against 517 N·m motoring for
+      // 4A200M6U3: its stator resistance carries all the losses), so the check keeps the
+      // motoring M_kr for braking too (conservative) and only reports this figure.
+      double lowest = 0;
+      for (int i = 1; i <= 2000; ++i) {
+        const double M = law->steadyTorque(SupplyState{}, w0 * (1.0 + 5e-4 * i));
+        if (M > lowest) break;  // past the extremum
+        lowest = M;
+      }
+      m.breakdown_torque_generating = -lowest;
     } catch (const std::exception&) {
       // no law for this scene: the Kloss key stands
     }
@@ -123,7 +136,16 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   m.torque_crank_rms = mc.rms;
   m.torque_crank_peak = mc.peak;
   m.rms_over_nominal = ms.rms / m.nominal_torque;
-  m.peak_over_breakdown = ms.peak / m.breakdown_torque;
+  // Motoring and braking peaks against the breakdown torque of each side: the second trial's
+  // 639 N·m braking peak was read against the motoring M_kr (517 N·m) of a machine whose braking
+  // breakdown torque is larger.
+  m.torque_motoring_peak = m.torque_generating_peak = 0;
+  for (std::size_t i = b; i < e && i < M.size(); ++i)
+    if (std::isfinite(M[i])) {
+      m.torque_motoring_peak = std::max(m.torque_motoring_peak, M[i]);
+      m.torque_generating_peak = std::max(m.torque_generating_peak, -M[i]);
+    }
+  m.peak_over_breakdown = e > b ? std::max(m.torque_motoring_peak, m.torque_generating_peak) / m.breakdown_torque : kNaN;
   m.power_shaft_mean = mp.mean;
   m.power_shaft_peak = mp.max;
   m.power_line_mean = ml.mean;
@@ -517,8 +539,15 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
                   "peak |M| / breakdown torque M_kr over the steady window, < 0.9025 (M_kr at 95 % supply voltage, "
                   "IEC 60034-1 zone A; a start passes M_kr by design)",
                   m.peak_over_breakdown, verdictOf(m.peak_over_breakdown / limit, true), kSteady, ""};
-    k.reason = "peak " + fmt3(m.torque_shaft_peak) + " N·m in the steady window; whole run " +
-               fmt3(m.whole_run.torque_shaft_peak) + " N·m";
+    k.reason = "steady window: motoring peak " + fmt3(m.torque_motoring_peak) + " N·m, braking (generating) peak " +
+               fmt3(m.torque_generating_peak) + " N·m, the larger against M_kr " + fmt3(m.breakdown_torque) + " N·m";
+    if (m.torque_generating_peak > m.torque_motoring_peak)
+      k.reason += " (the load drives the motor as a generator there; the catalogue gives no generating breakdown "
+                  "torque, so the motoring one is used, on the safe side" +
+                  (m.breakdown_torque_generating != m.breakdown_torque
+                       ? "; the fitted law's own, an extrapolation, is " + fmt3(m.breakdown_torque_generating) + " N·m)"
+                       : std::string(")"));
+    k.reason += "; whole run peak |M| " + fmt3(m.whole_run.torque_shaft_peak) + " N·m";
     if (starting) {
       k.verdict = "not applicable";
       k.reason = too_short;

@@ -76,8 +76,11 @@ struct MotorSizing {
   double nominal_torque = 0;       // M_n at the rotor [N·m]
   std::string nominal_source;      // where M_n comes from (scene key or the Kloss data)
   double breakdown_torque = 0;     // M_kr at the rotor [N·m]
+  double breakdown_torque_generating = 0;  // the fitted law's braking pull-out torque above synchronous
+                                           // speed (Kloss: M_kr, symmetric); reported, not checked [N·m]
   double rms_over_nominal = 0;     // thermal check: RMS torque / M_n [-], passes when ≤ 1
-  double peak_over_breakdown = 0;  // peak |M| / M_kr [-], passes when < 1
+  double torque_motoring_peak = 0, torque_generating_peak = 0;  // max M and max -M in the window (≥ 0) [N·m]
+  double peak_over_breakdown = 0;  // max(motoring peak, braking peak) / M_kr [-], passes when < 0.9025
   double power_shaft_mean = 0, power_shaft_peak = 0;  // M·ω_r: mean and max [W]
   double power_line_mean = 0, power_line_peak = 0;    // drawn from the line [W]
   std::string line_power_basis;    // the efficiency assumption behind the line power

@@ -234,6 +234,26 @@ TEST(StartUpAnswers, CatalogueLawsAreSizedWithTheirOwnBreakdownAndRatedTorque) {
   EXPECT_EQ(a["sizing"]["checks"].dump(), b["sizing"]["checks"].dump());  // the mistyped key changes nothing
 }
 
+// The second trial's six carts at 90° (circuit law): "motor_breakdown 1.235 FAIL ... peak 639 N·m"
+// where the rotor torque ran -639 ... +474 N·m: the peak was braking, and nothing said so. The check
+// names both peaks and, where the braking one decides, that the load drives the motor as a generator.
+TEST(StartUpAnswers, ABrakingPeakIsNamedAsSuchInTheBreakdownCheck) {
+  const nlohmann::json j = reducedSummary(defaultScene({"carts.count=6", "crank.offset_deg=90", "motor.model=circuit",
+                                                         "initial.crank_speed=10.4", "simulation.t_end=10"}));
+  const nlohmann::json& m = j["sizing"]["motor"];
+  const double up = m["torque_motoring_peak"], down = m["torque_generating_peak"], M_kr = m["breakdown_torque"];
+  ASSERT_GT(down, up);
+  EXPECT_NEAR(m["peak_over_breakdown"].get<double>(), down / M_kr, 1e-12);
+  int found = 0;
+  for (const auto& c : j["sizing"]["checks"])
+    if (c["check"] == "motor_breakdown") {
+      ++found;
+      EXPECT_NE(c["reason"].get<std::string>().find("the load drives the motor as a generator"), std::string::npos)
+          << c["reason"];
+    }
+  EXPECT_EQ(found, 1);
+}
+
 // A run that begins at speed holds no start: the second trial read "the drive starts ... 0.005 s
 // after switch-on", start peaks and a start's rotor loss of 1.968e+04 J beside "the start's heat is
 // not known". No run-up, no start peaks, no start loss; the stop is still answered, and a stop not
