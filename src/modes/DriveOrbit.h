@@ -105,7 +105,9 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
 // Throws std::invalid_argument when ω0' would not be positive.
 Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_now);
 
-// Classifies and judges multipliers of a drive's monodromy (elastic: states (φ̇2, ψ, ψ̇)).
+// Classifies and judges multipliers of a drive's monodromy (elastic: states (φ̇2, ψ, ψ̇)). Elastic:
+// a complex-conjugate pair is the coupling's (torsional) oscillation; with all three real, the
+// torsional ones are those whose twist rate exceeds their crank-speed change.
 std::vector<ClassifiedMultiplier> classifyMultipliers(const std::vector<FloquetMultiplier>& m, bool elastic);
 FloquetVerdict judge(const std::vector<ClassifiedMultiplier>& m);
 

@@ -22,7 +22,7 @@ SteadyMotion orbitFrom(const Scene& scene, double phi0, int samples) {
   p.phi = phi0;
   p.omega = g.ok ? g.omega : 1.0;
   p.twist = g.twist;
-  o.reference_frequency = frozenModes(*drive, s, p).torsional_frequency();
+  o.reference_frequency = frozenModes(*drive, s, p).torsional_damped_frequency();
   return steadyMotion(*drive, s, o);
 }
 

@@ -14,13 +14,14 @@ namespace {
 ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::vector<DrivePoint>& points) {
   ModelFrozenModes m;
   m.model = drive.name();
-  std::vector<double> p, z, em, es, ec;
+  std::vector<double> p, z, pd, em, es, ec;
   for (const DrivePoint& q : points) {
     FrozenAngle f = frozenModes(drive, scene, q);
     for (const FrozenMode& mode : f.modes) {
       if (mode.torsional) {
         p.push_back(mode.frequency);
         z.push_back(mode.damping_ratio);
+        pd.push_back(mode.damped_frequency);
         em.push_back(mode.energy_motor_side);
         es.push_back(mode.energy_shaft_rods);
         ec.push_back(mode.energy_carts);
@@ -33,6 +34,7 @@ ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::v
   }
   m.torsional = bandOf(p);
   m.torsional_damping = bandOf(z);
+  m.torsional_damped = bandOf(pd);
   m.energy_motor_side = bandOf(em).mean;
   m.energy_shaft_rods = bandOf(es).mean;
   m.energy_carts = bandOf(ec).mean;
@@ -75,7 +77,7 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
     const SteadyGuess g = steadyGuess(scene);
     p0.omega = g.ok ? g.omega : std::max(std::abs(scene.initial.crank_speed), 1.0);
     p0.twist = g.twist;
-    so.reference_frequency = r.elastic ? frozenModes(*reduced, scene, p0).torsional_frequency() : 0.0;
+    so.reference_frequency = r.elastic ? frozenModes(*reduced, scene, p0).torsional_damped_frequency() : 0.0;
   }
   r.steady = steadyMotion(*reduced, scene, so);
   std::vector<DrivePoint> points = r.steady.samples;
@@ -94,9 +96,15 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
 
   // 2. Frozen-angle modes, both models.
   r.frozen.push_back(frozenAlong(*reduced, scene, points));
+  // The Floquet frequency is known only modulo 2π/T: its branch is the one nearest the frozen-angle
+  // mode's damped frequency Im λ over the revolution (the undamped √λ of M⁻¹K lies branches away
+  // when the damping is heavy: six carts at k = 2000 N·m·s/rad, ζ = 0.54, have √λ ≈ 65 rad/s and
+  // Im λ ≈ 32.7 rad/s with 2π/T = 10.7 rad/s).
+  const double branch_reference = std::isfinite(r.frozen[0].torsional_damped.mean) ? r.frozen[0].torsional_damped.mean
+                                                                                    : r.frozen[0].torsional.mean;
   if (r.elastic && r.steady.found) {  // refine the Floquet frequency branch with the frozen mean
     r.steady.multipliers = classifyMultipliers(
-        floquetMultipliers(r.steady.monodromy, r.steady.period, r.frozen[0].torsional.mean), true);
+        floquetMultipliers(r.steady.monodromy, r.steady.period, branch_reference), true);
     for (ClassifiedMultiplier& c : r.steady.multipliers)
       if (c.kind == ModeKind::Speed) {
         c.m.frequency = std::abs(std::arg(c.m.mu)) / r.steady.period;
@@ -123,7 +131,7 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
         mo.rtol = 1e-8;
         mo.start = r.steady.x0;
         mo.warmup_periods = 0;
-        mo.reference_frequency = r.elastic ? r.frozen[0].torsional.mean : 0.0;
+        mo.reference_frequency = r.elastic ? branch_reference : 0.0;
         r.steady_multibody = steadyMotion(*mb, scene, mo);
         r.has_multibody_steady = true;
       }

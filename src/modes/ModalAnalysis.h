@@ -49,6 +49,7 @@ struct ModelFrozenModes {
   std::vector<FrozenAngle> angles;  // along the steady motion
   Band torsional;                // torsional frequency over the revolution [rad/s]
   Band torsional_damping;        // its frozen damping ratio [-]
+  Band torsional_damped;         // its frozen damped frequency Im λ [rad/s] (the Floquet branch's reference)
   std::string torsional_name, rigid_name;
   double energy_motor_side = NAN, energy_shaft_rods = NAN, energy_carts = NAN;  // torsional mode, mean
 };
