@@ -14,6 +14,10 @@ namespace {
 ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::vector<DrivePoint>& points) {
   ModelFrozenModes m;
   m.model = drive.name();
+  if (points.empty()) {
+    m.failure = "no steady motion and no running speed to linearize about";
+    return m;
+  }
   std::vector<double> p, z, pd, em, es, ec;
   for (const DrivePoint& q : points) {
     FrozenAngle f = frozenModes(drive, scene, q);
@@ -71,6 +75,8 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
   auto reduced = makeReducedDrive(scene);
   SteadyMotionOptions so;
   so.samples = o.angles;
+  so.max_newton = o.max_newton;
+  so.warmup_periods = o.warmup_periods;
   {
     DrivePoint p0;
     p0.phi = scene.initial.crank_angle;
@@ -82,15 +88,29 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
   r.steady = steadyMotion(*reduced, scene, so);
   std::vector<DrivePoint> points = r.steady.samples;
   if (!r.steady.found) {
-    r.notes.push_back("no steady motion (" + r.steady.failure +
-                      "): frozen-angle modes at uniform rotation with the initial speed instead; no Floquet analysis");
-    const double w = std::max(std::abs(scene.initial.crank_speed), 1.0);
-    for (int k = 0; k < o.angles; ++k) {
-      DrivePoint p;
-      p.phi = scene.initial.crank_angle + 2 * M_PI * k / o.angles;
-      p.omega = w;
-      p.twist = scene.initial.twist;
-      points.push_back(p);
+    // Frozen-angle modes only at the speed the machine runs at: where the motor's static curve
+    // carries the mean load. A speed that is not the running speed (the initial speed, often 0)
+    // would give modes of a machine that does not exist.
+    const SteadyGuess g = steadyGuess(scene);
+    if (g.ok) {
+      char b[320];
+      std::snprintf(b, sizeof b,
+                    "no steady motion (%s): no Floquet analysis; frozen-angle modes at uniform rotation at "
+                    "omega = %.4g rad/s instead, where the motor's static curve carries the mean load torque "
+                    "%.4g N*m (an estimate of the running speed)",
+                    r.steady.failure.c_str(), g.omega, g.mean_load_torque);
+      r.notes.push_back(b);
+      r.fallback_omega = g.omega;
+      for (int k = 0; k < o.angles; ++k) {
+        DrivePoint p;
+        p.phi = scene.initial.crank_angle + 2 * M_PI * k / o.angles;
+        p.omega = g.omega;
+        p.twist = g.twist;
+        points.push_back(p);
+      }
+    } else {
+      r.notes.push_back("no steady motion (" + r.steady.failure +
+                        "): the modal analysis is not applicable (no running speed to linearize about)");
     }
   }
 
@@ -197,9 +217,27 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
 
 std::vector<std::string> modalWarnings(const ModesReport& r) {
   std::vector<std::string> w;
+  char buf[640];
+  // The analysis could not be made for a driven machine: say so (the first estimate is then the
+  // only resonance check), never leave it silent.
+  if (r.elastic && r.motor && !r.steady.found) {
+    if (std::isfinite(r.fallback_omega))
+      std::snprintf(buf, sizeof buf,
+                    "modal analysis incomplete: no steady motion of the drive was found (%s), so there are no Floquet "
+                    "multipliers and no stability or resonance verdict; the frozen-angle modes are taken at uniform "
+                    "rotation at omega = %.4g rad/s, where the motor's static curve carries the mean load (an estimate "
+                    "of the running speed)",
+                    r.steady.failure.c_str(), r.fallback_omega);
+    else
+      std::snprintf(buf, sizeof buf,
+                    "modal analysis not applicable: no steady motion of the drive (%s), so no torsional modes, "
+                    "Floquet multipliers or resonance verdict",
+                    r.steady.failure.c_str());
+    w.push_back(buf);
+    return w;
+  }
   if (!r.elastic || !r.steady.found || r.frozen.empty()) return w;
   const FloquetVerdict& v = r.steady.verdict;
-  char buf[512];
   if (!v.stable) {
     std::snprintf(buf, sizeof buf,
                   "%s: the largest Floquet multiplier of the drive linearized about its steady motion has "

@@ -89,8 +89,18 @@ std::vector<std::string> writeResonanceVerdict(const Scene& scene, nlohmann::jso
                 "layout's excitation orders, Floquet multipliers over one crank revolution (reduced model)";
   j["applicable"] = r.steady.found && !r.frozen.empty();
   if (!r.steady.found) {
+    // Never silent: the analysis' own warning (a driven machine), or, beside a first-estimate
+    // warning, a verdict line saying that the first estimate stands unchecked.
     j["note"] = "no steady motion: " + r.steady.failure;
+    j["warnings"] = r.warnings;
     summary["resonance_modal"] = j;
+    for (const std::string& w : r.warnings) {
+      summary["warnings"].push_back(w);
+      lines.push_back(w);
+    }
+    if (!first_estimate.empty())
+      lines.push_back("resonance verdict: the modal analysis could not be made (no steady motion: " + r.steady.failure +
+                      "); the first estimate above is unchecked");
     return lines;
   }
   const Band& p = r.frozen[0].torsional;
