@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "modes/PeriodicFlow.h"
+#include "motor/MotorLawFactory.h"
 #include "reduced/ReducedModel.h"
 
 namespace rollerdyn::modes {
@@ -53,6 +54,24 @@ Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_no
   if (!(w0_new > 0)) throw std::invalid_argument("crank speed " + std::to_string(omega_target) + " rad/s is out of reach");
   s.motor.omega_sync = w0_new;
   s.motor.critical_slip = scene.motor.critical_slip * w0 / w0_new;
+  // The equivalent-circuit laws (circuit, Park) are built from the machine's supply, not from
+  // omega_sync: the converter's frequency and voltage scale with the speed (U/f constant, no
+  // boost), the circuit fixed (taken from the catalogue fit where the scene gives none, so the fit
+  // is not redone at the new frequency). Left alone, every speed of a Campbell diagram ran at the
+  // operating speed.
+  if (scene.motor.enabled &&
+      (scene.induction.model == MotorModel::Circuit || scene.induction.model == MotorModel::Park)) {
+    const InductionMachineParameters m = sceneMachine(scene);
+    s.induction.circuit.R_s = m.R_s;
+    s.induction.circuit.L_sigma_s = m.L_sigma_s;
+    s.induction.circuit.L_m = m.L_m;
+    s.induction.circuit.R_r = m.R_r[0];
+    s.induction.circuit.L_sigma_r = m.L_sigma_r[0];
+    s.induction.circuit.R_r2 = m.cages > 1 ? m.R_r[1] : 0.0;
+    s.induction.circuit.L_sigma_r2 = m.cages > 1 ? m.L_sigma_r[1] : 0.0;
+    s.induction.frequency = scene.induction.frequency * w0_new / w0;
+    s.induction.voltage = scene.induction.voltage * w0_new / w0;
+  }
   return s;
 }
 

@@ -101,7 +101,9 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
 // the motor's torque-speed curve shifted along the speed axis, i.e. synchronous speed
 // ω0' = ω0 + u·(omega_target - omega_now) with the slip speed at breakdown s_kr·ω0 kept, so the
 // motor carries the same mean load at the same slip speed and the steady crank speed moves from
-// omega_now to omega_target (exactly when the mean load does not depend on the speed).
+// omega_now to omega_target (exactly when the mean load does not depend on the speed). The
+// equivalent-circuit laws (circuit, Park): supply frequency and voltage scaled by ω0'/ω0 (U/f
+// constant), the circuit kept.
 // Throws std::invalid_argument when ω0' would not be positive.
 Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_now);
 

@@ -113,3 +113,25 @@ TEST(ModesConsole, ANegativeFrozenDampingRatioIsNamedAsAGrowingMode) {
   ASSERT_NE(text.find("damping ratio -0.00196"), std::string::npos) << text;
   EXPECT_NE(text.find("grows"), std::string::npos) << text;
 }
+
+// The Campbell diagram of the Park machine varies the crank speed as a frequency converter does:
+// each speed is reached. The circuit laws take their speed from the supply frequency, and the
+// speed shift used to move only omega_sync, so every point ran at the operating speed 10.68 rad/s.
+// 2 %: the shift is exact for a load that does not depend on the speed (DriveOrbit.h); the
+// forming loads here depend on it only through the carts' smoothing speed.
+TEST(ParkModes, TheCampbellDiagramReachesItsSpeeds) {
+  ModesOptions o;
+  o.multibody = false;
+  o.charts = false;
+  o.angles = 36;
+  o.speeds = 3;
+  o.speed_low = 0.8;
+  o.speed_high = 1.2;
+  const ModesReport r = analyseModes(sixCarts({"motor.model=park"}), o);
+  ASSERT_TRUE(r.steady.found) << r.steady.failure;
+  ASSERT_EQ(r.campbell.points.size(), 3u);
+  for (const CampbellPoint& p : r.campbell.points) {
+    ASSERT_TRUE(p.found) << p.failure;
+    EXPECT_NEAR(p.omega_mean, p.omega_target, 0.02 * p.omega_target);
+  }
+}
