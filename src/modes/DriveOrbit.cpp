@@ -229,7 +229,13 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
     r.samples.push_back(p);
     r.sample_time.push_back(x(x.size() - 1));
   }
-  r.multipliers = classifyMultipliers(floquetMultipliers(r.monodromy, r.period, o.reference_frequency), elastic);
+  rebranch(r, o.reference_frequency);
+  return r;
+}
+
+void rebranch(SteadyMotion& r, double reference_frequency) {
+  if (!r.found) return;
+  r.multipliers = classifyMultipliers(floquetMultipliers(r.monodromy, r.period, reference_frequency), r.elastic);
   for (ClassifiedMultiplier& c : r.multipliers)
     if (c.kind == ModeKind::Speed) {  // its frequency (if any) is the principal branch, not the torsional one
       c.m.frequency = std::abs(std::arg(c.m.mu)) / r.period;
@@ -237,7 +243,6 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
       c.m.damping_ratio = wn > 0 ? -c.m.growth_rate / wn : NAN;
     }
   r.verdict = judge(r.multipliers);
-  return r;
 }
 
 }  // namespace rollerdyn::modes

@@ -97,6 +97,11 @@ struct SteadyMotionOptions {
 // no convergence).
 SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMotionOptions& o = {});
 
+// The multipliers of `m` (found) classified and judged again with the torsional frequency's branch
+// nearest `reference_frequency` [rad/s] (e.g. the frozen-angle damped frequency's mean over the
+// revolution, a better reference than one angle's where the inertia swings much).
+void rebranch(SteadyMotion& m, double reference_frequency);
+
 // The scene run at another mean crank speed the way a frequency converter does it (V/f control):
 // the motor's torque-speed curve shifted along the speed axis, i.e. synchronous speed
 // ω0' = ω0 + u·(omega_target - omega_now) with the slip speed at breakdown s_kr·ω0 kept, so the
