@@ -122,17 +122,7 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
   // Im λ ≈ 32.7 rad/s with 2π/T = 10.7 rad/s).
   const double branch_reference = std::isfinite(r.frozen[0].torsional_damped.mean) ? r.frozen[0].torsional_damped.mean
                                                                                     : r.frozen[0].torsional.mean;
-  if (r.elastic && r.steady.found) {  // refine the Floquet frequency branch with the frozen mean
-    r.steady.multipliers = classifyMultipliers(
-        floquetMultipliers(r.steady.monodromy, r.steady.period, branch_reference), true);
-    for (ClassifiedMultiplier& c : r.steady.multipliers)
-      if (c.kind == ModeKind::Speed) {
-        c.m.frequency = std::abs(std::arg(c.m.mu)) / r.steady.period;
-        const double wn = std::hypot(c.m.growth_rate, c.m.frequency);
-        c.m.damping_ratio = wn > 0 ? -c.m.growth_rate / wn : NAN;
-      }
-    r.steady.verdict = judge(r.steady.multipliers);
-  }
+  if (r.elastic && r.steady.found) rebranch(r.steady, branch_reference);  // with the frozen mean
   if (o.multibody) {
     try {
       auto mb = makeMultibodyDrive(scene);
