@@ -257,8 +257,8 @@ std::vector<std::string> modalWarnings(const ModesReport& r) {
       std::snprintf(buf, sizeof buf,
                     "torsional resonance: the coupling mode's natural frequency from the Floquet multipliers, p = %.4g rad/s, "
                     "is within 5 %% of order %d of the crank speed (%d*omega = %.4g rad/s), which carries %.3g N*m "
-                    "(%.0f %% of the largest exciting harmonic); damping ratio %.3g (frozen-angle band p = %.4g ... "
-                    "%.4g rad/s)",
+                    "(%.0f %% of the largest exciting harmonic); damping ratio %.3g (without the damping, the "
+                    "frozen-angle band is p = %.4g ... %.4g rad/s)",
                     pf, c.order, c.order, f, torque, 100 * torque / largest, v.torsional_damping_ratio,
                     r.frozen[0].torsional.min, r.frozen[0].torsional.max);
       w.push_back(buf);
