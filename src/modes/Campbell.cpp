@@ -56,7 +56,7 @@ CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::
       DrivePoint p0;
       p0.phi = s.initial.crank_angle;
       p0.omega = w;
-      o.reference_frequency = frozenModes(*drive, s, p0).torsional_frequency();
+      o.reference_frequency = frozenModes(*drive, s, p0).torsional_damped_frequency();
       SteadyMotion m = steadyMotion(*drive, s, o);
       if (!m.found) {
         p.failure = m.failure;
@@ -64,11 +64,17 @@ CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::
         p.found = true;
         p.omega_mean = m.omega_mean;
         warm = m.x0;
-        std::vector<double> f;
-        for (const DrivePoint& q : m.samples) f.push_back(frozenModes(*drive, s, q).torsional_frequency());
+        std::vector<double> f, fd;
+        for (const DrivePoint& q : m.samples) {
+          const FrozenAngle fa = frozenModes(*drive, s, q);
+          f.push_back(fa.torsional_frequency());
+          fd.push_back(fa.torsional_damped_frequency());
+        }
         p.frozen = bandOf(f);
-        // Floquet frequency nearest the frozen mean.
-        const auto mult = classifyMultipliers(floquetMultipliers(m.monodromy, m.period, p.frozen.mean), true);
+        // Floquet frequency on the branch nearest the frozen mean of the damped frequency Im λ.
+        const double ref = bandOf(fd).mean;
+        const auto mult =
+            classifyMultipliers(floquetMultipliers(m.monodromy, m.period, std::isfinite(ref) ? ref : p.frozen.mean), true);
         const FloquetVerdict v = judge(mult);
         p.max_modulus = v.max_modulus;
         if (v.has_torsional) {

@@ -4,6 +4,7 @@
 
 #include "multibody/MinimalCoordinates.h"
 #include "multibody/MinimalDynamics.h"
+#include "multibody/MotorForce.h"
 #include "multibody/MultibodyModel.h"
 #include "reduced/ReducedModel.h"
 
@@ -23,7 +24,16 @@ class ReducedDrive : public DriveModel {
       y_(model_.iTwist()) = p.twist;
       y_(model_.iTwistRate()) = p.twist_rate;
     }
-    model_.derivatives(y_.data(), dy_.data());
+    // A motor law with states of its own (the space-phasor machine's flux linkages, the dynamic
+    // Kloss torque) gets them at their steady values for this rotor speed under the running
+    // supply, i.e. its static torque-speed curve. Left at zero (a de-energised machine) they gave
+    // no torque at all, and Newton's method on the period map found no steady running.
+    if (model_.motorStateCount() > 0) {
+      const double w_r = (p.omega + (model_.rigid() ? 0.0 : p.twist_rate)) * model_.scene().reducer.ratio;
+      model_.motorLaw()->initialState(model_.supply().state(running_, 0.0, w_r), w_r, true,
+                                      y_.data() + model_.iMotorStates());
+    }
+    model_.derivatives(0.0, running_, y_.data(), dy_.data());
     return {dy_(model_.iOmega()), model_.rigid() ? 0.0 : dy_(model_.iTwistRate())};
   }
   Eigen::MatrixXd massMatrix(double phi) override {
@@ -37,6 +47,9 @@ class ReducedDrive : public DriveModel {
  private:
   ReducedModel model_;
   Eigen::VectorXd y_, dy_;
+  // The supply of steady running: the rated stage, after any star-delta changeover or ramp (the
+  // phase at t = 0 would be a star connection or a waiting stage for some starting methods).
+  const SupplyPhase running_{SupplyPhase::Stage::Rated, 0.0};
 };
 
 class MultibodyDrive : public DriveModel {
@@ -48,6 +61,13 @@ class MultibodyDrive : public DriveModel {
 
   Eigen::Vector2d accelerations(const DrivePoint& p) override {
     place(p);
+    // The motor law's own states at their steady values for this rotor speed under the running
+    // supply (its static torque-speed curve), as the reduced drive does.
+    if (const MotorForce* motor = model_.motorForce(); motor && model_.motorStateCount() > 0) {
+      motor->setPhase(s_, SupplyPhase{SupplyPhase::Stage::Rated, 0.0});
+      model_.system().realize(s_, SimTK::Stage::Velocity);
+      motor->initialize(s_, true);
+    }
     dyn_.evaluate(s_, coords_);
     const Eigen::Vector2d& a = dyn_.independentAccelerations();
     return {a(0), elastic() ? a(1) : 0.0};

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "modes/PeriodicFlow.h"
+#include "motor/MotorLawFactory.h"
 #include "reduced/ReducedModel.h"
 
 namespace rollerdyn::modes {
@@ -53,11 +54,49 @@ Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_no
   if (!(w0_new > 0)) throw std::invalid_argument("crank speed " + std::to_string(omega_target) + " rad/s is out of reach");
   s.motor.omega_sync = w0_new;
   s.motor.critical_slip = scene.motor.critical_slip * w0 / w0_new;
+  // The equivalent-circuit laws (circuit, Park) are built from the machine's supply, not from
+  // omega_sync: the converter's frequency and voltage scale with the speed (U/f constant, no
+  // boost), the circuit fixed (taken from the catalogue fit where the scene gives none, so the fit
+  // is not redone at the new frequency). Left alone, every speed of a Campbell diagram ran at the
+  // operating speed.
+  if (scene.motor.enabled &&
+      (scene.induction.model == MotorModel::Circuit || scene.induction.model == MotorModel::Park)) {
+    const InductionMachineParameters m = sceneMachine(scene);
+    s.induction.circuit.R_s = m.R_s;
+    s.induction.circuit.L_sigma_s = m.L_sigma_s;
+    s.induction.circuit.L_m = m.L_m;
+    s.induction.circuit.R_r = m.R_r[0];
+    s.induction.circuit.L_sigma_r = m.L_sigma_r[0];
+    s.induction.circuit.R_r2 = m.cages > 1 ? m.R_r[1] : 0.0;
+    s.induction.circuit.L_sigma_r2 = m.cages > 1 ? m.L_sigma_r[1] : 0.0;
+    s.induction.frequency = scene.induction.frequency * w0_new / w0;
+    s.induction.voltage = scene.induction.voltage * w0_new / w0;
+  }
   return s;
 }
 
 std::vector<ClassifiedMultiplier> classifyMultipliers(const std::vector<FloquetMultiplier>& m, bool elastic) {
   std::vector<ClassifiedMultiplier> out;
+  // A complex-conjugate pair among the three multipliers is an oscillation, and the drive has one:
+  // the coupling's; the remaining real multiplier is the non-oscillating motion. Heavy damping
+  // makes the eigenvector test below fail: six carts at k = 8000 N·m·s/rad oscillate (ζ = 0.82,
+  // |μ| = 3.7e-6) with the motor side held back by the damping, so the twist rate is smaller than
+  // the crank speed's change, and the real multiplier (the motor side settling on the damping,
+  // |μ| ~ 1e-21) was taken for the coupling mode.
+  if (elastic && m.size() == 3) {
+    int complex_count = 0;
+    for (const FloquetMultiplier& f : m)
+      if (std::abs(f.mu.imag()) > 1e-12 * f.modulus) ++complex_count;
+    if (complex_count == 2) {
+      for (const FloquetMultiplier& f : m) {
+        ClassifiedMultiplier c;
+        c.m = f;
+        c.kind = std::abs(f.mu.imag()) > 1e-12 * f.modulus ? ModeKind::Torsional : ModeKind::Speed;
+        out.push_back(c);
+      }
+      return out;
+    }
+  }
   for (const FloquetMultiplier& f : m) {
     ClassifiedMultiplier c;
     c.m = f;
@@ -190,7 +229,13 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
     r.samples.push_back(p);
     r.sample_time.push_back(x(x.size() - 1));
   }
-  r.multipliers = classifyMultipliers(floquetMultipliers(r.monodromy, r.period, o.reference_frequency), elastic);
+  rebranch(r, o.reference_frequency);
+  return r;
+}
+
+void rebranch(SteadyMotion& r, double reference_frequency) {
+  if (!r.found) return;
+  r.multipliers = classifyMultipliers(floquetMultipliers(r.monodromy, r.period, reference_frequency), r.elastic);
   for (ClassifiedMultiplier& c : r.multipliers)
     if (c.kind == ModeKind::Speed) {  // its frequency (if any) is the principal branch, not the torsional one
       c.m.frequency = std::abs(std::arg(c.m.mu)) / r.period;
@@ -198,7 +243,6 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
       c.m.damping_ratio = wn > 0 ? -c.m.growth_rate / wn : NAN;
     }
   r.verdict = judge(r.multipliers);
-  return r;
 }
 
 }  // namespace rollerdyn::modes

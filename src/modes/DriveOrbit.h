@@ -97,15 +97,24 @@ struct SteadyMotionOptions {
 // no convergence).
 SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMotionOptions& o = {});
 
+// The multipliers of `m` (found) classified and judged again with the torsional frequency's branch
+// nearest `reference_frequency` [rad/s] (e.g. the frozen-angle damped frequency's mean over the
+// revolution, a better reference than one angle's where the inertia swings much).
+void rebranch(SteadyMotion& m, double reference_frequency);
+
 // The scene run at another mean crank speed the way a frequency converter does it (V/f control):
 // the motor's torque-speed curve shifted along the speed axis, i.e. synchronous speed
 // ω0' = ω0 + u·(omega_target - omega_now) with the slip speed at breakdown s_kr·ω0 kept, so the
 // motor carries the same mean load at the same slip speed and the steady crank speed moves from
-// omega_now to omega_target (exactly when the mean load does not depend on the speed).
+// omega_now to omega_target (exactly when the mean load does not depend on the speed). The
+// equivalent-circuit laws (circuit, Park): supply frequency and voltage scaled by ω0'/ω0 (U/f
+// constant), the circuit kept.
 // Throws std::invalid_argument when ω0' would not be positive.
 Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_now);
 
-// Classifies and judges multipliers of a drive's monodromy (elastic: states (φ̇2, ψ, ψ̇)).
+// Classifies and judges multipliers of a drive's monodromy (elastic: states (φ̇2, ψ, ψ̇)). Elastic:
+// a complex-conjugate pair is the coupling's (torsional) oscillation; with all three real, the
+// torsional ones are those whose twist rate exceeds their crank-speed change.
 std::vector<ClassifiedMultiplier> classifyMultipliers(const std::vector<FloquetMultiplier>& m, bool elastic);
 FloquetVerdict judge(const std::vector<ClassifiedMultiplier>& m);
 

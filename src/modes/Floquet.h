@@ -6,8 +6,8 @@
 //   growth (or decay) rate per unit time   σ = ln|μ| / T            [1/s]
 //   oscillation frequency                   ω_d = (arg μ + 2πm)/T    [rad/s]
 // The integer m is not in the multipliers (a frequency is only known modulo 2π/T, the crank
-// speed's first order): it is taken from a reference frequency (the frozen-angle natural
-// frequency) as the branch closest to it. The modal damping ratio then is
+// speed's first order): it is taken from a reference frequency (the frozen-angle mode's damped
+// frequency Im λ, the one a free vibration has) as the branch closest to it. The modal damping ratio then is
 //   ζ = -σ / √(σ² + ω_d²)     (a constant-coefficient mode: λ = -ζω_n ± iω_n√(1-ζ²)).
 // Stability: every |μ| < 1. The margin is 1 - max|μ| (> 0 stable) and, per unit time, the
 // slowest decay rate -max σ [1/s].

@@ -16,6 +16,12 @@ double FrozenAngle::torsional_frequency() const {
   return NAN;
 }
 
+double FrozenAngle::torsional_damped_frequency() const {
+  for (const FrozenMode& m : modes)
+    if (m.torsional) return m.damped_frequency;
+  return NAN;
+}
+
 Band bandOf(const std::vector<double>& v) {
   Band b;
   double sum = 0;
@@ -140,9 +146,13 @@ FrozenAngle frozenModes(DriveModel& drive, const Scene& scene, const DrivePoint&
         if (std::abs(wn - m.frequency) < best) {
           best = std::abs(wn - m.frequency);
           m.damping_ratio = -l.real() / wn;
+          m.damped_frequency = l.imag();
         }
       }
-      if (!std::isfinite(best)) m.damping_ratio = 1.0;  // no oscillating pair: at least critically damped
+      if (!std::isfinite(best)) {  // no oscillating pair: at least critically damped
+        m.damping_ratio = 1.0;
+        m.damped_frequency = 0.0;
+      }
     }
     f.modes.push_back(m);
   }

@@ -35,6 +35,9 @@ struct FrozenMode {
   double lambda = 0;           // eigenvalue of M⁻¹K [1/s²]
   double frequency = 0;        // √λ [rad/s]; NaN when λ ≤ 0 (no oscillation while frozen)
   double damping_ratio = 0;    // of the damped frozen pair (state matrix), NaN if not oscillating
+  // Im λ of that damped pair [rad/s]: the frequency a free vibration actually has (the branch a
+  // Floquet frequency is read on); 0 when the pair does not oscillate, NaN without a frequency.
+  double damped_frequency = NAN;
   Eigen::Vector2d shape = Eigen::Vector2d::Zero();  // (δφ2, δψ), normalized to max |δφ| = 1
   double energy_motor_side = 0, energy_shaft_rods = 0, energy_carts = 0;  // kinetic-energy fractions
   bool torsional = false;      // the coupling's mode (motor side against the crank side)
@@ -46,6 +49,9 @@ struct FrozenAngle {
   std::vector<FrozenMode> modes;  // ascending λ; the torsional one last
   // The torsional mode (elastic coupling), or NaN.
   double torsional_frequency() const;
+  // Its damped frequency Im λ [rad/s] (0: over-damped while frozen), or NaN: the reference for the
+  // branch of the Floquet frequency, which is known only modulo the crank speed's first order.
+  double torsional_damped_frequency() const;
 };
 
 // Linearizes `drive` at `p` (setOperatingPoint first). `scene` supplies the inertia split for

@@ -14,13 +14,18 @@ namespace {
 ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::vector<DrivePoint>& points) {
   ModelFrozenModes m;
   m.model = drive.name();
-  std::vector<double> p, z, em, es, ec;
+  if (points.empty()) {
+    m.failure = "no steady motion and no running speed to linearize about";
+    return m;
+  }
+  std::vector<double> p, z, pd, em, es, ec;
   for (const DrivePoint& q : points) {
     FrozenAngle f = frozenModes(drive, scene, q);
     for (const FrozenMode& mode : f.modes) {
       if (mode.torsional) {
         p.push_back(mode.frequency);
         z.push_back(mode.damping_ratio);
+        pd.push_back(mode.damped_frequency);
         em.push_back(mode.energy_motor_side);
         es.push_back(mode.energy_shaft_rods);
         ec.push_back(mode.energy_carts);
@@ -33,6 +38,7 @@ ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::v
   }
   m.torsional = bandOf(p);
   m.torsional_damping = bandOf(z);
+  m.torsional_damped = bandOf(pd);
   m.energy_motor_side = bandOf(em).mean;
   m.energy_shaft_rods = bandOf(es).mean;
   m.energy_carts = bandOf(ec).mean;
@@ -69,42 +75,54 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
   auto reduced = makeReducedDrive(scene);
   SteadyMotionOptions so;
   so.samples = o.angles;
+  so.max_newton = o.max_newton;
+  so.warmup_periods = o.warmup_periods;
   {
     DrivePoint p0;
     p0.phi = scene.initial.crank_angle;
     const SteadyGuess g = steadyGuess(scene);
     p0.omega = g.ok ? g.omega : std::max(std::abs(scene.initial.crank_speed), 1.0);
     p0.twist = g.twist;
-    so.reference_frequency = r.elastic ? frozenModes(*reduced, scene, p0).torsional_frequency() : 0.0;
+    so.reference_frequency = r.elastic ? frozenModes(*reduced, scene, p0).torsional_damped_frequency() : 0.0;
   }
   r.steady = steadyMotion(*reduced, scene, so);
   std::vector<DrivePoint> points = r.steady.samples;
   if (!r.steady.found) {
-    r.notes.push_back("no steady motion (" + r.steady.failure +
-                      "): frozen-angle modes at uniform rotation with the initial speed instead; no Floquet analysis");
-    const double w = std::max(std::abs(scene.initial.crank_speed), 1.0);
-    for (int k = 0; k < o.angles; ++k) {
-      DrivePoint p;
-      p.phi = scene.initial.crank_angle + 2 * M_PI * k / o.angles;
-      p.omega = w;
-      p.twist = scene.initial.twist;
-      points.push_back(p);
+    // Frozen-angle modes only at the speed the machine runs at: where the motor's static curve
+    // carries the mean load. A speed that is not the running speed (the initial speed, often 0)
+    // would give modes of a machine that does not exist.
+    const SteadyGuess g = steadyGuess(scene);
+    if (g.ok) {
+      char b[320];
+      std::snprintf(b, sizeof b,
+                    "no steady motion (%s): no Floquet analysis; frozen-angle modes at uniform rotation at "
+                    "omega = %.4g rad/s instead, where the motor's static curve carries the mean load torque "
+                    "%.4g N*m (an estimate of the running speed)",
+                    r.steady.failure.c_str(), g.omega, g.mean_load_torque);
+      r.notes.push_back(b);
+      r.fallback_omega = g.omega;
+      for (int k = 0; k < o.angles; ++k) {
+        DrivePoint p;
+        p.phi = scene.initial.crank_angle + 2 * M_PI * k / o.angles;
+        p.omega = g.omega;
+        p.twist = g.twist;
+        points.push_back(p);
+      }
+    } else {
+      r.notes.push_back("no steady motion (" + r.steady.failure +
+                        "): the modal analysis is not applicable (no running speed to linearize about)");
     }
   }
 
   // 2. Frozen-angle modes, both models.
   r.frozen.push_back(frozenAlong(*reduced, scene, points));
-  if (r.elastic && r.steady.found) {  // refine the Floquet frequency branch with the frozen mean
-    r.steady.multipliers = classifyMultipliers(
-        floquetMultipliers(r.steady.monodromy, r.steady.period, r.frozen[0].torsional.mean), true);
-    for (ClassifiedMultiplier& c : r.steady.multipliers)
-      if (c.kind == ModeKind::Speed) {
-        c.m.frequency = std::abs(std::arg(c.m.mu)) / r.steady.period;
-        const double wn = std::hypot(c.m.growth_rate, c.m.frequency);
-        c.m.damping_ratio = wn > 0 ? -c.m.growth_rate / wn : NAN;
-      }
-    r.steady.verdict = judge(r.steady.multipliers);
-  }
+  // The Floquet frequency is known only modulo 2π/T: its branch is the one nearest the frozen-angle
+  // mode's damped frequency Im λ over the revolution (the undamped √λ of M⁻¹K lies branches away
+  // when the damping is heavy: six carts at k = 2000 N·m·s/rad, ζ = 0.54, have √λ ≈ 65 rad/s and
+  // Im λ ≈ 32.7 rad/s with 2π/T = 10.7 rad/s).
+  const double branch_reference = std::isfinite(r.frozen[0].torsional_damped.mean) ? r.frozen[0].torsional_damped.mean
+                                                                                    : r.frozen[0].torsional.mean;
+  if (r.elastic && r.steady.found) rebranch(r.steady, branch_reference);  // with the frozen mean
   if (o.multibody) {
     try {
       auto mb = makeMultibodyDrive(scene);
@@ -123,7 +141,7 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
         mo.rtol = 1e-8;
         mo.start = r.steady.x0;
         mo.warmup_periods = 0;
-        mo.reference_frequency = r.elastic ? r.frozen[0].torsional.mean : 0.0;
+        mo.reference_frequency = r.elastic ? branch_reference : 0.0;
         r.steady_multibody = steadyMotion(*mb, scene, mo);
         r.has_multibody_steady = true;
       }
@@ -189,9 +207,27 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
 
 std::vector<std::string> modalWarnings(const ModesReport& r) {
   std::vector<std::string> w;
+  char buf[640];
+  // The analysis could not be made for a driven machine: say so (the first estimate is then the
+  // only resonance check), never leave it silent.
+  if (r.elastic && r.motor && !r.steady.found) {
+    if (std::isfinite(r.fallback_omega))
+      std::snprintf(buf, sizeof buf,
+                    "modal analysis incomplete: no steady motion of the drive was found (%s), so there are no Floquet "
+                    "multipliers and no stability or resonance verdict; the frozen-angle modes are taken at uniform "
+                    "rotation at omega = %.4g rad/s, where the motor's static curve carries the mean load (an estimate "
+                    "of the running speed)",
+                    r.steady.failure.c_str(), r.fallback_omega);
+    else
+      std::snprintf(buf, sizeof buf,
+                    "modal analysis not applicable: no steady motion of the drive (%s), so no torsional modes, "
+                    "Floquet multipliers or resonance verdict",
+                    r.steady.failure.c_str());
+    w.push_back(buf);
+    return w;
+  }
   if (!r.elastic || !r.steady.found || r.frozen.empty()) return w;
   const FloquetVerdict& v = r.steady.verdict;
-  char buf[512];
   if (!v.stable) {
     std::snprintf(buf, sizeof buf,
                   "%s: the largest Floquet multiplier of the drive linearized about its steady motion has "
@@ -221,8 +257,8 @@ std::vector<std::string> modalWarnings(const ModesReport& r) {
       std::snprintf(buf, sizeof buf,
                     "torsional resonance: the coupling mode's natural frequency from the Floquet multipliers, p = %.4g rad/s, "
                     "is within 5 %% of order %d of the crank speed (%d*omega = %.4g rad/s), which carries %.3g N*m "
-                    "(%.0f %% of the largest exciting harmonic); damping ratio %.3g (frozen-angle band p = %.4g ... "
-                    "%.4g rad/s)",
+                    "(%.0f %% of the largest exciting harmonic); damping ratio %.3g (without the damping, the "
+                    "frozen-angle band is p = %.4g ... %.4g rad/s)",
                     pf, c.order, c.order, f, torque, 100 * torque / largest, v.torsional_damping_ratio,
                     r.frozen[0].torsional.min, r.frozen[0].torsional.max);
       w.push_back(buf);

@@ -40,6 +40,8 @@ struct ModesOptions {
   std::vector<double> chart_dampings;  // c × ω charts at these k; empty: the scene's k
   std::vector<double> marked_dampings; // k values marked on the c × k chart (e.g. a paper's)
   double damping_high = 0;             // top of the c × k chart; 0: 2·max(scene k, marked, 1000)
+  int max_newton = 30;                 // Newton iterations on the period map (the steady motion)
+  int warmup_periods = 3;              // revolutions integrated from the first guess before Newton
 };
 
 struct ModelFrozenModes {
@@ -49,6 +51,7 @@ struct ModelFrozenModes {
   std::vector<FrozenAngle> angles;  // along the steady motion
   Band torsional;                // torsional frequency over the revolution [rad/s]
   Band torsional_damping;        // its frozen damping ratio [-]
+  Band torsional_damped;         // its frozen damped frequency Im λ [rad/s] (the Floquet branch's reference)
   std::string torsional_name, rigid_name;
   double energy_motor_side = NAN, energy_shaft_rods = NAN, energy_carts = NAN;  // torsional mode, mean
 };
@@ -73,6 +76,9 @@ struct ModesReport {
   std::vector<StabilityChart> charts;
   std::vector<std::string> warnings;  // resonance warnings resting on this analysis
   std::vector<std::string> notes;     // what was not done and why
+  // No steady motion: the speed of the uniform rotation the frozen-angle modes are taken at (where
+  // the motor's static curve carries the mean load), NaN when none (no modes at all).
+  double fallback_omega = NAN;
 };
 
 ModesReport analyseModes(const Scene& scene, const ModesOptions& options = {});
@@ -95,7 +101,8 @@ void setChartStiffness(ModesOptions& o, const Scene& scene, double lo, double hi
 // Resonance warnings of the analysis: the steady motion unstable (a Floquet multiplier > 1), or the
 // torsional mode's Floquet frequency within 5 % of k·ω for an order k carrying at least 1 % of the
 // largest exciting torque harmonic (none when the mode decays more than a million-fold per
-// revolution: nothing can build up).
+// revolution: nothing can build up). A driven machine whose steady motion was not found gets a
+// warning that says so and why (no verdict rests on the analysis then).
 std::vector<std::string> modalWarnings(const ModesReport& r);
 
 }  // namespace rollerdyn::modes

@@ -69,6 +69,8 @@ nlohmann::json modesJson(const ModesReport& r) {
       {"p0", r.two_mass.applicable ? num(r.two_mass.p0) : nlohmann::json(nullptr)}};
   j["steady_motion"] = steadyJson(r.steady);
   j["steady_motion"]["model"] = "reduced";
+  // Without a steady motion: the speed the frozen-angle modes were taken at instead (null: none).
+  if (!r.steady.found) j["steady_motion"]["frozen_modes_at_omega"] = num(r.fallback_omega);
   if (r.has_multibody_steady) {
     j["steady_motion_multibody"] = steadyJson(r.steady_multibody);
     j["steady_motion_multibody"]["friction_normal_force_lags"] = "quasi-static (normal forces of each state)";
@@ -228,10 +230,16 @@ std::string modesText(const ModesReport& r) {
     if (r.elastic) {
       std::snprintf(b, sizeof b,
                     "  frozen-angle torsional frequency, %-9s p = %.6g rad/s mean, %.6g ... %.6g over the crank "
-                    "angle; damping ratio %.3g ... %.3g\n",
+                    "angle; damping ratio %.3g ... %.3g",
                     (m.model + ":").c_str(), m.torsional.mean, m.torsional.min, m.torsional.max,
                     m.torsional_damping.min, m.torsional_damping.max);
       os << b;
+      // A negative damping ratio is a mode that grows: never printed as if it were a damping.
+      if (m.torsional_damping.min < 0)
+        os << (m.torsional_damping.max < 0 ? " (negative: the mode grows at every crank angle, unstable while frozen"
+                                           : " (negative at some crank angles: the mode grows there while frozen")
+           << (r.steady.found ? "; the Floquet verdict decides over the whole revolution)" : "; no Floquet verdict)");
+      os << "\n";
     }
   }
   if (r.elastic && !r.frozen.empty() && r.frozen[0].ok) {
