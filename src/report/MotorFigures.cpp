@@ -36,6 +36,25 @@ MotorMarks motorMarks(const Scene& sc) {
     const double lambda = k.M_kr / k.M_n;
     k.w_n = w0 * (1.0 - s_kr * (lambda - std::sqrt(lambda * lambda - 1.0)));
   }
+  // A catalogue law (circuit, Park machine) is drawn with its own curve: mark its own breakdown
+  // point (the curve's largest torque, where it lies) and its catalogue's rated point, not Kloss's
+  // (the second trial saw the M_kr marker at Kloss's s_kr beside a curve peaking elsewhere).
+  if (sc.induction.model == MotorModel::Circuit || sc.induction.model == MotorModel::Park) try {
+      const std::shared_ptr<const MotorLaw> law = sharedMotorLaw(sc);
+      double best = -INFINITY;
+      for (int i = 0; i <= 2000; ++i) {
+        const double w = w0 * i / 2000.0, M = law->steadyTorque(SupplyState{}, w);
+        if (M > best) best = M, k.w_kr = w;
+      }
+      k.M_kr = best;
+      const MotorCatalogue& cat = sc.induction.catalogue;
+      if (sc.sizing.motor_omega_nominal <= 0 && cat.given() && cat.omega_nominal > 0) {
+        k.w_n = cat.omega_nominal;
+        k.M_n = law->steadyTorque(SupplyState{}, cat.omega_nominal);
+      }
+    } catch (const std::exception&) {
+      // no law: the Kloss data stand
+    }
   k.P_n = k.M_n * k.w_n;
   return k;
 }
@@ -72,7 +91,10 @@ struct MotorPlanner {
   void operatingPoint(const std::vector<double>& t, const std::vector<double>& w,
                       const std::vector<double>& m) {
     PlotSpec p;
-    p.title = title("motor operating points on its Kloss curve");
+    const bool kloss_law = !scene || scene->induction.model == MotorModel::Kloss ||
+                           scene->induction.model == MotorModel::KlossDynamic;
+    p.title = title(kloss_law ? "motor operating points on its Kloss curve"
+                              : "motor operating points on its steady torque-speed curve");
     p.xlabel = "motor speed reduced to the crank axis ω_1 = ω_r/u [rad/s]";
     p.ylabel = "motor torque at the crank axis M_{n1} = M·u·η [N·m]";
     p.preamble = "set key inside left bottom box opaque\n";
@@ -132,10 +154,14 @@ struct MotorPlanner {
     if (window.found) p.series.push_back(steady);
     PlotSpec zoom = p;
     add("motor_operating_point",
-        "The motor's static Kloss characteristic reduced to the crank axis, M_n1 = M(u·ω_1)·u·η "
-        "(Loveikin, Pochka, Romasevych (2018) eq. (37); M motor torque at the rotor, ω_1 motor speed "
-        "reduced to the crank, u reducer ratio, η its efficiency), the start-up along it (thin line), "
-        "the steady-window operating points (red), and the nominal and breakdown points.",
+        std::string(kloss_law ? "The motor's static Kloss characteristic reduced to the crank axis, M_n1 = M(u·ω_1)·u·η "
+                                "(Loveikin, Pochka, Romasevych (2018) eq. (37)"
+                              : "The steady torque-speed curve of the motor's law at the rated supply (motor.model, "
+                                "fitted to its catalogue) reduced to the crank axis, M_n1 = M(u·ω_1)·u·η (") +
+            "; M motor torque at the rotor, ω_1 motor speed reduced to the crank, u reducer ratio, η its efficiency), "
+            "the run's operating points over the whole run (thin line; a start with switching transients or a "
+            "starting method leaves the steady curve), the steady-window operating points (red), and the "
+            "nominal and breakdown points.",
         std::move(p));
     if (!window.found || rows.empty()) return;
     double wlo = INFINITY, whi = -INFINITY, mlo = INFINITY, mhi = -INFINITY;

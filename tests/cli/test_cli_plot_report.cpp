@@ -110,6 +110,19 @@ TEST(CliPlot, WarnsWhenTheSceneDoesNotMatchTheRunsMotor) {
   EXPECT_NE(coast.out.find("motor figures left out: the scene's motor is disabled"), std::string::npos) << coast.out;
 }
 
+// A catalogue law's run is drawn on its own steady curve, titled so: the second trial's Park run
+// read "motor operating points on its Kloss curve" with the breakdown mark at Kloss's slip.
+TEST(CliPlot, ACatalogueLawsOperatingPointsAreOnItsOwnCurve) {
+  TempDir out("plot-park");
+  const auto sim = runRollerdyn({"simulate", model("balanced-4cart.yaml"), "--model", "reduced", "--set",
+                                 "motor.model=circuit", "--set", "simulation.t_end=2", "--out", out.str(), "--plot"});
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const std::string svg = slurp(out.path() / "figures" / "motor_operating_point.svg");
+  EXPECT_NE(svg.find("operating points on its steady torque-speed curve"), std::string::npos);
+  EXPECT_EQ(svg.find("Kloss curve"), std::string::npos);
+  EXPECT_EQ(sim.out.find("differs from the"), std::string::npos) << sim.out;  // the run is on its own curve
+}
+
 TEST(CliPlot, ErrorsAreBadInput) {
   TempDir empty("plot-empty");
   const auto r = runRollerdyn({"plot", empty.str()});
