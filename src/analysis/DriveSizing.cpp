@@ -525,9 +525,11 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
       h.reason = too_short;
     } else if (!turning) {
       // A value within its limit beside FAIL would read as a contradiction: the figure of a rotor
-      // held at standstill is no margin, so it moves into the reason.
+      // held at standstill is no margin, so it moves into the reason; and a start's heat against
+      // "steady running" that is a locked rotor means nothing, so only the window's own figures.
       h.verdict = "FAIL";
-      h.reason = not_turning + ": a motor that cannot drive its load overheats whatever the torque; " + h.reason;
+      h.reason = not_turning + ": a motor that cannot drive its load overheats whatever the torque; RMS torque / M_n "
+                 "over the run's last part " + fmt3(steady) + ", its rotor losses against the nominal ones " + fmt3(whole);
       if (!(h.value > 1.0)) h.value = kNaN;
     }
     out.push_back(h);
@@ -553,8 +555,10 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
       k.reason = too_short;
     } else if (!turning) {
       k.verdict = "FAIL";
-      k.reason = not_turning + ": the load needs more than the motor gives (the measured peak |M| / M_kr " +
-                 fmt3(m.peak_over_breakdown) + " is that of a drive that does not run, not a margin)";
+      k.reason = not_turning + ": " + (s.stall_cause.empty() ? std::string("the load needs more than the motor gives")
+                                                             : s.stall_cause) +
+                 " (the measured peak |M| / M_kr " + fmt3(m.peak_over_breakdown) +
+                 " is that of a drive that does not run, not a margin)";
       if (!(k.value >= limit)) k.value = kNaN;
     }
     out.push_back(k);
@@ -621,6 +625,29 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
     s.revolutions = std::abs(ts.rows[e - 1][k] - ts.rows[b][k]) / kTwoPi;
   }
   s.motor = sizeMotor(sc, ts, b, e, n, s.revolutions, turning, start_up);
+  // Why a drive that does not turn fails, from the torques the start-up answers compare (the
+  // second trial's drive held by its start-angle load read "the load needs more than the motor
+  // gives" while the motor's breakdown torque was 56 times the mean load).
+  if (!turning && start_up && start_up->applicable) {
+    char buf[400] = "";
+    const StartUp& u = *start_up;
+    if (std::isfinite(u.load_torque_start) && u.starting_torque_crank <= u.load_torque_start)
+      std::snprintf(buf, sizeof buf,
+                    "the motor's starting torque %.4g N·m at the crank is below the load %.4g N·m at the start angle "
+                    "(its breakdown torque %.4g N·m %s the load averaged over a revolution, %.4g N·m)",
+                    u.starting_torque_crank, u.load_torque_start, u.largest_torque_crank,
+                    u.largest_torque_crank > u.load_torque_mean ? "would carry" : "is below", u.load_torque_mean);
+    else if (std::isfinite(u.load_torque_mean) && u.largest_torque_crank <= u.load_torque_mean)
+      std::snprintf(buf, sizeof buf,
+                    "the load averaged over a revolution, %.4g N·m at the crank, exceeds the motor's breakdown torque "
+                    "%.4g N·m", u.load_torque_mean, u.largest_torque_crank);
+    else if (std::isfinite(u.load_torque_mean))
+      std::snprintf(buf, sizeof buf,
+                    "the motor can break away and carry the mean load (%.4g N·m against %.4g N·m), but the load peaks "
+                    "near a dead centre together with the inertia hold the crank back", u.largest_torque_crank,
+                    u.load_torque_mean);
+    s.stall_cause = buf;
+  }
   s.flywheel = sizeFlywheel(sc, ts, w, b, e, turning, delta, load);
   s.coupling = sizeCoupling(sc, ts, b, e, n);
   s.joints = sizeJoints(sc, run, w);

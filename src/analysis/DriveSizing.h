@@ -139,6 +139,8 @@ struct DriveSizing {
   double t_begin = 0, t_end = 0;  // steady window [s]
   double run_t_begin = 0, run_t_end = 0;  // whole run: the finite rows [s]
   std::string motion;             // the crank's motion (RunMotion.h)
+  std::string stall_cause;        // why a drive that does not turn fails, from the start-up answers'
+                                  // torques against the loads; "" when not known
   double revolutions = 0;         // crank revolutions in the window [-]
   MotorSizing motor;
   FlywheelSizing flywheel;

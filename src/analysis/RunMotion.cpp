@@ -189,7 +189,7 @@ std::string stalledCrankTravel(const Scene& sc, const RunResult& run) {
   const bool swung = w_lo < 0 && w_hi > 0;
   std::snprintf(buf, sizeof buf,
                 "the crank did not stay at the start angle: %s, over %.4g ... %.4g deg%s (crank speed %.3g ... %.3g "
-                "rad/s), and is held at %.4g deg when the run ends",
+                "rad/s), and is at %.4g deg when the run ends",
                 how, lo * deg, hi * deg, swung ? ", swinging back and forth" : "", w_lo, w_hi, end * deg);
   return buf;
 }

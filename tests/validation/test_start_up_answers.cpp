@@ -254,6 +254,25 @@ TEST(StartUpAnswers, ABrakingPeakIsNamedAsSuchInTheBreakdownCheck) {
   EXPECT_EQ(found, 1);
 }
 
+// The second trial's six carts at 90° with a 1310 kg·m² flywheel, from rest: the breakdown FAIL
+// said "the load needs more than the motor gives" where the motor's breakdown torque was 56 times
+// the mean load (the starting torque against the start-angle load was the cause), and the heating
+// reason weighed a start's heat against "steady running" that was a locked rotor.
+TEST(StartUpAnswers, TheChecksOfADriveThatDoesNotTurnNameTheCause) {
+  const nlohmann::json j = reducedSummary(defaultScene({"carts.count=6", "crank.offset_deg=90", "flywheel.inertia=1310",
+                                                         "simulation.t_end=20"}));
+  const std::string motion = j["motion"];
+  ASSERT_TRUE(motion == "rocking" || motion == "stalled") << motion;
+  for (const auto& c : j["sizing"]["checks"]) {
+    const std::string reason = c["reason"];
+    if (c["check"] == "motor_breakdown") {
+      EXPECT_NE(reason.find("starting torque 1032 N·m at the crank is below the load"), std::string::npos) << reason;
+      EXPECT_EQ(reason.find("needs more than the motor gives"), std::string::npos) << reason;
+    }
+    if (c["check"] == "motor_heating") EXPECT_EQ(reason.find("steady running"), std::string::npos) << reason;
+  }
+}
+
 // A run that begins at speed holds no start: the second trial read "the drive starts ... 0.005 s
 // after switch-on", start peaks and a start's rotor loss of 1.968e+04 J beside "the start's heat is
 // not known". No run-up, no start peaks, no start loss; the stop is still answered, and a stop not
