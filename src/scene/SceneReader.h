@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/DidYouMean.h"
 #include "scene/Scene.h"
 #include "scene/SceneDocument.h"
 #include "scene/SceneSchema.h"
@@ -93,13 +94,14 @@ class Reader {
     return scalar(s, doc_.find(path)).Scalar();
   }
 
-  // A Choice key: one of its words (case-sensitive, so a misspelling is never guessed at).
+  // A Choice key: one of its words (case-sensitive, so a misspelling is never taken for one), with
+  // the closest word suggested (motor.model: parkk, motor.start.method: star-delta).
   std::string choice(const std::string& path) const {
     const std::string word = text(path);
     const KeySpec& s = spec(path);
     for (const std::string& c : s.choices)
       if (c == word) return word;
-    fail(s, describeNode(doc_.find(path)));
+    fail(s, describeNode(doc_.find(path)) + didYouMean(word, s.choices));
   }
 
   bool flag(const std::string& path) const {

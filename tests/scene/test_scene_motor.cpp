@@ -91,8 +91,10 @@ TEST(SceneMotor, EveryModelWordParses) {
     const Scene s = parseSceneText(withMotorKeys(std::string("  model: ") + w + "\n" + kCircuit), "t.yaml");
     EXPECT_STREQ(toString(s.induction.model), w);
   }
+  // A misspelt word is refused, with the closest one suggested (the second trial's parkk and
+  // star-delta got none).
   expectSceneError(withMotorKeys("  model: parks"), {"test.yaml:19: motor.model: expected one of: kloss, "
-                                                     "kloss_dynamic, circuit, park, got parks"});
+                                                     "kloss_dynamic, circuit, park, got parks (did you mean 'park'?)"});
 }
 
 // The effects a scene builds (console, summary.json, bench) name the motor by its law.
