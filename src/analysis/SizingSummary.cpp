@@ -184,8 +184,11 @@ std::string sizingText(const json& summary) {
   auto str = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
   const json& w = jsonMember(s, "window");
   const json& wr = jsonMember(s, "whole_run");
-  o << "drive sizing over the steady window t = " << fmt(jsonMember(w, "t_begin"), "%.4g") << " ... "
-    << fmt(jsonMember(w, "t_end"), "%.4g") << " s (" << fmt(jsonMember(w, "revolutions"), "%.3g") << " crank revolutions)"
+  const json& reached = jsonMember(jsonMember(summary, "steady_state"), "reached");
+  const bool steady = !reached.is_boolean() || reached.get<bool>();
+  o << "drive sizing over the " << (steady ? "steady window" : "run's last part (no steady state)") << " t = "
+    << fmt(jsonMember(w, "t_begin"), "%.4g") << " ... " << fmt(jsonMember(w, "t_end"), "%.4g") << " s ("
+    << fmt(jsonMember(w, "revolutions"), "%.3g") << " crank revolutions)"
     << " and over the whole run t = " << fmt(jsonMember(wr, "t_begin"), "%.4g") << " ... " << fmt(jsonMember(wr, "t_end"), "%.4g")
     << " s (" << wholeRunWords(summary) << ")\n"
     << "  M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω_r rotor speed, ω0 synchronous speed\n";

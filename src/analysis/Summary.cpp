@@ -291,8 +291,11 @@ std::string summaryText(const nlohmann::json& s) {
       o << ": the crank speed repeats from revolution " << st.value("after_revolutions", -1) + 1 << " on (t = "
         << f(st.value("t_settled", json(nullptr)), "%.4g") << " s), of " << st.value("revolutions", 0)
         << " whole revolutions in the run";
-    o << "\n             metrics window: the last " << st.value("window_revolutions", 0) << " revolutions, t = "
-      << f(st.value("t_begin", json(nullptr)), "%.4g") << " ... " << f(st.value("t_end", json(nullptr)), "%.4g")
+    const int window_revs = st.value("window_revolutions", 0);
+    o << "\n             metrics window: "
+      << (window_revs > 0 ? "the last " + std::to_string(window_revs) + " revolutions"
+                          : std::string("the last 20 % of the run (it holds no whole crank revolution)"))
+      << ", t = " << f(st.value("t_begin", json(nullptr)), "%.4g") << " ... " << f(st.value("t_end", json(nullptr)), "%.4g")
       << " s\n";
   }
   const json ld = at("load");

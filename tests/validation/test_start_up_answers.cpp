@@ -351,6 +351,11 @@ TEST(StartUpAnswers, ADriveThatDoesNotStartHasNoRunUpAndItsPeaksAreOverTheRun) {
   EXPECT_NE(text.find("run-up time                   none: the drive does not start"), std::string::npos) << text;
   EXPECT_NE(text.find("over the run"), std::string::npos) << text;
   EXPECT_EQ(text.find("switching transient: above"), std::string::npos) << text;  // a static law never exceeds it
+  // The windows in words: the trial read "the last 0 revolutions" and "over the steady window"
+  // of a drive held at standstill.
+  EXPECT_NE(summaryText(j).find("metrics window: the last 20 % of the run (it holds no whole crank revolution)"),
+            std::string::npos) << summaryText(j);
+  EXPECT_NE(sizingText(j).find("drive sizing over the run's last part (no steady state)"), std::string::npos);
   // The whole running part of the run is the interval of the peaks.
   EXPECT_NEAR(j["start_up"]["start_end"].get<double>(), j["steady_state"]["t_end"].get<double>(), 1e-9);
 }
