@@ -1,7 +1,9 @@
 // `rollerdyn optimize SCENE --param KEY --range a:b [--param ...] --minimize METRIC
 //  [--constraint 'METRIC<=VALUE']... [--model reduced|multibody] [--method ...] [--max-evals N]
 //  [--set k=v]... [--out DIR]`: design optimization with NLopt (src/studies/Optimizer.h).
+#include <cmath>
 #include <iostream>
+#include <sstream>
 #include <memory>
 #include <stdexcept>
 
@@ -44,9 +46,19 @@ int runOptimizeCommand(const OptimizeArgs& a) {
   o.on_evaluation = [&o](const OptimizeEvaluation& e, std::size_t number) {
     std::cout << "[" << number << "]";
     for (std::size_t k = 0; k < o.params.size(); ++k) std::cout << ' ' << o.params[k].key << '=' << e.texts[k];
-    std::cout << "  " << o.minimize << ' ' << e.objective;
+    // A metric of a run that is not usable (no steady state, not turning) is no value: "n/a", as
+    // the sweep prints it (the trial read "delta 0.720692 infeasible" beside "delta nan"). A
+    // parameter minimised is a value whatever the run did.
+    bool minimise_parameter = false;
+    for (const auto& p : o.params) minimise_parameter = minimise_parameter || p.key == o.minimize;
+    auto value = [&e](double v, bool meaningful) {
+      std::ostringstream s;
+      if (meaningful && std::isfinite(v)) s << v; else s << "n/a";
+      return s.str();
+    };
+    std::cout << "  " << o.minimize << ' ' << value(e.objective, e.run_ok || minimise_parameter);
     for (std::size_t j = 0; j < o.constraints.size(); ++j)
-      std::cout << "  " << o.constraints[j].metric << ' ' << e.constraint_metrics[j];
+      std::cout << "  " << o.constraints[j].metric << ' ' << value(e.constraint_metrics[j], e.run_ok);
     std::cout << (e.feasible() ? "  feasible" : e.run_ok ? "  constraint violated" : "  infeasible: " + e.reason)
               << std::endl;
   };

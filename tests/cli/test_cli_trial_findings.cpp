@@ -1,6 +1,8 @@
 // The smaller findings of the 6-cart trial, each as the user met it on the command line.
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -134,6 +136,21 @@ TEST(CliTrialFindings, ValidateRunsFromAnyFolder) {
   const auto r = test::runRollerdynIn(cwd.str(), {"validate", "--quick", "--out", (cwd.path() / "v").string()}, 600);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_TRUE(fs::exists(cwd.path() / "v" / "report.md")) << r.out << r.err;
+}
+
+// optimize printed "delta 0.720692 infeasible: no steady state" and "delta nan": a metric of an
+// unusable run is "n/a", as in the sweep.
+TEST(CliTrialFindings, OptimizePrintsNoMetricOfAnUnusableRun) {
+  TempDir out("opt-na");
+  const auto r = runRollerdyn({"optimize", model("balanced-4cart.yaml"), "--set", "carts.count=6", "--set",
+                               "simulation.t_end=5", "--param", "crank.offset_deg", "--range", "0:180", "--minimize",
+                               "delta", "--model", "reduced", "--max-evals", "12", "--out", out.str()},
+                              120);
+  ASSERT_NE(r.out.find("infeasible"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find(" nan"), std::string::npos) << r.out;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);)
+    if (line.find("infeasible") != std::string::npos) EXPECT_NE(line.find("delta n/a"), std::string::npos) << line;
 }
 
 // simulate warned of crank.offset_deg = 1.0472 (60° in radians); a sweep over 0:3.1416:0.5236 ran
