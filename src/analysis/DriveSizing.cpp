@@ -495,7 +495,7 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
   // Still starting when the run ended: nothing is known of its running, so no verdict applies.
   const bool starting = s.motion == "starting";
   const std::string too_short = "the run ended before the drive settled (its speed still changes sign in the "
-                                "metrics window, it is still gaining speed, or its swings still grow): run "
+                                "metrics window, it is still gaining or losing speed revolution after revolution, or its swings still grow): run "
                                 "longer (simulation.t_end)";
   if (m.available) {
     SizingCheck h{"motor_heating", "thermal equivalent torque / nominal torque M_n, ≤ 1", kNaN, "", "", ""};

@@ -344,7 +344,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
                 " rad/s " + fmt("%.3g", r.run_up_time) + " s after switch-on";
   } else if (r.still_starting) {
     r.verdict = "the drive is still starting when the run ends: the crank has not settled (it rocks with swings "
-                "that still grow, its speed still changes sign within a revolution, or still grows from one "
+                "that still grow, its speed still changes sign within a revolution, or still grows or falls from one "
                 "revolution to the next), so whether and when it runs up cannot be given yet: run longer "
                 "(simulation.t_end)";
   } else if (std::isfinite(r.load_torque_start) && r.starting_torque_crank <= r.load_torque_start) {

@@ -223,6 +223,16 @@ TEST(RunMotion, ACrankStillGainingSpeedRevolutionAfterRevolutionIsStarting) {
   EXPECT_EQ(classifyMotion(s, run(0.2), m, 20.0, /*steady_reached=*/false), "starting");
   EXPECT_EQ(classifyMotion(s, run(0.0), m, 20.0, /*steady_reached=*/false), "turning");
   EXPECT_EQ(classifyMotion(s, run(0.2), m, 20.0, /*steady_reached=*/true), "turning");
+  // Slowing down as steadily, with the motor on (the third trial's initial.crank_speed = 102 rad/s:
+  // "turning" with δ = 0.04 of a crank falling from 102 to 50 rad/s): not settled either.
+  RunResult down;
+  down.model = "reduced";
+  down.timeseries.columns = {"t", "phi_crank", "omega_crank", "omega_motor"};
+  for (int i = 0; i <= 2000; ++i) {  // ω = 6 - 0.2·t
+    const double t = 0.01 * i;
+    down.timeseries.rows.push_back({t, 0.5 + 6 * t - 0.1 * t * t, 6 - 0.2 * t, 6 - 0.2 * t});
+  }
+  EXPECT_EQ(classifyMotion(s, down, m, 20.0, /*steady_reached=*/false), "starting");
 }
 
 // Finding of the 6-cart trial (90 deg offset, 300 kg·m² flywheel, 20 s): the swings grew every 2 s
