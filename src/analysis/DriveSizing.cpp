@@ -97,6 +97,17 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
       // no law for this scene: the Kloss key stands
     }
   m.nominal_torque = nominalMotorTorque(sc, &m.nominal_source);
+  if (!catalogue_law && cat.given() && cat.omega_nominal > 0 && cat.breakdown_torque_ratio > 0) {
+    const double M_kr_cat = cat.breakdown_torque_ratio * cat.nominalTorque();
+    if (std::abs(sc.motor.breakdown_torque / M_kr_cat - 1.0) > 0.1) {
+      char buf[300];
+      std::snprintf(buf, sizeof buf,
+                    "UNRELIABLE: motor.breakdown_torque = %.4g N·m contradicts the motor's catalogue, "
+                    "(M_k/M_n)·P_n/ω_n = %.4g N·m; the run and this verdict follow %.4g N·m",
+                    sc.motor.breakdown_torque, M_kr_cat, sc.motor.breakdown_torque);
+      m.data_conflict = buf;
+    }
+  }
   m.line_power_basis =
       z.motor_efficiency > 0 && s_n > 0
           ? "air-gap power M·ω0 (shaft power plus rotor copper losses) × (1 - s_n)/η_m, stator and iron "
@@ -652,6 +663,14 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
   s.coupling = sizeCoupling(sc, ts, b, e, n);
   s.joints = sizeJoints(sc, run, w);
   s.checks = sizingChecks(s, turning);
+  for (SizingCheck& c : s.checks) {
+    // A window that is no steady state is not called one (the third trial: "decided by the steady
+    // window" of a stalled drive whose reason said "over the run's last part").
+    if (!w.reached && c.window == kSteady) c.window = "run's last part (no steady state)";
+    // Motor data that contradict the motor's catalogue: the verdict follows the simulated motor,
+    // and says so (motor.breakdown_torque = 800 turned the catalogue motor's 0.966 FAIL into a pass).
+    if (!s.motor.data_conflict.empty() && c.name.rfind("motor_", 0) == 0) c.reason += "; " + s.motor.data_conflict;
+  }
   return s;
 }
 

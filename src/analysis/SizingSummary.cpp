@@ -229,14 +229,20 @@ std::string sizingText(const json& summary) {
     << " J per revolution; drive inertia at the crank J " << fmt(jsonMember(f, "inertia_effective"), "%.4g")
     << " kg·m²; δ " << fmt(jsonMember(f, "delta"), "%.4g") << "\n";
   if (jsonMember(f, "target_delta").is_number()) {
-    o << "                                    for δ* = " << fmt(jsonMember(f, "target_delta"), "%.4g") << ": flywheel "
-      << fmt(jsonMember(f, "flywheel_crankshaft"), "%.4g") << " kg·m² on the crankshaft or "
-      << fmt(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² on the motor shaft\n";
+    // The whole flywheel at each place, and what that adds to the present one (the third trial read
+    // "flywheel 1317 kg·m²" as the amount to add to the 1103 already fitted).
+    const json& added_now = jsonMember(f, "added_inertia_crankshaft");
+    const double J_req = jsonMember(f, "inertia_required").is_number() ? jsonMember(f, "inertia_required").get<double>() : NAN;
+    const double J_now = jsonMember(f, "inertia_effective").is_number() ? jsonMember(f, "inertia_effective").get<double>() : NAN;
+    o << "                                    for δ* = " << fmt(jsonMember(f, "target_delta"), "%.4g") << ": a flywheel of "
+      << fmt(jsonMember(f, "flywheel_crankshaft"), "%.4g") << " kg·m² in all on the crankshaft (" << fmt(added_now, "%.4g")
+      << " more than now) or " << fmt(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² in all on the motor shaft\n";
     if (jsonMember(f, "inertia_required").is_number())
-      o << "                                    (the larger of two estimates to add: by the excess work ΔA "
+      o << "                                    (the larger of two estimates of what to add: by the excess work ΔA "
         << fmt(jsonMember(f, "excess_work"), "%.4g") << " J of a revolution\n"
         << "                                    at constant speed, J* = ΔA/(δ*·ω̄²) = " << fmt(jsonMember(f, "inertia_required"), "%.4g")
-        << " kg·m² at the crank less the present J " << fmt(jsonMember(f, "inertia_effective"), "%.4g") << ";\n"
+        << " kg·m² at the crank less the present J " << fmt(jsonMember(f, "inertia_effective"), "%.4g") << ": "
+        << (J_req > J_now ? fmt(json(J_req - J_now), "%.4g") + " kg·m²" : std::string("nothing")) << ";\n"
         << "                                    by the run's own δ·J held constant, "
         << fmt(jsonMember(f, "added_inertia_energy_method"), "%.4g") << " kg·m² (short where the run's δ is large);\n"
         << "                                    motor slip and coupling elasticity neglected: on the papers' machines the\n"

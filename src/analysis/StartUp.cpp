@@ -187,7 +187,8 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   r.load_torque_mean = load ? load->revolution_mean : kNaN;
 
   // The steady window: on the rows before the switch-off.
-  r.t_off = std::isfinite(sc.motor_stop.t_off) ? sc.motor_stop.t_off : kNaN;
+  // A switch-off at or after the last row is none in this run (no stop to answer).
+  r.t_off = std::isfinite(sc.motor_stop.t_off) && sc.motor_stop.t_off < t.back() ? sc.motor_stop.t_off : kNaN;
   std::size_t n_running = t.size();  // rows before the switch-off
   if (std::isfinite(r.t_off)) n_running = std::min(n_running, firstRowAtOrAfter(t, r.t_off));
   const SteadyState ss = detectRunningSteadyState(ts, sc.simulation.steady_window_revolutions, r.t_off);

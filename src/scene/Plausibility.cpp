@@ -104,6 +104,15 @@ std::vector<std::string> plausibilityWarnings(const Scene& s) {
                   s.initial.crank_speed / s.reducer.ratio);
     out.push_back(buf);
   }
+  // A switch-off after the run's end never happens (the third trial's t_off = 20 s in a 10 s run
+  // printed a run-out "so far").
+  if (std::isfinite(s.motor_stop.t_off) && s.motor_stop.t_off >= s.simulation.t_end) {
+    std::snprintf(buf, sizeof buf,
+                  "motor.stop.t_off = %g s is at or after simulation.t_end = %g s: the run holds no switch-off "
+                  "(raise simulation.t_end to see the stop)",
+                  s.motor_stop.t_off, s.simulation.t_end);
+    out.push_back(buf);
+  }
   if (s.loads.gravity > 0 && std::abs(s.loads.gravity - 9.81) > 0.1) {
     std::snprintf(buf, sizeof buf,
                   "loads.gravity = %g m/s² is not the Earth's 9.81 m/s² (give 0 to leave gravity out)", s.loads.gravity);

@@ -87,6 +87,11 @@ TEST(Plausibility, SparseRowsACatalogueMismatchGravityAndAPercentTargetAreNamed)
   EXPECT_NE(w[0].find("initial.crank_speed = 102 rad/s is"), std::string::npos) << w[0];
   s.initial.crank_speed = 10.4;
   EXPECT_TRUE(plausibilityWarnings(s).empty());
+  // A switch-off after the end of the run.
+  s.motor_stop.t_off = 2 * s.simulation.t_end;
+  w = plausibilityWarnings(s);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("the run holds no switch-off"), std::string::npos) << w[0];
 }
 
 }  // namespace

@@ -93,6 +93,10 @@ TEST(FlywheelExcessWork, ARunWithTheProposedFlywheelIsNotMetByAnEstimate) {
   EXPECT_NEAR(f["flywheel_motor_shaft"].get<double>(), (1103 + added) / (s.reducer.delta * u * u), 1e-9);
   const std::string text = sizingText(j);
   EXPECT_NE(text.find("for δ* = 0.05"), std::string::npos) << text;
+  // The whole flywheel and what it adds, not one number read as either (the third trial).
+  EXPECT_NE(text.find("kg·m² in all on the crankshaft ("), std::string::npos) << text;
+  EXPECT_NE(text.find("more than now)"), std::string::npos) << text;
+  EXPECT_NE(text.find("less the present J 1310: nothing;"), std::string::npos) << text;
   EXPECT_EQ(text.find("already meets"), std::string::npos) << text;
 }
 
