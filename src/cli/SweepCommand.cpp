@@ -89,7 +89,7 @@ std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done
                 f(p.metric("coupling_torque_swing")).c_str(), state.c_str(), p.cpu_seconds);
   s += buf;
   if (!p.complete) s += "  (" + p.status + ")";
-  if (!p.warnings.empty()) s += "  [resonance warning]";
+  if (!p.warnings.empty()) s += "  [first-estimate resonance warning]";
   return s;
 }
 
@@ -210,7 +210,12 @@ int runSweepCommand(const SweepArgs& a) {
   for (const SweepPoint& p : r.points) rocking += p.motion == "rocking", stalled += p.motion == "stalled";
   if (rocking || stalled)
     std::cout << rocking << " point(s) rocking, " << stalled << " stalled (motion column; their δ, H, k_p are n/a)\n";
-  if (warned) std::cerr << "rollerdyn: warning: " << warned << " point(s) near a torsional resonance (sweep.json)\n";
+  // A sweep runs no modal analysis: its warnings are the first estimate's (two constant inertias),
+  // which simulate's modal verdict may overrule (six carts at 60°: heavily damped, no resonance).
+  if (warned)
+    std::cerr << "rollerdyn: warning: " << warned
+              << " point(s) near a torsional resonance by the first estimate (two constant inertias, sweep.json); "
+                 "the modal analysis of `simulate` on a point gives the verdict\n";
   std::cout << "outputs in " << out_dir << "/ (" << files.size() << " files)\n";
   if (failed)
     std::cerr << "rollerdyn: " << failed << " of " << r.points.size()

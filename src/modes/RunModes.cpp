@@ -96,9 +96,10 @@ std::string conclusion(const ModesReport& r) {
     const double pf = std::hypot(sigma, v.torsional_frequency);
     char f[300];
     std::snprintf(f, sizeof f,
-                  "; with its damping the mode's natural frequency from the Floquet multipliers is %.4g rad/s (%.3g "
-                  "times the crank speed), and it decays %s-fold per revolution",
-                  pf, pf / w, foldOf(v.torsional_modulus).c_str());
+                  "; from the Floquet multipliers, with the motor's slope and the coupling's damping, the mode "
+                  "oscillates at %.4g rad/s (damped) about an undamped natural frequency of %.4g rad/s (%.3g times "
+                  "the crank speed), and it decays %s-fold per revolution",
+                  v.torsional_frequency, pf, pf / w, foldOf(v.torsional_modulus).c_str());
     decay = f;
   } else if (v.has_torsional) {
     decay = "; the coupling mode decays more than a million-fold per revolution (its multiplier is below 1e-6, too "

@@ -65,6 +65,13 @@ TEST(ResonanceVerdict, TheDecayPerRevolutionIsTheLargestMultipliersInverse) {
   digits.erase(std::remove(digits.begin(), digits.end(), ','), digits.end());
   EXPECT_NEAR(std::stod(digits), 1 / mu, 0.005 / mu) << v.line;  // three significant digits
   EXPECT_EQ(v.line.find("more than a million-fold"), std::string::npos) << v.line;  // every |μ| here is > 1e-6
+  // The two frequencies from the multipliers named for what they are: the third trial read the
+  // undamped one (25.9 rad/s) labelled "with its damping" beside `modes`' damped 14.85 rad/s.
+  std::smatch f;
+  ASSERT_TRUE(std::regex_search(v.line, f, std::regex("oscillates at ([0-9.]+) rad/s \\(damped\\) about an undamped "
+                                                      "natural frequency of ([0-9.]+) rad/s")))
+      << v.line;
+  EXPECT_LT(std::stod(f[1].str()), std::stod(f[2].str())) << v.line;  // damped below undamped
 }
 
 // The orders named are the layout's (the list `modes` prints: 6, 12, 18, 24 for six carts at 60°),
