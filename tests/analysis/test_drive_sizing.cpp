@@ -156,7 +156,7 @@ TEST(DriveSizing, LockedRotorFailsEveryMotorCheckAndDrawsItsAirGapPower) {
   EXPECT_GT(s.motor.power_line_mean, 1000.0);
   // Rotor heat s·M·ω0 against nominal s_n·M_n·ω0: √(M/(s_n·M_n)) ≈ 3.8, far above the RMS ratio 0.585.
   EXPECT_REL(s.motor.whole_run.thermal_over_nominal, std::sqrt(M / (s_n * 200)), 1e-3);
-  EXPECT_EQ(s.checks[0].window, "steady window");  // continuous running (no duty given)
+  EXPECT_EQ(s.checks[0].window, "run's last part (no steady state)");  // continuous running; a held rotor has no steady state
   EXPECT_REL(s.checks[0].value, std::sqrt(M / (s_n * 200)), 1e-3);
   // The breakdown ratio of a rotor held at standstill (0.2 here) is no margin: a FAIL never shows a
   // value within its limit (the trial read "0.226 FAIL" against a limit of 0.9025); the figure
