@@ -11,17 +11,14 @@
 #include "modes/ModalAnalysis.h"
 #include "modes/RunModes.h"
 #include "scene/SceneParser.h"
+#include "support/SixCartScene.h"
 
 using namespace rollerdyn;
 using namespace rollerdyn::modes;
 
 namespace {
 
-Scene sixCarts(const std::vector<std::string>& more = {}) {
-  std::vector<std::string> o = {"carts.count=6", "crank.offset_deg=60"};
-  o.insert(o.end(), more.begin(), more.end());
-  return parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml", o);
-}
+Scene sixCarts(const std::vector<std::string>& more = {}) { return test_scenes::sixCartsAt60(more); }
 
 ModesReport light(const Scene& s, int max_newton = 30, int warmup_periods = 3) {
   ModesOptions o;
