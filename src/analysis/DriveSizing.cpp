@@ -540,7 +540,8 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
       // "steady running" that is a locked rotor means nothing, so only the window's own figures.
       h.verdict = "FAIL";
       h.reason = not_turning + ": a motor that cannot drive its load overheats whatever the torque; RMS torque / M_n "
-                 "over the run's last part " + fmt3(steady) + ", its rotor losses against the nominal ones " + fmt3(whole);
+                 "over the run's last part " + fmt3(steady) + ", the thermal equivalent √(rotor losses / nominal rotor losses) " +
+                 fmt3(whole);
       if (!(h.value > 1.0)) h.value = kNaN;
     }
     out.push_back(h);

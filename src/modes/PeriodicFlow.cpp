@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <Eigen/LU>
 
@@ -143,7 +144,10 @@ FlowResult flowOverPeriod(const PeriodicSystem& sys, const Eigen::VectorXd& x0, 
       ++r.rejected;
       h *= 0.1;
       if (h < 1e-14 * S) {
-        r.failure = "non-finite state at s = " + std::to_string(s);
+        char b[160];
+        std::snprintf(b, sizeof b, "the motion left the range where the model is defined %.2g of the way through "
+                      "the period", s / S);
+        r.failure = b;
         return r;
       }
       continue;

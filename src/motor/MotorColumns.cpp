@@ -19,7 +19,7 @@ std::vector<std::string> motorColumns(const MotorLaw* law, const Supply& supply)
 
 void appendMotorColumns(const MotorLaw* law, const Supply& supply, double stator_current, const SupplyState& state,
                         double brake_torque_crank, std::vector<double>& row) {
-  if (lawHasCurrent(law)) row.push_back(stator_current);
+  if (lawHasCurrent(law)) row.push_back(stator_current * state.line_current_factor);  // the line current
   if (!supply.constant()) {
     row.push_back(state.connected ? state.voltage : 0.0);
     row.push_back(state.frequency);

@@ -31,6 +31,11 @@ struct SupplyState {
   double phase = 0.0;      // angle of the voltage space phasor in the frame that turns with the
                            // supply [rad]: the point on the wave at switch-on; it jumps by π/6
                            // at a star-delta changeover
+  double line_current_factor = 1.0;  // line current over the equivalent star's phase current [-]:
+                           // 1/√3 for a delta-rated motor's windings connected in star. The laws
+                           // model the delta machine as its equivalent star under U/√3, which gives
+                           // the star's torque (1/3) but 1/√3 of the line current; the star's real
+                           // line current, its winding current, is 1/3 of direct on line.
 };
 
 // What a law computes at one instant. NaN where a law has no such quantity (Kloss has no

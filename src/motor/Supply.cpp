@@ -90,6 +90,7 @@ SupplyState Supply::state(const SupplyPhase& p, double t, double omega_rotor) co
       return s;
     case Stage::Star:
       s.voltage = 1.0 / std::sqrt(3.0);
+      s.line_current_factor = 1.0 / std::sqrt(3.0);
       return s;
     case Stage::Rated:
     case Stage::Restarted:

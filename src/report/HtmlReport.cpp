@@ -145,6 +145,12 @@ std::string runStatusHtml(const nlohmann::json& s) {
     for (const json& w : warnings) h << "<li>" << htmlEscape(w.is_string() ? w.get<std::string>() : w.dump()) << "</li>";
     h << "</ul></div>\n";
   }
+  // The modal analysis' verdict on the first estimate's resonance warning, beside it as on the
+  // console (the fourth trial's page showed the alarm and never the "no torsional resonance").
+  const json modal = at(s, "resonance_modal");
+  if (modal.is_object() && modal.contains("conclusion") && modal["conclusion"].is_string())
+    h << "<div class=\"status ok\">Resonance verdict (modal analysis about the steady motion): "
+      << htmlEscape(modal["conclusion"].get<std::string>()) << "</div>\n";
 
   return h.str();
 }

@@ -27,13 +27,14 @@ std::vector<std::string> plausibilityWarnings(const Scene& s) {
                   l.key, l.value, kImplausibleLength, l.value, l.value / 1000.0);
     out.push_back(buf);
   }
-  // A crank angle typed in radians under a key in degrees: a value below 2π that is a round angle
-  // (a multiple of 5°) in radians and not a whole number of degrees (1.0472 is 60° typed as
-  // radians; 3 or 5 degrees are whole and stay silent).
+  // A crank angle typed in radians under a key in degrees: a value below 2π that is not a whole
+  // number of degrees (1.0472 is 60° typed as radians; 3 or 5 degrees are whole and stay silent).
   auto radiansTyped = [&out](const std::string& key, double v) {
     if (!(v > 0.0 && v < 2 * M_PI + 1e-3)) return;
     const double deg = v * 180.0 / M_PI;
-    if (std::abs(deg - 5.0 * std::round(deg / 5.0)) > 0.05 || std::abs(v - std::round(v)) < 1e-9) return;
+    // Any fractional value below 2π: crank offsets are tens of degrees, and a radian value typed
+    // with two or three decimals (3.14, 2.09, 0.52) lands near no round angle (the fourth trial).
+    if (std::abs(v - std::round(v)) < 1e-9) return;
     char buf[300];
     std::snprintf(buf, sizeof buf,
                   "%s = %g is read as %g° (the key is in degrees); as radians it would be %.4g°: if you meant "

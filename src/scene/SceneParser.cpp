@@ -1,5 +1,7 @@
 #include "scene/SceneParser.h"
 
+#include "scene/DidYouMean.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -166,7 +168,9 @@ std::vector<int> readSides(const Reader& in, int count) {
       return sides;
     }
   }
-  if (!node.IsSequence()) in.fail(spec, describeNode(node));
+  if (!node.IsSequence())
+    in.fail(spec, describeNode(node) + (node.IsScalar() ? didYouMean(node.Scalar(), {"same", "opposite", "alternate"})
+                                                        : std::string()));
   if (node.size() != static_cast<size_t>(count)) {
     const std::string want = "a list of " + std::to_string(count) +
                              " entries same/opposite, one per cart (carts.count = " +

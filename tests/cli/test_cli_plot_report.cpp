@@ -152,6 +152,12 @@ TEST(CliReport, WritesOneSelfContainedPage) {
     EXPECT_TRUE(html.find(std::string("<h2>") + section) != std::string::npos ||
                 html.find(std::string("<h3>") + section) != std::string::npos)
         << "missing section " << section;
+  // The modal analysis' resonance verdict is on the page as on the console (the fourth trial's
+  // page showed the first estimate's alarm only).
+  const auto summary = nlohmann::json::parse(slurp(out.path() / "summary.json"));
+  ASSERT_TRUE(summary["resonance_modal"].is_object());
+  ASSERT_TRUE(summary["resonance_modal"]["conclusion"].is_string()) << summary["resonance_modal"].dump();
+  EXPECT_NE(html.find("Resonance verdict (modal analysis about the steady motion): "), std::string::npos);
   // The count printed is the folder's: the trial read "16 figures" beside 23 (the modes' left out).
   std::size_t pngs = 0;
   for (const auto& f : fs::directory_iterator(out.path() / "figures")) pngs += f.path().extension() == ".png";

@@ -29,7 +29,11 @@ TEST(Plausibility, AnAngleTypedInRadiansAndACartMassInTonnesAreNamed) {
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("crank.offset_deg = 1.0472 is read as 1.0472°"), std::string::npos) << w[0];
   EXPECT_NE(w[0].find("write 60"), std::string::npos) << w[0];
-  for (double deg : {3.0, 5.0, 45.0, 90.0, 1.3}) {  // whole degrees, or no round angle in radians
+  for (double deg : {3.14, 2.09, 0.52, 6.28}) {  // the fourth trial's radians, near no round angle
+    s.crank.offset = deg * M_PI / 180.0;
+    EXPECT_EQ(plausibilityWarnings(s).size(), 1u) << deg;
+  }
+  for (double deg : {3.0, 5.0, 45.0, 90.0, 7.5}) {  // whole degrees, or beyond 2π
     s.crank.offset = deg * M_PI / 180.0;
     EXPECT_TRUE(plausibilityWarnings(s).empty()) << deg;
   }
