@@ -138,7 +138,7 @@ void addLawNotes(const Scene& sc, const MotorLaw& law, StartUp& r) {
 
 }  // namespace
 
-double largestSteadyTorque(const MotorLaw& law, const SupplyState& supply) {
+SteadyTorquePeak largestSteadyTorquePoint(const MotorLaw& law, const SupplyState& supply) {
   const double w_top = law.synchronousSpeed() * supply.frequency;
   constexpr int kScan = 400;
   int best = 0;
@@ -159,7 +159,12 @@ double largestSteadyTorque(const MotorLaw& law, const SupplyState& supply) {
       a = c, c = d, Mc = Md, d = a + g * (b - a), Md = law.steadyTorque(supply, d);
     }
   }
-  return std::max({best_M, Mc, Md});
+  if (best_M >= Mc && best_M >= Md) return {w_top * best / kScan, best_M};
+  return Mc >= Md ? SteadyTorquePeak{c, Mc} : SteadyTorquePeak{d, Md};
+}
+
+double largestSteadyTorque(const MotorLaw& law, const SupplyState& supply) {
+  return largestSteadyTorquePoint(law, supply).torque;
 }
 
 StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* law, const StartLoad* load,

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analysis/DriveSizing.h"
+#include "analysis/StartUp.h"
 #include "motor/SharedMotorLaw.h"
 #include "report/FigureSupport.h"
 
@@ -41,12 +42,9 @@ MotorMarks motorMarks(const Scene& sc) {
   // (the second trial saw the M_kr marker at Kloss's s_kr beside a curve peaking elsewhere).
   if (sc.induction.model == MotorModel::Circuit || sc.induction.model == MotorModel::Park) try {
       const std::shared_ptr<const MotorLaw> law = sharedMotorLaw(sc);
-      double best = -INFINITY;
-      for (int i = 0; i <= 2000; ++i) {
-        const double w = w0 * i / 2000.0, M = law->steadyTorque(SupplyState{}, w);
-        if (M > best) best = M, k.w_kr = w;
-      }
-      k.M_kr = best;
+      const SteadyTorquePeak peak = largestSteadyTorquePoint(*law, SupplyState{});  // the sizing's M_kr too
+      k.w_kr = peak.speed;
+      k.M_kr = peak.torque;
       const MotorCatalogue& cat = sc.induction.catalogue;
       if (sc.sizing.motor_omega_nominal <= 0 && cat.given() && cat.omega_nominal > 0) {
         k.w_n = cat.omega_nominal;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "analysis/StartUp.h"
 #include "reduced/ReducedModel.h"
 
 namespace rollerdyn {
@@ -26,12 +27,11 @@ double steadyCrankSpeed(const ReducedModel& model, const Scene& scene) {
   // ReducedModel::motorTorque takes the motor side's speed in crank coordinates (ω_r/u).
   const double w_sync = w0 / u;
   const double Q = meanLoad(0.98 * w_sync);
-  double w_top = 0, M_top = -INFINITY;
-  for (int i = 0; i <= 400; ++i) {
-    const double w = w_sync * i / 400.0, M = model.motorTorque(w);
-    if (M > M_top) M_top = M, w_top = w;
-  }
-  if (!(M_top > Q)) return std::numeric_limits<double>::quiet_NaN();
+  // The curve's largest torque, where it lies (the law's own search), in crank coordinates.
+  const MotorLaw* law = model.motorLaw();
+  if (!law) return std::numeric_limits<double>::quiet_NaN();
+  const double w_top = largestSteadyTorquePoint(*law, SupplyState{}).speed / u;
+  if (!(model.motorTorque(w_top) > Q)) return std::numeric_limits<double>::quiet_NaN();
   double a = w_top, b = w_sync;  // M(a) > Q > M(b) = 0 on the running branch
   for (int it = 0; it < 60; ++it) {
     const double m = 0.5 * (a + b);
