@@ -404,12 +404,15 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
 
   size_t k_out = 0;  // next output time to fill
   auto emitUpTo = [&](double t_next, double phi_next, double w_next, double eps) {
-    // Rows on the output grid inside [t, t_next]: φ and φ̇ linear in time across the step
-    // (the same linear-ω assumption as the trapezoidal time of eq. (10)), ε = eq. (11).
+    // Rows on the output grid inside [t, t_next]: ω linear in time across the step, the
+    // assumption behind the trapezoidal time of eq. (10), so ε = eq. (11) is constant and φ is
+    // its integral, quadratic in time. It reaches φ_next at t_next exactly because of eq. (10);
+    // interpolating φ linearly instead made the rows' φ disagree with ∫ω dt by up to Δφ/4.
     while (k_out < times.size() && times[k_out] <= t_next) {
       const double a = (t_next > t) ? (times[k_out] - t) / (t_next - t) : 1.0;
+      const double tau = a * (t_next - t);
       Eigen::VectorXd yo = Eigen::VectorXd::Zero(m.stateSize());
-      yo(m.iPhi()) = phi + a * (phi_next - phi);
+      yo(m.iPhi()) = (a < 1.0) ? phi + w * tau + 0.5 * eps * tau * tau : phi_next;
       yo(m.iOmega()) = w + a * (w_next - w);
       ModelEvaluation e = m.evaluate(yo);
       ++res.stats.realizations;
