@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "analysis/LoadWork.h"
 #include "analysis/Summary.h"
 #include "cli/CliTestSupport.h"
 #include "multibody/MultibodySimulation.h"
@@ -102,6 +103,47 @@ TEST(LoadWork, AnEmptyCartAbsorbsNothingInBothModels) {
     EXPECT_NE(j["load"]["reading"].get<std::string>().find("15924, 0, 15924, 15924 (carts 1 to 4)"), std::string::npos)
         << j["load"]["reading"];
   }
+}
+
+// The integral itself, on a hand-built time series whose closed form is known: rolling resistance
+// alone (P = μ_r·R·|v'| once |v'| ≫ v_s), each cart's speed linear in time, v_j = j·(1 + 2t) m/s,
+// on coarse rows (Δt = 0.1 s). The power is then linear in time and the trapezoid on the rows is
+// exact: W_j = μ_r·R·j·(t + t²) between the rows' times. An end-point (rectangle) rule would be off
+// by ½·ΔP·Δt per row, 5 % here, while on a real run's periodic power it hides in the noise.
+TEST(LoadWork, TrapezoidOnTheRowsIsExactForPowerLinearInTime) {
+  Scene s = parseSceneFile(model("balanced-4cart.yaml"), {"loads.rolling_resistance=0.05", "loads.roller_force_front=0",
+                                                          "loads.roller_force_rear=0"});
+  s.loads.velocity_smoothing = 1e-4;  // tanh(|v'|/v_s) = 1 to double precision for |v'| ≥ 1 m/s
+  const double muR = 0.05 * (s.loads.roller_normal_front + s.loads.roller_normal_rear);  // N
+  ASSERT_GT(muR, 0.0);
+  RunResult run;
+  run.timeseries.columns = {"t", "v_cart_1", "v_cart_2", "v_cart_3", "v_cart_4"};
+  for (int i = 0; i <= 10; ++i) {
+    const double t = 0.1 * i;
+    std::vector<double> row{t};
+    for (int j = 1; j <= 4; ++j) row.push_back(s.carts.side[j - 1] * j * (1 + 2 * t));
+    run.timeseries.rows.push_back(row);
+  }
+  SteadyState window;  // rows 3 ... 8 (t = 0.3 ... 0.8 s), half-open as detectSteadyState gives it
+  window.reached = true;
+  window.row_begin = 3;
+  window.row_end = 9;
+  window.finite_rows = 11;
+  const LoadWork w = computeLoadWork(s, run, window);
+  ASSERT_TRUE(w.available);
+  ASSERT_EQ(w.carts.size(), 4u);
+  auto W = [&](int j, double t0, double t1) { return muR * j * ((t1 + t1 * t1) - (t0 + t0 * t0)); };
+  for (int j = 1; j <= 4; ++j) {
+    const CartLoadWork& c = w.carts[j - 1];
+    EXPECT_NEAR(c.work_whole_run, W(j, 0.0, 1.0), 1e-12 * W(j, 0.0, 1.0)) << "cart " << j;
+    EXPECT_NEAR(c.work_steady, W(j, 0.3, 0.8), 1e-12 * W(j, 0.3, 0.8)) << "cart " << j;
+    EXPECT_NEAR(c.gross_steady, c.work_steady, 1e-12 * c.work_steady) << "a dissipating load: net = gross";
+    EXPECT_NEAR(c.power_mean_steady, W(j, 0.3, 0.8) / 0.5, 1e-12 * W(j, 0.3, 0.8)) << "cart " << j;
+  }
+  EXPECT_NEAR(w.power_mean_per_cart_whole_run, (W(1, 0, 1) + W(2, 0, 1) + W(3, 0, 1) + W(4, 0, 1)) / 4.0,
+              1e-9 * W(4, 0, 1));
+  EXPECT_NEAR(w.net_over_gross_steady, 1.0, 1e-12);
+  EXPECT_TRUE(w.warning.empty()) << w.warning;
 }
 
 }  // namespace
