@@ -33,6 +33,7 @@ of the code or the tests. It cannot tell which other tests would fail too: that 
 suite. Writes OUT/law-tests.md and OUT/law-tests.json.
 """
 import argparse
+import contextlib
 import datetime
 import json
 import os
@@ -132,6 +133,22 @@ def apply_plant(root, plant):
         text = open(path, encoding="utf-8").read()
         with open(path, "w", encoding="utf-8") as f:
             f.write(text.replace(find, replace, 1))
+
+
+@contextlib.contextmanager
+def planted(scratch, plant, jobs, log):
+    """The scratch copy with the plant in and rebuilt; yields the build's process (returncode 0
+    when it compiled) and takes the plant out again, whatever happens inside."""
+    try:
+        apply_plant(scratch, plant)
+        yield build(scratch, jobs, log)
+    finally:
+        for file_, _, _ in plant["edits"]:
+            run(["git", "checkout", "--", file_], scratch, log)
+
+
+def compile_error(built):
+    return built.stdout.strip().splitlines()[-1][:200]
 
 
 def run(cmd, cwd, log=None, env=None, check=True):
@@ -311,19 +328,14 @@ def run_law_tests(scratch, plants, args, commit, log, t0):
         t1 = time.time()
         r = {"id": p["id"], "name": p["name"]}
         numbers = law_test_numbers(scratch, p["expect"])
-        try:
-            apply_plant(scratch, p)
-            built = build(scratch, args.jobs, log)
+        with planted(scratch, p, args.jobs, log) as built:
             if built.returncode != 0:
-                r.update(status="does not compile", error=built.stdout.strip().splitlines()[-1][:200])
+                r.update(status="does not compile", error=compile_error(built))
             elif not numbers:
                 r.update(status="no test matches its expect: patterns", error="")
             else:
                 failed, ran, _ = run_tests(scratch, args.jobs, args.test_timeout, log, numbers)
                 r.update(status="done", ran=ran or 0, by_law_test=[f.split(" (")[0] for f in failed])
-        finally:
-            for file_, _, _ in p["edits"]:
-                run(["git", "checkout", "--", file_], scratch, log)
         r["minutes"] = (time.time() - t1) / 60
         results.append(r)
         print(f"{p['id']} {p['name']}: " + ("caught by " + ", ".join(r["by_law_test"]) if r.get("by_law_test") else
@@ -428,20 +440,15 @@ def main():
     for p in plants:
         t1 = time.time()
         r = {"id": p["id"], "name": p["name"], "commit": commit}
-        try:
-            apply_plant(scratch, p)
-            built = build(scratch, args.jobs, log)
+        with planted(scratch, p, args.jobs, log) as built:
             r["build_minutes"] = (time.time() - t1) / 60
             if built.returncode != 0:
-                r.update(status="does not compile", error=built.stdout.strip().splitlines()[-1][:200])
+                r.update(status="does not compile", error=compile_error(built))
             else:
                 t2 = time.time()
                 failed, _, _ = run_tests(scratch, args.jobs, args.test_timeout, log)
                 r["test_minutes"] = (time.time() - t2) / 60
                 r.update(status="done", failed=failed, by_law_test=matches(p["expect"], failed))
-        finally:
-            for file_, _, _ in p["edits"]:
-                run(["git", "checkout", "--", file_], scratch, log)
         r["minutes"] = (time.time() - t1) / 60
         results.append(r)
         meta["minutes"] = (time.time() - t0) / 60
