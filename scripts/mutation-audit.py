@@ -306,17 +306,22 @@ def write_outputs(out_dir, meta, results, plants):
         f.write("\n".join(lines) + "\n")
 
 
-def law_test_numbers(scratch, patterns):
-    """ctest's numbers of the tests whose names match any of the patterns, matched as `matches`
-    does (Python's re.search; ctest's own -R engine allows too few parentheses for a union)."""
+def ctest_listing(scratch):
+    """[(ctest's test number, test name)] of the scratch build."""
     listing = run(["ctest", "--test-dir", "build", "-N"], scratch, env=scratch_env(scratch)).stdout
-    tests = re.findall(r"Test\s+#(\d+): (\S+)", listing)
-    return [int(n) for n, name in tests if any(re.search(p, name) for p in patterns)]
+    return [(int(n), name) for n, name in re.findall(r"Test\s+#(\d+): (\S+)", listing)]
+
+
+def law_test_numbers(tests, patterns):
+    """The numbers of the tests whose names match any of the patterns, matched as `matches` does
+    (Python's re.search; ctest's own -R engine allows too few parentheses for a union)."""
+    return [n for n, name in tests if any(re.search(p, name) for p in patterns)]
 
 
 def run_law_tests(scratch, plants, args, commit, log, t0):
     """The quick mode (--law-tests): every plant against its own law's tests only."""
-    union = law_test_numbers(scratch, [e for p in plants for e in p["expect"]])
+    tests = ctest_listing(scratch)
+    union = law_test_numbers(tests, [e for p in plants for e in p["expect"]])
     if not union:
         sys.exit("mutation-audit: no test matches the plants' expect: patterns")
     failed, total, rc = run_tests(scratch, args.jobs, args.test_timeout, log, union)
@@ -327,7 +332,7 @@ def run_law_tests(scratch, plants, args, commit, log, t0):
     for p in plants:
         t1 = time.time()
         r = {"id": p["id"], "name": p["name"]}
-        numbers = law_test_numbers(scratch, p["expect"])
+        numbers = law_test_numbers(tests, p["expect"])
         with planted(scratch, p, args.jobs, log) as built:
             if built.returncode != 0:
                 r.update(status="does not compile", error=compile_error(built))
@@ -335,7 +340,7 @@ def run_law_tests(scratch, plants, args, commit, log, t0):
                 r.update(status="no test matches its expect: patterns", error="")
             else:
                 failed, ran, _ = run_tests(scratch, args.jobs, args.test_timeout, log, numbers)
-                r.update(status="done", ran=ran or 0, by_law_test=[f.split(" (")[0] for f in failed])
+                r.update(status="done", ran=ran or 0, by_law_test=matches(p["expect"], failed))
         r["minutes"] = (time.time() - t1) / 60
         results.append(r)
         print(f"{p['id']} {p['name']}: " + ("caught by " + ", ".join(r["by_law_test"]) if r.get("by_law_test") else
