@@ -29,8 +29,8 @@ int runUnderMpirun(int ranks, const std::vector<std::string>& args, const std::s
   ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   ::setenv("OMPI_MCA_btl_vader_single_copy_mechanism", "none", 1);
-  std::string cmd = "cd '" ROLLERDYN_SOURCE_DIR "' && mpirun --oversubscribe -n " + std::to_string(ranks) +
-                    " '" ROLLERDYN_BINARY "'";
+  std::string cmd = "cd '" + std::string(ROLLERDYN_SOURCE_DIR) + "' && mpirun --oversubscribe -n " +
+                    std::to_string(ranks) + " '" + std::string(ROLLERDYN_BINARY) + "'";
   for (const std::string& a : args) cmd += " '" + a + "'";
   cmd += " > '" + dir + "/mpirun.log' 2>&1";
   const int status = std::system(cmd.c_str());
