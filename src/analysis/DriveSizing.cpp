@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "analysis/SizingChecks.h"
 #include "motor/SharedMotorLaw.h"
 
 namespace rollerdyn {
@@ -480,124 +481,6 @@ double linePower(double M, double w0, double s_n, double eta_m) {
   return P_ag >= 0 ? P_ag * k : P_ag / k;
 }
 
-namespace {
-
-const char* kWhole = "whole run";
-const char* kDuty = "duty cycle (steady running and starts)";
-constexpr double kBreakdownMargin = 0.95 * 0.95;  // M_kr at 95 % of the rated voltage [-]
-const char* kSteady = "steady window";
-
-std::string verdictOf(double ratio, bool strict) {
-  if (!std::isfinite(ratio)) return "";
-  return (strict ? ratio < 1.0 : ratio <= 1.0) ? "pass" : "FAIL";
-}
-
-std::string fmt3(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
-
-std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
-  std::vector<SizingCheck> out;
-  const MotorSizing& m = s.motor;
-  const std::string not_turning =
-      "the drive does not turn (" + (s.motion.empty() ? std::string("not turning") : s.motion) + ")";
-  // Still starting when the run ended: nothing is known of its running, so no verdict applies.
-  const bool starting = s.motion == "starting";
-  const std::string too_short = "the run ended before the drive settled (its speed still changes sign in the "
-                                "metrics window, it is still gaining or losing speed revolution after revolution, or its swings still grow): run "
-                                "longer (simulation.t_end)";
-  if (m.available) {
-    SizingCheck h{"motor_heating", "thermal equivalent torque / nominal torque M_n, ≤ 1", kNaN, "", "", ""};
-    const double steady = m.rms_over_nominal, whole = m.whole_run.thermal_over_nominal;
-    const bool whole_decides = !(whole <= steady);  // NaN steady: the whole run decides
-    h.value = whole_decides ? whole : steady;
-    h.window = whole_decides ? (m.whole_run.duty_starts_per_hour > 0 ? kDuty : kWhole) : kSteady;
-    h.reason = whole_decides ? m.whole_run.thermal_basis + " (" + fmt3(whole) + "; steady window RMS/M_n " +
-                                   fmt3(steady) + ")"
-                             : "RMS torque / M_n over the steady window (" + fmt3(steady) +
-                                   "; whole run thermal equivalent " + fmt3(whole) + ")";
-    h.verdict = verdictOf(h.value, false);
-    if (m.whole_run.continuous_running) {
-      // Continuous running: the steady window decides, by the larger of the RMS rule and the
-      // steady losses.
-      h.value = std::isfinite(whole) ? std::max(steady, whole) : steady;
-      h.window = kSteady;
-      h.reason = "RMS torque / M_n over the steady window (" + fmt3(steady) + "); " + m.whole_run.thermal_basis;
-      h.verdict = verdictOf(h.value, false);
-      if (m.whole_run.starts_per_hour < 1.0) {  // NaN compares false: no verdict from an unknown start
-        h.verdict = "FAIL";
-        h.reason = "the motor cannot take even one start per hour at this load: " + h.reason;
-      }
-    }
-    if (starting) {
-      h.verdict = "not applicable";
-      h.reason = too_short;
-    } else if (!turning) {
-      // A value within its limit beside FAIL would read as a contradiction: the figure of a rotor
-      // held at standstill is no margin, so it moves into the reason; and a start's heat against
-      // "steady running" that is a locked rotor means nothing, so only the window's own figures.
-      h.verdict = "FAIL";
-      h.reason = not_turning + ": a motor that cannot drive its load overheats whatever the torque; RMS torque / M_n "
-                 "over the run's last part " + fmt3(steady) + ", the thermal equivalent √(rotor losses / nominal rotor losses) " +
-                 fmt3(whole);
-      if (!(h.value > 1.0)) h.value = kNaN;
-    }
-    out.push_back(h);
-    // Margin for the supply: the breakdown torque falls with the square of the voltage, and
-    // IEC 60034-1 (zone A) lets the supply sit 5 % low, where M_kr is 0.95² = 0.9025 of its
-    // rating. A steady peak above that stalls the motor on a supply within its tolerance.
-    const double limit = kBreakdownMargin;
-    SizingCheck k{"motor_breakdown",
-                  "peak |M| / breakdown torque M_kr over the steady window, < 0.9025 (M_kr at 95 % supply voltage, "
-                  "IEC 60034-1 zone A; a start passes M_kr by design)",
-                  m.peak_over_breakdown, verdictOf(m.peak_over_breakdown / limit, true), kSteady, ""};
-    k.reason = "steady window: motoring peak " + fmt3(m.torque_motoring_peak) + " N·m, braking (generating) peak " +
-               fmt3(m.torque_generating_peak) + " N·m, the larger against M_kr " + fmt3(m.breakdown_torque) + " N·m";
-    if (m.torque_generating_peak > m.torque_motoring_peak)
-      k.reason += " (the load drives the motor as a generator there; the catalogue gives no generating breakdown "
-                  "torque, so the motoring one is used, on the safe side" +
-                  (m.breakdown_torque_generating != m.breakdown_torque
-                       ? "; the fitted law's own, an extrapolation, is " + fmt3(m.breakdown_torque_generating) + " N·m)"
-                       : std::string(")"));
-    k.reason += "; whole run peak |M| " + fmt3(m.whole_run.torque_shaft_peak) + " N·m";
-    if (starting) {
-      k.verdict = "not applicable";
-      k.reason = too_short;
-    } else if (!turning) {
-      k.verdict = "FAIL";
-      k.reason = not_turning + ": " + (s.stall_cause.empty() ? std::string("the load needs more than the motor gives")
-                                                             : s.stall_cause) +
-                 " (the measured peak |M| / M_kr " + fmt3(m.peak_over_breakdown) +
-                 " is that of a drive that does not run, not a margin)";
-      if (!(k.value >= limit)) k.value = kNaN;
-    }
-    out.push_back(k);
-  }
-  const CouplingSizing& c = s.coupling;
-  if (c.available) {
-    SizingCheck k{"coupling", "peak |M| / rated torque of the coupling, ≤ 1", kNaN, "", "", ""};
-    const bool whole_decides = !(c.peak_whole_run <= c.peak);
-    k.value = whole_decides ? c.peak_over_rating_whole_run : c.peak_over_rating;
-    k.window = whole_decides ? kWhole : kSteady;
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "peak %.4g N·m at t = %.4g s (whole run); steady window peak %.4g N·m",
-                  c.peak_whole_run, c.t_peak_whole_run, c.peak);
-    k.reason = buf;
-    if (!std::isfinite(c.rating)) k.reason += "; rating not given (sizing.coupling_rated_torque)";
-    k.verdict = verdictOf(k.value, false);
-    if (!turning && k.verdict == "pass") {
-      k.verdict = "not applicable";
-      k.reason = not_turning + ": the coupling torque of a working drive is not known; " + k.reason;
-    }
-    out.push_back(k);
-  }
-  return out;
-}
-
-}  // namespace
-
 DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const SteadyState& w,
                                bool turning, double delta, const std::string& motion) {
   // The start-up answers with the scene's motor law, for the start's heat (none without a law).
@@ -637,37 +520,26 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
     s.revolutions = std::abs(ts.rows[e - 1][k] - ts.rows[b][k]) / kTwoPi;
   }
   s.motor = sizeMotor(sc, ts, b, e, n, s.revolutions, turning, start_up);
-  // Why a drive that does not turn fails, from the torques the start-up answers compare (the
-  // second trial's drive held by its start-angle load read "the load needs more than the motor
-  // gives" while the motor's breakdown torque was 56 times the mean load).
-  if (!turning && start_up && start_up->applicable) {
-    char buf[400] = "";
-    const StartUp& u = *start_up;
-    if (std::isfinite(u.load_torque_start) && u.starting_torque_crank <= u.load_torque_start)
-      std::snprintf(buf, sizeof buf,
-                    "the motor's starting torque %.4g N·m at the crank is below the load %.4g N·m at the start angle "
-                    "(its breakdown torque %.4g N·m %s the load averaged over a revolution, %.4g N·m)",
-                    u.starting_torque_crank, u.load_torque_start, u.largest_torque_crank,
-                    u.largest_torque_crank > u.load_torque_mean ? "would carry" : "is below", u.load_torque_mean);
-    else if (std::isfinite(u.load_torque_mean) && u.largest_torque_crank <= u.load_torque_mean)
-      std::snprintf(buf, sizeof buf,
-                    "the load averaged over a revolution, %.4g N·m at the crank, exceeds the motor's breakdown torque "
-                    "%.4g N·m", u.load_torque_mean, u.largest_torque_crank);
-    else if (std::isfinite(u.load_torque_mean))
-      std::snprintf(buf, sizeof buf,
-                    "the motor can break away and carry the mean load (%.4g N·m against %.4g N·m), but the load peaks "
-                    "near a dead centre together with the inertia hold the crank back", u.largest_torque_crank,
-                    u.load_torque_mean);
-    s.stall_cause = buf;
+  s.steady_reached = w.reached;
+  s.steady_not_reached = w.not_reached;
+  s.start_load_ratio = kNaN;
+  if (start_up && start_up->applicable) {
+    // Why a drive does not start or turn, and whether it can: the start-up answers' one sentence.
+    s.stall_cause = start_up->stall_cause;
+    s.can_start_from_rest = start_up->can_start_from_rest;
+    s.start_simulated = start_up->from_rest;
+    s.start_verdict = start_up->verdict;
+    s.start_load_ratio = std::max(start_up->load_torque_start / start_up->starting_torque_held_crank,
+                                  start_up->load_torque_mean / start_up->largest_torque_held_crank);
   }
-  s.flywheel = sizeFlywheel(sc, ts, w, b, e, turning, delta, load);
+  s.flywheel = sizeFlywheel(sc, ts, w, b, e, turning && w.reached, delta, load);  // a steady revolution's figures
   s.coupling = sizeCoupling(sc, ts, b, e, n);
   s.joints = sizeJoints(sc, run, w);
   s.checks = sizingChecks(s, turning);
   for (SizingCheck& c : s.checks) {
     // A window that is no steady state is not called one (the third trial: "decided by the steady
     // window" of a stalled drive whose reason said "over the run's last part").
-    if (!w.reached && c.window == kSteady) c.window = "run's last part (no steady state)";
+    if (!w.reached && c.window == kWindowSteady) c.window = "run's last part (no steady state)";
     // Motor data that contradict the motor's catalogue: the verdict follows the simulated motor,
     // and says so (motor.breakdown_torque = 800 turned the catalogue motor's 0.966 FAIL into a pass).
     if (!s.motor.data_conflict.empty() && c.name.rfind("motor_", 0) == 0) c.reason += "; " + s.motor.data_conflict;

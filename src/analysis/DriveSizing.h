@@ -118,7 +118,7 @@ struct CouplingSizing {
 
 // One check a drive is signed off with.
 struct SizingCheck {
-  std::string name;     // motor_heating, motor_breakdown, coupling
+  std::string name;     // start, motor_heating, motor_breakdown, coupling
   std::string what;     // in words, with the limit
   double value = 0;     // the deciding ratio [-] (NaN when not computable)
   std::string verdict;  // "pass", "FAIL", "not applicable" or "" (nothing to compare with)
@@ -141,14 +141,26 @@ struct DriveSizing {
   double t_begin = 0, t_end = 0;  // steady window [s]
   double run_t_begin = 0, run_t_end = 0;  // whole run: the finite rows [s]
   std::string motion;             // the crank's motion (RunMotion.h)
-  std::string stall_cause;        // why a drive that does not turn fails, from the start-up answers'
-                                  // torques against the loads; "" when not known
+  std::string stall_cause;        // why a drive that does not turn fails: the start-up answers' one
+                                  // sentence (StartUp::stall_cause); "" when not known
+  bool steady_reached = false;    // the run reached a steady state (SteadyState::reached): the checks
+                                  // that read the steady window apply only then
+  std::string steady_not_reached; // SteadyState::not_reached: why not and how long to run; "" when reached
+  // The start from rest, from the start-up answers (StartUp.h): whether this run simulates one
+  // (switched on at rest within the run), whether and how the drive starts.
+  bool start_simulated = false;   // the run starts the machine from rest
+  int can_start_from_rest = -1;   // StartUp::can_start_from_rest: 1 yes, 0 no, -1 not known
+  std::string start_verdict;      // StartUp::verdict
+  double start_load_ratio = 0;    // the larger of load at the start angle / starting torque and mean
+                                  // load / largest torque, both under the supply the starting method
+                                  // holds at standstill (StartUp.h) [-]: < 1 lets the motor start;
+                                  // NaN when the loads are not known
   double revolutions = 0;         // crank revolutions in the window [-]
   MotorSizing motor;
   FlywheelSizing flywheel;
   CouplingSizing coupling;
   std::vector<JointSizing> joints;  // per cart: guide rollers, rod end, crank pin; then main bearing
-  std::vector<SizingCheck> checks;  // motor_heating, motor_breakdown, coupling
+  std::vector<SizingCheck> checks;  // start, motor_heating, motor_breakdown, coupling
   // The most loaded joint of each kind (largest P, else largest peak); nullptr when none.
   const JointSizing* worst(const std::string& joint) const;
 };

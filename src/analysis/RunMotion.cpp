@@ -8,8 +8,6 @@
 
 #include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
-#include "analysis/StartUp.h"
-#include "motor/SharedMotorLaw.h"
 
 namespace rollerdyn {
 
@@ -126,54 +124,6 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
   if (!sc.motor.enabled && !steady_reached) return "coasting";
   if (!steady_reached && ts.has("t") && ts.has("phi_crank") && stillGainingSpeed(ts)) return "starting";
   return "turning";
-}
-
-double startingTorqueAtCrank(const Scene& sc) {
-  // The scene's motor law at standstill under the rated supply (MotorLaw::steadyTorque).
-  try {
-    return sharedMotorLaw(sc)->steadyTorque(SupplyState{}, 0.0) * sc.reducer.ratio * sc.reducer.efficiency;
-  } catch (const std::exception&) {
-    return NAN;  // no law for this scene: the explanation says there are no motor data
-  }
-}
-
-double breakdownTorqueAtCrank(const Scene& sc) {
-  // Kloss's M_kr for the Kloss laws; the largest torque of the law's curve otherwise.
-  if (sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic)
-    return sc.motor.breakdown_torque * sc.reducer.ratio * sc.reducer.efficiency;
-  try {
-    return largestSteadyTorque(*sharedMotorLaw(sc), SupplyState{}) * sc.reducer.ratio * sc.reducer.efficiency;
-  } catch (const std::exception&) {
-    return NAN;
-  }
-}
-
-std::string stallExplanation(const Scene& sc, const StartLoad* load) {
-  const double M_start = startingTorqueAtCrank(sc), M_kr = breakdownTorqueAtCrank(sc);
-  char buf[640];
-  if (!std::isfinite(M_start) || !(M_kr > 0)) return "the scene gives no motor data to compare the loads with";
-  if (!load || !std::isfinite(load->at_start_angle) || !std::isfinite(load->revolution_mean)) {
-    std::snprintf(buf, sizeof buf,
-                  "the motor gives %.4g N·m at the crank when starting (the motor law's torque at standstill × u·η) "
-                  "and at most %.4g N·m (its largest torque × u·η); the load torques were not "
-                  "evaluated",
-                  M_start, M_kr);
-    return buf;
-  }
-  const double L0 = load->at_start_angle, Lm = load->revolution_mean;
-  const char* verdict =
-      Lm >= M_kr   ? "the load averaged over a revolution exceeds even the breakdown torque, so "
-                     "no steady running is possible"
-      : L0 >= M_start ? "the starting torque is below the load at the start angle, so the motor "
-                        "cannot turn the crank forwards from there"
-                      : "the motor can start and carry the mean load, so the stall comes from the "
-                        "load peaks near a dead centre together with the inertia";
-  std::snprintf(buf, sizeof buf,
-                "starting torque at the crank %.4g N·m (the motor law's torque at standstill × u·η) against a "
-                "load torque of %.4g N·m at the start angle %.4g deg; breakdown torque at the crank "
-                "%.4g N·m (the law's largest torque × u·η) against a load torque of %.4g N·m averaged over a revolution: %s",
-                M_start, L0, sc.initial.crank_angle * 180.0 / M_PI, M_kr, Lm, verdict);
-  return buf;
 }
 
 std::string stalledCrankTravel(const Scene& sc, const RunResult& run) {

@@ -17,8 +17,7 @@
 //   "coasting" no motor, the crank still turns but has not settled: it is slowing down and the run
 //              ended before it came to rest; per-revolution metrics do not apply,
 //   "unknown"  no finite crank speed in the window.
-// And, for a stalled run, why: the motor's starting torque and its breakdown torque, reduced to
-// the crank, against the load torque at the start angle and averaged over a revolution.
+// Why a stalled drive stalls is the start-up answers' one sentence (StartUp.h, stall_cause).
 #pragma once
 
 #include <limits>
@@ -55,16 +54,6 @@ struct StartLoad {
   double excess_work = std::numeric_limits<double>::quiet_NaN();
   double excess_work_speed = std::numeric_limits<double>::quiet_NaN();  // that crank speed [rad/s]
 };
-
-// Torques of the motor reduced to the crank (× u·η, Loveikin, Pochka, Romasevych (2018) eq. (37)):
-// the scene's motor law (motor.model) at standstill under the rated supply, and its largest torque
-// (M_kr·u·η for the Kloss laws) [N·m]; NaN when the scene's law cannot be built.
-double startingTorqueAtCrank(const Scene& scene);
-double breakdownTorqueAtCrank(const Scene& scene);
-
-// One or two sentences saying why a drive stalls, from the numbers above; a sentence that the
-// loads are not known when `load` is null.
-std::string stallExplanation(const Scene& scene, const StartLoad* load);
 
 // For a drive that did not start: how far its crank moved from the start angle before it was
 // held (a load that drives it backwards, swings), one sentence; "" when it stayed within 5° of it.

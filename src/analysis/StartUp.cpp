@@ -136,6 +136,76 @@ void addLawNotes(const Scene& sc, const MotorLaw& law, StartUp& r) {
   }
 }
 
+// The supply the starting method holds while the rotor stands still: the supply at switch-on with
+// every time-triggered step of the start applied up to the switch-off (a star-delta changeover by
+// speed, or any step triggered by speed, never comes at standstill).
+SupplyState heldAtStandstill(const Supply& supply) {
+  SupplyPhase p = supply.initialPhase();
+  SupplyState held = supply.atSwitchOn();
+  for (int step = 0; step < 8; ++step) {
+    const double t_event = supply.nextEventTime(p);
+    if (!std::isfinite(t_event) || t_event >= supply.stop().t_off) break;
+    SupplyPhase q = p;
+    if (!supply.applyDueEvents(q, t_event, 0.0, false, nullptr, nullptr)) break;
+    p = q;
+    // A ramp is read at its end; a stage without a timed end at any later time.
+    const double t_next = supply.nextEventTime(p);
+    const SupplyState s = supply.state(p, std::isfinite(t_next) ? t_next : t_event + 1e9, 0.0);
+    if (s.connected) held = s;
+  }
+  return held;
+}
+
+std::string supplyWords(const SupplyState& s) {
+  if (s.line_current_factor < 1.0) return "in star, U_n/√3 on each winding";
+  if (s.voltage >= 1.0 - 1e-12 && s.frequency >= 1.0 - 1e-12) return "at the rated supply";
+  char buf[96];
+  if (s.frequency < 1.0 - 1e-12)
+    std::snprintf(buf, sizeof buf, "at U = %.3g·U_n and f = %.3g·f_n", s.voltage, s.frequency);
+  else
+    std::snprintf(buf, sizeof buf, "at U = %.3g·U_n", s.voltage);
+  return buf;
+}
+
+// Whether the torques allow a start from rest, and the one sentence that says why a drive does not
+// start or run (StartUp::stall_cause).
+void judgeStartFromTorques(const Scene& sc, StartUp& r) {
+  if (!std::isfinite(r.load_torque_start) || !std::isfinite(r.load_torque_mean)) {
+    r.can_start_from_rest = -1;
+    return;
+  }
+  const std::string held = r.held_supply == "at the rated supply" ? "" : " " + r.held_supply;
+  // Every reason that holds, the one that ends the start first (breaking away) first.
+  std::string cause;
+  if (r.starting_torque_held_crank <= r.load_torque_start) {
+    cause = "the motor's starting torque " + fmt("%.4g", r.starting_torque_held_crank) + " N·m at the crank (" + r.method +
+            held + ", the law's torque at standstill × u·η) is below the load torque " + fmt("%.4g", r.load_torque_start) +
+            " N·m at the start angle " + fmt("%.4g", sc.initial.crank_angle * 180 / M_PI) +
+            " deg, so it cannot turn the crank forwards";
+    if (r.starting_torque_rated_crank > r.load_torque_start)
+      cause += " (at the rated supply it would give " + fmt("%.4g", r.starting_torque_rated_crank) + " N·m)";
+  }
+  if (r.largest_torque_held_crank <= r.load_torque_mean) {
+    cause += std::string(cause.empty() ? "the motor's" : "; and its") + " largest torque " +
+             fmt("%.4g", r.largest_torque_held_crank) + " N·m at the crank (" + r.method + held +
+             ") is below the load averaged over a revolution, " + fmt("%.4g", r.load_torque_mean) +
+             " N·m, so it cannot run the machine up" +
+             (r.largest_torque_crank <= r.load_torque_mean ? std::string(": no steady running is possible")
+                                                           : " (at the rated supply it would give " +
+                                                                 fmt("%.4g", r.largest_torque_crank) + " N·m)");
+  }
+  if (!cause.empty()) {
+    r.can_start_from_rest = 0;
+    r.stall_cause = cause;
+  } else {
+    r.can_start_from_rest = 1;
+    r.stall_cause = "the motor can break away (" + fmt("%.4g", r.starting_torque_held_crank) + " N·m against " +
+                    fmt("%.4g", r.load_torque_start) + " N·m at the start angle) and carry the mean load (" +
+                    fmt("%.4g", r.largest_torque_held_crank) + " N·m against " + fmt("%.4g", r.load_torque_mean) +
+                    " N·m), so the load peaks near a dead centre together with the inertia hold the crank back";
+  }
+}
+
 }  // namespace
 
 SteadyTorquePeak largestSteadyTorquePoint(const MotorLaw& law, const SupplyState& supply) {
@@ -188,8 +258,15 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   const bool kloss_curve = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
   r.largest_torque_crank =
       (kloss_curve ? sc.motor.breakdown_torque : largestSteadyTorque(*law, SupplyState{})) * u * eta;
+  const SupplyState held = heldAtStandstill(supply);
+  r.held_supply = supplyWords(held);
+  r.starting_torque_held_crank = law->steadyTorque(held, 0.0) * u * eta;
+  r.largest_torque_held_crank =
+      (kloss_curve ? sc.motor.breakdown_torque * held.voltage * held.voltage / (held.frequency * held.frequency)
+                   : largestSteadyTorque(*law, held)) * u * eta;
   r.load_torque_start = load ? load->at_start_angle : kNaN;
   r.load_torque_mean = load ? load->revolution_mean : kNaN;
+  judgeStartFromTorques(sc, r);
 
   // The steady window: on the rows before the switch-off.
   // A switch-off at or after the last row is none in this run (no stop to answer).
@@ -342,9 +419,8 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
                             : "The machine had not come to rest when the run ended; the run-out is counted up to the end.");
   }
 
-  // Verdict.
-  const std::string at_start = " at the crank (the motor law's torque at standstill under the supply at switch-on, " +
-                               r.method + ", × u·η)";
+  // Verdict: the cause of a drive that does not start is the one sentence judgeStartFromTorques
+  // wrote, so the run status and the sizing say the same.
   if (r.starts) {
     r.verdict = "the drive starts: the crank reaches 95 % of its steady mean speed " + fmt("%.4g", r.steady_mean_speed) +
                 " rad/s " + fmt("%.3g", r.run_up_time) + " s after switch-on";
@@ -353,25 +429,21 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
                 "that still grow, its speed still changes sign within a revolution, or still grows or falls from one "
                 "revolution to the next), so whether and when it runs up cannot be given yet: run longer "
                 "(simulation.t_end)";
-  } else if (std::isfinite(r.load_torque_start) && r.starting_torque_crank <= r.load_torque_start) {
-    r.verdict = "the drive does not start: its starting torque " + fmt("%.4g", r.starting_torque_crank) + " N·m" +
-                at_start + " is below the load torque " + fmt("%.4g", r.load_torque_start) +
-                " N·m at the start angle " + fmt("%.4g", sc.initial.crank_angle * 180 / M_PI) + " deg";
+  } else if (r.can_start_from_rest == 1 && sc.motor_start.method == StartMethod::StarDelta &&
+             std::isfinite(sc.motor_start.changeover_speed) &&
+             (wm.empty() || peakOf(wm, 0, wm.size(), false) * u < sc.motor_start.changeover_speed)) {
+    r.stall_cause = "the changeover speed " + fmt("%.4g", sc.motor_start.changeover_speed) +
+                    " rad/s was never reached in star (the star torque is a third of the delta torque): the load and "
+                    "the inertia hold the motor below it";
+    r.verdict = "the drive does not run up: " + r.stall_cause;
+  } else if (!turning && !r.stall_cause.empty()) {
+    r.verdict = (r.can_start_from_rest == 0 ? "the drive does not start: " : "the drive does not reach a steady turning "
+                                                                             "motion within the run: ") +
+                r.stall_cause;
     const std::string travel = stalledCrankTravel(sc, run);
     if (!travel.empty()) r.verdict += "; " + travel;
-  } else if (std::isfinite(r.load_torque_mean) && r.largest_torque_crank <= r.load_torque_mean) {
-    r.verdict = "the drive does not run up: the motor's largest torque " + fmt("%.4g", r.largest_torque_crank) +
-                " N·m at the crank is below the load averaged over a revolution, " + fmt("%.4g", r.load_torque_mean) +
-                " N·m: no steady running is possible";
-  } else if (sc.motor_start.method == StartMethod::StarDelta && std::isfinite(sc.motor_start.changeover_speed) &&
-             (wm.empty() || peakOf(wm, 0, wm.size(), false) * u < sc.motor_start.changeover_speed)) {
-    r.verdict = "the drive does not run up: the changeover speed " + fmt("%.4g", sc.motor_start.changeover_speed) +
-                " rad/s was never reached in star (the star torque is a third of the delta torque)";
   } else if (!turning) {
-    r.verdict = "the drive does not reach a steady turning motion within the run: the motor can break away (" +
-                fmt("%.4g", r.starting_torque_crank) + " N·m against " + fmt("%.4g", r.load_torque_start) +
-                " N·m at the start angle) and carry the mean load, so the load peaks near a dead centre together "
-                "with the inertia hold it back";
+    r.verdict = "the drive does not reach a steady turning motion within the run (the load torques were not evaluated)";
   } else {
     r.verdict = "the crank does not reach 95 % of its steady mean speed after switch-on within the run";
   }
@@ -383,6 +455,11 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
     r.verdict = "no start from rest in this run: it begins with the machine already turning (initial.crank_speed = " +
                 fmt("%.4g", sc.initial.crank_speed) + " rad/s) and the motor running; set initial.crank_speed: 0 for "
                 "the start-up answers";
+    // Whether it could start from rest is still known from the torques: say it where the start is asked.
+    if (r.can_start_from_rest == 0)
+      r.verdict += ". From rest it would not start: " + r.stall_cause;
+    else if (r.can_start_from_rest == 1)
+      r.verdict += ". From rest the torques at standstill allow a start (the run-up itself is not simulated)";
     r.starts = false;
     r.run_up_time = kNaN;
     r.start_end = r.t_on;

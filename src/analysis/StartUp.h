@@ -59,8 +59,22 @@ struct StartUp {
   double starting_torque_crank = 0;        // steadyTorque(supply at switch-on, ω_r = 0)·u·η [N·m]
   double starting_torque_rated_crank = 0;  // the same under the rated supply [N·m]
   double largest_torque_crank = 0;         // max over ω_r of steadyTorque(rated)·u·η [N·m]
+  // The supply the starting method holds while the rotor stands still (every timed step of the
+  // start applied; a step triggered by speed never comes at standstill): star for a star-delta
+  // changeover by speed, the rated supply after a timed changeover or a ramp.
+  std::string held_supply;                 // that supply in words
+  double starting_torque_held_crank = 0;   // steadyTorque(held supply, ω_r = 0)·u·η [N·m]
+  double largest_torque_held_crank = 0;    // max over ω_r of steadyTorque(held supply)·u·η [N·m]
   double load_torque_start = 0;            // load at the start angle (StartLoad) [N·m at the crank]
   double load_torque_mean = 0;             // load averaged over a revolution [N·m at the crank]
+  // Whether the motor can start the machine from rest, from these torques and the loads alone
+  // (before looking at the run): 1 yes, 0 no, -1 not known (the loads were not evaluated).
+  int can_start_from_rest = -1;
+  // Why a drive does not start or does not run, in one sentence from the torques against the loads;
+  // the run status, the start-up answers and the sizing all print this one (never their own). When
+  // the torques allow a start: the load peaks near a dead centre with the inertia. "" when the
+  // loads are not known.
+  std::string stall_cause;
   // What the run did.
   bool starts = false;          // the crank reached 95 % of the steady mean speed
   bool still_starting = false;  // the run ended before the drive settled (motion "starting",

@@ -57,8 +57,13 @@ json startUpJson(const StartUp& s) {
   j["starting_torque_crank"] = num(s.starting_torque_crank);
   j["starting_torque_rated_crank"] = num(s.starting_torque_rated_crank);
   j["largest_torque_crank"] = num(s.largest_torque_crank);
+  j["held_supply"] = s.held_supply;
+  j["starting_torque_held_crank"] = num(s.starting_torque_held_crank);
+  j["largest_torque_held_crank"] = num(s.largest_torque_held_crank);
   j["load_torque_start"] = num(s.load_torque_start);
   j["load_torque_mean"] = num(s.load_torque_mean);
+  j["can_start_from_rest"] = s.can_start_from_rest < 0 ? json(nullptr) : json(s.can_start_from_rest == 1);
+  j["stall_cause"] = s.stall_cause.empty() ? json(nullptr) : json(s.stall_cause);
   j["steady"] = {{"mean_speed", num(s.steady_mean_speed)},
                  {"reached", s.steady_reached},
                  {"t_begin", num(s.steady_begin)},
@@ -108,6 +113,11 @@ std::string startUpText(const json& summary) {
     << " under the rated supply; the static characteristic's largest, the breakdown torque, "
     << f(jsonMember(s, "largest_torque_crank"), "%.4g") << ") against a load of " << f(jsonMember(s, "load_torque_start"), "%.4g")
     << " N·m at the start angle, " << f(jsonMember(s, "load_torque_mean"), "%.4g") << " N·m mean\n";
+  const json& held = jsonMember(s, "held_supply");
+  if (held.is_string() && held.get<std::string>() != "at the rated supply")
+    o << "  held at standstill            " << held.get<std::string>() << " until the rotor turns: starting torque "
+      << f(jsonMember(s, "starting_torque_held_crank"), "%.4g") << " N·m, largest " << f(jsonMember(s, "largest_torque_held_crank"), "%.4g")
+      << " N·m at the crank\n";
   const json& st = jsonMember(s, "steady");
   if (jsonMember(s, "from_rest").is_boolean() && !jsonMember(s, "from_rest").get<bool>()) {
     // No start in the run: only the stop, the notes and the legend.

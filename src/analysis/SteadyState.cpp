@@ -77,6 +77,7 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions,
     setRowRange(t, n, s);
     const std::string why = "no whole crank revolution; window = last 20 % of the run";
     s.note = s.note.empty() ? why : s.note + "; " + why;
+    s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], std::max(wanted, 2));
     return s;
   }
 
@@ -100,7 +101,28 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions,
   s.t_begin = s.revolutions[count - s.window_revolutions].t_begin;
   s.t_end = s.revolutions.back().t_end;
   setRowRange(t, n, s);
+  s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], needed);
   return s;
+}
+
+std::string steadyStateNotReached(const SteadyState& s, double t_first, double t_last, int window_revolutions) {
+  if (s.reached) return "";
+  const double span = t_last - t_first;
+  double at_least = t_first + 2.0 * span;
+  if (!s.revolutions.empty()) {
+    const CrankRevolution& last = s.revolutions.back();
+    at_least = std::max(at_least, t_last + (window_revolutions + 1) * (last.t_end - last.t_begin));
+  }
+  // Round up to two significant figures so the advice reads as a setting.
+  const double scale = std::pow(10.0, std::floor(std::log10(std::max(at_least, 1e-9))) - 1.0);
+  at_least = std::ceil(at_least / scale - 1e-9) * scale;
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "steady state not reached within the run (t = %.4g ... %.4g s: the last %d revolutions' mean crank "
+                "speeds do not agree within %.2g %%, or there are fewer than %d): run at least %.3g s "
+                "(simulation.t_end)",
+                t_first, t_last, window_revolutions, 100.0 * s.relative_tolerance, window_revolutions, at_least);
+  return buf;
 }
 
 SteadyState detectRunningSteadyState(const Table& ts, double window_revolutions, double t_off) {
@@ -123,6 +145,14 @@ SteadyState detectRunningSteadyState(const Table& ts, double window_revolutions,
   char why[96];
   std::snprintf(why, sizeof why, "steady window searched before the switch-off at t = %.4g s", t_off);
   s.note = s.note.empty() ? why : s.note + "; " + why;
+  // The running ends at the switch-off: a longer run would not help, a later switch-off would.
+  const std::size_t at = s.not_reached.rfind("run at least ");
+  if (at != std::string::npos) {
+    char later[160];
+    std::snprintf(later, sizeof later,
+                  "switch the motor off later (motor.stop.t_off = %.4g s): the running before it is too short", t_off);
+    s.not_reached = s.not_reached.substr(0, at) + later;
+  }
   return s;
 }
 

@@ -60,7 +60,17 @@ struct SteadyState {
   std::size_t finite_rows = 0;   // rows before the first non-finite t / phi_crank / omega_crank
   std::vector<CrankRevolution> revolutions;
   std::string note;              // why the detection fell back or could not judge; empty otherwise
+  // When no steady state was reached: what is missing and how long to run, e.g. "steady state not
+  // reached within the run (t = 0 ... 3 s): run at least 6 s (simulation.t_end) ..."; the one
+  // sentence every check that needs the steady window gives as its reason. Empty when reached.
+  std::string not_reached;
 };
+
+// The advice above for a window `s` of a run whose finite rows end at `t_last` [s], started at
+// `t_first` [s], with `window_revolutions` wanted: at least twice the run, and at least the run
+// plus the revolutions the judgement needs at the last revolution's duration (a lower bound: a
+// drive whose speed still drifts needs longer).
+std::string steadyStateNotReached(const SteadyState& s, double t_first, double t_last, int window_revolutions);
 
 // Finds the steady-state window of a timeseries with columns t, phi_crank (omega_crank is only
 // checked for finiteness). `window_revolutions` is scene.simulation.steady_window_revolutions,

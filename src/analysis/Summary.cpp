@@ -85,8 +85,11 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   // Loveikin and Pochka (2007), eq. (12)-(14): ratios to the mean speed of a turning crank; a
   // stalled or rocking crank has no such mean, so they are null there, not a huge number.
   std::vector<std::string> not_meaningful;
+  // They are also null where no steady state was reached: a window that holds the start or a
+  // drift is no revolution of the machine's running (a 4 s run of six carts read δ = 1.265).
+  const bool steady_turning = turning && ss.reached;
   auto perRevolution = [&](const char* key, double v) -> json {
-    if (turning) return num(key, v);
+    if (steady_turning) return num(key, v);
     not_meaningful.push_back(key);
     return nullptr;
   };
@@ -112,7 +115,8 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
       {"t_begin", num("steady_state.t_begin", ss.t_begin)},
       {"t_end", num("steady_state.t_end", ss.t_end)},
       {"rows", m.rows},
-      {"note", ss.note}};
+      {"note", ss.note},
+      {"not_reached", ss.not_reached.empty() ? json(nullptr) : json(ss.not_reached)}};
 
   const EnergyAudit& en = run.energy;
   j["energy"] = {
@@ -186,7 +190,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
     } catch (const std::exception&) {
       // a scene the starting method cannot be built for (e.g. a test scene without loads' data)
     }
-  const DriveSizing sizing = computeDriveSizing(scene, run, ss, turning, turning ? m.coefficients.delta : NAN,
+  const DriveSizing sizing = computeDriveSizing(scene, run, ss, turning, steady_turning ? m.coefficients.delta : NAN,
                                                 crank_motion, start_up.get(), start_load);
   j["sizing"] = sizingJson(sizing);
   j["sizing"]["flywheel"]["location"] = toString(scene.flywheel.location);
@@ -204,7 +208,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
         "; not computed by the reduced model: crank pin, main bearing (run the multibody model)";
   else if (!run.reactions.columns.empty())
     j["sizing"]["joints_basis"] = "multibody model, joint reaction forces";
-  if (!turning) {
+  if (!steady_turning) {
     not_meaningful.push_back("sizing.flywheel");
     not_meaningful.push_back("sizing.motor.energy_per_revolution");
   }
@@ -222,12 +226,21 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
     status += buf;
   }
   if (crank_motion == "stalled") {
-    std::string why = stallExplanation(scene, start_load);
+    // The start-up answers' one sentence (StartUp::stall_cause), which the sizing's checks print too.
+    std::string why = start_up && !start_up->stall_cause.empty()
+                          ? start_up->stall_cause
+                          : std::string(start_up ? "the load torques at the start were not evaluated"
+                                                 : "the scene gives no motor law to compare the loads with");
     const std::string travel = stalledCrankTravel(scene, run);
     if (!travel.empty()) why += "; " + travel;
+    auto orNull = [&](const char* key, double v, bool known) { return known ? num(key, v) : json(nullptr); };
+    const bool su = start_up != nullptr;
     j["stall"] = {{"explanation", why},
-                  {"starting_torque_crank", startingTorqueAtCrank(scene)},
-                  {"breakdown_torque_crank", breakdownTorqueAtCrank(scene)},
+                  {"starting_torque_crank", orNull("stall.starting_torque_crank",
+                                                   su ? start_up->starting_torque_held_crank : NAN, su)},
+                  {"starting_supply", su ? json(start_up->held_supply) : json(nullptr)},
+                  {"breakdown_torque_crank", orNull("stall.breakdown_torque_crank",
+                                                    su ? start_up->largest_torque_held_crank : NAN, su)},
                   {"load_torque_start", start_load ? num("stall.load_torque_start", start_load->at_start_angle) : json(nullptr)},
                   {"load_torque_mean", start_load ? num("stall.load_torque_mean", start_load->revolution_mean) : json(nullptr)}};
     status += "; the drive stalled: " + why;
@@ -287,6 +300,13 @@ std::string summaryText(const nlohmann::json& s) {
     // after_revolutions is the 0-based index of the first settled revolution: the speed repeats
     // from the start of revolution after_revolutions + 1 (counted from 1) on.
     o << "steady state " << (st.value("reached", false) ? "reached" : "NOT reached");
+    if (st.value("not_reached", json(nullptr)).is_string()) {
+      // The sentence begins "steady state not reached": the line has said so already.
+      const std::string why = str(st.value("not_reached", json("")));
+      const std::string lead = "steady state not reached";
+      o << (why.rfind(lead, 0) == 0 ? why.substr(lead.size()) : ": " + why)
+        << "; δ, H, k_p and the steady window's checks do not apply";
+    }
     if (st.value("reached", false) && st.value("after_revolutions", -1) >= 0)
       o << ": the crank speed repeats from revolution " << st.value("after_revolutions", -1) + 1 << " on (t = "
         << f(st.value("t_settled", json(nullptr)), "%.4g") << " s), of " << st.value("revolutions", 0)
@@ -295,6 +315,7 @@ std::string summaryText(const nlohmann::json& s) {
     o << "\n             metrics window: "
       << (window_revs > 0 ? "the last " + std::to_string(window_revs) + " revolutions"
                           : std::string("the last 20 % of the run (it holds no whole crank revolution)"))
+      << (st.value("reached", false) ? "" : " (no steady state: the window may hold the start)")
       << ", t = " << f(st.value("t_begin", json(nullptr)), "%.4g") << " ... " << f(st.value("t_end", json(nullptr)), "%.4g")
       << " s\n";
   }

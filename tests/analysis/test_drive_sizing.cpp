@@ -16,6 +16,14 @@ using namespace rollerdyn;
 
 namespace {
 
+// The check of that name (the list's order is not part of its meaning).
+const SizingCheck& named(const DriveSizing& s, const std::string& name) {
+  for (const SizingCheck& c : s.checks)
+    if (c.name == name) return c;
+  throw std::runtime_error("no check " + name);
+}
+
+
 constexpr double kPi = 3.14159265358979323846;
 // Run parameters.
 constexpr double Om = 9.0;           // crank speed Ω [rad/s]
@@ -144,11 +152,11 @@ TEST(DriveSizing, LockedRotorFailsEveryMotorCheckAndDrawsItsAirGapPower) {
     rr.timeseries.rows.push_back({0.005 * i, 0.5, 5e-4, 5e-4, u * eta * M, u * eta * M});
   const SteadyState w = detectSteadyState(rr.timeseries, sc.simulation.steady_window_revolutions);
   const DriveSizing s = computeDriveSizing(sc, rr, w, false, NAN, "stalled");
-  ASSERT_EQ(s.checks.size(), 3u);
+  ASSERT_EQ(s.checks.size(), 4u);  // start, heating, breakdown, coupling
   for (const SizingCheck& c : s.checks) EXPECT_NE(c.verdict, "pass") << c.name << ": " << c.reason;
-  EXPECT_EQ(s.checks[0].verdict, "FAIL");
-  EXPECT_EQ(s.checks[1].verdict, "FAIL");
-  EXPECT_NE(s.checks[0].reason.find("stalled"), std::string::npos);
+  EXPECT_EQ(named(s, "motor_heating").verdict, "FAIL");
+  EXPECT_EQ(named(s, "motor_breakdown").verdict, "FAIL");
+  EXPECT_NE(named(s, "motor_heating").reason.find("stalled"), std::string::npos);
   // Locked: all the air-gap power M·ω0 is heat in the rotor; the line gives it plus the stator's
   // share, (1 - s_n)/η_m as at the nominal point.
   const double s_n = 1 - 95 / w0;
@@ -156,13 +164,13 @@ TEST(DriveSizing, LockedRotorFailsEveryMotorCheckAndDrawsItsAirGapPower) {
   EXPECT_GT(s.motor.power_line_mean, 1000.0);
   // Rotor heat s·M·ω0 against nominal s_n·M_n·ω0: √(M/(s_n·M_n)) ≈ 3.8, far above the RMS ratio 0.585.
   EXPECT_REL(s.motor.whole_run.thermal_over_nominal, std::sqrt(M / (s_n * 200)), 1e-3);
-  EXPECT_EQ(s.checks[0].window, "run's last part (no steady state)");  // continuous running; a held rotor has no steady state
-  EXPECT_REL(s.checks[0].value, std::sqrt(M / (s_n * 200)), 1e-3);
+  EXPECT_EQ(named(s, "motor_heating").window, "run's last part (no steady state)");  // continuous running; a held rotor has no steady state
+  EXPECT_REL(named(s, "motor_heating").value, std::sqrt(M / (s_n * 200)), 1e-3);
   // The breakdown ratio of a rotor held at standstill (0.2 here) is no margin: a FAIL never shows a
   // value within its limit (the trial read "0.226 FAIL" against a limit of 0.9025); the figure
   // stays in the reason.
-  EXPECT_TRUE(std::isnan(s.checks[1].value)) << s.checks[1].value;
-  EXPECT_NE(s.checks[1].reason.find("not a margin"), std::string::npos) << s.checks[1].reason;
+  EXPECT_TRUE(std::isnan(named(s, "motor_breakdown").value)) << named(s, "motor_breakdown").value;
+  EXPECT_NE(named(s, "motor_breakdown").reason.find("not a margin"), std::string::npos) << named(s, "motor_breakdown").reason;
   EXPECT_NEAR(s.motor.peak_over_breakdown, M / 500, 1e-6);  // the metric itself is kept
 }
 
@@ -182,9 +190,9 @@ TEST(DriveSizing, StartUpPeakAndHeatingDecideTheChecksAndNameTheirWindow) {
   // The steady window is the same; its figures do not move.
   EXPECT_REL(s.coupling.peak, steady_only.coupling.peak, 1e-9);
   EXPECT_REL(s.motor.rms_over_nominal, steady_only.motor.rms_over_nominal, 1e-9);
-  ASSERT_EQ(s.checks.size(), 3u);
-  const SizingCheck &heat = s.checks[0], &coupling = s.checks[2];
-  EXPECT_EQ(steady_only.checks[2].verdict, "pass");
+  ASSERT_EQ(s.checks.size(), 4u);  // start, heating, breakdown, coupling
+  const SizingCheck &heat = named(s, "motor_heating"), &coupling = named(s, "coupling");
+  EXPECT_EQ(named(steady_only, "coupling").verdict, "pass");
   EXPECT_EQ(coupling.verdict, "FAIL");
   EXPECT_EQ(coupling.window, "whole run");
   EXPECT_NEAR(s.coupling.peak_whole_run, 10.0 * (C0 + C1), 1e-9);
@@ -193,10 +201,10 @@ TEST(DriveSizing, StartUpPeakAndHeatingDecideTheChecksAndNameTheirWindow) {
   // the starts per hour the start's heat allows (the run's length is no duty: a 10 s run is not a
   // start every 10 s).
   EXPECT_EQ(heat.window, "steady window");
-  EXPECT_REL(heat.value, steady_only.checks[0].value, 1e-9);
+  EXPECT_REL(heat.value, named(steady_only, "motor_heating").value, 1e-9);
   EXPECT_NE(heat.reason.find("starts per hour"), std::string::npos) << heat.reason;
   // With a duty of 60 starts per hour each start's heat counts: s·M·ω0 = 40 kW over the start.
-  EXPECT_EQ(s.checks[1].window, "steady window");  // the breakdown margin is a running check
+  EXPECT_EQ(named(s, "motor_breakdown").window, "steady window");  // the breakdown margin is a running check
   // The start's rotor heat, from the switch-on (t = 0) to the steady window: s = 1 and M = 400 N·m
   // for the replaced rows, s·M·ω0 = 40 kW over them, then the steady running's losses, whose mean
   // is ω0·mean(s·M) = ω0·(0.05·M0 − 0.02·M1/2) = 840 W (s = 0.05 − 0.02·sin 2Ωt, M = M0 + M1·sin 2Ωt).
@@ -214,7 +222,7 @@ TEST(DriveSizing, StartUpPeakAndHeatingDecideTheChecksAndNameTheirWindow) {
   Scene duty = sc;
   duty.sizing.starts_per_hour = 60.0;
   const DriveSizing d = sized(duty, rr);
-  const SizingCheck& dh = d.checks[0];
+  const SizingCheck& dh = named(d, "motor_heating");
   EXPECT_EQ(dh.window, "duty cycle (steady running and starts)");
   EXPECT_GT(dh.value, heat.value);
   // Independently: the steady run's rotor losses (the synthetic steady run repeats every
@@ -234,10 +242,10 @@ TEST(DriveSizing, BreakdownCheckKeepsTheSupplyMargin) {
   sc.motor.breakdown_torque = (M0 + M1) / 0.95;  // steady peak 0.95·M_kr
   const DriveSizing near = sized(sc, run(10000));
   EXPECT_NEAR(near.motor.peak_over_breakdown, 0.95, 1e-6);
-  EXPECT_EQ(near.checks[1].name, "motor_breakdown");
-  EXPECT_EQ(near.checks[1].verdict, "FAIL");
+  EXPECT_EQ(named(near, "motor_breakdown").name, "motor_breakdown");
+  EXPECT_EQ(named(near, "motor_breakdown").verdict, "FAIL");
   sc.motor.breakdown_torque = (M0 + M1) / 0.88;
-  EXPECT_EQ(sized(sc, run(10000)).checks[1].verdict, "pass");
+  EXPECT_EQ(named(sized(sc, run(10000)), "motor_breakdown").verdict, "pass");
 }
 
 TEST(DriveSizing, FlywheelFromKineticEnergyAndEnergyMethod) {
