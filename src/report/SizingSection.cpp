@@ -16,9 +16,11 @@ std::string text(const json& v) { return v.is_string() ? htmlEscape(v.get<std::s
 
 std::string checkCell(const json& v) {
   if (!v.is_string()) return "<td>n/a</td>";
+  // The verdict's own colour in every row: green pass, red FAIL, grey where the check does not apply,
+  // amber where the motor data contradict the catalogue.
   const std::string verdict = v.get<std::string>();
-  const bool pass = verdict == "pass";
-  return std::string("<td class=\"") + (pass ? "ok" : "bad") + "\">" + htmlEscape(verdict) + "</td>";
+  const char* cls = verdict == "pass" ? "ok" : verdict == "FAIL" ? "bad" : verdict == "not applicable" ? "na" : "warn";
+  return std::string("<td class=\"") + cls + "\">" + htmlEscape(verdict) + "</td>";
 }
 
 void row(std::ostringstream& h, const std::string& what, const std::string& value, const char* unit,

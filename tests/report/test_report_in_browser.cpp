@@ -10,6 +10,7 @@
 
 #include <cstdlib>
 #include <map>
+#include <sstream>
 #include <regex>
 #include <string>
 
@@ -115,6 +116,40 @@ TEST_F(ReportInBrowser, AnimationPlaysAndFiguresRender) {
   const std::string loaded = figs.substr(0, figs.find('/')), total = figs.substr(figs.find('/') + 1);
   EXPECT_EQ(loaded, total) << "figures decoded / embedded: " << figs;
   EXPECT_GE(std::stoi(total), 10);
+}
+
+// Every verdict cell shows its verdict's colour in every row, as the browser paints it: green pass,
+// red FAIL, grey not applicable (a striped-row rule `tr:nth-child(even) td` once outranked the
+// verdict classes, so a FAIL in an even row was not red). A coupling rated far below its load
+// fails, the other checks pass or do not apply, so the table has more than one colour to show.
+TEST_F(ReportInBrowser, EveryVerdictCellShowsItsVerdictsColour) {
+  TempDir out("browser-verdicts");
+  const auto r = runRollerdyn({"report", model("balanced-4cart.yaml"), "--set", "sizing.coupling_rated_torque=10",
+                               "--out", out.str()}, 300);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string dom = dumpDom(chromium_, out.path() / "report.html", 1000, out);
+  ASSERT_FALSE(dom.empty()) << "chromium produced no DOM";
+  const auto body = attributesOf(dom, "<body");
+  ASSERT_TRUE(body.count("data-verdict-cells")) << "verdict colour recorder did not run";
+  // The colours of the stylesheet's .ok, .bad and .na (#e3f4e3, #fde2e2, #ececec).
+  const std::map<std::string, std::string> colour = {
+      {"ok", "rgb(227, 244, 227)"}, {"bad", "rgb(253, 226, 226)"}, {"na", "rgb(236, 236, 236)"}};
+  std::map<std::string, int> seen;
+  std::stringstream cells(body.at("data-verdict-cells"));
+  for (std::string cell; std::getline(cells, cell, ';');) {
+    const std::string cls = cell.substr(0, cell.find(' '));
+    const size_t open = cell.find("rgb"), close = cell.find(')', open);
+    ASSERT_NE(open, std::string::npos) << cell;
+    const std::string painted = cell.substr(open, close - open + 1), text = cell.substr(close + 2);
+    if (colour.count(cls)) {
+      EXPECT_EQ(painted, colour.at(cls)) << cell;
+      ++seen[cls];
+    }
+    if (text == "FAIL") EXPECT_EQ(cls, "bad") << cell;
+    if (text == "pass") EXPECT_EQ(cls, "ok") << cell;
+  }
+  EXPECT_GE(seen["bad"], 1) << body.at("data-verdict-cells");
+  EXPECT_GE(seen["ok"], 1) << body.at("data-verdict-cells");
 }
 
 // The page written without Chart.js: the note instead of the charts, the animation unaffected.
