@@ -604,9 +604,16 @@ std::string describeAllowed(const KeySpec& spec) {
 
 std::string defaultText(const KeySpec& spec) {
   if (spec.presence != Presence::Optional) return "";
+  const Range& r = spec.range;
+  const double d = spec.default_number;
   switch (spec.kind) {
     case KeyKind::Number:
-    case KeyKind::Integer: return formatNumber(spec.default_number);
+    case KeyKind::Integer:
+      // A default the key's own range refuses (0 for a rating that must be > 0) stands for "absent":
+      // shown as a value, a user would type it and be refused.
+      if (!((d > r.lo || (r.lo_inclusive && d == r.lo)) && (d < r.hi || (r.hi_inclusive && d == r.hi))))
+        return "not given";
+      return formatNumber(d);
     case KeyKind::Flag: return spec.default_number != 0 ? "true" : "false";
     default: return spec.default_text;
   }

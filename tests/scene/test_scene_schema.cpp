@@ -72,6 +72,35 @@ TEST(SceneReference, EveryKeyHasMeaningAndEveryConditionalKeySaysWhen) {
     EXPECT_NE(findSceneKey(key)->source.find("("), std::string::npos) << key;
 }
 
+// A default the reference shows is a value the key accepts: typed back with --set it is taken
+// (the reference showed sizing.motor_nominal_torque with default 0, which "> 0" refuses); keys
+// whose absence means "not given" say so instead.
+TEST(SceneReference, EveryDefaultShownIsAcceptedByItsKey) {
+  const std::string scene = std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml";
+  int not_given = 0, typed_back = 0;
+  for (const KeySpec& k : sceneSchema()) {
+    if (k.presence != Presence::Optional || (k.kind != KeyKind::Number && k.kind != KeyKind::Integer)) continue;
+    const std::string shown = defaultText(k);
+    if (shown == "not given") {
+      ++not_given;
+      continue;
+    }
+    ASSERT_FALSE(shown.empty()) << k.path;
+    try {
+      (void)parseSceneFile(scene, {k.path + "=" + shown});
+      ++typed_back;
+    } catch (const std::exception& e) {
+      // Rules that couple keys may refuse a default beside the scene's other values; the key's
+      // own range must not be what refuses it.
+      const std::string what = e.what();
+      EXPECT_EQ(what.find("expected " + describeExpected(k)), std::string::npos) << k.path << " = " << shown << ": " << what;
+    }
+  }
+  EXPECT_GE(not_given, 5);
+  EXPECT_GE(typed_back, 40);
+  EXPECT_EQ(defaultText(*findSceneKey("sizing.motor_nominal_torque")), "not given");
+}
+
 TEST(SceneReference, TableCellsEscapeTheBar) {
   const std::string md = sceneReferenceMarkdown();
   std::istringstream in(md);
