@@ -145,8 +145,12 @@ TEST_F(ReportInBrowser, EveryVerdictCellShowsItsVerdictsColour) {
       EXPECT_EQ(painted, colour.at(cls)) << cell;
       ++seen[cls];
     }
-    if (text == "FAIL") EXPECT_EQ(cls, "bad") << cell;
-    if (text == "pass") EXPECT_EQ(cls, "ok") << cell;
+    if (text == "FAIL") {
+      EXPECT_EQ(cls, "bad") << cell;
+    }
+    if (text == "pass") {
+      EXPECT_EQ(cls, "ok") << cell;
+    }
   }
   EXPECT_GE(seen["bad"], 1) << body.at("data-verdict-cells");
   EXPECT_GE(seen["ok"], 1) << body.at("data-verdict-cells");
