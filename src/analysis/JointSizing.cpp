@@ -132,106 +132,130 @@ std::string jointLifeNotApplicable(const std::string& motion, bool steady_reache
          "): no running to wear the bearing";
 }
 
+namespace {
+
+// What every joint of a run is sized from: the reactions' rows t, the window's rows [b, e), the
+// crank's angle and speed at those rows, the rod's swing, and why lives do not apply.
+struct JointRun {
+  JointRun(const Scene& scene, const Table& reactions, const Table& timeseries)
+      : sc(scene), rx(reactions), ts(timeseries) {}
+  const Scene& sc;
+  const Table& rx;
+  const Table& ts;
+  std::vector<double> t, ts_t;
+  std::size_t b = 0, e = 0;
+  std::vector<double> crank_speed, crank_angle;
+  double crank_frequency = kNaN;  // one oscillation of the rod per crank revolution: f = n̄_crank/2π
+  double gamma = kNaN;            // the rod's swing amplitude asin(r/l) [rad]
+  bool swing_known = false;
+  std::string no_life;
+};
+
+// Cart j's guide rollers: they roll on their guide at |v|/(d/2).
+void addGuideRollers(std::vector<JointSizing>& out, const JointRun& u, int j) {
+  const std::string k = std::to_string(j);
+  const double d = u.sc.carts.geometry.d;
+  std::vector<double> roll;
+  std::string roll_basis = "none (carts.geometry.d not given): every instant weighted equally";
+  if (d > 0 && u.ts.has("v_cart_" + k)) {
+    roll = resample(u.ts_t, u.ts.column("v_cart_" + k), u.t);
+    for (double& v : roll) v = std::abs(v) / (0.5 * d);
+    roll_basis = "guide-roller speed |v_cart|/(d/2)";
+  }
+  for (const Kind* g : {&kGuideFront, &kGuideRear}) {
+    const std::string col = (g == &kGuideFront ? "N_front_" : "N_rear_") + k;
+    if (!u.rx.has(col)) continue;
+    JointSizing x = loadOf(*g, j, col, roll_basis, u.t, u.rx.column(col), roll, u.b, u.e, u.sc.sizing.rating_guide_roller);
+    x.life_basis = "rolls on its guide at n = |v_cart|/(d/2), reversing twice per crank revolution but turning many "
+                   "times between reversals: a rotating bearing; " + std::string(kHoursAtMeanSpeed) + " of the roller";
+    rateLife(x, *g, roll.empty() ? "the roller's speed is not known (carts.geometry.d not given)" : u.no_life);
+    out.push_back(std::move(x));
+  }
+}
+
+// Cart j's rod end and crank pin: the rod's swing about the cart's pin, β̇ = ω·dβ/dθ, and the crank
+// pin's rotation relative to the rod's big end, ω·(1 + σ·dβ/dθ) (the rod turns at −σ·β̇, SliderCrank.h).
+void addRodJoints(std::vector<JointSizing>& out, const JointRun& u, int j) {
+  const std::string k = std::to_string(j);
+  const double r = u.sc.crank.radius, l = u.sc.rods.length;
+  std::vector<double> swing, pin_relative;
+  if (u.swing_known) {
+    const int side = static_cast<std::size_t>(j - 1) < u.sc.carts.side.size() && u.sc.carts.side[j - 1] == -1 ? -1 : 1;
+    const double phase = u.sc.crankPhase(j - 1);
+    swing.resize(u.t.size());
+    pin_relative.resize(u.t.size());
+    for (std::size_t i = 0; i < u.t.size(); ++i) {
+      const double dbeta = sliderCrankExact(u.crank_angle[i] + phase, r, l, side).dbeta;
+      swing[i] = std::abs(u.crank_speed[i] * dbeta);
+      pin_relative[i] = std::abs(u.crank_speed[i] * (1.0 + side * dbeta));
+    }
+  }
+  if (u.rx.has("F_rod_" + k)) {
+    JointSizing x = loadOf(kRodEnd, j, "F_rod_" + k,
+                           u.swing_known ? "the rod's swing speed |β̇| = |ω_crank·dβ/dθ| about the cart's pin"
+                                         : "none (the rod's swing is not known): every instant weighted equally",
+                           u.t, u.rx.column("F_rod_" + k), swing, u.b, u.e, u.sc.sizing.rating_rod_end);
+    if (u.swing_known) {
+      x.oscillating = true;
+      x.oscillation_angle = 2.0 * u.gamma;
+      x.oscillation_frequency = u.crank_frequency;
+      x.rolling_elements_min = std::ceil(rollingElementsForOscillation(x.oscillation_angle) - 1e-9);
+      x.life_basis = "oscillates through 2γ = 2·asin(r/l) = " + fmt("%.4g", x.oscillation_angle * kDegPerRad) +
+                     "° once per crank revolution (f = " + fmt("%.4g", u.crank_frequency) +
+                     " 1/s): L10_osc = L10·180°/(2γ) oscillations, L10 = (C/P)³·10⁶ of ISO 281 (Harris and "
+                     "Kotzalas (2007)), L10h = L10_osc/(3600·f). Holds only for a bearing with at least Z = " +
+                     fmt("%.0f", x.rolling_elements_min) +
+                     " rolling elements (its critical angle 720°/Z must not exceed 2γ); with fewer the rolling "
+                     "elements' loaded zones do not overlap and the conversion does not hold";
+    }
+    rateLife(x, kRodEnd,
+             u.swing_known ? u.no_life
+                           : "the rod's swing is not known (it needs crank.radius < rods.length; a cam drive has no rod)");
+    out.push_back(std::move(x));
+  }
+  if (u.rx.has("crankpin_x_" + k) && u.rx.has("crankpin_y_" + k) && !u.crank_speed.empty()) {
+    JointSizing x = loadOf(kCrankPin, j, "crankpin_x_" + k + ", crankpin_y_" + k,
+                           u.swing_known ? "rotation relative to the rod |ω_crank·(1 + σ·dβ/dθ)|"
+                                         : "crank speed |ω_crank| (the rod's swing not known)",
+                           u.t, magnitude(u.rx.column("crankpin_x_" + k), u.rx.column("crankpin_y_" + k)),
+                           u.swing_known ? pin_relative : u.crank_speed, u.b, u.e, u.sc.sizing.rating_crank_pin);
+    x.life_basis = "turns relative to the rod's big end at the crank's rotation less the rod's swing, "
+                   "n = |ω_crank·(1 + σ·dβ/dθ)|: one relative revolution per crank revolution, never reversing "
+                   "(r/l < 1); " + std::string(kHoursAtMeanSpeed);
+    rateLife(x, kCrankPin, u.no_life);
+    out.push_back(std::move(x));
+  }
+}
+
+}  // namespace
+
 std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const SteadyState& w,
                                     const std::string& motion) {
   std::vector<JointSizing> out;
-  const Table& rx = run.reactions;
-  const Table& ts = run.timeseries;
-  if (!rx.has("t") || rx.rows.empty() || !ts.has("t")) return out;
-  const std::vector<double> rt = rx.column("t"), tt = ts.column("t");
-  std::size_t b = 0;
-  while (b < rt.size() && !(rt[b] >= w.t_begin)) ++b;
-  std::size_t e = b;
-  while (e < rt.size() && rt[e] <= w.t_end) ++e;
-  const SizingInputs& z = sc.sizing;
-  const std::string no_life = jointLifeNotApplicable(motion, w.reached);
-  std::vector<double> crank_speed, crank_angle;
-  if (ts.has("omega_crank")) crank_speed = resample(tt, ts.column("omega_crank"), rt);
-  if (ts.has("phi_crank")) crank_angle = resample(tt, ts.column("phi_crank"), rt);
-  // One oscillation of the rod per crank revolution: f = n̄_crank/2π.
-  const double crank_frequency = meanAbs(rt, crank_speed, b, e) / kTwoPi;
-  const double r = sc.crank.radius, l = sc.rods.length;
-  const double gamma = sc.hasCamDrive() ? kNaN : rodSwingAmplitude(r, l);
-  const bool swing_known = std::isfinite(gamma) && !crank_speed.empty() && !crank_angle.empty();
-  const double d = sc.carts.geometry.d;
+  JointRun u{sc, run.reactions, run.timeseries};
+  if (!u.rx.has("t") || u.rx.rows.empty() || !u.ts.has("t")) return out;
+  u.t = u.rx.column("t");
+  u.ts_t = u.ts.column("t");
+  while (u.b < u.t.size() && !(u.t[u.b] >= w.t_begin)) ++u.b;
+  u.e = u.b;
+  while (u.e < u.t.size() && u.t[u.e] <= w.t_end) ++u.e;
+  u.no_life = jointLifeNotApplicable(motion, w.reached);
+  if (u.ts.has("omega_crank")) u.crank_speed = resample(u.ts_t, u.ts.column("omega_crank"), u.t);
+  if (u.ts.has("phi_crank")) u.crank_angle = resample(u.ts_t, u.ts.column("phi_crank"), u.t);
+  u.crank_frequency = meanAbs(u.t, u.crank_speed, u.b, u.e) / kTwoPi;
+  u.gamma = sc.hasCamDrive() ? kNaN : rodSwingAmplitude(sc.crank.radius, sc.rods.length);
+  u.swing_known = std::isfinite(u.gamma) && !u.crank_speed.empty() && !u.crank_angle.empty();
   for (int j = 1; j <= sc.carts.count; ++j) {
-    const std::string k = std::to_string(j);
-    // A guide roller rolls on its guide at |v|/(d/2).
-    std::vector<double> roll;
-    std::string roll_basis = "none (carts.geometry.d not given): every instant weighted equally";
-    if (d > 0 && ts.has("v_cart_" + k)) {
-      roll = resample(tt, ts.column("v_cart_" + k), rt);
-      for (double& v : roll) v = std::abs(v) / (0.5 * d);
-      roll_basis = "guide-roller speed |v_cart|/(d/2)";
-    }
-    const std::string roll_life = "rolls on its guide at n = |v_cart|/(d/2), reversing twice per crank revolution "
-                                  "but turning many times between reversals: a rotating bearing; " +
-                                  std::string(kHoursAtMeanSpeed) + " of the roller";
-    for (const Kind* g : {&kGuideFront, &kGuideRear}) {
-      const std::string col = (g == &kGuideFront ? "N_front_" : "N_rear_") + k;
-      if (!rx.has(col)) continue;
-      JointSizing x = loadOf(*g, j, col, roll_basis, rt, rx.column(col), roll, b, e, z.rating_guide_roller);
-      x.life_basis = roll_life;
-      rateLife(x, *g, roll.empty() ? "the roller's speed is not known (carts.geometry.d not given)" : no_life);
-      out.push_back(std::move(x));
-    }
-    // The rod's swing about the cart's pin, β̇ = ω·dβ/dθ, and the crank pin's rotation relative to
-    // the rod's big end, ω·(1 + σ·dβ/dθ) (the rod turns at −σ·β̇, SliderCrank.h).
-    std::vector<double> swing, pin_relative;
-    if (swing_known) {
-      const int side = static_cast<std::size_t>(j - 1) < sc.carts.side.size() && sc.carts.side[j - 1] == -1 ? -1 : 1;
-      const double phase = sc.crankPhase(j - 1);
-      swing.resize(rt.size());
-      pin_relative.resize(rt.size());
-      for (std::size_t i = 0; i < rt.size(); ++i) {
-        const double dbeta = sliderCrankExact(crank_angle[i] + phase, r, l, side).dbeta;
-        swing[i] = std::abs(crank_speed[i] * dbeta);
-        pin_relative[i] = std::abs(crank_speed[i] * (1.0 + side * dbeta));
-      }
-    }
-    if (rx.has("F_rod_" + k)) {
-      JointSizing x = loadOf(kRodEnd, j, "F_rod_" + k,
-                             swing_known ? "the rod's swing speed |β̇| = |ω_crank·dβ/dθ| about the cart's pin"
-                                         : "none (the rod's swing is not known): every instant weighted equally",
-                             rt, rx.column("F_rod_" + k), swing, b, e, z.rating_rod_end);
-      if (swing_known) {
-        x.oscillating = true;
-        x.oscillation_angle = 2.0 * gamma;
-        x.oscillation_frequency = crank_frequency;
-        x.rolling_elements_min = std::ceil(rollingElementsForOscillation(x.oscillation_angle) - 1e-9);
-        x.life_basis = "oscillates through 2γ = 2·asin(r/l) = " + fmt("%.4g", x.oscillation_angle * kDegPerRad) +
-                       "° once per crank revolution (f = " + fmt("%.4g", crank_frequency) +
-                       " 1/s): L10_osc = L10·180°/(2γ) oscillations, L10 = (C/P)³·10⁶ of ISO 281 (Harris and "
-                       "Kotzalas (2007)), L10h = L10_osc/(3600·f). Holds only for a bearing with at least Z = " +
-                       fmt("%.0f", x.rolling_elements_min) +
-                       " rolling elements (its critical angle 720°/Z must not exceed 2γ); with fewer the rolling "
-                       "elements' loaded zones do not overlap and the conversion does not hold";
-      }
-      rateLife(x, kRodEnd,
-               swing_known ? no_life
-                           : "the rod's swing is not known (it needs crank.radius < rods.length; a cam drive has no rod)");
-      out.push_back(std::move(x));
-    }
-    if (rx.has("crankpin_x_" + k) && rx.has("crankpin_y_" + k) && !crank_speed.empty()) {
-      JointSizing x = loadOf(kCrankPin, j, "crankpin_x_" + k + ", crankpin_y_" + k,
-                             swing_known ? "rotation relative to the rod |ω_crank·(1 + σ·dβ/dθ)|"
-                                         : "crank speed |ω_crank| (the rod's swing not known)",
-                             rt, magnitude(rx.column("crankpin_x_" + k), rx.column("crankpin_y_" + k)),
-                             swing_known ? pin_relative : crank_speed, b, e, z.rating_crank_pin);
-      x.life_basis = "turns relative to the rod's big end at the crank's rotation less the rod's swing, "
-                     "n = |ω_crank·(1 + σ·dβ/dθ)|: one relative revolution per crank revolution, never reversing "
-                     "(r/l < 1); " + std::string(kHoursAtMeanSpeed);
-      rateLife(x, kCrankPin, no_life);
-      out.push_back(std::move(x));
-    }
+    addGuideRollers(out, u, j);
+    addRodJoints(out, u, j);
   }
-  if (rx.has("bearing_x") && rx.has("bearing_y") && !crank_speed.empty()) {
-    JointSizing x = loadOf(kMainBearing, 0, "bearing_x, bearing_y", "crank speed |ω_crank|", rt,
-                           magnitude(rx.column("bearing_x"), rx.column("bearing_y")), crank_speed, b, e,
-                           z.rating_main_bearing);
+  if (u.rx.has("bearing_x") && u.rx.has("bearing_y") && !u.crank_speed.empty()) {
+    JointSizing x = loadOf(kMainBearing, 0, "bearing_x, bearing_y", "crank speed |ω_crank|", u.t,
+                           magnitude(u.rx.column("bearing_x"), u.rx.column("bearing_y")), u.crank_speed, u.b, u.e,
+                           sc.sizing.rating_main_bearing);
     x.life_basis = "the life of one bearing carrying the whole resultant, turning with the crank; " +
                    std::string(kHoursAtMeanSpeed);
-    rateLife(x, kMainBearing, no_life);
+    rateLife(x, kMainBearing, u.no_life);
     out.push_back(std::move(x));
   }
   return out;
