@@ -57,4 +57,19 @@ double ratingLifeHours(double C, double P, double mean_speed, double p) {
   return rev / (mean_speed / kTwoPi * 3600.0);
 }
 
+double rodSwingAmplitude(double r, double l) {
+  if (!(r > 0) || !(l > r)) return kNaN;
+  return std::asin(r / l);
+}
+
+double oscillationLife(double life_revolutions, double full_angle) {
+  if (!std::isfinite(life_revolutions) || !(full_angle > 0)) return kNaN;
+  return life_revolutions * (0.5 * kTwoPi) / full_angle;
+}
+
+double rollingElementsForOscillation(double full_angle) {
+  if (!(full_angle > 0)) return kNaN;
+  return 2.0 * kTwoPi / full_angle;
+}
+
 }  // namespace rollerdyn

@@ -4,8 +4,13 @@
 //   P = ( ∫ |F|^p · n dt / ∫ n dt )^(1/p),   p = 3 (ball bearings; ISO 281 uses 10/3 for rollers),
 // and the basic rating life L10 = (C/P)^p · 10⁶ revolutions, in hours at the mean speed n̄:
 //   L10h = L10 / (n̄/(2π) · 3600),   n̄ = ∫ n dt / ∫ dt  [rad/s].
-// Where a joint does not rotate (a rod end oscillates through a small angle) every instant counts
-// equally (n ≡ 1) and there is no life in hours. Integrals use the trapezoidal rule on the output
+// A joint that oscillates through the full angle 2γ (end to end) f times a second is weighted by
+// its swing speed, and its life converted (Harris and Kotzalas (2007); SKF rolling bearings
+// catalogue, "oscillating movements"):
+//   L10_osc = L10·180°/(2γ) oscillations,   L10h = L10_osc/(3600·f),
+// valid while 2γ exceeds the critical angle 720°/Z of a bearing with Z rolling elements (below it
+// the rolling elements' loaded zones do not overlap: the conversion does not hold). Without a
+// speed every instant counts equally (n ≡ 1). Integrals use the trapezoidal rule on the output
 // rows, as the other window metrics (Metrics.h), so unevenly spaced rows do not bias them.
 #pragma once
 
@@ -36,5 +41,15 @@ double ratingLifeRevolutions(double dynamic_rating, double equivalent_load,
 // L10 in hours at mean speed n̄ [rad/s]; NaN unless n̄ > 0 and the life in revolutions is finite.
 double ratingLifeHours(double dynamic_rating, double equivalent_load, double mean_speed,
                        double exponent = kBearingLifeExponent);
+
+// The swing amplitude γ = β_max = asin(r/l) of the rod about the cart's pin of a centred
+// crank-slider (sin β = (r/l)·sin θ) [rad]; NaN unless 0 < r < l.
+double rodSwingAmplitude(double crank_radius, double rod_length);
+// L10 in oscillations through the full angle 2γ [rad]: L10·180°/(2γ) = L10·π/(2γ) [-]; NaN unless
+// the life is finite and 2γ > 0.
+double oscillationLife(double life_revolutions, double full_angle);
+// The least number of rolling elements Z for which the full swing 2γ [rad] reaches the critical
+// angle 720°/Z (the conversion above holds): 4π/(2γ) [-]; NaN unless 2γ > 0.
+double rollingElementsForOscillation(double full_angle);
 
 }  // namespace rollerdyn

@@ -41,29 +41,6 @@ Moments moments(const std::vector<double>& t, const std::vector<double>& y, std:
   return m;
 }
 
-// y(t) of the timeseries resampled at the times tq (linear; both ascending). Returned as is
-// when the two grids are the same rows.
-std::vector<double> resample(const std::vector<double>& t, const std::vector<double>& y,
-                             const std::vector<double>& tq) {
-  if (t == tq) return y;
-  std::vector<double> out(tq.size(), kNaN);
-  std::size_t hi = 1;
-  for (std::size_t i = 0; i < tq.size(); ++i) {
-    if (t.size() < 2) break;
-    while (hi + 1 < t.size() && t[hi] < tq[i]) ++hi;
-    const double dt = t[hi] - t[hi - 1];
-    const double f = dt > 0 ? std::clamp((tq[i] - t[hi - 1]) / dt, 0.0, 1.0) : 1.0;
-    out[i] = y[hi - 1] + f * (y[hi] - y[hi - 1]);
-  }
-  return out;
-}
-
-std::vector<double> magnitude(const std::vector<double>& x, const std::vector<double>& y) {
-  std::vector<double> m(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) m[i] = std::hypot(x[i], y[i]);
-  return m;
-}
-
 MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size_t e, std::size_t run_end,
                       double revolutions, bool turning, const StartUp* start_up) {
   MotorSizing m;
@@ -348,68 +325,6 @@ CouplingSizing sizeCoupling(const Scene& sc, const Table& ts, std::size_t b, std
   return c;
 }
 
-void addJoint(std::vector<JointSizing>& out, const char* joint, int cart, std::string column,
-              std::string basis, const std::vector<double>& t, const std::vector<double>& F,
-              const std::vector<double>& speed, std::size_t b, std::size_t e, double rating) {
-  JointSizing j;
-  j.joint = joint;
-  j.cart = cart;
-  j.column = std::move(column);
-  j.speed_basis = std::move(basis);
-  j.load = jointLoad(t, F, speed, b, e);
-  j.rating = given(rating);
-  j.life_revolutions = ratingLifeRevolutions(j.rating, j.load.equivalent);
-  j.life_hours = ratingLifeHours(j.rating, j.load.equivalent, j.load.mean_speed);
-  out.push_back(std::move(j));
-}
-
-std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const SteadyState& w) {
-  std::vector<JointSizing> out;
-  const Table& rx = run.reactions;
-  const Table& ts = run.timeseries;
-  if (!rx.has("t") || rx.rows.empty() || !ts.has("t")) return out;
-  const std::vector<double> rt = rx.column("t"), tt = ts.column("t");
-  std::size_t b = 0;
-  while (b < rt.size() && !(rt[b] >= w.t_begin)) ++b;
-  std::size_t e = b;
-  while (e < rt.size() && rt[e] <= w.t_end) ++e;
-  const SizingInputs& z = sc.sizing;
-  std::vector<double> crank_speed;
-  if (ts.has("omega_crank")) crank_speed = resample(tt, ts.column("omega_crank"), rt);
-  const double d = sc.carts.geometry.d;
-  for (int j = 1; j <= sc.carts.count; ++j) {
-    const std::string k = std::to_string(j);
-    // A guide roller rolls on its guide at |v|/(d/2).
-    std::vector<double> roll;
-    std::string roll_basis = "none (carts.geometry.d not given): every instant weighted equally";
-    if (d > 0 && ts.has("v_cart_" + k)) {
-      roll = resample(tt, ts.column("v_cart_" + k), rt);
-      for (double& v : roll) v = std::abs(v) / (0.5 * d);
-      roll_basis = "guide-roller speed |v_cart|/(d/2)";
-    }
-    if (rx.has("N_front_" + k))
-      addJoint(out, "guide_roller_front", j, "N_front_" + k, roll_basis, rt, rx.column("N_front_" + k),
-               roll, b, e, z.rating_guide_roller);
-    if (rx.has("N_rear_" + k))
-      addJoint(out, "guide_roller_rear", j, "N_rear_" + k, roll_basis, rt, rx.column("N_rear_" + k),
-               roll, b, e, z.rating_guide_roller);
-    if (rx.has("F_rod_" + k))
-      addJoint(out, "rod_end", j, "F_rod_" + k,
-               "none: the rod end swings through a small angle, every instant weighted equally", rt,
-               rx.column("F_rod_" + k), {}, b, e, z.rating_rod_end);
-    if (rx.has("crankpin_x_" + k) && rx.has("crankpin_y_" + k) && !crank_speed.empty())
-      addJoint(out, "crank_pin", j, "crankpin_x_" + k + ", crankpin_y_" + k,
-               "crank speed |ω_crank| (the rod's own swing neglected)", rt,
-               magnitude(rx.column("crankpin_x_" + k), rx.column("crankpin_y_" + k)), crank_speed, b,
-               e, z.rating_crank_pin);
-  }
-  if (rx.has("bearing_x") && rx.has("bearing_y") && !crank_speed.empty())
-    addJoint(out, "main_bearing", 0, "bearing_x, bearing_y", "crank speed |ω_crank|", rt,
-             magnitude(rx.column("bearing_x"), rx.column("bearing_y")), crank_speed, b, e,
-             z.rating_main_bearing);
-  return out;
-}
-
 }  // namespace
 
 double nominalMotorTorque(const Scene& sc, std::string* source) {
@@ -534,7 +449,7 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
   }
   s.flywheel = sizeFlywheel(sc, ts, w, b, e, turning && w.reached, delta, load);  // a steady revolution's figures
   s.coupling = sizeCoupling(sc, ts, b, e, n);
-  s.joints = sizeJoints(sc, run, w);
+  s.joints = sizeJoints(sc, run, w, s.motion);
   s.checks = sizingChecks(s, turning);
   for (SizingCheck& c : s.checks) {
     // A window that is no steady state is not called one (the third trial: "decided by the steady

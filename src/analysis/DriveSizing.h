@@ -3,7 +3,7 @@
 // window (SteadyState.h) and the whole run (start-up from the initial state, the steady running,
 // and whatever else the run holds). Motor torques, powers and slip against the motor's nominal and
 // breakdown torque, the flywheel that would bring the coefficient of unevenness δ to a target, the
-// coupling torque against its rating, and the bearing loads of every joint (BearingLoad.h).
+// coupling torque against its rating, and the bearing loads and lives of every joint (JointSizing.h).
 //
 // The checks (SizingCheck) each name the window that decided them:
 //  * motor heating: the larger of RMS/M_n over the steady window and the thermal equivalent of the
@@ -37,7 +37,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/BearingLoad.h"
+#include "analysis/JointSizing.h"
 #include "analysis/RunResult.h"
 #include "analysis/StartUp.h"
 #include "analysis/SteadyState.h"
@@ -124,17 +124,6 @@ struct SizingCheck {
   std::string verdict;  // "pass", "FAIL", "not applicable" or "" (nothing to compare with)
   std::string window;   // "whole run" or "steady window": where the deciding value comes from
   std::string reason;   // why FAIL or not applicable; what decided
-};
-
-struct JointSizing {
-  std::string joint;        // guide_roller_front, guide_roller_rear, rod_end, crank_pin, main_bearing
-  int cart = 0;             // 1-based cart number; 0 for the main bearing
-  std::string column;       // reactions column(s) the force comes from
-  std::string speed_basis;  // what weights P (rotation speed used, or "none")
-  JointLoad load;           // mean, amplitude, peak, equivalent dynamic load P, mean speed
-  double rating = 0;        // C [N]; NaN when not given
-  double life_revolutions = 0;  // L10 [-]
-  double life_hours = 0;        // L10h [h]
 };
 
 struct DriveSizing {

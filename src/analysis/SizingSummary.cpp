@@ -15,6 +15,7 @@ using nlohmann::json;
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 json jointJson(const JointSizing& j) {
+  constexpr double kDegPerRad = 57.295779513082320876798154814105;
   return {{"cart", j.cart > 0 ? json(j.cart) : json(nullptr)},
           {"column", j.column},
           {"mean", num(j.load.mean)},
@@ -24,8 +25,15 @@ json jointJson(const JointSizing& j) {
           {"mean_speed", num(j.load.mean_speed)},
           {"speed_basis", j.speed_basis},
           {"rating", num(j.rating)},
+          {"motion", j.oscillating ? "oscillating" : "rotating"},
+          {"oscillation_angle_deg", num(j.oscillation_angle * kDegPerRad)},
+          {"oscillation_frequency", num(j.oscillation_frequency)},
+          {"rolling_elements_min", num(j.rolling_elements_min)},
           {"L10_revolutions", num(j.life_revolutions)},
-          {"L10_hours", num(j.life_hours)}};
+          {"L10_oscillations", num(j.life_oscillations)},
+          {"L10_hours", num(j.life_hours)},
+          {"life_basis", j.life_basis},
+          {"life_reason", j.life_reason.empty() ? json(nullptr) : json(j.life_reason)}};
 }
 
 const char* kJointKinds[] = {"guide_roller_front", "guide_roller_rear", "rod_end", "crank_pin",
@@ -131,7 +139,7 @@ json sizingJson(const DriveSizing& s) {
     json per = json::array();
     for (const JointSizing& x : s.joints)
       if (x.joint == kind) per.push_back(jointJson(x));
-    joints[kind] = {{"worst", jointJson(*w)}, {"per_cart", per}};
+    joints[kind] = {{"what", w->what}, {"worst", jointJson(*w)}, {"per_cart", per}};
   }
   j["joints"] = joints;
   j["life_exponent"] = kBearingLifeExponent;
@@ -329,26 +337,37 @@ std::string sizingText(const json& summary) {
     return o.str();
   }
   if (jsonMember(s, "joints_basis").is_string()) o << "  joint loads from the " << str(jsonMember(s, "joints_basis")) << "\n";
-  o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h or rev]\n";
-  const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearing"};
+  o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
+  const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearings, resultant"};
   for (std::size_t k = 0; k < 5; ++k) {
     const json& x = jsonMember(jsonMember(joints, kJointKinds[k]), "worst");
     if (!x.is_object()) continue;
-    // L10 in hours where the joint turns at a known speed, else in revolutions (the rod end
-    // swings through a small angle: its life is counted in the crank's revolutions).
-    std::string life = fmt(jsonMember(x, "L10_hours"), "%.3g");
-    if (life == "n/a" && jsonMember(x, "L10_revolutions").is_number()) life = fmt(jsonMember(x, "L10_revolutions"), "%.3g") + " rev";
     char buf[256];
     std::snprintf(buf, sizeof buf, "  %-24s  %4s  %9s  %14s  %9s  %6s  %6s  %7s\n", names[k],
                   jsonMember(x, "cart").is_number() ? std::to_string(jsonMember(x, "cart").get<int>()).c_str() : "-",
                   fmt(jsonMember(x, "mean"), "%.3f", 1e-3).c_str(), fmt(jsonMember(x, "amplitude"), "%.3f", 1e-3).c_str(),
                   fmt(jsonMember(x, "peak"), "%.3f", 1e-3).c_str(), fmt(jsonMember(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
-                  fmt(jsonMember(x, "rating"), "%.1f", 1e-3).c_str(), life.c_str());
+                  fmt(jsonMember(x, "rating"), "%.1f", 1e-3).c_str(), fmt(jsonMember(x, "L10_hours"), "%.3g").c_str());
     o << buf;
   }
-  o << "  P equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation speed; "
-       "C dynamic load rating (sizing.bearing_rating.*); L10 = (C/P)³·10⁶ revolutions, in hours at the joint's mean speed, "
-       "or in revolutions (rev) where the joint has no rotation speed\n";
+  o << "  P equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation or swing speed; "
+       "C dynamic load rating (sizing.bearing_rating.*); L10 in hours of steady running:\n";
+  // How each kind's life follows, or why it is n/a (the same reason for every cart of a kind).
+  for (const char* kind : kJointKinds) {
+    const json& j = jsonMember(joints, kind);
+    const json& x = jsonMember(j, "worst");
+    if (!x.is_object()) continue;
+    o << "    " << str(jsonMember(j, "what")) << ": ";
+    if (jsonMember(x, "L10_hours").is_number()) {
+      if (jsonMember(x, "L10_oscillations").is_number())
+        o << "L10 " << fmt(jsonMember(x, "L10_revolutions"), "%.3g") << " revolutions = "
+          << fmt(jsonMember(x, "L10_oscillations"), "%.3g") << " oscillations; ";
+      o << str(jsonMember(x, "life_basis"));
+    } else {
+      o << "L10 n/a: " << str(jsonMember(x, "life_reason"));
+    }
+    o << "\n";
+  }
   return o.str();
 }
 

@@ -15,8 +15,10 @@ namespace rollerdyn {
 // checks [{check, what, value, verdict (pass | FAIL | not applicable | null), window, reason}],
 // motor {..., whole_run {...}} | null, flywheel {...},
 // coupling {...} | null, joints {guide_roller_front, guide_roller_rear, rod_end, crank_pin,
-// main_bearing: {worst {...}, per_cart [...]} | null}, life_exponent, notes}; units in the key
-// names' documentation (README, "Drive sizing").
+// main_bearing: {what, worst {...}, per_cart [...]} | null}, life_exponent, notes}; each joint row
+// with its loads, its motion (rotating | oscillating) and its lives L10_revolutions,
+// L10_oscillations, L10_hours with life_basis, or null with life_reason (JointSizing.h); units in
+// docs/outputs.md ("Drive sizing").
 nlohmann::json sizingJson(const DriveSizing& sizing);
 
 // The table for the terminal, from a summary.json object (its `sizing`); "" when it has none.

@@ -26,7 +26,7 @@ const char* jointWords(const std::string& joint) {
   if (joint == "guide_roller_rear") return "guide roller, rear";
   if (joint == "rod_force") return "rod force";
   if (joint == "crank_pin") return "crank pin";
-  if (joint == "main_bearing") return "main bearing";
+  if (joint == "main_bearing") return "main bearings (resultant)";
   return "?";
 }
 

@@ -2,8 +2,9 @@
 // recomputed by hand from the columns of the run's CSV tables, the files an engineer gets. The
 // hand computation follows the definitions the documentation states (steady window = the last N
 // whole crank revolutions; time means and RMS by the trapezoidal rule over the window's rows;
-// P = (∫|F|³·n dt / ∫n dt)^(1/3) with the joint's rotation speed n; L10 = (C/P)³·10⁶
-// revolutions, L10h = L10/(n̄/2π·3600); M_n = M_kr/λ) and shares no code with the sizing: only
+// P = (∫|F|³·n dt / ∫n dt)^(1/3) with the joint's rotation or swing speed n; L10 = (C/P)³·10⁶
+// revolutions, L10h = L10/(n̄/2π·3600), for the oscillating rod end L10·180°/(2γ)/(3600·f);
+// M_n = M_kr/λ) and shares no code with the sizing: only
 // the CSV text and the parsed summary.json are compared.
 //
 // Tolerance of every comparison: 1e-9 relative to the figure's scale, the size of the operands
@@ -314,10 +315,17 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
     for (const json& row : per) {
       const int j = row.at("cart").is_number() ? row.at("cart").get<int>() : 0;
       const std::string cart = std::to_string(j), label = std::string(kind) + (j ? " " + cart : "");
-      // |F| and the joint's rotation speed n (DriveSizing.h): guide rollers |v|/(d/2), crank pin
-      // and main bearing |ω_crank|, rod end none (every instant counts equally).
+      // |F| and the joint's rotation speed n (JointSizing.h): guide rollers |v|/(d/2), the rod end
+      // its swing |β̇| = |ω·dβ/dθ|, the crank pin |ω·(1 + σ·dβ/dθ)| relative to the rod, the main
+      // bearing |ω_crank|; dβ/dθ = λ·cos θ/√(1 - λ²·sin² θ) of sin β = λ·sin θ, λ = r/l.
       std::vector<double> F, n;
       const std::string k(kind);
+      const double lam = sc.crank.radius / sc.rods.length;
+      const int side = j >= 1 && std::size_t(j - 1) < sc.carts.side.size() && sc.carts.side[j - 1] == -1 ? -1 : 1;
+      auto dbeta = [&](std::size_t i) {
+        const double th = phi[i] + sc.crankPhase(j - 1);
+        return lam * std::cos(th) / std::sqrt(1 - lam * lam * std::sin(th) * std::sin(th));
+      };
       for (std::size_t i = 0; i < t.size(); ++i) {
         if (k == "guide_roller_front") F.push_back(rx.col("N_front_" + cart)[i]);
         if (k == "guide_roller_rear") F.push_back(rx.col("N_rear_" + cart)[i]);
@@ -327,7 +335,9 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
         if (k == "guide_roller_front" || k == "guide_roller_rear")
           n.push_back(d > 0 ? std::abs(ts.col("v_cart_" + cart)[i]) / (0.5 * d) : 1.0);
         else if (k == "rod_end")
-          n.push_back(1.0);
+          n.push_back(std::abs(w[i] * dbeta(i)));
+        else if (k == "crank_pin")
+          n.push_back(std::abs(w[i] * (1 + side * dbeta(i))));
         else
           n.push_back(std::abs(w[i]));
       }
@@ -344,10 +354,16 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
       }
       const double n_int = integral(t, n, b, e);
       const double P = std::cbrt(integral(t, F3n, b, e) / n_int);
-      const bool rotates = k != "rod_end";
-      const double n_mean = rotates ? n_int / span : kNaN;
+      const double n_mean = n_int / span;
       const double C = row.at("rating").is_number() ? row.at("rating").get<double>() : kNaN;
-      const double L10 = std::pow(C / P, 3.0) * 1e6, L10h = L10 / (n_mean / kTwoPi * 3600.0);
+      const double L10 = std::pow(C / P, 3.0) * 1e6;
+      // The rod end oscillates through 2γ = 2·asin(λ) once per crank revolution: L10·180°/(2γ)
+      // oscillations at f = (mean |ω_crank|)/2π a second; the others turn at n̄.
+      std::vector<double> w_abs(t.size());
+      for (std::size_t i = 0; i < t.size(); ++i) w_abs[i] = std::abs(w[i]);
+      const double f = integral(t, w_abs, b, e) / span / kTwoPi;
+      const double L10h = k == "rod_end" ? L10 * (kTwoPi / 2) / (2 * std::asin(lam)) / (3600.0 * f)
+                                         : L10 / (n_mean / kTwoPi * 3600.0);
       jc.add(label + " mean", integral(t, Fn, b, e) / span, row.at("mean"), peak);
       jc.add(label + " amplitude", 0.5 * (hi - lo), row.at("amplitude"), peak);
       jc.add(label + " peak", peak, row.at("peak"));
@@ -360,7 +376,8 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
     }
   }
   s.claim(jc.holds(), who + ": joint loads of every cart (mean, amplitude (max - min)/2, peak |F|, the "
-                          "speed-weighted cubic mean P, mean speed n̄, L10 = (C/P)³·10⁶, L10h = L10/(n̄/2π·3600)) "
+                          "speed-weighted cubic mean P, mean speed n̄, L10 = (C/P)³·10⁶, L10h = L10/(n̄/2π·3600), the rod end's "
+                          "L10h = L10·180°/(2γ)/(3600·f)) "
                           "from reactions.csv, e.g. " + lives + ": " + jc.sentence() + ".");
 }
 

@@ -48,8 +48,8 @@ std::string reactionMeaning(const std::string& c) {
   if (c.rfind("friction_", 0) == 0) return "guide friction force along x, cart " + cart("friction_");
   if (c.rfind("crankpin_x_", 0) == 0) return "rod force on crank pin, x, cart " + cart("crankpin_x_");
   if (c.rfind("crankpin_y_", 0) == 0) return "rod force on crank pin, y, cart " + cart("crankpin_y_");
-  if (c == "bearing_x") return "main bearing force on the crankshaft, x";
-  if (c == "bearing_y") return "main bearing force on the crankshaft, y";
+  if (c == "bearing_x") return "main bearings, resultant on the crankshaft, x";
+  if (c == "bearing_y") return "main bearings, resultant on the crankshaft, y";
   if (c == "coupling_torque") return "coupling torque at the crank axis";
   return "";
 }

@@ -128,26 +128,33 @@ std::string sizingSectionHtml(const json& s) {
     h << "</table>\n";
   }
   h << "<h3>Joints and bearings</h3>\n<p class=\"small\">P: equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), "
-       "n the joint's rotation speed (ISO 281 style); L10 = (C/P)³·10⁶ revolutions, in hours at the mean "
-       "speed, C the dynamic load rating from sizing.bearing_rating.*.</p>\n"
+       "n the joint's rotation or swing speed (ISO 281 style); C: the dynamic load rating from "
+       "sizing.bearing_rating.*; L10: the basic rating life in hours of steady running, how it follows "
+       "(or why it does not apply) below the table.</p>\n"
     << "<table>\n<tr><th>joint</th><th>cart</th><th>mean [kN]</th><th>amplitude [kN]</th><th>peak [kN]</th>"
-       "<th>P [kN]</th><th>C [kN]</th><th>L10 [h, or rev where the joint has no rotation speed]</th><th>speed weighting</th></tr>\n";
+       "<th>P [kN]</th><th>C [kN]</th><th>L10 [h]</th><th>speed weighting</th></tr>\n";
   const json& joints = jsonMember(z, "joints");
   const char* kinds[] = {"guide_roller_front", "guide_roller_rear", "rod_end", "crank_pin", "main_bearing"};
-  const char* names[] = {"guide roller, front", "guide roller, rear", "rod end (cart hinge)", "crank pin (rod big end)",
-                         "main bearing"};
-  for (int k = 0; k < 5; ++k) {
-    const json& per = jsonMember(jsonMember(joints, kinds[k]), "per_cart");
+  std::ostringstream notes;
+  for (const char* kind : kinds) {
+    const json& per = jsonMember(jsonMember(joints, kind), "per_cart");
     if (!per.is_array()) continue;
+    const std::string what = text(jsonMember(jsonMember(joints, kind), "what"));
     for (const json& x : per)
-      h << "<tr><td>" << names[k] << "</td><td class=\"n\">" << (jsonMember(x, "cart").is_number() ? jsonMember(x, "cart").dump() : "-")
+      h << "<tr><td>" << what << "</td><td class=\"n\">" << (jsonMember(x, "cart").is_number() ? jsonMember(x, "cart").dump() : "-")
         << "</td><td class=\"n\">" << jsonNumberText(jsonMember(x, "mean"), "%.3f", 1e-3) << "</td><td class=\"n\">"
         << jsonNumberText(jsonMember(x, "amplitude"), "%.3f", 1e-3) << "</td><td class=\"n\">" << jsonNumberText(jsonMember(x, "peak"), "%.3f", 1e-3)
         << "</td><td class=\"n\">" << jsonNumberText(jsonMember(x, "equivalent_load"), "%.3f", 1e-3) << "</td><td class=\"n\">"
         << jsonNumberText(jsonMember(x, "rating"), "%.1f", 1e-3) << "</td><td class=\"n\">" << jsonNumberText(jsonMember(x, "L10_hours"), "%.3g")
         << "</td><td class=\"small\">" << text(jsonMember(x, "speed_basis")) << "</td></tr>\n";
+    const json& w = jsonMember(jsonMember(joints, kind), "worst");
+    notes << "<li>" << what << ": "
+          << (jsonMember(w, "L10_hours").is_number() ? text(jsonMember(w, "life_basis"))
+                                                     : "L10 n/a: " + text(jsonMember(w, "life_reason")))
+          << "</li>\n";
   }
   h << "</table>\n";
+  if (!notes.str().empty()) h << "<ul class=\"small\">\n" << notes.str() << "</ul>\n";
   return h.str();
 }
 

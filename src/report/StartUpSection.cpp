@@ -77,7 +77,7 @@ std::string startUpSectionHtml(const json& summary) {
                             {"guide_roller_rear", "guide roller, rear"},
                             {"rod_force", "rod force"},
                             {"crank_pin", "crank pin (resultant)"},
-                            {"main_bearing", "main bearing (resultant)"}};
+                            {"main_bearing", "main bearings, resultant on the crankshaft (all bearings together; per-bearing loads need the bearing positions)"}};
   for (const auto& k : kinds) {
     const json& p = jsonMember(jsonMember(s, "joints"), k[0]);
     if (p.is_object())

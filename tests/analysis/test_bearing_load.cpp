@@ -82,3 +82,14 @@ TEST(BearingLoad, ShortOrNonFiniteWindowsGiveNaN) {
   EXPECT_TRUE(std::isnan(jointLoad(t, {1, 2, 3}, {0, 0, 0}, 0, 3).equivalent));  // never turns
   EXPECT_NEAR(jointLoad(t, {1, 2, 3}, {0, 0, 0}, 0, 3).peak, 3, 0);
 }
+
+// A rod of l = 4r swings through ±asin(1/4) = ±14.4775°: ISO 281's 10⁶ revolutions are
+// 10⁶·180°/28.955° = 6.2165e6 oscillations, and the conversion needs 2γ ≥ 720°/Z: Z ≥ 24.87.
+TEST(BearingLoad, OscillationLifeFromTheFullSwingAngle) {
+  const double gamma = rodSwingAmplitude(0.2, 0.8);
+  EXPECT_NEAR(gamma * 180 / kPi, 14.477512185929925, 1e-12);
+  EXPECT_NEAR(oscillationLife(1e6, 2 * gamma), 1e6 * 180 / (2 * 14.477512185929925), 1e-3);
+  EXPECT_NEAR(rollingElementsForOscillation(2 * gamma), 720 / (2 * 14.477512185929925), 1e-12);
+  EXPECT_TRUE(std::isnan(rodSwingAmplitude(0.8, 0.8)));  // no crank-slider without l > r
+  EXPECT_TRUE(std::isnan(oscillationLife(1e6, 0)));
+}
