@@ -28,16 +28,18 @@ def table(records, max_listed=40):
     for r in ran:
         motions[r.get("motion")] = motions.get(r.get("motion"), 0) + 1
     secs = [r["seconds"] for r in ran]
+    cpus = [r.get("cpu", 0.0) for r in ran]
     lines.append(f"machines run: {len(ran)} (multibody {models['multibody']}, reduced {models['reduced']}); "
                  f"refused by the parser and regenerated: {refused}; harness errors: "
                  f"{sum(1 for r in records if r.get('harness_error'))}")
     lines.append("motion: " + ", ".join(f"{k} {v}" for k, v in sorted(motions.items(), key=lambda x: -x[1])) +
                  f"; steady state reached: {sum(1 for r in ran if r.get('steady'))}")
     if secs:
-        lines.append(f"time per machine: median {statistics.median(secs):.2f} s, mean {statistics.mean(secs):.2f} s, "
-                     f"max {max(secs):.1f} s (seed {max(ran, key=lambda r: r['seconds'])['seed']}); runs "
-                     f"{sum(r.get('runs', 0) for r in ran)} in all; base run median "
-                     f"{statistics.median(r.get('base_seconds', 0) for r in ran):.2f} s")
+        lines.append(f"time per machine (wall): median {statistics.median(secs):.2f} s, mean {statistics.mean(secs):.2f} s, "
+                     f"max {max(secs):.1f} s (seed {max(ran, key=lambda r: r['seconds'])['seed']})")
+        lines.append(f"CPU per machine (all its runs): median {statistics.median(cpus):.2f} s, mean "
+                     f"{statistics.mean(cpus):.2f} s, total {sum(cpus):.0f} s; runs {sum(r.get('runs', 0) for r in ran)} "
+                     f"in all; the machine's own run: median {statistics.median(r.get('base_cpu', 0) for r in ran):.2f} s CPU")
     lines.append("")
     lines.append(f"{'invariant':<52} {'checked':>7} {'violated':>8} {'n/a':>5} {'errors':>6}")
     for letter, title in TITLES.items():

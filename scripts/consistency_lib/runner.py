@@ -7,6 +7,7 @@ import json
 import math
 import os
 import pathlib
+import resource
 import shutil
 import subprocess
 import sys
@@ -45,13 +46,14 @@ class Machine_run:
     def cli(self, args, out_dir=None):
         cmd = [self.opts.binary] + [str(a) for a in args]
         self.commands.append(" ".join(_quote(c) for c in cmd))
-        t0 = time.time()
+        t0, c0 = time.time(), _children_cpu()
         try:
             p = subprocess.run(cmd, capture_output=True, text=True, timeout=RUN_TIMEOUT)
             res = {"exit": p.returncode, "stdout": p.stdout, "stderr": p.stderr}
         except subprocess.TimeoutExpired:
             res = {"exit": None, "stdout": "", "stderr": f"timeout after {RUN_TIMEOUT} s"}
-        res["seconds"] = time.time() - t0
+        res["seconds"], res["cpu"] = time.time() - t0, _children_cpu() - c0
+        self.cpu += res["cpu"]
         self.runs += 1
         if out_dir is not None:
             f = pathlib.Path(out_dir) / "summary.json"
@@ -79,17 +81,27 @@ class Machine_run:
         self.commands.append(f"PYTHONPATH={self.opts.python_dir} /usr/bin/python3 -c \"import rollerdyn as rd; "
                              f"print(rd.simulate('{self.scene_path}', model='{self.model}'))\"")
         self.runs += 1
+        c0 = _children_cpu()
         try:
             p = subprocess.run([sys.executable, "-c", code, str(self.scene_path), self.model], capture_output=True,
                                text=True, timeout=RUN_TIMEOUT, env=env)
         except subprocess.TimeoutExpired:
             return None
+        finally:
+            self.cpu += _children_cpu() - c0
         if p.returncode != 0:
             return {"summary": None, "text": None, "error": p.stderr[-300:]}
         try:
             return json.loads(p.stdout.strip().splitlines()[-1])
         except (json.JSONDecodeError, IndexError):
             return None
+
+
+def _children_cpu():
+    """CPU seconds (user + system) of this process's finished children: a run's cost, which on a
+    shared host is a steadier measure than the wall clock."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
 
 
 def _quote(s):
@@ -159,7 +171,8 @@ def run_machine(seed, opts):
     return {"seed": seed, "attempt": m.attempt, "refused": refused, "machine": m.describe(), "model": m.model,
             "scene": str(scene_path), "exit": base["exit"], "motion": (base.get("summary") or {}).get("motion"),
             "steady": invariants.get(base.get("summary") or {}, "steady_state.reached"),
-            "runs": mr.runs, "seconds": round(time.time() - t0, 3), "base_seconds": round(base["seconds"], 3),
+            "runs": mr.runs, "seconds": round(time.time() - t0, 3), "cpu": round(mr.cpu, 3),
+            "base_seconds": round(base["seconds"], 3), "base_cpu": round(base["cpu"], 3),
             "invariants": results, "notes": notes}
 
 

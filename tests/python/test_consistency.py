@@ -178,6 +178,19 @@ def test_c_fails_a_steady_window_verdict_without_a_steady_state():
     assert invariants.verdicts_within_preconditions(ctx(s=s)) == []
 
 
+def test_c_keeps_a_coupling_fail_of_a_drive_still_starting_but_no_other_verdict():
+    # A peak over the whole run already above the rating stays above it however long the run.
+    s = summary(motion="starting", delta=None)
+    s["steady_state"]["reached"] = False
+    s["sizing"]["checks"] = checks(heating=("not applicable", None, "run's last part (no steady state)"),
+                                   breakdown=("not applicable", None, "run's last part (no steady state)"),
+                                   coupling=("FAIL", 1.3, "whole run"))
+    assert invariants.verdicts_within_preconditions(ctx(s=s)) == []
+    s["sizing"]["checks"][2]["verdict"] = "pass"
+    s["sizing"]["checks"][2]["value"] = 0.7
+    assert any("coupling pass" in m for m in invariants.verdicts_within_preconditions(ctx(s=s)))
+
+
 def test_c_fails_a_duty_heating_pass_for_a_drive_that_cannot_start():
     # Finding 3: at speed, 10 starts per hour, 1032 N·m of starting torque against 1393 N·m.
     s = summary()
