@@ -205,6 +205,16 @@ def test_c_fails_a_duty_heating_pass_for_a_drive_that_cannot_start():
     assert any("holds no start" in m for m in invariants.verdicts_within_preconditions(c))
 
 
+def test_c_passes_duty_heating_of_a_ramped_start_that_ran_up():
+    # A converter's torque at switch-on (low frequency) is below the start-angle load, yet the
+    # run shows the drive starting: its duty heating may pass.
+    s = summary()
+    s["start_up"].update({"starting_torque_crank": 261.8, "load_torque_start": 1305.0})
+    c = ctx(s=s)
+    c["scene"].update({"sizing": {"starts_per_hour": 1}, "motor": {"start": {"method": "frequency_converter"}}})
+    assert invariants.verdicts_within_preconditions(c) == []
+
+
 def test_c_fails_lives_and_stability_of_a_stalled_drive():
     # Finding 7: guide roller 1.25e7 h and "the steady motion is stable" for a stalled drive.
     s = summary(motion="stalled", delta=None)
