@@ -57,6 +57,9 @@ def build_parser():
     p.add_argument("--keep", action="store_true", help="keep every run's files (default: only those of violations)")
     p.add_argument("--merge", action="store_true",
                    help="only merge the rank files results.rank*.jsonl in --out and print the summary")
+    p.add_argument("--recheck", action="store_true",
+                   help="judge the machines saved in --out (machines/*/context.json, kept for violations) again "
+                        "with this harness, without running; rewrites their records in results.jsonl")
     p.add_argument("--quiet", action="store_true", help="no line per machine")
     return p
 
@@ -66,6 +69,8 @@ def main(argv=None):
     out = pathlib.Path(args.out)
     if args.merge:
         return _merge(out, sorted(out.glob("results.rank*.jsonl")))
+    if args.recheck:
+        return _recheck(out, {x.strip() for x in args.invariants.split(",")} if args.invariants else None)
     try:
         seeds = parse_seeds(args.seeds)
     except ValueError as e:
@@ -152,6 +157,18 @@ def _merge(out, files):
         print(f"consistency: no results.rank*.jsonl in {out}", file=sys.stderr)
         return 2
     recs = report.read_records(files)
+    with open(out / "results.jsonl", "w") as f:
+        for r in recs:
+            f.write(json.dumps(r) + "\n")
+    return _finish(out, recs)
+
+
+def _recheck(out, which):
+    recs = report.read_records([out / "results.jsonl"])
+    for r in recs:
+        folder = pathlib.Path(r["scene"]).parent if r.get("scene") else None
+        if folder and (folder / "context.json").exists():
+            r["invariants"] = runner.recheck(folder, which)
     with open(out / "results.jsonl", "w") as f:
         for r in recs:
             f.write(json.dumps(r) + "\n")

@@ -317,12 +317,12 @@ def verdicts_within_preconditions(ctx):
     if mo == "turning" and not reached:
         for name, k in checks.items():
             steady_window = "steady" in str(k.get("window", "")) or name in ("motor_breakdown",)
-            if steady_window and k.get("verdict") not in NO_VERDICT and not _robust_fail(name, k):
+            if steady_window and k.get("verdict") not in NO_VERDICT and not _robust_fail(name, k, s):
                 v.append(f"{name} {k.get('verdict')} ({k.get('value')}) decided by the {k.get('window')}, but the steady "
                          f"state was not reached (t_end {get(s, 'simulated_time')} s)")
     if mo == "starting":
         for name, k in checks.items():
-            if k.get("verdict") in NO_VERDICT or _robust_fail(name, k):
+            if k.get("verdict") in NO_VERDICT or _robust_fail(name, k, s):
                 continue
             v.append(f"{name} {k.get('verdict')} ({k.get('value')}) while the drive is still starting")
     su = s.get("start_up")
@@ -376,10 +376,12 @@ def verdicts_within_preconditions(ctx):
     return v
 
 
-def _robust_fail(name, k):
+def _robust_fail(name, k, s):
     """A FAIL that no longer run can undo: the coupling's peak over the whole run already above
-    its rating (a longer run can only raise a peak)."""
-    return name == "coupling" and k.get("verdict") == "FAIL" and k.get("window") == "whole run"
+    its rating (a longer run can only raise a peak), whichever window the check names."""
+    ratio = get(s, "sizing.coupling.peak_over_rating_whole_run")
+    return (name == "coupling" and k.get("verdict") == "FAIL" and
+            (k.get("window") == "whole run" or (ratio is not None and ratio > 1)))
 
 
 # ----------------------------------------------------------------------------------------------

@@ -134,6 +134,13 @@ def omega_before(ts_path, t_on):
         return None
 
 
+def recheck(folder, which=None):
+    """The invariants again on a machine's saved context (folder/context.json): after a change of
+    the harness (a reader, a tolerance), without running anything."""
+    ctx = json.loads((pathlib.Path(folder) / "context.json").read_text())
+    return invariants.check_all(ctx, which)
+
+
 def run_machine(seed, opts):
     """Generates, runs and checks the machine of one seed; returns its record."""
     t0 = time.time()
@@ -164,6 +171,9 @@ def run_machine(seed, opts):
     violated = any(r["status"] == "violation" for r in results.values())
     (folder / "commands.sh").write_text("#!/bin/sh\n# The runs of this machine, as the harness made them.\n" +
                                         "\n".join(mr.commands) + "\n")
+    if violated or opts.keep:
+        # Everything the invariants read, so that `--recheck` judges it again without running.
+        (folder / "context.json").write_text(json.dumps(ctx))
     if not violated and not opts.keep:
         for child in folder.iterdir():
             if child.is_dir():
