@@ -302,6 +302,15 @@ def test_f_passes_a_closed_audit_and_fails_an_open_one():
     assert invariants.energy_closes(ctx(s=s))
 
 
+def test_f_judges_a_drive_that_hardly_moves_against_a_kilojoule():
+    # A stall: terms of 1.7 J, residual 1.7e-3 J (1e-3 of the terms, 1.7e-6 of 1 kJ).
+    s = summary(motion="stalled", delta=None)
+    s["energy"] = {"motor_work": 1.687, "load_work": 1.5, "kinetic_change": 0.19, "residual": -0.0017}
+    assert invariants.energy_closes(ctx(s=s)) == []
+    s["energy"]["residual"] = -1.5
+    assert invariants.energy_closes(ctx(s=s))
+
+
 # --- (g) ----------------------------------------------------------------------------------------
 
 def test_g_fails_a_key_that_changes_nothing_silently():
