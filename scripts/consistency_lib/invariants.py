@@ -573,11 +573,19 @@ def models_agree(ctx):
     if ra != rb:
         v.append(f"steady state reached: {ma} {ra} vs {mb} {rb}")
         return v
+    # Speeds against the larger of themselves and the synchronous crank speed ω0/u: a stalled or
+    # rocking crank creeps at mm/s, where a relative difference means nothing.
+    sc = ctx.get("scene", {})
+    w_sync = (get(sc, "motor.omega_sync", 0.0) or 0.0) / (get(sc, "reducer.ratio", 1.0) or 1.0)
     for path in ("omega_crank.mean", "omega_crank.min", "omega_crank.max"):
         x, y = get(a, path), get(b, path)
-        r = rel_diff(x, y)
-        if r is not None and r > tol:
-            v.append(f"{path} {ma} {x:.7g} vs {mb} {y:.7g} (rel {r:.1e} > {tol:.0e})")
+        if x is None or y is None:
+            if (x is None) != (y is None):
+                v.append(f"{path} {ma} {x} vs {mb} {y}")
+            continue
+        r = abs(x - y) / max(abs(x), abs(y), w_sync, 1e-300)
+        if r > tol:
+            v.append(f"{path} {ma} {x:.7g} vs {mb} {y:.7g} (difference {r:.1e} of max(|ω|, ω0/u) > {tol:.0e})")
     slip = max(abs(get(a, "sizing.motor.slip.max", 0.0) or 0.0), 1e-3)
     for path in ("sizing.motor.torque_shaft.rms", "sizing.coupling.peak"):
         x, y = get(a, path), get(b, path)

@@ -342,6 +342,17 @@ def test_h_passes_equal_models_and_fails_different_ones():
     assert any("omega_crank.mean" in m for m in v) and any("coupling" in m for m in v), v
 
 
+def test_h_judges_a_creeping_crank_against_the_synchronous_crank_speed():
+    # A stalled crank creeps at 0.0089 rad/s in both models; 2e-3 of that is 2e-6 of ω0/u.
+    a, b = summary(motion="stalled", delta=None), summary(motion="stalled", delta=None, model="multibody")
+    a["omega_crank"].update({"min": 0.008863758}), b["omega_crank"].update({"min": 0.008882281})
+    c = ctx(s=a, other={"model": "multibody", "exit": 0, "summary": b})
+    c["scene"].update({"motor": {"omega_sync": 104.72}, "reducer": {"ratio": 9.8}})
+    assert invariants.models_agree(c) == []
+    b["omega_crank"]["min"] = 0.2  # 1.8e-2 of ω0/u
+    assert any("omega_crank.min" in m for m in invariants.models_agree(c))
+
+
 # --- (i) ----------------------------------------------------------------------------------------
 
 def shifted(run_up, start_end, t_peak):
