@@ -269,6 +269,8 @@ struct Scene {
   SizingInputs sizing;                 // sizing.*: ratings and targets, no effect on the run
   MotorStart motor_start;              // motor.start.*: starting method (MotorSwitching.h)
   MotorStop motor_stop;                // motor.stop.*: switch-off, brake, restart
+  std::vector<std::string> given_keys; // the schema keys the file or --set gave (the others took
+                                       // their defaults), in schema order: KeyEffects.h
 
   // --- Derived quantities, defined once so both models use the same formula. ---
 

@@ -415,6 +415,8 @@ Scene parseSceneInput(const SceneInput& input, const std::vector<std::string>& o
   for (size_t i = 0; i < overrides.size(); ++i) doc.applyOverride(static_cast<int>(i + 1), overrides[i]);
   doc.checkStructure();
   Scene scene = readScene(doc);
+  for (const KeySpec& k : sceneSchema())
+    if (doc.find(k.path).IsDefined()) scene.given_keys.push_back(k.path);
   if (input.from_data) scene.name = input.label;  // a name, not a file whose stem names the scene
   return scene;
 }

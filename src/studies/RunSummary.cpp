@@ -5,6 +5,7 @@
 #include "analysis/FrictionChecks.h"
 #include "analysis/Summary.h"
 #include "report/OutputFolder.h"
+#include "scene/KeyEffects.h"
 #include "scene/Plausibility.h"
 #include "studies/ResonanceCheck.h"
 #include "studies/StartLoad.h"
@@ -22,6 +23,12 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
   summary["overrides"] = options.overrides;
   if (!summary.contains("warnings") || !summary["warnings"].is_array()) summary["warnings"] = nlohmann::json::array();
   for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
+  // Keys the scene gives that this model's run does not read: said, never silently dropped.
+  summary["keys_without_effect"] = nlohmann::json::array();
+  for (const std::string& w : keysWithoutEffect(scene, run.model)) {
+    summary["keys_without_effect"].push_back(w);
+    summary["warnings"].push_back(w);
+  }
   // summary["guide_friction"] and its warnings: self-locking, dead centre, quasi-static friction work.
   addFrictionWarnings(scene, run, summary);
   const std::size_t run_warnings = summary["warnings"].size();
