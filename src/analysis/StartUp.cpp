@@ -459,7 +459,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
     if (r.can_start_from_rest == 0)
       r.verdict += ". From rest it would not start: " + r.stall_cause;
     else if (r.can_start_from_rest == 1)
-      r.verdict += ". From rest the torques at standstill allow a start (the run-up itself is not simulated)";
+      r.verdict += ". From rest the torques at standstill allow a start (the start itself is not simulated)";
     r.starts = false;
     r.run_up_time = kNaN;
     r.start_end = r.t_on;

@@ -116,7 +116,10 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
       {"t_end", num("steady_state.t_end", ss.t_end)},
       {"rows", m.rows},
       {"note", ss.note},
-      {"not_reached", ss.not_reached.empty() ? json(nullptr) : json(ss.not_reached)}};
+      // How long to run: only for a drive that turns or is still starting (a longer run does not
+      // help a stalled drive, whose status says why).
+      {"not_reached", ss.not_reached.empty() || (crank_motion != "turning" && crank_motion != "starting")
+                          ? json(nullptr) : json(ss.not_reached)}};
 
   const EnergyAudit& en = run.energy;
   j["energy"] = {

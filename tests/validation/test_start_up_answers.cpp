@@ -266,12 +266,15 @@ TEST(StartUpAnswers, TheChecksOfADriveThatDoesNotTurnNameTheCause) {
   for (const auto& c : j["sizing"]["checks"]) {
     const std::string reason = c["reason"];
     if (c["check"] == "motor_breakdown") {
-      EXPECT_NE(reason.find("starting torque 1032 N·m at the crank is below the load"), std::string::npos) << reason;
+      EXPECT_NE(reason.find("starting torque 1032 N·m at the crank"), std::string::npos) << reason;
+      EXPECT_NE(reason.find("is below the load torque"), std::string::npos) << reason;
       EXPECT_EQ(reason.find("needs more than the motor gives"), std::string::npos) << reason;
     }
     if (c["check"] == "motor_heating") EXPECT_EQ(reason.find("steady running"), std::string::npos) << reason;
     // No steady state: the window deciding is not called one.
-    if (c["check"] != "coupling") EXPECT_EQ(c["window"], "run's last part (no steady state)") << c.dump();
+    if (c["check"] != "coupling" && c["check"] != "start") {
+      EXPECT_EQ(c["window"], "run's last part (no steady state)") << c.dump();
+    }
   }
 }
 
