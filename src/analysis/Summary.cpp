@@ -222,7 +222,9 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
     status += buf;
   }
   if (crank_motion == "stalled") {
-    std::string why = stallExplanation(scene, start_load);
+    // A soft starter's current limit that kept the drive from starting explains it (StartUp.h).
+    const bool by_limit = start_up && start_up->current_limit.stopped_the_start;
+    std::string why = by_limit ? start_up->verdict : stallExplanation(scene, start_load);
     const std::string travel = stalledCrankTravel(scene, run);
     if (!travel.empty()) why += "; " + travel;
     j["stall"] = {{"explanation", why},
@@ -230,7 +232,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
                   {"breakdown_torque_crank", breakdownTorqueAtCrank(scene)},
                   {"load_torque_start", start_load ? num("stall.load_torque_start", start_load->at_start_angle) : json(nullptr)},
                   {"load_torque_mean", start_load ? num("stall.load_torque_mean", start_load->revolution_mean) : json(nullptr)}};
-    status += "; the drive stalled: " + why;
+    status += (by_limit ? "; " : "; the drive stalled: ") + why;
   }
   if (ss.finite_rows < run.timeseries.rows.size())
     status += "; timeseries has non-finite values (" + ss.note + ")";
