@@ -142,9 +142,12 @@ class StallDetector {
     }
     return buf;
   }
-  // "stalled", "rocking" or "" from a run's status line.
+  // "stalled", "rocking" or "" from a run's status line. A soft starter that tripped because the
+  // start was still current-limited at its maximum start time (the status line of
+  // Supply::tripStatus) is a drive that did not start: "stalled".
   static std::string motionOfStatus(const std::string& status) {
     if (status.rfind("motor stalled", 0) == 0) return "stalled";
+    if (status.rfind("the soft starter tripped", 0) == 0) return "stalled";
     if (status.rfind("the crank rocks", 0) == 0) return "rocking";
     return "";
   }

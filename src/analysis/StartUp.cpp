@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "analysis/StallDetector.h"
+#include "analysis/StartUpCurrentLimit.h"
 #include "analysis/SteadyState.h"
 #include "motor/Supply.h"
 
@@ -206,6 +207,41 @@ void judgeStartFromTorques(const Scene& sc, StartUp& r) {
   }
 }
 
+// After a switch-off within the run: the stopping time and the run-out of the crank and the carts.
+void addStopping(const Scene& sc, const Table& ts, StartUp& r) {
+  const std::vector<double> t = ts.column("t"), w = ts.column("omega_crank");
+  const double u = sc.reducer.ratio;
+  r.stopping_time = r.run_out_revolutions = r.run_out_cart_path = kNaN;
+  if (std::isfinite(r.t_off) && r.t_off <= t.back()) {
+    const double limit = StallDetector::kSpeedFraction * sc.motor.omega_sync / u;
+    const std::size_t i_off = firstRowAtOrAfter(t, r.t_off);
+    const double t_restart = sc.motor_stop.t_restart;
+    std::size_t i_stop = t.size() - 1;
+    for (std::size_t i = i_off; i < t.size() && t[i] < t_restart; ++i) {
+      i_stop = i;
+      if (std::abs(w[i]) <= limit) {
+        r.stopping_time = t[i] - r.t_off;
+        break;
+      }
+    }
+    if (ts.has("phi_crank")) {
+      const std::vector<double> phi = ts.column("phi_crank");
+      r.run_out_revolutions = std::abs(phi[i_stop] - phi[i_off]) / (2 * M_PI);
+    }
+    double path = 0;
+    for (int j = 1; ts.has("v_cart_" + std::to_string(j)); ++j) {
+      const std::vector<double> v = ts.column("v_cart_" + std::to_string(j));
+      path = std::max(path, integrate(t, i_off, i_stop + 1, [&](std::size_t i) { return std::abs(v[i]); }));
+    }
+    r.run_out_cart_path = path;
+    if (std::isnan(r.stopping_time))
+      r.notes.push_back(std::isfinite(t_restart) && t_restart <= t.back()
+                            ? "The motor was switched on again at t = " + fmt("%.4g", t_restart) +
+                                  " s before the machine came to rest (a restart at speed); the run-out is counted up to then."
+                            : "The machine had not come to rest when the run ended; the run-out is counted up to the end.");
+  }
+}
+
 }  // namespace
 
 SteadyTorquePeak largestSteadyTorquePoint(const MotorLaw& law, const SupplyState& supply) {
@@ -388,36 +424,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
     });
   }
 
-  // Stopping.
-  r.stopping_time = r.run_out_revolutions = r.run_out_cart_path = kNaN;
-  if (std::isfinite(r.t_off) && r.t_off <= t.back()) {
-    const double limit = StallDetector::kSpeedFraction * sc.motor.omega_sync / u;
-    const std::size_t i_off = firstRowAtOrAfter(t, r.t_off);
-    const double t_restart = sc.motor_stop.t_restart;
-    std::size_t i_stop = t.size() - 1;
-    for (std::size_t i = i_off; i < t.size() && t[i] < t_restart; ++i) {
-      i_stop = i;
-      if (std::abs(w[i]) <= limit) {
-        r.stopping_time = t[i] - r.t_off;
-        break;
-      }
-    }
-    if (ts.has("phi_crank")) {
-      const std::vector<double> phi = ts.column("phi_crank");
-      r.run_out_revolutions = std::abs(phi[i_stop] - phi[i_off]) / (2 * M_PI);
-    }
-    double path = 0;
-    for (int j = 1; ts.has("v_cart_" + std::to_string(j)); ++j) {
-      const std::vector<double> v = ts.column("v_cart_" + std::to_string(j));
-      path = std::max(path, integrate(t, i_off, i_stop + 1, [&](std::size_t i) { return std::abs(v[i]); }));
-    }
-    r.run_out_cart_path = path;
-    if (std::isnan(r.stopping_time))
-      r.notes.push_back(std::isfinite(t_restart) && t_restart <= t.back()
-                            ? "The motor was switched on again at t = " + fmt("%.4g", t_restart) +
-                                  " s before the machine came to rest (a restart at speed); the run-out is counted up to then."
-                            : "The machine had not come to rest when the run ended; the run-out is counted up to the end.");
-  }
+  addStopping(sc, ts, r);
 
   // Verdict: the cause of a drive that does not start is the one sentence judgeStartFromTorques
   // wrote, so the run status and the sizing say the same.
@@ -467,6 +474,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
     for (StartJointPeak& p : r.joints) p.start_peak = p.ratio = kNaN;
     r.current_peak = r.current_rms = r.current_i2t = r.rotor_energy_loss = kNaN;
   }
+  addCurrentLimit(sc, run, *law, supply, r);
   addLawNotes(sc, *law, r);
   return r;
 }

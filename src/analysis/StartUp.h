@@ -45,6 +45,37 @@ struct StartJointPeak {
   double ratio = 0;       // start_peak / steady_peak [-]
 };
 
+// A soft starter's current limit over one start (motor.start.current_limit > 0, Supply.h): how
+// long it held, at what voltage and current, and how it ended. Every double is NaN when it does
+// not apply or cannot be computed.
+struct StartUpCurrentLimit {
+  bool applies = false;         // a current-limited soft start from rest in this run
+  double limit = 0;             // I_lim [A]
+  double bypass_speed = 0;      // ω_lim: the rotor speed from which the law's steady current at U_n
+                                // stays within I_lim (Supply::limitSpeed) [rad/s]
+  double max_start_time = 0;    // [s]; NaN: the starter never trips (motor.start.max_start_time = 0)
+  std::string outcome;          // "bypass": the motor came up to speed and the bypass closed;
+                                // "tripped": still limited at t_on + max_start_time;
+                                // "switched_off": motor.stop.t_off came first;
+                                // "limited_at_end": still limited when the run ended
+  double end_time = 0;          // when the bypass closed, the starter tripped or the motor was
+                                // switched off [s]; NaN when still limited at the run's end
+  double held_time = 0;         // from the switch-on to end_time, or to the run's end [s]
+  double binding_from = 0;      // first output row at which the limit held U below the ramp [s];
+                                // NaN: it never acted
+  double voltage_min = 0;       // smallest U/U_n while the limit held U below the ramp, before
+                                // end_time (at standstill I_lim/I_1(0)) [-]; NaN: it never acted
+  double current_peak = 0;      // largest stator current from the switch-on to end_time [A]
+  double standstill_voltage = 0;       // U/U_n the limit allows at standstill, I_lim/I_1(0) (≤ 1) [-]
+  double standstill_torque_crank = 0;  // the law's torque at standstill under it × u·η [N·m]
+  double breakaway_limit = 0;   // the limit whose standstill torque equals the load at the start
+                                // angle (torque ∝ U² at a given speed) [A]; NaN without loads
+  double rotor_speed_max = 0;   // the largest rotor speed before end_time [rad/s]
+  bool stopped_the_start = false;  // the limit is why the drive did not start: the starter
+                                   // tripped, or it still held a drive that had not started
+                                   // when the run ended (the verdict says how)
+};
+
 // Every double is NaN when it does not apply or cannot be computed.
 struct StartUp {
   bool applicable = false;      // a motor is switched on within the run
@@ -103,6 +134,7 @@ struct StartUp {
   double run_out_revolutions = 0;    // crank revolutions from t_off to the stop (or the run's end) [-]
   double run_out_cart_path = 0;      // largest distance a cart travels in that time [m]
   std::vector<std::string> notes;    // what the law cannot show; approximations named
+  StartUpCurrentLimit current_limit; // a soft starter's current limit (applies false without one)
 };
 
 // `law`: the scene's motor law (null: none, e.g. the motor disabled); `load`: the load torques at

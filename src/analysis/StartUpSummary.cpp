@@ -40,6 +40,52 @@ std::string stopText(const json& stop) {
          f(jsonMember(stop, "run_out_cart_path"), "%.3g") + " m" + (T.is_number() ? "" : " so far") + "\n";
 }
 
+json currentLimitJson(const StartUpCurrentLimit& c) {
+  if (!c.applies) return nullptr;
+  return {{"limit", num(c.limit)},
+          {"bypass_speed", num(c.bypass_speed)},
+          {"max_start_time", num(c.max_start_time)},
+          {"outcome", c.outcome},
+          {"end_time", num(c.end_time)},
+          {"held_time", num(c.held_time)},
+          {"binding_from", num(c.binding_from)},
+          {"voltage_min", num(c.voltage_min)},
+          {"current_peak", num(c.current_peak)},
+          {"peak_over_limit", num(ratio(c.current_peak, c.limit))},
+          {"standstill_voltage", num(c.standstill_voltage)},
+          {"standstill_torque_crank", num(c.standstill_torque_crank)},
+          {"breakaway_limit", num(c.breakaway_limit)},
+          {"rotor_speed_max", num(c.rotor_speed_max)},
+          {"stopped_the_start", c.stopped_the_start}};
+}
+
+// The soft starter's current limit, two lines; "" without one.
+std::string currentLimitText(const json& c) {
+  if (!c.is_object()) return "";
+  const std::string outcome = jsonMember(c, "outcome").is_string() ? jsonMember(c, "outcome").get<std::string>() : "";
+  const std::string end = f(jsonMember(c, "end_time"), "%.4g");
+  const std::string how = outcome == "bypass"         ? "until the bypass closed at t = " + end + " s"
+                          : outcome == "tripped"      ? "until the starter tripped at t = " + end + " s"
+                          : outcome == "switched_off" ? "until the switch-off at t = " + end + " s"
+                                                      : std::string("still when the run ends");
+  const json& binding = jsonMember(c, "binding_from");
+  std::ostringstream o;
+  o << "  current limit I_lim           " << f(jsonMember(c, "limit"), "%g") << " A held "
+    << f(jsonMember(c, "held_time"), "%.4g") << " s from switch-on, " << how << " (bypass at ω_r = "
+    << f(jsonMember(c, "bypass_speed"), "%.4g") << " rad/s, where I_1(U_n) = I_lim; start time "
+    << (jsonMember(c, "max_start_time").is_number() ? f(jsonMember(c, "max_start_time"), "%g") + " s" : std::string("unlimited"))
+    << ")\n";
+  o << "                                "
+    << (binding.is_number() ? "limiting from t = " + f(binding, "%.4g") + " s, U/U_n down to " +
+                                  f(jsonMember(c, "voltage_min"), "%.3g")
+                            : std::string("the limit never held the voltage below the ramp"))
+    << "; stator current peak " << f(jsonMember(c, "current_peak"), "%.4g") << " A (x"
+    << f(jsonMember(c, "peak_over_limit"), "%.3g") << " I_lim); at standstill the limit allows U/U_n = "
+    << f(jsonMember(c, "standstill_voltage"), "%.3g") << ", torque " << f(jsonMember(c, "standstill_torque_crank"), "%.4g")
+    << " N·m at the crank\n";
+  return o.str();
+}
+
 }  // namespace
 
 json startUpJson(const StartUp& s) {
@@ -95,6 +141,7 @@ json startUpJson(const StartUp& s) {
                                             {"run_out_revolutions", num(s.run_out_revolutions)},
                                             {"run_out_cart_path", num(s.run_out_cart_path)}}
                                       : json(nullptr);
+  j["current_limit"] = currentLimitJson(s.current_limit);
   j["notes"] = s.notes;
   return j;
 }
@@ -167,6 +214,7 @@ std::string startUpText(const json& summary) {
     o << "  stator current (phase, RMS)   peak " << f(jsonMember(I, "peak"), "%.4g") << " A, RMS" << in_start << " "
       << f(jsonMember(I, "rms"), "%.4g") << " A (" << steady << " " << f(jsonMember(I, "steady_rms"), "%.4g") << " A), I²t "
       << f(jsonMember(I, "i2t"), "%.4g") << " A²·s\n";
+  o << currentLimitText(jsonMember(s, "current_limit"));
   o << "  rotor energy loss" << (starts ? " of the start " : in_start + " ") << f(jsonMember(s, "rotor_energy_loss"), "%.4g")
     << " J (slip power ∫M·(ω0·f/f_n - ω_r)dt)\n";
   o << stopText(jsonMember(s, "stop"));

@@ -16,8 +16,12 @@ namespace rollerdyn {
 // t_begin, t_end}, run_up_time, start_end, motor_torque {peak, min, steady_peak},
 // coupling_torque {peak, steady_peak, ratio}, joints {kind: {peak, steady_peak, ratio, column}},
 // stator_current {peak, rms, i2t, steady_rms} | null, rotor_energy_loss, stop {t_off,
-// stopping_time, run_out_revolutions, run_out_cart_path} | null, notes}. Units: N·m at the
-// crank, rad/s at the crank, s, A, A²·s, J, m (docs/startup.md).
+// stopping_time, run_out_revolutions, run_out_cart_path} | null, current_limit {limit,
+// bypass_speed, max_start_time, outcome, end_time, held_time, binding_from, voltage_min,
+// current_peak, peak_over_limit, standstill_voltage, standstill_torque_crank, breakaway_limit,
+// rotor_speed_max, stopped_the_start} | null (a soft starter's current limit, StartUpCurrentLimit;
+// its speeds at the rotor), notes}. Units: N·m at the crank, rad/s at the crank, s, A, A²·s, J, m
+// (docs/startup.md).
 nlohmann::json startUpJson(const StartUp& s);
 
 // The console block, from summary.json's start_up; "" when it is null or absent.

@@ -229,7 +229,8 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
     status += buf;
   }
   if (crank_motion == "stalled") {
-    // The start-up answers' one sentence (StartUp::stall_cause), which the sizing's checks print too.
+    // The start-up answers' one sentence (StartUp::stall_cause), which the sizing's checks print too
+    // (a soft starter's current limit that held the motor is the supply it names).
     std::string why = start_up && !start_up->stall_cause.empty()
                           ? start_up->stall_cause
                           : std::string(start_up ? "the load torques at the start were not evaluated"

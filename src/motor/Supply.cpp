@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "scene/Scene.h"
@@ -33,6 +34,8 @@ const char* toString(SupplyPhase::Stage s) {
     case Stage::Off: return "off";
     case Stage::Braking: return "braking";
     case Stage::Restarted: return "restarted";
+    case Stage::Limited: return "current-limited";
+    case Stage::Tripped: return "tripped";
   }
   return "?";
 }
@@ -65,6 +68,9 @@ Supply::Supply(const MotorStart& start, const MotorStop& stop, double omega_sync
       throw std::invalid_argument(
           "motor.start.current_limit needs a motor model with a stator current (motor.model circuit or park); "
           "the Kloss laws have none");
+    limit_speed_ = findLimitSpeed();
+    if (start_.max_start_time > 0 && !(start_.max_start_time > start_.ramp_time))
+      throw std::invalid_argument("motor.start.max_start_time must exceed motor.start.ramp_time");
   }
   constant_ = start_.method == StartMethod::DirectOnLine && start_.t_on <= 0 && std::isinf(stop_.t_off);
 }
@@ -83,6 +89,7 @@ SupplyState Supply::state(const SupplyPhase& p, double t, double omega_rotor) co
     case Stage::Gap:
     case Stage::Off:
     case Stage::Braking:
+    case Stage::Tripped:
       s.connected = false;
       s.voltage = 0.0;
       if (start_.method == StartMethod::StarDelta && p.stage != Stage::Waiting && p.stage != Stage::Gap)
@@ -104,18 +111,63 @@ SupplyState Supply::state(const SupplyPhase& p, double t, double omega_rotor) co
         s.voltage = start_.boost + (1.0 - start_.boost) * s.frequency;
         return s;
       }
-      s.voltage = start_.initial_voltage + (1.0 - start_.initial_voltage) * x;
-      if (start_.current_limit > 0 && law_) {
-        SupplyState rated;
-        rated.phase = s.phase;
-        const double I_rated_voltage = law_->steadyCurrent(rated, omega_rotor);
-        if (I_rated_voltage > 0 && std::isfinite(I_rated_voltage))
-          s.voltage = std::min(s.voltage, start_.current_limit / I_rated_voltage);
-      }
+      s.voltage = std::min(start_.initial_voltage + (1.0 - start_.initial_voltage) * x, limitedVoltage(omega_rotor));
       return s;
     }
+    case Stage::Limited:
+      s.voltage = std::min(1.0, limitedVoltage(omega_rotor));
+      return s;
   }
   return s;
+}
+
+double Supply::limitedVoltage(double omega_rotor) const {
+  if (!(start_.current_limit > 0) || !law_) return kInf;
+  SupplyState rated;
+  rated.phase = start_.phase;
+  const double I_rated_voltage = law_->steadyCurrent(rated, omega_rotor);
+  return I_rated_voltage > 0 && std::isfinite(I_rated_voltage) ? start_.current_limit / I_rated_voltage : kInf;
+}
+
+double Supply::findLimitSpeed() const {
+  // The highest speed in [0, ω0] at which I_1 still exceeds the limit, bracketed by the scan.
+  constexpr int kScan = 400;
+  auto above = [this](double w) { return limitedVoltage(w) < 1.0; };  // I_1(ω) > I_lim
+  int last_above = -1;
+  for (int i = 0; i <= kScan; ++i)
+    if (above(omega_sync_ * i / kScan)) last_above = i;
+  if (last_above < 0) return 0.0;
+  if (last_above == kScan) {
+    SupplyState rated;
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "motor.start.current_limit = %g A is at or below the motor's no-load current %.4g A at the rated "
+                  "voltage (its stator current at the synchronous speed): the soft starter could never close its "
+                  "bypass; give a limit above it (typically 2 ... 4 times the rated current)",
+                  start_.current_limit, law_->steadyCurrent(rated, omega_sync_));
+    throw std::invalid_argument(buf);
+  }
+  double lo = omega_sync_ * last_above / kScan, hi = omega_sync_ * (last_above + 1) / kScan;
+  for (int it = 0; it < 200 && hi - lo > 1e-14 * omega_sync_; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (above(mid) ? lo : hi) = mid;
+  }
+  return hi;  // I_1(hi) ≤ I_lim: the voltage is U_n there
+}
+
+double Supply::tripTime() const {
+  const bool limited = start_.method == StartMethod::SoftStarter && start_.current_limit > 0;
+  return limited && start_.max_start_time > 0 ? start_.t_on + start_.max_start_time : kInf;
+}
+
+std::string Supply::tripStatus(double t) const {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%s at t = %.4g s: the motor had not reached the rotor speed %.4g rad/s, from which it draws no more "
+                "than motor.start.current_limit = %g A at the rated voltage, within motor.start.max_start_time = %g s "
+                "of the switch-on; the starter disconnected it (a failed start)",
+                kTripStatus, t, limit_speed_, start_.current_limit, start_.max_start_time);
+  return buf;
 }
 
 double Supply::brakeTorque(const SupplyPhase& p, double omega_rotor) const {
@@ -134,15 +186,19 @@ double Supply::nextEventTime(const SupplyPhase& p) const {
     case Stage::Off: return hasBrake() ? t_off + stop_.brake_delay : stop_.t_restart;
     case Stage::Braking: return stop_.t_restart;
     case Stage::Restarted: return kInf;
+    case Stage::Limited: return std::min(tripTime(), t_off);
+    case Stage::Tripped: return kInf;
   }
   return kInf;
 }
 
 double Supply::triggerSpeed(const SupplyPhase& p) const {
-  return p.stage == Stage::Star ? start_.changeover_speed : kNaN;
+  if (p.stage == Stage::Star) return start_.changeover_speed;
+  if (p.stage == Stage::Limited) return limit_speed_;
+  return kNaN;
 }
 
-SupplyPhase Supply::after(const SupplyPhase& p, double t, bool by_speed) const {
+SupplyPhase Supply::after(const SupplyPhase& p, double t, double omega_rotor, bool by_speed) const {
   auto to = [t](Stage s) { return SupplyPhase{s, t}; };
   const Stage delta = start_.changeover_gap > 0 ? Stage::Gap : Stage::Rated;
   switch (p.stage) {
@@ -156,8 +212,16 @@ SupplyPhase Supply::after(const SupplyPhase& p, double t, bool by_speed) const {
       if (by_speed) return to(delta);
       return due(stop_.t_off, t) ? to(Stage::Off) : to(delta);
     case Stage::Gap:
-    case Stage::Ramp:
       return due(stop_.t_off, t) ? to(Stage::Off) : to(Stage::Rated);
+    case Stage::Ramp:
+      // The ramp has reached U_n; a motor that would still draw more than the limit there stays
+      // current-limited (a real soft starter closes its bypass only once the motor is up to speed).
+      if (due(stop_.t_off, t)) return to(Stage::Off);
+      return omega_rotor < limit_speed_ ? to(Stage::Limited) : to(Stage::Rated);
+    case Stage::Limited:
+      if (by_speed) return to(Stage::Rated);
+      return due(stop_.t_off, t) ? to(Stage::Off) : to(Stage::Tripped);
+    case Stage::Tripped: return p;
     case Stage::Rated: return to(Stage::Off);
     case Stage::Off: return hasBrake() && !due(stop_.t_restart, t) ? to(Stage::Braking) : to(Stage::Restarted);
     case Stage::Braking: return to(Stage::Restarted);
@@ -174,7 +238,7 @@ bool Supply::applyDueEvents(SupplyPhase& p, double t, double omega_rotor, bool s
     const bool by_speed = !std::isnan(w_trigger) && (speed_reached || omega_rotor >= w_trigger);
     if (!by_speed && !due(nextEventTime(p), t)) return changed;
     const SupplyState before = state(p, t, omega_rotor);
-    const SupplyPhase next = after(p, t, by_speed);
+    const SupplyPhase next = after(p, t, omega_rotor, by_speed);
     if (next == p) return changed;
     p = next;
     changed = true;
@@ -190,12 +254,13 @@ double Supply::ratedFrom() const {
     case StartMethod::DirectOnLine: return start_.t_on;
     case StartMethod::StarDelta:
       return std::isnan(start_.changeover_time) ? kNaN : start_.changeover_time + start_.changeover_gap;
-    default: return start_.t_on + start_.ramp_time;
+    default:
+      return limit_speed_ > 0 ? kNaN : start_.t_on + start_.ramp_time;  // limited: until up to speed
   }
 }
 
 SupplyState Supply::atSwitchOn() const {
-  const SupplyPhase p = after(SupplyPhase{}, start_.t_on, false);
+  const SupplyPhase p = after(SupplyPhase{}, start_.t_on, 0.0, false);
   return state(p, start_.t_on, 0.0);
 }
 

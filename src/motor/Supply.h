@@ -5,7 +5,8 @@
 // A run moves through stages, each with its own smooth supply law:
 //   waiting (before t_on: disconnected) -> star (star-delta) | ramp (soft starter, frequency
 //   converter) | rated -> [gap: star-delta open transition] -> rated -> off (after t_off)
-//   -> braking (off, brake engaged) -> restarted (rated again, after t_restart).
+//   -> braking (off, brake engaged) -> restarted (rated again, after t_restart);
+//   a current-limited soft start: ramp -> [limited] -> rated (the bypass) | tripped.
 // The stage and the time it began form a SupplyPhase, which the run keeps (the reduced model in
 // its loop, the multibody model in the State): the supply inside one stage is a smooth function
 // of time (and of the rotor speed under a current limit), so an integrator never steps across a
@@ -23,6 +24,12 @@
 //               U_n, f_n and the present rotor speed (the equivalent circuit is linear, so the
 //               current scales with U): the starter's current control taken as ideal and
 //               quasi-static (a dynamic law can overshoot I_lim in its transients)
+//   limited     after the ramp, while the motor would draw more than I_lim at U_n:
+//               U = min(1, I_lim/I_1(ω_r)). It ends where the rotor speed reaches ω_lim, the
+//               speed from which I_1 ≤ I_lim (limitSpeed(); U reaches 1 there continuously) and
+//               the bypass closes (rated), an event located like the star-delta changeover by
+//               speed; or, still limited at t_on + motor.start.max_start_time, the starter trips
+//               (tripped: disconnected for the rest of the run, a failed start)
 //   converter   f = F(t) = f_0/f_n + (1 - f_0/f_n)·(t - t_on)/t_ramp, U = boost + (1 - boost)·F
 //   brake       M_b·tanh(ω_r/ω_b) against the rotation, M_b = motor.stop.brake_torque, from
 //               t_off + brake_delay until a restart; ω_b the rotor speed at which the carts move at
@@ -38,7 +45,7 @@
 namespace rollerdyn {
 
 struct SupplyPhase {
-  enum class Stage { Waiting, Star, Gap, Ramp, Rated, Off, Braking, Restarted };
+  enum class Stage { Waiting, Star, Gap, Ramp, Rated, Off, Braking, Restarted, Limited, Tripped };
   Stage stage = Stage::Waiting;
   double since = 0;  // time the stage began [s]
   bool operator==(const SupplyPhase& o) const { return stage == o.stage && since == o.since; }
@@ -80,8 +87,22 @@ class Supply {
   // changeover, end of a ramp or of the open transition, switch-off, brake engaging, restart.
   double nextEventTime(const SupplyPhase& p) const;
   // The rotor speed [rad/s] whose upward crossing is the next event (the star-delta changeover
-  // by speed); NaN when phase p has none.
+  // by speed, the soft starter's bypass after a current-limited stage); NaN when phase p has none.
   double triggerSpeed(const SupplyPhase& p) const;
+
+  // Soft starter with a current limit: ω_lim, the rotor speed from which the law's steady
+  // stator current at the rated supply stays within the limit (I_1(ω_r) ≤ I_lim for
+  // ω_lim ≤ ω_r ≤ ω0), found by a scan of 400 speeds refined by bisection [rad/s]; NaN without a
+  // limit. 0 when even the standstill current is within it (the limit never acts at U_n).
+  double limitSpeed() const { return limit_speed_; }
+  // The time at which a start still current-limited trips the starter [s] (t_on +
+  // max_start_time); infinity when it never trips (no limit, or max_start_time = 0).
+  double tripTime() const;
+  // The run's status line at a trip at time t: begins with kTripStatus (the stall rule's
+  // motionOfStatus reads a trip as a drive that did not start), then why.
+  static constexpr const char* kTripStatus = "the soft starter tripped";
+  std::string tripStatus(double t) const;
+  static bool tripped(const SupplyPhase& p) { return p.stage == SupplyPhase::Stage::Tripped; }
 
   // Applies every event due at time t in phase p: those timed at or before t (to round-off), and,
   // when `speed_reached` or ω_r >= triggerSpeed(p), the speed-triggered one. For each event the
@@ -92,7 +113,8 @@ class Supply {
 
   // The time at which the supply first reaches its rated state (U = U_n, f = f_n, connected) in
   // a plain start: t_on for direct on line, t_on + t_ramp for the ramps, the changeover (+ gap)
-  // for a timed star-delta; NaN for a speed-triggered changeover (known only in the run).
+  // for a timed star-delta; NaN for a speed-triggered changeover and for a current-limited soft
+  // start (known only in the run).
   double ratedFrom() const;
   // The supply the start begins with (at t_on, rotor at rest): the star voltage, U_0, f_0 ...
   SupplyState atSwitchOn() const;
@@ -101,14 +123,20 @@ class Supply {
   const MotorStop& stop() const { return stop_; }
 
  private:
-  // The phase that follows p by the event at time t (one event).
-  SupplyPhase after(const SupplyPhase& p, double t, bool by_speed) const;
+  // The phase that follows p by the event at time t and rotor speed ω_r (one event).
+  SupplyPhase after(const SupplyPhase& p, double t, double omega_rotor, bool by_speed) const;
+  // U/U_n the current limit allows at rotor speed ω_r (≥ 1 when it does not act; +inf without a limit).
+  double limitedVoltage(double omega_rotor) const;
+  // ω_lim for the limit (constructor; std::invalid_argument when the limit is at or below the
+  // no-load current, so that the bypass could never close).
+  double findLimitSpeed() const;
 
   MotorStart start_;
   MotorStop stop_;
   double omega_sync_ = 1, rated_frequency_ = 50, brake_speed_ = 1;
   const MotorLaw* law_ = nullptr;
   bool constant_ = true;
+  double limit_speed_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Scene;

@@ -440,6 +440,11 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
       run.stats.status = stall.status();
       return false;
     }
+    if (motor && Supply::tripped(motor->phase(s))) {  // the soft starter gave up: a failed start
+      run.stats.complete = false;
+      run.stats.status = motor->supply().tripStatus(motor->supply().tripTime());
+      return false;
+    }
     for (int j = 0; j < n_carts; ++j) cart_speeds[j] = model.carts()[j].v(s);
     if (rest.update(t, cart_speeds, n_carts)) {
       run.stats.complete = false;

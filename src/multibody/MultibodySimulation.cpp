@@ -182,6 +182,10 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
         run.stats.complete = false;
         run.stats.status = stall.status();
         stop = true;
+      } else if (motor && Supply::tripped(motor->phase(s))) {  // the soft starter gave up: a failed start
+        run.stats.complete = false;
+        run.stats.status = motor->supply().tripStatus(motor->supply().tripTime());
+        stop = true;
       } else if (atRest(t_out, s)) {
         run.stats.complete = false;
         run.stats.status = rest.status();

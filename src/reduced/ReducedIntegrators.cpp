@@ -346,6 +346,11 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
       res.stats.status = stall.status();
       break;
     }
+    if (Supply::tripped(phase)) {  // the soft starter gave up: a failed start, the run ends here
+      res.stats.complete = false;
+      res.stats.status = m.supply().tripStatus(m.supply().tripTime());
+      break;
+    }
     for (int j = 0; j < m.cartCount(); ++j) cart_speeds[j] = e.carts[j].pose.dx_B * e.omega_crank;
     if (rest.update(t, cart_speeds, m.cartCount())) {
       res.stats.complete = false;

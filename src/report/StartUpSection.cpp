@@ -92,6 +92,30 @@ std::string startUpSectionHtml(const json& summary) {
   }
   h << "</table>\n";
 
+  const json& lim = jsonMember(s, "current_limit");
+  if (lim.is_object()) {
+    const std::string outcome = jsonMember(lim, "outcome").is_string() ? jsonMember(lim, "outcome").get<std::string>() : "";
+    const char* how = outcome == "bypass"         ? "until the bypass closed (the motor up to speed)"
+                      : outcome == "tripped"      ? "until the starter tripped (a failed start)"
+                      : outcome == "switched_off" ? "until the switch-off"
+                                                  : "still when the run ended";
+    h << "<table>\n<tr><th>soft starter's current limit</th><th>value</th><th>unit</th></tr>\n";
+    line("current limit I_lim (RMS stator phase current)", jsonNumberText(jsonMember(lim, "limit")), "A");
+    line(std::string("held from the switch-on, ") + how, jsonNumberText(jsonMember(lim, "held_time"), "%.4g"), "s");
+    line("ended at", jsonNumberText(jsonMember(lim, "end_time"), "%.4g"), "s");
+    line("rotor speed of the bypass, where the current at U_n falls to I_lim", jsonNumberText(jsonMember(lim, "bypass_speed")),
+         "rad/s");
+    line("maximum start time (the starter trips after it; n/a: never)", jsonNumberText(jsonMember(lim, "max_start_time")), "s");
+    line("the limit held the voltage below the ramp from", jsonNumberText(jsonMember(lim, "binding_from"), "%.4g"), "s");
+    line("smallest voltage U/U_n while limited", jsonNumberText(jsonMember(lim, "voltage_min"), "%.3g"), "–");
+    line("stator current peak while limited", jsonNumberText(jsonMember(lim, "current_peak")), "A");
+    line("that peak over I_lim", jsonNumberText(jsonMember(lim, "peak_over_limit"), "%.3g"), "–");
+    line("voltage the limit allows at standstill, U/U_n", jsonNumberText(jsonMember(lim, "standstill_voltage"), "%.3g"), "–");
+    line("torque at standstill under it × u·η", jsonNumberText(jsonMember(lim, "standstill_torque_crank")), "N·m");
+    line("limit that breaks the motor away at the start angle", jsonNumberText(jsonMember(lim, "breakaway_limit")), "A");
+    h << "</table>\n";
+  }
+
   const json& stop = jsonMember(s, "stop");
   if (stop.is_object()) {
     h << "<table>\n<tr><th>after the switch-off at t = " << jsonNumberText(jsonMember(stop, "t_off")) << " s</th><th>value</th><th>unit</th></tr>\n";

@@ -15,6 +15,7 @@ enum class StartMethod {  // motor.start.method
   DirectOnLine,           // full rated voltage at t_on
   StarDelta,              // stator in star (phase voltage U_n/√3) at t_on, delta after the changeover
   SoftStarter,            // voltage ramped from U_0 to U_n over t_ramp, optionally current-limited
+                          // until the motor is up to speed (or the starter trips)
   FrequencyConverter,     // V/f ramp: frequency from f_0 to f_n over t_ramp, U/U_n = boost + (1 − boost)·f/f_n
 };
 
@@ -33,8 +34,13 @@ struct MotorStart {
   // Soft starter and frequency converter.
   double ramp_time = 0;         // t_ramp [s]                                       motor.start.ramp_time
   double initial_voltage = 1;   // soft starter: U_0/U_n at t_on [-]                motor.start.initial_voltage
-  double current_limit = 0;     // soft starter: RMS stator phase current it holds the start to
-                                // [A]; 0 = no limit                                motor.start.current_limit
+  double current_limit = 0;     // soft starter: RMS stator phase current it holds the start to,
+                                // after the ramp too, until the motor draws no more than that at
+                                // the rated voltage (then the bypass closes) [A]; 0 = no limit
+                                //                                                  motor.start.current_limit
+  double max_start_time = 20;   // soft starter with a current limit: the start still limited this
+                                // long after t_on trips the starter (motor disconnected, a failed
+                                // start) [s]; 0 = never trips                     motor.start.max_start_time
   double initial_frequency = 0; // frequency converter: f_0 at t_on [Hz]            motor.start.initial_frequency
   double boost = 0;             // frequency converter: U/U_n at zero frequency [-] motor.start.boost
 };

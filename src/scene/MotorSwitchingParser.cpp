@@ -8,6 +8,16 @@ namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
 
+const char* methodWord(StartMethod m) {
+  switch (m) {
+    case StartMethod::DirectOnLine: return "direct_on_line";
+    case StartMethod::StarDelta: return "star_delta";
+    case StartMethod::SoftStarter: return "soft_starter";
+    case StartMethod::FrequencyConverter: return "frequency_converter";
+  }
+  return "?";
+}
+
 StartMethod methodOf(const std::string& w) {
   if (w == "star_delta") return StartMethod::StarDelta;
   if (w == "soft_starter") return StartMethod::SoftStarter;
@@ -55,6 +65,55 @@ void readStarDelta(const scene_detail::Reader& in, MotorStart& m, double omega_s
              formatNumber(m.changeover_speed));
 }
 
+// A key the scene gives that the run would not use: an error naming the key, the key that makes it
+// idle and why; but a warning (Scene::ignored_keys) when that deciding key was changed by a later
+// --set than the one that gave the key, i.e. the user switched, say, the method of a scene written
+// for another one on the command line (docs/startup.md).
+void idleKey(const scene_detail::Reader& in, Scene& scene, const std::string& key, const std::string& decider,
+             const std::string& decided, const std::string& why) {
+  if (!in.has(key)) return;
+  const SceneDocument& doc = in.doc();
+  if (scene_detail::blameSecond(doc, key, decider)) {
+    scene.ignored_keys.push_back({key, doc.originOf(key), decided + " (" + doc.originOf(decider) + "): " + why +
+                                                               "; the key is ignored"});
+    return;
+  }
+  doc.fail(key, "no " + key + " with " + decided + " (" + why + "; remove the key or change " + decider + ")",
+           describeNode(doc.find(key)));
+}
+
+// Every motor.start / motor.stop key that the chosen method (or the other keys) leaves without
+// effect: refused, or warned about (idleKey).
+void refuseIdleKeys(const scene_detail::Reader& in, Scene& scene) {
+  const MotorStart& m = scene.motor_start;
+  const std::string method = "motor.start.method", is = std::string("motor.start.method ") + methodWord(m.method);
+  if (m.method != StartMethod::StarDelta)
+    for (const char* key : {"motor.start.changeover_time", "motor.start.changeover_speed", "motor.start.changeover_gap"})
+      idleKey(in, scene, key, method, is, "only a star_delta start changes over from star to delta");
+  if (m.method != StartMethod::SoftStarter && m.method != StartMethod::FrequencyConverter)
+    idleKey(in, scene, "motor.start.ramp_time", method, is,
+            "only a soft_starter or a frequency_converter ramps; this method gives its supply at once");
+  if (m.method != StartMethod::SoftStarter) {
+    idleKey(in, scene, "motor.start.initial_voltage", method, is, "only a soft_starter starts at a reduced voltage U_0");
+    idleKey(in, scene, "motor.start.current_limit", method, is,
+            m.method == StartMethod::FrequencyConverter
+                ? "only the soft_starter's current limit is modelled, not a frequency converter's"
+                : "only a soft_starter limits the current");
+    idleKey(in, scene, "motor.start.max_start_time", method, is,
+            "only a current-limited soft_starter has a start time after which it trips");
+  } else if (!(m.current_limit > 0)) {
+    idleKey(in, scene, "motor.start.max_start_time", "motor.start.current_limit",
+            "motor.start.current_limit = 0 (no limit)",
+            "without a current limit the soft starter closes its bypass at the end of the ramp and never trips");
+  }
+  if (m.method != StartMethod::FrequencyConverter)
+    for (const char* key : {"motor.start.initial_frequency", "motor.start.boost"})
+      idleKey(in, scene, key, method, is, "only a frequency_converter sets the supply frequency and a voltage boost");
+  if (!(scene.motor_stop.brake_torque > 0))
+    idleKey(in, scene, "motor.stop.brake_delay", "motor.stop.brake_torque", "motor.stop.brake_torque = 0 (no brake)",
+            "there is no brake to engage");
+}
+
 }  // namespace
 
 void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
@@ -75,6 +134,16 @@ void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
                           ? in.requiredNumber("motor.start.initial_voltage", "required when " + needed_by)
                           : in.numberOr("motor.start.initial_voltage", 1.0);
   m.current_limit = in.number("motor.start.current_limit");
+  m.max_start_time = in.number("motor.start.max_start_time");
+  if (m.method == StartMethod::SoftStarter && m.current_limit > 0 && m.max_start_time > 0) {
+    if (!in.has("motor.start.max_start_time") && !(m.max_start_time > m.ramp_time))
+      doc.failMissing("motor.start.max_start_time",
+                      "a start time > ramp_time = " + formatNumber(m.ramp_time) +
+                          " [s] (motor.start.ramp_time; its default " + formatNumber(m.max_start_time) +
+                          " s is shorter; 0 = never trips)");
+    requireLater(in, "motor.start.max_start_time", m.max_start_time, "motor.start.ramp_time", m.ramp_time, "ramp_time",
+                 "max_start_time");
+  }
   m.initial_frequency = m.method == StartMethod::FrequencyConverter
                             ? in.requiredNumber("motor.start.initial_frequency", "required when " + needed_by)
                             : in.numberOr("motor.start.initial_frequency", 0.0);
@@ -120,6 +189,7 @@ void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
                    " s (t_off + brake_delay < t_restart)",
                formatNumber(st.brake_delay));
   }
+  refuseIdleKeys(in, scene);
 }
 
 }  // namespace rollerdyn

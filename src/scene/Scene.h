@@ -245,6 +245,15 @@ struct ReducedSettings {
                                // kinetostatic (SceneParser.cpp)                  reduced.guide_normals
 };
 
+// A key the scene gives that has no effect on the run and is accepted with a warning
+// (Plausibility.h): a starting method's key after a --set chose another method (docs/startup.md).
+// Given together with the method it does not belong to, such a key is an error instead.
+struct IgnoredKey {
+  std::string key;     // dotted key path, e.g. motor.start.changeover_speed
+  std::string origin;  // where it was given: "FILE:LINE" or "--set #N (ARG)"
+  std::string why;     // why it has no effect, naming the key that decides
+};
+
 struct Scene {
   std::string name;         // scene name: file stem, e.g. "balanced-4cart"
   std::string source_path;  // file the scene was read from
@@ -271,6 +280,7 @@ struct Scene {
   MotorStop motor_stop;                // motor.stop.*: switch-off, brake, restart
   std::vector<std::string> given_keys; // the schema keys the file or --set gave (the others took
                                        // their defaults), in schema order: KeyEffects.h
+  std::vector<IgnoredKey> ignored_keys;  // keys given without effect, accepted with a warning
 
   // --- Derived quantities, defined once so both models use the same formula. ---
 

@@ -257,6 +257,11 @@ void SceneDocument::failOverride(int n, const std::string& arg, const std::strin
   throw SceneError::inOverride(file_, n, arg, key, expected, got);
 }
 
+std::string SceneDocument::originOf(const std::string& path) const {
+  if (const Override* o = overrideOf(path)) return SceneError::inOverride(file_, o->n, o->arg, path, "", "").origin();
+  return SceneError::inFile(file_, lineOf(path), path, "", "").origin();
+}
+
 void SceneDocument::fail(const std::string& path, const std::string& expected,
                          const std::string& got) const {
   failAt(path, lineOf(path), expected, got);

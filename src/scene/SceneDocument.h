@@ -44,6 +44,9 @@ class SceneDocument {
 
   // Index N of the --set argument that provided `path` (or an enclosing map), 0 if the file did.
   int overrideFor(const std::string& path) const;
+  // Where `path` came from, as an error names it: "FILE:LINE" (or "FILE") or "--set #N (ARG)";
+  // for a warning about a key that is accepted.
+  std::string originOf(const std::string& path) const;
 
   // Complaint about the value at `path` (may end in [i] for a list element).
   [[noreturn]] void fail(const std::string& path, const std::string& expected,

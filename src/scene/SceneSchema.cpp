@@ -314,7 +314,15 @@ std::vector<KeySpec> buildSchema() {
              "soft starter: U_0/U_n at switch-on")
           .when("required with soft_starter"),
       number("motor.start.current_limit", "A", P::Optional, nonNegative(), 0.0,
-             "soft starter: RMS stator phase current the start is held to; 0 = none (motor models with a current only)"),
+             "soft starter: RMS stator phase current I_lim the start is held to, during the ramp and after it, "
+             "until the motor draws no more than I_lim at the rated voltage (then the bypass closes: U reaches "
+             "U_n continuously); 0 = none (motor models with a current only)"),
+      number("motor.start.max_start_time", "s", P::Optional, nonNegative(), 20.0,
+             "soft starter with a current limit: a start still current-limited this long after the switch-on "
+             "trips the starter (the motor is disconnected, a failed start); must exceed the ramp time; 0 = never "
+             "trips. Default 20 s: a typical starter's factory setting of its excess-start-time protection (e.g. "
+             "the Digistart D4's), and of the order of a motor's permitted locked-rotor time; set it slightly "
+             "longer than a healthy start"),
       number("motor.start.initial_frequency", "Hz", P::Conditional, positive(), 0.0,
              "frequency converter: f_0 at switch-on (< the rated frequency)")
           .when("required with frequency_converter"),

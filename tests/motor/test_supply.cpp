@@ -169,6 +169,108 @@ TEST(Supply, SoftStarterRampAndCurrentLimit) {
   EXPECT_THROW(supplyOf(st, {}, nullptr), std::invalid_argument);
 }
 
+// A real soft starter keeps its current limit after the ramp until the motor is up to speed. The
+// test law draws I(U = 1, ω) = 100·(1 - ω/100) + 10 A, so a 50 A limit is reached at U_n where
+// 100·(1 - ω/100) = 40: ω_lim = 60 rad/s. Before the fix the ramp's end switched to the rated
+// supply whatever the speed: a direct-on-line start at t_on + t_ramp.
+TEST(Supply, CurrentLimitHoldsAfterTheRampUntilTheCurrentAtRatedVoltageIsWithinIt) {
+  MotorStart st;
+  st.method = StartMethod::SoftStarter;
+  st.t_on = 1.0;
+  st.ramp_time = 4.0;
+  st.initial_voltage = 0.4;
+  st.current_limit = 50.0;
+  st.max_start_time = 10.0;
+  RecordingLaw law;
+  const Supply s = supplyOf(st, {}, &law);
+  EXPECT_NEAR(s.limitSpeed(), 60.0, 1e-9);
+  EXPECT_TRUE(std::isnan(s.ratedFrom()));  // known only in the run
+  SupplyPhase p = s.initialPhase();
+  s.applyDueEvents(p, 1.0, 0.0, false, nullptr, nullptr);
+  ASSERT_EQ(p.stage, Stage::Ramp);
+  EXPECT_EQ(s.nextEventTime(p), 5.0);
+  // The ramp ends with the rotor at 30 rad/s, where U_n would draw 80 A: the limit stays.
+  s.applyDueEvents(p, 5.0, 30.0, false, nullptr, nullptr);
+  EXPECT_NE(p.stage, Stage::Rated);
+  EXPECT_TRUE(s.state(p, 5.0, 30.0).connected);
+  EXPECT_DOUBLE_EQ(s.state(p, 5.0, 30.0).voltage, 50.0 / 80.0);   // continuous with the ramp's last value
+  EXPECT_DOUBLE_EQ(s.state(p, 8.0, 45.0).voltage, 50.0 / 65.0);   // long after the ramp, still limited
+  EXPECT_FALSE(Supply::fullSupply(p));                             // the stall rule waits
+  // Its end is the upward crossing of ω_lim (found by the run's root finding), not a time:
+  EXPECT_NEAR(s.triggerSpeed(p), 60.0, 1e-9);
+  EXPECT_EQ(s.nextEventTime(p), 11.0);  // the trip: t_on + max_start_time
+  // The voltage reaches U_n continuously there.
+  EXPECT_NEAR(s.state(p, 8.0, 60.0 - 1e-9).voltage, 1.0, 1e-10);
+  EXPECT_EQ(s.state(p, 8.0, 59.0).voltage, 50.0 / 51.0);
+  s.applyDueEvents(p, 8.5, 60.0, true, nullptr, nullptr);
+  EXPECT_EQ(p.stage, Stage::Rated);  // the bypass
+  EXPECT_EQ(s.state(p, 8.6, 60.0).voltage, 1.0);
+
+  // A rotor already at ω_lim when the ramp ends: the bypass closes at the ramp's end.
+  SupplyPhase q{Stage::Ramp, 1.0};
+  s.applyDueEvents(q, 5.0, 70.0, false, nullptr, nullptr);
+  EXPECT_EQ(q.stage, Stage::Rated);
+}
+
+// A start still limited at t_on + max_start_time trips the starter: the motor is disconnected
+// for good, and the run's status line says why.
+TEST(Supply, AStartStillLimitedAtItsMaximumStartTimeTripsTheStarter) {
+  MotorStart st;
+  st.method = StartMethod::SoftStarter;
+  st.t_on = 1.0;
+  st.ramp_time = 4.0;
+  st.initial_voltage = 0.4;
+  st.current_limit = 50.0;
+  st.max_start_time = 10.0;
+  RecordingLaw law;
+  const Supply s = supplyOf(st, {}, &law);
+  EXPECT_EQ(s.tripTime(), 11.0);
+  SupplyPhase p = s.initialPhase();
+  s.applyDueEvents(p, 1.0, 0.0, false, nullptr, nullptr);
+  s.applyDueEvents(p, 5.0, 0.0, false, nullptr, nullptr);
+  EXPECT_FALSE(s.applyDueEvents(p, 10.999, 20.0, false, nullptr, nullptr));
+  EXPECT_TRUE(s.applyDueEvents(p, 11.0, 20.0, false, nullptr, nullptr));
+  EXPECT_TRUE(Supply::tripped(p));
+  EXPECT_FALSE(s.state(p, 12.0, 20.0).connected);
+  EXPECT_TRUE(std::isinf(s.nextEventTime(p)));
+  EXPECT_TRUE(std::isnan(s.triggerSpeed(p)));
+  const std::string status = s.tripStatus(11.0);
+  EXPECT_EQ(status.rfind("the soft starter tripped at t = 11 s: the motor had not reached the rotor speed 60 rad/s", 0),
+            0u)
+      << status;
+  EXPECT_NE(status.find("motor.start.max_start_time = 10 s"), std::string::npos) << status;
+
+  // max_start_time = 0: it never trips.
+  st.max_start_time = 0.0;
+  const Supply patient = supplyOf(st, {}, &law);
+  SupplyPhase q{Stage::Ramp, 1.0};
+  patient.applyDueEvents(q, 5.0, 0.0, false, nullptr, nullptr);
+  EXPECT_TRUE(std::isinf(patient.nextEventTime(q)));
+  EXPECT_TRUE(std::isinf(patient.tripTime()));
+}
+
+TEST(Supply, ACurrentLimitTheMotorCannotReachAtFullSpeedIsRefused) {
+  MotorStart st;
+  st.method = StartMethod::SoftStarter;
+  st.ramp_time = 4.0;
+  st.initial_voltage = 0.4;
+  RecordingLaw law;
+  st.current_limit = 9.0;  // below the no-load current 10 A: the bypass could never close
+  try {
+    supplyOf(st, {}, &law);
+    ADD_FAILURE() << "a limit below the no-load current was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("motor.start.current_limit = 9 A is at or below the motor's no-load current 10 A"),
+              std::string::npos)
+        << e.what();
+  }
+  st.current_limit = 200.0;  // above the standstill current 110 A: the limit never acts at U_n
+  EXPECT_EQ(supplyOf(st, {}, &law).limitSpeed(), 0.0);
+  st.current_limit = 50.0;
+  st.max_start_time = 3.0;  // shorter than the ramp
+  EXPECT_THROW(supplyOf(st, {}, &law), std::invalid_argument);
+}
+
 TEST(Supply, FrequencyConverterVOverFRampWithBoost) {
   MotorStart st;
   st.method = StartMethod::FrequencyConverter;
