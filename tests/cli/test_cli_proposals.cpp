@@ -72,5 +72,40 @@ TEST(CliProposals, SweepPrintsTheVertexRunNotTheParabolasEstimate) {
   EXPECT_EQ(r.out.find("delta = 0.00875864\n"), npos) << r.out;  // the estimate is never a result
 }
 
+// optimize prints its optimum as the run at exactly the printed values: `simulate --set KEY=VALUE`
+// with them gives the printed metric within the integration tolerance, and a minimised parameter
+// is printed as it was applied (it printed "flywheel.inertia = 248.637" for a run at 248.636572173).
+TEST(CliProposals, OptimizeOptimumReproducesWhenRunAtThePrintedValues) {
+  const std::regex line("optimum: (\\S+) = (\\S+) at (\\S+)=(\\S+)");
+  std::smatch m;
+  {
+    TempDir out("opt-delta");
+    const std::string scene = model("recuperative-2cart.yaml");
+    const auto r = runRollerdyn({"optimize", scene, "--param", "crank.offset_deg", "--range", "60:120", "--minimize",
+                                 "delta", "--model", "reduced", "--method", "bobyqa", "--max-evals", "8", "--out",
+                                 out.str()},
+                                300);
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    ASSERT_TRUE(std::regex_search(r.out, m, line)) << r.out;
+    ASSERT_EQ(m[3], "crank.offset_deg");
+    const double printed = std::stod(m[2]);
+    const double run = simulatedDelta(scene, {"crank.offset_deg=" + m[4].str()}, "opt-delta-sim");
+    EXPECT_NEAR(printed, run, kAccuracy * run) << m[0];
+  }
+  TempDir out("opt-flywheel");
+  const std::string scene = model("energy-balanced-3cart.yaml");
+  const auto r = runRollerdyn({"optimize", scene, "--param", "flywheel.inertia", "--range", "0:400", "--minimize",
+                               "flywheel.inertia", "--constraint", "delta<=0.05", "--model", "reduced", "--method",
+                               "cobyla", "--max-evals", "12", "--out", out.str()},
+                              300);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  ASSERT_TRUE(std::regex_search(r.out, m, line)) << r.out;
+  EXPECT_EQ(m[2].str(), m[4].str()) << m[0];  // the minimised inertia is the one the run used
+  const double run = simulatedDelta(scene, {"flywheel.inertia=" + m[2].str()}, "opt-flywheel-sim");
+  const auto j = nlohmann::json::parse(slurp(out.path() / "optimize.json"));
+  EXPECT_NEAR(j["optimum"]["metrics"]["delta"].get<double>(), run, kAccuracy * run);
+  EXPECT_LE(run, 0.05 * (1 + kAccuracy));
+}
+
 }  // namespace
 }  // namespace rollerdyn
