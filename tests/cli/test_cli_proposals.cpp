@@ -107,5 +107,56 @@ TEST(CliProposals, OptimizeOptimumReproducesWhenRunAtThePrintedValues) {
   EXPECT_LE(run, 0.05 * (1 + kAccuracy));
 }
 
+// simulate's flywheel for δ* is an estimate (excess work, or the run's δ·J extrapolated), never
+// run by simulate: the console, summary.json and the report all say so, with its basis, and give a
+// run that checks it; that run, as printed, runs the printed flywheel.
+TEST(CliProposals, FlywheelProposalIsLabelledAnEstimateEverywhereWithARunThatChecksIt) {
+  const std::string scene = model("recuperative-2cart.yaml");
+  const std::vector<std::string> sets = {"--set", "sizing.target_delta=0.04", "--set", "simulation.t_end=8", "--set",
+                                         "simulation.reactions=false"};
+  TempDir out("flywheel"), rep("flywheel-report");
+  std::vector<std::string> args = {"simulate", scene, "--out", out.str()};
+  args.insert(args.end(), sets.begin(), sets.end());
+  const auto r = runRollerdyn(args, 120);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  args = {"report", scene, "--out", rep.str()};
+  args.insert(args.end(), sets.begin(), sets.end());
+  const auto rr = runRollerdyn(args, 300);
+  ASSERT_EQ(rr.exit_code, 0) << rr.out << rr.err;
+  const auto f = nlohmann::json::parse(slurp(out.path() / "summary.json"))["sizing"]["flywheel"];
+  // JSON: the proposal is an estimate, with its basis and the runs that check it.
+  ASSERT_EQ(f["estimate"], true) << f.dump(2);
+  EXPECT_EQ(f["basis"].get<std::string>().rfind("an estimate, not run: ", 0), 0u) << f["basis"];
+  const auto& check = f["check_by_runs"];
+  ASSERT_TRUE(check["run_at_proposal"].is_string()) << f.dump(2);
+  char proposal[32];
+  std::snprintf(proposal, sizeof proposal, "%.4g", f["flywheel_crankshaft"].get<double>());  // the crankshaft's
+  EXPECT_EQ(check["flywheel_inertia"].get<double>(), std::stod(proposal));
+  // Console: the same number, labelled, with the basis and the check run.
+  EXPECT_NE(r.out.find(std::string("for δ* = 0.04, by estimate: a flywheel of ") + proposal + " kg·m² in all on the crankshaft"),
+            npos) << r.out;
+  EXPECT_NE(r.out.find(f["basis"].get<std::string>()), npos) << r.out;
+  const std::string cmd = check["run_at_proposal"];
+  EXPECT_NE(r.out.find("      " + cmd + "\n"), npos) << r.out;
+  // Report: the same number, labelled, with the basis and the check run.
+  const std::string html = slurp(rep.path() / "report.html");
+  EXPECT_NE(html.find(std::string("flywheel on the crankshaft reaching δ* (ESTIMATE, not run)</td><td class=\"n\">") + proposal),
+            npos);
+  std::string basis_html;  // as the page escapes it
+  for (char c : f["basis"].get<std::string>()) basis_html += c == '\'' ? std::string("&#39;") : std::string(1, c);
+  EXPECT_NE(html.find(basis_html), npos) << basis_html;
+  EXPECT_NE(html.find("<code>" + cmd + "</code>"), npos);
+  // The check run, as printed, runs the printed flywheel.
+  ASSERT_EQ(cmd.rfind("rollerdyn simulate ", 0), 0u) << cmd;
+  EXPECT_NE(cmd.find(std::string(" --set flywheel.inertia=") + proposal), npos) << cmd;
+  TempDir run("flywheel-check");
+  const std::string line = std::string(ROLLERDYN_BINARY) + cmd.substr(std::string("rollerdyn").size()) + " --out " +
+                           run.str() + " > /dev/null 2>&1";
+  ASSERT_EQ(WEXITSTATUS(std::system(line.c_str())), 0) << line;
+  const auto checked = nlohmann::json::parse(slurp(run.path() / "summary.json"));
+  EXPECT_EQ(checked["overrides"].back(), std::string("flywheel.inertia=") + proposal);
+  EXPECT_TRUE(checked["delta"].is_number());
+}
+
 }  // namespace
 }  // namespace rollerdyn
