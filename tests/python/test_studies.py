@@ -58,6 +58,9 @@ def test_optimize_with_a_python_constraint_is_the_metric_constraint():
     assert by_function.optimum["parameters"] == by_text.optimum["parameters"]
     assert by_function.optimum["metrics"]["delta"] <= 0.25
     assert "delta_at_most_0_25(row)<=0" in by_function.history.columns
+    # Printed as the run at exactly those values (it printed the inertia rounded to 6 digits).
+    inertia = by_text.optimum["parameters"]["flywheel.inertia"]
+    assert f"flywheel.inertia={inertia!r}" in repr(by_text) and f"flywheel.inertia = {inertia!r} at" in repr(by_text)
     # The same designs were evaluated; the order differs where --method auto's grid stage runs on
     # two threads.
     assert sorted(by_text.history["flywheel.inertia"]) == sorted(by_function.history["flywheel.inertia"])
