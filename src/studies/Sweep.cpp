@@ -246,7 +246,7 @@ void runVertex(const SweepOptions& o, SweepResult& r) {
   SweepVertex& v = r.optimum.vertex;
   if (!v.available) return;
   if (o.interrupt && o.interrupt->load()) {
-    v.note = "not run (interrupted): an estimate only";
+    v.note = "not run (interrupted)";
     return;
   }
   const std::vector<std::string> texts = {v.text};

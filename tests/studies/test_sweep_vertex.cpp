@@ -4,6 +4,7 @@
 // points is wrong, and an exact parabola, where it is right) and a shipped scene.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <mutex>
 #include <string>
@@ -166,6 +167,31 @@ TEST(SweepVertex, AVertexRunThatStallsIsNotUsable) {
   const std::string text = describeOptimum(s.o, r);
   EXPECT_NE(text.find("a run there is not usable (stalled)"), npos) << text;
   EXPECT_TRUE(sweepOptimumJson(s.o, r)["parabola"]["run"]["value"].is_null());
+}
+
+// Interrupted after the grid (Ctrl-C): the vertex is not run, and the parabola's value is printed
+// only as an estimate, never as the minimum.
+TEST(SweepVertex, AnInterruptedSweepLabelsTheVertexAnEstimate) {
+  KnownSweep s(kinked);
+  std::atomic<bool> stop{false};
+  s.o.threads = 1;
+  s.o.interrupt = &stop;
+  s.o.run_point = [&s, &stop](const std::vector<std::string>& t, const std::vector<double>& v) {
+    s.asked.push_back(t[0]);
+    if (s.asked.size() == 13) stop = true;  // Ctrl-C during the last grid point
+    return knownRun(t, v, kinked(v[0]));
+  };
+  const SweepResult r = runSweep(s.o);
+  EXPECT_EQ(s.asked.size(), 13u);
+  ASSERT_TRUE(r.optimum.vertex.available);
+  EXPECT_FALSE(r.optimum.vertex.ran);
+  EXPECT_NEAR(r.optimum.value, 0.001, 1e-15);
+  const std::string text = describeOptimum(s.o, r);
+  EXPECT_EQ(text.rfind("minimum of delta = 0.001 at crank.offset_deg=60", 0), 0u) << text;
+  EXPECT_NE(text.find("puts the minimum at crank.offset_deg=57.5 with delta = -0.00025: an estimate, not run (interrupted)"),
+            npos)
+      << text;
+  EXPECT_TRUE(sweepOptimumJson(s.o, r)["parabola"]["run"].is_null());
 }
 
 // On a shipped scene the vertex is run with the sweep's model, --set overrides and settings: its
