@@ -251,8 +251,7 @@ FlywheelSizing sizeFlywheel(const Scene& sc, const Table& ts, const SteadyState&
                      ? 2.0 * M_PI * w.window_revolutions / (w.t_end - w.t_begin)
                      : moments(t, w_c, b, e).mean;
   f.excess_work = load ? load->excess_work : kNaN;
-  if (!std::isfinite(f.target_delta) || !std::isfinite(delta) || !std::isfinite(f.inertia_effective))
-    return f;
+  if (!std::isfinite(f.target_delta) || !std::isfinite(delta) || !std::isfinite(f.inertia_effective)) return f;
   // Energy method from the run alone: δ ≈ ΔE/(J·ω²) with ΔE fixed by the loads, so δ·J stays
   // constant and J* = J·δ/δ*. It holds only once δ is small: where the run's δ is large the
   // motor's slip follows the load over a turn and the carts' share of J varies, so δ·J of the run
@@ -265,12 +264,13 @@ FlywheelSizing sizeFlywheel(const Scene& sc, const Table& ts, const SteadyState&
   // Measured against runs (reduced model, δ* = 0.05): six carts at 90° 1103 against 1307 kg·m²
   // (-16 %: the coupling is elastic and its mode near 6ω), the energy-balanced three carts 206
   // against about 166 (+24 %: the motor's slip lowers δ further); the flywheels proposed give
-  // δ = 1.16 δ*, 0.90 δ* and (recuperative-2cart, δ* = 0.04) 0.86 δ*. An estimate, said so with it.
+  // δ = 1.16 δ*, 0.90 δ*, (recuperative-2cart, δ* = 0.04) 0.86 δ*: an estimate, said so (basis),
+  // not run here (a multibody run would double every simulate's cost; check_by_runs, SizingSummary.h).
   // The two together: the larger. The excess work is the better guide where the run's δ is large
-  // (far from the δ·J = const regime); the run's own δ·J is where δ is already small, e.g. a run
-  // with the proposed flywheel (six carts at 90° with 1103 kg·m²: δ = 0.058, J* by the excess work
-  // 1302 kg·m² below the present 1310, so it alone would read "met"; δ·J adds 214 where runs need
-  // 205). The larger never proposes nothing while the run's δ exceeds δ*.
+  // (far from δ·J = const); the run's own δ·J where δ is already small, e.g. a run with the proposed
+  // flywheel (six carts at 90° with 1103 kg·m²: δ = 0.058, J* by the excess work 1302 kg·m² below
+  // the present 1310, so it alone would read "met"; δ·J adds 214 where runs need 205). The larger
+  // never proposes nothing while the run's δ exceeds δ*.
   if (std::isfinite(f.excess_work) && f.omega_mean > 0) {
     f.inertia_required = f.excess_work / (f.target_delta * f.omega_mean * f.omega_mean);
     const double by_excess_work = std::max(0.0, f.inertia_required - f.inertia_effective);
@@ -280,20 +280,20 @@ FlywheelSizing sizeFlywheel(const Scene& sc, const Table& ts, const SteadyState&
             ? "excess work: J* = ΔA/(δ*·ω̄²), ΔA the largest swing of ∫(Q̄ - Q)dφ over a revolution at constant "
               "crank speed, Q the load torque plus the carts' and rods' inertia torque ½·J'(φ)·ω²; less the drive's "
               "present inertia J (time mean of 2T/ω_crank²); the larger of it and the run's δ·J held constant. It "
-              "neglects the motor's slip (which lowers δ a little further) and the coupling's elasticity: check it "
-              "with a run with flywheel.inertia set"
+              "neglects the motor's slip (which lowers δ a little further) and the coupling's elasticity"
             : "the run's δ·J held constant, J·(δ/δ* - 1), the larger of it and the excess work's ΔA/(δ*·ω̄²) - J "
-              "(the run's δ is already small, where δ·J is nearly constant): check it with a run with "
-              "flywheel.inertia set";
+              "(the run's δ is already small, where δ·J is nearly constant)";
+    f.basis = "an estimate, not run: on the papers' machines the flywheel so proposed gave δ = 0.86 ... 1.16 δ*";
   } else {
     f.added_inertia_crank = f.added_inertia_energy_method;
-    f.method =
-        "energy method: δ ≈ ΔE/(J·ω²) with ΔE fixed by the loads, so J* = J·δ/δ*; J = time mean of 2T/ω_crank² "
-        "of this run (constant-inertia approximation, motor slip ignored): a first estimate that falls short "
-        "where the run's δ is large; check it with a run with flywheel.inertia set";
+    f.method = "energy method: δ ≈ ΔE/(J·ω²) with ΔE fixed by the loads, so J* = J·δ/δ*; J = time mean of "
+               "2T/ω_crank² of this run (constant-inertia approximation, motor slip ignored)";
+    f.basis = "an estimate, not run: a first estimate that falls short where the run's δ is large";
   }
+  f.estimate = f.added_inertia_crank > 0;
+  if (!f.estimate) f.basis = delta <= f.target_delta ? "this run's δ meets δ*: nothing to add" : "";
   // The whole flywheel at either place that replaces the present one (the trial read "1103 on the
-  // crankshaft or 0 on the motor shaft": the present flywheel counted at one place only).
+  // crankshaft or 0 on the motor shaft").
   const bool on_crank = sc.flywheel.location == FlywheelLocation::Crankshaft;
   const double u = sc.reducer.ratio, to_crank = sc.reducer.delta * u * u;
   const double present_at_crank = on_crank ? sc.flywheel.inertia : sc.flywheel.inertia * to_crank;

@@ -102,6 +102,9 @@ struct FlywheelSizing {
   double inertia_required = 0;      // J* = ΔA/(δ*·ω̄²), the drive inertia at the crank for δ* [kg·m²]
   double added_inertia_energy_method = 0;  // J·(δ/δ* - 1): the run's δ·J held constant [kg·m²]
   std::string method;               // which of the two gave added_inertia_crank, in words
+  bool estimate = false;            // a flywheel is proposed, by estimate (simulate never runs it)
+  std::string basis;                // what the proposal rests on: an estimate (not run) and its accuracy, or
+                                    // the run's own δ meeting δ*; "" without a proposal
   double added_inertia_crank = 0;   // ΔJ ≥ 0 on the crankshaft: J* - J, or without ΔA J·(δ/δ* - 1) [kg·m²]
   double flywheel_crankshaft = 0;   // flywheel on the crankshaft reaching δ* (present + ΔJ) [kg·m²]
   double flywheel_motor_shaft = 0;  // the same on the motor shaft: ΔJ/(δ_red·u²) + present [kg·m²]

@@ -118,7 +118,9 @@ json sizingJson(const DriveSizing& s) {
                    {"omega_mean", num(f.omega_mean)},
                    {"inertia_required", num(f.inertia_required)},
                    {"added_inertia_energy_method", num(f.added_inertia_energy_method)},
-                   {"method", f.method.empty() ? json(nullptr) : json(f.method)}};
+                   {"method", f.method.empty() ? json(nullptr) : json(f.method)},
+                   {"estimate", f.basis.empty() ? json(nullptr) : json(f.estimate)},
+                   {"basis", f.basis.empty() ? json(nullptr) : json(f.basis)}};
   const CouplingSizing& c = s.coupling;
   if (c.available) {
     j["coupling"] = {{"mean", num(c.mean)}, {"peak", num(c.peak)}, {"swing", num(c.swing)},
@@ -184,6 +186,124 @@ static std::string wholeRunWords(const json& summary) {
   return su.is_object() ? "begins at speed: no start-up" : "no motor start in the run";
 }
 
+namespace {
+
+std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); }
+
+// A command-line word, quoted for the shell where it needs it.
+std::string shellWord(const std::string& a) {
+  if (!a.empty() && a.find_first_of(" '\"$`\\*?;&|<>()") == std::string::npos) return a;
+  std::string q = "'";
+  for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// The flywheel part of sizingText: the swing, the proposal with its basis, the runs that check it.
+std::string flywheelText(const json& summary) {
+  std::ostringstream o;
+  const json& f = jsonMember(jsonMember(summary, "sizing"), "flywheel");
+  const std::string pad = "                                    ";
+  o << "  flywheel                          kinetic-energy swing ΔT " << fmt(jsonMember(f, "kinetic_energy_swing"), "%.4g")
+    << " J per revolution; drive inertia at the crank J " << fmt(jsonMember(f, "inertia_effective"), "%.4g")
+    << " kg·m²; δ " << fmt(jsonMember(f, "delta"), "%.4g") << "\n";
+  if (!jsonMember(f, "target_delta").is_number()) {
+    o << pad << "target δ* not given (sizing.target_delta)\n";
+    return o.str();
+  }
+  const json& added = jsonMember(f, "added_inertia_crankshaft");
+  const json& basis = jsonMember(f, "basis");
+  if (!(jsonMember(f, "estimate").is_boolean() && jsonMember(f, "estimate").get<bool>())) {
+    // Met only by the run's measured δ, never by an estimate.
+    if (basis.is_string())
+      o << pad << "for δ* = " << fmt(jsonMember(f, "target_delta"), "%.4g") << ": " << basis.get<std::string>()
+        << " (δ = " << fmt(jsonMember(f, "delta"), "%.4g") << ")\n";
+    return o.str();
+  }
+  // The whole flywheel at each place, and what that adds to the present one (the third trial read
+  // "flywheel 1317 kg·m²" as the amount to add to the 1103 already fitted).
+  const json& J_req = jsonMember(f, "inertia_required");
+  const double J_now = jsonMember(f, "inertia_effective").is_number() ? jsonMember(f, "inertia_effective").get<double>() : NAN;
+  o << pad << "for δ* = " << fmt(jsonMember(f, "target_delta"), "%.4g") << ", by estimate: a flywheel of "
+    << fmt(jsonMember(f, "flywheel_crankshaft"), "%.4g") << " kg·m² in all on the crankshaft (" << fmt(added, "%.4g")
+    << " more than now) or " << fmt(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² in all on the motor shaft\n";
+  if (J_req.is_number())
+    o << pad << "(the larger of two estimates of what to add: by the excess work ΔA "
+      << fmt(jsonMember(f, "excess_work"), "%.4g") << " J of a revolution\n"
+      << pad << "at constant speed, J* = ΔA/(δ*·ω̄²) = " << fmt(J_req, "%.4g")
+      << " kg·m² at the crank less the present J " << fmt(jsonMember(f, "inertia_effective"), "%.4g") << ": "
+      << (J_req.get<double>() > J_now ? fmt(json(J_req.get<double>() - J_now), "%.4g") + " kg·m²" : std::string("nothing"))
+      << ";\n"
+      << pad << "by the run's own δ·J held constant, " << fmt(jsonMember(f, "added_inertia_energy_method"), "%.4g")
+      << " kg·m² (short where the run's δ is large);\n"
+      << pad << "motor slip and coupling elasticity neglected)\n";
+  else
+    o << pad << "(energy method, J·δ constant; the motor's slip and the carts' inertia vary over a turn)\n";
+  if (basis.is_string()) o << pad << basis.get<std::string>() << "\n";
+  const json& check = jsonMember(f, "check_by_runs");
+  if (!check.is_object()) return o.str();
+  const std::string speed = jsonMember(check, "started_at_speed").is_boolean() && jsonMember(check, "started_at_speed").get<bool>()
+                                ? " started at this run's mean crank speed (whether the drive starts from rest with "
+                                  "it is a separate run)"
+                                : "";
+  const json& run = jsonMember(check, "run_at_proposal");
+  const json& smallest = jsonMember(check, "smallest_from_runs");
+  if (run.is_string())
+    o << pad << "check the estimate: δ of a run with flywheel.inertia = " << fmt(jsonMember(check, "flywheel_inertia"), "%.4g")
+      << " kg·m² (" << str(jsonMember(check, "location")) << ")" << speed << ":\n      " << run.get<std::string>() << "\n";
+  if (smallest.is_string())
+    o << pad << "the smallest flywheel (" << str(jsonMember(check, "location")) << ") that meets δ* in steady running, from runs:\n      "
+      << smallest.get<std::string>() << "\n";
+  if (jsonMember(check, "note").is_string()) o << pad << jsonMember(check, "note").get<std::string>() << "\n";
+  return o.str();
+}
+
+}  // namespace
+
+json flywheelChecks(const json& summary) {
+  const json& f = jsonMember(jsonMember(summary, "sizing"), "flywheel");
+  if (!(jsonMember(f, "estimate").is_boolean() && jsonMember(f, "estimate").get<bool>()) ||
+      !jsonMember(f, "target_delta").is_number())
+    return nullptr;
+  const bool motor_shaft = jsonMember(f, "location").is_string() && jsonMember(f, "location").get<std::string>() == "motor_shaft";
+  const json& proposal = jsonMember(f, motor_shaft ? "flywheel_motor_shaft" : "flywheel_crankshaft");
+  if (!proposal.is_number()) return nullptr;
+  // The flywheel as the console prints it, so the run checks exactly the printed value.
+  const std::string value = fmt(proposal, "%.4g");
+  json c = {{"flywheel_inertia", std::stod(value)}, {"location", motor_shaft ? "motor shaft" : "crankshaft"}};
+  // The user's --set options; the flywheel is sized for steady running, so each run starts at this
+  // run's mean crank speed: a heavy flywheel's slow start from rest (which may not settle within
+  // t_end) would not make every design look unusable.
+  std::string sets;
+  bool sets_speed = false;
+  if (jsonMember(summary, "overrides").is_array())
+    for (const json& ov : jsonMember(summary, "overrides"))
+      if (ov.is_string()) {
+        sets += " --set " + shellWord(ov.get<std::string>());
+        sets_speed = sets_speed || ov.get<std::string>().rfind("initial.crank_speed=", 0) == 0;
+      }
+  const json& w_mean = jsonMember(jsonMember(summary, "omega_crank"), "mean");
+  const bool start_at_speed = !sets_speed && w_mean.is_number() && w_mean.get<double>() > 0;
+  if (start_at_speed) sets += " --set initial.crank_speed=" + fmt(w_mean, "%.4g");
+  c["started_at_speed"] = start_at_speed;
+  // The same model as this run (simulate and optimize run the multibody model unless told otherwise).
+  const bool reduced = jsonMember(summary, "model").is_string() && jsonMember(summary, "model").get<std::string>() == "reduced";
+  const std::string model = reduced ? " --model reduced" : "";
+  const json& scene = jsonMember(summary, "scene_path");
+  if (!scene.is_string()) {
+    c["run_at_proposal"] = c["smallest_from_runs"] = nullptr;
+    c["note"] = "the scene is not a file: check the estimate by a run with flywheel.inertia = " + value + " kg·m²" +
+                (start_at_speed ? " and initial.crank_speed = " + fmt(w_mean, "%.4g") + " rad/s" : std::string());
+    return c;
+  }
+  const std::string head = shellWord(scene.get<std::string>()) + sets + model;
+  c["run_at_proposal"] = "rollerdyn simulate " + head + " --set flywheel.inertia=" + value;
+  // A range that holds the estimate with room to spare.
+  const double upper = std::max(10.0, 3.0 * proposal.get<double>());
+  c["smallest_from_runs"] = "rollerdyn optimize " + head + " --param flywheel.inertia --range 0:" + fmt(json(upper), "%.0f") +
+                            " --minimize flywheel.inertia --constraint 'delta<=" + fmt(jsonMember(f, "target_delta"), "%.4g") + "'";
+  return c;
+}
+
 std::string sizingText(const json& summary) {
   const json& s = jsonMember(summary, "sizing");
   if (!s.is_object()) return "";
@@ -232,80 +352,7 @@ std::string sizingText(const json& summary) {
   } else {
     o << "  motor                             n/a (no motor torque in this run)\n";
   }
-  const json& f = jsonMember(s, "flywheel");
-  o << "  flywheel                          kinetic-energy swing ΔT " << fmt(jsonMember(f, "kinetic_energy_swing"), "%.4g")
-    << " J per revolution; drive inertia at the crank J " << fmt(jsonMember(f, "inertia_effective"), "%.4g")
-    << " kg·m²; δ " << fmt(jsonMember(f, "delta"), "%.4g") << "\n";
-  if (jsonMember(f, "target_delta").is_number()) {
-    // The whole flywheel at each place, and what that adds to the present one (the third trial read
-    // "flywheel 1317 kg·m²" as the amount to add to the 1103 already fitted).
-    const json& added_now = jsonMember(f, "added_inertia_crankshaft");
-    const double J_req = jsonMember(f, "inertia_required").is_number() ? jsonMember(f, "inertia_required").get<double>() : NAN;
-    const double J_now = jsonMember(f, "inertia_effective").is_number() ? jsonMember(f, "inertia_effective").get<double>() : NAN;
-    o << "                                    for δ* = " << fmt(jsonMember(f, "target_delta"), "%.4g") << ": a flywheel of "
-      << fmt(jsonMember(f, "flywheel_crankshaft"), "%.4g") << " kg·m² in all on the crankshaft (" << fmt(added_now, "%.4g")
-      << " more than now) or " << fmt(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² in all on the motor shaft\n";
-    if (jsonMember(f, "inertia_required").is_number())
-      o << "                                    (the larger of two estimates of what to add: by the excess work ΔA "
-        << fmt(jsonMember(f, "excess_work"), "%.4g") << " J of a revolution\n"
-        << "                                    at constant speed, J* = ΔA/(δ*·ω̄²) = " << fmt(jsonMember(f, "inertia_required"), "%.4g")
-        << " kg·m² at the crank less the present J " << fmt(jsonMember(f, "inertia_effective"), "%.4g") << ": "
-        << (J_req > J_now ? fmt(json(J_req - J_now), "%.4g") + " kg·m²" : std::string("nothing")) << ";\n"
-        << "                                    by the run's own δ·J held constant, "
-        << fmt(jsonMember(f, "added_inertia_energy_method"), "%.4g") << " kg·m² (short where the run's δ is large);\n"
-        << "                                    motor slip and coupling elasticity neglected: on the papers' machines the\n"
-        << "                                    flywheel proposed gives δ = 0.86 ... 1.16 δ*)\n";
-    else
-      o << "                                    (energy method, J·δ constant: a first estimate; it falls short where the\n"
-        << "                                    run's δ is large, the motor's slip and the carts' inertia varying over a turn)\n";
-    const json& added = jsonMember(f, "added_inertia_crankshaft");
-    if (added.is_number() && added.get<double>() > 0) {
-      // The smallest flywheel from runs, as a command that runs as printed: the scene file, the
-      // user's --set options, a range that holds the estimate with room to spare.
-      const bool motor_shaft = jsonMember(f, "location").is_string() && jsonMember(f, "location").get<std::string>() == "motor_shaft";
-      const json& estimate = jsonMember(f, motor_shaft ? "flywheel_motor_shaft" : "flywheel_crankshaft");
-      const double upper = std::max(10.0, 3.0 * (estimate.is_number() ? estimate.get<double>() : 0.0));
-      auto quoted = [](const std::string& a) {
-        if (a.find_first_of(" '\"$`\\*?;&|<>()") == std::string::npos) return a;
-        std::string q = "'";
-        for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-        return q + "'";
-      };
-      std::string cmd = "rollerdyn optimize " + quoted(str(jsonMember(summary, "scene_path")));
-      bool sets_speed = false;
-      if (jsonMember(summary, "overrides").is_array())
-        for (const json& ov : jsonMember(summary, "overrides"))
-          if (ov.is_string()) {
-            cmd += " --set " + quoted(ov.get<std::string>());
-            sets_speed = sets_speed || ov.get<std::string>().rfind("initial.crank_speed=", 0) == 0;
-          }
-      // The flywheel is sized for steady running: each run starts at this run's mean crank speed,
-      // so that a heavy flywheel's slow start from rest (which may not settle within t_end) does
-      // not make every design look unusable. Whether the drive starts from rest with the chosen
-      // flywheel is a separate run.
-      const json& w_mean = jsonMember(jsonMember(summary, "omega_crank"), "mean");
-      const bool start_at_speed = !sets_speed && w_mean.is_number() && w_mean.get<double>() > 0;
-      if (start_at_speed) cmd += " --set initial.crank_speed=" + fmt(w_mean, "%.4g");
-      // The same model as this run (optimize runs the multibody model unless told otherwise).
-      if (jsonMember(summary, "model").is_string() && jsonMember(summary, "model").get<std::string>() == "reduced")
-        cmd += " --model reduced";
-      cmd += " --param flywheel.inertia --range 0:" + fmt(json(upper), "%.0f") +
-             " --minimize flywheel.inertia --constraint 'delta<=" + fmt(jsonMember(f, "target_delta"), "%.4g") + "'";
-      o << "                                    the smallest flywheel (" << (motor_shaft ? "motor shaft" : "crankshaft")
-        << ") that meets δ* in steady running, from runs"
-        << (start_at_speed ? " started at this run's mean crank speed (whether the drive starts from rest with it "
-                             "is a separate run)"
-                           : "")
-        << ":\n      " << cmd << "\n";
-    } else if (added.is_number() && jsonMember(f, "delta").is_number() &&
-               jsonMember(f, "delta").get<double>() <= jsonMember(f, "target_delta").get<double>()) {
-      // Met only by the run's measured δ, never by an estimate.
-      o << "                                    this run already meets δ* (δ = " << fmt(jsonMember(f, "delta"), "%.4g")
-        << " ≤ δ*: no flywheel needs adding)\n";
-    }
-  } else {
-    o << "                                    target δ* not given (sizing.target_delta)\n";
-  }
+  o << flywheelText(summary);
   const json& c = jsonMember(s, "coupling");
   if (c.is_object()) {
     o << "  coupling torque (crank axis)      mean " << fmt(jsonMember(c, "mean"), "%.4g") << ", peak |M| "

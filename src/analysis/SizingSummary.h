@@ -21,6 +21,14 @@ namespace rollerdyn {
 // docs/outputs.md ("Drive sizing").
 nlohmann::json sizingJson(const DriveSizing& sizing);
 
+// The runs that check the flywheel proposed for δ* (sizing.flywheel: an estimate, never run by
+// simulate), from a summary.json object that holds scene_path, overrides, model and omega_crank:
+// {flywheel_inertia (the proposal at the scene's flywheel location as printed [kg·m²]), location,
+// started_at_speed, run_at_proposal (a `rollerdyn simulate` command: δ with that flywheel),
+// smallest_from_runs (a `rollerdyn optimize` command), note (when the scene is not a file)}, or
+// null when nothing is proposed. Goes into sizing.flywheel.check_by_runs.
+nlohmann::json flywheelChecks(const nlohmann::json& summary);
+
 // The table for the terminal, from a summary.json object (its `sizing`); "" when it has none.
 std::string sizingText(const nlohmann::json& summary);
 

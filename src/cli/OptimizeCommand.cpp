@@ -71,8 +71,20 @@ int runOptimizeCommand(const OptimizeArgs& a) {
   if (!r.scope.empty()) std::cout << "search: " << r.scope << "\n";
   if (!plot_note.empty()) std::cerr << "rollerdyn: figures: " << plot_note << "\n";
   if (r.found) {
+    // The values of the run at exactly the printed parameters: a parameter minimised as it was
+    // applied (--set), a metric with 9 significant digits (below the integration's accuracy), so
+    // that `simulate --set KEY=VALUE` with the printed values gives the printed metric.
     const OptimizeEvaluation& b = r.history[r.best];
-    std::cout << "optimum: " << o.minimize << " = " << b.objective << " at";
+    std::string objective;
+    for (std::size_t k = 0; k < o.params.size(); ++k)
+      if (o.params[k].key == o.minimize) objective = b.texts[k];
+    if (objective.empty()) {
+      std::ostringstream v;
+      v.precision(9);
+      v << b.objective;
+      objective = v.str();
+    }
+    std::cout << "optimum: " << o.minimize << " = " << objective << " at";
     for (std::size_t k = 0; k < o.params.size(); ++k) std::cout << ' ' << o.params[k].key << '=' << b.texts[k];
     std::cout << (o.constraints.empty() ? "" : " (constraints hold)") << "\n";
   } else {

@@ -72,7 +72,8 @@ void parseDesignOptions(const SweepArgs& a, SweepOptions& o) {
 }
 
 std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done, std::size_t total) {
-  std::string s = "[" + std::to_string(done) + "/" + std::to_string(total) + "]";
+  // After the grid: the run at the parabola's vertex (--minimize, one parameter), before any optimum.
+  std::string s = done > total ? "[vertex of the parabola]" : "[" + std::to_string(done) + "/" + std::to_string(total) + "]";
   for (std::size_t k = 0; k < o.params.size(); ++k) s += " " + o.params[k].key + "=" + p.texts[k];
   char buf[256];
   // The motion first (stalled, rocking, turning), then whether a turning crank settled.
@@ -264,7 +265,9 @@ Subcommand addSweepCommand(CLI::App& app) {
                   "omega_crank_midrange, twist_rate_swing, twist_accel_swing, or a drive-sizing metric "
                   "(motor_torque_rotor_rms, motor_rms_over_nominal, motor_peak_over_breakdown, motor_power_mean, "
                   "energy_per_revolution, coupling_torque_peak, guide_roller_peak, rod_force_peak, "
-                  "crank_pin_peak, main_bearing_peak, ..._equivalent_load: see sweep.csv)");
+                  "crank_pin_peak, main_bearing_peak, ..._equivalent_load: see sweep.csv); with one numeric "
+                  "parameter the vertex of the parabola through the best point and its neighbours is run as one "
+                  "more point, and the optimum is the better of the two runs");
   cmd->add_option("--threads", args->threads, "worker threads (default 2; under MPI one per rank)")->check(CLI::Range(1, 64));
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/sweep_<keys>)");
   cmd->footer(

@@ -114,8 +114,20 @@ std::string sizingSectionHtml(const json& s) {
       "largest over the window's revolutions");
   row(h, "drive inertia at the crank J (mean 2T/ω²)", jsonNumberText(jsonMember(f, "inertia_effective")), "kg·m²");
   row(h, "target δ* (sizing.target_delta)", jsonNumberText(jsonMember(f, "target_delta")), "-");
-  row(h, "flywheel on the crankshaft reaching δ*", jsonNumberText(jsonMember(f, "flywheel_crankshaft")), "kg·m²", text(jsonMember(f, "method")));
-  row(h, "or on the motor shaft", jsonNumberText(jsonMember(f, "flywheel_motor_shaft")), "kg·m²", "counts u²·δ_red times");
+  // The proposal is an estimate (never run by simulate): said so, with the runs that check it.
+  const bool estimate = jsonMember(f, "estimate").is_boolean() && jsonMember(f, "estimate").get<bool>();
+  const std::string est = estimate ? " (ESTIMATE, not run)" : "";
+  row(h, "flywheel on the crankshaft reaching δ*" + est, jsonNumberText(jsonMember(f, "flywheel_crankshaft")), "kg·m²", text(jsonMember(f, "method")));
+  row(h, "or on the motor shaft" + est, jsonNumberText(jsonMember(f, "flywheel_motor_shaft")), "kg·m²", "counts u²·δ_red times");
+  if (jsonMember(f, "basis").is_string()) row(h, "what the flywheel proposed rests on", "", "", text(jsonMember(f, "basis")));
+  const json& check = jsonMember(f, "check_by_runs");
+  if (jsonMember(check, "run_at_proposal").is_string())
+    row(h, "check the estimate: δ of a run with flywheel.inertia = " + jsonNumberText(jsonMember(check, "flywheel_inertia")) +
+               " kg·m² (" + jsonMember(check, "location").get<std::string>() + ")",
+        "", "", "<code>" + text(jsonMember(check, "run_at_proposal")) + "</code>");
+  if (jsonMember(check, "smallest_from_runs").is_string())
+    row(h, "the smallest flywheel that meets δ*, from runs", "", "", "<code>" + text(jsonMember(check, "smallest_from_runs")) + "</code>");
+  if (jsonMember(check, "note").is_string()) row(h, "check the estimate", "", "", text(jsonMember(check, "note")));
   h << "</table>\n";
   const json& c = jsonMember(z, "coupling");
   if (c.is_object()) {

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "analysis/FrictionChecks.h"
+#include "analysis/SizingSummary.h"
 #include "analysis/Summary.h"
 #include "report/OutputFolder.h"
 #include "scene/KeyEffects.h"
@@ -21,6 +22,8 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
           ? nlohmann::json(nullptr)
           : nlohmann::json(std::filesystem::absolute(options.scene_file).lexically_normal().string());
   summary["overrides"] = options.overrides;
+  if (summary.contains("sizing") && summary["sizing"].is_object() && summary["sizing"]["flywheel"].is_object())
+    summary["sizing"]["flywheel"]["check_by_runs"] = flywheelChecks(summary);  // the runs that check its estimate
   if (!summary.contains("warnings") || !summary["warnings"].is_array()) summary["warnings"] = nlohmann::json::array();
   for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
   // Keys the scene gives that this model's run does not read: said, never silently dropped.

@@ -22,6 +22,7 @@
 #include "scene/DidYouMean.h"
 #include "studies/RunSummary.h"
 #include "studies/SweepExecution.h"
+#include "studies/SweepPointBudget.h"
 
 namespace rollerdyn {
 
@@ -148,7 +149,7 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
 
 SweepPoint runSweepPoint(const SweepOptions& o, const std::vector<std::string>& texts,
                          const std::vector<double>& values) {
-  return runPoint(o, texts, values);
+  return o.run_point ? o.run_point(texts, values) : runPoint(o, texts, values);
 }
 
 bool SweepParameter::numeric() const {
@@ -228,55 +229,6 @@ double SweepPoint::metric(const std::string& name) const {
   return kNaN;
 }
 
-SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
-                         const std::vector<SweepPoint>& points, const std::string& metric) {
-  SweepOptimum opt;
-  opt.metric = metric;
-  bool any_steady = false;
-  for (const SweepPoint& p : points)
-    any_steady = any_steady || (p.complete && p.steady && std::isfinite(p.metric(metric)));
-  // A rocking or stalled crank, or one still starting when its run ended, is never an optimum,
-  // whatever its number says.
-  auto candidate = [&](const SweepPoint& p) {
-    return p.complete && p.motion != "rocking" && p.motion != "stalled" && p.motion != "starting" &&
-           std::isfinite(p.metric(metric)) && (!any_steady || p.steady);
-  };
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (!candidate(points[i])) continue;
-    if (!opt.found || points[i].metric(metric) < opt.value) {
-      opt.found = true;
-      opt.index = i;
-      opt.value = points[i].metric(metric);
-      opt.steady = points[i].steady;
-    }
-  }
-  if (!opt.found) {
-    opt.note = "no completed point has a finite " + metric;
-    return opt;
-  }
-  opt.note = any_steady ? "minimum over the points that completed at steady state"
-                        : "no point reached steady state: minimum over the completed points";
-  if (params.size() == 1 && params[0].numeric() && opt.index > 0 && opt.index + 1 < points.size() &&
-      candidate(points[opt.index - 1]) && candidate(points[opt.index + 1])) {
-    const double x0 = points[opt.index - 1].values[0], x1 = points[opt.index].values[0],
-                 x2 = points[opt.index + 1].values[0];
-    const double y0 = points[opt.index - 1].metric(metric), y1 = opt.value,
-                 y2 = points[opt.index + 1].metric(metric);
-    const double den = (x0 - x1) * (x0 - x2) * (x1 - x2);
-    if (den != 0.0) {
-      const double A = (x2 * (y1 - y0) + x1 * (y0 - y2) + x0 * (y2 - y1)) / den;
-      const double B = (x2 * x2 * (y0 - y1) + x1 * x1 * (y2 - y0) + x0 * x0 * (y1 - y2)) / den;
-      const double C = (x1 * x2 * (x1 - x2) * y0 + x2 * x0 * (x2 - x0) * y1 + x0 * x1 * (x0 - x1) * y2) / den;
-      if (A > 0.0) {
-        opt.refined = true;
-        opt.refined_parameter = -B / (2 * A);
-        opt.refined_value = C - B * B / (4 * A);
-      }
-    }
-  }
-  return opt;
-}
-
 void requireSweepMetric(const std::string& what, const std::string& metric) {
   const std::vector<std::string>& names = sweepNumericMetrics();
   if (std::find(names.begin(), names.end(), metric) != names.end()) return;
@@ -285,6 +237,35 @@ void requireSweepMetric(const std::string& what, const std::string& metric) {
   throw std::invalid_argument(what + ": unknown metric '" + metric + "'" + didYouMean(metric, names) +
                               "; expected one of " + list);
 }
+
+namespace {
+
+// The parabola's vertex, run as a point of the grid is (same model, overrides and settings; under
+// the same CPU budget; announced like a point, as the last one) and judged against its prediction.
+void runVertex(const SweepOptions& o, SweepResult& r) {
+  SweepVertex& v = r.optimum.vertex;
+  if (!v.available) return;
+  if (o.interrupt && o.interrupt->load()) {
+    v.note = "not run (interrupted)";
+    return;
+  }
+  const std::vector<std::string> texts = {v.text};
+  const std::vector<double> values = {v.parameter};
+  double accuracy = 1e-6;  // the schema's default, should the scene not parse at the vertex (the run says why)
+  try {
+    std::vector<std::string> overrides = o.base_overrides;
+    overrides.push_back(o.params[0].key + "=" + v.text);
+    accuracy = (o.scene_input ? parseSceneInput(*o.scene_input, overrides) : parseSceneFile(o.scene_path, overrides))
+                   .simulation.accuracy;
+  } catch (const std::exception&) {
+  }
+  const SweepPoint p = o.point_budget > 0 ? runSweepPointWithBudget(o, texts, values, o.point_budget)
+                                          : runSweepPoint(o, texts, values);
+  if (o.on_point) o.on_point(p, r.points.size() + 1, r.points.size());
+  judgeVertexRun(r.optimum, r.points, p, accuracy);
+}
+
+}  // namespace
 
 SweepResult runSweep(const SweepOptions& o) {
   if (o.params.empty()) throw std::invalid_argument("sweep: give at least one --param with --values");
@@ -301,27 +282,14 @@ SweepResult runSweep(const SweepOptions& o) {
   result.points = executeSweep(o, sweepDesigns(o), result);
   if (!result.output_rank) return result;
   // Designs from a file or a Latin hypercube are not ordered: no parabola through neighbours.
-  if (!o.minimize.empty())
+  if (!o.minimize.empty()) {
     result.optimum = findOptimum(o.designs.empty() ? o.params : std::vector<SweepParameter>{}, result.points, o.minimize);
+    runVertex(o, result);
+  }
   return result;
 }
 
-std::string describeOptimum(const SweepOptions& o, const SweepResult& r) {
-  const SweepOptimum& opt = r.optimum;
-  if (opt.metric.empty()) return "";
-  if (!opt.found) return "minimum of " + opt.metric + ": none (" + opt.note + ")";
-  std::ostringstream os;
-  os.precision(6);
-  os << "minimum of " << opt.metric << " = " << opt.value << " at";
-  const SweepPoint& p = r.points[opt.index];
-  for (std::size_t k = 0; k < o.params.size(); ++k) os << ' ' << o.params[k].key << '=' << p.texts[k];
-  os << (opt.steady ? " (steady state reached)" : " (steady state NOT reached)");
-  if (opt.refined)
-    os << "; parabola through the neighbours: " << o.params[0].key << " = " << opt.refined_parameter
-       << ", " << opt.metric << " = " << opt.refined_value;
-  return os.str();
-}
-
+// findOptimum, judgeVertexRun, describeOptimum: SweepOptimum.cpp.
 // writeSweepOutputs: SweepOutputs.cpp (files), SweepPlots.cpp (figures).
 
 }  // namespace rollerdyn

@@ -75,21 +75,46 @@ struct SweepOptions {
   double point_budget = 0;                   // CPU seconds per point in a child process [s]; 0: none
   bool mpi = false;                          // distribute over the MPI ranks (SweepMpi.h)
   bool dispatcher_computes = true;           // under MPI, rank 0 computes points too
-  // Called (serialised) after each point; done counts finished points.
+  // Called (serialised) after each point; done counts finished points. The run at the parabola's
+  // vertex (SweepVertex) comes last, as done = total + 1.
   std::function<void(const SweepPoint&, std::size_t done, std::size_t total)> on_point;
+  // The run of one point; empty: the scene's model (runSweepPoint). A study of a metric whose shape
+  // is known beforehand (a test's V-shaped minimum) puts its own here.
+  std::function<SweepPoint(const std::vector<std::string>& texts, const std::vector<double>& values)> run_point;
 };
 
+// One numeric parameter, the best grid point inside the grid: the vertex of the parabola through it
+// and its two neighbours. A prediction only; runSweep runs it (same model, overrides and settings
+// as the grid's points) before anything calls it an optimum, and judgeVertexRun compares.
+struct SweepVertex {
+  bool available = false;   // the parabola exists and opens upwards
+  std::string text;         // its parameter value as applied (--set), 12 significant digits
+  double parameter = 0;     // the same as a number: exactly what the run uses
+  double predicted = 0;     // the parabola's value there
+  double refine_lower = 0, refine_upper = 0, refine_step = 0;  // a finer grid: the two neighbours, spacing / 10
+  bool ran = false;         // run (not when interrupted)
+  SweepPoint point;         // that run
+  bool usable = false;      // the run counts as a grid point would (completed, turning, steady where the grid was)
+  double value = 0;         // the run's metric (NaN unless usable)
+  double tolerance = 0;     // simulation.accuracy × the largest |metric| of the three grid points
+  bool holds = false;       // usable and |value − predicted| ≤ tolerance
+  bool lower = false;       // usable and value < predicted − tolerance: the metric is no parabola
+                            // there, but the estimate errs on the safe side (not holding: value above)
+  std::string note;         // the outcome in words (why not run, not usable, or not holding)
+};
+
+// The optimum is always a run: the best grid point, or the run at the parabola's vertex where that
+// run is better still.
 struct SweepOptimum {
   bool found = false;
   std::string metric;
-  std::size_t index = 0;          // into SweepResult::points
-  double value = 0;
-  bool steady = false;            // whether that point reached steady state
+  std::size_t index = 0;          // the best grid point, into SweepResult::points
+  double grid_value = 0;          // its metric
+  bool at_vertex = false;         // the vertex run beats the best grid point: it is the optimum
+  double value = 0;               // the optimum's metric (grid point's or vertex run's)
+  bool steady = false;            // whether the optimum's run reached steady state
   std::string note;               // how it was chosen / why none
-  // One numeric parameter, optimum inside the grid: vertex of the parabola through the best
-  // point and its two neighbours (a finer estimate than the grid step).
-  bool refined = false;
-  double refined_parameter = 0, refined_value = 0;
+  SweepVertex vertex;             // one numeric parameter, best point inside the grid
 };
 
 struct SweepResult {
@@ -112,9 +137,16 @@ SweepResult runSweep(const SweepOptions& options);
 SweepPoint runSweepPoint(const SweepOptions& options, const std::vector<std::string>& texts,
                          const std::vector<double>& values);
 
-// The optimum of `metric` over the points that completed, preferring those at steady state.
+// The optimum of `metric` over the points that completed, preferring those at steady state, and
+// (one numeric parameter, best point inside the grid) the parabola's vertex, predicted, not yet run.
 SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
                          const std::vector<SweepPoint>& points, const std::string& metric);
+
+// Takes the run at the vertex into `optimum` (which findOptimum made from `points`): whether it is
+// usable by the grid's rules, whether the parabola's prediction holds within the integration
+// tolerance (accuracy: simulation.accuracy, relative), and whether it is the optimum.
+void judgeVertexRun(SweepOptimum& optimum, const std::vector<SweepPoint>& points, const SweepPoint& run,
+                    double accuracy);
 
 // One column of a study's table (sweep.csv, history.csv of optimize): a parameter (key path,
 // schema unit), a metric (sweepMetricColumns()) or a text column.
@@ -131,8 +163,11 @@ struct StudyColumn {
 // Python interface returns as a table.
 std::vector<StudyColumn> sweepTable(const SweepOptions& options, const SweepResult& result);
 
-// sweep.json's "optimum": metric, found, note, and where found the point (index, at, value,
-// steady_state_reached, parabola); null when no metric was minimised.
+// sweep.json's "optimum": metric, found, note, and where found: at, value, steady_state_reached
+// and source (the optimum's run: "grid point" or "run at the parabola's vertex"), index and
+// grid_value (the best grid point), parabola {parameter, predicted, run {value, usable, status,
+// motion, steady_state_reached, cpu_seconds} | null, holds, run_lower, tolerance, is_optimum,
+// refine, note} where the vertex exists; null when no metric was minimised.
 nlohmann::json sweepOptimumJson(const SweepOptions& options, const SweepResult& result);
 
 // sweep.csv, sweep.json and the plots (skipped with a note in sweep.json when gnuplot is
@@ -141,7 +176,9 @@ nlohmann::json sweepOptimumJson(const SweepOptions& options, const SweepResult& 
 std::vector<std::string> writeSweepOutputs(const SweepOptions& options, const SweepResult& result,
                                            const std::string& out_dir, std::string* plot_note = nullptr);
 
-// One line for the terminal, e.g. "minimum of delta = 0.151 at crank.offset_deg=90 (steady)".
+// The optimum for the terminal, e.g. "minimum of delta = 0.151 at crank.offset_deg=90 (steady
+// state reached)", then the parabola's vertex: its prediction beside its run's value, and plainly
+// when the prediction does not hold.
 std::string describeOptimum(const SweepOptions& options, const SweepResult& result);
 
 }  // namespace rollerdyn

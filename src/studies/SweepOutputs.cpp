@@ -66,19 +66,37 @@ nlohmann::json sweepOptimumJson(const SweepOptions& o, const SweepResult& r) {
   if (r.optimum.metric.empty()) return nullptr;
   const SweepOptimum& opt = r.optimum;
   nlohmann::json jo = {{"metric", opt.metric}, {"found", opt.found}, {"note", opt.note}};
-  if (opt.found) {
-    nlohmann::json at = nlohmann::json::object();
-    for (std::size_t k = 0; k < o.params.size(); ++k)
-      at[o.params[k].key] = std::isfinite(r.points[opt.index].values[k])
-                                ? nlohmann::json(r.points[opt.index].values[k])
-                                : nlohmann::json(r.points[opt.index].texts[k]);
-    jo["index"] = opt.index;
-    jo["at"] = at;
-    jo["value"] = opt.value;
-    jo["steady_state_reached"] = opt.steady;
-    if (opt.refined)
-      jo["parabola"] = {{"parameter", opt.refined_parameter}, {"value", opt.refined_value},
-                        {"note", "vertex of the parabola through the best grid point and its two neighbours"}};
+  if (!opt.found) return jo;
+  const SweepVertex& v = opt.vertex;
+  nlohmann::json grid_at = nlohmann::json::object();
+  for (std::size_t k = 0; k < o.params.size(); ++k)
+    grid_at[o.params[k].key] = std::isfinite(r.points[opt.index].values[k])
+                                   ? nlohmann::json(r.points[opt.index].values[k])
+                                   : nlohmann::json(r.points[opt.index].texts[k]);
+  // The optimum is a run: the best grid point's, or the vertex's where that run is better.
+  jo["at"] = opt.at_vertex ? nlohmann::json{{o.params[0].key, v.parameter}} : grid_at;
+  jo["value"] = opt.value;
+  jo["steady_state_reached"] = opt.steady;
+  jo["source"] = opt.at_vertex ? "run at the parabola's vertex" : "grid point";
+  jo["index"] = opt.index;
+  jo["grid_value"] = opt.grid_value;
+  if (v.available) {
+    nlohmann::json run = nullptr;
+    if (v.ran)
+      run = {{"value", jsonNumber(v.value)},       {"usable", v.usable},
+             {"status", v.point.status},           {"motion", v.point.motion},
+             {"steady_state_reached", v.point.steady}, {"cpu_seconds", jsonNumber(v.point.cpu_seconds)}};
+    jo["parabola"] = {
+        {"parameter", v.parameter},
+        {"predicted", v.predicted},
+        {"run", run},
+        {"holds", v.ran ? nlohmann::json(v.holds) : nlohmann::json(nullptr)},
+        {"run_lower", v.ran ? nlohmann::json(v.lower) : nlohmann::json(nullptr)},
+        {"tolerance", v.ran ? jsonNumber(v.tolerance) : nlohmann::json(nullptr)},
+        {"is_optimum", opt.at_vertex},
+        {"refine", "--values " + formatNumber(v.refine_lower) + ":" + formatNumber(v.refine_upper) + ":" +
+                       formatNumber(v.refine_step)},
+        {"note", "vertex of the parabola through the best grid point and its two neighbours: " + v.note}};
   }
   return jo;
 }

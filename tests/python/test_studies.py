@@ -1,6 +1,7 @@
 """sweep and optimize from Python: the command line's tables, and Python functions as objective
 and constraints."""
 
+import json
 import math
 
 import pytest
@@ -24,7 +25,13 @@ def test_sweep_is_the_cli_sweep_table(tmp_path):
             if k == cpu:
                 continue
             assert (ours if isinstance(ours, str) else "%.12g" % ours) == theirs, header[k]
-    assert df.attrs["optimum"]["at"] == {"crank.offset_deg": 90.0}
+    # The optimum is a run, the command line's: here the run at the parabola's vertex (92.6°), whose
+    # δ is below the grid's best (90°).
+    optimum, cli_optimum = df.attrs["optimum"], json.loads((tmp_path / "sweep.json").read_text())["optimum"]
+    assert (optimum["at"], optimum["value"], optimum["source"]) == (cli_optimum["at"], cli_optimum["value"],
+                                                                    "run at the parabola's vertex")
+    assert optimum["value"] == optimum["parabola"]["run"]["value"]
+    assert optimum["value"] < df.loc[df["crank.offset_deg"] == 90, "delta"].item()
     assert df.attrs["units"]["crank.offset_deg"] == "deg"
 
 
@@ -51,6 +58,9 @@ def test_optimize_with_a_python_constraint_is_the_metric_constraint():
     assert by_function.optimum["parameters"] == by_text.optimum["parameters"]
     assert by_function.optimum["metrics"]["delta"] <= 0.25
     assert "delta_at_most_0_25(row)<=0" in by_function.history.columns
+    # Printed as the run at exactly those values (it printed the inertia rounded to 6 digits).
+    inertia = by_text.optimum["parameters"]["flywheel.inertia"]
+    assert f"flywheel.inertia={inertia!r}" in repr(by_text) and f"flywheel.inertia = {inertia!r} at" in repr(by_text)
     # The same designs were evaluated; the order differs where --method auto's grid stage runs on
     # two threads.
     assert sorted(by_text.history["flywheel.inertia"]) == sorted(by_function.history["flywheel.inertia"])

@@ -34,6 +34,13 @@ inline std::string csvWithoutCpu(const std::string& dir) {
 
 inline nlohmann::json sweepJson(const std::string& dir) { return nlohmann::json::parse(slurp(dir + "/sweep.json")); }
 
+// sweep.json's optimum without the CPU time of the run at the parabola's vertex (a measurement).
+inline nlohmann::json optimumWithoutCpu(nlohmann::json j) {
+  nlohmann::json o = j["optimum"];
+  if (o.is_object() && o.contains("parabola") && o["parabola"]["run"].is_object()) o["parabola"]["run"].erase("cpu_seconds");
+  return o;
+}
+
 // Every point's values, metrics, status and steady flag equal (doubles compared exactly: the
 // JSON holds them with all digits).
 inline void expectSameRows(const nlohmann::json& a, const nlohmann::json& b) {

@@ -76,7 +76,7 @@ TEST(Sweep, TwoThreadsGiveTheSameNumbersAsOne) {
     }
 }
 
-TEST(Sweep, OptimumRefinedByAParabolaInsideTheGrid) {
+TEST(Sweep, ParabolasVertexInsideTheGridIsPredicted) {
   std::vector<SweepParameter> params = {parseSweepValues("x", "0,1,2,3")};
   std::vector<SweepPoint> pts(4);
   const double ys[] = {5.0, 2.0, 1.0, 2.0};  // parabola through (1,2),(2,1),(3,2): vertex at 2
@@ -91,12 +91,13 @@ TEST(Sweep, OptimumRefinedByAParabolaInsideTheGrid) {
   const SweepOptimum o = findOptimum(params, pts, "delta");
   ASSERT_TRUE(o.found);
   EXPECT_EQ(o.index, 2u);
-  EXPECT_FALSE(o.refined);  // its right neighbour is not a candidate
+  EXPECT_FALSE(o.vertex.available);  // its right neighbour is not a candidate
   pts[3].steady = true;
   const SweepOptimum o2 = findOptimum(params, pts, "delta");
-  ASSERT_TRUE(o2.refined);
-  EXPECT_NEAR(o2.refined_parameter, 2.0, 1e-12);
-  EXPECT_NEAR(o2.refined_value, 1.0, 1e-12);
+  ASSERT_TRUE(o2.vertex.available);
+  EXPECT_NEAR(o2.vertex.parameter, 2.0, 1e-12);
+  EXPECT_NEAR(o2.vertex.predicted, 1.0, 1e-12);
+  EXPECT_FALSE(o2.vertex.ran);  // a prediction until runSweep runs it (test_sweep_vertex.cpp)
 }
 
 TEST(Sweep, WritesCsvJsonAndPlots) {

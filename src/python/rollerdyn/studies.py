@@ -62,8 +62,13 @@ class OptimizeResult:
     def __repr__(self):
         if not self.found:
             return f"<rollerdyn.OptimizeResult: no feasible design in {self.summary['evaluations']} evaluations>"
-        at = ", ".join(f"{k}={v:.6g}" for k, v in self.optimum["parameters"].items())
-        return (f"<rollerdyn.OptimizeResult {self.summary['minimize']} = {self.optimum['objective']:.6g} at {at} "
+        # The run at exactly these values: the parameters as applied (shortest exact repr), the
+        # objective with 9 significant digits, as `rollerdyn optimize` prints them.
+        params = self.optimum["parameters"]
+        at = ", ".join(f"{k}={v!r}" for k, v in params.items())
+        minimize = self.summary["minimize"]
+        value = repr(params[minimize]) if minimize in params else f"{self.optimum['objective']:.9g}"
+        return (f"<rollerdyn.OptimizeResult {minimize} = {value} at {at} "
                 f"({self.summary['method']}, {self.summary['evaluations']} evaluations; "
                 f"{self.summary.get('scope', '')})>")
 
