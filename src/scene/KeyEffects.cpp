@@ -60,7 +60,11 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
 
 std::vector<std::string> keysWithoutEffect(const Scene& sc, const std::string& model) {
   std::vector<std::string> out;
+  // A starting method's keys after a --set chose another method (the parser's own finding).
+  for (const IgnoredKey& k : sc.ignored_keys) out.push_back(k.key + " (" + k.origin + ") has no effect: " + k.why);
   for (const std::string& key : sc.given_keys) {
+    if (std::any_of(sc.ignored_keys.begin(), sc.ignored_keys.end(), [&](const IgnoredKey& k) { return k.key == key; }))
+      continue;
     const std::string reason = why(key, sc, model);
     if (!reason.empty()) out.push_back(key + " has no effect on the " + model + " model's run: " + reason);
   }

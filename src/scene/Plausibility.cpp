@@ -126,8 +126,6 @@ std::vector<std::string> plausibilityWarnings(const Scene& s) {
                   s.sizing.target_delta, s.sizing.target_delta, s.sizing.target_delta / 100.0);
     out.push_back(buf);
   }
-  // Keys given without effect (a starting method's keys after a --set chose another method).
-  for (const IgnoredKey& k : s.ignored_keys) out.push_back(k.key + " (" + k.origin + ") has no effect: " + k.why);
   return out;
 }
 

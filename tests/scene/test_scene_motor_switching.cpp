@@ -4,6 +4,8 @@
 // into its motor map).
 #include <gtest/gtest.h>
 
+#include "scene/KeyEffects.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -108,7 +110,7 @@ TEST(SceneMotorSwitching, ASceneForOneMethodRunsWithAnotherOneSetOnTheCommandLin
   ASSERT_EQ(s.ignored_keys.size(), 2u);
   EXPECT_EQ(s.ignored_keys[0].key, "motor.start.ramp_time");
   EXPECT_EQ(s.ignored_keys[0].origin, "test.yaml:21");
-  const std::vector<std::string> w = plausibilityWarnings(s);
+  const std::vector<std::string> w = keysWithoutEffect(s, "multibody");
   const std::string expected =
       "motor.start.ramp_time (test.yaml:21) has no effect: motor.start.method direct_on_line (--set #1 "
       "(motor.start.method=direct_on_line)): only a soft_starter or a frequency_converter ramps; this method gives its "
