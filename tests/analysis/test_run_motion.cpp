@@ -11,29 +11,14 @@
 #include "analysis/StartUp.h"
 #include "analysis/Summary.h"
 #include "motor/SharedMotorLaw.h"
+#include "support/KlossMotorScene.h"
 
 using namespace rollerdyn;
 using nlohmann::json;
 
 namespace {
 
-Scene motorScene() {
-  Scene s{};
-  s.name = "synthetic";
-  s.simulation.steady_window_revolutions = 3;
-  s.motor.enabled = true;
-  s.motor.omega_sync = 100;
-  s.motor.breakdown_torque = 500;
-  s.motor.critical_slip = 0.2;
-  s.motor.rotor_inertia = 0.1;
-  s.reducer.ratio = 10;
-  s.reducer.efficiency = 0.9;
-  s.reducer.delta = 1;
-  s.rods.model = RodModel::Massless;
-  s.coupling.type = CouplingType::Rigid;
-  s.initial.crank_angle = 0.5;
-  return s;
-}
+Scene motorScene() { return test_scenes::klossMotorScene(); }
 
 // Crank creeping at 0.001 rad/s (below 1 % of ω0/u = 10 rad/s) for 3 s.
 RunResult creepingRun() {

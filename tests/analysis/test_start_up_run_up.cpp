@@ -9,26 +9,14 @@
 
 #include "analysis/StartUp.h"
 #include "motor/KlossLaw.h"
+#include "support/KlossMotorScene.h"
 
 namespace rollerdyn {
 namespace {
 
 // A Kloss motor (ω0 = 100 rad/s) through a reducer u = 10, rigid coupling; built in code.
 Scene klossScene(double t_on) {
-  Scene s{};
-  s.name = "synthetic";
-  s.simulation.steady_window_revolutions = 3;
-  s.motor.enabled = true;
-  s.motor.omega_sync = 100;
-  s.motor.breakdown_torque = 500;
-  s.motor.critical_slip = 0.2;
-  s.motor.rotor_inertia = 0.1;
-  s.reducer.ratio = 10;
-  s.reducer.efficiency = 0.9;
-  s.reducer.delta = 1;
-  s.rods.model = RodModel::Massless;
-  s.coupling.type = CouplingType::Rigid;
-  s.initial.crank_angle = 0.5;
+  Scene s = test_scenes::klossMotorScene();
   s.initial.crank_speed = 0.0;
   s.motor_start.method = StartMethod::DirectOnLine;
   s.motor_start.t_on = t_on;
