@@ -54,7 +54,7 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
     mf = modes::drawModesFigures(modal.report, (fs::path(out_dir) / "figures").string());
     const FigureSet sp = modes::drawSpectrumFigures(modal.spectrum, (fs::path(out_dir) / "figures").string());
     mf.figures.insert(mf.figures.end(), sp.figures.begin(), sp.figures.end());
-    content.extra_sections_html.push_back(modes::modesHtmlSection(modal.report, mf, &modal.spectrum));
+    content.extra_sections_html.push_back(modes::modesHtmlSection(modal.report, mf, &modal.spectrum, summary));
     for (const std::string& n : mf.notes) content.notes.push_back(n);
   }
   content.animation = mechanismFrames(scene, run.timeseries, run.reactions);

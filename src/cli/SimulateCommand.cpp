@@ -45,7 +45,7 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   if (with_modes) modal = std::make_unique<RunModal>(analyseRunModes(scene, run, /*charts=*/false));
   const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir, args.overrides, modal.get());
   std::cout << summaryText(summary) << startUpText(summary) << sizingText(summary);
-  if (modal) std::cout << modes::modesText(modal->report);
+  if (modal) std::cout << modes::modesText(modal->report, modes::runStabilityNotApplicable(summary));
   std::cout << "outputs in " << out_dir << "/\n";
   if (plot) {  // figures from the tables in memory and the scene with its overrides
     std::cout << figureSetText(drawRunFigures(outputFolderOf(out_dir, run, summary), &scene, out_dir + "/figures"),

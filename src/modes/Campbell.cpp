@@ -8,10 +8,7 @@
 
 namespace rollerdyn::modes {
 
-namespace {
-
-// Speeds where f(ω) = line(ω) between grid points (linear interpolation of the difference).
-std::vector<double> crossingsOf(const std::vector<double>& w, const std::vector<double>& f, double slope) {
+std::vector<double> lineCrossings(const std::vector<double>& w, const std::vector<double>& f, double slope) {
   std::vector<double> out;
   for (size_t i = 1; i < w.size(); ++i) {
     const double a = f[i - 1] - slope * w[i - 1], b = f[i] - slope * w[i];
@@ -21,8 +18,6 @@ std::vector<double> crossingsOf(const std::vector<double>& w, const std::vector<
   }
   return out;
 }
-
-}  // namespace
 
 CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::vector<double>& speeds,
                                 const std::vector<int>& orders, int angles) {
@@ -56,7 +51,7 @@ CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::
       DrivePoint p0;
       p0.phi = s.initial.crank_angle;
       p0.omega = w;
-      o.reference_frequency = frozenModes(*drive, s, p0).torsional_damped_frequency();
+      o.reference_frequency = frozenModes(*drive, s, p0).oscillation_frequency();
       SteadyMotion m = steadyMotion(*drive, s, o);
       if (!m.found) {
         p.failure = m.failure;
@@ -64,13 +59,20 @@ CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::
         p.found = true;
         p.omega_mean = m.omega_mean;
         warm = m.x0;
-        std::vector<double> f, fd;
+        std::vector<double> f, fd, z;
+        p.oscillates = true;
         for (const DrivePoint& q : m.samples) {
           const FrozenAngle fa = frozenModes(*drive, s, q);
           f.push_back(fa.torsional_frequency());
-          fd.push_back(fa.torsional_damped_frequency());
+          fd.push_back(fa.oscillation_frequency());
+          for (const FrozenMode& mode : fa.modes)
+            if (mode.torsional) {
+              z.push_back(mode.damping_ratio);
+              p.oscillates = p.oscillates && mode.oscillates;
+            }
         }
         p.frozen = bandOf(f);
+        p.frozen_damping = bandOf(z);
         // Floquet frequency on the branch nearest the frozen mean of the damped frequency Im λ.
         const double ref = bandOf(fd).mean;
         const auto mult =
@@ -90,16 +92,18 @@ CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::
   std::vector<double> w, fmean, fmin, fmax;
   for (const CampbellPoint& p : d.points) {
     if (!p.found) continue;
+    // An overdamped mode has no frequency a line could meet: NaN breaks the lines there.
+    if (!p.oscillates) ++d.overdamped_speeds;
     w.push_back(p.omega_mean);
-    fmean.push_back(p.frozen.mean);
-    fmin.push_back(p.frozen.min);
-    fmax.push_back(p.frozen.max);
+    fmean.push_back(p.oscillates ? p.frozen.mean : NAN);
+    fmin.push_back(p.oscillates ? p.frozen.min : NAN);
+    fmax.push_back(p.oscillates ? p.frozen.max : NAN);
   }
   for (int k : orders)
     for (bool parametric : {false, true}) {
-      const double slope = parametric ? 0.5 * k : double(k);
-      const std::vector<double> cm = crossingsOf(w, fmean, slope);
-      const std::vector<double> clo = crossingsOf(w, fmin, slope), chi = crossingsOf(w, fmax, slope);
+      const double slope = campbellSlope(k, parametric);
+      const std::vector<double> cm = lineCrossings(w, fmean, slope);
+      const std::vector<double> clo = lineCrossings(w, fmin, slope), chi = lineCrossings(w, fmax, slope);
       for (double x : cm) {
         CampbellCrossing c;
         c.order = k;
@@ -119,6 +123,10 @@ CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::
         d.crossings.push_back(c);
       }
     }
+  if (d.overdamped_speeds)
+    d.note = "the coupling mode is overdamped (damping ratio >= 1, no oscillation) at " +
+             std::to_string(d.overdamped_speeds) + " of " + std::to_string(w.size()) +
+             " speeds: no crossings are listed there";
   std::sort(d.crossings.begin(), d.crossings.end(),
             [](const CampbellCrossing& a, const CampbellCrossing& b) { return a.omega < b.omega; });
   return d;

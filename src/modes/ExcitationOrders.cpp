@@ -22,13 +22,20 @@ double layoutFactor(const Scene& scene, int k) {
 
 namespace {
 
-std::vector<double> harmonics(const std::vector<double>& samples) {
+// One-sided complex harmonics: samples = Σ Re(c_k·exp(i·k·φ)), c_0 the mean.
+std::vector<std::complex<double>> complexHarmonics(const std::vector<double>& samples) {
   Eigen::FFT<double> fft;
   std::vector<std::complex<double>> spec;
   fft.fwd(spec, samples);
   const int n = int(samples.size());
-  std::vector<double> a(n / 2);
-  for (int k = 0; k < n / 2; ++k) a[k] = (k == 0 ? 1.0 : 2.0) * std::abs(spec[k]) / n;
+  std::vector<std::complex<double>> c(n / 2);
+  for (int k = 0; k < n / 2; ++k) c[k] = (k == 0 ? 1.0 : 2.0) * spec[k] / double(n);
+  return c;
+}
+
+std::vector<double> amplitudes(const std::vector<std::complex<double>>& c) {
+  std::vector<double> a(c.size());
+  for (size_t k = 0; k < c.size(); ++k) a[k] = std::abs(c[k]);
   return a;
 }
 
@@ -45,7 +52,14 @@ ExcitationOrders excitationOrders(const Scene& scene, double omega, int max_orde
     M[i] = model.loadTorque(phi, omega);
   }
   const auto [jmin, jmax] = std::minmax_element(J.begin(), J.end());
-  const std::vector<double> hJ = harmonics(J), hM = harmonics(M);
+  const std::vector<std::complex<double>> cJ = complexHarmonics(J), cM = complexHarmonics(M);
+  const std::vector<double> hJ = amplitudes(cJ), hM = amplitudes(cM);
+  // Q's harmonic k: M_k + ½·ω²·(J')_k, (J')_k = i·k·J_k (J = Σ Re(J_k·exp(i·k·φ))).
+  std::vector<double> hQ(cJ.size(), 0.0);
+  for (size_t k = 1; k < cJ.size(); ++k)
+    hQ[k] = std::abs(cM[k] + 0.5 * omega * omega * std::complex<double>(0.0, double(k)) * cJ[k]);
+  e.omega = omega;
+  for (int k = 1; k <= max_order && k < n / 2; ++k) e.exciting_largest = std::max(e.exciting_largest, hQ[k]);
   e.inertia_mean = hJ[0];
   e.inertia_relative_swing = hJ[0] > 0 ? (*jmax - *jmin) / hJ[0] : 0;
   double maxJ = 0, maxM = 0;
@@ -63,7 +77,9 @@ ExcitationOrders excitationOrders(const Scene& scene, double omega, int max_orde
     c.layout_factor = layoutFactor(scene, k);
     c.inertia_amplitude = hJ[k];
     c.load_amplitude = hM[k];
+    c.exciting_torque = hQ[k];
     e.table.push_back(c);
+    if (e.exciting_largest > 0 && hQ[k] >= kForcedOrderShare * e.exciting_largest) e.forced.push_back(k);
     // Carts of different masses or loads each bring their own harmonics: no phase sum cancels them.
     if (c.layout_factor > 1e-9 || !scene.cartsIdentical()) e.layout.push_back(k);
     const bool inJ = maxJ > 0 && hJ[k] > floorJ, inM = maxM > 0 && hM[k] > floorM;

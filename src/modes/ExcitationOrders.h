@@ -15,6 +15,16 @@
 //
 // Measured: the Fourier series of J_n2(φ2) and of the load torque over one revolution of the
 // reduced model (Eigen's FFT, 256 samples), orders whose amplitude exceeds 1e-9 of the largest.
+//
+// The orders that drive the coupling mode (`forced`): the harmonics of the torque the crank side
+// puts against the coupling at a steady crank speed ω, the load torque plus the inertia's own
+// torque,
+//   Q(φ2) = M_load(φ2, ω) + ½·J_n2'(φ2)·ω²      (the crank equation of ReducedModel.h at φ̈2 = 0),
+// whose harmonic k has the amplitude |M_k + ½·i·k·J_k·ω²| (M_k, J_k the complex harmonics). An
+// order is kept when that amplitude is at least kForcedOrderShare = 1 % of the largest harmonic:
+// the layout decides through the phase sums above (six equal carts at 60°: 6, 12, 18, 24), and
+// carts of unequal masses or loads, or crank angles of their own, bring the other orders in with
+// the size the difference gives them.
 #pragma once
 
 #include <vector>
@@ -28,7 +38,11 @@ struct OrderContent {
   double layout_factor = 0;     // |Σ_j exp(i·k·θ_j)| / n (1: all carts in phase, 0: cancelled)
   double inertia_amplitude = 0; // amplitude of J_n2's harmonic k [kg·m²]
   double load_amplitude = 0;    // amplitude of the load torque's harmonic k [N·m] at the speed given
+  double exciting_torque = 0;   // amplitude of Q's harmonic k (load + ½·J_n2'·ω², see above) [N·m]
 };
+
+// The share of the largest harmonic of Q an order needs to count as exciting the coupling mode.
+inline constexpr double kForcedOrderShare = 0.01;
 
 struct ExcitationOrders {
   std::vector<int> layout;          // orders 1..max_order that survive the layout's phase sums
@@ -36,6 +50,9 @@ struct ExcitationOrders {
   std::vector<int> inertia;         // orders present in J_n2(φ2) (measured)
   std::vector<int> load;            // orders present in the load torque (measured)
   std::vector<int> all;             // union of inertia and load: the orders the Campbell diagram draws
+  std::vector<int> forced;          // orders whose exciting torque is >= kForcedOrderShare of the largest
+  double exciting_largest = 0;      // the largest harmonic of Q [N·m]
+  double omega = 0;                 // the crank speed Q is taken at [rad/s]
   std::vector<OrderContent> table;  // orders 1..max_order
   double inertia_mean = 0;          // J_n2's mean [kg·m²]
   double inertia_relative_swing = 0;  // (max - min)/mean of J_n2 over a revolution [-]

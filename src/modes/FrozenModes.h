@@ -30,13 +30,27 @@
 
 namespace rollerdyn::modes {
 
+// Each undamped mode (eigenpair of M⁻¹K) gets one pair of eigenvalues of the damped state matrix
+// [[0, I], [-M⁻¹K, -M⁻¹C]] as its own: the matrix's pairs (a complex conjugate pair, or two real
+// eigenvalues) go to the undamped modes whose shapes their eigenvectors resemble most (modal
+// assurance in the mass metric), never by sorting frequencies apart; with one complex pair and two
+// real eigenvalues the complex pair is the coupling mode's (the rigid-body mode has no restoring
+// stiffness of its own to oscillate with). So a mode's damping ratio,
+// natural and damped frequency all come from one pair. From the pair λ_a, λ_b:
+//   ω_n = √(λ_a·λ_b) (= |λ| for a complex pair),   ζ = -(λ_a + λ_b)/(2·ω_n),
+//   ω_d = |Im λ| = ω_n·√(1 - ζ²) for ζ < 1; ζ ≥ 1 (two real λ): overdamped, no oscillation.
+// The frequency without damping, √λ of M⁻¹K, is another system's (the damping left out): with the
+// motor's slope the damping is not proportional and ω_n can lie far from it.
 struct FrozenMode {
   std::string name;            // e.g. "motor side against crank side (coupling twist)"
   double lambda = 0;           // eigenvalue of M⁻¹K [1/s²]
-  double frequency = 0;        // √λ [rad/s]; NaN when λ ≤ 0 (no oscillation while frozen)
-  double damping_ratio = 0;    // of the damped frozen pair (state matrix), NaN if not oscillating
-  // Im λ of that damped pair [rad/s]: the frequency a free vibration actually has (the branch a
-  // Floquet frequency is read on); 0 when the pair does not oscillate, NaN without a frequency.
+  double frequency = 0;        // √λ [rad/s], without damping; NaN when λ ≤ 0 (no oscillation while frozen)
+  double damping_ratio = 0;    // ζ of this mode's damped pair; NaN without a frequency
+  double natural_frequency = NAN;  // ω_n of this mode's damped pair [rad/s]
+  bool oscillates = false;     // ζ < 1: the damped pair is complex
+  // ω_d = Im λ of the damped pair [rad/s]: the frequency a free vibration actually has (the branch a
+  // Floquet frequency is read on); 0 when the pair does not oscillate (overdamped: there is no
+  // damped frequency; outputs say so), NaN without a frequency.
   double damped_frequency = NAN;
   Eigen::Vector2d shape = Eigen::Vector2d::Zero();  // (δφ2, δψ), normalized to max |δφ| = 1
   double energy_motor_side = 0, energy_shaft_rods = 0, energy_carts = 0;  // kinetic-energy fractions
@@ -49,9 +63,13 @@ struct FrozenAngle {
   std::vector<FrozenMode> modes;  // ascending λ; the torsional one last
   // The torsional mode (elastic coupling), or NaN.
   double torsional_frequency() const;
-  // Its damped frequency Im λ [rad/s] (0: over-damped while frozen), or NaN: the reference for the
-  // branch of the Floquet frequency, which is known only modulo the crank speed's first order.
-  double torsional_damped_frequency() const;
+  // The damped frequency Im λ [rad/s] of the drive's oscillation while frozen: the torsional
+  // mode's where it oscillates, else the other mode's where that one does (with a heavy,
+  // non-proportional damping the pair continued from the rigid-body mode can be the one that
+  // oscillates, the coupling mode's overdamped), else 0; NaN without a frequency. The reference
+  // for the branch of the Floquet frequency, which is known only modulo the crank speed's first
+  // order (the Floquet multipliers' complex pair is this oscillation).
+  double oscillation_frequency() const;
 };
 
 // Linearizes `drive` at `p` (setOperatingPoint first). `scene` supplies the inertia split for

@@ -22,7 +22,7 @@ SteadyMotion orbitFrom(const Scene& scene, double phi0, int samples) {
   p.phi = phi0;
   p.omega = g.ok ? g.omega : 1.0;
   p.twist = g.twist;
-  o.reference_frequency = frozenModes(*drive, s, p).torsional_damped_frequency();
+  o.reference_frequency = frozenModes(*drive, s, p).oscillation_frequency();
   return steadyMotion(*drive, s, o);
 }
 
@@ -74,7 +74,7 @@ GrowthMeasurement measureGrowth(const Scene& scene, int R, int spectrum_revoluti
     double sum = 0;
     int n = 0;
     for (const DrivePoint& q : m.samples) {
-      const double f = frozenModes(*drive, scene, q).torsional_damped_frequency();
+      const double f = frozenModes(*drive, scene, q).oscillation_frequency();
       if (std::isfinite(f)) {
         sum += f;
         ++n;

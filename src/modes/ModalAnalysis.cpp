@@ -18,7 +18,7 @@ ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::v
     m.failure = "no steady motion and no running speed to linearize about";
     return m;
   }
-  std::vector<double> p, z, pd, em, es, ec;
+  std::vector<double> p, z, pd, pn, osc, on, oz, em, es, ec;
   for (const DrivePoint& q : points) {
     FrozenAngle f = frozenModes(drive, scene, q);
     for (const FrozenMode& mode : f.modes) {
@@ -26,19 +26,31 @@ ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::v
         p.push_back(mode.frequency);
         z.push_back(mode.damping_ratio);
         pd.push_back(mode.damped_frequency);
+        pn.push_back(mode.natural_frequency);
+        if (std::isfinite(mode.frequency) && !mode.oscillates) ++m.torsional_overdamped_angles;
         em.push_back(mode.energy_motor_side);
         es.push_back(mode.energy_shaft_rods);
         ec.push_back(mode.energy_carts);
         m.torsional_name = mode.name;
       } else {
         m.rigid_name = mode.name;
+        if (mode.oscillates) {
+          on.push_back(mode.natural_frequency);
+          oz.push_back(mode.damping_ratio);
+        }
       }
     }
+    osc.push_back(f.oscillation_frequency());
     m.angles.push_back(std::move(f));
   }
   m.torsional = bandOf(p);
   m.torsional_damping = bandOf(z);
   m.torsional_damped = bandOf(pd);
+  m.torsional_natural = bandOf(pn);
+  m.oscillation_damped = bandOf(osc);
+  m.other_natural = bandOf(on);
+  m.other_damping = bandOf(oz);
+  m.other_oscillating_angles = int(on.size());
   m.energy_motor_side = bandOf(em).mean;
   m.energy_shaft_rods = bandOf(es).mean;
   m.energy_carts = bandOf(ec).mean;
@@ -47,6 +59,22 @@ ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::v
 }
 
 }  // namespace
+
+TwoMassEstimate twoMassEstimate(const Scene& scene) {
+  TwoMassEstimate t;
+  const ReducedModel rm(scene);
+  double J2 = 0;
+  const int n = 720;
+  for (int i = 0; i < n; ++i) J2 += rm.crankSideInertia(2 * M_PI * i / n);
+  t.J2_mean = J2 / n;
+  t.J1 = scene.motorSideInertia();
+  if (scene.coupling.type == CouplingType::Elastic) {
+    t.applicable = true;
+    t.stiffness = scene.coupling.stiffness;
+    t.p0 = std::sqrt(t.stiffness * (t.J1 + t.J2_mean) / (t.J1 * t.J2_mean));  // Dyomin (two rotors) eq. (10)
+  }
+  return t;
+}
 
 ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
   const std::clock_t c0 = std::clock();
@@ -57,19 +85,7 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
   const ReducedModel rm(scene);
 
   // First estimate: two constant inertias (Dyomin (two rotors) eq. (10)).
-  {
-    double J2 = 0;
-    const int n = 720;
-    for (int i = 0; i < n; ++i) J2 += rm.crankSideInertia(2 * M_PI * i / n);
-    r.two_mass.J2_mean = J2 / n;
-    r.two_mass.J1 = scene.motorSideInertia();
-    if (r.elastic) {
-      r.two_mass.applicable = true;
-      r.two_mass.stiffness = scene.coupling.stiffness;
-      const double J1 = r.two_mass.J1, J2m = r.two_mass.J2_mean;
-      r.two_mass.p0 = std::sqrt(r.two_mass.stiffness * (J1 + J2m) / (J1 * J2m));
-    }
-  }
+  r.two_mass = twoMassEstimate(scene);
 
   // 1. Steady motion (reduced model) and its Floquet multipliers.
   auto reduced = makeReducedDrive(scene);
@@ -83,7 +99,7 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
     const SteadyGuess g = steadyGuess(scene);
     p0.omega = g.ok ? g.omega : std::max(std::abs(scene.initial.crank_speed), 1.0);
     p0.twist = g.twist;
-    so.reference_frequency = r.elastic ? frozenModes(*reduced, scene, p0).torsional_damped_frequency() : 0.0;
+    so.reference_frequency = r.elastic ? frozenModes(*reduced, scene, p0).oscillation_frequency() : 0.0;
   }
   r.steady = steadyMotion(*reduced, scene, so);
   std::vector<DrivePoint> points = r.steady.samples;
@@ -120,7 +136,7 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
   // mode's damped frequency Im λ over the revolution (the undamped √λ of M⁻¹K lies branches away
   // when the damping is heavy: six carts at k = 2000 N·m·s/rad, ζ = 0.54, have √λ ≈ 65 rad/s and
   // Im λ ≈ 32.7 rad/s with 2π/T = 10.7 rad/s).
-  const double branch_reference = std::isfinite(r.frozen[0].torsional_damped.mean) ? r.frozen[0].torsional_damped.mean
+  const double branch_reference = std::isfinite(r.frozen[0].oscillation_damped.mean) ? r.frozen[0].oscillation_damped.mean
                                                                                     : r.frozen[0].torsional.mean;
   if (r.elastic && r.steady.found) rebranch(r.steady, branch_reference);  // with the frozen mean
   if (o.multibody) {
@@ -169,6 +185,7 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
     std::string first;
     for (const CampbellPoint& p : r.campbell.points)
       if (!p.found && failed++ == 0) first = p.failure;
+    if (!r.campbell.note.empty()) r.notes.push_back("Campbell diagram: " + r.campbell.note);
     if (failed)
       r.notes.push_back("Campbell diagram: no steady motion at " + std::to_string(failed) + " of " +
                         std::to_string(r.campbell.points.size()) + " speeds (" + first + ")");
@@ -206,6 +223,10 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
 }
 
 std::vector<std::string> modalWarnings(const ModesReport& r) {
+  return modalWarnings(r, r.steady.omega_mean, r.orders);
+}
+
+std::vector<std::string> modalWarnings(const ModesReport& r, double omega, const ExcitationOrders& orders) {
   std::vector<std::string> w;
   char buf[640];
   // The analysis could not be made for a driven machine: say so (the first estimate is then the
@@ -234,32 +255,28 @@ std::vector<std::string> modalWarnings(const ModesReport& r) {
                   "|mu| = %.4g per crank revolution (> 1: a disturbance grows %.3g-fold each turn, growth rate "
                   "%.3g 1/s); the steady running at omega = %.4g rad/s is unstable",
                   v.text == "parametrically unstable" ? "parametric resonance" : "unstable steady motion",
-                  v.max_modulus, v.max_modulus, -v.slowest_decay_rate, r.steady.omega_mean);
+                  v.max_modulus, v.max_modulus, -v.slowest_decay_rate, omega);
     w.push_back(buf);
   }
   // Forced resonance: the torsional mode's Floquet frequency p_F within 5 % of k·ω for an order k
-  // that carries at least 1 % of the largest exciting torque harmonic: load torque plus the
-  // inertia's own torque ½·J_n2'·ω² (order k of J_n2 with amplitude J_k gives ½·k·J_k·ω²).
-  const double w_op = r.steady.omega_mean;
-  if (v.has_torsional && v.torsional_resolved && std::isfinite(v.torsional_frequency)) {
+  // that drives the coupling mode (ExcitationOrders.h: at least 1 % of the largest harmonic of the
+  // load torque plus the inertia's own torque ½·J_n2'·ω²).
+  if (v.has_torsional && v.torsional_resolved && std::isfinite(v.torsional_frequency) && omega > 0) {
     // Undamped natural frequency from the multipliers, √(σ² + ω_d²) = ω_d/√(1 - ζ²): where a forced
     // response peaks.
     const double zeta = v.torsional_damping_ratio;
     const double pf = v.torsional_frequency / std::sqrt(std::max(1e-12, 1 - zeta * zeta));
-    double largest = 0;
-    for (const OrderContent& c : r.orders.table)
-      largest = std::max(largest, c.load_amplitude + 0.5 * c.order * c.inertia_amplitude * w_op * w_op);
-    for (const OrderContent& c : r.orders.table) {
-      const double torque = c.load_amplitude + 0.5 * c.order * c.inertia_amplitude * w_op * w_op;
-      if (!(largest > 0) || torque < 0.01 * largest) continue;
-      const double f = c.order * w_op;
+    for (int k : orders.forced) {
+      if (k < 1 || k > int(orders.table.size())) continue;
+      const double torque = orders.table[size_t(k - 1)].exciting_torque;
+      const double f = k * omega;
       if (std::abs(pf - f) > 0.05 * f) continue;
       std::snprintf(buf, sizeof buf,
                     "torsional resonance: the coupling mode's natural frequency from the Floquet multipliers, p = %.4g rad/s, "
-                    "is within 5 %% of order %d of the crank speed (%d*omega = %.4g rad/s), which carries %.3g N*m "
-                    "(%.0f %% of the largest exciting harmonic); damping ratio %.3g (without the damping, the "
-                    "frozen-angle band is p = %.4g ... %.4g rad/s)",
-                    pf, c.order, c.order, f, torque, 100 * torque / largest, v.torsional_damping_ratio,
+                    "is within 5 %% of order %d of the crank speed (%d*omega = %.4g rad/s at omega = %.4g rad/s), which "
+                    "carries %.3g N*m (%.0f %% of the largest exciting harmonic); damping ratio %.3g (without the damping, "
+                    "the frozen-angle band is p = %.4g ... %.4g rad/s)",
+                    pf, k, k, f, omega, torque, 100 * torque / orders.exciting_largest, v.torsional_damping_ratio,
                     r.frozen[0].torsional.min, r.frozen[0].torsional.max);
       w.push_back(buf);
     }

@@ -51,7 +51,16 @@ struct ModelFrozenModes {
   std::vector<FrozenAngle> angles;  // along the steady motion
   Band torsional;                // torsional frequency over the revolution [rad/s]
   Band torsional_damping;        // its frozen damping ratio [-]
-  Band torsional_damped;         // its frozen damped frequency Im λ [rad/s] (the Floquet branch's reference)
+  Band torsional_damped;         // its frozen damped frequency Im λ [rad/s] (the Floquet branch's reference;
+                                 // 0 at angles where the mode is overdamped)
+  Band torsional_natural;        // ω_n of its damped pair [rad/s] (the pair ζ belongs to, FrozenModes.h)
+  int torsional_overdamped_angles = 0;  // crank angles where it does not oscillate (ζ ≥ 1)
+  Band oscillation_damped;       // FrozenAngle::oscillation_frequency() [rad/s] (the Floquet branch's reference)
+  // The other mode (rigid-body without damping) where its damped pair oscillates: ω_n, ζ, and at
+  // how many crank angles (heavy non-proportional damping: the coupling mode overdamped, this one
+  // oscillating).
+  Band other_natural, other_damping;
+  int other_oscillating_angles = 0;
   std::string torsional_name, rigid_name;
   double energy_motor_side = NAN, energy_shaft_rods = NAN, energy_carts = NAN;  // torsional mode, mean
 };
@@ -83,11 +92,18 @@ struct ModesReport {
 
 ModesReport analyseModes(const Scene& scene, const ModesOptions& options = {});
 
+// The first estimate: J1, the crank side's mean inertia over a revolution (720 samples) and p0 of
+// Dyomin (two rotors) eq. (10) (elastic coupling only).
+TwoMassEstimate twoMassEstimate(const Scene& scene);
+
 nlohmann::json modesJson(const ModesReport& r);
 Table frozenTable(const ModesReport& r);    // frozen.csv
 Table campbellTable(const ModesReport& r);  // campbell.csv
 Table stabilityTable(const ModesReport& r); // stability.csv (all charts, long format)
-std::string modesText(const ModesReport& r);  // the console's lines
+// The console's lines. `run_stability_na`: beside a run without a steady motion (its stability
+// verdict not applicable, runStabilityNotApplicable in RunModes.h), the reason, printed in place of
+// the Floquet verdicts.
+std::string modesText(const ModesReport& r, const std::string& run_stability_na = "");
 
 // What `rollerdyn modes` writes into out_dir (which must exist): modes.json, frozen.csv,
 // campbell.csv, stability.csv.
@@ -99,10 +115,13 @@ void writeModesFiles(const std::string& out_dir, const ModesReport& r);
 void setChartStiffness(ModesOptions& o, const Scene& scene, double lo, double hi, const std::string& what);
 
 // Resonance warnings of the analysis: the steady motion unstable (a Floquet multiplier > 1), or the
-// torsional mode's Floquet frequency within 5 % of k·ω for an order k carrying at least 1 % of the
-// largest exciting torque harmonic (none when the mode decays more than a million-fold per
-// revolution: nothing can build up). A driven machine whose steady motion was not found gets a
-// warning that says so and why (no verdict rests on the analysis then).
+// torsional mode's Floquet frequency within 5 % of k·ω for an order k that drives the coupling mode
+// (`orders.forced`: at least 1 % of the largest exciting torque harmonic, ExcitationOrders.h; none
+// when the mode decays more than a million-fold per revolution: nothing can build up). A driven
+// machine whose steady motion was not found gets a warning that says so and why (no verdict rests
+// on the analysis then). `omega`: the crank speed the orders are taken at (a run's steady mean
+// crank speed; without it the steady motion's own, with r.orders).
 std::vector<std::string> modalWarnings(const ModesReport& r);
+std::vector<std::string> modalWarnings(const ModesReport& r, double omega, const ExcitationOrders& orders);
 
 }  // namespace rollerdyn::modes

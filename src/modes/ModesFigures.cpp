@@ -6,6 +6,7 @@
 
 #include "io/ReadFile.h"
 #include "report/Gnuplot.h"
+#include "modes/RunModes.h"
 #include "report/HtmlReport.h"
 
 namespace rollerdyn::modes {
@@ -229,7 +230,9 @@ FigureSet drawSpectrumFigures(const OrderSpectrum& s, const std::string& dir) {
   return set;
 }
 
-std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, const OrderSpectrum* spectrum) {
+std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, const OrderSpectrum* spectrum,
+                             const nlohmann::json& run_summary) {
+  const std::string run_na = runStabilityNotApplicable(run_summary);
   std::ostringstream h;
   h << "<h2 id=\"modes\">Torsional modes and stability</h2>\n";
   h << "<p class=\"small\">The drive linearized about its steady motion: frozen-angle modes (the crank angle held, "
@@ -253,7 +256,9 @@ std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, con
                           " %, crankshaft and rods " + g(100 * m.energy_shaft_rods, "%.0f") + " %, carts " +
                           g(100 * m.energy_carts, "%.0f") + " %");
   }
-  if (r.steady.found) {
+  if (!run_na.empty()) {
+    row("stability of the steady motion (Floquet)", "n/a: " + run_na);
+  } else if (r.steady.found) {
     const FloquetVerdict& v = r.steady.verdict;
     row("mean crank speed of the steady motion [rad/s]", g(r.steady.omega_mean, "%.6g"));
     row("Floquet verdict (reduced model)", v.text + ", largest |μ| = " + g(v.max_modulus) + " per revolution, margin " +
@@ -266,7 +271,7 @@ std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, con
   } else {
     row("steady motion", "not found: " + r.steady.failure);
   }
-  if (r.has_multibody_steady && r.steady_multibody.found)
+  if (run_na.empty() && r.has_multibody_steady && r.steady_multibody.found)
     row("Floquet verdict (multibody model)", r.steady_multibody.verdict.text + ", largest |μ| = " +
                                                  g(r.steady_multibody.verdict.max_modulus));
   std::string orders;
@@ -299,7 +304,11 @@ std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, con
     }
     h << "</table>\n";
   }
-  for (const std::string& w : r.warnings) h << "<p><b>Warning:</b> " << htmlEscape(w) << "</p>\n";
+  // The run's resonance warnings (its verdict, at its steady mean crank speed), as summary.json has them.
+  const nlohmann::json& modal = run_summary.contains("resonance_modal") ? run_summary["resonance_modal"] : nlohmann::json();
+  if (modal.is_object() && modal.contains("warnings") && modal["warnings"].is_array())
+    for (const nlohmann::json& w : modal["warnings"])
+      if (w.is_string()) h << "<p><b>Warning:</b> " << htmlEscape(w.get<std::string>()) << "</p>\n";
   for (const std::string& n : r.notes) h << "<p class=\"small\">Note: " << htmlEscape(n) << "</p>\n";
   for (const FigureFile& f : figures.figures) {
     h << "<figure id=\"" << htmlEscape(f.name) << "\">";

@@ -16,6 +16,10 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir);
 FigureSet drawSpectrumFigures(const OrderSpectrum& s, const std::string& dir);
 
 // <h2>Torsional modes and stability</h2> with the tables and the figures embedded (PNG base64).
-std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, const OrderSpectrum* spectrum);
+// `run_summary`: the summary.json of the run beside which the analysis was made; the section
+// renders the run's stability verdict (n/a for a drive without a steady motion) and resonance
+// warnings from it.
+std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, const OrderSpectrum* spectrum,
+                             const nlohmann::json& run_summary);
 
 }  // namespace rollerdyn::modes

@@ -53,6 +53,51 @@ nlohmann::json steadyJson(const SteadyMotion& m) {
 
 nlohmann::json bandJson(const Band& b) { return {{"mean", num(b.mean)}, {"min", num(b.min)}, {"max", num(b.max)}}; }
 
+// The frozen-angle coupling mode of one model in one line: its frequency without damping, then the
+// natural frequency, damping ratio and damped frequency of its own damped pair (FrozenModes.h).
+std::string frozenTorsionalText(const ModelFrozenModes& m, bool floquet) {
+  std::ostringstream os;
+  char b[512];
+  std::snprintf(b, sizeof b,
+                "  frozen-angle torsional mode, %-9s without damping p = %.6g rad/s mean, %.6g ... %.6g over the "
+                "crank angle; with the damping, the same mode: ",
+                (m.model + ":").c_str(), m.torsional.mean, m.torsional.min, m.torsional.max);
+  os << b;
+  const int angles = int(m.angles.size());
+  if (m.torsional_overdamped_angles >= angles && angles > 0) {
+    std::snprintf(b, sizeof b, "damping ratio %.3g ... %.3g (>= 1: overdamped at every crank angle, it does not "
+                  "oscillate and has no damped frequency)", m.torsional_damping.min, m.torsional_damping.max);
+    os << b;
+    if (m.other_oscillating_angles > 0) {
+      // With a heavy, non-proportional damping the oscillation is the pair continued from the other
+      // (rigid-body) mode: say where it is, with its own triple.
+      std::snprintf(b, sizeof b,
+                    "; the drive's oscillation is the other mode's (without damping the whole drive turning together), "
+                    "with the damping natural frequency %.4g rad/s, damping ratio %.3g, damped frequency %.4g rad/s "
+                    "(means over the crank angle)",
+                    m.other_natural.mean, m.other_damping.mean, m.oscillation_damped.mean);
+      os << b;
+    }
+  } else {
+    std::snprintf(b, sizeof b,
+                  "natural frequency %.4g ... %.4g rad/s, damping ratio %.3g ... %.3g, damped frequency %.4g ... %.4g "
+                  "rad/s over the crank angle (at each angle the three of one damped pair)",
+                  m.torsional_natural.min, m.torsional_natural.max, m.torsional_damping.min, m.torsional_damping.max,
+                  m.torsional_damped.min, m.torsional_damped.max);
+    os << b;
+    if (m.torsional_overdamped_angles > 0)
+      os << "; overdamped (no oscillation, damped frequency counted as 0) at " << m.torsional_overdamped_angles << " of "
+         << angles << " crank angles";
+  }
+  // A negative damping ratio is a mode that grows: never printed as if it were a damping.
+  if (m.torsional_damping.min < 0)
+    os << (m.torsional_damping.max < 0 ? " (negative: the mode grows at every crank angle, unstable while frozen"
+                                       : " (negative at some crank angles: the mode grows there while frozen")
+       << (floquet ? "; the Floquet verdict decides over the whole revolution)" : "; no Floquet verdict)");
+  os << "\n";
+  return os.str();
+}
+
 }  // namespace
 
 nlohmann::json modesJson(const ModesReport& r) {
@@ -86,6 +131,11 @@ nlohmann::json modesJson(const ModesReport& r) {
                   {"rigid_mode", m.rigid_name},
                   {"torsional_frequency", bandJson(m.torsional)},
                   {"torsional_damping_ratio", bandJson(m.torsional_damping)},
+                  {"torsional_natural_frequency", bandJson(m.torsional_natural)},
+                  {"torsional_damped_frequency", m.torsional_overdamped_angles >= int(m.angles.size())
+                                                     ? nlohmann::json(nullptr)
+                                                     : bandJson(m.torsional_damped)},
+                  {"torsional_overdamped_angles", m.torsional_overdamped_angles},
                   {"kinetic_energy_share", {{"motor_side", num(m.energy_motor_side)},
                                             {"crankshaft_and_rods", num(m.energy_shaft_rods)},
                                             {"carts", num(m.energy_carts)}}},
@@ -98,8 +148,11 @@ nlohmann::json modesJson(const ModesReport& r) {
     ord.push_back({{"order", c.order},
                    {"layout_factor", c.layout_factor},
                    {"inertia_amplitude", c.inertia_amplitude},
-                   {"load_torque_amplitude", c.load_amplitude}});
+                   {"load_torque_amplitude", c.load_amplitude},
+                   {"exciting_torque_amplitude", c.exciting_torque}});
   j["excitation_orders"] = {{"layout", r.orders.layout},
+                            {"forced", r.orders.forced},
+                            {"forced_threshold", "harmonic of the load torque plus J_n2'*omega^2/2 at least 1 % of the largest"},
                             {"inertia", r.orders.inertia},
                             {"load_torque", r.orders.load},
                             {"all", r.orders.all},
@@ -119,6 +172,7 @@ nlohmann::json modesJson(const ModesReport& r) {
                   {"omega_band_low", num(c.omega_band_low)},
                   {"omega_band_high", num(c.omega_band_high)}});
   cm["crossings"] = cr;
+  cm["overdamped_speeds"] = r.campbell.overdamped_speeds;
   j["campbell"] = cm;
   nlohmann::json ch = nlohmann::json::array();
   for (const StabilityChart& c : r.charts) {
@@ -154,6 +208,8 @@ Table frozenTable(const ModesReport& r) {
     if (!m.ok) continue;
     t.columns.push_back("p_torsional_" + m.model + "[rad/s]");
     t.columns.push_back("zeta_torsional_" + m.model);
+    t.columns.push_back("omega_n_torsional_" + m.model + "[rad/s]");
+    t.columns.push_back("omega_d_torsional_" + m.model + "[rad/s]");
     t.columns.push_back("lambda_rigid_" + m.model + "[1/s^2]");
   }
   if (r.frozen.empty()) return t;
@@ -162,15 +218,17 @@ Table frozenTable(const ModesReport& r) {
     std::vector<double> row{p.phi, p.omega, p.twist, p.twist_rate};
     for (const ModelFrozenModes& m : r.frozen) {
       if (!m.ok) continue;
-      double pt = NAN, zt = NAN, lr = NAN;
+      double pt = NAN, zt = NAN, wn = NAN, wd = NAN, lr = NAN;
       for (const FrozenMode& mode : m.angles[i].modes)
         if (mode.torsional) {
           pt = mode.frequency;
           zt = mode.damping_ratio;
+          wn = mode.natural_frequency;
+          wd = mode.oscillates ? mode.damped_frequency : NAN;  // overdamped: none (empty)
         } else {
           lr = mode.lambda;
         }
-      row.insert(row.end(), {pt, zt, lr});
+      row.insert(row.end(), {pt, zt, wn, wd, lr});
     }
     t.rows.push_back(row);
   }
@@ -180,10 +238,11 @@ Table frozenTable(const ModesReport& r) {
 Table campbellTable(const ModesReport& r) {
   Table t;
   t.columns = {"omega_set[rad/s]", "omega_crank_mean[rad/s]", "p_mean[rad/s]", "p_min[rad/s]", "p_max[rad/s]",
-               "p_floquet[rad/s]", "zeta_floquet", "max_multiplier_modulus"};
+               "p_floquet[rad/s]", "zeta_floquet", "max_multiplier_modulus", "zeta_frozen_mean", "oscillates"};
   for (const CampbellPoint& p : r.campbell.points)
     t.rows.push_back({p.omega_target, p.found ? p.omega_mean : NAN, p.frozen.mean, p.frozen.min, p.frozen.max,
-                      p.floquet_frequency, p.floquet_damping_ratio, p.max_modulus});
+                      p.floquet_frequency, p.floquet_damping_ratio, p.max_modulus, p.frozen_damping.mean,
+                      p.found ? (p.oscillates ? 1.0 : 0.0) : NAN});
   return t;
 }
 
@@ -204,7 +263,7 @@ Table stabilityTable(const ModesReport& r) {
   return t;
 }
 
-std::string modesText(const ModesReport& r) {
+std::string modesText(const ModesReport& r, const std::string& run_stability_na) {
   std::ostringstream os;
   char b[512];
   os << "torsional modes of " << r.scene << " (" << (r.elastic ? "elastic" : "rigid") << " coupling)\n";
@@ -227,20 +286,7 @@ std::string modesText(const ModesReport& r) {
       os << "  frozen-angle modes, " << m.model << " model: failed (" << m.failure << ")\n";
       continue;
     }
-    if (r.elastic) {
-      std::snprintf(b, sizeof b,
-                    "  frozen-angle torsional frequency, %-9s p = %.6g rad/s mean, %.6g ... %.6g over the crank "
-                    "angle; damping ratio %.3g ... %.3g",
-                    (m.model + ":").c_str(), m.torsional.mean, m.torsional.min, m.torsional.max,
-                    m.torsional_damping.min, m.torsional_damping.max);
-      os << b;
-      // A negative damping ratio is a mode that grows: never printed as if it were a damping.
-      if (m.torsional_damping.min < 0)
-        os << (m.torsional_damping.max < 0 ? " (negative: the mode grows at every crank angle, unstable while frozen"
-                                           : " (negative at some crank angles: the mode grows there while frozen")
-           << (r.steady.found ? "; the Floquet verdict decides over the whole revolution)" : "; no Floquet verdict)");
-      os << "\n";
-    }
+    if (r.elastic) os << frozenTorsionalText(m, r.steady.found);
   }
   if (r.elastic && !r.frozen.empty() && r.frozen[0].ok) {
     const ModelFrozenModes& m = r.frozen[0];
@@ -253,6 +299,10 @@ std::string modesText(const ModesReport& r) {
     os << b;
   }
   auto floquetLine = [&](const SteadyMotion& m, const char* model) {
+    if (!run_stability_na.empty()) {  // the run has no steady motion: no verdict on one
+      os << "  Floquet (" << model << "): stability of the steady motion n/a: " << run_stability_na << "\n";
+      return;
+    }
     if (!m.found) {
       os << "  Floquet (" << model << "): no steady motion (" << m.failure << ")\n";
       return;
@@ -277,6 +327,12 @@ std::string modesText(const ModesReport& r) {
   if (r.orders.layout.size() > 12) os << ", ...";
   std::snprintf(b, sizeof b, "; inertia swing %.3g %% of its mean\n", 100 * r.orders.inertia_relative_swing);
   os << b;
+  os << "  orders that drive the coupling (load and inertia torque harmonics >= 1 % of the largest, at omega = ";
+  std::snprintf(b, sizeof b, "%.4g rad/s): ", r.orders.omega);
+  os << b;
+  for (size_t i = 0; i < r.orders.forced.size(); ++i) os << (i ? ", " : "") << r.orders.forced[i];
+  if (r.orders.forced.empty()) os << "none";
+  os << "\n";
   if (r.campbell.applicable) {
     os << "  Campbell crossings (" << r.campbell.crossings.size()
        << "; the layout's orders first, each group nearest the running speed first):";

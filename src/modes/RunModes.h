@@ -1,12 +1,5 @@
-// The modal analysis beside a simulated run (`simulate --modes`, `report`) and the resonance
-// verdict every run's summary carries.
-//
-// Resonance verdict of a run (writeResonanceVerdict): the two-mass check (Dyomin (two rotors)
-// eq. (10) with the mean crank-side inertia, the check rollerdyn had first) stays as the first,
-// cheap estimate and its warnings are labelled so; the verdict then rests on the analysis of the
-// drive linearized about its steady motion (frozen-angle band of the coupling mode against the
-// layout's excitation orders, and the Floquet multipliers): its warnings follow, and when the first
-// estimate warned but the analysis does not, the summary says why.
+// The modal analysis beside a simulated run (`simulate --modes`, `report`). The run's resonance and
+// stability verdict rests on it and is made in studies/ResonanceCheck.h.
 #pragma once
 
 #include <string>
@@ -20,15 +13,6 @@
 #include "scene/Scene.h"
 
 namespace rollerdyn::modes {
-
-// `first_estimate`: the warnings the two-mass check appended to summary["warnings"]. Relabels
-// them in place, adds summary["resonance"]["method"], summary["resonance_modal"] and the
-// analysis' warnings. `analysis`: a full analysis already made for this scene, or nullptr (a
-// light one is made: reduced model, no Campbell or charts; tens of milliseconds). Returns the
-// lines to print, in order.
-std::vector<std::string> writeResonanceVerdict(const Scene& scene, nlohmann::json& summary,
-                                               const std::vector<std::string>& first_estimate,
-                                               const ModesReport* analysis = nullptr);
 
 // Order spectrum of a run's coupling and motor torque and of every joint reaction over its steady
 // window (the scene's simulation.steady_window_revolutions).
@@ -44,12 +28,18 @@ struct RunModal {
 // report shows them.
 RunModal analyseRunModes(const Scene& scene, const RunResult& run, bool charts);
 
+// The reason the run's stability verdict is not applicable (summary["stability"], made by the run's
+// verdict: a drive that does not turn has no steady motion), or "" when it applies.
+std::string runStabilityNotApplicable(const nlohmann::json& summary);
+
 // Puts the analysis under summary["modes"] (as modes.json) and the spectrum's strongest orders
-// under summary["order_spectrum"].
+// under summary["order_spectrum"]. Call after the run's verdict: where it says the stability is
+// not applicable, the analysis' steady-motion verdict is replaced by that and its warnings dropped.
 void addRunModes(const RunModal& modal, nlohmann::json& summary);
 
-// Writes modes.json, frozen.csv, campbell.csv, stability.csv (when charts were made) and
-// spectrum.csv (when the spectrum was computed) into out_dir.
-void writeRunModesFiles(const std::string& out_dir, const RunModal& modal);
+// Writes modes.json (`modes_json`, the summary's "modes"; empty: the analysis' own), frozen.csv,
+// campbell.csv, stability.csv (when charts were made) and spectrum.csv (when the spectrum was
+// computed) into out_dir.
+void writeRunModesFiles(const std::string& out_dir, const RunModal& modal, const nlohmann::json& modes_json = {});
 
 }  // namespace rollerdyn::modes

@@ -47,7 +47,7 @@ StabilityPoint evaluate(const Scene& s, double c, double y, Eigen::VectorXd& war
     const SteadyGuess g = steadyGuess(s);
     p0.omega = g.ok ? g.omega : s.motor.omega_sync / s.reducer.ratio;
     p0.twist = g.twist;
-    o.reference_frequency = frozenModes(*drive, s, p0).torsional_damped_frequency();
+    o.reference_frequency = frozenModes(*drive, s, p0).oscillation_frequency();
     SteadyMotion m = steadyMotion(*drive, s, o);
     if (!m.found && warm.size()) {  // the warm start may mislead: try from the guess
       o.start.resize(0);

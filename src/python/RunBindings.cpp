@@ -80,7 +80,10 @@ void bindRuns(py::module_& m) {
       .def_property_readonly("resonance_warnings", [](const RunData& d) { return d.messages.resonance_warnings; })
       .def_property_readonly("resonance_verdict", [](const RunData& d) { return d.messages.resonance_verdict; })
       .def_property_readonly("has_modes", [](const RunData& d) { return d.modal != nullptr; })
-      .def("modes_text", [](const RunData& d) { return d.modal ? modes::modesText(d.modal->report) : std::string(); })
+      .def("modes_text",
+           [](const RunData& d) {
+             return d.modal ? modes::modesText(d.modal->report, modes::runStabilityNotApplicable(d.summary)) : std::string();
+           })
       .def("frozen",
            [](const RunData& d) {
              return d.modal ? py::object(tableToPython(modes::frozenTable(d.modal->report))) : py::object(py::none());
@@ -103,13 +106,15 @@ void bindRuns(py::module_& m) {
       .def("text",
            [](const RunData& d) {
              return summaryText(d.summary) + startUpText(d.summary) + sizingText(d.summary) +
-                    (d.modal ? modes::modesText(d.modal->report) : "");
+                    (d.modal ? modes::modesText(d.modal->report, modes::runStabilityNotApplicable(d.summary)) : "");
            })
       .def("html",
            [](const RunData& d) {
              return runStatusHtml(d.summary) + summaryMetricsHtml(d.summary) + sizingSectionHtml(d.summary) +
                     startUpSectionHtml(d.summary) + reactionsTableHtml(d.summary, d.run.reactions.columns) +
-                    (d.modal ? "<pre>" + htmlEscape(modes::modesText(d.modal->report)) + "</pre>" : std::string());
+                    (d.modal ? "<pre>" + htmlEscape(modes::modesText(d.modal->report, modes::runStabilityNotApplicable(d.summary))) +
+                                   "</pre>"
+                             : std::string());
            })
       .def(
           "write",

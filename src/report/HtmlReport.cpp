@@ -144,6 +144,36 @@ std::string base64Encode(const std::string& bytes) {
   return out;
 }
 
+std::string resonanceVerdictHtml(const nlohmann::json& s) {
+  // The run's resonance and stability verdict as summary.json has it (studies/ResonanceCheck.h):
+  // green where it found no resonance and a stable steady motion, yellow where it warns, no colour
+  // where it does not apply (with the reason).
+  std::ostringstream h;
+  const json rv = at(s, "resonance_verdict");
+  const json st = at(s, "stability");
+  auto str = [](const json& o, const char* k) {
+    return o.is_object() && o.contains(k) && o[k].is_string() ? o[k].get<std::string>() : std::string();
+  };
+  const std::string verdict = str(rv, "verdict"), stability = str(st, "verdict");
+  if (verdict == "no resonance")
+    h << "<div class=\"status ok\">Resonance verdict (modal analysis about the steady motion): "
+      << htmlEscape(str(rv, "reason")) << "</div>\n";
+  else if (verdict == "not applicable")
+    h << "<div class=\"status\">Resonance verdict: n/a (" << htmlEscape(str(rv, "reason")) << ")</div>\n";
+  else if (!verdict.empty() && verdict != "no hit")
+    h << "<div class=\"status warn\">Resonance verdict: " << htmlEscape(verdict) << " (see the warnings)</div>\n";
+  const std::string first = str(rv, "line");
+  if (!first.empty()) h << "<p class=\"small\">" << htmlEscape(first) << "</p>\n";
+  if (stability == "not applicable" || stability == "not assessed")
+    h << "<div class=\"status\">Stability of the steady motion (Floquet): n/a (" << htmlEscape(str(st, "reason"))
+      << ")</div>\n";
+  else if (stability == "stable")
+    h << "<div class=\"status ok\">Stability of the steady motion (Floquet): stable</div>\n";
+  else if (!stability.empty())
+    h << "<div class=\"status bad\">Stability of the steady motion (Floquet): " << htmlEscape(stability) << "</div>\n";
+  return h.str();
+}
+
 std::string runStatusHtml(const nlohmann::json& s) {
   std::ostringstream h;
   const bool complete = at(s, "complete").is_boolean() && at(s, "complete").get<bool>();
@@ -155,12 +185,7 @@ std::string runStatusHtml(const nlohmann::json& s) {
     for (const json& w : warnings) h << "<li>" << htmlEscape(w.is_string() ? w.get<std::string>() : w.dump()) << "</li>";
     h << "</ul></div>\n";
   }
-  // The modal analysis' verdict on the first estimate's resonance warning, beside it as on the
-  // console (the fourth trial's page showed the alarm and never the "no torsional resonance").
-  const json modal = at(s, "resonance_modal");
-  if (modal.is_object() && modal.contains("conclusion") && modal["conclusion"].is_string())
-    h << "<div class=\"status ok\">Resonance verdict (modal analysis about the steady motion): "
-      << htmlEscape(modal["conclusion"].get<std::string>()) << "</div>\n";
+  h << resonanceVerdictHtml(s);
 
   return h.str();
 }

@@ -43,6 +43,8 @@ struct ReportContent {
 // Python interface shows the same tables in Jupyter.
 // "Run complete/INCOMPLETE: status" and the run's warnings (summary.json `warnings`).
 std::string runStatusHtml(const nlohmann::json& summary);
+// The run's resonance and stability verdict (summary "resonance_verdict", "stability"), rendered.
+std::string resonanceVerdictHtml(const nlohmann::json& summary);
 // "Summary metrics": speed, δ, H, k_p, torque swings, steady window, energy audit, cost.
 std::string summaryMetricsHtml(const nlohmann::json& summary);
 // "Joint reactions over the steady window": min, max, mean, |max| per reactions column.

@@ -1,61 +1,62 @@
-// Torsional resonance check of the elastic coupling (Dyomin (two rotors) eq. (10), (16)-(21)): the two-mass
-// drive (motor side J1, crank side J2, coupling stiffness c) has the natural frequency
+// The resonance and stability verdict of a run, made once here for every output (summary.json,
+// console, report, sweep, Python), and its first estimate.
+//
+// One crank speed. Every number of the verdict is taken at one ω: the run's steady mean crank
+// speed (summary["omega_crank"]["mean"] of a run whose crank turns and that reached its steady
+// state). A run without it (the drive stalled, rocks, is still starting, at rest; the steady state
+// not reached; no motor) has no steady motion: resonance and stability are "not applicable", with
+// the reason and what to do.
+//
+// First estimate (Dyomin (two rotors) eq. (10), (16)-(21)): the two-mass drive (motor side J1,
+// crank side at its mean inertia J2 over a revolution, coupling stiffness c) has the natural
+// frequency
 //   p0 = sqrt(c·(J1 + J2)/(J1·J2))                                    (Dyomin (two rotors) eq. (10))
-// and the harmonic amplitudes (16)-(21) blow up when p0 is close to ω, 2ω, 3ω or 5ω, the harmonics
-// of the drive torque the paper keeps. The crank side of an installation is periodic in the crank
-// angle, so its excitation has the same harmonics of the crank speed ω.
+// and its forced response blows up when p0 is close to an order k·ω that drives it. The orders
+// checked are exactly those the drive's exciting torque has (modes/ExcitationOrders.h): the
+// harmonics of the load torque plus the inertia's own torque ½·J_n2'·ω² at ω, each order whose
+// amplitude is at least 1 % of the largest harmonic (six equal carts at 60° on one side: 6, 12, 18,
+// 24; carts of unequal masses or loads, or crank angles of their own, add the orders their
+// difference excites). Within 10 % of k·ω: a hit.
 //
-// Which harmonics excite it follows from the cart layout (excitationOrders): each cart adds the
-// same periodic torque T(φ + θ_j) (θ_j its crank's angle), so harmonic k of the total is that of
-// one cart times the layout factor Σ_j exp(i·k·θ_j). For n equal carts on one side at equal
-// offsets spread over the turn (n·Δφ a multiple of 360°) the factor vanishes unless k is a
-// multiple of n: six carts at 60° excite 6ω, 12ω, ..., and neither 3ω nor 5ω. Carts on both
-// sides are mirrored slider-cranks (a cart on the far side at crank angle θ moves like one on the
-// near side at π - θ, run backwards), whose harmonics do not cancel that way: such layouts, carts
-// of different masses or loads (carts.mass, loads.* given per cart: each cart its own torque
-// function), and any layout whose factor does not vanish (crank angles of their own,
-// crank.angles_deg, crank.angle_error_deg), are checked at every order up to the highest kept.
-//
-// Here J1 = Scene::motorSideInertia() (Loveikin, Pochka, Romasevych (2018) eq. (1)), J2 = the mean over one crank
-// revolution of the crank-side reduced inertia J_n2(φ) (Loveikin, Pochka, Romasevych (2018) eq. (9), ReducedModel), and
-// ω = the mean crank speed of the run. A warning is raised when |p0 - k·ω| <= 10 % of k·ω for the
-// orders k the layout excites. Rigid couplings have no such mode and are never flagged.
+// Verdict. The modal analysis (the drive linearized about its steady motion: frozen-angle modes,
+// Floquet multipliers, modes/ModalAnalysis.h) decides wherever it can be made: its warnings
+// (unstable steady motion, parametric resonance, the coupling mode's Floquet frequency within 5 %
+// of an exciting order) are the run's resonance warnings. A first-estimate hit the analysis does
+// not confirm is no warning: one line says that the modal analysis refutes it and why (the
+// distance of the mode from the exciting orders, its damping, its decay), at the same ω. Only
+// where the analysis cannot be made (no steady motion of the linearized drive) does a hit stand as
+// a warning, labelled unchecked.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "modes/ModalAnalysis.h"
 #include "scene/Scene.h"
 
 namespace rollerdyn {
 
-inline constexpr double kResonanceTolerance = 0.10;  // relative distance |p0 - nω|/(nω)
-// The harmonics of the drive torque Dyomin (two rotors) keeps, for a harmonic drive torque
-// (`rollerdyn chain`).
-inline constexpr int kResonanceHarmonics[] = {1, 2, 3, 5};
-
-// Orders k ≤ max(12, 2n) of the crank speed that the carts' layout excites (see above), in
-// ascending order; the cam drive and the crank drive alike (each cart's motion is periodic in
-// its cam or crank angle).
-std::vector<int> excitationOrders(const Scene& scene);
+inline constexpr double kResonanceTolerance = 0.10;  // relative distance |p0 - kω|/(kω)
 
 struct ResonanceHit {
-  int harmonic = 0;      // n
-  double ratio = 0;      // p0 / (n·ω)
+  int harmonic = 0;      // order k
+  double ratio = 0;      // p0 / (k·ω)
 };
 
+// The first estimate at one crank speed.
 struct ResonanceReport {
   bool applicable = false;   // elastic coupling and a finite, non-zero ω
   double J1 = 0;             // motor side reduced to the crank axis [kg·m²]
   double J2_mean = 0;        // mean crank-side reduced inertia [kg·m²]
   double stiffness = 0;      // c [N·m/rad]
   double p0 = 0;             // [rad/s], Dyomin (two rotors) eq. (10)
-  double omega = 0;          // mean crank speed [rad/s]
-  std::vector<int> orders;   // the harmonics checked (excitationOrders)
+  double omega = 0;          // the crank speed [rad/s]
+  std::vector<int> orders;   // the orders checked: those that drive the coupling mode at ω
   std::vector<ResonanceHit> hits;
-  std::vector<std::string> warnings;  // one sentence per hit
+  std::vector<std::string> sentences;  // one per hit: what the estimate says (not yet a warning)
 };
 
 // p0 of Dyomin (two rotors) eq. (10) [rad/s].
@@ -65,18 +66,60 @@ double naturalFrequency(double stiffness, double J1, double J2);
 // exact to round-off for its low harmonics).
 double meanCrankSideInertia(const Scene& scene);
 
-// The check for a known p0 and ω (pure function, for tests and for `rollerdyn chain`) at the
-// given orders (default: Dyomin's 1, 2, 3, 5).
-std::vector<ResonanceHit> resonanceHits(double p0, double omega,
-                                        double tolerance = kResonanceTolerance,
+// The harmonics of the drive torque Dyomin (two rotors) keeps for his two rotors on an elastic
+// chain driven by a harmonic torque (`rollerdyn chain`, which has no crank and no cart layout).
+inline constexpr int kResonanceHarmonics[] = {1, 2, 3, 5};
+
+// The hits for a known p0 and ω at the given orders (pure function; default: Dyomin's 1, 2, 3, 5).
+std::vector<ResonanceHit> resonanceHits(double p0, double omega, double tolerance = kResonanceTolerance,
                                         const std::vector<int>& orders = {1, 2, 3, 5});
 
-ResonanceReport checkResonance(const Scene& scene, double omega_mean,
-                               double tolerance = kResonanceTolerance);
+// The first estimate at crank speed `omega` against the orders that drive the coupling mode there.
+ResonanceReport checkResonance(const Scene& scene, double omega, double tolerance = kResonanceTolerance);
 
-// Reads summary["omega_crank"]["mean"], appends the warnings to summary["warnings"] (created as
-// an array if absent; kept if others added warnings) and puts the numbers under
-// summary["resonance"]. Returns the warnings added (to print on the terminal).
-std::vector<std::string> addResonanceWarnings(const Scene& scene, nlohmann::json& summary);
+// What the run gives the verdict: how the crank moved and its steady mean speed.
+struct RunState {
+  std::string motion;          // RunMotion.h: turning, stalled, rocking, starting, at_rest, coasting, unknown
+  bool steady = false;         // the steady state was reached
+  double omega = NAN;          // mean crank speed of the metrics window [rad/s]
+};
+RunState runStateOf(const nlohmann::json& summary);
+
+struct RunResonance {
+  bool elastic = false;
+  // Whether the run has a steady motion to judge, and if not why and what to do.
+  bool applicable = false;
+  std::string reason;
+  double omega = NAN;                // the run's steady mean crank speed: the one ω of every number
+  ResonanceReport first_estimate;
+  modes::ExcitationOrders orders;    // at omega
+  // The modal analysis.
+  bool modal_made = false;           // a steady motion of the linearized drive was found
+  std::string modal_note;            // why not, when not
+  std::shared_ptr<const modes::ModesReport> modal;  // the analysis the verdict rests on (null: none made)
+  double analysis_omega = NAN;       // the speed of the steady motion the drive is linearized about
+  // "resonance", "unstable", "no resonance", "unchecked first estimate", "no hit" (no modal analysis,
+  // no first-estimate hit) or "not applicable".
+  std::string verdict;
+  std::string first_estimate_status; // "no order within 10 %", "refuted by the modal analysis",
+                                     // "confirmed by the modal analysis", "unchecked", "not applicable"
+  std::string conclusion;            // why there is no resonance (modal analysis made, no warning)
+  // Stability of the steady motion (Floquet): "stable", "parametrically unstable", "unstable speed
+  // mode", "not applicable"; with the reason.
+  std::string stability;
+  std::string stability_reason;
+  double max_multiplier_modulus = NAN;
+  std::vector<std::string> warnings; // the run's resonance warnings
+  std::string verdict_line;          // "resonance verdict: ..." beside a first-estimate hit, or ""
+};
+
+// The verdict of a run on `scene` in state `state`. `analysis`: a full modal analysis made for
+// this scene (simulate --modes, report), or nullptr (a light one is made where it applies: reduced
+// model, no Campbell diagram or charts; tens of milliseconds).
+RunResonance judgeRunResonance(const Scene& scene, const RunState& state, const modes::ModesReport* analysis);
+
+// Puts the verdict into the summary: "resonance" (the first estimate), "resonance_modal" (the
+// analysis' numbers), "resonance_verdict", "stability", and the warnings appended to "warnings".
+void putRunResonance(const RunResonance& v, nlohmann::json& summary);
 
 }  // namespace rollerdyn

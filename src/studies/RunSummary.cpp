@@ -35,21 +35,18 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
   // summary["guide_friction"] and its warnings: self-locking, dead centre, quasi-static friction work.
   addFrictionWarnings(scene, run, summary);
   const std::size_t run_warnings = summary["warnings"].size();
-  // The two-mass check is the first estimate; the verdict rests on the modal analysis.
-  const std::vector<std::string> first_estimate = addResonanceWarnings(scene, summary);
-  std::vector<std::string> verdict_lines;
-  if (options.resonance_verdict)
-    verdict_lines = modes::writeResonanceVerdict(scene, summary, first_estimate,
-                                                 options.modal ? &options.modal->report : nullptr);
+  // The resonance and stability verdict, made once (ResonanceCheck.h): at the run's steady mean crank
+  // speed, the modal analysis deciding, the two-mass first estimate beside it.
+  const RunResonance verdict = judgeRunResonance(scene, runStateOf(summary), options.modal ? &options.modal->report : nullptr);
+  putRunResonance(verdict, summary);
   if (options.modal) modes::addRunModes(*options.modal, summary);
   if (messages) {
     for (std::size_t i = 0; i < summary["warnings"].size(); ++i)
       if (summary["warnings"][i].is_string())
         (i < run_warnings ? messages->run_warnings : messages->resonance_warnings)
             .push_back(summary["warnings"][i].get<std::string>());
-    for (const std::string& line : verdict_lines)
-      if (line.rfind("resonance verdict:", 0) == 0) messages->resonance_verdict = line;
-    messages->first_estimate = first_estimate;
+    messages->resonance_verdict = verdict.verdict_line;
+    messages->first_estimate = verdict.first_estimate.sentences;
   }
   return summary;
 }
@@ -57,7 +54,7 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
 void writeRunFiles(const std::string& out_dir, const RunResult& run, const nlohmann::json& summary,
                    const modes::RunModal* modal) {
   writeRunTables(out_dir, run);
-  if (modal) modes::writeRunModesFiles(out_dir, *modal);
+  if (modal) modes::writeRunModesFiles(out_dir, *modal, summary.value("modes", nlohmann::json::object()));
   writeSummaryAtomic(out_dir + "/summary.json", summary);
 }
 

@@ -4,9 +4,8 @@
 //     (StartLoad.h), the user's overrides (so that a command the console suggests repeats them),
 //     the plausibility warnings of the scene (Plausibility.h), the guide friction's margins and
 //     warnings (analysis/FrictionChecks.h: self-locking, dead centre, the quasi-static friction
-//     work), the resonance check of the two-mass
-//     drive, Dyomin (two rotors) eq. (10) (ResonanceCheck.h), as the first estimate, and the
-//     resonance verdict of the modal analysis (modes/RunModes.h), and the scene file's absolute
+//     work), the resonance and stability verdict (ResonanceCheck.h: the modal analysis at the run's
+//     steady mean crank speed, the two-mass first estimate beside it), and the scene file's absolute
 //     path, so `rollerdyn plot DIR` finds it from any folder;
 //   - the run's files in an output folder: timeseries.csv, reactions.csv (when computed),
 //     summary.json and, with a modal analysis, its files; each written to a temporary name and
@@ -30,10 +29,6 @@ struct RunSummaryOptions {
   std::string scene_file;
   // The overrides applied to the file (--set key=value), in order: summary["overrides"].
   std::vector<std::string> overrides;
-  // The resonance verdict of the modal analysis. Without `modal` a light analysis is made (reduced
-  // model, no Campbell diagram or charts: tens of milliseconds). false: the two-mass first
-  // estimate only, unlabelled (a sweep's points, whose resonance_warnings column counts it).
-  bool resonance_verdict = true;
   // A full modal analysis made for this run (simulate --modes, report): the verdict rests on it,
   // and summary["modes"] and summary["order_spectrum"] hold it.
   const modes::RunModal* modal = nullptr;
@@ -45,13 +40,14 @@ struct RunMessages {
   // The load's warnings (a load that does no net work), the scene's plausibility warnings and the
   // guide friction's warnings.
   std::vector<std::string> run_warnings;
-  // The first estimate's resonance warnings (labelled as such where the verdict is made) and the
-  // modal analysis' warnings.
+  // The run's resonance warnings (studies/ResonanceCheck.h): the modal analysis' where it was made,
+  // else a first-estimate hit labelled unchecked.
   std::vector<std::string> resonance_warnings;
-  // "resonance verdict: ..." when the first estimate warned and the modal analysis does not (why
-  // not), else "".
+  // "resonance verdict: ..." beside a first-estimate hit: the modal analysis refutes it (and why) or
+  // could not check it; else "".
   std::string resonance_verdict;
-  // The two-mass check's warnings as it gave them (before the label).
+  // What the two-mass first estimate said (one sentence per order it found near p0), whatever the
+  // verdict made of it.
   std::vector<std::string> first_estimate;
 };
 

@@ -124,15 +124,14 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
       run = runReducedModel(scene);
     }
     p.ran = true;
-    // The summary every run gets (stall cause, two-mass resonance check), without the modal
-    // analysis' verdict: the resonance_warnings column counts the first estimate.
+    // The summary every run gets (stall cause, the resonance verdict): the resonance_warnings
+    // column counts the run's resonance warnings, the same as `simulate` prints.
     RunSummaryOptions summary_options;
     summary_options.overrides = overrides;
-    summary_options.resonance_verdict = false;
     RunMessages messages;
     const nlohmann::json summary = summarizeRun(scene, run, summary_options, &messages);
     p.motion = summary.value("motion", "unknown");
-    p.warnings = messages.first_estimate;  // the load's warning is a metric column
+    p.warnings = messages.resonance_warnings;  // the load's warning is a metric column
     const auto& src = metricSources();
     for (std::size_t k = 0; k < src.size(); ++k) p.metrics[k] = summaryNumber(summary, src[k].second);
     p.complete = run.stats.complete;
