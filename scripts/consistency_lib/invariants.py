@@ -324,6 +324,10 @@ def verdicts_within_preconditions(ctx):
         for name, k in checks.items():
             if k.get("verdict") in NO_VERDICT or _robust_fail(name, k, s):
                 continue
+            # The start check of a run that begins turning judges the torques at standstill, which
+            # do not depend on how this run ends.
+            if name == "start" and "torques at standstill" in str(k.get("window", "")):
+                continue
             v.append(f"{name} {k.get('verdict')} ({k.get('value')}) while the drive is still starting")
     su = s.get("start_up")
     if isinstance(su, dict):

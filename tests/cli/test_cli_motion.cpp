@@ -47,7 +47,7 @@ TEST(CliMotion, StalledRunSaysSoAndWhyInConsoleJsonAndReport) {
   EXPECT_EQ(h.exit_code, 4) << h.out << h.err;
   const std::string html = slurp(rep.path() / "report.html");
   EXPECT_NE(html.find("Motion of the crank: <b>stalled</b>"), std::string::npos);
-  EXPECT_NE(html.find("Why the drive stalled: starting torque at the crank"), std::string::npos);
+  EXPECT_NE(html.find("Why the drive stalled: the motor&#39;s starting torque 1032 N·m at the crank"), std::string::npos);
   // The report shows the checks with their deciding window, none of them passed.
   EXPECT_NE(html.find("<h3>Checks</h3>"), std::string::npos);
   EXPECT_EQ(html.find("class=\"ok\">pass"), std::string::npos);

@@ -4,6 +4,7 @@ and constraints."""
 import json
 import math
 
+import numpy.testing
 import pytest
 
 import rollerdyn as rd
@@ -40,7 +41,8 @@ def test_sweep_of_words_and_designs():
     grid = rd.sweep(scene, {"crank.offset_deg": [0, 90], "coupling.type": ["rigid"]}, model="reduced")
     assert list(grid["coupling.type"]) == ["rigid", "rigid"]
     designs = rd.sweep(scene, designs=[{"crank.offset_deg": 0}, {"crank.offset_deg": 90}], model="reduced")
-    assert list(designs["delta"]) == list(grid["delta"])
+    # The same runs either way (δ is NaN, i.e. not applicable, where a 4 s run reaches no steady state).
+    numpy.testing.assert_array_equal(designs["delta"].to_numpy(), grid["delta"].to_numpy())
     with pytest.raises(ValueError, match="did you mean 'crank.offset_deg'"):
         rd.sweep(scene, {"crank.ofset_deg": [0]}, model="reduced")
 
