@@ -8,16 +8,6 @@ namespace {
 
 bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
-// Catalogue values the Kloss laws still read: the nominal point (M_n of the heating check), the
-// breakdown ratio (the check that the Kloss data agree with the catalogue) and the starting ratio
-// (the start-up note on Kloss's starting torque). The rest serve only the circuit's fit.
-bool catalogueKeyKlossReads(const std::string& key) {
-  for (const char* k : {"motor.catalogue.power", "motor.catalogue.omega_nominal", "motor.catalogue.breakdown_torque_ratio",
-                        "motor.catalogue.starting_torque_ratio"})
-    if (key == k) return true;
-  return false;
-}
-
 // The rollers' half spacing a is the arm of their normal forces about the cart's centre of mass:
 // R_j1·(p − a) + R_j2·(p + a) = (R_j1 + R_j2)·p + (R_j2 − R_j1)·a, so it acts only where the two
 // normals of a cart differ.
@@ -44,10 +34,6 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
   if (key == "motor.connection")
     return "the laws use the equivalent star's per-phase values either way; a star-delta start is set by "
            "motor.start.method (the connection shows only in `rollerdyn motor`)";
-  if (kloss && startsWith(key, "motor.catalogue.") && !catalogueKeyKlossReads(key))
-    return "it serves the equivalent circuit's fit (motor.model: circuit or park); the " +
-           std::string(sc.induction.model == MotorModel::Kloss ? "kloss" : "kloss_dynamic") +
-           " law reads only the catalogue's nominal point, breakdown and starting torque ratios";
   if (kloss && startsWith(key, "motor.circuit."))
     return "it sets the equivalent circuit (motor.model: circuit or park), not the Kloss law";
   if (key == "carts.geometry.a" && !rollerSpacingActs(sc))

@@ -27,11 +27,16 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
   if (!summary.contains("warnings") || !summary["warnings"].is_array()) summary["warnings"] = nlohmann::json::array();
   for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
   // Keys the scene gives that this model's run does not read: said, never silently dropped.
+  // One warning line names them; summary.json keys_without_effect says why for each.
   summary["keys_without_effect"] = nlohmann::json::array();
+  std::string names;
   for (const std::string& w : keysWithoutEffect(scene, run.model)) {
     summary["keys_without_effect"].push_back(w);
-    summary["warnings"].push_back(w);
+    names += (names.empty() ? "" : ", ") + w.substr(0, w.find(' '));
   }
+  if (!names.empty())
+    summary["warnings"].push_back("scene keys without effect on this " + run.model + " model's run: " + names +
+                                  " (why for each: summary.json keys_without_effect)");
   // summary["guide_friction"] and its warnings: self-locking, dead centre, quasi-static friction work.
   addFrictionWarnings(scene, run, summary);
   const std::size_t run_warnings = summary["warnings"].size();

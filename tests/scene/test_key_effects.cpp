@@ -37,16 +37,8 @@ TEST(KeyEffects, AKeyOfTheOtherModelIsNamed) {
   EXPECT_FALSE(named(keysWithoutEffect(s, "multibody"), "sizing.bearing_rating.crank_pin"));
 }
 
-TEST(KeyEffects, ACatalogueValueOnlyTheCircuitsFitReadsIsNamedUnderKloss) {
-  const Scene s = scene({"motor.connection=delta"});
-  EXPECT_TRUE(named(keysWithoutEffect(s, "multibody"), "motor.connection"));
-  // The shipped scene gives the whole catalogue: under Kloss the current is the fit's alone, the
-  // breakdown ratio feeds the check that the Kloss data agree with the catalogue.
-  if (!s.induction.catalogue.given()) GTEST_SKIP() << "scene without catalogue";
-  const std::vector<std::string> kloss = keysWithoutEffect(s, "multibody");
-  EXPECT_TRUE(named(kloss, "motor.catalogue.current"));
-  EXPECT_FALSE(named(kloss, "motor.catalogue.breakdown_torque_ratio"));
-  EXPECT_FALSE(named(keysWithoutEffect(scene({"motor.model=circuit"}), "multibody"), "motor.catalogue.current"));
+TEST(KeyEffects, TheWindingConnectionIsNamed) {
+  EXPECT_TRUE(named(keysWithoutEffect(scene({"motor.connection=delta"}), "multibody"), "motor.connection"));
 }
 
 TEST(KeyEffects, TheRollerSpacingActsOnlyWhereACartsTwoNormalsDiffer) {
