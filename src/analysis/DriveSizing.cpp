@@ -188,6 +188,13 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
                   "one start puts %.3g kJ into the rotor (%.3g kJ more than %.3g s of steady running), so the rotor's "
                   "heat balance allows about %.3g starts per hour at this load",
                   r.start_heat * 1e-3, r.start_heat_above_steady * 1e-3, r.start_duration, r.starts_per_hour);
+  else if (start_known && !(r.start_heat_above_steady > 0))
+    // A gentle start (a frequency converter's ramp) puts no more heat into the rotor than the same
+    // time of steady running: the starts do not limit the duty (was "the start's heat is not known").
+    std::snprintf(starts, sizeof starts,
+                  "one start puts %.3g kJ into the rotor, no more than %.3g s of steady running, so starts add "
+                  "nothing to the rotor's heat at this load",
+                  r.start_heat * 1e-3, r.start_duration);
   const std::string unknown_start =
       start_up && start_up->applicable && !start_up->from_rest
           ? "the run holds no start from rest (it begins turning, initial.crank_speed), so the start's heat is not known"

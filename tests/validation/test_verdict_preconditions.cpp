@@ -106,5 +106,21 @@ TEST(VerdictPreconditions, ARunAtSpeedOfADriveThatCannotStartFailsItsStartAndJud
   EXPECT_NE(j["start_up"]["verdict"].get<std::string>().find("From rest it would not start"), std::string::npos);
 }
 
+// A frequency converter's gentle start puts less heat into the rotor than the same time of steady
+// running: the heating check says so, not "the start's heat is not known" (the start-up answers
+// had its rotor loss, 0.74 kJ, all along).
+TEST(VerdictPreconditions, AGentleStartAddsNothingToTheRotorsHeatAndSaysSo) {
+  const json j = summarize({"carts.count=3", "crank.offset_deg=120", "loads.rolling_resistance=0.05",
+                            "motor.start.method=frequency_converter", "motor.start.ramp_time=3",
+                            "motor.start.initial_frequency=5", "motor.start.boost=0.1", "simulation.t_end=12"});
+  ASSERT_TRUE(j["start_up"]["starts"].get<bool>());
+  const double loss = j["start_up"]["rotor_energy_loss"];
+  EXPECT_GT(loss, 0.0);
+  EXPECT_EQ(j["sizing"]["motor"]["whole_run"]["start_heat"].get<double>(), loss);
+  const std::string reason = checkOf(j, "motor_heating")["reason"];
+  EXPECT_EQ(reason.find("not known"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("starts add nothing to the rotor's heat"), std::string::npos) << reason;
+}
+
 }  // namespace
 }  // namespace rollerdyn
