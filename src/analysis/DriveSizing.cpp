@@ -451,8 +451,7 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
     s.can_start_from_rest = start_up->can_start_from_rest;
     s.start_simulated = start_up->from_rest;
     s.start_verdict = start_up->verdict;
-    s.start_load_ratio = std::max(start_up->load_torque_start / start_up->starting_torque_held_crank,
-                                  start_up->load_torque_mean / start_up->largest_torque_held_crank);
+    s.start_load_ratio = start_up->start_load_ratio;
   }
   s.flywheel = sizeFlywheel(sc, ts, w, b, e, turning && w.reached, delta, load);  // a steady revolution's figures
   s.coupling = sizeCoupling(sc, ts, b, e, n);

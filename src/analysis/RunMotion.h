@@ -39,6 +39,14 @@ std::string classifyMotion(const Scene& scene, const RunResult& run, const Windo
                            double window_advance = std::numeric_limits<double>::quiet_NaN(),
                            bool steady_reached = true);
 
+// What every output says of a drive "starting" when its run ended (the one sentence the status,
+// the start-up answers, the sizing and the resonance check print): why nothing steady can be
+// judged yet and what to do.
+inline const char* kStillStartingWords =
+    "the drive is still starting when the run ends: the crank has not settled (its speed still changes sign within "
+    "a revolution, still grows or falls from one revolution to the next, or it rocks with swings that still grow), "
+    "so nothing steady can be judged yet: run longer (simulation.t_end)";
+
 // Whether per-revolution metrics mean anything for this motion.
 inline bool motionIsTurning(const std::string& motion) { return motion == "turning"; }
 

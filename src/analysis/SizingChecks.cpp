@@ -33,9 +33,7 @@ void notApplicable(SizingCheck& c, const std::string& why) {
 }
 
 // What every check of a drive still starting when the run ended says.
-const std::string kTooShort =
-    "the run ended before the drive settled (its speed still changes sign in the metrics window, it is still gaining "
-    "or losing speed revolution after revolution, or its swings still grow): run longer (simulation.t_end)";
+const std::string kTooShort = kStillStartingWords;
 
 std::string notTurning(const DriveSizing& s) {
   return "the drive does not turn (" + (s.motion.empty() ? std::string("not turning") : s.motion) + ")";

@@ -157,9 +157,13 @@ SupplyState heldAtStandstill(const Supply& supply) {
   return held;
 }
 
+bool isRatedSupply(const SupplyState& s) {
+  return s.line_current_factor >= 1.0 && s.voltage >= 1.0 - 1e-12 && s.frequency >= 1.0 - 1e-12;
+}
+
 std::string supplyWords(const SupplyState& s) {
   if (s.line_current_factor < 1.0) return "in star, U_n/√3 on each winding";
-  if (s.voltage >= 1.0 - 1e-12 && s.frequency >= 1.0 - 1e-12) return "at the rated supply";
+  if (isRatedSupply(s)) return "at the rated supply";
   char buf[96];
   if (s.frequency < 1.0 - 1e-12)
     std::snprintf(buf, sizeof buf, "at U = %.3g·U_n and f = %.3g·f_n", s.voltage, s.frequency);
@@ -173,9 +177,12 @@ std::string supplyWords(const SupplyState& s) {
 void judgeStartFromTorques(const Scene& sc, StartUp& r) {
   if (!std::isfinite(r.load_torque_start) || !std::isfinite(r.load_torque_mean)) {
     r.can_start_from_rest = -1;
+    r.start_load_ratio = kNaN;
     return;
   }
-  const std::string held = r.held_supply == "at the rated supply" ? "" : " " + r.held_supply;
+  r.start_load_ratio = std::max(r.load_torque_start / r.starting_torque_held_crank,
+                                r.load_torque_mean / r.largest_torque_held_crank);
+  const std::string held = r.held_supply_is_rated ? "" : " " + r.held_supply;
   // Every reason that holds, the one that ends the start first (breaking away) first.
   std::string cause;
   if (r.starting_torque_held_crank <= r.load_torque_start) {
@@ -296,6 +303,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
       (kloss_curve ? sc.motor.breakdown_torque : largestSteadyTorque(*law, SupplyState{})) * u * eta;
   const SupplyState held = heldAtStandstill(supply);
   r.held_supply = supplyWords(held);
+  r.held_supply_is_rated = isRatedSupply(held);
   r.starting_torque_held_crank = law->steadyTorque(held, 0.0) * u * eta;
   r.largest_torque_held_crank =
       (kloss_curve ? sc.motor.breakdown_torque * held.voltage * held.voltage / (held.frequency * held.frequency)
@@ -432,10 +440,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
     r.verdict = "the drive starts: the crank reaches 95 % of its steady mean speed " + fmt("%.4g", r.steady_mean_speed) +
                 " rad/s " + fmt("%.3g", r.run_up_time) + " s after switch-on";
   } else if (r.still_starting) {
-    r.verdict = "the drive is still starting when the run ends: the crank has not settled (it rocks with swings "
-                "that still grow, its speed still changes sign within a revolution, or still grows or falls from one "
-                "revolution to the next), so whether and when it runs up cannot be given yet: run longer "
-                "(simulation.t_end)";
+    r.verdict = kStillStartingWords;
   } else if (r.can_start_from_rest == 1 && sc.motor_start.method == StartMethod::StarDelta &&
              std::isfinite(sc.motor_start.changeover_speed) &&
              (wm.empty() || peakOf(wm, 0, wm.size(), false) * u < sc.motor_start.changeover_speed)) {

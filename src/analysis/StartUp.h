@@ -94,6 +94,7 @@ struct StartUp {
   // start applied; a step triggered by speed never comes at standstill): star for a star-delta
   // changeover by speed, the rated supply after a timed changeover or a ramp.
   std::string held_supply;                 // that supply in words
+  bool held_supply_is_rated = true;        // that supply is the rated one (U_n, f_n, delta)
   double starting_torque_held_crank = 0;   // steadyTorque(held supply, ω_r = 0)·u·η [N·m]
   double largest_torque_held_crank = 0;    // max over ω_r of steadyTorque(held supply)·u·η [N·m]
   double load_torque_start = 0;            // load at the start angle (StartLoad) [N·m at the crank]
@@ -101,6 +102,10 @@ struct StartUp {
   // Whether the motor can start the machine from rest, from these torques and the loads alone
   // (before looking at the run): 1 yes, 0 no, -1 not known (the loads were not evaluated).
   int can_start_from_rest = -1;
+  // How near the drive is to not starting: the larger of load at the start angle / starting torque
+  // and mean load / largest torque, both under the held supply (> 1: it cannot start) [-]; NaN
+  // when the loads are not known.
+  double start_load_ratio = 0;
   // Why a drive does not start or does not run, in one sentence from the torques against the loads;
   // the run status, the start-up answers and the sizing all print this one (never their own). When
   // the torques allow a start: the load peaks near a dead centre with the inertia. "" when the

@@ -104,11 +104,13 @@ json startUpJson(const StartUp& s) {
   j["starting_torque_rated_crank"] = num(s.starting_torque_rated_crank);
   j["largest_torque_crank"] = num(s.largest_torque_crank);
   j["held_supply"] = s.held_supply;
+  j["held_supply_is_rated"] = s.held_supply_is_rated;
   j["starting_torque_held_crank"] = num(s.starting_torque_held_crank);
   j["largest_torque_held_crank"] = num(s.largest_torque_held_crank);
   j["load_torque_start"] = num(s.load_torque_start);
   j["load_torque_mean"] = num(s.load_torque_mean);
   j["can_start_from_rest"] = s.can_start_from_rest < 0 ? json(nullptr) : json(s.can_start_from_rest == 1);
+  j["start_load_ratio"] = num(s.start_load_ratio);
   j["stall_cause"] = s.stall_cause.empty() ? json(nullptr) : json(s.stall_cause);
   j["steady"] = {{"mean_speed", num(s.steady_mean_speed)},
                  {"reached", s.steady_reached},
@@ -161,7 +163,8 @@ std::string startUpText(const json& summary) {
     << f(jsonMember(s, "largest_torque_crank"), "%.4g") << ") against a load of " << f(jsonMember(s, "load_torque_start"), "%.4g")
     << " N·m at the start angle, " << f(jsonMember(s, "load_torque_mean"), "%.4g") << " N·m mean\n";
   const json& held = jsonMember(s, "held_supply");
-  if (held.is_string() && held.get<std::string>() != "at the rated supply")
+  const json& held_rated = jsonMember(s, "held_supply_is_rated");
+  if (held.is_string() && held_rated.is_boolean() && !held_rated.get<bool>())
     o << "  held at standstill            " << held.get<std::string>() << " until the rotor turns: starting torque "
       << f(jsonMember(s, "starting_torque_held_crank"), "%.4g") << " N·m, largest " << f(jsonMember(s, "largest_torque_held_crank"), "%.4g")
       << " N·m at the crank\n";

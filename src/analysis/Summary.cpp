@@ -289,8 +289,7 @@ std::string summaryText(const nlohmann::json& s) {
         : motion == "coasting" ? "  (the motor is off and the machine slows down: the run ended before it came to rest; "
                                  "its speed swing is the deceleration, not an unevenness, so δ, H and k_p do not apply; "
                                  "run longer, simulation.t_end, for the run-out)"
-        : motion == "starting" ? "  (the drive is still starting when the run ends: turning but not settled, or rocking "
-                                 "with swings that still grow; run longer, simulation.t_end; no sizing verdict applies yet)"
+        : motion == "starting" ? "  (" + std::string(kStillStartingWords) + "; no sizing verdict applies yet)"
                               : "")
     << "\n";
   o << "status       " << str(at("status")) << "\n";

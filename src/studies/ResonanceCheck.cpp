@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/RunMotion.h"
+
 namespace rollerdyn {
 
 double naturalFrequency(double c, double J1, double J2) {
@@ -82,8 +84,7 @@ std::string noSteadyMotion(const Scene& scene, const RunState& st) {
     return "the drive does not turn (the crank rocks back and forth): it has no steady motion, so there is no "
            "resonance or stability to judge; make it start first";
   if (st.motion == "starting")
-    return "the drive is still starting when the run ends: it has not reached a steady motion; run longer "
-           "(simulation.t_end)";
+    return kStillStartingWords;
   if (st.motion == "at_rest" || st.motion == "coasting")
     return "the drive does not turn steadily (" + st.motion + "): no steady motion to judge";
   if (st.motion != "turning") return "the crank's motion is not known (" + st.motion + "): no steady motion to judge";
