@@ -182,8 +182,17 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   // steady losses plus that many starts' heat per hour; without it the drive runs continuously (S1)
   // and the heating check reads the steady window, with the starts per hour the motor allows.
   r.duty_starts_per_hour = z.starts_per_hour;
-  char starts[300] = "";
-  if (std::isfinite(r.starts_per_hour))
+  char starts[400] = "";
+  if (std::isfinite(r.starts_per_hour) && sq.mean >= nominal_losses)
+    // "allows about 0 starts per hour" read as if the starts were the trouble (the three-cart
+    // trial): steady running alone already overheats the rotor, and says so with its own figure.
+    std::snprintf(starts, sizeof starts,
+                  "one start puts %.3g kJ into the rotor (%.3g kJ more than %.3g s of steady running), but steady "
+                  "running alone already heats the rotor beyond its rating (√(steady rotor losses / (s_n·M_n·ω0)) = "
+                  "%.3g > 1), so the rotor's heat balance allows no start at this load",
+                  r.start_heat * 1e-3, r.start_heat_above_steady * 1e-3, r.start_duration,
+                  std::sqrt(sq.mean / nominal_losses));
+  else if (std::isfinite(r.starts_per_hour))
     std::snprintf(starts, sizeof starts,
                   "one start puts %.3g kJ into the rotor (%.3g kJ more than %.3g s of steady running), so the rotor's "
                   "heat balance allows about %.3g starts per hour at this load",

@@ -122,5 +122,30 @@ TEST(VerdictPreconditions, AGentleStartAddsNothingToTheRotorsHeatAndSaysSo) {
   EXPECT_NE(reason.find("starts add nothing to the rotor's heat"), std::string::npos) << reason;
 }
 
+// The energy-balanced three-cart drive of the papers (a 15 kW motor) started from rest through a
+// frequency converter: its steady running alone heats the rotor beyond its rating, so no start can
+// be added. The heating check once read "allows about 0 starts per hour", as if the starts were the
+// trouble; it names the steady figure, and that figure lies between 1 and the duty's.
+TEST(VerdictPreconditions, ARotorOverheatedBySteadyRunningAloneSaysSoNotThatItAllowsZeroStarts) {
+  const Scene s = parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/energy-balanced-3cart.yaml",
+                                 {"initial.crank_speed=0", "motor.model=circuit", "motor.start.method=frequency_converter",
+                                  "motor.start.ramp_time=5", "motor.start.initial_frequency=2", "sizing.starts_per_hour=6"});
+  const StartLoad load = startLoadOf(s);
+  const json j = makeSummary(s, runReducedModel(s), &load);
+  ASSERT_TRUE(j["start_up"]["starts"].get<bool>());
+  const json& heating = checkOf(j, "motor_heating");
+  ASSERT_EQ(heating["verdict"], "FAIL");
+  const std::string reason = heating["reason"];
+  EXPECT_EQ(reason.find("allows about"), std::string::npos) << reason;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(reason, m, std::regex("steady running alone already heats the rotor beyond its rating "
+                                                      "\\(.*= ([0-9.]+) > 1\\), so the rotor's heat balance allows no start")))
+      << reason;
+  const double steady_alone = std::stod(m[1]);
+  EXPECT_GT(steady_alone, 1.0);
+  EXPECT_LT(steady_alone, heating["value"].get<double>());  // six starts add their heat on top
+  EXPECT_EQ(j["sizing"]["motor"]["whole_run"]["starts_per_hour"].get<double>(), 0.0);
+}
+
 }  // namespace
 }  // namespace rollerdyn
