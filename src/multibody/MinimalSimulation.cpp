@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -15,6 +16,7 @@
 #include "multibody/MinimalReactions.h"
 #include "multibody/MotorForce.h"
 #include "motor/Stiffness.h"
+#include "physics/IntegrationScales.h"
 #include "multibody/cvode/AdamsIntegrator.h"
 
 namespace rollerdyn {
@@ -216,24 +218,13 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   system.realize(ms.state(), SimTK::Stage::Dynamics);
   const EnergySnapshot e0 = model.energy(ms.state());
 
-  // Tolerances: like the reduced model's CVODE (every state against its natural scale), with
-  // the constrained formulation's weights for the twist (coupling torque to accuracy·M_ref)
-  // and the friction normal forces (GuideFriction::setErrorWeights).
-  // CVODE's Adams error control (local error, RMS norm over the states) lets the crank speed
-  // drift ~100-250x further from the exact solution than Simbody's Runge-Kutta-Merson at the same
-  // nominal accuracy (balanced-4cart, 10 s, crank-speed error against a run at 1e-12: constrained
-  // 3.0e-8 / minimal 7.5e-6 at 1e-6, 2.5e-10 / 5.4e-8 at 1e-8). So simulation.accuracy means
-  // about the same error in both formulations, CVODE gets a tolerance 100x tighter.
-  constexpr double kAccuracyToCvodeTolerance = 0.01;
-  const double rtol = kAccuracyToCvodeTolerance * sc.simulation.accuracy;
+  // Tolerances: every state against its natural scale, the same scales as the reduced model's
+  // (IntegrationScales.h), with the constrained formulation's weights for the twist (coupling
+  // torque to accuracy·M_ref) and the friction normal forces (GuideFriction::setErrorWeights).
+  const IntegrationScales scales = integrationScales(
+      sc, model.options().prescribe_crank_speed ? model.options().crank_speed : std::numeric_limits<double>::quiet_NaN());
+  const double rtol = scales.cvode_rtol, w_ref = scales.speed;
   const double w_sync = sc.motor.omega_sync / sc.reducer.ratio;
-  const double w_ref = model.options().prescribe_crank_speed
-                           ? std::max(std::abs(model.options().crank_speed), 1.0)
-                           : (sc.motor.enabled ? w_sync : std::max(std::abs(sc.initial.crank_speed), 1.0));
-  const double M_ref = std::max(
-      {sc.motor.breakdown_torque * sc.reducer.ratio * sc.reducer.efficiency,
-       sc.rollerForceSum() * std::max(sc.crank.radius, sc.hasCamDrive() ? sc.cam.stroke : 0.0),
-       1.0});
   // E_ref: kinetic energy of the machine at the reference speed (its work integrals' scale).
   SimTK::State kin = s0;
   {
@@ -252,14 +243,12 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   p.rtol = rtol;
   p.atol = Eigen::VectorXd::Constant(L.size, rtol * E_ref);  // energy-audit integrals
   p.absolute_only.assign(L.size, false);
-  p.atol(L.phi) = rtol * 1.0;  // [rad]
+  p.atol(L.phi) = rtol * scales.angle;  // [rad]
   p.absolute_only[L.phi] = true;
   if (L.omega >= 0) p.atol(L.omega) = rtol * w_ref;
   if (L.twist >= 0) {
-    const double psi_ref = M_ref / sc.coupling.stiffness;
-    p.atol(L.twist) = rtol * psi_ref;
-    p.atol(L.twist_rate) =
-        rtol * psi_ref * std::sqrt(sc.coupling.stiffness / std::max(sc.motorSideInertia(), 1e-300));
+    p.atol(L.twist) = rtol * scales.twist;
+    p.atol(L.twist_rate) = rtol * scales.twist_rate;
   }
   // The motor element's z come first (MultibodyModel::buildForces): the law's states against
   // their natural magnitudes, then the brake work (an energy integral, atol as above).

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -18,6 +19,7 @@
 #include "analysis/StallDetector.h"
 #include "motor/MotorColumns.h"
 #include "motor/Stiffness.h"
+#include "physics/IntegrationScales.h"
 #include "reduced/EigenSundials.h"
 #include "reduced/ReducedModel.h"
 
@@ -168,23 +170,14 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   const Scene& s = m.scene();
   const std::vector<double> times = outputTimes(s.simulation);
   const int n = m.stateSize();
-  const double rtol = s.simulation.accuracy;
 
-  // Absolute tolerances: atol_i = rtol·(reference magnitude of state i), so every component is
-  // held to the same relative accuracy measured against its natural scale and absolute control
-  // only takes over when a state is far below that scale (e.g. at a start from rest):
-  //   angle φ        1 rad (an error of rtol rad is negligible against a revolution)
-  //   speed φ̇        ω_ref = ω0/u, the synchronous crank speed (motor off: max(|φ̇(0)|, 1 rad/s))
-  //   twist ψ        ψ_ref = M_ref/c, M_ref = the larger of the breakdown torque at the crank
-  //                  M_kr·u·η and the roller-force torque scale Σ_j (F_j1+F_j2)·r: the twist the
-  //                  coupling takes under the largest torques of the scene
-  //   twist rate ψ̇   ψ_ref·√(c/J_n1) (the coupling's own time scale)
-  //   work integrals E_ref = ½·J(φ0)·ω_ref², the kinetic energy at synchronous speed
-  const double w_ref = s.motor.enabled ? syncCrankSpeed(s)
-                                       : std::max(std::abs(s.initial.crank_speed), 1.0);
-  const double M_ref = std::max({s.motor.breakdown_torque * s.reducer.ratio * s.reducer.efficiency,
-                                 s.rollerForceSum() * s.crank.radius,
-                                 1.0});
+  // Absolute tolerances: atol_i = rtol·(reference magnitude of state i, IntegrationScales.h, the
+  // multibody model's too), so every component is held to the same relative accuracy measured
+  // against its natural scale and absolute control only takes over when a state is far below that
+  // scale (e.g. at a start from rest); the work integrals against E_ref = ½·J(φ0)·ω_ref², the
+  // kinetic energy at the reference speed.
+  const IntegrationScales scales = integrationScales(s, std::numeric_limits<double>::quiet_NaN());
+  const double rtol = scales.cvode_rtol, w_ref = scales.speed;
   const double E_ref = 0.5 * (m.reducedInertia(s.initial.crank_angle) + m.motorSideInertia()) *
                        w_ref * w_ref;
 
@@ -202,15 +195,14 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   am.setConstant(rtol * E_ref);
   // The motor law's states against their natural magnitudes (MotorLaw::stateScales).
   if (m.motorStateCount() > 0) {
-    const std::vector<double> scales = m.motorLaw()->stateScales();
-    for (int i = 0; i < m.motorStateCount(); ++i) am(m.iMotorStates() + i) = rtol * scales.at(i);
+    const std::vector<double> motor_scales = m.motorLaw()->stateScales();
+    for (int i = 0; i < m.motorStateCount(); ++i) am(m.iMotorStates() + i) = rtol * motor_scales.at(i);
   }
-  am(m.iPhi()) = rtol * 1.0;
+  am(m.iPhi()) = rtol * scales.angle;
   am(m.iOmega()) = rtol * w_ref;
   if (!m.rigid()) {
-    const double psi_ref = M_ref / s.coupling.stiffness;
-    am(m.iTwist()) = rtol * psi_ref;
-    am(m.iTwistRate()) = rtol * psi_ref * std::sqrt(s.coupling.stiffness / m.motorSideInertia());
+    am(m.iTwist()) = rtol * scales.twist;
+    am(m.iTwistRate()) = rtol * scales.twist_rate;
   }
 
   CvodeUserData ud;
