@@ -9,6 +9,7 @@
 
 #include "analysis/SizingChecks.h"
 #include "motor/SharedMotorLaw.h"
+#include "scene/NominalTorqueSource.h"
 
 namespace rollerdyn {
 
@@ -347,21 +348,26 @@ double nominalMotorTorque(const Scene& sc, std::string* source) {
   const SizingInputs& z = sc.sizing;
   std::string src;
   double M_n = kNaN;
-  if (z.motor_nominal_torque > 0) {
-    M_n = z.motor_nominal_torque;
-    src = "sizing.motor_nominal_torque";
-  } else if (z.motor_nominal_power > 0 && z.motor_omega_nominal > 0) {
-    M_n = z.motor_nominal_power / z.motor_omega_nominal;
-    src = "P_n/ω_n (sizing.motor_nominal_power, motor.omega_nominal)";
-  } else if ((sc.induction.model == MotorModel::Circuit || sc.induction.model == MotorModel::Park) &&
-             sc.induction.catalogue.given() && sc.induction.catalogue.omega_nominal > 0) {
-    M_n = sc.induction.catalogue.nominalTorque();
-    src = "P_n/ω_n of the motor's catalogue (motor.catalogue.power, motor.catalogue.omega_nominal)";
-  } else if (z.motor_overload_ratio > 1) {
-    M_n = sc.motor.breakdown_torque / z.motor_overload_ratio;
-    src = "M_kr/λ (motor.breakdown_torque, motor.overload_ratio)";
-  } else {
-    src = "not given (sizing.motor_nominal_torque or sizing.motor_nominal_power)";
+  switch (nominalTorqueSource(sc)) {
+    case NominalTorqueSource::SizingTorque:
+      M_n = z.motor_nominal_torque;
+      src = "sizing.motor_nominal_torque";
+      break;
+    case NominalTorqueSource::SizingPower:
+      M_n = z.motor_nominal_power / z.motor_omega_nominal;
+      src = "P_n/ω_n (sizing.motor_nominal_power, motor.omega_nominal)";
+      break;
+    case NominalTorqueSource::Catalogue:
+      M_n = sc.induction.catalogue.nominalTorque();
+      src = "P_n/ω_n of the motor's catalogue (motor.catalogue.power, motor.catalogue.omega_nominal)";
+      break;
+    case NominalTorqueSource::OverloadRatio:
+      M_n = sc.motor.breakdown_torque / z.motor_overload_ratio;
+      src = "M_kr/λ (motor.breakdown_torque, motor.overload_ratio)";
+      break;
+    case NominalTorqueSource::None:
+      src = "not given (sizing.motor_nominal_torque or sizing.motor_nominal_power)";
+      break;
   }
   if (source) *source = src;
   return M_n;

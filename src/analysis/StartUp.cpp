@@ -249,6 +249,22 @@ void addStopping(const Scene& sc, const Table& ts, StartUp& r) {
   }
 }
 
+// A star-delta changeover by speed that the motor never reached: its keys changed nothing in this
+// run, which stayed in star (a user raising the changeover speed of a drive that stalls in star
+// saw the same figures and no word why).
+void addChangeoverNotReached(const Scene& sc, const std::vector<double>& omega_motor_crank, StartUp& r) {
+  const MotorStart& m = sc.motor_start;
+  if (m.method != StartMethod::StarDelta || !std::isfinite(m.changeover_speed) || omega_motor_crank.empty()) return;
+  double top = -std::numeric_limits<double>::infinity();
+  for (double w : omega_motor_crank) top = std::max(top, w * sc.reducer.ratio);  // the rotor's speed
+  if (!(top < m.changeover_speed)) return;
+  const std::string why = "the motor never reached the changeover speed " + fmt("%.4g", m.changeover_speed) +
+                          " rad/s (its largest speed " + fmt("%.4g", top) + " rad/s), so the run stayed in star";
+  for (const char* key : {"motor.start.changeover_speed", "motor.start.changeover_gap"})
+    if (std::find(sc.given_keys.begin(), sc.given_keys.end(), key) != sc.given_keys.end())
+      r.keys_not_reached.push_back(std::string(key) + " has no effect on this run: " + why);
+}
+
 }  // namespace
 
 SteadyTorquePeak largestSteadyTorquePoint(const MotorLaw& law, const SupplyState& supply) {
@@ -433,6 +449,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   }
 
   addStopping(sc, ts, r);
+  addChangeoverNotReached(sc, wm, r);
 
   // Verdict: the cause of a drive that does not start is the one sentence judgeStartFromTorques
   // wrote, so the run status and the sizing say the same.

@@ -139,6 +139,10 @@ struct StartUp {
   double run_out_revolutions = 0;    // crank revolutions from t_off to the stop (or the run's end) [-]
   double run_out_cart_path = 0;      // largest distance a cart travels in that time [m]
   std::vector<std::string> notes;    // what the law cannot show; approximations named
+  // Keys the scene gives whose event this run's start never reached (a star-delta changeover speed
+  // the motor never attained): "key has no effect on this run: why", joined by the run's summary
+  // to the keys without effect (KeyEffects.h) so the one warning line names them.
+  std::vector<std::string> keys_not_reached;
   StartUpCurrentLimit current_limit; // a soft starter's current limit (applies false without one)
 };
 

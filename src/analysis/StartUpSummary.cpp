@@ -145,6 +145,7 @@ json startUpJson(const StartUp& s) {
                                       : json(nullptr);
   j["current_limit"] = currentLimitJson(s.current_limit);
   j["notes"] = s.notes;
+  j["keys_not_reached"] = s.keys_not_reached;
   return j;
 }
 

@@ -1,6 +1,10 @@
 #include "scene/KeyEffects.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "scene/NominalTorqueSource.h"
+#include "scene/SceneSchema.h"
 
 namespace rollerdyn {
 
@@ -17,6 +21,39 @@ bool rollerSpacingActs(const Scene& sc) {
     if (l.roller_normal_front != l.roller_normal_rear) return true;
   }
   return false;
+}
+
+// The equivalent circuit's current data: the Kloss laws have no stator current, so under them
+// these keys only feed `rollerdyn motor` and a run with motor.model circuit or park.
+bool isCurrentData(const std::string& key) {
+  return key == "motor.voltage" || key == "motor.catalogue.current" || key == "motor.catalogue.power_factor" ||
+         key == "motor.catalogue.efficiency" || key == "motor.catalogue.starting_current_ratio" ||
+         key == "motor.catalogue.cages";
+}
+
+// Kloss's critical slip s_kr, in any of its three descriptions.
+bool isKlossSlip(const std::string& key) {
+  return key == "motor.critical_slip" || key == "motor.omega_critical" || key == "motor.overload_ratio";
+}
+
+// Keys of events the run's end comes before: the motor switched off, restarted or changed over to
+// delta at or after t_end.
+std::string afterTheRunsEnd(const std::string& key, const Scene& sc) {
+  const double t_end = sc.simulation.t_end;
+  const MotorStop& stop = sc.motor_stop;
+  if (startsWith(key, "motor.stop.") && !(stop.t_off < t_end))
+    return "the motor is switched off at or after the run's end (motor.stop.t_off, t_end = " + formatNumber(t_end) +
+           " s), so the run holds no stop";
+  if (key == "motor.stop.t_restart" && !(stop.t_restart < t_end))
+    return "the restart comes at or after the run's end (simulation.t_end)";
+  if ((key == "motor.stop.brake_torque" || key == "motor.stop.brake_delay") && !(stop.t_off + stop.brake_delay < t_end))
+    return "the brake would engage at or after the run's end (motor.stop.t_off + motor.stop.brake_delay)";
+  const MotorStart& start = sc.motor_start;
+  if (start.method == StartMethod::StarDelta && std::isfinite(start.changeover_time) &&
+      (key == "motor.start.changeover_time" || key == "motor.start.changeover_gap") &&
+      !(start.changeover_time < t_end))
+    return "the changeover to delta would come at or after the run's end (simulation.t_end): the whole run is in star";
+  return "";
 }
 
 std::string why(const std::string& key, const Scene& sc, const std::string& model) {
@@ -36,6 +73,15 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
            "motor.start.method (the connection shows only in `rollerdyn motor`)";
   if (kloss && startsWith(key, "motor.circuit."))
     return "it sets the equivalent circuit (motor.model: circuit or park), not the Kloss law";
+  if (kloss && isCurrentData(key))
+    return "the Kloss law has no stator current: it is the equivalent circuit's data (motor.model circuit or park, "
+           "and `rollerdyn motor`)";
+  if (!kloss && isKlossSlip(key) &&
+      !(key == "motor.overload_ratio" && nominalTorqueSource(sc) == NominalTorqueSource::OverloadRatio))
+    return "it sets the Kloss law's critical slip; the equivalent circuit has its own breakdown point (from "
+           "motor.catalogue or motor.circuit)";
+  const std::string late = afterTheRunsEnd(key, sc);
+  if (!late.empty()) return late;
   if (key == "carts.geometry.a" && !rollerSpacingActs(sc))
     return "it is the arm of the rollers' normal forces about the cart, (R_j2 − R_j1)·a, and each cart's two "
            "normals are equal (loads.roller_normal_front = loads.roller_normal_rear)";

@@ -1,6 +1,9 @@
 #include "studies/RunSummary.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <utility>
+#include <vector>
 
 #include "analysis/FrictionChecks.h"
 #include "analysis/SizingSummary.h"
@@ -12,6 +15,35 @@
 #include "studies/StartLoad.h"
 
 namespace rollerdyn {
+
+namespace {
+
+// "motor.catalogue.current, motor.catalogue.efficiency" as "motor.catalogue.{current, efficiency}":
+// keys under one section together, in the order of their sections' first key.
+std::string groupedKeyNames(const std::vector<std::string>& keys) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> sections;
+  for (const std::string& k : keys) {
+    const std::size_t dot = k.rfind('.');
+    const std::string parent = dot == std::string::npos ? "" : k.substr(0, dot);
+    auto it = std::find_if(sections.begin(), sections.end(), [&](const auto& p) { return p.first == parent; });
+    if (it == sections.end()) it = sections.insert(sections.end(), {parent, {}});
+    it->second.push_back(dot == std::string::npos ? k : k.substr(dot + 1));
+  }
+  std::string out;
+  for (const auto& [parent, leaves] : sections) {
+    std::string part;
+    if (leaves.size() == 1) {
+      part = parent.empty() ? leaves[0] : parent + "." + leaves[0];
+    } else {
+      for (const std::string& l : leaves) part += (part.empty() ? "" : ", ") + l;
+      part = parent + ".{" + part + "}";
+    }
+    out += (out.empty() ? "" : ", ") + part;
+  }
+  return out;
+}
+
+}  // namespace
 
 nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunSummaryOptions& options,
                             RunMessages* messages) {
@@ -29,11 +61,17 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
   // Keys the scene gives that this model's run does not read: said, never silently dropped.
   // One warning line names them; summary.json keys_without_effect says why for each.
   summary["keys_without_effect"] = nlohmann::json::array();
-  std::string names;
-  for (const std::string& w : keysWithoutEffect(scene, run.model)) {
+  std::vector<std::string> keys;
+  std::vector<std::string> without = keysWithoutEffect(scene, run.model);
+  // And those whose event the run never reached (the start-up answers find them).
+  if (summary.contains("start_up") && summary["start_up"].is_object() &&
+      summary["start_up"].contains("keys_not_reached"))
+    for (const auto& k : summary["start_up"]["keys_not_reached"]) without.push_back(k.get<std::string>());
+  for (const std::string& w : without) {
     summary["keys_without_effect"].push_back(w);
-    names += (names.empty() ? "" : ", ") + w.substr(0, w.find(' '));
+    keys.push_back(w.substr(0, w.find(' ')));
   }
+  const std::string names = groupedKeyNames(keys);
   if (!names.empty())
     summary["warnings"].push_back("scene keys without effect on this " + run.model + " model's run: " + names +
                                   " (why for each: summary.json keys_without_effect)");

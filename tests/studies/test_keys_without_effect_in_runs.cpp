@@ -1,0 +1,87 @@
+// A key the run names as without effect changes nothing in it, and a key that changes nothing is
+// named: each rule checked on a real run by changing the key's value (the consistency harness
+// found these silently ignored: the Kloss law's current data, Kloss's critical slip under a fitted
+// circuit, a switch-off after the run's end, a changeover speed the motor never reached).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "reduced/ReducedModel.h"
+#include "scene/SceneParser.h"
+#include "studies/RunSummary.h"
+
+namespace rollerdyn {
+namespace {
+
+using nlohmann::json;
+
+json summaryOf(const std::vector<std::string>& sets) {
+  const Scene s = parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml", sets);
+  return summarizeRun(s, runReducedModel(s), RunSummaryOptions{}, nullptr);
+}
+
+// The summary without what differs between any two runs (timings) or names the keys themselves.
+json figures(json j) {
+  for (const char* k : {"cpu_seconds", "real_time_factor", "overrides", "keys_without_effect", "warnings"}) j.erase(k);
+  if (j.contains("performance")) j.erase("performance");
+  if (j.contains("start_up") && j["start_up"].is_object()) j["start_up"].erase("keys_not_reached");
+  return j;
+}
+
+bool named(const json& summary, const std::string& key) {
+  for (const json& w : summary["keys_without_effect"])
+    if (w.get<std::string>().rfind(key + " has no effect", 0) == 0) return true;
+  return false;
+}
+
+// `key` is named in a run with `base` and changes no figure when set to `other`.
+void expectWithoutEffect(std::vector<std::string> base, const std::string& key, const std::string& value,
+                         const std::string& other) {
+  std::vector<std::string> a = base, b = base;
+  a.push_back(key + "=" + value);
+  b.push_back(key + "=" + other);
+  const json ja = summaryOf(a), jb = summaryOf(b);
+  EXPECT_TRUE(named(ja, key)) << key << ": " << ja["keys_without_effect"].dump();
+  EXPECT_EQ(figures(ja), figures(jb)) << key << " " << value << " -> " << other << " changed a figure";
+}
+
+const std::vector<std::string> kShort = {"simulation.t_end=6"};
+
+TEST(KeysWithoutEffectInRuns, TheKlossLawsCurrentDataChangeNothing) {
+  expectWithoutEffect(kShort, "motor.voltage", "380", "418");
+  expectWithoutEffect(kShort, "motor.catalogue.current", "41.27", "45");
+  expectWithoutEffect(kShort, "motor.catalogue.power_factor", "0.9", "0.85");
+  // Under a law fitted to the catalogue they are its data, and not named.
+  const json circuit = summaryOf({"simulation.t_end=6", "motor.model=circuit"});
+  EXPECT_FALSE(named(circuit, "motor.voltage"));
+  EXPECT_FALSE(named(circuit, "motor.catalogue.current"));
+}
+
+TEST(KeysWithoutEffectInRuns, KlossCriticalSlipChangesNothingUnderAFittedCircuit) {
+  expectWithoutEffect({"simulation.t_end=6", "motor.model=circuit"}, "motor.overload_ratio", "2.4", "2.2");
+  // Where λ gives the nominal torque (no other source of M_n), it is read, and not named.
+  const json kloss = summaryOf(kShort);
+  EXPECT_FALSE(named(kloss, "motor.overload_ratio"));
+}
+
+TEST(KeysWithoutEffectInRuns, ASwitchOffAfterTheRunsEndChangesNothing) {
+  expectWithoutEffect({"simulation.t_end=6", "motor.stop.brake_torque=50"}, "motor.stop.t_off", "100", "110");
+  const json within = summaryOf({"simulation.t_end=6", "motor.stop.t_off=4"});
+  EXPECT_FALSE(named(within, "motor.stop.t_off"));
+}
+
+TEST(KeysWithoutEffectInRuns, AChangeoverSpeedTheMotorNeverReachesChangesNothing) {
+  // Six carts of 1200 kg stall in star: the star's third of the starting torque cannot break away.
+  const std::vector<std::string> stalls = {"carts.count=6", "crank.offset_deg=60", "carts.mass=1200",
+                                           "loads.rolling_resistance=0.1", "initial.crank_speed=0",
+                                           "motor.start.method=star_delta", "simulation.t_end=3"};
+  expectWithoutEffect(stalls, "motor.start.changeover_speed", "95", "100");
+  // The default machine reaches it and changes over: read, and not named.
+  const json starts = summaryOf({"initial.crank_speed=0", "motor.start.method=star_delta",
+                                 "motor.start.changeover_speed=95", "simulation.t_end=6"});
+  EXPECT_FALSE(named(starts, "motor.start.changeover_speed"));
+}
+
+}  // namespace
+}  // namespace rollerdyn
