@@ -461,7 +461,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
           arm();
         }
       }
-      if (integ.time() >= times[k]) break;
+      if (reachedOutputTime(integ.time(), times[k])) break;
     }
     if (failed) {
       run.stats.complete = false;

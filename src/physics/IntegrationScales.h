@@ -6,6 +6,10 @@
 // 2000·accuracy in a rocking star-delta start where the multibody model's was within 10·accuracy).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "scene/Scene.h"
 
 namespace rollerdyn {
@@ -29,6 +33,14 @@ struct IntegrationScales {
                       // torques [rad]; 0 for a rigid coupling
   double twist_rate;  // ψ_ref·√(c/J_n1), the coupling's own time scale [rad/s]; 0 for a rigid coupling
 };
+
+// Whether an integrator stopped at t_reached (a switching event's time) has reached the output time
+// t_out: up to a few units of roundoff, a gap CVODE refuses to step across (CV_TOO_CLOSE). A
+// converter ramp ending at t_on + t_ramp = 0.65 + 2.4 s fell 4e-16 s short of the output row
+// 610·0.005 s, and both models stopped there with an integrator failure.
+inline bool reachedOutputTime(double t_reached, double t_out) {
+  return t_reached >= t_out - 64 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t_out));
+}
 
 // `prescribed_crank_speed`: a crank speed the run imposes (a kinematic run), NaN when none.
 IntegrationScales integrationScales(const Scene& scene, double prescribed_crank_speed);

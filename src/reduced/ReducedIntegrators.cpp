@@ -309,7 +309,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
           if (flag < 0) break;
           arm(tret);
         }
-        if (tret >= t) break;
+        if (reachedOutputTime(tret, t)) break;
       }
       if (flag < 0) {
         res.stats.complete = false;
