@@ -110,7 +110,14 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
     }
   }
   if (!std::isfinite(m.omega_min) || !std::isfinite(m.omega_max)) return "unknown";
-  if (m.omega_min < 0 && m.omega_max > 0) {
+  // The speed changes sign only when it leaves the stall rule's band on the other side, as the
+  // rule's swings do (StallDetector.h): a crank that comes to a stop at a dead centre and goes on
+  // forwards reads -7e-20 rad/s there, and once was "rocking" or "starting" by that round-off
+  // alone, depending on when it was switched on.
+  const double band = sc.motor.enabled && sc.reducer.ratio > 0
+                          ? StallDetector::kSpeedFraction * sc.motor.omega_sync / sc.reducer.ratio
+                          : 0.0;
+  if (m.omega_min < -band && m.omega_max > band) {
     // Rocking in the window whose swings still grow when the run ends: a rocking-then-starting
     // drive that has not yet got over its dead centre; undecided, not "rocking".
     if (!(std::abs(window_advance) >= 2.0 * M_PI)) return swings_growing && !steady_reached ? "starting" : "rocking";

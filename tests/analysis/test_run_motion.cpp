@@ -256,6 +256,29 @@ TEST(RunMotion, RockingWithSwingsStillGrowingAtTheEndIsStarting) {
   EXPECT_EQ(classifyMotion(s, run(0.0), m, 0.0, /*steady_reached=*/false), "rocking");
 }
 
+// A crank that comes to a stop at each dead centre and goes on forwards: its speed touches zero,
+// by round-off -7e-20 rad/s, and never turns back. It once read "rocking" (the window's speed
+// "ranges from -6.99e-20 to 8.5 rad/s") or "starting", depending only on when it was switched on
+// (a generated machine of the consistency harness). A speed changes sign only when it leaves the
+// stall rule's band (1 % of ω0/u) on the other side; a real swing back still does.
+TEST(RunMotion, ASpeedThatTouchesZeroByRoundOffDoesNotChangeSign) {
+  const Scene s = motorScene();  // ω0/u = 10 rad/s, band 0.1 rad/s
+  RunResult r;  // φ̇ = 4·(1 - cos 4t) ≥ 0: stops at t = kπ/2 and goes on forwards, 10 s
+  r.model = "reduced";
+  r.timeseries.columns = {"t", "phi_crank", "omega_crank", "omega_motor"};
+  for (int i = 0; i <= 10000; ++i) {
+    const double t = 1e-3 * i, w = 4 * (1 - std::cos(4 * t));
+    r.timeseries.rows.push_back({t, 4 * t - std::sin(4 * t), w, w});
+  }
+  WindowMetrics m;
+  m.omega_min = -6.99e-20;
+  m.omega_max = 8.0;
+  // Advanced less than a revolution in the window (a short window): still no reversal.
+  EXPECT_EQ(classifyMotion(s, r, m, 3.0, /*steady_reached=*/true), "turning");
+  m.omega_min = -0.5;  // a swing back beyond the band is one
+  EXPECT_EQ(classifyMotion(s, r, m, 3.0, /*steady_reached=*/true), "rocking");
+}
+
 // Finding of the 6-cart trial: the motor switched off at 10.4 rad/s, a 10 s run slowing steadily
 // to 6.5 rad/s, was "turning" with δ = 0.22 (the deceleration read as unevenness) and "steady
 // state NOT reached: the crank speed repeats from revolution 13 on". Without a motor, a crank that
