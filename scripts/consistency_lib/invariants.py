@@ -442,7 +442,7 @@ def estimates_reproduce(ctx):
     5 % is far above the integration error and far below the 22x of a V-shaped minimum). The
     flywheel proposal says that the flywheel proposed gives δ = 0.86 ... 1.16 δ*: a run with it
     must give δ ≤ 1.16 δ* (with the run's 2τ speed tolerance), or the output must give the run's δ
-    beside it."""
+    beside it (in the text, or as the first of the flywheel's runs in summary.json)."""
     sw, fw = ctx.get("sweep"), ctx.get("flywheel")
     if not sw and not fw:
         return None
@@ -463,7 +463,14 @@ def estimates_reproduce(ctx):
         tau = speed_tolerance(fw["summary"])
         if d is not None and target and d > 1.16 * target * (1 + 2 * tau) + 2 * tau:
             out = fw.get("stdout", "")
-            if not (ESTIMATE_WORDS.search(out) and f"{d:.3g}" in out):
+            # The run's δ beside the estimate: in the text, or among the flywheel's runs in the
+            # summary (sizing.flywheel.by_runs: the estimate is its first run).
+            base = (ctx.get("base") or {}).get("summary") or {}
+            runs = get(base, "sizing.flywheel.by_runs.runs") or []
+            beside = any(isinstance(r, dict) and r.get("delta") is not None and r.get("inertia") and
+                         abs(r["inertia"] - fw["proposed"]) <= 1e-3 * fw["proposed"] and
+                         abs(r["delta"] - d) <= (2 * tau + 1e-3) * d for r in runs)
+            if not beside and not (ESTIMATE_WORDS.search(out) and f"{d:.3g}" in out):
                 v.append(f"flywheel proposal {fw['proposed']:.4g} kg·m² on the crankshaft for δ* = {target:g} gives "
                          f"δ = {d:.4g} = {d / target:.3g} δ* in a run (printed: 0.86 ... 1.16 δ*)")
     return v

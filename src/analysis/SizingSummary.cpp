@@ -198,6 +198,25 @@ std::string shellWord(const std::string& a) {
   return q + "'";
 }
 
+// The flywheel found by runs (studies/FlywheelByRuns.h): every run tried, then the answer.
+std::string flywheelByRunsText(const json& f, const std::string& pad) {
+  const json& b = jsonMember(f, "by_runs");
+  if (!b.is_object()) return "";
+  std::ostringstream o;
+  const bool motor_shaft = jsonMember(f, "location").is_string() && jsonMember(f, "location").get<std::string>() == "motor_shaft";
+  const std::string where = motor_shaft ? "motor shaft" : "crankshaft";
+  o << pad << "by runs started at " << fmt(jsonMember(b, "started_at_crank_speed"), "%.4g") << " rad/s (" << where << "):";
+  for (const json& r : jsonMember(b, "runs"))
+    o << " " << fmt(jsonMember(r, "inertia"), "%.4g") << " kg·m² gives δ " << fmt(jsonMember(r, "delta"), "%.4g") << ";";
+  o << "\n";
+  const bool found = jsonMember(b, "found").is_boolean() && jsonMember(b, "found").get<bool>();
+  if (found)
+    o << pad << "a flywheel of " << fmt(jsonMember(b, "inertia"), "%.4g") << " kg·m² on the " << where << " meets δ* = "
+      << fmt(jsonMember(f, "target_delta"), "%.4g") << " in a run (δ = " << fmt(jsonMember(b, "delta"), "%.4g") << ")\n";
+  if (jsonMember(b, "note").is_string()) o << pad << jsonMember(b, "note").get<std::string>() << "\n";
+  return o.str();
+}
+
 // The flywheel part of sizingText: the swing, the proposal with its basis, the runs that check it.
 std::string flywheelText(const json& summary) {
   std::ostringstream o;
@@ -239,6 +258,7 @@ std::string flywheelText(const json& summary) {
   else
     o << pad << "(energy method, J·δ constant; the motor's slip and the carts' inertia vary over a turn)\n";
   if (basis.is_string()) o << pad << basis.get<std::string>() << "\n";
+  o << flywheelByRunsText(f, pad);
   const json& check = jsonMember(f, "check_by_runs");
   if (!check.is_object()) return o.str();
   const std::string speed = jsonMember(check, "started_at_speed").is_boolean() && jsonMember(check, "started_at_speed").get<bool>()

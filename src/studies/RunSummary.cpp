@@ -11,6 +11,7 @@
 #include "report/OutputFolder.h"
 #include "scene/KeyEffects.h"
 #include "scene/Plausibility.h"
+#include "studies/FlywheelByRuns.h"
 #include "studies/ResonanceCheck.h"
 #include "studies/StartLoad.h"
 
@@ -43,6 +44,23 @@ std::string groupedKeyNames(const std::vector<std::string>& keys) {
   return out;
 }
 
+// The flywheel that meets δ* from runs, beside the estimate (FlywheelByRuns.h), started as the
+// estimate's check runs are (at this run's mean crank speed unless the user set the speed).
+void addFlywheelByRuns(const Scene& scene, const std::string& model, nlohmann::json& summary) {
+  nlohmann::json& f = summary["sizing"]["flywheel"];
+  const nlohmann::json& check = f["check_by_runs"];
+  if (!check.is_object() || !check.contains("flywheel_inertia") || !check["flywheel_inertia"].is_number() ||
+      !f["target_delta"].is_number() || !f["inertia_effective"].is_number())
+    return;
+  const bool at_speed = check.value("started_at_speed", false);
+  const nlohmann::json& w = summary["omega_crank"]["mean"];
+  if (at_speed && !w.is_number()) return;
+  const double omega = at_speed ? w.get<double>() : scene.initial.crank_speed;
+  f["by_runs"] = toJson(flywheelByRuns(scene, model, check["flywheel_inertia"].get<double>(), omega,
+                                       f["target_delta"].get<double>(), f["inertia_effective"].get<double>()));
+  f["by_runs"]["started_at_crank_speed"] = omega;
+}
+
 }  // namespace
 
 nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunSummaryOptions& options,
@@ -55,7 +73,10 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
           : nlohmann::json(std::filesystem::absolute(options.scene_file).lexically_normal().string());
   summary["overrides"] = options.overrides;
   if (summary.contains("sizing") && summary["sizing"].is_object() && summary["sizing"]["flywheel"].is_object())
+  {
     summary["sizing"]["flywheel"]["check_by_runs"] = flywheelChecks(summary);  // the runs that check its estimate
+    if (options.flywheel_by_runs) addFlywheelByRuns(scene, run.model, summary);
+  }
   if (!summary.contains("warnings") || !summary["warnings"].is_array()) summary["warnings"] = nlohmann::json::array();
   for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
   // Keys the scene gives that this model's run does not read: said, never silently dropped.

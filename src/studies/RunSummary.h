@@ -32,6 +32,9 @@ struct RunSummaryOptions {
   // A full modal analysis made for this run (simulate --modes, report): the verdict rests on it,
   // and summary["modes"] and summary["order_spectrum"] hold it.
   const modes::RunModal* modal = nullptr;
+  // With sizing.target_delta: find the flywheel that meets δ* by runs (FlywheelByRuns.h, up to five
+  // more runs), summary["sizing"]["flywheel"]["by_runs"]. A sweep's points leave it out.
+  bool flywheel_by_runs = true;
 };
 
 // What a terminal prints about the run once it is summarized: the warnings of summary["warnings"]

@@ -128,6 +128,7 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
     // column counts the run's resonance warnings, the same as `simulate` prints.
     RunSummaryOptions summary_options;
     summary_options.overrides = overrides;
+    summary_options.flywheel_by_runs = false;  // a point's δ is its own answer
     RunMessages messages;
     const nlohmann::json summary = summarizeRun(scene, run, summary_options, &messages);
     p.motion = summary.value("motion", "unknown");

@@ -1,0 +1,84 @@
+#include "studies/FlywheelByRuns.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/Summary.h"
+#include "io/FieldFormat.h"
+#include "multibody/MultibodySimulation.h"
+#include "reduced/ReducedModel.h"
+
+namespace rollerdyn {
+
+namespace {
+
+// δ of a steady run with this flywheel; NaN when the run does not turn steadily.
+double deltaWith(const Scene& base, const std::string& model, double inertia, double omega_mean) {
+  Scene s = base;
+  s.flywheel.inertia = inertia;
+  s.initial.crank_speed = omega_mean;
+  s.sizing.target_delta = 0;  // the runs answer δ; they do not size again
+  const RunResult run = model == "reduced" ? runReducedModel(s) : runMultibodyModel(s);
+  const nlohmann::json j = makeSummary(s, run, nullptr);
+  if (j.value("motion", "") != "turning" || !j["delta"].is_number()) return std::nan("");
+  return j["delta"].get<double>();
+}
+
+}  // namespace
+
+FlywheelByRuns flywheelByRuns(const Scene& scene, const std::string& model, double first_guess, double omega_mean,
+                              double target, double inertia_now) {
+  FlywheelByRuns r;
+  // The flywheel counts at the crank once on the crankshaft, u² times on the motor shaft: δ follows
+  // the drive's whole inertia at the crank, J_0 (without the flywheel) plus that.
+  const double k = scene.flywheel.location == FlywheelLocation::MotorShaft ? scene.reducer.ratio * scene.reducer.ratio : 1.0;
+  const double J0 = std::max(inertia_now - k * scene.flywheel.inertia, 1e-9);
+  auto total = [&](double J) { return J0 + k * J; };
+  double J = std::max(first_guess, 0.0);
+  for (int i = 0; i < kFlywheelMaxRuns; ++i) {
+    const double d = deltaWith(scene, model, J, omega_mean);
+    r.tried.push_back({J, d});
+    if (!std::isfinite(d)) {
+      r.note = "the run with flywheel.inertia = " + significant(J, 4) + " kg·m² did not turn steadily within the run";
+      break;
+    }
+    const bool met = d <= target && d >= kFlywheelAccept * target;
+    if (d <= target && (!r.found || J < r.inertia)) r.found = true, r.inertia = J, r.delta = d;
+    if (met) break;
+    // δ ∝ J_total^(-p): p = 1 (the energy method) until two runs give their own slope.
+    double p = 1.0;
+    if (r.tried.size() >= 2) {
+      const auto& [Ja, da] = r.tried[r.tried.size() - 2];
+      if (std::isfinite(da) && da > 0 && d > 0 && std::abs(std::log(total(J) / total(Ja))) > 1e-9)
+        p = std::clamp(-std::log(d / da) / std::log(total(J) / total(Ja)), 0.2, 5.0);
+    }
+    // Aim a little below δ* (the middle of the accepted band) so the next run lands inside it.
+    const double aim = 0.5 * (1.0 + kFlywheelAccept) * target;
+    const double next_total = total(J) * std::pow(d / aim, 1.0 / p);
+    J = std::max(0.0, (next_total - J0) / k);
+  }
+  if (!r.found) {
+    if (r.note.empty())
+      r.note = "no run of " + std::to_string(kFlywheelMaxRuns) + " met δ* (the last gave δ = " +
+               significant(r.tried.back().second, 4) + ")";
+    if (!r.tried.empty()) r.inertia = r.tried.back().first, r.delta = r.tried.back().second;
+  } else if (!(r.delta >= kFlywheelAccept * target)) {
+    r.note = "the smallest flywheel that met δ* in " + std::to_string(r.tried.size()) +
+             " runs gives δ below the accepted band: a smaller one may do";
+  }
+  return r;
+}
+
+nlohmann::json toJson(const FlywheelByRuns& f) {
+  nlohmann::json j;
+  j["found"] = f.found;
+  j["inertia"] = f.inertia;
+  j["delta"] = std::isfinite(f.delta) ? nlohmann::json(f.delta) : nlohmann::json(nullptr);
+  j["runs"] = nlohmann::json::array();
+  for (const auto& [J, d] : f.tried)
+    j["runs"].push_back({{"inertia", J}, {"delta", std::isfinite(d) ? nlohmann::json(d) : nlohmann::json(nullptr)}});
+  j["note"] = f.note.empty() ? nlohmann::json(nullptr) : nlohmann::json(f.note);
+  return j;
+}
+
+}  // namespace rollerdyn
