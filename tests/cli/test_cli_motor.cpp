@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <string>
 
 #include "cli/CliTestSupport.h"
@@ -48,6 +49,31 @@ TEST(CliMotor, FitsThePapersMotorAndWritesEverything) {
     for (const char* f : {"motor_torque_slip.png", "motor_torque_slip.svg", "motor_current_slip.png", "motor_current_slip.svg"})
       EXPECT_TRUE(fs::exists(out.path() / f)) << f;
   }
+}
+
+TEST(CliMotor, SaysTheFitWasMadeNowThenThatItCameFromTheCache) {
+  TempDir cache("fit-cache"), out("motor-cache");
+  const char* before = std::getenv("ROLLERDYN_CACHE_DIR");
+  const std::string old = before ? before : "";
+  struct Restore {  // the variable as it was, whatever happens below
+    std::string old;
+    bool had;
+    ~Restore() { had ? (void)::setenv("ROLLERDYN_CACHE_DIR", old.c_str(), 1) : (void)::unsetenv("ROLLERDYN_CACHE_DIR"); }
+  } restore{old, before != nullptr};
+  ::setenv("ROLLERDYN_CACHE_DIR", cache.str().c_str(), 1);  // inherited by the command; never the user's
+  const auto first = runRollerdyn({"motor", model("balanced-4cart.yaml"), "--out", out.str()});
+  ASSERT_EQ(first.exit_code, 0) << first.out << first.err;
+  EXPECT_NE(first.out.find("  fitted now in "), std::string::npos) << first.out;
+  EXPECT_NE(first.out.find(" s, kept in " + cache.str() + "/"), std::string::npos) << first.out;
+  const auto second = runRollerdyn({"motor", model("balanced-4cart.yaml"), "--out", out.str()});
+  ASSERT_EQ(second.exit_code, 0) << second.out << second.err;
+  EXPECT_NE(second.out.find("  from the cache " + cache.str() + "/"), std::string::npos) << second.out;
+  EXPECT_NE(second.out.find("(fitted on "), std::string::npos) << second.out;
+  const auto j = nlohmann::json::parse(slurp(out.path() / "motor.json"));
+  EXPECT_EQ(j["fit"]["origin"].get<std::string>().rfind("from the cache " + cache.str(), 0), 0u) << j["fit"].dump();
+  // The table printed from the kept fit is the fitted one, digit for digit.
+  const auto table = [](const std::string& text) { return text.substr(text.find("per phase of the equivalent star")); };
+  EXPECT_EQ(table(first.out), table(second.out));
 }
 
 TEST(CliMotor, WithoutMachineDataOnlyKloss) {
