@@ -13,6 +13,7 @@
 
 #include "motor/ExactKey.h"
 #include "motor/FitCache.h"
+#include "process/ProcessShared.h"
 #include "scene/Scene.h"
 
 namespace rollerdyn {
@@ -233,17 +234,22 @@ CatalogueFit fitCatalogueThroughDiskCache(const MotorCatalogue& c, const Catalog
 
 CatalogueFit fitCatalogue(const MotorCatalogue& c, const CatalogueSupply& s, int cages, bool use_cache) {
   if (!use_cache) return timedFit(c, s, cages);
-  static std::mutex mutex;
-  static std::map<std::string, CatalogueFit> cache;
+  struct Memory {
+    std::mutex mutex;
+    std::map<std::string, CatalogueFit> fits;
+  };
+  // One per process, also when the reduced model's library asks (ProcessShared.h). The name
+  // carries the version: a type changed with it is never shared with an older one.
+  static Memory& memory = processShared<Memory>("catalogue fits v1");
   const std::string key = catalogueFitKey(c, s, cages);
   {
-    std::lock_guard<std::mutex> lock(mutex);
-    const auto it = cache.find(key);
-    if (it != cache.end()) return it->second;
+    std::lock_guard<std::mutex> lock(memory.mutex);
+    const auto it = memory.fits.find(key);
+    if (it != memory.fits.end()) return it->second;
   }
   CatalogueFit fit = fitCatalogueThroughDiskCache(c, s, cages);  // outside the lock: other motors in parallel
-  std::lock_guard<std::mutex> lock(mutex);
-  return cache.emplace(key, std::move(fit)).first->second;
+  std::lock_guard<std::mutex> lock(memory.mutex);
+  return memory.fits.emplace(key, std::move(fit)).first->second;
 }
 
 namespace {

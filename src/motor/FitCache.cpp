@@ -11,6 +11,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/ReadFile.h"
+#include "process/ProcessShared.h"
 
 namespace rollerdyn {
 
@@ -149,7 +150,7 @@ bool writeKeptFit(const std::string& file, const std::string& key, const KeptFit
     } catch (const std::exception& e) {
       why = e.what();
     }
-  static std::atomic<bool> said{false};
+  static std::atomic<bool>& said = processShared<std::atomic<bool>>("fit cache note said");  // once a process
   if (!said.exchange(true))
     std::cerr << "note: the motor's fitted circuit cannot be kept for later runs (" << why
               << "); each run fits it again. Set ROLLERDYN_CACHE_DIR to a writable folder to keep it.\n";

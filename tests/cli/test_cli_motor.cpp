@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "cli/CliTestSupport.h"
 
@@ -74,6 +75,36 @@ TEST(CliMotor, SaysTheFitWasMadeNowThenThatItCameFromTheCache) {
   // The table printed from the kept fit is the fitted one, digit for digit.
   const auto table = [](const std::string& text) { return text.substr(text.find("per phase of the equivalent star")); };
   EXPECT_EQ(table(first.out), table(second.out));
+}
+
+TEST(CliMotor, ARunsSummarySaysWhereItsFittedCircuitCameFrom) {
+  TempDir cache("fit-cache-run"), circuit("run-circuit"), kloss("run-kloss");
+  const char* before = std::getenv("ROLLERDYN_CACHE_DIR");
+  const std::string old = before ? before : "";
+  struct Restore {
+    std::string old;
+    bool had;
+    ~Restore() { had ? (void)::setenv("ROLLERDYN_CACHE_DIR", old.c_str(), 1) : (void)::unsetenv("ROLLERDYN_CACHE_DIR"); }
+  } restore{old, before != nullptr};
+  ::setenv("ROLLERDYN_CACHE_DIR", cache.str().c_str(), 1);
+  const std::vector<std::string> run = {"simulate", model("balanced-4cart.yaml"), "--model", "reduced", "--set",
+                                        "simulation.t_end=0.5", "--set", "motor.model=circuit", "--out", circuit.str()};
+  ASSERT_EQ(runRollerdyn(run).exit_code, 0);
+  const auto first = nlohmann::json::parse(slurp(circuit.path() / "summary.json"))["motor_fit"];
+  EXPECT_EQ(first["from_cache"], false) << first.dump();
+  EXPECT_EQ(first["text"].get<std::string>().rfind("fitted now in ", 0), 0u) << first.dump();
+  ASSERT_EQ(runRollerdyn(run).exit_code, 0);
+  const auto second = nlohmann::json::parse(slurp(circuit.path() / "summary.json"))["motor_fit"];
+  EXPECT_EQ(second["from_cache"], true) << second.dump();
+  EXPECT_EQ(second["cache_file"], first["cache_file"]);
+  EXPECT_EQ(second["fitted_on"], first["fitted_on"]);
+  EXPECT_EQ(second["text"].get<std::string>().rfind("from the cache " + cache.str() + "/", 0), 0u) << second.dump();
+  // Kloss's law is not fitted: nothing to say.
+  ASSERT_EQ(runRollerdyn({"simulate", model("balanced-4cart.yaml"), "--model", "reduced", "--set",
+                          "simulation.t_end=0.5", "--out", kloss.str()})
+                .exit_code,
+            0);
+  EXPECT_TRUE(nlohmann::json::parse(slurp(kloss.path() / "summary.json"))["motor_fit"].is_null());
 }
 
 TEST(CliMotor, WithoutMachineDataOnlyKloss) {
