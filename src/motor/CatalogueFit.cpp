@@ -13,6 +13,7 @@
 
 #include "motor/ExactKey.h"
 #include "motor/FitCache.h"
+#include "motor/FitSourceHash.h"  // generated (CMakeLists.txt)
 #include "process/ProcessShared.h"
 #include "scene/Scene.h"
 
@@ -21,6 +22,8 @@ namespace rollerdyn {
 namespace {
 
 constexpr double kSqrt3 = 1.7320508075688772;
+// Changing what a fit computes (weights, bounds, guess, tolerances, starts): bump
+// kCatalogueFitVersion (CatalogueFit.h), so no kept fit of the old method is read.
 // Weights of the relative errors, in the order of compareWithCatalogue (header: why).
 constexpr double kCatalogueWeights[7] = {10, 3, 1, 1, 10, 3, 10};
 // Bounds of the unknowns in per-unit of Z_b = U_ph/I_n, in the order R_s, X_σs (= X_σr1), X_m,
@@ -162,6 +165,7 @@ std::string catalogueFitKey(const MotorCatalogue& catalogue, const CatalogueSupp
   nlopt::version(major, minor, bugfix);
   return ExactKey()
       .add("catalogue_fit_version", kCatalogueFitVersion)
+      .add("fit_sources", std::string(ROLLERDYN_FIT_SOURCE_HASH))  // any edit of the fitting code
       .add("nlopt", std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(bugfix))
       .add("power", power)
       .add("omega_nominal", omega_nominal)

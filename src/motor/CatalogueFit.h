@@ -90,7 +90,9 @@ struct CatalogueFit {
 constexpr int kCatalogueFitVersion = 1;
 
 // Exactly what fitCatalogue(catalogue, supply, cages) reads, as text (ExactKey.h), with
-// kCatalogueFitVersion and the optimizer library's version: the key of both fit caches. Every
+// kCatalogueFitVersion, a hash of the fitting code's source files (made by the build, so an edit
+// that forgot the version still changes the key) and the optimizer library's version: the key of
+// both fit caches. Every
 // field of MotorCatalogue and CatalogueSupply is named here by a structured binding, so a field
 // added to either fails to compile until it is put into the key (or said to be unread).
 std::string catalogueFitKey(const MotorCatalogue& catalogue, const CatalogueSupply& supply, int cages);

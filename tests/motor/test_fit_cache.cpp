@@ -91,7 +91,11 @@ int perturbNth(int n, T&... fields) {
 TEST(FitCache, KeyChangesWithEveryInputOfTheFitAndNamesTheMethodsVersion) {
   const MotorCatalogue c0 = exactCatalogue();
   const std::string base = catalogueFitKey(c0, kSupply, 2);
-  EXPECT_NE(base.find("catalogue_fit_version=" + std::to_string(kCatalogueFitVersion)), std::string::npos) << base;
+  EXPECT_NE(base.find("catalogue_fit_version=" + std::to_string(kCatalogueFitVersion) + ";"), std::string::npos) << base;
+  // The build's hash of the fitting code's sources: 16 hexadecimal digits.
+  const size_t at = base.find("fit_sources=");
+  ASSERT_NE(at, std::string::npos) << base;
+  EXPECT_EQ(base.find_first_not_of("0123456789abcdef", at + 12), at + 28) << base;
   std::set<std::string> keys{base};
   int count = 0;
   for (int n = 0;; ++n) {
