@@ -32,7 +32,8 @@ LIMITS = {"motor_heating": 1.0, "motor_breakdown": BREAKDOWN_LIMIT, "coupling": 
 NO_VERDICT = (None, "not applicable")
 
 # Keys that differ between two runs of the same scene for reasons other than the physics.
-VOLATILE = {"cpu_seconds", "real_time_factor", "scene_path", "overrides", "scene"}
+# motor_fit: whether the motor's fitted circuit was fitted now or read from the fit cache, and when.
+VOLATILE = {"cpu_seconds", "real_time_factor", "scene_path", "overrides", "scene", "motor_fit"}
 
 
 def get(d, path, default=None):

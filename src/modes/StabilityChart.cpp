@@ -1,7 +1,11 @@
 #include "modes/StabilityChart.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <functional>
+#include <thread>
 
 #include "modes/DriveOrbit.h"
 #include "modes/FrozenModes.h"
@@ -76,6 +80,32 @@ StabilityPoint evaluate(const Scene& s, double c, double y, Eigen::VectorXd& war
   return p;
 }
 
+// rows[i] = row(i) for i < n, on up to `threads` threads (0: one per processor). A row
+// warm-starts only from its own previous points, so every row is the same whichever thread
+// computes it, and the chart the same bit for bit. An exception of a row is rethrown here.
+std::vector<std::vector<StabilityPoint>> computeRows(int n, const std::function<std::vector<StabilityPoint>(int)>& row,
+                                                     int threads) {
+  std::vector<std::vector<StabilityPoint>> rows(n);
+  if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::max(1, std::min(threads, n));
+  std::atomic<int> next{0};
+  std::vector<std::exception_ptr> errors(threads);
+  auto work = [&](int t) {
+    try {
+      for (int i = next++; i < n; i = next++) rows[i] = row(i);
+    } catch (...) {
+      errors[t] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (std::thread& th : pool) th.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return rows;
+}
+
 Scene withCoupling(const Scene& scene, double c, double k) {
   Scene s = scene;
   s.coupling.type = CouplingType::Elastic;
@@ -126,7 +156,7 @@ void findZones(StabilityChart& ch) {
 }  // namespace
 
 StabilityChart chartOverSpeed(const Scene& scene, double omega_op, const std::vector<double>& c,
-                              const std::vector<double>& omega, double damping) {
+                              const std::vector<double>& omega, double damping, int threads) {
   StabilityChart ch;
   ch.y_key = "omega";
   ch.fixed_damping = damping;
@@ -134,7 +164,8 @@ StabilityChart chartOverSpeed(const Scene& scene, double omega_op, const std::ve
   ch.y = omega;
   ch.operating_c = scene.coupling.type == CouplingType::Elastic ? scene.coupling.stiffness : NAN;
   ch.operating_y = omega_op;
-  for (double w : omega) {
+  ch.grid = computeRows(int(omega.size()), [&](int iy) {
+    const double w = omega[iy];
     std::vector<StabilityPoint> row;
     Eigen::VectorXd warm;
     double c_warm = 0;
@@ -153,14 +184,14 @@ StabilityChart chartOverSpeed(const Scene& scene, double omega_op, const std::ve
       c_warm = ci;
       row.push_back(p);
     }
-    ch.grid.push_back(row);
-  }
+    return row;
+  }, threads);
   findZones(ch);
   return ch;
 }
 
 StabilityChart chartOverDamping(const Scene& scene, double omega_op, const std::vector<double>& c,
-                                const std::vector<double>& k) {
+                                const std::vector<double>& k, int threads) {
   StabilityChart ch;
   ch.fixed_speed = omega_op;
   ch.y_key = "damping";
@@ -168,7 +199,8 @@ StabilityChart chartOverDamping(const Scene& scene, double omega_op, const std::
   ch.y = k;
   ch.operating_c = scene.coupling.type == CouplingType::Elastic ? scene.coupling.stiffness : NAN;
   ch.operating_y = scene.coupling.type == CouplingType::Elastic ? scene.coupling.damping : NAN;
-  for (double kk : k) {
+  ch.grid = computeRows(int(k.size()), [&](int iy) {
+    const double kk = k[iy];
     std::vector<StabilityPoint> row;
     Eigen::VectorXd warm;
     double c_warm = 0;
@@ -176,8 +208,8 @@ StabilityChart chartOverDamping(const Scene& scene, double omega_op, const std::
       row.push_back(evaluate(withCoupling(scene, ci, kk), ci, kk, warm, c_warm));
       c_warm = ci;
     }
-    ch.grid.push_back(row);
-  }
+    return row;
+  }, threads);
   findZones(ch);
   return ch;
 }

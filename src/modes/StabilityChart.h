@@ -46,11 +46,13 @@ struct StabilityChart {
 };
 
 // c × ω at coupling damping k; omega_operating is the scene's steady mean crank speed.
+// The rows of the grid are computed on `threads` threads (0: one per processor); the chart is the
+// same bit for bit for any number (each row warm-starts only from its own points).
 StabilityChart chartOverSpeed(const Scene& scene, double omega_operating, const std::vector<double>& c,
-                              const std::vector<double>& omega, double damping);
+                              const std::vector<double>& omega, double damping, int threads = 0);
 // c × k at the scene's own speed (omega_operating: its steady mean crank speed, the chart's label).
 StabilityChart chartOverDamping(const Scene& scene, double omega_operating, const std::vector<double>& c,
-                                const std::vector<double>& k);
+                                const std::vector<double>& k, int threads = 0);
 
 // Grids: n values from a to b, geometric (log) or linear.
 std::vector<double> geometricGrid(double a, double b, int n);

@@ -2,13 +2,19 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <map>
 #include <mutex>
 #include <stdexcept>
 
 #include <nlopt.hpp>
 
+#include "motor/ExactKey.h"
+#include "motor/FitCache.h"
+#include "motor/FitSourceHash.h"  // generated (CMakeLists.txt)
+#include "process/ProcessShared.h"
 #include "scene/Scene.h"
 
 namespace rollerdyn {
@@ -16,6 +22,8 @@ namespace rollerdyn {
 namespace {
 
 constexpr double kSqrt3 = 1.7320508075688772;
+// Changing what a fit computes (weights, bounds, guess, tolerances, starts): bump
+// kCatalogueFitVersion (CatalogueFit.h), so no kept fit of the old method is read.
 // Weights of the relative errors, in the order of compareWithCatalogue (header: why).
 constexpr double kCatalogueWeights[7] = {10, 3, 1, 1, 10, 3, 10};
 // Bounds of the unknowns in per-unit of Z_b = U_ph/I_n, in the order R_s, X_σs (= X_σr1), X_m,
@@ -147,26 +155,105 @@ std::vector<CatalogueComparison> compareWithCatalogue(const InductionMachinePara
   };
 }
 
+std::string catalogueFitKey(const MotorCatalogue& catalogue, const CatalogueSupply& supply, int cages) {
+  // Every field by name: a new field fails to compile here until it is keyed (or said unread).
+  const auto& [power, omega_nominal, current, power_factor, efficiency, starting_torque_ratio, breakdown_torque_ratio,
+               starting_current_ratio, catalogue_cages] = catalogue;
+  (void)catalogue_cages;  // not read by the fit: the argument `cages` says how many cages to fit
+  const auto& [line_voltage, frequency, pole_pairs] = supply;
+  int major = 0, minor = 0, bugfix = 0;
+  nlopt::version(major, minor, bugfix);
+  return ExactKey()
+      .add("catalogue_fit_version", kCatalogueFitVersion)
+      .add("fit_sources", std::string(ROLLERDYN_FIT_SOURCE_HASH))  // any edit of the fitting code
+      .add("nlopt", std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(bugfix))
+      .add("power", power)
+      .add("omega_nominal", omega_nominal)
+      .add("current", current)
+      .add("power_factor", power_factor)
+      .add("efficiency", efficiency)
+      .add("starting_torque_ratio", starting_torque_ratio)
+      .add("breakdown_torque_ratio", breakdown_torque_ratio)
+      .add("starting_current_ratio", starting_current_ratio)
+      .add("line_voltage", line_voltage)
+      .add("frequency", frequency)
+      .add("pole_pairs", pole_pairs)
+      .add("cages", cages)
+      .text();
+}
+
+std::string FitOrigin::describe() const {
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.2f s", fit_seconds);
+  if (from_cache) return "from the cache " + cache_file + " (fitted on " + fitted_on + " in " + seconds + ")";
+  return std::string("fitted now in ") + seconds +
+         (cache_file.empty() ? ", not kept (no writable cache folder)" : ", kept in " + cache_file);
+}
+
 namespace {
+
 CatalogueFit computeFit(const MotorCatalogue& c, const CatalogueSupply& s, int cages);
+
+// The fit of `machine`, computed or kept: its catalogue points are computed here in either case.
+CatalogueFit completeFit(const InductionMachineParameters& machine, const MotorCatalogue& c, int starts,
+                         int evaluations) {
+  CatalogueFit fit;
+  fit.machine = machine;
+  fit.points = compareWithCatalogue(fit.machine, c);
+  for (const auto& p : fit.points) fit.max_relative_error = std::max(fit.max_relative_error, std::abs(p.relativeError()));
+  fit.starts = starts;
+  fit.evaluations = evaluations;
+  return fit;
+}
+
+// computeFit, timed and dated.
+CatalogueFit timedFit(const MotorCatalogue& c, const CatalogueSupply& s, int cages) {
+  const auto start = std::chrono::steady_clock::now();
+  CatalogueFit fit = computeFit(c, s, cages);
+  fit.origin.fit_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char date[40];
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", &utc);
+  fit.origin.fitted_on = date;
+  return fit;
+}
+
 }  // namespace
 
-CatalogueFit fitCatalogue(const MotorCatalogue& c, const CatalogueSupply& s, int cages, bool use_cache) {
-  if (!use_cache) return computeFit(c, s, cages);
-  using Key = std::array<double, 12>;
-  static std::mutex mutex;
-  static std::map<Key, CatalogueFit> cache;
-  const Key key = {c.power, c.omega_nominal, c.current, c.power_factor, c.efficiency, c.starting_torque_ratio,
-                   c.breakdown_torque_ratio, c.starting_current_ratio, s.line_voltage, s.frequency,
-                   double(s.pole_pairs), double(cages)};
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    const auto it = cache.find(key);
-    if (it != cache.end()) return it->second;
+CatalogueFit fitCatalogueThroughDiskCache(const MotorCatalogue& c, const CatalogueSupply& s, int cages) {
+  const std::string key = catalogueFitKey(c, s, cages);
+  const std::string file = fitCacheFile(key);
+  if (const std::optional<KeptFit> kept = readKeptFit(file, key)) {
+    CatalogueFit fit = completeFit(kept->machine, c, kept->starts, kept->evaluations);
+    fit.origin = {true, file, kept->fitted_on, kept->fit_seconds};
+    return fit;
   }
-  CatalogueFit fit = computeFit(c, s, cages);  // outside the lock: fits of other motors in parallel
-  std::lock_guard<std::mutex> lock(mutex);
-  return cache.emplace(key, std::move(fit)).first->second;
+  CatalogueFit fit = timedFit(c, s, cages);
+  if (writeKeptFit(file, key, {fit.machine, fit.starts, fit.evaluations, fit.origin.fitted_on, fit.origin.fit_seconds}))
+    fit.origin.cache_file = file;
+  return fit;
+}
+
+CatalogueFit fitCatalogue(const MotorCatalogue& c, const CatalogueSupply& s, int cages, bool use_cache) {
+  if (!use_cache) return timedFit(c, s, cages);
+  struct Memory {
+    std::mutex mutex;
+    std::map<std::string, CatalogueFit> fits;
+  };
+  // One per process, also when the reduced model's library asks (ProcessShared.h). The name
+  // carries the version: a type changed with it is never shared with an older one.
+  static Memory& memory = processShared<Memory>("catalogue fits v1");
+  const std::string key = catalogueFitKey(c, s, cages);
+  {
+    std::lock_guard<std::mutex> lock(memory.mutex);
+    const auto it = memory.fits.find(key);
+    if (it != memory.fits.end()) return it->second;
+  }
+  CatalogueFit fit = fitCatalogueThroughDiskCache(c, s, cages);  // outside the lock: other motors in parallel
+  std::lock_guard<std::mutex> lock(memory.mutex);
+  return memory.fits.emplace(key, std::move(fit)).first->second;
 }
 
 namespace {
@@ -239,15 +326,10 @@ CatalogueFit computeFit(const MotorCatalogue& c, const CatalogueSupply& s, int c
       break;
     }
   }
-  CatalogueFit fit;
-  fit.machine = prob.base;
-  prob.layout.toMachine(best.data(), fit.machine);
-  fit.machine.validate();
-  fit.points = compareWithCatalogue(fit.machine, c);
-  for (const auto& p : fit.points) fit.max_relative_error = std::max(fit.max_relative_error, std::abs(p.relativeError()));
-  fit.starts = starts;
-  fit.evaluations = prob.evaluations;
-  return fit;
+  InductionMachineParameters machine = prob.base;
+  prob.layout.toMachine(best.data(), machine);
+  machine.validate();
+  return completeFit(machine, c, starts, prob.evaluations);
 }
 
 }  // namespace

@@ -63,19 +63,50 @@ std::vector<CatalogueComparison> compareWithCatalogue(const InductionMachinePara
 // Slip of the largest torque over 0 < s ≤ 1 at the rated supply, and that torque.
 double breakdownSlip(const InductionMachineParameters& machine, double* torque = nullptr);
 
+// Where a fit came from: fitted in this process, or read from the fit cache (FitCache.h).
+struct FitOrigin {
+  bool from_cache = false;  // read from cache_file, fitted by an earlier process
+  std::string cache_file;   // the file the fit is kept in; "" when it could not be kept
+  std::string fitted_on;    // when the fit was computed, "2026-11-28 00:41 UTC"
+  double fit_seconds = 0;   // wall time the fit took [s]
+  // For engineers: "fitted now in 1.68 s, kept in PATH" or "from the cache PATH (fitted on DATE
+  // in 1.68 s)": the one text of it (`rollerdyn motor`, motor.json, summary.json).
+  std::string describe() const;
+};
+
 struct CatalogueFit {
   InductionMachineParameters machine;
   std::vector<CatalogueComparison> points;  // compareWithCatalogue(machine, catalogue)
   double max_relative_error = 0;            // over the points
   int starts = 0;                           // optimizer starts used
   int evaluations = 0;                      // model evaluations over all starts
+  FitOrigin origin;
 };
 
+// Version of the fitting method, part of every fit's cache key: BUMP IT whenever a change of the
+// code can change a fit's result (computeFit, initialGuess, the weights, bounds, tolerances or
+// starts in CatalogueFit.cpp, compareWithCatalogue, breakdownSlip, solveCircuit, the machine's
+// fields), so that no build ever uses a fit kept by an older one.
+constexpr int kCatalogueFitVersion = 1;
+
+// Exactly what fitCatalogue(catalogue, supply, cages) reads, as text (ExactKey.h), with
+// kCatalogueFitVersion, a hash of the fitting code's source files (made by the build, so an edit
+// that forgot the version still changes the key) and the optimizer library's version: the key of
+// both fit caches. Every
+// field of MotorCatalogue and CatalogueSupply is named here by a structured binding, so a field
+// added to either fails to compile until it is put into the key (or said to be unread).
+std::string catalogueFitKey(const MotorCatalogue& catalogue, const CatalogueSupply& supply, int cages);
+
 // Fits a circuit with `cages` (1 or 2) rotor cages. Deterministic, so a fit is computed once per
-// process and data (both drive models and every run of a sweep build the law from the scene);
-// use_cache false computes it afresh. Throws std::invalid_argument for an incomplete catalogue
+// process and data (both drive models and every run of a sweep build the law from the scene) and
+// kept on disk for later processes (FitCache.h: keyed by catalogueFitKey); use_cache false
+// computes it afresh and keeps nothing. Throws std::invalid_argument for an incomplete catalogue
 // or supply.
 CatalogueFit fitCatalogue(const MotorCatalogue& catalogue, const CatalogueSupply& supply, int cages,
                           bool use_cache = true);
+// The fit from the disk cache when it holds this key, else computed now and kept there; no
+// in-process memory (fitCatalogue adds that).
+CatalogueFit fitCatalogueThroughDiskCache(const MotorCatalogue& catalogue, const CatalogueSupply& supply,
+                                          int cages);
 
 }  // namespace rollerdyn

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "motor/CircuitLaw.h"
+#include "motor/ExactKey.h"
 #include "motor/KlossDynamicLaw.h"
 #include "motor/KlossLaw.h"
 #include "motor/ParkLaw.h"
@@ -30,9 +31,63 @@ std::unique_ptr<MotorLaw> makeMotorLaw(const Scene& scene, MotorModel model) {
   throw std::logic_error("makeMotorLaw: unknown motor.model");
 }
 
+namespace {
+CatalogueSupply sceneSupply(const InductionMotor& im) { return {im.voltage, im.frequency, im.pole_pairs}; }
+bool lawIsFitted(const InductionMotor& im) {
+  return (im.model == MotorModel::Circuit || im.model == MotorModel::Park) && !im.circuit.given() &&
+         im.catalogue.given();
+}
+}  // namespace
+
 CatalogueFit fitSceneCatalogue(const Scene& scene, int cages) {
-  const InductionMotor& im = scene.induction;
-  return fitCatalogue(im.catalogue, {im.voltage, im.frequency, im.pole_pairs}, cages);
+  return fitCatalogue(scene.induction.catalogue, sceneSupply(scene.induction), cages);
+}
+
+std::string sceneCatalogueFitKey(const Scene& scene, int cages) {
+  return catalogueFitKey(scene.induction.catalogue, sceneSupply(scene.induction), cages);
+}
+
+std::optional<FitOrigin> sceneFitOrigin(const Scene& scene) {
+  if (!lawIsFitted(scene.induction)) return std::nullopt;
+  return fitSceneCatalogue(scene, scene.induction.catalogue.cages).origin;
+}
+
+std::string motorLawKey(const Scene& scene) {
+  const auto& [enabled, omega_sync, breakdown_torque, critical_slip, rotor_inertia] = scene.motor;
+  const auto& [model, torque_time_constant, voltage, frequency, connection, pole_pairs, circuit, catalogue] =
+      scene.induction;
+  const auto& [R_s, L_sigma_s, L_m, R_r, L_sigma_r, R_r2, L_sigma_r2] = circuit;
+  const auto& [power, omega_nominal, current, power_factor, efficiency, starting_torque_ratio, breakdown_torque_ratio,
+               starting_current_ratio, cages] = catalogue;
+  return ExactKey()
+      .add("enabled", enabled)
+      .add("omega_sync", omega_sync)
+      .add("breakdown_torque", breakdown_torque)
+      .add("critical_slip", critical_slip)
+      .add("rotor_inertia", rotor_inertia)
+      .add("model", model)
+      .add("torque_time_constant", torque_time_constant)
+      .add("voltage", voltage)
+      .add("frequency", frequency)
+      .add("connection", connection)
+      .add("pole_pairs", pole_pairs)
+      .add("circuit.R_s", R_s)
+      .add("circuit.L_sigma_s", L_sigma_s)
+      .add("circuit.L_m", L_m)
+      .add("circuit.R_r", R_r)
+      .add("circuit.L_sigma_r", L_sigma_r)
+      .add("circuit.R_r2", R_r2)
+      .add("circuit.L_sigma_r2", L_sigma_r2)
+      .add("catalogue.power", power)
+      .add("catalogue.omega_nominal", omega_nominal)
+      .add("catalogue.current", current)
+      .add("catalogue.power_factor", power_factor)
+      .add("catalogue.efficiency", efficiency)
+      .add("catalogue.starting_torque_ratio", starting_torque_ratio)
+      .add("catalogue.breakdown_torque_ratio", breakdown_torque_ratio)
+      .add("catalogue.starting_current_ratio", starting_current_ratio)
+      .add("catalogue.cages", cages)
+      .text();
 }
 
 InductionMachineParameters sceneMachine(const Scene& scene) {

@@ -2,12 +2,14 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "io/AtomicFile.h"
 
@@ -28,30 +30,51 @@ std::string quoted(const std::string& s) {
   return out + "\"";
 }
 
-// Runs gnuplot on a script that draws to `tmp_out`, then renames it to `final_out`.
-void runGnuplot(const std::string& script_body, const std::string& terminal, const std::string& final_out) {
+// One output of a figure: gnuplot's terminal and the file.
+struct Output {
+  std::string terminal, file;
+};
+
+// Runs ONE gnuplot on a script that draws `script_body` once for each output (to a temporary
+// name each, renamed into place after): a figure in PNG and SVG costs one start of gnuplot, not
+// two. `reset` between the outputs gives each the settings of a fresh gnuplot (terminal and
+// output are not reset).
+void runGnuplot(const std::string& script_body, const std::vector<Output>& outputs) {
   namespace fs = std::filesystem;
-  const fs::path target(final_out);
-  if (target.has_parent_path()) fs::create_directories(target.parent_path());
-  const std::string tmp_out = final_out + ".tmp." + std::to_string(::getpid());
-  const std::string script_path = final_out + ".gp.tmp." + std::to_string(::getpid());
-  writeFileAtomic(script_path, "set terminal " + terminal + "\nset output " + quoted(tmp_out) + "\n" +
-                                   script_body + "\nunset output\n");
+  if (outputs.empty()) return;
+  const std::string pid = std::to_string(::getpid());
+  std::string script;
+  std::vector<std::string> tmp;
+  for (const Output& o : outputs) {
+    const fs::path target(o.file);
+    if (target.has_parent_path()) fs::create_directories(target.parent_path());
+    const std::string tmp_out = o.file + ".tmp." + pid;
+    tmp.push_back(tmp_out);
+    if (!script.empty()) script += "reset\n";
+    script += "set terminal " + o.terminal + "\nset output " + quoted(tmp_out) + "\n" + script_body +
+              "\nunset output\n";
+  }
+  const std::string script_path = outputs.front().file + ".gp.tmp." + pid;
+  writeFileAtomic(script_path, script);
   const std::string cmd = "gnuplot " + quoted(script_path) + " 2>/dev/null";
   const int rc = std::system(cmd.c_str());
   std::remove(script_path.c_str());
-  if (rc != 0 || !fs::exists(tmp_out)) {
-    std::remove(tmp_out.c_str());
-    throw std::runtime_error("gnuplot failed to draw '" + final_out + "'");
+  bool drawn = rc == 0;
+  for (const std::string& t : tmp) drawn = drawn && fs::exists(t);
+  if (!drawn) {
+    for (const std::string& t : tmp) std::remove(t.c_str());
+    throw std::runtime_error("gnuplot failed to draw '" + outputs.front().file + "'");
   }
-  fs::rename(tmp_out, final_out);
+  for (size_t i = 0; i < outputs.size(); ++i) fs::rename(tmp[i], outputs[i].file);
 }
 
 void render(const std::string& body, int w, int h, const std::string& base, bool png, bool svg) {
   if (!gnuplotAvailable()) throw std::runtime_error("gnuplot not found (Debian package gnuplot-nox)");
   const std::string size = std::to_string(w) + "," + std::to_string(h);
-  if (png) runGnuplot(body, "pngcairo size " + size + " font 'Sans,10'", base + ".png");
-  if (svg) runGnuplot(body, "svg size " + size + " dynamic font 'Sans,10'", base + ".svg");
+  std::vector<Output> outputs;
+  if (png) outputs.push_back({"pngcairo size " + size + " font 'Sans,10'", base + ".png"});
+  if (svg) outputs.push_back({"svg size " + size + " dynamic font 'Sans,10'", base + ".svg"});
+  runGnuplot(body, outputs);
 }
 
 }  // namespace
@@ -62,7 +85,13 @@ std::string escapeUnderscores(const std::string& text) {
   return out;
 }
 
-bool gnuplotAvailable() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+bool gnuplotAvailable() {
+  // Found once, found for the process (a shell started per figure cost as much as a small
+  // figure); not found is looked for again.
+  static std::atomic<bool> found{false};
+  if (!found) found = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
+  return found;
+}
 
 void renderPlot(const PlotSpec& spec, const std::string& base, bool png, bool svg) {
   std::ostringstream os;

@@ -116,8 +116,10 @@ MotorStudy studyMotor(const Scene& scene, const std::string& scene_label, const 
     appendf(text, "equivalent circuit fitted to motor.catalogue (%s cage; weighted least squares, Pedra (2008); "
                 "%d optimizer starts, %d evaluations):\n",
                 fit.machine.cages == 2 ? "double" : "single", fit.starts, fit.evaluations);
+    text += "  " + fit.origin.describe() + "\n";
     j["machine_source"] = "motor.catalogue (fitted)";
-    j["fit"] = {{"starts", fit.starts}, {"evaluations", fit.evaluations}, {"max_relative_error", fit.max_relative_error}};
+    j["fit"] = {{"starts", fit.starts}, {"evaluations", fit.evaluations}, {"max_relative_error", fit.max_relative_error},
+                {"origin", fit.origin.describe()}};
   } else {
     appendf(text, "no equivalent circuit: the scene gives neither motor.circuit nor motor.catalogue (Kloss curves only)\n");
   }

@@ -1,13 +1,16 @@
 #include "studies/RunSummary.h"
 
 #include <algorithm>
+#include <exception>
 #include <filesystem>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "analysis/FrictionChecks.h"
 #include "analysis/SizingSummary.h"
 #include "analysis/Summary.h"
+#include "motor/MotorLawFactory.h"
 #include "report/OutputFolder.h"
 #include "scene/KeyEffects.h"
 #include "scene/Plausibility.h"
@@ -61,6 +64,23 @@ void addFlywheelByRuns(const Scene& scene, const std::string& model, nlohmann::j
   f["by_runs"]["started_at_crank_speed"] = omega;
 }
 
+// Where the circuit of the run's motor law came from when it is fitted to the catalogue
+// (FitOrigin, CatalogueFit.h: the one place that says it); null when no fit is behind the law.
+nlohmann::json motorFitJson(const Scene& scene) {
+  std::optional<FitOrigin> origin;
+  if (scene.motor.enabled) try {
+      origin = sceneFitOrigin(scene);  // the fit the run's law was built from: kept in this process
+    } catch (const std::exception&) {
+      // a catalogue that cannot be fitted: the run could not build the law and said so
+    }
+  if (!origin) return nullptr;
+  return {{"from_cache", origin->from_cache},
+          {"cache_file", origin->cache_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(origin->cache_file)},
+          {"fitted_on", origin->fitted_on},
+          {"fit_seconds", origin->fit_seconds},
+          {"text", origin->describe()}};
+}
+
 }  // namespace
 
 nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunSummaryOptions& options,
@@ -72,6 +92,7 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
           ? nlohmann::json(nullptr)
           : nlohmann::json(std::filesystem::absolute(options.scene_file).lexically_normal().string());
   summary["overrides"] = options.overrides;
+  summary["motor_fit"] = motorFitJson(scene);
   if (summary.contains("sizing") && summary["sizing"].is_object() && summary["sizing"]["flywheel"].is_object())
   {
     summary["sizing"]["flywheel"]["check_by_runs"] = flywheelChecks(summary);  // the runs that check its estimate

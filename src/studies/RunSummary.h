@@ -6,7 +6,8 @@
 //     warnings (analysis/FrictionChecks.h: self-locking, dead centre, the quasi-static friction
 //     work), the resonance and stability verdict (ResonanceCheck.h: the modal analysis at the run's
 //     steady mean crank speed, the two-mass first estimate beside it), and the scene file's absolute
-//     path, so `rollerdyn plot DIR` finds it from any folder;
+//     path, so `rollerdyn plot DIR` finds it from any folder; where the motor's fitted circuit
+//     came from (motor_fit: fitted now or read from the fit cache; null without a fit);
 //   - the run's files in an output folder: timeseries.csv, reactions.csv (when computed),
 //     summary.json and, with a modal analysis, its files; each written to a temporary name and
 //     renamed.

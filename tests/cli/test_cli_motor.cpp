@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "cli/CliTestSupport.h"
 
@@ -48,6 +50,61 @@ TEST(CliMotor, FitsThePapersMotorAndWritesEverything) {
     for (const char* f : {"motor_torque_slip.png", "motor_torque_slip.svg", "motor_current_slip.png", "motor_current_slip.svg"})
       EXPECT_TRUE(fs::exists(out.path() / f)) << f;
   }
+}
+
+TEST(CliMotor, SaysTheFitWasMadeNowThenThatItCameFromTheCache) {
+  TempDir cache("fit-cache"), out("motor-cache");
+  const char* before = std::getenv("ROLLERDYN_CACHE_DIR");
+  const std::string old = before ? before : "";
+  struct Restore {  // the variable as it was, whatever happens below
+    std::string old;
+    bool had;
+    ~Restore() { had ? (void)::setenv("ROLLERDYN_CACHE_DIR", old.c_str(), 1) : (void)::unsetenv("ROLLERDYN_CACHE_DIR"); }
+  } restore{old, before != nullptr};
+  ::setenv("ROLLERDYN_CACHE_DIR", cache.str().c_str(), 1);  // inherited by the command; never the user's
+  const auto first = runRollerdyn({"motor", model("balanced-4cart.yaml"), "--out", out.str()});
+  ASSERT_EQ(first.exit_code, 0) << first.out << first.err;
+  EXPECT_NE(first.out.find("  fitted now in "), std::string::npos) << first.out;
+  EXPECT_NE(first.out.find(" s, kept in " + cache.str() + "/"), std::string::npos) << first.out;
+  const auto second = runRollerdyn({"motor", model("balanced-4cart.yaml"), "--out", out.str()});
+  ASSERT_EQ(second.exit_code, 0) << second.out << second.err;
+  EXPECT_NE(second.out.find("  from the cache " + cache.str() + "/"), std::string::npos) << second.out;
+  EXPECT_NE(second.out.find("(fitted on "), std::string::npos) << second.out;
+  const auto j = nlohmann::json::parse(slurp(out.path() / "motor.json"));
+  EXPECT_EQ(j["fit"]["origin"].get<std::string>().rfind("from the cache " + cache.str(), 0), 0u) << j["fit"].dump();
+  // The table printed from the kept fit is the fitted one, digit for digit.
+  const auto table = [](const std::string& text) { return text.substr(text.find("per phase of the equivalent star")); };
+  EXPECT_EQ(table(first.out), table(second.out));
+}
+
+TEST(CliMotor, ARunsSummarySaysWhereItsFittedCircuitCameFrom) {
+  TempDir cache("fit-cache-run"), circuit("run-circuit"), kloss("run-kloss");
+  const char* before = std::getenv("ROLLERDYN_CACHE_DIR");
+  const std::string old = before ? before : "";
+  struct Restore {
+    std::string old;
+    bool had;
+    ~Restore() { had ? (void)::setenv("ROLLERDYN_CACHE_DIR", old.c_str(), 1) : (void)::unsetenv("ROLLERDYN_CACHE_DIR"); }
+  } restore{old, before != nullptr};
+  ::setenv("ROLLERDYN_CACHE_DIR", cache.str().c_str(), 1);
+  const std::vector<std::string> run = {"simulate", model("balanced-4cart.yaml"), "--model", "reduced", "--set",
+                                        "simulation.t_end=0.5", "--set", "motor.model=circuit", "--out", circuit.str()};
+  ASSERT_EQ(runRollerdyn(run).exit_code, 0);
+  const auto first = nlohmann::json::parse(slurp(circuit.path() / "summary.json"))["motor_fit"];
+  EXPECT_EQ(first["from_cache"], false) << first.dump();
+  EXPECT_EQ(first["text"].get<std::string>().rfind("fitted now in ", 0), 0u) << first.dump();
+  ASSERT_EQ(runRollerdyn(run).exit_code, 0);
+  const auto second = nlohmann::json::parse(slurp(circuit.path() / "summary.json"))["motor_fit"];
+  EXPECT_EQ(second["from_cache"], true) << second.dump();
+  EXPECT_EQ(second["cache_file"], first["cache_file"]);
+  EXPECT_EQ(second["fitted_on"], first["fitted_on"]);
+  EXPECT_EQ(second["text"].get<std::string>().rfind("from the cache " + cache.str() + "/", 0), 0u) << second.dump();
+  // Kloss's law is not fitted: nothing to say.
+  ASSERT_EQ(runRollerdyn({"simulate", model("balanced-4cart.yaml"), "--model", "reduced", "--set",
+                          "simulation.t_end=0.5", "--out", kloss.str()})
+                .exit_code,
+            0);
+  EXPECT_TRUE(nlohmann::json::parse(slurp(kloss.path() / "summary.json"))["motor_fit"].is_null());
 }
 
 TEST(CliMotor, WithoutMachineDataOnlyKloss) {

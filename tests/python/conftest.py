@@ -9,6 +9,9 @@ import pytest
 
 SOURCE_DIR = pathlib.Path(os.environ.get("ROLLERDYN_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 BINARY = pathlib.Path(os.environ.get("ROLLERDYN_BINARY", SOURCE_DIR / "build" / "rollerdyn"))
+# Catalogue fits kept by the tests go to the build folder, never to the user's cache (ctest sets
+# the same; a pytest run by hand gets it here, before any fit and for every command started).
+os.environ.setdefault("ROLLERDYN_CACHE_DIR", str(BINARY.parent / "test-fit-cache"))
 
 
 def model(name):
