@@ -76,8 +76,10 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
       // no law for this scene: the Kloss key stands
     }
   m.nominal_torque = nominalMotorTorque(sc, &m.nominal_source);
+  m.breakdown_torque_catalogue = kNaN;
   if (!catalogue_law && cat.given() && cat.omega_nominal > 0 && cat.breakdown_torque_ratio > 0) {
     const double M_kr_cat = cat.breakdown_torque_ratio * cat.nominalTorque();
+    m.breakdown_torque_catalogue = M_kr_cat;  // shown beside the Kloss M_kr, whether they agree or not
     if (std::abs(sc.motor.breakdown_torque / M_kr_cat - 1.0) > 0.1) {
       char buf[300];
       std::snprintf(buf, sizeof buf,

@@ -84,6 +84,9 @@ struct MotorSizing {
   double power_shaft_mean = 0, power_shaft_peak = 0;  // M·ω_r: mean and max [W]
   double power_line_mean = 0, power_line_peak = 0;    // drawn from the line [W]
   std::string line_power_basis;    // the efficiency assumption behind the line power
+  double breakdown_torque_catalogue = 0;  // the catalogue's (M_k/M_n)·P_n/ω_n beside a Kloss law's
+                                          // M_kr, the one the checks use; NaN under a law fitted to
+                                          // the catalogue or without one [N·m]
   std::string data_conflict;       // the Kloss data against the same motor's catalogue, when they
                                    // disagree beyond 10 % (the motor checks say so); "" otherwise
   double slip_min = 0, slip_max = 0;  // s over the window [-]

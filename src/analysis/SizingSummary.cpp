@@ -79,6 +79,7 @@ json sizingJson(const DriveSizing& s) {
         {"nominal_torque", num(m.nominal_torque)},
         {"nominal_torque_source", m.nominal_source},
         {"breakdown_torque", num(m.breakdown_torque)},
+        {"breakdown_torque_catalogue", num(m.breakdown_torque_catalogue)},
         {"rms_over_nominal", num(m.rms_over_nominal)},
         {"rms_check", verdict(0)},
         {"peak_over_breakdown", num(m.peak_over_breakdown)},
@@ -353,7 +354,10 @@ std::string sizingText(const json& summary) {
       << fmt(jsonMember(tc, "rms"), "%.4g") << ", peak " << fmt(jsonMember(tc, "peak"), "%.4g") << " N·m (steady window)\n";
     o << "  nominal torque M_n                " << fmt(jsonMember(m, "nominal_torque"), "%.4g") << " N·m ("
       << str(jsonMember(m, "nominal_torque_source")) << "); breakdown torque M_kr " << fmt(jsonMember(m, "breakdown_torque"), "%.4g")
-      << " N·m\n";
+      << " N·m";
+    if (jsonMember(m, "breakdown_torque_catalogue").is_number())
+      o << " (the catalogue's (M_k/M_n)·P_n/ω_n: " << fmt(jsonMember(m, "breakdown_torque_catalogue"), "%.4g") << " N·m)";
+    o << "\n";
     const json &ps = jsonMember(m, "power_shaft"), &pl = jsonMember(m, "power_line"), &sl = jsonMember(m, "slip");
     o << "  shaft power M·ω_r                 mean " << fmt(jsonMember(ps, "mean"), "%.4g", 1e-3) << ", peak "
       << fmt(jsonMember(ps, "peak"), "%.4g", 1e-3) << " kW (steady window)\n";

@@ -10,6 +10,7 @@
 #include "analysis/FrictionChecks.h"
 #include "analysis/SizingSummary.h"
 #include "analysis/Summary.h"
+#include "io/FieldFormat.h"
 #include "motor/MotorLawFactory.h"
 #include "report/OutputFolder.h"
 #include "scene/KeyEffects.h"
@@ -109,6 +110,21 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
   if (summary.contains("start_up") && summary["start_up"].is_object() &&
       summary["start_up"].contains("keys_not_reached"))
     for (const auto& k : summary["start_up"]["keys_not_reached"]) without.push_back(k.get<std::string>());
+  // A run that a rule ended early (the drive stalled, rocked without gaining, or came to rest)
+  // never reached its t_end, and a longer one ends at the same moment: the rules look only back.
+  const std::string motion = summary.value("motion", "");
+  const bool given_t_end =
+      std::find(scene.given_keys.begin(), scene.given_keys.end(), "simulation.t_end") != scene.given_keys.end();
+  if (given_t_end && !run.stats.complete && (motion == "stalled" || motion == "rocking" || motion == "at_rest") &&
+      run.timeseries.has("t") && !run.timeseries.rows.empty()) {
+    const double t_last = run.timeseries.rows.back()[run.timeseries.index("t")];
+    if (t_last < scene.simulation.t_end - 0.5 * scene.simulation.output_step)
+      without.push_back("simulation.t_end has no effect on this run: it ended at t = " + significant(t_last, 4) +
+                        " s, when the " + (motion == "at_rest" ? std::string("machine came to rest")
+                                           : motion == "rocking" ? std::string("crank rocked without gaining")
+                                                                 : std::string("drive stalled")) +
+                        " (see status), and a longer run ends there too");
+  }
   for (const std::string& w : without) {
     summary["keys_without_effect"].push_back(w);
     keys.push_back(w.substr(0, w.find(' ')));

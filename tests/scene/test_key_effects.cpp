@@ -50,5 +50,19 @@ TEST(KeyEffects, TheRollerSpacingActsOnlyWhereACartsTwoNormalsDiffer) {
   EXPECT_FALSE(named(differ, "carts.geometry.a"));
 }
 
+// A Kloss law's speed is motor.omega_sync: f_n only scales a converter's frequencies and gives the
+// dynamic Kloss law its default T_e.
+TEST(KeyEffects, TheSupplyFrequencyIsNamedWhereNoKlossLawReadsIt) {
+  EXPECT_TRUE(named(keysWithoutEffect(scene({}), "reduced"), "motor.frequency"));
+  EXPECT_FALSE(named(keysWithoutEffect(scene({"initial.crank_speed=0", "motor.start.method=frequency_converter",
+                                              "motor.start.ramp_time=3", "motor.start.initial_frequency=5"}),
+                                       "reduced"),
+                     "motor.frequency"));
+  EXPECT_FALSE(named(keysWithoutEffect(scene({"motor.model=kloss_dynamic"}), "reduced"), "motor.frequency"));
+  EXPECT_TRUE(named(keysWithoutEffect(scene({"motor.model=kloss_dynamic", "motor.torque_time_constant=0.01"}), "reduced"),
+                    "motor.frequency"));
+  EXPECT_FALSE(named(keysWithoutEffect(scene({"motor.model=circuit"}), "reduced"), "motor.frequency"));
+}
+
 }  // namespace
 }  // namespace rollerdyn

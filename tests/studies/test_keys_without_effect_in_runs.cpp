@@ -83,5 +83,22 @@ TEST(KeysWithoutEffectInRuns, AChangeoverSpeedTheMotorNeverReachesChangesNothing
   EXPECT_FALSE(named(starts, "motor.start.changeover_speed"));
 }
 
+TEST(KeysWithoutEffectInRuns, TheEndOfARunAStallEndedEarlyChangesNothing) {
+  const std::vector<std::string> stalls = {"carts.count=6", "crank.offset_deg=60", "carts.mass=1200",
+                                           "loads.rolling_resistance=0.1", "initial.crank_speed=0"};
+  expectWithoutEffect(stalls, "simulation.t_end", "3", "4");
+  // A run that completes is read to its end.
+  EXPECT_FALSE(named(summaryOf(kShort), "simulation.t_end"));
+}
+
+// The catalogue's breakdown ratio under a Kloss law with its own M_kr: the check of the two against
+// each other is shown as a figure, (M_k/M_n)·P_n/ω_n, whether they agree or not (4A200M6U3: P_n =
+// 22 kW, ω_n = 102.1 rad/s).
+TEST(KeysWithoutEffectInRuns, TheCataloguesBreakdownTorqueStandsBesideKlossMkr) {
+  const json j = summaryOf({"simulation.t_end=6", "motor.catalogue.breakdown_torque_ratio=2.28"});
+  EXPECT_NEAR(j["sizing"]["motor"]["breakdown_torque_catalogue"].get<double>(), 2.28 * 22000.0 / 102.1, 1e-9);
+  EXPECT_FALSE(named(j, "motor.catalogue.breakdown_torque_ratio"));
+}
+
 }  // namespace
 }  // namespace rollerdyn
