@@ -70,17 +70,26 @@ GuideLiftOff computeGuideLiftOff(const RunResult& run, const SteadyState& ss, bo
       e.worst_reaction = e.presses_down ? lo : hi;
       e.prevailing_extreme = e.presses_down ? hi : lo;
       g.lifting.push_back(e);
-      char buf[640];
-      std::snprintf(buf, sizeof buf,
-                    "cart %d's %s guide reaction changes sign in the steady window (t = %.4g ... %.4g s): the guide "
-                    "presses its roller %s (N %s 0, up to %.4g N) for %.3g %% of the time and %s (N reaching %.4g N) "
-                    "for %.3g %%; the roller lifts off that guide then unless a counter-roller holds it, which the "
-                    "scene does not model",
-                    j, side, ss.t_begin, ss.t_end, e.presses_down ? "downward" : "upward", e.presses_down ? ">" : "<",
-                    e.prevailing_extreme, 100.0 * (1.0 - e.time_fraction), e.presses_down ? "upward" : "downward",
-                    e.worst_reaction, 100.0 * e.time_fraction);
-      g.warnings.push_back(buf);
     }
+  }
+  // One warning line for the run (a shipped scene's four carts give one line, not four), each
+  // lifting guide in it with its figures.
+  if (!g.lifting.empty()) {
+    std::string list;
+    for (const GuideLiftOffEntry& e : g.lifting) {
+      char buf[256];
+      std::snprintf(buf, sizeof buf, "%scart %d %s: %s (N %s 0, up to %.4g N), %s for %.3g %% of the time (N reaching %.4g N)",
+                    list.empty() ? "" : "; ", e.cart, e.guide.c_str(), e.presses_down ? "downward" : "upward",
+                    e.presses_down ? ">" : "<", e.prevailing_extreme, e.presses_down ? "upward" : "downward",
+                    100.0 * e.time_fraction, e.worst_reaction);
+      list += buf;
+    }
+    char head[160];
+    std::snprintf(head, sizeof head, "guide reactions change sign in the steady window (t = %.4g ... %.4g s): ",
+                  ss.t_begin, ss.t_end);
+    g.warnings.push_back(std::string(head) + list +
+                         "; each of these rollers lifts off its guide while the reaction is on its other side, unless "
+                         "a counter-roller holds it, which the scene does not model (summary.json guide_lift_off)");
   }
   if (g.guides_checked == 0) {
     g.reason = "the steady window holds no rows of the reactions table";

@@ -8,9 +8,9 @@
 // one). Computed once here from the run's reactions over the steady window; summary.json, the
 // console and the report render it.
 //
-// Verdict per run: "holds" (no guide reaction changes sign in the window), "lifts off" (a warning
-// on stderr and in summary.json per cart and guide, with the share of the window's time the
-// reaction spends on its minority side and its worst value there), or "not applicable" with the
+// Verdict per run: "holds" (no guide reaction changes sign in the window), "lifts off" (one
+// warning on stderr and in summary.json naming each cart and guide, with the share of the
+// window's time the reaction spends on its minority side and its worst value there), or "not applicable" with the
 // reason: no reactions computed (simulation.reactions: false), or no steady state reached.
 // A sign change smaller than 10⁻⁶ of the reaction's largest magnitude counts as none (round-off).
 #pragma once
@@ -41,7 +41,7 @@ struct GuideLiftOff {
   double t_begin = 0, t_end = 0;  // the window judged [s]
   int guides_checked = 0;
   std::vector<GuideLiftOffEntry> lifting;  // the guides that lift off, cart by cart
-  std::vector<std::string> warnings;       // one sentence per entry of `lifting`
+  std::vector<std::string> warnings;       // one sentence naming every entry of `lifting`
 };
 
 // `steady`: the steady window was reached with the crank turning (the window of `ss` is judged).

@@ -139,9 +139,15 @@ TEST(GuideLiftOffScenes, TheBalancedFourCartDrivesFrontGuidesChangeSignTheRecupe
     EXPECT_GT(e["time_fraction"].get<double>(), 0.0);
     EXPECT_LE(e["time_fraction"].get<double>(), 0.5);
   }
-  int warned = 0;
-  for (const auto& w : b["warnings"]) warned += w.get<std::string>().find("guide reaction changes sign") != std::string::npos;
-  EXPECT_EQ(warned, 4);
+  int warned = 0;  // one line naming the four
+  for (const auto& w : b["warnings"]) {
+    const std::string text = w.get<std::string>();
+    if (text.find("guide reactions change sign") == std::string::npos) continue;
+    ++warned;
+    for (int j = 1; j <= 4; ++j)
+      EXPECT_NE(text.find("cart " + std::to_string(j) + " front"), std::string::npos) << text;
+  }
+  EXPECT_EQ(warned, 1);
 }
 
 }  // namespace
