@@ -1,5 +1,7 @@
 #include "analysis/DriveSizing.h"
 
+#include "physics/ReducerLosses.h"
+
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
@@ -9,6 +11,7 @@
 
 #include "analysis/SizingChecks.h"
 #include "motor/SharedMotorLaw.h"
+#include "physics/ReducerLosses.h"
 #include "scene/NominalTorqueSource.h"
 
 namespace rollerdyn {
@@ -45,7 +48,7 @@ Moments moments(const std::vector<double>& t, const std::vector<double>& y, std:
 MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size_t e, std::size_t run_end,
                       double revolutions, bool turning, const StartUp* start_up) {
   MotorSizing m;
-  const double u = sc.reducer.ratio, eta = sc.reducer.efficiency, w0 = sc.motor.omega_sync;
+  const double u = sc.reducer.ratio, w0 = sc.motor.omega_sync;
   const SizingInputs& z = sc.sizing;
   // The checks read the motor the run simulated: a catalogue law (circuit, Park machine) has its
   // own breakdown torque (the largest of its steady curve) and its catalogue's rated point; the
@@ -110,9 +113,13 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   m.available = true;
   const std::vector<double> t = ts.column("t"), M_crank = ts.column("motor_torque"),
                             w_crank_axis = ts.column("omega_motor");
+  // The rotor torque through the reducer's law (the loss column is there under power_flow).
+  const ReducerLaw reducer = reducerLaw(sc);
+  const std::vector<double> L_crank =
+      ts.has("reducer_loss_torque") ? ts.column("reducer_loss_torque") : std::vector<double>{};
   std::vector<double> M(t.size()), P(t.size()), P_line(t.size()), s(t.size()), losses(t.size());
   for (std::size_t i = 0; i < t.size(); ++i) {
-    M[i] = M_crank[i] / (u * eta);          // rotor torque
+    M[i] = reducerShaftTorque(reducer, M_crank[i], L_crank.empty() ? 0.0 : L_crank[i]);  // rotor torque
     const double w_r = u * w_crank_axis[i];  // rotor speed
     P[i] = M[i] * w_r;
     s[i] = 1.0 - w_r / w0;

@@ -5,8 +5,11 @@
 // timeseries: t, phi_motor, phi_crank, omega_motor, omega_crank, eps_crank, eps_motor,
 //             twist (= phi_motor - phi_crank), twist_rate, twist_accel,
 //             coupling_torque (elastic + damping torque transmitted to the crank, N·m at the crank axis),
-//             motor_torque (Kloss torque reduced to the crank axis, N·m),
+//             motor_torque (motor torque passed on by the reducer at the crank axis, N·m),
 //             load_torque (resisting torque of the loads reduced to the crank axis, N·m; reduced model),
+//             reducer_loss_torque (reducer.losses = power_flow only: the reducer's loss torque L
+//             on the motor's torque at the crank axis, N·m; motor torque at the rotor
+//             = (motor_torque + reducer_loss_torque)/u, physics/ReducerLosses.h),
 //             then per cart j = 1..n: x_cart_j, v_cart_j, a_cart_j.
 //             Motor angle and speed are reduced to the crank axis (rotor angle / u).
 // reactions:  t, per cart j: N_front_j, N_rear_j, F_rod_j, friction_j, crankpin_x_j, crankpin_y_j,
@@ -42,10 +45,17 @@ struct EnergyAudit {
   double friction_dissipation = 0;// ∫ -F_friction·v dt, lost in the guides (≥ 0 when friction opposes v)
   double load_work = 0;           // ∫ -F_load·v dt: work the machine does on the concrete
   double brake_dissipation = 0;   // ∫ -M_brake·ω_motor dt ≥ 0, lost in the brake (motor.stop.brake_torque)
+  // ∫ L·ω_motor dt: lost in the reducer on the motor's torque (reducer.losses, physics/
+  // ReducerLosses.h): ≥ 0 by the direction of the power flow; under the papers' constant η
+  // (1/η − 1)·motor_work, negative while the crank side drives. motor_work is what the motor
+  // puts into the mechanism after the reducer, so the motor's work at its shaft is the sum:
+  double reducer_losses = 0;
+  double motorShaftWork() const { return motor_work + reducer_losses; }
   double kinetic_initial = 0, kinetic_final = 0;
   double potential_initial = 0, potential_final = 0;  // gravity + coupling spring
 
-  // motor work - dissipation - load work - ΔT - ΔV
+  // motor work (after the reducer) - dissipation - load work - ΔT - ΔV; with the reducer's
+  // column: motor shaft work - reducer losses - dissipation - load work - ΔT - ΔV, the same sum
   double residual() const {
     return motor_work - damping_dissipation - friction_dissipation - load_work - brake_dissipation -
            (kinetic_final - kinetic_initial) - (potential_final - potential_initial);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "analysis/DriveSizing.h"
+#include "analysis/GuideLiftOff.h"
 #include "analysis/LoadWork.h"
 #include "analysis/Metrics.h"
 #include "analysis/SizingSummary.h"
@@ -15,6 +16,7 @@
 #include "analysis/SteadyState.h"
 #include "io/AtomicFile.h"
 #include "motor/SharedMotorLaw.h"
+#include "physics/ReducerLosses.h"
 
 namespace rollerdyn {
 
@@ -130,6 +132,9 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
       {"kinetic_change", num("energy.kinetic_change", en.kinetic_final - en.kinetic_initial)},
       {"potential_change",
        num("energy.potential_change", en.potential_final - en.potential_initial)},
+      {"reducer_losses", num("energy.reducer_losses", en.reducer_losses)},
+      {"motor_shaft_work", num("energy.motor_shaft_work", en.motorShaftWork())},
+      {"reducer_loss_model", scene.motor.enabled ? json(reducerLossWords(reducerLaw(scene))) : json(nullptr)},
       {"residual", num("energy.residual", en.residual())}};
   j["energy_residual_rel"] = num("energy_residual_rel", en.residualRelative());
   j["constraint_error_max"] = num("constraint_error_max", run.stats.constraint_error_max);
@@ -201,6 +206,9 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["load"] = loadWorkJson(load);
   if (!j.contains("warnings")) j["warnings"] = json::array();
   if (!load.warning.empty()) j["warnings"].push_back(load.warning);
+  const GuideLiftOff lift_off = computeGuideLiftOff(run, ss, steady_turning);
+  j["guide_lift_off"] = guideLiftOffJson(lift_off);
+  for (const std::string& w : lift_off.warnings) j["warnings"].push_back(w);
   // Where the joint loads come from, and what is missing: the reduced model computes the cart
   // statics only (guide rollers, rod end), not the crank pin or the main bearing.
   if (run.model == "reduced" && !run.reactions.columns.empty())
@@ -334,7 +342,17 @@ std::string summaryText(const nlohmann::json& s) {
   o << "coupling     torque swing " << f(at("coupling_torque_swing"), "%.4g")
     << " N·m, twist swing " << f(at("twist_swing"), "%.3g") << " rad\n";
   o << "energy       residual " << f(at("energy", "residual"), "%.3g") << " J (relative "
-    << f(at("energy_residual_rel"), "%.2e") << ")\n";
+    << f(at("energy_residual_rel"), "%.2e") << ")";
+  if (at("energy", "reducer_loss_model").is_string())
+    o << "; reducer losses " << f(at("energy", "reducer_losses"), "%.4g") << " J of the motor's shaft work "
+      << f(at("energy", "motor_shaft_work"), "%.4g") << " J, " << str(at("energy", "reducer_loss_model"));
+  o << "\n";
+  // Only a lift-off gets a line (the verdict and a not-applicable reason are in summary.json).
+  const json lo = at("guide_lift_off");
+  if (lo.is_object() && str(lo.value("verdict", json(""))) == "lifts off")
+    o << "guides       LIFT-OFF: " << lo["lifting"].size()
+      << " guide reaction(s) change sign in the steady window: those rollers need a counter-roller (warnings "
+         "on stderr; summary.json guide_lift_off)\n";
   o << "constraints  max error " << f(at("constraint_error_max"), "%.2e") << "\n";
   if (at("guide_normal_forces").is_string())
     o << "guide normal forces  " << str(at("guide_normal_forces")) << "\n";

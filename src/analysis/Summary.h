@@ -21,8 +21,9 @@ namespace rollerdyn {
 //   eps_from_difference, delta, H, k_p, coupling_torque_swing, twist_swing, twist_rate_swing,
 //   twist_accel_swing, missing_columns, steady_state {reached, after_revolutions,
 //   window_revolutions, revolutions, relative_tolerance, t_settled, t_begin, t_end, rows, note},
-//   energy {motor_work, damping_dissipation, friction_dissipation, load_work, kinetic_change,
-//   potential_change, residual}, energy_residual_rel, constraint_error_max, steps, realizations,
+//   energy {motor_work (after the reducer), damping_dissipation, friction_dissipation, load_work,
+//   kinetic_change, potential_change, reducer_losses, motor_shaft_work (= motor_work +
+//   reducer_losses), reducer_loss_model (the loss law in words; null without a motor), residual}, energy_residual_rel, constraint_error_max, steps, realizations,
 //   cpu_seconds, real_time_factor (simulated time / cpu_seconds; null when cpu_seconds <= 0,
 //   i.e. not measured, which is not flagged), reactions {column: {min, max, mean, abs_max}},
 //   non_finite (list of keys written as null because the value was NaN/inf),
@@ -30,7 +31,10 @@ namespace rollerdyn {
 //   not_meaningful (keys written as null because the motion is not turning), stall (why a
 //   stalled run stalled, or null), sizing (SizingSummary.h: both windows and the checks),
 //   load (LoadWork.h: the technological load's work and mean power per cart), warnings (list of
-//   sentences: the load's no-work warning here; callers append resonance and plausibility ones).
+//   sentences: the load's no-work warning and the guide lift-off warnings here; callers append
+//   resonance and plausibility ones), guide_lift_off (GuideLiftOff.h: verdict, reason, t_begin,
+//   t_end, guides_checked, lifting [{cart, guide, prevailing, time_fraction, worst_reaction,
+//   prevailing_extreme}]).
 // `start_load`: the load torques at the start (RunMotion.h) that explain a stall; may be null.
 nlohmann::json makeSummary(const Scene& scene, const RunResult& run,
                            const StartLoad* start_load = nullptr);

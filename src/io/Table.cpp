@@ -37,7 +37,7 @@ const std::vector<std::pair<std::string, std::string>>& exactUnits() {
       {"eps_crank", "rad/s^2"}, {"eps_motor", "rad/s^2"},
       {"twist", "rad"}, {"twist_rate", "rad/s"}, {"twist_accel", "rad/s^2"},
       {"coupling_torque", "N*m at the crank axis"}, {"motor_torque", "N*m at the crank axis"},
-      {"load_torque", "N*m at the crank axis"},
+      {"load_torque", "N*m at the crank axis"}, {"reducer_loss_torque", "N*m at the crank axis"},
       {"bearing_x", "N"}, {"bearing_y", "N"},
       {"stator_current", "A"}, {"supply_voltage_ratio", "-"}, {"supply_frequency_ratio", "-"},
       {"brake_torque", "N*m"},

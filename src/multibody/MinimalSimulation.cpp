@@ -258,9 +258,9 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     const std::vector<double> scales = motor->law().stateScales();
     for (int i = 0; i < motor->lawStateCount(); ++i) p.atol(L.z + i) = rtol * scales.at(i);
   }
-  if (L.size - L.z != n_motor + n_lag_states + 4)
+  if (L.size - L.z != n_motor + n_lag_states + model.energyStateCount())
     throw std::logic_error(
-        "minimal formulation: auxiliary states are not [motor states, friction normal-force lags, 4 energy integrals]");
+        "minimal formulation: auxiliary states are not [motor states, friction normal-force lags, energy integrals]");
   if (n_lag_states > 0) {
     // One unit of N̂: the error whose friction changes a cart's speed by 1 m/s in 1 s.
     const double N_unit = sc.lightestCartMassWithRodShare() * 1.0 / sc.loads.guide_friction;
@@ -303,7 +303,8 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
             "minimal formulation: loads.guide_friction.normal_force_lag must be a positive time [s], got " +
             std::to_string(tau_N));
       p.jacobian.diagonal.segment(z_normals, n_normals).setConstant(-1.0 / tau_N);
-      // Energy integrals in EnergyMeter.h's order: motor work, damping, friction, load work.
+      // Energy integrals in EnergyMeter.h's order: motor work, damping, friction, load work
+      // (then the reducer's losses).
       const int row_friction_dissipation = z_normals + n_normals + 2, first_normal = z_normals;
       p.jacobian.known_entries = [&ms, row_friction_dissipation, first_normal](
                                      double t, const double* y, Eigen::Ref<Eigen::MatrixXd> jac) {

@@ -10,9 +10,9 @@ constexpr int kMaxLawStates = 8;
 }
 
 MotorForce::MotorForce(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& motor_body,
-                       std::shared_ptr<const MotorLaw> law, Supply supply, double ratio, double efficiency)
+                       std::shared_ptr<const MotorLaw> law, Supply supply, ReducerLaw reducer)
     : forces_(forces), motor_body_(motor_body), law_(std::move(law)), supply_(std::move(supply)),
-      initial_phase_(supply_.initialPhase()), ratio_(ratio), efficiency_(efficiency) {
+      initial_phase_(supply_.initialPhase()), reducer_(reducer), ratio_(reducer.ratio) {
   if (!law_) throw std::invalid_argument("MotorForce: no motor law");
   if (law_->stateCount() > kMaxLawStates)
     throw std::invalid_argument("MotorForce: the motor law has more states than the element carries");
@@ -52,11 +52,17 @@ MotorEvaluation MotorForce::evaluateLaw(const SimTK::State& s, double* xdot) con
 
 MotorEvaluation MotorForce::evaluate(const SimTK::State& s) const { return evaluateLaw(s, nullptr); }
 
-double MotorForce::torque(const SimTK::State& s) const { return evaluateLaw(s, nullptr).torque * ratio_ * efficiency_; }
+double MotorForce::torque(const SimTK::State& s) const {
+  return reducerCrankTorque(reducer_, evaluateLaw(s, nullptr).torque, speed(s));
+}
+
+double MotorForce::reducerLossTorque(const SimTK::State& s) const {
+  return rollerdyn::reducerLossTorque(reducer_, evaluateLaw(s, nullptr).torque, speed(s));
+}
 
 double MotorForce::brakeTorque(const SimTK::State& s) const {
   if (!supply_.hasBrake()) return 0.0;
-  return supply_.brakeTorque(phase(s), rotorSpeed(s)) * ratio_ * efficiency_;
+  return reducerCrankTorque(reducer_, supply_.brakeTorque(phase(s), rotorSpeed(s)), speed(s));
 }
 
 double MotorForce::brakeWork(const SimTK::State& s) const {

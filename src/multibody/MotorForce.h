@@ -1,6 +1,7 @@
 // The induction motor as a Simbody force element: the scene's motor law (motor.model,
 // src/motor/MotorLaw.h) fed by the starting method's supply (src/motor/Supply.h) applies its
-// torque, reduced to the crank axis (×u·η, Loveikin, Pochka, Romasevych (2018) eq. (37)), to the
+// torque, reduced to the crank axis through the reducer's law (reducer.losses,
+// physics/ReducerLosses.h; the papers' ×u·η, Loveikin, Pochka, Romasevych (2018) eq. (37)), to the
 // motor-side body about the shaft axis z, its reaction going to the (grounded) stator; a
 // mechanical brake on the motor shaft (motor.stop.brake_torque) acts on the same body. The
 // body's absolute angular velocity is used, because with an elastic coupling the motor side is
@@ -21,13 +22,14 @@
 #include "Simbody.h"
 #include "motor/MotorLaw.h"
 #include "motor/Supply.h"
+#include "physics/ReducerLosses.h"
 
 namespace rollerdyn {
 
 class MotorForce : public SimTK::Force::Custom::Implementation {
  public:
   MotorForce(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& motor_body,
-             std::shared_ptr<const MotorLaw> law, Supply supply, double ratio, double efficiency);
+             std::shared_ptr<const MotorLaw> law, Supply supply, ReducerLaw reducer);
 
   const MotorLaw& law() const { return *law_; }
   const Supply& supply() const { return supply_; }
@@ -40,8 +42,14 @@ class MotorForce : public SimTK::Force::Custom::Implementation {
   double torque(const SimTK::State& s) const;
   // Brake torque on the motor-side body, reduced to the crank axis [N·m] (≤ 0 while turning forwards).
   double brakeTorque(const SimTK::State& s) const;
-  // Power delivered by the motor into the mechanism [W].
+  // Power delivered by the motor through the reducer into the mechanism [W].
   double power(const SimTK::State& s) const { return torque(s) * speed(s); }
+  // The reducer's loss torque on the motor's torque, at the crank axis [N·m] (ReducerLosses.h),
+  // and its loss power [W] (≥ 0 under power_flow). The brake's share is not in it: a brake's
+  // torque passes the reducer's law on its own and all it takes counts as brake dissipation.
+  double reducerLossTorque(const SimTK::State& s) const;
+  double reducerLossPower(const SimTK::State& s) const { return reducerLossTorque(s) * speed(s); }
+  const ReducerLaw& reducer() const { return reducer_; }
   // Power dissipated in the brake [W] (≥ 0).
   double brakePower(const SimTK::State& s) const { return -brakeTorque(s) * speed(s); }
   // Brake energy dissipated since t = 0 [J] (0 without brake).
@@ -90,7 +98,8 @@ class MotorForce : public SimTK::Force::Custom::Implementation {
   std::shared_ptr<const MotorLaw> law_;
   Supply supply_;
   SupplyPhase initial_phase_;
-  double ratio_, efficiency_;
+  ReducerLaw reducer_;
+  double ratio_;
   mutable SimTK::ZIndex z_start_;
   mutable SimTK::DiscreteVariableIndex phase_index_;
 };

@@ -144,7 +144,7 @@ void MultibodyModel::buildForces() {
     std::shared_ptr<const MotorLaw> law = options_.motor_law;
     if (!law) law = sharedMotorLaw(sc);
     Supply supply = makeSupply(sc, law.get());
-    auto* f = new MotorForce(forces_, motor_, law, std::move(supply), sc.reducer.ratio, sc.reducer.efficiency);
+    auto* f = new MotorForce(forces_, motor_, law, std::move(supply), reducerLaw(sc));
     SimTK::Force::Custom(forces_, f);
     motor_force_ = sources.motor = f;
     applied_order_.push_back(f);
@@ -318,6 +318,8 @@ double MultibodyModel::motorSpeed(const SimTK::State& s) const {
   return motor_.getBodyAngularVelocity(s)[2];
 }
 
+int MultibodyModel::energyStateCount() const { return energy_meter_->stateCount(); }
+
 double MultibodyModel::motorTorque(const SimTK::State& s) const {
   return motor_force_ ? motor_force_->torque(s) : 0.0;
 }
@@ -349,6 +351,7 @@ EnergyAudit energyAuditBetween(const EnergySnapshot& first, const EnergySnapshot
   a.friction_dissipation = last.friction_dissipation - first.friction_dissipation;
   a.load_work = last.load_work - first.load_work;
   a.brake_dissipation = last.brake_dissipation - first.brake_dissipation;
+  a.reducer_losses = last.reducer_losses - first.reducer_losses;
   a.kinetic_initial = first.kinetic;
   a.kinetic_final = last.kinetic;
   a.potential_initial = first.potential;
@@ -364,6 +367,7 @@ EnergySnapshot MultibodyModel::energy(const SimTK::State& s) const {
   e.damping_dissipation = energy_meter_->dampingDissipation(s);
   e.friction_dissipation = energy_meter_->frictionDissipation(s);
   e.load_work = energy_meter_->loadWork(s);
+  e.reducer_losses = energy_meter_->reducerLosses(s);
   if (motor_force_) e.brake_dissipation = motor_force_->brakeWork(s);
   return e;
 }
@@ -376,6 +380,7 @@ std::vector<std::string> MultibodyModel::timeseriesColumns() const {
     for (const char* n : {"x_cart_", "v_cart_", "a_cart_"}) c.push_back(n + std::to_string(j));
   if (motor_force_)
     for (const std::string& m : motorColumns(&motor_force_->law(), motor_force_->supply())) c.push_back(m);
+  if (recordsReducerLosses()) c.push_back("reducer_loss_torque");
   return c;
 }
 
@@ -418,6 +423,11 @@ void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& u
     appendMotorColumns(&m.law(), m.supply(), current ? m.evaluate(s).stator_current : 0.0, m.supplyState(s),
                        m.brakeTorque(s), ts);
   }
+  if (recordsReducerLosses()) ts.push_back(motor_force_->reducerLossTorque(s));
+}
+
+bool MultibodyModel::recordsReducerLosses() const {
+  return motor_force_ && motor_force_->reducer().model == ReducerLossModel::PowerFlow;
 }
 
 void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>& re) const {

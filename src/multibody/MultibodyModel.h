@@ -62,6 +62,7 @@ struct EnergySnapshot {
   double kinetic = 0, potential = 0;
   double motor_work = 0, damping_dissipation = 0, friction_dissipation = 0, load_work = 0;
   double brake_dissipation = 0;
+  double reducer_losses = 0;  // the reducer's losses on the motor's torque (ReducerLosses.h)
 };
 
 // The energy audit of a run from the snapshots at its first and last recorded rows (the work
@@ -94,6 +95,10 @@ class MultibodyModel {
   // z entries of the motor element (law states, brake work): the first entries of the force
   // subsystem's z, before the guide-friction normal forces and the energy integrals.
   int motorStateCount() const;
+  // z entries of the energy audit (EnergyMeter.h): 4, 5 when the reducer's losses are integrated.
+  int energyStateCount() const;
+  // reducer.losses = power_flow: the timeseries carries reducer_loss_torque (RunResult.h).
+  bool recordsReducerLosses() const;
   // The guide-friction element (precondition: hasGuideFriction()).
   const GuideFriction& frictionElement() const { return *friction_force_; }
   // True when the guide friction carries normal-force lag states (loads.guide_friction.normal_force

@@ -26,6 +26,14 @@
 namespace rollerdyn {
 namespace {
 
+// The reducer's losses of a run [J]: the integrated state under power_flow; under the papers'
+// constant η, L·ω = (1 − η)·M·u·ω, i.e. (1/η − 1) times the work passed on (no state).
+double reducerLossesOf(const ReducedModel& m, double motor_work, double integrated) {
+  if (!m.scene().motor.enabled) return 0.0;
+  if (m.reducer().model == ReducerLossModel::PowerFlow) return integrated;
+  return (1.0 / m.reducer().eta_forward - 1.0) * motor_work;
+}
+
 void setupTables(const ReducedModel& m, RunResult& res) {
   auto& ts = res.timeseries.columns;
   ts = {"t",         "phi_motor",  "phi_crank",   "omega_motor",     "omega_crank",
@@ -46,6 +54,7 @@ void setupTables(const ReducedModel& m, RunResult& res) {
   rx.push_back("coupling_torque");
   if (!m.scene().simulation.reactions) rx.clear();  // no reactions table
   for (const std::string& c : motorColumns(m.motorLaw(), m.supply())) ts.push_back(c);
+  if (m.integratesReducerLosses()) ts.push_back("reducer_loss_torque");
 }
 
 // One output row of both tables from an evaluation (its eps/coupling fields may have been
@@ -74,6 +83,7 @@ void appendRows(const ReducedModel& m, double t, const ModelEvaluation& e, RunRe
   }
   q.push_back(e.coupling_torque);
   appendMotorColumns(m.motorLaw(), m.supply(), e.stator_current, e.supply, e.brake_torque, r);
+  if (m.integratesReducerLosses()) r.push_back(e.reducer_loss_torque);
   res.timeseries.rows.push_back(std::move(r));
   if (reactions) res.reactions.rows.push_back(std::move(q));
 }
@@ -362,6 +372,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   res.energy.friction_dissipation = y_last(m.iFrictionWork());
   res.energy.load_work = y_last(m.iLoadWork());
   if (m.iBrakeWork() >= 0) res.energy.brake_dissipation = y_last(m.iBrakeWork());
+  res.energy.reducer_losses = reducerLossesOf(m, res.energy.motor_work, m.iReducerLosses() >= 0 ? y_last(m.iReducerLosses()) : 0.0);
   res.energy.kinetic_final = m.kineticEnergy(y_last);
   res.energy.potential_final = m.potentialEnergy(y_last);
   if (m.checksFrictionWork()) res.friction_work_kinetostatic = y_last(m.iFrictionWorkKinetostatic());
@@ -390,7 +401,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
   double phi = s.initial.crank_angle;
   double w = std::max(s.initial.crank_speed, 0.0);  // the scheme only marches forward in φ
   double t = 0.0;
-  double W_motor = 0.0, W_friction = 0.0, W_load = 0.0, W_friction_kinetostatic = 0.0;
+  double W_motor = 0.0, W_friction = 0.0, W_load = 0.0, W_friction_kinetostatic = 0.0, W_reducer = 0.0;
 
   Eigen::VectorXd y(m.stateSize());
   y.setZero();
@@ -454,6 +465,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     const double eps = (w_next - w) / (t_next - t);        // Loveikin and Pochka (2007) eq. (11)
     // Work over the step by the same left-point rule as the scheme: dW = (force·x_B')·Δφ.
     W_motor += e.motor_torque * dphi;
+    W_reducer += e.reducer_loss_torque * dphi;
     if (w > 0.0) W_friction_kinetostatic += e.friction_power_kinetostatic / w * dphi;  // P/ω·Δφ
     for (int j = 0; j < m.cartCount(); ++j) {
       const CartEvaluation& c = e.carts[j];
@@ -477,6 +489,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
   y(m.iPhi()) = phi;
   y(m.iOmega()) = w;
   res.energy.motor_work = W_motor;
+  res.energy.reducer_losses = reducerLossesOf(m, W_motor, W_reducer);
   res.energy.friction_dissipation = W_friction;
   res.energy.load_work = W_load;
   res.energy.kinetic_final = m.kineticEnergy(y);

@@ -35,6 +35,7 @@ ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> l
   // Checks r > 0, l > r and σ = ±1 once, so the right-hand side never throws.
   for (int j = 0; j < n; ++j) cartPose(j, 0.0);
 
+  reducer_ = reducerLaw(scene_);
   J_n1_ = scene_.motorSideInertia();  // Loveikin, Pochka, Romasevych (2018) eq. (1)
   J_crank_ = scene_.crankSideInertia();
   if (scene_.rods.model == RodModel::Split) {
@@ -179,7 +180,7 @@ double ReducedModel::motorTorque(double omega_motor) const {
   if (!scene_.motor.enabled) return 0.0;
   const double u = scene_.reducer.ratio;
   // Loveikin, Pochka, Romasevych (2018) eq. (37) / Loveikin and Pochka (2007) eq. (7)-(8), in the singularity-free form of KlossMotor.h
-  return law_->steadyTorque(SupplyState{}, omega_motor * u) * u * scene_.reducer.efficiency;
+  return reducerCrankTorque(reducer_, law_->steadyTorque(SupplyState{}, omega_motor * u), omega_motor);
 }
 
 CartEvaluation ReducedModel::cartKinematics(int j, double phi, double omega) const {
@@ -383,13 +384,15 @@ void ReducedModel::evaluateMotor(double t, const SupplyPhase& phase, const doubl
     e.motor_torque = 0.0;
     return;
   }
-  const double u = scene_.reducer.ratio, eta = scene_.reducer.efficiency;
+  const double u = scene_.reducer.ratio;
   const double w_r = e.omega_motor * u;
   e.supply = supply_.state(phase, t, w_r);
-  e.brake_torque = supply_.brakeTorque(phase, w_r) * u * eta;
+  e.brake_torque = reducerCrankTorque(reducer_, supply_.brakeTorque(phase, w_r), e.omega_motor);
   MotorEvaluation out;
   law_->evaluate(e.supply, w_r, y + iMotorStates(), out, motorStateCount() > 0 ? e.motor_state_rates.data() : nullptr);
-  e.motor_torque = out.torque * u * eta;
+  e.motor_torque = reducerCrankTorque(reducer_, out.torque, e.omega_motor);
+  e.reducer_loss_torque = reducerLossTorque(reducer_, out.torque, e.omega_motor);
+  e.reducer_loss_power = e.reducer_loss_torque * e.omega_motor;
   e.stator_current = out.stator_current;
 }
 
@@ -408,6 +411,7 @@ bool ReducedModel::derivatives(double t, const SupplyPhase& phase, const double*
   d[iLoadWork()] = e.load_power;
   if (checksFrictionWork()) d[iFrictionWorkKinetostatic()] = e.friction_power_kinetostatic;
   if (iBrakeWork() >= 0) d[iBrakeWork()] = e.brake_power;
+  if (iReducerLosses() >= 0) d[iReducerLosses()] = e.reducer_loss_power;
   for (int i = 0; i < motorStateCount(); ++i) d[iMotorStates() + i] = e.motor_state_rates[i];
   return e.friction_loop.status == LoopStatus::Solved;
 }

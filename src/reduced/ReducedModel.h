@@ -48,8 +48,10 @@
 // the motor law's own states (MotorLaw.h: none for the static laws).
 //
 // Motor: the scene's motor law (motor.model) at the rotor, M(supply, ω_r = u·φ̇1, x), fed by the
-// starting method's supply (motor/Supply.h) in the run's SupplyPhase; at the crank M·u·η
-// (Loveikin, Pochka, Romasevych (2018) eq. (37)); a brake torque M_b on the motor shaft likewise.
+// starting method's supply (motor/Supply.h) in the run's SupplyPhase; at the crank through the
+// reducer's law (reducer.losses, physics/ReducerLosses.h: the papers' M·u·η, Loveikin, Pochka,
+// Romasevych (2018) eq. (37), or by the direction of the power flow); a brake torque M_b on the
+// motor shaft likewise.
 #pragma once
 
 #include <array>
@@ -62,6 +64,7 @@
 #include "motor/MotorLaw.h"
 #include "motor/Supply.h"
 #include "physics/GuideFrictionLoop.h"
+#include "physics/ReducerLosses.h"
 #include "physics/SliderCrank.h"
 #include "reduced/CartStatics.h"
 #include "scene/Scene.h"
@@ -82,7 +85,10 @@ struct CartEvaluation {
 struct ModelEvaluation {
   double phi_crank = 0, omega_crank = 0, twist = 0, twist_rate = 0, omega_motor = 0;
   double J_n2 = 0, dJ_n2 = 0;     // crank-side reduced inertia and its φ-derivative
-  double motor_torque = 0;        // M_n1 at the crank axis [N·m]
+  double motor_torque = 0;        // M_n1 at the crank axis, passed on by the reducer [N·m]
+  double reducer_loss_torque = 0; // the reducer's loss torque on the motor's torque, at the crank
+                                  // axis [N·m] (physics/ReducerLosses.h)
+  double reducer_loss_power = 0;  // its power L·φ̇1 [W]
   double brake_torque = 0;        // mechanical brake on the motor shaft, at the crank axis [N·m]
   double stator_current = 0;      // RMS stator phase current [A]; NaN when the law has none
   SupplyState supply;             // what the starting method applies (motor/Supply.h)
@@ -117,8 +123,13 @@ class ReducedModel {
   bool rigid() const { return rigid_; }
   int cartCount() const { return scene_.carts.count; }
   int stateSize() const {
-    return mechanicalSize() + (checksFrictionWork() ? 1 : 0) + (supply_.hasBrake() ? 1 : 0) + motorStateCount();
+    return mechanicalSize() + (checksFrictionWork() ? 1 : 0) + (supply_.hasBrake() ? 1 : 0) +
+           (integratesReducerLosses() ? 1 : 0) + motorStateCount();
   }
+  // reducer.losses = power_flow: the reducer's losses ride along as a work state W_reducer and
+  // the timeseries carries reducer_loss_torque (under the papers' η they are (1/η − 1)·W_motor).
+  bool integratesReducerLosses() const { return scene_.motor.enabled && reducer_.model == ReducerLossModel::PowerFlow; }
+  const ReducerLaw& reducer() const { return reducer_; }
   // reduced.guide_normals = kinetostatic (with guide friction: the loop is solved).
   bool kinetostatic() const { return kinetostatic_; }
   // Quasi-static normals with guide friction: the kinetostatic friction work is integrated too.
@@ -135,8 +146,13 @@ class ReducedModel {
   int iLoadWork() const { return rigid_ ? 4 : 7; }
   int iFrictionWorkKinetostatic() const { return checksFrictionWork() ? mechanicalSize() : -1; }
   int iBrakeWork() const { return supply_.hasBrake() ? mechanicalSize() + (checksFrictionWork() ? 1 : 0) : -1; }
+  int iReducerLosses() const {
+    return integratesReducerLosses() ? mechanicalSize() + (checksFrictionWork() ? 1 : 0) + (supply_.hasBrake() ? 1 : 0)
+                                     : -1;
+  }
   int iMotorStates() const {  // first of them
-    return mechanicalSize() + (checksFrictionWork() ? 1 : 0) + (supply_.hasBrake() ? 1 : 0);
+    return mechanicalSize() + (checksFrictionWork() ? 1 : 0) + (supply_.hasBrake() ? 1 : 0) +
+           (integratesReducerLosses() ? 1 : 0);
   }
   int motorStateCount() const { return law_ ? law_->stateCount() : 0; }
 
@@ -220,6 +236,7 @@ class ReducedModel {
   std::shared_ptr<const MotorLaw> law_;  // null without a motor
   Supply supply_;
   SupplyPhase initial_phase_;
+  ReducerLaw reducer_;  // reducer.losses (physics/ReducerLosses.h)
   double J_n1_;       // motor side, Loveikin, Pochka, Romasevych (2018) eq. (1)
   double J_crank_;    // crankshaft without rods + split pin half-masses (Loveikin, Pochka, Romasevych (2018) eq. (2))
   std::vector<double> m_B_;   // per cart: mass used with x_B', Loveikin, Pochka, Romasevych (2018) eq. (3)

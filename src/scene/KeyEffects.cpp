@@ -68,6 +68,9 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
     if (key == "sizing.bearing_rating.crank_pin" || key == "sizing.bearing_rating.main_bearing")
       return "the reduced model computes no crank-pin or main-bearing forces (run the multibody model for their lives)";
   }
+  if (key == "reducer.efficiency_reverse" && sc.reducer.losses == ReducerLossModel::Papers)
+    return "the papers' constant η (reducer.losses: papers) multiplies the motor torque by reducer.efficiency "
+           "whichever way the power flows; set reducer.losses: power_flow for a reverse efficiency";
   if (key == "motor.connection")
     return "the laws use the equivalent star's per-phase values either way; a star-delta start is set by "
            "motor.start.method (the connection shows only in `rollerdyn motor`)";

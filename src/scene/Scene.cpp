@@ -133,6 +133,7 @@ const char* toString(RodModel m) {
   }
   return "?";
 }
+const char* toString(ReducerLossModel m) { return m == ReducerLossModel::PowerFlow ? "power_flow" : "papers"; }
 const char* toString(CouplingType t) { return t == CouplingType::Rigid ? "rigid" : "elastic"; }
 const char* toString(RollerForceDirection d) {
   return d == RollerForceDirection::AsPrinted ? "as_printed" : "opposes_velocity";

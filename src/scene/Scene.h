@@ -29,6 +29,7 @@ enum class MotorModel { Kloss, KlossDynamic, Circuit, Park };   // motor.model
 enum class WindingConnection { Star, Delta };                   // motor.connection
 enum class GuideNormalForce { Lagged, Algebraic };             // loads.guide_friction.normal_force
 enum class ReducedGuideNormals { QuasiStatic, Kinetostatic };  // reduced.guide_normals
+enum class ReducerLossModel { Papers, PowerFlow };            // reducer.losses
 
 struct SimulationSettings {
   double t_end;                 // simulated time span [s]                       simulation.t_end
@@ -184,9 +185,16 @@ struct InductionMotor {
 
 struct Reducer {
   double ratio;        // u = ω_rotor / ω_crank [-]                                 reducer.ratio
-  double efficiency;   // η in (0, 1] [-]                                           reducer.efficiency
+  double efficiency;   // η in (0, 1] [-]; with losses = power_flow the forward efficiency η_f,
+                       // motor side driving                                    reducer.efficiency
   double inertia;      // J_red referred to the motor shaft [kg·m²]                 reducer.inertia
   double delta;        // δ, Loveikin, Pochka, Romasevych (2018) eq. (1) factor for reducer inertia [-]        reducer.delta
+  ReducerLossModel losses = ReducerLossModel::Papers;  // papers: the torque at the crank is
+                       // M·u·η in both directions of the power flow (eq. (37)); power_flow:
+                       // loss (1 - η_f)·|P| when the motor side drives, (1/η_r - 1)·|P| when
+                       // the crank side drives (physics/ReducerLosses.h) [-]   reducer.losses
+  double efficiency_reverse = 0;  // η_r in (0, 1], crank side driving [-]; absent: = η
+                       // (read only with losses = power_flow)         reducer.efficiency_reverse
 };
 
 struct Coupling {
@@ -346,5 +354,6 @@ const char* toString(MotorModel m);
 const char* toString(WindingConnection c);
 const char* toString(GuideNormalForce g);     // "lagged" | "algebraic"
 const char* toString(ReducedGuideNormals g);  // "quasi_static" | "kinetostatic"
+const char* toString(ReducerLossModel m);     // "papers" | "power_flow"
 
 }  // namespace rollerdyn

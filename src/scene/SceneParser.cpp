@@ -243,6 +243,9 @@ Reducer readReducer(const Reader& in) {
   Reducer r;
   r.ratio = in.number("reducer.ratio");
   r.efficiency = in.number("reducer.efficiency");
+  r.losses = in.choice("reducer.losses") == "power_flow" ? ReducerLossModel::PowerFlow : ReducerLossModel::Papers;
+  // Absent: the same efficiency both ways (under papers the key has no effect: KeyEffects.cpp).
+  r.efficiency_reverse = in.numberOr("reducer.efficiency_reverse", r.efficiency);
   r.inertia = in.number("reducer.inertia");
   r.delta = in.number("reducer.delta");
   return r;

@@ -342,6 +342,19 @@ std::vector<KeySpec> buildSchema() {
       number("reducer.efficiency", "-", P::Required, between(0.0, false, 1.0, true), 0.0,
              "η, multiplies the motor torque at the crank")
           .from(L2018 + " eq. (37); " + L2007 + " eq. (8)"),
+      choice("reducer.losses", P::Optional, {"papers", "power_flow"}, "papers",
+             "law of the reducer's losses: papers, the torque at the crank is M·u·η whichever way the "
+             "power flows (so a crank driving the motor gains energy in the reducer); power_flow, the "
+             "loss is (1 − η)·|P| while the motor side drives and (1/η_r − 1)·|P| while the crank side "
+             "drives (P the power at the reducer's motor side), blended smoothly over 1 % of the "
+             "breakdown torque M_kr·u around zero torque")
+          .from(L2018 + " eq. (37) (papers); Modelica Standard Library, Rotational.Components.LossyGear "
+                "(power_flow)"),
+      number("reducer.efficiency_reverse", "-", P::Conditional, between(0.0, false, 1.0, true), 0.0,
+             "η_r, the efficiency while the crank side drives the motor side (reducer.losses: "
+             "power_flow; no effect under papers)")
+          .from("Modelica Standard Library, Rotational.Components.LossyGear")
+          .when("= reducer.efficiency"),
       number("reducer.inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
              "J_red referred to the motor shaft")
           .from(L2007 + " (I_o = I_motor + I_m + I_red)"),

@@ -225,6 +225,8 @@ motor:
     brake_delay: 0.1
     t_restart: 2.8
 reducer:
+  losses: power_flow
+  efficiency_reverse: 0.75
   ratio: 12
   efficiency: 0.8
   inertia: 0.05
@@ -374,6 +376,8 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.reducer.efficiency, 0.8);
   EXPECT_DOUBLE_EQ(s.reducer.inertia, 0.05);
   EXPECT_DOUBLE_EQ(s.reducer.delta, 1.1);
+  EXPECT_EQ(s.reducer.losses, ReducerLossModel::PowerFlow);
+  EXPECT_DOUBLE_EQ(s.reducer.efficiency_reverse, 0.75);
   EXPECT_EQ(s.coupling.type, CouplingType::Elastic);
   EXPECT_DOUBLE_EQ(s.coupling.stiffness, 150000.0);
   EXPECT_DOUBLE_EQ(s.coupling.damping, 3000.0);
