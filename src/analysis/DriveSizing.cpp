@@ -1,6 +1,5 @@
 #include "analysis/DriveSizing.h"
 
-#include "physics/ReducerLosses.h"
 
 #include <Eigen/Core>
 #include <algorithm>
