@@ -28,7 +28,7 @@
 // Method: NLopt's BOBYQA from an initial guess built from the catalogue (Kloss's breakdown
 // relations for the leakage and rotor resistance, the reactive current for X_m, the losses for
 // R_s), restarted from deterministic perturbations of it until every residual is below 1e-9,
-// or six starts in a row bring no improvement, or 24 starts are used; the best fit is kept.
+// or 15 starts in a row bring no improvement, or 60 starts are used; the best fit is kept.
 #pragma once
 
 #include <string>
