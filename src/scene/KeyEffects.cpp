@@ -91,6 +91,8 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
            "motor.catalogue or motor.circuit)";
   const std::string late = afterTheRunsEnd(key, sc);
   if (!late.empty()) return late;
+  if (key == "initial.twist" && sc.coupling.type == CouplingType::Rigid)
+    return "the coupling is rigid (coupling.type: rigid): motor and crank turn together, with no twist between them";
   if (key == "carts.geometry.a" && !rollerSpacingActs(sc))
     return "it is the arm of the rollers' normal forces about the cart, (R_j2 − R_j1)·a, and each cart's two "
            "normals are equal (loads.roller_normal_front = loads.roller_normal_rear)";

@@ -83,6 +83,11 @@ TEST(KeysWithoutEffectInRuns, AChangeoverSpeedTheMotorNeverReachesChangesNothing
   EXPECT_FALSE(named(starts, "motor.start.changeover_speed"));
 }
 
+TEST(KeysWithoutEffectInRuns, AnInitialTwistOfARigidCouplingChangesNothing) {
+  expectWithoutEffect({"simulation.t_end=2", "coupling.type=rigid"}, "initial.twist", "0", "0.001");
+  EXPECT_FALSE(named(summaryOf({"simulation.t_end=2", "initial.twist=0.001"}), "initial.twist"));
+}
+
 TEST(KeysWithoutEffectInRuns, TheEndOfARunAStallEndedEarlyChangesNothing) {
   const std::vector<std::string> stalls = {"carts.count=6", "crank.offset_deg=60", "carts.mass=1200",
                                            "loads.rolling_resistance=0.1", "initial.crank_speed=0"};
