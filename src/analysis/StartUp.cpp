@@ -251,15 +251,10 @@ void addStopping(const Scene& sc, const Table& ts, StartUp& r) {
 
 // A star-delta changeover by speed that the motor never reached: its keys changed nothing in this
 // run, which stayed in star (a user raising the changeover speed of a drive that stalls in star
-// saw the same figures and no word why).
-void addChangeoverNotReached(const Scene& sc, const std::vector<double>& omega_motor_crank, StartUp& r) {
-  const MotorStart& m = sc.motor_start;
-  if (m.method != StartMethod::StarDelta || !std::isfinite(m.changeover_speed) || omega_motor_crank.empty()) return;
-  double top = -std::numeric_limits<double>::infinity();
-  for (double w : omega_motor_crank) top = std::max(top, w * sc.reducer.ratio);  // the rotor's speed
-  if (!(top < m.changeover_speed)) return;
-  const std::string why = "the motor never reached the changeover speed " + fmt("%.4g", m.changeover_speed) +
-                          " rad/s (its largest speed " + fmt("%.4g", top) + " rad/s), so the run stayed in star";
+// saw the same figures and no word why). `rotor_top`: the rotor's largest speed in the run [rad/s].
+void addChangeoverNotReached(const Scene& sc, double rotor_top, StartUp& r) {
+  const std::string why = "the motor never reached the changeover speed " + fmt("%.4g", sc.motor_start.changeover_speed) +
+                          " rad/s (its largest speed " + fmt("%.4g", rotor_top) + " rad/s), so the run stayed in star";
   for (const char* key : {"motor.start.changeover_speed", "motor.start.changeover_gap"})
     if (std::find(sc.given_keys.begin(), sc.given_keys.end(), key) != sc.given_keys.end())
       r.keys_not_reached.push_back(std::string(key) + " has no effect on this run: " + why);
@@ -449,7 +444,13 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   }
 
   addStopping(sc, ts, r);
-  addChangeoverNotReached(sc, wm, r);
+  // A star-delta changeover by speed, and whether the rotor ever reached it (no motor speed
+  // column: not known, taken as not reached, as the verdict below has always done).
+  const bool changeover_by_speed =
+      sc.motor_start.method == StartMethod::StarDelta && std::isfinite(sc.motor_start.changeover_speed);
+  const double rotor_top = wm.empty() ? kNaN : peakOf(wm, 0, wm.size(), false) * u;
+  const bool changeover_missed = changeover_by_speed && (wm.empty() || rotor_top < sc.motor_start.changeover_speed);
+  if (changeover_missed && !wm.empty()) addChangeoverNotReached(sc, rotor_top, r);
 
   // Verdict: the cause of a drive that does not start is the one sentence judgeStartFromTorques
   // wrote, so the run status and the sizing say the same.
@@ -458,9 +459,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
                 " rad/s " + fmt("%.3g", r.run_up_time) + " s after switch-on";
   } else if (r.still_starting) {
     r.verdict = kStillStartingWords;
-  } else if (r.can_start_from_rest == 1 && sc.motor_start.method == StartMethod::StarDelta &&
-             std::isfinite(sc.motor_start.changeover_speed) &&
-             (wm.empty() || peakOf(wm, 0, wm.size(), false) * u < sc.motor_start.changeover_speed)) {
+  } else if (r.can_start_from_rest == 1 && changeover_missed) {
     r.stall_cause = "the changeover speed " + fmt("%.4g", sc.motor_start.changeover_speed) +
                     " rad/s was never reached in star (the star torque is a third of the delta torque): the load and "
                     "the inertia hold the motor below it";
