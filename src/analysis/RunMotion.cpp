@@ -68,6 +68,11 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
     if (!from_status.empty()) return from_status;
   }
   const Table& ts = run.timeseries;
+  // The stall rule's speed band, 1 % of ω0/u (StallDetector.h): held at rest inside it, and a
+  // speed changes sign only when it leaves it on the other side, as the rule's swings do.
+  const double band = sc.motor.enabled && sc.reducer.ratio > 0
+                          ? StallDetector::kSpeedFraction * sc.motor.omega_sync / sc.reducer.ratio
+                          : 0.0;
   bool swings_growing = false;  // the stall rule's reading of the last oscillation, if the crank rocked
   if (!sc.motor.enabled && ts.has("t") && ts.has("v_cart_1")) {
     // The rest rule on the rows: every cart slower than v_s for RestDetector::kWindow.
@@ -100,7 +105,6 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
     // skips (star that never changes over, a ramp longer than the run), did not start in this run:
     // the held rule's band and time, counted back from the last row, at any supply but none.
     if (iu >= 0 && !ts.rows.empty()) {
-      const double band = StallDetector::kSpeedFraction * sc.motor.omega_sync / sc.reducer.ratio;
       double held_since = NAN;
       for (auto row = ts.rows.rbegin(); row != ts.rows.rend(); ++row) {
         if (!(std::abs((*row)[ic]) <= band && std::abs((*row)[im]) <= band && (*row)[iu] > 0)) break;
@@ -110,13 +114,8 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
     }
   }
   if (!std::isfinite(m.omega_min) || !std::isfinite(m.omega_max)) return "unknown";
-  // The speed changes sign only when it leaves the stall rule's band on the other side, as the
-  // rule's swings do (StallDetector.h): a crank that comes to a stop at a dead centre and goes on
-  // forwards reads -7e-20 rad/s there, and once was "rocking" or "starting" by that round-off
-  // alone, depending on when it was switched on.
-  const double band = sc.motor.enabled && sc.reducer.ratio > 0
-                          ? StallDetector::kSpeedFraction * sc.motor.omega_sync / sc.reducer.ratio
-                          : 0.0;
+  // A crank that comes to a stop at a dead centre and goes on forwards reads -7e-20 rad/s there,
+  // and once was "rocking" or "starting" by that round-off alone, depending on its switch-on time.
   if (m.omega_min < -band && m.omega_max > band) {
     // Rocking in the window whose swings still grow when the run ends: a rocking-then-starting
     // drive that has not yet got over its dead centre; undecided, not "rocking".
