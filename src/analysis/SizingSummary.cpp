@@ -204,8 +204,7 @@ std::string flywheelByRunsText(const json& f, const std::string& pad) {
   const json& b = jsonMember(f, "by_runs");
   if (!b.is_object()) return "";
   std::ostringstream o;
-  const bool motor_shaft = jsonMember(f, "location").is_string() && jsonMember(f, "location").get<std::string>() == "motor_shaft";
-  const std::string where = motor_shaft ? "motor shaft" : "crankshaft";
+  const std::string where = str(jsonMember(b, "location"));
   o << pad << "by runs started at " << fmt(jsonMember(b, "started_at_crank_speed"), "%.4g") << " rad/s (" << where << "):";
   for (const json& r : jsonMember(b, "runs"))
     o << " " << fmt(jsonMember(r, "inertia"), "%.4g") << " kg·m² gives δ " << fmt(jsonMember(r, "delta"), "%.4g") << ";";

@@ -63,6 +63,7 @@ void addFlywheelByRuns(const Scene& scene, const std::string& model, nlohmann::j
   f["by_runs"] = toJson(flywheelByRuns(scene, model, check["flywheel_inertia"].get<double>(), omega,
                                        f["target_delta"].get<double>(), f["inertia_effective"].get<double>()));
   f["by_runs"]["started_at_crank_speed"] = omega;
+  f["by_runs"]["location"] = check.value("location", "");  // the check's words: crankshaft | motor shaft
 }
 
 // Where the circuit of the run's motor law came from when it is fitted to the catalogue
