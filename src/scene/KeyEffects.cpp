@@ -31,6 +31,30 @@ bool isCurrentData(const std::string& key) {
          key == "motor.catalogue.cages";
 }
 
+// The cart's moment balance about the rod hinge B (reduced/CartStatics.h) holds the arms p, b, a,
+// e, d/2 and com_height. Its only unknown beyond ΣX and ΣY is how the guide normal splits between
+// the two guide rollers, N1 against N2, and a run uses that split only through the guide friction
+// φ_f·f·(|N1| + |N2|) (with the self-locking test) and through the reactions: guide-roller loads
+// and lives at |v|/(d/2), lift-off. The multibody model is the same: the guides' prismatic joint
+// takes every moment on the cart, and the arms only place forces on a body that cannot turn.
+bool isCartMomentArm(const std::string& key) {
+  return key == "carts.geometry.p" || key == "carts.geometry.b" || key == "carts.geometry.a" ||
+         key == "carts.geometry.e" || key == "carts.geometry.d" || key == "carts.geometry.com_height";
+}
+bool guideSplitActs(const Scene& sc) { return sc.hasGuideFriction() || sc.simulation.reactions; }
+
+// The depth e is the arm of the compacting rollers' horizontal force H (physics/RollerLoads.h), which
+// is zero at every speed where a cart has neither roller forces nor rolling resistance.
+bool rollerForceActs(const Scene& sc) {
+  for (int j = 0; j < sc.carts.count; ++j) {
+    const Loads l = sc.cartLoads(j);
+    if (l.roller_force_front + l.roller_force_rear != 0.0 ||
+        l.rolling_resistance * (l.roller_normal_front + l.roller_normal_rear) != 0.0)
+      return true;
+  }
+  return false;
+}
+
 // Kloss's critical slip s_kr, in any of its three descriptions.
 bool isKlossSlip(const std::string& key) {
   return key == "motor.critical_slip" || key == "motor.omega_critical" || key == "motor.overload_ratio";
@@ -93,6 +117,19 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
   if (!late.empty()) return late;
   if (key == "initial.twist" && sc.coupling.type == CouplingType::Rigid)
     return "the coupling is rigid (coupling.type: rigid): motor and crank turn together, with no twist between them";
+  if (isCartMomentArm(key) && !guideSplitActs(sc))
+    return "it is an arm in the cart's moment balance, which splits the guide normal between the two guide rollers; "
+           "this run uses that split nowhere: there is no guide friction (loads.guide_friction.coefficient: 0) "
+           "and no reactions are computed (simulation.reactions: false)";
+  if (key == "carts.geometry.e" && !rollerForceActs(sc))
+    return "it is the depth of the compacting rollers' horizontal force below the rod hinge, and that force is zero "
+           "on every cart (loads.roller_force_front + loads.roller_force_rear = 0 and no rolling resistance)";
+  // The reduced model's quasi-static guide normals leave out the carts' inertial forces, whose
+  // height com_height is; with guide friction the run's friction-work check still reads them.
+  if (key == "carts.geometry.com_height" && model == "reduced" &&
+      sc.reduced.guide_normals == ReducedGuideNormals::QuasiStatic && !sc.hasGuideFriction())
+    return "it is the height of the cart's inertial force, which the quasi-static guide normals leave out "
+           "(reduced.guide_normals: quasi_static; kinetostatic includes it)";
   if (key == "carts.geometry.a" && !rollerSpacingActs(sc))
     return "it is the arm of the rollers' normal forces about the cart, (R_j2 − R_j1)·a, and each cart's two "
            "normals are equal (loads.roller_normal_front = loads.roller_normal_rear)";

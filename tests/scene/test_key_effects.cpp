@@ -50,6 +50,46 @@ TEST(KeyEffects, TheRollerSpacingActsOnlyWhereACartsTwoNormalsDiffer) {
   EXPECT_FALSE(named(differ, "carts.geometry.a"));
 }
 
+// The cart's moment arms split the guide normal between its two guide rollers; without guide
+// friction and without reactions no output reads that split (the harness: e, d, com_height).
+TEST(KeyEffects, TheCartsMomentArmsActOnlyThroughGuideFrictionOrTheReactions) {
+  const std::vector<std::string> arms = {"carts.geometry.p", "carts.geometry.b", "carts.geometry.e",
+                                         "carts.geometry.d", "carts.geometry.com_height"};
+  const auto withArms = [&](std::vector<std::string> sets) {
+    for (const std::string& k : arms) sets.push_back(k + "=0.1");
+    return keysWithoutEffect(scene(sets), "multibody");
+  };
+  const std::vector<std::string> neither =
+      withArms({"loads.guide_friction.coefficient=0", "simulation.reactions=false"});
+  const std::vector<std::string> reactions =
+      withArms({"loads.guide_friction.coefficient=0", "simulation.reactions=true"});
+  const std::vector<std::string> friction = withArms({"simulation.reactions=false"});
+  for (const std::string& k : arms) {
+    EXPECT_TRUE(named(neither, k)) << k;
+    EXPECT_FALSE(named(reactions, k)) << k;
+    EXPECT_FALSE(named(friction, k)) << k;
+  }
+}
+
+// e is the arm of the compacting rollers' horizontal force; com_height that of the cart's inertial
+// force, which the reduced model's quasi-static guide normals leave out.
+TEST(KeyEffects, TheRollerDepthAndTheCentreOfMassHeightActOnlyWithTheirForces) {
+  const std::vector<std::string> no_rolling = {"carts.geometry.e=0.2", "loads.roller_force_front=0",
+                                               "loads.roller_force_rear=0", "loads.rolling_resistance=0"};
+  EXPECT_TRUE(named(keysWithoutEffect(scene(no_rolling), "multibody"), "carts.geometry.e"));
+  std::vector<std::string> rolling = no_rolling;
+  rolling.push_back("loads.rolling_resistance=0.01");
+  EXPECT_FALSE(named(keysWithoutEffect(scene(rolling), "multibody"), "carts.geometry.e"));
+
+  const std::vector<std::string> height = {"carts.geometry.com_height=0.3", "loads.guide_friction.coefficient=0",
+                                           "reduced.guide_normals=quasi_static"};
+  EXPECT_TRUE(named(keysWithoutEffect(scene(height), "reduced"), "carts.geometry.com_height"));
+  EXPECT_FALSE(named(keysWithoutEffect(scene(height), "multibody"), "carts.geometry.com_height"));
+  std::vector<std::string> kinetostatic = height;
+  kinetostatic.back() = "reduced.guide_normals=kinetostatic";
+  EXPECT_FALSE(named(keysWithoutEffect(scene(kinetostatic), "reduced"), "carts.geometry.com_height"));
+}
+
 // A Kloss law's speed is motor.omega_sync: f_n only scales a converter's frequencies and gives the
 // dynamic Kloss law its default T_e.
 TEST(KeyEffects, TheSupplyFrequencyIsNamedWhereNoKlossLawReadsIt) {
