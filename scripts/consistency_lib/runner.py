@@ -206,6 +206,10 @@ def _extras(m, mr, ctx, notes):
     turning_steady = s.get("motion") == "turning" and invariants.get(s, "steady_state.reached", False)
     if want("b") and plan["double"] and turning_steady and not scene["motor"].get("stop"):
         ctx["double"] = mr.simulate("double", [f"simulation.t_end={2 * scene['simulation']['t_end']:g}"])
+    red = scene.get("reduced") or {}
+    if want("f") and m.model == "reduced" and red.get("integrator") == "baranov":
+        h = red.get("baranov_step_deg", 1.0)
+        ctx["half_step"] = mr.simulate("half_step", [f"reduced.baranov_step_deg={h / 2:g}"])
     su = s.get("start_up")
     if want("i") and plan["shift"] and isinstance(su, dict) and su.get("from_rest"):
         ctx["shift"] = _shift(mr, scene)

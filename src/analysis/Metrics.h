@@ -37,7 +37,8 @@ ColumnStats columnStats(const std::vector<double>& t, const std::vector<double>&
 
 struct WindowMetrics {
   std::size_t rows = 0;          // timeseries rows in the window
-  double omega_min = 0, omega_max = 0;  // sampled extremes of omega_crank [rad/s]
+  double omega_min = 0, omega_max = 0;  // extremes of omega_crank: its rows and the extrema located
+                                        // between them (RunResult::crank_speed_extrema) [rad/s]
   double omega_mean = 0;         // Δφ/Δt over the window (time-weighted, not the sample mean) [rad/s]
   double omega_midrange = 0;     // (ω_max + ω_min)/2: what Loveikin and Pochka's (2007) table prints as ω_mean
                                  // (e.g. (9.67 + 11.25)/2 = 10.46); kept to compare with it

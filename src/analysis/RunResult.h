@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/CrankSpeedExtrema.h"
 #include "io/Table.h"
 
 namespace rollerdyn {
@@ -95,6 +96,9 @@ struct RunResult {
   std::string integrator;          // integrator actually used
   Table timeseries;
   Table reactions;
+  // Every local extremum of omega_crank inside the integrator's steps (CrankSpeedExtrema.h), in
+  // time order: the extremes of δ and of the steady-state test, which output rows alone miss.
+  std::vector<CrankSpeedExtremum> crank_speed_extrema;
   RunStats stats;
   EnergyAudit energy;
   std::vector<std::string> effects;  // effects built (Scene::effects), e.g. "kloss_motor", "elastic_coupling"

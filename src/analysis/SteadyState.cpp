@@ -24,8 +24,8 @@ void setRowRange(const std::vector<double>& t, std::size_t n, SteadyState& s) {
 
 }  // namespace
 
-SteadyState detectSteadyState(const Table& ts, double window_revolutions,
-                              double relative_tolerance) {
+SteadyState detectSteadyState(const Table& ts, double window_revolutions, double relative_tolerance,
+                              const std::vector<CrankSpeedExtremum>& extrema) {
   SteadyState s;
   s.relative_tolerance = relative_tolerance;
   s.t_settled = std::numeric_limits<double>::quiet_NaN();
@@ -63,8 +63,21 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions,
     }
   }
   for (std::size_t k = 0; k + 1 < crossings.size(); ++k)
-    s.revolutions.push_back({crossings[k], crossings[k + 1],
-                             dir * kTwoPi / (crossings[k + 1] - crossings[k])});
+    s.revolutions.push_back({crossings[k], crossings[k + 1], dir * kTwoPi / (crossings[k + 1] - crossings[k]),
+                             std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
+  // Each revolution's extremes: its rows and the extrema located inside the integrator's steps.
+  {
+    std::size_t r = 0;
+    auto widen = [&](double tq, double w) {
+      while (r < s.revolutions.size() && s.revolutions[r].t_end < tq) ++r;
+      if (r == s.revolutions.size() || tq < s.revolutions[r].t_begin) return;
+      s.revolutions[r].omega_min = std::min(s.revolutions[r].omega_min, w);
+      s.revolutions[r].omega_max = std::max(s.revolutions[r].omega_max, w);
+    };
+    for (std::size_t i = 0; i < n; ++i) widen(t[i], omega[i]);
+    r = 0;
+    for (const CrankSpeedExtremum& x : extrema) widen(x.t, x.omega);
+  }
   const int count = static_cast<int>(s.revolutions.size());
   s.revolutions_counted = count;
 
@@ -81,11 +94,17 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions,
     return s;
   }
 
-  // Settling index: walk back from the final revolution while the means stay within tolerance.
-  const double final_mean = s.revolutions.back().omega_mean;
-  const double tol = relative_tolerance * std::abs(final_mean);
+  // Settling index: walk back from the final revolution while the revolutions repeat it: mean,
+  // lowest and highest speed each within the tolerance of the mean speed.
+  const CrankRevolution& last = s.revolutions.back();
+  const double tol = relative_tolerance * std::abs(last.omega_mean);
+  const auto repeats = [&](const CrankRevolution& k) {
+    const auto within = [&](double a, double b) { return std::abs(a - b) < tol || (!std::isfinite(a) && a == b); };
+    return within(k.omega_mean, last.omega_mean) && within(k.omega_min, last.omega_min) &&
+           within(k.omega_max, last.omega_max);
+  };
   int after = count - 1;
-  while (after > 0 && std::abs(s.revolutions[after - 1].omega_mean - final_mean) < tol) --after;
+  while (after > 0 && repeats(s.revolutions[after - 1])) --after;
   s.after_revolutions = after;
   s.t_settled = s.revolutions[after].t_begin;
 
@@ -118,23 +137,28 @@ std::string steadyStateNotReached(const SteadyState& s, double t_first, double t
   at_least = std::ceil(at_least / scale - 1e-9) * scale;
   char buf[400];
   std::snprintf(buf, sizeof buf,
-                "steady state not reached within the run (t = %.4g ... %.4g s: the last %d revolutions' mean crank "
-                "speeds do not agree within %.2g %%, or there are fewer than %d): run at least %.3g s "
-                "(simulation.t_end)",
+                "steady state not reached within the run (t = %.4g ... %.4g s: the last %d revolutions' mean, lowest "
+                "and highest crank speeds do not agree within %.2g %% of the mean, or there are fewer than %d): run "
+                "at least %.3g s (simulation.t_end)",
                 t_first, t_last, window_revolutions, 100.0 * s.relative_tolerance, window_revolutions, at_least);
   return buf;
 }
 
-SteadyState detectRunningSteadyState(const Table& ts, double window_revolutions, double t_off) {
-  if (!std::isfinite(t_off) || !ts.has("t") || !ts.has("phi_crank")) return detectSteadyState(ts, window_revolutions);
+SteadyState detectRunningSteadyState(const Table& ts, double window_revolutions, double t_off,
+                                     const std::vector<CrankSpeedExtremum>& extrema) {
+  if (!std::isfinite(t_off) || !ts.has("t") || !ts.has("phi_crank"))
+    return detectSteadyState(ts, window_revolutions, kSteadyStateRelativeTolerance, extrema);
   const int it = ts.index("t");
   const auto first_off = std::find_if(ts.rows.begin(), ts.rows.end(),
                                       [&](const std::vector<double>& row) { return row[it] >= t_off - 1e-12; });
-  if (first_off == ts.rows.end()) return detectSteadyState(ts, window_revolutions);
+  if (first_off == ts.rows.end()) return detectSteadyState(ts, window_revolutions, kSteadyStateRelativeTolerance, extrema);
   Table running;
   running.columns = ts.columns;
   running.rows.assign(ts.rows.begin(), first_off);
-  SteadyState s = detectSteadyState(running, window_revolutions);
+  std::vector<CrankSpeedExtremum> before;
+  for (const CrankSpeedExtremum& x : extrema)
+    if (x.t < t_off) before.push_back(x);
+  SteadyState s = detectSteadyState(running, window_revolutions, kSteadyStateRelativeTolerance, before);
   // Whole-run figures read finite_rows: count them over every row.
   const int ip = ts.index("phi_crank"), iw = ts.has("omega_crank") ? ts.index("omega_crank") : -1;
   std::size_t n = 0;

@@ -10,10 +10,16 @@
 // 2π / (revolution time), is constant; during a start-up it keeps changing.
 //
 // Steady state is *reached* when each of the last N = steady_window_revolutions revolutions has
-// a mean speed within `relative_tolerance`·|final revolution's mean| of the final revolution's
-// mean (at least two revolutions are needed to judge: with one there is nothing to compare).
-// Comparing with the final revolution rather than with the neighbour bounds the total drift over
-// the window, so a slow ramp cannot pass by changing little per revolution.
+// its mean speed, its lowest and its highest crank speed within `relative_tolerance`·|final
+// revolution's mean| of the final revolution's (at least two revolutions are needed to judge:
+// with one there is nothing to compare). Comparing with the final revolution rather than with the
+// neighbour bounds the total drift over the window, so a slow ramp cannot pass by changing little
+// per revolution. The extremes count because δ and every peak the sizing reads are taken from
+// them: a revolution can repeat its mean while its waveform still settles (a drive whose coupling
+// mode decays slowly kept its mean to 1e-3 one revolution after the start while its largest speed
+// was still 0.2 % of the mean above the later revolutions'). A revolution's extremes are those of
+// its output rows and of the crank speed's extrema the integrator located inside its steps
+// (CrankSpeedExtrema.h); the rows alone miss a sharp extreme by a different amount every revolution.
 //
 // Default tolerance 1e-3 (relative), why:
 //  * the papers print mean crank speeds to 4 significant figures (Loveikin and Pochka (2007): 10.46 rad/s, i.e.
@@ -32,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/CrankSpeedExtrema.h"
 #include "io/Table.h"
 
 namespace rollerdyn {
@@ -43,6 +50,7 @@ inline constexpr double kSteadyStateRelativeTolerance = 1e-3;
 struct CrankRevolution {
   double t_begin = 0, t_end = 0;  // interpolated crossing times [s]
   double omega_mean = 0;          // 2π/(t_end - t_begin), signed with the direction of rotation [rad/s]
+  double omega_min = 0, omega_max = 0;  // lowest and highest crank speed within it [rad/s]
 };
 
 struct SteadyState {
@@ -77,14 +85,17 @@ std::string steadyStateNotReached(const SteadyState& s, double t_first, double t
 // rounded down, at least 1. When the run has fewer than one whole revolution the window is the
 // last 20 % of the run time and reached = false. Never throws on missing columns or short
 // tables: it returns an empty window and explains in `note`.
+// `extrema`: the run's RunResult::crank_speed_extrema (empty: the rows' extremes alone).
 SteadyState detectSteadyState(const Table& timeseries, double window_revolutions,
-                              double relative_tolerance = kSteadyStateRelativeTolerance);
+                              double relative_tolerance = kSteadyStateRelativeTolerance,
+                              const std::vector<CrankSpeedExtremum>& extrema = {});
 
 // The steady state of the machine's running when the motor is switched off at `t_off` within the
 // run (motor.stop.t_off; +inf or NaN: never): detectSteadyState on the rows before t_off, since
 // the coast-down after it is no steady state. Rows at t_off already show the switched-off state.
 // `finite_rows` still counts the whole run's finite rows, so whole-run figures keep the
 // coast-down. The summary, the sizing and the start-up answers all read this one window.
-SteadyState detectRunningSteadyState(const Table& timeseries, double window_revolutions, double t_off);
+SteadyState detectRunningSteadyState(const Table& timeseries, double window_revolutions, double t_off,
+                                     const std::vector<CrankSpeedExtremum>& extrema = {});
 
 }  // namespace rollerdyn

@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
 
   SceneArgs sim_args;
   std::string out_dir, model = "multibody";
-  auto* simulate = app.add_subcommand("simulate", "simulate a scene; writes timeseries.csv, reactions.csv, summary.json");
+  auto* simulate = app.add_subcommand("simulate", "simulate a scene; writes timeseries.csv, reactions.csv, crank_speed_extrema.csv, summary.json");
   addSceneArgs(simulate, sim_args);
   simulate->add_option("--out", out_dir, "output folder (default out/<scene name>/)");
   simulate->add_option("--model", model, "multibody (Simbody, default) or reduced (the papers' reduced-mass model)")

@@ -96,8 +96,10 @@ double summaryNumber(const nlohmann::json& j, std::initializer_list<const char*>
 
 void compareSteady(const Scene& scene, ModelComparison& c) {
   const double wr = scene.simulation.steady_window_revolutions;
-  const SteadyState sm = detectSteadyState(c.multibody.timeseries, wr);
-  const SteadyState sr = detectSteadyState(c.reduced.timeseries, wr);
+  const SteadyState sm =
+      detectSteadyState(c.multibody.timeseries, wr, kSteadyStateRelativeTolerance, c.multibody.crank_speed_extrema);
+  const SteadyState sr =
+      detectSteadyState(c.reduced.timeseries, wr, kSteadyStateRelativeTolerance, c.reduced.crank_speed_extrema);
   const nlohmann::json jm = makeSummary(scene, c.multibody), jr = makeSummary(scene, c.reduced);
   struct Item {
     const char* name;

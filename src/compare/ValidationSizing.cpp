@@ -1,7 +1,8 @@
 // Validation item: the drive-sizing answers (src/analysis/DriveSizing.h, summary.json `sizing`)
 // recomputed by hand from the columns of the run's CSV tables, the files an engineer gets. The
 // hand computation follows the definitions the documentation states (steady window = the last N
-// whole crank revolutions; time means and RMS by the trapezoidal rule over the window's rows;
+// whole crank revolutions; ω's extremes over its rows and the crank speed's extrema the
+// integrator located between them, crank_speed_extrema.csv; time means and RMS by the trapezoidal rule over the window's rows;
 // P = (∫|F|³·n dt / ∫n dt)^(1/3) with the joint's rotation or swing speed n; L10 = (C/P)³·10⁶
 // revolutions, L10h = L10/(n̄/2π·3600), for the oscillating rod end L10·180°/(2γ)/(3600·f);
 // M_n = M_kr/λ) and shares no code with the sizing: only
@@ -168,8 +169,9 @@ const json& at(const json& j, std::initializer_list<const char*> path) {
 
 // The checks on one run of the scene: its CSV text and its summary.json, as a user gets them.
 void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, const std::string& ts_csv,
-              const std::string& rx_csv, const json& summary) {
+              const std::string& rx_csv, const std::string& extrema_csv, const json& summary) {
   const Csv ts = parseCsv(ts_csv);
+  const Csv ex = parseCsv(extrema_csv);
   const Csv rx = rx_csv.empty() ? Csv{} : parseCsv(rx_csv);
   const json& sz = summary.at("sizing");
   const std::vector<double>& t = ts.col("t");
@@ -189,14 +191,21 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
   Comparison cw;
   cw.add("revolutions in the window's rows", revs_rows, at(sz, {"window", "revolutions"}));
   const double w_mean = kTwoPi * win.revolutions / (win.t_end - win.t_begin);
-  const auto [wlo, whi] = std::minmax_element(w.begin() + long(b), w.begin() + long(e));
+  // ω's extremes: the window's rows and the extrema of crank_speed_extrema.csv inside the window.
+  const auto [row_lo, row_hi] = std::minmax_element(w.begin() + long(b), w.begin() + long(e));
+  double wlo = *row_lo, whi = *row_hi;
+  for (std::size_t i = 0; i < ex.col("t").size(); ++i)
+    if (ex.col("t")[i] >= win.t_begin && ex.col("t")[i] <= win.t_end) {
+      wlo = std::min(wlo, ex.col("omega_crank")[i]);
+      whi = std::max(whi, ex.col("omega_crank")[i]);
+    }
   double eps_max = 0;
   for (std::size_t i = b; i < e; ++i) eps_max = std::max(eps_max, std::abs(ts.col("eps_crank")[i]));
-  const double delta = (*whi - *wlo) / w_mean, H = eps_max / (w_mean * w_mean);
+  const double delta = (whi - wlo) / w_mean, H = eps_max / (w_mean * w_mean);
   cw.add("ω_mean = 2πN/Δt", w_mean, at(summary, {"omega_crank", "mean"}));
-  cw.add("ω_min", *wlo, at(summary, {"omega_crank", "min"}));
-  cw.add("ω_max", *whi, at(summary, {"omega_crank", "max"}));
-  cw.add("δ", delta, at(summary, {"delta"}), *whi / w_mean);  // a difference: judged against its operands
+  cw.add("ω_min", wlo, at(summary, {"omega_crank", "min"}));
+  cw.add("ω_max", whi, at(summary, {"omega_crank", "max"}));
+  cw.add("δ", delta, at(summary, {"delta"}), whi / w_mean);  // a difference: judged against its operands
   cw.add("H", H, at(summary, {"H"}));
   cw.add("k_p", delta * delta + H, at(summary, {"k_p"}));
   s.claim(cw.holds() && dtb <= kTimeSeconds && dte <= kTimeSeconds,
@@ -283,7 +292,7 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
     const double target = sc.sizing.target_delta;
     const double added_energy = target > 0 ? std::max(0.0, J * (delta / target - 1.0)) : kNaN;
     // ΔJ inherits δ's operands: judged against J·(ω_max/ω_mean)/δ*.
-    k.add("ΔJ = J·(δ/δ* - 1)", added_energy, at(f, {"added_inertia_energy_method"}), J * (*whi / w_mean) / target);
+    k.add("ΔJ = J·(δ/δ* - 1)", added_energy, at(f, {"added_inertia_energy_method"}), J * (whi / w_mean) / target);
     // The excess-work method: ΔA (from the load law at constant speed, checked on its own in the
     // tests against ½ω²(J_max - J_min) of a load-free machine) over δ*·ω̄², ω̄ from the rows here.
     const json& dA = at(f, {"excess_work"});
@@ -294,7 +303,7 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
       k.add("J* = ΔA/(δ*·ω̄²)", J_req, at(f, {"inertia_required"}));
       k.add("ΔJ = max(J* - J, J·(δ/δ* - 1))", added, at(f, {"added_inertia_crankshaft"}), J_req);
     } else {
-      k.add("ΔJ (no ΔA: energy method)", added_energy, at(f, {"added_inertia_crankshaft"}), J * (*whi / w_mean) / target);
+      k.add("ΔJ (no ΔA: energy method)", added_energy, at(f, {"added_inertia_crankshaft"}), J * (whi / w_mean) / target);
     }
     s.claim(k.holds(), who + ": coupling torque mean " + g(integral(t, Mc, b, e) / span, 4) + ", peak " + g(cpeak, 4) +
                            ", swing " + g(*chi - *clo, 4) + " N·m; kinetic energy swing per revolution ΔT = " + g(dT, 4) +
@@ -410,7 +419,8 @@ ValidationSection driveSizingChecks(const ItemContext& ctx) {
     if (!run.stats.complete) throw std::runtime_error(run.model + " run ended early: " + run.stats.status);
     const json summary = json::parse(makeSummary(sc, run).dump());  // as summary.json stores it
     checkRun(s, sc, multibody ? "multibody model" : "reduced model", toCsv(run.timeseries),
-             run.reactions.columns.empty() ? std::string() : toCsv(run.reactions), summary);
+             run.reactions.columns.empty() ? std::string() : toCsv(run.reactions),
+             toCsv(crankSpeedExtremaTable(run.crank_speed_extrema)), summary);
   }
   return s;
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "analysis/CrankSpeedExtrema.h"
 #include "analysis/OutputGrid.h"
 #include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
@@ -331,6 +332,20 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   p.bdf = motor && lawIsStiff(&motor->law());
   if (p.bdf) run.integrator = "cvode-bdf (minimal coordinates)";
   p.rhs = [&ms](double t, const double* y, double* ydot) { return ms.rhs(t, y, ydot); };
+  // The crank speed's extrema inside CVODE's steps, located on its own interpolant (a prescribed
+  // speed has none).
+  CrankSpeedExtremaFinder extrema;
+  const AdamsIntegrator* stepping = nullptr;  // set once the integrator exists
+  const int i_omega = L.omega;
+  const CrankSpeedExtremaFinder::Dense dense = [&stepping, i_omega](double t, double& w, double& eps) {
+    w = stepping->interpolate(t, 0, i_omega);
+    eps = stepping->interpolate(t, 1, i_omega);
+  };
+  if (i_omega >= 0)
+    p.on_step = [&](double t, const double* y, const double* ydot, bool after_step) {
+      if (after_step && stepping) extrema.stepTo(t, y[i_omega], ydot[i_omega], dense);
+      else extrema.restart(t, y[i_omega], ydot[i_omega]);
+    };
   // Switching events of the starting method (motor/Supply.h): CVODE stops at the next timed one
   // (stop time) and at a speed-triggered one (root finding of ω_r - ω_switch on its
   // interpolant); the event is applied to y and CVODE restarts from there.
@@ -342,6 +357,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     return ratio * (w_crank + w_twist) - trigger_speed;
   };
   AdamsIntegrator integ(p);
+  stepping = &integ;
   auto arm = [&]() {
     const SupplyPhase phase = ms.phase();
     const double te = motor->supply().nextEventTime(phase);
@@ -484,6 +500,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     }
   }
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  run.crank_speed_extrema = extrema.takeUpTo(run.timeseries.rows.empty() ? t_last : run.timeseries.rows.back()[0]);
   run.stats.steps = integ.steps();
   run.stats.realizations = integ.rhsEvaluations();
   run.stats.jacobian_evaluations = integ.jacobianEvaluations();

@@ -153,6 +153,8 @@ class MultibodyModel {
 
   double crankAngle(const SimTK::State& s) const { return crank_.getOneQ(s, 0); }
   double crankSpeed(const SimTK::State& s) const { return crank_.getOneU(s, 0); }
+  // dω/dt of the crank [rad/s²]; s realized to Acceleration.
+  double crankAcceleration(const SimTK::State& s) const { return crank_.getOneUDot(s, 0); }
   double motorSpeed(const SimTK::State& s) const;   // reduced to the crank axis
   double motorTorque(const SimTK::State& s) const;  // reduced to the crank axis, 0 without motor
   double couplingTorque(const SimTK::State& s) const;  // rigid coupling: Acceleration stage

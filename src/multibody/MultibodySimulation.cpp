@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "analysis/CrankSpeedExtrema.h"
 #include "analysis/OutputGrid.h"
 #include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
@@ -139,6 +140,8 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   const SimTK::State* last_row = &integ->getState();
   SimTK::Vector y_prev = integ->getState().getY(), ydot_prev = integ->getState().getYDot();
   double t_prev = integ->getTime();
+  CrankSpeedExtremaFinder extrema;  // the crank speed's extrema inside the steps, on the rows' interpolant
+  extrema.restart(t_prev, model.crankSpeed(integ->getState()), model.crankAcceleration(integ->getState()));
   double t_stop = nextStop(integ->getState()), trigger = triggerOf(integ->getState());
   SimTK::State switched;  // the state at an event, switched
   long steps_before = 0, realizations_before = 0;  // counted before the last restart at an event
@@ -157,6 +160,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
     double t_now = advanced.getTime();
     // An event in this step: the speed trigger crossed inside it, or the step ended at a timed event.
     bool event = false, by_speed = false;
+    extrema.stepTo(advanced.getTime(), model.crankSpeed(advanced), model.crankAcceleration(advanced));
     if (!std::isnan(trigger) && motor->rotorSpeed(advanced) >= trigger) {
       switched = advanced;
       t_now = locateSpeedTrigger(model, t_prev, y_prev, ydot_prev, advanced, trigger, constraint_tol, switched);
@@ -212,6 +216,9 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
         break;
       }
       system.realize(integ->getState(), SimTK::Stage::Acceleration);
+      // The step's extrema after the event belonged to the old supply: drop them, start afresh.
+      extrema.dropAfter(t_now);
+      extrema.restart(t_now, model.crankSpeed(integ->getState()), model.crankAcceleration(integ->getState()));
       sample = integ->getState();  // rows interpolated from now on carry the new supply phase
       t_stop = nextStop(integ->getState());
       trigger = triggerOf(integ->getState());
@@ -225,6 +232,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
     t_prev = t_now;
   }
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  run.crank_speed_extrema = extrema.takeUpTo(last_row->getTime());
   run.stats.steps = steps_before + integ->getNumStepsTaken();
   run.stats.realizations = realizations_before + integ->getNumRealizations();
 

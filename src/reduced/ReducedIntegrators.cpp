@@ -14,12 +14,14 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "analysis/CrankSpeedExtrema.h"
 #include "analysis/OutputGrid.h"
 #include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
 #include "motor/MotorColumns.h"
 #include "motor/Stiffness.h"
 #include "physics/IntegrationScales.h"
+#include "reduced/CvodeStepByStep.h"
 #include "reduced/EigenSundials.h"
 #include "reduced/ReducedModel.h"
 
@@ -161,6 +163,8 @@ void cvodeErrHandler(int error_code, const char* module, const char* function, c
 struct CvodeResources {
   SUNContext ctx = nullptr;
   N_Vector y = nullptr;
+  N_Vector dky = nullptr;      // ẏ from CVODE's interpolant, for the crank speed's extrema
+  N_Vector dense_y = nullptr;  // y or ẏ inside the last step, likewise
   void* cv = nullptr;
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
@@ -171,6 +175,8 @@ struct CvodeResources {
     if (cv) CVodeFree(&cv);
     if (LS) SUNLinSolFree(LS);
     if (A) SUNMatDestroy(A);
+    if (dky) N_VDestroy(dky);
+    if (dense_y) N_VDestroy(dense_y);
     if (y) N_VDestroy(y);
     if (ctx) SUNContext_Free(&ctx);
   }
@@ -300,12 +306,34 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   res.reactions.rows.reserve(times.size());
   ModelEvaluation e;  // reused for every output row (keeps its carts' storage)
   Eigen::VectorXd y_last = ym;
+  // The crank speed's extrema inside CVODE's steps (analysis/CrankSpeedExtrema.h): CVODE's normal
+  // mode (advance to the output time, interpolate there) taken one internal step at a time, each
+  // step's end observed with ε from CVODE's interpolant; at a (re)start ε is f itself.
+  CrankSpeedExtremaFinder extrema;
+  N_Vector dky = sun.dky = N_VClone(y);
+  const int i_omega = m.iOmega();
+  auto observeStart = [&](double t0) {
+    if (cvodeRhs(t0, y, dky, &ud) != 0) N_VConst(std::numeric_limits<double>::quiet_NaN(), dky);
+    extrema.restart(t0, ym(i_omega), NV_Ith_S(dky, i_omega));
+  };
+  // CVODE's interpolant of its last step (valid there only: called right after the step).
+  N_Vector dense_y = sun.dense_y = N_VClone(y);
+  const CrankSpeedExtremaFinder::Dense dense = [&](double tq, double& w, double& eps) {
+    w = CVodeGetDky(cv, tq, 0, dense_y) == CV_SUCCESS ? NV_Ith_S(dense_y, i_omega) : std::nan("");
+    eps = CVodeGetDky(cv, tq, 1, dense_y) == CV_SUCCESS ? NV_Ith_S(dense_y, i_omega) : std::nan("");
+  };
+  CvodeStepByStep stepper;
+  const auto observeStep = [&](double t_step) {
+    if (CVodeGetDky(cv, t_step, 1, dky) != CV_SUCCESS) N_VConst(std::numeric_limits<double>::quiet_NaN(), dky);
+    extrema.stepTo(t_step, ym(i_omega), NV_Ith_S(dky, i_omega), dense);
+  };
+  observeStart(times.front());
   for (size_t k = 0; k < times.size(); ++k) {
     double t = times[k];
     if (k > 0) {
       realtype tret = t;
       while (true) {
-        flag = CVode(cv, t, y, &tret, CV_NORMAL);
+        flag = stepper.advance(cv, t, y, tret, observeStep);
         if (flag < 0) break;
         // CVODE returns at the stop time with CV_TSTOP_RETURN, or with CV_SUCCESS when the output
         // time is the stop time: either way the events due there are applied here.
@@ -318,6 +346,9 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
           flag = CVodeReInit(cv, tret, y);
           if (flag < 0) break;
           arm(tret);
+          stepper.restarted();
+          extrema.dropAfter(tret);
+          observeStart(tret);
         }
         if (reachedOutputTime(tret, t)) break;
       }
@@ -361,6 +392,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
     }
   }
   res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
+  res.crank_speed_extrema = extrema.takeUpTo(res.timeseries.rows.empty() ? times.front() : res.timeseries.rows.back()[0]);
 
   long nsteps = 0;
   CVodeGetNumSteps(cv, &nsteps);
@@ -433,6 +465,10 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
 
   bool stalled = false;
   double J_i = m.reducedInertia(phi);
+  // The scheme's ω is linear within each step (eq. (10), (11)): its extrema lie on the nodes,
+  // where the slope changes sign.
+  CrankSpeedExtremaFinder extrema;
+  double slope_before = 0.0;
   while (t < times.back()) {
     Eigen::VectorXd yi = Eigen::VectorXd::Zero(m.stateSize());
     yi(m.iPhi()) = phi;
@@ -474,6 +510,8 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
       W_load -= sigma * c.roller_force * c.pose.dx_B * dphi;
     }
     emitUpTo(t_next, phi + dphi, w_next, eps);
+    if ((slope_before < 0.0 && w_next > w) || (slope_before > 0.0 && w_next < w)) extrema.record(t, w);
+    if (w_next != w) slope_before = w_next - w;
     phi += dphi;
     w = w_next;
     t = t_next;
@@ -481,6 +519,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     ++res.stats.steps;
   }
   res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
+  res.crank_speed_extrema = extrema.takeUpTo(res.timeseries.rows.empty() ? 0.0 : res.timeseries.rows.back()[0]);
   if (stalled) {
     res.stats.complete = false;
     res.stats.status = StallDetector::statusAt(t);

@@ -108,6 +108,7 @@ OutputFolder readOutputFolder(const std::string& dir) {
 void writeRunTables(const std::string& dir, const RunResult& run) {
   namespace fs = std::filesystem;
   writeCsvAtomic(dir + "/timeseries.csv", run.timeseries);
+  writeCsvAtomic(dir + "/crank_speed_extrema.csv", crankSpeedExtremaTable(run.crank_speed_extrema));
   const std::string reactions = (fs::path(dir) / "reactions.csv").string();
   if (!run.reactions.columns.empty()) {
     writeCsvAtomic(reactions, run.reactions);

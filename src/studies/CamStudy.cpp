@@ -73,7 +73,8 @@ DriveResponse driveResponse(const Scene& sc, const RunResult& run) {
   r.drive = toString(sc.drive);
   r.status = run.stats.status;
   r.complete = run.stats.complete;
-  const SteadyState ss = detectSteadyState(run.timeseries, sc.simulation.steady_window_revolutions);
+  const SteadyState ss = detectSteadyState(run.timeseries, sc.simulation.steady_window_revolutions,
+                                           kSteadyStateRelativeTolerance, run.crank_speed_extrema);
   r.steady = ss.reached;
   const Table& ts = run.timeseries;
   const int it = ts.index("t"), iw = ts.index("omega_crank"), ix = ts.index("x_cart_1"),

@@ -180,3 +180,52 @@ TEST(SteadyState, MissingColumnsOrEmptyTableDoNotThrow) {
   EXPECT_NO_THROW(ss = detectSteadyState(no_phi, 3));
   EXPECT_FALSE(ss.note.empty());
 }
+
+namespace {
+
+// A motion whose every revolution has the same mean speed while its waveform still settles:
+// ω = ω_s + A(t)·sin(2θ) with the ripple A(t) = a·(1 + e^{-t/τ}) decaying slowly; φ taken as
+// ω_s·t (the ripple's mean over a revolution is 0 to first order, so the per-revolution means
+// agree to ~a/ω_s·(T/τ)·e^{-t/τ}, far inside 1e-3).
+Table settlingRipple(double t_end, double ws, double a, double tau) {
+  return motion([=](double t) { return ws * t; },
+                [=](double t) { return ws + a * (1 + std::exp(-t / tau)) * std::sin(2 * ws * t); }, t_end, 1e-3);
+}
+
+}  // namespace
+
+TEST(SteadyState, TheRevolutionsExtremesMustRepeatAsWellAsTheirMeans) {
+  // ω_s = 10 rad/s, a = 0.5 rad/s, τ = 3 s: at t = 8 s the ripple's amplitude still falls by
+  // a·e^{-t/τ}·T/τ ≈ 0.5·0.07·0.21 = 7e-3 rad/s per revolution, 7e-4 of ω_s but 3.5e-3 over the
+  // five revolutions of the window: not steady by the extremes (the means agree throughout).
+  const SteadyState early = detectSteadyState(settlingRipple(8.0, 10.0, 0.5, 3.0), 5);
+  ASSERT_GE(early.revolutions_counted, 10);
+  for (const CrankRevolution& r : early.revolutions) EXPECT_NEAR(r.omega_mean, 10.0, 1e-2);
+  EXPECT_FALSE(early.reached);
+  // By t = 40 s the ripple's decay is e^{-40/3} ≈ 2e-6 of a: the extremes repeat.
+  EXPECT_TRUE(detectSteadyState(settlingRipple(40.0, 10.0, 0.5, 3.0), 5).reached);
+}
+
+TEST(SteadyState, ExtremaLocatedBetweenTheRowsSettleWhatTheRowsCannot) {
+  // A sharp dip once per revolution: ω = 10 − 3·exp(−(s/w)²), s the time from the revolution's
+  // middle, width w = 2 ms, against rows 5 ms apart whose phase slides every revolution: the rows
+  // see the dip's bottom at 7 … 10 rad/s, one revolution to the next.
+  const double ws = 10.0, T = 2 * kPi / ws, w = 2e-3;
+  const auto omega = [&](double t) {
+    const double s = std::fmod(t, T) - 0.5 * T;
+    return ws - 3.0 * std::exp(-(s / w) * (s / w));
+  };
+  // φ: ω's integral, the dip's area subtracted per revolution (√π·w·3 each).
+  const double dip_area = std::sqrt(kPi) * w * 3.0;
+  const auto phi = [&](double t) {
+    const double k = std::floor(t / T), s = std::fmod(t, T) - 0.5 * T;
+    return ws * t - k * dip_area - 0.5 * dip_area * (1 + std::erf(s / w));
+  };
+  const Table ts = motion(phi, omega, 20.0, 5e-3);
+  EXPECT_FALSE(detectSteadyState(ts, 5).reached);  // the rows' minima do not repeat
+  std::vector<CrankSpeedExtremum> extrema;
+  for (double tm = 0.5 * T; tm < 20.0; tm += T) extrema.push_back({tm, 7.0});
+  const SteadyState ss = detectSteadyState(ts, 5, kSteadyStateRelativeTolerance, extrema);
+  EXPECT_TRUE(ss.reached);
+  EXPECT_DOUBLE_EQ(ss.revolutions.back().omega_min, 7.0);
+}

@@ -64,10 +64,10 @@ TEST(CliPlot, SimulateWithPlotThenPlotAgain) {
   ASSERT_EQ(plot.exit_code, 0) << plot.out << plot.err;
   EXPECT_EQ(stems(figs, ".png"), kElasticFigures) << plot.out;
   EXPECT_EQ(plot.out.find("without its Kloss curve"), std::string::npos) << plot.out;
-  // Only the three outputs and the figures: no temporary or stray files.
+  // Only the four outputs and the figures: no temporary or stray files.
   for (const std::string& f : tree(out.path()))
-    EXPECT_TRUE(f == "timeseries.csv" || f == "reactions.csv" || f == "summary.json" || f == "figures" ||
-                f.rfind("figures/", 0) == 0)
+    EXPECT_TRUE(f == "timeseries.csv" || f == "reactions.csv" || f == "crank_speed_extrema.csv" ||
+                f == "summary.json" || f == "figures" || f.rfind("figures/", 0) == 0)
         << "unexpected " << f;
 }
 

@@ -154,6 +154,19 @@ def test_b_fails_when_delta_moves_beyond_the_steady_tolerance():
     assert any("δ" in m for m in invariants.longer_run_same_verdicts(ctx(double={"exit": 0, "summary": s2})))
 
 
+def test_b_judges_the_extremes_against_the_mean_speed():
+    # A crank that nearly stops once per revolution: ω_min ≈ 0 moves by 4e-3 rad/s between the two
+    # runs, 20 % of itself but 4e-4 of the mean speed: within what the steady criterion lets
+    # through (2τ·|ω̄|, τ of the mean); 0.05 rad/s (5e-3 of ω̄) is not.
+    s1, s2 = summary(), summary(simulated_time=20.0)
+    s1["omega_crank"].update(mean=10.0, min=-0.020)
+    s2["omega_crank"].update(mean=10.0, min=-0.016)
+    assert invariants.longer_run_same_verdicts(ctx(s=s1, double={"exit": 0, "summary": s2})) == []
+    s2["omega_crank"]["min"] = 0.03
+    v = invariants.longer_run_same_verdicts(ctx(s=s1, double={"exit": 0, "summary": s2}))
+    assert any("omega_crank.min" in m for m in v), v
+
+
 def test_b_does_not_apply_without_a_steady_state():
     s = summary()
     s["steady_state"]["reached"] = False
@@ -309,6 +322,25 @@ def test_f_judges_a_drive_that_hardly_moves_against_a_kilojoule():
     assert invariants.energy_closes(ctx(s=s)) == []
     s["energy"]["residual"] = -1.5
     assert invariants.energy_closes(ctx(s=s))
+
+
+def baranov_ctx(residual, residual_half):
+    c = ctx()
+    c["scene"]["reduced"] = {"integrator": "baranov", "baranov_step_deg": 1.0}
+    c["base"]["summary"]["energy"] = {"motor_work": 3630.0, "kinetic_change": 2372.0, "residual": residual}
+    half = summary()
+    half["energy"] = {"motor_work": 3630.0, "kinetic_change": 2372.0, "residual": residual_half}
+    c["half_step"] = {"exit": 0, "summary": half}
+    return c
+
+
+def test_f_holds_baranovs_scheme_to_its_first_order_error():
+    # The scheme's residual is O(h): 41 J of 3630 J (1.1e-2) at 1° is within h = 1.75e-2 and halves
+    # at 0.5°; a residual that stays when the step halves is a term the audit misses, and 70 J
+    # (1.9e-2) is beyond h.
+    assert invariants.energy_closes(baranov_ctx(41.0, 20.5)) == []
+    assert invariants.energy_closes(baranov_ctx(41.0, 40.0))
+    assert invariants.energy_closes(baranov_ctx(70.0, 35.0))
 
 
 # --- (g) ----------------------------------------------------------------------------------------

@@ -12,6 +12,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include "reduced/CvodeStepByStep.h"
 #include "reduced/EigenSundials.h"
 
 namespace rollerdyn {
@@ -21,6 +22,7 @@ struct AdamsIntegrator::Impl {
   SUNContext ctx = nullptr;
   N_Vector y = nullptr;
   N_Vector ewt = nullptr;  // CVODE's error weights, copied for the structured Jacobian
+  N_Vector scratch = nullptr;  // CVODE's interpolant at a time inside the last step
   void* cv = nullptr;
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
@@ -30,16 +32,34 @@ struct AdamsIntegrator::Impl {
   long rhs_evals = 0;
   long steps_before = 0, jacobians_before = 0, failures_before = 0;  // counted before the last restart
   bool root_found = false;
+  CvodeStepByStep stepper;  // with AdamsProblem::on_step: the normal mode one step at a time
   double stop_time = 0;
   std::string error;
   std::string rhs_exception;  // what the right-hand side threw, if it did
 
+  // AdamsProblem::on_step at a (re)start: ẏ = f(t, y) evaluated here.
+  void observeStart() {
+    if (!problem.on_step) return;
+    Eigen::VectorXd yd(y_out.size());
+    if (!problem.rhs(t, y_out.data(), yd.data())) yd.setConstant(std::numeric_limits<double>::quiet_NaN());
+    problem.on_step(t, y_out.data(), yd.data(), false);
+  }
+  // AdamsProblem::on_step at the end of the internal step just taken (y holds y(t_step)).
+  void observeStep(double t_step) {
+    if (!scratch) scratch = N_VClone(y);
+    if (CVodeGetDky(cv, t_step, 1, scratch) != CV_SUCCESS) N_VConst(std::numeric_limits<double>::quiet_NaN(), scratch);
+    // A copy: the observer may call interpolate(), which writes the scratch vector.
+    const Eigen::VectorXd yd = Eigen::Map<const Eigen::VectorXd>(NV_DATA_S(scratch), NV_LENGTH_S(scratch));
+    problem.on_step(t_step, NV_DATA_S(y), yd.data(), true);
+  }
   ~Impl() {
+    stepper.release();
     if (cv) CVodeFree(&cv);
     if (NLS) SUNNonlinSolFree(NLS);
     if (LS) SUNLinSolFree(LS);
     if (A) SUNMatDestroy(A);
     if (ewt) N_VDestroy(ewt);
+    if (scratch) N_VDestroy(scratch);
     if (y) N_VDestroy(y);
     if (ctx) SUNContext_Free(&ctx);
   }
@@ -199,6 +219,7 @@ AdamsIntegrator::AdamsIntegrator(const AdamsProblem& problem) : impl_(new Impl) 
   m.stop_time = problem.stop_time;
   if (flag == CV_SUCCESS && problem.max_step > 0) flag = CVodeSetMaxStep(m.cv, problem.max_step);
   if (flag != CV_SUCCESS) throw std::runtime_error("CVODE setup failed: " + m.error);
+  m.observeStart();
 }
 
 AdamsIntegrator::~AdamsIntegrator() = default;
@@ -206,8 +227,14 @@ AdamsIntegrator::~AdamsIntegrator() = default;
 bool AdamsIntegrator::advanceTo(double t_out) {
   Impl& m = *impl_;
   realtype t_ret = m.t;
-  const int flag = CVode(m.cv, t_out, m.y, &t_ret, CV_NORMAL);
-  m.root_found = flag == CV_ROOT_RETURN;
+  int flag;
+  if (m.problem.on_step) {
+    flag = m.stepper.advance(m.cv, t_out, m.y, t_ret, [&m](double t_step) { m.observeStep(t_step); });
+    m.root_found = flag == CV_ROOT_RETURN;
+  } else {
+    flag = CVode(m.cv, t_out, m.y, &t_ret, CV_NORMAL);
+    m.root_found = flag == CV_ROOT_RETURN;
+  }
   if (flag < 0) {
     char* name = CVodeGetReturnFlagName(flag);
     m.error = std::string(name ? name : "?") + " " + m.error +
@@ -252,6 +279,14 @@ void AdamsIntegrator::restart(double t, const Eigen::VectorXd& y) {
   m.t = t;
   m.y_out = y;
   m.root_found = false;
+  m.stepper.restarted();
+  m.observeStart();
+}
+
+double AdamsIntegrator::interpolate(double t, int k, int i) const {
+  Impl& m = *impl_;
+  if (!m.scratch) m.scratch = N_VClone(m.y);
+  return CVodeGetDky(m.cv, t, k, m.scratch) == CV_SUCCESS ? NV_Ith_S(m.scratch, i) : std::nan("");
 }
 
 double AdamsIntegrator::time() const { return impl_->t; }

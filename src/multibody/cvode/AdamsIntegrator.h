@@ -62,6 +62,13 @@ struct AdamsProblem {
   // g(t, y) crosses zero upwards, located by CVODE's root finding on its interpolant (e.g. a rotor
   // speed reaching a switching speed: g = ω - ω_switch).
   std::function<double(double t, const double* y)> root;
+  // Optional observer of the integrator's own steps: called with (t, y, ẏ, after_step) at the
+  // initial point and at every restart (after_step false; ẏ = f itself) and at the end of every
+  // internal step (after_step true; ẏ is the derivative of CVODE's interpolating polynomial, and
+  // AdamsIntegrator::interpolate reaches inside the step). advanceTo then steps one internal step
+  // at a time and interpolates the output as CVODE's normal mode does: the same steps, the same
+  // output, and what happens between output times seen (e.g. analysis/CrankSpeedExtrema.h).
+  std::function<void(double t, const double* y, const double* ydot, bool after_step)> on_step;
 };
 
 class AdamsIntegrator {
@@ -84,6 +91,8 @@ class AdamsIntegrator {
   // Continues from (t, y) as from a new initial value (after the run changed y or the equations
   // discontinuously at t): the method restarts at order 1. Counters keep counting.
   void restart(double t, const Eigen::VectorXd& y);
+  // CVODE's interpolant of its last step (valid inside it, e.g. from AdamsProblem::on_step).
+  double interpolate(double t, int k, int i) const;
   double time() const;
   const Eigen::VectorXd& y() const;
   long steps() const;

@@ -1,0 +1,96 @@
+#include "analysis/CrankSpeedExtrema.h"
+
+#include <cmath>
+
+namespace rollerdyn {
+
+void CrankSpeedExtremaFinder::step(double t0, double w0, double e0, double t1, double w1, double e1) {
+  const double h = t1 - t0;
+  if (!(h > 0) || !std::isfinite(w0) || !std::isfinite(w1) || !std::isfinite(e0) || !std::isfinite(e1)) return;
+  if (!((e0 < 0 && e1 > 0) || (e0 > 0 && e1 < 0))) return;
+  // ω(s) = h00·ω0 + h10·h·ε0 + h01·ω1 + h11·h·ε1, s = (t − t0)/h ∈ [0, 1]. Its derivative in s is
+  // the quadratic a·s² + b·s + c with c = h·ε0 and a + b + c = h·ε1; the remaining coefficient
+  // comes from the cubic's end values: dω/ds = 6(s − s²)(ω1 − ω0) + h·ε0·(1 − 4s + 3s²) + h·ε1·(3s² − 2s).
+  const double D = w1 - w0, p = h * e0, q = h * e1;
+  const double a = -6.0 * D + 3.0 * p + 3.0 * q, b = 6.0 * D - 4.0 * p - 2.0 * q, c = p;
+  // The derivative changes sign on (0, 1), so it has exactly one root there (or three counted with a
+  // double root, which a quadratic cannot have with opposite signs at the ends): bracket and refine.
+  double s;
+  if (std::abs(a) < 1e-14 * (std::abs(b) + std::abs(c))) {
+    s = -c / b;
+  } else {
+    const double disc = std::sqrt(std::max(0.0, b * b - 4.0 * a * c));
+    // Cancellation-free roots of the quadratic; take the one inside (0, 1).
+    const double qq = -0.5 * (b + std::copysign(disc, b));
+    const double r1 = qq / a, r2 = qq != 0.0 ? c / qq : r1;
+    s = (r1 > 0.0 && r1 < 1.0) ? r1 : r2;
+  }
+  if (!(s > 0.0 && s < 1.0)) s = std::fmin(1.0, std::fmax(0.0, s));
+  const double s2 = s * s, s3 = s2 * s;
+  const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+  extrema_.push_back({t0 + s * h, h00 * w0 + h10 * p + h01 * w1 + h11 * q});
+}
+
+void CrankSpeedExtremaFinder::restart(double t, double omega, double eps) {
+  have_last_ = true;
+  t_ = t;
+  omega_ = omega;
+  eps_ = eps;
+}
+
+void CrankSpeedExtremaFinder::stepTo(double t, double omega, double eps, const Dense& dense) {
+  if (have_last_ && t > t_) {
+    const bool sign_change = (eps_ < 0 && eps > 0) || (eps_ > 0 && eps < 0);
+    if (dense && sign_change) {
+      // Regula falsi with the Illinois modification on ε(t) of the integrator's interpolant.
+      double a = t_, b = t, fa = eps_, fb = eps, w = omega, e = eps;
+      int side = 0;
+      for (int it = 0; it < 60 && b - a > 1e-12 * (t - t_); ++it) {
+        const double c = (a * fb - b * fa) / (fb - fa);
+        dense(c, w, e);
+        if (!std::isfinite(e)) break;
+        if ((e < 0) == (fa < 0)) {
+          a = c;
+          fa = e;
+          if (side == -1) fb *= 0.5;
+          side = -1;
+        } else {
+          b = c;
+          fb = e;
+          if (side == 1) fa *= 0.5;
+          side = 1;
+        }
+        if (e == 0.0) {
+          a = b = c;
+          break;
+        }
+      }
+      const double tx = 0.5 * (a + b);
+      dense(tx, w, e);
+      if (std::isfinite(w)) extrema_.push_back({tx, w});
+      else step(t_, omega_, eps_, t, omega, eps);
+    } else {
+      step(t_, omega_, eps_, t, omega, eps);
+    }
+  }
+  restart(t, omega, eps);
+}
+
+void CrankSpeedExtremaFinder::dropAfter(double t) {
+  while (!extrema_.empty() && !(extrema_.back().t <= t)) extrema_.pop_back();
+}
+
+std::vector<CrankSpeedExtremum> CrankSpeedExtremaFinder::takeUpTo(double t_last) {
+  dropAfter(t_last);
+  return std::move(extrema_);
+}
+
+Table crankSpeedExtremaTable(const std::vector<CrankSpeedExtremum>& extrema) {
+  Table t;
+  t.columns = {"t", "omega_crank"};
+  t.rows.reserve(extrema.size());
+  for (const CrankSpeedExtremum& x : extrema) t.rows.push_back({x.t, x.omega});
+  return t;
+}
+
+}  // namespace rollerdyn
