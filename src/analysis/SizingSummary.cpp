@@ -334,6 +334,8 @@ std::string sizingText(const json& summary) {
   const json& wr = jsonMember(s, "whole_run");
   const json& reached = jsonMember(jsonMember(summary, "steady_state"), "reached");
   const bool steady = !reached.is_boolean() || reached.get<bool>();
+  // Each figure's window named as the heading names it: no "steady window" where there is none.
+  const char* win = steady ? " (steady window)" : " (the run's last part)";
   o << "drive sizing over the " << (steady ? "steady window" : "run's last part (no steady state)") << " t = "
     << fmt(jsonMember(w, "t_begin"), "%.4g") << " ... " << fmt(jsonMember(w, "t_end"), "%.4g") << " s ("
     << fmt(jsonMember(w, "revolutions"), "%.3g") << " crank revolutions)"
@@ -345,12 +347,12 @@ std::string sizingText(const json& summary) {
     const json &ts = jsonMember(m, "torque_shaft"), &tc = jsonMember(m, "torque_crank");
     const json& r = jsonMember(m, "whole_run");
     o << "  motor torque at the rotor M       mean " << fmt(jsonMember(ts, "mean"), "%.4g") << ", RMS "
-      << fmt(jsonMember(ts, "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(ts, "peak"), "%.4g") << " N·m (steady window)\n"
+      << fmt(jsonMember(ts, "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(ts, "peak"), "%.4g") << " N·m" << win << "\n"
       << "                                    mean " << fmt(jsonMember(jsonMember(r, "torque_shaft"), "mean"), "%.4g") << ", RMS "
       << fmt(jsonMember(jsonMember(r, "torque_shaft"), "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(jsonMember(r, "torque_shaft"), "peak"), "%.4g")
       << " N·m (whole run)\n";
     o << "  motor torque at the crank M·u·η   mean " << fmt(jsonMember(tc, "mean"), "%.4g") << ", RMS "
-      << fmt(jsonMember(tc, "rms"), "%.4g") << ", peak " << fmt(jsonMember(tc, "peak"), "%.4g") << " N·m (steady window)\n";
+      << fmt(jsonMember(tc, "rms"), "%.4g") << ", peak " << fmt(jsonMember(tc, "peak"), "%.4g") << " N·m" << win << "\n";
     o << "  nominal torque M_n                " << fmt(jsonMember(m, "nominal_torque"), "%.4g") << " N·m ("
       << str(jsonMember(m, "nominal_torque_source")) << "); breakdown torque M_kr " << fmt(jsonMember(m, "breakdown_torque"), "%.4g")
       << " N·m";
@@ -359,14 +361,14 @@ std::string sizingText(const json& summary) {
     o << "\n";
     const json &ps = jsonMember(m, "power_shaft"), &pl = jsonMember(m, "power_line"), &sl = jsonMember(m, "slip");
     o << "  shaft power M·ω_r                 mean " << fmt(jsonMember(ps, "mean"), "%.4g", 1e-3) << ", peak "
-      << fmt(jsonMember(ps, "peak"), "%.4g", 1e-3) << " kW (steady window)\n";
+      << fmt(jsonMember(ps, "peak"), "%.4g", 1e-3) << " kW" << win << "\n";
     o << "  power drawn from the line         mean " << fmt(jsonMember(pl, "mean"), "%.4g", 1e-3) << ", peak "
-      << fmt(jsonMember(pl, "peak"), "%.4g", 1e-3) << " kW (steady window); mean "
+      << fmt(jsonMember(pl, "peak"), "%.4g", 1e-3) << " kW" << win << "; mean "
       << fmt(jsonMember(jsonMember(r, "power_line"), "mean"), "%.4g", 1e-3) << ", peak " << fmt(jsonMember(jsonMember(r, "power_line"), "peak"), "%.4g", 1e-3)
       << " kW (whole run)\n"
       << "                                    (" << str(jsonMember(m, "line_power_basis")) << ")\n";
     o << "  slip s = 1 - ω_r/ω0               " << fmt(jsonMember(sl, "min"), "%.4f") << " ... "
-      << fmt(jsonMember(sl, "max"), "%.4f") << " (steady window); " << fmt(jsonMember(jsonMember(r, "slip"), "min"), "%.4f") << " ... "
+      << fmt(jsonMember(sl, "max"), "%.4f") << win << "; " << fmt(jsonMember(jsonMember(r, "slip"), "min"), "%.4f") << " ... "
       << fmt(jsonMember(jsonMember(r, "slip"), "max"), "%.4f") << " (whole run)\n";
     const json& e_rev = jsonMember(m, "energy_per_revolution");
     o << "  motor energy per crank revolution "
@@ -379,7 +381,7 @@ std::string sizingText(const json& summary) {
   const json& c = jsonMember(s, "coupling");
   if (c.is_object()) {
     o << "  coupling torque (crank axis)      mean " << fmt(jsonMember(c, "mean"), "%.4g") << ", peak |M| "
-      << fmt(jsonMember(c, "peak"), "%.4g") << ", swing " << fmt(jsonMember(c, "swing"), "%.4g") << " N·m (steady window); peak |M| "
+      << fmt(jsonMember(c, "peak"), "%.4g") << ", swing " << fmt(jsonMember(c, "swing"), "%.4g") << " N·m" << win << "; peak |M| "
       << fmt(jsonMember(c, "peak_whole_run"), "%.4g") << " N·m at t = " << fmt(jsonMember(c, "t_peak_whole_run"), "%.4g")
       << " s (whole run)\n";
     o << "  coupling rated torque             "

@@ -102,6 +102,8 @@ void bindRuns(py::module_& m) {
       .def("timeseries", [](const RunData& d) { return tableToPython(d.run.timeseries); })
       .def("reactions",
            [](const RunData& d) { return d.run.reactions.columns.empty() ? py::object(py::none()) : py::object(tableToPython(d.run.reactions)); })
+      .def("crank_speed_extrema",
+           [](const RunData& d) { return tableToPython(crankSpeedExtremaTable(d.run.crank_speed_extrema)); })
       .def("summary", [](const RunData& d) { return toPython(d.summary); })
       .def("text",
            [](const RunData& d) {

@@ -1,5 +1,5 @@
 """The Python interface gives the command line's numbers: the same scene through rd.simulate and
-through `rollerdyn simulate` gives identical time series, reactions and summary (every key and
+through `rollerdyn simulate` gives identical time series, reactions, crank speed extrema and summary (every key and
 value but the CPU-time figures), for both models; Result.write writes the same files byte for
 byte."""
 
@@ -38,7 +38,8 @@ def test_python_and_cli_give_identical_numbers(tmp_path, scene_file, model_name)
     assert r.complete
 
     # Every number in memory, printed as the CSV writer prints it (%.12g), is the CLI's text.
-    for name, df in (("timeseries", r.timeseries), ("reactions", r.reactions)):
+    for name, df in (("timeseries", r.timeseries), ("reactions", r.reactions),
+                     ("crank_speed_extrema", r.crank_speed_extrema)):
         header, rows = csv_cells(cli_dir / f"{name}.csv")
         assert list(df.columns) == header
         assert len(df) == len(rows)
@@ -52,7 +53,7 @@ def test_python_and_cli_give_identical_numbers(tmp_path, scene_file, model_name)
     # Written by the same writer: the same files, byte for byte (summary.json but its CPU time).
     py_dir = tmp_path / "py"
     r.write(py_dir)
-    for f in ("timeseries.csv", "reactions.csv"):
+    for f in ("timeseries.csv", "reactions.csv", "crank_speed_extrema.csv"):
         assert (py_dir / f).read_bytes() == (cli_dir / f).read_bytes(), f
     assert without_timing(json.loads((py_dir / "summary.json").read_text())) == without_timing(summary)
 

@@ -69,6 +69,9 @@ class Result:
     - ``timeseries``, ``reactions``: DataFrames with the columns of timeseries.csv and
       reactions.csv (bare names; units in ``df.attrs["units"]`` and ``units``); reactions is None
       when the run computed none (simulation.reactions: false).
+    - ``crank_speed_extrema``: DataFrame of crank_speed_extrema.csv (t, omega_crank): every
+      local extremum of the crank speed, located inside the integrator's steps; δ and the
+      summary's omega_crank min and max take them as well as the rows.
     - ``summary``: summary.json as a dict (the same keys); ``sizing`` its drive-sizing answers,
       ``start_up`` its start-up and stopping answers, ``guide_friction`` the friction's margins;
       ``warnings`` every warning (the friction's self-locking and dead-centre ones included).
@@ -142,6 +145,10 @@ class Result:
         if self._timeseries is None:
             self._timeseries = frame(self._d.timeseries())
         return self._timeseries
+
+    @property
+    def crank_speed_extrema(self):
+        return frame(self._d.crank_speed_extrema())
 
     @property
     def reactions(self):
