@@ -113,6 +113,20 @@ TEST(CliTrialFindings, SteadyStateLineSaysWhatItsNumbersMean) {
   EXPECT_NE(r.out.find("metrics window: the last"), std::string::npos) << r.out;
 }
 
+// Without a steady state the sizing block's figures are over the run's last part, and each line
+// says so: the trial of a star-delta start that stalls read "(steady window)" under a heading
+// saying there was none.
+TEST(CliTrialFindings, NoSizingFigureClaimsASteadyWindowThatDoesNotExist) {
+  TempDir out("no-steady");
+  const auto r = runRollerdyn({"simulate", model("balanced-4cart.yaml"), "--model", "reduced", "--set",
+                               "simulation.t_end=3", "--set", "crank.offset_deg=60", "--out", out.str()},
+                              60);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("drive sizing over the run's last part (no steady state)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("N·m (the run's last part)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("(steady window)"), std::string::npos) << r.out;
+}
+
 // A drive that rocked at first and then got going, in a run too short to settle, is "starting":
 // no δ from a window that holds its rocking (the 6-cart trial's sweep printed δ = 10.49 for it)
 // and no sizing verdict, while a drive that keeps rocking is "rocking".
