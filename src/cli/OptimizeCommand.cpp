@@ -12,6 +12,7 @@
 #include "cli/Commands.h"
 #include "report/OutputDir.h"
 #include "scene/SceneParser.h"
+#include "scene/SceneSchema.h"
 #include "studies/Optimizer.h"
 
 namespace rollerdyn::cli {
@@ -41,7 +42,11 @@ int runOptimizeCommand(const OptimizeArgs& a) {
   o.max_evals = a.max_evals;
   o.threads = a.threads;
   o.interrupt = &g_interrupted;
-  const Scene base = parseSceneFile(o.scene_path, o.base_overrides);  // a bad scene fails before any run
+  // A bad scene fails before any run; checked with each parameter at its lower bound, so a key the
+  // optimisation sets counts as given.
+  std::vector<std::string> first_design = o.base_overrides;
+  for (const SampleRange& p : o.params) first_design.push_back(p.key + "=" + formatNumber(p.lower));
+  const Scene base = parseSceneFile(o.scene_path, first_design);
   std::string out_dir = a.out_dir.empty() ? defaultOutDir(base.name) + "/optimize_" + o.minimize : a.out_dir;
   o.on_evaluation = [&o](const OptimizeEvaluation& e, std::size_t number) {
     std::cout << "[" << number << "]";

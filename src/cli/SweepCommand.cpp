@@ -155,8 +155,9 @@ int runSweepCommand(const SweepArgs& a) {
     ranks = world.size;
     o.mpi = world.size > 1;  // one rank (mpirun -n 1, a batch script's shell): the threads
   }
-  // Validate the base scene once, so a typo in the file or a --set fails before any run.
-  const Scene base = parseSceneFile(o.scene_path, o.base_overrides);
+  // Validate the base scene once, so a typo in the file or a --set fails before any run (as the
+  // first point sees it: a key the parameters set counts as given).
+  const Scene base = parseSceneFile(o.scene_path, firstPointOverrides(o));
   std::string out_dir = a.out_dir;
   if (out_dir.empty()) {
     out_dir = defaultOutDir(base.name) + "/sweep";

@@ -292,4 +292,18 @@ SweepResult runSweep(const SweepOptions& o) {
 // findOptimum, judgeVertexRun, describeOptimum: SweepOptimum.cpp.
 // writeSweepOutputs: SweepOutputs.cpp (files), SweepPlots.cpp (figures).
 
+std::vector<std::string> firstPointOverrides(const SweepOptions& o) {
+  std::vector<std::string> out = o.base_overrides;
+  for (std::size_t k = 0; k < o.params.size(); ++k) {
+    const std::string* text = nullptr;
+    if (!o.designs.empty()) {
+      if (k < o.designs.front().size()) text = &o.designs.front()[k];
+    } else if (!o.params[k].texts.empty()) {
+      text = &o.params[k].texts.front();
+    }
+    if (text) out.push_back(o.params[k].key + "=" + *text);
+  }
+  return out;
+}
+
 }  // namespace rollerdyn

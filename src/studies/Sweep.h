@@ -83,6 +83,11 @@ struct SweepOptions {
   std::function<SweepPoint(const std::vector<std::string>& texts, const std::vector<double>& values)> run_point;
 };
 
+// The --set list of the sweep's first point: the sweep's own --set, then each parameter at its first
+// value. The base scene is checked with it, so a key that every point sets (coupling.stiffness
+// swept under a --set coupling.type=elastic) counts as given.
+std::vector<std::string> firstPointOverrides(const SweepOptions& o);
+
 // One numeric parameter, the best grid point inside the grid: the vertex of the parabola through it
 // and its two neighbours. A prediction only; runSweep runs it (same model, overrides and settings
 // as the grid's points) before anything calls it an optimum, and judgeVertexRun compares.

@@ -141,7 +141,7 @@ std::vector<std::string> writeSweepOutputs(const SweepOptions& o, const SweepRes
   j["model"] = o.model;
   // The guide normal forces the points' friction (and the reduced model's reactions) use.
   try {
-    const std::string g = guideNormalsDescription(parseSceneFile(o.scene_path, o.base_overrides), o.model == "reduced");
+    const std::string g = guideNormalsDescription(parseSceneFile(o.scene_path, firstPointOverrides(o)), o.model == "reduced");
     j["guide_normal_forces"] = g.empty() ? nlohmann::json(nullptr) : nlohmann::json(g);
   } catch (const std::exception&) {
     j["guide_normal_forces"] = nullptr;  // the scene was checked before the sweep; nothing to add here

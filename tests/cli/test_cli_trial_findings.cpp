@@ -127,6 +127,28 @@ TEST(CliTrialFindings, NoSizingFigureClaimsASteadyWindowThatDoesNotExist) {
   EXPECT_EQ(r.out.find("(steady window)"), std::string::npos) << r.out;
 }
 
+// A key that every point of a sweep or an optimisation sets counts as given when the base scene is
+// checked: the trial swept coupling.stiffness under --set coupling.type=elastic on a scene with a
+// rigid coupling and was refused for a missing coupling.stiffness before any run.
+TEST(CliTrialFindings, AKeyTheParametersSetCountsAsGiven) {
+  TempDir sweep_out("sweep-sets-key");
+  const auto sweep = runRollerdyn({"sweep", model("energy-balanced-3cart.yaml"), "--model", "reduced", "--set",
+                                   "coupling.type=elastic", "--set", "coupling.damping=1500", "--set",
+                                   "simulation.t_end=2", "--param", "coupling.stiffness", "--values", "50000,100000",
+                                   "--out", sweep_out.str()},
+                                  120);
+  EXPECT_EQ(sweep.exit_code, 0) << sweep.out << sweep.err;
+  EXPECT_NE(sweep.out.find("coupling.stiffness=100000"), std::string::npos) << sweep.out;
+  TempDir opt_out("optimize-sets-key");
+  const auto opt = runRollerdyn({"optimize", model("energy-balanced-3cart.yaml"), "--model", "reduced", "--set",
+                                 "coupling.type=elastic", "--set", "coupling.damping=1500", "--set",
+                                 "simulation.t_end=2", "--param", "coupling.stiffness", "--range", "50000:100000",
+                                 "--minimize", "coupling_torque_swing", "--max-evals", "3", "--out", opt_out.str()},
+                                120);
+  EXPECT_NE(opt.exit_code, 2) << opt.out << opt.err;
+  EXPECT_EQ(opt.err.find("coupling.stiffness: expected"), std::string::npos) << opt.err;
+}
+
 // A drive that rocked at first and then got going, in a run too short to settle, is "starting":
 // no δ from a window that holds its rocking (the 6-cart trial's sweep printed δ = 10.49 for it)
 // and no sizing verdict, while a drive that keeps rocking is "rocking".
