@@ -4,10 +4,17 @@
 
 namespace rollerdyn {
 
+namespace {
+
+// ε has strictly opposite signs at a step's two ends: ω has an extremum strictly inside it.
+bool changesSign(double eps0, double eps1) { return (eps0 < 0 && eps1 > 0) || (eps0 > 0 && eps1 < 0); }
+
+}  // namespace
+
 void CrankSpeedExtremaFinder::step(double t0, double w0, double e0, double t1, double w1, double e1) {
   const double h = t1 - t0;
   if (!(h > 0) || !std::isfinite(w0) || !std::isfinite(w1) || !std::isfinite(e0) || !std::isfinite(e1)) return;
-  if (!((e0 < 0 && e1 > 0) || (e0 > 0 && e1 < 0))) return;
+  if (!changesSign(e0, e1)) return;
   // ω(s) = h00·ω0 + h10·h·ε0 + h01·ω1 + h11·h·ε1, s = (t − t0)/h ∈ [0, 1]. Its derivative in s is
   // the quadratic a·s² + b·s + c with c = h·ε0 and a + b + c = h·ε1; the remaining coefficient
   // comes from the cubic's end values: dω/ds = 6(s − s²)(ω1 − ω0) + h·ε0·(1 − 4s + 3s²) + h·ε1·(3s² − 2s).
@@ -40,8 +47,7 @@ void CrankSpeedExtremaFinder::restart(double t, double omega, double eps) {
 
 void CrankSpeedExtremaFinder::stepTo(double t, double omega, double eps, const Dense& dense) {
   if (have_last_ && t > t_) {
-    const bool sign_change = (eps_ < 0 && eps > 0) || (eps_ > 0 && eps < 0);
-    if (dense && sign_change) {
+    if (dense && changesSign(eps_, eps)) {
       // Regula falsi with the Illinois modification on ε(t) of the integrator's interpolant.
       double a = t_, b = t, fa = eps_, fb = eps, w = omega, e = eps;
       int side = 0;

@@ -328,8 +328,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   r.t_off = std::isfinite(sc.motor_stop.t_off) && sc.motor_stop.t_off < t.back() ? sc.motor_stop.t_off : kNaN;
   std::size_t n_running = t.size();  // rows before the switch-off
   if (std::isfinite(r.t_off)) n_running = std::min(n_running, firstRowAtOrAfter(t, r.t_off));
-  const SteadyState ss = detectRunningSteadyState(ts, sc.simulation.steady_window_revolutions, r.t_off,
-                                                  run.crank_speed_extrema);
+  const SteadyState ss = detectRunningSteadyState(run, sc.simulation.steady_window_revolutions, r.t_off);
   r.steady_reached = ss.reached;
   r.steady_begin = ss.t_begin;
   r.steady_end = ss.t_end;

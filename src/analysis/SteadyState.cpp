@@ -124,6 +124,14 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions, double
   return s;
 }
 
+SteadyState detectSteadyState(const RunResult& run, double window_revolutions) {
+  return detectSteadyState(run.timeseries, window_revolutions, kSteadyStateRelativeTolerance, run.crank_speed_extrema);
+}
+
+SteadyState detectRunningSteadyState(const RunResult& run, double window_revolutions, double t_off) {
+  return detectRunningSteadyState(run.timeseries, window_revolutions, t_off, run.crank_speed_extrema);
+}
+
 std::string steadyStateNotReached(const SteadyState& s, double t_first, double t_last, int window_revolutions) {
   if (s.reached) return "";
   const double span = t_last - t_first;

@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "analysis/CrankSpeedExtrema.h"
+#include "analysis/RunResult.h"
 #include "io/Table.h"
 
 namespace rollerdyn {
@@ -97,5 +98,11 @@ SteadyState detectSteadyState(const Table& timeseries, double window_revolutions
 // coast-down. The summary, the sizing and the start-up answers all read this one window.
 SteadyState detectRunningSteadyState(const Table& timeseries, double window_revolutions, double t_off,
                                      const std::vector<CrankSpeedExtremum>& extrema = {});
+
+// The same two for a run in memory: its timeseries with the crank speed's extrema its integrator
+// located (RunResult::crank_speed_extrema), at the default tolerance. Every caller that has the run
+// uses these, so no window is judged without the extrema the summary's was judged with.
+SteadyState detectSteadyState(const RunResult& run, double window_revolutions);
+SteadyState detectRunningSteadyState(const RunResult& run, double window_revolutions, double t_off);
 
 }  // namespace rollerdyn

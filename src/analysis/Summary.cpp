@@ -45,9 +45,8 @@ std::string joined(const std::vector<std::string>& items) {
 
 json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* start_load) {
   // The machine's running: the coast-down after a switch-off is no steady state (SteadyState.h).
-  const SteadyState ss = detectRunningSteadyState(run.timeseries, scene.simulation.steady_window_revolutions,
-                                                  scene.motor.enabled ? scene.motor_stop.t_off : NAN,
-                                                  run.crank_speed_extrema);
+  const SteadyState ss = detectRunningSteadyState(run, scene.simulation.steady_window_revolutions,
+                                                  scene.motor.enabled ? scene.motor_stop.t_off : NAN);
   const WindowMetrics m = computeMetrics(run, ss);
   FiniteWriter num;
   json j;

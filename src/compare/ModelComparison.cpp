@@ -96,10 +96,8 @@ double summaryNumber(const nlohmann::json& j, std::initializer_list<const char*>
 
 void compareSteady(const Scene& scene, ModelComparison& c) {
   const double wr = scene.simulation.steady_window_revolutions;
-  const SteadyState sm =
-      detectSteadyState(c.multibody.timeseries, wr, kSteadyStateRelativeTolerance, c.multibody.crank_speed_extrema);
-  const SteadyState sr =
-      detectSteadyState(c.reduced.timeseries, wr, kSteadyStateRelativeTolerance, c.reduced.crank_speed_extrema);
+  const SteadyState sm = detectSteadyState(c.multibody, wr);
+  const SteadyState sr = detectSteadyState(c.reduced, wr);
   const nlohmann::json jm = makeSummary(scene, c.multibody), jr = makeSummary(scene, c.reduced);
   struct Item {
     const char* name;

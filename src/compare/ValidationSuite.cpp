@@ -214,8 +214,7 @@ RunMetrics runMetrics(const Scene& scene, const RunResult& run) {
   m.complete = run.stats.complete;
   m.status = run.stats.status;
   m.cpu_seconds = run.stats.cpu_seconds;
-  const SteadyState ss = detectSteadyState(run.timeseries, scene.simulation.steady_window_revolutions,
-                                           kSteadyStateRelativeTolerance, run.crank_speed_extrema);
+  const SteadyState ss = detectSteadyState(run, scene.simulation.steady_window_revolutions);
   const WindowMetrics w = computeMetrics(run, ss);
   m.steady = ss.reached;
   m.omega_min = w.omega_min;

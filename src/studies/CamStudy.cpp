@@ -73,8 +73,7 @@ DriveResponse driveResponse(const Scene& sc, const RunResult& run) {
   r.drive = toString(sc.drive);
   r.status = run.stats.status;
   r.complete = run.stats.complete;
-  const SteadyState ss = detectSteadyState(run.timeseries, sc.simulation.steady_window_revolutions,
-                                           kSteadyStateRelativeTolerance, run.crank_speed_extrema);
+  const SteadyState ss = detectSteadyState(run, sc.simulation.steady_window_revolutions);
   r.steady = ss.reached;
   const Table& ts = run.timeseries;
   const int it = ts.index("t"), iw = ts.index("omega_crank"), ix = ts.index("x_cart_1"),

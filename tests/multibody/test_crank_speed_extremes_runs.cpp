@@ -29,8 +29,7 @@ struct Extremes {
 };
 
 Extremes extremesOf(const Scene& sc, const RunResult& run) {
-  const SteadyState ss = detectSteadyState(run.timeseries, sc.simulation.steady_window_revolutions,
-                                           kSteadyStateRelativeTolerance, run.crank_speed_extrema);
+  const SteadyState ss = detectSteadyState(run, sc.simulation.steady_window_revolutions);
   const WindowMetrics m = computeMetrics(run, ss);
   return {m.omega_min, m.omega_max, m.coefficients.delta, ss.reached};
 }

@@ -227,14 +227,10 @@ AdamsIntegrator::~AdamsIntegrator() = default;
 bool AdamsIntegrator::advanceTo(double t_out) {
   Impl& m = *impl_;
   realtype t_ret = m.t;
-  int flag;
-  if (m.problem.on_step) {
-    flag = m.stepper.advance(m.cv, t_out, m.y, t_ret, [&m](double t_step) { m.observeStep(t_step); });
-    m.root_found = flag == CV_ROOT_RETURN;
-  } else {
-    flag = CVode(m.cv, t_out, m.y, &t_ret, CV_NORMAL);
-    m.root_found = flag == CV_ROOT_RETURN;
-  }
+  const int flag = m.problem.on_step
+                       ? m.stepper.advance(m.cv, t_out, m.y, t_ret, [&m](double t_step) { m.observeStep(t_step); })
+                       : CVode(m.cv, t_out, m.y, &t_ret, CV_NORMAL);
+  m.root_found = flag == CV_ROOT_RETURN;
   if (flag < 0) {
     char* name = CVodeGetReturnFlagName(flag);
     m.error = std::string(name ? name : "?") + " " + m.error +
