@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "analysis/SizingChecks.h"
+#include "motor/BreakdownTorque.h"
 #include "motor/SharedMotorLaw.h"
 #include "physics/ReducerLosses.h"
 #include "scene/NominalTorqueSource.h"
@@ -61,7 +62,7 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   m.breakdown_torque = m.breakdown_torque_generating = sc.motor.breakdown_torque;
   if (catalogue_law) try {
       const std::shared_ptr<const MotorLaw> law = sharedMotorLaw(sc);
-      m.breakdown_torque = largestSteadyTorque(*law, SupplyState{});
+      m.breakdown_torque = motorBreakdownTorque(sc, law.get());
       // Generating: the braking torque's first extremum above synchronous speed, the fitted
       // law's pull-out torque of the generator branch. The catalogue gives none, and a circuit
       // fitted to the motoring points extrapolates it (4.6 kN·m against 517 N·m motoring for
@@ -113,7 +114,7 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   const std::vector<double> t = ts.column("t"), M_crank = ts.column("motor_torque"),
                             w_crank_axis = ts.column("omega_motor");
   // The rotor torque through the reducer's law (the loss column is there under power_flow).
-  const ReducerLaw reducer = reducerLaw(sc);
+  const ReducerLaw reducer = reducerLaw(sc, motorBreakdownTorque(sc));
   const std::vector<double> L_crank =
       ts.has("reducer_loss_torque") ? ts.column("reducer_loss_torque") : std::vector<double>{};
   std::vector<double> M(t.size()), P(t.size()), P_line(t.size()), s(t.size()), losses(t.size());

@@ -8,6 +8,7 @@
 #include "analysis/StallDetector.h"
 #include "analysis/StartUpCurrentLimit.h"
 #include "analysis/SteadyState.h"
+#include "motor/BreakdownTorque.h"
 #include "motor/Supply.h"
 
 namespace rollerdyn {
@@ -262,35 +263,6 @@ void addChangeoverNotReached(const Scene& sc, double rotor_top, StartUp& r) {
 
 }  // namespace
 
-SteadyTorquePeak largestSteadyTorquePoint(const MotorLaw& law, const SupplyState& supply) {
-  const double w_top = law.synchronousSpeed() * supply.frequency;
-  constexpr int kScan = 400;
-  int best = 0;
-  double best_M = -std::numeric_limits<double>::infinity();
-  for (int i = 0; i <= kScan; ++i) {
-    const double M = law.steadyTorque(supply, w_top * i / kScan);
-    if (M > best_M) best_M = M, best = i;
-  }
-  // Golden-section search on the bracket around the best scan point.
-  double a = w_top * std::max(0, best - 1) / kScan, b = w_top * std::min(kScan, best + 1) / kScan;
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double c = b - g * (b - a), d = a + g * (b - a);
-  double Mc = law.steadyTorque(supply, c), Md = law.steadyTorque(supply, d);
-  for (int it = 0; it < 80 && b - a > 1e-12 * w_top; ++it) {
-    if (Mc > Md) {
-      b = d, d = c, Md = Mc, c = b - g * (b - a), Mc = law.steadyTorque(supply, c);
-    } else {
-      a = c, c = d, Mc = Md, d = a + g * (b - a), Md = law.steadyTorque(supply, d);
-    }
-  }
-  if (best_M >= Mc && best_M >= Md) return {w_top * best / kScan, best_M};
-  return Mc >= Md ? SteadyTorquePeak{c, Mc} : SteadyTorquePeak{d, Md};
-}
-
-double largestSteadyTorque(const MotorLaw& law, const SupplyState& supply) {
-  return largestSteadyTorquePoint(law, supply).torque;
-}
-
 StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* law, const StartLoad* load,
                        const std::string& motion) {
   StartUp r;
@@ -310,8 +282,7 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   r.starting_torque_crank = law->steadyTorque(supply.atSwitchOn(), 0.0) * u * eta;
   r.starting_torque_rated_crank = law->steadyTorque(SupplyState{}, 0.0) * u * eta;
   const bool kloss_curve = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
-  r.largest_torque_crank =
-      (kloss_curve ? sc.motor.breakdown_torque : largestSteadyTorque(*law, SupplyState{})) * u * eta;
+  r.largest_torque_crank = motorBreakdownTorque(sc, law) * u * eta;
   const SupplyState held = heldAtStandstill(supply);
   r.held_supply = supplyWords(held);
   r.held_supply_is_rated = isRatedSupply(held);

@@ -154,15 +154,4 @@ struct StartUp {
 StartUp computeStartUp(const Scene& scene, const RunResult& run, const MotorLaw* law, const StartLoad* load,
                        const std::string& motion = "");
 
-// The largest steady torque of a law under `supply` over rotor speeds 0 ... ω0·f [N·m at the
-// rotor]: a scan of 400 speeds refined by golden-section search.
-double largestSteadyTorque(const MotorLaw& law, const SupplyState& supply);
-
-// The same with the rotor speed where it lies (the breakdown point of the law's steady curve).
-struct SteadyTorquePeak {
-  double speed = 0;   // rotor speed [rad/s]
-  double torque = 0;  // steady torque there [N·m at the rotor]
-};
-SteadyTorquePeak largestSteadyTorquePoint(const MotorLaw& law, const SupplyState& supply);
-
 }  // namespace rollerdyn

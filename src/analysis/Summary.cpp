@@ -15,6 +15,7 @@
 #include "analysis/StartUpSummary.h"
 #include "analysis/SteadyState.h"
 #include "io/AtomicFile.h"
+#include "motor/BreakdownTorque.h"
 #include "motor/SharedMotorLaw.h"
 #include "physics/ReducerLosses.h"
 
@@ -134,7 +135,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
        num("energy.potential_change", en.potential_final - en.potential_initial)},
       {"reducer_losses", num("energy.reducer_losses", en.reducer_losses)},
       {"motor_shaft_work", num("energy.motor_shaft_work", en.motorShaftWork())},
-      {"reducer_loss_model", scene.motor.enabled ? json(reducerLossWords(reducerLaw(scene))) : json(nullptr)},
+      {"reducer_loss_model", scene.motor.enabled ? json(reducerLossWords(reducerLaw(scene, motorBreakdownTorque(scene)))) : json(nullptr)},
       {"residual", num("energy.residual", en.residual())}};
   j["energy_residual_rel"] = num("energy_residual_rel", en.residualRelative());
   j["constraint_error_max"] = num("constraint_error_max", run.stats.constraint_error_max);

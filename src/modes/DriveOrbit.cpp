@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "motor/BreakdownTorque.h"
 #include "modes/PeriodicFlow.h"
 #include "motor/MotorLawFactory.h"
 #include "reduced/ReducedModel.h"
@@ -161,7 +162,7 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
       start = Eigen::VectorXd::Constant(1, g.omega);
   }
   if (r.elastic) {
-    const double M_ref = std::max(scene.motor.breakdown_torque * scene.reducer.ratio * scene.reducer.efficiency, 1.0);
+    const double M_ref = std::max(motorBreakdownTorque(scene) * scene.reducer.ratio * scene.reducer.efficiency, 1.0);
     twist_scale = M_ref / scene.coupling.stiffness;
   }
   const bool quasi_static = o.quasi_static_auxiliary;

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
+#include "motor/BreakdownTorque.h"
 #include "reduced/ReducedModel.h"
 
 namespace rollerdyn::modes {
@@ -204,7 +205,7 @@ FrozenAngle frozenModes(DriveModel& drive, const Scene& scene, const DrivePoint&
   f.M = drive.massMatrix(p.phi);
   const double twist_h =
       1e-6 * std::max(std::abs(p.twist),
-                      elastic ? std::max(scene.motor.breakdown_torque * scene.reducer.ratio * scene.reducer.efficiency, 1.0) /
+                      elastic ? std::max(motorBreakdownTorque(scene) * scene.reducer.ratio * scene.reducer.efficiency, 1.0) /
                                     scene.coupling.stiffness
                               : 1.0);
   const double phi_h = 1e-6, omega_h = 1e-6 * std::max(std::abs(p.omega), 1.0);

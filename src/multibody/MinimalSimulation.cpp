@@ -223,7 +223,8 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   // (IntegrationScales.h), with the constrained formulation's weights for the twist (coupling
   // torque to accuracy·M_ref) and the friction normal forces (GuideFriction::setErrorWeights).
   const IntegrationScales scales = integrationScales(
-      sc, model.options().prescribe_crank_speed ? model.options().crank_speed : std::numeric_limits<double>::quiet_NaN());
+      sc, model.options().prescribe_crank_speed ? model.options().crank_speed : std::numeric_limits<double>::quiet_NaN(),
+      model.motorBreakdownTorque());
   const double rtol = scales.cvode_rtol, w_ref = scales.speed;
   const double w_sync = sc.motor.omega_sync / sc.reducer.ratio;
   // E_ref: kinetic energy of the machine at the reference speed (its work integrals' scale).

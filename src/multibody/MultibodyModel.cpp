@@ -11,6 +11,7 @@
 #include "multibody/EnergyMeter.h"
 #include "multibody/GuideFriction.h"
 #include "motor/MotorColumns.h"
+#include "motor/BreakdownTorque.h"
 #include "motor/SharedMotorLaw.h"
 #include "motor/Supply.h"
 #include "multibody/MinimalCoordinates.h"
@@ -40,7 +41,8 @@ SimTK::Vec3 crankPin(const Scene& scene, int j) {
 }  // namespace
 
 MultibodyModel::MultibodyModel(const Scene& scene, const MultibodyOptions& options)
-    : scene_(scene), options_(options), matter_(system_), forces_(system_) {
+    : scene_(scene), options_(options), matter_(system_), forces_(system_),
+      breakdown_torque_(scene.motor.breakdown_torque) {
   buildDrive();
   buildCarts();
   buildForces();
@@ -144,7 +146,8 @@ void MultibodyModel::buildForces() {
     std::shared_ptr<const MotorLaw> law = options_.motor_law;
     if (!law) law = sharedMotorLaw(sc);
     Supply supply = makeSupply(sc, law.get());
-    auto* f = new MotorForce(forces_, motor_, law, std::move(supply), reducerLaw(sc));
+    breakdown_torque_ = rollerdyn::motorBreakdownTorque(sc, law.get());
+    auto* f = new MotorForce(forces_, motor_, law, std::move(supply), reducerLaw(sc, breakdown_torque_));
     SimTK::Force::Custom(forces_, f);
     motor_force_ = sources.motor = f;
     applied_order_.push_back(f);
@@ -229,7 +232,7 @@ SimTK::State MultibodyModel::closedFormKinematics(double phi, double omega, doub
     // carries the motor's breakdown torque at the crank, M_kr·u·η, so the coupling torque is
     // held to accuracy·M_kr·u·η whatever the stiffness.
     const double torque_scale =
-        scene_.motor.breakdown_torque * scene_.reducer.ratio * scene_.reducer.efficiency;
+        breakdown_torque_ * scene_.reducer.ratio * scene_.reducer.efficiency;
     s.updUWeights(matter_.getMySubsystemIndex())[motor_.getFirstUIndex(s)] =
         std::max(1.0, scene_.coupling.stiffness / torque_scale);
   }

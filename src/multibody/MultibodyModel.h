@@ -92,6 +92,8 @@ class MultibodyModel {
   bool hasGuideFriction() const { return friction_force_ != nullptr; }
   // The motor force element (null without a motor): its law, supply, phase and z states.
   const MotorForce* motorForce() const { return motor_force_; }
+  // M_kr of the motor law the model runs [N·m at the rotor] (motor/BreakdownTorque.h).
+  double motorBreakdownTorque() const { return breakdown_torque_; }
   // z entries of the motor element (law states, brake work): the first entries of the force
   // subsystem's z, before the guide-friction normal forces and the energy integrals.
   int motorStateCount() const;
@@ -187,6 +189,7 @@ class MultibodyModel {
   int constraint_count_ = 0;
   // Owned by the force subsystem once wrapped in SimTK::Force::Custom.
   const MotorForce* motor_force_ = nullptr;
+  double breakdown_torque_ = 0;  // M_kr of the law the model runs; the key without a motor [N·m]
   const ElasticCoupling* coupling_force_ = nullptr;
   const RollerLoadForce* load_force_ = nullptr;
   const GuideFriction* friction_force_ = nullptr;

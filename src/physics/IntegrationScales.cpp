@@ -5,14 +5,14 @@
 
 namespace rollerdyn {
 
-IntegrationScales integrationScales(const Scene& sc, double prescribed_crank_speed) {
+IntegrationScales integrationScales(const Scene& sc, double prescribed_crank_speed, double breakdown_torque) {
   IntegrationScales k;
   k.cvode_rtol = kAccuracyToCvodeTolerance * sc.simulation.accuracy;
   k.angle = 1.0;
   k.speed = std::isfinite(prescribed_crank_speed) ? std::max(std::abs(prescribed_crank_speed), 1.0)
             : sc.motor.enabled                    ? sc.motor.omega_sync / sc.reducer.ratio
                                                   : std::max(std::abs(sc.initial.crank_speed), 1.0);
-  k.torque = std::max({sc.motor.breakdown_torque * sc.reducer.ratio * sc.reducer.efficiency,
+  k.torque = std::max({breakdown_torque * sc.reducer.ratio * sc.reducer.efficiency,
                        sc.rollerForceSum() * std::max(sc.crank.radius, sc.hasCamDrive() ? sc.cam.stroke : 0.0), 1.0});
   k.twist = k.twist_rate = 0.0;
   if (sc.coupling.type == CouplingType::Elastic && sc.coupling.stiffness > 0) {

@@ -42,7 +42,9 @@ inline bool reachedOutputTime(double t_reached, double t_out) {
   return t_reached >= t_out - 64 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t_out));
 }
 
-// `prescribed_crank_speed`: a crank speed the run imposes (a kinematic run), NaN when none.
-IntegrationScales integrationScales(const Scene& scene, double prescribed_crank_speed);
+// `prescribed_crank_speed`: a crank speed the run imposes (a kinematic run), NaN when none;
+// `breakdown_torque`: M_kr of the motor law the run uses [N·m at the rotor]
+// (motor/BreakdownTorque.h: a circuit motor's own, not the Kloss key).
+IntegrationScales integrationScales(const Scene& scene, double prescribed_crank_speed, double breakdown_torque);
 
 }  // namespace rollerdyn

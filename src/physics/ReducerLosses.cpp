@@ -11,13 +11,13 @@ constexpr double kTorqueBandShare = 0.01;  // T_b / (M_kr·u), ReducerLosses.h
 constexpr double kSpeedBandShare = 1e-3;   // ω_b / (ω0/u)
 }  // namespace
 
-ReducerLaw reducerLaw(const Scene& sc) {
+ReducerLaw reducerLaw(const Scene& sc, double breakdown_torque) {
   ReducerLaw law;
   law.model = sc.reducer.losses;
   law.ratio = sc.reducer.ratio;
   law.eta_forward = sc.reducer.efficiency;
   law.eta_reverse = sc.reducer.efficiency_reverse > 0 ? sc.reducer.efficiency_reverse : sc.reducer.efficiency;
-  law.torque_band = std::max(kTorqueBandShare * sc.motor.breakdown_torque * sc.reducer.ratio, 1e-6);
+  law.torque_band = std::max(kTorqueBandShare * breakdown_torque * sc.reducer.ratio, 1e-6);
   const double w_sync = sc.reducer.ratio > 0 ? sc.motor.omega_sync / sc.reducer.ratio : 0.0;
   law.speed_band = std::max(kSpeedBandShare * w_sync, 1e-9);
   return law;

@@ -60,9 +60,10 @@ struct ReducerLaw {
   double speed_band = 1;   // ω_b, at the crank axis [rad/s]
 };
 
-// The scene's reducer law (reducer.*; the bands from the motor's breakdown torque and
-// synchronous speed as argued above). An efficiency_reverse ≤ 0 (a Scene built in code) means η.
-ReducerLaw reducerLaw(const Scene& scene);
+// The scene's reducer law (reducer.*; the bands from the motor's breakdown torque M_kr [N·m at
+// the rotor, of the law the run uses: motor/BreakdownTorque.h] and synchronous speed as argued
+// above). An efficiency_reverse ≤ 0 (a Scene built in code) means η.
+ReducerLaw reducerLaw(const Scene& scene, double breakdown_torque);
 
 // Torque the reducer passes on at the crank axis [N·m] for a torque M at its motor shaft [N·m]
 // and the motor side's speed ω at the crank axis [rad/s]: papers M·u·η; power_flow M·u − L.

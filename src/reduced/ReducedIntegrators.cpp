@@ -192,7 +192,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   // against its natural scale and absolute control only takes over when a state is far below that
   // scale (e.g. at a start from rest); the work integrals against E_ref = ½·J(φ0)·ω_ref², the
   // kinetic energy at the reference speed.
-  const IntegrationScales scales = integrationScales(s, std::numeric_limits<double>::quiet_NaN());
+  const IntegrationScales scales = integrationScales(s, std::numeric_limits<double>::quiet_NaN(), m.motorBreakdownTorque());
   const double rtol = scales.cvode_rtol, w_ref = scales.speed;
   const double E_ref = 0.5 * (m.reducedInertia(s.initial.crank_angle) + m.motorSideInertia()) *
                        w_ref * w_ref;

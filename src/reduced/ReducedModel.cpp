@@ -7,6 +7,7 @@
 
 #include "analysis/FrictionChecks.h"
 #include "physics/CamMotionLaw.h"
+#include "motor/BreakdownTorque.h"
 #include "motor/SharedMotorLaw.h"
 #include "physics/RollerLoads.h"
 
@@ -35,7 +36,8 @@ ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> l
   // Checks r > 0, l > r and σ = ±1 once, so the right-hand side never throws.
   for (int j = 0; j < n; ++j) cartPose(j, 0.0);
 
-  reducer_ = reducerLaw(scene_);
+  breakdown_torque_ = rollerdyn::motorBreakdownTorque(scene_, law_.get());
+  reducer_ = reducerLaw(scene_, breakdown_torque_);
   J_n1_ = scene_.motorSideInertia();  // Loveikin, Pochka, Romasevych (2018) eq. (1)
   J_crank_ = scene_.crankSideInertia();
   if (scene_.rods.model == RodModel::Split) {

@@ -167,6 +167,8 @@ class ReducedModel {
 
   // J_n1 [kg·m²] (Loveikin, Pochka, Romasevych (2018) eq. (1)).
   double motorSideInertia() const { return J_n1_; }
+  // M_kr of the motor law the model runs [N·m at the rotor] (motor/BreakdownTorque.h).
+  double motorBreakdownTorque() const { return breakdown_torque_; }
   // J_n2(φ) and dJ_n2/dφ (analytic, from the slider-crank second derivatives).
   double crankSideInertia(double phi) const;
   double crankSideInertiaDerivative(double phi) const;
@@ -238,6 +240,7 @@ class ReducedModel {
   SupplyPhase initial_phase_;
   ReducerLaw reducer_;  // reducer.losses (physics/ReducerLosses.h)
   double J_n1_;       // motor side, Loveikin, Pochka, Romasevych (2018) eq. (1)
+  double breakdown_torque_ = 0;  // M_kr of the law the model runs [N·m at the rotor]
   double J_crank_;    // crankshaft without rods + split pin half-masses (Loveikin, Pochka, Romasevych (2018) eq. (2))
   std::vector<double> m_B_;   // per cart: mass used with x_B', Loveikin, Pochka, Romasevych (2018) eq. (3)
   std::vector<Loads> loads_;  // per cart: the loads acting on it (Scene::cartLoads)

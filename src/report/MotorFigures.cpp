@@ -5,6 +5,7 @@
 
 #include "analysis/DriveSizing.h"
 #include "analysis/StartUp.h"
+#include "motor/BreakdownTorque.h"
 #include "motor/SharedMotorLaw.h"
 #include "report/FigureSupport.h"
 
@@ -131,7 +132,7 @@ struct MotorPlanner {
       double dev = 0;
       for (size_t i = 0; on_curve && i < w.size() && i < m.size(); ++i)
         if (std::isfinite(w[i]) && std::isfinite(m[i])) dev = std::max(dev, std::abs(m[i] - curve(w[i])));
-      const double scale = scene->motor.breakdown_torque * u * eta;
+      const double scale = motorBreakdownTorque(*scene, law.get()) * u * eta;
       if (scale > 0 && dev > 1e-3 * scale)
         notes.push_back(std::string("motor operating point: the run's motor_torque differs from the ") +
                         (kloss ? "Kloss curve" : "steady torque-speed curve") + " of scene '" +

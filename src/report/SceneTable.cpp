@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "motor/BreakdownTorque.h"
 #include "scene/SceneDocument.h"
 #include "scene/SceneError.h"
 #include "scene/SceneSchema.h"
@@ -82,7 +83,7 @@ std::vector<SceneParameterRow> derivedParameterRows(const Scene& s) {
       {"synchronous crank speed ω0/u", formatNumber(s.motor.omega_sync / u), "rad/s",
        "motor synchronous speed reduced to the crank axis", "derived"},
       {"breakdown torque at the crank M_kr·u·η",
-       formatNumber(s.motor.breakdown_torque * u * s.reducer.efficiency), "N·m",
+       formatNumber(motorBreakdownTorque(s) * u * s.reducer.efficiency), "N·m",
        "largest motor torque the crank can get", "derived"},
       {"motor-side inertia J_n1", formatNumber(s.motorSideInertia()), "kg·m²",
        "(J_p + J_m + J_red + motor-shaft flywheel)·δ·u², reduced to the crank axis (Loveikin, Pochka, Romasevych (2018) eq. (1))",

@@ -113,6 +113,11 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
       !(key == "motor.overload_ratio" && nominalTorqueSource(sc) == NominalTorqueSource::OverloadRatio))
     return "it sets the Kloss law's critical slip; the equivalent circuit has its own breakdown point (from "
            "motor.catalogue or motor.circuit)";
+  // M_kr: every scale that reads the motor's breakdown torque reads the law's own under a
+  // catalogue law (motor/BreakdownTorque.h); only M_n = M_kr/λ still reads the key.
+  if (!kloss && key == "motor.breakdown_torque" && nominalTorqueSource(sc) != NominalTorqueSource::OverloadRatio)
+    return "it is the Kloss law's breakdown torque M_kr; the equivalent circuit has its own breakdown point (from "
+           "motor.catalogue or motor.circuit), which the run and the sizing use";
   const std::string late = afterTheRunsEnd(key, sc);
   if (!late.empty()) return late;
   if (key == "initial.twist" && sc.coupling.type == CouplingType::Rigid)

@@ -79,9 +79,11 @@ std::vector<std::string> plausibilityWarnings(const Scene& s) {
       out.push_back(buf);
     }
   }
-  // The Kloss data against the catalogue of the same motor: M_kr = (M_k/M_n)·P_n/ω_n.
+  // The Kloss data against the catalogue of the same motor: M_kr = (M_k/M_n)·P_n/ω_n (a catalogue
+  // law has its own breakdown point, and the key is named as without effect there).
   const MotorCatalogue& cat = s.induction.catalogue;
-  if (s.motor.enabled && cat.given() && cat.omega_nominal > 0 && cat.breakdown_torque_ratio > 0 &&
+  const bool kloss = s.induction.model == MotorModel::Kloss || s.induction.model == MotorModel::KlossDynamic;
+  if (kloss && s.motor.enabled && cat.given() && cat.omega_nominal > 0 && cat.breakdown_torque_ratio > 0 &&
       s.motor.breakdown_torque > 0) {
     const double M_kr = cat.breakdown_torque_ratio * cat.power / cat.omega_nominal;
     if (std::abs(s.motor.breakdown_torque / M_kr - 1.0) > 0.1) {

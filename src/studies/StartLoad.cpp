@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/StartUp.h"
+#include "motor/BreakdownTorque.h"
 #include "reduced/ReducedModel.h"
 
 namespace rollerdyn {

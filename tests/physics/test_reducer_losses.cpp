@@ -100,12 +100,12 @@ TEST(ReducerLosses, BlendedLawIsContinuousAndItsLossesNeverNegative) {
 
 TEST(ReducerLosses, SceneKeysChooseTheLawAndTheReverseEfficiencyDefaultsToTheForwardOne) {
   const std::string file = std::string(ROLLERDYN_SOURCE_DIR) + "/model/recuperative-2cart.yaml";
-  const ReducerLaw papers = reducerLaw(parseSceneFile(file, {}));
+  const ReducerLaw papers = reducerLaw(parseSceneFile(file, {}), 215.4);
   EXPECT_EQ(papers.model, ReducerLossModel::Papers);
-  const ReducerLaw same = reducerLaw(parseSceneFile(file, {"reducer.losses=power_flow"}));
+  const ReducerLaw same = reducerLaw(parseSceneFile(file, {"reducer.losses=power_flow"}), 215.4);
   EXPECT_EQ(same.model, ReducerLossModel::PowerFlow);
   EXPECT_EQ(same.eta_reverse, same.eta_forward);
-  const ReducerLaw own = reducerLaw(parseSceneFile(file, {"reducer.losses=power_flow", "reducer.efficiency_reverse=0.8"}));
+  const ReducerLaw own = reducerLaw(parseSceneFile(file, {"reducer.losses=power_flow", "reducer.efficiency_reverse=0.8"}), 215.4);
   EXPECT_EQ(own.eta_reverse, 0.8);
   // T_b = 1 % of M_kr·u = 0.01·215.4·9.8 N·m (the scene's motor and reducer).
   EXPECT_NEAR(own.torque_band, 0.01 * 215.4 * 9.8, 1e-9);

@@ -65,6 +65,19 @@ TEST(KeysWithoutEffectInRuns, KlossCriticalSlipChangesNothingUnderAFittedCircuit
   EXPECT_FALSE(named(kloss, "motor.overload_ratio"));
 }
 
+// Kloss's M_kr under a circuit fitted to the catalogue: the integrators' torque scale and the
+// reducer's power-flow band read the circuit's own breakdown torque, so the key changes nothing
+// (the consistency harness found it silently ignored, seed 3064 of its generated machines).
+TEST(KeysWithoutEffectInRuns, KlossBreakdownTorqueChangesNothingUnderAFittedCircuit) {
+  expectWithoutEffect({"simulation.t_end=6", "motor.model=circuit"},
+                      "motor.breakdown_torque", "517.14", "800");
+  expectWithoutEffect({"simulation.t_end=6", "motor.model=circuit",
+                       "reducer.losses=power_flow"},
+                      "motor.breakdown_torque", "517.14", "800");
+  // Under the Kloss law it is the law itself, and not named.
+  EXPECT_FALSE(named(summaryOf({"simulation.t_end=6", "motor.breakdown_torque=517.14"}), "motor.breakdown_torque"));
+}
+
 TEST(KeysWithoutEffectInRuns, ASwitchOffAfterTheRunsEndChangesNothing) {
   expectWithoutEffect({"simulation.t_end=6", "motor.stop.brake_torque=50"}, "motor.stop.t_off", "100", "110");
   const json within = summaryOf({"simulation.t_end=6", "motor.stop.t_off=4"});

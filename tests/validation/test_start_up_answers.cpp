@@ -19,6 +19,7 @@
 #include "analysis/SizingSummary.h"
 #include "analysis/StartUpSummary.h"
 #include "analysis/Summary.h"
+#include "motor/BreakdownTorque.h"
 #include "motor/MotorLawFactory.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
