@@ -193,6 +193,11 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
     r.campbell.note = !r.elastic ? "rigid coupling: the drive has no torsional mode" : "no steady motion";
   }
 
+  const Band none;
+  r.separation = separationMargins(r.elastic, r.steady, r.frozen.empty() ? none : r.frozen[0].torsional_natural,
+                                   r.frozen.empty() ? none : r.frozen[0].torsional,
+                                   r.frozen.empty() ? none : r.frozen[0].torsional_damping, r.orders, r.campbell);
+
   // 5. Stability charts.
   if (o.charts && r.steady.found) {
     double c_ref = scene.coupling.stiffness;

@@ -3,7 +3,8 @@
 //      point, its Floquet multipliers and verdict (and the multibody model's, where asked);
 //   2. frozen-angle modes along that motion from both models (FrozenModes.h), side by side;
 //   3. the excitation orders of the layout (ExcitationOrders.h);
-//   4. the Campbell diagram over crank speed (Campbell.h);
+//   4. the Campbell diagram over crank speed (Campbell.h) and the separation margins at the
+//      operating speed (SeparationMargins.h);
 //   5. stability charts over coupling stiffness × crank speed and × damping (StabilityChart.h).
 // The two-mass estimate of Dyomin (two rotors) eq. (10) with the mean crank-side inertia is given
 // beside it as the first, cheap estimate it is.
@@ -20,6 +21,7 @@
 #include "modes/DriveOrbit.h"
 #include "modes/ExcitationOrders.h"
 #include "modes/FrozenModes.h"
+#include "modes/SeparationMargins.h"
 #include "modes/StabilityChart.h"
 #include "scene/Scene.h"
 
@@ -82,6 +84,7 @@ struct ModesReport {
   std::vector<ModelFrozenModes> frozen;  // reduced first
   double model_difference = NAN;  // max relative difference of the torsional frequencies
   CampbellDiagram campbell;
+  SeparationMargins separation;   // of the coupling mode from the orders that drive it (SeparationMargins.h)
   std::vector<StabilityChart> charts;
   std::vector<std::string> warnings;  // resonance warnings resting on this analysis
   std::vector<std::string> notes;     // what was not done and why

@@ -1,0 +1,100 @@
+#include <cstdio>
+#include <sstream>
+
+#include "modes/SeparationMargins.h"
+
+namespace rollerdyn::modes {
+namespace {
+nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+}  // namespace
+
+nlohmann::json separationJson(const SeparationMargins& s) {
+  nlohmann::json j;
+  j["method"] = "separation margin SM = |p - k*omega|/(k*omega) of the natural frequency p of the coupling mode's damped pair "
+                "from each order k that drives it, at the operating crank speed omega; required >= 10 % "
+                "(API 617 / API 684 practice)";
+  j["applicable"] = s.applicable;
+  if (!s.applicable) {
+    j["verdict"] = "not applicable";
+    j["reason"] = s.not_applicable;
+    return j;
+  }
+  j["omega"] = s.omega;
+  j["required"] = s.required;
+  nlohmann::json rows = nlohmann::json::array();
+  bool fail = false, judged = false;
+  for (const SeparationMargin& m : s.rows) {
+    fail = fail || m.verdict == "FAIL";
+    judged = judged || m.verdict != "n/a";
+    rows.push_back({{"order", m.order},
+                    {"excitation_frequency", num(m.excitation)},
+                    {"exciting_torque", num(m.exciting_torque)},
+                    {"mode_frequency_low", num(m.p_low)},
+                    {"mode_frequency_high", num(m.p_high)},
+                    {"mode_frequency_source", m.frequency_source},
+                    {"undamped_frequency_low", num(m.undamped_low)},
+                    {"undamped_frequency_high", num(m.undamped_high)},
+                    {"margin", num(m.margin)},
+                    {"damping_ratio", num(m.damping_ratio)},
+                    {"amplification_factor", num(m.amplification)},
+                    {"verdict", m.verdict},
+                    {"reason", m.reason}});
+  }
+  j["orders"] = rows;
+  j["verdict"] = !judged ? "not applicable" : fail ? "FAIL" : "pass";
+  if (!judged) j["reason"] = "no order drives the coupling mode (every harmonic below 1 % of the largest)";
+  nlohmann::json sc = nlohmann::json::array();
+  for (const StartCrossing& c : s.start_crossings) sc.push_back({{"order", c.order}, {"omega", c.omega}});
+  j["start_crossings"] = sc;
+  j["start_crossings_note"] = "forced crossings p = k*omega below the operating speed within the Campbell diagram's "
+                              "speed range, passed through in a start: a transient, judged by the start's torques";
+  return j;
+}
+
+std::string separationText(const SeparationMargins& s) {
+  std::ostringstream os;
+  char b[600];
+  if (!s.applicable) {
+    os << "  separation margins (API 617 / API 684, >= 10 %): n/a: " << s.not_applicable << "\n";
+    return os.str();
+  }
+  bool judged = false;
+  for (const SeparationMargin& m : s.rows) judged = judged || m.verdict != "n/a";
+  if (!judged) {
+    os << "  separation margins (API 617 / API 684, >= 10 %): n/a: no order drives the coupling mode\n";
+    return os.str();
+  }
+  std::snprintf(b, sizeof b, "  separation margins at omega = %.4g rad/s (SM = |p - k*omega|/(k*omega), >= 10 %%, API 617 / API 684):\n",
+                s.omega);
+  os << b;
+  for (const SeparationMargin& m : s.rows) {
+    std::string p;
+    if (m.p_low == m.p_high)
+      std::snprintf(b, sizeof b, "%.4g rad/s", m.p_low);
+    else
+      std::snprintf(b, sizeof b, "%.4g ... %.4g rad/s", m.p_low, m.p_high);
+    p = b;
+    // A heavy damper moves the damped pair's natural frequency away from the undamped one the
+    // Campbell diagram draws: name both then.
+    std::string undamped;
+    if (std::abs(m.undamped_low / m.p_low - 1) > 0.01 || std::abs(m.undamped_high / m.p_high - 1) > 0.01) {
+      std::snprintf(b, sizeof b, "; undamped %.4g ... %.4g rad/s, the Campbell diagram's", m.undamped_low, m.undamped_high);
+      undamped = b;
+    }
+    std::snprintf(b, sizeof b, "    order %d: k*omega = %.4g rad/s, mode p = %s (%s, damping ratio %.3g%s): SM = %.3g %%, AF = %.3g: %s\n",
+                  m.order, m.excitation, p.c_str(), m.frequency_source.c_str(), m.damping_ratio, undamped.c_str(),
+                  100 * m.margin, m.amplification, (m.verdict == "n/a" ? "n/a, " + m.reason : m.verdict).c_str());
+    os << b;
+  }
+  if (!s.start_crossings.empty()) {
+    os << "    Campbell crossings passed through in a start (no verdict: a transient):";
+    for (const StartCrossing& c : s.start_crossings) {
+      std::snprintf(b, sizeof b, " p=%d*omega at %.4g rad/s;", c.order, c.omega);
+      os << b;
+    }
+    os << "\n";
+  }
+  return os.str();
+}
+
+}  // namespace rollerdyn::modes
