@@ -77,6 +77,8 @@ struct ReactionCheck {
 struct RunStats {
   long steps = 0;                  // accepted integrator steps
   long realizations = 0;           // right-hand-side evaluations (Dynamics-stage realizations)
+  long error_test_failures = -1;   // steps the integrator's error test rejected and retried
+                                   // smaller; -1: not counted (Baranov's fixed-step scheme)
   long jacobian_evaluations = -1;  // Newton iteration-matrix Jacobians formed; -1: not counted
   long newton_convergence_failures = -1;  // corrector convergence failures (each retries the step
                                           // smaller); -1: not counted

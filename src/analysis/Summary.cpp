@@ -8,6 +8,7 @@
 
 #include "analysis/DriveSizing.h"
 #include "analysis/GuideLiftOff.h"
+#include "analysis/ToothContact.h"
 #include "analysis/LoadWork.h"
 #include "analysis/Metrics.h"
 #include "analysis/SizingSummary.h"
@@ -167,6 +168,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["guide_normal_forces"] = run.guide_normals.empty() ? json(nullptr) : json(run.guide_normals);
   j["steps"] = run.stats.steps;
   j["realizations"] = run.stats.realizations;
+  j["rejected_steps"] = run.stats.error_test_failures >= 0 ? json(run.stats.error_test_failures) : json(nullptr);
   j["jacobian_evaluations"] = run.stats.jacobian_evaluations >= 0 ? json(run.stats.jacobian_evaluations) : json(nullptr);
   j["newton_convergence_failures"] =
       run.stats.newton_convergence_failures >= 0 ? json(run.stats.newton_convergence_failures) : json(nullptr);
@@ -210,6 +212,9 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   const GuideLiftOff lift_off = computeGuideLiftOff(run, ss, steady_turning);
   j["guide_lift_off"] = guideLiftOffJson(lift_off);
   for (const std::string& w : lift_off.warnings) j["warnings"].push_back(w);
+  const ToothContactSummary teeth = computeToothContact(scene, run, ss, steady_turning);
+  j["backlash"] = toothContactJson(teeth);
+  for (const std::string& w : teeth.warnings) j["warnings"].push_back(w);
   // Where the joint loads come from, and what is missing: the reduced model computes the cart
   // statics only (guide rollers, rod end), not the crank pin or the main bearing.
   if (run.model == "reduced" && !run.reactions.columns.empty())
@@ -354,11 +359,13 @@ std::string summaryText(const nlohmann::json& s) {
     o << "guides       LIFT-OFF: " << lo["lifting"].size()
       << " guide reaction(s) change sign in the steady window: those rollers need a counter-roller (warnings "
          "on stderr; summary.json guide_lift_off)\n";
+  o << toothContactText(at("backlash"));
   o << "constraints  max error " << f(at("constraint_error_max"), "%.2e") << "\n";
   if (at("guide_normal_forces").is_string())
     o << "guide normal forces  " << str(at("guide_normal_forces")) << "\n";
-  o << "steps        " << str(at("steps")) << " steps, " << str(at("realizations"))
-    << " right-hand-side evaluations\n";
+  o << "steps        " << str(at("steps")) << " steps"
+    << (at("rejected_steps").is_number() ? " (" + str(at("rejected_steps")) + " rejected by the error test)" : "")
+    << ", " << str(at("realizations")) << " right-hand-side evaluations\n";
   o << "cpu          " << f(at("cpu_seconds"), "%.3g") << " s for "
     << f(at("simulated_time"), "%.4g") << " s simulated, real-time factor "
     << f(at("real_time_factor"), "%.3g") << "\n";

@@ -311,6 +311,11 @@ std::vector<BenchRow> runEffectsStudy(const SceneSource& source, const BenchOpti
   if (elastic) {
     v.push_back({"rigid coupling", 0, {"coupling.type=rigid"}});
     if (base.coupling.damping > 0) v.push_back({"coupling damping off (k = 0)", 0, {"coupling.damping=0"}});
+    // The reducer's backlash: its contacts' cost in steps (docs/models.md, backlash of the reducer).
+    if (base.hasBacklash())
+      v.push_back({"reducer backlash off", 0, {"reducer.backlash=0"}});
+    else
+      v.push_back({"reducer backlash 0.1° (0.0017453 rad)", 0, {"reducer.backlash=0.0017453"}});
   }
   for (double c : {2e5, 1e6, 1e7, 1e8, 1e9}) {
     std::ostringstream name;

@@ -19,7 +19,8 @@
 //                accuracy of the grid down to 1e-8, the two timed alternately (--repeat N pairs):
 //                what the O(n) reaction columns cost. -> reactions.csv, reactions.md.
 //   effects      cost of each effect at the scene's integrator and accuracy: rigid vs elastic
-//                coupling, coupling stiffness 2e5 ... 1e9 N·m/rad, guide friction on/off, each
+//                coupling, coupling damping off, reducer backlash 0.1° on (or off), coupling
+//                stiffness 2e5 ... 1e9 N·m/rad, guide friction on/off, each
 //                rod model, gravity on/off. -> effects.csv, effects_stiffness.{png,svg},
 //                effects_relative.{png,svg}, effects.md.
 //   motors       cost of each motor model (motor.model kloss, kloss_dynamic, circuit, park) on the

@@ -41,6 +41,7 @@ const std::vector<std::pair<std::string, std::string>>& exactUnits() {
       {"bearing_x", "N"}, {"bearing_y", "N"},
       {"stator_current", "A"}, {"supply_voltage_ratio", "-"}, {"supply_frequency_ratio", "-"},
       {"brake_torque", "N*m"},
+      {"tooth_contact", "1 drive flank/0 teeth apart/-1 reverse flank"},
   };
   return u;
 }

@@ -76,9 +76,22 @@ TwoMassEstimate twoMassEstimate(const Scene& scene) {
   return t;
 }
 
-ModesReport analyseModes(const Scene& scene, const ModesOptions& o) {
+ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   const std::clock_t c0 = std::clock();
   ModesReport r;
+  // Linear modes know no gap: with backlash they are those of the teeth always in contact.
+  Scene scene = given;
+  if (given.hasBacklash()) {
+    scene.reducer.backlash = 0.0;
+    char b[512];
+    std::snprintf(b, sizeof b,
+                  "the modes, Floquet multipliers and stability charts are those of the drive with the reducer's teeth "
+                  "always in contact (backlash %.4g rad taken as 0, contact stiffness c = %.4g N*m/rad); where the "
+                  "teeth separate in the run (summary.json backlash: teeth separate) the drive leaves this linear "
+                  "model at every parting and the resonance verdicts hold only between impacts",
+                  given.reducer.backlash, given.coupling.stiffness);
+    r.approximations.push_back({"permanent tooth contact", b});
+  }
   r.scene = scene.name;
   r.elastic = scene.coupling.type == CouplingType::Elastic;
   r.motor = scene.motor.enabled;

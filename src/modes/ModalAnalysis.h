@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -88,11 +89,16 @@ struct ModesReport {
   std::vector<StabilityChart> charts;
   std::vector<std::string> warnings;  // resonance warnings resting on this analysis
   std::vector<std::string> notes;     // what was not done and why
+  // Approximations the analysis rests on, by name, each with what it means and where it fails
+  // (e.g. "permanent tooth contact" under reducer.backlash > 0).
+  std::vector<std::pair<std::string, std::string>> approximations;
   // No steady motion: the speed of the uniform rotation the frozen-angle modes are taken at (where
   // the motor's static curve carries the mean load), NaN when none (no modes at all).
   double fallback_omega = NAN;
 };
 
+// With reducer.backlash > 0 the analysis is that of the drive with its teeth permanently in
+// contact (the backlash taken as 0), named in `approximations`: linear modes have no gap.
 ModesReport analyseModes(const Scene& scene, const ModesOptions& options = {});
 
 // The first estimate: J1, the crank side's mean inertia over a revolution (720 samples) and p0 of

@@ -310,6 +310,8 @@ std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, con
     for (const nlohmann::json& w : modal["warnings"])
       if (w.is_string()) h << "<p><b>Warning:</b> " << htmlEscape(w.get<std::string>()) << "</p>\n";
   for (const std::string& n : r.notes) h << "<p class=\"small\">Note: " << htmlEscape(n) << "</p>\n";
+  for (const auto& [name, meaning] : r.approximations)
+    h << "<p class=\"small\">Approximation, " << htmlEscape(name) << ": " << htmlEscape(meaning) << "</p>\n";
   for (const FigureFile& f : figures.figures) {
     h << "<figure id=\"" << htmlEscape(f.name) << "\">";
     if (!f.png.empty())

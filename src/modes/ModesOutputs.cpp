@@ -199,6 +199,9 @@ nlohmann::json modesJson(const ModesReport& r) {
   j["stability_charts"] = ch;
   j["warnings"] = r.warnings;
   j["notes"] = r.notes;
+  nlohmann::json approximations = nlohmann::json::array();
+  for (const auto& [name, meaning] : r.approximations) approximations.push_back({{"name", name}, {"meaning", meaning}});
+  j["approximations"] = approximations;
   return j;
 }
 
@@ -373,6 +376,7 @@ std::string modesText(const ModesReport& r, const std::string& run_stability_na)
     os << "\n";
   }
   for (const std::string& n : r.notes) os << "  note: " << n << "\n";
+  for (const auto& [name, meaning] : r.approximations) os << "  approximation, " << name << ": " << meaning << "\n";
   std::snprintf(b, sizeof b, "  analysis CPU %.2f s\n", r.cpu_seconds);
   os << b;
   return os.str();

@@ -503,6 +503,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   run.crank_speed_extrema = extrema.takeUpTo(run.timeseries.rows.empty() ? t_last : run.timeseries.rows.back()[0]);
   run.stats.steps = integ.steps();
+  run.stats.error_test_failures = integ.errorTestFailures();
   run.stats.realizations = integ.rhsEvaluations();
   run.stats.jacobian_evaluations = integ.jacobianEvaluations();
   run.stats.newton_convergence_failures = integ.newtonConvergenceFailures();

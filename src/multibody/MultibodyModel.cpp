@@ -156,12 +156,13 @@ void MultibodyModel::buildForces() {
                                             : "InductionMotor(" + law->description() + ")");
   }
   if (sc.coupling.type == CouplingType::Elastic) {
-    auto* f = new ElasticCoupling(motor_, sc.coupling.stiffness, sc.coupling.damping);
+    auto* f = new ElasticCoupling(motor_, couplingLaw(sc));
     SimTK::Force::Custom(forces_, f);
     coupling_force_ = sources.coupling = f;
     applied_order_.push_back(f);
-    inventory_.force_elements.push_back(sc.hasCouplingDamping() ? "ElasticCoupling(spring+damper)"
-                                                                : "ElasticCoupling(spring)");
+    inventory_.force_elements.push_back(std::string(sc.hasCouplingDamping() ? "ElasticCoupling(spring+damper"
+                                                                            : "ElasticCoupling(spring") +
+                                        (sc.hasBacklash() ? "+backlash)" : ")"));
   }
   if (sc.hasGravity()) {
     gravity_ = SimTK::Force::Gravity(forces_, matter_, -SimTK::YAxis, sc.loads.gravity);
@@ -384,6 +385,7 @@ std::vector<std::string> MultibodyModel::timeseriesColumns() const {
   if (motor_force_)
     for (const std::string& m : motorColumns(&motor_force_->law(), motor_force_->supply())) c.push_back(m);
   if (recordsReducerLosses()) c.push_back("reducer_loss_torque");
+  if (coupling_force_ && coupling_force_->law().hasBacklash()) c.push_back("tooth_contact");
   return c;
 }
 
@@ -427,6 +429,8 @@ void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& u
                        m.brakeTorque(s), ts);
   }
   if (recordsReducerLosses()) ts.push_back(motor_force_->reducerLossTorque(s));
+  if (coupling_force_ && coupling_force_->law().hasBacklash())
+    ts.push_back(static_cast<double>(toothContact(coupling_force_->law(), coupling_force_->twist(s))));
 }
 
 bool MultibodyModel::recordsReducerLosses() const {

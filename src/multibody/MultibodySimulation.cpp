@@ -144,7 +144,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   extrema.restart(t_prev, model.crankSpeed(integ->getState()), model.crankAcceleration(integ->getState()));
   double t_stop = nextStop(integ->getState()), trigger = triggerOf(integ->getState());
   SimTK::State switched;  // the state at an event, switched
-  long steps_before = 0, realizations_before = 0;  // counted before the last restart at an event
+  long steps_before = 0, realizations_before = 0, rejected_before = 0;  // counted before the last restart at an event
   std::size_t k = 1;
   bool stop = false;
   while (!stop && t_prev < t_end - 1e-12) {
@@ -207,6 +207,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
       motor->applyDueEvents(switched, by_speed);
       // initialize() starts the integrator's statistics afresh: keep what it counted so far.
       steps_before += integ->getNumStepsTaken();
+      rejected_before += integ->getNumErrorTestFailures();
       realizations_before += integ->getNumRealizations();
       try {
         integ->initialize(switched);  // a fresh start from the switched state (statistics keep counting)
@@ -234,6 +235,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   run.crank_speed_extrema = extrema.takeUpTo(last_row->getTime());
   run.stats.steps = steps_before + integ->getNumStepsTaken();
+  run.stats.error_test_failures = rejected_before + integ->getNumErrorTestFailures();
   run.stats.realizations = realizations_before + integ->getNumRealizations();
 
   // The audit ends at the last recorded row, where the tables end too (a run stopped early may

@@ -57,6 +57,7 @@ void setupTables(const ReducedModel& m, RunResult& res) {
   if (!m.scene().simulation.reactions) rx.clear();  // no reactions table
   for (const std::string& c : motorColumns(m.motorLaw(), m.supply())) ts.push_back(c);
   if (m.integratesReducerLosses()) ts.push_back("reducer_loss_torque");
+  if (m.coupling().hasBacklash()) ts.push_back("tooth_contact");
 }
 
 // One output row of both tables from an evaluation (its eps/coupling fields may have been
@@ -86,6 +87,7 @@ void appendRows(const ReducedModel& m, double t, const ModelEvaluation& e, RunRe
   q.push_back(e.coupling_torque);
   appendMotorColumns(m.motorLaw(), m.supply(), e.stator_current, e.supply, e.brake_torque, r);
   if (m.integratesReducerLosses()) r.push_back(e.reducer_loss_torque);
+  if (m.coupling().hasBacklash()) r.push_back(static_cast<double>(toothContact(m.coupling(), e.twist)));
   res.timeseries.rows.push_back(std::move(r));
   if (reactions) res.reactions.rows.push_back(std::move(q));
 }
@@ -285,7 +287,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   // (the law's states mapped across it) and CVODE restarts from the new state. A constant supply
   // has none, and the run is exactly the one without starting methods.
   const bool events = !m.supply().constant();
-  long steps_before_restarts = 0;
+  long steps_before_restarts = 0, rejected_before_restarts = 0;
   auto arm = [&](double t_now) {
     const double te = std::min(m.supply().nextEventTime(phase), times.back());
     int f = te > t_now ? CVodeSetStopTime(cv, te) : CV_SUCCESS;
@@ -343,6 +345,8 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
           long n = 0;
           CVodeGetNumSteps(cv, &n);
           steps_before_restarts += n;  // CVodeReInit zeroes the count
+          CVodeGetNumErrTestFails(cv, &n);
+          rejected_before_restarts += n;
           flag = CVodeReInit(cv, tret, y);
           if (flag < 0) break;
           arm(tret);
@@ -397,6 +401,9 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   long nsteps = 0;
   CVodeGetNumSteps(cv, &nsteps);
   res.stats.steps = steps_before_restarts + nsteps;
+  long nrejected = 0;
+  CVodeGetNumErrTestFails(cv, &nrejected);
+  res.stats.error_test_failures = rejected_before_restarts + nrejected;
   res.stats.realizations = ud.rhs_evals;  // includes the difference-quotient Jacobian calls
 
   res.energy.motor_work = y_last(m.iMotorWork());

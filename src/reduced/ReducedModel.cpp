@@ -8,6 +8,7 @@
 #include "analysis/FrictionChecks.h"
 #include "physics/CamMotionLaw.h"
 #include "motor/BreakdownTorque.h"
+#include "physics/CouplingLaw.h"
 #include "motor/SharedMotorLaw.h"
 #include "physics/RollerLoads.h"
 
@@ -38,6 +39,7 @@ ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> l
 
   breakdown_torque_ = rollerdyn::motorBreakdownTorque(scene_, law_.get());
   reducer_ = reducerLaw(scene_, breakdown_torque_);
+  coupling_ = couplingLaw(scene_);
   J_n1_ = scene_.motorSideInertia();  // Loveikin, Pochka, Romasevych (2018) eq. (1)
   J_crank_ = scene_.crankSideInertia();
   if (scene_.rods.model == RodModel::Split) {
@@ -311,7 +313,8 @@ void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y,
   const double M_drive = e.motor_torque + e.brake_torque;  // on the motor side, at the crank axis
   // The crank equation's inertia and its right-hand side without the load torque.
   const double J_eq = rigid_ ? J_n1_ + J : J;
-  const double drive = rigid_ ? M_drive : scene_.coupling.stiffness * e.twist + scene_.coupling.damping * e.twist_rate;
+  const CouplingTorque coupling = rigid_ ? CouplingTorque{} : couplingTorque(coupling_, e.twist, e.twist_rate);
+  const double drive = rigid_ ? M_drive : coupling.torque;
   if (kinetostatic_ && friction) {
     // The friction loop (physics/GuideFrictionLoop.h): ε = ε0 + Σ_j (x_B'_j/J)·F_j, F_j the
     // friction along world x, whose generalized force on φ2 is F_j·x_B'_j.
@@ -340,13 +343,12 @@ void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y,
     e.coupling_torque = M_drive - J_n1_ * e.eps_crank;
     e.damping_power = 0.0;
   } else {
-    // Loveikin, Pochka, Romasevych (2018) eq. (58)
-    const double k = scene_.coupling.damping;
+    // Loveikin, Pochka, Romasevych (2018) eq. (58), the coupling's law physics/CouplingLaw.h
     e.coupling_torque = drive;
     e.eps_motor = (M_drive - e.coupling_torque) / J_n1_;
     e.eps_crank = (e.coupling_torque - e.load_torque - 0.5 * e.dJ_n2 * w2 * w2) / e.J_n2;
     e.twist_accel = e.eps_motor - e.eps_crank;
-    e.damping_power = k * e.twist_rate * e.twist_rate;
+    e.damping_power = coupling.damping_power;
   }
   e.motor_power = e.motor_torque * e.omega_motor;
   e.brake_power = -e.brake_torque * e.omega_motor;
@@ -427,7 +429,7 @@ double ReducedModel::kineticEnergy(const Eigen::VectorXd& y) const {
 
 double ReducedModel::potentialEnergy(const Eigen::VectorXd& y) const {
   double V = gravityPotential(y(iPhi()));
-  if (!rigid_) V += 0.5 * scene_.coupling.stiffness * y(iTwist()) * y(iTwist());  // Loveikin, Pochka, Romasevych (2018) eq. (34)
+  if (!rigid_) V += couplingPotential(coupling_, y(iTwist()));  // Loveikin, Pochka, Romasevych (2018) eq. (34)
   return V;
 }
 

@@ -63,6 +63,7 @@
 #include "analysis/RunResult.h"
 #include "motor/MotorLaw.h"
 #include "motor/Supply.h"
+#include "physics/CouplingLaw.h"
 #include "physics/GuideFrictionLoop.h"
 #include "physics/ReducerLosses.h"
 #include "physics/SliderCrank.h"
@@ -130,6 +131,7 @@ class ReducedModel {
   // the timeseries carries reducer_loss_torque (under the papers' η they are (1/η − 1)·W_motor).
   bool integratesReducerLosses() const { return scene_.motor.enabled && reducer_.model == ReducerLossModel::PowerFlow; }
   const ReducerLaw& reducer() const { return reducer_; }
+  const CouplingLaw& coupling() const { return coupling_; }
   // reduced.guide_normals = kinetostatic (with guide friction: the loop is solved).
   bool kinetostatic() const { return kinetostatic_; }
   // Quasi-static normals with guide friction: the kinetostatic friction work is integrated too.
@@ -239,6 +241,7 @@ class ReducedModel {
   Supply supply_;
   SupplyPhase initial_phase_;
   ReducerLaw reducer_;  // reducer.losses (physics/ReducerLosses.h)
+  CouplingLaw coupling_;  // coupling.* and reducer.backlash (physics/CouplingLaw.h); elastic only
   double J_n1_;       // motor side, Loveikin, Pochka, Romasevych (2018) eq. (1)
   double breakdown_torque_ = 0;  // M_kr of the law the model runs [N·m at the rotor]
   double J_crank_;    // crankshaft without rods + split pin half-masses (Loveikin, Pochka, Romasevych (2018) eq. (2))

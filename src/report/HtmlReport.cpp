@@ -98,6 +98,9 @@ const char* const kVerdictColours =
     " out.push(c.className + ' ' + getComputedStyle(c).backgroundColor + ' ' + c.textContent.trim()); });"
     " document.body.setAttribute('data-verdict-cells', out.join(';')); });";
 
+// The reducer's teeth over the steady window (summary.json backlash), for a scene with backlash.
+std::string backlashHtml(const json& b);
+
 }  // namespace
 
 std::string htmlEscape(const std::string& text) {
@@ -219,6 +222,7 @@ std::string summaryMetricsHtml(const nlohmann::json& s) {
       {"energy_residual_rel", "energy audit residual (relative)", "-", "%.2e"},
       {"constraint_error_max", "largest constraint error", "-", "%.2e"},
       {"steps", "integrator steps", "", "%.0f"},
+      {"rejected_steps", "steps rejected by the error test", "", "%.0f"},
       {"realizations", "right-hand-side evaluations", "", "%.0f"},
       {"cpu_seconds", "CPU time", "s", "%.3g"},
       {"real_time_factor", "simulated time / CPU time", "-", "%.3g"},
@@ -232,7 +236,7 @@ std::string summaryMetricsHtml(const nlohmann::json& s) {
   for (const Metric& m : metrics)
     h << "<tr><td>" << htmlEscape(m.label) << "</td><td class=\"n\">" << htmlEscape(number(at(s, m.path), m.fmt))
       << "</td><td>" << m.unit << "</td></tr>\n";
-  h << "</table>\n";
+  h << "</table>\n" << backlashHtml(at(s, "backlash"));
 
   return h.str();
 }
@@ -363,5 +367,27 @@ std::string renderReportHtml(const ReportContent& c) {
   h << inlineScriptBlock(kFigureCounter) << inlineScriptBlock(kVerdictColours) << "</body>\n</html>\n";
   return h.str();
 }
+
+namespace {
+
+std::string backlashHtml(const json& b) {
+  if (!b.is_object() || !(b.value("backlash", 0.0) > 0.0)) return "";
+  std::ostringstream h;
+  h << "<h3>Backlash of the reducer</h3>\n<p class=\"small\">Total backlash 2b = " << number(b["backlash"], "%.4g")
+    << " rad at the crank axis; " << htmlEscape(number(b["verdict"]));
+  if (b["reason"].is_string()) h << ": " << htmlEscape(b["reason"].get<std::string>());
+  h << " (over the steady window; contacts shorter than the output step are not counted).</p>\n";
+  if (b["verdict"] == "not applicable") return h.str();
+  h << "<table>\n<tr><th>quantity</th><th>value</th><th>unit</th></tr>\n"
+    << "<tr><td>impacts per crank revolution (teeth meeting again)</td><td class=\"n\">"
+    << number(b["impacts_per_revolution"], "%.4g") << "</td><td>1/rev</td></tr>\n"
+    << "<tr><td>share of the time with the teeth apart, |φ1 − φ2| ≤ b</td><td class=\"n\">"
+    << number(b["out_of_contact_fraction"], "%.4g") << "</td><td>-</td></tr>\n"
+    << "<tr><td>peak impact torque (largest |coupling torque| from an impact to the next parting)</td><td class=\"n\">"
+    << number(b["peak_impact_torque"], "%.5g") << "</td><td>N·m</td></tr>\n</table>\n";
+  return h.str();
+}
+
+}  // namespace
 
 }  // namespace rollerdyn

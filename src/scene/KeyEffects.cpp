@@ -120,6 +120,10 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
            "motor.catalogue or motor.circuit), which the run and the sizing use";
   const std::string late = afterTheRunsEnd(key, sc);
   if (!late.empty()) return late;
+  if (key == "reducer.backlash" && sc.coupling.type == CouplingType::Rigid)
+    return "the coupling is rigid (coupling.type: rigid): motor and crank turn together, so the teeth never part";
+  if (key == "reducer.backlash" && sc.reducer.backlash == 0.0)
+    return "a backlash of 0 is the default: the teeth never part";
   if (key == "initial.twist" && sc.coupling.type == CouplingType::Rigid)
     return "the coupling is rigid (coupling.type: rigid): motor and crank turn together, with no twist between them";
   if (isCartMomentArm(key) && !guideSplitActs(sc))

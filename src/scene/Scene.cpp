@@ -97,6 +97,7 @@ std::vector<std::string> Scene::effects() const {
   if (hasMotor()) e.push_back(std::string(toString(induction.model)) + "_motor");
   e.push_back(coupling.type == CouplingType::Rigid ? "rigid_coupling" : "elastic_coupling");
   if (hasCouplingDamping()) e.push_back("coupling_damping");
+  if (hasBacklash()) e.push_back("backlash");
   if (hasCamDrive()) e.push_back("cam_drive");  // no rods: the cam pushes the cart (Loveikin and Pochka (cam drive paper))
   else e.push_back(std::string("rods_") + toString(rods.model));
   if (hasRollerLoads()) e.push_back("roller_loads");
@@ -114,6 +115,7 @@ std::string effectWords(const std::string& e) {
   if (e == "rigid_coupling") return "rigid coupling (coupling.type: rigid)";
   if (e == "elastic_coupling") return "torsional spring of the coupling (coupling.stiffness)";
   if (e == "coupling_damping") return "damping of the coupling (coupling.damping)";
+  if (e == "backlash") return "backlash of the reducer's teeth, no torque inside the gap (reducer.backlash)";
   if (e == "cam_drive") return "cam drive, no rods (drive.type: cam)";
   if (e == "rods_distributed") return "rods with distributed mass (rods.model: distributed)";
   if (e == "rods_split") return "rods' mass split, half at the crank pin, half at the cart (rods.model: split)";

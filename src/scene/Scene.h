@@ -195,6 +195,11 @@ struct Reducer {
                        // the crank side drives (physics/ReducerLosses.h) [-]   reducer.losses
   double efficiency_reverse = 0;  // η_r in (0, 1], crank side driving [-]; absent: = η
                        // (read only with losses = power_flow)         reducer.efficiency_reverse
+  double backlash = 0; // total backlash (free play) of the drive train between motor side and
+                       // crankshaft, reduced to the crank axis: the twist φ1 - φ2 travels
+                       // backlash/2 either way without torque before the teeth meet; the contact
+                       // stiffness and damping are the coupling's c, k (physics/CouplingLaw.h);
+                       // 0 = teeth always in contact [rad]                  reducer.backlash
 };
 
 struct Coupling {
@@ -331,6 +336,7 @@ struct Scene {
   bool hasGravity() const { return loads.gravity > 0.0; }
   bool hasFlywheel() const { return flywheel.inertia > 0.0; }
   bool hasCamDrive() const { return drive == DriveType::Cam; }
+  bool hasBacklash() const { return coupling.type == CouplingType::Elastic && reducer.backlash > 0.0; }
   bool hasCouplingDamping() const {
     return coupling.type == CouplingType::Elastic && coupling.damping > 0.0;
   }

@@ -248,6 +248,7 @@ Reducer readReducer(const Reader& in) {
   r.efficiency_reverse = in.numberOr("reducer.efficiency_reverse", r.efficiency);
   r.inertia = in.number("reducer.inertia");
   r.delta = in.number("reducer.delta");
+  r.backlash = in.number("reducer.backlash");
   return r;
 }
 
@@ -383,6 +384,13 @@ Scene readScene(const SceneDocument& doc) {
   s.sizing = readSizing(in);
   readMotorSwitching(in, s);
 
+  // Backlash: the teeth's contact stiffness and damping are the coupling's c, k, which a rigid
+  // coupling does not have (physics/CouplingLaw.h).
+  if (s.reducer.backlash > 0.0 && s.coupling.type == CouplingType::Rigid)
+    doc.fail("reducer.backlash",
+             "0 with coupling.type: rigid (the teeth in contact act through the coupling's stiffness and "
+             "damping: set coupling.type: elastic with coupling.stiffness, or reducer.backlash: 0)",
+             formatNumber(s.reducer.backlash));
   // Guide reactions (Loveikin, Pochka, Romasevych (2018) eq. (18)-(25)) divide by 2b; with friction they drive the load.
   if (s.loads.guide_friction > 0.0) {
     const std::string want =

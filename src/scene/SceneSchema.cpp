@@ -361,6 +361,13 @@ std::vector<KeySpec> buildSchema() {
       number("reducer.delta", "-", P::Optional, positive(), 1.0,
              "δ, factor on the motor-side inertia (J_p + J_m + J_red)·δ·u²")
           .from(L2018 + " eq. (1)"),
+      number("reducer.backlash", "rad", P::Optional, nonNegative(), 0.0,
+             "total backlash (free play) of the drive train between motor side and crankshaft, at the "
+             "crank axis: the twist φ1 − φ2 moves backlash/2 either way without torque before the teeth "
+             "meet; in contact the coupling's c and k act beyond the gap, and the damping never pulls the "
+             "teeth together. Needs coupling.type: elastic (the contact stiffness is coupling.stiffness); "
+             "0 = the teeth never part. E.g. 0.1° = 0.0017453 rad")
+          .from("Modelica Standard Library, Rotational.Components.ElastoBacklash"),
 
       choice("coupling.type", P::Required, {"elastic", "rigid"}, "",
              "elastic: two-mass model with a torsional spring-damper; rigid: one mass")

@@ -106,3 +106,18 @@ TEST(KeyEffects, TheSupplyFrequencyIsNamedWhereNoKlossLawReadsIt) {
 
 }  // namespace
 }  // namespace rollerdyn
+
+namespace rollerdyn {
+namespace {
+
+// A backlash of 0 given under a rigid coupling (a positive one is an error there) and a backlash
+// of 0 anywhere change nothing; a positive one under an elastic coupling acts.
+TEST(KeyEffects, AZeroBacklashOrOneUnderARigidCouplingIsNamed) {
+  EXPECT_TRUE(named(keysWithoutEffect(scene({"reducer.backlash=0"}), "multibody"), "reducer.backlash"));
+  EXPECT_TRUE(named(keysWithoutEffect(scene({"coupling.type=rigid", "reducer.backlash=0"}), "reduced"),
+                    "reducer.backlash"));
+  EXPECT_FALSE(named(keysWithoutEffect(scene({"reducer.backlash=0.001"}), "multibody"), "reducer.backlash"));
+}
+
+}  // namespace
+}  // namespace rollerdyn

@@ -231,6 +231,7 @@ reducer:
   efficiency: 0.8
   inertia: 0.05
   delta: 1.1
+  backlash: 0.003
 coupling:
   type: elastic
   stiffness: 150000
@@ -378,6 +379,7 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.reducer.delta, 1.1);
   EXPECT_EQ(s.reducer.losses, ReducerLossModel::PowerFlow);
   EXPECT_DOUBLE_EQ(s.reducer.efficiency_reverse, 0.75);
+  EXPECT_DOUBLE_EQ(s.reducer.backlash, 0.003);
   EXPECT_EQ(s.coupling.type, CouplingType::Elastic);
   EXPECT_DOUBLE_EQ(s.coupling.stiffness, 150000.0);
   EXPECT_DOUBLE_EQ(s.coupling.damping, 3000.0);

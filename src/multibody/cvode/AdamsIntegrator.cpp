@@ -31,6 +31,7 @@ struct AdamsIntegrator::Impl {
   double t = 0;
   long rhs_evals = 0;
   long steps_before = 0, jacobians_before = 0, failures_before = 0;  // counted before the last restart
+  long error_test_failures_before = 0;
   bool root_found = false;
   CvodeStepByStep stepper;  // with AdamsProblem::on_step: the normal mode one step at a time
   double stop_time = 0;
@@ -267,6 +268,7 @@ void AdamsIntegrator::restart(double t, const Eigen::VectorXd& y) {
   m.steps_before = steps();
   m.jacobians_before = jacobianEvaluations();
   m.failures_before = newtonConvergenceFailures();
+  m.error_test_failures_before = errorTestFailures();
   Eigen::Map<Eigen::VectorXd>(NV_DATA_S(m.y), y.size()) = y;
   int flag = CVodeReInit(m.cv, t, m.y);
   // SUNDIALS 6.4 keeps a stop time once reached; set it again (it must lie ahead of t).
@@ -291,6 +293,11 @@ long AdamsIntegrator::steps() const {
   long n = 0;
   CVodeGetNumSteps(impl_->cv, &n);
   return impl_->steps_before + n;
+}
+long AdamsIntegrator::errorTestFailures() const {
+  long n = 0;
+  CVodeGetNumErrTestFails(impl_->cv, &n);
+  return impl_->error_test_failures_before + n;
 }
 long AdamsIntegrator::rhsEvaluations() const { return impl_->rhs_evals; }
 long AdamsIntegrator::jacobianEvaluations() const {

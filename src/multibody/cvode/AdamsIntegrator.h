@@ -96,6 +96,7 @@ class AdamsIntegrator {
   double time() const;
   const Eigen::VectorXd& y() const;
   long steps() const;
+  long errorTestFailures() const;  // steps rejected by the local error test and retried smaller
   long rhsEvaluations() const;  // including the difference-quotient Jacobian's
   long jacobianEvaluations() const;        // Jacobians formed for the Newton matrix (0: fixed point)
   long newtonConvergenceFailures() const;  // corrector convergence failures
