@@ -103,7 +103,7 @@ def test_fatigue_and_coupling_selection_reach_python_as_the_summary_has_them():
     r = rd.simulate(short("balanced-4cart.yaml", **{
         "sizing.fatigue.coupling_torque.endurance_amplitude": 1000, "sizing.fatigue.coupling_torque.knee_cycles": 2e6,
         "sizing.fatigue.coupling_torque.slope": 6, "sizing.fatigue.required_starts": 1e5,
-        "sizing.coupling.max_torque": 1.0}), model="reduced")
+        "sizing.coupling.max_torque": 1.0, "simulation.t_end": 10}), model="reduced")  # the start settles
     g = r.sizing["fatigue"]["signals"]["coupling_torque"]
     assert g["per_start"]["applies"] and g["damage_per_start"] > 0
     assert g["starts_to_failure"] == pytest.approx(1 / g["damage_per_start"])
