@@ -480,6 +480,8 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
   s.flywheel = sizeFlywheel(sc, ts, w, b, e, turning && w.reached, delta, load);  // a steady revolution's figures
   s.coupling = sizeCoupling(sc, ts, b, e, n);
   s.joints = sizeJoints(sc, run, w, s.motion);
+  s.fatigue = computeFatigue(sc, run, w, start_up);
+  s.coupling_selection = computeCouplingSelection(sc, run, w, start_up);
   s.checks = sizingChecks(s, turning);
   for (SizingCheck& c : s.checks) {
     // A window that is no steady state is not called one (the third trial: "decided by the steady

@@ -37,6 +37,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/CouplingSelection.h"
+#include "analysis/Fatigue.h"
 #include "analysis/JointSizing.h"
 #include "analysis/RunResult.h"
 #include "analysis/StartUp.h"
@@ -155,6 +157,8 @@ struct DriveSizing {
   FlywheelSizing flywheel;
   CouplingSizing coupling;
   std::vector<JointSizing> joints;  // per cart: guide rollers, rod end, crank pin; then main bearing
+  FatigueSizing fatigue;          // damage per start and per hour (Fatigue.h)
+  CouplingSelection coupling_selection;  // the manufacturers' coupling checks (CouplingSelection.h)
   std::vector<SizingCheck> checks;  // start, motor_heating, motor_breakdown, coupling
   // The most loaded joint of each kind (largest P, else largest peak); nullptr when none.
   const JointSizing* worst(const std::string& joint) const;

@@ -195,6 +195,7 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning) {
     out.push_back(breakdownCheck(s, turning));
   }
   if (s.coupling.available) out.push_back(couplingCheck(s, turning));
+  appendSignOffChecks(s, turning, out);
   return out;
 }
 

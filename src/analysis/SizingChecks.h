@@ -30,4 +30,10 @@ inline constexpr const char* kWindowDuty = "duty cycle (steady running and start
 // `turning`: the crank turns in the window (RunMotion.h).
 std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning);
 
+// The fatigue checks (fatigue_starts_<signal>, fatigue_hours_<signal>: required starts or hours
+// times Miner's damage, ≤ 1) and the coupling selection after DIN 740-2 (coupling_rated_torque,
+// coupling_max_torque, coupling_vibratory_torque, coupling_damping_power), appended to `out`
+// where their inputs are given (SignOffChecks.cpp).
+void appendSignOffChecks(const DriveSizing& s, bool turning, std::vector<SizingCheck>& out);
+
 }  // namespace rollerdyn

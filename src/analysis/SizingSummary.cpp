@@ -145,6 +145,8 @@ json sizingJson(const DriveSizing& s) {
     joints[kind] = {{"what", w->what}, {"worst", jointJson(*w)}, {"per_cart", per}};
   }
   j["joints"] = joints;
+  j["fatigue"] = fatigueJson(s.fatigue);
+  j["coupling_selection"] = couplingSelectionJson(s.coupling_selection);
   j["life_exponent"] = kBearingLifeExponent;
   return j;
 }
@@ -389,6 +391,7 @@ std::string sizingText(const json& summary) {
                                             : std::string("not given (sizing.coupling_rated_torque)"))
       << "\n";
   }
+  o << signOffText(s);
   const json& checks = jsonMember(s, "checks");
   if (checks.is_array() && !checks.empty()) {
     o << "  checks (the window named decided each):\n";

@@ -21,6 +21,17 @@ namespace rollerdyn {
 // docs/outputs.md ("Drive sizing").
 nlohmann::json sizingJson(const DriveSizing& sizing);
 
+// sizing.fatigue: {below_knee, mean_correction, required_starts, required_hours, signals {coupling_torque,
+// rod_force: {what, unit, curve, per_start and steady: {applies, t_begin, t_end, damage, cycles, column,
+// dominant_cycles [{range, mean, count, amplitude_equivalent, damage}]} or {applies false, reason},
+// damage_per_start, damage_per_hour [1/h], starts_to_failure, hours_to_failure [h]}}} | null
+// (SignOffSummary.cpp).
+nlohmann::json fatigueJson(const FatigueSizing& f);
+// sizing.coupling_selection: ratings, factors, the run's torques and power and the four ratios | null.
+nlohmann::json couplingSelectionJson(const CouplingSelection& c);
+// Console lines of both, from summary.json's `sizing`; "" when neither was asked for.
+std::string signOffText(const nlohmann::json& sizing);
+
 // The runs that check the flywheel proposed for δ* (sizing.flywheel: an estimate, never run by
 // simulate), from a summary.json object that holds scene_path, overrides, model and omega_crank:
 // {flywheel_inertia (the proposal at the scene's flywheel location as printed [kg·m²]), location,

@@ -14,4 +14,8 @@ namespace rollerdyn {
 // HTML (h2, paragraphs, tables), every text escaped; a short paragraph when `summary` has no sizing.
 std::string sizingSectionHtml(const nlohmann::json& summary);
 
+// The fatigue and coupling-selection tables from summary.json's `sizing` (SignOffSection.cpp); "" when
+// neither was asked for.
+std::string signOffSectionHtml(const nlohmann::json& sizing);
+
 }  // namespace rollerdyn

@@ -332,6 +332,44 @@ ReducedSettings readReduced(const Reader& in) {
   return r;
 }
 
+SnCurve readSnCurve(const Reader& in, const std::string& prefix) {
+  SnCurve c;
+  c.endurance_amplitude = in.number(prefix + ".endurance_amplitude");
+  c.knee_cycles = in.number(prefix + ".knee_cycles");
+  c.slope = in.number(prefix + ".slope");
+  c.ultimate = in.number(prefix + ".ultimate");
+  const bool any = c.endurance_amplitude > 0 || c.knee_cycles > 0 || c.slope > 0 || c.ultimate > 0;
+  for (const char* k : {".endurance_amplitude", ".knee_cycles", ".slope"})
+    if (any && !in.has(prefix + k))
+      in.doc().fail(prefix + k,
+                    "all three of " + prefix + ".endurance_amplitude, .knee_cycles and .slope (an S-N curve needs "
+                    "its knee S_D at N_D cycles and its slope m)",
+                    "not given");
+  return c;
+}
+
+FatigueInputs readFatigue(const Reader& in) {
+  FatigueInputs f;
+  f.coupling_torque = readSnCurve(in, "sizing.fatigue.coupling_torque");
+  f.rod_force = readSnCurve(in, "sizing.fatigue.rod_force");
+  f.haibach = in.choice("sizing.fatigue.below_knee") != "cutoff";
+  f.required_starts = in.number("sizing.fatigue.required_starts");
+  f.required_hours = in.number("sizing.fatigue.required_hours");
+  return f;
+}
+
+CouplingRatings readCouplingRatings(const Reader& in) {
+  CouplingRatings c;
+  c.rated_torque = in.number("sizing.coupling.rated_torque");
+  c.max_torque = in.number("sizing.coupling.max_torque");
+  c.vibratory_torque = in.number("sizing.coupling.vibratory_torque");
+  c.damping_power = in.number("sizing.coupling.damping_power");
+  c.temperature_factor = in.number("sizing.coupling.temperature_factor");
+  c.start_factor = in.number("sizing.coupling.start_factor");
+  c.shock_factor = in.number("sizing.coupling.shock_factor");
+  return c;
+}
+
 // Ratings and targets of the sizing answers (SizingInputs.h); absent keys stay 0 = not given.
 SizingInputs readSizing(const Reader& in) {
   SizingInputs z;
@@ -345,6 +383,8 @@ SizingInputs readSizing(const Reader& in) {
   z.rating_rod_end = in.number("sizing.bearing_rating.rod_end");
   z.rating_crank_pin = in.number("sizing.bearing_rating.crank_pin");
   z.rating_main_bearing = in.number("sizing.bearing_rating.main_bearing");
+  z.fatigue = readFatigue(in);
+  z.coupling = readCouplingRatings(in);
   if (in.has("motor.omega_nominal")) z.motor_omega_nominal = in.number("motor.omega_nominal");
   if (in.has("motor.overload_ratio")) z.motor_overload_ratio = in.number("motor.overload_ratio");
   if (z.motor_nominal_torque > 0 && z.motor_nominal_power > 0)

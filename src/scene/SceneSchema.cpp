@@ -7,42 +7,13 @@
 #include <utility>
 
 #include "scene/DidYouMean.h"
+#include "scene/SchemaBuilders.h"
 
 namespace rollerdyn {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Interval helpers; names read as the condition they enforce.
-Range anyFinite() { return {-kInf, false, kInf, false}; }
-Range positive() { return {0.0, false, kInf, false}; }
-Range nonNegative() { return {0.0, true, kInf, false}; }
-Range between(double lo, bool lo_in, double hi, bool hi_in) { return {lo, lo_in, hi, hi_in}; }
-
-KeySpec number(std::string path, std::string unit, Presence presence, Range range, double def,
-               std::string meaning) {
-  return {std::move(path), KeyKind::Number, std::move(unit), presence, range, def, "", {},
-          std::move(meaning)};
-}
-
-KeySpec integer(std::string path, Presence presence, Range range, double def,
-                std::string meaning) {
-  return {std::move(path), KeyKind::Integer, "-", presence, range, def, "", {},
-          std::move(meaning)};
-}
-
-KeySpec choice(std::string path, Presence presence, std::vector<std::string> choices,
-               std::string def, std::string meaning) {
-  return {std::move(path), KeyKind::Choice, "-", presence, anyFinite(), 0.0, std::move(def),
-          std::move(choices), std::move(meaning)};
-}
-
-// A number key that may also be given per cart as a list (KeySpec::per_cart).
-KeySpec perCart(KeySpec spec) {
-  spec.per_cart = true;
-  return spec;
-}
+using namespace schema_builders;
 
 std::vector<KeySpec> buildSchema() {
   using P = Presence;
@@ -50,7 +21,7 @@ std::vector<KeySpec> buildSchema() {
   const std::string L2007 = "Loveikin and Pochka (2007)";
   const std::string CAM = "Loveikin and Pochka (cam drive paper)";
   const std::string EB = "the energy-balanced drive paper";
-  return {
+  std::vector<KeySpec> keys = {
       KeySpec{"source", KeyKind::Text, "-", P::Optional, anyFinite(), 0.0, "", {},
               "citation of the paper the scene comes from (authors, year, title); a scene of your own "
               "may leave it out, but not give it empty"},
@@ -456,7 +427,9 @@ std::vector<KeySpec> buildSchema() {
       number("sizing.bearing_rating.main_bearing", "N", P::Optional, positive(), 0.0,
              "C of the crankshaft main bearing (one bearing carrying the whole bearing force)")
           .from("ISO 281"),
-
+  };
+  for (KeySpec& k : signOffSchemaKeys()) keys.push_back(std::move(k));
+  std::vector<KeySpec> reduced = {
       choice("reduced.kinematics", P::Optional, {"exact", "truncated"}, "exact",
              "slider-crank kinematics of the reduced model: exact, or the truncated series")
           .from(L2018 + " eq. (40)-(47) (exact), (52)-(57) (truncated)"),
@@ -472,6 +445,8 @@ std::vector<KeySpec> buildSchema() {
              "statics without them (quasi_static)")
           .from(L2018 + " eq. (14)-(25) (quasi_static)"),
   };
+  keys.insert(keys.end(), std::make_move_iterator(reduced.begin()), std::make_move_iterator(reduced.end()));
+  return keys;
 }
 
 // One sentence per map of the schema, for the reference's section headings.
@@ -503,6 +478,14 @@ const std::vector<std::pair<std::string, std::string>>& mapDescriptions() {
        "Ratings and targets the run is compared with (the drive-sizing answers); they change "
        "nothing in the simulation, and a figure whose rating is left out is null (n/a)."},
       {"sizing.bearing_rating", "Basic dynamic load ratings C of the joints' bearings."},
+      {"sizing.fatigue",
+       "S-N curves of the parts for the fatigue damage per start and per hour (rainflow counting after "
+       "ASTM E1049-85 and Miner's rule)."},
+      {"sizing.fatigue.coupling_torque", "S-N curve of the coupling, in amplitudes of its torque at the crank axis."},
+      {"sizing.fatigue.rod_force", "S-N curve of a connecting rod, in amplitudes of its axial force."},
+      {"sizing.coupling",
+       "Catalogue ratings and selection factors of a flexible coupling, checked by the manufacturers' method "
+       "after DIN 740-2."},
       {"reduced", "Settings of the papers' reduced-mass model only."},
   };
   return d;

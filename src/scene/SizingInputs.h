@@ -5,6 +5,43 @@
 
 namespace rollerdyn {
 
+// An S-N (Woehler) curve of one part for Miner's rule (analysis/Fatigue.h), amplitudes of the
+// signal itself (N·m of the coupling torque at the crank axis, N of a rod force):
+//   N(S_a) = N_D·(S_D/S_a)^m above the knee; below it Haibach's slope 2m - 1 or a cut-off
+// (FatigueInputs::haibach). 0 = not given.                    sizing.fatigue.<signal>.*
+struct SnCurve {
+  double endurance_amplitude = 0;  // S_D, amplitude at the knee [N·m or N]    .endurance_amplitude
+  double knee_cycles = 0;          // N_D, cycles at the knee [-]              .knee_cycles
+  double slope = 0;                // m, exponent of the sloped branch [-]     .slope
+  double ultimate = 0;             // S_u for Goodman's mean correction; 0: none  .ultimate
+  bool given() const { return endurance_amplitude > 0 && knee_cycles > 0 && slope > 0; }
+};
+
+struct FatigueInputs {
+  SnCurve coupling_torque;         // sizing.fatigue.coupling_torque.*
+  SnCurve rod_force;               // sizing.fatigue.rod_force.* (every cart's rod alike)
+  bool haibach = true;             // below the knee: Haibach's slope 2m - 1 (true) or no damage
+                                   //                                           sizing.fatigue.below_knee
+  double required_starts = 0;      // starts the part must take [-]             sizing.fatigue.required_starts
+  double required_hours = 0;       // hours of steady running it must take [h]  sizing.fatigue.required_hours
+};
+
+// A flexible coupling's catalogue ratings and the selection factors of the manufacturers' method
+// after DIN 740-2 (analysis/CouplingSelection.h); torques reduced to the crank axis like
+// coupling.stiffness. 0 = not given; the factors default to 1.            sizing.coupling.*
+struct CouplingRatings {
+  double rated_torque = 0;         // T_KN [N·m]                                .rated_torque
+  double max_torque = 0;           // T_Kmax [N·m]                              .max_torque
+  double vibratory_torque = 0;     // T_KW, permissible amplitude at 10 Hz [N·m] .vibratory_torque
+  double damping_power = 0;        // P_KW, permissible damping power [W]       .damping_power
+  double temperature_factor = 1;   // S_t [-]                                   .temperature_factor
+  double start_factor = 1;         // S_z [-]                                   .start_factor
+  double shock_factor = 1;         // S_A [-]                                   .shock_factor
+  bool anyGiven() const {
+    return rated_torque > 0 || max_torque > 0 || vibratory_torque > 0 || damping_power > 0;
+  }
+};
+
 struct SizingInputs {
   double motor_nominal_torque = 0;  // M_n at the rotor [N·m]                   sizing.motor_nominal_torque
   double motor_nominal_power = 0;   // P_n at the rotor shaft [W]; M_n = P_n/ω_n
@@ -24,6 +61,8 @@ struct SizingInputs {
   double rating_crank_pin = 0;      // rod big end on the crank pin             .crank_pin
   double rating_main_bearing = 0;   // crankshaft main bearing (one, carrying the whole bearing force)
                                     //                                          .main_bearing
+  FatigueInputs fatigue;            // sizing.fatigue.*
+  CouplingRatings coupling;         // sizing.coupling.*
 };
 
 }  // namespace rollerdyn

@@ -96,3 +96,19 @@ def test_a_summary_key_that_does_not_exist_says_where_the_value_is():
     # Still the summary.json dict: equal to it, serialisable, .get works as for a dict.
     assert r.summary.get("no_such_key") is None
     assert json.loads(json.dumps(r.summary)) == r.summary
+
+
+def test_fatigue_and_coupling_selection_reach_python_as_the_summary_has_them():
+    """The damage per start and the DIN 740-2 checks are the summary's, rendered in text and HTML."""
+    r = rd.simulate(short("balanced-4cart.yaml", **{
+        "sizing.fatigue.coupling_torque.endurance_amplitude": 1000, "sizing.fatigue.coupling_torque.knee_cycles": 2e6,
+        "sizing.fatigue.coupling_torque.slope": 6, "sizing.fatigue.required_starts": 1e5,
+        "sizing.coupling.max_torque": 1.0, "simulation.t_end": 10}), model="reduced")  # the start settles
+    g = r.sizing["fatigue"]["signals"]["coupling_torque"]
+    assert g["per_start"]["applies"] and g["damage_per_start"] > 0
+    assert g["starts_to_failure"] == pytest.approx(1 / g["damage_per_start"])
+    checks = {c["check"]: c for c in r.sizing["checks"]}
+    assert checks["fatigue_starts_coupling_torque"]["verdict"] in ("pass", "FAIL")
+    # a 1 N·m T_Kmax is exceeded by any start
+    assert checks["coupling_max_torque"]["verdict"] == "FAIL"
+    assert "per start" in str(r) and "Coupling selection after DIN 740-2" in r._repr_html_()

@@ -274,6 +274,20 @@ sizing:
     rod_end: 2000
     crank_pin: 3000
     main_bearing: 4000
+  fatigue:
+    coupling_torque: {endurance_amplitude: 900, knee_cycles: 2.0e+6, slope: 6, ultimate: 20000}
+    rod_force: {endurance_amplitude: 30000, knee_cycles: 2.0e+6, slope: 5, ultimate: 600000}
+    below_knee: cutoff
+    required_starts: 100000
+    required_hours: 20000
+  coupling:
+    rated_torque: 4900
+    max_torque: 14700
+    vibratory_torque: 980
+    damping_power: 100
+    temperature_factor: 1.4
+    start_factor: 1.2
+    shock_factor: 1.5
 )";
 
 TEST(SceneSchema, FullSceneCoversTheSchema) {

@@ -73,6 +73,38 @@ TEST(SceneSizing, RejectsBadValuesWithFileLineAndKey) {
                    {"test.yaml:32: sizing.bearing_rating.crank_pn", "did you mean 'crank_pin'?"});
 }
 
+TEST(SceneSizing, FatigueCurvesAndCouplingRatingsReachTheScene) {
+  const Scene s = parseSceneText(kMinimalScene +
+                                     "sizing:\n"
+                                     "  fatigue:\n"
+                                     "    rod_force: {endurance_amplitude: 20000, knee_cycles: 2.0e+6, slope: 5, ultimate: 1.0e+6}\n"
+                                     "    below_knee: cutoff\n"
+                                     "    required_starts: 1000\n"
+                                     "  coupling: {rated_torque: 5000, damping_power: 300, temperature_factor: 1.4}\n",
+                                 "test.yaml");
+  EXPECT_DOUBLE_EQ(s.sizing.fatigue.rod_force.endurance_amplitude, 20000);
+  EXPECT_DOUBLE_EQ(s.sizing.fatigue.rod_force.knee_cycles, 2e6);
+  EXPECT_DOUBLE_EQ(s.sizing.fatigue.rod_force.slope, 5);
+  EXPECT_DOUBLE_EQ(s.sizing.fatigue.rod_force.ultimate, 1e6);
+  EXPECT_FALSE(s.sizing.fatigue.coupling_torque.given());
+  EXPECT_FALSE(s.sizing.fatigue.haibach);
+  EXPECT_DOUBLE_EQ(s.sizing.fatigue.required_starts, 1000);
+  EXPECT_DOUBLE_EQ(s.sizing.coupling.rated_torque, 5000);
+  EXPECT_DOUBLE_EQ(s.sizing.coupling.damping_power, 300);
+  EXPECT_DOUBLE_EQ(s.sizing.coupling.temperature_factor, 1.4);
+  EXPECT_DOUBLE_EQ(s.sizing.coupling.start_factor, 1.0);  // the factors default to 1
+  const Scene a = parseSceneText(kMinimalScene, "test.yaml");
+  EXPECT_TRUE(a.sizing.fatigue.haibach);
+  EXPECT_FALSE(a.sizing.coupling.anyGiven());
+}
+
+TEST(SceneSizing, AnSnCurveNeedsItsKneeAndSlopeTogether) {
+  expectSceneError(kMinimalScene + "sizing:\n  fatigue:\n    coupling_torque: {endurance_amplitude: 900, knee_cycles: 1.0e+6}\n",
+                   {"sizing.fatigue.coupling_torque.slope", "all three of"});
+  expectSceneError(kMinimalScene + "sizing:\n  coupling: {temperature_factor: 0.8}\n",
+                   {"sizing.coupling.temperature_factor: expected a number in [1, 10]"});
+}
+
 TEST(SceneSizing, OverridesReachTheSizingSection) {
   const Scene s = parseSceneText(kMinimalScene, "test.yaml", {"sizing.target_delta=0.08"});
   EXPECT_DOUBLE_EQ(s.sizing.target_delta, 0.08);

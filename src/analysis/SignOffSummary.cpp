@@ -1,0 +1,147 @@
+// The fatigue answers (Fatigue.h) and the coupling selection (CouplingSelection.h) as members of
+// summary.json's `sizing`, and their lines of the console table, rendered from that JSON only.
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "analysis/SizingSummary.h"
+#include "io/FieldFormat.h"
+
+namespace rollerdyn {
+
+using nlohmann::json;
+
+namespace {
+
+json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+std::string fmt(const json& v, const char* f = "%.4g") {
+  if (!v.is_number()) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v.get<double>());
+  return buf;
+}
+
+std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
+
+json windowJson(const WindowDamage& w) {
+  if (!w.applies) return {{"applies", false}, {"reason", w.not_applicable}};
+  json top = json::array();
+  for (const DamagingCycle& d : w.top)
+    top.push_back({{"range", num(d.range)}, {"mean", num(d.mean)}, {"count", num(d.count)},
+                   {"amplitude_equivalent", num(d.amplitude_equivalent)}, {"damage", num(d.damage)}});
+  return {{"applies", true}, {"t_begin", num(w.t_begin)}, {"t_end", num(w.t_end)}, {"damage", num(w.damage)},
+          {"cycles", num(w.cycles)}, {"column", w.where}, {"dominant_cycles", top}};
+}
+
+// "no damage" where a life is infinite, "n/a" where the window is missing.
+std::string lifeText(const json& window, const json& life, const char* unit) {
+  if (!jsonMember(window, "applies").is_boolean() || !jsonMember(window, "applies").get<bool>()) return "n/a";
+  return life.is_number() ? fmt(life, "%.3g") + unit : std::string("no damage (all cycles below a cut-off knee)");
+}
+
+void dominantText(std::ostringstream& o, const json& window, const std::string& unit) {
+  const json& top = jsonMember(window, "dominant_cycles");
+  if (!top.is_array() || top.empty()) return;
+  o << "      dominant cycles (range, mean [" << unit << "], count, share of the damage):";
+  const double D = jsonMember(window, "damage").is_number() ? jsonMember(window, "damage").get<double>() : 0.0;
+  for (const json& c : top) {
+    const double d = jsonMember(c, "damage").is_number() ? jsonMember(c, "damage").get<double>() : 0.0;
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.0f %%", D > 0 ? 100.0 * d / D : 0.0);
+    o << " (" << fmt(jsonMember(c, "range")) << ", " << fmt(jsonMember(c, "mean")) << ", "
+      << fmt(jsonMember(c, "count"), "%.1f") << ", " << buf << ")";
+  }
+  o << "\n";
+}
+
+}  // namespace
+
+json fatigueJson(const FatigueSizing& f) {
+  if (!f.requested) return nullptr;
+  json signals = json::object();
+  for (const SignalFatigue& g : f.signals) {
+    signals[g.signal] = {
+        {"what", g.what},
+        {"unit", g.unit},
+        {"curve", g.curve_given ? json{{"endurance_amplitude", g.curve.endurance_amplitude},
+                                       {"knee_cycles", g.curve.knee_cycles},
+                                       {"slope", g.curve.slope},
+                                       {"ultimate", num(g.curve.ultimate > 0 ? g.curve.ultimate : NAN)}}
+                                : json(nullptr)},
+        {"per_start", windowJson(g.start)},
+        {"steady", windowJson(g.steady)},
+        {"damage_per_start", num(g.damage_per_start)},
+        {"damage_per_hour", num(g.damage_per_hour)},
+        {"starts_to_failure", num(g.starts_to_failure)},
+        {"hours_to_failure", num(g.hours_to_failure)}};
+  }
+  return {{"below_knee", f.below_knee},
+          {"mean_correction", f.mean_correction},
+          {"required_starts", num(f.required_starts)},
+          {"required_hours", num(f.required_hours)},
+          {"signals", signals}};
+}
+
+json couplingSelectionJson(const CouplingSelection& c) {
+  if (!c.requested) return nullptr;
+  return {{"method", "DIN 740-2 as the coupling makers publish it (KTR, Coupling selection according to DIN 740 part 2)"},
+          {"rated_torque", num(c.rated_torque)},
+          {"max_torque", num(c.max_torque)},
+          {"vibratory_torque", num(c.vibratory_torque)},
+          {"damping_power", num(c.damping_power)},
+          {"S_t", c.S_t},
+          {"S_z", c.S_z},
+          {"S_A", c.S_A},
+          {"S_f", num(c.S_f)},
+          {"start_peak", num(c.start_peak)},
+          {"steady_peak", num(c.steady_peak)},
+          {"vibratory_amplitude", num(c.steady_amplitude)},
+          {"excitation_order", c.excitation_order},
+          {"excitation_frequency", num(c.excitation_frequency)},
+          {"damping_power_run", num(c.damping_power_run)},
+          {"damping_basis", c.damping_basis},
+          {"rated_ratio", num(c.rated_ratio)},
+          {"max_ratio", num(c.max_ratio)},
+          {"vibratory_ratio", num(c.vibratory_ratio)},
+          {"damping_ratio", num(c.damping_ratio)}};
+}
+
+std::string signOffText(const json& sizing) {
+  std::ostringstream o;
+  const json& f = jsonMember(sizing, "fatigue");
+  if (f.is_object()) {
+    o << "  fatigue (rainflow after ASTM E1049-85, Miner's rule; below the knee: " << str(jsonMember(f, "below_knee"))
+      << "; mean correction: " << str(jsonMember(f, "mean_correction")) << ")\n";
+    for (const auto& [name, g] : jsonMember(f, "signals").items()) {
+      const std::string unit = str(jsonMember(g, "unit"));
+      const json &ps = jsonMember(g, "per_start"), &st = jsonMember(g, "steady");
+      o << "    " << str(jsonMember(g, "what")) << ":\n";
+      o << "      per start:  damage " << fmt(jsonMember(g, "damage_per_start"), "%.3g") << ", starts to failure "
+        << lifeText(ps, jsonMember(g, "starts_to_failure"), "");
+      if (!jsonMember(ps, "applies").get<bool>()) o << " (" << str(jsonMember(ps, "reason")) << ")";
+      o << "\n";
+      dominantText(o, ps, unit);
+      o << "      per hour:   damage " << fmt(jsonMember(g, "damage_per_hour"), "%.3g") << " 1/h, hours to failure "
+        << lifeText(st, jsonMember(g, "hours_to_failure"), " h");
+      if (!jsonMember(st, "applies").get<bool>()) o << " (" << str(jsonMember(st, "reason")) << ")";
+      o << "\n";
+      dominantText(o, st, unit);
+    }
+  }
+  const json& c = jsonMember(sizing, "coupling_selection");
+  if (c.is_object()) {
+    o << "  coupling selection (" << str(jsonMember(c, "method")) << "), torques at the crank axis:\n"
+      << "    peak torque: start " << fmt(jsonMember(c, "start_peak")) << ", steady " << fmt(jsonMember(c, "steady_peak"))
+      << " N·m; vibratory amplitude T_W " << fmt(jsonMember(c, "vibratory_amplitude")) << " N·m at f = "
+      << fmt(jsonMember(c, "excitation_frequency")) << " Hz (S_f " << fmt(jsonMember(c, "S_f"), "%.3g")
+      << "); damping power P_W " << fmt(jsonMember(c, "damping_power_run")) << " W\n"
+      << "    factors S_t " << fmt(jsonMember(c, "S_t"), "%.3g") << ", S_z " << fmt(jsonMember(c, "S_z"), "%.3g") << ", S_A "
+      << fmt(jsonMember(c, "S_A"), "%.3g") << "; ratings T_KN " << fmt(jsonMember(c, "rated_torque")) << ", T_Kmax "
+      << fmt(jsonMember(c, "max_torque")) << ", T_KW " << fmt(jsonMember(c, "vibratory_torque")) << " N·m, P_KW "
+      << fmt(jsonMember(c, "damping_power")) << " W (n/a: not given)\n";
+  }
+  return o.str();
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,75 @@
+// Scene keys of the fatigue (Fatigue.h) and coupling-selection (CouplingSelection.h) sign-off,
+// part of the scene schema (SceneSchema.cpp).
+#include "scene/SchemaBuilders.h"
+
+namespace rollerdyn {
+
+using namespace schema_builders;
+
+std::vector<KeySpec> signOffSchemaKeys() {
+  using P = Presence;
+  return {
+      number("sizing.fatigue.coupling_torque.endurance_amplitude", "N·m", P::Optional, positive(), 0.0,
+             "S_D, amplitude of the coupling torque (at the crank axis) at the knee of its S-N curve (the fatigue strength at N_D cycles); "
+             "with knee_cycles and slope it turns the run's rainflow cycles into damage per start and per hour")
+          .from("ASTM E1049-85 (rainflow), Miner's rule"),
+      number("sizing.fatigue.coupling_torque.knee_cycles", "-", P::Optional, positive(), 0.0,
+             "N_D, cycles at the knee of the coupling torque (at the crank axis)'s S-N curve, e.g. 1e6 or 2e6"),
+      number("sizing.fatigue.coupling_torque.slope", "-", P::Optional, positive(), 0.0,
+             "m, exponent of the sloped branch: N = N_D·(S_D/S_a)^m above the knee"),
+      number("sizing.fatigue.coupling_torque.ultimate", "N·m", P::Optional, positive(), 0.0,
+             "S_u, ultimate value of the coupling torque (at the crank axis) for Goodman's mean-stress correction "
+             "S_ar = S_a/(1 - |S_m|/S_u); left out: no mean correction")
+          .from("Goodman's line"),
+      number("sizing.fatigue.rod_force.endurance_amplitude", "N", P::Optional, positive(), 0.0,
+             "S_D, amplitude of the rod force (each rod) at the knee of its S-N curve (the fatigue strength at N_D cycles); "
+             "with knee_cycles and slope it turns the run's rainflow cycles into damage per start and per hour")
+          .from("ASTM E1049-85 (rainflow), Miner's rule"),
+      number("sizing.fatigue.rod_force.knee_cycles", "-", P::Optional, positive(), 0.0,
+             "N_D, cycles at the knee of the rod force (each rod)'s S-N curve, e.g. 1e6 or 2e6"),
+      number("sizing.fatigue.rod_force.slope", "-", P::Optional, positive(), 0.0,
+             "m, exponent of the sloped branch: N = N_D·(S_D/S_a)^m above the knee"),
+      number("sizing.fatigue.rod_force.ultimate", "N", P::Optional, positive(), 0.0,
+             "S_u, ultimate value of the rod force (each rod) for Goodman's mean-stress correction "
+             "S_ar = S_a/(1 - |S_m|/S_u); left out: no mean correction")
+          .from("Goodman's line"),
+      choice("sizing.fatigue.below_knee", P::Optional, {"haibach", "cutoff"}, "haibach",
+             "S-N curve below its knee S_D: Haibach's extension with slope 2m - 1 (haibach: small cycles still "
+             "damage once large ones have lowered the endurance limit) or the plain cut-off (cutoff: no damage "
+             "below S_D)")
+          .from("Haibach, Betriebsfestigkeit (modified Miner rule)"),
+      number("sizing.fatigue.required_starts", "-", P::Optional, positive(), 0.0,
+             "starts the parts must take: the fatigue check of a start compares it with 1/(damage per start)"),
+      number("sizing.fatigue.required_hours", "h", P::Optional, positive(), 0.0,
+             "hours of steady running the parts must take: the check compares it with 1/(damage per hour)"),
+      number("sizing.coupling.rated_torque", "N·m", P::Optional, positive(), 0.0,
+             "T_KN, the coupling's rated torque from its catalogue, reduced to the crank axis; checked "
+             "against the steady peak T_N·S_t")
+          .from("DIN 740-2 (KTR coupling selection)"),
+      number("sizing.coupling.max_torque", "N·m", P::Optional, positive(), 0.0,
+             "T_Kmax, the coupling's maximum torque, reduced to the crank axis; checked against the "
+             "largest peak of the start and the steady running T_S·S_A·S_z·S_t")
+          .from("DIN 740-2 (KTR coupling selection)"),
+      number("sizing.coupling.vibratory_torque", "N·m", P::Optional, positive(), 0.0,
+             "T_KW, the coupling's permissible vibratory torque amplitude (catalogue value at 10 Hz), "
+             "reduced to the crank axis; checked against T_W·S_t·S_f")
+          .from("DIN 740-2 (KTR coupling selection)"),
+      number("sizing.coupling.damping_power", "W", P::Optional, positive(), 0.0,
+             "P_KW, the elastic coupling's permissible damping power (heat it sheds continuously); "
+             "checked against the steady mean of k·Δω² times S_t")
+          .from("DIN 740-2 (KTR coupling selection)"),
+      number("sizing.coupling.temperature_factor", "-", P::Optional, between(1.0, true, 10.0, true), 1.0,
+             "S_t, temperature factor of the coupling's elastomer at its working temperature (catalogue "
+             "table; 1 up to about 30 °C)")
+          .from("DIN 740-2 (KTR coupling selection)"),
+      number("sizing.coupling.start_factor", "-", P::Optional, between(1.0, true, 10.0, true), 1.0,
+             "S_z, starting factor for the starts per hour (catalogue table; 1 up to 100 starts per hour)")
+          .from("DIN 740-2 (KTR coupling selection)"),
+      number("sizing.coupling.shock_factor", "-", P::Optional, between(1.0, true, 10.0, true), 1.0,
+             "S_A, shock factor for shocks the model does not hold (the simulated peak already holds the "
+             "start's and the reversals' shocks; 1 unless the process adds others)")
+          .from("DIN 740-2 (KTR coupling selection)")
+  };
+}
+
+}  // namespace rollerdyn
