@@ -479,6 +479,7 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
   s.flywheel = sizeFlywheel(sc, ts, w, b, e, turning && w.reached, delta, load);  // a steady revolution's figures
   s.coupling = sizeCoupling(sc, ts, b, e, n);
   s.joints = sizeJoints(sc, run, w, s.motion);
+  s.crankshaft = sizeCrankshaft(sc, run, w);
   s.checks = sizingChecks(s, turning);
   for (SizingCheck& c : s.checks) {
     // A window that is no steady state is not called one (the third trial: "decided by the steady

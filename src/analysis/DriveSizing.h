@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/CrankshaftBearings.h"
 #include "analysis/JointSizing.h"
 #include "analysis/RunResult.h"
 #include "analysis/StartUp.h"
@@ -155,6 +156,8 @@ struct DriveSizing {
   FlywheelSizing flywheel;
   CouplingSizing coupling;
   std::vector<JointSizing> joints;  // per cart: guide rollers, rod end, crank pin; then main bearing
+  CrankshaftSizing crankshaft;      // bending moments at the throws, torques of the shaft segments
+                                    // (crankshaft.throw_positions; CrankshaftBearings.h)
   std::vector<SizingCheck> checks;  // start, motor_heating, motor_breakdown, coupling
   // The most loaded joint of each kind (largest P, else largest peak); nullptr when none.
   const JointSizing* worst(const std::string& joint) const;

@@ -42,6 +42,9 @@ struct JointSizing {
   std::string joint;        // guide_roller_front, guide_roller_rear, rod_end, crank_pin, main_bearing
   std::string what;         // the joint in words (the main bearings: the resultant, said so)
   int cart = 0;             // 1-based cart number; 0 for the main bearings
+  int bearing = 0;          // main bearing number k along the shaft (1 = smallest z) when the scene gives
+                            // crankshaft.bearing_positions; 0: not a main bearing, or their resultant
+  double position = 0;      // the main bearing's axial position z [m]; NaN unless bearing > 0
   std::string column;       // reactions column(s) the force comes from
   std::string speed_basis;  // what weights P (rotation or swing speed used, or "none")
   JointLoad load;           // mean, amplitude, peak, equivalent dynamic load P, mean speed
