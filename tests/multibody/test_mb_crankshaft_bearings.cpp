@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/CrankshaftBearings.h"
+#include "analysis/SteadyState.h"
 #include "multibody/MultibodyModel.h"
 #include "multibody/MultibodySimulation.h"
 #include "scene/SceneParser.h"
@@ -74,6 +76,26 @@ TEST(MultibodyCrankshaftBearings, FiringOrderChangesTheBearingsButNotTheResultan
   EXPECT_NEAR(Ra, Rb, 1e-6 * Ra);
   const double a1 = peakOf(ra.reactions, "bearing_x_1", "bearing_y_1"), b1 = peakOf(rb.reactions, "bearing_x_1", "bearing_y_1");
   EXPECT_GT(std::abs(a1 - b1), 0.01 * a1) << "bearing 1's peak: " << a1 << " N against " << b1 << " N";
+}
+
+TEST(MultibodyCrankshaftBearings, ShaftSegmentAtTheCouplingCarriesTheCouplingTorque) {
+  // The shipped scene's crankshaft has no inertia of its own (crank.inertia_per_crank = 0,
+  // crank.shaft_inertia = 0, distributed rods): the coupling's torque goes wholly into the crank
+  // pins, so the torque of the segment from the coupling, Σ r × F over the pins, must peak where
+  // the coupling torque the model computes peaks.
+  const Scene sc = shortRun({"simulation.t_end=6", "crankshaft.throw_positions=[0.2, 0.4, 0.6, 0.8]",
+                             "crankshaft.bearing_positions=[0, 1.0]"});
+  const RunResult run = runMultibodyModel(sc);
+  const SteadyState w = detectSteadyState(run, sc.simulation.steady_window_revolutions);
+  ASSERT_TRUE(w.reached);
+  const CrankshaftSizing c = sizeCrankshaft(sc, run, w);
+  ASSERT_TRUE(c.available) << c.reason;
+  const std::vector<double> t = run.reactions.column("t"), M = run.reactions.column("coupling_torque");
+  double peak = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= w.t_begin && t[i] <= w.t_end) peak = std::max(peak, std::abs(M[i]));
+  ASSERT_GT(peak, 1.0);
+  EXPECT_NEAR(c.segment_torque_peak[0], peak, 1e-6 * peak);
 }
 
 TEST(MultibodyCrankshaftBearings, WithoutTheKeysTheReactionsTableKeepsItsColumns) {
