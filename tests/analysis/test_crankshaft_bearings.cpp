@@ -3,9 +3,13 @@
 // three-moment equation. R is the force of the bearing on the shaft: a load P pushes it back.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "analysis/CrankshaftBearings.h"
+#include "analysis/DriveSizing.h"
+#include "analysis/SizingSummary.h"
+#include "analysis/SteadyState.h"
 
 namespace rollerdyn {
 namespace {
@@ -83,6 +87,57 @@ TEST(CrankshaftBearings, BendingMomentAtMidSpanIsPLOverFour) {
 TEST(CrankshaftBearings, LayoutWithFewerThanTwoOrUnorderedBearingsIsRefused) {
   EXPECT_THROW(ShaftBeam({0.0}, {0.5}), std::invalid_argument);
   EXPECT_THROW(ShaftBeam({1.0, 0.0}, {0.5}), std::invalid_argument);
+}
+
+// One cart at constant crank speed whose rod pushes its crank pin with a constant F0 along x; the
+// bearings' resultant is −F0 (nothing else on the shaft). Throw at z = 0.25 m between bearings at 0
+// and 1 m: the lever rule gives |R1| = 0.75·F0, |R2| = 0.25·F0, constant, so P = |R| and
+// L10 = (C/P)³·10⁶ revolutions, L10h = L10/(Ω/2π·3600).
+TEST(CrankshaftBearings, EachBearingGetsItsOwnJointRowWithItsShareAndLife) {
+  constexpr double F0 = 8000, Om = 10.0, C = 60000, kPi = 3.14159265358979323846;
+  Scene sc{};
+  sc.simulation.steady_window_revolutions = 3;
+  sc.crank.radius = 0.2;
+  sc.crank.offset = 0;
+  sc.rods.length = 0.8;
+  sc.rods.model = RodModel::Massless;
+  sc.carts.count = 1;
+  sc.carts.side = {1};
+  sc.carts.mass = 1000;
+  sc.sizing.rating_main_bearing = C;
+  sc.crankshaft.throw_positions = {0.25};
+  sc.crankshaft.bearing_positions = {0.0, 1.0};
+  RunResult rr;
+  rr.model = "multibody";
+  rr.timeseries.columns = {"t", "phi_crank", "omega_crank", "eps_crank"};
+  rr.reactions.columns = {"t", "crankpin_x_1", "crankpin_y_1", "bearing_x", "bearing_y"};
+  const double T = 5 * 2 * kPi / Om;
+  for (int i = 0; i <= 5000; ++i) {
+    const double t = T * i / 5000;
+    rr.timeseries.rows.push_back({t, Om * t, Om, 0.0});
+    rr.reactions.rows.push_back({t, F0, 0.0, -F0, 0.0});
+  }
+  appendBearingColumns(sc, rr);
+  ASSERT_TRUE(rr.reactions.has("bearing_x_2"));
+  const SteadyState w = detectSteadyState(rr.timeseries, sc.simulation.steady_window_revolutions);
+  const DriveSizing s = computeDriveSizing(sc, rr, w, true, 0.0, "turning");
+  std::vector<const JointSizing*> mains;
+  for (const JointSizing& j : s.joints)
+    if (j.joint == "main_bearing") mains.push_back(&j);
+  ASSERT_EQ(mains.size(), 2u);
+  const double share[2] = {0.75, 0.25}, z[2] = {0.0, 1.0};
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(mains[k]->bearing, k + 1);
+    EXPECT_EQ(mains[k]->position, z[k]);
+    EXPECT_NEAR(mains[k]->load.peak, share[k] * F0, 1e-6);
+    EXPECT_NEAR(mains[k]->load.equivalent, share[k] * F0, 1e-6);
+    const double L10 = std::pow(C / (share[k] * F0), 3) * 1e6;
+    EXPECT_NEAR(mains[k]->life_hours, L10 / (Om / (2 * kPi) * 3600), 1e-6 * L10);
+  }
+  const nlohmann::json j = sizingJson(s);
+  EXPECT_EQ(j["joints"]["main_bearing"]["per_cart"][1]["bearing"], 2);
+  EXPECT_EQ(j["joints"]["main_bearing"]["per_cart"][1]["position"], 1.0);
+  EXPECT_EQ(j["crankshaft"]["bearing_positions"], nlohmann::json::array({0.0, 1.0}));
 }
 
 }  // namespace
