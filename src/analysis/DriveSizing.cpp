@@ -482,6 +482,7 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
   s.joints = sizeJoints(sc, run, w, s.motion);
   s.fatigue = computeFatigue(sc, run, w, start_up);
   s.coupling_selection = computeCouplingSelection(sc, run, w, start_up);
+  s.crankshaft = sizeCrankshaft(sc, run, w);
   s.checks = sizingChecks(s, turning);
   for (SizingCheck& c : s.checks) {
     // A window that is no steady state is not called one (the third trial: "decided by the steady

@@ -39,6 +39,7 @@
 
 #include "analysis/CouplingSelection.h"
 #include "analysis/Fatigue.h"
+#include "analysis/CrankshaftBearings.h"
 #include "analysis/JointSizing.h"
 #include "analysis/RunResult.h"
 #include "analysis/StartUp.h"
@@ -159,6 +160,8 @@ struct DriveSizing {
   std::vector<JointSizing> joints;  // per cart: guide rollers, rod end, crank pin; then main bearing
   FatigueSizing fatigue;          // damage per start and per hour (Fatigue.h)
   CouplingSelection coupling_selection;  // the manufacturers' coupling checks (CouplingSelection.h)
+  CrankshaftSizing crankshaft;      // bending moments at the throws, torques of the shaft segments
+                                    // (crankshaft.throw_positions; CrankshaftBearings.h)
   std::vector<SizingCheck> checks;  // start, motor_heating, motor_breakdown, coupling
   // The most loaded joint of each kind (largest P, else largest peak); nullptr when none.
   const JointSizing* worst(const std::string& joint) const;

@@ -69,6 +69,10 @@ const Kind kMainBearing{"main_bearing",
                         "main bearings, resultant on the crankshaft (all bearings together; per-bearing loads "
                         "need the bearing positions)",
                         "sizing.bearing_rating.main_bearing"};
+const Kind kEachMainBearing{"main_bearing",
+                            "main bearings, each bearing's reaction from the crankshaft's beam statics "
+                            "(crankshaft.bearing_positions)",
+                            "sizing.bearing_rating.main_bearing"};
 
 // The joint's load over rows [b, e), weighted by `speed` (empty: every instant equally).
 JointSizing loadOf(const Kind& k, int cart, std::string column, std::string basis, const std::vector<double>& t,
@@ -82,6 +86,7 @@ JointSizing loadOf(const Kind& k, int cart, std::string column, std::string basi
   j.speed_basis = std::move(basis);
   j.load = jointLoad(t, F, speed, b, e);
   j.rating = given(rating);
+  j.position = kNaN;
   j.oscillation_angle = j.oscillation_frequency = j.rolling_elements_min = kNaN;
   j.life_revolutions = j.life_oscillations = j.life_hours = kNaN;
   return j;
@@ -227,6 +232,25 @@ void addRodJoints(std::vector<JointSizing>& out, const JointRun& u, int j) {
   }
 }
 
+// Each main bearing's reaction (crankshaft.bearing_positions; CrankshaftBearings.h), each turning
+// with the crank and rated with sizing.bearing_rating.main_bearing.
+void addMainBearings(std::vector<JointSizing>& out, const JointRun& u) {
+  for (int k = 1; u.rx.has("bearing_x_" + std::to_string(k)); ++k) {
+    const std::string x_col = "bearing_x_" + std::to_string(k), y_col = "bearing_y_" + std::to_string(k);
+    JointSizing x = loadOf(kEachMainBearing, 0, x_col + ", " + y_col, "crank speed |ω_crank|", u.t,
+                           magnitude(u.rx.column(x_col), u.rx.column(y_col)), u.crank_speed, u.b, u.e,
+                           u.sc.sizing.rating_main_bearing);
+    x.bearing = k;
+    const std::vector<double>& z = u.sc.crankshaft.bearing_positions;
+    x.position = static_cast<std::size_t>(k - 1) < z.size() ? z[k - 1] : kNaN;
+    x.life_basis = "each main bearing carries its share of the shaft's beam statics, turning with the crank "
+                   "(every bearing rated with sizing.bearing_rating.main_bearing); " +
+                   std::string(kHoursAtMeanSpeed);
+    rateLife(x, kEachMainBearing, u.no_life);
+    out.push_back(std::move(x));
+  }
+}
+
 }  // namespace
 
 std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const SteadyState& w,
@@ -249,7 +273,9 @@ std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const
     addGuideRollers(out, u, j);
     addRodJoints(out, u, j);
   }
-  if (u.rx.has("bearing_x") && u.rx.has("bearing_y") && !u.crank_speed.empty()) {
+  if (u.rx.has("bearing_x_1") && u.rx.has("bearing_y_1") && !u.crank_speed.empty()) {
+    addMainBearings(out, u);
+  } else if (u.rx.has("bearing_x") && u.rx.has("bearing_y") && !u.crank_speed.empty()) {
     JointSizing x = loadOf(kMainBearing, 0, "bearing_x, bearing_y", "crank speed |ω_crank|", u.t,
                            magnitude(u.rx.column("bearing_x"), u.rx.column("bearing_y")), u.crank_speed, u.b, u.e,
                            sc.sizing.rating_main_bearing);

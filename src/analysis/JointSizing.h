@@ -20,9 +20,11 @@
 //    swing, n = |ω_crank·(1 + σ·dβ/dθ)| (the rod turns at −σ·β̇, σ the cart's side). As
 //    |dβ/dθ| ≤ r/l < 1 it never reverses and makes exactly one relative revolution per crank
 //    revolution: a rotating bearing at the mean crank speed, with P weighted by n;
-//  * the main bearings: the reactions give the resultant force the crankshaft's supports exert
-//    (all bearings together); per-bearing loads need the bearing positions, which the model does
-//    not have. Its life is that of one bearing carrying the whole resultant, turning at |ω_crank|.
+//  * the main bearings: without crankshaft.bearing_positions the reactions give only the resultant
+//    force the crankshaft's supports exert (all bearings together), and its life is that of one
+//    bearing carrying the whole resultant, turning at |ω_crank|. With the throws and bearings placed
+//    (crankshaft.*, CrankshaftBearings.h) each bearing gets its own row from bearing_x_k, bearing_y_k,
+//    turning at |ω_crank| and rated with sizing.bearing_rating.main_bearing.
 // Lives apply only to joints that move in a steady running: a drive that does not turn (stalled,
 // rocking, at rest), that is still starting or coasting, or a run without a steady state gets no
 // life (NaN) and the reason.
@@ -42,6 +44,9 @@ struct JointSizing {
   std::string joint;        // guide_roller_front, guide_roller_rear, rod_end, crank_pin, main_bearing
   std::string what;         // the joint in words (the main bearings: the resultant, said so)
   int cart = 0;             // 1-based cart number; 0 for the main bearings
+  int bearing = 0;          // main bearing number k along the shaft (1 = smallest z) when the scene gives
+                            // crankshaft.bearing_positions; 0: not a main bearing, or their resultant
+  double position = 0;      // the main bearing's axial position z [m]; NaN unless bearing > 0
   std::string column;       // reactions column(s) the force comes from
   std::string speed_basis;  // what weights P (rotation or swing speed used, or "none")
   JointLoad load;           // mean, amplitude, peak, equivalent dynamic load P, mean speed

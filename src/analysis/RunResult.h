@@ -13,7 +13,9 @@
 //             then per cart j = 1..n: x_cart_j, v_cart_j, a_cart_j.
 //             Motor angle and speed are reduced to the crank axis (rotor angle / u).
 // reactions:  t, per cart j: N_front_j, N_rear_j, F_rod_j, friction_j, crankpin_x_j, crankpin_y_j,
-//             then bearing_x, bearing_y, coupling_torque.
+//             then bearing_x, bearing_y, coupling_torque; when the scene places throws and
+//             bearings (crankshaft.*), then bearing_x_k, bearing_y_k for each main bearing k along
+//             the shaft (analysis/CrankshaftBearings.h; their sum is bearing_x, bearing_y).
 //             N_* > 0 when the guide presses the cart's guide rollers downward (Loveikin, Pochka, Romasevych (2018) fig. 3);
 //             F_rod > 0 in tension (pulls the cart towards the shaft, Loveikin, Pochka, Romasevych (2018) eq. (14)):
 //             the rod's force on the cart at B along B -> A (a rod with mass also pushes across

@@ -1,4 +1,5 @@
 #include "analysis/SizingSummary.h"
+#include "analysis/CrankshaftSummary.h"
 #include "io/FieldFormat.h"
 
 #include <algorithm>
@@ -14,7 +15,18 @@ using nlohmann::json;
 
 json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
+json jointRowJson(const JointSizing& j);
+
 json jointJson(const JointSizing& j) {
+  json row = jointRowJson(j);
+  if (j.bearing > 0) {  // a main bearing of crankshaft.bearing_positions: which one and where
+    row["bearing"] = j.bearing;
+    row["position"] = num(j.position);
+  }
+  return row;
+}
+
+json jointRowJson(const JointSizing& j) {
   constexpr double kDegPerRad = 57.295779513082320876798154814105;
   return {{"cart", j.cart > 0 ? json(j.cart) : json(nullptr)},
           {"column", j.column},
@@ -147,6 +159,7 @@ json sizingJson(const DriveSizing& s) {
   j["joints"] = joints;
   j["fatigue"] = fatigueJson(s.fatigue);
   j["coupling_selection"] = couplingSelectionJson(s.coupling_selection);
+  if (s.crankshaft.given) j["crankshaft"] = crankshaftJson(s.crankshaft);
   j["life_exponent"] = kBearingLifeExponent;
   return j;
 }
@@ -192,6 +205,17 @@ static std::string wholeRunWords(const json& summary) {
 namespace {
 
 std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); }
+
+// One row of the joints' table: label, cart, mean, amplitude, peak, P, C [kN], L10 [h].
+std::string jointLine(const std::string& label, const json& x) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "  %-24s  %4s  %9s  %14s  %9s  %6s  %6s  %7s\n", label.c_str(),
+                jsonMember(x, "cart").is_number() ? std::to_string(jsonMember(x, "cart").get<int>()).c_str() : "-",
+                fmt(jsonMember(x, "mean"), "%.3f", 1e-3).c_str(), fmt(jsonMember(x, "amplitude"), "%.3f", 1e-3).c_str(),
+                fmt(jsonMember(x, "peak"), "%.3f", 1e-3).c_str(), fmt(jsonMember(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
+                fmt(jsonMember(x, "rating"), "%.1f", 1e-3).c_str(), fmt(jsonMember(x, "L10_hours"), "%.3g").c_str());
+  return buf;
+}
 
 // A command-line word, quoted for the shell where it needs it.
 std::string shellWord(const std::string& a) {
@@ -417,13 +441,15 @@ std::string sizingText(const json& summary) {
   for (std::size_t k = 0; k < 5; ++k) {
     const json& x = jsonMember(jsonMember(joints, kJointKinds[k]), "worst");
     if (!x.is_object()) continue;
-    char buf[256];
-    std::snprintf(buf, sizeof buf, "  %-24s  %4s  %9s  %14s  %9s  %6s  %6s  %7s\n", names[k],
-                  jsonMember(x, "cart").is_number() ? std::to_string(jsonMember(x, "cart").get<int>()).c_str() : "-",
-                  fmt(jsonMember(x, "mean"), "%.3f", 1e-3).c_str(), fmt(jsonMember(x, "amplitude"), "%.3f", 1e-3).c_str(),
-                  fmt(jsonMember(x, "peak"), "%.3f", 1e-3).c_str(), fmt(jsonMember(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
-                  fmt(jsonMember(x, "rating"), "%.1f", 1e-3).c_str(), fmt(jsonMember(x, "L10_hours"), "%.3g").c_str());
-    o << buf;
+    if (!jsonMember(x, "bearing").is_number()) {
+      o << jointLine(names[k], x);
+      continue;
+    }
+    // Bearings placed along the shaft (crankshaft.bearing_positions): every one of them.
+    for (const json& b : jsonMember(jsonMember(joints, kJointKinds[k]), "per_cart"))
+      o << jointLine("main bearing " + std::to_string(jsonMember(b, "bearing").get<int>()) + ", z " +
+                         fmt(jsonMember(b, "position"), "%.3g") + " m",
+                     b);
   }
   o << "  P equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation or swing speed; "
        "C dynamic load rating (sizing.bearing_rating.*); L10 in hours of steady running:\n";
@@ -443,6 +469,7 @@ std::string sizingText(const json& summary) {
     }
     o << "\n";
   }
+  o << crankshaftText(jsonMember(s, "crankshaft"));
   return o.str();
 }
 

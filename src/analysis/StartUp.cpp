@@ -78,7 +78,15 @@ std::vector<JointKind> jointKinds(const Table& r) {
     pin.names.push_back("crankpin_x_" + std::to_string(j) + "|crankpin_y_" + std::to_string(j));
   }
   if (!pin.x.empty()) kinds.push_back(std::move(pin));
-  if (r.has("bearing_x") && r.has("bearing_y"))
+  JointKind each{"main_bearing", {}, {}, {}};  // each bearing when crankshaft.bearing_positions places them
+  for (int k = 1; r.has("bearing_x_" + std::to_string(k)); ++k) {
+    each.x.push_back(r.column("bearing_x_" + std::to_string(k)));
+    each.y.push_back(r.column("bearing_y_" + std::to_string(k)));
+    each.names.push_back("bearing_x_" + std::to_string(k) + "|bearing_y_" + std::to_string(k));
+  }
+  if (!each.x.empty())
+    kinds.push_back(std::move(each));
+  else if (r.has("bearing_x") && r.has("bearing_y"))
     kinds.push_back({"main_bearing", {r.column("bearing_x")}, {r.column("bearing_y")}, {"bearing_x|bearing_y"}});
   return kinds;
 }

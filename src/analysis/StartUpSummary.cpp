@@ -208,7 +208,10 @@ std::string startUpText(const json& summary) {
   for (const char* kind : {"guide_roller_front", "guide_roller_rear", "rod_force", "crank_pin", "main_bearing"}) {
     const json& p = jsonMember(joints, kind);
     if (!p.is_object()) continue;
-    const std::string words = jointWords(kind);
+    // Bearings placed along the shaft (crankshaft.bearing_positions): the most loaded one's column.
+    const json& col = jsonMember(p, "column");
+    const bool each = col.is_string() && col.get<std::string>().rfind("bearing_x_", 0) == 0;
+    const std::string words = each ? "main bearings (most loaded)" : jointWords(kind);
     o << "  " << words << std::string(30 - words.size(), ' ') << "peak " << f(jsonMember(p, "peak"), "%.4g", 1e-3)
       << " kN" << in_start << ", " << steady << " " << f(jsonMember(p, "steady_peak"), "%.4g", 1e-3) << " kN (x" << f(jsonMember(p, "ratio"), "%.3g")
       << ")\n";

@@ -46,12 +46,13 @@ const std::vector<std::pair<std::string, std::string>>& exactUnits() {
   return u;
 }
 
-// Per-cart prefixes: name_<j>.
+// Per-cart prefixes: name_<j> (and the main bearings' name_<k>).
 const std::vector<std::pair<std::string, std::string>>& cartUnits() {
   static const std::vector<std::pair<std::string, std::string>> u = {
       {"x_cart", "m"}, {"v_cart", "m/s"}, {"a_cart", "m/s^2"},
       {"N_front", "N"}, {"N_rear", "N"}, {"F_rod", "N"}, {"friction", "N"},
       {"crankpin_x", "N"}, {"crankpin_y", "N"},
+      {"bearing_x", "N"}, {"bearing_y", "N"},  // per main bearing k: bearing_x_k, bearing_y_k
   };
   return u;
 }

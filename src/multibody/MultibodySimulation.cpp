@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "analysis/CrankSpeedExtrema.h"
+#include "analysis/CrankshaftBearings.h"
 #include "analysis/OutputGrid.h"
 #include "analysis/RestDetector.h"
 #include "analysis/StallDetector.h"
@@ -58,7 +59,11 @@ double locateSpeedTrigger(const MultibodyModel& model, double t0, const SimTK::V
 
 RunResult simulateMultibody(const MultibodyModel& model, const RunControl& control) {
   const Scene& sc = model.scene();
-  if (sc.simulation.formulation == Formulation::Minimal) return simulateMinimal(model, control);
+  if (sc.simulation.formulation == Formulation::Minimal) {
+    RunResult run = simulateMinimal(model, control);
+    appendBearingColumns(sc, run);  // each main bearing's share, when crankshaft.* places them
+    return run;
+  }
   if (model.hasGuideFriction() && !model.hasFrictionLagStates())
     throw std::invalid_argument(
         "multibody model: loads.guide_friction.normal_force = algebraic needs simulation.formulation = minimal "
@@ -244,6 +249,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   system.realize(s1, SimTK::Stage::Acceleration);
   const EnergySnapshot e1 = model.energy(s1);
   run.energy = energyAuditBetween(e0, e1);
+  appendBearingColumns(sc, run);  // each main bearing's share, when crankshaft.* places them
   return run;
 }
 

@@ -19,7 +19,8 @@ namespace {
 // A value text of the parameter table as the Python value it stands for, by the key's kind.
 py::object typedValue(const KeySpec& spec, const std::string& text) {
   switch (spec.kind) {
-    case KeyKind::Number: {
+    case KeyKind::Number:
+    case KeyKind::NumberList: {
       const YAML::Node n = YAML::Load(text);
       if (!n.IsSequence()) return py::float_(n.as<double>());
       py::list l;  // a per-cart key given as a list: one float per cart

@@ -154,7 +154,12 @@ std::string sizingSectionHtml(const json& s) {
     if (!per.is_array()) continue;
     const std::string what = text(jsonMember(jsonMember(joints, kind), "what"));
     for (const json& x : per)
-      h << "<tr><td>" << what << "</td><td class=\"n\">" << (jsonMember(x, "cart").is_number() ? jsonMember(x, "cart").dump() : "-")
+      h << "<tr><td>"
+        << (jsonMember(x, "bearing").is_number()  // a main bearing placed along the shaft
+                ? "main bearing " + jsonMember(x, "bearing").dump() + " at z = " +
+                      jsonNumberText(jsonMember(x, "position"), "%.4g") + " m"
+                : what)
+        << "</td><td class=\"n\">" << (jsonMember(x, "cart").is_number() ? jsonMember(x, "cart").dump() : "-")
         << "</td><td class=\"n\">" << jsonNumberText(jsonMember(x, "mean"), "%.3f", 1e-3) << "</td><td class=\"n\">"
         << jsonNumberText(jsonMember(x, "amplitude"), "%.3f", 1e-3) << "</td><td class=\"n\">" << jsonNumberText(jsonMember(x, "peak"), "%.3f", 1e-3)
         << "</td><td class=\"n\">" << jsonNumberText(jsonMember(x, "equivalent_load"), "%.3f", 1e-3) << "</td><td class=\"n\">"

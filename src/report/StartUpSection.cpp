@@ -80,8 +80,10 @@ std::string startUpSectionHtml(const json& summary) {
                             {"main_bearing", "main bearings, resultant on the crankshaft (all bearings together; per-bearing loads need the bearing positions)"}};
   for (const auto& k : kinds) {
     const json& p = jsonMember(jsonMember(s, "joints"), k[0]);
+    // Bearings placed along the shaft (crankshaft.bearing_positions): the most loaded of them.
+    const bool each = jsonMember(p, "column").is_string() && jsonMember(p, "column").get<std::string>().rfind("bearing_x_", 0) == 0;
     if (p.is_object())
-      h << row(k[1], jsonNumberText(jsonMember(p, "peak"), "%.4g", 1e-3), jsonNumberText(jsonMember(p, "steady_peak"), "%.4g", 1e-3),
+      h << row(each ? "main bearings, the most loaded one (each bearing's share of the crankshaft's beam statics)" : k[1], jsonNumberText(jsonMember(p, "peak"), "%.4g", 1e-3), jsonNumberText(jsonMember(p, "steady_peak"), "%.4g", 1e-3),
                jsonNumberText(jsonMember(p, "ratio"), "%.3g"), "kN");
   }
   const json& I = jsonMember(s, "stator_current");

@@ -92,6 +92,14 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
     if (key == "sizing.bearing_rating.crank_pin" || key == "sizing.bearing_rating.main_bearing")
       return "the reduced model computes no crank-pin or main-bearing forces (run the multibody model for their lives)";
   }
+  if (key == "crankshaft.bending_stiffness")
+    return "with one E·I along the whole shaft on rigid supports the main bearings' reactions do not depend on "
+           "its value, with two bearings or more (the continuous beam's reactions follow from the positions alone)";
+  if ((key == "crankshaft.throw_positions" || key == "crankshaft.bearing_positions") && model == "reduced")
+    return "the reduced model computes no crank-pin forces, which each main bearing's share needs (run the "
+           "multibody model)";
+  if ((key == "crankshaft.throw_positions" || key == "crankshaft.bearing_positions") && !sc.simulation.reactions)
+    return "no reactions are computed (simulation.reactions: false), so no bearing's share either";
   if (key == "reducer.efficiency_reverse" && sc.reducer.losses == ReducerLossModel::Papers)
     return "the papers' constant η (reducer.losses: papers) multiplies the motor torque by reducer.efficiency "
            "whichever way the power flows; set reducer.losses: power_flow for a reverse efficiency";

@@ -74,6 +74,21 @@ struct CrankShaft {
                                      //                                      crank.angle_error_deg
 };
 
+// The crankshaft as a beam on its main bearings (crankshaft.*, src/analysis/CrankshaftBearings.h).
+// Positions z are measured along the shaft axis from any origin the scene chooses. Both lists
+// empty: the model knows the bearings only as their resultant (reactions bearing_x, bearing_y).
+struct CrankshaftLayout {
+  std::vector<double> throw_positions = {};    // per cart j: axial position z of its crank throw
+                                               // (the plane of its crank pin) [m]
+                                               //                      crankshaft.throw_positions
+  std::vector<double> bearing_positions = {};  // axial positions z of the main bearings, two or
+                                               // more, ascending [m]  crankshaft.bearing_positions
+  double bending_stiffness = 0;  // E·I of the shaft, uniform along it [N·m²]; 0 = not given. With
+                                 // one E·I on rigid supports the reactions do not depend on it; it
+                                 // only scales the shaft's deflection   crankshaft.bending_stiffness
+  bool given() const { return !bearing_positions.empty(); }
+};
+
 // Cam drive with optimal reversal of Loveikin and Pochka (drive.type = cam): each cart is pushed by a constant-diameter cam on the
 // crankshaft instead of a crank and rod, and follows the optimal-reversal motion law of Loveikin and Pochka (cam drive paper)
 // eq. (29)-(34) as a function of the cam angle (src/physics/CamMotionLaw.h). One cam turn is one
@@ -274,6 +289,7 @@ struct Scene {
   SimulationSettings simulation;
   InitialState initial;
   CrankShaft crank;
+  CrankshaftLayout crankshaft;  // crankshaft.*: throws and main bearings along the shaft (optional)
   ConnectingRods rods;
   Carts carts;
   KlossMotor motor;

@@ -414,6 +414,7 @@ Scene readScene(const SceneDocument& doc) {
   s.rods = readRods(in, s.crank.radius);
   s.carts = readCarts(in);
   readCrankAngles(in, s.crank, s.carts.count);
+  s.crankshaft = scene_detail::readCrankshaft(in, s.carts.count);
   scene_detail::readMotor(in, s.motor, s.induction);
   s.reducer = readReducer(in);
   s.coupling = readCoupling(in);

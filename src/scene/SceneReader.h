@@ -75,6 +75,18 @@ class Reader {
     return values;
   }
 
+  // A NumberList key: every element in the key's range, element i named key[i]; empty when absent.
+  std::vector<double> numberList(const std::string& path) const {
+    const KeySpec& s = spec(path);
+    const YAML::Node node = doc_.find(path);
+    if (!node.IsDefined()) return {};
+    if (!node.IsSequence()) fail(s, describeNode(node));
+    std::vector<double> values(node.size());
+    for (size_t i = 0; i < node.size(); ++i)
+      values[i] = checkedNumber(s, node[i], path + "[" + std::to_string(i) + "]", "");
+    return values;
+  }
+
   int integer(const std::string& path) const {
     const KeySpec& s = spec(path);
     if (!has(path)) return static_cast<int>(absent(s));
@@ -182,5 +194,9 @@ class Reader {
 // The motor section: Kloss's M_kr, s_kr (`motor`) and the machine behind the other laws
 // (`induction`: motor.model, rated supply, motor.circuit.*, motor.catalogue.*), validated together.
 void readMotor(const Reader& in, KlossMotor& motor, InductionMotor& induction);
+
+// The crankshaft's layout (crankshaft.*): throws and main bearings along the shaft, validated
+// against the number of carts (CrankshaftSceneParser.cpp).
+CrankshaftLayout readCrankshaft(const Reader& in, int cart_count);
 
 }  // namespace rollerdyn::scene_detail

@@ -85,6 +85,22 @@ std::vector<KeySpec> buildSchema() {
       number("crank.shaft_inertia", "kg·m²", P::Optional, nonNegative(), 0.0,
              "crankshaft without cranks, about its axis"),
 
+      perCart(number("crankshaft.throw_positions", "m", P::Conditional, anyFinite(), 0.0,
+                     "axial position z of each cart's crank throw (the plane of its crank pin), z growing "
+                     "away from the coupling (the drive torque enters at the smallest z): a list with one "
+                     "value per cart. With "
+                     "crankshaft.bearing_positions it splits the main bearings' resultant into each "
+                     "bearing's reaction; a throw outside the outer bearings is an overhung crank")
+                  .when("only with crankshaft.bearing_positions; absent: the main bearings' resultant only")),
+      KeySpec{"crankshaft.bearing_positions", KeyKind::NumberList, "m", P::Conditional, anyFinite(), 0.0, "", {},
+              "axial positions z of the main bearings, the same origin as crankshaft.throw_positions: a list "
+              "of two or more, ascending; the shaft is a beam on rigid supports there"}
+          .when("only with crankshaft.throw_positions; absent: the main bearings' resultant only"),
+      number("crankshaft.bending_stiffness", "N·m²", P::Optional, positive(), 0.0,
+             "E·I of the crankshaft, uniform along it. Without effect on the bearing reactions: with one "
+             "E·I on rigid supports they do not depend on its value, also with more than two bearings "
+             "(accepted, and reported as without effect)"),
+
       choice("rods.model", P::Required, {"distributed", "split", "massless"}, "",
              "connecting-rod mass model: distributed (uniform bar), split (half of the mass at "
              "the crank pin, half at the cart) or massless")
@@ -455,6 +471,9 @@ const std::vector<std::pair<std::string, std::string>>& mapDescriptions() {
       {"simulation", "How the run is integrated and what it writes."},
       {"initial", "The state at t = 0."},
       {"crank", "The crankshaft and its cranks."},
+      {"crankshaft",
+       "The crankshaft as a beam along its axis: where each crank throw and each main bearing sits "
+       "(optional; without it the main bearings are known only as their resultant)."},
       {"rods", "The connecting rods, crank pin to cart hinge B."},
       {"drive", "Crank-slider or cam drive of the carts."},
       {"cam", "The cam drive of Loveikin and Pochka (cam drive paper), used when drive.type is cam."},
@@ -576,6 +595,10 @@ std::string describeExpected(const KeySpec& spec) {
     case KeyKind::Sides:
       return "a list of same/opposite with one entry per cart, or one of the words "
              "same, opposite, alternate";
+    case KeyKind::NumberList: {
+      const std::string range = describeRange(spec.range);
+      return "a list of numbers" + (range.empty() ? std::string() : " " + range) + unit;
+    }
   }
   return "?";
 }
@@ -599,6 +622,7 @@ std::string describeAllowed(const KeySpec& spec) {
       const std::string range = describeRange(spec.range);
       const std::string one = range.empty() ? "any finite number" : range;
       if (spec.path == "crank.angles_deg") return "a list of carts.count values " + one + ", one per cart, the first 0";
+      if (spec.path == "crankshaft.throw_positions") return "a list of carts.count values " + one + ", one per cart";
       return spec.per_cart ? one + "; or a list of carts.count such values, one per cart" : one;
     }
     case KeyKind::Integer: {
@@ -609,6 +633,7 @@ std::string describeAllowed(const KeySpec& spec) {
     case KeyKind::Choice: return "one of: " + joinChoices(spec.choices);
     case KeyKind::Flag: return "true or false";
     case KeyKind::Sides: return "a list of same/opposite (one per cart), or same, opposite, alternate";
+    case KeyKind::NumberList: return "a list of two or more numbers, ascending";
   }
   return "?";
 }

@@ -22,6 +22,7 @@ enum class KeyKind {
   Choice,   // one of a fixed list of words
   Flag,     // true | false
   Sides,    // carts.sides: list of same/opposite, or the shorthand same | opposite | alternate
+  NumberList,  // a list of finite reals, each in the key's range (its length checked by the parser)
 };
 
 enum class Presence {

@@ -160,6 +160,10 @@ crank:
   angle_error_deg: [0, 2, -1]
   inertia_per_crank: 0.5
   shaft_inertia: 0.7
+crankshaft:
+  throw_positions: [0.2, 0.5, 0.8]
+  bearing_positions: [0, 0.35, 0.65, 1.0]
+  bending_stiffness: 2.0e5
 rods:
   model: split
   length: 0.9
@@ -311,6 +315,9 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   const Scene s = parseSceneText(kFullScene, "full.yaml", {"motor.start.method=soft_starter"});
   const double deg = M_PI / 180.0;
   EXPECT_EQ(s.source, "every key");
+  EXPECT_EQ(s.crankshaft.throw_positions, (std::vector<double>{0.2, 0.5, 0.8}));
+  EXPECT_EQ(s.crankshaft.bearing_positions, (std::vector<double>{0, 0.35, 0.65, 1.0}));
+  EXPECT_DOUBLE_EQ(s.crankshaft.bending_stiffness, 2.0e5);
   EXPECT_DOUBLE_EQ(s.simulation.t_end, 3.0);
   EXPECT_DOUBLE_EQ(s.simulation.accuracy, 1e-5);
   EXPECT_EQ(s.simulation.integrator, "CPodes");

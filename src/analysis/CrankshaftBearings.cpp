@@ -1,0 +1,250 @@
+#include "analysis/CrankshaftBearings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Hermite cubic beam element of length L and E·I = 1: stiffness on (w1, θ1, w2, θ2).
+Eigen::Matrix4d elementStiffness(double L) {
+  const double L2 = L * L, L3 = L2 * L;
+  Eigen::Matrix4d k;
+  k << 12 / L3, 6 / L2, -12 / L3, 6 / L2,  //
+      6 / L2, 4 / L, -6 / L2, 2 / L,       //
+      -12 / L3, -6 / L2, 12 / L3, -6 / L2, //
+      6 / L2, 2 / L, -6 / L2, 4 / L;
+  return k;
+}
+
+// y(t) at the times tq (linear; both ascending); y itself when the grids are the same rows.
+std::vector<double> onRows(const std::vector<double>& t, const std::vector<double>& y, const std::vector<double>& tq) {
+  if (t == tq) return y;
+  std::vector<double> out(tq.size(), kNaN);
+  if (t.size() < 2) return out;
+  std::size_t hi = 1;
+  for (std::size_t i = 0; i < tq.size(); ++i) {
+    while (hi + 1 < t.size() && t[hi] < tq[i]) ++hi;
+    const double dt = t[hi] - t[hi - 1];
+    const double f = dt > 0 ? std::clamp((tq[i] - t[hi - 1]) / dt, 0.0, 1.0) : 1.0;
+    out[i] = y[hi - 1] + f * (y[hi] - y[hi - 1]);
+  }
+  return out;
+}
+
+// The forces on the shaft at every reactions row: per throw j (cart order) and the rest of the
+// resultant at mid-span (CrankshaftBearings.h), with the pins' torques about the axis.
+struct ShaftLoads {
+  std::vector<std::vector<double>> px, py;  // [row][load]: throws 0..n-1, then the rest
+  std::vector<std::vector<double>> torque;  // [row][throw]: T_j = x_pin·P_y − y_pin·P_x [N·m]
+};
+
+ShaftLoads shaftLoads(const Scene& sc, const RunResult& run) {
+  const Table& rx = run.reactions;
+  const int n = sc.carts.count;
+  const std::vector<double> t = rx.column("t");
+  const std::vector<double> Rx = rx.column("bearing_x"), Ry = rx.column("bearing_y");
+  const std::vector<double> ts_t = run.timeseries.column("t");
+  const std::vector<double> phi = onRows(ts_t, run.timeseries.column("phi_crank"), t);
+  const std::vector<double> w = onRows(ts_t, run.timeseries.column("omega_crank"), t);
+  const std::vector<double> eps = onRows(ts_t, run.timeseries.column("eps_crank"), t);
+  // rods.model = split: half the rod's mass sits on each crank pin and turns with the shaft.
+  const double m_pin = (sc.rods.model == RodModel::Split && !sc.hasCamDrive()) ? 0.5 * sc.rods.mass : 0.0;
+  const double g = sc.loads.gravity, r = sc.crank.radius;
+  std::vector<std::vector<double>> fx(n), fy(n);
+  for (int j = 0; j < n; ++j) {
+    fx[j] = rx.column("crankpin_x_" + std::to_string(j + 1));
+    fy[j] = rx.column("crankpin_y_" + std::to_string(j + 1));
+  }
+  ShaftLoads L;
+  L.px.assign(t.size(), std::vector<double>(n + 1));
+  L.py = L.px;
+  L.torque.assign(t.size(), std::vector<double>(n));
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    double rest_x = Rx[i], rest_y = Ry[i];
+    for (int j = 0; j < n; ++j) {
+      const double th = phi[i] + sc.crankPhase(j), c = std::cos(th), s = std::sin(th);
+      const double ax = r * (-eps[i] * s - w[i] * w[i] * c), ay = r * (eps[i] * c - w[i] * w[i] * s);
+      const double Px = fx[j][i] - m_pin * ax, Py = fy[j][i] - m_pin * (ay + g);
+      L.px[i][j] = Px;
+      L.py[i][j] = Py;
+      L.torque[i][j] = r * (c * Py - s * Px);
+      rest_x += Px;  // Σ R = −Σ P: what the throws do not explain
+      rest_y += Py;
+    }
+    L.px[i][n] = -rest_x;
+    L.py[i][n] = -rest_y;
+  }
+  return L;
+}
+
+std::vector<double> loadPositions(const Scene& sc) {
+  std::vector<double> z = sc.crankshaft.throw_positions;
+  const std::vector<double>& b = sc.crankshaft.bearing_positions;
+  z.push_back(0.5 * (b.front() + b.back()));  // the rest of the resultant
+  return z;
+}
+
+}  // namespace
+
+ShaftBeam::ShaftBeam(std::vector<double> bearings, std::vector<double> load_positions)
+    : bearings_(std::move(bearings)), loads_(std::move(load_positions)) {
+  if (bearings_.size() < 2) throw std::invalid_argument("ShaftBeam: at least two bearings");
+  for (std::size_t k = 1; k < bearings_.size(); ++k)
+    if (!(bearings_[k] > bearings_[k - 1])) throw std::invalid_argument("ShaftBeam: bearings must ascend");
+  // Nodes: every distinct support and load position, ascending.
+  std::vector<double> nodes = bearings_;
+  nodes.insert(nodes.end(), loads_.begin(), loads_.end());
+  std::sort(nodes.begin(), nodes.end());
+  const double span = nodes.back() - nodes.front();
+  const double tol = 1e-12 * std::max(1.0, span);
+  nodes.erase(std::unique(nodes.begin(), nodes.end(), [&](double a, double b) { return std::abs(a - b) <= tol; }),
+              nodes.end());
+  auto nodeOf = [&](double z) {
+    std::size_t best = 0;
+    for (std::size_t q = 1; q < nodes.size(); ++q)
+      if (std::abs(nodes[q] - z) < std::abs(nodes[best] - z)) best = q;
+    return best;
+  };
+  const std::size_t N = nodes.size(), dofs = 2 * N;
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(dofs, dofs);
+  for (std::size_t q = 0; q + 1 < N; ++q) K.block<4, 4>(2 * q, 2 * q) += elementStiffness(nodes[q + 1] - nodes[q]);
+  // Free degrees of freedom: all but the deflection at the supports.
+  std::vector<bool> fixed(dofs, false);
+  std::vector<std::size_t> support_dof;
+  for (double z : bearings_) {
+    support_dof.push_back(2 * nodeOf(z));
+    fixed[support_dof.back()] = true;
+  }
+  std::vector<std::size_t> free;
+  for (std::size_t d = 0; d < dofs; ++d)
+    if (!fixed[d]) free.push_back(d);
+  Eigen::MatrixXd Kff(free.size(), free.size());
+  for (std::size_t a = 0; a < free.size(); ++a)
+    for (std::size_t b = 0; b < free.size(); ++b) Kff(a, b) = K(free[a], free[b]);
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(Kff);
+  influence_.assign(bearings_.size(), std::vector<double>(loads_.size(), 0.0));
+  for (std::size_t i = 0; i < loads_.size(); ++i) {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs);
+    f[2 * nodeOf(loads_[i])] = 1.0;
+    Eigen::VectorXd ff(free.size());
+    for (std::size_t a = 0; a < free.size(); ++a) ff[a] = f[free[a]];
+    const Eigen::VectorXd uf = lu.solve(ff);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(dofs);
+    for (std::size_t a = 0; a < free.size(); ++a) u[free[a]] = uf[a];
+    const Eigen::VectorXd r = K * u - f;  // K·u = f + r: r the supports' forces on the beam
+    for (std::size_t k = 0; k < bearings_.size(); ++k) influence_[k][i] = r[support_dof[k]];
+  }
+}
+
+std::vector<double> ShaftBeam::reactions(const std::vector<double>& loads) const {
+  std::vector<double> R(bearings_.size(), 0.0);
+  for (std::size_t k = 0; k < R.size(); ++k)
+    for (std::size_t i = 0; i < loads_.size() && i < loads.size(); ++i) R[k] += influence_[k][i] * loads[i];
+  return R;
+}
+
+double ShaftBeam::bendingMoment(const std::vector<double>& loads, const std::vector<double>& reactions,
+                                double z) const {
+  double M = 0;
+  for (std::size_t i = 0; i < loads_.size() && i < loads.size(); ++i)
+    if (loads_[i] < z) M += loads[i] * (z - loads_[i]);
+  for (std::size_t k = 0; k < bearings_.size() && k < reactions.size(); ++k)
+    if (bearings_[k] < z) M += reactions[k] * (z - bearings_[k]);
+  return M;
+}
+
+std::string crankshaftBearingsNotApplicable(const Scene& sc, const RunResult& run) {
+  if (!sc.crankshaft.given())
+    return "the scene gives no bearing positions (crankshaft.bearing_positions, crankshaft.throw_positions): "
+           "only the resultant of the main bearings is known";
+  const Table& rx = run.reactions;
+  if (!rx.has("t") || !rx.has("bearing_x") || !rx.has("crankpin_x_1"))
+    return run.model == "reduced"
+               ? "the reduced model computes no crank-pin forces, which the bearings' share needs (run the "
+                 "multibody model)"
+               : "the run has no crank-pin forces (simulation.reactions: false)";
+  for (const char* c : {"t", "phi_crank", "omega_crank", "eps_crank"})
+    if (!run.timeseries.has(c)) return std::string("the run's time series lacks ") + c;
+  return "";
+}
+
+void appendBearingColumns(const Scene& sc, RunResult& run) {
+  if (!crankshaftBearingsNotApplicable(sc, run).empty()) return;
+  const ShaftBeam beam(sc.crankshaft.bearing_positions, loadPositions(sc));
+  const ShaftLoads L = shaftLoads(sc, run);
+  const std::size_t m = beam.bearings().size();
+  Table& rx = run.reactions;
+  for (std::size_t k = 1; k <= m; ++k)
+    for (const char* c : {"bearing_x_", "bearing_y_"}) rx.columns.push_back(c + std::to_string(k));
+  for (std::size_t i = 0; i < rx.rows.size(); ++i) {
+    const std::vector<double> Rx = beam.reactions(L.px[i]), Ry = beam.reactions(L.py[i]);
+    for (std::size_t k = 0; k < m; ++k) {
+      rx.rows[i].push_back(Rx[k]);
+      rx.rows[i].push_back(Ry[k]);
+    }
+  }
+}
+
+CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const SteadyState& w) {
+  CrankshaftSizing out;
+  out.given = sc.crankshaft.given();
+  out.bearing_positions = sc.crankshaft.bearing_positions;
+  out.reason = crankshaftBearingsNotApplicable(sc, run);
+  if (!out.reason.empty()) return out;
+  if (!w.reached) {
+    out.reason = "no steady window (steady state not reached): run longer (simulation.t_end)";
+    return out;
+  }
+  const int n = sc.carts.count;
+  const ShaftBeam beam(sc.crankshaft.bearing_positions, loadPositions(sc));
+  const ShaftLoads L = shaftLoads(sc, run);
+  const std::vector<double> t = run.reactions.column("t");
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return sc.crankshaft.throw_positions[a] < sc.crankshaft.throw_positions[b];
+  });
+  for (int j : order) {
+    out.throw_carts.push_back(j + 1);
+    out.throw_positions.push_back(sc.crankshaft.throw_positions[j]);
+  }
+  out.bending_moment_peak.assign(n, kNaN);
+  // A cam's force does not act at the crank radius: no torque split for a cam drive.
+  out.segment_torque_peak.assign(n, kNaN);
+  bool any = false;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!(t[i] >= w.t_begin && t[i] <= w.t_end)) continue;
+    const std::vector<double> Rx = beam.reactions(L.px[i]), Ry = beam.reactions(L.py[i]);
+    double beyond = 0;  // −Σ T_j over the throws at or beyond the segment, from the far end
+    for (int q = n - 1; q >= 0; --q) {
+      const int j = order[q];
+      const double M = std::hypot(beam.bendingMoment(L.px[i], Rx, out.throw_positions[q]),
+                                  beam.bendingMoment(L.py[i], Ry, out.throw_positions[q]));
+      beyond -= L.torque[i][j];
+      double& pm = out.bending_moment_peak[q];
+      if (std::isfinite(M)) pm = std::isfinite(pm) ? std::max(pm, M) : M;
+      if (!sc.hasCamDrive() && std::isfinite(beyond)) {
+        double& pt = out.segment_torque_peak[q];
+        pt = std::isfinite(pt) ? std::max(pt, std::abs(beyond)) : std::abs(beyond);
+      }
+    }
+    any = true;
+  }
+  if (!any) {
+    out.reason = "no reactions row in the steady window";
+    return out;
+  }
+  out.available = true;
+  return out;
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,69 @@
+#include "analysis/CrankshaftSummary.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "io/FieldFormat.h"
+
+namespace rollerdyn {
+
+using nlohmann::json;
+
+namespace {
+
+json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+std::string fmt(const json& v, const char* f) {
+  if (!v.is_number()) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v.get<double>());
+  return buf;
+}
+
+std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); }
+
+}  // namespace
+
+// The shaft's figures (CrankshaftBearings.h): per throw along z its peak bending moment, per
+// segment (coupling to the first throw, then between throws) its peak torque.
+json crankshaftJson(const CrankshaftSizing& c) {
+  json throws = json::array(), segments = json::array();
+  for (std::size_t q = 0; q < c.throw_carts.size() && c.available; ++q) {
+    throws.push_back({{"cart", c.throw_carts[q]}, {"position", num(c.throw_positions[q])},
+                      {"bending_moment_peak", num(c.bending_moment_peak[q])}});
+    segments.push_back({{"from_cart", q == 0 ? json(nullptr) : json(c.throw_carts[q - 1])},
+                        {"to_cart", c.throw_carts[q]},
+                        {"torque_peak", num(c.segment_torque_peak[q])}});
+  }
+  return {{"bearing_positions", c.bearing_positions},
+          {"throws", throws},
+          {"segments", segments},
+          {"reason", c.available ? json(nullptr) : json(c.reason)}};
+}
+
+// The crankshaft's figures (sizing.crankshaft), when the scene places throws and bearings.
+std::string crankshaftText(const json& c) {
+  if (!c.is_object()) return "";
+  std::ostringstream o;
+  if (!jsonMember(c, "reason").is_null()) {
+    o << "  crankshaft bending and torsion     n/a: " << str(jsonMember(c, "reason")) << "\n";
+    return o.str();
+  }
+  o << "  crankshaft, per throw along z (from the coupling end): peak bending moment |M| and the peak torque "
+       "|T| of the shaft segment leading to it:\n";
+  const json& seg = jsonMember(c, "segments");
+  std::size_t q = 0;
+  for (const json& t : jsonMember(c, "throws")) {
+    const json& sg = q < seg.size() ? seg[q] : json();
+    o << "    throw of cart " << jsonMember(t, "cart").dump() << " at z " << fmt(jsonMember(t, "position"), "%.4g")
+      << " m: |M| " << fmt(jsonMember(t, "bending_moment_peak"), "%.4g") << " N·m; segment from "
+      << (jsonMember(sg, "from_cart").is_number() ? "cart " + jsonMember(sg, "from_cart").dump() + "'s throw"
+                                                  : std::string("the coupling"))
+      << ": |T| " << fmt(jsonMember(sg, "torque_peak"), "%.4g") << " N·m\n";
+    ++q;
+  }
+  return o.str();
+}
+
+}  // namespace rollerdyn
