@@ -387,6 +387,15 @@ SizingInputs readSizing(const Reader& in) {
   z.coupling = readCouplingRatings(in);
   if (in.has("motor.omega_nominal")) z.motor_omega_nominal = in.number("motor.omega_nominal");
   if (in.has("motor.overload_ratio")) z.motor_overload_ratio = in.number("motor.overload_ratio");
+  // One rated torque of the coupling: the single rating against the run's largest peak, or the
+  // makers' T_KN and T_Kmax against the steady and the start's peaks (two verdicts from two
+  // ratings of the same coupling could contradict each other).
+  if (z.coupling_rated_torque > 0 && (z.coupling.rated_torque > 0 || z.coupling.max_torque > 0))
+    in.doc().fail("sizing.coupling_rated_torque",
+                  "either sizing.coupling_rated_torque (one rating against the run's largest peak) or the makers' "
+                  "sizing.coupling.rated_torque / max_torque (T_KN against the steady peak, T_Kmax against the "
+                  "start's, DIN 740-2), not both (they could disagree)",
+                  formatNumber(z.coupling_rated_torque));
   if (z.motor_nominal_torque > 0 && z.motor_nominal_power > 0)
     in.doc().fail("sizing.motor_nominal_power",
                   "at most one of sizing.motor_nominal_torque and sizing.motor_nominal_power "

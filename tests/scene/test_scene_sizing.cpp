@@ -105,6 +105,18 @@ TEST(SceneSizing, AnSnCurveNeedsItsKneeAndSlopeTogether) {
                    {"sizing.coupling.temperature_factor: expected a number in [1, 10]"});
 }
 
+// Two rated torques of one coupling would give two verdicts that can disagree: the single rating
+// against the largest peak, or the makers' T_KN / T_Kmax, never both. The makers' vibratory torque
+// and damping power sit beside the single rating (no rating of theirs repeats it).
+TEST(SceneSizing, TheCouplingIsRatedOneWayOnly) {
+  expectSceneError(kMinimalScene + kSizing + "  coupling: {rated_torque: 9000}\n",
+                   {"sizing.coupling_rated_torque: expected either sizing.coupling_rated_torque", "not both"});
+  expectSceneError(kMinimalScene + kSizing + "  coupling: {max_torque: 20000}\n",
+                   {"sizing.coupling_rated_torque: expected either"});
+  const Scene s = parseSceneText(kMinimalScene + kSizing + "  coupling: {vibratory_torque: 2000}\n", "test.yaml");
+  EXPECT_DOUBLE_EQ(s.sizing.coupling.vibratory_torque, 2000);
+}
+
 TEST(SceneSizing, OverridesReachTheSizingSection) {
   const Scene s = parseSceneText(kMinimalScene, "test.yaml", {"sizing.target_delta=0.08"});
   EXPECT_DOUBLE_EQ(s.sizing.target_delta, 0.08);
