@@ -1,21 +1,13 @@
 // The resonance warnings of the modal analysis (what simulate's verdict rests on).
 #include <gtest/gtest.h>
 
-#include "modes/ModalAnalysis.h"
-#include "scene/SceneParser.h"
+#include "ModesTestSupport.h"
 
 using namespace rollerdyn;
 using namespace rollerdyn::modes;
 
 namespace {
-ModesReport light(const std::vector<std::string>& overrides) {
-  ModesOptions o;
-  o.multibody = false;
-  o.campbell = false;
-  o.charts = false;
-  o.angles = 36;
-  return analyseModes(parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml", overrides), o);
-}
+ModesReport light(const std::vector<std::string>& overrides) { return rollerdyn::modes::test::lightModes(overrides); }
 bool mentions(const std::vector<std::string>& w, const std::string& text) {
   for (const std::string& s : w)
     if (s.find(text) != std::string::npos) return true;

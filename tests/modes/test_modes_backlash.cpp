@@ -4,21 +4,13 @@
 
 #include <cmath>
 
-#include "modes/ModalAnalysis.h"
-#include "scene/SceneParser.h"
+#include "ModesTestSupport.h"
 
 using namespace rollerdyn;
 using namespace rollerdyn::modes;
 
 namespace {
-ModesReport light(const std::vector<std::string>& overrides) {
-  ModesOptions o;
-  o.multibody = false;
-  o.campbell = false;
-  o.charts = false;
-  o.angles = 36;
-  return analyseModes(parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml", overrides), o);
-}
+ModesReport light(const std::vector<std::string>& overrides) { return rollerdyn::modes::test::lightModes(overrides); }
 }  // namespace
 
 TEST(ModesBacklash, PermanentToothContactIsANamedApproximation) {

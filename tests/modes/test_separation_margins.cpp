@@ -2,21 +2,13 @@
 // practice, >= 10 %), on the cases whose mode the resonance warnings' tests know.
 #include <gtest/gtest.h>
 
-#include "modes/ModalAnalysis.h"
-#include "scene/SceneParser.h"
+#include "ModesTestSupport.h"
 
 using namespace rollerdyn;
 using namespace rollerdyn::modes;
 
 namespace {
-ModesReport light(const std::vector<std::string>& overrides) {
-  ModesOptions o;
-  o.multibody = false;
-  o.campbell = false;
-  o.charts = false;
-  o.angles = 36;
-  return analyseModes(parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml", overrides), o);
-}
+ModesReport light(const std::vector<std::string>& overrides) { return rollerdyn::modes::test::lightModes(overrides); }
 const SeparationMargin* order(const SeparationMargins& s, int k) {
   for (const SeparationMargin& m : s.rows)
     if (m.order == k) return &m;
