@@ -317,6 +317,24 @@ std::vector<BenchRow> runEffectsStudy(const SceneSource& source, const BenchOpti
     else
       v.push_back({"reducer backlash 0.1° (0.0017453 rad)", 0, {"reducer.backlash=0.0017453"}});
   }
+  // The reducer's losses by the direction of the power flow (docs/models.md): the blend's cost.
+  if (base.motor.enabled) {
+    if (base.reducer.losses == ReducerLossModel::Papers)
+      v.push_back({"reducer losses by power flow (η_r = η)", 0, {"reducer.losses=power_flow"}});
+    else
+      v.push_back({"reducer losses as the papers (constant η)", 0, {"reducer.losses=papers"}});
+  }
+  // Main bearings along the crankshaft: beam statics on the output rows, after the integration
+  // (its cost is in the whole process, not in the loop this table times).
+  if (base.crankshaft.throw_positions.empty() && base.simulation.reactions) {
+    std::ostringstream throws, bearings;
+    const int n = base.carts.count;
+    for (int j = 0; j < n; ++j) throws << (j ? ", " : "") << 0.2 + 0.3 * j;
+    for (int j = 0; j <= n; ++j) bearings << (j ? ", " : "") << (j == 0 ? 0.0 : 0.35 + 0.3 * (j - 1));
+    v.push_back({"main bearings along the crankshaft (" + std::to_string(n + 1) + " bearings)", 0,
+                 {"crankshaft.throw_positions=[" + throws.str() + "]",
+                  "crankshaft.bearing_positions=[" + bearings.str() + "]"}});
+  }
   for (double c : {2e5, 1e6, 1e7, 1e8, 1e9}) {
     std::ostringstream name;
     name << "elastic coupling c = " << c << " N·m/rad" << (elastic ? "" : " (k = 0)");

@@ -12,6 +12,7 @@
 #include "multibody/GuideFriction.h"
 #include "motor/MotorColumns.h"
 #include "motor/BreakdownTorque.h"
+#include "physics/CrankInertia.h"
 #include "motor/SharedMotorLaw.h"
 #include "motor/Supply.h"
 #include "multibody/MinimalCoordinates.h"
@@ -68,13 +69,8 @@ void MultibodyModel::buildDrive() {
     first_moment += pin_mass * crankPin(sc, j);
   }
   const SimTK::Vec3 com = first_moment / mass;
-  const bool crank_has_inertia = J > 0 || pin_mass > 0 || sc.rods.model == RodModel::Distributed;
-  if (!crank_has_inertia)
-    throw std::invalid_argument(
-        "multibody model: the crankshaft has no inertia of its own (crank.inertia_per_crank, "
-        "crank.shaft_inertia and a crankshaft flywheel are all 0) and its rods are " +
-        std::string(toString(sc.rods.model)) +
-        "; with an elastic coupling its motion would be undetermined. Give it an inertia.");
+  const std::string without_inertia = crankWithoutInertia(sc, "multibody model");
+  if (!without_inertia.empty()) throw std::invalid_argument(without_inertia);
   SimTK::Body::Rigid crank_body(SimTK::MassProperties(mass, com, inertia));
   crank_ = SimTK::MobilizedBody::Pin(matter_.Ground(), SimTK::Transform(), crank_body, SimTK::Transform());
   if (options_.prescribe_crank_speed) SimTK::Motion::Steady(crank_, options_.crank_speed);

@@ -132,6 +132,9 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
     return "the coupling is rigid (coupling.type: rigid): motor and crank turn together, so the teeth never part";
   if (key == "reducer.backlash" && sc.reducer.backlash == 0.0)
     return "a backlash of 0 is the default: the teeth never part";
+  if (key == "crank.offset_deg" && sc.carts.count == 1)
+    return "there is one cart (carts.count: 1), so there is no second crank for the angle between consecutive "
+           "cranks to place";
   if (key == "initial.twist" && sc.coupling.type == CouplingType::Rigid)
     return "the coupling is rigid (coupling.type: rigid): motor and crank turn together, with no twist between them";
   if (isCartMomentArm(key) && !guideSplitActs(sc))

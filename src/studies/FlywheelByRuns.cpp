@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "analysis/Summary.h"
 #include "io/FieldFormat.h"
@@ -43,7 +44,13 @@ FlywheelByRuns flywheelByRuns(const Scene& scene, const std::string& model, doub
   auto total = [&](double J) { return J0 + k * J; };
   double J = std::max(first_guess, 0.0);
   for (int i = 0; i < kFlywheelMaxRuns; ++i) {
-    const double d = deltaWith(scene, model, J, omega_mean);
+    double d = std::nan("");
+    try {
+      d = deltaWith(scene, model, J, omega_mean);
+    } catch (const std::invalid_argument& e) {  // a flywheel the model refuses (physics/CrankInertia.h)
+      r.note = "the run with flywheel.inertia = " + significant(J, 4) + " kg·m² cannot be made: " + e.what();
+      break;
+    }
     r.tried.push_back({J, d});
     if (!std::isfinite(d)) {
       r.note = "the run with flywheel.inertia = " + significant(J, 4) + " kg·m² did not turn steadily within " +

@@ -78,6 +78,13 @@ TEST(KeysWithoutEffectInRuns, KlossBreakdownTorqueChangesNothingUnderAFittedCirc
   EXPECT_FALSE(named(summaryOf({"simulation.t_end=6", "motor.breakdown_torque=517.14"}), "motor.breakdown_torque"));
 }
 
+// One cart has no second crank: the angle between consecutive cranks places nothing (the
+// consistency harness's seed 3258).
+TEST(KeysWithoutEffectInRuns, TheCrankOffsetOfASingleCartChangesNothing) {
+  expectWithoutEffect({"simulation.t_end=6", "carts.count=1"}, "crank.offset_deg", "195", "210");
+  EXPECT_FALSE(named(summaryOf({"simulation.t_end=6", "crank.offset_deg=80"}), "crank.offset_deg"));
+}
+
 TEST(KeysWithoutEffectInRuns, ASwitchOffAfterTheRunsEndChangesNothing) {
   expectWithoutEffect({"simulation.t_end=6", "motor.stop.brake_torque=50"}, "motor.stop.t_off", "100", "110");
   const json within = summaryOf({"simulation.t_end=6", "motor.stop.t_off=4"});
