@@ -14,6 +14,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "physics/CrankInertia.h"
 #include "analysis/CrankSpeedExtrema.h"
 #include "analysis/OutputGrid.h"
 #include "analysis/RestDetector.h"
@@ -549,6 +550,10 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
 RunResult runReducedModel(const Scene& scene) { return runReducedModel(scene, nullptr); }
 
 RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law) {
+  // The model's kinematics and loads stay evaluable (tests and studies read them); its motion is
+  // not, where the crank side has no inertia at the dead centres (physics/CrankInertia.h).
+  const std::string without_inertia = crankWithoutInertia(scene, "reduced model");
+  if (!without_inertia.empty()) throw std::invalid_argument(without_inertia);
   const ReducedModel model(scene, std::move(law));
   RunResult res;
   res.model = "reduced";

@@ -9,7 +9,6 @@
 #include "physics/CamMotionLaw.h"
 #include "motor/BreakdownTorque.h"
 #include "physics/CouplingLaw.h"
-#include "physics/CrankInertia.h"
 #include "motor/SharedMotorLaw.h"
 #include "physics/RollerLoads.h"
 
@@ -52,8 +51,6 @@ ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> l
     m_B_.push_back(scene_.cartMassWithRodShare(j));  // Loveikin, Pochka, Romasevych (2018) eq. (3)
     loads_.push_back(scene_.cartLoads(j));
   }
-  const std::string without_inertia = crankWithoutInertia(scene_, "reduced model");
-  if (!without_inertia.empty()) throw std::invalid_argument(without_inertia);
   if (!rigid_ && !(J_n1_ > 0.0))
     throw std::invalid_argument("reduced model: elastic coupling needs a motor-side inertia J_n1 > 0");
   if (motorStateCount() > ModelEvaluation::kMaxMotorStates)
