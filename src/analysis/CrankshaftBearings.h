@@ -81,6 +81,9 @@ struct CrankshaftSizing {
   std::vector<double> bending_moment_peak; // per throw (same order): max |M| over the window [N·m]
   std::vector<double> segment_torque_peak; // per shaft segment k (coupling → first throw, then between
                                            // consecutive throws): max |T| over the window [N·m]
+  bool chain_torques = false;  // the segments between throws carry the torsional chain's simulated
+                               // torques (shaft_torque_k); else the quasi-static sum of the crank-pin
+                               // forces' torques beyond the segment (the throws' inertia left out)
 };
 
 CrankshaftSizing sizeCrankshaft(const Scene& scene, const RunResult& run, const SteadyState& window);

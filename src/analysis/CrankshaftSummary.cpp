@@ -39,6 +39,11 @@ json crankshaftJson(const CrankshaftSizing& c) {
   return {{"bearing_positions", c.bearing_positions},
           {"throws", throws},
           {"segments", segments},
+          {"segment_torque_method",
+           c.chain_torques ? "between throws the torsional chain's simulated spring torques; from the coupling to the "
+                             "first throw the quasi-static sum of the crank-pin forces' torques"
+                           : "quasi-static: the sum of the crank-pin forces' torques about the axis beyond the "
+                             "segment (the throws' own inertia left out)"},
           {"reason", c.available ? json(nullptr) : json(c.reason)}};
 }
 
@@ -51,7 +56,7 @@ std::string crankshaftText(const json& c) {
     return o.str();
   }
   o << "  crankshaft, per throw along z (from the coupling end): peak bending moment |M| and the peak torque "
-       "|T| of the shaft segment leading to it:\n";
+       "|T| of the shaft segment leading to it (|T|: " << str(jsonMember(c, "segment_torque_method")) << "):\n";
   const json& seg = jsonMember(c, "segments");
   std::size_t q = 0;
   for (const json& t : jsonMember(c, "throws")) {

@@ -8,6 +8,7 @@
 
 #include "analysis/DriveSizing.h"
 #include "analysis/GuideLiftOff.h"
+#include "analysis/ShaftTorsion.h"
 #include "analysis/ToothContact.h"
 #include "analysis/LoadWork.h"
 #include "analysis/Metrics.h"
@@ -215,6 +216,9 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   const ToothContactSummary teeth = computeToothContact(scene, run, ss, steady_turning);
   j["backlash"] = toothContactJson(teeth);
   for (const std::string& w : teeth.warnings) j["warnings"].push_back(w);
+  const ShaftTorsionSummary torsion = computeShaftTorsion(scene, run, ss, steady_turning);
+  j["crankshaft_torsion"] = shaftTorsionJson(torsion);
+  for (const std::string& w : torsion.warnings) j["warnings"].push_back(w);
   // Where the joint loads come from, and what is missing: the reduced model computes the cart
   // statics only (guide rollers, rod end), not the crank pin or the main bearing.
   if (run.model == "reduced" && !run.reactions.columns.empty())
@@ -360,6 +364,7 @@ std::string summaryText(const nlohmann::json& s) {
       << " guide reaction(s) change sign in the steady window: those rollers need a counter-roller (warnings "
          "on stderr; summary.json guide_lift_off)\n";
   o << toothContactText(at("backlash"));
+  o << shaftTorsionText(at("crankshaft_torsion"));
   o << "constraints  max error " << f(at("constraint_error_max"), "%.2e") << "\n";
   if (at("guide_normal_forces").is_string())
     o << "guide normal forces  " << str(at("guide_normal_forces")) << "\n";

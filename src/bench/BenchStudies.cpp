@@ -335,6 +335,20 @@ std::vector<BenchRow> runEffectsStudy(const SceneSource& source, const BenchOpti
                  {"crankshaft.throw_positions=[" + throws.str() + "]",
                   "crankshaft.bearing_positions=[" + bearings.str() + "]"}});
   }
+  // The crankshaft as a torsional chain (docs/models.md): built by the constrained formulation only,
+  // so it is timed beside the same formulation with the rigid shaft; a 100 mm steel shaft, G·I_p =
+  // 80 GPa·π·(0.1 m)⁴/32 = 7.85e5 N·m², throws 0.3 m apart.
+  if (base.carts.count > 1 && !base.hasCamDrive() && !base.crankshaft.torsionalChain()) {
+    std::vector<std::string> constrained = {"simulation.formulation=constrained"};
+    if (base.hasGuideFriction()) constrained.push_back("loads.guide_friction.normal_force=lagged");
+    v.push_back({"constrained formulation, rigid crankshaft", 0, constrained});
+    std::ostringstream throws;
+    for (int j = 0; j < base.carts.count; ++j) throws << (j ? ", " : "") << 0.2 + 0.3 * j;
+    std::vector<std::string> chain = constrained;
+    chain.push_back("crankshaft.throw_positions=[" + throws.str() + "]");
+    chain.push_back("crankshaft.torsional_stiffness=7.85e5");
+    v.push_back({"constrained formulation, crankshaft as a torsional chain (G·I_p = 7.85e5 N·m²)", 0, chain});
+  }
   for (double c : {2e5, 1e6, 1e7, 1e8, 1e9}) {
     std::ostringstream name;
     name << "elastic coupling c = " << c << " N·m/rad" << (elastic ? "" : " (k = 0)");

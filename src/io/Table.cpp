@@ -53,6 +53,7 @@ const std::vector<std::pair<std::string, std::string>>& cartUnits() {
       {"N_front", "N"}, {"N_rear", "N"}, {"F_rod", "N"}, {"friction", "N"},
       {"crankpin_x", "N"}, {"crankpin_y", "N"},
       {"bearing_x", "N"}, {"bearing_y", "N"},  // per main bearing k: bearing_x_k, bearing_y_k
+      {"shaft_torque", "N*m"},                  // per crankshaft segment k of a torsional chain
   };
   return u;
 }

@@ -92,6 +92,13 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
                   given.reducer.backlash, given.coupling.stiffness);
     r.approximations.push_back({"permanent tooth contact", b});
   }
+  r.chain = crankshaftChainModes(scene);
+  if (r.chain.applies)
+    r.approximations.push_back(
+        {"rigid crankshaft", "the modes, the Floquet analysis, the Campbell diagram and the separation margins take "
+                             "the crankshaft as one rigid body (crankshaft.torsional_stiffness is given: the chain's "
+                             "own modes are listed apart, " + r.chain.approximations + ")"});
+
   r.scene = scene.name;
   r.elastic = scene.coupling.type == CouplingType::Elastic;
   r.motor = scene.motor.enabled;

@@ -22,6 +22,7 @@
 #include "modes/DriveOrbit.h"
 #include "modes/ExcitationOrders.h"
 #include "modes/FrozenModes.h"
+#include "modes/ChainModes.h"
 #include "modes/SeparationMargins.h"
 #include "modes/StabilityChart.h"
 #include "scene/Scene.h"
@@ -86,6 +87,8 @@ struct ModesReport {
   double model_difference = NAN;  // max relative difference of the torsional frequencies
   CampbellDiagram campbell;
   SeparationMargins separation;   // of the coupling mode from the orders that drive it (SeparationMargins.h)
+  CrankshaftChainModes chain;     // the crankshaft's torsional chain's modes (ChainModes.h); not applicable
+                                  // for a rigid crankshaft
   std::vector<StabilityChart> charts;
   std::vector<std::string> warnings;  // resonance warnings resting on this analysis
   std::vector<std::string> notes;     // what was not done and why

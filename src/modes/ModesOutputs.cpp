@@ -175,6 +175,7 @@ nlohmann::json modesJson(const ModesReport& r) {
   cm["overdamped_speeds"] = r.campbell.overdamped_speeds;
   j["campbell"] = cm;
   j["separation_margins"] = separationJson(r.separation);
+  j["crankshaft_chain"] = chainJson(r.chain);
   nlohmann::json ch = nlohmann::json::array();
   for (const StabilityChart& c : r.charts) {
     nlohmann::json zones = nlohmann::json::array();
@@ -364,6 +365,7 @@ std::string modesText(const ModesReport& r, const std::string& run_stability_na)
     os << "\n";
   }
   os << separationText(r.separation);
+  os << chainText(r.chain);
   for (const StabilityChart& c : r.charts) {
     if (c.y_key == "omega")
       std::snprintf(b, sizeof b, "  stability chart c x omega at k = %.4g N*m*s/rad: %d of %zu points unstable, %zu zone(s)",

@@ -1,5 +1,7 @@
 #include "modes/ModesValidation.h"
 
+#include "modes/ChainModes.h"
+
 #include <cmath>
 #include <complex>
 #include <cstdarg>
@@ -71,6 +73,41 @@ double mathieuTransition(double eps, double target, double lo, double hi) {
 }
 
 }  // namespace
+
+// The chain's frequencies of the eigen-solution (ChainModes.h) against Holzer's residual-torque
+// search, which finds its roots without being told them, at four frozen crank angles: the same
+// numbers to the bisection's 1e-12 and the eigen-solver's round-off, so 1e-9 relative.
+ModesCheck chainAgainstHolzer(const Scene& s, nlohmann::json& out) {
+  double worst = 0;
+  std::vector<double> first;
+  size_t count_eig = 0, count_holzer = 0;
+  for (double phi : {0.0, 0.7, 2.0, 4.5}) {
+    std::vector<double> J, c;
+    chainAtAngle(s, phi, J, c);
+    const std::vector<double> eig = chainNaturalFrequencies(J, c);
+    const std::vector<double> holzer = holzerFrequencies(J, c, 1.2 * eig.back(), 40000);
+    count_eig = std::max(count_eig, eig.size() - 1);
+    count_holzer = std::max(count_holzer, holzer.size());
+    if (holzer.size() + 1 != eig.size()) {
+      worst = INFINITY;
+      continue;
+    }
+    for (size_t m = 0; m < holzer.size(); ++m) worst = std::max(worst, std::abs(holzer[m] - eig[m + 1]) / eig[m + 1]);
+    if (first.empty()) first.assign(eig.begin() + 1, eig.end());
+  }
+  ModesCheck ck;
+  ck.name = "crankshaft_chain_holzer";
+  ck.pass = worst <= 1e-9;
+  std::string list;
+  for (double p : first) list += (list.empty() ? "" : ", ") + fmt("%.6g", p);
+  ck.line = fmt("modes: crankshaft as a torsional chain (4 throws 0.3 m apart, G*I_p = 7.85e5 N*m^2, 100 mm steel "
+                "shaft): %zu elastic modes by the eigen-solution, %zu by Holzer's residual torque; at crank angle 0: "
+                "p = %s rad/s; largest relative difference over 4 angles %.2e (<= 1e-9): %s",
+                count_eig, count_holzer, list.c_str(), worst, ck.pass ? "holds" : "FAILS");
+  out["crankshaft_chain_holzer"] = {{"p_at_angle_0", first}, {"max_rel_diff", worst}, {"tolerance", 1e-9},
+                                    {"pass", ck.pass}};
+  return ck;
+}
 
 ModesValidationResult runModesValidation(const std::string& model_dir,
                                          const std::function<void(const std::string&)>& log) {
@@ -253,6 +290,16 @@ ModesValidationResult runModesValidation(const std::string& model_dir,
                       {"peak_order", u.peak_order}, {"pass", c.pass}}},
         {"stable", {{"c", 24000}, {"k", 300}, {"predicted_modulus", st.predicted_modulus}, {"max_departure", worst},
                     {"pass", c2.pass}}}};
+  }
+
+  // 7. The crankshaft as a torsional chain against Holzer's method.
+  {
+    const ModesCheck c = chainAgainstHolzer(
+        scene("balanced-4cart", {"simulation.formulation=constrained", "loads.guide_friction.normal_force=lagged",
+                                 "crankshaft.throw_positions=[0.2, 0.5, 0.8, 1.1]",
+                                 "crankshaft.torsional_stiffness=7.85e5"}),
+        res.json);
+    add(c);
   }
 
   // 6. The papers' machine at the papers' coupling.

@@ -12,6 +12,8 @@ namespace rollerdyn {
 struct CartRig {
   int side = 1;                  // σ: +1 cart on the +x side of the shaft, -1 on the -x side
   SimTK::MobilizedBody cart;     // slider along ground x, origin at hinge B
+  SimTK::MobilizedBody crank;    // the crankshaft body its crank pin is on: the crankshaft, or its
+                                 // throw of a torsional chain (crankshaft.torsional_stiffness)
   SimTK::MobilizedBody rod;      // rod body (distributed model only; otherwise invalid handle)
   SimTK::Constraint cam;         // cam drive (Loveikin and Pochka (cam drive paper)): coupler x_B = σ·x(θ); else empty handle
   SimTK::Vec3 p_CrankPin;        // crank pin A in the crankshaft frame [m]

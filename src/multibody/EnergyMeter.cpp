@@ -1,5 +1,6 @@
 #include "multibody/EnergyMeter.h"
 
+#include "multibody/CrankshaftTorsion.h"
 #include "multibody/ElasticCoupling.h"
 #include "multibody/GuideFriction.h"
 #include "multibody/MotorForce.h"
@@ -27,6 +28,7 @@ void EnergyMeter::realizeAcceleration(const SimTK::State& s) const { calcRates(s
 void EnergyMeter::calcRates(const SimTK::State& s, SimTK::Vector& zdot) const {
   zdot[z_start_ + 0] = sources_.motor ? sources_.motor->power(s) : 0.0;
   zdot[z_start_ + 1] = sources_.coupling ? sources_.coupling->dampingPower(s) : 0.0;
+  if (sources_.torsion) zdot[z_start_ + 1] += sources_.torsion->dampingPower(s);
   zdot[z_start_ + 2] = sources_.friction ? sources_.friction->dissipatedPower(s) : 0.0;
   zdot[z_start_ + 3] = sources_.loads ? sources_.loads->loadPower(s) : 0.0;
   if (reducer_state_) zdot[z_start_ + 4] = sources_.motor->reducerLossPower(s);

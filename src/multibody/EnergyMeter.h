@@ -14,6 +14,7 @@ class MotorForce;
 class ElasticCoupling;
 class RollerLoadForce;
 class GuideFriction;
+class CrankshaftTorsion;
 
 class EnergyMeter : public SimTK::Force::Custom::Implementation {
  public:
@@ -22,6 +23,7 @@ class EnergyMeter : public SimTK::Force::Custom::Implementation {
     const ElasticCoupling* coupling = nullptr;
     const RollerLoadForce* loads = nullptr;
     const GuideFriction* friction = nullptr;
+    const CrankshaftTorsion* torsion = nullptr;  // the crankshaft's dampers, with the coupling's
   };
   EnergyMeter(const SimTK::GeneralForceSubsystem& forces, Sources sources);
 

@@ -8,6 +8,7 @@
 #include "analysis/FrictionChecks.h"
 #include "multibody/CamFollower.h"
 #include "multibody/ElasticCoupling.h"
+#include "multibody/CrankshaftTorsion.h"
 #include "multibody/EnergyMeter.h"
 #include "multibody/GuideFriction.h"
 #include "motor/MotorColumns.h"
@@ -21,6 +22,7 @@
 #include "multibody/RollerLoadForce.h"
 #include "physics/CamMotionLaw.h"
 #include "physics/SliderCrank.h"
+#include "physics/TorsionalChain.h"
 
 namespace rollerdyn {
 namespace {
@@ -56,23 +58,18 @@ MultibodyModel::~MultibodyModel() = default;
 void MultibodyModel::buildDrive() {
   const Scene& sc = scene_;
   const bool rigid = sc.coupling.type == CouplingType::Rigid;
-  // Split rods put half their mass on each crank pin (Loveikin, Pochka, Romasevych (2018) eq. (2)): point masses that
-  // turn with the crankshaft, so their gravity torque is felt too.
-  const double pin_mass = sc.rods.model == RodModel::Split ? 0.5 * sc.rods.mass : 0.0;
-  double J = sc.crankSideInertia() + (rigid ? sc.motorSideInertia() : 0.0);
-  SimTK::Inertia inertia = disc(J);
-  double mass = kRotorTokenMass;
-  SimTK::Vec3 first_moment(0);
-  for (int j = 0; j < sc.carts.count && pin_mass > 0; ++j) {
-    inertia += SimTK::Inertia(crankPin(sc, j), pin_mass);
-    mass += pin_mass;
-    first_moment += pin_mass * crankPin(sc, j);
-  }
-  const SimTK::Vec3 com = first_moment / mass;
   const std::string without_inertia = crankWithoutInertia(sc, "multibody model");
   if (!without_inertia.empty()) throw std::invalid_argument(without_inertia);
-  SimTK::Body::Rigid crank_body(SimTK::MassProperties(mass, com, inertia));
-  crank_ = SimTK::MobilizedBody::Pin(matter_.Ground(), SimTK::Transform(), crank_body, SimTK::Transform());
+  const double J_motor_side = rigid ? sc.motorSideInertia() : 0.0;
+  if (sc.crankshaft.torsionalChain()) {
+    buildTorsionalChain(J_motor_side);
+  } else {
+    std::vector<int> all(sc.carts.count);
+    for (int j = 0; j < sc.carts.count; ++j) all[j] = j;
+    crank_ = SimTK::MobilizedBody::Pin(matter_.Ground(), SimTK::Transform(),
+                                       crankBody(sc.crankSideInertia() + J_motor_side, all), SimTK::Transform());
+    throw_of_cart_.assign(sc.carts.count, crank_);
+  }
   if (options_.prescribe_crank_speed) SimTK::Motion::Steady(crank_, options_.crank_speed);
 
   if (rigid) {
@@ -84,6 +81,48 @@ void MultibodyModel::buildDrive() {
   }
 }
 
+SimTK::Body::Rigid MultibodyModel::crankBody(double J, const std::vector<int>& carts) const {
+  const Scene& sc = scene_;
+  // Split rods put half their mass on each crank pin (Loveikin, Pochka, Romasevych (2018) eq. (2)): point masses that
+  // turn with the crankshaft, so their gravity torque is felt too.
+  const double pin_mass = sc.rods.model == RodModel::Split ? 0.5 * sc.rods.mass : 0.0;
+  SimTK::Inertia inertia = disc(J);
+  double mass = kRotorTokenMass;
+  SimTK::Vec3 first_moment(0);
+  for (int j : carts) {
+    if (!(pin_mass > 0)) break;
+    inertia += SimTK::Inertia(crankPin(sc, j), pin_mass);
+    mass += pin_mass;
+    first_moment += pin_mass * crankPin(sc, j);
+  }
+  return SimTK::Body::Rigid(SimTK::MassProperties(mass, first_moment / mass, inertia));
+}
+
+void MultibodyModel::buildTorsionalChain(double J_motor_side) {
+  // One body per throw in z order (physics/TorsionalChain.h); throw k+1 on a Pin on throw k, so its
+  // coordinate is the segment's twist. All throws share the crankshaft's frame at zero twist, so a
+  // crank pin's station is the same in its throw's frame as in the rigid shaft's.
+  const TorsionalChainLayout chain = torsionalChainLayout(scene_);
+  std::vector<SimTK::MobilizedBody> throws;
+  for (size_t k = 0; k < chain.inertia.size(); ++k) {
+    const double J = chain.inertia[k] + (k == 0 ? J_motor_side : 0.0);
+    const SimTK::Body::Rigid body = crankBody(J, {chain.cart_of_throw[k]});
+    if (k == 0)
+      throws.push_back(SimTK::MobilizedBody::Pin(matter_.Ground(), SimTK::Transform(), body, SimTK::Transform()));
+    else
+      throws.push_back(SimTK::MobilizedBody::Pin(throws.back(), SimTK::Transform(), body, SimTK::Transform()));
+  }
+  crank_ = throws.front();
+  throw_of_cart_.clear();
+  for (int j = 0; j < scene_.carts.count; ++j) throw_of_cart_.push_back(throws[chain.throw_of_cart[j]]);
+  auto* f = new CrankshaftTorsion(std::vector<SimTK::MobilizedBody>(throws.begin() + 1, throws.end()), chain.stiffness,
+                                  chain.damping);
+  SimTK::Force::Custom(forces_, f);
+  torsion_force_ = f;
+  applied_order_.push_back(f);
+  inventory_.force_elements.push_back("CrankshaftTorsion(" + std::to_string(throws.size() - 1) + " segments)");
+}
+
 void MultibodyModel::buildCarts() {
   const Scene& sc = scene_;
   const double l = sc.rods.length;
@@ -91,6 +130,7 @@ void MultibodyModel::buildCarts() {
     CartRig rig;
     rig.side = sc.carts.side[j];
     rig.p_CrankPin = crankPin(sc, j);
+    rig.crank = throw_of_cart_[j];
     rig.rod_length = l;
     const double m_cart = sc.cartMassWithRodShare(j);
     const SimTK::Vec3 com_cart(rig.side * sc.carts.geometry.p, sc.carts.geometry.com_height, 0);
@@ -118,7 +158,7 @@ void MultibodyModel::buildCarts() {
       // About its centre a slender rod has Iyy = Izz = I; a small Ixx keeps the inertia valid.
       const SimTK::Inertia central(1e-9 * I + 1e-12, I, I);
       SimTK::Body::Rigid rod_body(SimTK::MassProperties(m, com, central.shiftFromMassCenter(com, m)));
-      rig.rod = SimTK::MobilizedBody::Pin(crank_, SimTK::Transform(rig.p_CrankPin), rod_body, SimTK::Transform());
+      rig.rod = SimTK::MobilizedBody::Pin(rig.crank, SimTK::Transform(rig.p_CrankPin), rod_body, SimTK::Transform());
       rig.rod_mass = m;
       // Close the loop at B: the rod end stays on the cart's z axis through B (a planar
       // revolute joint: two equations; a Ball would add a redundant z equation). One
@@ -128,7 +168,7 @@ void MultibodyModel::buildCarts() {
                                      SimTK::Vec3(l, 0, 0));
       constraint_count_ += 1;
     } else {
-      SimTK::Constraint::Rod(crank_, rig.p_CrankPin, rig.cart, SimTK::Vec3(0), l);
+      SimTK::Constraint::Rod(rig.crank, rig.p_CrankPin, rig.cart, SimTK::Vec3(0), l);
       constraint_count_ += 1;
     }
     carts_.push_back(rig);
@@ -181,6 +221,7 @@ void MultibodyModel::buildForces() {
     applied_order_.push_back(f);
     inventory_.force_elements.push_back("GuideFriction");
   }
+  sources.torsion = torsion_force_;
   auto* meter = new EnergyMeter(forces_, sources);
   SimTK::Force::Custom(forces_, meter);
   energy_meter_ = meter;
@@ -232,6 +273,13 @@ SimTK::State MultibodyModel::closedFormKinematics(double phi, double omega, doub
         breakdown_torque_ * scene_.reducer.ratio * scene_.reducer.efficiency;
     s.updUWeights(matter_.getMySubsystemIndex())[motor_.getFirstUIndex(s)] =
         std::max(1.0, scene_.coupling.stiffness / torque_scale);
+  }
+  if (torsion_force_) {
+    // The same for each segment of a torsional chain: one unit of its twist carries M_kr·u·η.
+    const double torque_scale = std::max(breakdown_torque_ * scene_.reducer.ratio * scene_.reducer.efficiency, 1e-300);
+    for (int k = 0; k < torsion_force_->segmentCount(); ++k)
+      s.updUWeights(matter_.getMySubsystemIndex())[torsion_force_->segmentBody(k).getFirstUIndex(s)] =
+          std::max(1.0, torsion_force_->stiffness(k) / torque_scale);
   }
   system_.realize(s, SimTK::Stage::Instance);
   IndependentState x;
@@ -382,6 +430,7 @@ std::vector<std::string> MultibodyModel::timeseriesColumns() const {
     for (const std::string& m : motorColumns(&motor_force_->law(), motor_force_->supply())) c.push_back(m);
   if (recordsReducerLosses()) c.push_back("reducer_loss_torque");
   if (coupling_force_ && coupling_force_->law().hasBacklash()) c.push_back("tooth_contact");
+  for (int k = 1; torsion_force_ && k <= torsion_force_->segmentCount(); ++k) c.push_back("shaft_torque_" + std::to_string(k));
   return c;
 }
 
@@ -427,6 +476,7 @@ void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& u
   if (recordsReducerLosses()) ts.push_back(motor_force_->reducerLossTorque(s));
   if (coupling_force_ && coupling_force_->law().hasBacklash())
     ts.push_back(static_cast<double>(toothContact(coupling_force_->law(), coupling_force_->twist(s))));
+  for (int k = 0; torsion_force_ && k < torsion_force_->segmentCount(); ++k) ts.push_back(torsion_force_->torque(s, k));
 }
 
 bool MultibodyModel::recordsReducerLosses() const {
@@ -460,7 +510,7 @@ void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>
     const SimTK::Vec3 a_cart(c.cart.getOneUDot(s, 0), 0, 0);
     const SimTK::Vec3 F_rod_on_cart = m_cart * a_cart - applied[ic][1] - reactions[ic][1];
     // Pin A in ground, and the unit vector B -> A along the rod: tension pulls the cart to A.
-    const SimTK::Vec3 p_A = crank_.findStationLocationInGround(s, c.p_CrankPin);
+    const SimTK::Vec3 p_A = c.crank.findStationLocationInGround(s, c.p_CrankPin);
     const SimTK::Vec3 p_B = c.cart.getBodyOriginLocation(s);
     const SimTK::UnitVec3 e_BA(p_A - p_B);
     // Force of the rod on the crank pin: rod free body m·a_S = F_A + (-F_B) + m·g.

@@ -34,6 +34,7 @@ namespace rollerdyn {
 
 class MotorForce;
 class ElasticCoupling;
+class CrankshaftTorsion;
 class RollerLoadForce;
 class GuideFriction;
 class EnergyMeter;
@@ -84,7 +85,10 @@ class MultibodyModel {
   const std::vector<CartRig>& carts() const { return carts_; }
   const MultibodyOptions& options() const { return options_; }
   const SimTK::GeneralForceSubsystem& forces() const { return forces_; }
+  // The crankshaft: the whole rigid shaft, or the throw at the drive end of a torsional chain.
   const SimTK::MobilizedBody& crank() const { return crank_; }
+  // The springs between a torsional chain's throws; nullptr for a rigid crankshaft.
+  const CrankshaftTorsion* crankshaftTorsion() const { return torsion_force_; }
   // Motor-side body: mobilized on the crankshaft (its q is the twist) when the coupling is
   // elastic, the crankshaft itself when it is rigid.
   const SimTK::MobilizedBody& motorSide() const { return motor_; }
@@ -174,6 +178,12 @@ class MultibodyModel {
   // State realized to Velocity on return; nothing without a motor.
   void startMotor(SimTK::State& s) const;
   void buildDrive();
+  // The crankshaft body (or one throw) of inertia J [kg·m²] about its axis, carrying the split
+  // rods' pin masses of `carts`.
+  SimTK::Body::Rigid crankBody(double J, const std::vector<int>& carts) const;
+  // One body per throw and the springs between them (physics/TorsionalChain.h); J_motor_side
+  // joins the drive-end throw (rigid coupling).
+  void buildTorsionalChain(double J_motor_side);
   void buildCarts();
   void buildForces();
   void fillInventory();
@@ -185,12 +195,14 @@ class MultibodyModel {
   SimTK::GeneralForceSubsystem forces_;
   SimTK::MobilizedBody motor_;   // motor-side body; same as crank_ for a rigid coupling
   SimTK::MobilizedBody crank_;
+  std::vector<SimTK::MobilizedBody> throw_of_cart_;  // per cart: the body its crank pin is on
   std::vector<CartRig> carts_;
   int constraint_count_ = 0;
   // Owned by the force subsystem once wrapped in SimTK::Force::Custom.
   const MotorForce* motor_force_ = nullptr;
   double breakdown_torque_ = 0;  // M_kr of the law the model runs; the key without a motor [N·m]
   const ElasticCoupling* coupling_force_ = nullptr;
+  const CrankshaftTorsion* torsion_force_ = nullptr;
   const RollerLoadForce* load_force_ = nullptr;
   const GuideFriction* friction_force_ = nullptr;
   const EnergyMeter* energy_meter_ = nullptr;

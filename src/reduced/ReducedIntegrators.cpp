@@ -558,6 +558,10 @@ RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> la
   RunResult res;
   res.model = "reduced";
   res.effects = scene.effects();
+  // The papers' crankshaft is rigid: a torsional chain given for the multibody model is not built
+  // here (and is named as without effect, KeyEffects.h).
+  res.effects.erase(std::remove(res.effects.begin(), res.effects.end(), std::string("crankshaft_torsion")),
+                    res.effects.end());
   res.guide_normals = model.guideNormalsDescription();
   setupTables(model, res);
   if (scene.reduced.integrator == ReducedIntegrator::Baranov) {

@@ -1,5 +1,7 @@
 #include "reduced/ReducedModel.h"
 
+#include "physics/CartReducedInertia.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -135,11 +137,7 @@ SliderCrankPose ReducedModel::cartPose(int j, double phi) const {
 // Loveikin and Pochka (2007) eq. (9) (distributed rod: centre-of-mass speed and rotation), and their φ-derivatives
 // (Loveikin, Pochka, Romasevych (2018) eq. (38), analytic).
 double ReducedModel::cartInertia(int j, const SliderCrankPose& p) const {
-  double J = m_B_[j] * p.dx_B * p.dx_B;
-  if (scene_.rods.model == RodModel::Distributed)
-    J += scene_.rods.mass * (p.dx_S * p.dx_S + p.dy_S * p.dy_S) +
-         scene_.rods.inertia_com * p.dbeta * p.dbeta;
-  return J;
+  return cartReducedInertia(m_B_[j], scene_.rods, p);
 }
 
 double ReducedModel::cartInertiaDerivative(int j, const SliderCrankPose& p) const {

@@ -1,5 +1,7 @@
 // crankshaft.*: where the throws and the main bearings sit along the shaft (Scene.h,
 // CrankshaftLayout; analysis/CrankshaftBearings.h uses them).
+#include <algorithm>
+
 #include "scene/SceneReader.h"
 
 namespace rollerdyn::scene_detail {
@@ -8,10 +10,23 @@ CrankshaftLayout readCrankshaft(const Reader& in, int cart_count) {
   const SceneDocument& doc = in.doc();
   CrankshaftLayout c;
   c.bending_stiffness = in.number("crankshaft.bending_stiffness");
+  c.torsional_stiffness = in.number("crankshaft.torsional_stiffness");
+  c.torsional_damping = in.number("crankshaft.torsional_damping");
+  if (c.torsional_damping > 0 && !c.torsionalChain())
+    doc.fail("crankshaft.torsional_damping",
+             "crankshaft.torsional_stiffness beside it (the damping acts across the chain's shaft segments; a rigid "
+             "crankshaft does not twist)",
+             formatNumber(c.torsional_damping) + " without crankshaft.torsional_stiffness");
   const bool has_throws = in.has("crankshaft.throw_positions"), has_bearings = in.has("crankshaft.bearing_positions");
+  if (c.torsionalChain() && !has_throws)
+    doc.failMissing("crankshaft.throw_positions",
+                    "a list of " + std::to_string(cart_count) +
+                        " axial positions z [m], one per cart's crank throw (needed with crankshaft.torsional_stiffness: "
+                        "the segment lengths between throws set their stiffness)");
   if (!has_throws && !has_bearings) return c;
-  // One list without the other places nothing: a throw needs bearings to share its force between.
-  if (!has_bearings)
+  // One list without the other places nothing: a throw needs bearings to share its force between
+  // (a torsional chain needs the throws only).
+  if (!has_bearings && !c.torsionalChain())
     doc.failMissing("crankshaft.bearing_positions",
                     "a list of two or more axial positions z of the main bearings [m], ascending (needed with "
                     "crankshaft.throw_positions)");
@@ -24,6 +39,7 @@ CrankshaftLayout readCrankshaft(const Reader& in, int cart_count) {
   if (c.throw_positions.empty())  // one number would put every throw in one plane: say where each is
     doc.fail("crankshaft.throw_positions", describeExpectedList(*findSceneKey("crankshaft.throw_positions"), cart_count),
              formatNumber(uniform));
+  if (!has_bearings) return c;
   c.bearing_positions = in.numberList("crankshaft.bearing_positions");
   if (c.bearing_positions.size() < 2)
     doc.fail("crankshaft.bearing_positions",
@@ -36,6 +52,43 @@ CrankshaftLayout readCrankshaft(const Reader& in, int cart_count) {
                    formatNumber(c.bearing_positions[k - 1]) + " m (ascending, no two bearings in one place)",
                formatNumber(c.bearing_positions[k]));
   return c;
+}
+
+// The torsional chain is built by the constrained formulation only (one Simbody body per throw,
+// a spring between neighbours); the minimal formulation's closed-form loops turn one rigid
+// crankshaft, and a cam's follower reads one crank angle.
+void checkTorsionalChain(const Reader& in, const Scene& s) {
+  const CrankshaftLayout& c = s.crankshaft;
+  if (!c.torsionalChain()) return;
+  const SceneDocument& doc = in.doc();
+  const std::string key = "crankshaft.torsional_stiffness";
+  if (s.drive == DriveType::Cam)
+    doc.fail(key, "no torsional chain under drive.type: cam (the cams sit on one rigid shaft); remove the key",
+             formatNumber(c.torsional_stiffness));
+  if (s.simulation.formulation != Formulation::Constrained)
+    doc.fail(key,
+             "simulation.formulation: constrained beside it (the torsional chain, one body per throw, is built by "
+             "the constrained formulation; it needs loads.guide_friction.normal_force: lagged where guides have "
+             "friction), or no crankshaft.torsional_stiffness for a rigid crankshaft",
+             formatNumber(c.torsional_stiffness) + " with simulation.formulation: minimal");
+  std::vector<double> z = c.throw_positions;
+  std::sort(z.begin(), z.end());
+  for (size_t k = 1; k < z.size(); ++k)
+    if (!(z[k] > z[k - 1]))
+      doc.fail("crankshaft.throw_positions",
+               "distinct positions with crankshaft.torsional_stiffness (a segment of zero length would be "
+               "infinitely stiff: two throws in one plane cannot twist against each other)",
+               "two throws at z = " + formatNumber(z[k]) + " m");
+  // Each throw turns against its neighbours on its own: it needs an inertia at every angle, its own
+  // or its rod's (a distributed rod's, or a split rod's pin mass); a cart's alone vanishes at the
+  // dead centres (the rigid shaft's rule, physics/CrankInertia.h, per throw).
+  const bool rod_inertia = s.rods.model == RodModel::Distributed || (s.rods.model == RodModel::Split && s.rods.mass > 0);
+  if (!(s.crank.inertia_per_crank > 0 || s.crank.shaft_inertia > 0 || rod_inertia))
+    doc.fail("crank.inertia_per_crank",
+             "a number > 0 [kg·m²] with crankshaft.torsional_stiffness and " + std::string(toString(s.rods.model)) +
+                 " rods (each throw of the chain turns on its own and needs an inertia at the dead centres: "
+                 "crank.inertia_per_crank, or crank.shaft_inertia shared equally)",
+             formatNumber(s.crank.inertia_per_crank));
 }
 
 }  // namespace rollerdyn::scene_detail

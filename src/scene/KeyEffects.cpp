@@ -95,6 +95,9 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
   if (key == "crankshaft.bending_stiffness")
     return "with one E·I along the whole shaft on rigid supports the main bearings' reactions do not depend on "
            "its value, with two bearings or more (the continuous beam's reactions follow from the positions alone)";
+  if (key == "crankshaft.torsional_stiffness" && model == "reduced")
+    return "the reduced model keeps the papers' rigid crankshaft (one crank angle for every cart); the torsional "
+           "chain is the multibody model's";
   if ((key == "crankshaft.throw_positions" || key == "crankshaft.bearing_positions") && model == "reduced")
     return "the reduced model computes no crank-pin forces, which each main bearing's share needs (run the "
            "multibody model)";

@@ -104,6 +104,7 @@ std::vector<std::string> Scene::effects() const {
   if (hasGuideFriction()) e.push_back("guide_friction");
   if (hasGravity()) e.push_back("gravity");
   if (hasFlywheel()) e.push_back("flywheel");
+  if (crankshaft.torsionalChain()) e.push_back("crankshaft_torsion");
   return e;
 }
 
@@ -116,6 +117,8 @@ std::string effectWords(const std::string& e) {
   if (e == "elastic_coupling") return "torsional spring of the coupling (coupling.stiffness)";
   if (e == "coupling_damping") return "damping of the coupling (coupling.damping)";
   if (e == "backlash") return "backlash of the reducer's teeth, no torque inside the gap (reducer.backlash)";
+  if (e == "crankshaft_torsion")
+    return "crankshaft as a torsional chain, one body per throw (crankshaft.torsional_stiffness)";
   if (e == "cam_drive") return "cam drive, no rods (drive.type: cam)";
   if (e == "rods_distributed") return "rods with distributed mass (rods.model: distributed)";
   if (e == "rods_split") return "rods' mass split, half at the crank pin, half at the cart (rods.model: split)";

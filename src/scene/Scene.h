@@ -86,7 +86,15 @@ struct CrankshaftLayout {
   double bending_stiffness = 0;  // E·I of the shaft, uniform along it [N·m²]; 0 = not given. With
                                  // one E·I on rigid supports the reactions do not depend on it; it
                                  // only scales the shaft's deflection   crankshaft.bending_stiffness
+  double torsional_stiffness = 0;  // G·I_p of the shaft between throws, uniform along it [N·m²]; 0 = a
+                                   // rigid shaft. Given: one body per throw in z order, the segment
+                                   // between throws a and b a torsional spring G·I_p/|z_b - z_a|
+                                   // (multibody model, constrained formulation)
+                                   //                            crankshaft.torsional_stiffness
+  double torsional_damping = 0;    // β·G·I_p of a Kelvin-Voigt shaft [N·m²·s]: each segment's damper
+                                   // d_k = β·G·I_p/Δz [N·m·s/rad]; 0 = undamped   crankshaft.torsional_damping
   bool given() const { return !bearing_positions.empty(); }
+  bool torsionalChain() const { return torsional_stiffness > 0; }
 };
 
 // Cam drive with optimal reversal of Loveikin and Pochka (drive.type = cam): each cart is pushed by a constant-diameter cam on the

@@ -433,6 +433,7 @@ Scene readScene(const SceneDocument& doc) {
   readDrive(in, s);
   s.sizing = readSizing(in);
   readMotorSwitching(in, s);
+  scene_detail::checkTorsionalChain(in, s);
 
   // Backlash: the teeth's contact stiffness and damping are the coupling's c, k, which a rigid
   // coupling does not have (physics/CouplingLaw.h).

@@ -198,5 +198,7 @@ void readMotor(const Reader& in, KlossMotor& motor, InductionMotor& induction);
 // The crankshaft's layout (crankshaft.*): throws and main bearings along the shaft, validated
 // against the number of carts (CrankshaftSceneParser.cpp).
 CrankshaftLayout readCrankshaft(const Reader& in, int cart_count);
+// Refuses a torsional chain (crankshaft.torsional_stiffness) where it cannot be built.
+void checkTorsionalChain(const Reader& in, const Scene& s);
 
 }  // namespace rollerdyn::scene_detail

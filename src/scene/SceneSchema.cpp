@@ -91,7 +91,8 @@ std::vector<KeySpec> buildSchema() {
                      "value per cart. With "
                      "crankshaft.bearing_positions it splits the main bearings' resultant into each "
                      "bearing's reaction; a throw outside the outer bearings is an overhung crank")
-                  .when("only with crankshaft.bearing_positions; absent: the main bearings' resultant only")),
+                  .when("only with crankshaft.bearing_positions or crankshaft.torsional_stiffness; absent: the main "
+                        "bearings' resultant only and a rigid crankshaft")),
       KeySpec{"crankshaft.bearing_positions", KeyKind::NumberList, "m", P::Conditional, anyFinite(), 0.0, "", {},
               "axial positions z of the main bearings, the same origin as crankshaft.throw_positions: a list "
               "of two or more, ascending; the shaft is a beam on rigid supports there"}
@@ -100,6 +101,21 @@ std::vector<KeySpec> buildSchema() {
              "E·I of the crankshaft, uniform along it. Without effect on the bearing reactions: with one "
              "E·I on rigid supports they do not depend on its value, also with more than two bearings "
              "(accepted, and reported as without effect)"),
+      number("crankshaft.torsional_stiffness", "N·m²", P::Optional, positive(), 0.0,
+             "G·I_p of the crankshaft between its throws, uniform along it: the shaft becomes a torsional "
+             "chain, one body per throw in z order, the segment between neighbouring throws a spring "
+             "G·I_p/Δz; the coupling drives the throw of smallest z, the shaft from the coupling to it counts "
+             "as rigid (put its compliance into coupling.stiffness); each throw carries crank.inertia_per_crank "
+             "and an equal share of crank.shaft_inertia, a crankshaft flywheel sits at the drive end; no "
+             "material damping. Absent: a rigid crankshaft")
+          .when("only with crankshaft.throw_positions (distinct), drive.type: crank and simulation.formulation: "
+                "constrained; the reduced model keeps the papers' rigid crankshaft"),
+      number("crankshaft.torsional_damping", "N·m²·s", P::Optional, nonNegative(), 0.0,
+             "β·G·I_p of the torsional chain's shaft (Kelvin-Voigt material damping, uniform): each segment gets "
+             "a damper β·G·I_p/Δz beside its spring. For a damping ratio ζ at a shaft mode of frequency p give "
+             "2·ζ·G·I_p/p (steel crankshafts: ζ of a few 0.1 %). 0: undamped, and the modes a start excites ring "
+             "through the whole run")
+          .when("only with crankshaft.torsional_stiffness"),
 
       choice("rods.model", P::Required, {"distributed", "split", "massless"}, "",
              "connecting-rod mass model: distributed (uniform bar), split (half of the mass at "

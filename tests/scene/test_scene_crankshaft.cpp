@@ -74,3 +74,40 @@ TEST(SceneCrankshaft, BendingStiffnessIsReportedWithoutEffectOnTheReactions) {
                       w.find("do not depend on") != std::string::npos);
   EXPECT_TRUE(named);
 }
+
+namespace {
+// kMinimalScene in the constrained formulation with a crank inertia: what a torsional chain needs.
+std::string chainScene(const std::string& shaft) {
+  std::string s = replaced("  t_end: 1.0", "  t_end: 1.0\n  formulation: constrained");
+  s = replaced("  offset_deg: 90", "  offset_deg: 90\n  inertia_per_crank: 0.5", s);
+  return s + "crankshaft:\n" + shaft;
+}
+}  // namespace
+
+TEST(SceneCrankshaft, ATorsionalChainNeedsOnlyTheThrows) {
+  const Scene s = parseSceneText(chainScene("  throw_positions: [0.8, 0.2]\n  torsional_stiffness: 1.0e6\n"), "test.yaml");
+  EXPECT_TRUE(s.crankshaft.torsionalChain());
+  EXPECT_FALSE(s.crankshaft.given());  // no bearings: the bearings' resultant only
+  EXPECT_EQ(s.crankshaft.torsional_stiffness, 1.0e6);
+  bool named = false;
+  for (const std::string& w : keysWithoutEffect(s, "reduced"))
+    named = named || (w.find("crankshaft.torsional_stiffness") != std::string::npos && w.find("rigid") != std::string::npos);
+  EXPECT_TRUE(named);
+  EXPECT_TRUE(keysWithoutEffect(s, "multibody").empty());
+}
+
+TEST(SceneCrankshaft, ATorsionalChainIsRefusedWhereItCannotBeBuilt) {
+  // The minimal formulation (the scene files' default) turns one rigid crankshaft.
+  expectSceneError(kMinimalScene + "crankshaft:\n  throw_positions: [0.2, 0.8]\n  torsional_stiffness: 1.0e6\n",
+                   {"crankshaft.torsional_stiffness", "simulation.formulation: constrained"});
+  expectSceneError(chainScene("  torsional_stiffness: 1.0e6\n"), {"crankshaft.throw_positions", "segment lengths"});
+  expectSceneError(chainScene("  throw_positions: [0.5, 0.5]\n  torsional_stiffness: 1.0e6\n"),
+                   {"crankshaft.throw_positions", "distinct positions"});
+  // Massless rods and no crank inertia: a throw's inertia would vanish at its dead centres.
+  expectSceneError(replaced("  model: distributed", "  model: massless",
+                            replaced("  inertia_per_crank: 0.5", "  inertia_per_crank: 0",
+                                     chainScene("  throw_positions: [0.2, 0.8]\n  torsional_stiffness: 1.0e6\n"))),
+                   {"crank.inertia_per_crank", "each throw of the chain"});
+  expectSceneError(chainScene("  throw_positions: [0.2, 0.8]\n  torsional_stiffness: -1\n"),
+                   {"crankshaft.torsional_stiffness"});
+}
