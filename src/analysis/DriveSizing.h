@@ -42,6 +42,7 @@
 #include "analysis/CrankshaftBearings.h"
 #include "analysis/JointSizing.h"
 #include "analysis/RunResult.h"
+#include "analysis/SizingCheck.h"
 #include "analysis/StartUp.h"
 #include "analysis/SteadyState.h"
 #include "scene/Scene.h"
@@ -123,16 +124,6 @@ struct CouplingSizing {
   double peak_over_rating = 0;     // [-], passes when ≤ 1
   double peak_whole_run = 0, t_peak_whole_run = 0;  // max |M| over the whole run and when [N·m], [s]
   double peak_over_rating_whole_run = 0;            // [-]
-};
-
-// One check a drive is signed off with.
-struct SizingCheck {
-  std::string name;     // start, motor_heating, motor_breakdown, coupling
-  std::string what;     // in words, with the limit
-  double value = 0;     // the deciding ratio [-] (NaN when not computable)
-  std::string verdict;  // "pass", "FAIL", "not applicable" or "" (nothing to compare with)
-  std::string window;   // "whole run" or "steady window": where the deciding value comes from
-  std::string reason;   // why FAIL or not applicable; what decided
 };
 
 struct DriveSizing {

@@ -1,4 +1,6 @@
 #include "analysis/SizingSummary.h"
+
+#include "analysis/SizingCheckJson.h"
 #include "analysis/CrankshaftSummary.h"
 #include "io/FieldFormat.h"
 
@@ -68,12 +70,7 @@ json sizingJson(const DriveSizing& s) {
   json checks = json::array();
   const SizingCheck* by_name[3] = {nullptr, nullptr, nullptr};
   for (const SizingCheck& c : s.checks) {
-    checks.push_back({{"check", c.name},
-                      {"what", c.what},
-                      {"value", num(c.value)},
-                      {"verdict", c.verdict.empty() ? json(nullptr) : json(c.verdict)},
-                      {"window", c.window},
-                      {"reason", c.reason}});
+    checks.push_back(sizingCheckJson(c));
     if (c.name == "motor_heating") by_name[0] = &c;
     if (c.name == "motor_breakdown") by_name[1] = &c;
     if (c.name == "coupling") by_name[2] = &c;
