@@ -53,7 +53,7 @@ SignOffRow rowOf(const std::string& group, const json& j) {
   } else {
     r.verdict = "not applicable";
     if (r.check.verdict.empty())
-      r.reason = "no limit to compare with" + (r.reason.empty() ? std::string() : ": " + r.reason);
+      r.reason = "no verdict" + (r.reason.empty() ? std::string() : ": " + r.reason);
     else if (r.reason.empty())
       r.reason = "not applicable (" + r.check.verdict + "), no reason given";
   }
@@ -79,6 +79,13 @@ std::string overallLine(const SignOffSheet& s) {
     return "No check FAILs: " + counts + ". Each n/a is a check not made; the reviewer signs off only having "
            "accepted its reason or supplied what it names.";
   return "All checks pass: " + counts + ". Ready for the reviewer's signature.";
+}
+
+// `text` right-aligned in `width` characters (UTF-8: ≤ and ≥ are one character of three bytes).
+std::string padded(const std::string& text, int width) {
+  int chars = 0;
+  for (unsigned char c : text) chars += (c & 0xC0) != 0x80;
+  return std::string(std::max(0, width - chars), ' ') + text;
 }
 
 }  // namespace
@@ -164,8 +171,8 @@ std::string signOffSheetText(const SignOffSheet& s) {
     if (std::isfinite(r.check.limit))
       std::snprintf(limit, sizeof limit, "%s %.4g", comparisonSymbol(r.check.passes_when).c_str(), r.check.limit);
     char line[160];
-    std::snprintf(line, sizeof line, "  %-5s %-30s %9s %10s  ", shortVerdict(r.verdict).c_str(), r.check.name.c_str(), value, limit);
-    o << line << (r.verdict == "pass" ? r.check.window : r.reason) << "\n";
+    std::snprintf(line, sizeof line, "  %-5s %-30s %9s ", shortVerdict(r.verdict).c_str(), r.check.name.c_str(), value);
+    o << line << padded(limit, 10) << "  " << (r.verdict == "pass" ? r.check.window : r.reason) << "\n";
   }
   o << s.overall << "\n";
   return o.str();

@@ -132,6 +132,10 @@ SizingCheck heatingCheck(const DriveSizing& s, bool turning) {
                "over the run's last part " + fmt3(steady) + ", the thermal equivalent √(rotor losses / nominal rotor losses) " +
                fmt3(whole);
     if (!(h.value > 1.0)) h.value = kNaN;
+  } else if (!std::isfinite(m.nominal_torque)) {
+    notApplicable(h, "the nominal torque M_n is not known: give sizing.motor_nominal_torque, or "
+                     "sizing.motor_nominal_power with motor.omega_nominal, or motor.omega_nominal with "
+                     "motor.overload_ratio (the Kloss data)");
   } else if (!s.steady_reached) {
     notApplicable(h, s.steady_not_reached + " (the heating check needs the steady running's losses)");
   } else if (!duty.empty()) {

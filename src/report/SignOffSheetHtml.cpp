@@ -39,6 +39,29 @@ table.sign td:first-child { width: 40mm; color: #444; }
 
 std::string esc(const std::string& s) { return htmlEscape(s); }
 
+// A CSS string literal of `s` (quotes and backslashes escaped; HTML's < and > too, inside <style>).
+std::string cssString(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '<' || c == '>' || c == '\n') {
+      out += c == '<' ? "\\3c " : c == '>' ? "\\3e " : " ";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+// Every printed page names the sheet and the scene's hash, and its number of the total.
+std::string pageBoxes(const SignOffSheet& s) {
+  const std::string left = "Sign-off sheet: " + s.source.scene_name + ", scene SHA-256 " + s.scene_sha256.substr(0, 16) +
+                           "…, " + s.source.date;
+  return "<style>\n@page { @bottom-left { content: " + cssString(left) +
+         "; font: 7.5pt sans-serif; color: #555; } @bottom-right { content: \"page \" counter(page) \" of \" "
+         "counter(pages); font: 7.5pt sans-serif; color: #555; } }\n</style>\n";
+}
+
 std::string number(double v) {
   if (!std::isfinite(v)) return "—";
   char b[32];
@@ -117,7 +140,7 @@ std::string signOffSheetHtml(const SignOffSheet& s) {
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Sign-off sheet: "
     << esc(s.source.scene_name) << "</title>\n"
-    << kStyle << "</head>\n<body>\n";
+    << kStyle << pageBoxes(s) << "</head>\n<body>\n";
   header(h, s);
   h << "<div class=\"overall " << (s.failed > 0 || !s.run_status.empty() ? "fail" : s.signable && s.not_applicable == 0 ? "ok" : "")
     << "\">" << esc(s.overall) << "</div>\n";

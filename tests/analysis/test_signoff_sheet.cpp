@@ -5,6 +5,7 @@
 // check of the drive sizing carries (SizingChecks.h), and the SHA-256 the sheet states.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "analysis/SignOffSheet.h"
@@ -100,10 +101,10 @@ TEST(SignOffSheet, NotApplicableShowsItsReasonAndTheKeysItNames) {
   EXPECT_NE(c.reason.find("no start from rest"), std::string::npos);
   ASSERT_EQ(c.keys.size(), 1u);
   EXPECT_EQ(c.keys[0], "initial.crank_speed");
-  // Nothing to compare with: n/a, and said so.
+  // Nothing to compare with: n/a, and said so, with the run's reason.
   const SignOffRow& f = row(s, "fatigue_starts_rod_force");
   EXPECT_EQ(f.verdict, "not applicable");
-  EXPECT_EQ(f.reason.rfind("no limit to compare with", 0), 0u) << f.reason;
+  EXPECT_EQ(f.reason.rfind("no verdict: ", 0), 0u) << f.reason;
   ASSERT_EQ(f.keys.size(), 1u);
   EXPECT_EQ(f.keys[0], "sizing.fatigue.required_starts");
   EXPECT_EQ(s.overall.rfind("No check FAILs", 0), 0u) << s.overall;
@@ -148,9 +149,11 @@ TEST(SignOffSheet, EverySizingCheckCarriesItsLimitAndMethod) {
   s.coupling.peak_over_rating = s.coupling.peak_over_rating_whole_run = 0.5;
   s.coupling_selection.requested = true;
   s.coupling_selection.rated_torque = 2000;
-  s.coupling_selection.rated_ratio = 0.3;
+  s.coupling_selection.max_torque = 6000;
+  s.coupling_selection.vibratory_torque = 800;
+  s.coupling_selection.damping_power = 300;
   const std::vector<SizingCheck> checks = sizingChecks(s, true);
-  ASSERT_EQ(checks.size(), 5u);
+  ASSERT_EQ(checks.size(), 8u);  // start, heating, breakdown, coupling and DIN 740-2's four
   for (const SizingCheck& c : checks) {
     EXPECT_FALSE(c.method.empty()) << c.name;
     EXPECT_FALSE(c.basis.empty()) << c.name;
@@ -162,6 +165,27 @@ TEST(SignOffSheet, EverySizingCheckCarriesItsLimitAndMethod) {
   }
   EXPECT_NE(checks.back().method.find("DIN 740-2"), std::string::npos);
   EXPECT_NE(checks[2].method.find("IEC 60034-1"), std::string::npos);
+}
+
+// Without M_n (no nominal torque, power or Kloss data) the heating check has no ratio: it is
+// "not applicable" and names the keys that give M_n (it had no verdict and a reason with "nan").
+TEST(SignOffSheet, HeatingWithoutTheNominalTorqueIsNotApplicableAndNamesTheKeys) {
+  DriveSizing s;
+  s.motion = "turning";
+  s.steady_reached = true;
+  s.start_simulated = true;
+  s.can_start_from_rest = 1;
+  s.motor.available = true;
+  s.motor.nominal_torque = NAN;
+  s.motor.rms_over_nominal = NAN;
+  s.motor.whole_run.thermal_over_nominal = NAN;
+  s.motor.peak_over_breakdown = 0.5;
+  SizingCheck heating;
+  for (const SizingCheck& c : sizingChecks(s, true))
+    if (c.name == "motor_heating") heating = c;
+  EXPECT_EQ(heating.verdict, "not applicable");
+  EXPECT_NE(heating.reason.find("sizing.motor_nominal_torque"), std::string::npos) << heating.reason;
+  EXPECT_EQ(heating.reason.find("nan"), std::string::npos) << heating.reason;
 }
 
 }  // namespace
