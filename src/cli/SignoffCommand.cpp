@@ -33,7 +33,7 @@ int runSignoff(const SignoffArgs& a) {
   const nlohmann::json summary = writeRunOutputs(scene, run, a.scene.scene_path, out, a.scene.overrides, &modal);
   const SignOffSheet sheet = signOffSheetOf(summary, scene.name, a.scene.scene_path, a.scene.overrides);
   const SignOffFiles files = writeSignOffFiles(sheet, out);
-  std::cout << signOffSheetText(sheet) << "sign-off sheet: " << files.json << ", " << files.html;
+  std::cout << signOffSheetText(sheet) << "written: " << files.json << ", " << files.html;
   if (!files.pdf.empty()) std::cout << ", " << files.pdf;
   std::cout << '\n';
   // A drive that stalls or rocks is a finished sheet (its checks FAIL); a run that failed is an error.

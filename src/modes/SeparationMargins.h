@@ -75,9 +75,10 @@ SeparationMargins separationMargins(bool elastic, const SteadyMotion& steady, co
                                     const ExcitationOrders& orders,
                                     const CampbellDiagram& campbell);
 
-// The margins as checks of a sign-off (SeparationChecks.cpp): one per order shown, value SM_k,
-// limit 10 %, "not applicable" for an order too weak to drive the mode; one "not applicable" check
-// with the reason where the margins do not apply. modes.json's separation_margins.checks.
+// The margins as checks of a sign-off (SeparationChecks.cpp): one per order that drives the mode,
+// value SM_k, limit 10 %; an order too weak to drive it is a "not applicable" check only within
+// the 10 % (further away it is no excitation); one "not applicable" check with the reason where
+// the margins do not apply or no order drives the mode. modes.json's separation_margins.checks.
 std::vector<SizingCheck> separationChecks(const SeparationMargins& s);
 
 // Renderings (SeparationMarginsOutputs.cpp): modes.json's "separation_margins" and the console's lines.

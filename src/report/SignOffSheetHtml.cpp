@@ -26,6 +26,7 @@ td.n { text-align: right; white-space: nowrap; font-variant-numeric: tabular-num
 .overall.ok { border-color: #070; }
 tr.check { page-break-inside: avoid; break-inside: avoid; }
 tbody.check { page-break-inside: avoid; break-inside: avoid; }
+tbody.group { page-break-after: avoid; break-after: avoid; }
 td.v { font-weight: 700; text-align: center; width: 12mm; }
 td.pass { color: #070; } td.FAIL { color: #fff; background: #b00; } td.na { color: #555; background: #f2f2f2; }
 td.detail { font-size: 8.3pt; color: #333; border-top: none; }
@@ -103,7 +104,7 @@ void checkRows(std::ostringstream& h, const SignOffSheet& s) {
     const SizingCheck& c = r.check;
     if (r.group != group) {
       group = r.group;
-      h << "<tbody><tr><th colspan=\"6\">" << esc(group) << "</th></tr></tbody>\n";
+      h << "<tbody class=\"group\"><tr><th colspan=\"6\">" << esc(group) << "</th></tr></tbody>\n";
     }
     const std::string cls = r.verdict == "pass" ? "pass" : r.verdict == "FAIL" ? "FAIL" : "na";
     h << "<tbody class=\"check\"><tr><td class=\"n\" rowspan=\"2\">" << ++n << "</td><td>" << esc(c.what)

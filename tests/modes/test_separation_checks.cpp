@@ -1,6 +1,7 @@
 // The separation margins as checks of the sign-off sheet (modes/SeparationMargins.h,
 // separationChecks): each order shown becomes a check with value SM_k, limit 10 % (passes when
-// SM_k >= 0.10), method API 617 / API 684, the margins' own verdicts, a weak order "not applicable";
+// SM_k >= 0.10), method API 617 / API 684, the margins' own verdicts; an order too weak to drive
+// the mode "not applicable" where it lies within 10 % of it, and no check further away;
 // margins that do not apply give one "not applicable" check with their reason. modes.json holds
 // them under separation_margins.checks.
 #include <gtest/gtest.h>
@@ -34,9 +35,9 @@ TEST(SeparationChecks, EachOrderIsACheckAgainstTenPercent) {
   SeparationMargins s;
   s.applicable = true;
   s.omega = 10.0;
-  s.rows = {row(4, 0.05, "FAIL"), row(2, 0.52, "pass"), row(8, 0.9, "n/a")};
+  s.rows = {row(4, 0.05, "FAIL"), row(2, 0.52, "pass"), row(8, 0.02, "n/a"), row(12, 0.9, "n/a")};
   const std::vector<SizingCheck> c = separationChecks(s);
-  ASSERT_EQ(c.size(), 3u);
+  ASSERT_EQ(c.size(), 3u);  // order 12: too weak to drive the mode and 90 % away from it, no check
   EXPECT_EQ(c[0].name, "separation_margin_order_4");
   EXPECT_EQ(c[0].verdict, "FAIL");
   EXPECT_DOUBLE_EQ(c[0].value, 0.05);
@@ -52,6 +53,18 @@ TEST(SeparationChecks, EachOrderIsACheckAgainstTenPercent) {
   const nlohmann::json j = separationJson(s);
   ASSERT_EQ(j["checks"].size(), 3u);
   EXPECT_EQ(j["checks"][0]["limit"], 0.10);
+}
+
+TEST(SeparationChecks, OnlyWeakOrdersFarFromTheModeGiveOneNotApplicableCheck) {
+  SeparationMargins s;
+  s.applicable = true;
+  s.omega = 10.0;
+  s.rows = {row(1, 3.0, "n/a"), row(3, 0.5, "n/a")};
+  const std::vector<SizingCheck> c = separationChecks(s);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].name, "separation_margin");
+  EXPECT_EQ(c[0].verdict, "not applicable");
+  EXPECT_NE(c[0].reason.find("no crank order drives the coupling mode"), std::string::npos);
 }
 
 TEST(SeparationChecks, MarginsThatDoNotApplyGiveOneCheckWithTheReason) {
