@@ -98,13 +98,14 @@ std::string sizingSectionHtml(const json& s) {
   if (checks.is_array() && !checks.empty()) {
     h << "<h3>Checks</h3>\n<p class=\"small\">Each check names the window that decided it: the steady window or "
          "the whole run (start-up included); the sign-off sheet (rollerdyn signoff) lists them with what each "
-         "rests on.</p>\n<table>\n<tr><th>check</th><th>ratio</th><th>limit</th><th>result</th>"
-         "<th>decided by</th><th>why</th><th>method</th></tr>\n";
+         "rests on.</p>\n<table>\n<tr><th>check</th><th>ratio</th><th>result</th>"
+         "<th>decided by</th><th>why</th><th>limit</th><th>method</th></tr>\n";
+    // Columns after "why" only: scripts/consistency_lib/parse.py reads the first three by position.
     for (const json& c : checks)
       h << "<tr><td>" << text(jsonMember(c, "what")) << "</td><td class=\"n\">" << jsonNumberText(jsonMember(c, "value"), "%.3f") << "</td>"
-        << "<td class=\"n\">" << limitText(c) << "</td>" << checkCell(jsonMember(c, "verdict")) << "<td>"
-        << text(jsonMember(c, "window")) << "</td><td class=\"small\">" << text(jsonMember(c, "reason"))
-        << "</td><td class=\"small\">" << (jsonMember(c, "method").is_string() ? text(jsonMember(c, "method")) : std::string()) << "</td></tr>\n";
+        << checkCell(jsonMember(c, "verdict")) << "<td>" << text(jsonMember(c, "window")) << "</td><td class=\"small\">"
+        << text(jsonMember(c, "reason")) << "</td><td class=\"n\">" << limitText(c) << "</td><td class=\"small\">"
+        << (jsonMember(c, "method").is_string() ? text(jsonMember(c, "method")) : std::string()) << "</td></tr>\n";
     h << "</table>\n";
   }
   const json& load = jsonMember(s, "load");
