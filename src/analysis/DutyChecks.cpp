@@ -113,6 +113,84 @@ SizingCheck maxTorqueCheck(const DriveSizing& s, bool turning) {
   return c;
 }
 
+SizingCheck lockedRotorCheck(const DriveSizing& s) {
+  const MotorDuty& m = s.motor_duty;
+  SizingCheck c{"motor_locked_rotor_time",
+                "rotor heat of one start as time at standstill, Q_start/(M_s·ω0), over the motor's permissible "
+                "locked-rotor time t_E (IEC 60034-1), ≤ 1",
+                m.locked_time_ratio, verdictOf(m.locked_time_ratio), "start from rest", ""};
+  if (!std::isfinite(m.locked_rotor_time)) {
+    notApplicable(c, "the permissible locked-rotor time is not given: set sizing.motor.locked_rotor_time (t_E from "
+                     "the motor's catalogue, warm)");
+    return c;
+  }
+  if (!m.start_known) {
+    notApplicable(c, m.start_unknown);
+    return c;
+  }
+  if (!std::isfinite(m.equivalent_locked_time)) {
+    notApplicable(c, "the motor law gives no torque at standstill under the rated supply, so P_s = M_s·ω0 is not known");
+    return c;
+  }
+  c.reason = "Q_start = " + g4(m.start_heat) + " J in t_D = " + g4(m.start_time) + " s, like " +
+             g4(m.equivalent_locked_time) + " s at standstill (P_s = " + g4(m.locked_rotor_losses) + " W), t_E = " +
+             g4(m.locked_rotor_time) + " s";
+  return c;
+}
+
+SizingCheck startsCheck(const DriveSizing& s) {
+  const MotorDuty& m = s.motor_duty;
+  SizingCheck c{"motor_starts_per_hour",
+                "starts per hour N of duty S4 over the permissible Z = Z_0·(½·J_M·ω0²/Q_start)·(1 − P_steady/P_n,rotor) "
+                "(IEC 60034-1, catalogue Z_0), ≤ 1",
+                m.starts_ratio, verdictOf(m.starts_ratio), kWindowDuty, ""};
+  if (!(m.starts_per_hour > 0)) {
+    notApplicable(c, "duty S1: no starts per hour given; set sizing.starts_per_hour for duty S4");
+    return c;
+  }
+  if (!std::isfinite(m.no_load_starts)) {
+    notApplicable(c, "the permissible starts without load are not given: set sizing.motor.no_load_starts (Z_0 from "
+                     "the motor's catalogue)");
+    return c;
+  }
+  if (!m.start_known) {
+    notApplicable(c, m.start_unknown);
+    return c;
+  }
+  if (!s.steady_reached) {
+    notApplicable(c, s.steady_not_reached + " (the steady running's rotor losses share the budget)");
+    return c;
+  }
+  if (!std::isfinite(m.steady_loss_share)) {
+    notApplicable(c, "the nominal rotor losses s_n·M_n·ω0 are not known: give motor.omega_nominal and the nominal torque "
+                     "(sizing.motor_nominal_torque)");
+    return c;
+  }
+  c.reason = g4(m.starts_per_hour) + " starts per hour against Z = " + g4(m.permissible_starts) + " (Z_0 = " +
+             g4(m.no_load_starts) + ", ½·J_M·ω0² = " + g4(m.no_load_start_heat) + " J, Q_start = " + g4(m.start_heat) +
+             " J, steady rotor losses " + g4(m.steady_loss_share) + " of the nominal)";
+  return c;
+}
+
+SizingCheck startingShareCheck(const DriveSizing& s) {
+  const MotorDuty& m = s.motor_duty;
+  SizingCheck c{"motor_starting_time",
+                "starting time share of the hour N·t_D/3600 s of duty S4 (IEC 60034-1), < 1",
+                m.starting_time_share, "", kWindowDuty, ""};
+  c.verdict = std::isfinite(c.value) ? (c.value < 1.0 ? "pass" : "FAIL") : "";
+  if (!(m.starts_per_hour > 0)) {
+    notApplicable(c, "duty S1: no starts per hour given; set sizing.starts_per_hour for duty S4");
+    return c;
+  }
+  if (!m.start_known) {
+    notApplicable(c, m.start_unknown);
+    return c;
+  }
+  c.reason = g4(m.starts_per_hour) + " starts of t_D = " + g4(m.start_time) +
+             " s each; the rest of the hour the motor runs (energized between starts, ED = 100 %)";
+  return c;
+}
+
 }  // namespace
 
 void appendDutyChecks(const DriveSizing& s, bool turning, std::vector<SizingCheck>& out) {
@@ -120,6 +198,11 @@ void appendDutyChecks(const DriveSizing& s, bool turning, std::vector<SizingChec
     out.push_back(applicationFactorCheck(s, turning));
     out.push_back(ratedTorqueCheck(s, turning));
     out.push_back(maxTorqueCheck(s, turning));
+  }
+  if (s.motor_duty.requested) {
+    out.push_back(lockedRotorCheck(s));
+    out.push_back(startsCheck(s));
+    out.push_back(startingShareCheck(s));
   }
 }
 
