@@ -163,6 +163,7 @@ void appendSignOffChecks(const DriveSizing& s, bool turning, std::vector<SizingC
     out.push_back(hoursCheck(s.fatigue, g));
   }
   if (s.coupling_selection.requested) couplingChecks(s, turning, out);
+  appendDutyChecks(s, turning, out);
 }
 
 }  // namespace rollerdyn

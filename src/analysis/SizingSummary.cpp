@@ -156,6 +156,8 @@ json sizingJson(const DriveSizing& s) {
   j["joints"] = joints;
   j["fatigue"] = fatigueJson(s.fatigue);
   j["coupling_selection"] = couplingSelectionJson(s.coupling_selection);
+  j["gear"] = gearDutyJson(s.gear);
+  j["motor_duty"] = motorDutyJson(s.motor_duty);
   if (s.crankshaft.given) j["crankshaft"] = crankshaftJson(s.crankshaft);
   j["life_exponent"] = kBearingLifeExponent;
   return j;
@@ -412,7 +414,7 @@ std::string sizingText(const json& summary) {
                                             : std::string("not given (sizing.coupling_rated_torque)"))
       << "\n";
   }
-  o << signOffText(s);
+  o << signOffText(s) << dutyText(s);
   const json& checks = jsonMember(s, "checks");
   if (checks.is_array() && !checks.empty()) {
     o << "  checks (the window named decided each):\n";

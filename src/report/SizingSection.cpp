@@ -152,7 +152,7 @@ std::string sizingSectionHtml(const json& s) {
     row(h, "rated torque (sizing.coupling_rated_torque)", jsonNumberText(jsonMember(c, "rated_torque")), "N·m");
     h << "</table>\n";
   }
-  h << signOffSectionHtml(z);
+  h << signOffSectionHtml(z) << dutySectionHtml(z);
   h << "<h3>Joints and bearings</h3>\n<p class=\"small\">P: equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), "
        "n the joint's rotation or swing speed (ISO 281 style); C: the dynamic load rating from "
        "sizing.bearing_rating.*; L10: the basic rating life in hours of steady running, how it follows "

@@ -198,5 +198,7 @@ void readMotor(const Reader& in, KlossMotor& motor, InductionMotor& induction);
 // The crankshaft's layout (crankshaft.*): throws and main bearings along the shaft, validated
 // against the number of carts (CrankshaftSceneParser.cpp).
 CrankshaftLayout readCrankshaft(const Reader& in, int cart_count);
+// sizing.reducer.* and sizing.motor.* (SignOffSceneParser.cpp).
+void readGearAndDutyRatings(const Reader& in, SizingInputs& z);
 
 }  // namespace rollerdyn::scene_detail
