@@ -193,16 +193,40 @@ SizingCheck startingShareCheck(const DriveSizing& s) {
 
 }  // namespace
 
+namespace {
+
+// The limit, method and inputs of a check, which the sign-off sheet shows beside its verdict.
+SizingCheck rated(SizingCheck c, const char* method, const std::string& basis, const char* passes_when = "<=") {
+  c.limit = 1.0;
+  c.passes_when = passes_when;
+  c.method = method;
+  c.basis = basis;
+  return c;
+}
+
+const char* kSpectrumBasis = "; the coupling torque at the crank axis as the reducer's output torque, in 40 torque "
+                             "classes counted at their upper limits, one load cycle per crank revolution, each flank "
+                             "its own spectrum";
+
+}  // namespace
+
 void appendDutyChecks(const DriveSizing& s, bool turning, std::vector<SizingCheck>& out) {
   if (s.gear.requested) {
-    out.push_back(applicationFactorCheck(s, turning));
-    out.push_back(ratedTorqueCheck(s, turning));
-    out.push_back(maxTorqueCheck(s, turning));
+    out.push_back(rated(applicationFactorCheck(s, turning),
+                        "ISO 6336-6 load spectrum, Miner's rule with the gear's S-N exponent p; K_A = T_eq/T_n",
+                        "sizing.reducer.application_factor, sizing.reducer.sn_exponent, M_n" + std::string(kSpectrumBasis)));
+    out.push_back(rated(ratedTorqueCheck(s, turning), "ISO 6336-6 equivalent torque against the rated output torque",
+                        "sizing.reducer.rated_torque, sizing.reducer.sn_exponent" + std::string(kSpectrumBasis)));
+    out.push_back(rated(maxTorqueCheck(s, turning), "peak torque against the maker's permissible peak torque",
+                        "sizing.reducer.max_torque; the start and the steady window of the run"));
   }
   if (s.motor_duty.requested) {
-    out.push_back(lockedRotorCheck(s));
-    out.push_back(startsCheck(s));
-    out.push_back(startingShareCheck(s));
+    out.push_back(rated(lockedRotorCheck(s), "IEC 60034-1 duty S4: rotor heat of one start as locked-rotor time",
+                        "sizing.motor.locked_rotor_time; the start's rotor energy loss from the run"));
+    out.push_back(rated(startsCheck(s), "IEC 60034-1 duty S4: permissible starts per hour from the catalogue's Z_0",
+                        "sizing.starts_per_hour, sizing.motor.no_load_starts; the start's rotor energy loss from the run"));
+    out.push_back(rated(startingShareCheck(s), "IEC 60034-1 duty S4: share of the hour spent starting",
+                        "sizing.starts_per_hour; no rest between starts (ED = 100 %)", "<"));
   }
 }
 
