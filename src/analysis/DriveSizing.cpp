@@ -108,6 +108,7 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   r.torque_shaft_mean = r.torque_shaft_rms = r.torque_shaft_peak = r.rms_over_nominal = nan;
   r.rotor_losses_mean = r.thermal_over_nominal = r.power_line_mean = r.power_line_peak = nan;
   r.slip_min = r.slip_max = nan;
+  r.steady_rotor_losses = r.nominal_rotor_losses = nan;
   if (!sc.motor.enabled || !ts.has("t") || !ts.has("motor_torque") || !ts.has("omega_motor"))
     return m;
   m.available = true;
@@ -175,6 +176,8 @@ MotorSizing sizeMotor(const Scene& sc, const Table& ts, std::size_t b, std::size
   r.continuous_running = false;
   const Moments sq = moments(t, losses, b, e);
   const double nominal_losses = s_n * m.nominal_torque * w0;  // s_n·M_n·ω0
+  r.steady_rotor_losses = sq.mean;
+  r.nominal_rotor_losses = nominal_losses > 0 ? nominal_losses : kNaN;
   // The start's rotor heat is the start-up answers' rotor energy loss (StartUp.h): one
   // computation for both. A start takes the place of that much time of steady running, so what it
   // adds to the heat balance is its heat less the steady losses over its duration.
@@ -392,34 +395,6 @@ const JointSizing* DriveSizing::worst(const std::string& joint) const {
   return best;
 }
 
-std::vector<double> kineticEnergy(const Scene& sc, const Table& ts) {
-  const std::size_t n = ts.rows.size();
-  std::vector<double> T(n, 0.0);
-  const double J1 = sc.motorSideInertia();
-  const double m_rod_half = sc.rods.model == RodModel::Massless ? 0.0 : 0.5 * sc.rods.mass;
-  const double r = sc.hasCamDrive() ? 0.0 : sc.crank.radius;
-  const double Jc = sc.crankSideInertia() + sc.carts.count * m_rod_half * r * r;
-  const int iw1 = ts.has("omega_motor") ? ts.index("omega_motor") : -1;
-  const int iw2 = ts.has("omega_crank") ? ts.index("omega_crank") : -1;
-  std::vector<int> iv;
-  std::vector<double> m_cart;  // per cart column: its mass with half a rod
-  for (int j = 1; j <= sc.carts.count; ++j)
-    if (ts.has("v_cart_" + std::to_string(j))) {
-      iv.push_back(ts.index("v_cart_" + std::to_string(j)));
-      m_cart.push_back(sc.cartMass(j - 1) + m_rod_half);
-    }
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto& row = ts.rows[i];
-    const double w2 = iw2 >= 0 ? row[iw2] : kNaN;
-    // Rigid coupling: the motor turns with the crank (omega_motor may be absent).
-    const double w1 = iw1 >= 0 ? row[iw1] : w2;
-    double t = 0.5 * J1 * w1 * w1 + 0.5 * Jc * w2 * w2;
-    for (std::size_t c = 0; c < iv.size(); ++c) t += 0.5 * m_cart[c] * row[iv[c]] * row[iv[c]];
-    T[i] = t;
-  }
-  return T;
-}
-
 double linePower(double M, double w0, double s_n, double eta_m) {
   const double P_ag = M * w0;
   if (!(eta_m > 0) || !(s_n > 0)) return P_ag;
@@ -482,6 +457,8 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
   s.joints = sizeJoints(sc, run, w, s.motion);
   s.fatigue = computeFatigue(sc, run, w, start_up);
   s.coupling_selection = computeCouplingSelection(sc, run, w, start_up);
+  s.gear = computeGearDuty(sc, run, w, start_up);
+  s.motor_duty = computeMotorDuty(sc, s, start_up);
   s.crankshaft = sizeCrankshaft(sc, run, w);
   s.checks = sizingChecks(s, turning);
   for (SizingCheck& c : s.checks) {

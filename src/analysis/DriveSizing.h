@@ -39,9 +39,12 @@
 
 #include "analysis/CouplingSelection.h"
 #include "analysis/Fatigue.h"
+#include "analysis/GearDuty.h"
+#include "analysis/MotorDuty.h"
 #include "analysis/CrankshaftBearings.h"
 #include "analysis/JointSizing.h"
 #include "analysis/RunResult.h"
+#include "analysis/SizingCheck.h"
 #include "analysis/StartUp.h"
 #include "analysis/SteadyState.h"
 #include "scene/Scene.h"
@@ -66,6 +69,8 @@ struct MotorWholeRun {
   double start_heat_above_steady = 0;  // what a start adds to steady running: start_heat minus the
                                        // steady window's mean losses × start_duration [J]
   double duty_starts_per_hour = 0; // starts per hour of the duty (sizing.starts_per_hour; 0: continuous) [1/h]
+  double steady_rotor_losses = 0;  // mean of s·M·ω0 over the steady window [W]; NaN: not known
+  double nominal_rotor_losses = 0; // s_n·M_n·ω0 [W]; NaN: s_n or M_n not known
   double starts_per_hour = 0;      // starts per hour the rotor's heat balance allows at this load:
                                    // 3600·(s_n·M_n·ω0 − steady losses)/start_heat_above_steady [1/h]
   double power_line_mean = 0, power_line_peak = 0;  // drawn from the line [W]
@@ -125,16 +130,6 @@ struct CouplingSizing {
   double peak_over_rating_whole_run = 0;            // [-]
 };
 
-// One check a drive is signed off with.
-struct SizingCheck {
-  std::string name;     // start, motor_heating, motor_breakdown, coupling
-  std::string what;     // in words, with the limit
-  double value = 0;     // the deciding ratio [-] (NaN when not computable)
-  std::string verdict;  // "pass", "FAIL", "not applicable" or "" (nothing to compare with)
-  std::string window;   // "whole run" or "steady window": where the deciding value comes from
-  std::string reason;   // why FAIL or not applicable; what decided
-};
-
 struct DriveSizing {
   double t_begin = 0, t_end = 0;  // steady window [s]
   double run_t_begin = 0, run_t_end = 0;  // whole run: the finite rows [s]
@@ -160,6 +155,8 @@ struct DriveSizing {
   std::vector<JointSizing> joints;  // per cart: guide rollers, rod end, crank pin; then main bearing
   FatigueSizing fatigue;          // damage per start and per hour (Fatigue.h)
   CouplingSelection coupling_selection;  // the manufacturers' coupling checks (CouplingSelection.h)
+  GearDuty gear;                  // the reducer's load spectrum and K_A after ISO 6336-6 (GearDuty.h)
+  MotorDuty motor_duty;           // the motor's starts after IEC 60034-1, duty S1 / S4 (MotorDuty.h)
   CrankshaftSizing crankshaft;      // bending moments at the throws, torques of the shaft segments
                                     // (crankshaft.throw_positions; CrankshaftBearings.h)
   std::vector<SizingCheck> checks;  // start, motor_heating, motor_breakdown, coupling

@@ -36,10 +36,30 @@ void notApplicable(SizingCheck& c, const std::string& why) {
 
 std::string lifeWords(double v, const char* unit) { return std::isinf(v) ? std::string("no damage") : g4(v) + unit; }
 
+constexpr const char* kDin740 = "DIN 740-2 coupling selection (as KTR, Flender and Mayr publish it)";
+
+void fatigueMethod(SizingCheck& c, const FatigueSizing& f, const SignalFatigue& g) {
+  c.limit = 1.0;
+  c.passes_when = "<=";
+  c.method = "rainflow counting after ASTM E1049-85, Palmgren-Miner linear damage sum";
+  c.basis = "S-N curve " + g.key + "; below the knee: " + f.below_knee + "; mean correction: " + f.mean_correction;
+}
+
+// The ratings of the coupling selection: limit 1 on the ratio, DIN 740-2, the factors named.
+SizingCheck din740(SizingCheck c, const std::string& rating_key) {
+  c.limit = 1.0;
+  c.passes_when = "<=";
+  c.method = kDin740;
+  c.basis = "rating " + rating_key + " at the crank axis; factors S_t, S_z, S_A from sizing.coupling.*; torques of "
+            "the run in place of the method's estimates";
+  return c;
+}
+
 SizingCheck startCheck(const FatigueSizing& f, const SignalFatigue& g) {
   SizingCheck c{"fatigue_starts_" + g.signal,
                 "fatigue of the " + g.what + " per start: required starts × Miner's damage of one start, ≤ 1",
                 kNaN, "", "start from rest", ""};
+  fatigueMethod(c, f, g);
   if (!g.start.applies) {
     notApplicable(c, g.start.not_applicable);
     return c;
@@ -60,6 +80,7 @@ SizingCheck hoursCheck(const FatigueSizing& f, const SignalFatigue& g) {
   SizingCheck c{"fatigue_hours_" + g.signal,
                 "fatigue of the " + g.what + " in steady running: required hours × Miner's damage per hour, ≤ 1",
                 kNaN, "", kWindowSteady, ""};
+  fatigueMethod(c, f, g);
   if (!g.steady.applies) {
     notApplicable(c, g.steady.not_applicable);
     return c;
@@ -90,14 +111,16 @@ void couplingChecks(const DriveSizing& s, bool turning, std::vector<SizingCheck>
   const CouplingSelection& c = s.coupling_selection;
   const std::string St = "S_t = " + g4(c.S_t);
   if (std::isfinite(c.rated_torque))
-    out.push_back(couplingSteadyCheck(
+    out.push_back(din740(couplingSteadyCheck(
         s, turning, "coupling_rated_torque", "steady peak torque × S_t / T_KN (DIN 740-2), ≤ 1", c.rated_ratio,
-        "T_N = " + g4(c.steady_peak) + " N·m (steady window peak), " + St + ", T_KN = " + g4(c.rated_torque) + " N·m"));
+        "T_N = " + g4(c.steady_peak) + " N·m (steady window peak), " + St + ", T_KN = " + g4(c.rated_torque) + " N·m"),
+                         "sizing.coupling.rated_torque (T_KN)"));
   if (std::isfinite(c.max_torque)) {
     SizingCheck k{"coupling_max_torque", "largest peak torque × S_A·S_z·S_t / T_Kmax (DIN 740-2), ≤ 1", c.max_ratio,
                   verdictOf(c.max_ratio), kWindowWhole,
                   "T_S = max(start " + g4(c.start_peak) + ", steady " + g4(c.steady_peak) + ") N·m, S_A = " +
                       g4(c.S_A) + ", S_z = " + g4(c.S_z) + ", " + St + ", T_Kmax = " + g4(c.max_torque) + " N·m"};
+    k = din740(k, "sizing.coupling.max_torque (T_Kmax)");
     // A peak above the rating happened whatever the run lacks; a pass needs the start and the running.
     if (k.verdict != "FAIL") {
       if (!turning) notApplicable(k, "the drive does not turn (" + s.motion + ")");
@@ -115,6 +138,7 @@ void couplingChecks(const DriveSizing& s, bool turning, std::vector<SizingCheck>
         "T_W = " + g4(c.steady_amplitude) + " N·m, crank order " + std::to_string(c.excitation_order) + " at f = " +
             g4(c.excitation_frequency) + " Hz, S_f = " + g4(c.S_f) + ", " + St + ", T_KW = " + g4(c.vibratory_torque) +
             " N·m");
+    k = din740(k, "sizing.coupling.vibratory_torque (T_KW)");
     if (k.verdict != kNotApplicable && c.excitation_order == 0)
       notApplicable(k, "the excitation frequency is not known (the steady window holds no whole crank revolution): "
                        "run longer (simulation.t_end)");
@@ -125,6 +149,7 @@ void couplingChecks(const DriveSizing& s, bool turning, std::vector<SizingCheck>
                                         "damping power × S_t / P_KW (DIN 740-2), ≤ 1", c.damping_ratio,
                                         "P_W = " + g4(c.damping_power_run) + " W (" + c.damping_basis + "), " + St +
                                             ", P_KW = " + g4(c.damping_power) + " W");
+    k = din740(k, "sizing.coupling.damping_power (P_KW)");
     if (k.verdict != kNotApplicable && !std::isfinite(c.damping_power_run)) notApplicable(k, c.damping_basis);
     out.push_back(k);
   }
@@ -138,6 +163,7 @@ void appendSignOffChecks(const DriveSizing& s, bool turning, std::vector<SizingC
     out.push_back(hoursCheck(s.fatigue, g));
   }
   if (s.coupling_selection.requested) couplingChecks(s, turning, out);
+  appendDutyChecks(s, turning, out);
 }
 
 }  // namespace rollerdyn

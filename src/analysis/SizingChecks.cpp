@@ -58,6 +58,13 @@ SizingCheck startCheck(const DriveSizing& s) {
                 "the motor starts the machine from rest (the run from rest runs up; without one: load at the start "
                 "angle / starting torque and mean load / largest torque under the starting method's supply, < 1)",
                 s.start_load_ratio, "", "start from rest", ""};
+  c.limit = 1.0;
+  c.passes_when = "<";
+  c.method = "run-up simulated from rest; without one, the load torque at standstill against the motor's torque "
+             "under the starting method's supply (static start criterion)";
+  c.basis = "the motor's torque-speed law (motor.*) and starting method (motor.start.*), the loads at the start angle "
+            "(loads.*); a run from rest (initial.crank_speed: 0) decides with the inertia, the static criterion "
+            "without it";
   if (s.start_simulated) {
     if (s.motion == "starting") {
       notApplicable(c, kTooShort);
@@ -89,6 +96,13 @@ SizingCheck startCheck(const DriveSizing& s) {
 SizingCheck heatingCheck(const DriveSizing& s, bool turning) {
   const MotorSizing& m = s.motor;
   SizingCheck h{"motor_heating", "thermal equivalent torque / nominal torque M_n, ≤ 1", kNaN, "", "", ""};
+  h.limit = 1.0;
+  h.passes_when = "<=";
+  h.method = "IEC 60034-1 duty S1 (continuous) or S4 (starts per hour): equivalent thermal torque by the RMS rule, "
+             "rotor losses s·M·ω0 against the nominal s_n·M_n·ω0";
+  h.basis = "M_n from " + (m.nominal_source.empty() ? std::string("the motor data") : m.nominal_source) +
+            "; stator and iron losses taken to scale like the rotor's; duty from sizing.starts_per_hour (none: "
+            "continuous running); a start's heat from the simulated start-up";
   const double steady = m.rms_over_nominal, whole = m.whole_run.thermal_over_nominal;
   const bool whole_decides = !(whole <= steady);  // NaN steady: the whole run decides
   h.value = whole_decides ? whole : steady;
@@ -118,6 +132,10 @@ SizingCheck heatingCheck(const DriveSizing& s, bool turning) {
                "over the run's last part " + fmt3(steady) + ", the thermal equivalent √(rotor losses / nominal rotor losses) " +
                fmt3(whole);
     if (!(h.value > 1.0)) h.value = kNaN;
+  } else if (!std::isfinite(m.nominal_torque)) {
+    notApplicable(h, "the nominal torque M_n is not known: give sizing.motor_nominal_torque, or "
+                     "sizing.motor_nominal_power with motor.omega_nominal, or motor.omega_nominal with "
+                     "motor.overload_ratio (the Kloss data)");
   } else if (!s.steady_reached) {
     notApplicable(h, s.steady_not_reached + " (the heating check needs the steady running's losses)");
   } else if (!duty.empty()) {
@@ -134,6 +152,11 @@ SizingCheck breakdownCheck(const DriveSizing& s, bool turning) {
                 "peak |M| / breakdown torque M_kr over the steady window, < 0.9025 (M_kr at 95 % supply voltage, "
                 "IEC 60034-1 zone A; a start passes M_kr by design)",
                 m.peak_over_breakdown, verdictOf(m.peak_over_breakdown / kBreakdownMargin, true), kWindowSteady, ""};
+  k.limit = kBreakdownMargin;
+  k.passes_when = "<";
+  k.method = "IEC 60034-1 zone A: supply voltage down to 95 %, breakdown torque M_kr falling with the voltage squared";
+  k.basis = "M_kr of the motor's law (motor.*); the motoring M_kr also against braking peaks (the catalogue gives "
+            "no generating one)";
   k.reason = "steady window: motoring peak " + fmt3(m.torque_motoring_peak) + " N·m, braking (generating) peak " +
              fmt3(m.torque_generating_peak) + " N·m, the larger against M_kr " + fmt3(m.breakdown_torque) + " N·m";
   if (m.torque_generating_peak > m.torque_motoring_peak)
@@ -161,6 +184,11 @@ SizingCheck breakdownCheck(const DriveSizing& s, bool turning) {
 SizingCheck couplingCheck(const DriveSizing& s, bool turning) {
   const CouplingSizing& c = s.coupling;
   SizingCheck k{"coupling", "peak |M| / rated torque of the coupling, ≤ 1", kNaN, "", "", ""};
+  k.limit = 1.0;
+  k.passes_when = "<=";
+  k.method = "largest simulated coupling torque against one rated torque";
+  k.basis = "rating sizing.coupling_rated_torque at the crank axis; torque from the run's coupling model "
+            "(coupling.*), start-up peaks included";
   const bool whole_decides = !(c.peak_whole_run <= c.peak);
   k.value = whole_decides ? c.peak_over_rating_whole_run : c.peak_over_rating;
   k.window = whole_decides ? kWindowWhole : kWindowSteady;

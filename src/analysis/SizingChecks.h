@@ -36,4 +36,9 @@ std::vector<SizingCheck> sizingChecks(const DriveSizing& s, bool turning);
 // where their inputs are given (SignOffChecks.cpp).
 void appendSignOffChecks(const DriveSizing& s, bool turning, std::vector<SizingCheck>& out);
 
+// The gear checks after ISO 6336-6 (gear_application_factor, gear_rated_torque, gear_max_torque;
+// GearDuty.h) and the motor's starts after IEC 60034-1 (MotorDuty.h), appended to `out` where their
+// section is asked for (DutyChecks.cpp).
+void appendDutyChecks(const DriveSizing& s, bool turning, std::vector<SizingCheck>& out);
+
 }  // namespace rollerdyn

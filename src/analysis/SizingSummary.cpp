@@ -1,4 +1,6 @@
 #include "analysis/SizingSummary.h"
+
+#include "analysis/SizingCheckJson.h"
 #include "analysis/CrankshaftSummary.h"
 #include "io/FieldFormat.h"
 
@@ -68,12 +70,7 @@ json sizingJson(const DriveSizing& s) {
   json checks = json::array();
   const SizingCheck* by_name[3] = {nullptr, nullptr, nullptr};
   for (const SizingCheck& c : s.checks) {
-    checks.push_back({{"check", c.name},
-                      {"what", c.what},
-                      {"value", num(c.value)},
-                      {"verdict", c.verdict.empty() ? json(nullptr) : json(c.verdict)},
-                      {"window", c.window},
-                      {"reason", c.reason}});
+    checks.push_back(sizingCheckJson(c));
     if (c.name == "motor_heating") by_name[0] = &c;
     if (c.name == "motor_breakdown") by_name[1] = &c;
     if (c.name == "coupling") by_name[2] = &c;
@@ -159,6 +156,8 @@ json sizingJson(const DriveSizing& s) {
   j["joints"] = joints;
   j["fatigue"] = fatigueJson(s.fatigue);
   j["coupling_selection"] = couplingSelectionJson(s.coupling_selection);
+  j["gear"] = gearDutyJson(s.gear);
+  j["motor_duty"] = motorDutyJson(s.motor_duty);
   if (s.crankshaft.given) j["crankshaft"] = crankshaftJson(s.crankshaft);
   j["life_exponent"] = kBearingLifeExponent;
   return j;
@@ -415,7 +414,7 @@ std::string sizingText(const json& summary) {
                                             : std::string("not given (sizing.coupling_rated_torque)"))
       << "\n";
   }
-  o << signOffText(s);
+  o << signOffText(s) << dutyText(s);
   const json& checks = jsonMember(s, "checks");
   if (checks.is_array() && !checks.empty()) {
     o << "  checks (the window named decided each):\n";

@@ -32,6 +32,18 @@ nlohmann::json couplingSelectionJson(const CouplingSelection& c);
 // Console lines of both, from summary.json's `sizing`; "" when neither was asked for.
 std::string signOffText(const nlohmann::json& sizing);
 
+// sizing.gear: {method, torque, exponent, class_width, nominal_torque, nominal_source,
+// assumed_application_factor, rated_torque, max_torque, starts_per_hour, start and steady: {applies,
+// reason | t_begin, t_end, revolutions, drive and coast: {cycles, equivalent_torque, classes [{torque,
+// cycles}]}}, duty {applies, reason | basis, revolutions_per_hour, equivalent_torque_drive,
+// equivalent_torque_coast, equivalent_torque, deciding_flank}, application_factor, peak, t_peak,
+// application_ratio, rated_ratio, max_ratio} | null (DutySummary.cpp).
+nlohmann::json gearDutyJson(const GearDuty& g);
+// sizing.motor_duty: the motor's starts after IEC 60034-1 | null (DutySummary.cpp).
+nlohmann::json motorDutyJson(const MotorDuty& m);
+// Console lines of both, from summary.json's `sizing`; "" when neither was asked for.
+std::string dutyText(const nlohmann::json& sizing);
+
 // The runs that check the flywheel proposed for δ* (sizing.flywheel: an estimate, never run by
 // simulate), from a summary.json object that holds scene_path, overrides, model and omega_crank:
 // {flywheel_inertia (the proposal at the scene's flywheel location as printed [kg·m²]), location,

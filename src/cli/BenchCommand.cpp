@@ -1,14 +1,89 @@
 // `rollerdyn bench SCENE [--set k=v]... [--study integrators|carts|effects|reactions|all|motors] [--quick]
 //  [--budget S] [--repeat N] [--out DIR]`: accuracy vs CPU time of every integrator of both
 // models, cost vs number of carts, cost of each effect (src/bench/BenchStudies.h).
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
+#include <thread>
+
+#include <unistd.h>
 
 #include "bench/BenchStudies.h"
+#include "bench/SetupStudy.h"
 #include "cli/Commands.h"
+#include "cli/ReportCommand.h"
+#include "cli/RunOutputs.h"
+#include "multibody/MultibodySimulation.h"
 #include "report/OutputDir.h"
+#include "scene/SceneParser.h"
 
 namespace rollerdyn::cli {
+namespace {
+
+// The processors and the load while the study ran (its times depend on both).
+std::string machineLine() {
+  std::string model, load;
+  std::ifstream cpu("/proc/cpuinfo");
+  for (std::string line; model.empty() && std::getline(cpu, line);)
+    if (line.rfind("model name", 0) == 0) model = line.substr(line.find(':') + 2);
+  std::ifstream("/proc/loadavg") >> load;
+  return std::to_string(std::thread::hardware_concurrency()) + " processors (" + (model.empty() ? "?" : model) +
+         "), load average over the last minute " + (load.empty() ? "?" : load) + " when timed";
+}
+
+// `rollerdyn bench --study setup`: each repetition times the process start, a short run and a
+// report of the scene (bench/SetupStudy.h); their files go to a temporary folder, removed after.
+std::vector<std::string> runSetupStudy(const SceneArgs& args, const std::string& out_dir, int repeats) {
+  namespace fs = std::filesystem;
+  std::vector<bench::SetupSample> samples;
+  const fs::path tmp = fs::temp_directory_path() / ("rollerdyn-setup-" + std::to_string(::getpid()));
+  const std::string run_dir = (tmp / "run").string(), report_dir = (tmp / "report").string();
+  fs::create_directories(tmp);
+  const std::string self = fs::read_symlink("/proc/self/exe").string();  // this executable
+  for (int k = 0; k < repeats && !g_interrupted; ++k) {
+    {  // the executable started anew
+      PhaseClock clock;
+      if (std::system(("'" + self + "' --version >/dev/null 2>&1").c_str()) != 0)
+        throw std::runtime_error("bench --study setup: could not start rollerdyn --version");
+      clock.mark("rollerdyn --version (exec, shared libraries, static initialisation)");
+      samples.push_back({"process start", clock.phases()});
+    }
+    {  // a short run as `simulate` makes it, without the console's progress line
+      PhaseClock clock;
+      std::vector<std::string> sets = args.overrides;
+      std::ostringstream t_end;
+      t_end << "simulation.t_end=" << bench::kSetupShortRunEnd;
+      sets.push_back(t_end.str());
+      const Scene scene = parseSceneFile(args.scene_path, sets);
+      prepareOutputDir(run_dir, StaleOutputs::RunFiguresAndReport);
+      clock.mark("scene file");
+      const RunResult run = runMultibodyModel(scene);
+      clock.mark("multibody model: set-up and integration");
+      const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, run_dir, sets);
+      clock.mark("summary and files");
+      std::vector<PhaseTime> phases = clock.phases();
+      phases.insert(phases.begin() + 2, PhaseTime{"of which the integration (its own CPU time)", NAN,
+                                                  run.stats.cpu_seconds, 0.0});
+      samples.push_back({"short run", phases});
+    }
+    {
+      PhaseClock clock;
+      runReport(args, report_dir, &clock, /*quiet=*/true);
+      samples.push_back({"report", clock.phases()});
+    }
+    std::cerr << "[setup " << k + 1 << "/" << repeats << "] timed\n";
+  }
+  std::error_code ec;
+  fs::remove_all(tmp, ec);
+  const Scene scene = parseSceneFile(args.scene_path, args.overrides);
+  return bench::writeSetupStudy(out_dir, scene.name, bench::setupRows(samples), machineLine());
+}
+
+}  // namespace
 
 int runBench(const SceneArgs& args, const BenchArgs& bench) {
   const bench::SceneSource source{args.scene_path, args.overrides};
@@ -25,9 +100,9 @@ int runBench(const SceneArgs& args, const BenchArgs& bench) {
 
   const std::string& study = bench.study;
   if (study != "integrators" && study != "carts" && study != "effects" && study != "reactions" && study != "motors" &&
-      study != "all")
-    throw std::invalid_argument("--study: expected integrators, carts, effects, reactions, motors or all, got '" + study +
-                                "'");
+      study != "all" && study != "setup")
+    throw std::invalid_argument("--study: expected integrators, carts, effects, reactions, motors, setup or all, got '" +
+                                study + "'");
   std::vector<std::string> written;
   auto add = [&written](const std::vector<std::string>& w) { written.insert(written.end(), w.begin(), w.end()); };
   if (study == "integrators" || study == "all")
@@ -38,6 +113,8 @@ int runBench(const SceneArgs& args, const BenchArgs& bench) {
     add(bench::writeEffectsStudy(out_dir, scene, bench::runEffectsStudy(source, opt), opt));
   if (study == "motors" && !g_interrupted)  // not part of all: its own table
     add(bench::writeMotorsStudy(out_dir, scene, bench::runMotorsStudy(source, opt), opt));
+  if (study == "setup")  // not part of all: timings of the whole program, not of the integrators
+    add(runSetupStudy(args, out_dir, std::max(3, bench.repeats)));
   if ((study == "reactions" || study == "all") && !g_interrupted)
     add(bench::writeReactionsStudy(out_dir, scene, bench::runReactionsStudy(source, opt), opt));
 

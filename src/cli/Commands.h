@@ -59,6 +59,7 @@ Subcommand addOptimizeCommand(CLI::App& app);    // OptimizeCommand.cpp: `roller
 Subcommand addMotorCommand(CLI::App& app);       // MotorCommand.cpp: `rollerdyn motor`
 Subcommand addModesCommand(CLI::App& app);       // ModesCommand.cpp: `rollerdyn modes`
 Subcommand addSchemaCommand(CLI::App& app);      // SchemaCommand.cpp: `rollerdyn schema`
+Subcommand addSignoffCommand(CLI::App& app);     // SignoffCommand.cpp: `rollerdyn signoff`
 
 // out/<scene name>/ unless the user named a folder.
 std::string defaultOutDir(const std::string& scene_name);

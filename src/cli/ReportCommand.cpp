@@ -2,10 +2,12 @@
 // model, write the outputs of `simulate` plus figures/ and ONE self-contained page
 // DIR/report.html (src/report/HtmlReport.h).
 #include <filesystem>
+#include <future>
 #include <iostream>
 
 #include "analysis/Summary.h"
 #include "cli/Commands.h"
+#include "cli/ReportCommand.h"
 #include "cli/RunOutputs.h"
 #include "io/AtomicFile.h"
 #include "modes/ModesFigures.h"
@@ -18,7 +20,9 @@
 
 namespace rollerdyn::cli {
 
-int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
+int runReport(const SceneArgs& args, const std::string& out_dir_arg) { return runReport(args, out_dir_arg, nullptr, false); }
+
+int runReport(const SceneArgs& args, const std::string& out_dir_arg, PhaseClock* clock, bool quiet) {
   namespace fs = std::filesystem;
   const Scene scene = parseSceneFile(args.scene_path, args.overrides);
   const std::string out_dir = out_dir_arg.empty() ? defaultOutDir(scene.name) : out_dir_arg;
@@ -27,12 +31,26 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   // nothing if it did not.
   const std::vector<SceneParameterRow> parameters = sceneParameterRows(args.scene_path, args.overrides);
 
+  markPhase(clock, "scene file and parameter table");
   const RunResult run = runMultibodyWithProgress(scene);
-  const RunModal modal = analyseRunModes(scene, run, /*charts=*/true);  // coarse charts (12 x 8)
+  markPhase(clock, "run (multibody model)");
+  const RunModal modal = analyseRunModes(scene, run, /*charts=*/true, clock);  // coarse charts (12 x 8)
   const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir, args.overrides, &modal);
+  markPhase(clock, "summary and files");
 
+  const std::string fig_dir = (fs::path(out_dir) / "figures").string();
+  // The torsional modes' and the order spectrum's figures are drawn while the run's are (both wait
+  // mostly for gnuplot processes).
+  std::future<FigureSet> modes_figures = std::async(std::launch::async, [&modal, &fig_dir] {
+    FigureSet m = modes::drawModesFigures(modal.report, fig_dir);
+    const FigureSet sp = modes::drawSpectrumFigures(modal.spectrum, fig_dir);
+    m.figures.insert(m.figures.end(), sp.figures.begin(), sp.figures.end());
+    return m;
+  });
   const OutputFolder folder = outputFolderOf(out_dir, run, summary);
-  const FigureSet figures = drawRunFigures(folder, &scene, (fs::path(out_dir) / "figures").string());
+  const FigureSet figures = drawRunFigures(folder, &scene, fig_dir);
+  const FigureSet mf = modes_figures.get();
+  markPhase(clock, "figures (gnuplot)");
 
   ReportContent content;
   content.scene_name = scene.name;
@@ -49,23 +67,20 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg) {
   content.command = "rollerdyn report " + args.scene_path;
   for (const std::string& o : args.overrides) content.command += " --set " + o;
   content.command += " --out " + out_dir;
-  FigureSet mf;
-  {  // torsional modes and the run's order spectrum: figures and a section of their own
-    mf = modes::drawModesFigures(modal.report, (fs::path(out_dir) / "figures").string());
-    const FigureSet sp = modes::drawSpectrumFigures(modal.spectrum, (fs::path(out_dir) / "figures").string());
-    mf.figures.insert(mf.figures.end(), sp.figures.begin(), sp.figures.end());
-    content.extra_sections_html.push_back(modes::modesHtmlSection(modal.report, mf, &modal.spectrum, summary));
-    for (const std::string& n : mf.notes) content.notes.push_back(n);
-  }
+  // torsional modes and the run's order spectrum: a section of their own
+  content.extra_sections_html.push_back(modes::modesHtmlSection(modal.report, mf, &modal.spectrum, summary));
+  for (const std::string& n : mf.notes) content.notes.push_back(n);
   content.animation = mechanismFrames(scene, run.timeseries, run.reactions);
   content.time_plots = mainTimePlots(run.timeseries, run.reactions);
   const std::string page = (fs::path(out_dir) / "report.html").string();
   writeFileAtomic(page, renderReportHtml(content));
+  markPhase(clock, "animation, time plots and page");
 
   // Both sets, so the count printed is the folder's (the trial read "16 figures" beside 23).
   FigureSet all = figures;
   all.figures.insert(all.figures.end(), mf.figures.begin(), mf.figures.end());
-  std::cout << summaryText(summary) << figureSetText(all, (fs::path(out_dir) / "figures").string())
+  if (!quiet)
+    std::cout << summaryText(summary) << figureSetText(all, (fs::path(out_dir) / "figures").string())
             << "report: " << page << '\n';
   if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
   return runExitCode(run, summary);

@@ -38,6 +38,8 @@ nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const s
 // interrupted).
 inline constexpr int kExitDriveDoesNotTurn = 4;
 inline constexpr int kExitRunFailed = 3;
+// `signoff`: the sheet written as JSON and HTML, but no PDF (Chromium missing or failing).
+inline constexpr int kExitSignOffWithoutPdf = 5;
 int runExitCode(const RunResult& run, const nlohmann::json& summary);
 
 }  // namespace rollerdyn::cli

@@ -44,7 +44,8 @@ int main(int argc, char** argv) {
       "  rollerdyn report model/balanced-4cart.yaml --set crank.offset_deg=60 --out out/dphi60\n"
       "                                                               -> out/dphi60/report.html\n"
       "Exit codes: 0 success, 2 bad input or set-up, 3 a run failed (numerical failure, interrupted; outputs still "
-      "written), 4 the drive stalls or rocks instead of turning (outputs written; the sizing checks fail).\n"
+      "written), 4 the drive stalls or rocks instead of turning (outputs written; the sizing checks fail), 5 signoff "
+      "wrote its sheet without the PDF (Chromium missing).\n"
       "Ctrl-C stops a run at the next output row and writes what it has.");
 
   SceneArgs check_args;
@@ -133,8 +134,8 @@ int main(int argc, char** argv) {
   addSceneArgs(bench, bench_args);
   bench->add_option("--study", bench_opts.study,
                     "integrators (default), carts, effects, reactions (with vs without joint reactions), all (these "
-                    "four) or motors")
-      ->check(oneOf({"integrators", "carts", "effects", "reactions", "all", "motors"}));
+                    "four), motors or setup (where the time of a report and of a short run goes, median of at least 3)")
+      ->check(oneOf({"integrators", "carts", "effects", "reactions", "all", "motors", "setup"}));
   bench->add_flag("--quick", bench_opts.quick, "fewer accuracies, 1 s runs, 1 s budget per run (integrators: under a minute)");
   bench->add_option("--budget", bench_opts.budget, "CPU seconds per run before it is recorded as a timeout");
   bench->add_option("--repeat", bench_opts.repeats, "timed repetitions per run (median reported)")->check(CLI::Range(1, 1000));
@@ -145,7 +146,7 @@ int main(int argc, char** argv) {
   // sweep, cam-profile, chain: the studies of the papers (src/cli/SweepCommand.cpp, ...)
   const Subcommand studies[] = {addSweepCommand(app), addCamProfileCommand(app), addChainCommand(app),
                                addOptimizeCommand(app), addMotorCommand(app), addModesCommand(app),
-                               addSchemaCommand(app)};
+                               addSchemaCommand(app), addSignoffCommand(app)};
 
   // Usage errors: exit code 2 and one line (src/cli/UsageError.h); help and version: exit 0.
   if (const std::string bad = checkCommandWord(app, argc, argv); !bad.empty()) return usageError(bad);

@@ -103,6 +103,7 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   r.elastic = scene.coupling.type == CouplingType::Elastic;
   r.motor = scene.motor.enabled;
   const ReducedModel rm(scene);
+  markPhase(o.clock, "modes: set-up");
 
   // First estimate: two constant inertias (Dyomin (two rotors) eq. (10)).
   r.two_mass = twoMassEstimate(scene);
@@ -122,6 +123,7 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
     so.reference_frequency = r.elastic ? frozenModes(*reduced, scene, p0).oscillation_frequency() : 0.0;
   }
   r.steady = steadyMotion(*reduced, scene, so);
+  markPhase(o.clock, "modes: steady motion and Floquet (reduced)");
   std::vector<DrivePoint> points = r.steady.samples;
   if (!r.steady.found) {
     // Frozen-angle modes only at the speed the machine runs at: where the motor's static curve
@@ -152,6 +154,7 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
 
   // 2. Frozen-angle modes, both models.
   r.frozen.push_back(frozenAlong(*reduced, scene, points));
+  markPhase(o.clock, "modes: frozen-angle modes (reduced)");
   // The Floquet frequency is known only modulo 2π/T: its branch is the one nearest the frozen-angle
   // mode's damped frequency Im λ over the revolution (the undamped √λ of M⁻¹K lies branches away
   // when the damping is heavy: six carts at k = 2000 N·m·s/rad, ζ = 0.54, have √λ ≈ 65 rad/s and
@@ -171,6 +174,7 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
         }
         r.model_difference = d;
       }
+      markPhase(o.clock, "modes: frozen-angle modes (multibody)");
       if (o.multibody_floquet && r.steady.found) {
         SteadyMotionOptions mo = so;
         mo.samples = 0;
@@ -180,6 +184,7 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
         mo.reference_frequency = r.elastic ? branch_reference : 0.0;
         r.steady_multibody = steadyMotion(*mb, scene, mo);
         r.has_multibody_steady = true;
+        markPhase(o.clock, "modes: steady motion and Floquet (multibody)");
       }
     } catch (const std::exception& e) {
       ModelFrozenModes m;
@@ -192,6 +197,7 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   // 3. Excitation orders at the operating speed.
   const double w_op = r.steady.found ? r.steady.omega_mean : (points.empty() ? 1.0 : points[0].omega);
   r.orders = excitationOrders(scene, w_op);
+  markPhase(o.clock, "modes: excitation orders");
 
   // 4. Campbell diagram.
   if (o.campbell && r.elastic && r.steady.found) {
@@ -212,6 +218,7 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   } else if (o.campbell) {
     r.campbell.note = !r.elastic ? "rigid coupling: the drive has no torsional mode" : "no steady motion";
   }
+  markPhase(o.clock, "modes: Campbell diagram");
 
   const Band none;
   r.separation = separationMargins(r.elastic, r.steady, r.frozen.empty() ? none : r.frozen[0].torsional_natural,
@@ -242,6 +249,7 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
     r.charts.back().marked = o.marked_dampings;
     if (!r.elastic) r.charts.back().operating_y = NAN;
   }
+  markPhase(o.clock, "modes: stability charts");
   r.warnings = modalWarnings(r);
   r.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
   return r;

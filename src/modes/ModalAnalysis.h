@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/PhaseClock.h"
 #include "io/Table.h"
 #include "modes/Campbell.h"
 #include "modes/DriveOrbit.h"
@@ -46,6 +47,7 @@ struct ModesOptions {
   double damping_high = 0;             // top of the c × k chart; 0: 2·max(scene k, marked, 1000)
   int max_newton = 30;                 // Newton iterations on the period map (the steady motion)
   int warmup_periods = 3;              // revolutions integrated from the first guess before Newton
+  PhaseClock* clock = nullptr;         // times the analysis' phases (bench); null: not timed
 };
 
 struct ModelFrozenModes {

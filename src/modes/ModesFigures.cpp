@@ -27,6 +27,7 @@ std::string g(double v, const char* f = "%.4g") {
 
 FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
   FigureSet set;
+  std::vector<PlotJob> jobs;
   if (!gnuplotAvailable()) {
     set.notes.push_back("gnuplot not found (Debian package gnuplot-nox): no figures of the torsional modes");
     return set;
@@ -67,7 +68,7 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
       s.series.push_back(fl);
     }
     s.preamble = "set xrange [0:360]\nset xtics 45\nset key inside bottom right";
-    renderPlot(s, dir + "/frozen_frequencies");
+    jobs.push_back(plotJob(s, dir + "/frozen_frequencies"));
     set.figures.push_back(fileOf(dir, "frozen_frequencies",
                                  "Torsional natural frequency of the drive with the crank angle frozen, along the "
                                  "steady motion: both models, the two-mass first estimate and the Floquet frequency."));
@@ -129,7 +130,7 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
           << ",graph 1 nohead dt 2 lc rgb 'black'\nset label 'operating speed' at " << r.steady.omega_mean
           << ",graph 0.97 left offset 0.5,0\n";
     s.preamble = pre.str();
-    renderPlot(s, dir + "/campbell");
+    jobs.push_back(plotJob(s, dir + "/campbell"));
     set.figures.push_back(fileOf(dir, "campbell",
                                  "Campbell diagram: solid grey lines k·ω (forced resonance where the torsional "
                                  "frequency meets them), dotted red lines k·ω/2 (principal parametric resonance, "
@@ -178,20 +179,22 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
                            : "Stability of the steady motion: largest Floquet multiplier, ω = " + g(c.fixed_speed) +
                                  " rad/s";
     const std::string name = "stability_" + std::to_string(n + 1);
-    renderHeatMap(title, "coupling stiffness c [N·m/rad] (log scale)",
-                  c.y_key == "omega" ? "mean crank speed ω [rad/s]" : "coupling damping k [N·m·s/rad]",
-                  "log_{10} max|μ| per revolution (> 0: unstable)", x, c.y, z, dir + "/" + name, true, true,
-                  pre.str());
+    jobs.push_back(heatMapJob(title, "coupling stiffness c [N·m/rad] (log scale)",
+                              c.y_key == "omega" ? "mean crank speed ω [rad/s]" : "coupling damping k [N·m·s/rad]",
+                              "log_{10} max|μ| per revolution (> 0: unstable)", x, c.y, z, dir + "/" + name, true,
+                              true, pre.str()));
     set.figures.push_back(fileOf(dir, name,
                                  "Stability chart from the Floquet multipliers of the steady motion (reduced model): "
                                  "colour = log10 of the largest multiplier modulus per crank revolution (0 and above: "
                                  "unstable; white boxes: unstable zones); white dot: the scene."));
   }
+  renderPlots(jobs);  // a few gnuplot processes at once, each drawing several figures
   return set;
 }
 
 FigureSet drawSpectrumFigures(const OrderSpectrum& s, const std::string& dir) {
   FigureSet set;
+  std::vector<PlotJob> jobs;
   if (!s.ok || !gnuplotAvailable()) return set;
   // One figure per group: coupling torque (and motor torque), guide reactions, rod and pin forces.
   struct Group {
@@ -220,13 +223,14 @@ FigureSet drawSpectrumFigures(const OrderSpectrum& s, const std::string& dir) {
     }
     if (p.series.empty()) continue;
     p.preamble = "set xtics 1\nset grid xtics";
-    renderPlot(p, dir + "/" + gr.name);
+    jobs.push_back(plotJob(p, dir + "/" + gr.name));
     set.figures.push_back(fileOf(dir, gr.name,
                                  "Order spectrum of the " + gr.title +
                                      ": one-sided amplitude of each harmonic of the crank revolution over the steady "
                                      "window; a peak between whole orders is a vibration not locked to the crank "
                                      "(e.g. half an order: parametric resonance)."));
   }
+  renderPlots(jobs);  // a few gnuplot processes at once, each drawing several figures
   return set;
 }
 

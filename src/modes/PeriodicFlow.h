@@ -79,7 +79,8 @@ struct PeriodicOrbit {
 };
 
 // Newton's method on x(S; x0) - x0 = 0 with the Jacobian Φ(S) - I, damped by halving when the
-// residual grows; then one more flow at the solution for its monodromy and samples.
+// residual grows; then, when samples are asked for, one more flow at the solution for them (without
+// samples the monodromy is the last Newton flow's, which started at the solution).
 PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd& guess, const OrbitOptions& o = {});
 
 }  // namespace rollerdyn::modes

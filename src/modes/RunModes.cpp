@@ -25,14 +25,16 @@ OrderSpectrum runSpectrum(const Scene& scene, const RunResult& run) {
   return s;
 }
 
-RunModal analyseRunModes(const Scene& scene, const RunResult& run, bool charts) {
+RunModal analyseRunModes(const Scene& scene, const RunResult& run, bool charts, PhaseClock* clock) {
   ModesOptions o;
+  o.clock = clock;
   o.charts = charts;
   o.chart_c = 12;
   o.chart_y = 8;
   RunModal m;
   m.report = analyseModes(scene, o);
   m.spectrum = runSpectrum(scene, run);
+  markPhase(clock, "modes: order spectrum of the run");
   return m;
 }
 

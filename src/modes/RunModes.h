@@ -25,8 +25,8 @@ struct RunModal {
   OrderSpectrum spectrum;
 };
 // `charts`: also the stability charts, coarse (12 stiffnesses x 8 speeds or dampings), as the
-// report shows them.
-RunModal analyseRunModes(const Scene& scene, const RunResult& run, bool charts);
+// report shows them. `clock`: times the analysis' phases (bench); null: not timed.
+RunModal analyseRunModes(const Scene& scene, const RunResult& run, bool charts, PhaseClock* clock = nullptr);
 
 // The reason the run's stability verdict is not applicable (summary["stability"], made by the run's
 // verdict: a drive that does not turn has no steady motion), or "" when it applies.

@@ -14,7 +14,7 @@ double distanceToBand(double f, double lo, double hi) {
 }
 
 std::string fmt(const char* format, double a, double b = 0, double c = 0) {
-  char buf[240];
+  char buf[600];  // the longest, a FAIL's advice, is about 400 characters
   std::snprintf(buf, sizeof buf, format, a, b, c);
   return buf;
 }

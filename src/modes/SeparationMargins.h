@@ -28,6 +28,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/SizingCheck.h"
 #include "modes/Campbell.h"
 #include "modes/DriveOrbit.h"
 #include "modes/ExcitationOrders.h"
@@ -73,6 +74,12 @@ SeparationMargins separationMargins(bool elastic, const SteadyMotion& steady, co
                                     const Band& frozen_undamped, const Band& frozen_damping,
                                     const ExcitationOrders& orders,
                                     const CampbellDiagram& campbell);
+
+// The margins as checks of a sign-off (SeparationChecks.cpp): one per order that drives the mode,
+// value SM_k, limit 10 %; an order too weak to drive it is a "not applicable" check only within
+// the 10 % (further away it is no excitation); one "not applicable" check with the reason where
+// the margins do not apply or no order drives the mode. modes.json's separation_margins.checks.
+std::vector<SizingCheck> separationChecks(const SeparationMargins& s);
 
 // Renderings (SeparationMarginsOutputs.cpp): modes.json's "separation_margins" and the console's lines.
 nlohmann::json separationJson(const SeparationMargins& s);

@@ -1,6 +1,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "analysis/SizingCheckJson.h"
 #include "modes/SeparationMargins.h"
 
 namespace rollerdyn::modes {
@@ -17,6 +18,7 @@ nlohmann::json separationJson(const SeparationMargins& s) {
   if (!s.applicable) {
     j["verdict"] = "not applicable";
     j["reason"] = s.not_applicable;
+    j["checks"] = nlohmann::json::array({sizingCheckJson(separationChecks(s).front())});
     return j;
   }
   j["omega"] = s.omega;
@@ -46,6 +48,9 @@ nlohmann::json separationJson(const SeparationMargins& s) {
   nlohmann::json sc = nlohmann::json::array();
   for (const StartCrossing& c : s.start_crossings) sc.push_back({{"order", c.order}, {"omega", c.omega}});
   j["start_crossings"] = sc;
+  nlohmann::json checks = nlohmann::json::array();
+  for (const SizingCheck& c : separationChecks(s)) checks.push_back(sizingCheckJson(c));
+  j["checks"] = checks;
   j["start_crossings_note"] = "forced crossings p = k*omega below the operating speed within the Campbell diagram's "
                               "speed range, passed through in a start: a transient, judged by the start's torques";
   return j;

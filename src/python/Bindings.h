@@ -11,5 +11,6 @@ void bindRuns(pybind11::module_& m);     // RunBindings.cpp: simulate, compare
 void bindStudies(pybind11::module_& m);  // StudyBindings.cpp: sweep, optimize
 void bindSchema(pybind11::module_& m);   // SchemaBindings.cpp: the scene keys, column units
 void bindAnalysis(pybind11::module_& m); // AnalysisBindings.cpp: modes, fit_motor
+void bindSignOff(pybind11::module_& m);  // SignOffBindings.cpp: signoff
 
 }  // namespace rollerdyn::python

@@ -13,4 +13,5 @@ PYBIND11_MODULE(_core, m) {
   rollerdyn::python::bindStudies(m);
   rollerdyn::python::bindSchema(m);
   rollerdyn::python::bindAnalysis(m);
+  rollerdyn::python::bindSignOff(m);
 }

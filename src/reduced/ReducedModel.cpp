@@ -62,7 +62,6 @@ ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> l
   loop_carts_.resize(n);
   loop_friction_.resize(n);
   loop_normals_.resize(2 * n);
-  scratch_carts_.reserve(n);
 }
 
 double ReducedModel::rotorSpeed(const double* y) const {
@@ -280,31 +279,13 @@ void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y,
   // crankSideInertiaDerivative() and loadTorque() would compute it three times), from the same
   // per-cart terms those functions sum. Quasi-static normals: the friction is known per cart
   // (CartStatics.h); kinetostatic: it is found below with the crank acceleration.
-  double J = J_crank_, dJ = 0.0, M = 0.0, P_friction = 0.0, P_load = 0.0;
+  const CartPass& pass = cartPass(phi, w2);
+  const double J = pass.J, dJ = pass.dJ;
+  double M = pass.M, P_friction = pass.P_friction;
+  const double P_load = pass.P_load;
+  e.friction_loop = pass.locked;
   e.carts.clear();  // keeps its capacity
-  scratch_carts_.clear();
-  for (int j = 0; j < cartCount(); ++j) {
-    const CartEvaluation c = kinetostatic_ ? cartKinematics(j, phi, w2) : evaluateCart(j, phi, w2, 0.0);
-    const SliderCrankPose& p = c.pose;
-    J += cartInertia(j, p);
-    dJ += cartInertiaDerivative(j, p);
-    const double sigma = scene_.carts.side[j];
-    const double v = p.dx_B * w2;  // world ẋ_B
-    if (kinetostatic_) {
-      M += rodGravityTorque(p, c.theta) - sigma * c.roller_force * p.dx_B;
-    } else {
-      M += rodGravityTorque(p, c.theta) - c.generalized_force;
-      P_friction -= sigma * c.statics.friction * v;
-      if (c.statics.locked && e.friction_loop.status == LoopStatus::Solved) {
-        e.friction_loop.status = LoopStatus::SelfLocking;
-        e.friction_loop.cart = j;
-        e.friction_loop.gain = c.statics.gain;
-      }
-    }
-    P_load -= sigma * c.roller_force * v;
-    if (kinetostatic_ || checksFrictionWork()) scratch_carts_.push_back(c);
-    if (keep_carts && !kinetostatic_) e.carts.push_back(c);
-  }
+  if (keep_carts && !kinetostatic_) e.carts.insert(e.carts.end(), pass.carts.begin(), pass.carts.end());
   e.J_n2 = J;
   e.dJ_n2 = dJ;
   evaluateMotor(t, phase, y, e);
@@ -318,14 +299,14 @@ void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y,
     // friction along world x, whose generalized force on φ2 is F_j·x_B'_j.
     const int n = cartCount();
     for (int j = 0; j < n; ++j) {
-      loopTerms(j, scratch_carts_[j], w2, loop_carts_[j]);
+      loop_carts_[j] = pass.loop[j];
       loop_carts_[j].w /= J_eq;
     }
     const double eps0 = (drive - M - 0.5 * dJ * w2 * w2) / J_eq;
     e.friction_loop = solveGuideFrictionLoop(loop_carts_.data(), n, eps0, loop_friction_.data(), loop_normals_.data());
     if (e.friction_loop.status != LoopStatus::Solved) std::fill(loop_friction_.begin(), loop_friction_.end(), 0.0);
     for (int j = 0; j < n; ++j) {
-      const double dx = scratch_carts_[j].pose.dx_B;
+      const double dx = pass.carts[j].pose.dx_B;
       M -= loop_friction_[j] * dx;
       P_friction -= loop_friction_[j] * dx * w2;
     }
@@ -356,7 +337,7 @@ void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y,
   if (kinetostatic_ && keep_carts) {
     // The reactions of this instant: the cart statics at the crank acceleration just found.
     for (int j = 0; j < cartCount(); ++j) {
-      CartEvaluation c = scratch_carts_[j];
+      CartEvaluation c = pass.carts[j];
       const double F_world = friction ? loop_friction_[j] : 0.0;
       c.statics = kinetostaticStatics(j, c, w2, e.eps_crank, F_world);
       c.generalized_force = scene_.carts.side[j] * (c.roller_force + c.statics.friction) * c.pose.dx_B;
@@ -368,13 +349,13 @@ void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y,
     // loop at fixed ε: w = 0): the friction power behind the run's friction-work check.
     const int n = cartCount();
     for (int j = 0; j < n; ++j) {
-      loopTerms(j, scratch_carts_[j], w2, loop_carts_[j]);
+      loop_carts_[j] = pass.loop[j];
       loop_carts_[j].w = 0.0;
     }
     const GuideLoopResult r =
         solveGuideFrictionLoop(loop_carts_.data(), n, e.eps_crank, loop_friction_.data(), loop_normals_.data());
     double P = 0.0;
-    for (int j = 0; j < n; ++j) P -= loop_friction_[j] * scratch_carts_[j].pose.dx_B * w2;
+    for (int j = 0; j < n; ++j) P -= loop_friction_[j] * pass.carts[j].pose.dx_B * w2;
     e.friction_power_kinetostatic = r.status == LoopStatus::Solved ? P : std::nan("");
   }
 }

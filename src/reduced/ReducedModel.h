@@ -214,6 +214,10 @@ class ReducedModel {
   std::vector<CartEvaluation> cartReactions(double phi, double omega, double eps,
                                             bool include_inertia) const;
 
+  // Passes over the carts computed so far by evaluate()/derivatives(): one per new (φ2, φ̇2); an
+  // evaluation at one of the last three is served from it (what the cost of a Jacobian counts).
+  long cartPassesComputed() const { return cart_passes_computed_; }
+
  private:
   CartEvaluation cartKinematics(int j, double phi, double omega) const;  // pose, v', H (no statics)
   CartEvaluation evaluateCart(int j, double phi, double omega, double inertial_force) const;
@@ -250,7 +254,25 @@ class ReducedModel {
   // Scratch of the friction loop, reused by every evaluation (the model is used by one thread).
   mutable std::vector<GuideLoopCart> loop_carts_;
   mutable std::vector<double> loop_friction_, loop_normals_;
-  mutable std::vector<CartEvaluation> scratch_carts_;
+
+  // The pass over the carts at one crank angle and speed (φ2, φ̇2): their kinematics, loads and
+  // inertia terms depend on nothing else. Finite-difference Jacobians (the modal analysis'
+  // variational equations, CVODE's Newton matrix) evaluate the model at the same (φ2, φ̇2) with
+  // other twists, twist rates and motor states; the last three passes are kept (the point and its
+  // two speed perturbations) and reused when both values match bit for bit (CartPass.cpp).
+  struct CartPass {
+    double phi = 0, omega = 0;
+    bool valid = false;
+    double J = 0, dJ = 0, M = 0, P_friction = 0, P_load = 0;  // sums over the carts, J from J_crank_
+    GuideLoopResult locked;               // quasi-static normals: the first cart that locks
+    std::vector<CartEvaluation> carts;    // every cart
+    std::vector<GuideLoopCart> loop;      // loopTerms() of every cart (w = x_B', not yet /J) when used
+  };
+  const CartPass& cartPass(double phi, double omega) const;
+  bool usesLoopTerms() const { return scene_.hasGuideFriction() && (kinetostatic_ || checksFrictionWork()); }
+  mutable std::array<CartPass, 3> passes_;
+  mutable int next_pass_ = 0;
+  mutable long cart_passes_computed_ = 0;
 };
 
 // Runs the reduced model of a scene from its initial state to simulation.t_end and fills the

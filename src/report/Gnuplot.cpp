@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,8 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include "io/AtomicFile.h"
@@ -35,46 +38,57 @@ struct Output {
   std::string terminal, file;
 };
 
-// Runs ONE gnuplot on a script that draws `script_body` once for each output (to a temporary
-// name each, renamed into place after): a figure in PNG and SVG costs one start of gnuplot, not
-// two. `reset` between the outputs gives each the settings of a fresh gnuplot (terminal and
-// output are not reset).
-void runGnuplot(const std::string& script_body, const std::vector<Output>& outputs) {
+std::vector<Output> outputsOf(const PlotJob& job) {
+  const std::string size = std::to_string(job.width) + "," + std::to_string(job.height);
+  std::vector<Output> outputs;
+  if (job.png) outputs.push_back({"pngcairo size " + size + " font 'Sans,10'", job.base + ".png"});
+  if (job.svg) outputs.push_back({"svg size " + size + " dynamic font 'Sans,10'", job.base + ".svg"});
+  return outputs;
+}
+
+// Runs ONE gnuplot on a script that draws every job's commands once for each of its outputs (to a
+// temporary name each). `reset` between the outputs of a figure and `reset session` between
+// figures give each the settings of a fresh gnuplot (terminal and output are not reset). Returns
+// true when gnuplot succeeded and every temporary file exists; then they are renamed into place.
+// Otherwise the temporary files are removed and nothing is renamed.
+bool runGnuplot(const std::vector<const PlotJob*>& jobs, const std::string& tag) {
   namespace fs = std::filesystem;
-  if (outputs.empty()) return;
-  const std::string pid = std::to_string(::getpid());
   std::string script;
-  std::vector<std::string> tmp;
-  for (const Output& o : outputs) {
-    const fs::path target(o.file);
-    if (target.has_parent_path()) fs::create_directories(target.parent_path());
-    const std::string tmp_out = o.file + ".tmp." + pid;
-    tmp.push_back(tmp_out);
-    if (!script.empty()) script += "reset\n";
-    script += "set terminal " + o.terminal + "\nset output " + quoted(tmp_out) + "\n" + script_body +
-              "\nunset output\n";
+  std::vector<std::pair<std::string, std::string>> files;  // temporary, final
+  for (const PlotJob* job : jobs) {
+    bool first_output = true;
+    for (const Output& o : outputsOf(*job)) {
+      const fs::path target(o.file);
+      if (target.has_parent_path()) fs::create_directories(target.parent_path());
+      const std::string tmp_out = o.file + ".tmp." + tag;
+      files.push_back({tmp_out, o.file});
+      if (!script.empty()) script += first_output ? "reset session\n" : "reset\n";
+      first_output = false;
+      script += "set terminal " + o.terminal + "\nset output " + quoted(tmp_out) + "\n" + job->script +
+                "\nunset output\n";
+    }
   }
-  const std::string script_path = outputs.front().file + ".gp.tmp." + pid;
+  if (files.empty()) return true;
+  const std::string script_path = files.front().second + ".gp.tmp." + tag;
   writeFileAtomic(script_path, script);
   const std::string cmd = "gnuplot " + quoted(script_path) + " 2>/dev/null";
   const int rc = std::system(cmd.c_str());
   std::remove(script_path.c_str());
   bool drawn = rc == 0;
-  for (const std::string& t : tmp) drawn = drawn && fs::exists(t);
+  for (const auto& f : files) drawn = drawn && fs::exists(f.first);
   if (!drawn) {
-    for (const std::string& t : tmp) std::remove(t.c_str());
-    throw std::runtime_error("gnuplot failed to draw '" + outputs.front().file + "'");
+    for (const auto& f : files) std::remove(f.first.c_str());
+    return false;
   }
-  for (size_t i = 0; i < outputs.size(); ++i) fs::rename(tmp[i], outputs[i].file);
+  for (const auto& f : files) fs::rename(f.first, f.second);
+  return true;
 }
 
-void render(const std::string& body, int w, int h, const std::string& base, bool png, bool svg) {
-  if (!gnuplotAvailable()) throw std::runtime_error("gnuplot not found (Debian package gnuplot-nox)");
-  const std::string size = std::to_string(w) + "," + std::to_string(h);
-  std::vector<Output> outputs;
-  if (png) outputs.push_back({"pngcairo size " + size + " font 'Sans,10'", base + ".png"});
-  if (svg) outputs.push_back({"svg size " + size + " dynamic font 'Sans,10'", base + ".svg"});
-  runGnuplot(body, outputs);
+void drawOne(const PlotJob& job, const std::string& tag) {
+  if (!runGnuplot({&job}, tag)) {
+    const std::vector<Output> outputs = outputsOf(job);
+    throw std::runtime_error("gnuplot failed to draw '" + (outputs.empty() ? job.base : outputs.front().file) + "'");
+  }
 }
 
 }  // namespace
@@ -93,7 +107,7 @@ bool gnuplotAvailable() {
   return found;
 }
 
-void renderPlot(const PlotSpec& spec, const std::string& base, bool png, bool svg) {
+PlotJob plotJob(const PlotSpec& spec, const std::string& base, bool png, bool svg) {
   std::ostringstream os;
   os.precision(12);
   os << "set title " << quoted(spec.title) << "\nset xlabel " << quoted(spec.xlabel) << "\nset ylabel "
@@ -129,10 +143,14 @@ void renderPlot(const PlotSpec& spec, const std::string& base, bool png, bool sv
   }
   if (spec.series.empty()) os << "NaN notitle";
   os << '\n';
-  render(os.str(), spec.width, spec.height, base, png, svg);
+  return {os.str(), spec.width, spec.height, base, png, svg};
 }
 
-void renderHeatMap(const std::string& title, const std::string& xlabel, const std::string& ylabel,
+void renderPlot(const PlotSpec& spec, const std::string& base, bool png, bool svg) {
+  renderPlots({plotJob(spec, base, png, svg)}, 1);
+}
+
+PlotJob heatMapJob(const std::string& title, const std::string& xlabel, const std::string& ylabel,
                    const std::string& zlabel, const std::vector<double>& x, const std::vector<double>& y,
                    const std::vector<std::vector<double>>& z, const std::string& base, bool png, bool svg,
                    const std::string& preamble) {
@@ -151,7 +169,42 @@ void renderHeatMap(const std::string& title, const std::string& xlabel, const st
   }
   os << "EOD\n" << preamble << (preamble.empty() || preamble.back() == '\n' ? "" : "\n")
      << "plot $G using 1:2:3 with image notitle\n";
-  render(os.str(), 900, 640, base, png, svg);
+  return {os.str(), 900, 640, base, png, svg};
+}
+
+void renderHeatMap(const std::string& title, const std::string& xlabel, const std::string& ylabel,
+                   const std::string& zlabel, const std::vector<double>& x, const std::vector<double>& y,
+                   const std::vector<std::vector<double>>& z, const std::string& base, bool png, bool svg,
+                   const std::string& preamble) {
+  renderPlots({heatMapJob(title, xlabel, ylabel, zlabel, x, y, z, base, png, svg, preamble)}, 1);
+}
+
+void renderPlots(const std::vector<PlotJob>& jobs, int processes) {
+  if (jobs.empty()) return;
+  if (!gnuplotAvailable()) throw std::runtime_error("gnuplot not found (Debian package gnuplot-nox)");
+  if (processes <= 0) processes = int(std::max(1u, std::thread::hardware_concurrency()));
+  processes = std::min<int>(processes, int(jobs.size()));
+  // Shares of about equal script length (what gnuplot reads and draws), in the jobs' order.
+  size_t total = 0;
+  for (const PlotJob& j : jobs) total += j.script.size() + 1;
+  std::vector<std::vector<const PlotJob*>> shares(static_cast<size_t>(processes));
+  size_t done = 0;
+  for (const PlotJob& j : jobs) {
+    const size_t k = std::min(size_t(processes) - 1, done * size_t(processes) / total);
+    shares[k].push_back(&j);
+    done += j.script.size() + 1;
+  }
+  static std::atomic<long> serial{0};
+  const std::string pid = std::to_string(::getpid());
+  std::vector<char> ok(shares.size(), 0);
+  auto draw = [&](size_t k) { ok[k] = runGnuplot(shares[k], pid + "." + std::to_string(serial++)); };
+  std::vector<std::thread> pool;
+  for (size_t k = 1; k < shares.size(); ++k) pool.emplace_back(draw, k);
+  if (!shares.empty()) draw(0);
+  for (std::thread& t : pool) t.join();
+  for (size_t k = 0; k < shares.size(); ++k)
+    if (!ok[k])
+      for (const PlotJob* j : shares[k]) drawOne(*j, pid + "." + std::to_string(serial++));
 }
 
 }  // namespace rollerdyn

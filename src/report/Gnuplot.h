@@ -46,6 +46,27 @@ bool gnuplotAvailable();
 // if gnuplot is missing or fails. Non-finite points are skipped (gnuplot would abort on them).
 void renderPlot(const PlotSpec& spec, const std::string& base, bool png = true, bool svg = true);
 
+// One figure to draw: the gnuplot commands of renderPlot() or renderHeatMap() and its files.
+struct PlotJob {
+  std::string script;   // commands that draw the figure (terminal and output are set around them)
+  int width = 960, height = 560;
+  std::string base;     // <base>.png and/or <base>.svg
+  bool png = true, svg = true;
+};
+PlotJob plotJob(const PlotSpec& spec, const std::string& base, bool png = true, bool svg = true);
+PlotJob heatMapJob(const std::string& title, const std::string& xlabel, const std::string& ylabel,
+                   const std::string& zlabel, const std::vector<double>& x, const std::vector<double>& y,
+                   const std::vector<std::vector<double>>& z, const std::string& base, bool png = true,
+                   bool svg = true, const std::string& preamble = "");
+
+// Draws every job, the same files as renderPlot() one by one, in fewer gnuplot starts: the jobs are
+// shared among up to `processes` gnuplot processes running at once (0: one per processor), each
+// drawing its share in one run with `reset session` between the figures (each figure drawn as
+// by a fresh gnuplot). Each file is drawn to a temporary name and renamed. When a process fails,
+// its figures are drawn again one process each, so the error names the figure that fails
+// (std::runtime_error, as renderPlot()).
+void renderPlots(const std::vector<PlotJob>& jobs, int processes = 0);
+
 // Heat map of z over a grid (rows follow y, columns follow x), same files and guarantees.
 // `preamble`: extra gnuplot commands run before `plot` (tics, a marked point, lines), as PlotSpec's.
 void renderHeatMap(const std::string& title, const std::string& xlabel, const std::string& ylabel,

@@ -405,9 +405,11 @@ FigureSet drawRunFigures(const OutputFolder& out, const Scene* scene, const std:
   namespace fs = std::filesystem;
   fs::create_directories(fig_dir);
   std::set<std::string> drawn;
+  std::vector<PlotJob> jobs;
+  for (const FigurePlan& plan : plans) jobs.push_back(plotJob(plan.spec, (fs::path(fig_dir) / plan.name).string(), options.png, options.svg));
+  renderPlots(jobs);  // a few gnuplot processes at once, each drawing several figures
   for (const FigurePlan& plan : plans) {
     const std::string base = (fs::path(fig_dir) / plan.name).string();
-    renderPlot(plan.spec, base, options.png, options.svg);
     set.figures.push_back({plan.name, plan.caption, options.png ? base + ".png" : "",
                            options.svg ? base + ".svg" : ""});
     drawn.insert(plan.name);

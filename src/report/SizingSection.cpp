@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "analysis/SignOffSheet.h"
 #include "report/HtmlReport.h"
 #include "io/FieldFormat.h"
 
@@ -27,6 +28,15 @@ void row(std::ostringstream& h, const std::string& what, const std::string& valu
          const std::string& note = "") {
   h << "<tr><td>" << htmlEscape(what) << "</td><td class=\"n\">" << value << "</td><td>" << unit
     << "</td><td>" << note << "</td></tr>\n";
+}
+
+// A check's limit with the sense of its comparison ("≤ 1", "< 0.9025"); "" without one.
+std::string limitText(const json& c) {
+  const json& limit = jsonMember(c, "limit");
+  if (!limit.is_number()) return "";
+  const json& sense = jsonMember(c, "passes_when");
+  return htmlEscape(comparisonSymbol(sense.is_string() ? sense.get<std::string>() : "")) + " " +
+         jsonNumberText(limit, "%.4g");
 }
 
 }  // namespace
@@ -87,12 +97,15 @@ std::string sizingSectionHtml(const json& s) {
   const json& checks = jsonMember(z, "checks");
   if (checks.is_array() && !checks.empty()) {
     h << "<h3>Checks</h3>\n<p class=\"small\">Each check names the window that decided it: the steady window or "
-         "the whole run (start-up included).</p>\n<table>\n<tr><th>check</th><th>ratio</th><th>result</th>"
-         "<th>decided by</th><th>why</th></tr>\n";
+         "the whole run (start-up included); the sign-off sheet (rollerdyn signoff) lists them with what each "
+         "rests on.</p>\n<table>\n<tr><th>check</th><th>ratio</th><th>result</th>"
+         "<th>decided by</th><th>why</th><th>limit</th><th>method</th></tr>\n";
+    // Columns after "why" only: scripts/consistency_lib/parse.py reads the first three by position.
     for (const json& c : checks)
       h << "<tr><td>" << text(jsonMember(c, "what")) << "</td><td class=\"n\">" << jsonNumberText(jsonMember(c, "value"), "%.3f") << "</td>"
         << checkCell(jsonMember(c, "verdict")) << "<td>" << text(jsonMember(c, "window")) << "</td><td class=\"small\">"
-        << text(jsonMember(c, "reason")) << "</td></tr>\n";
+        << text(jsonMember(c, "reason")) << "</td><td class=\"n\">" << limitText(c) << "</td><td class=\"small\">"
+        << (jsonMember(c, "method").is_string() ? text(jsonMember(c, "method")) : std::string()) << "</td></tr>\n";
     h << "</table>\n";
   }
   const json& load = jsonMember(s, "load");
@@ -139,7 +152,7 @@ std::string sizingSectionHtml(const json& s) {
     row(h, "rated torque (sizing.coupling_rated_torque)", jsonNumberText(jsonMember(c, "rated_torque")), "N·m");
     h << "</table>\n";
   }
-  h << signOffSectionHtml(z);
+  h << signOffSectionHtml(z) << dutySectionHtml(z);
   h << "<h3>Joints and bearings</h3>\n<p class=\"small\">P: equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), "
        "n the joint's rotation or swing speed (ISO 281 style); C: the dynamic load rating from "
        "sizing.bearing_rating.*; L10: the basic rating life in hours of steady running, how it follows "

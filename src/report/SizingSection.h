@@ -17,5 +17,8 @@ std::string sizingSectionHtml(const nlohmann::json& summary);
 // The fatigue and coupling-selection tables from summary.json's `sizing` (SignOffSection.cpp); "" when
 // neither was asked for.
 std::string signOffSectionHtml(const nlohmann::json& sizing);
+// The gear load spectrum after ISO 6336-6 and the motor's starts after IEC 60034-1 from summary.json's
+// `sizing` (DutySection.cpp); "" when neither was asked for.
+std::string dutySectionHtml(const nlohmann::json& sizing);
 
 }  // namespace rollerdyn

@@ -385,6 +385,7 @@ SizingInputs readSizing(const Reader& in) {
   z.rating_main_bearing = in.number("sizing.bearing_rating.main_bearing");
   z.fatigue = readFatigue(in);
   z.coupling = readCouplingRatings(in);
+  scene_detail::readGearAndDutyRatings(in, z);
   if (in.has("motor.omega_nominal")) z.motor_omega_nominal = in.number("motor.omega_nominal");
   if (in.has("motor.overload_ratio")) z.motor_overload_ratio = in.number("motor.overload_ratio");
   // One rated torque of the coupling: the single rating against the run's largest peak, or the

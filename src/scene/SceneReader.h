@@ -200,5 +200,7 @@ void readMotor(const Reader& in, KlossMotor& motor, InductionMotor& induction);
 CrankshaftLayout readCrankshaft(const Reader& in, int cart_count);
 // Refuses a torsional chain (crankshaft.torsional_stiffness) where it cannot be built.
 void checkTorsionalChain(const Reader& in, const Scene& s);
+// sizing.reducer.* and sizing.motor.* (SignOffSceneParser.cpp).
+void readGearAndDutyRatings(const Reader& in, SizingInputs& z);
 
 }  // namespace rollerdyn::scene_detail

@@ -68,7 +68,32 @@ std::vector<KeySpec> signOffSchemaKeys() {
       number("sizing.coupling.shock_factor", "-", P::Optional, between(1.0, true, 10.0, true), 1.0,
              "S_A, shock factor for shocks the model does not hold (the simulated peak already holds the "
              "start's and the reversals' shocks; 1 unless the process adds others)")
-          .from("DIN 740-2 (KTR coupling selection)")
+          .from("DIN 740-2 (KTR coupling selection)"),
+      number("sizing.reducer.application_factor", "-", P::Optional, between(1.0, true, 10.0, true), 0.0,
+             "K_A the reducer's gears were designed with, from the table of the driving and driven machine "
+             "(e.g. 1.75 for an electric motor driving a machine with heavy shocks); checked against the run's "
+             "K_A = T_eq/T_n, T_eq the Miner-equivalent torque of the load spectrum, T_n = u·η·M_n")
+          .from("ISO 6336-1:2019 Annex B Table B.1; ISO 6336-6:2019 (load spectrum, equivalent torque)"),
+      number("sizing.reducer.rated_torque", "N·m", P::Optional, positive(), 0.0,
+             "T_2N, the reducer's rated output torque at service factor 1 (the constant torque it carries for its "
+             "design life), at the crank axis; checked against the equivalent torque T_eq of the run's load spectrum")
+          .from("ISO 6336-6:2019 (equivalent torque)"),
+      number("sizing.reducer.max_torque", "N·m", P::Optional, positive(), 0.0,
+             "T_2max, the reducer's permissible peak output torque (catalogue, for starts and rare peaks), at the "
+             "crank axis; checked against the largest |T| of the start and the steady running"),
+      number("sizing.reducer.sn_exponent", "-", P::Optional, between(1.0, true, 50.0, true), 6.61,
+             "p, exponent of the gears' torque S-N curve T^p·N = const in the equivalent torque "
+             "T_eq = (Σ n_i·T_i^p / N_L)^(1/p), n_i the crank revolutions at the torque T_i, N_L all of them: 6.61 for the flanks (pitting) of case-hardened steel, 8.74 for "
+             "their tooth root (both from the life factors Z_NT and Y_NT of ISO 6336-2 and -3)")
+          .from("ISO 6336-6:2019 Annex A; ISO 6336-2:2019 and ISO 6336-3:2019 (life factors)"),
+      number("sizing.motor.locked_rotor_time", "s", P::Optional, positive(), 0.0,
+             "t_E, the motor's permissible locked-rotor (stall) time from the warm state, from its catalogue; a "
+             "start may put at most the heat of t_E at standstill, t_E·M_s·ω0, into the rotor")
+          .from("IEC 60034-1 (duty S4)"),
+      number("sizing.motor.no_load_starts", "1/h", P::Optional, positive(), 0.0,
+             "Z_0, the motor's permissible starts per hour without load torque and load inertia, from its catalogue; "
+             "scaled to this load by the rotor heat of one start: Z = Z_0·(½·J_M·ω0²)/Q_start·(1 − P_steady/P_n,rotor)")
+          .from("IEC 60034-1 (duty S4)")
   };
 }
 

@@ -42,6 +42,29 @@ struct CouplingRatings {
   }
 };
 
+// The reducer's ratings for the gear application factor after ISO 6336-6 (analysis/GearDuty.h);
+// torques at the crank axis like coupling.stiffness (the reducer's output shaft drives the crank).
+// 0 = not given.                                                          sizing.reducer.*
+struct ReducerRatings {
+  double application_factor = 0;   // K_A the gears were designed with (ISO 6336-1 Table B.1) [-]
+                                   //                                           .application_factor
+  double rated_torque = 0;         // T_2N, the reducer's rated output torque (service factor 1) [N·m]
+                                   //                                           .rated_torque
+  double max_torque = 0;           // T_2max, the reducer's permissible peak output torque [N·m] .max_torque
+  double sn_exponent = 6.61;       // p of the gears' torque S-N curve T^p·N = const [-]  .sn_exponent
+  bool anyGiven() const { return application_factor > 0 || rated_torque > 0 || max_torque > 0; }
+};
+
+// The motor's catalogue limits for starts after IEC 60034-1 duty S4 (analysis/MotorDuty.h).
+// 0 = not given.                                                          sizing.motor.*
+struct MotorDutyRatings {
+  double locked_rotor_time = 0;    // t_E, permissible locked-rotor (stall) time from warm [s]
+                                   //                                           .locked_rotor_time
+  double no_load_starts = 0;       // Z_0, permissible starts per hour without load and load inertia
+                                   // [1/h]                                     .no_load_starts
+  bool anyGiven() const { return locked_rotor_time > 0 || no_load_starts > 0; }
+};
+
 struct SizingInputs {
   double motor_nominal_torque = 0;  // M_n at the rotor [N·m]                   sizing.motor_nominal_torque
   double motor_nominal_power = 0;   // P_n at the rotor shaft [W]; M_n = P_n/ω_n
@@ -63,6 +86,8 @@ struct SizingInputs {
                                     //                                          .main_bearing
   FatigueInputs fatigue;            // sizing.fatigue.*
   CouplingRatings coupling;         // sizing.coupling.*
+  ReducerRatings reducer;           // sizing.reducer.*
+  MotorDutyRatings motor;           // sizing.motor.*
 };
 
 }  // namespace rollerdyn

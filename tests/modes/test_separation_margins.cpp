@@ -29,6 +29,8 @@ TEST(SeparationMargins, AModeOnTheLayoutsFirstOrderFails) {
   EXPECT_NEAR(m->margin, std::abs(42.2 - 4 * r.separation.omega) / (4 * r.separation.omega), 0.02);
   EXPECT_NEAR(m->damping_ratio, 0.21, 0.05);
   EXPECT_NEAR(m->amplification, 0.5 / m->damping_ratio, 1e-12);
+  // The advice is whole, to its last figure (it was cut at 240 characters).
+  EXPECT_NE(m->reason.find("amplification factor 1/(2*zeta) = "), std::string::npos) << m->reason;
 }
 
 // Three times stiffer, the mode moves up to 85.4 rad/s (Floquet), exactly onto order 8 = 85.4

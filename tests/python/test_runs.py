@@ -112,3 +112,21 @@ def test_fatigue_and_coupling_selection_reach_python_as_the_summary_has_them():
     # a 1 N·m T_Kmax is exceeded by any start
     assert checks["coupling_max_torque"]["verdict"] == "FAIL"
     assert "per start" in str(r) and "Coupling selection after DIN 740-2" in r._repr_html_()
+
+
+def test_gear_spectrum_and_motor_duty_reach_python_as_the_summary_has_them():
+    """K_A after ISO 6336-6 and the starts after IEC 60034-1 are the summary's, rendered in text and HTML."""
+    r = rd.simulate(short("balanced-4cart.yaml", **{
+        "sizing.reducer.application_factor": 1.25, "sizing.reducer.max_torque": 1.0, "sizing.starts_per_hour": 30,
+        "sizing.motor.locked_rotor_time": 12, "sizing.motor.no_load_starts": 500, "simulation.t_end": 10}),
+        model="reduced")
+    g, m = r.sizing["gear"], r.sizing["motor_duty"]
+    assert g["duty"]["applies"] and g["application_factor"] == pytest.approx(
+        g["duty"]["equivalent_torque"] / g["nominal_torque"])
+    assert m["duty_type"] == "S4" and m["start_heat"] == r.summary["start_up"]["rotor_energy_loss"]
+    checks = {c["check"]: c for c in r.sizing["checks"]}
+    assert checks["gear_max_torque"]["verdict"] == "FAIL"  # a 1 N·m T_2max is exceeded by any start
+    assert checks["gear_rated_torque"]["verdict"] == "not applicable"
+    assert "sizing.reducer.rated_torque" in checks["gear_rated_torque"]["reason"]
+    assert checks["motor_starts_per_hour"]["verdict"] in ("pass", "FAIL")
+    assert "reducer load spectrum" in str(r) and "Motor duty after IEC 60034-1" in r._repr_html_()

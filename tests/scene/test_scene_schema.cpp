@@ -290,6 +290,14 @@ sizing:
     temperature_factor: 1.4
     start_factor: 1.2
     shock_factor: 1.5
+  reducer:
+    application_factor: 1.5
+    rated_torque: 8000
+    max_torque: 16000
+    sn_exponent: 8.74
+  motor:
+    locked_rotor_time: 11
+    no_load_starts: 700
 )";
 
 TEST(SceneSchema, FullSceneCoversTheSchema) {
@@ -432,6 +440,12 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_DOUBLE_EQ(s.sizing.rating_rod_end, 2000.0);
   EXPECT_DOUBLE_EQ(s.sizing.rating_crank_pin, 3000.0);
   EXPECT_DOUBLE_EQ(s.sizing.rating_main_bearing, 4000.0);
+  EXPECT_DOUBLE_EQ(s.sizing.reducer.application_factor, 1.5);
+  EXPECT_DOUBLE_EQ(s.sizing.reducer.rated_torque, 8000.0);
+  EXPECT_DOUBLE_EQ(s.sizing.reducer.max_torque, 16000.0);
+  EXPECT_DOUBLE_EQ(s.sizing.reducer.sn_exponent, 8.74);
+  EXPECT_DOUBLE_EQ(s.sizing.motor.locked_rotor_time, 11.0);
+  EXPECT_DOUBLE_EQ(s.sizing.motor.no_load_starts, 700.0);
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ except ImportError as error:  # another interpreter than the one the module was 
 
 from ._core import SceneError
 from .analysis import Modes, MotorFit, fit_motor, modes
-from .runs import Comparison, ResonanceWarning, Result, RunInterrupted, RunWarning, compare, simulate
+from .runs import Comparison, ResonanceWarning, Result, RunInterrupted, RunWarning, compare, signoff, simulate
 from .scene import Scene, scene_keys
 from .studies import OptimizeResult, optimize, sweep
 
@@ -49,6 +49,7 @@ __all__ = [
     "modes",
     "optimize",
     "scene_keys",
+    "signoff",
     "simulate",
     "sweep",
 ]

@@ -279,3 +279,18 @@ def compare(scene):
     if interrupted:
         raise RunInterrupted(result)
     return result
+
+
+def signoff(scene, out_dir=None):
+    """The sign-off sheet of ``scene`` (a Scene or a scene file path), as ``rollerdyn signoff``:
+    a multibody run with its modal analysis, and every check it makes (drive sizing, coupling
+    after DIN 740-2, fatigue, separation margins after API 617/684) with value, limit, method,
+    window and verdict. Returns signoff.json as a dict: ``counts`` (pass, FAIL, not_applicable,
+    total), ``overall``, ``signable``, ``checks``. With ``out_dir``, also writes the run's files,
+    signoff.json, signoff.html and signoff.pdf there (the PDF needs Chromium; without it a
+    RunWarning says so and the JSON and HTML are still written).
+    """
+    sheet, pdf, pdf_missing = _core.signoff(as_scene(scene)._s, "" if out_dir is None else os.fspath(out_dir))
+    if out_dir is not None and pdf_missing:
+        warnings.warn(f"signoff.pdf not written: {pdf_missing}", RunWarning, stacklevel=2)
+    return sheet

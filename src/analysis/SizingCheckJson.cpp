@@ -1,0 +1,55 @@
+#include "analysis/SizingCheckJson.h"
+
+#include <cmath>
+#include <limits>
+
+namespace rollerdyn {
+
+using nlohmann::json;
+
+namespace {
+
+json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+std::string text(const json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+double number(const json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_number() ? it->get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
+json sizingCheckJson(const SizingCheck& c) {
+  return {{"check", c.name},
+          {"what", c.what},
+          {"value", num(c.value)},
+          {"verdict", c.verdict.empty() ? json(nullptr) : json(c.verdict)},
+          {"window", c.window},
+          {"reason", c.reason},
+          {"limit", num(c.limit)},
+          {"passes_when", c.passes_when},
+          {"method", c.method},
+          {"basis", c.basis}};
+}
+
+SizingCheck sizingCheckFromJson(const json& j) {
+  SizingCheck c;
+  if (!j.is_object()) return c;
+  c.name = text(j, "check");
+  c.what = text(j, "what");
+  c.value = number(j, "value");
+  c.verdict = text(j, "verdict");
+  c.window = text(j, "window");
+  c.reason = text(j, "reason");
+  c.limit = number(j, "limit");
+  c.passes_when = text(j, "passes_when");
+  c.method = text(j, "method");
+  c.basis = text(j, "basis");
+  return c;
+}
+
+}  // namespace rollerdyn
