@@ -128,7 +128,6 @@ TEST(TorsionalChain, AStifferShaftTendsToTheRigidCrankshaft) {
   EXPECT_FALSE(rigid.timeseries.has("shaft_torque_1"));
 }
 
-}  // namespace rollerdyn
 
 // The same two throws with a Kelvin-Voigt damper across the segment, d = β·G·I_p/Δz, chosen for a
 // damping ratio ζ = d/(2·√(c·J1·J2/(J1 + J2))) = 0.02: the ringing's amplitude (half the distance
@@ -153,3 +152,5 @@ TEST(TorsionalChain, ADampedShaftRingsDownAtItsDampingRatio) {
   EXPECT_GT(r.energy.damping_dissipation, 0.0);
   EXPECT_LT(std::abs(r.energy.residualRelative()), 1e-6) << r.energy.residual() << " J";
 }
+
+}  // namespace rollerdyn
