@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "analysis/CheckVerdicts.h"
 #include "analysis/SizingChecks.h"
 
 namespace rollerdyn {
@@ -15,24 +16,10 @@ namespace rollerdyn {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-const char* kNotApplicable = "not applicable";
-
-std::string g4(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
-
-std::string verdictOf(double ratio) {
-  if (!std::isfinite(ratio)) return "";
-  return ratio <= 1.0 ? "pass" : "FAIL";
-}
-
-void notApplicable(SizingCheck& c, const std::string& why) {
-  c.verdict = kNotApplicable;
-  c.reason = why;
-  c.value = kNaN;
-}
+using check_words::g4;
+using check_words::kNotApplicable;
+using check_words::notApplicable;
+using check_words::verdictOf;
 
 std::string lifeWords(double v, const char* unit) { return std::isinf(v) ? std::string("no damage") : g4(v) + unit; }
 

@@ -13,14 +13,8 @@ using nlohmann::json;
 
 namespace {
 
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-std::string fmt(const json& v, const char* f = "%.4g") {
-  if (!v.is_number()) return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v.get<double>());
-  return buf;
-}
+json num(double v) { return jsonNumber(v); }
+std::string fmt(const json& v, const char* f = "%.4g") { return jsonNumberText(v, f); }
 
 std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
 

@@ -164,6 +164,8 @@ crankshaft:
   throw_positions: [0.2, 0.5, 0.8]
   bearing_positions: [0, 0.35, 0.65, 1.0]
   bending_stiffness: 2.0e5
+  torsional_stiffness: 7.85e5
+  torsional_damping: 30
 rods:
   model: split
   length: 0.9
@@ -326,6 +328,8 @@ TEST(SceneSchema, EveryKeyReachesTheScene) {
   EXPECT_EQ(s.crankshaft.throw_positions, (std::vector<double>{0.2, 0.5, 0.8}));
   EXPECT_EQ(s.crankshaft.bearing_positions, (std::vector<double>{0, 0.35, 0.65, 1.0}));
   EXPECT_DOUBLE_EQ(s.crankshaft.bending_stiffness, 2.0e5);
+  EXPECT_DOUBLE_EQ(s.crankshaft.torsional_stiffness, 7.85e5);
+  EXPECT_DOUBLE_EQ(s.crankshaft.torsional_damping, 30);
   EXPECT_DOUBLE_EQ(s.simulation.t_end, 3.0);
   EXPECT_DOUBLE_EQ(s.simulation.accuracy, 1e-5);
   EXPECT_EQ(s.simulation.integrator, "CPodes");
