@@ -194,6 +194,13 @@ double relativeDifference(const SimTK::Vector& a, const SimTK::Vector& b, double
 
 RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control) {
   const Scene& sc = model.scene();
+  // Its closed-form loops turn one rigid crankshaft: a torsional chain would be held rigid without
+  // a word (the scene parser refuses the pair; a caller that sets the formulation in code meets
+  // this instead).
+  if (model.crankshaftTorsion())
+    throw std::invalid_argument(
+        "multibody model: the minimal formulation turns one rigid crankshaft; the torsional chain "
+        "(crankshaft.torsional_stiffness) needs simulation.formulation: constrained");
   const SimTK::MultibodySystem& system = model.system();
   RunResult run;
   run.model = "multibody";
