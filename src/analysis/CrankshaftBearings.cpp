@@ -1,5 +1,7 @@
 #include "analysis/CrankshaftBearings.h"
 
+#include "analysis/ShaftTorsion.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -221,10 +223,10 @@ CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const Ste
   // A cam's force does not act at the crank radius: no torque split for a cam drive.
   out.segment_torque_peak.assign(n, kNaN);
   // A torsional chain's segments between throws carry the springs' torques the run simulated
-  // (their throws' inertia included); the segment from the coupling to the first throw is rigid.
-  out.chain_torques = run.timeseries.has("shaft_torque_1") && run.timeseries.rows.size() == t.size();
-  std::vector<std::vector<double>> chain(n);
-  for (int q = 1; out.chain_torques && q < n; ++q) chain[q] = run.timeseries.column("shaft_torque_" + std::to_string(q));
+  // (their throws' inertia included), whose steady peaks ShaftTorsion.h computes once; the segment
+  // from the coupling to the first throw is rigid.
+  const ShaftTorsionSummary torsion = computeShaftTorsion(sc, run, w, true);
+  out.chain_torques = torsion.applies;
   bool any = false;
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (!(t[i] >= w.t_begin && t[i] <= w.t_end)) continue;
@@ -237,10 +239,9 @@ CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const Ste
       beyond -= L.torque[i][j];
       double& pm = out.bending_moment_peak[q];
       if (std::isfinite(M)) pm = std::isfinite(pm) ? std::max(pm, M) : M;
-      const double T = out.chain_torques && q >= 1 ? chain[q][i] : beyond;
-      if (!sc.hasCamDrive() && std::isfinite(T)) {
+      if (!sc.hasCamDrive() && !(out.chain_torques && q >= 1) && std::isfinite(beyond)) {
         double& pt = out.segment_torque_peak[q];
-        pt = std::isfinite(pt) ? std::max(pt, std::abs(T)) : std::abs(T);
+        pt = std::isfinite(pt) ? std::max(pt, std::abs(beyond)) : std::abs(beyond);
       }
     }
     any = true;
@@ -249,6 +250,8 @@ CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const Ste
     out.reason = "no reactions row in the steady window";
     return out;
   }
+  for (int q = 1; out.chain_torques && q < n; ++q)
+    out.segment_torque_peak[q] = torsion.segments[q - 1].torque_peak_steady;
   out.available = true;
   return out;
 }
