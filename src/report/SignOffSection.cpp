@@ -5,6 +5,7 @@
 
 #include "io/FieldFormat.h"
 #include "report/HtmlReport.h"
+#include "report/SectionRows.h"
 #include "report/SizingSection.h"
 
 namespace rollerdyn {
@@ -13,15 +14,9 @@ namespace {
 
 using nlohmann::json;
 
-std::string text(const json& v) { return v.is_string() ? htmlEscape(v.get<std::string>()) : "n/a"; }
-
-void row(std::ostringstream& h, const std::string& what, const std::string& value, const char* unit,
-         const std::string& note = "") {
-  h << "<tr><td>" << htmlEscape(what) << "</td><td class=\"n\">" << value << "</td><td>" << unit << "</td><td>" << note
-    << "</td></tr>\n";
-}
-
-bool applies(const json& w) { return jsonMember(w, "applies").is_boolean() && jsonMember(w, "applies").get<bool>(); }
+using section_rows::applies;
+using section_rows::row;
+using section_rows::text;
 
 std::string dominant(const json& w, const std::string& unit) {
   const json& top = jsonMember(w, "dominant_cycles");
