@@ -6,6 +6,7 @@
 
 #include <unsupported/Eigen/FFT>
 
+#include "physics/CartReducedInertia.h"
 #include "reduced/ReducedModel.h"
 
 namespace rollerdyn::modes {
@@ -88,6 +89,35 @@ ExcitationOrders excitationOrders(const Scene& scene, double omega, int max_orde
     if (inJ || inM) e.all.push_back(k);
   }
   return e;
+}
+
+std::vector<double> throwOrderShares(const Scene& scene, double omega, int max_order) {
+  const ReducedModel model(scene);
+  int n = 256;
+  while (n < 4 * max_order) n *= 2;  // well above the highest order asked for
+  const int carts = scene.carts.count;
+  std::vector<std::vector<double>> J(carts, std::vector<double>(n)), M(carts, std::vector<double>(n));
+  std::vector<CartEvaluation> eval;
+  for (int i = 0; i < n; ++i) {
+    model.loadTorque(2 * M_PI * i / n, omega, &eval);
+    for (int j = 0; j < carts; ++j) {
+      M[j][i] = -eval[j].generalized_force;
+      J[j][i] = cartReducedInertia(scene.cartMassWithRodShare(j), scene.rods, eval[j].pose);
+    }
+  }
+  std::vector<double> share(max_order, 0.0);
+  for (int j = 0; j < carts; ++j) {
+    const std::vector<std::complex<double>> cJ = complexHarmonics(J[j]), cM = complexHarmonics(M[j]);
+    std::vector<double> hQ(max_order + 1, 0.0);
+    double largest = 0;
+    for (int k = 1; k <= max_order; ++k) {
+      hQ[k] = std::abs(cM[k] + 0.5 * omega * omega * std::complex<double>(0.0, double(k)) * cJ[k]);
+      largest = std::max(largest, hQ[k]);
+    }
+    if (largest > 0)
+      for (int k = 1; k <= max_order; ++k) share[k - 1] = std::max(share[k - 1], hQ[k] / largest);
+  }
+  return share;
 }
 
 }  // namespace rollerdyn::modes

@@ -64,4 +64,12 @@ ExcitationOrders excitationOrders(const Scene& scene, double omega, int max_orde
 // The layout's phase factor for order k (see above) [-].
 double layoutFactor(const Scene& scene, int k);
 
+// The orders that drive the crankshaft's own torsional modes (a torsional chain, ChainModes.h):
+// each throw carries its own cart's torque Q_j(θ_j) = M_j(θ_j, ω) + ½·J_j'(θ_j)·ω² (the cart's
+// loads and its share of J_n2), and no phase sum cancels its harmonics: the layout cancels them
+// only where the throws' torques add up, at the coupling. Element k-1: the largest over the carts
+// of |Q_j,k| / max_k' |Q_j,k'|, for orders k = 1..max_order [-]. The rods' own weight is left out
+// (it adds order 1, far below a shaft's modes).
+std::vector<double> throwOrderShares(const Scene& scene, double omega, int max_order);
+
 }  // namespace rollerdyn::modes

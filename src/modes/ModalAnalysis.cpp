@@ -95,9 +95,10 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   r.chain = crankshaftChainModes(scene);
   if (r.chain.applies)
     r.approximations.push_back(
-        {"rigid crankshaft", "the modes, the Floquet analysis, the Campbell diagram and the separation margins take "
-                             "the crankshaft as one rigid body (crankshaft.torsional_stiffness is given: the chain's "
-                             "own modes are listed apart, " + r.chain.approximations + ")"});
+        {"rigid crankshaft", "the modes, the Floquet analysis, the Campbell diagram and the coupling mode's "
+                             "separation margins take the crankshaft as one rigid body (crankshaft.torsional_stiffness "
+                             "is given: the chain's own modes are listed apart and get margins of their own, " +
+                             r.chain.approximations + ")"});
 
   r.scene = scene.name;
   r.elastic = scene.coupling.type == CouplingType::Elastic;
@@ -224,6 +225,14 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   r.separation = separationMargins(r.elastic, r.steady, r.frozen.empty() ? none : r.frozen[0].torsional_natural,
                                    r.frozen.empty() ? none : r.frozen[0].torsional,
                                    r.frozen.empty() ? none : r.frozen[0].torsional_damping, r.orders, r.campbell);
+  if (r.chain.applies && r.steady.found && r.steady.omega_mean > 0) {
+    // The throws' orders up to 1.3 times the chain's highest mode (at least the layout's 24).
+    double p_top = 0;
+    for (const ChainModeBand& b : r.chain.modes) p_top = std::max(p_top, b.p_max);
+    const int orders = std::clamp(int(std::ceil(1.3 * p_top / r.steady.omega_mean)), 24, 400);
+    addChainSeparation(r.separation, r.chain, r.elastic, r.steady,
+                       throwOrderShares(scene, r.steady.omega_mean, orders));
+  }
 
   // 5. Stability charts.
   if (o.charts && r.steady.found) {

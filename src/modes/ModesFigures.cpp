@@ -23,6 +23,73 @@ std::string g(double v, const char* f = "%.4g") {
   return b;
 }
 
+// The separation margins on the Campbell diagram (gnuplot commands for its preamble): for each
+// order k that drives the coupling mode the wedge 0.9·k·ω … 1.1·k·ω over the drawn speeds, red
+// where its margin at the operating speed FAILs, green where it passes; at the operating speed a
+// bar over the natural frequency the margins are taken from (ω_n of the damped pair, or its band)
+// and each order's margin beside it. Nothing where the margins do not apply.
+std::string separationShading(const SeparationMargins& sep, double wmax) {
+  if (!sep.applicable || !(wmax > 0)) return "";
+  std::ostringstream os;
+  int object = 100;  // clear of the objects gnuplot numbers by default
+  double p_lo = NAN, p_hi = NAN;
+  for (const SeparationMargin& m : sep.rows) {
+    if (m.mode != "coupling mode") continue;  // the diagram draws the coupling mode only
+    p_lo = m.p_low;
+    p_hi = m.p_high;
+    if (m.verdict != "pass" && m.verdict != "FAIL") continue;
+    const double k = m.order, lo = (1 - sep.required) * k * wmax, hi = (1 + sep.required) * k * wmax;
+    os << "set object " << object++ << " polygon from 0,0 to " << wmax << "," << lo << " to " << wmax << "," << hi
+       << " to 0,0 fc rgb '" << (m.verdict == "FAIL" ? "#d62728" : "#2ca02c")
+       << "' fs transparent solid 0.15 noborder behind\n";
+    os << "set label " << object++ << " 'SM_{" << m.order << "} = " << g(100 * m.margin, "%.3g") << " % " << m.verdict
+       << "' at " << sep.omega << "," << m.excitation << " left offset 0.8,0 font ',9' tc rgb '"
+       << (m.verdict == "FAIL" ? "#d62728" : "#1a7a1a") << "' front\n";
+  }
+  if (std::isfinite(p_lo) && std::isfinite(p_hi)) {
+    const double half = p_hi > p_lo ? 0.0 : 0.01 * p_lo;  // a single ω_n: a short bar to be seen
+    os << "set arrow " << object++ << " from " << sep.omega << "," << p_lo - half << " to " << sep.omega << ","
+       << p_hi + half << " nohead lw 4 lc rgb '#000000' front\n";
+    os << "set label " << object++ << " 'ω_n' at " << sep.omega << "," << 0.5 * (p_lo + p_hi)
+       << " right offset -0.6,0 font ',9' front\n";
+  }
+  return os.str();
+}
+
+// The separation margins' table of the report (the same rows as modes.json and the console).
+std::string separationHtml(const SeparationMargins& sep) {
+  std::ostringstream h;
+  h << "<h3>Separation margins of the torsional modes (API 617 / API 684 practice)</h3>\n";
+  if (!sep.applicable) {
+    h << "<p>n/a: " << htmlEscape(sep.not_applicable) << "</p>\n";
+    return h.str();
+  }
+  h << "<p class=\"small\">SM = |p − k·ω|/(k·ω) at the operating crank speed ω = " << g(sep.omega, "%.5g")
+    << " rad/s, required ≥ " << g(100 * sep.required, "%.3g")
+    << " %; p the natural frequency ω_n of the coupling mode's damped pair (√λ, the Campbell diagram's undamped "
+       "frequency, beside it); AF = 1/(2ζ) the amplification factor.</p>\n"
+    << "<table>\n<tr><th>mode</th><th>order k</th><th>k·ω [rad/s]</th><th>exciting torque [N·m]</th><th>ω_n [rad/s]</th>"
+       "<th>√λ [rad/s]</th><th>SM [%]</th><th>AF</th><th>verdict</th><th>why</th></tr>\n";
+  auto band = [](double lo, double hi) { return lo == hi ? g(lo, "%.5g") : g(lo, "%.5g") + " … " + g(hi, "%.5g"); };
+  for (const SeparationMargin& m : sep.rows)
+    h << "<tr><td>" << htmlEscape(m.mode) << "</td><td class=\"n\">" << m.order << "</td><td class=\"n\">"
+      << g(m.excitation, "%.5g")
+      << "</td><td class=\"n\">" << g(m.exciting_torque, "%.4g") << "</td><td class=\"n\">"
+      << band(m.p_low, m.p_high) << " (" << htmlEscape(m.frequency_source) << ")</td><td class=\"n\">"
+      << band(m.undamped_low, m.undamped_high) << "</td><td class=\"n\">" << g(100 * m.margin, "%.3g")
+      << "</td><td class=\"n\">" << g(m.amplification, "%.3g") << "</td><td>" << htmlEscape(m.verdict)
+      << "</td><td>" << htmlEscape(m.reason) << "</td></tr>\n";
+  h << "</table>\n";
+  if (!sep.start_crossings.empty()) {
+    h << "<p class=\"small\">Passed through in a start (below the operating speed, judged by the start's torques): ";
+    for (size_t i = 0; i < sep.start_crossings.size(); ++i)
+      h << (i ? ", " : "") << "order " << sep.start_crossings[i].order << " at ω = "
+        << g(sep.start_crossings[i].omega, "%.4g") << " rad/s";
+    h << ".</p>\n";
+  }
+  return h.str();
+}
+
 }  // namespace
 
 FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
@@ -129,13 +196,17 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
       pre << "set arrow from " << r.steady.omega_mean << ",graph 0 to " << r.steady.omega_mean
           << ",graph 1 nohead dt 2 lc rgb 'black'\nset label 'operating speed' at " << r.steady.omega_mean
           << ",graph 0.97 left offset 0.5,0\n";
+    pre << separationShading(r.separation, wmax);
     s.preamble = pre.str();
     jobs.push_back(plotJob(s, dir + "/campbell"));
     set.figures.push_back(fileOf(dir, "campbell",
                                  "Campbell diagram: solid grey lines k·ω (forced resonance where the torsional "
                                  "frequency meets them), dotted red lines k·ω/2 (principal parametric resonance, "
                                  "2p = k·ω), for the orders k that excite this layout; crank speed varied as by a "
-                                 "frequency converter."));
+                                 "frequency converter. Shaded: the band within 10 % of k·ω for each order k that "
+                                 "drives the coupling mode (the separation margin of API 617 / API 684 practice), "
+                                 "red where the mode's natural frequency at the operating speed (the vertical bar, "
+                                 "ω_n of the damped pair) lies inside it (FAIL), green where it stays outside (pass)."));
   }
   // Stability charts.
   for (size_t n = 0; n < r.charts.size(); ++n) {
@@ -295,6 +366,7 @@ std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, con
         << g(c.omega_band_low) << " … " << g(c.omega_band_high) << "</td></tr>\n";
     h << "</table>\n";
   }
+  h << separationHtml(r.separation);
   if (spectrum && spectrum->ok) {
     h << "<h3>Order spectrum of the run (steady window, " << spectrum->revolutions << " revolutions)</h3>\n"
       << "<table>\n<tr><th>signal</th><th>strongest orders (amplitude)</th><th>share at whole orders</th></tr>\n";

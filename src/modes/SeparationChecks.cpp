@@ -57,18 +57,29 @@ std::vector<SizingCheck> separationChecks(const SeparationMargins& s) {
   }
   for (const SeparationMargin& m : s.rows) {
     if (!counts(m)) continue;
-    SizingCheck c = base("separation_margin_order_" + std::to_string(m.order),
-                         "separation margin of the coupling's torsional mode from crank order " +
-                             std::to_string(m.order) + ", SM = |p − k·ω|/(k·ω), ≥ 10 %");
+    const bool coupling = m.mode == "coupling mode";
+    const std::string mode = coupling ? "the coupling's torsional mode" : m.mode;
+    std::string name = "separation_margin_order_" + std::to_string(m.order);
+    if (!coupling) name = "separation_margin_" + m.mode.substr(0, m.mode.find(" (")) + "_order_" + std::to_string(m.order);
+    for (char& ch : name)
+      if (ch == ' ') ch = '_';
+    SizingCheck c = base(name, "separation margin of " + mode + " from crank order " + std::to_string(m.order) +
+                                   ", SM = |p − k·ω|/(k·ω), ≥ 10 %");
     c.window = "steady motion at ω = " + g4(s.omega) + " rad/s";
     c.verdict = m.verdict == "n/a" ? "not applicable" : m.verdict;
     c.value = c.verdict == "not applicable" ? NAN : m.margin;
     c.reason = m.reason;
     const std::string p = m.p_low == m.p_high ? g4(m.p_low) + " rad/s" : g4(m.p_low) + " ... " + g4(m.p_high) + " rad/s";
-    c.basis = "natural frequency p = " + p + " of the coupling mode's damped pair, from the " + m.frequency_source +
-              " (ζ = " + g4(m.damping_ratio) + ", amplification factor 1/(2ζ) = " + g4(m.amplification) +
-              "); orders whose harmonic of the load and inertia torque is at least 1 % of the largest drive the mode; "
-              "ω the mean crank speed of the steady motion";
+    if (coupling)
+      c.basis = "natural frequency p = " + p + " of the coupling mode's damped pair, from the " + m.frequency_source +
+                " (ζ = " + g4(m.damping_ratio) + ", amplification factor 1/(2ζ) = " + g4(m.amplification) +
+                "); orders whose harmonic of the load and inertia torque is at least 1 % of the largest drive the "
+                "mode; ω the mean crank speed of the steady motion";
+    else
+      c.basis = "natural frequency p = " + p + " of the " + m.mode + ", the " + m.frequency_source +
+                " (crankshaft.torsional_stiffness, the throws' inertias and their carts' reduced inertias); orders "
+                "whose harmonic in one throw's load and inertia torque is at least 1 % of its largest drive it; ω "
+                "the mean crank speed of the steady motion";
     out.push_back(c);
   }
   return out;

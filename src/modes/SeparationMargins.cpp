@@ -92,4 +92,67 @@ SeparationMargins separationMargins(bool elastic, const SteadyMotion& steady, co
   return s;
 }
 
+void addChainSeparation(SeparationMargins& s, const CrankshaftChainModes& chain, bool elastic,
+                        const SteadyMotion& steady, const std::vector<double>& throw_shares) {
+  if (!chain.applies || !steady.found || throw_shares.empty()) return;
+  if (!s.applicable) {
+    if (elastic) return;  // the coupling mode's margins failed for a reason that holds for the chain too
+    s.applicable = true;  // a rigid coupling: the chain's modes are the drive's torsional modes
+    s.not_applicable.clear();
+    s.omega = steady.omega_mean;
+  }
+  const double w = s.omega;
+  for (size_t m = elastic ? 1 : 0; m < chain.modes.size(); ++m) {
+    const ChainModeBand& band = chain.modes[m];
+    const std::string name = "crankshaft mode " + std::to_string(m + 1) + " (twists most: " + band.shape + ")";
+    int governing = 0;
+    double governing_margin = INFINITY;
+    for (size_t i = 0; i < throw_shares.size(); ++i) {
+      const double k = double(i + 1), sm = distanceToBand(k * w, band.p_min, band.p_max) / (k * w);
+      if (throw_shares[i] >= kForcedOrderShare && sm < governing_margin) {
+        governing_margin = sm;
+        governing = int(i + 1);
+      }
+    }
+    // The orders too weak to drive the mode that lie within 10 % of its band: counted, not listed
+    // (a wide band, where a throw's inertia nearly vanishes at its dead centres, holds dozens).
+    int weak_near = 0;
+    for (size_t i = 0; i < throw_shares.size(); ++i) {
+      const double k = double(i + 1);
+      if (throw_shares[i] < kForcedOrderShare && distanceToBand(k * w, band.p_min, band.p_max) / (k * w) < s.required)
+        ++weak_near;
+    }
+    for (size_t i = 0; i < throw_shares.size(); ++i) {
+      const int k = int(i + 1);
+      SeparationMargin r;
+      r.mode = name;
+      r.order = k;
+      r.excitation = k * w;
+      r.p_low = r.undamped_low = band.p_min;
+      r.p_high = r.undamped_high = band.p_max;
+      r.frequency_source = "crankshaft chain's frozen-angle band, undamped";
+      r.margin = distanceToBand(r.excitation, band.p_min, band.p_max) / r.excitation;
+      const bool drives = throw_shares[i] >= kForcedOrderShare;
+      if (!drives || !(k == governing || r.margin < s.required)) continue;
+      const std::string weak =
+          weak_near ? fmt("; %.0f weaker orders (below 1 %% of a throw's largest harmonic) lie within 10 %% of the "
+                          "band, too weak to drive it", weak_near)
+                    : std::string();
+      if (r.margin >= s.required) {
+        r.verdict = "pass";
+        r.reason = fmt("k*omega = %.4g rad/s is %.3g %% away from the crankshaft mode's band (>= 10 %%); the nearest "
+                       "order that drives a throw", r.excitation, 100 * r.margin) + weak;
+      } else {
+        r.verdict = "FAIL";
+        r.reason = fmt("k*omega = %.4g rad/s is only %.3g %% away from the crankshaft mode's band (< 10 %%): the "
+                       "throws' torques drive the shaft's twist near resonance; move the mode (crankshaft."
+                       "torsional_stiffness, the throws' spacing) or damp it (crankshaft.torsional_damping) and "
+                       "read the run's shaft_torque_k columns",
+                       r.excitation, 100 * r.margin);
+      }
+      s.rows.push_back(r);
+    }
+  }
+}
+
 }  // namespace rollerdyn::modes

@@ -30,6 +30,7 @@
 
 #include "analysis/SizingCheck.h"
 #include "modes/Campbell.h"
+#include "modes/ChainModes.h"
 #include "modes/DriveOrbit.h"
 #include "modes/ExcitationOrders.h"
 #include "modes/FrozenModes.h"
@@ -39,6 +40,8 @@ namespace rollerdyn::modes {
 inline constexpr double kRequiredSeparationMargin = 0.10;  // API 617 / API 684 practice [-]
 
 struct SeparationMargin {
+  std::string mode = "coupling mode";  // the torsional mode kept away from: the coupling mode, or
+                                  // "crankshaft mode N" of a torsional chain (ChainModes.h)
   int order = 0;                  // k
   double excitation = NAN;        // k·ω at the operating speed [rad/s]
   double exciting_torque = NAN;   // amplitude of the order's harmonic at the coupling [N·m]
@@ -74,6 +77,20 @@ SeparationMargins separationMargins(bool elastic, const SteadyMotion& steady, co
                                     const Band& frozen_undamped, const Band& frozen_damping,
                                     const ExcitationOrders& orders,
                                     const CampbellDiagram& campbell);
+
+// The crankshaft's own torsional modes (a torsional chain, `chain`) added to the margins, from
+// the orders that drive a throw (`throw_shares`, ExcitationOrders.h throwOrderShares: element k-1
+// the share of order k; orders from 1 to its size are considered). Per mode: the driving order
+// nearest to the mode's frozen-angle band (the governing margin) and every other driving order
+// within 10 %; the orders too weak to drive it that lie within 10 % are counted in the governing
+// row's reason (a wide band, where a throw's inertia nearly vanishes at its dead centres, holds
+// dozens of them). Where the
+// coupling is elastic the chain's first mode is the coupling mode, judged above from the rigid
+// crankshaft's Floquet frequency, and is not repeated. The chain's band is undamped (the shaft's
+// damping and the motor's slope are left out: ChainModes.h), so no damping ratio is given. With a
+// rigid coupling the chain's modes are the drive's only ones: the margins then apply to them.
+void addChainSeparation(SeparationMargins& s, const CrankshaftChainModes& chain, bool elastic,
+                        const SteadyMotion& steady, const std::vector<double>& throw_shares);
 
 // The margins as checks of a sign-off (SeparationChecks.cpp): one per order that drives the mode,
 // value SM_k, limit 10 %; an order too weak to drive it is a "not applicable" check only within

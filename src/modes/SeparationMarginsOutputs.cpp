@@ -12,6 +12,7 @@ nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlo
 nlohmann::json separationJson(const SeparationMargins& s) {
   nlohmann::json j;
   j["method"] = "separation margin SM = |p - k*omega|/(k*omega) of the natural frequency p of the coupling mode's damped pair "
+                "(and of each crankshaft mode's frozen-angle band where the crankshaft is a torsional chain) "
                 "from each order k that drives it, at the operating crank speed omega; required >= 10 % "
                 "(API 617 / API 684 practice)";
   j["applicable"] = s.applicable;
@@ -28,7 +29,8 @@ nlohmann::json separationJson(const SeparationMargins& s) {
   for (const SeparationMargin& m : s.rows) {
     fail = fail || m.verdict == "FAIL";
     judged = judged || m.verdict != "n/a";
-    rows.push_back({{"order", m.order},
+    rows.push_back({{"mode", m.mode},
+                    {"order", m.order},
                     {"excitation_frequency", num(m.excitation)},
                     {"exciting_torque", num(m.exciting_torque)},
                     {"mode_frequency_low", num(m.p_low)},
@@ -85,6 +87,14 @@ std::string separationText(const SeparationMargins& s) {
     if (std::abs(m.undamped_low / m.p_low - 1) > 0.01 || std::abs(m.undamped_high / m.p_high - 1) > 0.01) {
       std::snprintf(b, sizeof b, "; undamped %.4g ... %.4g rad/s, the Campbell diagram's", m.undamped_low, m.undamped_high);
       undamped = b;
+    }
+    if (m.mode != "coupling mode") {
+      if (&m == &s.rows.front() || (&m)[-1].mode != m.mode) os << "    " << m.mode << ":\n";
+      std::snprintf(b, sizeof b, "      order %d: k*omega = %.4g rad/s, mode band p = %s (%s): SM = %.3g %%: %s\n", m.order,
+                    m.excitation, p.c_str(), m.frequency_source.c_str(), 100 * m.margin,
+                    (m.verdict + (m.verdict == "pass" ? "" : ", " + m.reason)).c_str());
+      os << b;
+      continue;
     }
     std::snprintf(b, sizeof b, "    order %d: k*omega = %.4g rad/s, mode p = %s (%s, damping ratio %.3g%s): SM = %.3g %%, AF = %.3g: %s\n",
                   m.order, m.excitation, p.c_str(), m.frequency_source.c_str(), m.damping_ratio, undamped.c_str(),
