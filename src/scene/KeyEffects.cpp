@@ -92,6 +92,10 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
     if (key == "sizing.bearing_rating.crank_pin" || key == "sizing.bearing_rating.main_bearing")
       return "the reduced model computes no crank-pin or main-bearing forces (run the multibody model for their lives)";
   }
+  // The ratings turn joint loads into lives; without reactions no joint is loaded (a rating names
+  // the joint whose life it gives, and that joint's loads are the reactions).
+  if (startsWith(key, "sizing.bearing_rating.") && !sc.simulation.reactions)
+    return "no reactions are computed (simulation.reactions: false), so no joint's load and no rating life";
   if (key == "crankshaft.bending_stiffness")
     return "with one E·I along the whole shaft on rigid supports the main bearings' reactions do not depend on "
            "its value, with two bearings or more (the continuous beam's reactions follow from the positions alone)";

@@ -85,6 +85,19 @@ TEST(KeysWithoutEffectInRuns, TheCrankOffsetOfASingleCartChangesNothing) {
   EXPECT_FALSE(named(summaryOf({"simulation.t_end=6", "crank.offset_deg=80"}), "crank.offset_deg"));
 }
 
+// A bearing's rating turns its load into a life; without reactions no joint is loaded (the
+// consistency harness's seed 3577: sizing.bearing_rating.main_bearing under simulation.reactions:
+// false changed nothing and was not named).
+TEST(KeysWithoutEffectInRuns, BearingRatingsChangeNothingWithoutReactions) {
+  const std::vector<std::string> off = {"simulation.t_end=6", "simulation.reactions=false"};
+  expectWithoutEffect(off, "sizing.bearing_rating.guide_roller", "43000", "47000");
+  expectWithoutEffect(off, "sizing.bearing_rating.rod_end", "250000", "275000");
+  // With reactions the rating gives the guide rollers' life: read, and not named.
+  EXPECT_FALSE(named(summaryOf({"simulation.t_end=6", "simulation.reactions=true",
+                                "sizing.bearing_rating.guide_roller=43000"}),
+                     "sizing.bearing_rating.guide_roller"));
+}
+
 TEST(KeysWithoutEffectInRuns, ASwitchOffAfterTheRunsEndChangesNothing) {
   expectWithoutEffect({"simulation.t_end=6", "motor.stop.brake_torque=50"}, "motor.stop.t_off", "100", "110");
   const json within = summaryOf({"simulation.t_end=6", "motor.stop.t_off=4"});
