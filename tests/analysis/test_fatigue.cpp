@@ -23,7 +23,9 @@ namespace {
 // -2, 1, -3, 5, -1, 3, -4, 4, -2 of its figure, counted by hand with the three-point rules:
 //   A-B (range 3) half, B-C (4) half, E-F (-1..3, range 4) one cycle, C-D (8) half,
 //   residue D-G (9), G-H (8), H-I (6) halves.
-// The standard's table of the example: range 9: 0.5, 8: 1.0, 6: 0.5, 4: 1.5, 3: 0.5 (10, 7, 5: 0).
+// The standard's table of the example: range 9: 0.5, 8: 1.0, 6: 0.5, 4: 1.5, 3: 0.5 (10, 7, 5: 0),
+// the same counts that independent implementations document as their check against this figure
+// (MATLAB's rainflow reference page; the Python package rainflow's tests).
 TEST(Rainflow, ReproducesTheWorkedExampleOfAstmE1049) {
   const std::vector<RainflowCycle> cycles = rainflow({-2, 1, -3, 5, -1, 3, -4, 4, -2});
   std::map<double, double> count_by_range;
