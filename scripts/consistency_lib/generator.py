@@ -265,8 +265,37 @@ def generate(seed, attempt=0, plan_rates=None):
              "reduced": reduced}
     if sizing:
         scene["sizing"] = sizing
+    _maybe_torsional_chain(seed, attempt, scene, model, notes)
     plan = make_plan(rng, scene, model, plan_rates or {})
     return Machine(seed, attempt, scene, model, plan, notes)
+
+
+def _maybe_torsional_chain(seed, attempt, scene, model, notes):
+    """The crankshaft as a torsional chain on some multibody machines (crankshaft.torsional_stiffness,
+    docs/models.md): throws 0.3 m apart in a random order along the shaft, a steel shaft's G·I_p
+    (a 70 ... 140 mm shaft, 2e5 ... 3e6 N·m²), damped or not, under the constrained formulation the
+    chain needs (with lagged friction normals). Drawn from a stream of its own, so every other
+    machine of a seed is the one it was before the chain was added."""
+    crng = random.Random(f"rollerdyn-consistency/{seed}/{attempt}/chain")
+    n = scene["carts"]["count"]
+    if model != "multibody" or n < 2 or crng.random() >= 0.08:
+        return
+    crank = scene["crank"]
+    rod_inertia = scene["rods"]["model"] == "distributed" or (scene["rods"]["model"] == "split"
+                                                              and scene["rods"].get("mass", 0) > 0)
+    if not (rod_inertia or crank.get("inertia_per_crank") or crank.get("shaft_inertia")):
+        crank["inertia_per_crank"] = 1.0  # each throw of the chain needs an inertia of its own
+    order = list(range(n))
+    crng.shuffle(order)
+    chain = {"throw_positions": [float(f"{0.2 + 0.3 * k:.3g}") for k in order],
+             "torsional_stiffness": float(f"{_log(crng, 2e5, 3e6):.3g}")}
+    if crng.random() < 0.5:
+        chain["torsional_damping"] = float(f"{_log(crng, 20, 500):.3g}")
+    scene["crankshaft"] = chain
+    scene["simulation"]["formulation"] = "constrained"
+    if scene["loads"].get("guide_friction", {}).get("coefficient", 0.0) > 0:
+        scene["loads"]["guide_friction"]["normal_force"] = "lagged"
+    notes.append("crankshaft as a torsional chain")
 
 
 DEFAULT_RATES = {
@@ -300,7 +329,9 @@ def same_physics(scene):
     """Whether the two models integrate the same equations (docs/models.md): rods split or
     massless, no guide friction, exact kinematics, CVODE in the reduced model. Then the motion,
     the drive torques and every verdict drawn from them agree to the integration tolerance."""
-    return (scene["rods"]["model"] in ("split", "massless")
+    # A torsional chain is the multibody model's alone: the reduced model keeps a rigid crankshaft.
+    return ("torsional_stiffness" not in scene.get("crankshaft", {})
+            and scene["rods"]["model"] in ("split", "massless")
             and scene["loads"].get("guide_friction", {}).get("coefficient", 0.0) == 0.0
             and scene["reduced"].get("kinematics", "exact") == "exact"
             and scene["reduced"].get("integrator", "cvode") == "cvode")
