@@ -174,8 +174,8 @@ class ModelRuns {
     std::vector<std::vector<double>> model;  // per signal, at the first n measured times
   };
 
-  // The model at scaled point u on the first n measured times.
-  Trial run(const std::vector<double>& u, std::size_t n) {
+  // The model at scaled point u on the first n measured times (at `accuracy`, 0: the runs' own).
+  Trial run(const std::vector<double>& u, std::size_t n, double accuracy = 0) {
     Trial trial;
     if (o_.interrupt && o_.interrupt->load()) {
       trial.reason = "interrupted";
@@ -184,7 +184,7 @@ class ModelRuns {
     runs_.fetch_add(1);
     std::vector<std::string> overrides = o_.base_overrides;
     overrides.push_back("simulation.t_end=" + formatNumber(data_.t[n - 1]));
-    overrides.push_back("simulation.accuracy=" + formatNumber(accuracy_));
+    overrides.push_back("simulation.accuracy=" + formatNumber(accuracy > 0 ? accuracy : accuracy_));
     overrides.push_back("simulation.output_step=" + formatNumber(output_step_));
     for (std::size_t k = 0; k < keys_.size(); ++k)
       overrides.push_back(keys_[k].info.key + "=" + formatNumber(keys_[k].toValue(u[k])));
@@ -602,6 +602,21 @@ IdentifyResult runIdentify(const IdentifyOptions& o) {
         for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - d.signals[s].values[i];
         res.signals[s].rms_fit = rmsOf(diff, 0, n_fit);
         res.signals[s].rms_holdout = rmsOf(diff, n_fit, n_all);
+      }
+      // The integration's own error: the same run at 1/100 of the accuracy. Far below σ_s it is
+      // no part of the residuals; near σ_s the cost is flat within it and the fit cannot settle.
+      const ModelRuns::Trial fine = runs.run(fit.u, n_all, res.accuracy / 100);
+      for (std::size_t s = 0; s < d.signals.size() && fine.ok; ++s) {
+        std::vector<double> diff(n_all);
+        for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - fine.model[s][i];
+        SignalFit& f = res.signals[s];
+        f.integration_error = rmsOf(diff, 0, n_all);
+        if (f.integration_error > 0.1 * f.sigma)
+          res.warnings.push_back({"integration", {}, f.integration_error,
+                                  "the integration's own error in " + f.name + " (RMS " +
+                                      formatNumber(std::round(f.integration_error / f.sigma * 100) / 100) +
+                                      " of its σ) is not far below the measurement noise: tighten --accuracy "
+                                      "(now " + formatNumber(res.accuracy) + ")"});
       }
     } else {
       for (SignalFit& f : res.signals) f.rms_fit = f.rms_holdout = kNaN;

@@ -17,6 +17,7 @@
 
 #include <atomic>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -71,10 +72,12 @@ struct SignalFit {
   double rms_fit = 0;        // RMS of model − data over the fitted part [unit]
   double rms_holdout = 0;    // the same over the held-out part [unit] (NaN without one)
   double data_rms = 0;       // RMS of the data's deviation from its mean over the whole span [unit]
+  double integration_error = std::numeric_limits<double>::quiet_NaN();  // RMS of the run at the estimate
+                             // minus the same run at 1/100 of the accuracy [unit]: the integration's own error
 };
 
 struct IdentifyWarning {
-  std::string kind;               // correlated | undetermined | at_bound
+  std::string kind;               // correlated | undetermined | weak_direction | at_bound | integration | holdout
   std::vector<std::string> keys;  // the keys concerned
   double value = 0;               // correlation (correlated), relative std (undetermined), the bound (at_bound)
   std::string text;               // the warning in words for the console and the JSON

@@ -158,10 +158,19 @@ LmOutcome levenbergMarquardt(const ResidualBatch& evaluate, const std::vector<do
       }
     }
     if (!accepted) {
-      std::ostringstream why_not;
-      why_not << "no step lowered the cost in 8 tries (damping up to " << lambda
-              << "); the cost is flat within the integration's noise or the runs beside the point fail";
-      out.reason = why_not.str();
+      // The cost is flat within the integration's own noise (or the runs beside the point fail).
+      // The undamped step, measured in standard uncertainties of the estimate (√(gᵀA⁻¹g/σ̂²)),
+      // says whether that matters: below 0.3 the estimate is settled well within what it is known to
+      // (data with noise near the integration's own, e.g. a noise-free record of a model run, end here).
+      const double shift = std::sqrt(std::max(predicted, 0.0) / sigma2);
+      std::ostringstream why;
+      why << "no step lowered the cost in 8 tries (the cost is flat within the integration's noise); the "
+             "Gauss-Newton step would move the estimate by "
+          << text(shift) << " of its standard uncertainty";
+      out.converged = shift < 0.3;
+      out.reason = (out.converged ? "converged within the integration's noise: " : "") + why.str() +
+                   (out.converged ? "" : "; tighten --accuracy or check the runs near the estimate") + " (iteration " +
+                   std::to_string(it) + ")";
       return out;
     }
   }

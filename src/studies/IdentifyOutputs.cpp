@@ -63,6 +63,7 @@ nlohmann::json identifyJson(const IdentifyOptions& o, const IdentifyResult& r) {
                             {"rms_fit", jsonNumber(s.rms_fit)},
                             {"rms_holdout", jsonNumber(s.rms_holdout)},
                             {"data_rms", jsonNumber(s.data_rms)},
+                            {"integration_error", jsonNumber(s.integration_error)},
                             {"samples_fit", s.samples_fit},
                             {"samples_holdout", s.samples_holdout}});
   j["warnings"] = nlohmann::json::array();

@@ -177,19 +177,20 @@ TEST(Identify, CircuitMotorStartGivesCouplingBackInTheMultibodyModel) {
 }
 
 // Coverage: the 2σ interval of each key must hold the true value about as often as a Gaussian
-// estimate's holds it (95.45 %). Over 50 noise seeds (reduced model, about 0.2 s a fit) the count
-// of hits is Binomial(50, 0.9545) when the uncertainties are right: mean 47.7, and below 44 with
-// a chance of 0.7 % (its 1st percentile is 44). Uncertainties half their true size would give
-// about 68 % coverage (34 of 50), twice their size 99.99 %: the upper bound 50 cannot catch the
-// latter, so the mean of |error|/σ is checked too: E|z| = √(2/π) = 0.80 for z ~ N(0, 1), and the
-// mean of 50 has standard deviation 0.60/√50 = 0.085, so 0.8 ± 0.3 (3.5 standard deviations);
-// σ twice too large would give 0.4.
+// estimate's holds it (95.45 %). Over 20 noise seeds (reduced model, about 0.2 s a fit; the 50
+// seeds of the issue, 15 s, are a claim of `rollerdyn validate`) the count of hits is
+// Binomial(20, 0.9545) when the uncertainties are right: mean 19.1, below 16 with a chance of
+// 0.2 % (16 is its 1st percentile). Uncertainties half their true size would give about 68 %
+// coverage (14 of 20). Twice their size (99.99 %) the count cannot show, so the mean of |error|/σ
+// is checked too: E|z| = √(2/π) = 0.80 for z ~ N(0, 1), the mean of 20 has standard deviation
+// 0.60/√20 = 0.13, so 0.80 ± 0.35 (2.6 standard deviations, 1 % two-sided); σ twice too large
+// would give 0.40, half as large 1.60.
 TEST(Identify, TwoSigmaIntervalsCoverTheTruthAsOftenAsTheyShould) {
   const std::string scene = model("balanced-4cart.yaml");
   const double truths[2] = {150000, 6000};
   const RunResult truth =
       truthRun(scene, {"coupling.stiffness=150000", "coupling.damping=6000"}, 2.5, 0.005, "reduced");
-  const int seeds = 50;
+  const int seeds = 20;
   int hits[2] = {0, 0};
   double mean_z[2] = {0, 0};
   for (int seed = 1; seed <= seeds; ++seed) {
@@ -208,8 +209,8 @@ TEST(Identify, TwoSigmaIntervalsCoverTheTruthAsOftenAsTheyShould) {
     }
   }
   for (int k = 0; k < 2; ++k) {
-    EXPECT_GE(hits[k], 44) << k;
-    EXPECT_NEAR(mean_z[k], std::sqrt(2 / M_PI), 0.3) << k;
+    EXPECT_GE(hits[k], 16) << k;
+    EXPECT_NEAR(mean_z[k], std::sqrt(2 / M_PI), 0.35) << k;
     std::cout << "key " << k << ": " << hits[k] << " of " << seeds << " within 2σ, mean |error|/σ " << mean_z[k] << "\n";
   }
 }
