@@ -14,7 +14,8 @@ namespace rollerdyn {
 
 // identify.json without its figures: scene, model, data file, overrides, keys (value, std,
 // relative_std, bounds, start, log_scale, at_bound), correlation (keys and matrix), signals (σ,
-// where it came from, RMS residual of the fit and of the held-out part, samples), warnings, the
+// where it came from, RMS residual of the fit and of the held-out part, the integration's own
+// error, samples), warnings, the
 // fit's statistics (N, RSS, σ̂², condition, weakest direction) and convergence (converged, reason,
 // iterations, runs, failed runs, accuracy, output step, wall time).
 nlohmann::json identifyJson(const IdentifyOptions& options, const IdentifyResult& result);
