@@ -60,6 +60,7 @@ Subcommand addMotorCommand(CLI::App& app);       // MotorCommand.cpp: `rollerdyn
 Subcommand addModesCommand(CLI::App& app);       // ModesCommand.cpp: `rollerdyn modes`
 Subcommand addSchemaCommand(CLI::App& app);      // SchemaCommand.cpp: `rollerdyn schema`
 Subcommand addSignoffCommand(CLI::App& app);     // SignoffCommand.cpp: `rollerdyn signoff`
+Subcommand addIdentifyCommand(CLI::App& app);    // IdentifyCommand.cpp: `rollerdyn identify`
 
 // out/<scene name>/ unless the user named a folder.
 std::string defaultOutDir(const std::string& scene_name);

@@ -1,6 +1,7 @@
 #include "cli/ValidationItemList.h"
 
 #include "io/AtomicFile.h"
+#include "studies/IdentifyValidation.h"
 #include "studies/StudyChecks.h"
 
 namespace rollerdyn::cli {
@@ -36,6 +37,7 @@ std::vector<validation::NamedItem> validationItems(const std::string& out_dir) {
       {"energy balance of the shipped scenes", &energyBalanceChecks},
       {"drive sizing recomputed from the run's tables", &driveSizingChecks},
       {"sweep rows and optimization evaluations against separate runs", &sweepRowChecks},
+      {"identification of known coupling values from noisy synthetic measurements", &identificationChecks},
       {"torsional modes and Floquet stability",
        [out_dir](const ItemContext& ctx) {
          const modes::ModesValidationResult m =

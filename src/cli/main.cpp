@@ -146,7 +146,8 @@ int main(int argc, char** argv) {
   // sweep, cam-profile, chain: the studies of the papers (src/cli/SweepCommand.cpp, ...)
   const Subcommand studies[] = {addSweepCommand(app), addCamProfileCommand(app), addChainCommand(app),
                                addOptimizeCommand(app), addMotorCommand(app), addModesCommand(app),
-                               addSchemaCommand(app), addSignoffCommand(app)};
+                               addSchemaCommand(app), addSignoffCommand(app),
+                               addIdentifyCommand(app)};
 
   // Usage errors: exit code 2 and one line (src/cli/UsageError.h); help and version: exit 0.
   if (const std::string bad = checkCommandWord(app, argc, argv); !bad.empty()) return usageError(bad);

@@ -1,9 +1,10 @@
-// sweep and optimize for Python: the studies of `rollerdyn sweep` and `rollerdyn optimize`
-// (studies/Sweep.h, Optimizer.h) on a scene kept in memory, with the objective or constraints
-// optionally computed by Python functions from each usable run.
+// sweep, optimize and identify for Python: the studies of `rollerdyn sweep`, `rollerdyn optimize`
+// and `rollerdyn identify` (studies/Sweep.h, Optimizer.h, Identify.h) on a scene kept in memory,
+// with the objective or constraints optionally computed by Python functions from each usable run.
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <map>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -15,6 +16,8 @@
 #include "python/PyConvert.h"
 #include "python/PyScene.h"
 #include "scene/SceneSchema.h"
+#include "studies/Identify.h"
+#include "studies/IdentifyOutputs.h"
 #include "studies/Optimizer.h"
 #include "studies/Sweep.h"
 #include "studies/SweepDesigns.h"
@@ -195,6 +198,41 @@ void bindStudies(py::module_& m) {
       },
       py::arg("scene"), py::arg("ranges"), py::arg("minimize"), py::arg("constraints"), py::arg("model"),
       py::arg("method"), py::arg("max_evals"), py::arg("threads"));
+
+  m.def(
+      "identify",
+      [](const PyScene& scene, const std::string& data_path, const std::string& data_text,
+         const std::vector<std::string>& signals, const std::vector<std::string>& free,
+         const std::vector<std::tuple<std::string, double, double>>& bounds,
+         const std::map<std::string, double>& noise, const std::string& model, double holdout, bool global,
+         int max_iterations, int threads) {
+        IdentifyOptions o;
+        setScene(o, scene);
+        // A file is read as the command line reads it; a table from Python comes as CSV text.
+        o.data = data_text.empty() ? readMeasuredData(data_path) : parseMeasuredData(data_text, data_path);
+        o.signals = signals;
+        o.free_keys = free;
+        for (const auto& [key, lower, upper] : bounds) o.bounds[key] = {lower, upper};
+        o.noise = noise;
+        o.model = model;
+        o.holdout = holdout;
+        o.global = global;
+        o.max_iterations = max_iterations;
+        o.threads = threads;
+        std::atomic<bool> stop{false};
+        o.interrupt = &stop;
+        bool interrupted = false;
+        const IdentifyResult r = runInterruptible([&o] { return runIdentify(o); }, stop, &interrupted);
+        py::dict curves;  // per signal: measured and model on the measured times
+        for (std::size_t s = 0; s < r.signals.size(); ++s)
+          curves[py::str(r.signals[s].name)] =
+              py::make_tuple(r.data_values.empty() ? std::vector<double>{} : r.data_values[s],
+                             r.model_values.empty() ? std::vector<double>{} : r.model_values[s]);
+        return py::make_tuple(toPython(identifyJson(o, r)), r.t, curves, describeIdentify(r), interrupted);
+      },
+      py::arg("scene"), py::arg("data_path"), py::arg("data_text"), py::arg("signals"), py::arg("free"), py::arg("bounds"),
+      py::arg("noise"), py::arg("model"), py::arg("holdout"), py::arg("global_"), py::arg("max_iterations"),
+      py::arg("threads"));
 }
 
 }  // namespace rollerdyn::python

@@ -27,7 +27,7 @@ std::vector<std::string> splitFields(const std::string& line) {
 
 }  // namespace
 
-Table parseCsv(const std::string& text, const std::string& file_label) {
+Table parseCsv(const std::string& text, const std::string& file_label, CsvLayout* layout) {
   Table table;
   std::istringstream in(text);
   std::string line;
@@ -44,6 +44,10 @@ Table parseCsv(const std::string& text, const std::string& file_label) {
           throw std::runtime_error(file_label + ":" + std::to_string(line_no) +
                                    ": expected a header of column names, got an empty name");
       for (const std::string& f : fields) table.columns.push_back(stripUnit(f));  // io/Table.h
+      if (layout) {
+        layout->header = fields;
+        layout->header_line = line_no;
+      }
       header = false;
       continue;
     }
@@ -53,22 +57,26 @@ Table parseCsv(const std::string& text, const std::string& file_label) {
                                std::to_string(fields.size()));
     std::vector<double> row;
     row.reserve(fields.size());
-    for (const std::string& f : fields) {
+    for (std::size_t c = 0; c < fields.size(); ++c) {
+      const std::string& f = fields[c];
       char* end = nullptr;
       errno = 0;
       const double v = std::strtod(f.c_str(), &end);
       if (f.empty() || end != f.c_str() + f.size())
-        throw std::runtime_error(file_label + ":" + std::to_string(line_no) +
-                                 ": expected a number, got '" + f + "'");
+        throw std::runtime_error(file_label + ":" + std::to_string(line_no) + ": column '" + table.columns[c] +
+                                 "' (column " + std::to_string(c + 1) + "): expected a number, got '" + f + "'");
       row.push_back(v);
     }
     table.rows.push_back(std::move(row));
+    if (layout) layout->row_lines.push_back(line_no);
   }
   if (header) throw std::runtime_error(file_label + ": expected a header row, got an empty file");
   return table;
 }
 
-Table readCsvFile(const std::string& path) { return parseCsv(readFileContents(path), path); }
+Table readCsvFile(const std::string& path, CsvLayout* layout) {
+  return parseCsv(readFileContents(path), path, layout);
+}
 
 OutputFolder readOutputFolder(const std::string& dir) {
   namespace fs = std::filesystem;

@@ -81,8 +81,8 @@ TEST(ReportCsv, NumbersAsAStreamWithPrecision12WritesThem) {
 TEST(ReportCsv, MalformedInputNamesFileAndLine) {
   EXPECT_EQ(messageOf([] { parseCsv("", "a.csv"); }), "a.csv: expected a header row, got an empty file");
   EXPECT_EQ(messageOf([] { parseCsv("t,x\n1,2\n3\n", "a.csv"); }), "a.csv:3: expected 2 fields, got 1");
-  EXPECT_EQ(messageOf([] { parseCsv("t,x\n1,abc\n", "a.csv"); }), "a.csv:2: expected a number, got 'abc'");
-  EXPECT_EQ(messageOf([] { parseCsv("t,x\n1,\n", "a.csv"); }), "a.csv:2: expected a number, got ''");
+  EXPECT_EQ(messageOf([] { parseCsv("t,x\n1,abc\n", "a.csv"); }), "a.csv:2: column 'x' (column 2): expected a number, got 'abc'");
+  EXPECT_EQ(messageOf([] { parseCsv("t,x\n1,\n", "a.csv"); }), "a.csv:2: column 'x' (column 2): expected a number, got ''");
   EXPECT_EQ(messageOf([] { parseCsv("t,,x\n", "a.csv"); }),
             "a.csv:1: expected a header of column names, got an empty name");
   EXPECT_NO_THROW(parseCsv("t,x\r\n1,2\r\n", "crlf.csv"));

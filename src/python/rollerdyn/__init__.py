@@ -30,11 +30,12 @@ from ._core import SceneError
 from .analysis import Modes, MotorFit, fit_motor, modes
 from .runs import Comparison, ResonanceWarning, Result, RunInterrupted, RunWarning, compare, signoff, simulate
 from .scene import Scene, scene_keys
-from .studies import OptimizeResult, optimize, sweep
+from .studies import IdentifyResult, OptimizeResult, identify, optimize, sweep
 
 __version__ = _core.version
 __all__ = [
     "Comparison",
+    "IdentifyResult",
     "Modes",
     "MotorFit",
     "OptimizeResult",
@@ -46,6 +47,7 @@ __all__ = [
     "SceneError",
     "compare",
     "fit_motor",
+    "identify",
     "modes",
     "optimize",
     "scene_keys",

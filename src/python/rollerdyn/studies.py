@@ -101,3 +101,86 @@ def optimize(scene, params, minimize, constraints=(), *, model="multibody", meth
     if interrupted:
         raise RunInterrupted(result)
     return result
+
+
+class IdentifyResult:
+    """What ``rollerdyn identify`` writes and prints: ``summary`` (identify.json: keys with value,
+    std and bounds, correlation, signals, warnings, convergence), ``estimates`` (the keys as a
+    DataFrame), ``fit`` (t, and per signal the measured values and the model at the estimate),
+    ``converged``, ``warnings`` and the console's table as ``text``."""
+
+    def __init__(self, summary, t, curves, text):
+        self.summary = summary
+        self.text = text
+        columns = {"t": t}
+        for name, (measured, model) in curves.items():
+            columns[f"{name}_measured"] = measured
+            if len(model):
+                columns[f"{name}_model"] = model
+        self.fit = pd.DataFrame(columns) if len(t) else pd.DataFrame()
+        self.estimates = pd.DataFrame(summary["keys"]).set_index("key")
+
+    @property
+    def converged(self):
+        return self.summary["convergence"]["converged"]
+
+    @property
+    def warnings(self):
+        """The warnings in words (correlated keys, undetermined keys, estimates on a bound)."""
+        return [w["text"] for w in self.summary["warnings"]]
+
+    def __getitem__(self, key):
+        """(value, std) of a free key, in its scene unit."""
+        row = self.estimates.loc[key]
+        return row["value"], row["std"]
+
+    def __repr__(self):
+        keys = ", ".join(f"{k['key']}={k['value']:.6g}±{k['std']:.2g}" if k["std"] is not None
+                         else f"{k['key']}={k['value']:.6g}" for k in self.summary["keys"])
+        state = "converged" if self.converged else "NOT converged"
+        return f"<rollerdyn.IdentifyResult {keys} ({state}; {len(self.warnings)} warnings)>"
+
+    def _repr_html_(self):
+        return f"<pre>{html.escape(self.text)}</pre>"
+
+
+def _measured_csv(data):
+    """A DataFrame of measurements as the CSV text the command line reads: t and output columns,
+    headers with their units (name[unit]), added here where the DataFrame's names are bare."""
+    d = pd.DataFrame(data)
+    header = []
+    for c in d.columns:
+        c = str(c)
+        unit = _core.column_unit(c) if "[" not in c else ""
+        header.append(f"{c}[{unit}]" if unit else c)
+    return d.to_csv(index=False, header=header, float_format="%.17g", lineterminator="\n")
+
+
+def identify(scene, data, free, bounds=None, noise=None, *, signals=None, model="multibody", holdout=0.3,
+             global_search=False, max_iterations=30, threads=2):
+    """The values of the ``free`` scene keys that reproduce measured signals, with their standard
+    uncertainties, as ``rollerdyn identify`` (docs/identify.md).
+
+    ``data``: a CSV file (t[s] and output columns with units, e.g. omega_crank[rad/s]) or a
+    DataFrame with a column t and output columns (bare names get rollerdyn's units). ``bounds``:
+    {key: (lower, upper)} where the schema has no finite range. ``noise``: {column: σ} in the
+    column's unit; others are estimated from the residuals. ``signals``: the columns to fit
+    (default: every measured column). ``holdout``: the fraction of the span
+    at its end that is predicted, not fitted. Ctrl-C raises RunInterrupted with the result so far.
+    """
+    s = as_scene(scene)
+    if isinstance(data, (str, bytes)) or hasattr(data, "__fspath__"):
+        path, text = str(data), ""
+    else:
+        path, text = "data", _measured_csv(data)
+    if isinstance(free, str):
+        free = [k for k in free.split(",") if k]
+    ranges = [(k, float(lo), float(hi)) for k, (lo, hi) in (bounds or {}).items()]
+    sigma = {k: float(v) for k, v in (noise or {}).items()}
+    summary, t, curves, description, interrupted = _core.identify(
+        s._s, path, text, list(signals or []), list(free), ranges, sigma, model, float(holdout), bool(global_search), int(max_iterations),
+        int(threads))
+    result = IdentifyResult(summary, t, curves, description)
+    if interrupted:
+        raise RunInterrupted(result)
+    return result

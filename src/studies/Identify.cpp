@@ -1,0 +1,388 @@
+// The identification's set-up and model runs (Identify.h); the numerics are in IdentifyFit.cpp,
+// the files and the console text in IdentifyOutputs.cpp.
+//
+// Choices (docs/identify.md):
+// - σ_s not given: first 1e-2 × the RMS of the signal's deviation from its own mean (a fit that
+//   weighs each signal by its own swing), then, after that fit, the RMS residual of that signal,
+//   and one refit from the first optimum: the weights of a maximum-likelihood fit with Gaussian
+//   noise of unknown level per signal (the residuals estimate it).
+// - Finite differences: relative step 1e-3 of each key's value (1e-3 of its range at 0), in the
+//   scaled parameter. The integration's error at relative accuracy ε moves a signal by ~ε·|y|, and
+//   with adaptive steps that error is not smooth in the parameter; the difference quotient then
+//   errs by ~ε/1e-3 relative to the signal, against the key's relative sensitivity S. At
+//   ε = 1e-8 (the default for identify: min(the scene's accuracy, 1e-8)) that is 1e-5/S, well
+//   below 1 % for any key that moves a signal by more than 0.1 % per 1 % change.
+// - The model's output every min(scene output step, median measured spacing), interpolated
+//   linearly onto the measured times.
+#include "studies/Identify.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <nlopt.hpp>
+
+#include "report/SceneTable.h"
+#include "scene/DidYouMean.h"
+#include "scene/SceneSchema.h"
+#include "studies/IdentifyFit.h"
+#include "studies/IdentifyRuns.h"
+
+namespace rollerdyn {
+
+namespace {
+
+using identify::joinList;
+using identify::KeyMap;
+using identify::median;
+using identify::ModelRuns;
+using identify::rmsOf;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kRelativeStep = 1e-3;  // finite-difference step, relative to the key's value (header)
+constexpr double kDefaultAccuracy = 1e-8;
+
+// The global stage: DIRECT-L (Gablonsky and Kelley 2001) over the scaled box, 30 runs per key;
+// its best point (or u0 when nothing beats it) starts Levenberg–Marquardt.
+struct GlobalSearch {
+  const ResidualBatch* evaluate;
+  std::vector<double> best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  const std::atomic<bool>* interrupt = nullptr;
+};
+
+double globalObjective(const std::vector<double>& u, std::vector<double>&, void* data) {
+  GlobalSearch& g = *static_cast<GlobalSearch*>(data);
+  if (g.interrupt && g.interrupt->load()) throw nlopt::forced_stop();
+  const ResidualEvaluation e = (*g.evaluate)({u})[0];
+  if (!e.ok) return 1e300;
+  double cost = 0;
+  for (double v : e.r) cost += v * v;
+  if (cost < g.best_cost) {
+    g.best_cost = cost;
+    g.best = u;
+  }
+  return cost;
+}
+
+std::vector<double> globalStart(const ResidualBatch& evaluate, const std::vector<double>& u0,
+                                const std::atomic<bool>* interrupt) {
+  const unsigned p = static_cast<unsigned>(u0.size());
+  GlobalSearch g{&evaluate, u0, std::numeric_limits<double>::infinity(), interrupt};
+  std::vector<double> scratch;
+  globalObjective(u0, scratch, &g);
+  nlopt::opt opt(nlopt::GN_DIRECT_L, p);
+  opt.set_lower_bounds(std::vector<double>(p, 0.0));
+  opt.set_upper_bounds(std::vector<double>(p, 1.0));
+  opt.set_maxeval(30 * static_cast<int>(p));
+  opt.set_min_objective(globalObjective, &g);
+  std::vector<double> u = u0;
+  double f = 0;
+  try {
+    opt.optimize(u, f);
+  } catch (const std::exception&) {
+    // stopped (interrupt, a failure inside NLopt): the best point seen so far is kept
+  }
+  return g.best;
+}
+
+std::string percent(double v) { return formatNumber(std::round(v * 1000.0) / 10.0) + " %"; }
+
+// Correlated pairs, keys the data do not determine, estimates on a bound, and the combination the
+// data determine worst when JᵀJ is (near) singular (docs/identify.md, "Warnings").
+void addWarnings(IdentifyResult& res, const std::vector<bool>& no_effect, bool singular) {
+  const std::size_t p = res.keys.size();
+  for (std::size_t a = 0; a < p; ++a)
+    for (std::size_t b = a + 1; b < p; ++b) {
+      const double rho = res.correlation[a][b];
+      if (std::isfinite(rho) && std::abs(rho) > 0.95)
+        res.warnings.push_back({"correlated", {res.keys[a].key, res.keys[b].key}, rho,
+                                res.keys[a].key + " and " + res.keys[b].key +
+                                    " cannot be told apart by these data (correlation " + formatNumber(std::round(rho * 1000) / 1000) +
+                                    "): the fit trades one for the other; fix one with --set or measure a signal "
+                                    "that separates them"});
+    }
+  bool undetermined = false;
+  for (std::size_t k = 0; k < p; ++k) {
+    const IdentifiedKey& key = res.keys[k];
+    if (no_effect[k]) {
+      undetermined = true;
+      res.warnings.push_back({"undetermined", {key.key}, kNaN,
+                              "the measured signals do not change with " + key.key +
+                                  ": these data cannot determine it (fix it with --set, or measure a signal it moves)"});
+    } else if (!(key.relative_std <= 0.5)) {
+      undetermined = true;
+      res.warnings.push_back({"undetermined", {key.key}, key.relative_std,
+                              "these data do not determine " + key.key + ": its relative standard uncertainty is " +
+                                  (std::isfinite(key.relative_std) ? percent(key.relative_std) : std::string("unbounded")) +
+                                  " (above 50 %)"});
+    }
+    if (key.at_bound)
+      res.warnings.push_back({"at_bound", {key.key}, key.value,
+                              key.key + " = " + key.text + " lies on a bound of the search (" + formatNumber(key.lower) +
+                                  ":" + formatNumber(key.upper) + "): the best value may lie beyond it and its "
+                                  "uncertainty means little; widen --bounds"});
+  }
+  if (undetermined || singular || res.condition > 1e3) {
+    std::string combo;
+    for (std::size_t k = 0; k < p; ++k) {
+      const double v = res.weakest_direction[k];
+      if (std::abs(v) < 0.01) continue;
+      combo += std::string(combo.empty() ? (v < 0 ? "-" : "") : (v < 0 ? " - " : " + ")) +
+               formatNumber(std::round(std::abs(v) * 100) / 100) + "·Δ" + res.keys[k].key + "/" + res.keys[k].key;
+    }
+    res.warnings.push_back({"weak_direction", {}, res.condition,
+                            std::string(singular ? "JᵀJ is singular" : "JᵀJ is near singular") + " (condition " +
+                                formatNumber(std::round(res.condition * 10) / 10) +
+                                "): the data determine worst the relative change " + combo});
+  }
+}
+
+void checkOptions(const IdentifyOptions& o, const MeasuredData& d) {
+  if (o.model != "multibody" && o.model != "reduced")
+    throw std::invalid_argument("identify: --model: expected multibody or reduced, got '" + o.model + "'");
+  if (!(o.holdout >= 0.0 && o.holdout <= 0.9))
+    throw std::invalid_argument("identify: --holdout: expected a fraction in [0, 0.9], got " + formatNumber(o.holdout));
+  if (d.t.size() < 3 || d.signals.empty())
+    throw std::invalid_argument("identify: expected measured data with t and at least one signal");
+  for (const auto& [name, sigma] : o.noise) {
+    if (!d.find(name)) {
+      std::vector<std::string> names;
+      for (const auto& s : d.signals) names.push_back(s.name);
+      throw std::invalid_argument("identify: --noise " + name + ": expected a measured column" + didYouMean(name, names) +
+                                  " (" + joinList(names) + "), got one the data do not have");
+    }
+    if (!(sigma > 0 && std::isfinite(sigma)))
+      throw std::invalid_argument("identify: --noise " + name + ": expected σ > 0, got " + formatNumber(sigma));
+  }
+}
+
+// res.signals with each signal's name, unit and RMS deviation; σ_s given, or first 1e-2 × that
+// RMS deviation (file comment). `given` receives which σ_s are given.
+std::vector<double> startingSigmas(const IdentifyOptions& o, const MeasuredData& d, IdentifyResult& res,
+                                   std::vector<bool>& given) {
+  std::vector<double> sigma(d.signals.size());
+  given.assign(d.signals.size(), false);
+  for (std::size_t s = 0; s < d.signals.size(); ++s) {
+    const auto& v = d.signals[s].values;
+    double mean = 0;
+    for (double x : v) mean += x;
+    mean /= static_cast<double>(v.size());
+    double dev = 0, top = 0;
+    for (double x : v) {
+      dev += (x - mean) * (x - mean);
+      top = std::max(top, std::abs(x));
+    }
+    SignalFit f;
+    f.name = d.signals[s].name;
+    f.unit = d.signals[s].unit;
+    f.data_rms = std::sqrt(dev / static_cast<double>(v.size()));
+    res.signals.push_back(f);
+    const auto g = o.noise.find(f.name);
+    given[s] = g != o.noise.end();
+    sigma[s] = given[s] ? g->second : std::max({1e-2 * f.data_rms, 1e-9 * top, 1e-300});
+  }
+  return sigma;
+}
+
+// Forward-difference steps in u: kRelativeStep of each key's starting value (of its range at 0).
+std::vector<double> differenceSteps(const std::vector<KeyMap>& keys) {
+  std::vector<double> steps;
+  for (const KeyMap& km : keys) {
+    const double x = km.info.start;
+    const double size = std::abs(x) > 0 ? std::abs(x) : km.info.upper - km.info.lower;
+    steps.push_back(std::clamp(kRelativeStep * size / km.slope(std::max(x, km.info.lower)), 1e-9, 0.1));
+  }
+  return steps;
+}
+
+// The estimate into res.keys, and at it the central-difference Jacobian in the keys' own units,
+// the covariance, correlations and warnings (a failure beside the estimate leaves no uncertainty).
+void estimateWithUncertainty(IdentifyResult& res, const std::vector<KeyMap>& keys, const LmOutcome& fit,
+                             const std::vector<double>& step, const ResidualBatch& evaluate) {
+  const std::size_t p = keys.size();
+  std::vector<double> x(p), scale(p);
+  for (std::size_t k = 0; k < p; ++k) {
+    IdentifiedKey info = keys[k].info;
+    info.text = formatNumber(keys[k].toValue(fit.u[k]));
+    info.value = std::stod(info.text);
+    info.at_bound = fit.u[k] <= 1e-6 || fit.u[k] >= 1 - 1e-6;
+    x[k] = info.value;
+    scale[k] = std::abs(info.value) > 0 ? std::abs(info.value) : info.upper - info.lower;
+    res.keys.push_back(info);
+  }
+  if (fit.r.empty()) return;
+  std::vector<std::vector<double>> points;
+  for (std::size_t k = 0; k < p; ++k) {
+    std::vector<double> a = fit.u, b = fit.u;
+    a[k] = std::min(1.0, fit.u[k] + step[k]);
+    b[k] = std::max(0.0, fit.u[k] - step[k]);
+    points.push_back(a);
+    points.push_back(b);
+  }
+  const std::vector<ResidualEvaluation> e = evaluate(points);
+  std::vector<std::vector<double>> J(fit.r.size(), std::vector<double>(p, 0.0));
+  for (std::size_t k = 0; k < p; ++k) {
+    const ResidualEvaluation* hi = e[2 * k].ok ? &e[2 * k] : nullptr;  // a failed side: the estimate itself
+    const ResidualEvaluation* lo = e[2 * k + 1].ok ? &e[2 * k + 1] : nullptr;
+    if (!hi && !lo) {
+      res.converged = false;
+      res.convergence = "the runs beside the estimate failed (" + e[2 * k].reason + "): no uncertainty";
+      return;
+    }
+    const double x_hi = hi ? keys[k].toValue(points[2 * k][k]) : x[k];
+    const double x_lo = lo ? keys[k].toValue(points[2 * k + 1][k]) : x[k];
+    for (std::size_t i = 0; i < fit.r.size(); ++i)
+      J[i][k] = ((hi ? hi->r[i] : fit.r[i]) - (lo ? lo->r[i] : fit.r[i])) / (x_hi - x_lo);
+  }
+  const CovarianceEstimate c = estimateCovariance(J, fit.cost, scale);
+  res.sigma_hat2 = c.sigma_hat2;
+  res.correlation = c.correlation;
+  res.condition = c.condition;
+  res.weakest_direction = c.weakest_direction;
+  for (std::size_t k = 0; k < p; ++k) {
+    res.keys[k].std = c.std[k];
+    res.keys[k].relative_std = res.keys[k].value != 0 ? c.std[k] / std::abs(res.keys[k].value) : kNaN;
+  }
+  addWarnings(res, c.no_effect, c.singular);
+  // A key the signals do not change with at all leaves no estimate: not converged. Keys the data
+  // determine poorly (a near-singular JᵀJ, however near) are warnings: how near depends on the
+  // integration's noise in the finite differences, not on the data alone.
+  std::string without_effect;
+  for (std::size_t k = 0; k < p; ++k)
+    if (c.no_effect[k]) without_effect += (without_effect.empty() ? "" : ", ") + res.keys[k].key;
+  if (!without_effect.empty() && res.converged) {
+    res.converged = false;
+    res.convergence = "the data do not determine " + without_effect +
+                      ": the measured signals do not change with it (JᵀJ is singular; see the warnings)";
+  }
+}
+
+// The run at the estimate over the whole span: the RMS errors of the fitted and the held-out part,
+// and the integration's own error (the same run at 1/100 of the accuracy: far below σ_s it is no
+// part of the residuals; near σ_s the cost is flat within it and the fit cannot settle).
+void holdoutCheck(IdentifyResult& res, ModelRuns& runs, const MeasuredData& d, const std::vector<double>& u,
+                  std::size_t n_fit) {
+  const std::size_t n_all = d.t.size();
+  const ModelRuns::Trial all = runs.run(u, n_all);
+  res.t = d.t;
+  for (const MeasuredSignal& m : d.signals) res.data_values.push_back(m.values);
+  if (!all.ok) {
+    for (SignalFit& f : res.signals) f.rms_fit = f.rms_holdout = kNaN;
+    res.warnings.push_back({"holdout", {}, kNaN, "the run at the estimate over the whole span failed (" + all.reason +
+                                                     "): no prediction of the held-out part"});
+    return;
+  }
+  res.model_values = all.model;
+  for (std::size_t s = 0; s < d.signals.size(); ++s) {
+    std::vector<double> diff(n_all);
+    for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - d.signals[s].values[i];
+    res.signals[s].rms_fit = rmsOf(diff, 0, n_fit);
+    res.signals[s].rms_holdout = rmsOf(diff, n_fit, n_all);
+  }
+  const ModelRuns::Trial fine = runs.run(u, n_all, res.accuracy / 100);
+  for (std::size_t s = 0; s < d.signals.size() && fine.ok; ++s) {
+    std::vector<double> diff(n_all);
+    for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - fine.model[s][i];
+    SignalFit& f = res.signals[s];
+    f.integration_error = rmsOf(diff, 0, n_all);
+    if (f.integration_error > 0.1 * f.sigma)
+      res.warnings.push_back({"integration", {}, f.integration_error,
+                              "the integration's own error in " + f.name + " (RMS " +
+                                  formatNumber(std::round(f.integration_error / f.sigma * 100) / 100) +
+                                  " of its σ) is not far below the measurement noise: tighten --accuracy (now " +
+                                  formatNumber(res.accuracy) + ")"});
+  }
+}
+
+}  // namespace
+
+IdentifyResult runIdentify(const IdentifyOptions& o) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const MeasuredData d = identify::selectSignals(o.data, o.signals);
+  checkOptions(o, d);
+  const SceneInput input = o.scene_input ? *o.scene_input : readSceneInput(o.scene_path);
+  const Scene base = parseSceneInput(input, o.base_overrides);
+  const std::vector<KeyMap> keys = identify::resolveKeys(o, sceneParameterRows(input, o.base_overrides));
+  const std::size_t p = keys.size();
+
+  IdentifyResult res;
+  res.scene = o.scene_path.empty() ? base.name : o.scene_path;
+  res.model = o.model;
+  res.data_file = d.file;
+  res.accuracy = o.accuracy > 0 ? o.accuracy : std::min(base.simulation.accuracy, kDefaultAccuracy);
+  std::vector<double> spacing;
+  for (std::size_t i = 1; i < d.t.size(); ++i) spacing.push_back(d.t[i] - d.t[i - 1]);
+  res.output_step = std::min(base.simulation.output_step, median(spacing));
+  res.t_end = d.t.back();
+  res.t_fit_end = d.t.front() + (1.0 - o.holdout) * (d.t.back() - d.t.front());
+  std::size_t n_fit = 0;
+  while (n_fit < d.t.size() && d.t[n_fit] <= res.t_fit_end * (1 + 1e-12)) ++n_fit;
+  if (n_fit * d.signals.size() <= p + 1)
+    throw std::invalid_argument("identify: the fitted part of the data (" + std::to_string(n_fit) +
+                                " samples) is too short for " + std::to_string(p) + " keys; lower --holdout");
+
+  ModelRuns runs(o, d, input, keys, res.accuracy, res.output_step);
+  std::vector<bool> given;
+  std::vector<double> sigma = startingSigmas(o, d, res, given);
+  const ResidualBatch evaluate = [&](const std::vector<std::vector<double>>& points) {
+    std::vector<ResidualEvaluation> out;
+    for (ModelRuns::Trial& t : runs.runAll(points, n_fit)) {
+      ResidualEvaluation e;
+      e.ok = t.ok;
+      e.reason = t.reason;
+      if (t.ok) e.r = identify::weightedResiduals(d, t.model, sigma, n_fit);
+      out.push_back(std::move(e));
+    }
+    return out;
+  };
+
+  LmSettings lm;
+  lm.max_iterations = o.max_iterations;
+  lm.interrupt = o.interrupt;
+  lm.fd_step = differenceSteps(keys);
+  int fit_number = 1;
+  lm.on_iteration = [&](int it, double cost, const std::vector<double>& u) {
+    if (!o.on_progress) return;
+    std::string line = "fit " + std::to_string(fit_number) + ", iteration " + std::to_string(it) + ": cost " +
+                       formatNumber(cost) + " at";
+    for (std::size_t k = 0; k < p; ++k) line += " " + keys[k].info.key + "=" + formatNumber(keys[k].toValue(u[k]));
+    o.on_progress(line);
+  };
+  std::vector<double> u0(p);
+  for (std::size_t k = 0; k < p; ++k) u0[k] = keys[k].toScaled(keys[k].info.start);
+  // The data's columns are checked by the first run, before any search (a missing column throws).
+  if (o.global) u0 = globalStart(evaluate, u0, o.interrupt);
+  LmOutcome fit = levenbergMarquardt(evaluate, u0, lm);
+  res.iterations = fit.iterations;
+  if (fit.converged && std::find(given.begin(), given.end(), false) != given.end()) {
+    // σ_s = the RMS residual of each estimated signal at the first optimum, then one refit.
+    for (std::size_t s = 0; s < d.signals.size(); ++s)
+      if (!given[s])
+        sigma[s] = std::max(sigma[s] * rmsOf(fit.r, s * n_fit, (s + 1) * n_fit), 1e-9 * sigma[s]);
+    fit_number = 2;
+    fit = levenbergMarquardt(evaluate, fit.u, lm);
+    res.iterations += fit.iterations;
+  }
+  res.converged = fit.converged;
+  res.convergence = fit.reason;
+  for (std::size_t s = 0; s < d.signals.size(); ++s) {
+    res.signals[s].sigma = sigma[s];
+    res.signals[s].sigma_from = given[s] ? "given" : "estimated";
+    res.signals[s].samples_fit = n_fit;
+    res.signals[s].samples_holdout = d.t.size() - n_fit;
+  }
+  res.residuals = fit.r.size();
+  res.rss = fit.cost;
+  estimateWithUncertainty(res, keys, fit, lm.fd_step, evaluate);
+  if (!fit.r.empty()) holdoutCheck(res, runs, d, fit.u, n_fit);
+  res.runs = runs.runs();
+  res.failed_runs = runs.failed();
+  res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return res;
+}
+
+}  // namespace rollerdyn

@@ -1,0 +1,252 @@
+#include "studies/IdentifyFit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+namespace rollerdyn {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double sumOfSquares(const std::vector<double>& r) {
+  double s = 0;
+  for (double v : r) s += v * v;
+  return s;
+}
+
+std::string text(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+bool interrupted(const LmSettings& s) { return s.interrupt && s.interrupt->load(); }
+
+// Forward-difference Jacobian (N×p) at u; a step that leaves [0, 1] or fails is taken backwards.
+// False (with the reason) when a column cannot be formed.
+bool jacobian(const ResidualBatch& evaluate, const std::vector<double>& u, const std::vector<double>& r,
+              const std::vector<double>& step, Eigen::MatrixXd* J, std::string* reason) {
+  const std::size_t p = u.size();
+  std::vector<std::vector<double>> points;
+  std::vector<double> h(p);
+  for (std::size_t k = 0; k < p; ++k) {
+    h[k] = u[k] + step[k] <= 1.0 ? step[k] : -step[k];
+    std::vector<double> v = u;
+    v[k] += h[k];
+    points.push_back(v);
+  }
+  std::vector<ResidualEvaluation> e = evaluate(points);
+  J->resize(static_cast<Eigen::Index>(r.size()), static_cast<Eigen::Index>(p));
+  for (std::size_t k = 0; k < p; ++k) {
+    if (!e[k].ok) {  // the other side
+      std::vector<double> v = u;
+      h[k] = -h[k];
+      v[k] += h[k];
+      if (v[k] < 0.0 || v[k] > 1.0) {
+        *reason = "the run beside the current point failed: " + e[k].reason;
+        return false;
+      }
+      e[k] = evaluate({v})[0];
+      if (!e[k].ok) {
+        *reason = "the runs on both sides of the current point failed: " + e[k].reason;
+        return false;
+      }
+    }
+    for (std::size_t i = 0; i < r.size(); ++i) (*J)(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = (e[k].r[i] - r[i]) / h[k];
+  }
+  return true;
+}
+
+Eigen::VectorXd asVector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+}  // namespace
+
+LmOutcome levenbergMarquardt(const ResidualBatch& evaluate, const std::vector<double>& u0, const LmSettings& s) {
+  LmOutcome out;
+  out.u = u0;
+  const std::size_t p = u0.size();
+  ResidualEvaluation start = evaluate({u0})[0];
+  if (!start.ok) {
+    out.reason = "the run at the starting values failed: " + start.reason;
+    return out;
+  }
+  out.r = start.r;
+  out.cost = sumOfSquares(out.r);
+  const double dof = std::max<double>(1.0, static_cast<double>(out.r.size()) - static_cast<double>(p));
+  double lambda = 1e-3;
+  for (int it = 1; it <= s.max_iterations; ++it) {
+    if (interrupted(s)) {
+      out.reason = "interrupted";
+      return out;
+    }
+    Eigen::MatrixXd J;
+    std::string why;
+    if (!jacobian(evaluate, out.u, out.r, s.fd_step, &J, &why)) {
+      out.reason = why;
+      return out;
+    }
+    out.iterations = it;
+    const Eigen::VectorXd r = asVector(out.r);
+    const Eigen::MatrixXd A = J.transpose() * J;
+    const Eigen::VectorXd g = J.transpose() * r;
+    Eigen::VectorXd D = A.diagonal();
+    const double dmax = D.maxCoeff();
+    if (!(dmax > 0)) {
+      out.reason = "the residuals do not change with any free key (the Jacobian is zero)";
+      return out;
+    }
+    for (Eigen::Index k = 0; k < D.size(); ++k) D(k) = std::max(D(k), 1e-12 * dmax);
+    const double sigma2 = std::max(out.cost / dof, std::numeric_limits<double>::min());
+    // Predicted fall of the cost by the undamped (Gauss–Newton) step: gᵀA⁻¹g.
+    const Eigen::VectorXd gn = (A + 1e-12 * dmax * Eigen::MatrixXd::Identity(A.rows(), A.cols())).ldlt().solve(-g);
+    const double predicted = -g.dot(gn);
+    if (std::isfinite(predicted) && predicted < s.cost_tolerance * sigma2) {
+      out.converged = true;
+      out.reason = "converged: the next step would lower the cost by less than " + text(s.cost_tolerance) +
+                   "·σ̂² (iteration " + std::to_string(it) + ")";
+      return out;
+    }
+    bool accepted = false;
+    double smallest_step = kInf;
+    for (int tries = 0; tries < 8 && !accepted; ++tries) {
+      if (interrupted(s)) {
+        out.reason = "interrupted";
+        return out;
+      }
+      Eigen::MatrixXd M = A;
+      M.diagonal() += lambda * D;
+      const Eigen::VectorXd delta = M.ldlt().solve(-g);
+      std::vector<double> trial(p);
+      double step = 0;
+      for (std::size_t k = 0; k < p; ++k) {
+        trial[k] = std::clamp(out.u[k] + delta(static_cast<Eigen::Index>(k)), 0.0, 1.0);
+        step = std::max(step, std::abs(trial[k] - out.u[k]));
+      }
+      smallest_step = std::min(smallest_step, step);
+      if (!(step > s.step_tolerance)) {
+        out.converged = true;
+        out.reason = "converged: the step moved no key by more than " + text(s.step_tolerance) +
+                     " of its bounds (iteration " + std::to_string(it) + ")";
+        return out;
+      }
+      const ResidualEvaluation e = evaluate({trial})[0];
+      const double cost = e.ok ? sumOfSquares(e.r) : kInf;
+      if (e.ok && cost < out.cost) {
+        const double fall = out.cost - cost;
+        out.u = trial;
+        out.r = e.r;
+        out.cost = cost;
+        accepted = true;
+        lambda = std::max(lambda / 3.0, 1e-9);
+        if (s.on_iteration) s.on_iteration(it, cost, out.u);
+        if (fall < s.cost_tolerance * sigma2) {
+          out.converged = true;
+          out.reason = "converged: the cost fell by less than " + text(s.cost_tolerance) +
+                       "·σ̂² (iteration " + std::to_string(it) + ")";
+          return out;
+        }
+      } else {
+        lambda *= e.ok ? 4.0 : 10.0;
+      }
+    }
+    if (!accepted) {
+      // The cost is flat within the integration's own noise (or the runs beside the point fail).
+      // The undamped step, measured in standard uncertainties of the estimate (√(gᵀA⁻¹g/σ̂²)),
+      // says whether that matters: below 0.3 the estimate is settled well within what it is known to
+      // (data with noise near the integration's own, e.g. a noise-free record of a model run, end here).
+      const double shift = std::sqrt(std::max(predicted, 0.0) / sigma2);
+      std::ostringstream why;
+      why << "no step lowered the cost in 8 tries (the cost is flat within the integration's noise); the "
+             "Gauss-Newton step would move the estimate by "
+          << text(shift) << " of its standard uncertainty";
+      out.converged = shift < 0.3;
+      out.reason = (out.converged ? "converged within the integration's noise: " : "") + why.str() +
+                   (out.converged ? "" : "; tighten --accuracy or check the runs near the estimate") + " (iteration " +
+                   std::to_string(it) + ")";
+      return out;
+    }
+  }
+  out.reason = "the iteration limit (" + std::to_string(s.max_iterations) + ") was reached before the cost settled";
+  return out;
+}
+
+CovarianceEstimate estimateCovariance(const std::vector<std::vector<double>>& Jrows, double rss,
+                                      const std::vector<double>& scale) {
+  CovarianceEstimate c;
+  const Eigen::Index n = static_cast<Eigen::Index>(Jrows.size());
+  const Eigen::Index p = static_cast<Eigen::Index>(scale.size());
+  Eigen::MatrixXd J(n, p);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index k = 0; k < p; ++k) J(i, k) = Jrows[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)];
+  c.sigma_hat2 = rss / std::max<double>(1.0, static_cast<double>(n - p));
+  const Eigen::MatrixXd A = J.transpose() * J;
+  // Columns normalised to unit length: the information matrix as a correlation of sensitivities,
+  // independent of the keys' units, so one threshold serves every key.
+  Eigen::VectorXd d = A.diagonal().cwiseSqrt();
+  const double dmax = d.maxCoeff();
+  c.no_effect.assign(static_cast<std::size_t>(p), false);
+  std::vector<Eigen::Index> live;
+  for (Eigen::Index k = 0; k < p; ++k) {
+    c.no_effect[static_cast<std::size_t>(k)] = !(d(k) > 1e-12 * dmax) || !(dmax > 0);
+    if (!c.no_effect[static_cast<std::size_t>(k)]) live.push_back(k);
+  }
+  c.std.assign(static_cast<std::size_t>(p), kInf);
+  c.correlation.assign(static_cast<std::size_t>(p), std::vector<double>(static_cast<std::size_t>(p), kNaN));
+  c.singular = live.size() < static_cast<std::size_t>(p);
+  // The weakest direction over relative changes: J·diag(scale), smallest eigenvalue.
+  {
+    Eigen::MatrixXd Jr = J;
+    for (Eigen::Index k = 0; k < p; ++k) Jr.col(k) *= scale[static_cast<std::size_t>(k)];
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Jr.transpose() * Jr);
+    const Eigen::VectorXd v = es.eigenvectors().col(0);
+    const Eigen::Index big = [&] { Eigen::Index b = 0; v.cwiseAbs().maxCoeff(&b); return b; }();
+    const double sign = v(big) < 0 ? -1.0 : 1.0;
+    for (Eigen::Index k = 0; k < p; ++k) c.weakest_direction.push_back(sign * v(k));
+  }
+  if (live.empty()) {
+    c.condition = kInf;
+    return c;
+  }
+  const Eigen::Index q = static_cast<Eigen::Index>(live.size());
+  Eigen::MatrixXd An(q, q);
+  for (Eigen::Index a = 0; a < q; ++a)
+    for (Eigen::Index b = 0; b < q; ++b) An(a, b) = A(live[a], live[b]) / (d(live[a]) * d(live[b]));
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(An);
+  const Eigen::VectorXd ev = es.eigenvalues();  // ascending
+  const double lmax = ev(q - 1), lmin = std::max(ev(0), 0.0);
+  c.condition = lmin > 0 ? std::sqrt(lmax / lmin) : kInf;
+  if (!(lmin > 1e-12 * lmax)) {
+    c.singular = true;
+    // Keys in the null direction are undetermined; the others keep the pseudo-inverse's values.
+  }
+  Eigen::MatrixXd inv = Eigen::MatrixXd::Zero(q, q);
+  for (Eigen::Index m = 0; m < q; ++m) {
+    const double l = ev(m);
+    if (l > 1e-12 * lmax) inv += es.eigenvectors().col(m) * es.eigenvectors().col(m).transpose() / l;
+  }
+  std::vector<bool> in_null(static_cast<std::size_t>(q), false);
+  for (Eigen::Index m = 0; m < q; ++m)
+    if (!(ev(m) > 1e-12 * lmax))
+      for (Eigen::Index a = 0; a < q; ++a)
+        if (std::abs(es.eigenvectors()(a, m)) > 1e-3) in_null[static_cast<std::size_t>(a)] = true;
+  for (Eigen::Index a = 0; a < q; ++a) {
+    const std::size_t ka = static_cast<std::size_t>(live[a]);
+    if (!in_null[static_cast<std::size_t>(a)]) c.std[ka] = std::sqrt(c.sigma_hat2 * inv(a, a)) / d(live[a]);
+    for (Eigen::Index b = 0; b < q; ++b) {
+      const std::size_t kb = static_cast<std::size_t>(live[b]);
+      const bool undetermined = in_null[static_cast<std::size_t>(a)] || in_null[static_cast<std::size_t>(b)];
+      c.correlation[ka][kb] = a == b ? 1.0 : undetermined ? kNaN : inv(a, b) / std::sqrt(inv(a, a) * inv(b, b));
+    }
+  }
+  return c;
+}
+
+}  // namespace rollerdyn
