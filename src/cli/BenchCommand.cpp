@@ -1,4 +1,4 @@
-// `rollerdyn bench SCENE [--set k=v]... [--study integrators|carts|effects|reactions|all|motors] [--quick]
+// `rollerdyn bench SCENE [--set k=v]... [--study integrators|carts|effects|reactions|all|motors|setup|identify] [--quick]
 //  [--budget S] [--repeat N] [--out DIR]`: accuracy vs CPU time of every integrator of both
 // models, cost vs number of carts, cost of each effect (src/bench/BenchStudies.h).
 #include <cmath>
@@ -20,6 +20,7 @@
 #include "multibody/MultibodySimulation.h"
 #include "report/OutputDir.h"
 #include "scene/SceneParser.h"
+#include "studies/IdentifyBench.h"
 
 namespace rollerdyn::cli {
 namespace {
@@ -100,9 +101,9 @@ int runBench(const SceneArgs& args, const BenchArgs& bench) {
 
   const std::string& study = bench.study;
   if (study != "integrators" && study != "carts" && study != "effects" && study != "reactions" && study != "motors" &&
-      study != "all" && study != "setup")
-    throw std::invalid_argument("--study: expected integrators, carts, effects, reactions, motors, setup or all, got '" +
-                                study + "'");
+      study != "all" && study != "setup" && study != "identify")
+    throw std::invalid_argument(
+        "--study: expected integrators, carts, effects, reactions, motors, setup, identify or all, got '" + study + "'");
   std::vector<std::string> written;
   auto add = [&written](const std::vector<std::string>& w) { written.insert(written.end(), w.begin(), w.end()); };
   if (study == "integrators" || study == "all")
@@ -115,6 +116,10 @@ int runBench(const SceneArgs& args, const BenchArgs& bench) {
     add(bench::writeMotorsStudy(out_dir, scene, bench::runMotorsStudy(source, opt), opt));
   if (study == "setup")  // not part of all: timings of the whole program, not of the integrators
     add(runSetupStudy(args, out_dir, std::max(3, bench.repeats)));
+  if (study == "identify")  // not part of all: the cost of a whole identification, many runs
+    add(writeIdentifyBench(out_dir, scene.name,
+                           runIdentifyBench(args.scene_path, args.overrides, std::max(1, bench.repeats), &g_interrupted, opt.log),
+                           machineLine()));
   if ((study == "reactions" || study == "all") && !g_interrupted)
     add(bench::writeReactionsStudy(out_dir, scene, bench::runReactionsStudy(source, opt), opt));
 

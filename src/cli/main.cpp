@@ -134,8 +134,9 @@ int main(int argc, char** argv) {
   addSceneArgs(bench, bench_args);
   bench->add_option("--study", bench_opts.study,
                     "integrators (default), carts, effects, reactions (with vs without joint reactions), all (these "
-                    "four), motors or setup (where the time of a report and of a short run goes, median of at least 3)")
-      ->check(oneOf({"integrators", "carts", "effects", "reactions", "all", "motors", "setup"}));
+                    "four), motors, setup (where the time of a report and of a short run goes, median of at least 3) "
+                    "or identify (the time of one identification of the coupling's c and k from a measured start)")
+      ->check(oneOf({"integrators", "carts", "effects", "reactions", "all", "motors", "setup", "identify"}));
   bench->add_flag("--quick", bench_opts.quick, "fewer accuracies, 1 s runs, 1 s budget per run (integrators: under a minute)");
   bench->add_option("--budget", bench_opts.budget, "CPU seconds per run before it is recorded as a timeout");
   bench->add_option("--repeat", bench_opts.repeats, "timed repetitions per run (median reported)")->check(CLI::Range(1, 1000));
