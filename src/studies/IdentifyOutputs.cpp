@@ -7,6 +7,7 @@
 #include "io/AtomicFile.h"
 #include "io/FieldFormat.h"
 #include "report/Gnuplot.h"
+#include "report/HtmlReport.h"
 
 namespace rollerdyn {
 
@@ -135,8 +136,28 @@ std::vector<std::string> writeIdentifyOutputs(const IdentifyOptions& o, const Id
   j["plot_note"] = plot_note;
   if (plot_note_out) *plot_note_out = plot_note;
   writeFileAtomic(out_dir + "/identify.json", j.dump(2) + "\n");
+  // The page an engineer opens: the console's tables (one rendering of the result) and, per signal,
+  // the fit against the data and the residuals.
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Identification: "
+    << htmlEscape(r.scene) << "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:1em auto}"
+       "pre{background:#f6f6f6;padding:0.6em;overflow-x:auto}img{max-width:100%}</style></head><body>\n"
+    << "<h1>Identification of " << htmlEscape(r.scene) << " from " << htmlEscape(r.data_file) << "</h1>\n"
+    << "<p>" << htmlEscape(r.model) << " model; estimates with their standard uncertainty from the Jacobian at the "
+       "estimate (σ̂²·(JᵀJ)⁻¹), the last part of the record "
+    << (o.holdout > 0 ? "predicted, not fitted (right of the dashed line in the figures)" : "fitted too (no hold-out)")
+    << "; method and warnings: docs/identify.md.</p>\n<pre>" << htmlEscape(describeIdentify(r)) << "</pre>\n";
+  if (!plot_note.empty()) h << "<p>" << htmlEscape(plot_note) << "</p>\n";
+  for (const SignalFit& f : r.signals)
+    if (!plots.empty())
+      h << "<h2>" << htmlEscape(f.name) << " [" << htmlEscape(f.unit) << "]</h2>\n<img src=\"fit_" << htmlEscape(f.name)
+        << ".svg\" alt=\"measured and model: " << htmlEscape(f.name) << "\">\n<img src=\"residual_"
+        << htmlEscape(f.name) << ".svg\" alt=\"residuals: " << htmlEscape(f.name) << "\">\n";
+  h << "</body></html>\n";
+  writeFileAtomic(out_dir + "/identify.html", h.str());
   files = plots;
   files.push_back(out_dir + "/identify.json");
+  files.push_back(out_dir + "/identify.html");
   return files;
 }
 
