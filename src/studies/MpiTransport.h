@@ -1,9 +1,9 @@
 // The MPI calls of a sweep over ranks (SweepMpi.cpp), behind a plug-in: the MPI library and its
 // dependencies (Open MPI: nine shared libraries with hwloc and libevent) cost a plain
 // `rollerdyn` a quarter of its start-up's CPU in dynamic loading and relocations, and only
-// `rollerdyn sweep` under mpirun/srun needs them. The plug-in (studies/mpi/MpiPlugin.cpp, built when CMake finds MPI as
-// librollerdyn_mpi.so next to the program) implements this interface; SweepMpi.cpp opens it with
-// dlopen() only when an MPI launcher started the process. The plug-in holds no rollerdyn code:
+// `rollerdyn sweep` under mpirun/srun needs them. The plug-in (studies/mpi/MpiPlugin.cpp, built
+// when CMake finds MPI, as librollerdyn_mpi.so next to the program) implements this interface;
+// SweepMpi.cpp opens it with dlopen() only when an MPI launcher started the process. The plug-in holds no rollerdyn code:
 // it moves bytes and point indices, the sweep's logic stays in SweepMpi.cpp.
 #pragma once
 
