@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "bench_fixture.h"
+#include "multibody/MultibodyModel.h"
 #include "multibody/MultibodySimulation.h"
 
 namespace {

@@ -13,6 +13,7 @@
 #include "analysis/StallDetector.h"
 #include "multibody/IntegratorFactory.h"
 #include "multibody/MinimalSimulation.h"
+#include "multibody/MultibodyModel.h"
 #include "multibody/MotorForce.h"
 
 namespace rollerdyn {

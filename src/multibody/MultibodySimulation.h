@@ -6,9 +6,14 @@
 #include <functional>
 
 #include "analysis/RunResult.h"
-#include "multibody/MultibodyModel.h"
+#include "scene/Scene.h"
 
 namespace rollerdyn {
+
+// Declared only: most callers run a scene and never see the model, and its header brings in all
+// of Simbody's (seconds of compile time in every file that includes it). Callers that build a
+// model include multibody/MultibodyModel.h.
+class MultibodyModel;
 
 struct RunControl {
   const std::atomic<bool>* interrupt = nullptr;      // set asynchronously (Ctrl-C): stop, keep rows

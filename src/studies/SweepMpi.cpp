@@ -7,10 +7,11 @@
 #include <stdexcept>
 #include <thread>
 
-#ifdef ROLLERDYN_HAVE_MPI
-#include <mpi.h>
-#endif
+#include <dlfcn.h>
 
+#include <filesystem>
+
+#include "studies/MpiTransport.h"
 #include "studies/SweepProgress.h"
 
 namespace rollerdyn {
@@ -34,8 +35,16 @@ MpiLaunch detectMpiLaunch() {
 }
 
 #ifdef ROLLERDYN_HAVE_MPI
-
 bool mpiBuilt() { return true; }
+#else
+bool mpiBuilt() { return false; }
+#endif
+
+std::string mpiPluginPath() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return (self.parent_path() / ROLLERDYN_MPI_PLUGIN).string();
+}
 
 namespace {
 
@@ -44,27 +53,38 @@ constexpr int kTagWork = 2;    // rank 0 -> worker: a point index
 constexpr int kTagStop = 3;    // rank 0 -> worker: no more work
 constexpr int kDepth = 2;      // indices a worker holds at most: the one it computes and the next
 
-void finalizeAtExit() {
-  int initialized = 0, finalized = 0;
-  MPI_Initialized(&initialized);
-  MPI_Finalized(&finalized);
-  if (initialized && !finalized) MPI_Finalize();
+// The MPI plug-in, opened the first time a sweep needs MPI (MpiTransport.h).
+MpiTransport& transport() {
+  static MpiTransport* const opened = [] {
+    if (!mpiBuilt())
+      throw std::runtime_error(
+          "sweep: this rollerdyn was built without MPI (CMake did not find it; install libopenmpi-dev and "
+          "rebuild), so it cannot share a sweep over the ranks of mpirun or srun; run it without the launcher "
+          "(it then uses --threads)");
+    const std::string path = mpiPluginPath();
+    // RTLD_GLOBAL: the MPI library opens components of its own that expect its symbols global.
+    void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
+    if (!library) {
+      const char* why = dlerror();
+      throw std::runtime_error("sweep: started by an MPI launcher, but the MPI plug-in " + path +
+                               " could not be loaded (" + std::string(why ? why : "unknown reason") +
+                               "); it is built beside rollerdyn when CMake finds MPI: rebuild, or run the sweep "
+                               "without the launcher (it then uses --threads)");
+    }
+    auto get = reinterpret_cast<MpiTransport* (*)()>(dlsym(library, "rollerdyn_mpi_transport"));
+    if (!get)
+      throw std::runtime_error("sweep: the MPI plug-in " + path +
+                               " is not rollerdyn's (it lacks the transport function); rebuild rollerdyn");
+    return get();
+  }();
+  return *opened;
 }
 
 }  // namespace
 
 MpiWorld startMpi() {
-  int initialized = 0;
-  MPI_Initialized(&initialized);
-  if (!initialized) {
-    // FUNNELED: only the main thread calls MPI; rank 0's computing thread never does.
-    int provided = 0;
-    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-    std::atexit(finalizeAtExit);
-  }
   MpiWorld w;
-  MPI_Comm_rank(MPI_COMM_WORLD, &w.rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &w.size);
+  transport().start(&w.rank, &w.size);
   return w;
 }
 
@@ -72,30 +92,28 @@ double runMpiSweep(const std::vector<std::size_t>& todo, const std::function<Swe
                    const std::function<void(std::size_t, const SweepPoint&, int)>& record,
                    bool dispatcher_computes, const std::atomic<bool>* interrupt) {
   const MpiWorld w = startMpi();
+  MpiTransport& mpi = transport();
   if (w.rank != 0) {
     // Worker: keeps up to kDepth indices (the one it computes and the next), so the round trip
     // to rank 0 for the next index overlaps the computation instead of idling between points.
     // Each message to rank 0 carries one finished row (empty the first time) and asks for more.
     std::deque<unsigned long long> queue;
     std::string payload;
-    MPI_Send(payload.data(), 0, MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+    mpi.sendChars(payload.data(), 0, 0, kTagResult);
     for (;;) {
       for (;;) {  // take what rank 0 sent; wait only when there is nothing to compute
-        int flag = 0;
-        MPI_Status st;
-        MPI_Iprobe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
-        if (!flag && !queue.empty()) break;
-        if (!flag) MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &st);
-        unsigned long long index = 0;
-        MPI_Recv(&index, 1, MPI_UNSIGNED_LONG_LONG, 0, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        if (st.MPI_TAG == kTagStop) return 0.0;  // sent only when nothing is queued here
+        MpiMessage m;
+        const bool waiting = mpi.probe(0, MpiTransport::kAnyTag, queue.empty(), &m);
+        if (!waiting) break;
+        const unsigned long long index = mpi.receiveIndex(0, m.tag);
+        if (m.tag == kTagStop) return 0.0;  // sent only when nothing is queued here
         queue.push_back(index);
       }
       const unsigned long long index = queue.front();
       queue.pop_front();
       const nlohmann::json row = {{"index", index}, {"point", sweepPointToJson(compute(std::size_t(index)))}};
       payload = row.dump();
-      MPI_Send(payload.data(), int(payload.size()), MPI_CHAR, 0, kTagResult, MPI_COMM_WORLD);
+      mpi.sendChars(payload.data(), int(payload.size()), 0, kTagResult);
     }
   }
   // Rank 0: hands out indices from one queue, to the workers and to its own computing thread.
@@ -123,37 +141,31 @@ double runMpiSweep(const std::vector<std::size_t>& todo, const std::function<Swe
   std::string buffer;
   double busy = 0;  // [s]
   while (active > 0) {
-    int flag = 0;
-    MPI_Status st;
-    MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &flag, &st);
-    if (!flag) {
+    MpiMessage m;
+    if (!mpi.probe(MpiTransport::kAnySource, kTagResult, false, &m)) {
       // Polling with a short sleep, not a blocking receive: Open MPI's blocking calls spin and
       // would take a core from rank 0's computing thread.
       std::this_thread::sleep_for(std::chrono::microseconds(200));
       continue;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    int count = 0;
-    MPI_Get_count(&st, MPI_CHAR, &count);
-    buffer.assign(std::size_t(count), '\0');
-    MPI_Recv(buffer.data(), count, MPI_CHAR, st.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    const std::size_t from = std::size_t(st.MPI_SOURCE);
+    buffer.assign(std::size_t(m.chars), '\0');
+    mpi.receiveChars(buffer.data(), m.chars, m.source, kTagResult);
+    const std::size_t from = std::size_t(m.source);
     if (!buffer.empty()) {
       const nlohmann::json row = nlohmann::json::parse(buffer);
       const SweepPoint p = sweepPointFromJson(row.at("point"));
       --outstanding[from];
       std::lock_guard<std::mutex> lock(record_mu);
-      record(row.at("index").get<std::size_t>(), p, st.MPI_SOURCE);
+      record(row.at("index").get<std::size_t>(), p, m.source);
     }
     std::size_t i = 0;
     while (outstanding[from] < kDepth && take(&i)) {
-      unsigned long long index = i;
-      MPI_Send(&index, 1, MPI_UNSIGNED_LONG_LONG, st.MPI_SOURCE, kTagWork, MPI_COMM_WORLD);
+      mpi.sendIndex(i, m.source, kTagWork);
       ++outstanding[from];
     }
     if (outstanding[from] == 0) {  // no more work and nothing in flight there: release it
-      unsigned long long none = 0;
-      MPI_Send(&none, 1, MPI_UNSIGNED_LONG_LONG, st.MPI_SOURCE, kTagStop, MPI_COMM_WORLD);
+      mpi.sendIndex(0, m.source, kTagStop);
       --active;
     }
     busy += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -166,25 +178,5 @@ double runMpiSweep(const std::vector<std::size_t>& todo, const std::function<Swe
   }
   return busy;
 }
-
-#else  // built without MPI
-
-bool mpiBuilt() { return false; }
-
-MpiWorld startMpi() {
-  throw std::runtime_error(
-      "sweep: this rollerdyn was built without MPI (CMake did not find it; install libopenmpi-dev and "
-      "rebuild), so it cannot share a sweep over the ranks of mpirun or srun; run it without the launcher "
-      "(it then uses --threads)");
-}
-
-double runMpiSweep(const std::vector<std::size_t>&, const std::function<SweepPoint(std::size_t)>&,
-                   const std::function<void(std::size_t, const SweepPoint&, int)>&, bool,
-                   const std::atomic<bool>*) {
-  startMpi();
-  return 0.0;
-}
-
-#endif
 
 }  // namespace rollerdyn

@@ -3,7 +3,9 @@
 // balancing: points differ 100x in cost, so a static split would leave ranks idle), workers
 // compute one point at a time. MPI is started only when an MPI launcher started this process
 // (its environment: OMPI_COMM_WORLD_SIZE, PMI_SIZE, PMIX_RANK or SLURM_PROCID), so a plain
-// `rollerdyn` never touches MPI. Built only when CMake finds MPI (ROLLERDYN_HAVE_MPI).
+// `rollerdyn` never touches MPI. The MPI library itself is loaded only then, from a plug-in next
+// to the program (MpiTransport.h), built when CMake finds MPI (ROLLERDYN_HAVE_MPI): a plain
+// `rollerdyn` does not load it at all.
 #pragma once
 
 #include <atomic>
@@ -25,11 +27,15 @@ struct MpiLaunch {
 };
 MpiLaunch detectMpiLaunch();
 
-// Whether this rollerdyn was built with MPI.
+// Whether this rollerdyn was built with MPI (its MPI plug-in was built beside it).
 bool mpiBuilt();
 
-// MPI_Init (once; MPI_Finalize at exit) and this process's rank and the number of ranks. Throws
-// std::runtime_error when built without MPI.
+// Where the MPI plug-in is looked for: the folder of the running program (/proc/self/exe).
+std::string mpiPluginPath();
+
+// MPI_Init (once; MPI_Finalize at exit) and this process's rank and the number of ranks. Opens
+// the MPI plug-in the first time. Throws std::runtime_error when built without MPI or when the
+// plug-in cannot be loaded (the message names its path and the loader's reason).
 struct MpiWorld {
   int rank = 0;   // this process, 0 .. size-1
   int size = 1;   // number of ranks

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <string>
 
+#include "multibody/MultibodyModel.h"
 #include "multibody/MultibodySimulation.h"
 #include "physics/KlossMotor.h"
 #include "physics/SliderCrank.h"

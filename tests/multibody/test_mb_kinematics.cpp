@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "multibody/MultibodyModel.h"
 #include "multibody/MultibodySimulation.h"
 #include "physics/SliderCrank.h"
 #include "support/Seed000Scene.h"

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "multibody/MultibodyModel.h"
 #include "multibody/MultibodySimulation.h"
 #include "support/Seed000Scene.h"
 

@@ -21,6 +21,7 @@
 
 #include "multibody/MinimalCoordinates.h"
 #include "multibody/MinimalDynamics.h"
+#include "multibody/MultibodyModel.h"
 #include "multibody/MultibodySimulation.h"
 #include "scene/SceneParser.h"
 

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <string>
 
+#include "multibody/MultibodyModel.h"
 #include "multibody/MultibodySimulation.h"
 #include "scene/SceneParser.h"
 

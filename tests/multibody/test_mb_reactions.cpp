@@ -9,6 +9,7 @@
 #include <string>
 
 #include "multibody/IntegratorFactory.h"
+#include "multibody/MultibodyModel.h"
 #include "multibody/MultibodySimulation.h"
 #include "physics/RollerLoads.h"
 #include "physics/SliderCrank.h"

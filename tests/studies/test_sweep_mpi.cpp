@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
 
 #include "studies/SweepCliSupport.h"
 #include "studies/SweepMpi.h"
@@ -85,6 +86,27 @@ TEST(SweepMpi, DispatcherOnlyLeavesTheWorkToTheWorkers) {
   ASSERT_EQ(per_rank.size(), 3u);
   EXPECT_EQ(per_rank[0], 0);
   EXPECT_EQ(per_rank[1] + per_rank[2], 13);
+}
+
+// The MPI library is loaded from a plug-in beside the program, only under a launcher: a program
+// without its plug-in (copied alone to another folder) refuses the sweep before any point, with
+// an error that names the plug-in's path and the loader's reason, and prints no sweep header.
+// No mpirun is needed: the launcher's variable alone sends the sweep to MPI.
+TEST(SweepMpi, AMissingPlugInIsAClearError) {
+  if (!mpiBuilt()) GTEST_SKIP() << "rollerdyn was built without MPI (CMake did not find libopenmpi-dev)";
+  test::TempDir dir("sweep-mpi-no-plugin");
+  const std::string program = dir.str() + "/rollerdyn";
+  std::filesystem::copy_file(ROLLERDYN_BINARY, program);
+  std::string cmd = "cd '" + std::string(ROLLERDYN_SOURCE_DIR) + "' && OMPI_COMM_WORLD_SIZE=2 '" + program + "'";
+  for (const std::string& a : sweepArgs(dir.str() + "/out")) cmd += " '" + a + "'";
+  cmd += " > '" + dir.str() + "/log' 2>&1";
+  const int status = std::system(cmd.c_str());
+  const std::string log = test::slurp(dir.str() + "/log");
+  ASSERT_TRUE(WIFEXITED(status)) << log;
+  EXPECT_NE(WEXITSTATUS(status), 0) << log;
+  EXPECT_NE(log.find("MPI plug-in " + dir.str() + "/librollerdyn_mpi.so could not be loaded"), std::string::npos)
+      << log;
+  EXPECT_EQ(log.find("sweep of "), std::string::npos) << log;
 }
 
 }  // namespace
