@@ -15,6 +15,7 @@
 
 #include "HardCaseSupport.h"
 #include "multibody/IntegratorFactory.h"
+#include "multibody/MultibodyModel.h"
 #include "physics/KlossMotor.h"
 
 namespace rollerdyn::hardcases {
