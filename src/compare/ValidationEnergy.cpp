@@ -15,6 +15,7 @@
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
 #include "io/FieldFormat.h"
+#include "compare/RunModel.h"
 
 namespace rollerdyn::validation {
 namespace {
@@ -37,7 +38,7 @@ ValidationSection energyBalanceChecks(const ItemContext& ctx) {
     const Scene sc = ctx.load(file, sets);
     for (const bool multibody : {true, false}) {
       if (ctx.interrupted()) return s;
-      const RunResult r = multibody ? runMultibodyModel(sc) : runReducedModel(sc);
+      const RunResult r = runModel(sc, multibody ? "multibody" : "reduced");
       const EnergyAudit& e = r.energy;
       const double rel = e.residualRelative();
       s.claim(r.stats.complete && std::abs(rel) <= kRelativeResidual,

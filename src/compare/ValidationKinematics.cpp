@@ -18,6 +18,7 @@
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
 #include "io/FieldFormat.h"
+#include "compare/RunModel.h"
 
 namespace rollerdyn::validation {
 namespace {
@@ -48,7 +49,7 @@ ValidationSection kinematicsChecks(const ItemContext& ctx) {
     const double r = sc.crank.radius, l = sc.rods.length, lam = r / l, dphi = sc.crank.offset;
     for (const bool multibody : {true, false}) {
       if (ctx.interrupted()) return s;
-      const RunResult run = multibody ? runMultibodyModel(sc) : runReducedModel(sc);
+      const RunResult run = runModel(sc, multibody ? "multibody" : "reduced");
       const Table& t = run.timeseries;
       const std::vector<double> phi = t.column("phi_crank"), w = t.column("omega_crank");
       double dx = 0, dv = 0, w_max = 0;

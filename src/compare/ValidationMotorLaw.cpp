@@ -18,6 +18,7 @@
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
 #include "io/FieldFormat.h"
+#include "compare/RunModel.h"
 
 namespace rollerdyn::validation {
 namespace {
@@ -43,7 +44,7 @@ ValidationSection motorLawChecks(const ItemContext& ctx) {
               "Tolerance 1e-9 of M_kr·u·η (round-off of s and of the order of operations is ~1e-15 of it).\n\n";
   for (const bool multibody : {true, false}) {
     if (ctx.interrupted()) break;
-    const RunResult run = multibody ? runMultibodyModel(sc) : runReducedModel(sc);
+    const RunResult run = runModel(sc, multibody ? "multibody" : "reduced");
     const Table& t = run.timeseries;
     const std::vector<double> M = t.column("motor_torque"), w = t.column("omega_motor");
     double worst = 0, s_lo = INFINITY, s_hi = -INFINITY;

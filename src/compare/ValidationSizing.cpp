@@ -33,6 +33,7 @@
 #include "io/AtomicFile.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
+#include "compare/RunModel.h"
 
 namespace rollerdyn::validation {
 namespace {
@@ -415,7 +416,7 @@ ValidationSection driveSizingChecks(const ItemContext& ctx) {
               "definition moves a figure by 1e-3 or more.\n\n";
   for (const bool multibody : {true, false}) {
     if (ctx.interrupted()) break;
-    const RunResult run = multibody ? runMultibodyModel(sc) : runReducedModel(sc);
+    const RunResult run = runModel(sc, multibody ? "multibody" : "reduced");
     if (!run.stats.complete) throw std::runtime_error(run.model + " run ended early: " + run.stats.status);
     const json summary = json::parse(makeSummary(sc, run).dump());  // as summary.json stores it
     checkRun(s, sc, multibody ? "multibody model" : "reduced model", toCsv(run.timeseries),

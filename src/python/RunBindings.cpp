@@ -28,6 +28,7 @@
 #include "modes/OrderSpectrum.h"
 #include "modes/RunModes.h"
 #include "studies/RunSummary.h"
+#include "compare/RunModel.h"
 
 namespace rollerdyn::python {
 
@@ -150,8 +151,7 @@ void bindRuns(py::module_& m) {
             [&scene, &model, &stop, with_modes] {
               RunControl control;
               control.interrupt = &stop;
-              RunResult run = model == "multibody" ? runMultibodyModel(scene.scene(), control)
-                                                   : runReducedModel(scene.scene());
+              RunResult run = runModel(scene.scene(), model, control);
               // An interrupted run skips the modal analysis (seconds): the user asked to stop.
               return summarized(scene, std::move(run), with_modes && !stop);
             },

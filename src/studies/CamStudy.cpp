@@ -13,6 +13,7 @@
 #include "physics/SliderCrank.h"
 #include "reduced/ReducedModel.h"
 #include "scene/SceneParser.h"
+#include "compare/RunModel.h"
 
 namespace rollerdyn {
 
@@ -136,7 +137,7 @@ CamVsCrank compareCamWithCrank(const std::string& scene_path, const std::vector<
     std::vector<std::string> ov = overrides;
     ov.push_back(std::string("drive.type=") + drive);
     const Scene sc = parseSceneFile(scene_path, ov);
-    const RunResult run = model == "multibody" ? runMultibodyModel(sc) : runReducedModel(sc);
+    const RunResult run = runModel(sc, model);
     (std::string(drive) == "cam" ? out.cam : out.crank) = driveResponse(sc, run);
     if (std::string(drive) == "crank" && std::abs(2 * sc.crank.radius - sc.cam.stroke) > 1e-9)
       out.note = "strokes differ: cam.stroke = " + std::to_string(sc.cam.stroke) + " m, crank 2r = " +

@@ -11,6 +11,7 @@
 #include "reduced/ReducedModel.h"
 #include "scene/DidYouMean.h"
 #include "scene/SceneSchema.h"
+#include "compare/RunModel.h"
 
 namespace rollerdyn::identify {
 
@@ -166,14 +167,9 @@ ModelRuns::Trial ModelRuns::run(const std::vector<double>& u, std::size_t n, dou
     overrides.push_back(keys_[k].info.key + "=" + formatNumber(keys_[k].toValue(u[k])));
   try {
     const Scene scene = parseSceneInput(input_, overrides);
-    RunResult result;
-    if (o_.model == "multibody") {
-      RunControl control;
-      control.interrupt = o_.interrupt;
-      result = runMultibodyModel(scene, control);
-    } else {
-      result = runReducedModel(scene);
-    }
+    RunControl control;
+    control.interrupt = o_.interrupt;
+    const RunResult result = runModel(scene, o_.model, control);
     if (!result.stats.complete) {
       failed_.fetch_add(1);
       trial.reason = result.stats.status;

@@ -23,6 +23,7 @@
 #include "studies/RunSummary.h"
 #include "studies/SweepExecution.h"
 #include "studies/SweepPointBudget.h"
+#include "compare/RunModel.h"
 
 namespace rollerdyn {
 
@@ -115,14 +116,9 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
     return p;
   }
   try {
-    RunResult run;
-    if (o.model == "multibody") {
-      RunControl control;
-      control.interrupt = o.interrupt;
-      run = runMultibodyModel(scene, control);
-    } else {
-      run = runReducedModel(scene);
-    }
+    RunControl control;
+    control.interrupt = o.interrupt;
+    const RunResult run = runModel(scene, o.model, control);
     p.ran = true;
     // The summary every run gets (stall cause, the resonance verdict): the resonance_warnings
     // column counts the run's resonance warnings, the same as `simulate` prints.
