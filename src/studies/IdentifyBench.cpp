@@ -14,17 +14,14 @@
 namespace rollerdyn {
 namespace {
 
-// The validation's case (IdentifyValidation.cpp): the true coupling and the noise.
-constexpr double kTrueStiffness = 150000.0;  // [N·m/rad]
-constexpr double kTrueDamping = 6000.0;      // [N·m·s/rad]
-constexpr double kNoise = 0.002;             // fraction of each signal's RMS value [-]
-
 struct BenchCase {
   std::string name, model;
   std::vector<std::string> sets, signals;
   double t_end;  // [s]
 };
 
+// The benches' median: the mean of the two middle values for an even count (bench/BenchRun.cpp's
+// rule, which this layer cannot call).
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
@@ -47,24 +44,16 @@ std::vector<IdentifyBenchRow> runIdentifyBench(const std::string& scene_path, co
   for (const BenchCase& bc : cases) {
     std::vector<std::string> sets = overrides;
     sets.insert(sets.end(), bc.sets.begin(), bc.sets.end());
-    std::vector<std::string> truth = sets;
-    truth.push_back("coupling.stiffness=" + formatNumber(kTrueStiffness));
-    truth.push_back("coupling.damping=" + formatNumber(kTrueDamping));
-    const RunResult run = truthRun(scene_path, truth, bc.t_end, 0.005, bc.model);
-    IdentifyOptions o;
-    o.scene_path = scene_path;
-    o.base_overrides = sets;
-    o.model = bc.model;
-    o.free_keys = {"coupling.stiffness", "coupling.damping"};
-    o.bounds = {{"coupling.stiffness", {2e4, 2e6}}, {"coupling.damping", {500, 50000}}};
+    const RunResult run = truthRun(scene_path, couplingCaseTruth(sets), bc.t_end, 0.005, bc.model);
+    IdentifyOptions o = couplingCaseFit(scene_path, bc.model, sets);
     o.interrupt = interrupt;
-    o.data = measureRun(run, bc.signals, kNoise, 1);
+    o.data = measureRun(run, bc.signals, kCouplingCaseNoise, 1);
     IdentifyBenchRow row;
     row.name = bc.name;
     row.model = bc.model;
     for (std::size_t i = 0; i < bc.signals.size(); ++i) row.signals += (i ? "," : "") + bc.signals[i];
-    row.c_true = kTrueStiffness;
-    row.k_true = kTrueDamping;
+    row.c_true = kCouplingCaseStiffness;
+    row.k_true = kCouplingCaseDamping;
     std::vector<double> walls, cpus;
     for (int r = 0; r < repeats && !(interrupt && *interrupt); ++r) {
       const auto w0 = std::chrono::steady_clock::now();
@@ -100,7 +89,7 @@ std::vector<std::string> writeIdentifyBench(const std::string& out_dir, const st
   md << "# What an identification costs: " << scene_name << "\n\n"
      << "`rollerdyn bench " << scene_name << " --study identify`: the coupling's stiffness c and damping k "
      << "identified (`rollerdyn identify`, docs/identify.md) from a start of the scene made by the model itself with "
-     << "c = " << formatNumber(kTrueStiffness) << " N·m/rad and k = " << formatNumber(kTrueDamping)
+     << "c = " << formatNumber(kCouplingCaseStiffness) << " N·m/rad and k = " << formatNumber(kCouplingCaseDamping)
      << " N·m·s/rad, every output row measured with Gaussian noise of 0.2 % of the signal's RMS value (seed 1); "
         "the search starts from the scene's values, the runs of a Jacobian on 2 threads. Medians over the "
         "repetitions; CPU is this process's, all its threads.\n\n"

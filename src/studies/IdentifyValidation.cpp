@@ -15,26 +15,17 @@ namespace rollerdyn::validation {
 
 namespace {
 
-constexpr double kStiffness = 150000;  // true coupling.stiffness [N·m/rad] (the scene: 200000)
-constexpr double kDamping = 6000;      // true coupling.damping [N·m·s/rad] (the scene: 8000)
-constexpr double kNoise = 0.002;       // noise, fraction of each signal's RMS value [-]
+constexpr double kStiffness = kCouplingCaseStiffness;
+constexpr double kDamping = kCouplingCaseDamping;
+constexpr double kNoise = kCouplingCaseNoise;
 
 IdentifyOptions couplingFit(const ItemContext& ctx, const std::string& model, std::vector<std::string> sets) {
-  IdentifyOptions o;
-  o.scene_path = ctx.path("balanced-4cart.yaml");
-  o.base_overrides = std::move(sets);
-  o.model = model;
-  o.free_keys = {"coupling.stiffness", "coupling.damping"};
-  o.bounds = {{"coupling.stiffness", {2e4, 2e6}}, {"coupling.damping", {500, 50000}}};
+  IdentifyOptions o = couplingCaseFit(ctx.path("balanced-4cart.yaml"), model, std::move(sets));
   o.interrupt = ctx.interrupt;
   return o;
 }
 
-std::vector<std::string> truthSets(std::vector<std::string> sets) {
-  sets.push_back("coupling.stiffness=" + formatNumber(kStiffness));
-  sets.push_back("coupling.damping=" + formatNumber(kDamping));
-  return sets;
-}
+std::vector<std::string> truthSets(std::vector<std::string> sets) { return couplingCaseTruth(std::move(sets)); }
 
 // The smallest k with P(X < k) ≤ 1 % for X ~ Binomial(n, p): a count of hits below k has less
 // than a 1 % chance when the intervals hold their nominal probability p.

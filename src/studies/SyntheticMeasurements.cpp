@@ -59,4 +59,20 @@ MeasuredData measureRun(const RunResult& run, const std::vector<std::string>& co
   return d;
 }
 
+std::vector<std::string> couplingCaseTruth(std::vector<std::string> sets) {
+  sets.push_back("coupling.stiffness=" + formatNumber(kCouplingCaseStiffness));
+  sets.push_back("coupling.damping=" + formatNumber(kCouplingCaseDamping));
+  return sets;
+}
+
+IdentifyOptions couplingCaseFit(const std::string& scene_path, const std::string& model, std::vector<std::string> sets) {
+  IdentifyOptions o;
+  o.scene_path = scene_path;
+  o.base_overrides = std::move(sets);
+  o.model = model;
+  o.free_keys = {"coupling.stiffness", "coupling.damping"};
+  o.bounds = {{"coupling.stiffness", {2e4, 2e6}}, {"coupling.damping", {500, 50000}}};
+  return o;
+}
+
 }  // namespace rollerdyn

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/RunResult.h"
+#include "studies/Identify.h"
 #include "studies/MeasuredData.h"
 
 namespace rollerdyn {
@@ -36,5 +37,18 @@ RunResult truthRun(const std::string& scene, std::vector<std::string> truth, dou
 // reading level). Every row is kept, t = 0 too: the start from rest is measured.
 MeasuredData measureRun(const RunResult& run, const std::vector<std::string>& columns, double noise_fraction,
                         std::uint64_t seed);
+
+// The coupling case that identify's validation and its bench share: a start whose coupling is
+// softer and less damped than balanced-4cart's own (200000 N·m/rad, 8000 N·m·s/rad), measured
+// with Gaussian noise of 0.2 % of each signal's RMS value, both values identified from the scene's.
+inline constexpr double kCouplingCaseStiffness = 150000.0;  // true coupling.stiffness [N·m/rad]
+inline constexpr double kCouplingCaseDamping = 6000.0;      // true coupling.damping [N·m·s/rad]
+inline constexpr double kCouplingCaseNoise = 0.002;         // noise, fraction of each signal's RMS value [-]
+
+// `sets` and the case's true coupling values (--set), for truthRun().
+std::vector<std::string> couplingCaseTruth(std::vector<std::string> sets);
+// The identification of the case: coupling.stiffness in [2e4, 2e6] and coupling.damping in
+// [500, 50000] free, `sets` applied to every run, by `model`, from the scene file `scene_path`.
+IdentifyOptions couplingCaseFit(const std::string& scene_path, const std::string& model, std::vector<std::string> sets);
 
 }  // namespace rollerdyn
