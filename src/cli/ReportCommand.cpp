@@ -32,7 +32,7 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg, PhaseClock*
   const std::vector<SceneParameterRow> parameters = sceneParameterRows(args.scene_path, args.overrides);
 
   markPhase(clock, "scene file and parameter table");
-  const RunResult run = runMultibodyWithProgress(scene);
+  const RunResult run = runWithProgress(scene, "multibody");
   markPhase(clock, "run (multibody model)");
   const RunModal modal = analyseRunModes(scene, run, /*charts=*/true, clock);  // coarse charts (12 x 8)
   const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir, args.overrides, &modal);

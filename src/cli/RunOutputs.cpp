@@ -5,16 +5,16 @@
 #include "analysis/RestDetector.h"
 #include "cli/Commands.h"
 #include "cli/Progress.h"
-#include "multibody/MultibodySimulation.h"
+#include "compare/RunModel.h"
 
 namespace rollerdyn::cli {
 
-RunResult runMultibodyWithProgress(const Scene& scene) {
+RunResult runWithProgress(const Scene& scene, const std::string& model) {
   Progress progress;
   RunControl control;
   control.interrupt = &g_interrupted;
   control.progress = [&progress](double t, double t_end) { progress(t, t_end); };
-  return runMultibodyModel(scene, control);
+  return runModel(scene, model, control);
 }
 
 nlohmann::json writeRunOutputs(const Scene& scene, const RunResult& run, const std::string& scene_path,

@@ -13,9 +13,9 @@
 
 namespace rollerdyn::cli {
 
-// The multibody model on `scene`, printing its progress and stopping at the next output row on
-// Ctrl-C (g_interrupted, Commands.h).
-RunResult runMultibodyWithProgress(const Scene& scene);
+// `model` ("multibody" or "reduced") on `scene`, printing its progress and stopping at the next
+// output row on Ctrl-C (g_interrupted, Commands.h).
+RunResult runWithProgress(const Scene& scene, const std::string& model);
 
 // The modal analysis beside the run (`simulate --modes`, `report`): modes/RunModes.h.
 using modes::analyseRunModes;

@@ -28,7 +28,7 @@ int runSignoff(const SignoffArgs& a) {
   const Scene scene = parseSceneFile(a.scene.scene_path, a.scene.overrides);
   const std::string out = a.out_dir.empty() ? defaultOutDir(scene.name) + "/signoff" : a.out_dir;
   prepareOutputDir(out);  // before the run: a bad --out fails now
-  const RunResult run = runMultibodyWithProgress(scene);
+  const RunResult run = runWithProgress(scene, "multibody");
   const RunModal modal = analyseRunModes(scene, run, /*charts=*/false);
   const nlohmann::json summary = writeRunOutputs(scene, run, a.scene.scene_path, out, a.scene.overrides, &modal);
   const SignOffSheet sheet = signOffSheetOf(summary, scene.name, a.scene.scene_path, a.scene.overrides);

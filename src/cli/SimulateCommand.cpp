@@ -12,7 +12,6 @@
 #include "cli/Commands.h"
 #include "cli/RunOutputs.h"
 #include "modes/ModesFigures.h"
-#include "reduced/ReducedModel.h"
 #include "report/OutputDir.h"
 #include "report/OutputFolder.h"
 #include "report/RunFigures.h"
@@ -33,14 +32,7 @@ int runSimulate(const SceneArgs& args, const std::string& out_dir_arg, const std
   const Scene scene = parseSceneFile(args.scene_path, args.overrides);
   const std::string out_dir = out_dir_arg.empty() ? defaultOutDir(scene.name) : out_dir_arg;
   prepareOutputDir(out_dir, StaleOutputs::RunFiguresAndReport);  // before the run: a bad --out fails now
-  RunResult run;
-  if (model == "multibody") {
-    run = runMultibodyWithProgress(scene);
-  } else if (model == "reduced") {
-    run = runReducedModel(scene);
-  } else {
-    throw std::invalid_argument("--model: expected multibody or reduced, got '" + model + "'");
-  }
+  const RunResult run = runWithProgress(scene, model);
   std::unique_ptr<RunModal> modal;
   if (with_modes) modal = std::make_unique<RunModal>(analyseRunModes(scene, run, /*charts=*/false));
   const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir, args.overrides, modal.get());

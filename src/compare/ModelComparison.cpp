@@ -306,9 +306,9 @@ ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
 ModelComparison runComparison(const Scene& scene, const CompareControl& control) {
   // The reduced model first: it is ~100x cheaper and rejects an impossible combination (e.g. the
   // Baranov scheme with an elastic coupling) before the long multibody run.
-  RunResult red = runReducedModel(scene);
   RunControl rc;
   rc.interrupt = control.interrupt;
+  RunResult red = runReducedModel(scene, rc);
   RunResult mb = runMultibodyModel(scene, rc);
   return compareRuns(scene, std::move(mb), std::move(red));
 }

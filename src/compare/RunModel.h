@@ -12,9 +12,8 @@
 
 namespace rollerdyn {
 
-// Runs `scene` with `model`. `control` (Ctrl-C, progress) reaches the multibody model; the reduced
-// model's runs take milliseconds to seconds and run to their end. Throws std::invalid_argument
-// naming the model when it is neither "multibody" nor "reduced".
+// Runs `scene` with `model`; `control` (Ctrl-C, progress) reaches either model. Throws
+// std::invalid_argument naming the model when it is neither "multibody" nor "reduced".
 RunResult runModel(const Scene& scene, const std::string& model, const RunControl& control = {});
 
 }  // namespace rollerdyn

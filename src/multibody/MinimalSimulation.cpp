@@ -9,8 +9,7 @@
 
 #include "analysis/CrankSpeedExtrema.h"
 #include "analysis/OutputGrid.h"
-#include "analysis/RestDetector.h"
-#include "analysis/StallDetector.h"
+#include "analysis/RunRecorder.h"
 #include "multibody/GuideFriction.h"
 #include "multibody/MinimalCoordinates.h"
 #include "multibody/MinimalDynamics.h"
@@ -233,7 +232,6 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
       sc, model.options().prescribe_crank_speed ? model.options().crank_speed : std::numeric_limits<double>::quiet_NaN(),
       model.motorBreakdownTorque());
   const double rtol = scales.cvode_rtol, w_ref = scales.speed;
-  const double w_sync = sc.motor.omega_sync / sc.reducer.ratio;
   // E_ref: kinetic energy of the machine at the reference speed (its work integrals' scale).
   SimTK::State kin = s0;
   {
@@ -375,9 +373,10 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   };
   if (events) arm();
 
-  StallDetector stall(sc.hasMotor(), w_sync);
-  RestDetector rest(!sc.hasMotor() && !model.options().prescribe_crank_speed, sc.loads.velocity_smoothing);
+  // Every row goes through the stop rules both models share (analysis/RunRecorder.h).
+  RunRecorder recorder(sc, motor ? &motor->supply() : nullptr, model.options().prescribe_crank_speed, run, control);
   std::vector<double> cart_speeds(sc.carts.count);
+  SupplyPhase phase;
   const std::vector<double> times = outputTimes(sc.simulation);
   std::vector<double> ts_row, re_row, re_simbody;
   SimTK::Vector udot_projected;
@@ -423,8 +422,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     run.stats.constraint_error_max = std::max(run.stats.constraint_error_max, model.constraintError(s));
   };
   auto loopFailed = [&](double t) {
-    run.stats.complete = false;
-    run.stats.status = statusAt("the run stopped", t) + ": the " + ms.loopFailure();
+    recorder.fail(statusAt("the run stopped", t) + ": the " + ms.loopFailure());
     return false;
   };
   // Returns false when the run must stop (non-finite row, stall, interrupt, friction loop).
@@ -441,31 +439,11 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
       if (!constrained) return loopFailed(t);
       selfCheck(*constrained, udot_own, normals_own, reactions ? &re_row : nullptr);
     }
-    run.timeseries.rows.push_back(ts_row);
-    if (reactions) run.reactions.rows.push_back(re_row);
-    if (!rowIsFinite(ts_row) || (reactions && !rowIsFinite(re_row))) {
-      run.stats.complete = false;
-      run.stats.status = statusAt("numerical failure (non-finite value)", t);
-      return false;
-    }
-    if ((!motor || Supply::fullSupply(motor->phase(s))) &&
-        stall.update(t, model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s))) {
-      run.stats.complete = false;
-      run.stats.status = stall.status();
-      return false;
-    }
-    if (motor && Supply::tripped(motor->phase(s))) {  // the soft starter gave up: a failed start
-      run.stats.complete = false;
-      run.stats.status = motor->supply().tripStatus(motor->supply().tripTime());
-      return false;
-    }
     for (int j = 0; j < n_carts; ++j) cart_speeds[j] = model.carts()[j].v(s);
-    if (rest.update(t, cart_speeds, n_carts)) {
-      run.stats.complete = false;
-      run.stats.status = rest.status();
-      return false;
-    }
-    return true;
+    if (motor) phase = motor->phase(s);
+    const RowMotion motion{model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s), &cart_speeds,
+                           motor ? &phase : nullptr};
+    return recorder.record(t, ts_row, reactions ? &re_row : nullptr, motion);
   };
 
   const std::clock_t cpu0 = std::clock();
@@ -489,23 +467,16 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
       if (reachedOutputTime(integ.time(), times[k])) break;
     }
     if (failed) {
-      run.stats.complete = false;
       if (!ms.loopFailure().empty())  // CVODE gave up on states where the friction loop has no solution
-        run.stats.status = statusAt("the run stopped", ms.loopFailureTime()) + ": the " + ms.loopFailure();
+        recorder.fail(statusAt("the run stopped", ms.loopFailureTime()) + ": the " + ms.loopFailure());
       else
-        run.stats.status = statusAt("integration failed", integ.time()) + ": " + integ.error();
+        recorder.fail(statusAt("integration failed", integ.time()) + ": " + integ.error());
       break;
     }
     go = record(k, times[k], integ.y());
     if (!go && !run.stats.complete && run.timeseries.rows.size() <= k) break;  // the row itself failed
     t_last = times[k];
     y_last = integ.y();
-    if (go && control.progress) control.progress(times[k], sc.simulation.t_end);
-    if (go && control.interrupt && control.interrupt->load()) {
-      run.stats.complete = false;
-      run.stats.status = statusAt("interrupted", times[k]);
-      go = false;
-    }
   }
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   run.crank_speed_extrema = extrema.takeUpTo(run.timeseries.rows.empty() ? t_last : run.timeseries.rows.back()[0]);

@@ -9,8 +9,7 @@
 #include "analysis/CrankSpeedExtrema.h"
 #include "analysis/CrankshaftBearings.h"
 #include "analysis/OutputGrid.h"
-#include "analysis/RestDetector.h"
-#include "analysis/StallDetector.h"
+#include "analysis/RunRecorder.h"
 #include "multibody/IntegratorFactory.h"
 #include "multibody/MinimalSimulation.h"
 #include "multibody/MultibodyModel.h"
@@ -108,24 +107,22 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
     return events ? motor->supply().triggerSpeed(motor->phase(s)) : std::nan("");
   };
 
-  StallDetector stall(sc.hasMotor(), sc.motor.omega_sync / sc.reducer.ratio);
-  auto fullSupply = [&](const SimTK::State& s) { return !motor || Supply::fullSupply(motor->phase(s)); };
-  RestDetector rest(!sc.hasMotor() && !model.options().prescribe_crank_speed, sc.loads.velocity_smoothing);
+  // Every row goes through the stop rules both models share (analysis/RunRecorder.h).
+  RunRecorder recorder(sc, motor ? &motor->supply() : nullptr, model.options().prescribe_crank_speed, run, control);
   std::vector<double> cart_speeds(model.carts().size());
-  auto atRest = [&](double t, const SimTK::State& s) {
-    for (size_t j = 0; j < cart_speeds.size(); ++j) cart_speeds[j] = model.carts()[j].v(s);
-    return rest.update(t, cart_speeds, int(cart_speeds.size()));
-  };
   std::vector<double> ts_row, re_row;
-  auto record = [&](const SimTK::State& s) {
+  SupplyPhase phase;
+  // Records the row of state s at output time t; false when the run ends there.
+  auto record = [&](const SimTK::State& s, double t) {
     system.realize(s, SimTK::Stage::Acceleration);
     model.observeMotion(s, s.getUDot(), ts_row);
-    run.timeseries.rows.push_back(ts_row);
-    if (reactions) {
-      model.observeReactions(s, re_row);
-      run.reactions.rows.push_back(re_row);
-    }
+    if (reactions) model.observeReactions(s, re_row);
     run.stats.constraint_error_max = std::max(run.stats.constraint_error_max, model.constraintError(s));
+    for (size_t j = 0; j < cart_speeds.size(); ++j) cart_speeds[j] = model.carts()[j].v(s);
+    if (motor) phase = motor->phase(s);
+    const RowMotion motion{model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s), &cart_speeds,
+                           motor ? &phase : nullptr};
+    return recorder.record(t, ts_row, reactions ? &re_row : nullptr, motion);
   };
 
   // Output rows come from our own cubic Hermite interpolation between the integrator's steps,
@@ -138,11 +135,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   SimTK::State sample = integ->getState();
 
   const std::clock_t cpu0 = std::clock();
-  record(integ->getState());
-  if (fullSupply(integ->getState()))
-    stall.update(integ->getTime(), model.crankAngle(integ->getState()), model.crankSpeed(integ->getState()),
-                 model.motorSpeed(integ->getState()));
-  atRest(integ->getTime(), integ->getState());
+  bool stop = !record(integ->getState(), integ->getTime());
   const SimTK::State* last_row = &integ->getState();
   SimTK::Vector y_prev = integ->getState().getY(), ydot_prev = integ->getState().getYDot();
   double t_prev = integ->getTime();
@@ -152,13 +145,11 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   SimTK::State switched;  // the state at an event, switched
   long steps_before = 0, realizations_before = 0, rejected_before = 0;  // counted before the last restart at an event
   std::size_t k = 1;
-  bool stop = false;
   while (!stop && t_prev < t_end - 1e-12) {
     try {
       integ->stepTo(t_end, t_stop);
     } catch (const std::exception& ex) {
-      run.stats.complete = false;
-      run.stats.status = statusAt("integration failed", integ->getTime()) + ": " + ex.what();
+      recorder.fail(statusAt("integration failed", integ->getTime()) + ": " + ex.what());
       break;
     }
     const SimTK::State& advanced = integ->getState();
@@ -182,32 +173,8 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
       if (!at_step)
         sampleWithinStep(system, t_prev, y_prev, ydot_prev, advanced, t_out, constraint_tol, sample);
       const SimTK::State& s = at_step ? advanced : sample;
-      record(s);
       last_row = &s;
-      if (!rowIsFinite(ts_row) || !rowIsFinite(re_row)) {
-        run.stats.complete = false;
-        run.stats.status = statusAt("numerical failure (non-finite value)", t_out);
-        stop = true;
-      } else if (fullSupply(s) && stall.update(t_out, model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s))) {
-        run.stats.complete = false;
-        run.stats.status = stall.status();
-        stop = true;
-      } else if (motor && Supply::tripped(motor->phase(s))) {  // the soft starter gave up: a failed start
-        run.stats.complete = false;
-        run.stats.status = motor->supply().tripStatus(motor->supply().tripTime());
-        stop = true;
-      } else if (atRest(t_out, s)) {
-        run.stats.complete = false;
-        run.stats.status = rest.status();
-        stop = true;
-      } else {
-        if (control.progress) control.progress(t_out, t_end);
-        if (control.interrupt && control.interrupt->load()) {
-          run.stats.complete = false;
-          run.stats.status = statusAt("interrupted", t_out);
-          stop = true;
-        }
-      }
+      stop = !record(s, t_out);
     }
     if (event && !stop) {
       motor->applyDueEvents(switched, by_speed);
@@ -218,8 +185,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
       try {
         integ->initialize(switched);  // a fresh start from the switched state (statistics keep counting)
       } catch (const std::exception& ex) {
-        run.stats.complete = false;
-        run.stats.status = statusAt("integration failed", t_now) + ": " + ex.what();
+        recorder.fail(statusAt("integration failed", t_now) + ": " + ex.what());
         break;
       }
       system.realize(integ->getState(), SimTK::Stage::Acceleration);

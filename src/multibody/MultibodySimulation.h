@@ -2,9 +2,7 @@
 // the output tables, statistics and energy audit (src/analysis/RunResult.h).
 #pragma once
 
-#include <atomic>
-#include <functional>
-
+#include "analysis/RunControl.h"
 #include "analysis/RunResult.h"
 #include "scene/Scene.h"
 
@@ -14,11 +12,6 @@ namespace rollerdyn {
 // of Simbody's (seconds of compile time in every file that includes it). Callers that build a
 // model include multibody/MultibodyModel.h.
 class MultibodyModel;
-
-struct RunControl {
-  const std::atomic<bool>* interrupt = nullptr;      // set asynchronously (Ctrl-C): stop, keep rows
-  std::function<void(double t, double t_end)> progress;  // called after each output row
-};
 
 // Integrates `model` over the scene's time span. Never throws for a physical outcome: a stalled
 // motor, a NaN or an integrator failure ends the run with complete = false and a status line.

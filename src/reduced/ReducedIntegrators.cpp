@@ -17,7 +17,7 @@
 #include "physics/CrankInertia.h"
 #include "analysis/CrankSpeedExtrema.h"
 #include "analysis/OutputGrid.h"
-#include "analysis/RestDetector.h"
+#include "analysis/RunRecorder.h"
 #include "analysis/StallDetector.h"
 #include "motor/MotorColumns.h"
 #include "motor/Stiffness.h"
@@ -93,7 +93,16 @@ void appendRows(const ReducedModel& m, double t, const ModelEvaluation& e, RunRe
   if (reactions) res.reactions.rows.push_back(std::move(q));
 }
 
-double syncCrankSpeed(const Scene& s) { return s.motor.omega_sync / s.reducer.ratio; }
+// Appends the output rows of evaluation e at time t and applies the stop rules both models share
+// (analysis/RunRecorder.h); false when the run ends there. cart_speeds: storage for the carts' v.
+bool recordRows(const ReducedModel& m, double t, const ModelEvaluation& e, const SupplyPhase& phase,
+                RunRecorder& recorder, RunResult& res, std::vector<double>& cart_speeds) {
+  appendRows(m, t, e, res);
+  const bool finite =
+      rowIsFinite(res.timeseries.rows.back()) && (res.reactions.rows.empty() || rowIsFinite(res.reactions.rows.back()));
+  for (int j = 0; j < m.cartCount(); ++j) cart_speeds[j] = e.carts[j].pose.dx_B * e.omega_crank;
+  return recorder.check(t, finite, {e.phi_crank, e.omega_crank, e.omega_motor, &cart_speeds, &phase});
+}
 
 // ---------------------------------------------------------------------------------------------
 // CVODE
@@ -185,7 +194,7 @@ struct CvodeResources {
   }
 };
 
-RunResult runCvode(const ReducedModel& m, RunResult res) {
+RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& control) {
   const Scene& s = m.scene();
   const std::vector<double> times = outputTimes(s.simulation);
   const int n = m.stateSize();
@@ -301,8 +310,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   };
   if (events) arm(times.front());
 
-  StallDetector stall(s.motor.enabled, syncCrankSpeed(s));  // the rule both models share
-  RestDetector rest(!s.motor.enabled, s.loads.velocity_smoothing);  // likewise
+  RunRecorder recorder(s, &m.supply(), false, res, control);  // the stop rules both models share
   std::vector<double> cart_speeds(m.cartCount());
   const std::clock_t c0 = std::clock();
   res.timeseries.rows.reserve(times.size());
@@ -358,14 +366,13 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
         if (reachedOutputTime(tret, t)) break;
       }
       if (flag < 0) {
-        res.stats.complete = false;
         if (!ud.friction_failure.empty()) {
-          res.stats.status = statusAt("the run stopped", tret) + ": the " + ud.friction_failure;
+          recorder.fail(statusAt("the run stopped", tret) + ": the " + ud.friction_failure);
           break;
         }
         char* name = CVodeGetReturnFlagName(flag);
-        res.stats.status = std::string("integrator failure at t = ") + std::to_string(tret) +
-                           " s: " + (name ? name : "?") + " " + ud.last_error;
+        recorder.fail(std::string("integrator failure at t = ") + std::to_string(tret) + " s: " + (name ? name : "?") +
+                      " " + ud.last_error);
         free(name);
         break;
       }
@@ -374,27 +381,10 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
     y_last = ym;
     m.evaluate(t, phase, y_last.data(), e, true);
     if (e.friction_loop.status != LoopStatus::Solved) {
-      res.stats.complete = false;
-      res.stats.status = statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop);
+      recorder.fail(statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop));
       break;
     }
-    appendRows(m, t, e, res);
-    if (Supply::fullSupply(phase) && stall.update(t, e.phi_crank, e.omega_crank, e.omega_motor)) {
-      res.stats.complete = false;
-      res.stats.status = stall.status();
-      break;
-    }
-    if (Supply::tripped(phase)) {  // the soft starter gave up: a failed start, the run ends here
-      res.stats.complete = false;
-      res.stats.status = m.supply().tripStatus(m.supply().tripTime());
-      break;
-    }
-    for (int j = 0; j < m.cartCount(); ++j) cart_speeds[j] = e.carts[j].pose.dx_B * e.omega_crank;
-    if (rest.update(t, cart_speeds, m.cartCount())) {
-      res.stats.complete = false;
-      res.stats.status = rest.status();
-      break;
-    }
+    if (!recordRows(m, t, e, phase, recorder, res, cart_speeds)) break;
   }
   res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
   res.crank_speed_extrema = extrema.takeUpTo(res.timeseries.rows.empty() ? times.front() : res.timeseries.rows.back()[0]);
@@ -422,7 +412,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
 // ---------------------------------------------------------------------------------------------
 // Baranov's fixed-step scheme in crank angle (Loveikin and Pochka (2007) eq. (2)-(4), (10), (11)), rigid drive.
 
-RunResult runBaranov(const ReducedModel& m, RunResult res) {
+RunResult runBaranov(const ReducedModel& m, RunResult res, const RunControl& control) {
   const Scene& s = m.scene();
   if (!m.rigid())
     throw std::invalid_argument(
@@ -451,6 +441,9 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
   res.energy.potential_initial = m.potentialEnergy(y);
 
   size_t k_out = 0;  // next output time to fill
+  RunRecorder recorder(s, &m.supply(), false, res, control);  // the stop rules both models share
+  const SupplyPhase phase = m.supply().initialPhase();      // constant: the scheme takes no switching
+  std::vector<double> cart_speeds(m.cartCount());
   auto emitUpTo = [&](double t_next, double phi_next, double w_next, double eps) {
     // Rows on the output grid inside [t, t_next]: ω linear in time across the step, the
     // assumption behind the trapezoidal time of eq. (10), so ε = eq. (11) is constant and φ is
@@ -466,9 +459,10 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
       ++res.stats.realizations;
       e.eps_crank = e.eps_motor = eps;
       e.coupling_torque = e.motor_torque - m.motorSideInertia() * eps;
-      appendRows(m, times[k_out], e, res);
-      ++k_out;
+      const double t_out = times[k_out++];
+      if (!recordRows(m, t_out, e, phase, recorder, res, cart_speeds)) return false;
     }
+    return true;
   };
 
   bool stalled = false;
@@ -484,8 +478,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     const ModelEvaluation e = m.evaluate(yi);
     ++res.stats.realizations;
     if (e.friction_loop.status != LoopStatus::Solved) {
-      res.stats.complete = false;
-      res.stats.status = statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop);
+      recorder.fail(statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop));
       break;
     }
     const double M = e.motor_torque - e.load_torque;  // M_p(ω_i) - M_o(φ_i)
@@ -517,7 +510,7 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
       W_friction -= sigma * c.statics.friction * c.pose.dx_B * dphi;
       W_load -= sigma * c.roller_force * c.pose.dx_B * dphi;
     }
-    emitUpTo(t_next, phi + dphi, w_next, eps);
+    const bool go = emitUpTo(t_next, phi + dphi, w_next, eps);
     if ((slope_before < 0.0 && w_next > w) || (slope_before > 0.0 && w_next < w)) extrema.record(t, w);
     if (w_next != w) slope_before = w_next - w;
     phi += dphi;
@@ -525,13 +518,11 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
     t = t_next;
     J_i = J_next;
     ++res.stats.steps;
+    if (!go) break;  // a stop rule ended the run at a row inside this step
   }
   res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
   res.crank_speed_extrema = extrema.takeUpTo(res.timeseries.rows.empty() ? 0.0 : res.timeseries.rows.back()[0]);
-  if (stalled) {
-    res.stats.complete = false;
-    res.stats.status = StallDetector::statusAt(t);
-  }
+  if (stalled) recorder.fail(StallDetector::statusAt(t));
   // Energy audit at the last node (at or just past t_end, or at the stall).
   y(m.iPhi()) = phi;
   y(m.iOmega()) = w;
@@ -547,9 +538,11 @@ RunResult runBaranov(const ReducedModel& m, RunResult res) {
 
 }  // namespace
 
-RunResult runReducedModel(const Scene& scene) { return runReducedModel(scene, nullptr); }
+RunResult runReducedModel(const Scene& scene, const RunControl& control) {
+  return runReducedModel(scene, nullptr, control);
+}
 
-RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law) {
+RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law, const RunControl& control) {
   // The model's kinematics and loads stay evaluable (tests and studies read them); its motion is
   // not, where the crank side has no inertia at the dead centres (physics/CrankInertia.h).
   const std::string without_inertia = crankWithoutInertia(scene, "reduced model");
@@ -566,9 +559,9 @@ RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> la
   setupTables(model, res);
   if (scene.reduced.integrator == ReducedIntegrator::Baranov) {
     res.integrator = "baranov";
-    return runBaranov(model, std::move(res));
+    return runBaranov(model, std::move(res), control);
   }
-  return runCvode(model, std::move(res));
+  return runCvode(model, std::move(res), control);
 }
 
 }  // namespace rollerdyn

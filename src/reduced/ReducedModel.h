@@ -60,6 +60,7 @@
 
 #include <Eigen/Core>
 
+#include "analysis/RunControl.h"
 #include "analysis/RunResult.h"
 #include "motor/MotorLaw.h"
 #include "motor/Supply.h"
@@ -287,9 +288,10 @@ class ReducedModel {
 // A stall (crank or motor below 1 % of the synchronous crank speed ω0/u, i.e. slip > 0.99 or
 // reversal, for 1 s of simulated time; for Baranov: the scheme's speed reaching 0) ends the run
 // early with stats.complete = false and stats.status = "motor stalled at t = X s" (X = onset),
-// never with an exception.
-RunResult runReducedModel(const Scene& scene);
+// never with an exception. The stop rules are those of every run (analysis/RunRecorder.h);
+// `control` stops the run (Ctrl-C) and follows its progress, as for the multibody model.
+RunResult runReducedModel(const Scene& scene, const RunControl& control = {});
 // The same with a given motor law (e.g. one written in a test).
-RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law);
+RunResult runReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> law, const RunControl& control = {});
 
 }  // namespace rollerdyn
