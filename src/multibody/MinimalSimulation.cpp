@@ -287,6 +287,51 @@ class FormulationSelfCheck {
   std::vector<double> re_simbody_;
 };
 
+// The output rows of the minimal formulation: motion and O(n) reactions at each output time,
+// Simbody's constrained solve beside them at every self-check row, then the stop rules.
+class OutputRows {
+ public:
+  OutputRows(const MultibodyModel& model, MinimalSystem& ms, RunRecorder& recorder, RunStats& stats)
+      : model_(model), ms_(ms), recorder_(recorder), self_check_(model, stats),
+        reactions_(model.scene().simulation.reactions), cart_speeds_(model.scene().carts.count) {}
+
+  // Row k at time t from state y; false when the run must stop (non-finite row, stall, interrupt,
+  // friction loop).
+  bool record(std::size_t k, double t, const Eigen::VectorXd& y) {
+    if (!ms_.set(t, y.data())) return loopFailed(t);
+    const SimTK::State& s = ms_.state();
+    const SimTK::Vector udot_projected = ms_.dynamics().udot();
+    model_.observeMotion(s, udot_projected, ts_row_);
+    if (reactions_) ms_.reactionsRow(s, re_row_);
+    if (self_check_.due(k)) {
+      const SimTK::Vector normals_own = model_.hasGuideFriction() ? ms_.dynamics().guideNormals(s) : SimTK::Vector();
+      const SimTK::State* constrained = ms_.setConstrained(t, y.data());  // Simbody's full constrained solve
+      if (!constrained) return loopFailed(t);
+      self_check_.compare(*constrained, udot_projected, normals_own, reactions_ ? &re_row_ : nullptr);
+    }
+    for (std::size_t j = 0; j < cart_speeds_.size(); ++j) cart_speeds_[j] = model_.carts()[j].v(s);
+    const MotorForce* motor = model_.motorForce();
+    if (motor) phase_ = motor->phase(s);
+    const RowMotion motion{model_.crankAngle(s), model_.crankSpeed(s), model_.motorSpeed(s), &cart_speeds_,
+                           motor ? &phase_ : nullptr};
+    return recorder_.record(t, ts_row_, reactions_ ? &re_row_ : nullptr, motion);
+  }
+
+ private:
+  bool loopFailed(double t) {
+    recorder_.fail(statusAt("the run stopped", t) + ": the " + ms_.loopFailure());
+    return false;
+  }
+
+  const MultibodyModel& model_;
+  MinimalSystem& ms_;
+  RunRecorder& recorder_;
+  FormulationSelfCheck self_check_;
+  bool reactions_;
+  std::vector<double> ts_row_, re_row_, cart_speeds_;
+  SupplyPhase phase_;
+};
+
 // The run's tables and statistics before the first row.
 RunResult emptyRun(const MultibodyModel& model) {
   const Scene& sc = model.scene();
@@ -348,37 +393,11 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   // Every row goes through the stop rules both models share (analysis/RunRecorder.h).
   const MotorForce* motor = model.motorForce();
   RunRecorder recorder(sc, motor ? &motor->supply() : nullptr, model.options().prescribe_crank_speed, run, control);
-  FormulationSelfCheck self_check(model, run.stats);
-  const bool reactions = sc.simulation.reactions;
-  std::vector<double> ts_row, re_row, cart_speeds(sc.carts.count);
-  SupplyPhase phase;
-  auto loopFailed = [&](double t) {
-    recorder.fail(statusAt("the run stopped", t) + ": the " + ms.loopFailure());
-    return false;
-  };
-  // Returns false when the run must stop (non-finite row, stall, interrupt, friction loop).
-  auto record = [&](std::size_t k, double t, const Eigen::VectorXd& y) {
-    if (!ms.set(t, y.data())) return loopFailed(t);
-    const SimTK::State& s = ms.state();
-    const SimTK::Vector udot_projected = ms.dynamics().udot();
-    model.observeMotion(s, udot_projected, ts_row);
-    if (reactions) ms.reactionsRow(s, re_row);
-    if (self_check.due(k)) {
-      const SimTK::Vector normals_own = model.hasGuideFriction() ? ms.dynamics().guideNormals(s) : SimTK::Vector();
-      const SimTK::State* constrained = ms.setConstrained(t, y.data());  // Simbody's full constrained solve
-      if (!constrained) return loopFailed(t);
-      self_check.compare(*constrained, udot_projected, normals_own, reactions ? &re_row : nullptr);
-    }
-    for (int j = 0; j < sc.carts.count; ++j) cart_speeds[j] = model.carts()[j].v(s);
-    if (motor) phase = motor->phase(s);
-    const RowMotion motion{model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s), &cart_speeds,
-                           motor ? &phase : nullptr};
-    return recorder.record(t, ts_row, reactions ? &re_row : nullptr, motion);
-  };
+  OutputRows rows(model, ms, recorder, run.stats);
 
   const std::vector<double> times = outputTimes(sc.simulation);
   const std::clock_t cpu0 = std::clock();
-  bool go = record(0, times.front(), y0);
+  bool go = rows.record(0, times.front(), y0);
   double t_last = times.front();  // the last recorded row, whose state closes the energy audit
   Eigen::VectorXd y_last = y0;
   for (std::size_t k = 1; go && k < times.size(); ++k) {
@@ -394,7 +413,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
         recorder.fail(statusAt("integration failed", integ.time()) + ": " + integ.error());
       break;
     }
-    go = record(k, times[k], integ.y());
+    go = rows.record(k, times[k], integ.y());
     if (!go && !run.stats.complete && run.timeseries.rows.size() <= k) break;  // the row itself failed
     t_last = times[k];
     y_last = integ.y();
@@ -402,7 +421,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   run.crank_speed_extrema = extrema.takeUpTo(run.timeseries.rows.empty() ? t_last : run.timeseries.rows.back()[0]);
   keepIntegratorStatistics(integ, run.stats);
-  if (!reactions) run.stats.reaction_self_check.clear();
+  if (!sc.simulation.reactions) run.stats.reaction_self_check.clear();
 
   // The audit from the last recorded row's state (O(n): the evaluation state, realized to Dynamics).
   ms.set(t_last, y_last.data());
