@@ -55,6 +55,133 @@ double locateSpeedTrigger(const MultibodyModel& model, double t0, const SimTK::V
   return hi;
 }
 
+// simulation.constraint_tolerance bounds the LARGEST position-constraint error, but Simbody
+// projects when the RMS of its m constraint errors exceeds its tolerance; the largest error
+// can then be √m times the RMS (seen: 1.7e-6 at a 1e-6 tolerance on recuperative-2cart), so
+// Simbody gets tol/√m.
+double simbodyConstraintTolerance(const Scene& sc, const SimTK::State& s0) {
+  const int n_constraint_eqs = std::max(1, s0.getNQErr());
+  return sc.simulation.constraint_tolerance / std::sqrt(double(n_constraint_eqs));
+}
+
+// The run's tables and descriptions before the first row.
+RunResult emptyRun(const MultibodyModel& model) {
+  const Scene& sc = model.scene();
+  RunResult run;
+  run.model = "multibody";
+  run.integrator = sc.simulation.integrator;
+  run.effects = sc.effects();
+  run.guide_normals = model.guideNormalsDescription();
+  run.timeseries.columns = model.timeseriesColumns();
+  if (sc.simulation.reactions) run.reactions.columns = model.reactionColumns();
+  return run;
+}
+
+// Where a step began: the interpolant's left end.
+struct StepStart {
+  double t = 0;
+  SimTK::Vector y, ydot;
+  void at(const SimTK::State& s) {
+    t = s.getTime();
+    y = s.getY();
+    ydot = s.getYDot();
+  }
+};
+
+// Switching events of the starting method (motor/Supply.h): a timed one is the integrator's
+// advance limit, so no step crosses it; a speed-triggered one (the star-delta changeover by
+// speed) is found after the step that crosses it, on the step's interpolant, and the run goes
+// on from there. At an event the motor element maps its states (MotorForce::applyDueEvents) and
+// the integrator starts afresh from the switched state. Rows at an event's time show the state
+// after it (as in the reduced model).
+class SupplyEvents {
+ public:
+  SupplyEvents(const MultibodyModel& model, double t_end, double constraint_tol)
+      : model_(model), motor_(model.motorForce()), active_(motor_ && !motor_->supply().constant()),
+        t_end_(t_end), tol_(constraint_tol) {}
+
+  // The next timed event and the trigger speed of the supply's phase in s (after a (re)start).
+  void arm(const SimTK::State& s) {
+    t_stop_ = active_ ? std::min(t_end_, motor_->supply().nextEventTime(motor_->phase(s))) : t_end_;
+    trigger_ = active_ ? motor_->supply().triggerSpeed(motor_->phase(s)) : std::nan("");
+  }
+  double stopTime() const { return t_stop_; }  // the integrator's advance limit [s]
+
+  // Whether the step from `from` to `advanced` holds an event: the speed trigger crossed inside it
+  // (t_event is moved back to the crossing), or the step ended at a timed event. `switched` then
+  // holds the state at the event, not yet switched.
+  bool find(const StepStart& from, const SimTK::State& advanced, SimTK::State& switched, double& t_event) {
+    by_speed_ = false;
+    if (!std::isnan(trigger_) && motor_->rotorSpeed(advanced) >= trigger_) {
+      switched = advanced;
+      t_event = locateSpeedTrigger(model_, from.t, from.y, from.ydot, advanced, trigger_, tol_, switched);
+      return by_speed_ = true;
+    }
+    if (active_ && t_stop_ < t_end_ && t_event >= t_stop_ - 1e-12 * std::max(1.0, t_stop_)) {
+      switched = advanced;
+      model_.system().realize(switched, SimTK::Stage::Velocity);  // a State copy starts with its cache invalid
+      return true;
+    }
+    return false;
+  }
+  // Switches the state at the event found last (the motor element maps its states).
+  void apply(SimTK::State& switched) const { motor_->applyDueEvents(switched, by_speed_); }
+
+ private:
+  const MultibodyModel& model_;
+  const MotorForce* motor_;
+  bool active_;
+  double t_end_, tol_;
+  double t_stop_ = 0, trigger_ = std::nan("");
+  bool by_speed_ = false;
+};
+
+// The integrator's counts over every restart (initialize() starts them afresh).
+struct IntegratorCounts {
+  long steps = 0, realizations = 0, rejected = 0;  // counted before the last restart at an event
+  void keep(const SimTK::Integrator& integ) {
+    steps += integ.getNumStepsTaken();
+    rejected += integ.getNumErrorTestFailures();
+    realizations += integ.getNumRealizations();
+  }
+  void write(const SimTK::Integrator& integ, RunStats& stats) const {
+    stats.steps = steps + integ.getNumStepsTaken();
+    stats.error_test_failures = rejected + integ.getNumErrorTestFailures();
+    stats.realizations = realizations + integ.getNumRealizations();
+  }
+};
+
+// The output rows: motion and reactions of a realized state, then the stop rules every run shares
+// (analysis/RunRecorder.h).
+class OutputRows {
+ public:
+  OutputRows(const MultibodyModel& model, RunRecorder& recorder, RunStats& stats)
+      : model_(model), recorder_(recorder), stats_(stats), reactions_(model.scene().simulation.reactions),
+        cart_speeds_(model.carts().size()) {}
+
+  // The row of state s at output time t; false when the run ends there.
+  bool record(const SimTK::State& s, double t) {
+    model_.system().realize(s, SimTK::Stage::Acceleration);
+    model_.observeMotion(s, s.getUDot(), ts_row_);
+    if (reactions_) model_.observeReactions(s, re_row_);
+    stats_.constraint_error_max = std::max(stats_.constraint_error_max, model_.constraintError(s));
+    for (std::size_t j = 0; j < cart_speeds_.size(); ++j) cart_speeds_[j] = model_.carts()[j].v(s);
+    const MotorForce* motor = model_.motorForce();
+    if (motor) phase_ = motor->phase(s);
+    const RowMotion motion{model_.crankAngle(s), model_.crankSpeed(s), model_.motorSpeed(s), &cart_speeds_,
+                           motor ? &phase_ : nullptr};
+    return recorder_.record(t, ts_row_, reactions_ ? &re_row_ : nullptr, motion);
+  }
+
+ private:
+  const MultibodyModel& model_;
+  RunRecorder& recorder_;
+  RunStats& stats_;
+  bool reactions_;
+  std::vector<double> ts_row_, re_row_, cart_speeds_;
+  SupplyPhase phase_;
+};
+
 }  // namespace
 
 RunResult simulateMultibody(const MultibodyModel& model, const RunControl& control) {
@@ -70,60 +197,18 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
         "(the constrained formulation knows the guide reactions only after Simbody's constrained solve); "
         "use loads.guide_friction.normal_force = lagged");
   const SimTK::MultibodySystem& system = model.system();
-  RunResult run;
-  run.model = "multibody";
-  run.integrator = sc.simulation.integrator;
-  run.effects = sc.effects();
-  run.guide_normals = model.guideNormalsDescription();
-  run.timeseries.columns = model.timeseriesColumns();
-  const bool reactions = sc.simulation.reactions;
-  if (reactions) run.reactions.columns = model.reactionColumns();
-
+  RunResult run = emptyRun(model);
   SimTK::State s0 = model.initialState();
   const EnergySnapshot e0 = model.energy(s0);
-  // simulation.constraint_tolerance bounds the LARGEST position-constraint error, but Simbody
-  // projects when the RMS of its m constraint errors exceeds its tolerance; the largest error
-  // can then be √m times the RMS (seen: 1.7e-6 at a 1e-6 tolerance on recuperative-2cart), so
-  // Simbody gets tol/√m.
-  const int n_constraint_eqs = std::max(1, s0.getNQErr());
-  const double constraint_tol = sc.simulation.constraint_tolerance / std::sqrt(double(n_constraint_eqs));
+  const double constraint_tol = simbodyConstraintTolerance(sc, s0);
   const std::vector<double> times = outputTimes(sc.simulation);  // the grid the reduced model uses
   const double t_end = sc.simulation.t_end;
   auto integ = makeIntegrator(sc.simulation.integrator, system, sc.simulation.accuracy, constraint_tol);
   integ->initialize(s0);
-
-  // Switching events of the starting method (motor/Supply.h): a timed one is the integrator's
-  // advance limit, so no step crosses it; a speed-triggered one (the star-delta changeover by
-  // speed) is found after the step that crosses it, on the step's interpolant, and the run goes
-  // on from there. At an event the motor element maps its states (MotorForce::applyDueEvents) and
-  // the integrator starts afresh from the switched state. Rows at an event's time show the state
-  // after it (as in the reduced model).
+  SupplyEvents events(model, t_end, constraint_tol);
   const MotorForce* motor = model.motorForce();
-  const bool events = motor && !motor->supply().constant();
-  auto nextStop = [&](const SimTK::State& s) {
-    return events ? std::min(t_end, motor->supply().nextEventTime(motor->phase(s))) : t_end;
-  };
-  auto triggerOf = [&](const SimTK::State& s) {
-    return events ? motor->supply().triggerSpeed(motor->phase(s)) : std::nan("");
-  };
-
-  // Every row goes through the stop rules both models share (analysis/RunRecorder.h).
   RunRecorder recorder(sc, motor ? &motor->supply() : nullptr, model.options().prescribe_crank_speed, run, control);
-  std::vector<double> cart_speeds(model.carts().size());
-  std::vector<double> ts_row, re_row;
-  SupplyPhase phase;
-  // Records the row of state s at output time t; false when the run ends there.
-  auto record = [&](const SimTK::State& s, double t) {
-    system.realize(s, SimTK::Stage::Acceleration);
-    model.observeMotion(s, s.getUDot(), ts_row);
-    if (reactions) model.observeReactions(s, re_row);
-    run.stats.constraint_error_max = std::max(run.stats.constraint_error_max, model.constraintError(s));
-    for (size_t j = 0; j < cart_speeds.size(); ++j) cart_speeds[j] = model.carts()[j].v(s);
-    if (motor) phase = motor->phase(s);
-    const RowMotion motion{model.crankAngle(s), model.crankSpeed(s), model.motorSpeed(s), &cart_speeds,
-                           motor ? &phase : nullptr};
-    return recorder.record(t, ts_row, reactions ? &re_row : nullptr, motion);
-  };
+  OutputRows rows(model, recorder, run.stats);
 
   // Output rows come from our own cubic Hermite interpolation between the integrator's steps,
   // into one State we keep (`sample`), rather than from Simbody's report times: Simbody copies
@@ -135,19 +220,19 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   SimTK::State sample = integ->getState();
 
   const std::clock_t cpu0 = std::clock();
-  bool stop = !record(integ->getState(), integ->getTime());
+  bool stop = !rows.record(integ->getState(), integ->getTime());
   const SimTK::State* last_row = &integ->getState();
-  SimTK::Vector y_prev = integ->getState().getY(), ydot_prev = integ->getState().getYDot();
-  double t_prev = integ->getTime();
+  StepStart from;
+  from.at(integ->getState());
   CrankSpeedExtremaFinder extrema;  // the crank speed's extrema inside the steps, on the rows' interpolant
-  extrema.restart(t_prev, model.crankSpeed(integ->getState()), model.crankAcceleration(integ->getState()));
-  double t_stop = nextStop(integ->getState()), trigger = triggerOf(integ->getState());
+  extrema.restart(from.t, model.crankSpeed(integ->getState()), model.crankAcceleration(integ->getState()));
+  events.arm(integ->getState());
   SimTK::State switched;  // the state at an event, switched
-  long steps_before = 0, realizations_before = 0, rejected_before = 0;  // counted before the last restart at an event
+  IntegratorCounts counts;
   std::size_t k = 1;
-  while (!stop && t_prev < t_end - 1e-12) {
+  while (!stop && from.t < t_end - 1e-12) {
     try {
-      integ->stepTo(t_end, t_stop);
+      integ->stepTo(t_end, events.stopTime());
     } catch (const std::exception& ex) {
       recorder.fail(statusAt("integration failed", integ->getTime()) + ": " + ex.what());
       break;
@@ -155,67 +240,45 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
     const SimTK::State& advanced = integ->getState();
     system.realize(advanced, SimTK::Stage::Acceleration);  // the next step starts from this ẏ
     double t_now = advanced.getTime();
-    // An event in this step: the speed trigger crossed inside it, or the step ended at a timed event.
-    bool event = false, by_speed = false;
     extrema.stepTo(advanced.getTime(), model.crankSpeed(advanced), model.crankAcceleration(advanced));
-    if (!std::isnan(trigger) && motor->rotorSpeed(advanced) >= trigger) {
-      switched = advanced;
-      t_now = locateSpeedTrigger(model, t_prev, y_prev, ydot_prev, advanced, trigger, constraint_tol, switched);
-      event = by_speed = true;
-    } else if (events && t_stop < t_end && t_now >= t_stop - 1e-12 * std::max(1.0, t_stop)) {
-      switched = advanced;
-      system.realize(switched, SimTK::Stage::Velocity);  // a State copy starts with its cache invalid
-      event = true;
-    }
+    const bool event = events.find(from, advanced, switched, t_now);
     for (; !stop && k < times.size() && times[k] <= t_now + 1e-12 && !(event && times[k] >= t_now - 1e-12); ++k) {
       const double t_out = times[k];
       const bool at_step = std::abs(t_out - t_now) <= 1e-12;
-      if (!at_step)
-        sampleWithinStep(system, t_prev, y_prev, ydot_prev, advanced, t_out, constraint_tol, sample);
+      if (!at_step) sampleWithinStep(system, from.t, from.y, from.ydot, advanced, t_out, constraint_tol, sample);
       const SimTK::State& s = at_step ? advanced : sample;
       last_row = &s;
-      stop = !record(s, t_out);
+      stop = !rows.record(s, t_out);
     }
-    if (event && !stop) {
-      motor->applyDueEvents(switched, by_speed);
-      // initialize() starts the integrator's statistics afresh: keep what it counted so far.
-      steps_before += integ->getNumStepsTaken();
-      rejected_before += integ->getNumErrorTestFailures();
-      realizations_before += integ->getNumRealizations();
-      try {
-        integ->initialize(switched);  // a fresh start from the switched state (statistics keep counting)
-      } catch (const std::exception& ex) {
-        recorder.fail(statusAt("integration failed", t_now) + ": " + ex.what());
-        break;
-      }
-      system.realize(integ->getState(), SimTK::Stage::Acceleration);
-      // The step's extrema after the event belonged to the old supply: drop them, start afresh.
-      extrema.dropAfter(t_now);
-      extrema.restart(t_now, model.crankSpeed(integ->getState()), model.crankAcceleration(integ->getState()));
-      sample = integ->getState();  // rows interpolated from now on carry the new supply phase
-      t_stop = nextStop(integ->getState());
-      trigger = triggerOf(integ->getState());
-      y_prev = integ->getState().getY();
-      ydot_prev = integ->getState().getYDot();
-      t_prev = integ->getTime();
+    if (!event || stop) {
+      from.at(advanced);
       continue;
     }
-    y_prev = advanced.getY();
-    ydot_prev = advanced.getYDot();
-    t_prev = t_now;
+    events.apply(switched);
+    counts.keep(*integ);
+    try {
+      integ->initialize(switched);  // a fresh start from the switched state (statistics keep counting)
+    } catch (const std::exception& ex) {
+      recorder.fail(statusAt("integration failed", t_now) + ": " + ex.what());
+      break;
+    }
+    system.realize(integ->getState(), SimTK::Stage::Acceleration);
+    // The step's extrema after the event belonged to the old supply: drop them, start afresh.
+    extrema.dropAfter(t_now);
+    extrema.restart(t_now, model.crankSpeed(integ->getState()), model.crankAcceleration(integ->getState()));
+    sample = integ->getState();  // rows interpolated from now on carry the new supply phase
+    events.arm(integ->getState());
+    from.at(integ->getState());
   }
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   run.crank_speed_extrema = extrema.takeUpTo(last_row->getTime());
-  run.stats.steps = steps_before + integ->getNumStepsTaken();
-  run.stats.error_test_failures = rejected_before + integ->getNumErrorTestFailures();
-  run.stats.realizations = realizations_before + integ->getNumRealizations();
+  counts.write(*integ, run.stats);
 
   // The audit ends at the last recorded row, where the tables end too (a run stopped early may
   // have integrated past it).
   const SimTK::State& s1 = *last_row;
   system.realize(s1, SimTK::Stage::Acceleration);
-  const EnergySnapshot e1 = model.energy(s1);
-  run.energy = energyAuditBetween(e0, e1);
+  run.energy = energyAuditBetween(e0, model.energy(s1));
   appendBearingColumns(sc, run);  // each main bearing's share, when crankshaft.* places them
   return run;
 }
