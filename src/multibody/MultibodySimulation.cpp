@@ -182,15 +182,35 @@ class OutputRows {
   SupplyPhase phase_;
 };
 
-}  // namespace
-
-RunResult simulateMultibody(const MultibodyModel& model, const RunControl& control) {
-  const Scene& sc = model.scene();
-  if (sc.simulation.formulation == Formulation::Minimal) {
-    RunResult run = simulateMinimal(model, control);
-    appendBearingColumns(sc, run);  // each main bearing's share, when crankshaft.* places them
-    return run;
+// Continues from the state switched at an event at t_event: the integrator starts afresh there
+// (its counts kept), the step's extrema after the event, which belonged to the old supply, are
+// dropped. False, with the run's status set, when the integrator cannot start there.
+bool restartAtEvent(SimTK::Integrator& integ, const MultibodyModel& model, const SimTK::State& switched,
+                    double t_event, IntegratorCounts& counts, CrankSpeedExtremaFinder& extrema, RunRecorder& recorder) {
+  counts.keep(integ);
+  try {
+    integ.initialize(switched);
+  } catch (const std::exception& ex) {
+    recorder.fail(statusAt("integration failed", t_event) + ": " + ex.what());
+    return false;
   }
+  const SimTK::State& s = integ.getState();
+  model.system().realize(s, SimTK::Stage::Acceleration);
+  extrema.dropAfter(t_event);
+  extrema.restart(t_event, model.crankSpeed(s), model.crankAcceleration(s));
+  return true;
+}
+
+// The constrained formulation: Simbody's integrator on the full coordinates with the loop
+// constraints, rows interpolated within its steps.
+// Output rows come from our own cubic Hermite interpolation between the integrator's steps,
+// into one State we keep (`sample`), rather than from Simbody's report times: Simbody copies
+// the whole State (every cache entry, ~640k instructions here) for each interpolated report,
+// which cost ~10 % of a balanced-4cart run. The interpolant is the one Simbody uses
+// (third order, from y and ẏ at both ends of the step); the sample is then projected onto the
+// constraints like Simbody's reports, so rows satisfy them to the same tolerance.
+RunResult simulateConstrained(const MultibodyModel& model, const RunControl& control) {
+  const Scene& sc = model.scene();
   if (model.hasGuideFriction() && !model.hasFrictionLagStates())
     throw std::invalid_argument(
         "multibody model: loads.guide_friction.normal_force = algebraic needs simulation.formulation = minimal "
@@ -210,12 +230,6 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   RunRecorder recorder(sc, motor ? &motor->supply() : nullptr, model.options().prescribe_crank_speed, run, control);
   OutputRows rows(model, recorder, run.stats);
 
-  // Output rows come from our own cubic Hermite interpolation between the integrator's steps,
-  // into one State we keep (`sample`), rather than from Simbody's report times: Simbody copies
-  // the whole State (every cache entry, ~640k instructions here) for each interpolated report,
-  // which cost ~10 % of a balanced-4cart run. The interpolant is the one Simbody uses
-  // (third order, from y and ẏ at both ends of the step); the sample is then projected onto the
-  // constraints like Simbody's reports, so rows satisfy them to the same tolerance.
   integ->setReturnEveryInternalStep(true);
   SimTK::State sample = integ->getState();
 
@@ -255,17 +269,7 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
       continue;
     }
     events.apply(switched);
-    counts.keep(*integ);
-    try {
-      integ->initialize(switched);  // a fresh start from the switched state (statistics keep counting)
-    } catch (const std::exception& ex) {
-      recorder.fail(statusAt("integration failed", t_now) + ": " + ex.what());
-      break;
-    }
-    system.realize(integ->getState(), SimTK::Stage::Acceleration);
-    // The step's extrema after the event belonged to the old supply: drop them, start afresh.
-    extrema.dropAfter(t_now);
-    extrema.restart(t_now, model.crankSpeed(integ->getState()), model.crankAcceleration(integ->getState()));
+    if (!restartAtEvent(*integ, model, switched, t_now, counts, extrema, recorder)) break;
     sample = integ->getState();  // rows interpolated from now on carry the new supply phase
     events.arm(integ->getState());
     from.at(integ->getState());
@@ -279,6 +283,15 @@ RunResult simulateMultibody(const MultibodyModel& model, const RunControl& contr
   const SimTK::State& s1 = *last_row;
   system.realize(s1, SimTK::Stage::Acceleration);
   run.energy = energyAuditBetween(e0, model.energy(s1));
+  return run;
+}
+
+}  // namespace
+
+RunResult simulateMultibody(const MultibodyModel& model, const RunControl& control) {
+  const Scene& sc = model.scene();
+  RunResult run = sc.simulation.formulation == Formulation::Minimal ? simulateMinimal(model, control)
+                                                                    : simulateConstrained(model, control);
   appendBearingColumns(sc, run);  // each main bearing's share, when crankshaft.* places them
   return run;
 }
