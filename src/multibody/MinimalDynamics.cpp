@@ -63,6 +63,22 @@ bool MinimalDynamics::evaluateWithLoop(SimTK::State& s, const MinimalCoordinates
 
 bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& coords, bool solve_loop,
                                    bool keep_normals) {
+  // With the loop solved here, the friction is added once it is known.
+  solveProjected(s, coords, /*include_friction=*/!solve_loop);
+  loop_ = GuideLoopResult{};
+  placeLoops(s);
+  if (!solve_loop) return true;
+  const double eps0 = k_crank_ >= 0 ? nu_dot_(k_crank_) : 0.0;
+  setUpFrictionLoop(s, coords, eps0);
+  loop_ = solveGuideFrictionLoop(loop_carts_.data(), int(carts_.size()), eps0, loop_friction_.data(),
+                                 &loop_normals_[0]);
+  if (loop_.status != LoopStatus::Solved) return false;
+  applyLoopFriction(coords);
+  if (keep_normals) model_.frictionElement().setNormalsInUse(s, loop_normals_);
+  return true;
+}
+
+void MinimalDynamics::solveProjected(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction) {
   const SimTK::MultibodySystem& system = model_.system();
   const SimTK::SimbodyMatterSubsystem& matter = model_.matter();
   // The inverse-dynamics pass and M·v need positions and velocities only (Simbody's tree
@@ -72,8 +88,7 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
   f_body_.setToZero();
   f_particle_.setToZero();
   f_mobility_.setToZero();
-  // With the loop solved here, the friction is added below, once it is known.
-  model_.addAppliedForces(s, f_body_, f_particle_, f_mobility_, /*include_friction=*/!solve_loop);
+  model_.addAppliedForces(s, f_body_, f_particle_, f_mobility_, include_friction);
   // r0 = M·(Ṅ·ν̇) + c - f
   matter.calcResidualForceIgnoringConstraints(s, f_mobility_, f_body_, coords.bias(), residual_);
   const int k = coords.freeSpeeds();
@@ -89,9 +104,9 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
     b(i) = -n_i.dot(residual);
     for (int j = 0; j < k; ++j) A(i, j) = n_i.dot(view(mn_[j]));
   }
-  Eigen::Matrix2d A_inv = Eigen::Matrix2d::Zero();
-  if (k == 1) A_inv(0, 0) = 1.0 / A(0, 0);
-  if (k == 2) A_inv = A.inverse();
+  A_inv_.setZero();
+  if (k == 1) A_inv_(0, 0) = 1.0 / A(0, 0);
+  if (k == 2) A_inv_ = A.inverse();
   nu_dot_.setZero();
   if (k == 1) nu_dot_(0) = b(0) / A(0, 0);
   if (k == 2) nu_dot_ = A.partialPivLu().solve(b);
@@ -100,19 +115,17 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
     udot += nu_dot_(i) * view(coords.column(i));
     residual += nu_dot_(i) * view(mn_[i]);  // now the generalized constraint forces M·u̇ + c - f
   }
-  loop_ = GuideLoopResult{};
-  placeLoops(s);
-  if (!solve_loop) return true;
+}
 
-  // The friction loop (GuideFrictionLoop.h). Everything above is linear in the cart frictions
-  // F_j (world x, applied at the guide contacts d/2 above B): F_j adds F_j to cart j's
-  // generalized applied force, so it lowers that constraint force by F_j, adds column_i(cart)·F_j
-  // to b_i and the moment -(d/2)·F_j about B to the cart's applied forces. Along ν̈ only the
-  // crank column moves the carts and rods (the motor side, the twist column, is no ancestor of
-  // either), so a cart's normal forces depend on ν̈ through ε alone.
+// The friction loop (GuideFrictionLoop.h). Everything solveProjected computes is linear in the
+// cart frictions F_j (world x, applied at the guide contacts d/2 above B): F_j adds F_j to cart
+// j's generalized applied force, so it lowers that constraint force by F_j, adds column_i(cart)·F_j
+// to b_i and the moment -(d/2)·F_j about B to the cart's applied forces. Along ν̈ only the crank
+// column moves the carts and rods (the motor side, the twist column, is no ancestor of either),
+// so a cart's normal forces depend on ν̈ through ε alone.
+void MinimalDynamics::setUpFrictionLoop(const SimTK::State& s, const MinimalCoordinates& coords, double eps0) {
   const GuideFriction& friction = model_.frictionElement();
   const int n = int(carts_.size());
-  const double eps0 = k_crank_ >= 0 ? nu_dot_(k_crank_) : 0.0;
   const double half_d = 0.5 * model_.scene().carts.geometry.d;
   const SimTK::SpatialVec unit_friction(SimTK::Vec3(0, 0, -half_d), SimTK::Vec3(1, 0, 0));
   const SimTK::SpatialVec none(SimTK::Vec3(0), SimTK::Vec3(0));
@@ -136,14 +149,17 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
     t.n_F[0] = nf.front;
     t.n_F[1] = nf.rear;
     t.c = friction.frictionPerNormal(j, u[uc]);
-    t.w = crank_column ? A_inv(k_crank_, k_crank_) * (*crank_column)[uc] : 0.0;
+    t.w = crank_column ? A_inv_(k_crank_, k_crank_) * (*crank_column)[uc] : 0.0;
   }
-  loop_ = solveGuideFrictionLoop(loop_carts_.data(), n, eps0, loop_friction_.data(), &loop_normals_[0]);
-  if (loop_.status != LoopStatus::Solved) return false;
+}
 
-  // The solution's friction into the accelerations, constraint forces and applied forces.
+void MinimalDynamics::applyLoopFriction(const MinimalCoordinates& coords) {
+  const int k = coords.freeSpeeds();
+  const double half_d = 0.5 * model_.scene().carts.geometry.d;
+  const SimTK::SpatialVec unit_friction(SimTK::Vec3(0, 0, -half_d), SimTK::Vec3(1, 0, 0));
+  Eigen::Map<Eigen::VectorXd> residual = view(residual_), udot = view(udot_);
   Eigen::Vector2d db = Eigen::Vector2d::Zero();
-  for (int j = 0; j < n; ++j) {
+  for (std::size_t j = 0; j < carts_.size(); ++j) {
     const CartData& c = carts_[j];
     const int uc = c.u_cart;
     for (int i = 0; i < k; ++i) db(i) += coords.column(i)[uc] * loop_friction_[j];
@@ -152,14 +168,12 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
     // two guide contacts, both d/2 above B): force F, moment -(d/2)·F about B.
     f_body_[c.body] += loop_friction_[j] * unit_friction;
   }
-  const Eigen::Vector2d dnu = A_inv * db;
+  const Eigen::Vector2d dnu = A_inv_ * db;
   for (int i = 0; i < k; ++i) {
     nu_dot_(i) += dnu(i);
     udot += dnu(i) * view(coords.column(i));
     residual += dnu(i) * view(mn_[i]);
   }
-  if (keep_normals) friction.setNormalsInUse(s, loop_normals_);
-  return true;
 }
 
 void MinimalDynamics::placeLoops(const SimTK::State& s) {

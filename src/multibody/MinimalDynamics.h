@@ -69,6 +69,13 @@ class MinimalDynamics {
 
  private:
   bool evaluateImpl(SimTK::State& s, const MinimalCoordinates& coords, bool solve_loop, bool keep_normals);
+  // The projected equations without the friction loop: ν̈, u̇ and the constraint forces, and the
+  // inverse of their 1x1 or 2x2 matrix (A_inv_).
+  void solveProjected(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction);
+  // Each cart's normal forces as affine functions of ε and of its friction, for the loop.
+  void setUpFrictionLoop(const SimTK::State& s, const MinimalCoordinates& coords, double eps0);
+  // The loop's frictions into the accelerations, constraint forces and applied forces.
+  void applyLoopFriction(const MinimalCoordinates& coords);
   // Fills each cart's r_AB from the state's crank angle and cart positions (no Simbody accessor:
   // the crank turns about ground z, the carts slide along ground x with their origin at B).
   void placeLoops(const SimTK::State& s);
@@ -96,6 +103,7 @@ class MinimalDynamics {
   int q_crank_ = 0;
   std::vector<CartData> carts_;
   Eigen::Vector2d nu_dot_ = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d A_inv_ = Eigen::Matrix2d::Zero();  // inverse of the projected mass matrix Nᵀ·M·N
   SimTK::Vector udot_, residual_, mn_[2];
   SimTK::Vector_<SimTK::SpatialVec> no_body_forces_;
   // Applied forces f of all force elements at the last evaluate (ground axes): body forces
