@@ -294,24 +294,40 @@ void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y,
   const double J_eq = rigid_ ? J_n1_ + J : J;
   const CouplingTorque coupling = rigid_ ? CouplingTorque{} : couplingTorque(coupling_, e.twist, e.twist_rate);
   const double drive = rigid_ ? M_drive : coupling.torque;
-  if (kinetostatic_ && friction) {
-    // The friction loop (physics/GuideFrictionLoop.h): ε = ε0 + Σ_j (x_B'_j/J)·F_j, F_j the
-    // friction along world x, whose generalized force on φ2 is F_j·x_B'_j.
-    const int n = cartCount();
-    for (int j = 0; j < n; ++j) {
-      loop_carts_[j] = pass.loop[j];
-      loop_carts_[j].w /= J_eq;
-    }
-    const double eps0 = (drive - M - 0.5 * dJ * w2 * w2) / J_eq;
-    e.friction_loop = solveGuideFrictionLoop(loop_carts_.data(), n, eps0, loop_friction_.data(), loop_normals_.data());
-    if (e.friction_loop.status != LoopStatus::Solved) std::fill(loop_friction_.begin(), loop_friction_.end(), 0.0);
-    for (int j = 0; j < n; ++j) {
-      const double dx = pass.carts[j].pose.dx_B;
-      M -= loop_friction_[j] * dx;
-      P_friction -= loop_friction_[j] * dx * w2;
-    }
-  }
+  if (kinetostatic_ && friction) solveFrictionLoop(pass, J_eq, drive, e, M, P_friction);
   e.load_torque = M;
+  drivetrainAccelerations(M_drive, drive, coupling, e);
+  e.motor_power = e.motor_torque * e.omega_motor;
+  e.brake_power = -e.brake_torque * e.omega_motor;
+  e.friction_power = P_friction;
+  e.load_power = P_load;
+  if (kinetostatic_ && keep_carts) kinetostaticCarts(pass, e);
+  if (checksFrictionWork()) e.friction_power_kinetostatic = kinetostaticFrictionPower(pass, e);
+}
+
+void ReducedModel::solveFrictionLoop(const CartPass& pass, double J_eq, double drive, ModelEvaluation& e, double& M,
+                                     double& P_friction) const {
+  // The friction loop (physics/GuideFrictionLoop.h): ε = ε0 + Σ_j (x_B'_j/J)·F_j, F_j the
+  // friction along world x, whose generalized force on φ2 is F_j·x_B'_j.
+  const int n = cartCount();
+  const double w2 = e.omega_crank;
+  for (int j = 0; j < n; ++j) {
+    loop_carts_[j] = pass.loop[j];
+    loop_carts_[j].w /= J_eq;
+  }
+  const double eps0 = (drive - M - 0.5 * pass.dJ * w2 * w2) / J_eq;
+  e.friction_loop = solveGuideFrictionLoop(loop_carts_.data(), n, eps0, loop_friction_.data(), loop_normals_.data());
+  if (e.friction_loop.status != LoopStatus::Solved) std::fill(loop_friction_.begin(), loop_friction_.end(), 0.0);
+  for (int j = 0; j < n; ++j) {
+    const double dx = pass.carts[j].pose.dx_B;
+    M -= loop_friction_[j] * dx;
+    P_friction -= loop_friction_[j] * dx * w2;
+  }
+}
+
+void ReducedModel::drivetrainAccelerations(double M_drive, double drive, const CouplingTorque& coupling,
+                                           ModelEvaluation& e) const {
+  const double w2 = e.omega_crank;
   if (rigid_) {
     // Loveikin and Pochka (2007) eq. (1) in time form: J·φ̈ = M_p - M_o - ½·J'·φ̇²
     e.eps_crank = (M_drive - e.load_torque - 0.5 * e.dJ_n2 * w2 * w2) / (J_n1_ + e.J_n2);
@@ -329,35 +345,32 @@ void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y,
     e.twist_accel = e.eps_motor - e.eps_crank;
     e.damping_power = coupling.damping_power;
   }
-  e.motor_power = e.motor_torque * e.omega_motor;
-  e.brake_power = -e.brake_torque * e.omega_motor;
-  e.friction_power = P_friction;
-  e.load_power = P_load;
+}
 
-  if (kinetostatic_ && keep_carts) {
-    // The reactions of this instant: the cart statics at the crank acceleration just found.
-    for (int j = 0; j < cartCount(); ++j) {
-      CartEvaluation c = pass.carts[j];
-      const double F_world = friction ? loop_friction_[j] : 0.0;
-      c.statics = kinetostaticStatics(j, c, w2, e.eps_crank, F_world);
-      c.generalized_force = scene_.carts.side[j] * (c.roller_force + c.statics.friction) * c.pose.dx_B;
-      e.carts.push_back(c);
-    }
+void ReducedModel::kinetostaticCarts(const CartPass& pass, ModelEvaluation& e) const {
+  // The reactions of this instant: the cart statics at the crank acceleration just found.
+  const bool friction = scene_.hasGuideFriction();
+  for (int j = 0; j < cartCount(); ++j) {
+    CartEvaluation c = pass.carts[j];
+    const double F_world = friction ? loop_friction_[j] : 0.0;
+    c.statics = kinetostaticStatics(j, c, e.omega_crank, e.eps_crank, F_world);
+    c.generalized_force = scene_.carts.side[j] * (c.roller_force + c.statics.friction) * c.pose.dx_B;
+    e.carts.push_back(c);
   }
-  if (checksFrictionWork()) {
-    // What the kinetostatic normals would give at this run's own crank acceleration (each cart's
-    // loop at fixed ε: w = 0): the friction power behind the run's friction-work check.
-    const int n = cartCount();
-    for (int j = 0; j < n; ++j) {
-      loop_carts_[j] = pass.loop[j];
-      loop_carts_[j].w = 0.0;
-    }
-    const GuideLoopResult r =
-        solveGuideFrictionLoop(loop_carts_.data(), n, e.eps_crank, loop_friction_.data(), loop_normals_.data());
-    double P = 0.0;
-    for (int j = 0; j < n; ++j) P -= loop_friction_[j] * pass.carts[j].pose.dx_B * w2;
-    e.friction_power_kinetostatic = r.status == LoopStatus::Solved ? P : std::nan("");
+}
+
+double ReducedModel::kinetostaticFrictionPower(const CartPass& pass, const ModelEvaluation& e) const {
+  // Each cart's loop at fixed ε (w = 0): the friction power behind the run's friction-work check.
+  const int n = cartCount();
+  for (int j = 0; j < n; ++j) {
+    loop_carts_[j] = pass.loop[j];
+    loop_carts_[j].w = 0.0;
   }
+  const GuideLoopResult r =
+      solveGuideFrictionLoop(loop_carts_.data(), n, e.eps_crank, loop_friction_.data(), loop_normals_.data());
+  double P = 0.0;
+  for (int j = 0; j < n; ++j) P -= loop_friction_[j] * pass.carts[j].pose.dx_B * e.omega_crank;
+  return r.status == LoopStatus::Solved ? P : std::nan("");
 }
 
 void ReducedModel::evaluateMotor(double t, const SupplyPhase& phase, const double* y, ModelEvaluation& e) const {

@@ -270,6 +270,17 @@ class ReducedModel {
     std::vector<GuideLoopCart> loop;      // loopTerms() of every cart (w = x_B', not yet /J) when used
   };
   const CartPass& cartPass(double phi, double omega) const;
+  // Kinetostatic normals: the friction loop at the crank acceleration (GuideFrictionLoop.h), its
+  // frictions taken off the load torque M and the friction power (loop_friction_ keeps them).
+  void solveFrictionLoop(const CartPass& pass, double J_eq, double drive, ModelEvaluation& e, double& M,
+                         double& P_friction) const;
+  // The accelerations and the coupling torque from the drive torques and the load torque in e.
+  void drivetrainAccelerations(double M_drive, double drive, const CouplingTorque& coupling, ModelEvaluation& e) const;
+  // Kinetostatic normals: each cart's statics at the crank acceleration just found, into e.carts.
+  void kinetostaticCarts(const CartPass& pass, ModelEvaluation& e) const;
+  // The friction power the kinetostatic normals would give at e's crank acceleration (NaN where
+  // the loop has no solution).
+  double kinetostaticFrictionPower(const CartPass& pass, const ModelEvaluation& e) const;
   bool usesLoopTerms() const { return scene_.hasGuideFriction() && (kinetostatic_ || checksFrictionWork()); }
   mutable std::array<CartPass, 3> passes_;
   mutable int next_pass_ = 0;
