@@ -1,10 +1,12 @@
 // The output column table (io/OutputColumns.h): every column with a unit, a meaning and a model
 // that writes it; the units are the headers' of every earlier run; a row is filled by column,
-// never by position.
+// never by position; the outputs page shows the table as it is.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include "io/OutputColumns.h"
@@ -123,4 +125,16 @@ TEST(OutputColumns, ARowIsFilledByColumnNotByPosition) {
   EXPECT_THROW(L.set(row, Column::tooth_contact, 1.0), std::logic_error);
   EXPECT_THROW(L.set(row, Column::load_torque, 1.0), std::logic_error);  // the reduced model's
   EXPECT_THROW(L.set(row, Column::x_cart, 4, 1.0), std::logic_error);
+}
+
+TEST(OutputColumns, CommittedOutputsPageShowsTheTable) {
+  // The column tables of docs/outputs.md are generated from the table: after changing it, put
+  // the output of `rollerdyn schema --columns` in their place.
+  std::ifstream in(std::string(ROLLERDYN_SOURCE_DIR) + "/docs/outputs.md");
+  std::stringstream page;
+  page << in.rdbuf();
+  ASSERT_FALSE(page.str().empty()) << "docs/outputs.md is missing";
+  EXPECT_NE(page.str().find(outputColumnsMarkdown()), std::string::npos)
+      << "docs/outputs.md's column tables differ from the output column table: replace them by the output of\n"
+         "  ./build/rollerdyn schema --columns\n";
 }
