@@ -10,6 +10,8 @@
 
 #include <Eigen/Dense>
 
+#include "io/OutputColumns.h"
+
 namespace rollerdyn {
 
 namespace {
@@ -186,7 +188,8 @@ void appendBearingColumns(const Scene& sc, RunResult& run) {
   const std::size_t m = beam.bearings().size();
   Table& rx = run.reactions;
   for (std::size_t k = 1; k <= m; ++k)
-    for (const char* c : {"bearing_x_", "bearing_y_"}) rx.columns.push_back(c + std::to_string(k));
+    for (Column c : {Column::main_bearing_x, Column::main_bearing_y})
+      rx.columns.push_back(numberedColumnName(c, int(k)));
   for (std::size_t i = 0; i < rx.rows.size(); ++i) {
     const std::vector<double> Rx = beam.reactions(L.px[i]), Ry = beam.reactions(L.py[i]);
     for (std::size_t k = 0; k < m; ++k) {

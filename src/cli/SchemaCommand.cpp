@@ -1,7 +1,9 @@
-// `rollerdyn schema [KEY] [--markdown]`: the keys a scene file may contain, from the scene
-// schema itself (src/scene/SceneReference.h): every key, or those under KEY, with unit, default,
-// allowed values, meaning and source; --markdown prints the scene file reference page
-// (docs/scene-reference.md is this output, checked by a test).
+// `rollerdyn schema [KEY] [--markdown] [--columns]`: the keys a scene file may contain, from the
+// scene schema itself (src/scene/SceneReference.h): every key, or those under KEY, with unit,
+// default, allowed values, meaning and source; --markdown prints the scene file reference page
+// (docs/scene-reference.md is this output, checked by a test); --columns the output columns'
+// tables of docs/outputs.md, from the output column table (io/OutputColumns.h; a test checks the
+// page holds them).
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -9,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "io/OutputColumns.h"
 #include "scene/DidYouMean.h"
 #include "scene/SceneReference.h"
 #include "scene/SceneSchema.h"
@@ -20,9 +23,16 @@ namespace {
 struct SchemaArgs {
   std::string key;
   bool markdown = false;
+  bool columns = false;
 };
 
 int runSchemaCommand(const SchemaArgs& a) {
+  if (a.columns) {
+    if (!a.key.empty() || a.markdown)
+      throw std::invalid_argument("schema: --columns prints the output columns alone; leave out KEY and --markdown");
+    std::cout << outputColumnsMarkdown();
+    return 0;
+  }
   if (a.markdown) {
     if (!a.key.empty()) throw std::invalid_argument("schema: --markdown prints the whole reference; leave out KEY");
     std::cout << sceneReferenceMarkdown();
@@ -49,6 +59,9 @@ Subcommand addSchemaCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("schema", "the keys a scene file may contain: unit, default, allowed values, meaning, source");
   cmd->add_option("key", args->key, "a key or section, e.g. coupling or coupling.damping (default: every key)");
   cmd->add_flag("--markdown", args->markdown, "print the scene file reference as Markdown (docs/scene-reference.md)");
+  cmd->add_flag("--columns", args->columns,
+                "print the columns of timeseries.csv and reactions.csv (unit, meaning, which model writes them) "
+                "as Markdown tables (docs/outputs.md)");
   cmd->footer("Examples:\n  rollerdyn schema coupling\n  rollerdyn schema motor.critical_slip\n"
               "  rollerdyn schema --markdown > docs/scene-reference.md");
   return {cmd, [args] { return runSchemaCommand(*args); }};

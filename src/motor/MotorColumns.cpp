@@ -6,25 +6,20 @@ namespace rollerdyn {
 
 bool lawHasCurrent(const MotorLaw* law) { return law && std::isfinite(law->steadyCurrent(SupplyState{}, 0.0)); }
 
-std::vector<std::string> motorColumns(const MotorLaw* law, const Supply& supply) {
-  std::vector<std::string> c;
-  if (lawHasCurrent(law)) c.push_back("stator_current");
-  if (!supply.constant()) {
-    c.push_back("supply_voltage_ratio");
-    c.push_back("supply_frequency_ratio");
-  }
-  if (supply.hasBrake()) c.push_back("brake_torque");
-  return c;
+void addMotorColumns(const MotorLaw* law, const Supply& supply, WrittenColumns& written) {
+  written.motor_current = lawHasCurrent(law);
+  written.supply_switches = !supply.constant();
+  written.brake = supply.hasBrake();
 }
 
-void appendMotorColumns(const MotorLaw* law, const Supply& supply, double stator_current, const SupplyState& state,
-                        double brake_torque_crank, std::vector<double>& row) {
-  if (lawHasCurrent(law)) row.push_back(stator_current * state.line_current_factor);  // the line current
-  if (!supply.constant()) {
-    row.push_back(state.connected ? state.voltage : 0.0);
-    row.push_back(state.frequency);
-  }
-  if (supply.hasBrake()) row.push_back(brake_torque_crank);
+void setMotorColumns(const ColumnLayout& layout, double stator_current, const SupplyState& state,
+                     double brake_torque_crank, std::vector<double>& row) {
+  if (layout.has(Column::stator_current))
+    layout.set(row, Column::stator_current, stator_current * state.line_current_factor);  // the line current
+  if (layout.has(Column::supply_voltage_ratio))
+    layout.set(row, Column::supply_voltage_ratio, state.connected ? state.voltage : 0.0);
+  if (layout.has(Column::supply_frequency_ratio)) layout.set(row, Column::supply_frequency_ratio, state.frequency);
+  if (layout.has(Column::brake_torque)) layout.set(row, Column::brake_torque, brake_torque_crank);
 }
 
 }  // namespace rollerdyn

@@ -28,8 +28,9 @@ void MinimalReactions::row(const SimTK::State& s, const MinimalDynamics& dyn, st
   const SimTK::Vector normals = dyn.guideNormals(s);
   const SimTK::Vec3 gravity(0, -scene.loads.gravity, 0);
 
-  re.clear();
-  re.push_back(s.getTime());
+  const ColumnLayout& L = model_.reactionsLayout();
+  L.reset(re);
+  L.set(re, Column::t, s.getTime());
   // The crankshaft subtree's free body: Σ (m·a - applied) over its bodies, minus the forces the
   // carts put on it through the loops.
   auto netForce = [&](const SimTK::MobilizedBody& b) {
@@ -46,7 +47,7 @@ void MinimalReactions::row(const SimTK::State& s, const MinimalDynamics& dyn, st
     if (!c.cam.isEmptyHandle()) {
       // Cam drive: "F_rod" > 0 pulls the cart towards the shaft, like a rod in tension; the pusher
       // puts the opposite force on the cam. The coupler acts on mobilities only: no bearing load.
-      re.insert(re.end(), {n_front, n_rear, -c.side * F[0], friction, -F[0], 0.0});
+      model_.setCartReactions(int(j) + 1, {n_front, n_rear, -c.side * F[0], friction, -F[0], 0.0}, re);
       continue;
     }
     const SimTK::Vec3 F_rod_on_cart(F[0], F[1], 0);
@@ -61,9 +62,12 @@ void MinimalReactions::row(const SimTK::State& s, const MinimalDynamics& dyn, st
       bearing += netForce(c.rod);
     }
     bearing += F_rod_on_cart;  // the cart pushes the subtree with -F at B (or at the pin)
-    re.insert(re.end(), {n_front, n_rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]});
+    model_.setCartReactions(
+        int(j) + 1, {n_front, n_rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]}, re);
   }
-  re.insert(re.end(), {bearing[0], bearing[1], model_.couplingTorque(s, udot)});
+  L.set(re, Column::bearing_x, bearing[0]);
+  L.set(re, Column::bearing_y, bearing[1]);
+  L.set(re, Column::coupling_torque, model_.couplingTorque(s, udot));
 }
 
 }  // namespace rollerdyn

@@ -1,4 +1,4 @@
-// Every reaction column of the multibody model (reactions.csv, src/analysis/RunResult.h: same
+// Every reaction column of the multibody model (reactions.csv, io/OutputColumns.h: same
 // frames, signs and order as MultibodyModel::observeReactions) from the minimal formulation's
 // O(n) inverse-dynamics pass, without Simbody's constrained solve:
 //   - guide normal forces: the cart's free body (MinimalDynamics::guideNormals);

@@ -51,6 +51,7 @@ MultibodyModel::MultibodyModel(const Scene& scene, const MultibodyOptions& optio
   buildForces();
   system_.realizeTopology();
   fillInventory();
+  layOutColumns();
 }
 
 MultibodyModel::~MultibodyModel() = default;
@@ -420,27 +421,18 @@ EnergySnapshot MultibodyModel::energy(const SimTK::State& s) const {
   return e;
 }
 
-std::vector<std::string> MultibodyModel::timeseriesColumns() const {
-  std::vector<std::string> c = {"t",          "phi_motor",  "phi_crank",   "omega_motor",
-                                "omega_crank", "eps_crank", "eps_motor",   "twist",
-                                "twist_rate",  "twist_accel", "coupling_torque", "motor_torque"};
-  for (size_t j = 1; j <= carts_.size(); ++j)
-    for (const char* n : {"x_cart_", "v_cart_", "a_cart_"}) c.push_back(n + std::to_string(j));
-  if (motor_force_)
-    for (const std::string& m : motorColumns(&motor_force_->law(), motor_force_->supply())) c.push_back(m);
-  if (recordsReducerLosses()) c.push_back("reducer_loss_torque");
-  if (coupling_force_ && coupling_force_->law().hasBacklash()) c.push_back("tooth_contact");
-  for (int k = 1; torsion_force_ && k <= torsion_force_->segmentCount(); ++k) c.push_back("shaft_torque_" + std::to_string(k));
-  return c;
-}
-
-std::vector<std::string> MultibodyModel::reactionColumns() const {
-  std::vector<std::string> c = {"t"};
-  for (size_t j = 1; j <= carts_.size(); ++j)
-    for (const char* n : {"N_front_", "N_rear_", "F_rod_", "friction_", "crankpin_x_", "crankpin_y_"})
-      c.push_back(n + std::to_string(j));
-  for (const char* n : {"bearing_x", "bearing_y", "coupling_torque"}) c.push_back(n);
-  return c;
+void MultibodyModel::layOutColumns() {
+  WrittenColumns w;
+  w.multibody = true;
+  w.carts = int(carts_.size());
+  if (motor_force_) addMotorColumns(&motor_force_->law(), motor_force_->supply(), w);
+  w.reducer_losses = recordsReducerLosses();
+  w.backlash = coupling_force_ && coupling_force_->law().hasBacklash();
+  w.shaft_segments = torsion_force_ ? torsion_force_->segmentCount() : 0;
+  timeseries_layout_ = ColumnLayout(OutputFile::Timeseries, w);
+  // The main bearings' own columns come after the run, from the shaft's statics
+  // (analysis/CrankshaftBearings.h).
+  reactions_layout_ = ColumnLayout(OutputFile::Reactions, w);
 }
 
 void MultibodyModel::observe(const SimTK::State& s, std::vector<double>& ts,
@@ -460,27 +452,51 @@ void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& u
   const double twist_rate = elastic ? motor_.getOneU(s, 0) : 0.0;
   const double twist_accel = elastic ? udot[motor_.getFirstUIndex(s)] : 0.0;
   const double phi1 = phi2 + twist, w1 = w2 + twist_rate, e1 = e2 + twist_accel;
-  ts = {s.getTime(), phi1, phi2, w1, w2, e2, e1, twist, twist_rate, twist_accel, couplingTorque(s, udot),
-        motorTorque(s)};
-  for (const CartRig& c : carts_) {
-    ts.push_back(c.x(s));
-    ts.push_back(c.v(s));
-    ts.push_back(udot[c.cart.getFirstUIndex(s)]);
+  const ColumnLayout& L = timeseries_layout_;
+  L.reset(ts);
+  L.set(ts, Column::t, s.getTime());
+  L.set(ts, Column::phi_motor, phi1);
+  L.set(ts, Column::phi_crank, phi2);
+  L.set(ts, Column::omega_motor, w1);
+  L.set(ts, Column::omega_crank, w2);
+  L.set(ts, Column::eps_crank, e2);
+  L.set(ts, Column::eps_motor, e1);
+  L.set(ts, Column::twist, twist);
+  L.set(ts, Column::twist_rate, twist_rate);
+  L.set(ts, Column::twist_accel, twist_accel);
+  L.set(ts, Column::coupling_torque, couplingTorque(s, udot));
+  L.set(ts, Column::motor_torque, motorTorque(s));
+  for (size_t j = 0; j < carts_.size(); ++j) {
+    const CartRig& c = carts_[j];
+    L.set(ts, Column::x_cart, int(j) + 1, c.x(s));
+    L.set(ts, Column::v_cart, int(j) + 1, c.v(s));
+    L.set(ts, Column::a_cart, int(j) + 1, udot[c.cart.getFirstUIndex(s)]);
   }
   if (motor_force_) {
     const MotorForce& m = *motor_force_;
-    const bool current = lawHasCurrent(&m.law());
-    appendMotorColumns(&m.law(), m.supply(), current ? m.evaluate(s).stator_current : 0.0, m.supplyState(s),
-                       m.brakeTorque(s), ts);
+    const double current = L.has(Column::stator_current) ? m.evaluate(s).stator_current : 0.0;
+    setMotorColumns(L, current, m.supplyState(s), m.brakeTorque(s), ts);
   }
-  if (recordsReducerLosses()) ts.push_back(motor_force_->reducerLossTorque(s));
-  if (coupling_force_ && coupling_force_->law().hasBacklash())
-    ts.push_back(static_cast<double>(toothContact(coupling_force_->law(), coupling_force_->twist(s))));
-  for (int k = 0; torsion_force_ && k < torsion_force_->segmentCount(); ++k) ts.push_back(torsion_force_->torque(s, k));
+  if (L.has(Column::reducer_loss_torque)) L.set(ts, Column::reducer_loss_torque, motor_force_->reducerLossTorque(s));
+  if (L.has(Column::tooth_contact))
+    L.set(ts, Column::tooth_contact,
+          static_cast<double>(toothContact(coupling_force_->law(), coupling_force_->twist(s))));
+  for (int k = 0; torsion_force_ && k < torsion_force_->segmentCount(); ++k)
+    L.set(ts, Column::shaft_torque, k + 1, torsion_force_->torque(s, k));
 }
 
 bool MultibodyModel::recordsReducerLosses() const {
   return motor_force_ && motor_force_->reducer().model == ReducerLossModel::PowerFlow;
+}
+
+void MultibodyModel::setCartReactions(int cart, const CartReactions& r, std::vector<double>& re) const {
+  const ColumnLayout& L = reactions_layout_;
+  L.set(re, Column::N_front, cart, r.N_front);
+  L.set(re, Column::N_rear, cart, r.N_rear);
+  L.set(re, Column::F_rod, cart, r.F_rod);
+  L.set(re, Column::friction, cart, r.friction);
+  L.set(re, Column::crankpin_x, cart, r.crankpin_x);
+  L.set(re, Column::crankpin_y, cart, r.crankpin_y);
 }
 
 void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>& re) const {
@@ -489,8 +505,11 @@ void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>
   matter_.calcMobilizerReactionForces(s, reactions);
   const SimTK::Vector_<SimTK::SpatialVec>& applied = system_.getRigidBodyForces(s, SimTK::Stage::Dynamics);
   const double g = scene_.loads.gravity;
-  re = {s.getTime()};
+  const ColumnLayout& L = reactions_layout_;
+  L.reset(re);
+  L.set(re, Column::t, s.getTime());
   for (size_t j = 0; j < carts_.size(); ++j) {
+    const int cart = int(j) + 1;
     const CartRig& c = carts_[j];
     const SimTK::MobilizedBodyIndex ic = c.cart.getMobilizedBodyIndex();
     const GuideNormals n = solveGuideNormals(reactions[ic], c.side, scene_.carts.geometry);
@@ -502,7 +521,7 @@ void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>
       // tension, and the pusher puts the opposite force on the cam.
       const SimTK::Vector f = c.cam.getConstrainedMobilityForcesAsVector(s);
       const double Fx_on_cart = -f[1];
-      re.insert(re.end(), {n.front, n.rear, -c.side * Fx_on_cart, friction, -Fx_on_cart, 0.0});
+      setCartReactions(cart, {n.front, n.rear, -c.side * Fx_on_cart, friction, -Fx_on_cart, 0.0}, re);
       continue;
     }
     // Force of the rod on the cart at B from the cart's free body: m·a = applied + guide + rod.
@@ -519,10 +538,13 @@ void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>
       const SimTK::Vec3 a_S = c.rod.findStationAccelerationInGround(s, SimTK::Vec3(0.5 * c.rod_length, 0, 0));
       F_rod_on_crank += -c.rod_mass * a_S + c.rod_mass * SimTK::Vec3(0, -g, 0);
     }
-    re.insert(re.end(), {n.front, n.rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]});
+    setCartReactions(cart, {n.front, n.rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]},
+                     re);
   }
   const SimTK::Vec3 bearing = reactions[crank_.getMobilizedBodyIndex()][1];
-  re.insert(re.end(), {bearing[0], bearing[1], torque_coupling});
+  L.set(re, Column::bearing_x, bearing[0]);
+  L.set(re, Column::bearing_y, bearing[1]);
+  L.set(re, Column::coupling_torque, torque_coupling);
 }
 
 }  // namespace rollerdyn

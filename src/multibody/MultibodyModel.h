@@ -26,6 +26,7 @@
 
 #include "Simbody.h"
 #include "analysis/RunResult.h"
+#include "io/OutputColumns.h"
 #include "motor/MotorLaw.h"
 #include "multibody/CartRig.h"
 #include "scene/Scene.h"
@@ -144,9 +145,16 @@ class MultibodyModel {
   // the minimal formulation sets them from its friction loop.
   SimTK::State closedFormState(double crank_angle, double crank_speed, double twist) const;
 
-  // Output columns; see src/analysis/RunResult.h for their meaning.
-  std::vector<std::string> timeseriesColumns() const;
-  std::vector<std::string> reactionColumns() const;
+  // Output columns (io/OutputColumns.h: units, meanings) and where each value of a row goes.
+  std::vector<std::string> timeseriesColumns() const { return timeseries_layout_.names(); }
+  std::vector<std::string> reactionColumns() const { return reactions_layout_.names(); }
+  const ColumnLayout& timeseriesLayout() const { return timeseries_layout_; }
+  const ColumnLayout& reactionsLayout() const { return reactions_layout_; }
+  // One cart's columns of a reactions row (cart = j, 1-based) [N].
+  struct CartReactions {
+    double N_front, N_rear, F_rod, friction, crankpin_x, crankpin_y;
+  };
+  void setCartReactions(int cart, const CartReactions& r, std::vector<double>& reactions_row) const;
   // One output row of each table from a state realized to Acceleration.
   void observe(const SimTK::State& s, std::vector<double>& timeseries_row,
                std::vector<double>& reactions_row) const;
@@ -187,6 +195,8 @@ class MultibodyModel {
   void buildCarts();
   void buildForces();
   void fillInventory();
+  // The columns this model writes, from the force elements it built.
+  void layOutColumns();
 
   Scene scene_;
   MultibodyOptions options_;
@@ -210,6 +220,7 @@ class MultibodyModel {
   std::vector<const SimTK::Force::Custom::Implementation*> applied_order_;
   SimTK::Force::Gravity gravity_;  // empty handle without gravity
   MultibodyInventory inventory_;
+  ColumnLayout timeseries_layout_, reactions_layout_;
 };
 
 }  // namespace rollerdyn

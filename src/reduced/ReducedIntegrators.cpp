@@ -37,60 +37,60 @@ double reducerLossesOf(const ReducedModel& m, double motor_work, double integrat
   return (1.0 / m.reducer().eta_forward - 1.0) * motor_work;
 }
 
-void setupTables(const ReducedModel& m, RunResult& res) {
-  auto& ts = res.timeseries.columns;
-  ts = {"t",         "phi_motor",  "phi_crank",   "omega_motor",     "omega_crank",
-        "eps_crank", "eps_motor",  "twist",       "twist_rate",      "twist_accel",
-        "coupling_torque", "motor_torque", "load_torque"};
-  auto& rx = res.reactions.columns;
-  rx = {"t"};
-  for (int j = 1; j <= m.cartCount(); ++j) {
-    const std::string s = std::to_string(j);
-    ts.push_back("x_cart_" + s);
-    ts.push_back("v_cart_" + s);
-    ts.push_back("a_cart_" + s);
-    rx.push_back("N_front_" + s);
-    rx.push_back("N_rear_" + s);
-    rx.push_back("F_rod_" + s);
-    rx.push_back("friction_" + s);
+// The reactions row of an evaluation: the cart statics of reduced.guide_normals.
+std::vector<double> reactionsRow(const ReducedModel& m, double t, const ModelEvaluation& e) {
+  const ColumnLayout& L = m.reactionsLayout();
+  std::vector<double> q;
+  L.reset(q);
+  L.set(q, Column::t, t);
+  for (int j = 0; j < m.cartCount(); ++j) {
+    const CartStaticsResult& c = e.carts[j].statics;
+    L.set(q, Column::N_front, j + 1, c.N_front);
+    L.set(q, Column::N_rear, j + 1, c.N_rear);
+    L.set(q, Column::F_rod, j + 1, c.F_rod);
+    L.set(q, Column::friction, j + 1, m.scene().carts.side[j] * c.friction);  // world x
   }
-  rx.push_back("coupling_torque");
-  if (!m.scene().simulation.reactions) rx.clear();  // no reactions table
-  for (const std::string& c : motorColumns(m.motorLaw(), m.supply())) ts.push_back(c);
-  if (m.integratesReducerLosses()) ts.push_back("reducer_loss_torque");
-  if (m.coupling().hasBacklash()) ts.push_back("tooth_contact");
+  L.set(q, Column::coupling_torque, e.coupling_torque);
+  return q;
+}
+
+void setupTables(const ReducedModel& m, RunResult& res) {
+  res.timeseries.columns = m.timeseriesLayout().names();
+  if (m.scene().simulation.reactions) res.reactions.columns = m.reactionsLayout().names();  // else no reactions table
 }
 
 // One output row of both tables from an evaluation (its eps/coupling fields may have been
 // replaced by the Baranov scheme's own values).
 void appendRows(const ReducedModel& m, double t, const ModelEvaluation& e, RunResult& res) {
-  // Each row is allocated once, at its final size (the columns of setupTables).
-  std::vector<double> r;
-  r.reserve(res.timeseries.columns.size());
-  r.insert(r.end(), {t, e.phi_crank + e.twist, e.phi_crank, e.omega_motor, e.omega_crank,
-                     e.eps_crank, e.eps_motor, e.twist, e.twist_rate, e.twist_accel,
-                     e.coupling_torque, e.motor_torque, e.load_torque});
-  const bool reactions = !res.reactions.columns.empty();
-  std::vector<double> q;
-  q.reserve(res.reactions.columns.size());
-  q.push_back(t);
+  const ColumnLayout& L = m.timeseriesLayout();
+  std::vector<double> r;  // allocated once, at its final size
+  L.reset(r);
+  L.set(r, Column::t, t);
+  L.set(r, Column::phi_motor, e.phi_crank + e.twist);
+  L.set(r, Column::phi_crank, e.phi_crank);
+  L.set(r, Column::omega_motor, e.omega_motor);
+  L.set(r, Column::omega_crank, e.omega_crank);
+  L.set(r, Column::eps_crank, e.eps_crank);
+  L.set(r, Column::eps_motor, e.eps_motor);
+  L.set(r, Column::twist, e.twist);
+  L.set(r, Column::twist_rate, e.twist_rate);
+  L.set(r, Column::twist_accel, e.twist_accel);
+  L.set(r, Column::coupling_torque, e.coupling_torque);
+  L.set(r, Column::motor_torque, e.motor_torque);
+  L.set(r, Column::load_torque, e.load_torque);
   for (int j = 0; j < m.cartCount(); ++j) {
     const CartEvaluation& c = e.carts[j];
     const double w = e.omega_crank;
-    r.push_back(c.pose.x_B);
-    r.push_back(c.pose.dx_B * w);
-    r.push_back(c.pose.d2x_B * w * w + c.pose.dx_B * e.eps_crank);
-    q.push_back(c.statics.N_front);
-    q.push_back(c.statics.N_rear);
-    q.push_back(c.statics.F_rod);
-    q.push_back(m.scene().carts.side[j] * c.statics.friction);  // world x
+    L.set(r, Column::x_cart, j + 1, c.pose.x_B);
+    L.set(r, Column::v_cart, j + 1, c.pose.dx_B * w);
+    L.set(r, Column::a_cart, j + 1, c.pose.d2x_B * w * w + c.pose.dx_B * e.eps_crank);
   }
-  q.push_back(e.coupling_torque);
-  appendMotorColumns(m.motorLaw(), m.supply(), e.stator_current, e.supply, e.brake_torque, r);
-  if (m.integratesReducerLosses()) r.push_back(e.reducer_loss_torque);
-  if (m.coupling().hasBacklash()) r.push_back(static_cast<double>(toothContact(m.coupling(), e.twist)));
+  setMotorColumns(L, e.stator_current, e.supply, e.brake_torque, r);
+  if (L.has(Column::reducer_loss_torque)) L.set(r, Column::reducer_loss_torque, e.reducer_loss_torque);
+  if (L.has(Column::tooth_contact))
+    L.set(r, Column::tooth_contact, static_cast<double>(toothContact(m.coupling(), e.twist)));
   res.timeseries.rows.push_back(std::move(r));
-  if (reactions) res.reactions.rows.push_back(std::move(q));
+  if (!res.reactions.columns.empty()) res.reactions.rows.push_back(reactionsRow(m, t, e));
 }
 
 // Appends the output rows of evaluation e at time t and applies the stop rules both models share

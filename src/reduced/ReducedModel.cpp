@@ -10,6 +10,7 @@
 #include "analysis/FrictionChecks.h"
 #include "physics/CamMotionLaw.h"
 #include "motor/BreakdownTorque.h"
+#include "motor/MotorColumns.h"
 #include "physics/CouplingLaw.h"
 #include "motor/SharedMotorLaw.h"
 #include "physics/RollerLoads.h"
@@ -62,6 +63,14 @@ ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> l
   loop_carts_.resize(n);
   loop_friction_.resize(n);
   loop_normals_.resize(2 * n);
+  WrittenColumns written;
+  written.multibody = false;
+  written.carts = n;
+  addMotorColumns(law_.get(), supply_, written);
+  written.reducer_losses = integratesReducerLosses();
+  written.backlash = coupling_.hasBacklash();
+  timeseries_layout_ = ColumnLayout(OutputFile::Timeseries, written);
+  reactions_layout_ = ColumnLayout(OutputFile::Reactions, written);
 }
 
 double ReducedModel::rotorSpeed(const double* y) const {

@@ -62,6 +62,7 @@
 
 #include "analysis/RunControl.h"
 #include "analysis/RunResult.h"
+#include "io/OutputColumns.h"
 #include "motor/MotorLaw.h"
 #include "motor/Supply.h"
 #include "physics/CouplingLaw.h"
@@ -162,6 +163,10 @@ class ReducedModel {
   // The motor law (null without a motor) and the supply of the scene's starting method.
   const MotorLaw* motorLaw() const { return law_.get(); }
   const Supply& supply() const { return supply_; }
+  // The columns this model writes (io/OutputColumns.h: units, meanings) and where each value of
+  // a row goes.
+  const ColumnLayout& timeseriesLayout() const { return timeseries_layout_; }
+  const ColumnLayout& reactionsLayout() const { return reactions_layout_; }
   // Rotor speed ω_r = u·φ̇1 [rad/s] of state y.
   double rotorSpeed(const double* y) const;
 
@@ -285,6 +290,7 @@ class ReducedModel {
   mutable std::array<CartPass, 3> passes_;
   mutable int next_pass_ = 0;
   mutable long cart_passes_computed_ = 0;
+  ColumnLayout timeseries_layout_, reactions_layout_;
 };
 
 // Runs the reduced model of a scene from its initial state to simulation.t_end and fills the

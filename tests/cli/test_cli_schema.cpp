@@ -1,6 +1,7 @@
 // `rollerdyn schema`: the scene keys from the schema itself. --markdown prints exactly the
 // committed scene file reference (docs/scene-reference.md), so the page cannot drift from what the
-// parser accepts; KEY shows one key or section; a misspelt KEY is a usage error with a hint.
+// parser accepts; --columns prints the output columns' tables the outputs page holds; KEY shows
+// one key or section; a misspelt KEY is a usage error with a hint.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -19,6 +20,15 @@ TEST(CliSchema, MarkdownIsTheCommittedReference) {
   EXPECT_TRUE(r.out == committed)
       << "docs/scene-reference.md differs from `rollerdyn schema --markdown`; regenerate it:\n"
          "  ./build/rollerdyn schema --markdown > docs/scene-reference.md";
+}
+
+TEST(CliSchema, ColumnsAreTheTablesOfTheOutputsPage) {
+  const auto r = runRollerdyn({"schema", "--columns"}, 60);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("| `omega_crank` | rad/s |"), std::string::npos) << r.out;
+  const std::string page = test::slurp(std::string(ROLLERDYN_SOURCE_DIR) + "/docs/outputs.md");
+  EXPECT_NE(page.find(r.out), std::string::npos)
+      << "docs/outputs.md's column tables differ from `rollerdyn schema --columns`: replace them by its output";
 }
 
 TEST(CliSchema, OneSectionWithUnitsDefaultsAndSources) {
