@@ -18,7 +18,7 @@
 #include "multibody/MotorForce.h"
 #include "motor/Stiffness.h"
 #include "physics/IntegrationScales.h"
-#include "multibody/cvode/AdamsIntegrator.h"
+#include "numerics/CvodeIntegrator.h"
 
 namespace rollerdyn {
 namespace {
@@ -245,7 +245,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   }
   const double E_ref = std::max(system.calcKineticEnergy(kin), 1e-300);
   const int n_lag_states = model.hasFrictionLagStates() ? 2 * sc.carts.count : 0;
-  AdamsProblem p;
+  OdeProblem p;
   p.t0 = 0.0;
   p.stop_time = sc.simulation.t_end;
   p.y0 = y0;
@@ -277,7 +277,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     // its normal forces are the next z entries.
     for (int i = 0; i < n_lag_states; ++i) p.atol(z_normals + i) = rtol * N_unit;
   }
-  // Newton matrix from a structured Jacobian (AdamsIntegrator.h): difference quotients only for
+  // Newton matrix from a structured Jacobian (CvodeIntegrator.h): difference quotients only for
   // the mechanical states (φ2, twist, φ̇2, twist rate: at most 4 evaluations per Jacobian instead
   // of one per state, 72 at 32 carts), known columns for the auxiliary states:
   //  - friction normal forces N̂ (GuideFriction.h: dN̂/dt = (N - N̂)/τ_N): diagonal -1/τ_N, and the
@@ -343,7 +343,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   // The crank speed's extrema inside CVODE's steps, located on its own interpolant (a prescribed
   // speed has none).
   CrankSpeedExtremaFinder extrema;
-  const AdamsIntegrator* stepping = nullptr;  // set once the integrator exists
+  const CvodeIntegrator* stepping = nullptr;  // set once the integrator exists
   const int i_omega = L.omega;
   const CrankSpeedExtremaFinder::Dense dense = [&stepping, i_omega](double t, double& w, double& eps) {
     w = stepping->interpolate(t, 0, i_omega);
@@ -364,7 +364,7 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
     const double w_crank = L.omega >= 0 ? y[L.omega] : 0.0, w_twist = L.twist_rate >= 0 ? y[L.twist_rate] : 0.0;
     return ratio * (w_crank + w_twist) - trigger_speed;
   };
-  AdamsIntegrator integ(p);
+  CvodeIntegrator integ(p);
   stepping = &integ;
   auto arm = [&]() {
     const SupplyPhase phase = ms.phase();
