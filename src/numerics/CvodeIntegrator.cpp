@@ -12,8 +12,8 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
-#include "reduced/CvodeStepByStep.h"
-#include "reduced/EigenSundials.h"
+#include "numerics/CvodeStepByStep.h"
+#include "numerics/EigenSundials.h"
 
 namespace rollerdyn {
 
@@ -29,6 +29,7 @@ struct CvodeIntegrator::Impl {
   SUNNonlinearSolver NLS = nullptr;
   Eigen::VectorXd y_out;
   double t = 0;
+  double t_failure = 0;  // where the last failed advanceTo gave up
   long rhs_evals = 0;
   long steps_before = 0, jacobians_before = 0, failures_before = 0;  // counted before the last restart
   long error_test_failures_before = 0;
@@ -38,11 +39,13 @@ struct CvodeIntegrator::Impl {
   std::string error;
   std::string rhs_exception;  // what the right-hand side threw, if it did
 
-  // OdeProblem::on_step at a (re)start: ẏ = f(t, y) evaluated here.
+  // OdeProblem::on_step at a (re)start: ẏ = f(t, y) evaluated here, all NaN where CVODE would
+  // not accept it (f not evaluable, or not finite: Impl::rhs).
   void observeStart() {
     if (!problem.on_step) return;
     Eigen::VectorXd yd(y_out.size());
-    if (!problem.rhs(t, y_out.data(), yd.data())) yd.setConstant(std::numeric_limits<double>::quiet_NaN());
+    if (!problem.rhs(t, y_out.data(), yd.data()) || !yd.allFinite())
+      yd.setConstant(std::numeric_limits<double>::quiet_NaN());
     problem.on_step(t, y_out.data(), yd.data(), false);
   }
   // OdeProblem::on_step at the end of the internal step just taken (y holds y(t_step)).
@@ -233,6 +236,7 @@ bool CvodeIntegrator::advanceTo(double t_out) {
                        : CVode(m.cv, t_out, m.y, &t_ret, CV_NORMAL);
   m.root_found = flag == CV_ROOT_RETURN;
   if (flag < 0) {
+    m.t_failure = t_ret;
     char* name = CVodeGetReturnFlagName(flag);
     m.error = std::string(name ? name : "?") + " " + m.error +
               (m.rhs_exception.empty() ? "" : " (right-hand side: " + m.rhs_exception + ")");
@@ -245,6 +249,7 @@ bool CvodeIntegrator::advanceTo(double t_out) {
 }
 
 bool CvodeIntegrator::rootFound() const { return impl_->root_found; }
+double CvodeIntegrator::failureTime() const { return impl_->t_failure; }
 
 void CvodeIntegrator::setStopTime(double t_stop) {
   Impl& m = *impl_;

@@ -87,6 +87,9 @@ TEST(CvodeIntegrator, FailingRightHandSideIsReportedNotThrown) {
   EXPECT_FALSE(integ.advanceTo(1.0));
   EXPECT_FALSE(integ.error().empty());
   EXPECT_LT(integ.time(), 1.0);
+  // Where it gave up: its steps crept up to the point past which f cannot be evaluated.
+  EXPECT_GT(integ.failureTime(), 0.4);
+  EXPECT_LE(integ.failureTime(), 0.5);
 }
 
 TEST(CvodeIntegrator, ThrowingRightHandSideEndsTheRunWithItsMessage) {
