@@ -172,70 +172,127 @@ void setMethodAndAccuracy(const ReducedModel& m, const IntegrationScales& scales
   if (m.scene().hasCamDrive()) p.max_step = (M_PI / 6.0) / scales.speed / 8.0;
 }
 
-RunResult runCvode(const ReducedModel& m, RunResult res) {
-  const Scene& s = m.scene();
-  const std::vector<double> times = outputTimes(s.simulation);
-  const IntegrationScales scales = integrationScales(s, std::numeric_limits<double>::quiet_NaN(), m.motorBreakdownTorque());
+// The reduced model as CVODE's problem (numerics/CvodeIntegrator.h), integrated from one output
+// time to the next, with what the run reads back: the supply phase its equations run in, the
+// model's evaluations, the first failed friction loop, the crank speed's extrema inside CVODE's
+// steps.
+class ReducedOde {
+ public:
+  ReducedOde(const ReducedModel& m, const std::vector<double>& times, RunResult& res)
+      : m_(m), t_end_(times.back()), phase_(m.supply().initialPhase()), integ_(problem(times, res)) {
+    if (events_) arm(times.front());
+  }
+  ReducedOde(const ReducedOde&) = delete;
+  ReducedOde& operator=(const ReducedOde&) = delete;
 
-  OdeProblem p;  // numerics/CvodeIntegrator.h
-  p.t0 = times.front();
-  p.stop_time = times.back();
-  p.y0 = m.initialState();
-  // The supply's events due at t = 0 (a speed trigger already met by the initial speed).
-  SupplyPhase phase = m.supply().initialPhase();
-  m.supply().applyDueEvents(phase, 0.0, m.rotorSpeed(p.y0.data()), false, m.motorLaw(), p.y0.data() + m.iMotorStates());
-  // The model's evaluations (the run's realizations), counted here: CVODE's, those of its
-  // difference-quotient Jacobian and those at every (re)start that the extrema finder reads.
-  long evaluations = 0;
-  std::string friction_failure;  // the first evaluation whose guide-friction loop failed, in words
-  p.rhs = [&](double t, const double* y, double* ydot) {
-    ++evaluations;
-    if (m.derivatives(t, phase, y, ydot)) return true;  // allocation-free
+  // Advances to the output time t, applying the switching events due on the way (motor/Supply.h):
+  // CVODE stops at the next timed event (its stop time) and at a speed-triggered one (its root
+  // finding of ω_r - ω_switch, rising, on the interpolant); the event is applied there (the law's
+  // states mapped across it) and CVODE restarts from the new state. A constant supply has none,
+  // and the run is exactly the one without starting methods. False when CVODE gave up.
+  bool advanceTo(double t) {
+    while (true) {
+      if (!integ_.advanceTo(t)) return false;
+      // CVODE returns at the stop time, or at the output time when it is the stop time: either
+      // way the events due there are applied here.
+      if (events_) {
+        Eigen::VectorXd y = integ_.y();
+        if (m_.supply().applyDueEvents(phase_, integ_.time(), m_.rotorSpeed(y.data()), integ_.rootFound(),
+                                       m_.motorLaw(), y.data() + m_.iMotorStates())) {
+          integ_.restart(integ_.time(), y);
+          arm(integ_.time());
+        }
+      }
+      if (reachedOutputTime(integ_.time(), t)) return true;
+    }
+  }
+  // Why the run stopped after advanceTo returned false.
+  std::string failureStatus() const {
+    if (!friction_failure_.empty()) return statusAt("the run stopped", integ_.failureTime()) + ": the " + friction_failure_;
+    return std::string("integrator failure at t = ") + std::to_string(integ_.failureTime()) + " s: " + integ_.error();
+  }
+  const CvodeIntegrator& integrator() const { return integ_; }
+  const SupplyPhase& phase() const { return phase_; }
+  // The model's evaluations (the run's realizations): CVODE's, those of its difference-quotient
+  // Jacobian and those at every (re)start that the extrema finder reads.
+  long evaluations() const { return evaluations_; }
+  CrankSpeedExtremaFinder& extrema() { return extrema_; }
+
+ private:
+  OdeProblem problem(const std::vector<double>& times, RunResult& res) {
+    OdeProblem p;
+    p.t0 = times.front();
+    p.stop_time = times.back();
+    p.y0 = m_.initialState();
+    // The supply's events due at t = 0 (a speed trigger already met by the initial speed).
+    m_.supply().applyDueEvents(phase_, 0.0, m_.rotorSpeed(p.y0.data()), false, m_.motorLaw(),
+                               p.y0.data() + m_.iMotorStates());
+    p.rhs = [this](double t, const double* y, double* ydot) { return derivatives(t, y, ydot); };
+    const IntegrationScales scales =
+        integrationScales(m_.scene(), std::numeric_limits<double>::quiet_NaN(), m_.motorBreakdownTorque());
+    setMethodAndAccuracy(m_, scales, p, res);
+    p.on_step = [this](double t, const double* y, const double* ydot, bool after_step) {
+      observe(t, y, ydot, after_step);
+    };
+    p.root = [this](double, const double* y) { return m_.rotorSpeed(y) - trigger_speed_; };
+    return p;
+  }
+
+  bool derivatives(double t, const double* y, double* ydot) {
+    ++evaluations_;
+    if (m_.derivatives(t, phase_, y, ydot)) return true;  // allocation-free
     // A cart locks at this trial state: recoverable (a smaller step may stay clear of it); where
     // it cannot, CVODE gives up and the run's status names the cause.
-    if (friction_failure.empty()) {
+    if (friction_failure_.empty()) {
       ModelEvaluation e;
-      m.evaluate(t, phase, y, e, false);
-      friction_failure = describeLoopFailure(e.friction_loop);
+      m_.evaluate(t, phase_, y, e, false);
+      friction_failure_ = describeLoopFailure(e.friction_loop);
     }
     return false;
-  };
-  setMethodAndAccuracy(m, scales, p, res);
+  }
 
   // The crank speed's extrema inside CVODE's steps (analysis/CrankSpeedExtrema.h): each step's
   // end observed with ε from CVODE's interpolant; at a (re)start ε is f itself, and the extrema of
   // a step an event cut short are forgotten.
-  CrankSpeedExtremaFinder extrema;
-  const CvodeIntegrator* stepping = nullptr;  // set once the integrator exists
-  const int i_omega = m.iOmega();
-  const CrankSpeedExtremaFinder::Dense dense = [&stepping, i_omega](double tq, double& w, double& eps) {
-    w = stepping->interpolate(tq, 0, i_omega);
-    eps = stepping->interpolate(tq, 1, i_omega);
-  };
-  p.on_step = [&](double t, const double* y, const double* ydot, bool after_step) {
+  void observe(double t, const double* y, const double* ydot, bool after_step) {
+    const int i_omega = m_.iOmega();
     if (after_step) {
-      extrema.stepTo(t, y[i_omega], ydot[i_omega], dense);
+      extrema_.stepTo(t, y[i_omega], ydot[i_omega], dense_);
       return;
     }
-    extrema.dropAfter(t);
-    extrema.restart(t, y[i_omega], ydot[i_omega]);
+    extrema_.dropAfter(t);
+    extrema_.restart(t, y[i_omega], ydot[i_omega]);
+  }
+
+  // The stop time at the next timed event, the root finding on for a speed-triggered one.
+  void arm(double t_now) {
+    const double te = std::min(m_.supply().nextEventTime(phase_), t_end_);
+    if (te > t_now) integ_.setStopTime(te);
+    trigger_speed_ = m_.supply().triggerSpeed(phase_);
+    integ_.enableRoot(!std::isnan(trigger_speed_));
+  }
+
+  const ReducedModel& m_;
+  const double t_end_;
+  const bool events_ = !m_.supply().constant();
+  SupplyPhase phase_;  // changes only between integrations, at events
+  long evaluations_ = 0;
+  std::string friction_failure_;  // the first evaluation whose guide-friction loop failed, in words
+  double trigger_speed_ = std::numeric_limits<double>::quiet_NaN();  // rotor speed of a speed-triggered event [rad/s]
+  CrankSpeedExtremaFinder extrema_;
+  // CVODE's interpolant of its last step: ω and ε inside it (called only after a step).
+  const CrankSpeedExtremaFinder::Dense dense_ = [this](double tq, double& w, double& eps) {
+    w = integ_.interpolate(tq, 0, m_.iOmega());
+    eps = integ_.interpolate(tq, 1, m_.iOmega());
   };
-  // Switching events (motor/Supply.h): CVODE stops at the next timed event (its stop time) and
-  // at a speed-triggered one (its root finding of ω_r - ω_switch, rising, on the interpolant);
-  // the event is applied there (the law's states mapped across it) and CVODE restarts from the
-  // new state. A constant supply has none, and the run is exactly the one without starting methods.
-  double trigger_speed = std::numeric_limits<double>::quiet_NaN();  // rotor speed of a speed-triggered event [rad/s]
-  p.root = [&m, &trigger_speed](double, const double* y) { return m.rotorSpeed(y) - trigger_speed; };
-  CvodeIntegrator integ(p);
-  stepping = &integ;
-  const bool events = !m.supply().constant();
-  auto arm = [&](double t_now) {
-    const double te = std::min(m.supply().nextEventTime(phase), times.back());
-    if (te > t_now) integ.setStopTime(te);
-    trigger_speed = m.supply().triggerSpeed(phase);
-    integ.enableRoot(!std::isnan(trigger_speed));
-  };
-  if (events) arm(times.front());
+  CvodeIntegrator integ_;  // last: built from the members above
+};
+
+RunResult runCvode(const ReducedModel& m, RunResult res) {
+  const Scene& s = m.scene();
+  const std::vector<double> times = outputTimes(s.simulation);
+  ReducedOde ode(m, times, res);
+  const SupplyPhase& phase = ode.phase();
 
   const Eigen::VectorXd y0 = m.initialState();
   res.energy.kinetic_initial = m.kineticEnergy(y0);
@@ -248,40 +305,17 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
   res.timeseries.rows.reserve(times.size());
   res.reactions.rows.reserve(times.size());
   ModelEvaluation e;  // reused for every output row (keeps its carts' storage)
-  const Eigen::VectorXd& ym = integ.y();  // the state at the last output time
+  const Eigen::VectorXd& ym = ode.integrator().y();  // the state at the last output time
   Eigen::VectorXd y_last = ym;
   for (size_t k = 0; k < times.size(); ++k) {
     double t = times[k];
     if (k > 0) {
-      bool failed = false;
-      while (true) {
-        if (!integ.advanceTo(t)) {
-          failed = true;
-          break;
-        }
-        // CVODE returns at the stop time, or at the output time when it is the stop time: either
-        // way the events due there are applied here.
-        if (events) {
-          Eigen::VectorXd y = integ.y();
-          if (m.supply().applyDueEvents(phase, integ.time(), m.rotorSpeed(y.data()), integ.rootFound(), m.motorLaw(),
-                                        y.data() + m.iMotorStates())) {
-            integ.restart(integ.time(), y);
-            arm(integ.time());
-          }
-        }
-        if (reachedOutputTime(integ.time(), t)) break;
-      }
-      if (failed) {
+      if (!ode.advanceTo(t)) {
         res.stats.complete = false;
-        if (!friction_failure.empty()) {
-          res.stats.status = statusAt("the run stopped", integ.failureTime()) + ": the " + friction_failure;
-          break;
-        }
-        res.stats.status = std::string("integrator failure at t = ") + std::to_string(integ.failureTime()) +
-                           " s: " + integ.error();
+        res.stats.status = ode.failureStatus();
         break;
       }
-      t = integ.time();
+      t = ode.integrator().time();
     }
     y_last = ym;
     m.evaluate(t, phase, y_last.data(), e, true);
@@ -309,11 +343,12 @@ RunResult runCvode(const ReducedModel& m, RunResult res) {
     }
   }
   res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
-  res.crank_speed_extrema = extrema.takeUpTo(res.timeseries.rows.empty() ? times.front() : res.timeseries.rows.back()[0]);
+  res.crank_speed_extrema =
+      ode.extrema().takeUpTo(res.timeseries.rows.empty() ? times.front() : res.timeseries.rows.back()[0]);
 
-  res.stats.steps = integ.steps();
-  res.stats.error_test_failures = integ.errorTestFailures();
-  res.stats.realizations = evaluations;  // includes the difference-quotient Jacobian calls
+  res.stats.steps = ode.integrator().steps();
+  res.stats.error_test_failures = ode.integrator().errorTestFailures();
+  res.stats.realizations = ode.evaluations();  // includes the difference-quotient Jacobian calls
 
   res.energy.motor_work = y_last(m.iMotorWork());
   res.energy.damping_dissipation = m.rigid() ? 0.0 : y_last(m.iDampingWork());
