@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "multibody/cvode/AdamsIntegrator.h"
+#include "numerics/CvodeIntegrator.h"
 
 namespace rollerdyn {
 
@@ -28,7 +28,7 @@ InertiaRun runMotorOnInertia(const MotorLaw& law, const InertiaRunOptions& o) {
     }
   };
 
-  AdamsProblem p;
+  OdeProblem p;
   p.bdf = true;
   p.rtol = o.rtol;
   p.stop_time = o.t_end;
@@ -62,7 +62,7 @@ InertiaRun runMotorOnInertia(const MotorLaw& law, const InertiaRunOptions& o) {
     r.magnetic_energy = e.magnetic_energy;
     run.rows.push_back(r);
   };
-  AdamsIntegrator integ(p);
+  CvodeIntegrator integ(p);
   record(0.0, p.y0);
   const int rows = static_cast<int>(std::ceil(o.t_end / o.output_step - 1e-9));
   for (int k = 1; k <= rows; ++k) {

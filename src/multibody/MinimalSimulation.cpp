@@ -14,7 +14,7 @@
 #include "multibody/MotorForce.h"
 #include "motor/Stiffness.h"
 #include "physics/IntegrationScales.h"
-#include "multibody/cvode/AdamsIntegrator.h"
+#include "numerics/CvodeIntegrator.h"
 
 namespace rollerdyn {
 namespace {
@@ -44,7 +44,7 @@ double referenceKineticEnergy(const MultibodyModel& model, const SimTK::State& s
 // Tolerances: every state against its natural scale, the same scales as the reduced model's
 // (IntegrationScales.h), with the constrained formulation's weights for the twist (coupling
 // torque to accuracy·M_ref) and the friction normal forces (GuideFriction::setErrorWeights).
-void setTolerances(AdamsProblem& p, const MultibodyModel& model, const MinimalLayout& L, const SimTK::State& s0,
+void setTolerances(OdeProblem& p, const MultibodyModel& model, const MinimalLayout& L, const SimTK::State& s0,
                    const IntegrationScales& scales) {
   const Scene& sc = model.scene();
   const double rtol = scales.cvode_rtol, w_ref = scales.speed;
@@ -80,7 +80,7 @@ void setTolerances(AdamsProblem& p, const MultibodyModel& model, const MinimalLa
   }
 }
 
-// Newton matrix from a structured Jacobian (AdamsIntegrator.h): difference quotients only for
+// Newton matrix from a structured Jacobian (CvodeIntegrator.h): difference quotients only for
 // the mechanical states (φ2, twist, φ̇2, twist rate: at most 4 evaluations per Jacobian instead
 // of one per state, 72 at 32 carts), known columns for the auxiliary states:
 //  - friction normal forces N̂ (GuideFriction.h: dN̂/dt = (N - N̂)/τ_N): diagonal -1/τ_N, and the
@@ -101,7 +101,7 @@ void setTolerances(AdamsProblem& p, const MultibodyModel& model, const MinimalLa
 //    (they couple to the speed both ways); the brake work: an energy integral, column zero.
 // With the algebraic law there are no lag states: the friction is part of the mechanical
 // states' right-hand side, whose columns are difference quotients.
-void setStructuredJacobian(AdamsProblem& p, const MultibodyModel& model, MinimalSystem& ms, const MinimalLayout& L) {
+void setStructuredJacobian(OdeProblem& p, const MultibodyModel& model, MinimalSystem& ms, const MinimalLayout& L) {
   const Scene& sc = model.scene();
   const int n_normals = model.hasFrictionLagStates() ? 2 * sc.carts.count : 0;
   const int z_normals = L.z + model.motorStateCount();  // first friction normal force
@@ -128,13 +128,13 @@ void setStructuredJacobian(AdamsProblem& p, const MultibodyModel& model, Minimal
 
 // The ODE CVODE integrates: the minimal system's right-hand side from y0, its tolerances, its
 // Newton matrix and its method.
-AdamsProblem minimalProblem(const MultibodyModel& model, MinimalSystem& ms, const Eigen::VectorXd& y0,
+OdeProblem minimalProblem(const MultibodyModel& model, MinimalSystem& ms, const Eigen::VectorXd& y0,
                             const SimTK::State& s0) {
   const Scene& sc = model.scene();
   const IntegrationScales scales = integrationScales(
       sc, model.options().prescribe_crank_speed ? model.options().crank_speed : std::numeric_limits<double>::quiet_NaN(),
       model.motorBreakdownTorque());
-  AdamsProblem p;
+  OdeProblem p;
   p.t0 = 0.0;
   p.stop_time = sc.simulation.t_end;
   p.y0 = y0;
@@ -172,7 +172,7 @@ class SupplyEvents {
   SupplyEvents& operator=(const SupplyEvents&) = delete;
 
   // The event function: the rotor speed above the trigger speed (refers to this object).
-  void install(AdamsProblem& p) {
+  void install(OdeProblem& p) {
     const MinimalLayout& L = ms_.layout();
     const double ratio = model_.scene().reducer.ratio;
     p.root = [this, &L, ratio](double, const double* y) {
@@ -181,7 +181,7 @@ class SupplyEvents {
     };
   }
   // Sets the integrator's stop time and event function for the supply's present phase.
-  void arm(AdamsIntegrator& integ) {
+  void arm(CvodeIntegrator& integ) {
     if (!active_) return;
     const Supply& supply = model_.motorForce()->supply();
     const SupplyPhase phase = ms_.phase();
@@ -191,7 +191,7 @@ class SupplyEvents {
     integ.enableRoot(!std::isnan(trigger_speed_));
   }
   // After a return of the integrator: applies the events due there and restarts it.
-  void applyDue(AdamsIntegrator& integ) {
+  void applyDue(CvodeIntegrator& integ) {
     if (!active_) return;
     Eigen::VectorXd y = integ.y();
     if (!ms_.applyEvents(integ.time(), y, integ.rootFound())) return;
@@ -213,12 +213,12 @@ class StepExtrema {
   explicit StepExtrema(int i_omega) : i_omega_(i_omega) {}
   StepExtrema(const StepExtrema&) = delete;
   StepExtrema& operator=(const StepExtrema&) = delete;
-  void install(AdamsProblem& p) {
+  void install(OdeProblem& p) {
     if (i_omega_ < 0) return;
     p.on_step = [this](double t, const double* y, const double* ydot, bool after_step) {
       if (after_step && stepping_) {
         const int i = i_omega_;
-        const AdamsIntegrator* integ = stepping_;
+        const CvodeIntegrator* integ = stepping_;
         finder_.stepTo(t, y[i], ydot[i], [integ, i](double tq, double& w, double& eps) {
           w = integ->interpolate(tq, 0, i);
           eps = integ->interpolate(tq, 1, i);
@@ -228,12 +228,12 @@ class StepExtrema {
       }
     };
   }
-  void observe(const AdamsIntegrator& integ) { stepping_ = &integ; }
+  void observe(const CvodeIntegrator& integ) { stepping_ = &integ; }
   std::vector<CrankSpeedExtremum> takeUpTo(double t) { return finder_.takeUpTo(t); }
 
  private:
   int i_omega_;
-  const AdamsIntegrator* stepping_ = nullptr;  // set once the integrator exists
+  const CvodeIntegrator* stepping_ = nullptr;  // set once the integrator exists
   CrankSpeedExtremaFinder finder_;
 };
 
@@ -346,7 +346,7 @@ RunResult emptyRun(const MultibodyModel& model) {
   return run;
 }
 
-void keepIntegratorStatistics(const AdamsIntegrator& integ, RunStats& stats) {
+void keepIntegratorStatistics(const CvodeIntegrator& integ, RunStats& stats) {
   stats.steps = integ.steps();
   stats.error_test_failures = integ.errorTestFailures();
   stats.realizations = integ.rhsEvaluations();
@@ -380,13 +380,13 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
   model.system().realize(ms.state(), SimTK::Stage::Dynamics);
   const EnergySnapshot e0 = model.energy(ms.state());
 
-  AdamsProblem p = minimalProblem(model, ms, y0, s0);
+  OdeProblem p = minimalProblem(model, ms, y0, s0);
   if (p.bdf) run.integrator = "cvode-bdf (minimal coordinates)";
   StepExtrema extrema(ms.layout().omega);
   extrema.install(p);
   SupplyEvents events(model, ms);
   events.install(p);
-  AdamsIntegrator integ(p);
+  CvodeIntegrator integ(p);
   extrema.observe(integ);
   events.arm(integ);
 

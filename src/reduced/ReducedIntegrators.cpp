@@ -9,10 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
+#include <Eigen/Core>
 
 #include "physics/CrankInertia.h"
 #include "analysis/CrankSpeedExtrema.h"
@@ -21,9 +18,8 @@
 #include "analysis/StallDetector.h"
 #include "motor/MotorColumns.h"
 #include "motor/Stiffness.h"
+#include "numerics/CvodeIntegrator.h"
 #include "physics/IntegrationScales.h"
-#include "reduced/CvodeStepByStep.h"
-#include "reduced/EigenSundials.h"
 #include "reduced/ReducedModel.h"
 
 namespace rollerdyn {
@@ -107,119 +103,17 @@ bool recordRows(const ReducedModel& m, double t, const ModelEvaluation& e, const
 // ---------------------------------------------------------------------------------------------
 // CVODE
 
-struct CvodeUserData {
-  const ReducedModel* model = nullptr;
-  const SupplyPhase* phase = nullptr;  // the run's supply phase; changes only between integrations
-  double trigger_speed = 0;            // rotor speed of a speed-triggered event [rad/s]
-  long rhs_evals = 0;
-  std::string last_error;
-  std::string friction_failure;  // the first evaluation whose guide-friction loop failed, in words
-  double friction_failure_phi = 0;
-  double rtol = 0;
-  Eigen::VectorXd atol;  // per state, see runCvode
-};
-
-// Error weights: CVODE's usual 1/(rtol·|y_i| + atol_i) for every state except the crank angle,
-// which is held to the ABSOLUTE accuracy atol_φ: an angle error means the same after 1 turn or
-// 1000 turns, whereas rtol·|φ| would loosen the angle (and with it J(φ), the kinematics and the
-// energy balance) as the crank keeps turning.
-int cvodeErrorWeights(N_Vector y, N_Vector ewt, void* user) {
-  auto* u = static_cast<CvodeUserData*>(user);
-  const int n = u->model->stateSize();
-  const realtype* yv = N_VGetArrayPointer(y);
-  realtype* wv = N_VGetArrayPointer(ewt);
-  for (int i = 0; i < n; ++i) {
-    const double tol = (i == u->model->iPhi()) ? u->atol(i) : u->rtol * std::abs(yv[i]) + u->atol(i);
-    if (!(tol > 0.0)) return -1;
-    wv[i] = 1.0 / tol;
-  }
-  return 0;
-}
-
-int cvodeRhs(realtype t, N_Vector y, N_Vector ydot, void* user) {
-  auto* u = static_cast<CvodeUserData*>(user);
-  const int n = u->model->stateSize();
-  realtype* d = NV_DATA_S(ydot);
-  ++u->rhs_evals;
-  if (!u->model->derivatives(t, *u->phase, NV_DATA_S(y), d)) {  // allocation-free
-    // A cart locks at this trial state: recoverable (a smaller step may stay clear of it); where
-    // it cannot, CVODE gives up and the run's status names the cause.
-    if (u->friction_failure.empty()) {
-      ModelEvaluation e;
-      u->model->evaluate(t, *u->phase, NV_DATA_S(y), e, false);
-      u->friction_failure = describeLoopFailure(e.friction_loop);
-      u->friction_failure_phi = NV_DATA_S(y)[u->model->iPhi()];
-    }
-    return 1;
-  }
-  for (int i = 0; i < n; ++i)
-    if (!std::isfinite(d[i])) return 1;  // recoverable: CVODE retries with a smaller step
-  return 0;
-}
-
-// Event function of a speed-triggered switching event (the star-delta changeover by speed):
-// rotor speed minus the trigger speed, found rising by CVODE's root finding.
-int cvodeRoot(realtype, N_Vector y, realtype* gout, void* user) {
-  auto* u = static_cast<CvodeUserData*>(user);
-  gout[0] = u->model->rotorSpeed(NV_DATA_S(y)) - u->trigger_speed;
-  return 0;
-}
-
-void cvodeErrHandler(int error_code, const char* module, const char* function, char* msg,
-                     void* user) {
-  auto* u = static_cast<CvodeUserData*>(user);
-  u->last_error = std::string(function ? function : "") + ": " + (msg ? msg : "");
-}
-
-// Owns the SUNDIALS objects of one run (freed on every exit path).
-struct CvodeResources {
-  SUNContext ctx = nullptr;
-  N_Vector y = nullptr;
-  N_Vector dky = nullptr;      // ẏ from CVODE's interpolant, for the crank speed's extrema
-  N_Vector dense_y = nullptr;  // y or ẏ inside the last step, likewise
-  void* cv = nullptr;
-  SUNMatrix A = nullptr;
-  SUNLinearSolver LS = nullptr;
-  CvodeResources() = default;
-  CvodeResources(const CvodeResources&) = delete;
-  CvodeResources& operator=(const CvodeResources&) = delete;
-  ~CvodeResources() {
-    if (cv) CVodeFree(&cv);
-    if (LS) SUNLinSolFree(LS);
-    if (A) SUNMatDestroy(A);
-    if (dky) N_VDestroy(dky);
-    if (dense_y) N_VDestroy(dense_y);
-    if (y) N_VDestroy(y);
-    if (ctx) SUNContext_Free(&ctx);
-  }
-};
-
-RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& control) {
+// Absolute tolerances: atol_i = rtol·(reference magnitude of state i, IntegrationScales.h, the
+// multibody model's too), so every component is held to the same relative accuracy measured
+// against its natural scale and absolute control only takes over when a state is far below that
+// scale (e.g. at a start from rest); the work integrals against E_ref = ½·J(φ0)·ω_ref², the
+// kinetic energy at the reference speed.
+Eigen::VectorXd absoluteTolerances(const ReducedModel& m, const IntegrationScales& scales) {
   const Scene& s = m.scene();
-  const std::vector<double> times = outputTimes(s.simulation);
-  const int n = m.stateSize();
-
-  // Absolute tolerances: atol_i = rtol·(reference magnitude of state i, IntegrationScales.h, the
-  // multibody model's too), so every component is held to the same relative accuracy measured
-  // against its natural scale and absolute control only takes over when a state is far below that
-  // scale (e.g. at a start from rest); the work integrals against E_ref = ½·J(φ0)·ω_ref², the
-  // kinetic energy at the reference speed.
-  const IntegrationScales scales = integrationScales(s, std::numeric_limits<double>::quiet_NaN(), m.motorBreakdownTorque());
   const double rtol = scales.cvode_rtol, w_ref = scales.speed;
   const double E_ref = 0.5 * (m.reducedInertia(s.initial.crank_angle) + m.motorSideInertia()) *
                        w_ref * w_ref;
-
-  CvodeResources sun;
-  if (SUNContext_Create(nullptr, &sun.ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
-  SUNContext ctx = sun.ctx;
-  N_Vector y = sun.y = N_VNew_Serial(n, ctx);
-  useEigenVectorOps(y);  // before CVodeInit clones it (EigenSundials.h)
-  Eigen::Map<Eigen::VectorXd> ym(N_VGetArrayPointer(y), n);
-  Eigen::VectorXd am(n);
-  ym = m.initialState();
-  // The supply's events due at t = 0 (a speed trigger already met by the initial speed).
-  SupplyPhase phase = m.supply().initialPhase();
-  m.supply().applyDueEvents(phase, 0.0, m.rotorSpeed(ym.data()), false, m.motorLaw(), ym.data() + m.iMotorStates());
+  Eigen::VectorXd am(m.stateSize());
   am.setConstant(rtol * E_ref);
   // The motor law's states against their natural magnitudes (MotorLaw::stateScales).
   if (m.motorStateCount() > 0) {
@@ -232,12 +126,20 @@ RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& contr
     am(m.iTwist()) = rtol * scales.twist;
     am(m.iTwistRate()) = rtol * scales.twist_rate;
   }
+  return am;
+}
 
-  CvodeUserData ud;
-  ud.model = &m;
-  ud.phase = &phase;
-  ud.rtol = rtol;
-  ud.atol = am;
+// CVODE's method and accuracy for the reduced model: tolerances per state, Adams or BDF, the
+// highest order, the cam drive's step cap.
+void setMethodAndAccuracy(const ReducedModel& m, const IntegrationScales& scales, OdeProblem& p, RunResult& res) {
+  p.rtol = scales.cvode_rtol;
+  p.atol = absoluteTolerances(m, scales);
+  // CVODE's usual weights 1/(rtol·|y_i| + atol_i) for every state except the crank angle, which is
+  // held to the ABSOLUTE accuracy atol_φ: an angle error means the same after 1 turn or 1000
+  // turns, whereas rtol·|φ| would loosen the angle (and with it J(φ), the kinematics and the
+  // energy balance) as the crank keeps turning.
+  p.absolute_only.assign(m.stateSize(), false);
+  p.absolute_only[m.iPhi()] = true;
   // Adams-Moulton (orders 1-12) with a Newton corrector on a dense difference-quotient Jacobian.
   // Measured against BDF on the Loveikin, Pochka, Romasevych (2018) scenes: as fast or faster (fewer steps on these smooth,
   // mildly stiff equations) and 10-100x smaller energy-audit residuals at the same accuracy
@@ -251,7 +153,7 @@ RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& contr
   // capping the order (4, 5) does not help the cost (the steady state runs at order 3-6); tighter or
   // looser twist weights (ψ_ref x0.1 ... x3), a less frequent Jacobian (msbp 50) and other step
   // bounds only move along the same work-precision curve. So CVODE's defaults stay; the cost
-  // per step is what was cut (allocation-free right-hand side, EigenSundials.h).
+  // per step is what was cut (allocation-free right-hand side, numerics/EigenSundials.h).
   // Highest Adams order: 6 (CVODE's default is 12). Higher Adams-Moulton orders have smaller
   // stability regions, and a stiff coupling's torsional mode (p0 ≈ 4.5e3 rad/s at c = 1e9) then
   // sits near their edge. Measured with scripts/hardcase-constants.py (reduced model, every hard
@@ -269,46 +171,141 @@ RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& contr
   // switches to BDF: Adams would be held to steps set by the stability of those modes.
   const bool stiff = lawIsStiff(m.motorLaw());
   res.integrator = stiff ? "cvode-bdf" : "cvode-adams";
-  void* cv = sun.cv = CVodeCreate(stiff ? CV_BDF : CV_ADAMS, ctx);
-  SUNMatrix A = sun.A = SUNDenseMatrix(n, n, ctx);
-  SUNLinearSolver LS = sun.LS = makeEigenDenseSolver(int(n), ctx);  // EigenSundials.h
-  int flag = CVodeInit(cv, cvodeRhs, times.front(), y);
-  if (flag == CV_SUCCESS) flag = CVodeSetUserData(cv, &ud);
-  if (flag == CV_SUCCESS) flag = CVodeSetErrHandlerFn(cv, cvodeErrHandler, &ud);
-  if (flag == CV_SUCCESS) flag = CVodeWFtolerances(cv, cvodeErrorWeights);
-  if (flag == CV_SUCCESS) flag = CVodeSetLinearSolver(cv, LS, A);
-  if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(cv, 1000000);
-  if (flag == CV_SUCCESS && !stiff) flag = CVodeSetMaxOrd(cv, kAdamsMaxOrder);  // BDF keeps its 5
-  if (flag == CV_SUCCESS) flag = CVodeSetStopTime(cv, times.back());
+  p.bdf = stiff;
+  p.max_order = stiff ? 0 : kAdamsMaxOrder;  // BDF keeps its 5
   // Cam drive (Loveikin and Pochka (cam drive paper)): in steady state the right-hand side is exactly constant over the
   // constant-speed 2/3 of every stroke, so an unbounded step grows until it leaps from one
   // constant segment to the next across the reversal without its error estimate ever seeing it
   // (measured: the speed froze while ε = 160 rad/s² at every reversal). Cap the step at 1/8 of
   // the shortest segment, a crank angle of π/6 at the reference speed.
-  if (flag == CV_SUCCESS && s.hasCamDrive()) flag = CVodeSetMaxStep(cv, (M_PI / 6.0) / w_ref / 8.0);
-  if (flag != CV_SUCCESS) throw std::runtime_error("CVODE setup failed: " + ud.last_error);
+  if (m.scene().hasCamDrive()) p.max_step = (M_PI / 6.0) / scales.speed / 8.0;
+}
+
+// The reduced model as CVODE's problem (numerics/CvodeIntegrator.h), integrated from one output
+// time to the next, with what the run reads back: the supply phase its equations run in, the
+// model's evaluations, the first failed friction loop, the crank speed's extrema inside CVODE's
+// steps.
+class ReducedOde {
+ public:
+  ReducedOde(const ReducedModel& m, const std::vector<double>& times, RunResult& res)
+      : m_(m), t_end_(times.back()), phase_(m.supply().initialPhase()), integ_(problem(times, res)) {
+    if (events_) arm(times.front());
+  }
+  ReducedOde(const ReducedOde&) = delete;
+  ReducedOde& operator=(const ReducedOde&) = delete;
+
+  // Advances to the output time t, applying the switching events due on the way (motor/Supply.h):
+  // CVODE stops at the next timed event (its stop time) and at a speed-triggered one (its root
+  // finding of ω_r - ω_switch, rising, on the interpolant); the event is applied there (the law's
+  // states mapped across it) and CVODE restarts from the new state. A constant supply has none,
+  // and the run is exactly the one without starting methods. False when CVODE gave up.
+  bool advanceTo(double t) {
+    while (true) {
+      if (!integ_.advanceTo(t)) return false;
+      // CVODE returns at the stop time, or at the output time when it is the stop time: either
+      // way the events due there are applied here.
+      if (events_) {
+        Eigen::VectorXd y = integ_.y();
+        if (m_.supply().applyDueEvents(phase_, integ_.time(), m_.rotorSpeed(y.data()), integ_.rootFound(),
+                                       m_.motorLaw(), y.data() + m_.iMotorStates())) {
+          integ_.restart(integ_.time(), y);
+          arm(integ_.time());
+        }
+      }
+      if (reachedOutputTime(integ_.time(), t)) return true;
+    }
+  }
+  // Why the run stopped after advanceTo returned false.
+  std::string failureStatus() const {
+    if (!friction_failure_.empty()) return statusAt("the run stopped", integ_.failureTime()) + ": the " + friction_failure_;
+    return std::string("integrator failure at t = ") + std::to_string(integ_.failureTime()) + " s: " + integ_.error();
+  }
+  const CvodeIntegrator& integrator() const { return integ_; }
+  const SupplyPhase& phase() const { return phase_; }
+  // The model's evaluations (the run's realizations): CVODE's, those of its difference-quotient
+  // Jacobian and those at every (re)start that the extrema finder reads.
+  long evaluations() const { return evaluations_; }
+  CrankSpeedExtremaFinder& extrema() { return extrema_; }
+
+ private:
+  OdeProblem problem(const std::vector<double>& times, RunResult& res) {
+    OdeProblem p;
+    p.t0 = times.front();
+    p.stop_time = times.back();
+    p.y0 = m_.initialState();
+    // The supply's events due at t = 0 (a speed trigger already met by the initial speed).
+    m_.supply().applyDueEvents(phase_, 0.0, m_.rotorSpeed(p.y0.data()), false, m_.motorLaw(),
+                               p.y0.data() + m_.iMotorStates());
+    p.rhs = [this](double t, const double* y, double* ydot) { return derivatives(t, y, ydot); };
+    const IntegrationScales scales =
+        integrationScales(m_.scene(), std::numeric_limits<double>::quiet_NaN(), m_.motorBreakdownTorque());
+    setMethodAndAccuracy(m_, scales, p, res);
+    p.on_step = [this](double t, const double* y, const double* ydot, bool after_step) {
+      observe(t, y, ydot, after_step);
+    };
+    p.root = [this](double, const double* y) { return m_.rotorSpeed(y) - trigger_speed_; };
+    return p;
+  }
+
+  bool derivatives(double t, const double* y, double* ydot) {
+    ++evaluations_;
+    if (m_.derivatives(t, phase_, y, ydot)) return true;  // allocation-free
+    // A cart locks at this trial state: recoverable (a smaller step may stay clear of it); where
+    // it cannot, CVODE gives up and the run's status names the cause.
+    if (friction_failure_.empty()) {
+      ModelEvaluation e;
+      m_.evaluate(t, phase_, y, e, false);
+      friction_failure_ = describeLoopFailure(e.friction_loop);
+    }
+    return false;
+  }
+
+  // The crank speed's extrema inside CVODE's steps (analysis/CrankSpeedExtrema.h): each step's
+  // end observed with ε from CVODE's interpolant; at a (re)start ε is f itself, and the extrema of
+  // a step an event cut short are forgotten.
+  void observe(double t, const double* y, const double* ydot, bool after_step) {
+    const int i_omega = m_.iOmega();
+    if (after_step) {
+      extrema_.stepTo(t, y[i_omega], ydot[i_omega], dense_);
+      return;
+    }
+    extrema_.dropAfter(t);
+    extrema_.restart(t, y[i_omega], ydot[i_omega]);
+  }
+
+  // The stop time at the next timed event, the root finding on for a speed-triggered one.
+  void arm(double t_now) {
+    const double te = std::min(m_.supply().nextEventTime(phase_), t_end_);
+    if (te > t_now) integ_.setStopTime(te);
+    trigger_speed_ = m_.supply().triggerSpeed(phase_);
+    integ_.enableRoot(!std::isnan(trigger_speed_));
+  }
+
+  const ReducedModel& m_;
+  const double t_end_;
+  const bool events_ = !m_.supply().constant();
+  SupplyPhase phase_;  // changes only between integrations, at events
+  long evaluations_ = 0;
+  std::string friction_failure_;  // the first evaluation whose guide-friction loop failed, in words
+  double trigger_speed_ = std::numeric_limits<double>::quiet_NaN();  // rotor speed of a speed-triggered event [rad/s]
+  CrankSpeedExtremaFinder extrema_;
+  // CVODE's interpolant of its last step: ω and ε inside it (called only after a step).
+  const CrankSpeedExtremaFinder::Dense dense_ = [this](double tq, double& w, double& eps) {
+    w = integ_.interpolate(tq, 0, m_.iOmega());
+    eps = integ_.interpolate(tq, 1, m_.iOmega());
+  };
+  CvodeIntegrator integ_;  // last: built from the members above
+};
+
+RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& control) {
+  const Scene& s = m.scene();
+  const std::vector<double> times = outputTimes(s.simulation);
+  ReducedOde ode(m, times, res);
+  const SupplyPhase& phase = ode.phase();
 
   const Eigen::VectorXd y0 = m.initialState();
   res.energy.kinetic_initial = m.kineticEnergy(y0);
   res.energy.potential_initial = m.potentialEnergy(y0);
-
-  // Switching events (motor/Supply.h): CVODE stops at the next timed event (its stop time) and
-  // at a speed-triggered one (its root finding on the interpolant); the event is applied there
-  // (the law's states mapped across it) and CVODE restarts from the new state. A constant supply
-  // has none, and the run is exactly the one without starting methods.
-  const bool events = !m.supply().constant();
-  long steps_before_restarts = 0, rejected_before_restarts = 0;
-  auto arm = [&](double t_now) {
-    const double te = std::min(m.supply().nextEventTime(phase), times.back());
-    int f = te > t_now ? CVodeSetStopTime(cv, te) : CV_SUCCESS;
-    ud.trigger_speed = m.supply().triggerSpeed(phase);
-    const bool by_speed = !std::isnan(ud.trigger_speed);
-    if (f == CV_SUCCESS) f = CVodeRootInit(cv, by_speed ? 1 : 0, by_speed ? cvodeRoot : nullptr);
-    int rising = 1;
-    if (f == CV_SUCCESS && by_speed) f = CVodeSetRootDirection(cv, &rising);
-    if (f != CV_SUCCESS) throw std::runtime_error("CVODE event setup failed: " + ud.last_error);
-  };
-  if (events) arm(times.front());
 
   RunRecorder recorder(s, &m.supply(), false, res, control);  // the stop rules both models share
   std::vector<double> cart_speeds(m.cartCount());
@@ -316,67 +313,16 @@ RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& contr
   res.timeseries.rows.reserve(times.size());
   res.reactions.rows.reserve(times.size());
   ModelEvaluation e;  // reused for every output row (keeps its carts' storage)
+  const Eigen::VectorXd& ym = ode.integrator().y();  // the state at the last output time
   Eigen::VectorXd y_last = ym;
-  // The crank speed's extrema inside CVODE's steps (analysis/CrankSpeedExtrema.h): CVODE's normal
-  // mode (advance to the output time, interpolate there) taken one internal step at a time, each
-  // step's end observed with ε from CVODE's interpolant; at a (re)start ε is f itself.
-  CrankSpeedExtremaFinder extrema;
-  N_Vector dky = sun.dky = N_VClone(y);
-  const int i_omega = m.iOmega();
-  auto observeStart = [&](double t0) {
-    if (cvodeRhs(t0, y, dky, &ud) != 0) N_VConst(std::numeric_limits<double>::quiet_NaN(), dky);
-    extrema.restart(t0, ym(i_omega), NV_Ith_S(dky, i_omega));
-  };
-  // CVODE's interpolant of its last step (valid there only: called right after the step).
-  N_Vector dense_y = sun.dense_y = N_VClone(y);
-  const CrankSpeedExtremaFinder::Dense dense = [&](double tq, double& w, double& eps) {
-    w = CVodeGetDky(cv, tq, 0, dense_y) == CV_SUCCESS ? NV_Ith_S(dense_y, i_omega) : std::nan("");
-    eps = CVodeGetDky(cv, tq, 1, dense_y) == CV_SUCCESS ? NV_Ith_S(dense_y, i_omega) : std::nan("");
-  };
-  CvodeStepByStep stepper;
-  const auto observeStep = [&](double t_step) {
-    if (CVodeGetDky(cv, t_step, 1, dky) != CV_SUCCESS) N_VConst(std::numeric_limits<double>::quiet_NaN(), dky);
-    extrema.stepTo(t_step, ym(i_omega), NV_Ith_S(dky, i_omega), dense);
-  };
-  observeStart(times.front());
   for (size_t k = 0; k < times.size(); ++k) {
     double t = times[k];
     if (k > 0) {
-      realtype tret = t;
-      while (true) {
-        flag = stepper.advance(cv, t, y, tret, observeStep);
-        if (flag < 0) break;
-        // CVODE returns at the stop time with CV_TSTOP_RETURN, or with CV_SUCCESS when the output
-        // time is the stop time: either way the events due there are applied here.
-        if (events &&
-            m.supply().applyDueEvents(phase, tret, m.rotorSpeed(ym.data()), flag == CV_ROOT_RETURN, m.motorLaw(),
-                                      ym.data() + m.iMotorStates())) {
-          long n = 0;
-          CVodeGetNumSteps(cv, &n);
-          steps_before_restarts += n;  // CVodeReInit zeroes the count
-          CVodeGetNumErrTestFails(cv, &n);
-          rejected_before_restarts += n;
-          flag = CVodeReInit(cv, tret, y);
-          if (flag < 0) break;
-          arm(tret);
-          stepper.restarted();
-          extrema.dropAfter(tret);
-          observeStart(tret);
-        }
-        if (reachedOutputTime(tret, t)) break;
-      }
-      if (flag < 0) {
-        if (!ud.friction_failure.empty()) {
-          recorder.fail(statusAt("the run stopped", tret) + ": the " + ud.friction_failure);
-          break;
-        }
-        char* name = CVodeGetReturnFlagName(flag);
-        recorder.fail(std::string("integrator failure at t = ") + std::to_string(tret) + " s: " + (name ? name : "?") +
-                      " " + ud.last_error);
-        free(name);
+      if (!ode.advanceTo(t)) {
+        recorder.fail(ode.failureStatus());
         break;
       }
-      t = tret;
+      t = ode.integrator().time();
     }
     y_last = ym;
     m.evaluate(t, phase, y_last.data(), e, true);
@@ -387,15 +333,12 @@ RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& contr
     if (!recordRows(m, t, e, phase, recorder, res, cart_speeds)) break;
   }
   res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
-  res.crank_speed_extrema = extrema.takeUpTo(res.timeseries.rows.empty() ? times.front() : res.timeseries.rows.back()[0]);
+  res.crank_speed_extrema =
+      ode.extrema().takeUpTo(res.timeseries.rows.empty() ? times.front() : res.timeseries.rows.back()[0]);
 
-  long nsteps = 0;
-  CVodeGetNumSteps(cv, &nsteps);
-  res.stats.steps = steps_before_restarts + nsteps;
-  long nrejected = 0;
-  CVodeGetNumErrTestFails(cv, &nrejected);
-  res.stats.error_test_failures = rejected_before_restarts + nrejected;
-  res.stats.realizations = ud.rhs_evals;  // includes the difference-quotient Jacobian calls
+  res.stats.steps = ode.integrator().steps();
+  res.stats.error_test_failures = ode.integrator().errorTestFailures();
+  res.stats.realizations = ode.evaluations();  // includes the difference-quotient Jacobian calls
 
   res.energy.motor_work = y_last(m.iMotorWork());
   res.energy.damping_dissipation = m.rigid() ? 0.0 : y_last(m.iDampingWork());

@@ -9,7 +9,7 @@
 #include "MachineFixtures.h"
 #include "motor/CircuitLaw.h"
 #include "motor/ParkLaw.h"
-#include "multibody/cvode/AdamsIntegrator.h"
+#include "numerics/CvodeIntegrator.h"
 
 namespace rollerdyn {
 namespace {
@@ -105,7 +105,7 @@ TEST(ParkLaw, TransientFromRestSettlesOnTheCircuitsTorque) {
   const InductionMachineParameters m = test::mslMachine();
   const ParkLaw law(m);
   const double s = 0.04, w = speedAt(m, s);
-  AdamsProblem p;
+  OdeProblem p;
   p.bdf = true;
   p.rhs = [&](double, const double* y, double* yd) {
     MotorEvaluation e;
@@ -117,7 +117,7 @@ TEST(ParkLaw, TransientFromRestSettlesOnTheCircuitsTorque) {
   p.atol = Eigen::VectorXd::Constant(4, 1e-12 * law.stateScales()[0]);
   p.absolute_only.assign(4, false);
   p.stop_time = 8.0;
-  AdamsIntegrator integ(p);
+  CvodeIntegrator integ(p);
   ASSERT_TRUE(integ.advanceTo(8.0)) << integ.error();
   MotorEvaluation e;
   law.evaluate({}, w, integ.y().data(), e, nullptr);

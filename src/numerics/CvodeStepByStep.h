@@ -9,8 +9,7 @@
 // time first and the root or the stop time on the next call. Such a return is kept pending and
 // handed out on the call whose output time reaches it.
 //
-// Header-only: the reduced model and the multibody model's minimal formulation each carry their
-// own private copy of SUNDIALS (CMakeLists.txt), and each compiles this against its own.
+// Used by the CVODE driver (CvodeIntegrator.h) when its problem observes the steps.
 #pragma once
 
 #include <cvode/cvode.h>

@@ -1,11 +1,12 @@
 // CVODE's Adams-Moulton method (orders 1-12, variable step), or its BDF method (orders 1-5) for
-// stiff problems, behind a small interface that knows nothing of SUNDIALS, for the multibody
-// model's minimal formulation (MinimalSimulation.h) and any other ODE of the project.
+// stiff problems, behind a small interface that knows nothing of SUNDIALS: the project's one
+// CVODE driver, under both models (the reduced model, ReducedIntegrators.cpp; the multibody
+// model's minimal formulation, MinimalSimulation.h) and any other ODE of the project.
 //
-// Why a separate shared library (CMakeLists.txt, rollerdyn_cvode): Simbody's SimTKmath exports
+// Why a separate shared library (CMakeLists.txt, rollerdyn_numerics): Simbody's SimTKmath exports
 // the N_Vector functions of its own, older SUNDIALS; the static SUNDIALS 6 archives the project
-// uses are therefore linked into a shared library and hidden there (--exclude-libs), exactly as
-// for the reduced model, and the vector operations are Eigen's (reduced/EigenSundials.h).
+// uses are therefore linked into this shared library and hidden there (--exclude-libs), and the
+// vector operations and the dense LU are Eigen's (EigenSundials.h).
 #pragma once
 
 #include <functional>
@@ -38,7 +39,7 @@ struct JacobianStructure {
   bool given() const { return !difference_quotient.empty(); }
 };
 
-struct AdamsProblem {
+struct OdeProblem {
   // ẏ = f(t, y); returns false when f cannot be evaluated at y (CVODE then retries with a
   // smaller step).
   std::function<bool(double t, const double* y, double* ydot)> rhs;
@@ -58,40 +59,44 @@ struct AdamsProblem {
   bool newton = true;         // Newton corrector on a dense Jacobian (structure below);
                               // false: fixed-point (functional) iteration
   JacobianStructure jacobian; // Newton only; empty: difference quotients for every column
-  // Optional event function: while enabled (AdamsIntegrator::enableRoot), advanceTo stops where
+  // Optional event function: while enabled (CvodeIntegrator::enableRoot), advanceTo stops where
   // g(t, y) crosses zero upwards, located by CVODE's root finding on its interpolant (e.g. a rotor
   // speed reaching a switching speed: g = ω - ω_switch).
   std::function<double(double t, const double* y)> root;
   // Optional observer of the integrator's own steps: called with (t, y, ẏ, after_step) at the
-  // initial point and at every restart (after_step false; ẏ = f itself) and at the end of every
-  // internal step (after_step true; ẏ is the derivative of CVODE's interpolating polynomial, and
-  // AdamsIntegrator::interpolate reaches inside the step). advanceTo then steps one internal step
-  // at a time and interpolates the output as CVODE's normal mode does: the same steps, the same
-  // output, and what happens between output times seen (e.g. analysis/CrankSpeedExtrema.h).
+  // initial point and at every restart (after_step false; ẏ = f itself, all NaN where f cannot be
+  // evaluated or is not finite) and at the end of every internal step (after_step true; ẏ is the
+  // derivative of CVODE's interpolating polynomial, and CvodeIntegrator::interpolate reaches
+  // inside the step). advanceTo then steps one internal step at a time and interpolates the output
+  // as CVODE's normal mode does: the same steps, the same output, and what happens between output
+  // times seen (e.g. analysis/CrankSpeedExtrema.h).
   std::function<void(double t, const double* y, const double* ydot, bool after_step)> on_step;
 };
 
-class AdamsIntegrator {
+class CvodeIntegrator {
  public:
-  explicit AdamsIntegrator(const AdamsProblem& problem);  // throws std::runtime_error on setup failure
-  ~AdamsIntegrator();
-  AdamsIntegrator(const AdamsIntegrator&) = delete;
-  AdamsIntegrator& operator=(const AdamsIntegrator&) = delete;
+  explicit CvodeIntegrator(const OdeProblem& problem);  // throws std::runtime_error on setup failure
+  ~CvodeIntegrator();
+  CvodeIntegrator(const CvodeIntegrator&) = delete;
+  CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
 
   // Advances to t_out (interpolating within the last step, CVODE's normal mode) and leaves the
   // state at t_out in y(). False on an integrator failure (message in error()).
   bool advanceTo(double t_out);
   // After advanceTo: whether it stopped short of t_out at a zero of the event function.
   bool rootFound() const;
+  // After advanceTo returned false: the time CVODE had reached when it gave up [s] (time() stays
+  // at the last successful return).
+  double failureTime() const;
   // Never integrate past t_stop (<= the problem's stop_time): a discontinuity there (an event of
   // the run) is then never stepped across. advanceTo returns at t_stop when t_out lies beyond.
   void setStopTime(double t_stop);
-  // Event function on or off (needs AdamsProblem::root).
+  // Event function on or off (needs OdeProblem::root).
   void enableRoot(bool on);
   // Continues from (t, y) as from a new initial value (after the run changed y or the equations
   // discontinuously at t): the method restarts at order 1. Counters keep counting.
   void restart(double t, const Eigen::VectorXd& y);
-  // CVODE's interpolant of its last step (valid inside it, e.g. from AdamsProblem::on_step).
+  // CVODE's interpolant of its last step (valid inside it, e.g. from OdeProblem::on_step).
   double interpolate(double t, int k, int i) const;
   double time() const;
   const Eigen::VectorXd& y() const;

@@ -1,4 +1,4 @@
-#include "multibody/cvode/AdamsIntegrator.h"
+#include "numerics/CvodeIntegrator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,13 +12,13 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
-#include "reduced/CvodeStepByStep.h"
-#include "reduced/EigenSundials.h"
+#include "numerics/CvodeStepByStep.h"
+#include "numerics/EigenSundials.h"
 
 namespace rollerdyn {
 
-struct AdamsIntegrator::Impl {
-  AdamsProblem problem;
+struct CvodeIntegrator::Impl {
+  OdeProblem problem;
   SUNContext ctx = nullptr;
   N_Vector y = nullptr;
   N_Vector ewt = nullptr;  // CVODE's error weights, copied for the structured Jacobian
@@ -29,23 +29,26 @@ struct AdamsIntegrator::Impl {
   SUNNonlinearSolver NLS = nullptr;
   Eigen::VectorXd y_out;
   double t = 0;
+  double t_failure = 0;  // where the last failed advanceTo gave up
   long rhs_evals = 0;
   long steps_before = 0, jacobians_before = 0, failures_before = 0;  // counted before the last restart
   long error_test_failures_before = 0;
   bool root_found = false;
-  CvodeStepByStep stepper;  // with AdamsProblem::on_step: the normal mode one step at a time
+  CvodeStepByStep stepper;  // with OdeProblem::on_step: the normal mode one step at a time
   double stop_time = 0;
   std::string error;
   std::string rhs_exception;  // what the right-hand side threw, if it did
 
-  // AdamsProblem::on_step at a (re)start: ẏ = f(t, y) evaluated here.
+  // OdeProblem::on_step at a (re)start: ẏ = f(t, y) evaluated here, all NaN where CVODE would
+  // not accept it (f not evaluable, or not finite: Impl::rhs).
   void observeStart() {
     if (!problem.on_step) return;
     Eigen::VectorXd yd(y_out.size());
-    if (!problem.rhs(t, y_out.data(), yd.data())) yd.setConstant(std::numeric_limits<double>::quiet_NaN());
+    if (!problem.rhs(t, y_out.data(), yd.data()) || !yd.allFinite())
+      yd.setConstant(std::numeric_limits<double>::quiet_NaN());
     problem.on_step(t, y_out.data(), yd.data(), false);
   }
-  // AdamsProblem::on_step at the end of the internal step just taken (y holds y(t_step)).
+  // OdeProblem::on_step at the end of the internal step just taken (y holds y(t_step)).
   void observeStep(double t_step) {
     if (!scratch) scratch = N_VClone(y);
     if (CVodeGetDky(cv, t_step, 1, scratch) != CV_SUCCESS) N_VConst(std::numeric_limits<double>::quiet_NaN(), scratch);
@@ -85,7 +88,7 @@ struct AdamsIntegrator::Impl {
   // CVODE's weights 1/(rtol·|y_i| + atol_i), except atol_i alone for absolute_only states.
   static int weights(N_Vector y, N_Vector ewt, void* user) {
     auto* self = static_cast<Impl*>(user);
-    const AdamsProblem& p = self->problem;
+    const OdeProblem& p = self->problem;
     const long n = NV_LENGTH_S(y);
     const double* yv = NV_DATA_S(y);
     double* w = NV_DATA_S(ewt);
@@ -97,7 +100,7 @@ struct AdamsIntegrator::Impl {
     return 0;
   }
 
-  // The Jacobian of a structured problem (AdamsProblem::jacobian): difference-quotient columns
+  // The Jacobian of a structured problem (OdeProblem::jacobian): difference-quotient columns
   // exactly as CVODE's own dense one forms them (cvLsDenseDQJac in SUNDIALS' cvode_ls.c), so
   // those columns are the same numbers, and the known columns from the problem.
   //   increment of y_j: max(sqrt(uround)·|y_j|, minInc/ewt_j),
@@ -165,22 +168,22 @@ struct AdamsIntegrator::Impl {
   }
 };
 
-AdamsIntegrator::AdamsIntegrator(const AdamsProblem& problem) : impl_(new Impl) {
+CvodeIntegrator::CvodeIntegrator(const OdeProblem& problem) : impl_(new Impl) {
   Impl& m = *impl_;
   m.problem = problem;
   const int n = int(problem.y0.size());
   if (problem.atol.size() != n || int(problem.absolute_only.size()) != n)
-    throw std::invalid_argument("AdamsIntegrator: atol and absolute_only need one entry per state");
+    throw std::invalid_argument("CvodeIntegrator: atol and absolute_only need one entry per state");
   const JacobianStructure& js = problem.jacobian;
   if (js.given()) {
     if (!problem.newton)
-      throw std::invalid_argument("AdamsIntegrator: a Jacobian structure needs the Newton corrector");
+      throw std::invalid_argument("CvodeIntegrator: a Jacobian structure needs the Newton corrector");
     if (int(js.difference_quotient.size()) != n || js.diagonal.size() != n)
-      throw std::invalid_argument("AdamsIntegrator: the Jacobian structure needs one entry per state (" +
+      throw std::invalid_argument("CvodeIntegrator: the Jacobian structure needs one entry per state (" +
                                   std::to_string(n) + ")");
     for (int j = 0; j < n; ++j)
       if (!js.difference_quotient[j] && !std::isfinite(js.diagonal(j)))
-        throw std::invalid_argument("AdamsIntegrator: known Jacobian column " + std::to_string(j) +
+        throw std::invalid_argument("CvodeIntegrator: known Jacobian column " + std::to_string(j) +
                                     " has a non-finite diagonal");
   }
   if (SUNContext_Create(nullptr, &m.ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
@@ -210,11 +213,11 @@ AdamsIntegrator::AdamsIntegrator(const AdamsProblem& problem) : impl_(new Impl) 
   const int highest_order = problem.bdf ? 5 : 12;
   const int max_order = problem.max_order == 0 ? highest_order : problem.max_order;
   if (max_order < 1 || max_order > highest_order)
-    throw std::invalid_argument(std::string("AdamsIntegrator: max_order must be 1 ... ") +
+    throw std::invalid_argument(std::string("CvodeIntegrator: max_order must be 1 ... ") +
                                 (problem.bdf ? "5 (BDF)" : "12 (Adams)") + ", got " +
                                 std::to_string(problem.max_order));
   if (problem.bdf && !problem.newton)
-    throw std::invalid_argument("AdamsIntegrator: BDF needs the Newton corrector (newton = true)");
+    throw std::invalid_argument("CvodeIntegrator: BDF needs the Newton corrector (newton = true)");
   if (flag == CV_SUCCESS) flag = CVodeSetMaxOrd(m.cv, max_order);
   if (flag == CV_SUCCESS) flag = CVodeSetStopTime(m.cv, problem.stop_time);
   m.stop_time = problem.stop_time;
@@ -223,9 +226,9 @@ AdamsIntegrator::AdamsIntegrator(const AdamsProblem& problem) : impl_(new Impl) 
   m.observeStart();
 }
 
-AdamsIntegrator::~AdamsIntegrator() = default;
+CvodeIntegrator::~CvodeIntegrator() = default;
 
-bool AdamsIntegrator::advanceTo(double t_out) {
+bool CvodeIntegrator::advanceTo(double t_out) {
   Impl& m = *impl_;
   realtype t_ret = m.t;
   const int flag = m.problem.on_step
@@ -233,6 +236,7 @@ bool AdamsIntegrator::advanceTo(double t_out) {
                        : CVode(m.cv, t_out, m.y, &t_ret, CV_NORMAL);
   m.root_found = flag == CV_ROOT_RETURN;
   if (flag < 0) {
+    m.t_failure = t_ret;
     char* name = CVodeGetReturnFlagName(flag);
     m.error = std::string(name ? name : "?") + " " + m.error +
               (m.rhs_exception.empty() ? "" : " (right-hand side: " + m.rhs_exception + ")");
@@ -244,17 +248,18 @@ bool AdamsIntegrator::advanceTo(double t_out) {
   return true;
 }
 
-bool AdamsIntegrator::rootFound() const { return impl_->root_found; }
+bool CvodeIntegrator::rootFound() const { return impl_->root_found; }
+double CvodeIntegrator::failureTime() const { return impl_->t_failure; }
 
-void AdamsIntegrator::setStopTime(double t_stop) {
+void CvodeIntegrator::setStopTime(double t_stop) {
   Impl& m = *impl_;
   m.stop_time = std::min(t_stop, m.problem.stop_time);
   if (CVodeSetStopTime(m.cv, m.stop_time) != CV_SUCCESS) throw std::runtime_error("CVodeSetStopTime failed: " + m.error);
 }
 
-void AdamsIntegrator::enableRoot(bool on) {
+void CvodeIntegrator::enableRoot(bool on) {
   Impl& m = *impl_;
-  if (on && !m.problem.root) throw std::logic_error("AdamsIntegrator: no event function to enable");
+  if (on && !m.problem.root) throw std::logic_error("CvodeIntegrator: no event function to enable");
   int flag = CVodeRootInit(m.cv, on ? 1 : 0, on ? Impl::rootFn : nullptr);
   int rising = 1;
   if (flag == CV_SUCCESS && on) flag = CVodeSetRootDirection(m.cv, &rising);
@@ -262,7 +267,7 @@ void AdamsIntegrator::enableRoot(bool on) {
   if (flag != CV_SUCCESS) throw std::runtime_error("CVodeRootInit failed: " + m.error);
 }
 
-void AdamsIntegrator::restart(double t, const Eigen::VectorXd& y) {
+void CvodeIntegrator::restart(double t, const Eigen::VectorXd& y) {
   Impl& m = *impl_;
   // CVodeReInit zeroes CVODE's counters: keep what they counted so far.
   m.steps_before = steps();
@@ -281,35 +286,35 @@ void AdamsIntegrator::restart(double t, const Eigen::VectorXd& y) {
   m.observeStart();
 }
 
-double AdamsIntegrator::interpolate(double t, int k, int i) const {
+double CvodeIntegrator::interpolate(double t, int k, int i) const {
   Impl& m = *impl_;
   if (!m.scratch) m.scratch = N_VClone(m.y);
   return CVodeGetDky(m.cv, t, k, m.scratch) == CV_SUCCESS ? NV_Ith_S(m.scratch, i) : std::nan("");
 }
 
-double AdamsIntegrator::time() const { return impl_->t; }
-const Eigen::VectorXd& AdamsIntegrator::y() const { return impl_->y_out; }
-long AdamsIntegrator::steps() const {
+double CvodeIntegrator::time() const { return impl_->t; }
+const Eigen::VectorXd& CvodeIntegrator::y() const { return impl_->y_out; }
+long CvodeIntegrator::steps() const {
   long n = 0;
   CVodeGetNumSteps(impl_->cv, &n);
   return impl_->steps_before + n;
 }
-long AdamsIntegrator::errorTestFailures() const {
+long CvodeIntegrator::errorTestFailures() const {
   long n = 0;
   CVodeGetNumErrTestFails(impl_->cv, &n);
   return impl_->error_test_failures_before + n;
 }
-long AdamsIntegrator::rhsEvaluations() const { return impl_->rhs_evals; }
-long AdamsIntegrator::jacobianEvaluations() const {
+long CvodeIntegrator::rhsEvaluations() const { return impl_->rhs_evals; }
+long CvodeIntegrator::jacobianEvaluations() const {
   long n = 0;
   if (impl_->LS) CVodeGetNumJacEvals(impl_->cv, &n);
   return impl_->jacobians_before + n;
 }
-long AdamsIntegrator::newtonConvergenceFailures() const {
+long CvodeIntegrator::newtonConvergenceFailures() const {
   long n = 0;
   CVodeGetNumNonlinSolvConvFails(impl_->cv, &n);
   return impl_->failures_before + n;
 }
-const std::string& AdamsIntegrator::error() const { return impl_->error; }
+const std::string& CvodeIntegrator::error() const { return impl_->error; }
 
 }  // namespace rollerdyn

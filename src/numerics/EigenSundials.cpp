@@ -1,4 +1,4 @@
-#include "reduced/EigenSundials.h"
+#include "numerics/EigenSundials.h"
 
 #include <cmath>
 #include <new>
