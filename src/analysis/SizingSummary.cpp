@@ -349,91 +349,119 @@ json flywheelChecks(const json& summary) {
   return c;
 }
 
-std::string sizingText(const json& summary) {
+namespace {
+
+// The heading: the window the figures are taken over and the whole run.
+std::string sizingHeading(const json& summary, bool steady) {
   const json& s = jsonMember(summary, "sizing");
-  if (!s.is_object()) return "";
-  std::ostringstream o;
-  auto chk = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
-  auto str = [](const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); };
   const json& w = jsonMember(s, "window");
   const json& wr = jsonMember(s, "whole_run");
-  const json& reached = jsonMember(jsonMember(summary, "steady_state"), "reached");
-  const bool steady = !reached.is_boolean() || reached.get<bool>();
-  // Each figure's window named as the heading names it: no "steady window" where there is none.
-  const char* win = steady ? " (steady window)" : " (the run's last part)";
+  std::ostringstream o;
   o << "drive sizing over the " << (steady ? "steady window" : "run's last part (no steady state)") << " t = "
     << fmt(jsonMember(w, "t_begin"), "%.4g") << " ... " << fmt(jsonMember(w, "t_end"), "%.4g") << " s ("
     << fmt(jsonMember(w, "revolutions"), "%.3g") << " crank revolutions)"
     << " and over the whole run t = " << fmt(jsonMember(wr, "t_begin"), "%.4g") << " ... " << fmt(jsonMember(wr, "t_end"), "%.4g")
     << " s (" << wholeRunWords(summary) << ")\n"
     << "  M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω_r rotor speed, ω0 synchronous speed\n";
-  const json& m = jsonMember(s, "motor");
-  if (m.is_object()) {
-    const json &ts = jsonMember(m, "torque_shaft"), &tc = jsonMember(m, "torque_crank");
-    const json& r = jsonMember(m, "whole_run");
-    o << "  motor torque at the rotor M       mean " << fmt(jsonMember(ts, "mean"), "%.4g") << ", RMS "
-      << fmt(jsonMember(ts, "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(ts, "peak"), "%.4g") << " N·m" << win << "\n"
-      << "                                    mean " << fmt(jsonMember(jsonMember(r, "torque_shaft"), "mean"), "%.4g") << ", RMS "
-      << fmt(jsonMember(jsonMember(r, "torque_shaft"), "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(jsonMember(r, "torque_shaft"), "peak"), "%.4g")
-      << " N·m (whole run)\n";
-    o << "  motor torque at the crank M·u·η   mean " << fmt(jsonMember(tc, "mean"), "%.4g") << ", RMS "
-      << fmt(jsonMember(tc, "rms"), "%.4g") << ", peak " << fmt(jsonMember(tc, "peak"), "%.4g") << " N·m" << win << "\n";
-    o << "  nominal torque M_n                " << fmt(jsonMember(m, "nominal_torque"), "%.4g") << " N·m ("
-      << str(jsonMember(m, "nominal_torque_source")) << "); breakdown torque M_kr " << fmt(jsonMember(m, "breakdown_torque"), "%.4g")
-      << " N·m";
-    if (jsonMember(m, "breakdown_torque_catalogue").is_number())
-      o << " (the catalogue's (M_k/M_n)·P_n/ω_n: " << fmt(jsonMember(m, "breakdown_torque_catalogue"), "%.4g") << " N·m)";
-    o << "\n";
-    const json &ps = jsonMember(m, "power_shaft"), &pl = jsonMember(m, "power_line"), &sl = jsonMember(m, "slip");
-    o << "  shaft power M·ω_r                 mean " << fmt(jsonMember(ps, "mean"), "%.4g", 1e-3) << ", peak "
-      << fmt(jsonMember(ps, "peak"), "%.4g", 1e-3) << " kW" << win << "\n";
-    o << "  power drawn from the line         mean " << fmt(jsonMember(pl, "mean"), "%.4g", 1e-3) << ", peak "
-      << fmt(jsonMember(pl, "peak"), "%.4g", 1e-3) << " kW" << win << "; mean "
-      << fmt(jsonMember(jsonMember(r, "power_line"), "mean"), "%.4g", 1e-3) << ", peak " << fmt(jsonMember(jsonMember(r, "power_line"), "peak"), "%.4g", 1e-3)
-      << " kW (whole run)\n"
-      << "                                    (" << str(jsonMember(m, "line_power_basis")) << ")\n";
-    o << "  slip s = 1 - ω_r/ω0               " << fmt(jsonMember(sl, "min"), "%.4f") << " ... "
-      << fmt(jsonMember(sl, "max"), "%.4f") << win << "; " << fmt(jsonMember(jsonMember(r, "slip"), "min"), "%.4f") << " ... "
-      << fmt(jsonMember(jsonMember(r, "slip"), "max"), "%.4f") << " (whole run)\n";
-    const json& e_rev = jsonMember(m, "energy_per_revolution");
-    o << "  motor energy per crank revolution "
-      << (e_rev.is_number() ? fmt(e_rev, "%.4g", 1e-3) + " kJ" : std::string("n/a (the crank does not turn in the window)"))
-      << "\n";
-  } else {
+  return o.str();
+}
+
+// The motor's torques, powers, slip and energy per revolution; `win` names the window.
+std::string motorText(const json& m, const char* win) {
+  std::ostringstream o;
+  if (!m.is_object()) {
     o << "  motor                             n/a (no motor torque in this run)\n";
-  }
-  o << flywheelText(summary);
-  const json& c = jsonMember(s, "coupling");
-  if (c.is_object()) {
-    o << "  coupling torque (crank axis)      mean " << fmt(jsonMember(c, "mean"), "%.4g") << ", peak |M| "
-      << fmt(jsonMember(c, "peak"), "%.4g") << ", swing " << fmt(jsonMember(c, "swing"), "%.4g") << " N·m" << win << "; peak |M| "
-      << fmt(jsonMember(c, "peak_whole_run"), "%.4g") << " N·m at t = " << fmt(jsonMember(c, "t_peak_whole_run"), "%.4g")
-      << " s (whole run)\n";
-    o << "  coupling rated torque             "
-      << (jsonMember(c, "rated_torque").is_number() ? fmt(jsonMember(c, "rated_torque"), "%.4g") + " N·m"
-                                            : std::string("not given (sizing.coupling_rated_torque)"))
-      << "\n";
-  }
-  o << signOffText(s) << dutyText(s);
-  const json& checks = jsonMember(s, "checks");
-  if (checks.is_array() && !checks.empty()) {
-    o << "  checks (the window named decided each):\n";
-    for (const json& k : checks) {
-      const std::string v = chk(jsonMember(k, "verdict"));
-      char buf[200];
-      std::snprintf(buf, sizeof buf, "    %-15s %8s  %-14s decided by the %s", str(jsonMember(k, "check")).c_str(),
-                    fmt(jsonMember(k, "value"), "%.3f").c_str(), v.c_str(), str(jsonMember(k, "window")).c_str());
-      o << buf << "\n      " << str(jsonMember(k, "what")) << "; " << str(jsonMember(k, "reason")) << "\n";
-    }
-  }
-  const json& joints = jsonMember(s, "joints");
-  bool any_joint = false;
-  for (const char* kind : kJointKinds) any_joint = any_joint || jsonMember(jsonMember(joints, kind), "worst").is_object();
-  if (!any_joint) {
-    o << "  joint loads                       not computed: the run has no joint reactions "
-         "(simulation.reactions: false)\n";
     return o.str();
   }
+  const json &ts = jsonMember(m, "torque_shaft"), &tc = jsonMember(m, "torque_crank");
+  const json& r = jsonMember(m, "whole_run");
+  o << "  motor torque at the rotor M       mean " << fmt(jsonMember(ts, "mean"), "%.4g") << ", RMS "
+    << fmt(jsonMember(ts, "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(ts, "peak"), "%.4g") << " N·m" << win << "\n"
+    << "                                    mean " << fmt(jsonMember(jsonMember(r, "torque_shaft"), "mean"), "%.4g") << ", RMS "
+    << fmt(jsonMember(jsonMember(r, "torque_shaft"), "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(jsonMember(r, "torque_shaft"), "peak"), "%.4g")
+    << " N·m (whole run)\n";
+  o << "  motor torque at the crank M·u·η   mean " << fmt(jsonMember(tc, "mean"), "%.4g") << ", RMS "
+    << fmt(jsonMember(tc, "rms"), "%.4g") << ", peak " << fmt(jsonMember(tc, "peak"), "%.4g") << " N·m" << win << "\n";
+  o << "  nominal torque M_n                " << fmt(jsonMember(m, "nominal_torque"), "%.4g") << " N·m ("
+    << str(jsonMember(m, "nominal_torque_source")) << "); breakdown torque M_kr " << fmt(jsonMember(m, "breakdown_torque"), "%.4g")
+    << " N·m";
+  if (jsonMember(m, "breakdown_torque_catalogue").is_number())
+    o << " (the catalogue's (M_k/M_n)·P_n/ω_n: " << fmt(jsonMember(m, "breakdown_torque_catalogue"), "%.4g") << " N·m)";
+  o << "\n";
+  const json &ps = jsonMember(m, "power_shaft"), &pl = jsonMember(m, "power_line"), &sl = jsonMember(m, "slip");
+  o << "  shaft power M·ω_r                 mean " << fmt(jsonMember(ps, "mean"), "%.4g", 1e-3) << ", peak "
+    << fmt(jsonMember(ps, "peak"), "%.4g", 1e-3) << " kW" << win << "\n";
+  o << "  power drawn from the line         mean " << fmt(jsonMember(pl, "mean"), "%.4g", 1e-3) << ", peak "
+    << fmt(jsonMember(pl, "peak"), "%.4g", 1e-3) << " kW" << win << "; mean "
+    << fmt(jsonMember(jsonMember(r, "power_line"), "mean"), "%.4g", 1e-3) << ", peak " << fmt(jsonMember(jsonMember(r, "power_line"), "peak"), "%.4g", 1e-3)
+    << " kW (whole run)\n"
+    << "                                    (" << str(jsonMember(m, "line_power_basis")) << ")\n";
+  o << "  slip s = 1 - ω_r/ω0               " << fmt(jsonMember(sl, "min"), "%.4f") << " ... "
+    << fmt(jsonMember(sl, "max"), "%.4f") << win << "; " << fmt(jsonMember(jsonMember(r, "slip"), "min"), "%.4f") << " ... "
+    << fmt(jsonMember(jsonMember(r, "slip"), "max"), "%.4f") << " (whole run)\n";
+  const json& e_rev = jsonMember(m, "energy_per_revolution");
+  o << "  motor energy per crank revolution "
+    << (e_rev.is_number() ? fmt(e_rev, "%.4g", 1e-3) + " kJ" : std::string("n/a (the crank does not turn in the window)"))
+    << "\n";
+  return o.str();
+}
+
+// The coupling's torques and its rating; nothing without them. `win` names the window.
+std::string couplingText(const json& c, const char* win) {
+  std::ostringstream o;
+  if (!c.is_object()) return o.str();
+  o << "  coupling torque (crank axis)      mean " << fmt(jsonMember(c, "mean"), "%.4g") << ", peak |M| "
+    << fmt(jsonMember(c, "peak"), "%.4g") << ", swing " << fmt(jsonMember(c, "swing"), "%.4g") << " N·m" << win << "; peak |M| "
+    << fmt(jsonMember(c, "peak_whole_run"), "%.4g") << " N·m at t = " << fmt(jsonMember(c, "t_peak_whole_run"), "%.4g")
+    << " s (whole run)\n";
+  o << "  coupling rated torque             "
+    << (jsonMember(c, "rated_torque").is_number() ? fmt(jsonMember(c, "rated_torque"), "%.4g") + " N·m"
+                                          : std::string("not given (sizing.coupling_rated_torque)"))
+    << "\n";
+  return o.str();
+}
+
+// The checks with their verdicts and the window that decided each; nothing without checks.
+std::string checksText(const json& checks) {
+  std::ostringstream o;
+  if (!checks.is_array() || checks.empty()) return o.str();
+  o << "  checks (the window named decided each):\n";
+  for (const json& k : checks) {
+    const std::string v = str(jsonMember(k, "verdict"));
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "    %-15s %8s  %-14s decided by the %s", str(jsonMember(k, "check")).c_str(),
+                  fmt(jsonMember(k, "value"), "%.3f").c_str(), v.c_str(), str(jsonMember(k, "window")).c_str());
+    o << buf << "\n      " << str(jsonMember(k, "what")) << "; " << str(jsonMember(k, "reason")) << "\n";
+  }
+  return o.str();
+}
+
+// How each kind's life follows, or why it is n/a (the same reason for every cart of a kind).
+std::string jointLivesText(const json& joints) {
+  std::ostringstream o;
+  for (const char* kind : kJointKinds) {
+    const json& j = jsonMember(joints, kind);
+    const json& x = jsonMember(j, "worst");
+    if (!x.is_object()) continue;
+    o << "    " << str(jsonMember(j, "what")) << ": ";
+    if (jsonMember(x, "L10_hours").is_number()) {
+      if (jsonMember(x, "L10_oscillations").is_number())
+        o << "L10 " << fmt(jsonMember(x, "L10_revolutions"), "%.3g") << " revolutions = "
+          << fmt(jsonMember(x, "L10_oscillations"), "%.3g") << " oscillations; ";
+      o << str(jsonMember(x, "life_basis"));
+    } else {
+      o << "L10 n/a: " << str(jsonMember(x, "life_reason"));
+    }
+    o << "\n";
+  }
+  return o.str();
+}
+
+// The joint loads of the most loaded cart of each kind (every main bearing placed along the
+// shaft), where they come from and how their lives follow.
+std::string jointsText(const json& s) {
+  const json& joints = jsonMember(s, "joints");
+  std::ostringstream o;
   if (jsonMember(s, "joints_basis").is_string()) o << "  joint loads from the " << str(jsonMember(s, "joints_basis")) << "\n";
   o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
   const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearings, resultant"};
@@ -452,23 +480,32 @@ std::string sizingText(const json& summary) {
   }
   o << "  P equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation or swing speed; "
        "C dynamic load rating (sizing.bearing_rating.*); L10 in hours of steady running:\n";
-  // How each kind's life follows, or why it is n/a (the same reason for every cart of a kind).
-  for (const char* kind : kJointKinds) {
-    const json& j = jsonMember(joints, kind);
-    const json& x = jsonMember(j, "worst");
-    if (!x.is_object()) continue;
-    o << "    " << str(jsonMember(j, "what")) << ": ";
-    if (jsonMember(x, "L10_hours").is_number()) {
-      if (jsonMember(x, "L10_oscillations").is_number())
-        o << "L10 " << fmt(jsonMember(x, "L10_revolutions"), "%.3g") << " revolutions = "
-          << fmt(jsonMember(x, "L10_oscillations"), "%.3g") << " oscillations; ";
-      o << str(jsonMember(x, "life_basis"));
-    } else {
-      o << "L10 n/a: " << str(jsonMember(x, "life_reason"));
-    }
-    o << "\n";
+  o << jointLivesText(joints);
+  return o.str();
+}
+
+}  // namespace
+
+std::string sizingText(const json& summary) {
+  const json& s = jsonMember(summary, "sizing");
+  if (!s.is_object()) return "";
+  std::ostringstream o;
+  const json& reached = jsonMember(jsonMember(summary, "steady_state"), "reached");
+  const bool steady = !reached.is_boolean() || reached.get<bool>();
+  // Each figure's window named as the heading names it: no "steady window" where there is none.
+  const char* win = steady ? " (steady window)" : " (the run's last part)";
+  o << sizingHeading(summary, steady) << motorText(jsonMember(s, "motor"), win) << flywheelText(summary)
+    << couplingText(jsonMember(s, "coupling"), win) << signOffText(s) << dutyText(s)
+    << checksText(jsonMember(s, "checks"));
+  const json& joints = jsonMember(s, "joints");
+  bool any_joint = false;
+  for (const char* kind : kJointKinds) any_joint = any_joint || jsonMember(jsonMember(joints, kind), "worst").is_object();
+  if (!any_joint) {
+    o << "  joint loads                       not computed: the run has no joint reactions "
+         "(simulation.reactions: false)\n";
+    return o.str();
   }
-  o << crankshaftText(jsonMember(s, "crankshaft"));
+  o << jointsText(s) << crankshaftText(jsonMember(s, "crankshaft"));
   return o.str();
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "analysis/StallDetector.h"
+#include "analysis/StartJointPeaks.h"
 #include "analysis/StartUpCurrentLimit.h"
 #include "analysis/SteadyState.h"
 #include "motor/BreakdownTorque.h"
@@ -51,49 +52,18 @@ std::size_t firstRowAtOrAfter(const std::vector<double>& t, double when) {
   return std::size_t(std::lower_bound(t.begin(), t.end(), when - 1e-12) - t.begin());
 }
 
-// The joint reactions of one kind at row i: the largest |force| over the carts, and its column.
-struct JointKind {
-  const char* joint;
-  std::vector<std::vector<double>> x, y;  // per cart: component columns (y empty: a scalar force)
-  std::vector<std::string> names;
-};
+// How a peak is taken over rows of a column.
+enum class Extreme { Largest, Smallest, LargestMagnitude };
 
-std::vector<JointKind> jointKinds(const Table& r) {
-  std::vector<JointKind> kinds;
-  auto scalar = [&](const char* joint, const std::string& prefix) {
-    JointKind k{joint, {}, {}, {}};
-    for (int j = 1; r.has(prefix + std::to_string(j)); ++j) {
-      k.x.push_back(r.column(prefix + std::to_string(j)));
-      k.names.push_back(prefix + std::to_string(j));
-    }
-    if (!k.x.empty()) kinds.push_back(std::move(k));
-  };
-  scalar("guide_roller_front", "N_front_");
-  scalar("guide_roller_rear", "N_rear_");
-  scalar("rod_force", "F_rod_");
-  JointKind pin{"crank_pin", {}, {}, {}};
-  for (int j = 1; r.has("crankpin_x_" + std::to_string(j)); ++j) {
-    pin.x.push_back(r.column("crankpin_x_" + std::to_string(j)));
-    pin.y.push_back(r.column("crankpin_y_" + std::to_string(j)));
-    pin.names.push_back("crankpin_x_" + std::to_string(j) + "|crankpin_y_" + std::to_string(j));
+// The extreme of column c over rows, or NaN where it has no such rows.
+double extremeOf(const std::vector<double>& c, RowSpan rows, Extreme kind) {
+  const bool lowest = kind == Extreme::Smallest, absolute = kind == Extreme::LargestMagnitude;
+  double m = lowest ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+  for (std::size_t i = rows.begin; i < rows.end && i < c.size(); ++i) {
+    const double v = absolute ? std::abs(c[i]) : c[i];
+    m = lowest ? std::min(m, v) : std::max(m, v);
   }
-  if (!pin.x.empty()) kinds.push_back(std::move(pin));
-  JointKind each{"main_bearing", {}, {}, {}};  // each bearing when crankshaft.bearing_positions places them
-  for (int k = 1; r.has("bearing_x_" + std::to_string(k)); ++k) {
-    each.x.push_back(r.column("bearing_x_" + std::to_string(k)));
-    each.y.push_back(r.column("bearing_y_" + std::to_string(k)));
-    each.names.push_back("bearing_x_" + std::to_string(k) + "|bearing_y_" + std::to_string(k));
-  }
-  if (!each.x.empty())
-    kinds.push_back(std::move(each));
-  else if (r.has("bearing_x") && r.has("bearing_y"))
-    kinds.push_back({"main_bearing", {r.column("bearing_x")}, {r.column("bearing_y")}, {"bearing_x|bearing_y"}});
-  return kinds;
-}
-
-double magnitude(const JointKind& k, std::size_t cart, std::size_t i) {
-  const double x = k.x[cart][i];
-  return k.y.empty() ? std::abs(x) : std::hypot(x, k.y[cart][i]);
+  return std::isfinite(m) ? m : kNaN;
 }
 
 // Kloss's torque at standstill against the catalogue's, for the notes.
@@ -269,6 +239,224 @@ void addChangeoverNotReached(const Scene& sc, double rotor_top, StartUp& r) {
       r.keys_not_reached.push_back(std::string(key) + " has no effect on this run: " + why);
 }
 
+// The motor's torques at the crank at switch-on, at the rated supply and under the supply the
+// starting method holds at standstill, the load's torques, and whether they allow a start.
+void addTorquesAtStandstill(const Scene& sc, const MotorLaw& law, const Supply& supply, const StartLoad* load,
+                            StartUp& r) {
+  const double u = sc.reducer.ratio, eta = sc.reducer.efficiency;
+  r.starting_torque_crank = law.steadyTorque(supply.atSwitchOn(), 0.0) * u * eta;
+  r.starting_torque_rated_crank = law.steadyTorque(SupplyState{}, 0.0) * u * eta;
+  const bool kloss_curve = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
+  r.largest_torque_crank = motorBreakdownTorque(sc, &law) * u * eta;
+  const SupplyState held = heldAtStandstill(supply);
+  r.held_supply = supplyWords(held);
+  r.held_supply_is_rated = isRatedSupply(held);
+  r.starting_torque_held_crank = law.steadyTorque(held, 0.0) * u * eta;
+  r.largest_torque_held_crank =
+      (kloss_curve ? sc.motor.breakdown_torque * held.voltage * held.voltage / (held.frequency * held.frequency)
+                   : largestSteadyTorque(law, held)) * u * eta;
+  r.load_torque_start = load ? load->at_start_angle : kNaN;
+  r.load_torque_mean = load ? load->revolution_mean : kNaN;
+  judgeStartFromTorques(sc, r);
+}
+
+// The steady window of the running part of the run, against which the start is measured.
+struct SteadyWindow {
+  SteadyState state;         // the steady state on the rows before the switch-off
+  RowSpan rows;              // its rows; without a steady state, the last whole revolution's
+  double duration = 0;       // [s]; 0 for fewer than two rows
+  double lowest_speed = 0;   // the crank's lowest speed in it [rad/s]
+  std::size_t n_running = 0; // rows before the switch-off
+};
+
+// The steady window: on the rows before the switch-off. Sets r.t_off, the window's times and the
+// steady mean crank speed.
+SteadyWindow findSteadyWindow(const Scene& sc, const RunResult& run, const std::vector<double>& t,
+                              const std::vector<double>& w, StartUp& r) {
+  SteadyWindow window;
+  // A switch-off at or after the last row is none in this run (no stop to answer).
+  r.t_off = std::isfinite(sc.motor_stop.t_off) && sc.motor_stop.t_off < t.back() ? sc.motor_stop.t_off : kNaN;
+  window.n_running = t.size();
+  if (std::isfinite(r.t_off)) window.n_running = std::min(window.n_running, firstRowAtOrAfter(t, r.t_off));
+  const SteadyState& ss = window.state = detectRunningSteadyState(run, sc.simulation.steady_window_revolutions, r.t_off);
+  r.steady_reached = ss.reached;
+  r.steady_begin = ss.t_begin;
+  r.steady_end = ss.t_end;
+  std::size_t w0 = ss.row_begin, w1 = std::min(ss.row_end, t.size());
+  if (!ss.reached && !ss.revolutions.empty()) {
+    // No steady state within the run: its last whole revolution stands in for it (said in the notes).
+    r.steady_begin = ss.revolutions.back().t_begin;
+    r.steady_end = ss.revolutions.back().t_end;
+    w0 = firstRowAtOrAfter(t, r.steady_begin);
+    w1 = std::min(t.size(), firstRowAtOrAfter(t, r.steady_end) + 1);
+    r.notes.push_back("The run reaches no steady state (the last revolutions' mean crank speeds differ by more "
+                      "than 1e-3): its last whole revolution, t = " + fmt("%.4g", r.steady_begin) + " ... " +
+                      fmt("%.4g", r.steady_end) + " s, stands in for the steady window.");
+  }
+  window.rows = {w0, w1};
+  window.duration = w1 > w0 + 1 ? t[w1 - 1] - t[w0] : 0.0;
+  r.steady_mean_speed =
+      window.duration > 0 ? integrate(t, w0, w1, [&](std::size_t i) { return w[i]; }) / window.duration : kNaN;
+  window.lowest_speed = std::numeric_limits<double>::infinity();
+  for (std::size_t i = w0; i < w1; ++i) window.lowest_speed = std::min(window.lowest_speed, w[i]);
+  return window;
+}
+
+// Whether the crank turns in the steady window, and the run-up: the first crossing of 95 % of the
+// steady mean after the switch-on. Sets r.run_up_time, r.still_starting and r.starts.
+bool judgeRunUp(const Scene& sc, const std::string& motion, const std::vector<double>& t, const std::vector<double>& w,
+                const SteadyWindow& window, StartUp& r) {
+  const std::size_t i_on = firstRowAtOrAfter(t, r.t_on);
+  r.run_up_time = kNaN;
+  // Turning: the crank turns one way in the window, faster than the stall rule's creep limit
+  // (StallDetector.h: 1 % of the synchronous crank speed ω0/u).
+  const double creep = StallDetector::kSpeedFraction * sc.motor.omega_sync / sc.reducer.ratio;
+  bool turning = std::isfinite(r.steady_mean_speed) && r.steady_mean_speed > creep && window.lowest_speed > 0;
+  // The run's motion, where known, decides (RunMotion.h): a turning crank may dip backwards at a
+  // dead centre; a stalled, rocking or still starting one does not turn.
+  if (motion == "turning") turning = std::isfinite(r.steady_mean_speed) && r.steady_mean_speed > creep;
+  else if (!motion.empty() && motion != "unknown") turning = false;
+  r.still_starting = motion == "starting";
+  if (turning) {
+    const double target = kRunUpFraction * r.steady_mean_speed;
+    for (std::size_t i = std::max<std::size_t>(i_on, 1); i < window.n_running; ++i)
+      if (w[i] >= target) {
+        const double a = w[i] > w[i - 1] && i > i_on ? (target - w[i - 1]) / (w[i] - w[i - 1]) : 1.0;
+        r.run_up_time = t[i - 1] + std::clamp(a, 0.0, 1.0) * (t[i] - t[i - 1]) - r.t_on;
+        break;
+      }
+  }
+  r.starts = turning && std::isfinite(r.run_up_time);
+  return turning;
+}
+
+// The start interval [t_on, start_end) (sets r.start_end) and its rows. A drive that runs up: until
+// its crank speed settles (SteadyState::t_settled, the first revolution from which every later
+// one's mean speed is within tolerance of the final one), so the start is the same however long
+// the run continues after it (the steady window is the run's last revolutions and moves with
+// simulation.t_end). A drive that does not start: the whole running part of the run, since no part
+// of it is steady.
+RowSpan findStartRows(const std::vector<double>& t, const SteadyWindow& window, StartUp& r) {
+  const SteadyState& ss = window.state;
+  const double run_last = window.n_running == 0 ? t.back() : t[window.n_running - 1];
+  if (r.starts && ss.reached && std::isfinite(ss.t_settled) && ss.t_settled > r.t_on && ss.t_settled <= r.steady_begin)
+    r.start_end = std::max(ss.t_settled, r.t_on + r.run_up_time);
+  else if (!r.starts && !r.still_starting)
+    r.start_end = run_last;
+  else
+    r.start_end = r.steady_begin > r.t_on ? r.steady_begin : run_last;
+  const std::size_t s0 = firstRowAtOrAfter(t, r.t_on), s1 = std::max(s0 + 1, firstRowAtOrAfter(t, r.start_end) + 1);
+  return {s0, std::min(s1, t.size())};
+}
+
+// The motor's and the coupling's torque peaks over the start and over the steady window.
+void addTorquePeaks(const Table& ts, RowSpan start, RowSpan steady, StartUp& r) {
+  const std::vector<double> M = columnOr(ts, "motor_torque"), C = columnOr(ts, "coupling_torque");
+  r.motor_torque_peak = extremeOf(M, start, Extreme::Largest);
+  r.motor_torque_min = extremeOf(M, start, Extreme::Smallest);
+  r.motor_torque_steady_peak = extremeOf(M, steady, Extreme::LargestMagnitude);
+  r.coupling_torque_peak = extremeOf(C, start, Extreme::LargestMagnitude);
+  r.coupling_torque_steady_peak = extremeOf(C, steady, Extreme::LargestMagnitude);
+}
+
+// The stator current over the start: its peak, I²t and RMS, and its RMS over the steady window.
+void addStatorCurrent(const Table& ts, const std::vector<double>& t, RowSpan start, const SteadyWindow& window,
+                      StartUp& r) {
+  const std::vector<double> I = columnOr(ts, "stator_current");
+  r.current_peak = r.current_rms = r.current_i2t = r.current_steady_rms = kNaN;
+  if (I.empty()) return;
+  const std::size_t s0 = start.begin, s1c = start.end;
+  r.current_peak = extremeOf(I, start, Extreme::LargestMagnitude);
+  r.current_i2t = integrate(t, s0, s1c, [&](std::size_t i) { return I[i] * I[i]; });
+  const double T = t[s1c - 1] - t[s0];
+  r.current_rms = T > 0 ? std::sqrt(r.current_i2t / T) : kNaN;
+  if (window.duration > 0)
+    r.current_steady_rms = std::sqrt(
+        integrate(t, window.rows.begin, window.rows.end, [&](std::size_t i) { return I[i] * I[i]; }) / window.duration);
+}
+
+// The rotor's energy loss over the start: slip power M·(ω0·f/f_n - ω_r) while connected.
+void addRotorLoss(const Scene& sc, const Table& ts, const std::vector<double>& t, RowSpan start, StartUp& r) {
+  const std::vector<double> M = columnOr(ts, "motor_torque"), wm = columnOr(ts, "omega_motor"),
+                            F = columnOr(ts, "supply_frequency_ratio"), U = columnOr(ts, "supply_voltage_ratio");
+  r.rotor_energy_loss = kNaN;
+  if (M.empty() || wm.empty()) return;
+  const double u = sc.reducer.ratio, eta = sc.reducer.efficiency, w0_sync = sc.motor.omega_sync;
+  r.rotor_energy_loss = integrate(t, start.begin, start.end, [&](std::size_t i) {
+    const bool connected = U.empty() ? true : U[i] > 0;
+    if (!connected) return 0.0;
+    const double f = F.empty() ? 1.0 : F[i];
+    return M[i] / (u * eta) * (w0_sync * f - wm[i] * u);
+  });
+}
+
+// Whether a star-delta changeover by speed was never reached: the rotor never came up to it (no
+// motor speed column: not known, taken as not reached, as the verdict has always done). Adds the
+// changeover keys' note where the rotor's top speed is known.
+bool changeoverMissed(const Scene& sc, const Table& ts, StartUp& r) {
+  const bool changeover_by_speed =
+      sc.motor_start.method == StartMethod::StarDelta && std::isfinite(sc.motor_start.changeover_speed);
+  const std::vector<double> wm = columnOr(ts, "omega_motor");
+  const double rotor_top = wm.empty() ? kNaN : extremeOf(wm, {0, wm.size()}, Extreme::Largest) * sc.reducer.ratio;
+  const bool missed = changeover_by_speed && (wm.empty() || rotor_top < sc.motor_start.changeover_speed);
+  if (missed && !wm.empty()) addChangeoverNotReached(sc, rotor_top, r);
+  return missed;
+}
+
+// The verdict of a drive that does not run up: the cause is the one
+// sentence judgeStartFromTorques wrote (or the missed changeover's), so the run status and the
+// sizing say the same.
+std::string notRunningUpVerdict(const Scene& sc, const RunResult& run, bool changeover_missed, StartUp& r) {
+  if (r.can_start_from_rest == 1 && changeover_missed) {
+    r.stall_cause = "the changeover speed " + fmt("%.4g", sc.motor_start.changeover_speed) +
+                    " rad/s was never reached in star (the star torque is a third of the delta torque): the load and "
+                    "the inertia hold the motor below it";
+    return "the drive does not run up: " + r.stall_cause;
+  }
+  if (r.stall_cause.empty())
+    return "the drive does not reach a steady turning motion within the run (the load torques were not evaluated)";
+  std::string verdict = (r.can_start_from_rest == 0 ? "the drive does not start: "
+                                                    : "the drive does not reach a steady turning motion within the run: ") +
+                        r.stall_cause;
+  const std::string travel = stalledCrankTravel(sc, run);
+  if (!travel.empty()) verdict += "; " + travel;
+  return verdict;
+}
+
+// The start's verdict (r.verdict).
+void judgeStart(const Scene& sc, const RunResult& run, bool turning, bool changeover_missed, StartUp& r) {
+  if (r.starts)
+    r.verdict = "the drive starts: the crank reaches 95 % of its steady mean speed " + fmt("%.4g", r.steady_mean_speed) +
+                " rad/s " + fmt("%.3g", r.run_up_time) + " s after switch-on";
+  else if (r.still_starting)
+    r.verdict = kStillStartingWords;
+  else if (!turning || (r.can_start_from_rest == 1 && changeover_missed))
+    r.verdict = notRunningUpVerdict(sc, run, changeover_missed, r);
+  else
+    r.verdict = "the crank does not reach 95 % of its steady mean speed after switch-on within the run";
+}
+
+// A run that begins with the machine already turning has no start: a run-up "0.005 s after
+// switch-on", start peaks and a start's rotor loss of a machine that began at speed read as answers
+// about a start (the second trial). What can be answered stays: the motor's torques against the
+// loads, and the stop.
+void withdrawStartAnswers(const Scene& sc, StartUp& r) {
+  r.verdict = "no start from rest in this run: it begins with the machine already turning (initial.crank_speed = " +
+              fmt("%.4g", sc.initial.crank_speed) + " rad/s) and the motor running; set initial.crank_speed: 0 for "
+              "the start-up answers";
+  // Whether it could start from rest is still known from the torques: say it where the start is asked.
+  if (r.can_start_from_rest == 0)
+    r.verdict += ". From rest it would not start: " + r.stall_cause;
+  else if (r.can_start_from_rest == 1)
+    r.verdict += ". From rest the torques at standstill allow a start (the start itself is not simulated)";
+  r.starts = false;
+  r.run_up_time = kNaN;
+  r.start_end = r.t_on;
+  r.motor_torque_peak = r.motor_torque_min = r.coupling_torque_peak = kNaN;
+  for (StartJointPeak& p : r.joints) p.start_peak = p.ratio = kNaN;
+  r.current_peak = r.current_rms = r.current_i2t = r.rotor_energy_loss = kNaN;
+}
+
 }  // namespace
 
 StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* law, const StartLoad* load,
@@ -285,195 +473,19 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   r.method = methodWords(sc.motor_start.method);
   r.motor_law = law->description();
   r.model_word = toString(sc.induction.model);
-  const double u = sc.reducer.ratio, eta = sc.reducer.efficiency;
-
-  r.starting_torque_crank = law->steadyTorque(supply.atSwitchOn(), 0.0) * u * eta;
-  r.starting_torque_rated_crank = law->steadyTorque(SupplyState{}, 0.0) * u * eta;
-  const bool kloss_curve = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
-  r.largest_torque_crank = motorBreakdownTorque(sc, law) * u * eta;
-  const SupplyState held = heldAtStandstill(supply);
-  r.held_supply = supplyWords(held);
-  r.held_supply_is_rated = isRatedSupply(held);
-  r.starting_torque_held_crank = law->steadyTorque(held, 0.0) * u * eta;
-  r.largest_torque_held_crank =
-      (kloss_curve ? sc.motor.breakdown_torque * held.voltage * held.voltage / (held.frequency * held.frequency)
-                   : largestSteadyTorque(*law, held)) * u * eta;
-  r.load_torque_start = load ? load->at_start_angle : kNaN;
-  r.load_torque_mean = load ? load->revolution_mean : kNaN;
-  judgeStartFromTorques(sc, r);
-
-  // The steady window: on the rows before the switch-off.
-  // A switch-off at or after the last row is none in this run (no stop to answer).
-  r.t_off = std::isfinite(sc.motor_stop.t_off) && sc.motor_stop.t_off < t.back() ? sc.motor_stop.t_off : kNaN;
-  std::size_t n_running = t.size();  // rows before the switch-off
-  if (std::isfinite(r.t_off)) n_running = std::min(n_running, firstRowAtOrAfter(t, r.t_off));
-  const SteadyState ss = detectRunningSteadyState(run, sc.simulation.steady_window_revolutions, r.t_off);
-  r.steady_reached = ss.reached;
-  r.steady_begin = ss.t_begin;
-  r.steady_end = ss.t_end;
-  std::size_t w0 = ss.row_begin, w1 = std::min(ss.row_end, t.size());
-  if (!ss.reached && !ss.revolutions.empty()) {
-    // No steady state within the run: its last whole revolution stands in for it (said in the notes).
-    r.steady_begin = ss.revolutions.back().t_begin;
-    r.steady_end = ss.revolutions.back().t_end;
-    w0 = firstRowAtOrAfter(t, r.steady_begin);
-    w1 = std::min(t.size(), firstRowAtOrAfter(t, r.steady_end) + 1);
-    r.notes.push_back("The run reaches no steady state (the last revolutions' mean crank speeds differ by more "
-                      "than 1e-3): its last whole revolution, t = " + fmt("%.4g", r.steady_begin) + " ... " +
-                      fmt("%.4g", r.steady_end) + " s, stands in for the steady window.");
-  }
-  const double window_time = w1 > w0 + 1 ? t[w1 - 1] - t[w0] : 0.0;
-  r.steady_mean_speed = window_time > 0 ? integrate(t, w0, w1, [&](std::size_t i) { return w[i]; }) / window_time : kNaN;
-  double window_min = std::numeric_limits<double>::infinity();
-  for (std::size_t i = w0; i < w1; ++i) window_min = std::min(window_min, w[i]);
-
-  // Run-up: first crossing of 95 % of the steady mean after the switch-on.
-  const std::size_t i_on = firstRowAtOrAfter(t, r.t_on);
-  r.run_up_time = kNaN;
-  // Turning: the crank turns one way in the window, faster than the stall rule's creep limit
-  // (StallDetector.h: 1 % of the synchronous crank speed ω0/u).
-  const double creep = StallDetector::kSpeedFraction * sc.motor.omega_sync / u;
-  bool turning = std::isfinite(r.steady_mean_speed) && r.steady_mean_speed > creep && window_min > 0;
-  // The run's motion, where known, decides (RunMotion.h): a turning crank may dip backwards at a
-  // dead centre; a stalled, rocking or still starting one does not turn.
-  if (motion == "turning") turning = std::isfinite(r.steady_mean_speed) && r.steady_mean_speed > creep;
-  else if (!motion.empty() && motion != "unknown") turning = false;
-  r.still_starting = motion == "starting";
-  if (turning) {
-    const double target = kRunUpFraction * r.steady_mean_speed;
-    for (std::size_t i = std::max<std::size_t>(i_on, 1); i < n_running; ++i)
-      if (w[i] >= target) {
-        const double a = w[i] > w[i - 1] && i > i_on ? (target - w[i - 1]) / (w[i] - w[i - 1]) : 1.0;
-        r.run_up_time = t[i - 1] + std::clamp(a, 0.0, 1.0) * (t[i] - t[i - 1]) - r.t_on;
-        break;
-      }
-  }
-  r.starts = turning && std::isfinite(r.run_up_time);
-
-  // The start interval [t_on, start_end). A drive that runs up: until its crank speed settles
-  // (SteadyState::t_settled, the first revolution from which every later one's mean speed is
-  // within tolerance of the final one), so the start is the same however long the run continues
-  // after it (the steady window is the run's last revolutions and moves with simulation.t_end).
-  // A drive that does not start: the whole running part of the run, since no part of it is steady.
-  const double run_last = n_running == 0 ? t.back() : t[n_running - 1];
-  if (r.starts && ss.reached && std::isfinite(ss.t_settled) && ss.t_settled > r.t_on && ss.t_settled <= r.steady_begin)
-    r.start_end = std::max(ss.t_settled, r.t_on + r.run_up_time);
-  else if (!r.starts && !r.still_starting)
-    r.start_end = run_last;
-  else
-    r.start_end = r.steady_begin > r.t_on ? r.steady_begin : run_last;
-  const std::size_t s0 = i_on, s1 = std::max(s0 + 1, firstRowAtOrAfter(t, r.start_end) + 1);
-  const std::size_t s1c = std::min(s1, t.size());
-  auto peakOf = [&](const std::vector<double>& c, std::size_t a, std::size_t b, bool absolute, bool lowest = false) {
-    double m = lowest ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
-    for (std::size_t i = a; i < b && i < c.size(); ++i) {
-      const double v = absolute ? std::abs(c[i]) : c[i];
-      m = lowest ? std::min(m, v) : std::max(m, v);
-    }
-    return std::isfinite(m) ? m : kNaN;
-  };
-  const std::vector<double> M = columnOr(ts, "motor_torque"), C = columnOr(ts, "coupling_torque");
-  r.motor_torque_peak = peakOf(M, s0, s1c, false);
-  r.motor_torque_min = peakOf(M, s0, s1c, false, true);
-  r.motor_torque_steady_peak = peakOf(M, w0, w1, true);
-  r.coupling_torque_peak = peakOf(C, s0, s1c, true);
-  r.coupling_torque_steady_peak = peakOf(C, w0, w1, true);
-
-  // Joints (the reactions table shares the timeseries' output grid).
-  const Table& rx = run.reactions;
-  if (rx.rows.size() == ts.rows.size())
-    for (const JointKind& k : jointKinds(rx)) {
-      StartJointPeak p;
-      p.joint = k.joint;
-      double best = -1, steady = 0;
-      for (std::size_t j = 0; j < k.x.size(); ++j) {
-        for (std::size_t i = s0; i < s1c; ++i)
-          if (magnitude(k, j, i) > best) best = magnitude(k, j, i), p.column = k.names[j];
-        for (std::size_t i = w0; i < w1; ++i) steady = std::max(steady, magnitude(k, j, i));
-      }
-      p.start_peak = best;
-      p.steady_peak = steady;
-      p.ratio = steady > 0 ? best / steady : kNaN;
-      r.joints.push_back(p);
-    }
-
-  // Stator current over the start.
-  const std::vector<double> I = columnOr(ts, "stator_current");
-  r.current_peak = r.current_rms = r.current_i2t = r.current_steady_rms = kNaN;
-  if (!I.empty()) {
-    r.current_peak = peakOf(I, s0, s1c, true);
-    r.current_i2t = integrate(t, s0, s1c, [&](std::size_t i) { return I[i] * I[i]; });
-    const double T = t[s1c - 1] - t[s0];
-    r.current_rms = T > 0 ? std::sqrt(r.current_i2t / T) : kNaN;
-    if (window_time > 0)
-      r.current_steady_rms = std::sqrt(integrate(t, w0, w1, [&](std::size_t i) { return I[i] * I[i]; }) / window_time);
-  }
-  // Rotor loss: slip power M·(ω0·f/f_n - ω_r) while connected.
-  const std::vector<double> wm = columnOr(ts, "omega_motor"), F = columnOr(ts, "supply_frequency_ratio"),
-                            U = columnOr(ts, "supply_voltage_ratio");
-  r.rotor_energy_loss = kNaN;
-  if (!M.empty() && !wm.empty()) {
-    const double w0_sync = sc.motor.omega_sync;
-    r.rotor_energy_loss = integrate(t, s0, s1c, [&](std::size_t i) {
-      const bool connected = U.empty() ? true : U[i] > 0;
-      if (!connected) return 0.0;
-      const double f = F.empty() ? 1.0 : F[i];
-      return M[i] / (u * eta) * (w0_sync * f - wm[i] * u);
-    });
-  }
-
+  addTorquesAtStandstill(sc, *law, supply, load, r);
+  const SteadyWindow window = findSteadyWindow(sc, run, t, w, r);
+  const bool turning = judgeRunUp(sc, motion, t, w, window, r);
+  const RowSpan start = findStartRows(t, window, r);
+  addTorquePeaks(ts, start, window.rows, r);
+  // The joints (the reactions table shares the timeseries' output grid).
+  if (run.reactions.rows.size() == ts.rows.size()) addStartJointPeaks(run.reactions, start, window.rows, r);
+  addStatorCurrent(ts, t, start, window, r);
+  addRotorLoss(sc, ts, t, start, r);
   addStopping(sc, ts, r);
-  // A star-delta changeover by speed, and whether the rotor ever reached it (no motor speed
-  // column: not known, taken as not reached, as the verdict below has always done).
-  const bool changeover_by_speed =
-      sc.motor_start.method == StartMethod::StarDelta && std::isfinite(sc.motor_start.changeover_speed);
-  const double rotor_top = wm.empty() ? kNaN : peakOf(wm, 0, wm.size(), false) * u;
-  const bool changeover_missed = changeover_by_speed && (wm.empty() || rotor_top < sc.motor_start.changeover_speed);
-  if (changeover_missed && !wm.empty()) addChangeoverNotReached(sc, rotor_top, r);
-
-  // Verdict: the cause of a drive that does not start is the one sentence judgeStartFromTorques
-  // wrote, so the run status and the sizing say the same.
-  if (r.starts) {
-    r.verdict = "the drive starts: the crank reaches 95 % of its steady mean speed " + fmt("%.4g", r.steady_mean_speed) +
-                " rad/s " + fmt("%.3g", r.run_up_time) + " s after switch-on";
-  } else if (r.still_starting) {
-    r.verdict = kStillStartingWords;
-  } else if (r.can_start_from_rest == 1 && changeover_missed) {
-    r.stall_cause = "the changeover speed " + fmt("%.4g", sc.motor_start.changeover_speed) +
-                    " rad/s was never reached in star (the star torque is a third of the delta torque): the load and "
-                    "the inertia hold the motor below it";
-    r.verdict = "the drive does not run up: " + r.stall_cause;
-  } else if (!turning && !r.stall_cause.empty()) {
-    r.verdict = (r.can_start_from_rest == 0 ? "the drive does not start: " : "the drive does not reach a steady turning "
-                                                                             "motion within the run: ") +
-                r.stall_cause;
-    const std::string travel = stalledCrankTravel(sc, run);
-    if (!travel.empty()) r.verdict += "; " + travel;
-  } else if (!turning) {
-    r.verdict = "the drive does not reach a steady turning motion within the run (the load torques were not evaluated)";
-  } else {
-    r.verdict = "the crank does not reach 95 % of its steady mean speed after switch-on within the run";
-  }
+  judgeStart(sc, run, turning, changeoverMissed(sc, ts, r), r);
   r.from_rest = !(r.t_on <= 0 && sc.initial.crank_speed != 0);
-  if (!r.from_rest) {
-    // No start in this run: a run-up "0.005 s after switch-on", start peaks and a start's rotor
-    // loss of a machine that began at speed read as answers about a start (the second trial).
-    // What can be answered stays: the motor's torques against the loads, and the stop.
-    r.verdict = "no start from rest in this run: it begins with the machine already turning (initial.crank_speed = " +
-                fmt("%.4g", sc.initial.crank_speed) + " rad/s) and the motor running; set initial.crank_speed: 0 for "
-                "the start-up answers";
-    // Whether it could start from rest is still known from the torques: say it where the start is asked.
-    if (r.can_start_from_rest == 0)
-      r.verdict += ". From rest it would not start: " + r.stall_cause;
-    else if (r.can_start_from_rest == 1)
-      r.verdict += ". From rest the torques at standstill allow a start (the start itself is not simulated)";
-    r.starts = false;
-    r.run_up_time = kNaN;
-    r.start_end = r.t_on;
-    r.motor_torque_peak = r.motor_torque_min = r.coupling_torque_peak = kNaN;
-    for (StartJointPeak& p : r.joints) p.start_peak = p.ratio = kNaN;
-    r.current_peak = r.current_rms = r.current_i2t = r.rotor_energy_loss = kNaN;
-  }
+  if (!r.from_rest) withdrawStartAnswers(sc, r);
   addCurrentLimit(sc, run, *law, supply, r);
   addLawNotes(sc, *law, r);
   return r;

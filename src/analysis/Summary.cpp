@@ -44,55 +44,49 @@ std::string joined(const std::vector<std::string>& items) {
   return s;
 }
 
-}  // namespace
-
-json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* start_load) {
-  // The machine's running: the coast-down after a switch-off is no steady state (SteadyState.h).
-  const SteadyState ss = detectRunningSteadyState(run, scene.simulation.steady_window_revolutions,
-                                                  scene.motor.enabled ? scene.motor_stop.t_off : NAN);
-  const WindowMetrics m = computeMetrics(run, ss);
-  FiniteWriter num;
+// What ran: the scene, the model and its integrator, the effects asked for and built.
+json runIdentity(const Scene& scene, const RunResult& run) {
   json j;
-
   j["scene"] = scene.name;
   j["scene_path"] = scene.source_path;  // file as given, for `rollerdyn plot` (Kloss curve)
   j["model"] = run.model;
   j["integrator"] = run.integrator;
   j["effects"] = scene.effects();
   j["effects_built"] = run.effects;
-  j["status"] = run.stats.status;  // amended below if anything was non-finite
+  j["status"] = run.stats.status;  // amended by the summary if anything was non-finite
   j["complete"] = run.stats.complete;
+  return j;
+}
 
-  double simulated_time = 0;
-  if (run.timeseries.has("t") && !run.timeseries.rows.empty()) {
-    const int k = run.timeseries.index("t");
-    simulated_time = run.timeseries.rows.back()[k] - run.timeseries.rows.front()[k];
-  }
-  j["simulated_time"] = num("simulated_time", simulated_time);
+// The time the run's rows span [s] (0 without rows).
+double simulatedTime(const Table& ts) {
+  if (!ts.has("t") || ts.rows.empty()) return 0;
+  const int k = ts.index("t");
+  return ts.rows.back()[k] - ts.rows.front()[k];
+}
 
+// How far the crank turned over the metrics window [rad]; NaN where not known.
+double crankAdvance(const Table& ts, const SteadyState& ss) {
+  if (!ts.has("phi_crank") || ss.row_end < ss.row_begin + 2 || ss.row_end > ts.rows.size()) return NAN;
+  const int k = ts.index("phi_crank");
+  return ts.rows[ss.row_end - 1][k] - ts.rows[ss.row_begin][k];
+}
+
+// The crank's speed over the metrics window, its motion, and the coefficients of its unevenness.
+void addCrankSpeed(json& j, const WindowMetrics& m, const std::string& crank_motion, bool steady_turning,
+                   FiniteWriter& num, std::vector<std::string>& not_meaningful) {
   j["omega_crank"] = {{"min", num("omega_crank.min", m.omega_min)},
                       {"max", num("omega_crank.max", m.omega_max)},
                       {"mean", num("omega_crank.mean", m.omega_mean)},
                       {"midrange", num("omega_crank.midrange", m.omega_midrange)}};
-  // "stalled", "rocking" (crank speed changes sign in the metrics window), "turning",
-  // "at_rest", "unknown" (RunMotion.h); per-revolution metrics are null unless turning.
-  double advance = NAN;  // how far the crank turned over the metrics window [rad]
-  if (run.timeseries.has("phi_crank") && ss.row_end >= ss.row_begin + 2 && ss.row_end <= run.timeseries.rows.size()) {
-    const int k = run.timeseries.index("phi_crank");
-    advance = run.timeseries.rows[ss.row_end - 1][k] - run.timeseries.rows[ss.row_begin][k];
-  }
-  const std::string crank_motion = classifyMotion(scene, run, m, advance, ss.reached);
-  const bool turning = motionIsTurning(crank_motion);
   j["motion"] = crank_motion;
   j["crank_motion"] = crank_motion;
   j["eps_crank_abs_max"] = num("eps_crank_abs_max", m.eps_abs_max);
   j["eps_from_difference"] = m.eps_from_difference;
   // Loveikin and Pochka (2007), eq. (12)-(14): ratios to the mean speed of a turning crank; a
   // stalled or rocking crank has no such mean, so they are null there, not a huge number.
-  std::vector<std::string> not_meaningful;
   // They are also null where no steady state was reached: a window that holds the start or a
   // drift is no revolution of the machine's running (a 4 s run of six carts read δ = 1.265).
-  const bool steady_turning = turning && ss.reached;
   auto perRevolution = [&](const char* key, double v) -> json {
     if (steady_turning) return num(key, v);
     not_meaningful.push_back(key);
@@ -107,8 +101,10 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["twist_rate_swing"] = num("twist_rate_swing", m.twist_rate_swing);
   j["twist_accel_swing"] = num("twist_accel_swing", m.twist_accel_swing);
   j["missing_columns"] = m.missing_columns;
+}
 
-  j["steady_state"] = {
+json steadyStateJson(const SteadyState& ss, const WindowMetrics& m, const std::string& crank_motion, FiniteWriter& num) {
+  return {
       {"reached", ss.reached},
       {"after_revolutions", ss.after_revolutions},
       {"window_revolutions", ss.window_revolutions},
@@ -125,9 +121,10 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
       // help a stalled drive, whose status says why).
       {"not_reached", ss.not_reached.empty() || (crank_motion != "turning" && crank_motion != "starting")
                           ? json(nullptr) : json(ss.not_reached)}};
+}
 
-  const EnergyAudit& en = run.energy;
-  j["energy"] = {
+json energyJson(const Scene& scene, const EnergyAudit& en, FiniteWriter& num) {
+  return {
       {"motor_work", num("energy.motor_work", en.motor_work)},
       {"damping_dissipation", num("energy.damping_dissipation", en.damping_dissipation)},
       {"friction_dissipation", num("energy.friction_dissipation", en.friction_dissipation)},
@@ -139,45 +136,55 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
       {"motor_shaft_work", num("energy.motor_shaft_work", en.motorShaftWork())},
       {"reducer_loss_model", scene.motor.enabled ? json(reducerLossWords(reducerLaw(scene, motorBreakdownTorque(scene)))) : json(nullptr)},
       {"residual", num("energy.residual", en.residual())}};
-  j["energy_residual_rel"] = num("energy_residual_rel", en.residualRelative());
+}
+
+// The O(n) reaction columns against Simbody's constrained solve, per column kind (the largest
+// over the carts): absolute [N, N·m] and relative to the column's largest value.
+json reactionSelfCheckJson(const Scene& scene, const RunStats& stats) {
+  if (stats.reaction_self_check.empty()) return nullptr;
+  json kinds = json::object();
+  for (const ReactionCheck& c : stats.reaction_self_check) {
+    std::string kind = c.column;
+    const std::size_t us = kind.find_last_of('_');
+    if (us != std::string::npos && us + 1 < kind.size() &&
+        kind.find_first_not_of("0123456789", us + 1) == std::string::npos)
+      kind = kind.substr(0, us);
+    const double rel = c.max_value > 0 ? c.max_difference / c.max_value : c.max_difference;
+    json& k = kinds[kind];
+    if (k.is_null()) k = {{"max_difference", 0.0}, {"relative", 0.0}};
+    k["max_difference"] = std::max(k["max_difference"].get<double>(), c.max_difference);
+    k["relative"] = std::max(k["relative"].get<double>(), rel);
+  }
+  return {{"rows_checked", stats.self_check_rows}, {"interval_rows", scene.selfCheckInterval()}, {"columns", kinds}};
+}
+
+// How well the run kept its own books: the energy audit, the constraints, the formulations' self-checks.
+void addSelfChecks(json& j, const Scene& scene, const RunResult& run, FiniteWriter& num) {
+  j["energy"] = energyJson(scene, run.energy, num);
+  j["energy_residual_rel"] = num("energy_residual_rel", run.energy.residualRelative());
   j["constraint_error_max"] = num("constraint_error_max", run.stats.constraint_error_max);
   j["formulation_self_check"] = run.stats.formulation_self_check >= 0  // README, "Multibody formulations"
                                     ? num("formulation_self_check", run.stats.formulation_self_check)
                                     : json(nullptr);
-  // The O(n) reaction columns against Simbody's constrained solve, per column kind (the largest
-  // over the carts): absolute [N, N·m] and relative to the column's largest value.
-  if (run.stats.reaction_self_check.empty()) {
-    j["reaction_self_check"] = nullptr;
-  } else {
-    json kinds = json::object();
-    for (const ReactionCheck& c : run.stats.reaction_self_check) {
-      std::string kind = c.column;
-      const std::size_t us = kind.find_last_of('_');
-      if (us != std::string::npos && us + 1 < kind.size() &&
-          kind.find_first_not_of("0123456789", us + 1) == std::string::npos)
-        kind = kind.substr(0, us);
-      const double rel = c.max_value > 0 ? c.max_difference / c.max_value : c.max_difference;
-      json& k = kinds[kind];
-      if (k.is_null()) k = {{"max_difference", 0.0}, {"relative", 0.0}};
-      k["max_difference"] = std::max(k["max_difference"].get<double>(), c.max_difference);
-      k["relative"] = std::max(k["relative"].get<double>(), rel);
-    }
-    j["reaction_self_check"] = {{"rows_checked", run.stats.self_check_rows},
-                                {"interval_rows", scene.selfCheckInterval()},
-                                {"columns", kinds}};
-  }
+  j["reaction_self_check"] = reactionSelfCheckJson(scene, run.stats);
   j["guide_normal_forces"] = run.guide_normals.empty() ? json(nullptr) : json(run.guide_normals);
-  j["steps"] = run.stats.steps;
-  j["realizations"] = run.stats.realizations;
-  j["rejected_steps"] = run.stats.error_test_failures >= 0 ? json(run.stats.error_test_failures) : json(nullptr);
-  j["jacobian_evaluations"] = run.stats.jacobian_evaluations >= 0 ? json(run.stats.jacobian_evaluations) : json(nullptr);
-  j["newton_convergence_failures"] =
-      run.stats.newton_convergence_failures >= 0 ? json(run.stats.newton_convergence_failures) : json(nullptr);
-  j["cpu_seconds"] = num("cpu_seconds", run.stats.cpu_seconds);
-  j["real_time_factor"] = run.stats.cpu_seconds > 0
-                              ? num("real_time_factor", simulated_time / run.stats.cpu_seconds)
-                              : json(nullptr);  // not measured
+}
 
+// The integrator's work and what it cost.
+void addIntegratorStatistics(json& j, const RunStats& stats, double simulated_time, FiniteWriter& num) {
+  j["steps"] = stats.steps;
+  j["realizations"] = stats.realizations;
+  j["rejected_steps"] = stats.error_test_failures >= 0 ? json(stats.error_test_failures) : json(nullptr);
+  j["jacobian_evaluations"] = stats.jacobian_evaluations >= 0 ? json(stats.jacobian_evaluations) : json(nullptr);
+  j["newton_convergence_failures"] =
+      stats.newton_convergence_failures >= 0 ? json(stats.newton_convergence_failures) : json(nullptr);
+  j["cpu_seconds"] = num("cpu_seconds", stats.cpu_seconds);
+  j["real_time_factor"] = stats.cpu_seconds > 0
+                              ? num("real_time_factor", simulated_time / stats.cpu_seconds)
+                              : json(nullptr);  // not measured
+}
+
+json reactionsJson(const WindowMetrics& m, FiniteWriter& num) {
   json rx = json::object();
   for (const auto& [name, s] : m.reactions) {
     const std::string p = "reactions." + name + ".";
@@ -186,10 +193,13 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
                 {"mean", num(p + "mean", s.mean)},
                 {"abs_max", num(p + "abs_max", s.abs_max)}};
   }
-  j["reactions"] = rx;
+  return rx;
+}
 
-  // Start-up and stopping answers (StartUp.h) with the scene's motor law, told the motion so they
-  // agree with it; the sizing's heating check reads the start's heat from them.
+// Start-up and stopping answers (StartUp.h) with the scene's motor law, told the motion so they
+// agree with it; null where the scene has no motor law or its starting method cannot be built.
+std::unique_ptr<StartUp> startUpAnswers(const Scene& scene, const RunResult& run, const StartLoad* start_load,
+                                        const std::string& crank_motion) {
   std::shared_ptr<const MotorLaw> law;
   if (scene.motor.enabled) try {
       law = sharedMotorLaw(scene);
@@ -202,10 +212,24 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
     } catch (const std::exception&) {
       // a scene the starting method cannot be built for (e.g. a test scene without loads' data)
     }
-  const DriveSizing sizing = computeDriveSizing(scene, run, ss, turning, steady_turning ? m.coefficients.delta : NAN,
-                                                crank_motion, start_up.get(), start_load);
-  j["sizing"] = sizingJson(sizing);
-  j["sizing"]["flywheel"]["location"] = toString(scene.flywheel.location);
+  return start_up;
+}
+
+// Where the joint loads come from, and what is missing: the reduced model computes the cart
+// statics only (guide rollers, rod end), not the crank pin or the main bearing. Null without
+// joint reactions.
+json jointsBasis(const Scene& scene, const RunResult& run) {
+  if (run.reactions.columns.empty()) return nullptr;
+  if (run.model != "reduced") return "multibody model, joint reaction forces";
+  return std::string(scene.reduced.guide_normals == ReducedGuideNormals::QuasiStatic
+                         ? "reduced model, quasi-static cart statics (the papers': no inertial forces)"
+                         : "reduced model, kinetostatic cart statics (the carts' and rods' inertial forces included)") +
+         "; not computed by the reduced model: crank pin, main bearing (run the multibody model)";
+}
+
+// The load's work and the checks of the steady running that come with warnings: guide roller
+// lift-off, the gear teeth's contact, the crankshaft's torsion.
+void addRunningChecks(json& j, const Scene& scene, const RunResult& run, const SteadyState& ss, bool steady_turning) {
   const LoadWork load = computeLoadWork(scene, run, ss);
   j["load"] = loadWorkJson(load);
   if (!j.contains("warnings")) j["warnings"] = json::array();
@@ -219,24 +243,40 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   const ShaftTorsionSummary torsion = computeShaftTorsion(scene, run, ss, steady_turning);
   j["crankshaft_torsion"] = shaftTorsionJson(torsion);
   for (const std::string& w : torsion.warnings) j["warnings"].push_back(w);
-  // Where the joint loads come from, and what is missing: the reduced model computes the cart
-  // statics only (guide rollers, rod end), not the crank pin or the main bearing.
-  if (run.model == "reduced" && !run.reactions.columns.empty())
-    j["sizing"]["joints_basis"] =
-        std::string(scene.reduced.guide_normals == ReducedGuideNormals::QuasiStatic
-                        ? "reduced model, quasi-static cart statics (the papers': no inertial forces)"
-                        : "reduced model, kinetostatic cart statics (the carts' and rods' inertial forces included)") +
-        "; not computed by the reduced model: crank pin, main bearing (run the multibody model)";
-  else if (!run.reactions.columns.empty())
-    j["sizing"]["joints_basis"] = "multibody model, joint reaction forces";
-  if (!steady_turning) {
-    not_meaningful.push_back("sizing.flywheel");
-    not_meaningful.push_back("sizing.motor.energy_per_revolution");
-  }
-  j["not_meaningful"] = not_meaningful;
-  j["stall"] = nullptr;
-  j["start_up"] = start_up ? startUpJson(*start_up) : nullptr;
+}
 
+// Why a stalled drive stalled: the start-up answers' one sentence (StartUp::stall_cause), which
+// the sizing's checks print too (a soft starter's current limit that held the motor is the supply
+// it names), and how far the crank still travelled.
+std::string stallExplanation(const Scene& scene, const RunResult& run, const StartUp* start_up) {
+  std::string why = start_up && !start_up->stall_cause.empty()
+                        ? start_up->stall_cause
+                        : std::string(start_up ? "the load torques at the start were not evaluated"
+                                               : "the scene gives no motor law to compare the loads with");
+  const std::string travel = stalledCrankTravel(scene, run);
+  if (!travel.empty()) why += "; " + travel;
+  return why;
+}
+
+// The stall's explanation and the torques it compares.
+json stallJson(const std::string& why, const StartUp* start_up, const StartLoad* start_load, FiniteWriter& num) {
+  auto orNull = [&](const char* key, double v, bool known) { return known ? num(key, v) : json(nullptr); };
+  const bool su = start_up != nullptr;
+  return {{"explanation", why},
+          {"starting_torque_crank", orNull("stall.starting_torque_crank",
+                                           su ? start_up->starting_torque_held_crank : NAN, su)},
+          {"starting_supply", su ? json(start_up->held_supply) : json(nullptr)},
+          {"breakdown_torque_crank", orNull("stall.breakdown_torque_crank",
+                                            su ? start_up->largest_torque_held_crank : NAN, su)},
+          {"load_torque_start", start_load ? num("stall.load_torque_start", start_load->at_start_angle) : json(nullptr)},
+          {"load_torque_mean", start_load ? num("stall.load_torque_mean", start_load->revolution_mean) : json(nullptr)}};
+}
+
+// The run's status amended by what the summary found: a crank that rocks, a stall (its
+// explanation also in j["stall"]), non-finite rows.
+std::string amendedStatus(json& j, const Scene& scene, const RunResult& run, const SteadyState& ss,
+                          const WindowMetrics& m, const std::string& crank_motion, const StartUp* start_up,
+                          const StartLoad* start_load, FiniteWriter& num) {
   std::string status = run.stats.status;
   if (crank_motion == "rocking" && StallDetector::motionOfStatus(status) != "rocking") {
     char buf[160];
@@ -247,28 +287,53 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
     status += buf;
   }
   if (crank_motion == "stalled") {
-    // The start-up answers' one sentence (StartUp::stall_cause), which the sizing's checks print too
-    // (a soft starter's current limit that held the motor is the supply it names).
-    std::string why = start_up && !start_up->stall_cause.empty()
-                          ? start_up->stall_cause
-                          : std::string(start_up ? "the load torques at the start were not evaluated"
-                                                 : "the scene gives no motor law to compare the loads with");
-    const std::string travel = stalledCrankTravel(scene, run);
-    if (!travel.empty()) why += "; " + travel;
-    auto orNull = [&](const char* key, double v, bool known) { return known ? num(key, v) : json(nullptr); };
-    const bool su = start_up != nullptr;
-    j["stall"] = {{"explanation", why},
-                  {"starting_torque_crank", orNull("stall.starting_torque_crank",
-                                                   su ? start_up->starting_torque_held_crank : NAN, su)},
-                  {"starting_supply", su ? json(start_up->held_supply) : json(nullptr)},
-                  {"breakdown_torque_crank", orNull("stall.breakdown_torque_crank",
-                                                    su ? start_up->largest_torque_held_crank : NAN, su)},
-                  {"load_torque_start", start_load ? num("stall.load_torque_start", start_load->at_start_angle) : json(nullptr)},
-                  {"load_torque_mean", start_load ? num("stall.load_torque_mean", start_load->revolution_mean) : json(nullptr)}};
+    const std::string why = stallExplanation(scene, run, start_up);
+    j["stall"] = stallJson(why, start_up, start_load, num);
     status += "; the drive stalled: " + why;
   }
   if (ss.finite_rows < run.timeseries.rows.size())
     status += "; timeseries has non-finite values (" + ss.note + ")";
+  return status;
+}
+
+}  // namespace
+
+json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* start_load) {
+  // The machine's running: the coast-down after a switch-off is no steady state (SteadyState.h).
+  const SteadyState ss = detectRunningSteadyState(run, scene.simulation.steady_window_revolutions,
+                                                  scene.motor.enabled ? scene.motor_stop.t_off : NAN);
+  const WindowMetrics m = computeMetrics(run, ss);
+  FiniteWriter num;
+  json j = runIdentity(scene, run);
+  const double simulated_time = simulatedTime(run.timeseries);
+  j["simulated_time"] = num("simulated_time", simulated_time);
+  // "stalled", "rocking" (crank speed changes sign in the metrics window), "turning",
+  // "at_rest", "unknown" (RunMotion.h); per-revolution metrics are null unless turning.
+  const std::string crank_motion = classifyMotion(scene, run, m, crankAdvance(run.timeseries, ss), ss.reached);
+  const bool turning = motionIsTurning(crank_motion);
+  const bool steady_turning = turning && ss.reached;
+  std::vector<std::string> not_meaningful;
+  addCrankSpeed(j, m, crank_motion, steady_turning, num, not_meaningful);
+  j["steady_state"] = steadyStateJson(ss, m, crank_motion, num);
+  addSelfChecks(j, scene, run, num);
+  addIntegratorStatistics(j, run.stats, simulated_time, num);
+  j["reactions"] = reactionsJson(m, num);
+  // The sizing's heating check reads the start's heat from the start-up answers.
+  const std::unique_ptr<StartUp> start_up = startUpAnswers(scene, run, start_load, crank_motion);
+  const DriveSizing sizing = computeDriveSizing(scene, run, ss, turning, steady_turning ? m.coefficients.delta : NAN,
+                                                crank_motion, start_up.get(), start_load);
+  j["sizing"] = sizingJson(sizing);
+  j["sizing"]["flywheel"]["location"] = toString(scene.flywheel.location);
+  addRunningChecks(j, scene, run, ss, steady_turning);
+  if (const json basis = jointsBasis(scene, run); !basis.is_null()) j["sizing"]["joints_basis"] = basis;
+  if (!steady_turning) {
+    not_meaningful.push_back("sizing.flywheel");
+    not_meaningful.push_back("sizing.motor.energy_per_revolution");
+  }
+  j["not_meaningful"] = not_meaningful;
+  j["stall"] = nullptr;
+  j["start_up"] = start_up ? startUpJson(*start_up) : nullptr;
+  std::string status = amendedStatus(j, scene, run, ss, m, crank_motion, start_up.get(), start_load, num);
   if (!num.non_finite.empty())
     status += "; non-finite values written as null: " + joined(num.non_finite);
   j["status"] = status;

@@ -94,6 +94,9 @@ class Suite {
   void equivalence(ValidationResults& r);
   void perCart(ValidationResults& r);
   void differences(ValidationResults& r);
+  // A shipped scene as it is in both models, with the claim that explains their difference.
+  ComparisonCase shippedSceneDifference(const char* label, const char* file, const char* description,
+                                        const std::vector<ComparisonCase>& earlier);
   void papers(ValidationResults& r);
   void sensitivity(ValidationResults& r);
   void findings(ValidationResults& r);

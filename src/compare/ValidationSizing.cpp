@@ -168,227 +168,308 @@ const json& at(const json& j, std::initializer_list<const char*> path) {
   return *p;
 }
 
-// The checks on one run of the scene: its CSV text and its summary.json, as a user gets them.
-void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, const std::string& ts_csv,
-              const std::string& rx_csv, const std::string& extrema_csv, const json& summary) {
-  const Csv ts = parseCsv(ts_csv);
-  const Csv ex = parseCsv(extrema_csv);
-  const Csv rx = rx_csv.empty() ? Csv{} : parseCsv(rx_csv);
-  const json& sz = summary.at("sizing");
-  const std::vector<double>& t = ts.col("t");
-  const std::vector<double>& phi = ts.col("phi_crank");
-  const std::vector<double>& w = ts.col("omega_crank");
-  const int N = std::max(1, int(std::floor(sc.simulation.steady_window_revolutions)));
-  const Window win = lastRevolutions(t, phi, N);
-  const std::size_t b = win.b, e = win.e;
-  if (win.revolutions < 1 || e < b + 2) throw std::runtime_error(who + ": fewer than one whole crank revolution");
-  const double span = t[e - 1] - t[b];
+// One run's tables as a user gets them, read once, its summary.json, and the steady window found
+// by hand on its rows.
+struct RunFiles {
+  Csv ts, ex, rx;        // timeseries.csv, crank_speed_extrema.csv, reactions.csv (empty without)
+  const json& summary;
+  const json& sz;        // summary.json's sizing
+  Window win;
+  std::size_t b = 0, e = 0;  // the window's rows [b, e)
+  double span = 0;           // the time its rows span [s]
+};
 
-  // The window and the crank-speed metrics (Loveikin and Pochka (2007), eq. (12)-(14)); the mean
-  // speed of whole revolutions in closed form, 2πN/(t_end - t_begin).
-  const double dtb = std::abs(win.t_begin - at(sz, {"window", "t_begin"}).get<double>());
-  const double dte = std::abs(win.t_end - at(sz, {"window", "t_end"}).get<double>());
-  const double revs_rows = (phi[e - 1] - phi[b]) / kTwoPi;
+// The crank speed over the steady window, computed by hand.
+struct CrankSpeedByHand {
+  double revolutions_in_rows = 0;  // (φ at its last row - φ at its first)/2π
+  double mean = 0, lowest = 0, highest = 0;  // [rad/s]
+  double delta = 0;
+};
+
+// The window and the crank-speed metrics (Loveikin and Pochka (2007), eq. (12)-(14)); the mean
+// speed of whole revolutions in closed form, 2πN/(t_end - t_begin).
+CrankSpeedByHand checkWindow(ValidationSection& s, const std::string& who, const RunFiles& f) {
+  const std::vector<double>& phi = f.ts.col("phi_crank");
+  const std::vector<double>& w = f.ts.col("omega_crank");
+  const Window& win = f.win;
+  const std::size_t b = f.b, e = f.e;
+  const double dtb = std::abs(win.t_begin - at(f.sz, {"window", "t_begin"}).get<double>());
+  const double dte = std::abs(win.t_end - at(f.sz, {"window", "t_end"}).get<double>());
+  CrankSpeedByHand c;
+  c.revolutions_in_rows = (phi[e - 1] - phi[b]) / kTwoPi;
   Comparison cw;
-  cw.add("revolutions in the window's rows", revs_rows, at(sz, {"window", "revolutions"}));
-  const double w_mean = kTwoPi * win.revolutions / (win.t_end - win.t_begin);
+  cw.add("revolutions in the window's rows", c.revolutions_in_rows, at(f.sz, {"window", "revolutions"}));
+  c.mean = kTwoPi * win.revolutions / (win.t_end - win.t_begin);
   // ω's extremes: the window's rows and the extrema of crank_speed_extrema.csv inside the window.
   const auto [row_lo, row_hi] = std::minmax_element(w.begin() + long(b), w.begin() + long(e));
-  double wlo = *row_lo, whi = *row_hi;
-  for (std::size_t i = 0; i < ex.col("t").size(); ++i)
-    if (ex.col("t")[i] >= win.t_begin && ex.col("t")[i] <= win.t_end) {
-      wlo = std::min(wlo, ex.col("omega_crank")[i]);
-      whi = std::max(whi, ex.col("omega_crank")[i]);
+  c.lowest = *row_lo, c.highest = *row_hi;
+  for (std::size_t i = 0; i < f.ex.col("t").size(); ++i)
+    if (f.ex.col("t")[i] >= win.t_begin && f.ex.col("t")[i] <= win.t_end) {
+      c.lowest = std::min(c.lowest, f.ex.col("omega_crank")[i]);
+      c.highest = std::max(c.highest, f.ex.col("omega_crank")[i]);
     }
   double eps_max = 0;
-  for (std::size_t i = b; i < e; ++i) eps_max = std::max(eps_max, std::abs(ts.col("eps_crank")[i]));
-  const double delta = (whi - wlo) / w_mean, H = eps_max / (w_mean * w_mean);
-  cw.add("ω_mean = 2πN/Δt", w_mean, at(summary, {"omega_crank", "mean"}));
-  cw.add("ω_min", wlo, at(summary, {"omega_crank", "min"}));
-  cw.add("ω_max", whi, at(summary, {"omega_crank", "max"}));
-  cw.add("δ", delta, at(summary, {"delta"}), whi / w_mean);  // a difference: judged against its operands
-  cw.add("H", H, at(summary, {"H"}));
-  cw.add("k_p", delta * delta + H, at(summary, {"k_p"}));
+  for (std::size_t i = b; i < e; ++i) eps_max = std::max(eps_max, std::abs(f.ts.col("eps_crank")[i]));
+  c.delta = (c.highest - c.lowest) / c.mean;
+  const double H = eps_max / (c.mean * c.mean);
+  cw.add("ω_mean = 2πN/Δt", c.mean, at(f.summary, {"omega_crank", "mean"}));
+  cw.add("ω_min", c.lowest, at(f.summary, {"omega_crank", "min"}));
+  cw.add("ω_max", c.highest, at(f.summary, {"omega_crank", "max"}));
+  cw.add("δ", c.delta, at(f.summary, {"delta"}), c.highest / c.mean);  // a difference: judged against its operands
+  cw.add("H", H, at(f.summary, {"H"}));
+  cw.add("k_p", c.delta * c.delta + H, at(f.summary, {"k_p"}));
   s.claim(cw.holds() && dtb <= kTimeSeconds && dte <= kTimeSeconds,
           who + ": steady window = the last " + std::to_string(win.revolutions) + " whole crank revolutions, t = " +
               g(win.t_begin, 6) + " ... " + g(win.t_end, 6) + " s by hand (summary.json differs by " + g(dtb, 2) +
               " and " + g(dte, 2) + " s, at most " + g(kTimeSeconds) + " s required); its mean crank speed " +
-              g(w_mean, 6) + " rad/s, δ = " + g(delta, 4) + ", H = " + g(H, 4) + ": " + cw.sentence() + ".");
+              g(c.mean, 6) + " rad/s, δ = " + g(c.delta, 4) + ", H = " + g(H, 4) + ": " + cw.sentence() + ".");
+  return c;
+}
 
-  // Motor (DriveSizing.h notation): rotor torque M = motor_torque/(u·η), rotor speed ω_r =
-  // u·omega_motor, slip s = 1 - ω_r/ω0, energy per crank revolution ∫M·ω_r dt / revolutions.
-  if (at(sz, {"motor"}).is_object()) {
-    const double u = sc.reducer.ratio, eta = sc.reducer.efficiency, w0 = sc.motor.omega_sync;
-    std::vector<double> M, M2, P, slip;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      const double m = ts.col("motor_torque")[i] / (u * eta), wr = u * ts.col("omega_motor")[i];
-      M.push_back(m);
-      M2.push_back(m * m);
-      P.push_back(m * wr);
-      slip.push_back(1.0 - wr / w0);
-    }
-    double peak = 0;
-    for (std::size_t i = b; i < e; ++i) peak = std::max(peak, std::abs(M[i]));
-    const double mean = integral(t, M, b, e) / span, rms = std::sqrt(integral(t, M2, b, e) / span);
-    const double M_n = sc.motor.breakdown_torque / sc.sizing.motor_overload_ratio;
-    const double energy = integral(t, P, b, e) / revs_rows;
-    const auto [slo, shi] = std::minmax_element(slip.begin() + long(b), slip.begin() + long(e));
-    const json& m = at(sz, {"motor"});
-    Comparison c;
-    c.add("mean M", mean, at(m, {"torque_shaft", "mean"}), peak);
-    c.add("RMS M", rms, at(m, {"torque_shaft", "rms"}));
-    c.add("peak |M|", peak, at(m, {"torque_shaft", "peak"}));
-    c.add("RMS at the crank", rms * u * eta, at(m, {"torque_crank", "rms"}));
-    c.add("M_n = M_kr/λ", M_n, at(m, {"nominal_torque"}));
-    c.add("RMS/M_n", rms / M_n, at(m, {"rms_over_nominal"}));
-    c.add("peak/M_kr", peak / sc.motor.breakdown_torque, at(m, {"peak_over_breakdown"}));
-    c.add("energy per revolution", energy, at(m, {"energy_per_revolution"}));
-    c.add("slip min", *slo, at(m, {"slip", "min"}), 1.0);  // s = 1 - ω_r/ω0: operands of size 1
-    c.add("slip max", *shi, at(m, {"slip", "max"}), 1.0);
-    s.claim(c.holds(), who + ": motor at the rotor, M = motor_torque/(u·η) (u = " + g(u) + ", η = " + g(eta) +
-                           "): mean " + g(mean, 4) + ", RMS " + g(rms, 4) + ", peak " + g(peak, 4) + " N·m; RMS/M_n = " +
-                           g(rms / M_n, 3) + " with M_n = M_kr/λ = " + g(M_n, 4) + " N·m; ∫M·ω_r dt per crank "
-                           "revolution " + g(energy, 5) + " J; slip " + g(*slo, 3) + " ... " + g(*shi, 3) + ": " +
-                           c.sentence() + ".");
+// Motor (DriveSizing.h notation): rotor torque M = motor_torque/(u·η), rotor speed ω_r =
+// u·omega_motor, slip s = 1 - ω_r/ω0, energy per crank revolution ∫M·ω_r dt / revolutions.
+void checkMotor(ValidationSection& s, const Scene& sc, const std::string& who, const RunFiles& f,
+                const CrankSpeedByHand& crank) {
+  const std::vector<double>& t = f.ts.col("t");
+  const std::size_t b = f.b, e = f.e;
+  const double u = sc.reducer.ratio, eta = sc.reducer.efficiency, w0 = sc.motor.omega_sync;
+  std::vector<double> M, M2, P, slip;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double m = f.ts.col("motor_torque")[i] / (u * eta), wr = u * f.ts.col("omega_motor")[i];
+    M.push_back(m);
+    M2.push_back(m * m);
+    P.push_back(m * wr);
+    slip.push_back(1.0 - wr / w0);
   }
+  double peak = 0;
+  for (std::size_t i = b; i < e; ++i) peak = std::max(peak, std::abs(M[i]));
+  const double mean = integral(t, M, b, e) / f.span, rms = std::sqrt(integral(t, M2, b, e) / f.span);
+  const double M_n = sc.motor.breakdown_torque / sc.sizing.motor_overload_ratio;
+  const double energy = integral(t, P, b, e) / crank.revolutions_in_rows;
+  const auto [slo, shi] = std::minmax_element(slip.begin() + long(b), slip.begin() + long(e));
+  const json& m = at(f.sz, {"motor"});
+  Comparison c;
+  c.add("mean M", mean, at(m, {"torque_shaft", "mean"}), peak);
+  c.add("RMS M", rms, at(m, {"torque_shaft", "rms"}));
+  c.add("peak |M|", peak, at(m, {"torque_shaft", "peak"}));
+  c.add("RMS at the crank", rms * u * eta, at(m, {"torque_crank", "rms"}));
+  c.add("M_n = M_kr/λ", M_n, at(m, {"nominal_torque"}));
+  c.add("RMS/M_n", rms / M_n, at(m, {"rms_over_nominal"}));
+  c.add("peak/M_kr", peak / sc.motor.breakdown_torque, at(m, {"peak_over_breakdown"}));
+  c.add("energy per revolution", energy, at(m, {"energy_per_revolution"}));
+  c.add("slip min", *slo, at(m, {"slip", "min"}), 1.0);  // s = 1 - ω_r/ω0: operands of size 1
+  c.add("slip max", *shi, at(m, {"slip", "max"}), 1.0);
+  s.claim(c.holds(), who + ": motor at the rotor, M = motor_torque/(u·η) (u = " + g(u) + ", η = " + g(eta) +
+                         "): mean " + g(mean, 4) + ", RMS " + g(rms, 4) + ", peak " + g(peak, 4) + " N·m; RMS/M_n = " +
+                         g(rms / M_n, 3) + " with M_n = M_kr/λ = " + g(M_n, 4) + " N·m; ∫M·ω_r dt per crank "
+                         "revolution " + g(energy, 5) + " J; slip " + g(*slo, 3) + " ... " + g(*shi, 3) + ": " +
+                         c.sentence() + ".");
+}
 
-  // Coupling torque and the flywheel's two estimates: T = ½J_n1·ω_motor² + ½(J_c + n·m_rod/2·r²)·ω² +
-  // Σ ½(m'_B + m_rod/2)·v_j² (DriveSizing.h), ΔT the largest max - min within one revolution,
-  // J = time mean of 2T/ω², ΔJ = J·(δ/δ* - 1) for the target δ* (energy method) and
-  // ΔJ = ΔA/(δ*·ω̄²) - J (excess work, the proposal when ΔA is known).
-  {
-    const std::vector<double>& Mc = ts.col("coupling_torque");
-    const auto [clo, chi] = std::minmax_element(Mc.begin() + long(b), Mc.begin() + long(e));
-    const double cpeak = std::max(std::abs(*clo), std::abs(*chi));
-    const double m_rod_half = sc.rods.model == RodModel::Massless ? 0.0 : 0.5 * sc.rods.mass;
-    const double J1 = sc.motorSideInertia(),
-                 Jc = sc.crankSideInertia() + sc.carts.count * m_rod_half * sc.crank.radius * sc.crank.radius;
-    std::vector<double> T(t.size()), Jt(t.size());
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      const double w1 = ts.has("omega_motor") ? ts.col("omega_motor")[i] : w[i];
-      T[i] = 0.5 * J1 * w1 * w1 + 0.5 * Jc * w[i] * w[i];
-      for (int j = 1; j <= sc.carts.count; ++j) {
-        const double v = ts.col("v_cart_" + std::to_string(j))[i];
-        T[i] += 0.5 * (sc.carts.mass + m_rod_half) * v * v;
-      }
-      Jt[i] = 2.0 * T[i] / (w[i] * w[i]);
+// The machine's kinetic energy T at each row and its effective inertia 2T/ω² (at the crank).
+struct KineticEnergyRows {
+  std::vector<double> T, J;
+};
+
+// T = ½J_n1·ω_motor² + ½(J_c + n·m_rod/2·r²)·ω² + Σ ½(m'_B + m_rod/2)·v_j² (DriveSizing.h).
+KineticEnergyRows kineticEnergyRows(const Scene& sc, const Csv& ts) {
+  const std::vector<double>& t = ts.col("t");
+  const std::vector<double>& w = ts.col("omega_crank");
+  const double m_rod_half = sc.rods.model == RodModel::Massless ? 0.0 : 0.5 * sc.rods.mass;
+  const double J1 = sc.motorSideInertia(),
+               Jc = sc.crankSideInertia() + sc.carts.count * m_rod_half * sc.crank.radius * sc.crank.radius;
+  KineticEnergyRows k{std::vector<double>(t.size()), std::vector<double>(t.size())};
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double w1 = ts.has("omega_motor") ? ts.col("omega_motor")[i] : w[i];
+    k.T[i] = 0.5 * J1 * w1 * w1 + 0.5 * Jc * w[i] * w[i];
+    for (int j = 1; j <= sc.carts.count; ++j) {
+      const double v = ts.col("v_cart_" + std::to_string(j))[i];
+      k.T[i] += 0.5 * (sc.carts.mass + m_rod_half) * v * v;
     }
-    double dT = 0, T_max = 0;  // over each whole revolution of the window, the largest; T_max its operands' size
-    const std::vector<double>& cross = win.crossings;
-    for (std::size_t k = cross.size() - 1 - std::size_t(win.revolutions); k + 1 < cross.size(); ++k) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (std::size_t i = b; i < e; ++i)
-        if (t[i] >= cross[k] && t[i] <= cross[k + 1]) lo = std::min(lo, T[i]), hi = std::max(hi, T[i]);
-      if (hi >= lo) dT = std::max(dT, hi - lo), T_max = std::max(T_max, hi);
-    }
-    const double J = integral(t, Jt, b, e) / span;
-    const json& c = at(sz, {"coupling"});
-    const json& f = at(sz, {"flywheel"});
-    Comparison k;
-    k.add("coupling mean", integral(t, Mc, b, e) / span, at(c, {"mean"}), cpeak);
-    k.add("coupling peak", cpeak, at(c, {"peak"}));
-    k.add("coupling swing", *chi - *clo, at(c, {"swing"}));
-    k.add("ΔT per revolution", dT, at(f, {"kinetic_energy_swing"}), T_max);  // a difference of T values
-    k.add("J = mean 2T/ω²", J, at(f, {"inertia_effective"}));
-    const double target = sc.sizing.target_delta;
-    const double added_energy = target > 0 ? std::max(0.0, J * (delta / target - 1.0)) : kNaN;
-    // ΔJ inherits δ's operands: judged against J·(ω_max/ω_mean)/δ*.
-    k.add("ΔJ = J·(δ/δ* - 1)", added_energy, at(f, {"added_inertia_energy_method"}), J * (whi / w_mean) / target);
-    // The excess-work method: ΔA (from the load law at constant speed, checked on its own in the
-    // tests against ½ω²(J_max - J_min) of a load-free machine) over δ*·ω̄², ω̄ from the rows here.
-    const json& dA = at(f, {"excess_work"});
-    double added = added_energy;
-    if (dA.is_number() && target > 0) {
-      const double J_req = dA.get<double>() / (target * w_mean * w_mean);
-      added = std::max(std::max(0.0, J_req - J), added_energy);
-      k.add("J* = ΔA/(δ*·ω̄²)", J_req, at(f, {"inertia_required"}));
-      k.add("ΔJ = max(J* - J, J·(δ/δ* - 1))", added, at(f, {"added_inertia_crankshaft"}), J_req);
-    } else {
-      k.add("ΔJ (no ΔA: energy method)", added_energy, at(f, {"added_inertia_crankshaft"}), J * (whi / w_mean) / target);
-    }
-    s.claim(k.holds(), who + ": coupling torque mean " + g(integral(t, Mc, b, e) / span, 4) + ", peak " + g(cpeak, 4) +
-                           ", swing " + g(*chi - *clo, 4) + " N·m; kinetic energy swing per revolution ΔT = " + g(dT, 4) +
-                           " J, J = " + g(J, 5) + " kg·m², flywheel to add for δ* = " + g(target) + ": " + g(added, 4) +
-                           " kg·m²: " + k.sentence() + ".");
+    k.J[i] = 2.0 * k.T[i] / (w[i] * w[i]);
   }
+  return k;
+}
 
-  // Joints: every per-cart row of every joint kind in summary.json against the CSV columns.
-  if (rx.names.empty()) return;
-  const std::vector<double>& rt = rx.col("t");
-  if (rt != t) throw std::runtime_error(who + ": reactions.csv and timeseries.csv rows differ in time");
+// ΔT, the largest max - min of T within one whole revolution of the window, and the largest T
+// (the size of its operands).
+std::pair<double, double> kineticEnergySwing(const RunFiles& f, const std::vector<double>& T) {
+  const std::vector<double>& t = f.ts.col("t");
+  double dT = 0, T_max = 0;
+  const std::vector<double>& cross = f.win.crossings;
+  for (std::size_t k = cross.size() - 1 - std::size_t(f.win.revolutions); k + 1 < cross.size(); ++k) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t i = f.b; i < f.e; ++i)
+      if (t[i] >= cross[k] && t[i] <= cross[k + 1]) lo = std::min(lo, T[i]), hi = std::max(hi, T[i]);
+    if (hi >= lo) dT = std::max(dT, hi - lo), T_max = std::max(T_max, hi);
+  }
+  return {dT, T_max};
+}
+
+// Coupling torque and the flywheel's two estimates: ΔT per revolution, J = time mean of 2T/ω²,
+// ΔJ = J·(δ/δ* - 1) for the target δ* (energy method) and ΔJ = ΔA/(δ*·ω̄²) - J (excess work, the
+// proposal when ΔA is known).
+void checkCouplingAndFlywheel(ValidationSection& s, const Scene& sc, const std::string& who, const RunFiles& f,
+                              const CrankSpeedByHand& crank) {
+  const std::vector<double>& t = f.ts.col("t");
+  const std::size_t b = f.b, e = f.e;
+  const std::vector<double>& Mc = f.ts.col("coupling_torque");
+  const auto [clo, chi] = std::minmax_element(Mc.begin() + long(b), Mc.begin() + long(e));
+  const double cpeak = std::max(std::abs(*clo), std::abs(*chi));
+  const KineticEnergyRows kinetic = kineticEnergyRows(sc, f.ts);
+  const auto [dT, T_max] = kineticEnergySwing(f, kinetic.T);
+  const double J = integral(t, kinetic.J, b, e) / f.span;
+  const json& c = at(f.sz, {"coupling"});
+  const json& fw = at(f.sz, {"flywheel"});
+  Comparison k;
+  k.add("coupling mean", integral(t, Mc, b, e) / f.span, at(c, {"mean"}), cpeak);
+  k.add("coupling peak", cpeak, at(c, {"peak"}));
+  k.add("coupling swing", *chi - *clo, at(c, {"swing"}));
+  k.add("ΔT per revolution", dT, at(fw, {"kinetic_energy_swing"}), T_max);  // a difference of T values
+  k.add("J = mean 2T/ω²", J, at(fw, {"inertia_effective"}));
+  const double target = sc.sizing.target_delta;
+  const double added_energy = target > 0 ? std::max(0.0, J * (crank.delta / target - 1.0)) : kNaN;
+  // ΔJ inherits δ's operands: judged against J·(ω_max/ω_mean)/δ*.
+  k.add("ΔJ = J·(δ/δ* - 1)", added_energy, at(fw, {"added_inertia_energy_method"}),
+        J * (crank.highest / crank.mean) / target);
+  // The excess-work method: ΔA (from the load law at constant speed, checked on its own in the
+  // tests against ½ω²(J_max - J_min) of a load-free machine) over δ*·ω̄², ω̄ from the rows here.
+  const json& dA = at(fw, {"excess_work"});
+  double added = added_energy;
+  if (dA.is_number() && target > 0) {
+    const double J_req = dA.get<double>() / (target * crank.mean * crank.mean);
+    added = std::max(std::max(0.0, J_req - J), added_energy);
+    k.add("J* = ΔA/(δ*·ω̄²)", J_req, at(fw, {"inertia_required"}));
+    k.add("ΔJ = max(J* - J, J·(δ/δ* - 1))", added, at(fw, {"added_inertia_crankshaft"}), J_req);
+  } else {
+    k.add("ΔJ (no ΔA: energy method)", added_energy, at(fw, {"added_inertia_crankshaft"}),
+          J * (crank.highest / crank.mean) / target);
+  }
+  s.claim(k.holds(), who + ": coupling torque mean " + g(integral(t, Mc, b, e) / f.span, 4) + ", peak " + g(cpeak, 4) +
+                         ", swing " + g(*chi - *clo, 4) + " N·m; kinetic energy swing per revolution ΔT = " + g(dT, 4) +
+                         " J, J = " + g(J, 5) + " kg·m², flywheel to add for δ* = " + g(target) + ": " + g(added, 4) +
+                         " kg·m²: " + k.sentence() + ".");
+}
+
+// A joint's force F and rotation speed n at every row.
+struct JointRows {
+  std::vector<double> F, n;
+};
+
+// |F| and the joint's rotation speed n (JointSizing.h): guide rollers |v|/(d/2), the rod end
+// its swing |β̇| = |ω·dβ/dθ|, the crank pin |ω·(1 + σ·dβ/dθ)| relative to the rod, the main
+// bearing |ω_crank|; dβ/dθ = λ·cos θ/√(1 - λ²·sin² θ) of sin β = λ·sin θ, λ = r/l.
+JointRows jointRows(const Scene& sc, const RunFiles& f, const std::string& k, int j) {
+  const std::vector<double>& t = f.ts.col("t");
+  const std::vector<double>& phi = f.ts.col("phi_crank");
+  const std::vector<double>& w = f.ts.col("omega_crank");
+  const Csv& rx = f.rx;
   const double d = sc.carts.geometry.d;
+  const std::string cart = std::to_string(j);
+  const double lam = sc.crank.radius / sc.rods.length;
+  const int side = j >= 1 && std::size_t(j - 1) < sc.carts.side.size() && sc.carts.side[j - 1] == -1 ? -1 : 1;
+  auto dbeta = [&](std::size_t i) {
+    const double th = phi[i] + sc.crankPhase(j - 1);
+    return lam * std::cos(th) / std::sqrt(1 - lam * lam * std::sin(th) * std::sin(th));
+  };
+  JointRows r;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (k == "guide_roller_front") r.F.push_back(rx.col("N_front_" + cart)[i]);
+    if (k == "guide_roller_rear") r.F.push_back(rx.col("N_rear_" + cart)[i]);
+    if (k == "rod_end") r.F.push_back(rx.col("F_rod_" + cart)[i]);
+    if (k == "crank_pin") r.F.push_back(std::hypot(rx.col("crankpin_x_" + cart)[i], rx.col("crankpin_y_" + cart)[i]));
+    if (k == "main_bearing") r.F.push_back(std::hypot(rx.col("bearing_x")[i], rx.col("bearing_y")[i]));
+    if (k == "guide_roller_front" || k == "guide_roller_rear")
+      r.n.push_back(d > 0 ? std::abs(f.ts.col("v_cart_" + cart)[i]) / (0.5 * d) : 1.0);
+    else if (k == "rod_end")
+      r.n.push_back(std::abs(w[i] * dbeta(i)));
+    else if (k == "crank_pin")
+      r.n.push_back(std::abs(w[i] * (1 + side * dbeta(i))));
+    else
+      r.n.push_back(std::abs(w[i]));
+  }
+  return r;
+}
+
+// One joint row of summary.json (one cart's joint of one kind) against its figures by hand; the
+// sentence of its life for the claim's examples.
+std::string compareJoint(Comparison& jc, const Scene& sc, const RunFiles& f, const std::string& k, const json& row) {
+  const std::vector<double>& t = f.ts.col("t");
+  const std::vector<double>& w = f.ts.col("omega_crank");
+  const std::size_t b = f.b, e = f.e;
+  const int j = row.at("cart").is_number() ? row.at("cart").get<int>() : 0;
+  const std::string label = k + (j ? " " + std::to_string(j) : "");
+  const JointRows jr = jointRows(sc, f, k, j);
+  const std::vector<double>& F = jr.F;
+  std::vector<double> Fn(t.size()), F3n(t.size());
+  double peak = 0, lo = INFINITY, hi = -INFINITY;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    Fn[i] = F[i];
+    F3n[i] = std::pow(std::abs(F[i]), 3) * jr.n[i];
+  }
+  for (std::size_t i = b; i < e; ++i) {
+    peak = std::max(peak, std::abs(F[i]));
+    lo = std::min(lo, F[i]);
+    hi = std::max(hi, F[i]);
+  }
+  const double n_int = integral(t, jr.n, b, e);
+  const double P = std::cbrt(integral(t, F3n, b, e) / n_int);
+  const double n_mean = n_int / f.span;
+  const double C = row.at("rating").is_number() ? row.at("rating").get<double>() : kNaN;
+  const double L10 = std::pow(C / P, 3.0) * 1e6;
+  // The rod end oscillates through 2γ = 2·asin(λ) once per crank revolution: L10·180°/(2γ)
+  // oscillations at f = (mean |ω_crank|)/2π a second; the others turn at n̄.
+  std::vector<double> w_abs(t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) w_abs[i] = std::abs(w[i]);
+  const double frequency = integral(t, w_abs, b, e) / f.span / kTwoPi;
+  const double lam = sc.crank.radius / sc.rods.length;
+  const double L10h = k == "rod_end" ? L10 * (kTwoPi / 2) / (2 * std::asin(lam)) / (3600.0 * frequency)
+                                     : L10 / (n_mean / kTwoPi * 3600.0);
+  jc.add(label + " mean", integral(t, Fn, b, e) / f.span, row.at("mean"), peak);
+  jc.add(label + " amplitude", 0.5 * (hi - lo), row.at("amplitude"), peak);
+  jc.add(label + " peak", peak, row.at("peak"));
+  jc.add(label + " P", P, row.at("equivalent_load"));
+  jc.add(label + " mean speed", n_mean, row.at("mean_speed"));
+  jc.add(label + " L10", L10, row.at("L10_revolutions"));
+  jc.add(label + " L10h", L10h, row.at("L10_hours"));
+  return label + ": P = " + g(P, 4) + " N, L10 = " + g(L10, 3) + " revolutions";
+}
+
+// Joints: every per-cart row of every joint kind in summary.json against the CSV columns.
+void checkJoints(ValidationSection& s, const Scene& sc, const std::string& who, const RunFiles& f) {
+  if (f.rx.col("t") != f.ts.col("t")) throw std::runtime_error(who + ": reactions.csv and timeseries.csv rows differ in time");
   Comparison jc;
   std::string lives;
   for (const char* kind : {"guide_roller_front", "guide_roller_rear", "rod_end", "crank_pin", "main_bearing"}) {
-    const json& per = at(sz, {"joints", kind, "per_cart"});
+    const json& per = at(f.sz, {"joints", kind, "per_cart"});
     if (!per.is_array()) continue;
     for (const json& row : per) {
       const int j = row.at("cart").is_number() ? row.at("cart").get<int>() : 0;
-      const std::string cart = std::to_string(j), label = std::string(kind) + (j ? " " + cart : "");
-      // |F| and the joint's rotation speed n (JointSizing.h): guide rollers |v|/(d/2), the rod end
-      // its swing |β̇| = |ω·dβ/dθ|, the crank pin |ω·(1 + σ·dβ/dθ)| relative to the rod, the main
-      // bearing |ω_crank|; dβ/dθ = λ·cos θ/√(1 - λ²·sin² θ) of sin β = λ·sin θ, λ = r/l.
-      std::vector<double> F, n;
-      const std::string k(kind);
-      const double lam = sc.crank.radius / sc.rods.length;
-      const int side = j >= 1 && std::size_t(j - 1) < sc.carts.side.size() && sc.carts.side[j - 1] == -1 ? -1 : 1;
-      auto dbeta = [&](std::size_t i) {
-        const double th = phi[i] + sc.crankPhase(j - 1);
-        return lam * std::cos(th) / std::sqrt(1 - lam * lam * std::sin(th) * std::sin(th));
-      };
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        if (k == "guide_roller_front") F.push_back(rx.col("N_front_" + cart)[i]);
-        if (k == "guide_roller_rear") F.push_back(rx.col("N_rear_" + cart)[i]);
-        if (k == "rod_end") F.push_back(rx.col("F_rod_" + cart)[i]);
-        if (k == "crank_pin") F.push_back(std::hypot(rx.col("crankpin_x_" + cart)[i], rx.col("crankpin_y_" + cart)[i]));
-        if (k == "main_bearing") F.push_back(std::hypot(rx.col("bearing_x")[i], rx.col("bearing_y")[i]));
-        if (k == "guide_roller_front" || k == "guide_roller_rear")
-          n.push_back(d > 0 ? std::abs(ts.col("v_cart_" + cart)[i]) / (0.5 * d) : 1.0);
-        else if (k == "rod_end")
-          n.push_back(std::abs(w[i] * dbeta(i)));
-        else if (k == "crank_pin")
-          n.push_back(std::abs(w[i] * (1 + side * dbeta(i))));
-        else
-          n.push_back(std::abs(w[i]));
-      }
-      std::vector<double> Fn(t.size()), F3n(t.size());
-      double peak = 0, lo = INFINITY, hi = -INFINITY;
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        Fn[i] = F[i];
-        F3n[i] = std::pow(std::abs(F[i]), 3) * n[i];
-      }
-      for (std::size_t i = b; i < e; ++i) {
-        peak = std::max(peak, std::abs(F[i]));
-        lo = std::min(lo, F[i]);
-        hi = std::max(hi, F[i]);
-      }
-      const double n_int = integral(t, n, b, e);
-      const double P = std::cbrt(integral(t, F3n, b, e) / n_int);
-      const double n_mean = n_int / span;
-      const double C = row.at("rating").is_number() ? row.at("rating").get<double>() : kNaN;
-      const double L10 = std::pow(C / P, 3.0) * 1e6;
-      // The rod end oscillates through 2γ = 2·asin(λ) once per crank revolution: L10·180°/(2γ)
-      // oscillations at f = (mean |ω_crank|)/2π a second; the others turn at n̄.
-      std::vector<double> w_abs(t.size());
-      for (std::size_t i = 0; i < t.size(); ++i) w_abs[i] = std::abs(w[i]);
-      const double f = integral(t, w_abs, b, e) / span / kTwoPi;
-      const double L10h = k == "rod_end" ? L10 * (kTwoPi / 2) / (2 * std::asin(lam)) / (3600.0 * f)
-                                         : L10 / (n_mean / kTwoPi * 3600.0);
-      jc.add(label + " mean", integral(t, Fn, b, e) / span, row.at("mean"), peak);
-      jc.add(label + " amplitude", 0.5 * (hi - lo), row.at("amplitude"), peak);
-      jc.add(label + " peak", peak, row.at("peak"));
-      jc.add(label + " P", P, row.at("equivalent_load"));
-      jc.add(label + " mean speed", n_mean, row.at("mean_speed"));
-      jc.add(label + " L10", L10, row.at("L10_revolutions"));
-      jc.add(label + " L10h", L10h, row.at("L10_hours"));
+      const std::string life = compareJoint(jc, sc, f, kind, row);
       if (std::string(kind) == "main_bearing" || (j == 1 && std::string(kind) == "guide_roller_front"))
-        lives += (lives.empty() ? "" : "; ") + label + ": P = " + g(P, 4) + " N, L10 = " + g(L10, 3) + " revolutions";
+        lives += (lives.empty() ? "" : "; ") + life;
     }
   }
   s.claim(jc.holds(), who + ": joint loads of every cart (mean, amplitude (max - min)/2, peak |F|, the "
                           "speed-weighted cubic mean P, mean speed n̄, L10 = (C/P)³·10⁶, L10h = L10/(n̄/2π·3600), the rod end's "
                           "L10h = L10·180°/(2γ)/(3600·f)) "
                           "from reactions.csv, e.g. " + lives + ": " + jc.sentence() + ".");
+}
+
+// The checks on one run of the scene: its CSV text and its summary.json, as a user gets them.
+void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, const std::string& ts_csv,
+              const std::string& rx_csv, const std::string& extrema_csv, const json& summary) {
+  RunFiles f{parseCsv(ts_csv), parseCsv(extrema_csv), rx_csv.empty() ? Csv{} : parseCsv(rx_csv), summary,
+             summary.at("sizing"), {}};
+  const int N = std::max(1, int(std::floor(sc.simulation.steady_window_revolutions)));
+  f.win = lastRevolutions(f.ts.col("t"), f.ts.col("phi_crank"), N);
+  f.b = f.win.b, f.e = f.win.e;
+  if (f.win.revolutions < 1 || f.e < f.b + 2) throw std::runtime_error(who + ": fewer than one whole crank revolution");
+  f.span = f.ts.col("t")[f.e - 1] - f.ts.col("t")[f.b];
+  const CrankSpeedByHand crank = checkWindow(s, who, f);
+  if (at(f.sz, {"motor"}).is_object()) checkMotor(s, sc, who, f, crank);
+  checkCouplingAndFlywheel(s, sc, who, f, crank);
+  if (!f.rx.names.empty()) checkJoints(s, sc, who, f);
 }
 
 }  // namespace

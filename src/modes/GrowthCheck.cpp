@@ -26,32 +26,21 @@ SteadyMotion orbitFrom(const Scene& scene, double phi0, int samples) {
   return steadyMotion(*drive, s, o);
 }
 
-}  // namespace
-
-GrowthMeasurement measureGrowth(const Scene& scene, int R, int spectrum_revolutions) {
-  GrowthMeasurement g;
-  if (scene.coupling.type != CouplingType::Elastic) {
-    g.failure = "needs an elastic coupling";
-    return g;
-  }
-  // 1. The steady motion and the angle where its twist rate changes sign.
-  SteadyMotion m = orbitFrom(scene, scene.initial.crank_angle, 360);
-  if (!m.found) {
-    g.failure = m.failure;
-    return g;
-  }
-  double phi_a = NAN, phi_b = NAN;
+// The two neighbouring sample angles of the steady motion between which its twist rate changes
+// sign; false where it never does.
+bool twistRateSignChange(const SteadyMotion& m, double& phi_a, double& phi_b) {
   for (size_t k = 1; k < m.samples.size(); ++k)
     if ((m.samples[k - 1].twist_rate < 0) != (m.samples[k].twist_rate < 0)) {
       phi_a = m.samples[k - 1].phi;
       phi_b = m.samples[k].phi;
-      break;
+      return true;
     }
-  if (!std::isfinite(phi_a)) {
-    g.failure = "the twist rate of the steady motion never changes sign";
-    return g;
-  }
-  // 2. Secant iterations on ψ̇(φ*) = 0 with the orbit re-found from each section.
+  return false;
+}
+
+// Secant iterations on ψ̇(φ*) = 0 with the orbit re-found from each section, from the angles
+// phi_a, phi_b; phi_b becomes the section angle φ*, the result the orbit from it.
+SteadyMotion orbitAtZeroTwistRate(const Scene& scene, double phi_a, double& phi_b) {
   SteadyMotion ma = orbitFrom(scene, phi_a, 0), mb = orbitFrom(scene, phi_b, 0);
   for (int it = 0; it < 8 && ma.found && mb.found; ++it) {
     const double fa = ma.x0(2), fb = mb.x0(2);
@@ -62,30 +51,28 @@ GrowthMeasurement measureGrowth(const Scene& scene, int R, int spectrum_revoluti
     phi_b = phi_c;
     mb = orbitFrom(scene, phi_b, 0);
   }
-  if (!mb.found) {
-    g.failure = mb.failure;
-    return g;
-  }
-  // The branch of the torsional frequency from the frozen-angle damped frequency's mean over the
-  // revolution (the first orbit's samples): one angle's is a poor reference where the inertia swings
-  // by 67 % (two carts: 23.0 rad/s = 2.47ω was predicted where the run shows order 3.5).
-  {
-    auto drive = makeReducedDrive(scene);
-    double sum = 0;
-    int n = 0;
-    for (const DrivePoint& q : m.samples) {
-      const double f = frozenModes(*drive, scene, q).oscillation_frequency();
-      if (std::isfinite(f)) {
-        sum += f;
-        ++n;
-      }
+  return mb;
+}
+
+// The branch of the torsional frequency from the frozen-angle damped frequency's mean over the
+// revolution (the first orbit's samples): one angle's is a poor reference where the inertia swings
+// by 67 % (two carts: 23.0 rad/s = 2.47ω was predicted where the run shows order 3.5).
+void rebranchByFrozenMean(const Scene& scene, const SteadyMotion& first, SteadyMotion& mb) {
+  auto drive = makeReducedDrive(scene);
+  double sum = 0;
+  int n = 0;
+  for (const DrivePoint& q : first.samples) {
+    const double f = frozenModes(*drive, scene, q).oscillation_frequency();
+    if (std::isfinite(f)) {
+      sum += f;
+      ++n;
     }
-    if (n) rebranch(mb, sum / n);
   }
-  g.start_angle = phi_b;
-  g.predicted_modulus = mb.verdict.max_modulus;
-  g.predicted_order = mb.verdict.torsional_frequency / mb.omega_mean;
-  // 3. The run from that state.
+  if (n) rebranch(mb, sum / n);
+}
+
+// The run of R revolutions from the steady motion's state at the section angle phi_b.
+RunResult runFromSection(const Scene& scene, const SteadyMotion& mb, double phi_b, int R, int spectrum_revolutions) {
   Scene s = scene;
   s.initial.crank_angle = phi_b;
   s.initial.crank_speed = mb.x0(0);
@@ -94,10 +81,13 @@ GrowthMeasurement measureGrowth(const Scene& scene, int R, int spectrum_revoluti
   s.simulation.output_step = mb.period / 720;
   s.simulation.accuracy = 1e-11;
   s.simulation.steady_window_revolutions = spectrum_revolutions;
-  const RunResult run = runReducedModel(s);
-  const std::vector<double> t = run.timeseries.column("t"), phi = run.timeseries.column("phi_crank"),
-                            psi = run.timeseries.column("twist");
-  // Twist at each return to φ* + 2πn.
+  return runReducedModel(s);
+}
+
+// The twist's departure from the steady motion's, |ψ - ψ*|, at each return to φ* + 2πn, n = 1 ... R.
+std::vector<double> departuresAtSection(const RunResult& run, double phi_b, double psi_steady, int R) {
+  const std::vector<double> phi = run.timeseries.column("phi_crank"), psi = run.timeseries.column("twist");
+  std::vector<double> deviation;
   size_t row = 1;
   for (int n = 1; n <= R; ++n) {
     const double target = phi_b + 2 * M_PI * n;
@@ -105,11 +95,16 @@ GrowthMeasurement measureGrowth(const Scene& scene, int R, int spectrum_revoluti
     if (row >= phi.size()) break;
     const double w = (target - phi[row - 1]) / (phi[row] - phi[row - 1]);
     const double psi_n = psi[row - 1] + w * (psi[row] - psi[row - 1]);
-    g.deviation.push_back(std::abs(psi_n - mb.x0(1)));
+    deviation.push_back(std::abs(psi_n - psi_steady));
   }
-  // 4. Growth per revolution: least squares on log|d_n| while the departure is small (< 1 % of the
-  // mean twist: linear), from the second revolution on.
-  const double limit = 0.01 * std::abs(mb.x0(1)) + 1e-12;
+  return deviation;
+}
+
+// Growth per revolution: least squares on log|d_n| while the departure is small (< 1 % of the
+// mean twist: linear), from the second revolution on. Sets g.measured_growth and
+// g.revolutions_fitted where at least three revolutions fit.
+void fitGrowth(double psi_steady, GrowthMeasurement& g) {
+  const double limit = 0.01 * std::abs(psi_steady) + 1e-12;
   std::vector<double> xs, ys;
   for (size_t n = 1; n < g.deviation.size(); ++n) {
     if (g.deviation[n] > limit) break;
@@ -118,36 +113,70 @@ GrowthMeasurement measureGrowth(const Scene& scene, int R, int spectrum_revoluti
       ys.push_back(std::log(g.deviation[n]));
     }
   }
-  if (xs.size() >= 3) {
-    double mx = 0, my = 0;
-    for (size_t i = 0; i < xs.size(); ++i) {
-      mx += xs[i];
-      my += ys[i];
-    }
-    mx /= xs.size();
-    my /= xs.size();
-    double sxy = 0, sxx = 0;
-    for (size_t i = 0; i < xs.size(); ++i) {
-      sxy += (xs[i] - mx) * (ys[i] - my);
-      sxx += (xs[i] - mx) * (xs[i] - mx);
-    }
-    g.measured_growth = std::exp(sxy / sxx);
-    g.revolutions_fitted = int(xs.size());
+  if (xs.size() < 3) return;
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < xs.size(); ++i) {
+    mx += xs[i];
+    my += ys[i];
   }
-  // 5. Spectrum of the last revolutions.
+  mx /= xs.size();
+  my /= xs.size();
+  double sxy = 0, sxx = 0;
+  for (size_t i = 0; i < xs.size(); ++i) {
+    sxy += (xs[i] - mx) * (ys[i] - my);
+    sxx += (xs[i] - mx) * (xs[i] - mx);
+  }
+  g.measured_growth = std::exp(sxy / sxx);
+  g.revolutions_fitted = int(xs.size());
+}
+
+// The order spectrum of the run's last revolutions, its strongest order of the twist off the
+// whole orders, and the whole orders' share.
+void addSpectrum(const RunResult& run, int spectrum_revolutions, GrowthMeasurement& g) {
   g.spectrum = orderSpectrum(run.timeseries, run.timeseries, {"coupling_torque", "twist"}, spectrum_revolutions, 64, 24);
   g.peak_order = NAN;
-  if (g.spectrum.ok && g.spectrum.signals.size() == 2) {
-    const std::vector<double>& a = g.spectrum.amplitude[1];
-    const int Rs = g.spectrum.revolutions;
-    double best = 0;
-    for (size_t b = 1; b < a.size(); ++b)
-      if (b % Rs != 0 && a[b] > best) {
-        best = a[b];
-        g.peak_order = g.spectrum.orders[b];
-      }
-    g.whole_order_share = g.spectrum.whole_order_share[1];
+  if (!g.spectrum.ok || g.spectrum.signals.size() != 2) return;
+  const std::vector<double>& a = g.spectrum.amplitude[1];
+  const int Rs = g.spectrum.revolutions;
+  double best = 0;
+  for (size_t b = 1; b < a.size(); ++b)
+    if (b % Rs != 0 && a[b] > best) {
+      best = a[b];
+      g.peak_order = g.spectrum.orders[b];
+    }
+  g.whole_order_share = g.spectrum.whole_order_share[1];
+}
+
+}  // namespace
+
+GrowthMeasurement measureGrowth(const Scene& scene, int R, int spectrum_revolutions) {
+  GrowthMeasurement g;
+  if (scene.coupling.type != CouplingType::Elastic) {
+    g.failure = "needs an elastic coupling";
+    return g;
   }
+  // 1. The steady motion and the angle where its twist rate changes sign.
+  const SteadyMotion m = orbitFrom(scene, scene.initial.crank_angle, 360);
+  double phi_a = NAN, phi_b = NAN;
+  if (!m.found || !twistRateSignChange(m, phi_a, phi_b)) {
+    g.failure = !m.found ? m.failure : "the twist rate of the steady motion never changes sign";
+    return g;
+  }
+  // 2. The orbit from the section where the twist rate is zero.
+  SteadyMotion mb = orbitAtZeroTwistRate(scene, phi_a, phi_b);
+  if (!mb.found) {
+    g.failure = mb.failure;
+    return g;
+  }
+  rebranchByFrozenMean(scene, m, mb);
+  g.start_angle = phi_b;
+  g.predicted_modulus = mb.verdict.max_modulus;
+  g.predicted_order = mb.verdict.torsional_frequency / mb.omega_mean;
+  // 3. The run from that state, 4. its growth per revolution, 5. its spectrum.
+  const RunResult run = runFromSection(scene, mb, phi_b, R, spectrum_revolutions);
+  g.deviation = departuresAtSection(run, phi_b, mb.x0(1), R);
+  fitGrowth(mb.x0(1), g);
+  addSpectrum(run, spectrum_revolutions, g);
   g.ok = run.stats.complete || !g.deviation.empty();
   if (!run.stats.complete) g.failure = run.stats.status;
   return g;

@@ -58,6 +58,176 @@ ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::v
   return m;
 }
 
+// The scene the linear analysis describes, and the approximations it makes. Linear modes know no
+// gap: with backlash they are those of the teeth always in contact.
+Scene linearizedScene(const Scene& given, ModesReport& r) {
+  Scene scene = given;
+  if (given.hasBacklash()) {
+    scene.reducer.backlash = 0.0;
+    char b[512];
+    std::snprintf(b, sizeof b,
+                  "the modes, Floquet multipliers and stability charts are those of the drive with the reducer's teeth "
+                  "always in contact (backlash %.4g rad taken as 0, contact stiffness c = %.4g N*m/rad); where the "
+                  "teeth separate in the run (summary.json backlash: teeth separate) the drive leaves this linear "
+                  "model at every parting and the resonance verdicts hold only between impacts",
+                  given.reducer.backlash, given.coupling.stiffness);
+    r.approximations.push_back({"permanent tooth contact", b});
+  }
+  r.chain = crankshaftChainModes(scene);
+  if (r.chain.applies)
+    r.approximations.push_back(
+        {"rigid crankshaft", "the modes, the Floquet analysis, the Campbell diagram and the coupling mode's "
+                             "separation margins take the crankshaft as one rigid body (crankshaft.torsional_stiffness "
+                             "is given: the chain's own modes are listed apart and get margins of their own, " +
+                             r.chain.approximations + ")"});
+  return scene;
+}
+
+// How the steady motion is searched, with the frozen-angle frequency at the expected running
+// speed as the Floquet frequency's reference (an elastic coupling's).
+SteadyMotionOptions steadyMotionOptions(DriveModel& reduced, const Scene& scene, const ModesOptions& o, bool elastic) {
+  SteadyMotionOptions so;
+  so.samples = o.angles;
+  so.max_newton = o.max_newton;
+  so.warmup_periods = o.warmup_periods;
+  DrivePoint p0;
+  p0.phi = scene.initial.crank_angle;
+  const SteadyGuess g = steadyGuess(scene);
+  p0.omega = g.ok ? g.omega : std::max(std::abs(scene.initial.crank_speed), 1.0);
+  p0.twist = g.twist;
+  so.reference_frequency = elastic ? frozenModes(reduced, scene, p0).oscillation_frequency() : 0.0;
+  return so;
+}
+
+// Without a steady motion: frozen-angle modes only at the speed the machine runs at, where the
+// motor's static curve carries the mean load. A speed that is not the running speed (the initial
+// speed, often 0) would give modes of a machine that does not exist. Empty (and said in the notes)
+// where there is no such speed.
+std::vector<DrivePoint> uniformRotationPoints(const Scene& scene, const ModesOptions& o, ModesReport& r) {
+  std::vector<DrivePoint> points;
+  const SteadyGuess g = steadyGuess(scene);
+  if (!g.ok) {
+    r.notes.push_back("no steady motion (" + r.steady.failure +
+                      "): the modal analysis is not applicable (no running speed to linearize about)");
+    return points;
+  }
+  char b[320];
+  std::snprintf(b, sizeof b,
+                "no steady motion (%s): no Floquet analysis; frozen-angle modes at uniform rotation at "
+                "omega = %.4g rad/s instead, where the motor's static curve carries the mean load torque "
+                "%.4g N*m (an estimate of the running speed)",
+                r.steady.failure.c_str(), g.omega, g.mean_load_torque);
+  r.notes.push_back(b);
+  r.fallback_omega = g.omega;
+  for (int k = 0; k < o.angles; ++k) {
+    DrivePoint p;
+    p.phi = scene.initial.crank_angle + 2 * M_PI * k / o.angles;
+    p.omega = g.omega;
+    p.twist = g.twist;
+    points.push_back(p);
+  }
+  return points;
+}
+
+// The multibody model's frozen-angle modes along the same points, their largest difference from
+// the reduced model's, and (o.multibody_floquet) its own steady motion and Floquet multipliers,
+// started from the reduced model's.
+void addMultibodyModes(const Scene& scene, const ModesOptions& o, const SteadyMotionOptions& so,
+                       const std::vector<DrivePoint>& points, double branch_reference, ModesReport& r) {
+  try {
+    auto mb = makeMultibodyDrive(scene);
+    r.frozen.push_back(frozenAlong(*mb, scene, points));
+    if (r.elastic) {
+      double d = 0;
+      for (size_t i = 0; i < points.size(); ++i) {
+        const double a = r.frozen[0].angles[i].torsional_frequency(), b = r.frozen[1].angles[i].torsional_frequency();
+        if (std::isfinite(a) && std::isfinite(b)) d = std::max(d, std::abs(a - b) / a);
+      }
+      r.model_difference = d;
+    }
+    markPhase(o.clock, "modes: frozen-angle modes (multibody)");
+    if (o.multibody_floquet && r.steady.found) {
+      SteadyMotionOptions mo = so;
+      mo.samples = 0;
+      mo.rtol = 1e-8;
+      mo.start = r.steady.x0;
+      mo.warmup_periods = 0;
+      mo.reference_frequency = r.elastic ? branch_reference : 0.0;
+      r.steady_multibody = steadyMotion(*mb, scene, mo);
+      r.has_multibody_steady = true;
+      markPhase(o.clock, "modes: steady motion and Floquet (multibody)");
+    }
+  } catch (const std::exception& e) {
+    ModelFrozenModes m;
+    m.model = "multibody";
+    m.failure = e.what();
+    r.frozen.push_back(m);
+  }
+}
+
+// The Campbell diagram over the speed range, with the orders that can reach the modes.
+void addCampbellDiagram(const Scene& scene, const ModesOptions& o, double w_op, ModesReport& r) {
+  if (!(o.campbell && r.elastic && r.steady.found)) {
+    if (o.campbell) r.campbell.note = !r.elastic ? "rigid coupling: the drive has no torsional mode" : "no steady motion";
+    return;
+  }
+  std::vector<int> orders;
+  const double p_top = 1.3 * std::max(r.frozen[0].torsional.max, r.two_mass.p0);
+  for (int k : r.orders.all)
+    if (0.5 * k * o.speed_low * w_op <= p_top) orders.push_back(k);
+  r.campbell = campbellDiagram(scene, w_op, linearGrid(o.speed_low * w_op, o.speed_high * w_op, o.speeds), orders,
+                               36);
+  int failed = 0;
+  std::string first;
+  for (const CampbellPoint& p : r.campbell.points)
+    if (!p.found && failed++ == 0) first = p.failure;
+  if (!r.campbell.note.empty()) r.notes.push_back("Campbell diagram: " + r.campbell.note);
+  if (failed)
+    r.notes.push_back("Campbell diagram: no steady motion at " + std::to_string(failed) + " of " +
+                      std::to_string(r.campbell.points.size()) + " speeds (" + first + ")");
+}
+
+// The coupling mode's separation margins from the excitation orders, and the crankshaft chain's.
+void addSeparationMargins(const Scene& scene, ModesReport& r) {
+  const Band none;
+  r.separation = separationMargins(r.elastic, r.steady, r.frozen.empty() ? none : r.frozen[0].torsional_natural,
+                                   r.frozen.empty() ? none : r.frozen[0].torsional,
+                                   r.frozen.empty() ? none : r.frozen[0].torsional_damping, r.orders, r.campbell);
+  if (r.chain.applies && r.steady.found && r.steady.omega_mean > 0) {
+    // The throws' orders up to 1.3 times the chain's highest mode (at least the layout's 24).
+    double p_top = 0;
+    for (const ChainModeBand& b : r.chain.modes) p_top = std::max(p_top, b.p_max);
+    const int orders = std::clamp(int(std::ceil(1.3 * p_top / r.steady.omega_mean)), 24, 400);
+    addChainSeparation(r.separation, r.chain, r.elastic, r.steady,
+                       throwOrderShares(scene, r.steady.omega_mean, orders));
+  }
+}
+
+// The stability charts over stiffness and speed (one per damping) and over stiffness and damping.
+void addStabilityCharts(const Scene& scene, const ModesOptions& o, double w_op, ModesReport& r) {
+  double c_ref = scene.coupling.stiffness;
+  if (!r.elastic) {  // the stiffness that would put the two-mass p0 at 6ω
+    const double J1 = r.two_mass.J1, J2 = r.two_mass.J2_mean, p = 6 * w_op;
+    c_ref = p * p * J1 * J2 / (J1 + J2);
+    r.notes.push_back("rigid coupling: the stability charts show what an elastic coupling of stiffness c would do");
+  }
+  const std::vector<double> c = geometricGrid(o.c_low * c_ref, o.c_high * c_ref, o.chart_c);
+  std::vector<double> dampings = o.chart_dampings;
+  if (dampings.empty()) dampings.push_back(r.elastic ? scene.coupling.damping : 0.0);
+  for (double k : dampings)
+    r.charts.push_back(chartOverSpeed(scene, w_op,
+                                      c, linearGrid(o.chart_speed_low * w_op, o.chart_speed_high * w_op, o.chart_y), k));
+  double k_top = o.damping_high;
+  if (!(k_top > 0)) {
+    k_top = std::max(1000.0, r.elastic ? scene.coupling.damping : 0.0);
+    for (double k : o.marked_dampings) k_top = std::max(k_top, k);
+    k_top *= 2;
+  }
+  r.charts.push_back(chartOverDamping(scene, w_op, c, linearGrid(0.0, k_top, o.chart_y)));
+  r.charts.back().marked = o.marked_dampings;
+  if (!r.elastic) r.charts.back().operating_y = NAN;
+}
+
 }  // namespace
 
 TwoMassEstimate twoMassEstimate(const Scene& scene) {
@@ -79,78 +249,24 @@ TwoMassEstimate twoMassEstimate(const Scene& scene) {
 ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   const std::clock_t c0 = std::clock();
   ModesReport r;
-  // Linear modes know no gap: with backlash they are those of the teeth always in contact.
-  Scene scene = given;
-  if (given.hasBacklash()) {
-    scene.reducer.backlash = 0.0;
-    char b[512];
-    std::snprintf(b, sizeof b,
-                  "the modes, Floquet multipliers and stability charts are those of the drive with the reducer's teeth "
-                  "always in contact (backlash %.4g rad taken as 0, contact stiffness c = %.4g N*m/rad); where the "
-                  "teeth separate in the run (summary.json backlash: teeth separate) the drive leaves this linear "
-                  "model at every parting and the resonance verdicts hold only between impacts",
-                  given.reducer.backlash, given.coupling.stiffness);
-    r.approximations.push_back({"permanent tooth contact", b});
-  }
-  r.chain = crankshaftChainModes(scene);
-  if (r.chain.applies)
-    r.approximations.push_back(
-        {"rigid crankshaft", "the modes, the Floquet analysis, the Campbell diagram and the coupling mode's "
-                             "separation margins take the crankshaft as one rigid body (crankshaft.torsional_stiffness "
-                             "is given: the chain's own modes are listed apart and get margins of their own, " +
-                             r.chain.approximations + ")"});
-
+  const Scene scene = linearizedScene(given, r);
   r.scene = scene.name;
   r.elastic = scene.coupling.type == CouplingType::Elastic;
   r.motor = scene.motor.enabled;
   const ReducedModel rm(scene);
   markPhase(o.clock, "modes: set-up");
-
   // First estimate: two constant inertias (Dyomin (two rotors) eq. (10)).
   r.two_mass = twoMassEstimate(scene);
 
   // 1. Steady motion (reduced model) and its Floquet multipliers.
   auto reduced = makeReducedDrive(scene);
-  SteadyMotionOptions so;
-  so.samples = o.angles;
-  so.max_newton = o.max_newton;
-  so.warmup_periods = o.warmup_periods;
-  {
-    DrivePoint p0;
-    p0.phi = scene.initial.crank_angle;
-    const SteadyGuess g = steadyGuess(scene);
-    p0.omega = g.ok ? g.omega : std::max(std::abs(scene.initial.crank_speed), 1.0);
-    p0.twist = g.twist;
-    so.reference_frequency = r.elastic ? frozenModes(*reduced, scene, p0).oscillation_frequency() : 0.0;
-  }
+  const SteadyMotionOptions so = steadyMotionOptions(*reduced, scene, o, r.elastic);
   r.steady = steadyMotion(*reduced, scene, so);
   markPhase(o.clock, "modes: steady motion and Floquet (reduced)");
   std::vector<DrivePoint> points = r.steady.samples;
   if (!r.steady.found) {
-    // Frozen-angle modes only at the speed the machine runs at: where the motor's static curve
-    // carries the mean load. A speed that is not the running speed (the initial speed, often 0)
-    // would give modes of a machine that does not exist.
-    const SteadyGuess g = steadyGuess(scene);
-    if (g.ok) {
-      char b[320];
-      std::snprintf(b, sizeof b,
-                    "no steady motion (%s): no Floquet analysis; frozen-angle modes at uniform rotation at "
-                    "omega = %.4g rad/s instead, where the motor's static curve carries the mean load torque "
-                    "%.4g N*m (an estimate of the running speed)",
-                    r.steady.failure.c_str(), g.omega, g.mean_load_torque);
-      r.notes.push_back(b);
-      r.fallback_omega = g.omega;
-      for (int k = 0; k < o.angles; ++k) {
-        DrivePoint p;
-        p.phi = scene.initial.crank_angle + 2 * M_PI * k / o.angles;
-        p.omega = g.omega;
-        p.twist = g.twist;
-        points.push_back(p);
-      }
-    } else {
-      r.notes.push_back("no steady motion (" + r.steady.failure +
-                        "): the modal analysis is not applicable (no running speed to linearize about)");
-    }
+    const std::vector<DrivePoint> uniform = uniformRotationPoints(scene, o, r);
+    points.insert(points.end(), uniform.begin(), uniform.end());
   }
 
   // 2. Frozen-angle modes, both models.
@@ -163,101 +279,18 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   const double branch_reference = std::isfinite(r.frozen[0].oscillation_damped.mean) ? r.frozen[0].oscillation_damped.mean
                                                                                     : r.frozen[0].torsional.mean;
   if (r.elastic && r.steady.found) rebranch(r.steady, branch_reference);  // with the frozen mean
-  if (o.multibody) {
-    try {
-      auto mb = makeMultibodyDrive(scene);
-      r.frozen.push_back(frozenAlong(*mb, scene, points));
-      if (r.elastic) {
-        double d = 0;
-        for (size_t i = 0; i < points.size(); ++i) {
-          const double a = r.frozen[0].angles[i].torsional_frequency(), b = r.frozen[1].angles[i].torsional_frequency();
-          if (std::isfinite(a) && std::isfinite(b)) d = std::max(d, std::abs(a - b) / a);
-        }
-        r.model_difference = d;
-      }
-      markPhase(o.clock, "modes: frozen-angle modes (multibody)");
-      if (o.multibody_floquet && r.steady.found) {
-        SteadyMotionOptions mo = so;
-        mo.samples = 0;
-        mo.rtol = 1e-8;
-        mo.start = r.steady.x0;
-        mo.warmup_periods = 0;
-        mo.reference_frequency = r.elastic ? branch_reference : 0.0;
-        r.steady_multibody = steadyMotion(*mb, scene, mo);
-        r.has_multibody_steady = true;
-        markPhase(o.clock, "modes: steady motion and Floquet (multibody)");
-      }
-    } catch (const std::exception& e) {
-      ModelFrozenModes m;
-      m.model = "multibody";
-      m.failure = e.what();
-      r.frozen.push_back(m);
-    }
-  }
+  if (o.multibody) addMultibodyModes(scene, o, so, points, branch_reference, r);
 
   // 3. Excitation orders at the operating speed.
   const double w_op = r.steady.found ? r.steady.omega_mean : (points.empty() ? 1.0 : points[0].omega);
   r.orders = excitationOrders(scene, w_op);
   markPhase(o.clock, "modes: excitation orders");
-
   // 4. Campbell diagram.
-  if (o.campbell && r.elastic && r.steady.found) {
-    std::vector<int> orders;
-    const double p_top = 1.3 * std::max(r.frozen[0].torsional.max, r.two_mass.p0);
-    for (int k : r.orders.all)
-      if (0.5 * k * o.speed_low * w_op <= p_top) orders.push_back(k);
-    r.campbell = campbellDiagram(scene, w_op, linearGrid(o.speed_low * w_op, o.speed_high * w_op, o.speeds), orders,
-                                 36);
-    int failed = 0;
-    std::string first;
-    for (const CampbellPoint& p : r.campbell.points)
-      if (!p.found && failed++ == 0) first = p.failure;
-    if (!r.campbell.note.empty()) r.notes.push_back("Campbell diagram: " + r.campbell.note);
-    if (failed)
-      r.notes.push_back("Campbell diagram: no steady motion at " + std::to_string(failed) + " of " +
-                        std::to_string(r.campbell.points.size()) + " speeds (" + first + ")");
-  } else if (o.campbell) {
-    r.campbell.note = !r.elastic ? "rigid coupling: the drive has no torsional mode" : "no steady motion";
-  }
+  addCampbellDiagram(scene, o, w_op, r);
   markPhase(o.clock, "modes: Campbell diagram");
-
-  const Band none;
-  r.separation = separationMargins(r.elastic, r.steady, r.frozen.empty() ? none : r.frozen[0].torsional_natural,
-                                   r.frozen.empty() ? none : r.frozen[0].torsional,
-                                   r.frozen.empty() ? none : r.frozen[0].torsional_damping, r.orders, r.campbell);
-  if (r.chain.applies && r.steady.found && r.steady.omega_mean > 0) {
-    // The throws' orders up to 1.3 times the chain's highest mode (at least the layout's 24).
-    double p_top = 0;
-    for (const ChainModeBand& b : r.chain.modes) p_top = std::max(p_top, b.p_max);
-    const int orders = std::clamp(int(std::ceil(1.3 * p_top / r.steady.omega_mean)), 24, 400);
-    addChainSeparation(r.separation, r.chain, r.elastic, r.steady,
-                       throwOrderShares(scene, r.steady.omega_mean, orders));
-  }
-
+  addSeparationMargins(scene, r);
   // 5. Stability charts.
-  if (o.charts && r.steady.found) {
-    double c_ref = scene.coupling.stiffness;
-    if (!r.elastic) {  // the stiffness that would put the two-mass p0 at 6ω
-      const double J1 = r.two_mass.J1, J2 = r.two_mass.J2_mean, p = 6 * w_op;
-      c_ref = p * p * J1 * J2 / (J1 + J2);
-      r.notes.push_back("rigid coupling: the stability charts show what an elastic coupling of stiffness c would do");
-    }
-    const std::vector<double> c = geometricGrid(o.c_low * c_ref, o.c_high * c_ref, o.chart_c);
-    std::vector<double> dampings = o.chart_dampings;
-    if (dampings.empty()) dampings.push_back(r.elastic ? scene.coupling.damping : 0.0);
-    for (double k : dampings)
-      r.charts.push_back(chartOverSpeed(scene, w_op,
-                                        c, linearGrid(o.chart_speed_low * w_op, o.chart_speed_high * w_op, o.chart_y), k));
-    double k_top = o.damping_high;
-    if (!(k_top > 0)) {
-      k_top = std::max(1000.0, r.elastic ? scene.coupling.damping : 0.0);
-      for (double k : o.marked_dampings) k_top = std::max(k_top, k);
-      k_top *= 2;
-    }
-    r.charts.push_back(chartOverDamping(scene, w_op, c, linearGrid(0.0, k_top, o.chart_y)));
-    r.charts.back().marked = o.marked_dampings;
-    if (!r.elastic) r.charts.back().operating_y = NAN;
-  }
+  if (o.charts && r.steady.found) addStabilityCharts(scene, o, w_op, r);
   markPhase(o.clock, "modes: stability charts");
   r.warnings = modalWarnings(r);
   r.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;

@@ -90,6 +90,191 @@ std::string separationHtml(const SeparationMargins& sep) {
   return h.str();
 }
 
+// Frozen-angle frequencies over the crank angle, both models, with the two-mass first estimate
+// and the Floquet frequency.
+void addFrozenFrequenciesFigure(const ModesReport& r, const std::string& dir, std::vector<PlotJob>& jobs,
+                                FigureSet& set) {
+  PlotSpec s;
+  s.title = "Frozen-angle torsional natural frequency over one crank revolution";
+  s.xlabel = "crank angle φ_2 [deg]";
+  s.ylabel = "p [rad/s]";
+  const char* colors[] = {"#1f77b4", "#d62728"};
+  for (size_t m = 0; m < r.frozen.size(); ++m) {
+    if (!r.frozen[m].ok) continue;
+    PlotSeries line;
+    line.title = r.frozen[m].model + " model";
+    line.color = colors[m % 2];
+    line.dash = m ? 2 : 0;
+    line.line_width = 2;
+    for (const FrozenAngle& a : r.frozen[m].angles) {
+      line.x.push_back(std::fmod(a.point.phi, 2 * M_PI) * 180 / M_PI);
+      line.y.push_back(a.torsional_frequency());
+    }
+    s.series.push_back(line);
+  }
+  PlotSeries est;
+  est.title = "first estimate: two constant inertias (Dyomin p_0)";
+  est.color = "#7f7f7f";
+  est.dash = 3;
+  est.x = {0, 360};
+  est.y = {r.two_mass.p0, r.two_mass.p0};
+  s.series.push_back(est);
+  if (r.steady.found && r.steady.verdict.has_torsional && r.steady.verdict.torsional_resolved) {
+    PlotSeries fl;
+    fl.title = "Floquet frequency of the steady motion";
+    fl.color = "#2ca02c";
+    fl.x = {0, 360};
+    fl.y = {r.steady.verdict.torsional_frequency, r.steady.verdict.torsional_frequency};
+    s.series.push_back(fl);
+  }
+  s.preamble = "set xrange [0:360]\nset xtics 45\nset key inside bottom right";
+  jobs.push_back(plotJob(s, dir + "/frozen_frequencies"));
+  set.figures.push_back(fileOf(dir, "frozen_frequencies",
+                               "Torsional natural frequency of the drive with the crank angle frozen, along the "
+                               "steady motion: both models, the two-mass first estimate and the Floquet frequency."));
+}
+
+// The Campbell diagram's curves over the speeds where a steady motion was found: the frozen-angle
+// mean and band, the Floquet frequency; `wmax`, `fmax`: the largest speed and frozen frequency.
+std::vector<PlotSeries> campbellCurves(const CampbellDiagram& campbell, double& wmax, double& fmax) {
+  PlotSeries mean, lo, hi, fl;
+  mean.title = "p, frozen-angle mean";
+  mean.color = "#1f77b4";
+  mean.line_width = 2.5;
+  lo.title = "p band over the crank angle";
+  lo.color = hi.color = "#1f77b4";
+  lo.dash = hi.dash = 2;
+  hi.title = "";
+  fl.title = "Floquet frequency";
+  fl.color = "#2ca02c";
+  fl.style = "linespoints";
+  wmax = 0, fmax = 0;
+  for (const CampbellPoint& p : campbell.points) {
+    if (!p.found) continue;
+    mean.x.push_back(p.omega_mean);
+    mean.y.push_back(p.frozen.mean);
+    lo.x.push_back(p.omega_mean);
+    lo.y.push_back(p.frozen.min);
+    hi.x.push_back(p.omega_mean);
+    hi.y.push_back(p.frozen.max);
+    fl.x.push_back(p.omega_mean);
+    fl.y.push_back(p.floquet_frequency);
+    wmax = std::max(wmax, p.omega_mean);
+    fmax = std::max(fmax, p.frozen.max);
+  }
+  return {mean, lo, hi, fl};
+}
+
+// The order lines k·ω (forced resonance) and k·ω/2 (principal parametric resonance) up to wmax.
+void addOrderLines(const std::vector<int>& orders, double wmax, std::vector<PlotSeries>& series) {
+  for (int k : orders) {
+    PlotSeries o;
+    o.title = "";
+    o.color = "#bbbbbb";
+    o.x = {0, wmax};
+    o.y = {0, k * wmax};
+    series.push_back(o);
+    PlotSeries h = o;
+    h.dash = 3;
+    h.color = "#e8a0a0";
+    h.y = {0, 0.5 * k * wmax};
+    series.push_back(h);
+  }
+}
+
+// The Campbell diagram's ranges, order labels, operating speed and separation margins (gnuplot).
+std::string campbellPreamble(const ModesReport& r, double wmax, double fmax) {
+  std::ostringstream pre;
+  pre << "set xrange [0:" << wmax << "]\nset yrange [0:" << 1.3 * fmax << "]\nset key inside top left\n";
+  for (int k : r.campbell.orders)
+    if (k * wmax * 0.9 < 1.3 * fmax)
+      pre << "set label '" << k << "ω' at " << 0.9 * wmax << "," << 0.9 * k * wmax << " tc rgb '#888888'\n";
+  if (r.steady.found)
+    pre << "set arrow from " << r.steady.omega_mean << ",graph 0 to " << r.steady.omega_mean
+        << ",graph 1 nohead dt 2 lc rgb 'black'\nset label 'operating speed' at " << r.steady.omega_mean
+        << ",graph 0.97 left offset 0.5,0\n";
+  pre << separationShading(r.separation, wmax);
+  return pre.str();
+}
+
+void addCampbellFigure(const ModesReport& r, const std::string& dir, std::vector<PlotJob>& jobs, FigureSet& set) {
+  PlotSpec s;
+  s.title = "Campbell diagram: torsional frequency against the orders of the crank speed";
+  s.xlabel = "mean crank speed ω [rad/s]";
+  s.ylabel = "frequency [rad/s]";
+  double wmax = 0, fmax = 0;
+  s.series = campbellCurves(r.campbell, wmax, fmax);
+  addOrderLines(r.campbell.orders, wmax, s.series);
+  s.preamble = campbellPreamble(r, wmax, fmax);
+  jobs.push_back(plotJob(s, dir + "/campbell"));
+  set.figures.push_back(fileOf(dir, "campbell",
+                               "Campbell diagram: solid grey lines k·ω (forced resonance where the torsional "
+                               "frequency meets them), dotted red lines k·ω/2 (principal parametric resonance, "
+                               "2p = k·ω), for the orders k that excite this layout; crank speed varied as by a "
+                               "frequency converter. Shaded: the band within 10 % of k·ω for each order k that "
+                               "drives the coupling mode (the separation margin of API 617 / API 684 practice), "
+                               "red where the mode's natural frequency at the operating speed (the vertical bar, "
+                               "ω_n of the damped pair) lies inside it (FAIL), green where it stays outside (pass)."));
+}
+
+// A stability chart's axes, the scene's point, marked dampings and unstable zones (gnuplot);
+// `x`: log10 of the chart's stiffnesses.
+std::string stabilityChartPreamble(const StabilityChart& c, const std::vector<double>& x) {
+  std::ostringstream pre;
+  pre << "set xtics (";
+  bool first = true;
+  for (int e = int(std::floor(x.front())); e <= int(std::ceil(x.back())); ++e) {
+    pre << (first ? "" : ", ") << "'10^{" << e << "}' " << e;
+    first = false;
+  }
+  pre << ")\nset cbrange [*:1]\n";
+  if (x.size() > 1 && c.y.size() > 1) {  // the grid's cells, no padding around them
+    const double dx = (x.back() - x.front()) / (x.size() - 1), dy = (c.y.back() - c.y.front()) / (c.y.size() - 1);
+    pre << "set xrange [" << x.front() - dx / 2 << ":" << x.back() + dx / 2 << "]\nset yrange ["
+        << c.y.front() - dy / 2 << ":" << c.y.back() + dy / 2 << "]\n";
+  }
+  if (std::isfinite(c.operating_c) && std::isfinite(c.operating_y))
+    pre << "set label 1 '' at " << std::log10(c.operating_c) << "," << c.operating_y
+        << " point pt 7 ps 2.5 lc rgb 'white' front\nset label 2 'scene' at " << std::log10(c.operating_c) << ","
+        << c.operating_y << " offset 1.2,0.8 tc rgb 'white' front\n";
+  int label = 10;
+  for (double m : c.marked)  // e.g. a paper's dampings: a dashed line across the chart
+    pre << "set arrow from graph 0, first " << m << " to graph 1, first " << m
+        << " nohead dt 2 lw 2 lc rgb 'white' front\nset label " << label++ << " '" << c.y_key_label() << " = " << g(m)
+        << "' at graph 0.02, first " << m << " offset 0,0.6 tc rgb 'white' front\n";
+  for (const StabilityZone& zz : c.zones)
+    pre << "set object rect from " << std::log10(zz.c_min) << "," << zz.y_min << " to " << std::log10(zz.c_max)
+        << "," << zz.y_max << " fs empty border lc rgb 'white' lw 2 front\n";
+  return pre.str();
+}
+
+// The n-th stability chart (from 0) as a heat map of log10 of the largest Floquet multiplier.
+void addStabilityChartFigure(const StabilityChart& c, size_t n, const std::string& dir, std::vector<PlotJob>& jobs,
+                             FigureSet& set) {
+  std::vector<double> x;
+  for (double v : c.c) x.push_back(std::log10(v));
+  std::vector<std::vector<double>> z;
+  for (const auto& row : c.grid) {
+    std::vector<double> zr;
+    for (const StabilityPoint& p : row) zr.push_back(p.found ? std::log10(std::max(p.max_modulus, 1e-12)) : NAN);
+    z.push_back(zr);
+  }
+  const std::string title =
+      c.y_key == "omega" ? "Stability of the steady motion: largest Floquet multiplier, k = " + g(c.fixed_damping) +
+                               " N·m·s/rad"
+                         : "Stability of the steady motion: largest Floquet multiplier, ω = " + g(c.fixed_speed) +
+                               " rad/s";
+  const std::string name = "stability_" + std::to_string(n + 1);
+  jobs.push_back(heatMapJob(title, "coupling stiffness c [N·m/rad] (log scale)",
+                            c.y_key == "omega" ? "mean crank speed ω [rad/s]" : "coupling damping k [N·m·s/rad]",
+                            "log_{10} max|μ| per revolution (> 0: unstable)", x, c.y, z, dir + "/" + name, true,
+                            true, stabilityChartPreamble(c, x)));
+  set.figures.push_back(fileOf(dir, name,
+                               "Stability chart from the Floquet multipliers of the steady motion (reduced model): "
+                               "colour = log10 of the largest multiplier modulus per crank revolution (0 and above: "
+                               "unstable; white boxes: unstable zones); white dot: the scene."));
+}
+
 }  // namespace
 
 FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
@@ -99,166 +284,11 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
     set.notes.push_back("gnuplot not found (Debian package gnuplot-nox): no figures of the torsional modes");
     return set;
   }
-  // Frozen-angle frequencies over the crank angle, both models.
-  if (r.elastic && !r.frozen.empty()) {
-    PlotSpec s;
-    s.title = "Frozen-angle torsional natural frequency over one crank revolution";
-    s.xlabel = "crank angle φ_2 [deg]";
-    s.ylabel = "p [rad/s]";
-    const char* colors[] = {"#1f77b4", "#d62728"};
-    for (size_t m = 0; m < r.frozen.size(); ++m) {
-      if (!r.frozen[m].ok) continue;
-      PlotSeries line;
-      line.title = r.frozen[m].model + " model";
-      line.color = colors[m % 2];
-      line.dash = m ? 2 : 0;
-      line.line_width = 2;
-      for (const FrozenAngle& a : r.frozen[m].angles) {
-        line.x.push_back(std::fmod(a.point.phi, 2 * M_PI) * 180 / M_PI);
-        line.y.push_back(a.torsional_frequency());
-      }
-      s.series.push_back(line);
-    }
-    PlotSeries est;
-    est.title = "first estimate: two constant inertias (Dyomin p_0)";
-    est.color = "#7f7f7f";
-    est.dash = 3;
-    est.x = {0, 360};
-    est.y = {r.two_mass.p0, r.two_mass.p0};
-    s.series.push_back(est);
-    if (r.steady.found && r.steady.verdict.has_torsional && r.steady.verdict.torsional_resolved) {
-      PlotSeries fl;
-      fl.title = "Floquet frequency of the steady motion";
-      fl.color = "#2ca02c";
-      fl.x = {0, 360};
-      fl.y = {r.steady.verdict.torsional_frequency, r.steady.verdict.torsional_frequency};
-      s.series.push_back(fl);
-    }
-    s.preamble = "set xrange [0:360]\nset xtics 45\nset key inside bottom right";
-    jobs.push_back(plotJob(s, dir + "/frozen_frequencies"));
-    set.figures.push_back(fileOf(dir, "frozen_frequencies",
-                                 "Torsional natural frequency of the drive with the crank angle frozen, along the "
-                                 "steady motion: both models, the two-mass first estimate and the Floquet frequency."));
-  }
-  // Campbell diagram.
+  if (r.elastic && !r.frozen.empty()) addFrozenFrequenciesFigure(r, dir, jobs, set);
   int campbell_found = 0;
   for (const CampbellPoint& p : r.campbell.points) campbell_found += p.found;
-  if (r.campbell.applicable && campbell_found >= 2) {
-    PlotSpec s;
-    s.title = "Campbell diagram: torsional frequency against the orders of the crank speed";
-    s.xlabel = "mean crank speed ω [rad/s]";
-    s.ylabel = "frequency [rad/s]";
-    PlotSeries mean, lo, hi, fl;
-    mean.title = "p, frozen-angle mean";
-    mean.color = "#1f77b4";
-    mean.line_width = 2.5;
-    lo.title = "p band over the crank angle";
-    lo.color = hi.color = "#1f77b4";
-    lo.dash = hi.dash = 2;
-    hi.title = "";
-    fl.title = "Floquet frequency";
-    fl.color = "#2ca02c";
-    fl.style = "linespoints";
-    double wmax = 0, fmax = 0;
-    for (const CampbellPoint& p : r.campbell.points) {
-      if (!p.found) continue;
-      mean.x.push_back(p.omega_mean);
-      mean.y.push_back(p.frozen.mean);
-      lo.x.push_back(p.omega_mean);
-      lo.y.push_back(p.frozen.min);
-      hi.x.push_back(p.omega_mean);
-      hi.y.push_back(p.frozen.max);
-      fl.x.push_back(p.omega_mean);
-      fl.y.push_back(p.floquet_frequency);
-      wmax = std::max(wmax, p.omega_mean);
-      fmax = std::max(fmax, p.frozen.max);
-    }
-    s.series = {mean, lo, hi, fl};
-    for (int k : r.campbell.orders) {
-      PlotSeries o;
-      o.title = "";
-      o.color = "#bbbbbb";
-      o.x = {0, wmax};
-      o.y = {0, k * wmax};
-      s.series.push_back(o);
-      PlotSeries h = o;
-      h.dash = 3;
-      h.color = "#e8a0a0";
-      h.y = {0, 0.5 * k * wmax};
-      s.series.push_back(h);
-    }
-    std::ostringstream pre;
-    pre << "set xrange [0:" << wmax << "]\nset yrange [0:" << 1.3 * fmax << "]\nset key inside top left\n";
-    for (int k : r.campbell.orders)
-      if (k * wmax * 0.9 < 1.3 * fmax)
-        pre << "set label '" << k << "ω' at " << 0.9 * wmax << "," << 0.9 * k * wmax << " tc rgb '#888888'\n";
-    if (r.steady.found)
-      pre << "set arrow from " << r.steady.omega_mean << ",graph 0 to " << r.steady.omega_mean
-          << ",graph 1 nohead dt 2 lc rgb 'black'\nset label 'operating speed' at " << r.steady.omega_mean
-          << ",graph 0.97 left offset 0.5,0\n";
-    pre << separationShading(r.separation, wmax);
-    s.preamble = pre.str();
-    jobs.push_back(plotJob(s, dir + "/campbell"));
-    set.figures.push_back(fileOf(dir, "campbell",
-                                 "Campbell diagram: solid grey lines k·ω (forced resonance where the torsional "
-                                 "frequency meets them), dotted red lines k·ω/2 (principal parametric resonance, "
-                                 "2p = k·ω), for the orders k that excite this layout; crank speed varied as by a "
-                                 "frequency converter. Shaded: the band within 10 % of k·ω for each order k that "
-                                 "drives the coupling mode (the separation margin of API 617 / API 684 practice), "
-                                 "red where the mode's natural frequency at the operating speed (the vertical bar, "
-                                 "ω_n of the damped pair) lies inside it (FAIL), green where it stays outside (pass)."));
-  }
-  // Stability charts.
-  for (size_t n = 0; n < r.charts.size(); ++n) {
-    const StabilityChart& c = r.charts[n];
-    std::vector<double> x;
-    for (double v : c.c) x.push_back(std::log10(v));
-    std::vector<std::vector<double>> z;
-    for (const auto& row : c.grid) {
-      std::vector<double> zr;
-      for (const StabilityPoint& p : row) zr.push_back(p.found ? std::log10(std::max(p.max_modulus, 1e-12)) : NAN);
-      z.push_back(zr);
-    }
-    std::ostringstream pre;
-    pre << "set xtics (";
-    bool first = true;
-    for (int e = int(std::floor(x.front())); e <= int(std::ceil(x.back())); ++e) {
-      pre << (first ? "" : ", ") << "'10^{" << e << "}' " << e;
-      first = false;
-    }
-    pre << ")\nset cbrange [*:1]\n";
-    if (x.size() > 1 && c.y.size() > 1) {  // the grid's cells, no padding around them
-      const double dx = (x.back() - x.front()) / (x.size() - 1), dy = (c.y.back() - c.y.front()) / (c.y.size() - 1);
-      pre << "set xrange [" << x.front() - dx / 2 << ":" << x.back() + dx / 2 << "]\nset yrange ["
-          << c.y.front() - dy / 2 << ":" << c.y.back() + dy / 2 << "]\n";
-    }
-    if (std::isfinite(c.operating_c) && std::isfinite(c.operating_y))
-      pre << "set label 1 '' at " << std::log10(c.operating_c) << "," << c.operating_y
-          << " point pt 7 ps 2.5 lc rgb 'white' front\nset label 2 'scene' at " << std::log10(c.operating_c) << ","
-          << c.operating_y << " offset 1.2,0.8 tc rgb 'white' front\n";
-    int label = 10;
-    for (double m : c.marked)  // e.g. a paper's dampings: a dashed line across the chart
-      pre << "set arrow from graph 0, first " << m << " to graph 1, first " << m
-          << " nohead dt 2 lw 2 lc rgb 'white' front\nset label " << label++ << " '" << c.y_key_label() << " = " << g(m)
-          << "' at graph 0.02, first " << m << " offset 0,0.6 tc rgb 'white' front\n";
-    for (const StabilityZone& zz : c.zones)
-      pre << "set object rect from " << std::log10(zz.c_min) << "," << zz.y_min << " to " << std::log10(zz.c_max)
-          << "," << zz.y_max << " fs empty border lc rgb 'white' lw 2 front\n";
-    const std::string title =
-        c.y_key == "omega" ? "Stability of the steady motion: largest Floquet multiplier, k = " + g(c.fixed_damping) +
-                                 " N·m·s/rad"
-                           : "Stability of the steady motion: largest Floquet multiplier, ω = " + g(c.fixed_speed) +
-                                 " rad/s";
-    const std::string name = "stability_" + std::to_string(n + 1);
-    jobs.push_back(heatMapJob(title, "coupling stiffness c [N·m/rad] (log scale)",
-                              c.y_key == "omega" ? "mean crank speed ω [rad/s]" : "coupling damping k [N·m·s/rad]",
-                              "log_{10} max|μ| per revolution (> 0: unstable)", x, c.y, z, dir + "/" + name, true,
-                              true, pre.str()));
-    set.figures.push_back(fileOf(dir, name,
-                                 "Stability chart from the Floquet multipliers of the steady motion (reduced model): "
-                                 "colour = log10 of the largest multiplier modulus per crank revolution (0 and above: "
-                                 "unstable; white boxes: unstable zones); white dot: the scene."));
-  }
+  if (r.campbell.applicable && campbell_found >= 2) addCampbellFigure(r, dir, jobs, set);
+  for (size_t n = 0; n < r.charts.size(); ++n) addStabilityChartFigure(r.charts[n], n, dir, jobs, set);
   renderPlots(jobs);  // a few gnuplot processes at once, each drawing several figures
   return set;
 }

@@ -72,8 +72,6 @@ double mathieuTransition(double eps, double target, double lo, double hi) {
   return 0.5 * (lo + hi);
 }
 
-}  // namespace
-
 // The chain's frequencies of the eigen-solution (ChainModes.h) against Holzer's residual-torque
 // search, which finds its roots without being told them, at four frozen crank angles: the same
 // numbers to the bisection's 1e-12 and the eigen-solver's round-off, so 1e-9 relative.
@@ -109,226 +107,270 @@ ModesCheck chainAgainstHolzer(const Scene& s, nlohmann::json& out) {
   return ck;
 }
 
-ModesValidationResult runModesValidation(const std::string& model_dir,
-                                         const std::function<void(const std::string&)>& log) {
-  const std::clock_t c0 = std::clock();
-  ModesValidationResult res;
-  auto add = [&](ModesCheck c) {
+const char* verdictWord(bool pass) { return pass ? "holds" : "FAILS"; }
+
+// Where the checks go: the result, in the order they ran, and the console, a line each as it comes.
+struct CheckRecorder {
+  ModesValidationResult& result;
+  const std::function<void(const std::string&)>& log;
+  void add(const ModesCheck& c) const {
     if (log) log(c.line);
-    res.checks.push_back(c);
-  };
-  auto scene = [&](const std::string& name, const std::vector<std::string>& overrides) {
-    return parseSceneFile(model_dir + "/" + name + ".yaml", overrides);
-  };
-
-  // 1. Constant inertia.
-  {
-    const Scene s = scene("balanced-4cart", {"carts.mass=1e-6", "rods.model=massless", "flywheel.inertia=400",
-                                             "loads.roller_force_front=0", "loads.roller_force_rear=0",
-                                             "loads.roller_normal_front=0", "loads.roller_normal_rear=0",
-                                             "loads.guide_friction.coefficient=0", "loads.gravity=0"});
-    const ReducedModel rm(s);
-    double worst = 0, p_red = 0, p_mb = 0, p0 = 0;
-    auto red = makeReducedDrive(s), mb = makeMultibodyDrive(s);
-    for (double phi : {0.0, 0.7, 2.0, 4.5}) {
-      DrivePoint p;
-      p.phi = phi;
-      p.omega = 10.6;
-      TwoRotorParameters tp;
-      tp.J1 = s.motorSideInertia();
-      tp.J2 = rm.crankSideInertia(phi);
-      tp.k = s.coupling.stiffness;
-      p0 = naturalFrequency(tp);  // Dyomin (two rotors) eq. (10), physics/TwoRotorClosedForm
-      p_red = frozenModes(*red, s, p).torsional_frequency();
-      p_mb = frozenModes(*mb, s, p).torsional_frequency();
-      worst = std::max({worst, std::abs(p_red - p0) / p0, std::abs(p_mb - p0) / p0});
-    }
-    ModesCheck c;
-    c.name = "constant_inertia_p0";
-    c.pass = worst <= 1e-8;
-    c.line = fmt("modes: constant inertia (flywheel 400 kg*m^2, carts of 1 mg, no loads): frozen-angle p reduced "
-                 "%.12g, multibody %.12g, Dyomin p0 (two-rotor closed form) %.12g rad/s; largest relative "
-                 "difference %.2e (<= 1e-8): %s",
-                 p_red, p_mb, p0, worst, c.pass ? "holds" : "FAILS");
-    add(c);
-    res.json["constant_inertia"] = {{"p_reduced", p_red}, {"p_multibody", p_mb}, {"p0", p0}, {"max_rel_diff", worst},
-                                    {"tolerance", 1e-8}, {"pass", c.pass}};
+    result.checks.push_back(c);
   }
+};
 
-  // 2. Mathieu transition curves.
-  {
-    nlohmann::json rows = nlohmann::json::array();
-    for (double eps : {0.05, 0.1, 0.2}) {
-      const double e2 = eps * eps, e3 = e2 * eps, e4 = e2 * e2;
-      struct Curve {
-        const char* name;
-        double target, lo, hi, first, second, bound_first, bound_second;
-      };
-      const Curve curves[] = {
-          {"1/4 + eps/2", -2, 0.25, 0.25 + eps, 0.25 + eps / 2, 0.25 + eps / 2 - e2 / 8, e2 / 8 + 2 * e3, 2 * e3},
+// A shipped scene of model_dir with --set overrides.
+Scene shippedScene(const std::string& model_dir, const std::string& name, const std::vector<std::string>& overrides) {
+  return parseSceneFile(model_dir + "/" + name + ".yaml", overrides);
+}
+
+// 1. Constant inertia: both models' frozen-angle frequency against Dyomin's two-rotor p0.
+void checkConstantInertia(const std::string& model_dir, const CheckRecorder& rec) {
+  const Scene s = shippedScene(model_dir, "balanced-4cart",
+                               {"carts.mass=1e-6", "rods.model=massless", "flywheel.inertia=400",
+                                "loads.roller_force_front=0", "loads.roller_force_rear=0",
+                                "loads.roller_normal_front=0", "loads.roller_normal_rear=0",
+                                "loads.guide_friction.coefficient=0", "loads.gravity=0"});
+  const ReducedModel rm(s);
+  double worst = 0, p_red = 0, p_mb = 0, p0 = 0;
+  auto red = makeReducedDrive(s), mb = makeMultibodyDrive(s);
+  for (double phi : {0.0, 0.7, 2.0, 4.5}) {
+    DrivePoint p;
+    p.phi = phi;
+    p.omega = 10.6;
+    TwoRotorParameters tp;
+    tp.J1 = s.motorSideInertia();
+    tp.J2 = rm.crankSideInertia(phi);
+    tp.k = s.coupling.stiffness;
+    p0 = naturalFrequency(tp);  // Dyomin (two rotors) eq. (10), physics/TwoRotorClosedForm
+    p_red = frozenModes(*red, s, p).torsional_frequency();
+    p_mb = frozenModes(*mb, s, p).torsional_frequency();
+    worst = std::max({worst, std::abs(p_red - p0) / p0, std::abs(p_mb - p0) / p0});
+  }
+  ModesCheck c;
+  c.name = "constant_inertia_p0";
+  c.pass = worst <= 1e-8;
+  c.line = fmt("modes: constant inertia (flywheel 400 kg*m^2, carts of 1 mg, no loads): frozen-angle p reduced "
+               "%.12g, multibody %.12g, Dyomin p0 (two-rotor closed form) %.12g rad/s; largest relative "
+               "difference %.2e (<= 1e-8): %s",
+               p_red, p_mb, p0, worst, verdictWord(c.pass));
+  rec.add(c);
+  rec.result.json["constant_inertia"] = {{"p_reduced", p_red}, {"p_multibody", p_mb}, {"p0", p0},
+                                         {"max_rel_diff", worst}, {"tolerance", 1e-8}, {"pass", c.pass}};
+}
+
+// A transition curve of the Mathieu equation: where Floquet's trace reaches `target` between lo
+// and hi, against the published expansion to its first and to its next term, with their bounds.
+struct MathieuCurve {
+  const char* name;
+  double target, lo, hi, first, second, bound_first, bound_second;
+};
+
+std::vector<MathieuCurve> mathieuCurves(double eps) {
+  const double e2 = eps * eps, e3 = e2 * eps, e4 = e2 * e2;
+  return {{"1/4 + eps/2", -2, 0.25, 0.25 + eps, 0.25 + eps / 2, 0.25 + eps / 2 - e2 / 8, e2 / 8 + 2 * e3, 2 * e3},
           {"1/4 - eps/2", -2, 0.25 - eps, 0.25, 0.25 - eps / 2, 0.25 - eps / 2 - e2 / 8, e2 / 8 + 2 * e3, 2 * e3},
           {"1 - eps^2/12", 2, 1 - e2 / 4, 1 + e2 / 8, 1 - e2 / 12, 1 - e2 / 12 + 0.00145 * e4, 0.01 * e4 + 1e-9,
            0.01 * e4 + 1e-9},
           {"1 + 5 eps^2/12", 2, 1 + e2 / 8, 1 + e2, 1 + 5 * e2 / 12, 1 + 5 * e2 / 12 - 0.2208 * e4, 0.25 * e4,
            0.05 * e4}};
-      for (const Curve& cv : curves) {
-        const double d = mathieuTransition(eps, cv.target, cv.lo, cv.hi);
-        ModesCheck c;
-        c.name = std::string("mathieu ") + cv.name;
-        const double err1 = std::abs(d - cv.first), err2 = std::abs(d - cv.second);
-        c.pass = err1 <= cv.bound_first && err2 <= cv.bound_second;
-        c.line = fmt("modes: Mathieu eps = %.2f, curve delta = %s: Floquet %.10f, expansion %.10f (diff %.2e, "
-                     "bound %.1e), with the next term %.10f (diff %.2e, bound %.1e): %s",
-                     eps, cv.name, d, cv.first, err1, cv.bound_first, cv.second, err2, cv.bound_second,
-                     c.pass ? "holds" : "FAILS");
-        add(c);
-        rows.push_back({{"eps", eps}, {"curve", cv.name}, {"delta", d}, {"expansion", cv.first},
-                        {"expansion_next_term", cv.second}, {"pass", c.pass}});
-      }
-    }
-    res.json["mathieu"] = rows;
-  }
+}
 
-  // 3. Damped constant-coefficient system.
-  {
-    const double w = 7.0, zeta = 0.05, T = 2.3;
-    PeriodicSystem s;
-    s.n = 2;
-    s.period = T;
-    s.scale = Eigen::Vector2d(1, w);
-    s.rhs = [=](double, const Eigen::VectorXd& x, Eigen::VectorXd& f) {
-      f.resize(2);
-      f << x(1), -w * w * x(0) - 2 * zeta * w * x(1);
-    };
-    FlowOptions o;
-    o.rtol = 1e-12;
-    o.atol_scale = 1e-12;
-    const auto m = floquetMultipliers(flowOverPeriod(s, Eigen::Vector2d(0.3, -0.1), o).monodromy, T, w);
-    const std::complex<double> e = std::exp(std::complex<double>(-zeta * w, w * std::sqrt(1 - zeta * zeta)) * T);
-    double worst = 0;
-    for (const auto& f : m) worst = std::max(worst, std::min(std::abs(f.mu - e), std::abs(f.mu - std::conj(e))) / std::abs(e));
-    ModesCheck c;
-    c.name = "damped_constant_coefficient";
-    c.pass = m.size() == 2 && worst <= 1e-9;
-    c.line = fmt("modes: damped oscillator (omega 7 rad/s, zeta 0.05, T 2.3 s): multipliers %.10f%+.10fi, "
-                 "exp(lambda*T) %.10f%+.10fi, relative difference %.2e (<= 1e-9); zeta from them %.10f: %s",
-                 m.empty() ? NAN : m[0].mu.real(), m.empty() ? NAN : std::abs(m[0].mu.imag()), e.real(),
-                 std::abs(e.imag()), worst, m.empty() ? NAN : m[0].damping_ratio, c.pass ? "holds" : "FAILS");
-    add(c);
-    res.json["damped_oscillator"] = {{"max_rel_diff", worst}, {"pass", c.pass}};
-  }
-
-  // 4. Multibody against reduced.
-  {
-    nlohmann::json rows = nlohmann::json::array();
-    const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
-        {"balanced-4cart", {"rods.model=split", "loads.guide_friction.coefficient=0"}},
-        {"recuperative-2cart",
-         {"rods.model=split", "loads.guide_friction.coefficient=0", "coupling.type=elastic", "coupling.stiffness=50000",
-          "coupling.damping=500"}},
-        {"cam-drive", {"loads.guide_friction.coefficient=0"}}};
-    for (const auto& [name, ov] : cases) {
-      const Scene s = scene(name, ov);
-      auto red = makeReducedDrive(s), mb = makeMultibodyDrive(s);
-      SteadyMotionOptions so;
-      so.samples = 72;
-      const SteadyMotion m = steadyMotion(*red, s, so);
-      double worst = 0, pmin = INFINITY, pmax = 0;
-      for (const DrivePoint& p : m.samples) {
-        const double a = frozenModes(*red, s, p).torsional_frequency(), b = frozenModes(*mb, s, p).torsional_frequency();
-        worst = std::max(worst, std::abs(a - b) / a);
-        pmin = std::min(pmin, a);
-        pmax = std::max(pmax, a);
-      }
+// 2. The Mathieu equation's transition curves through the Floquet code.
+void checkMathieuCurves(const CheckRecorder& rec) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (double eps : {0.05, 0.1, 0.2})
+    for (const MathieuCurve& cv : mathieuCurves(eps)) {
+      const double d = mathieuTransition(eps, cv.target, cv.lo, cv.hi);
       ModesCheck c;
-      c.name = "models_agree_" + name;
-      c.pass = m.found && worst <= 1e-6;
-      std::string sets;
-      for (const std::string& o : ov) sets += " --set " + o;
-      c.line = fmt("modes: %s%s: frozen-angle p %.6g ... %.6g rad/s over 72 angles of the steady motion; "
-                   "multibody against reduced, largest relative difference %.2e (<= 1e-6): %s",
-                   name.c_str(), sets.c_str(), pmin, pmax, worst, c.pass ? "holds" : "FAILS");
-      add(c);
-      rows.push_back({{"scene", name}, {"overrides", ov}, {"max_rel_diff", worst}, {"pass", c.pass}});
+      c.name = std::string("mathieu ") + cv.name;
+      const double err1 = std::abs(d - cv.first), err2 = std::abs(d - cv.second);
+      c.pass = err1 <= cv.bound_first && err2 <= cv.bound_second;
+      c.line = fmt("modes: Mathieu eps = %.2f, curve delta = %s: Floquet %.10f, expansion %.10f (diff %.2e, "
+                   "bound %.1e), with the next term %.10f (diff %.2e, bound %.1e): %s",
+                   eps, cv.name, d, cv.first, err1, cv.bound_first, cv.second, err2, cv.bound_second,
+                   verdictWord(c.pass));
+      rec.add(c);
+      rows.push_back({{"eps", eps}, {"curve", cv.name}, {"delta", d}, {"expansion", cv.first},
+                      {"expansion_next_term", cv.second}, {"pass", c.pass}});
     }
-    res.json["models_agree"] = rows;
-  }
+  rec.result.json["mathieu"] = rows;
+}
 
-  // 5. Simulated runs at an unstable and a stable point.
-  {
-    auto two_cart = [&](double c, double k) {
-      return scene("recuperative-2cart", {"coupling.type=elastic", "coupling.stiffness=" + std::to_string(c),
-                                          "coupling.damping=" + std::to_string(k)});
-    };
-    const GrowthMeasurement u = measureGrowth(two_cart(24000, 0), 30, 8);
-    ModesCheck c;
-    c.name = "unstable_point_grows";
-    c.pass = u.ok && u.predicted_modulus > 1 && u.revolutions_fitted >= 10 &&
-             std::abs(u.measured_growth / u.predicted_modulus - 1) <= 0.06 &&
-             std::abs(u.peak_order - u.predicted_order) <= 1.0 / 8 + 1e-9;
-    c.line = fmt("modes: two-cart machine (Loveikin and Pochka (2007)) with an undamped elastic coupling c = 24000 "
-                 "N*m/rad: Floquet |mu| = %.4g per revolution, simulated growth %.4g per revolution over %d "
-                 "revolutions (ratio %.3f, within 6 %%); predicted order %.3f, spectrum peak at %.3f (resolution "
-                 "1/8): %s",
-                 u.predicted_modulus, u.measured_growth, u.revolutions_fitted, u.measured_growth / u.predicted_modulus,
-                 u.predicted_order, u.peak_order, c.pass ? "holds" : "FAILS");
-    add(c);
-    const GrowthMeasurement st = measureGrowth(two_cart(24000, 300), 30, 8);
-    double worst = 0;
-    for (double d : st.deviation) worst = std::max(worst, d);
-    ModesCheck c2;
-    c2.name = "stable_point_does_not_grow";
-    c2.pass = st.ok && st.predicted_modulus < 1 && st.deviation.size() >= 29 && worst < 1e-8;
-    c2.line = fmt("modes: same machine with k = 300 N*m*s/rad: Floquet |mu| = %.3g (stable); simulated departure from "
-                  "the steady motion at most %.2e rad over %zu revolutions (< 1e-8; the unstable run grew to %.2e): %s",
-                  st.predicted_modulus, worst, st.deviation.size(), u.deviation.empty() ? NAN : u.deviation.back(),
-                  c2.pass ? "holds" : "FAILS");
-    add(c2);
-    res.json["simulated_runs"] = {
-        {"unstable", {{"c", 24000}, {"k", 0}, {"predicted_modulus", u.predicted_modulus}, {"measured_growth", u.measured_growth},
-                      {"revolutions_fitted", u.revolutions_fitted}, {"predicted_order", u.predicted_order},
-                      {"peak_order", u.peak_order}, {"pass", c.pass}}},
-        {"stable", {{"c", 24000}, {"k", 300}, {"predicted_modulus", st.predicted_modulus}, {"max_departure", worst},
-                    {"pass", c2.pass}}}};
-  }
+// ẍ + 2ζωẋ + ω²x = 0 as a periodic system of period T.
+PeriodicSystem dampedOscillator(double w, double zeta, double T) {
+  PeriodicSystem s;
+  s.n = 2;
+  s.period = T;
+  s.scale = Eigen::Vector2d(1, w);
+  s.rhs = [=](double, const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    f.resize(2);
+    f << x(1), -w * w * x(0) - 2 * zeta * w * x(1);
+  };
+  return s;
+}
 
+// 3. A damped constant-coefficient system: its multipliers against exp(λT).
+void checkDampedOscillator(const CheckRecorder& rec) {
+  const double w = 7.0, zeta = 0.05, T = 2.3;
+  FlowOptions o;
+  o.rtol = 1e-12;
+  o.atol_scale = 1e-12;
+  const auto m =
+      floquetMultipliers(flowOverPeriod(dampedOscillator(w, zeta, T), Eigen::Vector2d(0.3, -0.1), o).monodromy, T, w);
+  const std::complex<double> e = std::exp(std::complex<double>(-zeta * w, w * std::sqrt(1 - zeta * zeta)) * T);
+  double worst = 0;
+  for (const auto& f : m) worst = std::max(worst, std::min(std::abs(f.mu - e), std::abs(f.mu - std::conj(e))) / std::abs(e));
+  ModesCheck c;
+  c.name = "damped_constant_coefficient";
+  c.pass = m.size() == 2 && worst <= 1e-9;
+  c.line = fmt("modes: damped oscillator (omega 7 rad/s, zeta 0.05, T 2.3 s): multipliers %.10f%+.10fi, "
+               "exp(lambda*T) %.10f%+.10fi, relative difference %.2e (<= 1e-9); zeta from them %.10f: %s",
+               m.empty() ? NAN : m[0].mu.real(), m.empty() ? NAN : std::abs(m[0].mu.imag()), e.real(),
+               std::abs(e.imag()), worst, m.empty() ? NAN : m[0].damping_ratio, verdictWord(c.pass));
+  rec.add(c);
+  rec.result.json["damped_oscillator"] = {{"max_rel_diff", worst}, {"pass", c.pass}};
+}
+
+// The multibody model's frozen-angle frequencies against the reduced model's over 72 angles of
+// the steady motion of one scene; its row of the results.
+nlohmann::json modelsAgreeOn(const std::string& model_dir, const std::string& name, const std::vector<std::string>& ov,
+                             const CheckRecorder& rec) {
+  const Scene s = shippedScene(model_dir, name, ov);
+  auto red = makeReducedDrive(s), mb = makeMultibodyDrive(s);
+  SteadyMotionOptions so;
+  so.samples = 72;
+  const SteadyMotion m = steadyMotion(*red, s, so);
+  double worst = 0, pmin = INFINITY, pmax = 0;
+  for (const DrivePoint& p : m.samples) {
+    const double a = frozenModes(*red, s, p).torsional_frequency(), b = frozenModes(*mb, s, p).torsional_frequency();
+    worst = std::max(worst, std::abs(a - b) / a);
+    pmin = std::min(pmin, a);
+    pmax = std::max(pmax, a);
+  }
+  ModesCheck c;
+  c.name = "models_agree_" + name;
+  c.pass = m.found && worst <= 1e-6;
+  std::string sets;
+  for (const std::string& o : ov) sets += " --set " + o;
+  c.line = fmt("modes: %s%s: frozen-angle p %.6g ... %.6g rad/s over 72 angles of the steady motion; "
+               "multibody against reduced, largest relative difference %.2e (<= 1e-6): %s",
+               name.c_str(), sets.c_str(), pmin, pmax, worst, verdictWord(c.pass));
+  rec.add(c);
+  return {{"scene", name}, {"overrides", ov}, {"max_rel_diff", worst}, {"pass", c.pass}};
+}
+
+// 4. Multibody against reduced where both describe the same physics (split rods, no guide friction).
+void checkModelsAgree(const std::string& model_dir, const CheckRecorder& rec) {
+  nlohmann::json rows = nlohmann::json::array();
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"balanced-4cart", {"rods.model=split", "loads.guide_friction.coefficient=0"}},
+      {"recuperative-2cart",
+       {"rods.model=split", "loads.guide_friction.coefficient=0", "coupling.type=elastic", "coupling.stiffness=50000",
+        "coupling.damping=500"}},
+      {"cam-drive", {"loads.guide_friction.coefficient=0"}}};
+  for (const auto& [name, ov] : cases) rows.push_back(modelsAgreeOn(model_dir, name, ov, rec));
+  rec.result.json["models_agree"] = rows;
+}
+
+// 5a. A simulated run at a point the chart marks unstable grows by the predicted multiplier and
+// shows the predicted order.
+ModesCheck unstablePointGrows(const GrowthMeasurement& u) {
+  ModesCheck c;
+  c.name = "unstable_point_grows";
+  c.pass = u.ok && u.predicted_modulus > 1 && u.revolutions_fitted >= 10 &&
+           std::abs(u.measured_growth / u.predicted_modulus - 1) <= 0.06 &&
+           std::abs(u.peak_order - u.predicted_order) <= 1.0 / 8 + 1e-9;
+  c.line = fmt("modes: two-cart machine (Loveikin and Pochka (2007)) with an undamped elastic coupling c = 24000 "
+               "N*m/rad: Floquet |mu| = %.4g per revolution, simulated growth %.4g per revolution over %d "
+               "revolutions (ratio %.3f, within 6 %%); predicted order %.3f, spectrum peak at %.3f (resolution "
+               "1/8): %s",
+               u.predicted_modulus, u.measured_growth, u.revolutions_fitted, u.measured_growth / u.predicted_modulus,
+               u.predicted_order, u.peak_order, verdictWord(c.pass));
+  return c;
+}
+
+// 5b. One at a stable point does not grow. `worst`: its largest departure from the steady motion [rad].
+ModesCheck stablePointDoesNotGrow(const GrowthMeasurement& st, double worst, const GrowthMeasurement& u) {
+  ModesCheck c2;
+  c2.name = "stable_point_does_not_grow";
+  c2.pass = st.ok && st.predicted_modulus < 1 && st.deviation.size() >= 29 && worst < 1e-8;
+  c2.line = fmt("modes: same machine with k = 300 N*m*s/rad: Floquet |mu| = %.3g (stable); simulated departure from "
+                "the steady motion at most %.2e rad over %zu revolutions (< 1e-8; the unstable run grew to %.2e): %s",
+                st.predicted_modulus, worst, st.deviation.size(), u.deviation.empty() ? NAN : u.deviation.back(),
+                verdictWord(c2.pass));
+  return c2;
+}
+
+// 5. Simulated runs at an unstable and a stable point.
+void checkSimulatedRuns(const std::string& model_dir, const CheckRecorder& rec) {
+  auto two_cart = [&](double c, double k) {
+    return shippedScene(model_dir, "recuperative-2cart", {"coupling.type=elastic", "coupling.stiffness=" + std::to_string(c),
+                                                          "coupling.damping=" + std::to_string(k)});
+  };
+  const GrowthMeasurement u = measureGrowth(two_cart(24000, 0), 30, 8);
+  const ModesCheck c = unstablePointGrows(u);
+  rec.add(c);
+  const GrowthMeasurement st = measureGrowth(two_cart(24000, 300), 30, 8);
+  double worst = 0;
+  for (double d : st.deviation) worst = std::max(worst, d);
+  const ModesCheck c2 = stablePointDoesNotGrow(st, worst, u);
+  rec.add(c2);
+  rec.result.json["simulated_runs"] = {
+      {"unstable", {{"c", 24000}, {"k", 0}, {"predicted_modulus", u.predicted_modulus}, {"measured_growth", u.measured_growth},
+                    {"revolutions_fitted", u.revolutions_fitted}, {"predicted_order", u.predicted_order},
+                    {"peak_order", u.peak_order}, {"pass", c.pass}}},
+      {"stable", {{"c", 24000}, {"k", 300}, {"predicted_modulus", st.predicted_modulus}, {"max_departure", worst},
+                  {"pass", c2.pass}}}};
+}
+
+// 6. The papers' machine at the papers' coupling with damping k: the Floquet verdict and the band
+// of frozen frequencies (a measurement, no claim); its row of the results.
+nlohmann::json paperMachineAt(const std::string& model_dir, double k, const CheckRecorder& rec) {
+  const Scene s = shippedScene(model_dir, "balanced-4cart", {"coupling.damping=" + std::to_string(k)});
+  auto red = makeReducedDrive(s);
+  SteadyMotionOptions so;
+  so.samples = 72;
+  const SteadyMotion m = steadyMotion(*red, s, so);
+  std::vector<double> p;
+  for (const DrivePoint& q : m.samples) p.push_back(frozenModes(*red, s, q).torsional_frequency());
+  const Band b = bandOf(p);
+  ModesCheck c;
+  c.name = "paper_machine_k" + std::to_string(int(k));
+  c.is_claim = false;
+  c.pass = true;
+  c.line = fmt("modes: Loveikin, Pochka, Romasevych (2018) machine, c = 200000 N*m/rad, k = %.0f N*m*s/rad: %s, "
+               "largest |mu| %.3g per revolution; frozen p %.5g ... %.5g rad/s = %.3g ... %.3g times the crank "
+               "speed %.4g rad/s (measurement)",
+               k, m.found ? m.verdict.text.c_str() : "no steady motion", m.verdict.max_modulus, b.min, b.max,
+               b.min / m.omega_mean, b.max / m.omega_mean, m.omega_mean);
+  rec.add(c);
+  return {{"k", k}, {"verdict", m.verdict.text}, {"max_modulus", m.verdict.max_modulus},
+          {"p_min", b.min}, {"p_max", b.max}, {"omega_mean", m.omega_mean}};
+}
+
+}  // namespace
+
+ModesValidationResult runModesValidation(const std::string& model_dir,
+                                         const std::function<void(const std::string&)>& log) {
+  const std::clock_t c0 = std::clock();
+  ModesValidationResult res;
+  const CheckRecorder rec{res, log};
+  checkConstantInertia(model_dir, rec);
+  checkMathieuCurves(rec);
+  checkDampedOscillator(rec);
+  checkModelsAgree(model_dir, rec);
+  checkSimulatedRuns(model_dir, rec);
   // 7. The crankshaft as a torsional chain against Holzer's method.
-  {
-    const ModesCheck c = chainAgainstHolzer(
-        scene("balanced-4cart", {"simulation.formulation=constrained", "loads.guide_friction.normal_force=lagged",
-                                 "crankshaft.throw_positions=[0.2, 0.5, 0.8, 1.1]",
-                                 "crankshaft.torsional_stiffness=7.85e5"}),
-        res.json);
-    add(c);
-  }
-
+  rec.add(chainAgainstHolzer(
+      shippedScene(model_dir, "balanced-4cart",
+                   {"simulation.formulation=constrained", "loads.guide_friction.normal_force=lagged",
+                    "crankshaft.throw_positions=[0.2, 0.5, 0.8, 1.1]", "crankshaft.torsional_stiffness=7.85e5"}),
+      res.json));
   // 6. The papers' machine at the papers' coupling.
-  {
-    nlohmann::json rows = nlohmann::json::array();
-    for (double k : {0.0, 2000.0, 8000.0}) {
-      const Scene s = scene("balanced-4cart", {"coupling.damping=" + std::to_string(k)});
-      auto red = makeReducedDrive(s);
-      SteadyMotionOptions so;
-      so.samples = 72;
-      const SteadyMotion m = steadyMotion(*red, s, so);
-      std::vector<double> p;
-      for (const DrivePoint& q : m.samples) p.push_back(frozenModes(*red, s, q).torsional_frequency());
-      const Band b = bandOf(p);
-      ModesCheck c;
-      c.name = "paper_machine_k" + std::to_string(int(k));
-      c.is_claim = false;
-      c.pass = true;
-      c.line = fmt("modes: Loveikin, Pochka, Romasevych (2018) machine, c = 200000 N*m/rad, k = %.0f N*m*s/rad: %s, "
-                   "largest |mu| %.3g per revolution; frozen p %.5g ... %.5g rad/s = %.3g ... %.3g times the crank "
-                   "speed %.4g rad/s (measurement)",
-                   k, m.found ? m.verdict.text.c_str() : "no steady motion", m.verdict.max_modulus, b.min, b.max,
-                   b.min / m.omega_mean, b.max / m.omega_mean, m.omega_mean);
-      add(c);
-      rows.push_back({{"k", k}, {"verdict", m.verdict.text}, {"max_modulus", m.verdict.max_modulus},
-                      {"p_min", b.min}, {"p_max", b.max}, {"omega_mean", m.omega_mean}});
-    }
-    res.json["paper_machine"] = rows;
-  }
+  nlohmann::json rows = nlohmann::json::array();
+  for (double k : {0.0, 2000.0, 8000.0}) rows.push_back(paperMachineAt(model_dir, k, rec));
+  res.json["paper_machine"] = rows;
   res.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
   res.json["cpu_seconds"] = res.cpu_seconds;
   res.json["failed"] = res.failed();

@@ -13,7 +13,7 @@
 #include <nlopt.hpp>
 
 #include "scene/DidYouMean.h"
-#include "scene/SceneParser.h"
+#include "studies/OptimizeGrid.h"
 #include "scene/SceneSchema.h"
 
 namespace rollerdyn {
@@ -328,133 +328,116 @@ bool bestFeasible(const OptimizeResult& r, std::size_t* best) {
   return found;
 }
 
-}  // namespace
+// Design x in the unit box of the parameters' ranges.
+std::vector<double> inUnitBox(const OptimizeOptions& o, const std::vector<double>& x) {
+  std::vector<double> u;
+  for (std::size_t k = 0; k < o.params.size(); ++k)
+    u.push_back((x[k] - o.params[k].lower) / (o.params[k].upper - o.params[k].lower));
+  return u;
+}
 
-OptimizeResult runOptimize(const OptimizeOptions& o) {
-  validate(o);
-  OptimizeResult r;
-  const bool automatic = o.method == "auto";
-  r.method = o.method;
-  Search search(o, r);
-  const std::string local = o.constraints.empty() ? "bobyqa" : "cobyla";
-  if (r.method == "multistart") {
-    // Local searches from the middle of the box and from a Latin hypercube of further starts,
-    // one per thread, side by side; each gets an equal share of the evaluations.
-    const int starts = std::max(1, std::min(o.threads, o.max_evals));
-    std::vector<SampleRange> unit;
-    for (std::size_t k = 0; k < o.params.size(); ++k) unit.push_back({o.params[k].key, 0.0, 1.0});
-    std::vector<std::vector<double>> u0(1, std::vector<double>(o.params.size(), 0.5));
-    if (starts > 1)
-      for (const auto& texts : latinHypercube(unit, std::size_t(starts - 1), 1)) {
-        std::vector<double> u;
-        for (const std::string& t : texts) u.push_back(std::stod(t));
-        u0.push_back(u);
-      }
-    search.method = local;
-    std::vector<std::string> reasons(static_cast<std::size_t>(starts));
-    std::vector<std::thread> pool;
-    for (int t = 0; t < starts; ++t)
-      pool.emplace_back([&, t] { reasons[std::size_t(t)] = runMethod(search, local, u0[std::size_t(t)],
-                                                                     std::max(1, o.max_evals / starts), 0.1); });
-    for (std::thread& th : pool) th.join();
-    r.method = "multistart " + local + " x" + std::to_string(starts);
-    r.scope = "local searches from " + std::to_string(starts) + " starts: the best of their minima (more starts, "
-              "--threads, cover the ranges better)";
-    for (int t = 0; t < starts; ++t) r.stop_reason += (t ? "; " : "") + std::string("start ") + std::to_string(t + 1) +
-                                                      ": " + reasons[std::size_t(t)];
-    r.found = bestFeasible(r, &r.best);
-    return r;
-  }
-  if (automatic) {
-    // auto: (1) the local method from the middle of the box, the cheap answer when there is one
-    // minimum; (2) a global stage: a uniform grid over the whole box (19 values of one parameter,
-    // 7 of each of two, 5 of each of three or more), plus, for the crank offset, the evenly
-    // spread layouts Δφ = k·360°/n of the n carts (they cancel every harmonic of the load below
-    // the n-th, so δ has a sharp minimum there, which a grid or DIRECT's trisection can step
-    // over: six carts, δ = 0.0002 at 60° against 0.1 at 55° and 65°); (3) the local method again
-    // from the best design when it lies in another basin than (1)'s. A local method alone
-    // converges to the minimum nearest its start (six carts: 97.4° from the middle of 0:180).
-    const int n = int(o.params.size());
-    search.method = local;
-    const int first_share = std::max(1, o.max_evals / 3);
-    const std::string first = runMethod(search, local, std::vector<double>(o.params.size(), 0.5), first_share, 0.25);
-    // Its budget is a third of --max-evals: "maximum number of evaluations reached" after 10 of
-    // 30 read as a contradiction in the trial.
-    r.stop_reason = local + " from the middle (its share: " + std::to_string(first_share) + " of the " +
-                    std::to_string(o.max_evals) + " evaluations): " + first;
-    std::size_t local_best = 0;
-    const bool local_found = bestFeasible(r, &local_best);
-    const std::vector<double> x_local = local_found ? r.history[local_best].x : std::vector<double>{};
-    // The global stage's designs, in the unit box.
-    const int per = n == 1 ? 19 : n == 2 ? 7 : 5;
-    std::vector<std::vector<double>> grid(1, std::vector<double>());
-    for (int k = 0; k < n; ++k) {
-      std::vector<double> values;
-      for (int i = 0; i < per; ++i) values.push_back(double(i) / (per - 1));
-      if (o.params[k].key == "crank.offset_deg") {
-        int carts = 0;
-        try {
-          carts = (o.scene_input ? parseSceneInput(*o.scene_input, o.base_overrides)
-                                 : parseSceneFile(o.scene_path, o.base_overrides))
-                      .carts.count;
-        } catch (const std::exception&) {
-        }
-        for (int m = 1; m < carts; ++m)
-          for (int turn = 0; turn < 2; ++turn) {  // within 0..720°
-            const double deg = 360.0 * m / carts + 360.0 * turn;
-            const double u = (deg - o.params[k].lower) / (o.params[k].upper - o.params[k].lower);
-            if (u > 0 && u < 1) values.push_back(u);
-          }
-      }
-      std::vector<std::vector<double>> next;
-      for (const auto& g : grid)
-        for (double v : values) {
-          next.push_back(g);
-          next.back().push_back(v);
-        }
-      grid = std::move(next);
-    }
-    int left = o.max_evals - int(search.requests());
-    if (int(grid.size()) > left) grid.resize(std::size_t(std::max(0, left)));
-    if (first != "interrupted" && !grid.empty()) {
-      std::vector<std::thread> pool;
-      std::atomic<std::size_t> next{0};
-      for (int t = 0; t < std::max(1, o.threads); ++t)
-        pool.emplace_back([&] {
-          for (std::size_t i = next++; i < grid.size(); i = next++) {
-            if (o.interrupt && o.interrupt->load()) return;
-            search.evaluate(grid[i]);
-          }
-        });
-      for (std::thread& th : pool) th.join();
-      r.stop_reason += "; grid of " + std::to_string(grid.size()) + " designs over the whole ranges";
-    }
-    r.found = bestFeasible(r, &r.best);
-    bool elsewhere = r.found && !local_found;
-    if (r.found && local_found)
-      for (std::size_t k = 0; k < o.params.size(); ++k)
-        elsewhere = elsewhere || std::abs(r.history[r.best].x[k] - x_local[k]) >
-                                     10.0 * o.x_tolerance * (o.params[k].upper - o.params[k].lower);
-    left = o.max_evals - int(search.requests());
-    const bool interrupted = o.interrupt && o.interrupt->load();
-    const bool polish = elsewhere && left > 0 && !interrupted;
-    if (polish) {
+// Local searches from the middle of the box and from a Latin hypercube of further starts, one per
+// thread, side by side; each gets an equal share of the evaluations.
+void runMultistart(const OptimizeOptions& o, const std::string& local, Search& search, OptimizeResult& r) {
+  const int starts = std::max(1, std::min(o.threads, o.max_evals));
+  std::vector<SampleRange> unit;
+  for (std::size_t k = 0; k < o.params.size(); ++k) unit.push_back({o.params[k].key, 0.0, 1.0});
+  std::vector<std::vector<double>> u0(1, std::vector<double>(o.params.size(), 0.5));
+  if (starts > 1)
+    for (const auto& texts : latinHypercube(unit, std::size_t(starts - 1), 1)) {
       std::vector<double> u;
-      for (std::size_t k = 0; k < o.params.size(); ++k)
-        u.push_back((r.history[r.best].x[k] - o.params[k].lower) / (o.params[k].upper - o.params[k].lower));
-      search.method = local;
-      r.stop_reason += "; " + local + " from the grid's best: " + runMethod(search, local, u, left, 0.02);
-      r.found = bestFeasible(r, &r.best);
+      for (const std::string& t : texts) u.push_back(std::stod(t));
+      u0.push_back(u);
     }
-    r.method = local + ", grid" + (polish ? ", " + local : std::string());
-    // Say what happened: the trial read "polished by bobyqa" where no evaluation was left for it.
-    r.scope = std::string("global: ") + local + " from the middle of the ranges, a grid over the whole ranges" +
-              (polish      ? ", whose best design lay in another basin and was polished by " + local
-               : elsewhere ? ", whose best design lay in another basin; no evaluations were left to polish it "
-                             "(raise --max-evals), so the optimum is the best grid design"
-                           : " (no better basin found)");
-    return r;
+  search.method = local;
+  std::vector<std::string> reasons(static_cast<std::size_t>(starts));
+  std::vector<std::thread> pool;
+  for (int t = 0; t < starts; ++t)
+    pool.emplace_back([&, t] { reasons[std::size_t(t)] = runMethod(search, local, u0[std::size_t(t)],
+                                                                   std::max(1, o.max_evals / starts), 0.1); });
+  for (std::thread& th : pool) th.join();
+  r.method = "multistart " + local + " x" + std::to_string(starts);
+  r.scope = "local searches from " + std::to_string(starts) + " starts: the best of their minima (more starts, "
+            "--threads, cover the ranges better)";
+  for (int t = 0; t < starts; ++t) r.stop_reason += (t ? "; " : "") + std::string("start ") + std::to_string(t + 1) +
+                                                    ": " + reasons[std::size_t(t)];
+  r.found = bestFeasible(r, &r.best);
+}
+
+// Every design of the grid, on --threads threads (until an interrupt).
+void evaluateAll(const OptimizeOptions& o, const std::vector<std::vector<double>>& grid, Search& search) {
+  std::vector<std::thread> pool;
+  std::atomic<std::size_t> next{0};
+  for (int t = 0; t < std::max(1, o.threads); ++t)
+    pool.emplace_back([&] {
+      for (std::size_t i = next++; i < grid.size(); i = next++) {
+        if (o.interrupt && o.interrupt->load()) return;
+        search.evaluate(grid[i]);
+      }
+    });
+  for (std::thread& th : pool) th.join();
+}
+
+// Whether the best design lies in another basin than the local search's best x_local (farther
+// than ten times the tolerance in some parameter; any basin when the local search found none).
+bool inAnotherBasin(const OptimizeOptions& o, const OptimizeResult& r, bool local_found,
+                    const std::vector<double>& x_local) {
+  bool elsewhere = r.found && !local_found;
+  if (r.found && local_found)
+    for (std::size_t k = 0; k < o.params.size(); ++k)
+      elsewhere = elsewhere || std::abs(r.history[r.best].x[k] - x_local[k]) >
+                                   10.0 * o.x_tolerance * (o.params[k].upper - o.params[k].lower);
+  return elsewhere;
+}
+
+// auto: (1) the local method from the middle of the box, the cheap answer when there is one
+// minimum; (2) a global stage: a uniform grid over the whole box, plus, for the crank offset, the
+// evenly spread layouts Δφ = k·360°/n of the n carts (they cancel every harmonic of the load below
+// the n-th, so δ has a sharp minimum there, which a grid or DIRECT's trisection can step over: six
+// carts, δ = 0.0002 at 60° against 0.1 at 55° and 65°); (3) the local method again from the best
+// design when it lies in another basin than (1)'s. A local method alone converges to the minimum
+// nearest its start (six carts: 97.4° from the middle of 0:180).
+void runAutomatic(const OptimizeOptions& o, const std::string& local, Search& search, OptimizeResult& r) {
+  search.method = local;
+  const int first_share = std::max(1, o.max_evals / 3);
+  const std::string first = runMethod(search, local, std::vector<double>(o.params.size(), 0.5), first_share, 0.25);
+  // Its budget is a third of --max-evals: "maximum number of evaluations reached" after 10 of
+  // 30 read as a contradiction in the trial.
+  r.stop_reason = local + " from the middle (its share: " + std::to_string(first_share) + " of the " +
+                  std::to_string(o.max_evals) + " evaluations): " + first;
+  std::size_t local_best = 0;
+  const bool local_found = bestFeasible(r, &local_best);
+  const std::vector<double> x_local = local_found ? r.history[local_best].x : std::vector<double>{};
+  std::vector<std::vector<double>> grid = globalGrid(o);
+  int left = o.max_evals - int(search.requests());
+  if (int(grid.size()) > left) grid.resize(std::size_t(std::max(0, left)));
+  if (first != "interrupted" && !grid.empty()) {
+    evaluateAll(o, grid, search);
+    r.stop_reason += "; grid of " + std::to_string(grid.size()) + " designs over the whole ranges";
   }
+  r.found = bestFeasible(r, &r.best);
+  const bool elsewhere = inAnotherBasin(o, r, local_found, x_local);
+  left = o.max_evals - int(search.requests());
+  const bool interrupted = o.interrupt && o.interrupt->load();
+  const bool polish = elsewhere && left > 0 && !interrupted;
+  if (polish) {
+    search.method = local;
+    r.stop_reason += "; " + local + " from the grid's best: " +
+                     runMethod(search, local, inUnitBox(o, r.history[r.best].x), left, 0.02);
+    r.found = bestFeasible(r, &r.best);
+  }
+  r.method = local + ", grid" + (polish ? ", " + local : std::string());
+  // Say what happened: the trial read "polished by bobyqa" where no evaluation was left for it.
+  r.scope = std::string("global: ") + local + " from the middle of the ranges, a grid over the whole ranges" +
+            (polish      ? ", whose best design lay in another basin and was polished by " + local
+             : elsewhere ? ", whose best design lay in another basin; no evaluations were left to polish it "
+                           "(raise --max-evals), so the optimum is the best grid design"
+                         : " (no better basin found)");
+}
+
+// The method asked for by name: a local one from the middle of the box, or a global one followed
+// by a local polish of its best design.
+void runNamedMethod(const OptimizeOptions& o, const std::string& local, Search& search, OptimizeResult& r) {
   const bool global = r.method == "direct-l" || r.method == "crs2";
   // A global method gets 70 % of the evaluations; the rest polish its best design with the
   // local method (a global search stops far from the exact optimum, and a local one alone may
@@ -472,15 +455,28 @@ OptimizeResult runOptimize(const OptimizeOptions& o) {
   else r.scope = "global stage " + r.method + " over the whole ranges, then a local polish";
   const int left = o.max_evals - int(search.requests());
   if (global && r.found && left > 0 && r.stop_reason != "interrupted") {
-    std::vector<double> u;
-    for (std::size_t k = 0; k < o.params.size(); ++k)
-      u.push_back((r.history[r.best].x[k] - o.params[k].lower) / (o.params[k].upper - o.params[k].lower));
     search.method = local;
-    const std::string polish = runMethod(search, local, u, left, 0.05);
+    const std::string polish = runMethod(search, local, inUnitBox(o, r.history[r.best].x), left, 0.05);
     r.method += " then " + local;
     r.stop_reason += "; " + local + ": " + polish;
     r.found = bestFeasible(r, &r.best);
   }
+}
+
+}  // namespace
+
+OptimizeResult runOptimize(const OptimizeOptions& o) {
+  validate(o);
+  OptimizeResult r;
+  r.method = o.method;
+  Search search(o, r);
+  const std::string local = o.constraints.empty() ? "bobyqa" : "cobyla";
+  if (r.method == "multistart")
+    runMultistart(o, local, search, r);
+  else if (o.method == "auto")
+    runAutomatic(o, local, search, r);
+  else
+    runNamedMethod(o, local, search, r);
   return r;
 }
 

@@ -125,151 +125,181 @@ std::vector<std::pair<double, double>> heatMapCellEdges(const std::vector<double
   return e;
 }
 
+namespace {
+
+// Why a sweep gets no plots (empty: it gets them): only a grid over one or two numeric
+// parameters is drawn, and only with gnuplot.
+std::string noPlotsReason(const SweepOptions& o) {
+  const bool all_numeric = std::all_of(o.params.begin(), o.params.end(),
+                                       [](const SweepParameter& p) { return p.numeric(); });
+  if (o.params.size() > 2) return "no plots: more than two parameters";
+  if (!o.designs.empty()) return "no plots: the designs (values file or Latin hypercube) are not a grid";
+  if (!all_numeric) return "no plots: a parameter has non-numeric values";
+  if (!gnuplotAvailable()) return "no plots: gnuplot not found on PATH";
+  return "";
+}
+
+// Only metrics with a finite, non-zero value at some drawable point are worth a figure.
+bool worthAFigure(const SweepResult& r, const std::string& m) {
+  bool worth = false;
+  for (const SweepPoint& p : r.points) {
+    const double v = p.metric(m);
+    worth = worth || (classifySweepPoint(p) != SweepPointClass::NoValue && std::isfinite(v) && v != 0.0);
+  }
+  return worth;
+}
+
+// The grey hatched band (gnuplot object `obj`) over the cell of value x of parameter p that has no value.
+std::string noValueBand(const SweepParameter& p, const std::vector<std::pair<double, double>>& edges, double x,
+                        int obj) {
+  // Index into the parameter's value list for the band's extent.
+  std::size_t k = 0;
+  while (k < p.values.size() && p.values[k] != x) ++k;
+  double lo = x, hi = x;
+  if (k < edges.size()) lo = edges[k].first, hi = edges[k].second;
+  if (hi - lo <= 0) lo = x - 0.5, hi = x + 0.5;
+  std::ostringstream band;
+  band << "set object " << obj << " rect from " << num(lo) << ", graph 0 to " << num(hi)
+       << ", graph 1 behind fc rgb '#999999' fs pattern 4 noborder\n";
+  return band.str();
+}
+
+// One parameter: metric m against it, steady points joined, unsteady ones marked, the cells
+// without a value hatched.
+void drawMetricCurve(const SweepOptions& o, const SweepResult& r, const std::string& m, const std::string& out_dir) {
+  PlotSpec spec;
+  spec.title = escapeUnderscores(m + " vs " + o.params[0].key + " (" + o.model + " model)");
+  spec.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
+  spec.ylabel = sweepMetricLabel(m);
+  PlotSeries steady, unsteady;
+  steady.title = "turning, steady state";
+  steady.style = "linespoints pt 7";
+  steady.break_at_nonfinite = true;
+  steady.color = "#1f77b4";
+  unsteady.title = "turning, steady state not reached";
+  unsteady.style = "points pt 9 ps 1.5";
+  unsteady.color = "#ff7f0e";
+  std::vector<std::size_t> idx(r.points.size());
+  std::iota(idx.begin(), idx.end(), 0);
+  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
+    return r.points[a].values[0] < r.points[b].values[0];
+  });
+  const auto edges = heatMapCellEdges(o.params[0].values);
+  std::ostringstream pre;
+  int obj = 1;
+  bool any_bad = false;
+  for (std::size_t i : idx) {
+    const SweepPoint& p = r.points[i];
+    const SweepPointClass c = classifySweepPoint(p);
+    const double x = p.values[0], y = p.metric(m);
+    steady.x.push_back(x);
+    steady.y.push_back(c == SweepPointClass::Steady ? y : kNaN);
+    if (c == SweepPointClass::Unsteady) {
+      unsteady.x.push_back(x);
+      unsteady.y.push_back(y);
+    }
+    if (c == SweepPointClass::NoValue) {
+      any_bad = true;
+      pre << noValueBand(o.params[0], edges, x, obj++);
+    }
+  }
+  // The whole grid stays in view, whichever points have values.
+  double xl = INFINITY, xh = -INFINITY;
+  for (const auto& e : edges) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
+  if (xh > xl) pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
+  if (any_bad)
+    pre << "set label 1 \"grey hatched: starting, rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
+  spec.preamble = pre.str();
+  spec.series.push_back(steady);
+  if (!unsteady.x.empty()) spec.series.push_back(unsteady);
+  renderPlot(spec, out_dir + "/plot_" + m);
+}
+
+// The heat map's cells (gnuplot objects): coloured by the value, hatched where there is none,
+// overlaid where the steady state was not reached, labelled with the value up to 150 points.
+// `ex`, `ey`: the cells' edges along x and y.
+void addHeatMapCells(const SweepParameter& px, const std::vector<std::pair<double, double>>& ex,
+                     const std::vector<std::pair<double, double>>& ey, const SweepResult& r, const std::string& m,
+                     std::ostringstream& pre) {
+  const bool labels = r.points.size() <= 150;
+  int obj = 1, lab = 2;
+  for (std::size_t i = 0; i < r.points.size(); ++i) {
+    const SweepPoint& p = r.points[i];
+    const std::size_t iy = i / px.values.size(), ix = i % px.values.size();
+    const auto [x0, x1] = ex[ix];
+    const auto [y0, y1] = ey[iy];
+    const std::string rect = "rect from " + num(x0) + "," + num(y0) + " to " + num(x1) + "," + num(y1);
+    const SweepPointClass c = classifySweepPoint(p);
+    const double v = p.metric(m);
+    if (c == SweepPointClass::NoValue || !std::isfinite(v)) {
+      pre << "set object " << obj++ << " " << rect << " fc rgb '#999999' fs pattern 4 border lc rgb '#666666'\n";
+      continue;
+    }
+    pre << "set object " << obj++ << " " << rect << " fc palette cb " << num(v) << " fs solid 1.0 noborder\n";
+    if (c == SweepPointClass::Unsteady)
+      pre << "set object " << obj++ << " " << rect << " fc rgb '#000000' fs transparent pattern 5 noborder\n";
+    if (labels) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.3g", v);
+      pre << "set label " << lab++ << " \"" << buf << "\" at " << num(0.5 * (x0 + x1)) << ","
+          << num(0.5 * (y0 + y1)) << " center front font 'Sans,8'\n";
+    }
+  }
+}
+
+// Two parameters: a heat map of metric m, rows following the first parameter (y), columns the second (x).
+void drawMetricHeatMap(const SweepOptions& o, const SweepResult& r, const std::string& m, const std::string& out_dir) {
+  const SweepParameter &py = o.params[0], &px = o.params[1];
+  const auto ex = heatMapCellEdges(px.values), ey = heatMapCellEdges(py.values);
+  double lo = INFINITY, hi = -INFINITY;
+  for (const SweepPoint& p : r.points) {
+    const double v = p.metric(m);
+    if (classifySweepPoint(p) != SweepPointClass::NoValue && std::isfinite(v))
+      lo = std::min(lo, v), hi = std::max(hi, v);
+  }
+  if (hi <= lo) hi = lo + std::max(std::abs(lo) * 1e-6, 1e-12);
+  std::ostringstream pre;
+  pre << "set palette rgb 33,13,10\nset cbrange [" << num(lo) << ":" << num(hi) << "]\n"
+      << "unset key\nset cblabel \"" << sweepMetricLabel(m) << "\"\nset colorbox\nunset grid\n"
+      << "set bmargin 6\nset label 1 \"" << kLegend << "\" at screen 0.02, screen 0.03 left\n";
+  // xrange from the cell edges of every value, so the edge cells are never clipped.
+  double xl = INFINITY, xh = -INFINITY, yl = INFINITY, yh = -INFINITY;
+  for (const auto& e : ex) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
+  for (const auto& e : ey) yl = std::min(yl, e.first), yh = std::max(yh, e.second);
+  pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\nset yrange [" << num(yl) << ":" << num(yh) << "]\n";
+  addHeatMapCells(px, ex, ey, r, m, pre);
+  PlotSpec spec;
+  spec.title = escapeUnderscores(m + " (" + o.model + " model)");
+  spec.xlabel = escapeUnderscores(sweepParamLabel(px.key));
+  spec.ylabel = escapeUnderscores(sweepParamLabel(py.key));
+  spec.width = 900;
+  spec.height = 680;
+  spec.preamble = pre.str();
+  PlotSeries anchor;  // one invisible point that uses the palette, so the colour box is drawn
+  anchor.title = "";
+  anchor.style = "points pt 7 ps 0 lc palette cb " + num(lo);
+  anchor.x = {px.values[0]};
+  anchor.y = {py.values[0]};
+  spec.series.push_back(anchor);
+  renderPlot(spec, out_dir + "/heatmap_" + m);
+}
+
+}  // namespace
+
 std::vector<std::string> drawSweepPlots(const SweepOptions& o, const SweepResult& r,
                                         const std::string& out_dir, std::string* note) {
   std::vector<std::string> plots;
-  note->clear();
-  const bool all_numeric = std::all_of(o.params.begin(), o.params.end(),
-                                       [](const SweepParameter& p) { return p.numeric(); });
-  if (o.params.size() > 2) {
-    *note = "no plots: more than two parameters";
-    return plots;
-  }
-  if (!o.designs.empty()) {
-    *note = "no plots: the designs (values file or Latin hypercube) are not a grid";
-    return plots;
-  }
-  if (!all_numeric) {
-    *note = "no plots: a parameter has non-numeric values";
-    return plots;
-  }
-  if (!gnuplotAvailable()) {
-    *note = "no plots: gnuplot not found on PATH";
-    return plots;
-  }
+  *note = noPlotsReason(o);
+  if (!note->empty()) return plots;
   for (const std::string& m : sweepNumericMetrics()) {
-    // Only metrics with a finite, non-zero value at some drawable point are worth a figure.
-    bool worth = false;
-    for (const SweepPoint& p : r.points) {
-      const double v = p.metric(m);
-      worth = worth || (classifySweepPoint(p) != SweepPointClass::NoValue && std::isfinite(v) && v != 0.0);
-    }
-    if (!worth) continue;
+    if (!worthAFigure(r, m)) continue;
     if (o.params.size() == 1) {
-      PlotSpec spec;
-      spec.title = escapeUnderscores(m + " vs " + o.params[0].key + " (" + o.model + " model)");
-      spec.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
-      spec.ylabel = sweepMetricLabel(m);
-      PlotSeries steady, unsteady;
-      steady.title = "turning, steady state";
-      steady.style = "linespoints pt 7";
-      steady.break_at_nonfinite = true;
-      steady.color = "#1f77b4";
-      unsteady.title = "turning, steady state not reached";
-      unsteady.style = "points pt 9 ps 1.5";
-      unsteady.color = "#ff7f0e";
-      std::vector<std::size_t> idx(r.points.size());
-      std::iota(idx.begin(), idx.end(), 0);
-      std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
-        return r.points[a].values[0] < r.points[b].values[0];
-      });
-      const auto edges = heatMapCellEdges(o.params[0].values);
-      std::ostringstream pre;
-      int obj = 1;
-      bool any_bad = false;
-      for (std::size_t i : idx) {
-        const SweepPoint& p = r.points[i];
-        const SweepPointClass c = classifySweepPoint(p);
-        const double x = p.values[0], y = p.metric(m);
-        steady.x.push_back(x);
-        steady.y.push_back(c == SweepPointClass::Steady ? y : kNaN);
-        if (c == SweepPointClass::Unsteady) {
-          unsteady.x.push_back(x);
-          unsteady.y.push_back(y);
-        }
-        if (c == SweepPointClass::NoValue) {
-          any_bad = true;
-          // Index into the parameter's value list for the band's extent.
-          std::size_t k = 0;
-          while (k < o.params[0].values.size() && o.params[0].values[k] != x) ++k;
-          double lo = x, hi = x;
-          if (k < edges.size()) lo = edges[k].first, hi = edges[k].second;
-          if (hi - lo <= 0) lo = x - 0.5, hi = x + 0.5;
-          pre << "set object " << obj++ << " rect from " << num(lo) << ", graph 0 to " << num(hi)
-              << ", graph 1 behind fc rgb '#999999' fs pattern 4 noborder\n";
-        }
-      }
-      // The whole grid stays in view, whichever points have values.
-      double xl = INFINITY, xh = -INFINITY;
-      for (const auto& e : edges) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
-      if (xh > xl) pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
-      if (any_bad)
-        pre << "set label 1 \"grey hatched: starting, rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
-      spec.preamble = pre.str();
-      spec.series.push_back(steady);
-      if (!unsteady.x.empty()) spec.series.push_back(unsteady);
-      renderPlot(spec, out_dir + "/plot_" + m);
+      drawMetricCurve(o, r, m, out_dir);
       plots.push_back(out_dir + "/plot_" + m + ".png");
-      continue;
+    } else {
+      drawMetricHeatMap(o, r, m, out_dir);
+      plots.push_back(out_dir + "/heatmap_" + m + ".png");
     }
-    // Heat map: rows follow the first parameter (y), columns the second (x).
-    const SweepParameter &py = o.params[0], &px = o.params[1];
-    const auto ex = heatMapCellEdges(px.values), ey = heatMapCellEdges(py.values);
-    double lo = INFINITY, hi = -INFINITY;
-    for (const SweepPoint& p : r.points) {
-      const double v = p.metric(m);
-      if (classifySweepPoint(p) != SweepPointClass::NoValue && std::isfinite(v))
-        lo = std::min(lo, v), hi = std::max(hi, v);
-    }
-    if (hi <= lo) hi = lo + std::max(std::abs(lo) * 1e-6, 1e-12);
-    std::ostringstream pre;
-    pre << "set palette rgb 33,13,10\nset cbrange [" << num(lo) << ":" << num(hi) << "]\n"
-        << "unset key\nset cblabel \"" << sweepMetricLabel(m) << "\"\nset colorbox\nunset grid\n"
-        << "set bmargin 6\nset label 1 \"" << kLegend << "\" at screen 0.02, screen 0.03 left\n";
-    // xrange from the cell edges of every value, so the edge cells are never clipped.
-    double xl = INFINITY, xh = -INFINITY, yl = INFINITY, yh = -INFINITY;
-    for (const auto& e : ex) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
-    for (const auto& e : ey) yl = std::min(yl, e.first), yh = std::max(yh, e.second);
-    pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\nset yrange [" << num(yl) << ":" << num(yh) << "]\n";
-    const bool labels = r.points.size() <= 150;
-    int obj = 1, lab = 2;
-    for (std::size_t i = 0; i < r.points.size(); ++i) {
-      const SweepPoint& p = r.points[i];
-      const std::size_t iy = i / px.values.size(), ix = i % px.values.size();
-      const auto [x0, x1] = ex[ix];
-      const auto [y0, y1] = ey[iy];
-      const std::string rect = "rect from " + num(x0) + "," + num(y0) + " to " + num(x1) + "," + num(y1);
-      const SweepPointClass c = classifySweepPoint(p);
-      const double v = p.metric(m);
-      if (c == SweepPointClass::NoValue || !std::isfinite(v)) {
-        pre << "set object " << obj++ << " " << rect << " fc rgb '#999999' fs pattern 4 border lc rgb '#666666'\n";
-        continue;
-      }
-      pre << "set object " << obj++ << " " << rect << " fc palette cb " << num(v) << " fs solid 1.0 noborder\n";
-      if (c == SweepPointClass::Unsteady)
-        pre << "set object " << obj++ << " " << rect << " fc rgb '#000000' fs transparent pattern 5 noborder\n";
-      if (labels) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.3g", v);
-        pre << "set label " << lab++ << " \"" << buf << "\" at " << num(0.5 * (x0 + x1)) << ","
-            << num(0.5 * (y0 + y1)) << " center front font 'Sans,8'\n";
-      }
-    }
-    PlotSpec spec;
-    spec.title = escapeUnderscores(m + " (" + o.model + " model)");
-    spec.xlabel = escapeUnderscores(sweepParamLabel(px.key));
-    spec.ylabel = escapeUnderscores(sweepParamLabel(py.key));
-    spec.width = 900;
-    spec.height = 680;
-    spec.preamble = pre.str();
-    PlotSeries anchor;  // one invisible point that uses the palette, so the colour box is drawn
-    anchor.title = "";
-    anchor.style = "points pt 7 ps 0 lc palette cb " + num(lo);
-    anchor.x = {px.values[0]};
-    anchor.y = {py.values[0]};
-    spec.series.push_back(anchor);
-    renderPlot(spec, out_dir + "/heatmap_" + m);
-    plots.push_back(out_dir + "/heatmap_" + m + ".png");
   }
   return plots;
 }
