@@ -88,6 +88,8 @@ class ColumnLayout {
   // the layout does not hold is a programming error (std::logic_error).
   void set(std::vector<double>& row, Column c, double value) const { row[position(c, 1)] = value; }
   void set(std::vector<double>& row, Column c, int number, double value) const { row[position(c, number)] = value; }
+  // A column's value in `row` (same positions as set()).
+  double get(const std::vector<double>& row, Column c, int number = 1) const { return row[position(c, number)]; }
 
  private:
   std::size_t position(Column c, int number) const;

@@ -262,9 +262,10 @@ class FormulationSelfCheck {
     if (model_.hasGuideFriction()) {
       const int n_carts = model_.scene().carts.count;
       SimTK::Vector normals_constrained(2 * n_carts);
-      for (int j = 0; j < n_carts; ++j) {  // N_front_j, N_rear_j: reaction columns 1 + 6j, 2 + 6j
-        normals_constrained[2 * j] = re_simbody_[1 + 6 * j];
-        normals_constrained[2 * j + 1] = re_simbody_[2 + 6 * j];
+      const ColumnLayout& L = model_.reactionsLayout();
+      for (int j = 0; j < n_carts; ++j) {
+        normals_constrained[2 * j] = L.get(re_simbody_, Column::N_front, j + 1);
+        normals_constrained[2 * j + 1] = L.get(re_simbody_, Column::N_rear, j + 1);
       }
       check = std::max(check, relativeDifference(normals_constrained, normals_own));
     }
