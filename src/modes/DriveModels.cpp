@@ -36,6 +36,7 @@ class ReducedDrive : public DriveModel {
     model_.derivatives(0.0, running_, y_.data(), dy_.data());
     return {dy_(model_.iOmega()), model_.rigid() ? 0.0 : dy_(model_.iTwistRate())};
   }
+  const ReducedModel& reducedModel() const override { return model_; }
   Eigen::MatrixXd massMatrix(double phi) override {
     const double J1 = model_.motorSideInertia(), J2 = model_.crankSideInertia(phi);
     if (model_.rigid()) return Eigen::MatrixXd::Constant(1, 1, J1 + J2);
@@ -58,6 +59,10 @@ class MultibodyDrive : public DriveModel {
       : model_(scene), s_(model_.initialState()), coords_(model_, s_), dyn_(model_, s_) {}
   const char* name() const override { return "multibody"; }
   bool elastic() const override { return coords_.twistFree(); }
+  const ReducedModel& reducedModel() const override {
+    if (!reduced_) reduced_ = std::make_unique<ReducedModel>(model_.scene());  // on first use only
+    return *reduced_;
+  }
 
   Eigen::Vector2d accelerations(const DrivePoint& p) override {
     place(p);
@@ -116,6 +121,7 @@ class MultibodyDrive : public DriveModel {
   }
 
   MultibodyModel model_;
+  mutable std::unique_ptr<ReducedModel> reduced_;
   SimTK::State s_;
   MinimalCoordinates coords_;
   MinimalDynamics dyn_;

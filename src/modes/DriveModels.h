@@ -51,6 +51,10 @@ class DriveModel {
   virtual Eigen::Vector2d accelerations(const DrivePoint& p) = 0;
   // M(φ2) in (φ2, ψ) coordinates [kg·m²] (rigid: 1×1).
   virtual Eigen::MatrixXd massMatrix(double phi) = 0;
+  // The reduced model of the same scene, built once with the drive: the kinematics, inertias and
+  // loads the analysis reads beside the drive's own equations (naming modes, the steady guess,
+  // the excitation orders), whichever model the drive is.
+  virtual const ReducedModel& reducedModel() const = 0;
 };
 
 std::unique_ptr<DriveModel> makeReducedDrive(const Scene& scene);

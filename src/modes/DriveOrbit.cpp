@@ -13,13 +13,13 @@ namespace rollerdyn::modes {
 
 const char* toString(ModeKind k) { return k == ModeKind::Torsional ? "torsional (coupling)" : "speed (whole drive)"; }
 
-SteadyGuess steadyGuess(const Scene& scene) {
+SteadyGuess steadyGuess(const ReducedModel& model) {
+  const Scene& scene = model.scene();
   SteadyGuess g;
   if (!scene.motor.enabled) {
     g.failure = "no motor (motor.enabled is false): the drive has no steady running to linearize about";
     return g;
   }
-  const ReducedModel model(scene);
   const double u = scene.reducer.ratio;
   const double w_sync = scene.motor.omega_sync / u;                            // crank axis
   const double w_kr = scene.motor.omega_sync * (1 - scene.motor.critical_slip) / u;  // breakdown
@@ -151,7 +151,7 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
   double omega_scale = scene.motor.omega_sync / scene.reducer.ratio;
   double twist_scale = 1e-6;
   if (start.size() == 0) {
-    const SteadyGuess g = steadyGuess(scene);
+    const SteadyGuess g = steadyGuess(drive.reducedModel());
     if (!g.ok) {
       r.failure = g.failure;
       return r;

@@ -34,7 +34,7 @@ struct SteadyGuess {
   double twist = 0;      // [rad]
   double mean_load_torque = 0;  // [N·m] at the crank
 };
-SteadyGuess steadyGuess(const Scene& scene);
+SteadyGuess steadyGuess(const ReducedModel& model);
 
 enum class ModeKind { Torsional, Speed };
 const char* toString(ModeKind k);  // "torsional (coupling)", "speed (whole drive)"

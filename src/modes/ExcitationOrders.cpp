@@ -42,9 +42,9 @@ std::vector<double> amplitudes(const std::vector<std::complex<double>>& c) {
 
 }  // namespace
 
-ExcitationOrders excitationOrders(const Scene& scene, double omega, int max_order) {
+ExcitationOrders excitationOrders(const ReducedModel& model, double omega, int max_order) {
+  const Scene& scene = model.scene();
   ExcitationOrders e;
-  const ReducedModel model(scene);
   const int n = 256;
   std::vector<double> J(n), M(n);
   for (int i = 0; i < n; ++i) {
@@ -91,8 +91,8 @@ ExcitationOrders excitationOrders(const Scene& scene, double omega, int max_orde
   return e;
 }
 
-std::vector<double> throwOrderShares(const Scene& scene, double omega, int max_order) {
-  const ReducedModel model(scene);
+std::vector<double> throwOrderShares(const ReducedModel& model, double omega, int max_order) {
+  const Scene& scene = model.scene();
   int n = 256;
   while (n < 4 * max_order) n *= 2;  // well above the highest order asked for
   const int carts = scene.carts.count;

@@ -31,6 +31,10 @@
 
 #include "scene/Scene.h"
 
+namespace rollerdyn {
+class ReducedModel;
+}  // namespace rollerdyn
+
 namespace rollerdyn::modes {
 
 struct OrderContent {
@@ -59,7 +63,7 @@ struct ExcitationOrders {
 };
 
 // Orders up to max_order; the load torque at crank speed `omega` [rad/s].
-ExcitationOrders excitationOrders(const Scene& scene, double omega, int max_order = 24);
+ExcitationOrders excitationOrders(const ReducedModel& model, double omega, int max_order = 24);
 
 // The layout's phase factor for order k (see above) [-].
 double layoutFactor(const Scene& scene, int k);
@@ -70,6 +74,6 @@ double layoutFactor(const Scene& scene, int k);
 // only where the throws' torques add up, at the coupling. Element k-1: the largest over the carts
 // of |Q_j,k| / max_k' |Q_j,k'|, for orders k = 1..max_order [-]. The rods' own weight is left out
 // (it adds order 1, far below a shaft's modes).
-std::vector<double> throwOrderShares(const Scene& scene, double omega, int max_order);
+std::vector<double> throwOrderShares(const ReducedModel& model, double omega, int max_order);
 
 }  // namespace rollerdyn::modes

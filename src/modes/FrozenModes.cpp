@@ -46,8 +46,8 @@ Band bandOf(const std::vector<double>& v) {
 namespace {
 
 // Kinetic energy of one mode split over the machine's parts (fractions of the total).
-void nameMode(FrozenMode& m, const Scene& scene, double phi, bool elastic) {
-  const ReducedModel rm(scene);
+void nameMode(FrozenMode& m, const ReducedModel& rm, double phi, bool elastic) {
+  const Scene& scene = rm.scene();
   const double J1 = scene.motorSideInertia();
   const double dphi2 = m.shape(0), dpsi = elastic ? m.shape(1) : 0.0;
   const double dphi1 = dphi2 + dpsi;
@@ -254,7 +254,7 @@ FrozenAngle frozenModes(DriveModel& drive, const Scene& scene, const DrivePoint&
     const double scale = std::max(std::abs(v(0)), std::abs(dphi1));
     if (scale > 0) v /= (dphi1 < 0 ? -scale : scale);
     m.shape = v;
-    nameMode(m, scene, p.phi, elastic);
+    nameMode(m, drive.reducedModel(), p.phi, elastic);
     // This mode's damped pair: the state matrix's pair whose eigenvectors resemble its shape.
     m.damping_ratio = NAN;
     if (std::isfinite(m.frequency)) setDampedPair(m, damped[2 * i], damped[2 * i + 1]);

@@ -17,7 +17,7 @@ SteadyMotion orbitFrom(const Scene& scene, double phi0, int samples) {
   SteadyMotionOptions o;
   o.samples = samples;
   o.rtol = 1e-11;
-  const SteadyGuess g = steadyGuess(s);
+  const SteadyGuess g = steadyGuess(drive->reducedModel());
   DrivePoint p;
   p.phi = phi0;
   p.omega = g.ok ? g.omega : 1.0;

@@ -92,7 +92,7 @@ SteadyMotionOptions steadyMotionOptions(DriveModel& reduced, const Scene& scene,
   so.warmup_periods = o.warmup_periods;
   DrivePoint p0;
   p0.phi = scene.initial.crank_angle;
-  const SteadyGuess g = steadyGuess(scene);
+  const SteadyGuess g = steadyGuess(reduced.reducedModel());
   p0.omega = g.ok ? g.omega : std::max(std::abs(scene.initial.crank_speed), 1.0);
   p0.twist = g.twist;
   so.reference_frequency = elastic ? frozenModes(reduced, scene, p0).oscillation_frequency() : 0.0;
@@ -103,9 +103,10 @@ SteadyMotionOptions steadyMotionOptions(DriveModel& reduced, const Scene& scene,
 // motor's static curve carries the mean load. A speed that is not the running speed (the initial
 // speed, often 0) would give modes of a machine that does not exist. Empty (and said in the notes)
 // where there is no such speed.
-std::vector<DrivePoint> uniformRotationPoints(const Scene& scene, const ModesOptions& o, ModesReport& r) {
+std::vector<DrivePoint> uniformRotationPoints(const ReducedModel& rm, const ModesOptions& o, ModesReport& r) {
+  const Scene& scene = rm.scene();
   std::vector<DrivePoint> points;
-  const SteadyGuess g = steadyGuess(scene);
+  const SteadyGuess g = steadyGuess(rm);
   if (!g.ok) {
     r.notes.push_back("no steady motion (" + r.steady.failure +
                       "): the modal analysis is not applicable (no running speed to linearize about)");
@@ -188,7 +189,7 @@ void addCampbellDiagram(const Scene& scene, const ModesOptions& o, double w_op, 
 }
 
 // The coupling mode's separation margins from the excitation orders, and the crankshaft chain's.
-void addSeparationMargins(const Scene& scene, ModesReport& r) {
+void addSeparationMargins(const ReducedModel& rm, ModesReport& r) {
   const Band none;
   r.separation = separationMargins(r.elastic, r.steady, r.frozen.empty() ? none : r.frozen[0].torsional_natural,
                                    r.frozen.empty() ? none : r.frozen[0].torsional,
@@ -199,7 +200,7 @@ void addSeparationMargins(const Scene& scene, ModesReport& r) {
     for (const ChainModeBand& b : r.chain.modes) p_top = std::max(p_top, b.p_max);
     const int orders = std::clamp(int(std::ceil(1.3 * p_top / r.steady.omega_mean)), 24, 400);
     addChainSeparation(r.separation, r.chain, r.elastic, r.steady,
-                       throwOrderShares(scene, r.steady.omega_mean, orders));
+                       throwOrderShares(rm, r.steady.omega_mean, orders));
   }
 }
 
@@ -230,9 +231,9 @@ void addStabilityCharts(const Scene& scene, const ModesOptions& o, double w_op, 
 
 }  // namespace
 
-TwoMassEstimate twoMassEstimate(const Scene& scene) {
+TwoMassEstimate twoMassEstimate(const ReducedModel& rm) {
+  const Scene& scene = rm.scene();
   TwoMassEstimate t;
-  const ReducedModel rm(scene);
   double J2 = 0;
   const int n = 720;
   for (int i = 0; i < n; ++i) J2 += rm.crankSideInertia(2 * M_PI * i / n);
@@ -253,19 +254,21 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   r.scene = scene.name;
   r.elastic = scene.coupling.type == CouplingType::Elastic;
   r.motor = scene.motor.enabled;
-  const ReducedModel rm(scene);
+  // The reduced model, built once: the reduced drive's equations and the kinematics, inertias and
+  // loads every stage reads.
+  auto reduced = makeReducedDrive(scene);
+  const ReducedModel& rm = reduced->reducedModel();
   markPhase(o.clock, "modes: set-up");
   // First estimate: two constant inertias (Dyomin (two rotors) eq. (10)).
-  r.two_mass = twoMassEstimate(scene);
+  r.two_mass = twoMassEstimate(rm);
 
   // 1. Steady motion (reduced model) and its Floquet multipliers.
-  auto reduced = makeReducedDrive(scene);
   const SteadyMotionOptions so = steadyMotionOptions(*reduced, scene, o, r.elastic);
   r.steady = steadyMotion(*reduced, scene, so);
   markPhase(o.clock, "modes: steady motion and Floquet (reduced)");
   std::vector<DrivePoint> points = r.steady.samples;
   if (!r.steady.found) {
-    const std::vector<DrivePoint> uniform = uniformRotationPoints(scene, o, r);
+    const std::vector<DrivePoint> uniform = uniformRotationPoints(rm, o, r);
     points.insert(points.end(), uniform.begin(), uniform.end());
   }
 
@@ -283,12 +286,12 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
 
   // 3. Excitation orders at the operating speed.
   const double w_op = r.steady.found ? r.steady.omega_mean : (points.empty() ? 1.0 : points[0].omega);
-  r.orders = excitationOrders(scene, w_op);
+  r.orders = excitationOrders(rm, w_op);
   markPhase(o.clock, "modes: excitation orders");
   // 4. Campbell diagram.
   addCampbellDiagram(scene, o, w_op, r);
   markPhase(o.clock, "modes: Campbell diagram");
-  addSeparationMargins(scene, r);
+  addSeparationMargins(rm, r);
   // 5. Stability charts.
   if (o.charts && r.steady.found) addStabilityCharts(scene, o, w_op, r);
   markPhase(o.clock, "modes: stability charts");

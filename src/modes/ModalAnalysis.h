@@ -108,7 +108,7 @@ ModesReport analyseModes(const Scene& scene, const ModesOptions& options = {});
 
 // The first estimate: J1, the crank side's mean inertia over a revolution (720 samples) and p0 of
 // Dyomin (two rotors) eq. (10) (elastic coupling only).
-TwoMassEstimate twoMassEstimate(const Scene& scene);
+TwoMassEstimate twoMassEstimate(const ReducedModel& model);
 
 nlohmann::json modesJson(const ModesReport& r);
 Table frozenTable(const ModesReport& r);    // frozen.csv

@@ -48,7 +48,7 @@ StabilityPoint evaluate(const Scene& s, double c, double y, Eigen::VectorXd& war
     }
     DrivePoint p0;
     p0.phi = s.initial.crank_angle;
-    const SteadyGuess g = steadyGuess(s);
+    const SteadyGuess g = steadyGuess(drive->reducedModel());
     p0.omega = g.ok ? g.omega : s.motor.omega_sync / s.reducer.ratio;
     p0.twist = g.twist;
     o.reference_frequency = frozenModes(*drive, s, p0).oscillation_frequency();

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "analysis/RunMotion.h"
+#include "reduced/ReducedModel.h"
 
 namespace rollerdyn {
 
@@ -12,7 +13,7 @@ double naturalFrequency(double c, double J1, double J2) {
   return std::sqrt(c * (J1 + J2) / (J1 * J2));  // Dyomin (two rotors) eq. (10)
 }
 
-double meanCrankSideInertia(const Scene& scene) { return modes::twoMassEstimate(scene).J2_mean; }
+double meanCrankSideInertia(const Scene& scene) { return modes::twoMassEstimate(ReducedModel(scene)).J2_mean; }
 
 std::vector<ResonanceHit> resonanceHits(double p0, double omega, double tolerance, const std::vector<int>& orders) {
   std::vector<ResonanceHit> hits;
@@ -27,11 +28,11 @@ std::vector<ResonanceHit> resonanceHits(double p0, double omega, double toleranc
 
 namespace {
 
-ResonanceReport firstEstimate(const Scene& scene, double omega, const modes::ExcitationOrders& orders,
+ResonanceReport firstEstimate(const ReducedModel& model, double omega, const modes::ExcitationOrders& orders,
                               double tolerance) {
   ResonanceReport r;
   r.omega = omega;
-  const modes::TwoMassEstimate t = modes::twoMassEstimate(scene);
+  const modes::TwoMassEstimate t = modes::twoMassEstimate(model);
   r.J1 = t.J1;
   r.J2_mean = t.J2_mean;
   if (!t.applicable) return r;
@@ -58,7 +59,8 @@ ResonanceReport firstEstimate(const Scene& scene, double omega, const modes::Exc
 
 ResonanceReport checkResonance(const Scene& scene, double omega, double tolerance) {
   const double w = std::isfinite(omega) && omega != 0 ? std::abs(omega) : 1.0;
-  return firstEstimate(scene, omega, modes::excitationOrders(scene, w), tolerance);
+  const ReducedModel model(scene);
+  return firstEstimate(model, omega, modes::excitationOrders(model, w), tolerance);
 }
 
 RunState runStateOf(const nlohmann::json& s) {
@@ -209,6 +211,7 @@ modes::ModesReport lightAnalysis(const Scene& scene) {
 RunResonance judgeRunResonance(const Scene& scene, const RunState& st, const modes::ModesReport* analysis) {
   RunResonance v;
   v.elastic = scene.coupling.type == CouplingType::Elastic;
+  const ReducedModel model(scene);  // the first estimate's inertias and the exciting orders
   const std::string no_steady = noSteadyMotion(scene, st);
   v.applicable = no_steady.empty();
   if (!v.applicable) {
@@ -217,12 +220,12 @@ RunResonance judgeRunResonance(const Scene& scene, const RunState& st, const mod
     v.first_estimate_status = "not applicable";
     v.stability = "not applicable";
     v.stability_reason = no_steady;
-    v.first_estimate = firstEstimate(scene, NAN, {}, kResonanceTolerance);
+    v.first_estimate = firstEstimate(model, NAN, {}, kResonanceTolerance);
     return v;
   }
   v.omega = std::abs(st.omega);
-  v.orders = modes::excitationOrders(scene, v.omega);
-  v.first_estimate = firstEstimate(scene, v.omega, v.orders, kResonanceTolerance);
+  v.orders = modes::excitationOrders(model, v.omega);
+  v.first_estimate = firstEstimate(model, v.omega, v.orders, kResonanceTolerance);
   if (!v.elastic) {
     v.reason = "rigid coupling: no torsional mode";
     v.verdict = "not applicable";

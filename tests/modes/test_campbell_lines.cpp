@@ -53,7 +53,7 @@ const CampbellCrossing* crossing(const CampbellDiagram& d, int k, bool parametri
 TEST(CampbellLines, OrderKsForcedCrossingIsAtPOverKAndItsParametricOneAtTwoPOverKForOddKToo) {
   const Scene s = constantInertia("300");
   const double p0 = p0Of(s);
-  const SteadyGuess g = steadyGuess(s);
+  const SteadyGuess g = steadyGuess(ReducedModel(s));
   ASSERT_TRUE(g.ok) << g.failure;
   // Speeds spanning p0/9 (forced, order 9) and 2·p0/9 (parametric, order 9), and p0/8, p0/4.
   const CampbellDiagram d =
@@ -88,7 +88,7 @@ TEST(CampbellLines, AnOverdampedModeHasNoCrossings) {
   const Eigen::Vector4cd ev = Eigen::EigenSolver<Eigen::Matrix4d>(S).eigenvalues();
   for (int i = 0; i < 4; ++i) ASSERT_LT(std::abs(ev(i).imag()), 1e-9 * std::abs(ev(i))) << ev.transpose();
   const double p0 = p0Of(s);
-  const SteadyGuess g = steadyGuess(s);
+  const SteadyGuess g = steadyGuess(ReducedModel(s));
   ASSERT_TRUE(g.ok) << g.failure;
   const CampbellDiagram d =
       campbellDiagram(s, g.omega, speedsAround(0.8 * p0 / 18, 1.15 * 2 * p0 / 17, 5), {17, 18}, 12);

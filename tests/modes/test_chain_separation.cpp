@@ -9,6 +9,7 @@
 #include "modes/ExcitationOrders.h"
 #include "modes/SeparationMargins.h"
 #include "support/Seed000Scene.h"
+#include "reduced/ReducedModel.h"
 
 using namespace rollerdyn;
 using namespace rollerdyn::modes;
@@ -112,14 +113,14 @@ TEST(ChainSeparation, AThrowKeepsTheOrdersTheLayoutCancels) {
   one.carts.side = {1};
   one.loads.gravity = 0.0;  // no rod weight torque, which the throw's shares leave out
   const double omega = 10.0;
-  const ExcitationOrders e = excitationOrders(one, omega, 12);
-  const std::vector<double> shares = throwOrderShares(one, omega, 12);
+  const ExcitationOrders e = excitationOrders(ReducedModel(one), omega, 12);
+  const std::vector<double> shares = throwOrderShares(ReducedModel(one), omega, 12);
   for (int k = 1; k <= 12; ++k)
     EXPECT_NEAR(shares[k - 1], e.table[k - 1].exciting_torque / e.exciting_largest, 1e-9) << "order " << k;
 
   const Scene four = test_scenes::seed000Scene();
-  const ExcitationOrders e4 = excitationOrders(four, omega, 12);
-  const std::vector<double> s4 = throwOrderShares(four, omega, 12);
+  const ExcitationOrders e4 = excitationOrders(ReducedModel(four), omega, 12);
+  const std::vector<double> s4 = throwOrderShares(ReducedModel(four), omega, 12);
   EXPECT_LT(e4.table[0].exciting_torque, 1e-6 * e4.exciting_largest);  // order 1 cancelled at the coupling
   EXPECT_GT(s4[0], 0.1);                                                // but not in a throw
   EXPECT_GT(s4[1], 0.01);

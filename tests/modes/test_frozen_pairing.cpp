@@ -11,11 +11,14 @@
 
 #include "modes/FrozenModes.h"
 #include "scene/SceneParser.h"
+#include "reduced/ReducedModel.h"
 
 using namespace rollerdyn;
 using namespace rollerdyn::modes;
 
 namespace {
+
+Scene anyScene() { return parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml"); }
 
 // A linear drive with known modes: physical coordinates (φ1, φ2) with M = diag(J1, J2); mode B
 // (1, 1) (motor side and crank side together) and mode A (J2, -J1) (against each other, the
@@ -24,7 +27,7 @@ namespace {
 // them in (φ2, ψ = φ1 - φ2), as the models do.
 class KnownModesDrive : public DriveModel {
  public:
-  KnownModesDrive(double J1, double J2, double wA, double zA, double wB, double zB) {
+  KnownModesDrive(double J1, double J2, double wA, double zA, double wB, double zB) : kinematics_(anyScene()) {
     Eigen::Matrix2d Mp = Eigen::Vector2d(J1, J2).asDiagonal();
     Eigen::Matrix2d Phi;
     Phi.col(0) = Eigen::Vector2d(J2, -J1);  // A
@@ -44,12 +47,14 @@ class KnownModesDrive : public DriveModel {
     return -M_.inverse() * (K_ * Eigen::Vector2d(p.phi, p.twist) + C_ * Eigen::Vector2d(p.omega, p.twist_rate));
   }
   Eigen::MatrixXd massMatrix(double) override { return M_; }
+  // The mode names' kinematics: a shipped scene's (the modes' frequencies and damping are this
+  // drive's own).
+  const ReducedModel& reducedModel() const override { return kinematics_; }
 
  private:
   Eigen::Matrix2d M_, K_, C_;
+  ReducedModel kinematics_;
 };
-
-Scene anyScene() { return parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/balanced-4cart.yaml"); }
 
 const FrozenMode* modeOf(const FrozenAngle& f, bool torsional) {
   for (const FrozenMode& m : f.modes)

@@ -7,6 +7,7 @@
 #include "modes/ExcitationOrders.h"
 #include "modes/OrderSpectrum.h"
 #include "scene/SceneParser.h"
+#include "reduced/ReducedModel.h"
 
 using namespace rollerdyn;
 using namespace rollerdyn::modes;
@@ -21,7 +22,7 @@ bool has(const std::vector<int>& v, int k) { return std::find(v.begin(), v.end()
 // Four equal carts at 90° on one side (Loveikin, Pochka, Romasevych (2018)): only the orders 4k
 // survive, in the layout's phase sums and in the measured inertia and load torque.
 TEST(ExcitationOrders, FourEqualCartsKeepMultiplesOfFour) {
-  const ExcitationOrders e = excitationOrders(shipped("balanced-4cart"), 10.7);
+  const ExcitationOrders e = excitationOrders(ReducedModel(shipped("balanced-4cart")), 10.7);
   EXPECT_EQ(e.layout, (std::vector<int>{4, 8, 12, 16, 20, 24}));
   ASSERT_FALSE(e.inertia.empty());
   for (int k : e.all) EXPECT_EQ(k % 4, 0) << k;
@@ -33,7 +34,7 @@ TEST(ExcitationOrders, FourEqualCartsKeepMultiplesOfFour) {
 // same-side one half a turn later, effective phases 0 and 270°: orders 2, 6, 10, ... cancel,
 // every other order (odd ones from the rod's obliquity r/l) survives.
 TEST(ExcitationOrders, OppositeSidesCancelTwoModFour) {
-  const ExcitationOrders e = excitationOrders(shipped("recuperative-2cart"), 10.4);
+  const ExcitationOrders e = excitationOrders(ReducedModel(shipped("recuperative-2cart")), 10.4);
   for (int k = 1; k <= 24; ++k) EXPECT_EQ(has(e.layout, k), k % 4 != 2) << k;
   for (int k : e.inertia) EXPECT_NE(k % 4, 2) << k;
   EXPECT_TRUE(has(e.inertia, 1));
@@ -43,24 +44,24 @@ TEST(ExcitationOrders, OppositeSidesCancelTwoModFour) {
 // The sides matter: two cranks in line (Δφ = 0) on opposite sides cancel every odd order, on the
 // same side they keep all.
 TEST(ExcitationOrders, SidesDecideWithCranksInLine) {
-  const ExcitationOrders opposite = excitationOrders(shipped("recuperative-2cart", {"crank.offset_deg=0"}), 10.4);
+  const ExcitationOrders opposite = excitationOrders(ReducedModel(shipped("recuperative-2cart", {"crank.offset_deg=0"})), 10.4);
   for (int k = 1; k <= 24; ++k) EXPECT_EQ(has(opposite.layout, k), k % 2 == 0) << k;
   for (int k : opposite.inertia) EXPECT_EQ(k % 2, 0) << k;
   // The rods' own weight does not follow the mirror rule: it brings order 1 into the load torque
   // (cranks in line: the two rods' weights add); without gravity every odd order cancels there too.
   EXPECT_TRUE(has(opposite.load, 1));
   const ExcitationOrders no_gravity =
-      excitationOrders(shipped("recuperative-2cart", {"crank.offset_deg=0", "loads.gravity=0"}), 10.4);
+      excitationOrders(ReducedModel(shipped("recuperative-2cart", {"crank.offset_deg=0", "loads.gravity=0"})), 10.4);
   for (int k : no_gravity.all) EXPECT_EQ(k % 2, 0) << k;
   const ExcitationOrders same =
-      excitationOrders(shipped("recuperative-2cart", {"crank.offset_deg=0", "carts.sides=same"}), 10.4);
+      excitationOrders(ReducedModel(shipped("recuperative-2cart", {"crank.offset_deg=0", "carts.sides=same"})), 10.4);
   EXPECT_TRUE(has(same.inertia, 1));
   EXPECT_TRUE(has(same.inertia, 3));
 }
 
 // Offsets of 73°: no order up to 12 has a vanishing phase sum (73·k is never 90, 180 or 270 mod 360).
 TEST(ExcitationOrders, UnequalOffsetsKeepEveryOrder) {
-  const ExcitationOrders e = excitationOrders(shipped("balanced-4cart", {"crank.offset_deg=73"}), 10.7);
+  const ExcitationOrders e = excitationOrders(ReducedModel(shipped("balanced-4cart", {"crank.offset_deg=73"})), 10.7);
   for (int k = 1; k <= 12; ++k) EXPECT_TRUE(has(e.layout, k)) << k;
 }
 

@@ -12,6 +12,7 @@
 #include "modes/RunModes.h"
 #include "scene/SceneParser.h"
 #include "support/SixCartScene.h"
+#include "reduced/ReducedModel.h"
 
 using namespace rollerdyn;
 using namespace rollerdyn::modes;
@@ -62,7 +63,7 @@ TEST(ParkModes, WithoutASteadyMotionTheFrozenModesAreAtTheRunningSpeedAndAWarnin
   const Scene s = sixCarts();
   const ModesReport r = light(s, 0, 0);
   ASSERT_FALSE(r.steady.found);
-  const SteadyGuess g = steadyGuess(s);
+  const SteadyGuess g = steadyGuess(ReducedModel(s));
   ASSERT_TRUE(g.ok) << g.failure;
   ASSERT_FALSE(r.frozen.empty());
   ASSERT_FALSE(r.frozen[0].angles.empty());
@@ -76,7 +77,7 @@ TEST(ParkModes, WithoutASteadyMotionTheFrozenModesAreAtTheRunningSpeedAndAWarnin
 // all and a warning that the analysis is not applicable (never silence).
 TEST(ParkModes, WithoutARunningSpeedTheAnalysisIsDeclaredNotApplicable) {
   const Scene s = sixCarts({"loads.roller_force_direction=opposes_velocity"});
-  ASSERT_FALSE(steadyGuess(s).ok);
+  ASSERT_FALSE(steadyGuess(ReducedModel(s)).ok);
   const ModesReport r = light(s);
   ASSERT_FALSE(r.steady.found);
   ASSERT_FALSE(r.frozen.empty());

@@ -7,6 +7,7 @@
 #include "modes/DriveOrbit.h"
 #include "modes/StabilityChart.h"
 #include "scene/SceneParser.h"
+#include "reduced/ReducedModel.h"
 
 using namespace rollerdyn;
 using namespace rollerdyn::modes;
@@ -42,7 +43,7 @@ TEST(StabilityChart, RowsOnParallelThreadsGiveTheSameChartAsOneThread) {
   // 24 kN·m/rad that holds stable and unstable points.
   const Scene scene = parseSceneFile(std::string(ROLLERDYN_SOURCE_DIR) + "/model/recuperative-2cart.yaml",
                                      {"coupling.type=elastic", "coupling.stiffness=24000", "coupling.damping=0"});
-  const SteadyGuess g = steadyGuess(scene);
+  const SteadyGuess g = steadyGuess(ReducedModel(scene));
   ASSERT_TRUE(g.ok);
   const std::vector<double> c = geometricGrid(12000, 48000, 3);
   const std::vector<double> w = linearGrid(0.8 * g.omega, 1.1 * g.omega, 3);

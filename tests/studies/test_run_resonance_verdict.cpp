@@ -18,6 +18,7 @@
 #include "modes/DriveOrbit.h"
 #include "studies/ResonanceCheck.h"
 #include "support/SixCartScene.h"
+#include "reduced/ReducedModel.h"
 
 using namespace rollerdyn;
 
@@ -28,7 +29,7 @@ Scene sixCarts(const std::vector<std::string>& more = {}) { return test_scenes::
 // The run's state of a drive that turns steadily at the speed where the motor carries the mean
 // load (about 10.6 rad/s for six carts: p0 = 65.05 rad/s is 6.1·ω, within 10 % of order 6).
 RunState turning(const Scene& s) {
-  const modes::SteadyGuess g = modes::steadyGuess(s);
+  const modes::SteadyGuess g = modes::steadyGuess(ReducedModel(s));
   EXPECT_TRUE(g.ok) << g.failure;
   return RunState{"turning", true, g.omega};
 }
@@ -164,7 +165,7 @@ TEST(RunResonanceVerdict, ADriveWithoutASteadyMotionHasNoStabilityVerdict) {
 // warning labelled unchecked, and the verdict line says so (never silence).
 TEST(RunResonanceVerdict, WithoutAModalAnalysisTheFirstEstimateStandsUnchecked) {
   const Scene s = sixCarts({"loads.roller_force_direction=opposes_velocity"});
-  ASSERT_FALSE(modes::steadyGuess(s).ok);
+  ASSERT_FALSE(modes::steadyGuess(ReducedModel(s)).ok);
   const double p0 = checkResonance(s, 10.0).p0;
   const Verdict r = verdictOf(s, RunState{"turning", true, p0 / 6.05});
   EXPECT_FALSE(r.v.modal_made);
