@@ -17,6 +17,8 @@
 
 namespace rollerdyn {
 
+// Each enumeration lists its words in the order of the key's words in the schema (SceneSchema.cpp):
+// the parser and toString() take the words from there (SceneChoices.h).
 enum class RodModel { Distributed, Split, Massless };          // rods.model
 enum class CouplingType { Elastic, Rigid };                     // coupling.type
 enum class RollerForceDirection { OpposesVelocity, AsPrinted }; // loads.roller_force_direction
@@ -27,8 +29,8 @@ enum class DriveType { Crank, Cam };                            // drive.type
 enum class Formulation { Constrained, Minimal };                // simulation.formulation
 enum class MotorModel { Kloss, KlossDynamic, Circuit, Park };   // motor.model
 enum class WindingConnection { Star, Delta };                   // motor.connection
-enum class GuideNormalForce { Lagged, Algebraic };             // loads.guide_friction.normal_force
-enum class ReducedGuideNormals { QuasiStatic, Kinetostatic };  // reduced.guide_normals
+enum class GuideNormalForce { Algebraic, Lagged };             // loads.guide_friction.normal_force
+enum class ReducedGuideNormals { Kinetostatic, QuasiStatic };  // reduced.guide_normals
 enum class ReducerLossModel { Papers, PowerFlow };            // reducer.losses
 
 struct SimulationSettings {
@@ -382,8 +384,9 @@ const char* toString(Formulation f);
 const char* toString(DriveType d);
 const char* toString(MotorModel m);
 const char* toString(WindingConnection c);
-const char* toString(GuideNormalForce g);     // "lagged" | "algebraic"
-const char* toString(ReducedGuideNormals g);  // "quasi_static" | "kinetostatic"
-const char* toString(ReducerLossModel m);     // "papers" | "power_flow"
+const char* toString(GuideNormalForce g);
+const char* toString(ReducedGuideNormals g);
+const char* toString(ReducerLossModel m);
+const char* toString(StartMethod m);       // motor.start.method
 
 }  // namespace rollerdyn
