@@ -9,6 +9,7 @@
 #include "io/AtomicFile.h"
 #include "multibody/IntegratorFactory.h"
 #include "scene/SceneParser.h"
+#include "scene/SceneSchema.h"
 
 namespace rollerdyn::bench {
 
@@ -269,10 +270,9 @@ void runVariant(const std::string& study, const std::string& variant, double x, 
 
 std::vector<BenchRow> runMotorsStudy(const SceneSource& source, const BenchOptions& opt) {
   std::vector<BenchRow> rows;
-  for (const char* model : {"kloss", "kloss_dynamic", "circuit", "park"}) {
+  for (const std::string& model : findSceneKey("motor.model")->choices) {  // every motor law
     if (stopRequested(opt)) break;
-    runVariant("motors", std::string("motor.model ") + model, 0, source, {std::string("motor.model=") + model}, opt,
-               rows);
+    runVariant("motors", "motor.model " + model, 0, source, {"motor.model=" + model}, opt, rows);
   }
   return rows;
 }

@@ -31,6 +31,7 @@
 #include "analysis/Summary.h"
 #include "compare/ValidationItems.h"
 #include "io/AtomicFile.h"
+#include "io/CsvTable.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
 #include "compare/RunModel.h"
@@ -63,27 +64,14 @@ struct Csv {
   }
 };
 
-Csv parseCsv(const std::string& text) {
+// The tool's one reader (io/CsvTable.h), its rows turned into columns.
+Csv columnsOf(const std::string& text, const std::string& file) {
+  const Table t = parseCsv(text, file);
   Csv c;
-  std::istringstream in(text);
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    std::istringstream fields(line);
-    std::string f;
-    std::size_t i = 0;
-    while (std::getline(fields, f, ',')) {
-      if (header) {
-        c.names.push_back(f.substr(0, f.find('[')));
-        c.columns.emplace_back();
-      } else {
-        if (i >= c.columns.size()) throw std::runtime_error("CSV row longer than its header");
-        c.columns[i].push_back(std::strtod(f.c_str(), nullptr));
-      }
-      ++i;
-    }
-    header = false;
-  }
+  c.names = t.columns;
+  c.columns.assign(t.columns.size(), {});
+  for (const std::vector<double>& row : t.rows)
+    for (std::size_t i = 0; i < row.size(); ++i) c.columns[i].push_back(row[i]);
   return c;
 }
 
@@ -459,7 +447,8 @@ void checkJoints(ValidationSection& s, const Scene& sc, const std::string& who, 
 // The checks on one run of the scene: its CSV text and its summary.json, as a user gets them.
 void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, const std::string& ts_csv,
               const std::string& rx_csv, const std::string& extrema_csv, const json& summary) {
-  RunFiles f{parseCsv(ts_csv), parseCsv(extrema_csv), rx_csv.empty() ? Csv{} : parseCsv(rx_csv), summary,
+  RunFiles f{columnsOf(ts_csv, "timeseries.csv"), columnsOf(extrema_csv, "crank_speed_extrema.csv"),
+             rx_csv.empty() ? Csv{} : columnsOf(rx_csv, "reactions.csv"), summary,
              summary.at("sizing"), {}};
   const int N = std::max(1, int(std::floor(sc.simulation.steady_window_revolutions)));
   f.win = lastRevolutions(f.ts.col("t"), f.ts.col("phi_crank"), N);

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -14,6 +13,7 @@
 #include "analysis/SteadyState.h"
 #include "compare/PaperFindings.h"
 #include "compare/SuiteInternal.h"
+#include "io/CsvTable.h"
 
 namespace rollerdyn::validation {
 namespace detail {
@@ -236,44 +236,6 @@ RunMetrics runMetrics(const Scene& scene, const RunResult& run) {
 
 ValidationResults runValidation(const ValidationOptions& options) { return Suite(options).run(); }
 
-Table readPublishedTable(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read published table '" + path + "'");
-  Table t;
-  std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> fields;
-    std::stringstream ss(line);
-    std::string f;
-    while (std::getline(ss, f, ',')) fields.push_back(f);
-    if (t.columns.empty()) {
-      t.columns = fields;
-      continue;
-    }
-    if (fields.size() != t.columns.size())
-      throw std::runtime_error(path + ":" + std::to_string(lineno) + ": expected " +
-                               std::to_string(t.columns.size()) + " fields, got " + std::to_string(fields.size()));
-    std::vector<double> row;
-    for (const auto& x : fields) {
-      std::size_t used = 0;
-      double v = 0;
-      try {
-        v = std::stod(x, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used == 0 || used != x.size())
-        throw std::runtime_error(path + ":" + std::to_string(lineno) + ": '" + x + "' is not a number");
-      row.push_back(v);
-    }
-    t.rows.push_back(row);
-  }
-  if (t.columns.empty()) throw std::runtime_error(path + ": no header row");
-  return t;
-}
+Table readPublishedTable(const std::string& path) { return readAnnotatedCsvFile(path, "published table"); }
 
 }  // namespace rollerdyn::validation

@@ -181,7 +181,8 @@ struct ValidationResults {
 
 ValidationResults runValidation(const ValidationOptions& options);
 
-// Reads a CSV with leading '#' comment lines (validation/published/*.csv) into a Table;
+// Reads a published table (validation/published/*.csv: the CSV convention with '#' comment lines)
+// with the tool's one CSV reader (io/CsvTable.h);
 // throws std::runtime_error naming the file and line on malformed input.
 Table readPublishedTable(const std::string& path);
 

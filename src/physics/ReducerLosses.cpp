@@ -16,7 +16,7 @@ ReducerLaw reducerLaw(const Scene& sc, double breakdown_torque) {
   law.model = sc.reducer.losses;
   law.ratio = sc.reducer.ratio;
   law.eta_forward = sc.reducer.efficiency;
-  law.eta_reverse = sc.reducer.efficiency_reverse > 0 ? sc.reducer.efficiency_reverse : sc.reducer.efficiency;
+  law.eta_reverse = sc.reducer.reverseEfficiency();
   law.torque_band = std::max(kTorqueBandShare * breakdown_torque * sc.reducer.ratio, 1e-6);
   const double w_sync = sc.reducer.ratio > 0 ? sc.motor.omega_sync / sc.reducer.ratio : 0.0;
   law.speed_band = std::max(kSpeedBandShare * w_sync, 1e-9);

@@ -62,7 +62,7 @@ struct ReducerLaw {
 
 // The scene's reducer law (reducer.*; the bands from the motor's breakdown torque M_kr [N·m at
 // the rotor, of the law the run uses: motor/BreakdownTorque.h] and synchronous speed as argued
-// above). An efficiency_reverse ≤ 0 (a Scene built in code) means η.
+// above).
 ReducerLaw reducerLaw(const Scene& scene, double breakdown_torque);
 
 // Torque the reducer passes on at the crank axis [N·m] for a torque M at its motor shaft [N·m]

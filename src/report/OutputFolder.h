@@ -7,24 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/RunResult.h"
+#include "io/CsvTable.h"  // parseCsv, readCsvFile: the reader of the tables read back here
 #include "io/Table.h"
 
 namespace rollerdyn {
-
-// Where parseCsv found what, for a reader that checks more than the table's shape (measured data:
-// each header's unit, each row's time): the header cells as written and the file line of each row.
-struct CsvLayout {
-  std::vector<std::string> header;  // header cells as written, e.g. "omega_crank[rad/s]"
-  int header_line = 0;              // file line (from 1) of the header
-  std::vector<int> row_lines;       // file line (from 1) of each row of the table
-};
-
-// Parses CSV as written by toCsv() (src/io/AtomicFile.h): a header row of column names, then
-// rows of numbers ("nan", "inf" accepted). Throws std::runtime_error naming file and line for a
-// missing header, a row with the wrong number of fields or a field that is not a number (and its column).
-// `layout` (optional) receives the header cells as written and each row's line.
-Table parseCsv(const std::string& text, const std::string& file_label, CsvLayout* layout = nullptr);
-Table readCsvFile(const std::string& path, CsvLayout* layout = nullptr);
 
 struct OutputFolder {
   std::string dir;

@@ -23,13 +23,6 @@ const char* const kCatalogueValueKeys[] = {
 const char* const kCircuitKeys[] = {"motor.circuit.R_s", "motor.circuit.L_sigma_s", "motor.circuit.L_m",
                                     "motor.circuit.R_r", "motor.circuit.L_sigma_r"};
 
-MotorModel modelOf(const std::string& w) {
-  if (w == "kloss_dynamic") return MotorModel::KlossDynamic;
-  if (w == "circuit") return MotorModel::Circuit;
-  if (w == "park") return MotorModel::Park;
-  return MotorModel::Kloss;
-}
-
 // All catalogue values, or none: a fit to part of a data sheet would be underdetermined.
 MotorCatalogue readCatalogue(const Reader& in, double omega0) {
   MotorCatalogue c;
@@ -184,10 +177,10 @@ void readMotor(const Reader& in, KlossMotor& m, InductionMotor& im) {
   m.omega_sync = in.number("motor.omega_sync");
   m.rotor_inertia = in.number("motor.rotor_inertia");
 
-  im.model = modelOf(in.choice("motor.model"));
+  im.model = in.choiceOf<MotorModel>("motor.model");
   im.torque_time_constant = in.numberOr("motor.torque_time_constant", 0.0);  // 0: 1/(ω1·s_kr)
   im.frequency = in.number("motor.frequency");
-  im.connection = in.choice("motor.connection") == "delta" ? WindingConnection::Delta : WindingConnection::Star;
+  im.connection = in.choiceOf<WindingConnection>("motor.connection");
   im.catalogue = readCatalogue(in, m.omega_sync);
   im.circuit = readCircuit(in);
   const bool machine_law = im.model == MotorModel::Circuit || im.model == MotorModel::Park;

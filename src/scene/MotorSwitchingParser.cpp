@@ -8,23 +8,6 @@ namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
 
-const char* methodWord(StartMethod m) {
-  switch (m) {
-    case StartMethod::DirectOnLine: return "direct_on_line";
-    case StartMethod::StarDelta: return "star_delta";
-    case StartMethod::SoftStarter: return "soft_starter";
-    case StartMethod::FrequencyConverter: return "frequency_converter";
-  }
-  return "?";
-}
-
-StartMethod methodOf(const std::string& w) {
-  if (w == "star_delta") return StartMethod::StarDelta;
-  if (w == "soft_starter") return StartMethod::SoftStarter;
-  if (w == "frequency_converter") return StartMethod::FrequencyConverter;
-  return StartMethod::DirectOnLine;
-}
-
 // "a number > t_on = 0.5 [s] (motor.start.t_on)": a bound taken from another key.
 std::string laterThan(const char* what, double bound, const char* key) {
   return std::string("a number > ") + what + " = " + formatNumber(bound) + " [s] (" + key + ")";
@@ -86,7 +69,7 @@ void idleKey(const scene_detail::Reader& in, Scene& scene, const std::string& ke
 // effect: refused, or warned about (idleKey).
 void refuseIdleKeys(const scene_detail::Reader& in, Scene& scene) {
   const MotorStart& m = scene.motor_start;
-  const std::string method = "motor.start.method", is = std::string("motor.start.method ") + methodWord(m.method);
+  const std::string method = "motor.start.method", is = std::string("motor.start.method ") + toString(m.method);
   if (m.method != StartMethod::StarDelta)
     for (const char* key : {"motor.start.changeover_time", "motor.start.changeover_speed", "motor.start.changeover_gap"})
       idleKey(in, scene, key, method, is, "only a star_delta start changes over from star to delta");
@@ -119,15 +102,14 @@ void refuseIdleKeys(const scene_detail::Reader& in, Scene& scene) {
 void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
   const SceneDocument& doc = in.doc();
   MotorStart& m = scene.motor_start;
-  m.method = methodOf(in.choice("motor.start.method"));
+  m.method = in.choiceOf<StartMethod>("motor.start.method");
   m.t_on = in.number("motor.start.t_on");
   m.phase = in.number("motor.start.phase_deg") * kDegToRad;
   readStarDelta(in, m, scene.motor.omega_sync);
   m.changeover_gap = in.number("motor.start.changeover_gap");
 
   const bool ramped = m.method == StartMethod::SoftStarter || m.method == StartMethod::FrequencyConverter;
-  const char* method_word = m.method == StartMethod::SoftStarter ? "soft_starter" : "frequency_converter";
-  const std::string needed_by = std::string("motor.start.method is ") + method_word;
+  const std::string needed_by = std::string("motor.start.method is ") + toString(m.method);
   m.ramp_time = ramped ? in.requiredNumber("motor.start.ramp_time", "required when " + needed_by)
                        : in.numberOr("motor.start.ramp_time", 0.0);
   m.initial_voltage = m.method == StartMethod::SoftStarter

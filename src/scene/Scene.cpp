@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "scene/SceneChoices.h"
+
 namespace rollerdyn {
 
 double Scene::motorSideInertia() const {
@@ -130,48 +132,70 @@ std::string effectWords(const std::string& e) {
   return e;
 }
 
+// The words are the schema's (SceneChoices.h); each key is looked up once.
 const char* toString(RodModel m) {
-  switch (m) {
-    case RodModel::Distributed: return "distributed";
-    case RodModel::Split: return "split";
-    case RodModel::Massless: return "massless";
-  }
-  return "?";
+  static const KeySpec& key = choiceKey("rods.model");
+  return choiceWord(key, m);
 }
-const char* toString(ReducerLossModel m) { return m == ReducerLossModel::PowerFlow ? "power_flow" : "papers"; }
-const char* toString(CouplingType t) { return t == CouplingType::Rigid ? "rigid" : "elastic"; }
+const char* toString(ReducerLossModel m) {
+  static const KeySpec& key = choiceKey("reducer.losses");
+  return choiceWord(key, m);
+}
+const char* toString(CouplingType t) {
+  static const KeySpec& key = choiceKey("coupling.type");
+  return choiceWord(key, t);
+}
 const char* toString(RollerForceDirection d) {
-  return d == RollerForceDirection::AsPrinted ? "as_printed" : "opposes_velocity";
+  static const KeySpec& key = choiceKey("loads.roller_force_direction");
+  return choiceWord(key, d);
 }
-const char* toString(KinematicsForm k) { return k == KinematicsForm::Truncated ? "truncated" : "exact"; }
+const char* toString(KinematicsForm k) {
+  static const KeySpec& key = choiceKey("reduced.kinematics");
+  return choiceWord(key, k);
+}
 const char* toString(FlywheelLocation l) {
-  return l == FlywheelLocation::MotorShaft ? "motor_shaft" : "crankshaft";
+  static const KeySpec& key = choiceKey("flywheel.location");
+  return choiceWord(key, l);
 }
-const char* toString(ReducedIntegrator i) { return i == ReducedIntegrator::Baranov ? "baranov" : "cvode"; }
-const char* toString(DriveType d) { return d == DriveType::Cam ? "cam" : "crank"; }
+const char* toString(ReducedIntegrator i) {
+  static const KeySpec& key = choiceKey("reduced.integrator");
+  return choiceWord(key, i);
+}
+const char* toString(DriveType d) {
+  static const KeySpec& key = choiceKey("drive.type");
+  return choiceWord(key, d);
+}
 const char* toString(MotorModel m) {
-  switch (m) {
-    case MotorModel::Kloss: return "kloss";
-    case MotorModel::KlossDynamic: return "kloss_dynamic";
-    case MotorModel::Circuit: return "circuit";
-    case MotorModel::Park: return "park";
-  }
-  return "?";
+  static const KeySpec& key = choiceKey("motor.model");
+  return choiceWord(key, m);
 }
-const char* toString(WindingConnection c) { return c == WindingConnection::Delta ? "delta" : "star"; }
+const char* toString(WindingConnection c) {
+  static const KeySpec& key = choiceKey("motor.connection");
+  return choiceWord(key, c);
+}
+const char* toString(Formulation f) {
+  static const KeySpec& key = choiceKey("simulation.formulation");
+  return choiceWord(key, f);
+}
+const char* toString(GuideNormalForce g) {
+  static const KeySpec& key = choiceKey("loads.guide_friction.normal_force");
+  return choiceWord(key, g);
+}
+const char* toString(ReducedGuideNormals g) {
+  static const KeySpec& key = choiceKey("reduced.guide_normals");
+  return choiceWord(key, g);
+}
+const char* toString(StartMethod m) {
+  static const KeySpec& key = choiceKey("motor.start.method");
+  return choiceWord(key, m);
+}
 
 double InductionMotor::phaseVoltage() const { return voltage / std::sqrt(3.0); }
 double InductionMotor::supplyAngularFrequency() const { return 2.0 * M_PI * frequency; }
 
-const char* toString(Formulation f) { return f == Formulation::Minimal ? "minimal" : "constrained"; }
 int Scene::selfCheckInterval() const {
   if (simulation.self_check_interval > 0) return simulation.self_check_interval;
   return std::max(50, 10 * carts.count);
-}
-
-const char* toString(GuideNormalForce g) { return g == GuideNormalForce::Algebraic ? "algebraic" : "lagged"; }
-const char* toString(ReducedGuideNormals g) {
-  return g == ReducedGuideNormals::Kinetostatic ? "kinetostatic" : "quasi_static";
 }
 
 }  // namespace rollerdyn

@@ -7,8 +7,17 @@
 // degrees only under keys ending in `_deg`. Frames: x horizontal along the guides, y vertical up,
 // z along the crankshaft axis; origin on the crankshaft axis. Each field's comment gives its
 // meaning, its unit, and the scene-file key it comes from.
+//
+// Defaults: a Scene built in code (Scene{}) holds, in every field, the value the parser gives when
+// the file leaves the key out: the schema's default of an Optional key (SceneSchema.cpp), the
+// rule's value of a Conditional key (SceneParser.cpp), so a scene built in code runs the same
+// equations as the same scene read from a file (test SceneDefaults). Required keys hold 0 here.
+// Three Conditional keys follow values a Scene built in code sets itself, and must be set with
+// them: carts.sides (one entry per cart, +1 each), motor.pole_pairs (round(2π·f_n/ω0)) and
+// rods.inertia_com (m·l²/12).
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -17,6 +26,8 @@
 
 namespace rollerdyn {
 
+// Each enumeration lists its words in the order of the key's words in the schema (SceneSchema.cpp):
+// the parser and toString() take the words from there (SceneChoices.h).
 enum class RodModel { Distributed, Split, Massless };          // rods.model
 enum class CouplingType { Elastic, Rigid };                     // coupling.type
 enum class RollerForceDirection { OpposesVelocity, AsPrinted }; // loads.roller_force_direction
@@ -27,23 +38,23 @@ enum class DriveType { Crank, Cam };                            // drive.type
 enum class Formulation { Constrained, Minimal };                // simulation.formulation
 enum class MotorModel { Kloss, KlossDynamic, Circuit, Park };   // motor.model
 enum class WindingConnection { Star, Delta };                   // motor.connection
-enum class GuideNormalForce { Lagged, Algebraic };             // loads.guide_friction.normal_force
-enum class ReducedGuideNormals { QuasiStatic, Kinetostatic };  // reduced.guide_normals
+enum class GuideNormalForce { Algebraic, Lagged };             // loads.guide_friction.normal_force
+enum class ReducedGuideNormals { Kinetostatic, QuasiStatic };  // reduced.guide_normals
 enum class ReducerLossModel { Papers, PowerFlow };            // reducer.losses
 
 struct SimulationSettings {
-  double t_end;                 // simulated time span [s]                       simulation.t_end
-  double accuracy;              // integrator relative accuracy [-]              simulation.accuracy
-  std::string integrator;       // Simbody integrator name, e.g. RungeKuttaMerson  simulation.integrator
-  double output_step;           // spacing of output rows [s]                    simulation.output_step
-  double constraint_tolerance;  // constraint projection tolerance [-]           simulation.constraint_tolerance
-  double steady_window_revolutions;  // crank revolutions at the end of the run used for the
+  double t_end = 0;             // simulated time span [s]                       simulation.t_end
+  double accuracy = 1e-6;       // integrator relative accuracy [-]              simulation.accuracy
+  std::string integrator = "RungeKuttaMerson";  // Simbody integrator name      simulation.integrator
+  double output_step = 0.005;   // spacing of output rows [s]                    simulation.output_step
+  double constraint_tolerance = 1e-6;  // constraint projection tolerance [-]; a file without the
+                                // key gets simulation.accuracy (set both when changing the accuracy
+                                // in code)                               simulation.constraint_tolerance
+  double steady_window_revolutions = 5;  // crank revolutions at the end of the run used for the
                                      // steady-state metrics [-]      simulation.steady_window_revolutions
-  Formulation formulation = Formulation::Constrained;  // equations the multibody model integrates:
+  Formulation formulation = Formulation::Minimal;  // equations the multibody model integrates:
                                 // all coordinates under Simbody's constraints (constrained) or
                                 // the independent ones only (minimal) [-]      simulation.formulation
-                                // (scene files default to minimal, SceneSchema.cpp; a Scene
-                                // built in code keeps the constrained formulation unless set)
   bool reactions = true;        // joint reaction forces computed at every output row; false:
                                 // motion and drive torques only, no reactions table [-]
                                 //                                               simulation.reactions
@@ -54,19 +65,19 @@ struct SimulationSettings {
 };
 
 struct InitialState {
-  double crank_angle;   // crank angle φ2 of cart 1's crank at t = 0 [rad]   initial.crank_angle_deg
-  double crank_speed;   // crank speed φ̇2 at t = 0 [rad/s]; motor starts at the same
+  double crank_angle = 0;   // crank angle φ2 of cart 1's crank at t = 0 [rad]   initial.crank_angle_deg
+  double crank_speed = 0;   // crank speed φ̇2 at t = 0 [rad/s]; motor starts at the same
                         // reduced speed (no twist rate) [rad/s]            initial.crank_speed
-  double twist;         // coupling twist φ1 - φ2 at t = 0 [rad]            initial.twist
+  double twist = 0;         // coupling twist φ1 - φ2 at t = 0 [rad]            initial.twist
 };
 
 struct CrankShaft {
-  double radius;            // crank radius r [m]                                crank.radius
-  double offset;            // angle between consecutive cranks Δφ [rad]; NaN when crank.angles_deg
+  double radius = 0;        // crank radius r [m]                                crank.radius
+  double offset = 0;        // angle between consecutive cranks Δφ [rad]; NaN when crank.angles_deg
                             // gives every crank's angle instead (read Scene::crankPhase(j))
                             //                                                   crank.offset_deg
-  double inertia_per_crank; // J'_K, one crank about the shaft axis [kg·m²]      crank.inertia_per_crank
-  double shaft_inertia;     // shaft itself (excluding cranks) about its axis [kg·m²]  crank.shaft_inertia
+  double inertia_per_crank = 0;  // J'_K, one crank about the shaft axis [kg·m²]      crank.inertia_per_crank
+  double shaft_inertia = 0;  // shaft itself (excluding cranks) about its axis [kg·m²]  crank.shaft_inertia
   std::vector<double> angles = {};   // per cart j: nominal angle of its crank from cart 1's crank
                                      // (angles[0] = 0) [rad]; empty: j·Δφ   crank.angles_deg
   std::vector<double> angle_errors = {};  // per cart j: deviation of its crank from the nominal angle,
@@ -114,44 +125,44 @@ struct CamDrive {
 };
 
 struct ConnectingRods {
-  RodModel model;        // distributed | split (Loveikin, Pochka, Romasevych (2018) eq. (2)-(3)) | massless   rods.model
-  double length;         // l, crank pin to cart hinge [m]                          rods.length
-  double mass;           // m_rod of one rod [kg] (ignored when massless)           rods.mass
-  double inertia_com;    // own inertia about its centre of mass [kg·m²];
-                         // default m·l²/12 (Loveikin and Pochka (2007): I_s = q·l³/12)               rods.inertia_com
+  RodModel model = RodModel::Distributed;  // distributed | split (Loveikin, Pochka, Romasevych (2018) eq. (2)-(3)) | massless   rods.model
+  double length = 0;     // l, crank pin to cart hinge [m]                          rods.length
+  double mass = 0;       // m_rod of one rod [kg] (ignored when massless)           rods.mass
+  double inertia_com = 0;  // own inertia about its centre of mass [kg·m²]; a file without the
+                         // key gets m·l²/12 (Loveikin and Pochka (2007): I_s = q·l³/12)               rods.inertia_com
 };
 
 // Geometry of one cart, measured from the rod hinge B (Loveikin, Pochka, Romasevych (2018) fig. 3, eq. (10)), in the
 // cart's own direction: +x points away from the shaft for a cart on the "same" side.
 struct CartGeometry {
-  double a;            // half distance between the two compacting rollers [m]        carts.geometry.a
-  double b;            // half distance between the two guide rollers [m]             carts.geometry.b
-  double p;            // horizontal distance B -> cart centre of mass / roller midpoint [m]  carts.geometry.p
-  double e;            // depth of the compacting-roller contact below B [m]          carts.geometry.e
-  double D;            // compacting roller diameter [m] (informational)              carts.geometry.D
-  double d;            // guide roller diameter [m]; friction moment arm d/2          carts.geometry.d
-  double com_height;   // height of the cart's centre of mass above B [m]             carts.geometry.com_height
+  double a = 0;        // half distance between the two compacting rollers [m]        carts.geometry.a
+  double b = 0;        // half distance between the two guide rollers [m]             carts.geometry.b
+  double p = 0;        // horizontal distance B -> cart centre of mass / roller midpoint [m]  carts.geometry.p
+  double e = 0;        // depth of the compacting-roller contact below B [m]          carts.geometry.e
+  double D = 0;        // compacting roller diameter [m] (informational)              carts.geometry.D
+  double d = 0;        // guide roller diameter [m]; friction moment arm d/2          carts.geometry.d
+  double com_height = 0;  // height of the cart's centre of mass above B [m]             carts.geometry.com_height
 };
 
 struct Carts {
-  int count;                 // number of carts n [-]                         carts.count
-  std::vector<int> side;     // per cart: +1 same side as cart 1's crank (x > 0), -1 opposite [-]
+  int count = 0;             // number of carts n [-]                         carts.count
+  std::vector<int> side = {};  // per cart: +1 same side as cart 1's crank (x > 0), -1 opposite [-]
                              //                                               carts.sides
-  double mass;               // m'_B, one cart without rod [kg]; NaN when carts.mass is a list
+  double mass = 0;           // m'_B, one cart without rod [kg]; NaN when carts.mass is a list
                              // (read Scene::cartMass(j))                     carts.mass
-  std::vector<double> masses;  // per cart: m'_B of cart j when carts.mass is a list, else empty [kg]
+  std::vector<double> masses = {};  // per cart: m'_B of cart j when carts.mass is a list, else empty [kg]
                                //                                             carts.mass: [...]
   CartGeometry geometry;     // carts.geometry.*
 };
 
 struct KlossMotor {
-  bool enabled;            // motor torque applied at all                       motor.enabled
-  double omega_sync;       // synchronous rotor speed ω0 [rad/s]                motor.omega_sync
-  double breakdown_torque; // M_kr at the rotor [N·m]                           motor.breakdown_torque
-  double critical_slip;    // s_kr [-]; from motor.critical_slip, or motor.omega_critical
+  bool enabled = true;     // motor torque applied at all                       motor.enabled
+  double omega_sync = 0;   // synchronous rotor speed ω0 [rad/s]                motor.omega_sync
+  double breakdown_torque = 0;  // M_kr at the rotor [N·m]                           motor.breakdown_torque
+  double critical_slip = 0;  // s_kr [-]; from motor.critical_slip, or motor.omega_critical
                            // (s_kr = 1 - ω_kr/ω0, Loveikin and Pochka (2007) eq. (7)), or motor.omega_nominal +
                            // motor.overload_ratio (s_kr = s_n(λ + √(λ²-1)), Loveikin, Pochka, Romasevych (2018) eq. (37))
-  double rotor_inertia;    // J_p about the rotor axis [kg·m²]                  motor.rotor_inertia
+  double rotor_inertia = 0;  // J_p about the rotor axis [kg·m²]                  motor.rotor_inertia
 };
 
 // The induction machine behind the motor laws other than static Kloss (src/motor/MotorLaw.h):
@@ -207,56 +218,60 @@ struct InductionMotor {
 };
 
 struct Reducer {
-  double ratio;        // u = ω_rotor / ω_crank [-]                                 reducer.ratio
-  double efficiency;   // η in (0, 1] [-]; with losses = power_flow the forward efficiency η_f,
+  double ratio = 0;    // u = ω_rotor / ω_crank [-]                                 reducer.ratio
+  double efficiency = 0;  // η in (0, 1] [-]; with losses = power_flow the forward efficiency η_f,
                        // motor side driving                                    reducer.efficiency
-  double inertia;      // J_red referred to the motor shaft [kg·m²]                 reducer.inertia
-  double delta;        // δ, Loveikin, Pochka, Romasevych (2018) eq. (1) factor for reducer inertia [-]        reducer.delta
+  double inertia = 0;  // J_red referred to the motor shaft [kg·m²]                 reducer.inertia
+  double delta = 1;    // δ, Loveikin, Pochka, Romasevych (2018) eq. (1) factor for reducer inertia [-]        reducer.delta
   ReducerLossModel losses = ReducerLossModel::Papers;  // papers: the torque at the crank is
                        // M·u·η in both directions of the power flow (eq. (37)); power_flow:
                        // loss (1 - η_f)·|P| when the motor side drives, (1/η_r - 1)·|P| when
                        // the crank side drives (physics/ReducerLosses.h) [-]   reducer.losses
-  double efficiency_reverse = 0;  // η_r in (0, 1], crank side driving [-]; absent: = η
-                       // (read only with losses = power_flow)         reducer.efficiency_reverse
+  double efficiency_reverse = 0;  // η_r in (0, 1], crank side driving [-]; 0: = η, which a file
+                       // without the key holds (read only with losses = power_flow; read it
+                       // through reverseEfficiency())                 reducer.efficiency_reverse
   double backlash = 0; // total backlash (free play) of the drive train between motor side and
                        // crankshaft, reduced to the crank axis: the twist φ1 - φ2 travels
                        // backlash/2 either way without torque before the teeth meet; the contact
                        // stiffness and damping are the coupling's c, k (physics/CouplingLaw.h);
                        // 0 = teeth always in contact [rad]                  reducer.backlash
+  // η_r: efficiency_reverse, or η when it is 0 [-].
+  double reverseEfficiency() const { return efficiency_reverse > 0 ? efficiency_reverse : efficiency; }
 };
 
 struct Coupling {
-  CouplingType type;   // elastic | rigid                                          coupling.type
-  double stiffness;    // c, reduced to the crank axis [N·m/rad]                   coupling.stiffness
-  double damping;      // k, reduced to the crank axis [N·m·s/rad]                 coupling.damping
-  double inertia;      // J_m, coupling hub on the motor shaft [kg·m²]             coupling.inertia
+  CouplingType type = CouplingType::Elastic;  // elastic | rigid                                          coupling.type
+  double stiffness = 0;  // c, reduced to the crank axis [N·m/rad]                   coupling.stiffness
+  double damping = 0;  // k, reduced to the crank axis [N·m·s/rad]                 coupling.damping
+  double inertia = 0;  // J_m, coupling hub on the motor shaft [kg·m²]             coupling.inertia
 };
 
 struct Flywheel {
-  double inertia;             // about its own shaft [kg·m²]; 0 = no flywheel     flywheel.inertia
-  FlywheelLocation location;  // crankshaft | motor_shaft                         flywheel.location
+  double inertia = 0;         // about its own shaft [kg·m²]; 0 = no flywheel     flywheel.inertia
+  FlywheelLocation location = FlywheelLocation::Crankshaft;  // crankshaft | motor_shaft                         flywheel.location
 };
 
 struct Loads {
-  double roller_force_front;   // F_j1, horizontal compacting-roller force [N]        loads.roller_force_front
-  double roller_force_rear;    // F_j2 [N]                                            loads.roller_force_rear
-  double roller_normal_front;  // R_j1, upward reaction of the mix on a roller [N]    loads.roller_normal_front
-  double roller_normal_rear;   // R_j2 [N]                                            loads.roller_normal_rear
-  RollerForceDirection roller_force_direction;  // opposes_velocity | as_printed   loads.roller_force_direction
-  double guide_friction;       // f, reduced guide-roller friction coefficient [-]    loads.guide_friction.coefficient
-  double gravity;              // g [m/s²]; 0 = no gravity                            loads.gravity
-  double velocity_smoothing;   // v_s: sign(v) is replaced by tanh(v/v_s) [m/s]       loads.velocity_smoothing
+  double roller_force_front = 0;   // F_j1, horizontal compacting-roller force [N]        loads.roller_force_front
+  double roller_force_rear = 0;    // F_j2 [N]                                        loads.roller_force_rear
+  double roller_normal_front = 0;  // R_j1, upward reaction of the mix on a roller [N]    loads.roller_normal_front
+  double roller_normal_rear = 0;   // R_j2 [N]                                        loads.roller_normal_rear
+  RollerForceDirection roller_force_direction = RollerForceDirection::OpposesVelocity;  // opposes_velocity | as_printed   loads.roller_force_direction
+  double guide_friction = 0;   // f, reduced guide-roller friction coefficient [-]    loads.guide_friction.coefficient
+  double gravity = 9.81;       // g [m/s²]; 0 = no gravity                            loads.gravity
+  double velocity_smoothing = 1e-3;  // v_s: sign(v) is replaced by tanh(v/v_s) [m/s]       loads.velocity_smoothing
   double guide_friction_lag = 2e-3;  // τ_N: time constant with which the multibody model's
                                // lagged friction normal force follows the guide reaction [s]
                                //                     loads.guide_friction.normal_force_lag
   double rolling_resistance = 0;  // μ_r, rolling resistance of the compacting rollers in the mix:
                                // a force μ_r·(R_j1 + R_j2) against the cart's velocity, added to
                                // F_j1 + F_j2 in either reading [-]      loads.rolling_resistance
-  GuideNormalForce guide_normal_force = GuideNormalForce::Lagged;  // normal force of the multibody
-                               // model's guide friction: the guide reaction of the same instant,
-                               // solved with the motion (algebraic), or followed with the lag τ_N
-                               // (lagged) [-]; scene files default to algebraic with the minimal
-                               // formulation (SceneParser.cpp)   loads.guide_friction.normal_force
+  GuideNormalForce guide_normal_force = GuideNormalForce::Algebraic;  // normal force of the
+                               // multibody model's guide friction: the guide reaction of the same
+                               // instant, solved with the motion (algebraic), or followed with the
+                               // lag τ_N (lagged) [-]; a file without the key gets algebraic with
+                               // the minimal formulation, lagged with the constrained one (set it
+                               // with the formulation in code)   loads.guide_friction.normal_force
 };
 
 // One cart's values of the loads.* keys that may be given per cart (a list, one value per cart);
@@ -270,15 +285,14 @@ struct CartLoads {
 };
 
 struct ReducedSettings {
-  KinematicsForm kinematics;   // exact (eq. (40)-(47)) | truncated (eq. (52)-(57))   reduced.kinematics
-  ReducedIntegrator integrator;  // cvode | baranov (Loveikin and Pochka (2007) eq. (4), (10), (11))  reduced.integrator
-  double baranov_step;         // crank-angle step of the Baranov scheme [rad]        reduced.baranov_step_deg
-  ReducedGuideNormals guide_normals = ReducedGuideNormals::QuasiStatic;  // guide normal forces of
-                               // the reduced model's friction and reactions: the papers' cart
+  KinematicsForm kinematics = KinematicsForm::Exact;  // exact (eq. (40)-(47)) | truncated (eq. (52)-(57))   reduced.kinematics
+  ReducedIntegrator integrator = ReducedIntegrator::Cvode;  // cvode | baranov (Loveikin and Pochka (2007) eq. (4), (10), (11))  reduced.integrator
+  double baranov_step = 1.0 * (M_PI / 180.0);  // crank-angle step of the Baranov scheme [rad]        reduced.baranov_step_deg
+  ReducedGuideNormals guide_normals = ReducedGuideNormals::Kinetostatic;  // guide normal forces
+                               // of the reduced model's friction and reactions: the papers' cart
                                // statics without inertial forces (quasi_static) or with the cart's
                                // and rod's inertial forces, solved with the motion (kinetostatic,
-                               // the multibody algebraic law) [-]; scene files default to
-                               // kinetostatic (SceneParser.cpp)                  reduced.guide_normals
+                               // the multibody algebraic law) [-]               reduced.guide_normals
 };
 
 // A key the scene gives that has no effect on the run and is accepted with a warning
@@ -382,8 +396,9 @@ const char* toString(Formulation f);
 const char* toString(DriveType d);
 const char* toString(MotorModel m);
 const char* toString(WindingConnection c);
-const char* toString(GuideNormalForce g);     // "lagged" | "algebraic"
-const char* toString(ReducedGuideNormals g);  // "quasi_static" | "kinetostatic"
-const char* toString(ReducerLossModel m);     // "papers" | "power_flow"
+const char* toString(GuideNormalForce g);
+const char* toString(ReducedGuideNormals g);
+const char* toString(ReducerLossModel m);
+const char* toString(StartMethod m);       // motor.start.method
 
 }  // namespace rollerdyn

@@ -29,8 +29,7 @@ SimulationSettings readSimulation(const Reader& in) {
   s.t_end = in.number("simulation.t_end");
   s.accuracy = in.number("simulation.accuracy");
   s.integrator = in.choice("simulation.integrator");
-  s.formulation = in.choice("simulation.formulation") == "minimal" ? Formulation::Minimal
-                                                                   : Formulation::Constrained;
+  s.formulation = in.choiceOf<Formulation>("simulation.formulation");
   // A Simbody integrator only applies to the constrained formulation: never ignore it silently.
   if (s.formulation == Formulation::Minimal && in.has("simulation.integrator")) {
     const std::string why = "no simulation.integrator: the minimal formulation (simulation.formulation) "
@@ -95,15 +94,9 @@ CrankShaft readCrank(const Reader& in) {
   return c;
 }
 
-RodModel rodModelOf(const std::string& w) {
-  if (w == "split") return RodModel::Split;
-  if (w == "massless") return RodModel::Massless;
-  return RodModel::Distributed;
-}
-
 ConnectingRods readRods(const Reader& in, double r) {
   ConnectingRods rods;
-  rods.model = rodModelOf(in.choice("rods.model"));
+  rods.model = in.choiceOf<RodModel>("rods.model");
   rods.length = in.number("rods.length");
   if (rods.length <= r) {
     // The crank-slider locks up (β reaches 90°) unless the rod is longer than the crank.
@@ -136,7 +129,7 @@ ConnectingRods readRods(const Reader& in, double r) {
 // drive.type and cam.*: the cam drive with optimal reversal of Loveikin and Pochka (Scene.h). Under a cam no rod is built, so the
 // Scene gets massless rods; the rod keys stay validated so `--set drive.type=crank` works.
 void readDrive(const Reader& in, Scene& s) {
-  s.drive = in.choice("drive.type") == "cam" ? DriveType::Cam : DriveType::Crank;
+  s.drive = in.choiceOf<DriveType>("drive.type");
   s.cam.stroke = s.drive == DriveType::Cam
                      ? in.requiredNumber("cam.stroke", "required when drive.type is cam")
                      : in.numberOr("cam.stroke", 0.0);
@@ -243,7 +236,7 @@ Reducer readReducer(const Reader& in) {
   Reducer r;
   r.ratio = in.number("reducer.ratio");
   r.efficiency = in.number("reducer.efficiency");
-  r.losses = in.choice("reducer.losses") == "power_flow" ? ReducerLossModel::PowerFlow : ReducerLossModel::Papers;
+  r.losses = in.choiceOf<ReducerLossModel>("reducer.losses");
   // Absent: the same efficiency both ways (under papers the key has no effect: KeyEffects.cpp).
   r.efficiency_reverse = in.numberOr("reducer.efficiency_reverse", r.efficiency);
   r.inertia = in.number("reducer.inertia");
@@ -254,7 +247,7 @@ Reducer readReducer(const Reader& in) {
 
 Coupling readCoupling(const Reader& in) {
   Coupling c;
-  c.type = in.choice("coupling.type") == "rigid" ? CouplingType::Rigid : CouplingType::Elastic;
+  c.type = in.choiceOf<CouplingType>("coupling.type");
   // A rigid coupling ignores stiffness; it may stay in the file so that
   // `--set coupling.type=rigid` works on an elastic scene.
   c.stiffness = c.type == CouplingType::Elastic
@@ -268,8 +261,7 @@ Coupling readCoupling(const Reader& in) {
 Flywheel readFlywheel(const Reader& in) {
   Flywheel f;
   f.inertia = in.number("flywheel.inertia");
-  f.location = in.choice("flywheel.location") == "motor_shaft" ? FlywheelLocation::MotorShaft
-                                                               : FlywheelLocation::Crankshaft;
+  f.location = in.choiceOf<FlywheelLocation>("flywheel.location");
   return f;
 }
 
@@ -294,18 +286,15 @@ Loads readLoads(const Reader& in, int count, Formulation formulation, std::vecto
                           at(R1, l.roller_normal_front, j), at(R2, l.roller_normal_rear, j),
                           at(mu, l.rolling_resistance, j)});
   }
-  l.roller_force_direction = in.choice("loads.roller_force_direction") == "as_printed"
-                                 ? RollerForceDirection::AsPrinted
-                                 : RollerForceDirection::OpposesVelocity;
+  l.roller_force_direction = in.choiceOf<RollerForceDirection>("loads.roller_force_direction");
   l.guide_friction = in.number("loads.guide_friction.coefficient");
   l.gravity = in.number("loads.gravity");
   l.velocity_smoothing = in.number("loads.velocity_smoothing");
   l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
   const std::string normal_key = "loads.guide_friction.normal_force";
-  const std::string normal = in.has(normal_key) ? in.choice(normal_key)
-                             : formulation == Formulation::Minimal ? "algebraic"
-                                                                   : "lagged";
-  l.guide_normal_force = normal == "algebraic" ? GuideNormalForce::Algebraic : GuideNormalForce::Lagged;
+  l.guide_normal_force = in.has(normal_key)                     ? in.choiceOf<GuideNormalForce>(normal_key)
+                         : formulation == Formulation::Minimal ? GuideNormalForce::Algebraic
+                                                               : GuideNormalForce::Lagged;
   if (l.guide_normal_force == GuideNormalForce::Algebraic && formulation == Formulation::Constrained) {
     if (blameSecond(in.doc(), normal_key, "simulation.formulation"))
       in.doc().fail("simulation.formulation",
@@ -315,20 +304,17 @@ Loads readLoads(const Reader& in, int count, Formulation formulation, std::vecto
                   "lagged with simulation.formulation: constrained (the constrained formulation knows the "
                   "guide reaction only after Simbody's constrained solve, so it cannot solve the friction "
                   "loop algebraically; use simulation.formulation: minimal)",
-                  normal);
+                  toString(l.guide_normal_force));
   }
   return l;
 }
 
 ReducedSettings readReduced(const Reader& in) {
   ReducedSettings r;
-  r.kinematics = in.choice("reduced.kinematics") == "truncated" ? KinematicsForm::Truncated
-                                                                : KinematicsForm::Exact;
-  r.integrator = in.choice("reduced.integrator") == "baranov" ? ReducedIntegrator::Baranov
-                                                              : ReducedIntegrator::Cvode;
+  r.kinematics = in.choiceOf<KinematicsForm>("reduced.kinematics");
+  r.integrator = in.choiceOf<ReducedIntegrator>("reduced.integrator");
   r.baranov_step = in.number("reduced.baranov_step_deg") * kDegToRad;
-  r.guide_normals = in.choice("reduced.guide_normals") == "quasi_static" ? ReducedGuideNormals::QuasiStatic
-                                                                        : ReducedGuideNormals::Kinetostatic;
+  r.guide_normals = in.choiceOf<ReducedGuideNormals>("reduced.guide_normals");
   return r;
 }
 

@@ -9,6 +9,7 @@
 
 #include "scene/DidYouMean.h"
 #include "scene/Scene.h"
+#include "scene/SceneChoices.h"
 #include "scene/SceneDocument.h"
 #include "scene/SceneSchema.h"
 
@@ -114,6 +115,13 @@ class Reader {
     for (const std::string& c : s.choices)
       if (c == word) return word;
     fail(s, describeNode(doc_.find(path)) + didYouMean(word, s.choices));
+  }
+
+  // A Choice key read as the value of its enumeration in the Scene: the word's position among the
+  // schema's words (SceneChoices.h).
+  template <class Enum>
+  Enum choiceOf(const std::string& path) const {
+    return static_cast<Enum>(choicePosition(spec(path), choice(path)));
   }
 
   bool flag(const std::string& path) const {

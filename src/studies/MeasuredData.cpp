@@ -5,7 +5,7 @@
 
 #include "io/ReadFile.h"
 #include "io/Table.h"
-#include "report/OutputFolder.h"
+#include "io/CsvTable.h"
 
 namespace rollerdyn {
 
@@ -36,7 +36,7 @@ MeasuredData parseMeasuredData(const std::string& text, const std::string& file_
   CsvLayout layout;
   Table table;
   try {
-    table = parseCsv(text, file_label, &layout);  // the tool's one CSV reader (report/OutputFolder.h)
+    table = parseCsv(text, file_label, &layout);  // the tool's one CSV reader (io/CsvTable.h)
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());
   }

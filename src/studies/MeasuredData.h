@@ -1,7 +1,7 @@
 // Measurements for `rollerdyn identify`: a CSV with a time column t and any of rollerdyn's own
 // output columns (omega_crank, omega_motor, stator_current, coupling_torque, x_cart_1, ...), in the
 // tool's one CSV convention (io/Table.h: a header cell `name[unit]`, read by parseCsv of
-// report/OutputFolder.h). Every header must carry the unit rollerdyn writes for that column, so a
+// io/CsvTable.h). Every header must carry the unit rollerdyn writes for that column, so a
 // current in mA or a speed in rpm is refused instead of being fitted.
 #pragma once
 

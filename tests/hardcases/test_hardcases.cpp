@@ -50,10 +50,8 @@ Expect claims(Claims multibody, Claims multibody_minimal, Claims reduced, double
   return e;
 }
 
-using test_scenes::seed000Scene;
-
 Scene seed(const std::string& name, double t_end) {
-  Scene s = seed000Scene();
+  Scene s = hardCaseMachine();
   s.name = name;
   s.simulation.t_end = t_end;
   return s;

@@ -41,7 +41,7 @@ Expect claims(Claims multibody, Claims multibody_minimal, Claims reduced, double
 
 // The paper's machine with the fitted space-phasor motor.
 Scene parkScene(const std::string& name, double t_end) {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = hardCaseMachine();
   s.name = name;
   s.simulation.t_end = t_end;
   s.simulation.output_step = 1e-3;  // the supply-frequency transient (20 ms period) in the rows

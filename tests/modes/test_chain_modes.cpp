@@ -20,7 +20,8 @@ Scene chainScene(double GIp) {
   Scene sc = test_scenes::seed000Scene();
   sc.crankshaft.throw_positions = {0.0, 0.9, 0.3, 0.6};
   sc.crankshaft.torsional_stiffness = GIp;
-  sc.simulation.formulation = Formulation::Constrained;
+  sc.simulation.formulation = Formulation::Constrained;  // the chain is built by the constrained formulation
+  sc.loads.guide_normal_force = GuideNormalForce::Lagged;  // with its law of the guide friction
   return sc;
 }
 

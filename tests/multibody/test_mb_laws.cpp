@@ -178,6 +178,7 @@ TEST(MultibodyLaws, CrankPinAndBearingColumnsFollowRodAndCrankshaftStatics) {
 TEST(MultibodyLaws, FrictionNormalsRelaxWithTheLagTimeConstant) {
   Scene sc = lawScene(RodModel::Distributed);
   sc.loads.guide_friction = 0.05;  // enough friction that N̂ visibly matters
+  sc.loads.guide_normal_force = GuideNormalForce::Lagged;  // the law under test
   const MultibodyModel model(sc);
   SimTK::State st = model.assembledState(1.1, 9.0, 0.0);
   std::vector<double> ts, re;

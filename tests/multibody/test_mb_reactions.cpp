@@ -163,6 +163,10 @@ TEST(MultibodyReactions, SlowRunMatchesCartStaticsAwayFromReversal) {
   for (RollerForceDirection dir : {RollerForceDirection::OpposesVelocity, RollerForceDirection::AsPrinted})
     for (RodModel rods : {RodModel::Split, RodModel::Massless, RodModel::Distributed}) {
       Scene sc = reactionScene(rods, dir, 0.008);
+      // The lagged normal forces N̂ under test, in the constrained formulation whose Simbody
+      // integrator largestStep() repeats.
+      sc.simulation.formulation = Formulation::Constrained;
+      sc.loads.guide_normal_force = GuideNormalForce::Lagged;
       const double f = sc.loads.guide_friction;
       sc.initial.crank_angle = -0.04;
       sc.initial.crank_speed = omega;

@@ -34,7 +34,8 @@ Scene outputScene() {
 }
 
 TEST(ReducedOutputs, RowsAreTheStateAndTheCartStaticsOfIt) {
-  const Scene s = outputScene();
+  Scene s = outputScene();
+  s.reduced.guide_normals = ReducedGuideNormals::QuasiStatic;  // the rows' reactions: the papers' statics
   const RunResult r = runReducedModel(s);
   ASSERT_TRUE(r.stats.complete) << r.stats.status;
   const Table &ts = r.timeseries, &rx = r.reactions;

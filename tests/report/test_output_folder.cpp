@@ -1,5 +1,5 @@
 // Reading output folders back: CSV written by toCsv() round-trips (NaN included), malformed CSV
-// and folders are reported with file and line.
+// and folders are reported with file and line; the published tables through the same reader.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -86,6 +86,19 @@ TEST(ReportCsv, MalformedInputNamesFileAndLine) {
   EXPECT_EQ(messageOf([] { parseCsv("t,,x\n", "a.csv"); }),
             "a.csv:1: expected a header of column names, got an empty name");
   EXPECT_NO_THROW(parseCsv("t,x\r\n1,2\r\n", "crlf.csv"));
+}
+
+// A published table (validation/published): '#' lines are comments, the others the convention's
+// table; a bad row is named by its line in the file, comments counted.
+TEST(ReportCsv, AnnotatedTableSkipsCommentsAndKeepsLineNumbers) {
+  const fs::path f = freshDir("annotated") / "table.csv";
+  std::ofstream(f) << "# Source: a paper\n# Columns (units): x [m]\nx,y\n1,2\r\n# a note\n3,4\n5,five\n";
+  EXPECT_EQ(messageOf([&] { readAnnotatedCsvFile(f.string()); }),
+            f.string() + ":7: column 'y' (column 2): expected a number, got 'five'");
+  std::ofstream(f) << "# Source: a paper\nx,y\n1,2\n# a note\n3,4\n";
+  const Table t = readAnnotatedCsvFile(f.string());
+  EXPECT_EQ(t.columns, (std::vector<std::string>{"x", "y"}));
+  EXPECT_EQ(t.rows, (std::vector<std::vector<double>>{{1, 2}, {3, 4}}));
 }
 
 TEST(ReportOutputFolder, ReadsWhatIsThere) {
