@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "reduced/ReducedModel.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn::bench_fixture {
 
@@ -13,7 +13,7 @@ namespace rollerdyn::bench_fixture {
 // in the equations the benchmarks have timed: the multibody model's constrained formulation with the
 // lagged guide-friction normals, the reduced model's quasi-static guide normals (not the defaults).
 inline Scene sceneWithCarts(int n) {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   s.simulation.formulation = Formulation::Constrained;
   s.loads.guide_normal_force = GuideNormalForce::Lagged;
   s.reduced.guide_normals = ReducedGuideNormals::QuasiStatic;

@@ -92,7 +92,7 @@ double hermiteRoot(double h, double y0, double d0, double y1, double d1) {
 
 }  // namespace
 
-TwoRotorParameters seed000Drive() {
+TwoRotorParameters loveikin2018Drive() {
   TwoRotorParameters p;
   p.J1 = 0.766 * 9.8 * 9.8;
   p.J2 = 100.0;

@@ -26,7 +26,7 @@ using rollerdyn::closedFormResponse;
 // N·m/rad, b = 2000 N·m·s/rad (Table 1's smaller damping), M1 = 1000 N·m, α = 30°, M_c = the
 // mean drive torque M1(π - 2α)/π so the rotors keep a steady mean speed, ω = 10.68 rad/s (the
 // Loveikin, Pochka, Romasevych (2018) crank speed).
-TwoRotorParameters seed000Drive();
+TwoRotorParameters loveikin2018Drive();
 
 // The Simbody system of the check: two Pin rotors on ground, the ElasticCoupling element
 // between them, M(t) on rotor 1, -M_c on rotor 2.

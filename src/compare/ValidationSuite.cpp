@@ -145,9 +145,9 @@ void Suite::equivalence(ValidationResults& r) {
 }
 
 void Suite::analytic(ValidationResults& r) {
-  // Dyomin (two rotors) gives no numbers: the Loveikin, Pochka, Romasevych (2018) drive as two rotors (ASSUMED, seed000Drive()).
+  // Dyomin (two rotors) gives no numbers: the Loveikin, Pochka, Romasevych (2018) drive as two rotors (ASSUMED, loveikin2018Drive()).
   AnalyticResults& a = r.analytic;
-  const TwoRotorParameters p = seed000Drive();
+  const TwoRotorParameters p = loveikin2018Drive();
   a.accuracy = 1e-10;
   a.forced = p;
   a.resonant = p;

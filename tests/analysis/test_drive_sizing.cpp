@@ -10,7 +10,7 @@
 #include "analysis/DriveSizing.h"
 #include "analysis/SizingSummary.h"
 #include "analysis/SteadyState.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 using namespace rollerdyn;
 
@@ -325,7 +325,7 @@ TEST(DriveSizing, NotTurningLeavesPerRevolutionFiguresNaN) {
 namespace rollerdyn {
 // Per-cart masses: each cart's ½(m'_B,j + m_rod/2)·v_j², by hand on one row.
 TEST(DriveSizing, KineticEnergyCountsEachCartsOwnMass) {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   s.rods.model = RodModel::Split;
   s.carts.masses = {1000, 400, 1000, 700};
   s.carts.mass = std::nan("");

@@ -70,7 +70,7 @@ TEST(MotionCoefficients, MatchHandComputedValues) {
 // printed. δ, H, k_p are recomputed from the printed ω and ε: this checks eq. (12)-(14), not a
 // simulation. Tolerance 1.5e-3 covers the rounding of the printed inputs (the 0° row prints
 // δ = 0.5, H = 0.78, k_p = 1.03 with fewer digits; the 10° row's δ = 0.4888 is 0.48859).
-TEST(MotionCoefficients, ReproduceSeed004Table) {
+TEST(MotionCoefficients, ReproduceLoveikinPochka2007Table) {
   struct Row { double dphi, wmin, wmax, wmean, delta, eps, H, kp; };
   const std::vector<Row> table = {
       {0, 7.91, 13.19, 10.55, 0.5, 86.9, 0.78, 1.03},

@@ -7,7 +7,7 @@
 
 #include "bench/BenchRun.h"
 #include "bench/BenchStudies.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn::bench {
 namespace {
@@ -48,7 +48,7 @@ TEST(BenchError, Median) {
 }
 
 Scene shortScene() {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   s.simulation.t_end = 0.05;
   return s;
 }

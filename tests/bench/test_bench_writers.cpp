@@ -10,7 +10,7 @@
 
 #include "bench/BenchStudies.h"
 #include "io/ReadFile.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn::bench {
 namespace {
@@ -52,7 +52,7 @@ int lines(const std::string& text) {
 }
 
 TEST(BenchWriters, IntegratorStudyWritesCsvAndReport) {
-  const Scene scene = test_scenes::seed000Scene();
+  const Scene scene = test_scenes::loveikin2018Scene();
   BenchOptions opt;
   opt.quick = true;
   const std::vector<BenchRow> rows = {
@@ -75,7 +75,7 @@ TEST(BenchWriters, IntegratorStudyWritesCsvAndReport) {
 }
 
 TEST(BenchWriters, CartsAndEffectsStudiesWriteCsvAndReport) {
-  const Scene scene = test_scenes::seed000Scene();
+  const Scene scene = test_scenes::loveikin2018Scene();
   BenchOptions opt;
   opt.quick = true;
   const std::vector<BenchRow> carts = {row("carts", "n=4", 4, "multibody", "RungeKuttaMerson", 1e-6, 1.5, NAN, NAN, false),

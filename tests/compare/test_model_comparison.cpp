@@ -9,7 +9,7 @@
 
 #include "compare/ModelComparison.h"
 #include "compare/ModelDifferences.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 using namespace rollerdyn;
 
@@ -88,7 +88,7 @@ TEST(ResampleLinear, ExactAtNodesLinearBetweenNaNOutside) {
 }
 
 TEST(CompareRuns, KnownOffsetsOnDifferentGrids) {
-  const Scene sc = test_scenes::seed000Scene();
+  const Scene sc = test_scenes::loveikin2018Scene();
   // Multibody on a 0.1 s grid, reduced on a 0.05 s grid (a superset): ω differs by 0.01 rad/s,
   // the coupling torque by 2 %, every reaction by 5 N.
   const RunResult mb = syntheticRun("multibody", 0.1, 1.0, 4, 0.0, 1.0, 0.0);
@@ -123,7 +123,7 @@ TEST(CompareRuns, KnownOffsetsOnDifferentGrids) {
 
 TEST(CompareRuns, WithoutReactionsOnlyCrankSpeedAndCouplingTorque) {
   // simulation.reactions: false: the runs have no reactions table; the motion is compared alone.
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.simulation.reactions = false;
   RunResult mb = syntheticRun("multibody", 0.1, 1.0, 4, 0.0, 1.0, 0.0);
   RunResult red = syntheticRun("reduced", 0.05, 1.0, 4, 0.01, 0.98, 5.0);
@@ -139,7 +139,7 @@ TEST(CompareRuns, WithoutReactionsOnlyCrankSpeedAndCouplingTorque) {
 
 TEST(CompareRuns, OnlyTheCommonSpanIsCompared) {
   // A multibody run that ended early (e.g. stalled) at t = 0.5: only t <= 0.5 is compared.
-  const Scene sc = test_scenes::seed000Scene();
+  const Scene sc = test_scenes::loveikin2018Scene();
   const RunResult mb = syntheticRun("multibody", 0.1, 0.5, 4, 0.0, 1.0, 0.0);
   const RunResult red = syntheticRun("reduced", 0.1, 1.0, 4, 0.0, 1.0, 0.0);
   const ModelComparison c = compareRuns(sc, mb, red);
@@ -149,7 +149,7 @@ TEST(CompareRuns, OnlyTheCommonSpanIsCompared) {
 }
 
 TEST(ComparisonJson, ContractKeys) {
-  const Scene sc = test_scenes::seed000Scene();
+  const Scene sc = test_scenes::loveikin2018Scene();
   const ModelComparison c = compareRuns(sc, syntheticRun("multibody", 0.1, 1.0, 4, 0.0, 1.0, 0.0),
                                         syntheticRun("reduced", 0.1, 1.0, 4, 0.01, 1.0, 0.0));
   const nlohmann::json j = comparisonJson(c);
@@ -171,7 +171,7 @@ TEST(ModelDifferences, QuasiStaticNormalsAndTheLaggedLawDifferInFrictionAndRods)
   // Loveikin, Pochka, Romasevych (2018): distributed rods and guide friction f = 0.008, with the
   // papers' quasi-static guide normals in the reduced model and the lagged law of the constrained
   // formulation in the multibody model (not the defaults: the next test has those).
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.reduced.guide_normals = ReducedGuideNormals::QuasiStatic;
   sc.loads.guide_normal_force = GuideNormalForce::Lagged;
   sc.simulation.formulation = Formulation::Constrained;
@@ -190,7 +190,7 @@ TEST(ModelDifferences, QuasiStaticNormalsAndTheLaggedLawDifferInFrictionAndRods)
 
 TEST(ModelDifferences, KinetostaticNormalsAndTheAlgebraicLawLeaveNoFrictionOrReactionDifference) {
   // The defaults of scene files: the same friction law and the same Newton equations in both.
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.reduced.guide_normals = ReducedGuideNormals::Kinetostatic;
   sc.loads.guide_normal_force = GuideNormalForce::Algebraic;
   sc.simulation.formulation = Formulation::Minimal;
@@ -210,7 +210,7 @@ TEST(ModelDifferences, KinetostaticNormalsAndTheAlgebraicLawLeaveNoFrictionOrRea
 }
 
 TEST(ModelDifferences, EquivalentSceneAndEachSwitch) {
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.rods.model = RodModel::Split;
   sc.loads.guide_friction = 0.0;
   EXPECT_TRUE(motionEquivalent(sc));
@@ -260,7 +260,7 @@ rollerdyn::RunResult runOfSameMachine(double speed_factor) {
 }  // namespace
 
 TEST(CompareRuns, SteadyAnswersAndShapeHeadlineAndPhaseDriftIsSeparated) {
-  rollerdyn::Scene s = rollerdyn::test_scenes::seed000Scene();
+  rollerdyn::Scene s = rollerdyn::test_scenes::loveikin2018Scene();
   s.simulation.reactions = false;
   const rollerdyn::ModelComparison c = rollerdyn::compareRuns(s, runOfSameMachine(1.0), runOfSameMachine(1.0 + 5e-4));
   // Row by row at equal times the drift looks like a large difference ...

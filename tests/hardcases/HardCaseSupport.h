@@ -44,7 +44,7 @@
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
 #include "scene/Scene.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn::hardcases {
 
@@ -90,13 +90,13 @@ inline double energyTolerance(double accuracy, double energy_scale, double claim
   return (claim * accuracy + kRoundoffFloor) * energy_scale;
 }
 
-// The hard cases' machine (Seed000Scene.h) in the equations their constants were measured in: the
+// The hard cases' machine (Loveikin2018Scene.h) in the equations their constants were measured in: the
 // multibody model's constrained formulation (ctest runs every case once more in the minimal one,
 // multibodyFormulation below) with the lagged normal force of its guide friction, and the reduced
 // model's quasi-static guide normals (the papers' cart statics). A Scene built in code has a scene
 // file's defaults (minimal, algebraic, kinetostatic), so the cases say theirs here.
 inline Scene hardCaseMachine() {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   s.simulation.formulation = Formulation::Constrained;
   s.loads.guide_normal_force = GuideNormalForce::Lagged;
   s.reduced.guide_normals = ReducedGuideNormals::QuasiStatic;

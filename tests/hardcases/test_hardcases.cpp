@@ -2,7 +2,7 @@
 // asserting no exception/NaN, constraint error (multibody), energy audit, convergence of the
 // crank-speed and coupling-torque time series, and the agreement of the two models
 // (HardCaseSupport.h explains the error model behind every bound; each case gives its measured
-// constants). Machine: Loveikin, Pochka, Romasevych (2018) (tests/support/Seed000Scene.h:
+// constants). Machine: Loveikin, Pochka, Romasevych (2018) (tests/support/Loveikin2018Scene.h:
 // four carts on one side, Δφ = 90°, elastic damped coupling, roller forces as printed, guide
 // friction, gravity) unless a case says otherwise. Runs are kept short (0.5 ... 1.5 s of machine
 // time) except where the case itself is about length (100 and 1000 revolutions).

@@ -1,7 +1,7 @@
 // Hard cases of starting and stopping (HardCaseSupport.h: both models at a and a/10, no NaN,
 // constraint error, energy audit, convergence of crank speed and coupling torque, and the models'
 // agreement; each case's constants measured and claimed 3x). Machine: Loveikin, Pochka,
-// Romasevych (2018) (tests/support/Seed000Scene.h) driven by its 4A200M6U3 as the space-phasor
+// Romasevych (2018) (tests/support/Loveikin2018Scene.h) driven by its 4A200M6U3 as the space-phasor
 // (Park) machine, the double-cage circuit fitted to the motor's catalogue (model/balanced-4cart.yaml,
 // `rollerdyn motor`: per phase of the equivalent star, U_ph = 219.4 V, 50 Hz, p = 3), written here
 // so the cases do not depend on the fit. Its fastest electrical time constant is 1.6 ms and it

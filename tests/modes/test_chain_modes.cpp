@@ -7,7 +7,7 @@
 
 #include "modes/ChainModes.h"
 #include "reduced/ReducedModel.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 using namespace rollerdyn;
 using namespace rollerdyn::modes;
@@ -17,7 +17,7 @@ namespace {
 // The four-cart drive of Loveikin, Pochka, Romasevych (2018) with its throws 0.3 m apart along
 // the shaft, in the firing order 1-3-4-2 from the coupling (z = 0, 0.9, 0.3, 0.6 m).
 Scene chainScene(double GIp) {
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.crankshaft.throw_positions = {0.0, 0.9, 0.3, 0.6};
   sc.crankshaft.torsional_stiffness = GIp;
   sc.simulation.formulation = Formulation::Constrained;  // the chain is built by the constrained formulation

@@ -8,7 +8,7 @@
 
 #include "modes/ExcitationOrders.h"
 #include "modes/SeparationMargins.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 #include "reduced/ReducedModel.h"
 
 using namespace rollerdyn;
@@ -108,7 +108,7 @@ TEST(ChainSeparation, WithARigidCouplingTheChainsModesAreJudged) {
 // Four carts at 90°: the machine cancels every order but 4, 8, ...; a throw's torque keeps
 // orders 1, 2, 3.
 TEST(ChainSeparation, AThrowKeepsTheOrdersTheLayoutCancels) {
-  Scene one = test_scenes::seed000Scene();
+  Scene one = test_scenes::loveikin2018Scene();
   one.carts.count = 1;
   one.carts.side = {1};
   one.loads.gravity = 0.0;  // no rod weight torque, which the throw's shares leave out
@@ -118,7 +118,7 @@ TEST(ChainSeparation, AThrowKeepsTheOrdersTheLayoutCancels) {
   for (int k = 1; k <= 12; ++k)
     EXPECT_NEAR(shares[k - 1], e.table[k - 1].exciting_torque / e.exciting_largest, 1e-9) << "order " << k;
 
-  const Scene four = test_scenes::seed000Scene();
+  const Scene four = test_scenes::loveikin2018Scene();
   const ExcitationOrders e4 = excitationOrders(ReducedModel(four), omega, 12);
   const std::vector<double> s4 = throwOrderShares(ReducedModel(four), omega, 12);
   EXPECT_LT(e4.table[0].exciting_torque, 1e-6 * e4.exciting_largest);  // order 1 cancelled at the coupling

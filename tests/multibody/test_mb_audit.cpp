@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "multibody/MultibodySimulation.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
@@ -26,13 +26,13 @@ TEST(MultibodyAudit, EnergyResidualAtTightAccuracy) {
   // torque (digest: 8.1 kN·m mean needed, 4.6 kN·m available), so that case starts at speed and
   // is braked by its loads instead.
   const Case cases[] = {
-      {"seed000 as printed", RollerForceDirection::AsPrinted, CouplingType::Elastic, {1, 1, 1, 1}, 0.0},
+      {"loveikin2018 as printed", RollerForceDirection::AsPrinted, CouplingType::Elastic, {1, 1, 1, 1}, 0.0},
       {"opposes velocity, alternating sides", RollerForceDirection::OpposesVelocity, CouplingType::Elastic,
        {1, -1, 1, -1}, 10.0},
       {"rigid coupling", RollerForceDirection::AsPrinted, CouplingType::Rigid, {1, 1, 1, 1}, 0.0},
   };
   for (const Case& c : cases) {
-    Scene sc = test_scenes::seed000Scene();
+    Scene sc = test_scenes::loveikin2018Scene();
     sc.loads.roller_force_direction = c.dir;
     sc.coupling.type = c.coupling;
     sc.carts.side = c.sides;
@@ -85,7 +85,7 @@ TEST(MultibodyAudit, ConstraintErrorBelowTolerance) {
   };
   for (const Case& c : cases)
     for (double tol : {1e-3, 1e-6, 1e-9}) {
-      Scene sc = test_scenes::seed000Scene();
+      Scene sc = test_scenes::loveikin2018Scene();
       sc.simulation.formulation = Formulation::Constrained;  // Simbody's projection is under test
       sc.loads.guide_normal_force = GuideNormalForce::Lagged;
       sc.rods.model = c.rods;

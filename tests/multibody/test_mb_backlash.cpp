@@ -8,7 +8,7 @@
 
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
@@ -16,7 +16,7 @@ namespace {
 // The four-cart drive of Loveikin, Pochka, Romasevych (2018) from rest with 0.1° of backlash,
 // without guide friction (whose normal-force laws differ between the models by design).
 Scene backlashScene() {
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.loads.guide_friction = 0.0;
   sc.reducer.backlash = 0.0017453;
   sc.simulation.t_end = 2.0;

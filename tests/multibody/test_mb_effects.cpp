@@ -12,7 +12,7 @@
 #include "multibody/MultibodySimulation.h"
 #include "physics/KlossMotor.h"
 #include "physics/SliderCrank.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
@@ -57,7 +57,7 @@ double betaOf(const Scene& sc, double phi, int j) {
 
 // 6a. The inventory lists exactly the elements, bodies and mobilities the scene asks for.
 TEST(MultibodyEffects, SwitchedOffEffectsAreNotBuilt) {
-  const Scene base = test_scenes::seed000Scene();
+  const Scene base = test_scenes::loveikin2018Scene();
   const MultibodyModel full(base);
   const MultibodyInventory& b = full.inventory();
   // Loveikin, Pochka, Romasevych (2018): motor side + crankshaft + 4 rods + 4 carts; two loop equations per distributed rod.
@@ -134,7 +134,7 @@ TEST(MultibodyEffects, SwitchedOffEffectsAreNotBuilt) {
 //     tolerance: the expected differences are identities of the equations of motion and the
 //     cart equilibrium, checked to round-off (1e-9 relative, or 1e-6 N on ~1e4 N forces).
 TEST(MultibodyEffects, EachEffectChangesTheResultAsExpected) {
-  const Scene base = test_scenes::seed000Scene();
+  const Scene base = test_scenes::loveikin2018Scene();
   const double phi = 0.4, omega = 10.0;
 
   {  // Motor: at twist 0 and twist rate 0 the coupling passes no torque, so the motor side is
@@ -265,7 +265,7 @@ TEST(MultibodyEffects, EachEffectChangesTheResultAsExpected) {
 //     slip characteristic damps it; with k = 8000 N·m·s/rad the mode is over-damped
 //     (δ1 = k·(J1 + J2)/(2·J1·J2) ≈ 100 1/s > p0, Dyomin (two rotors) eq. (9)-(10)).
 TEST(MultibodyEffects, CouplingDampingDampsTheTorsionalMode) {
-  Scene damped = test_scenes::seed000Scene();
+  Scene damped = test_scenes::loveikin2018Scene();
   damped.simulation.t_end = 0.6;
   Scene undamped = damped;
   undamped.coupling.damping = 0;
@@ -305,7 +305,7 @@ TEST(MultibodyEffects, CouplingDampingDampsTheTorsionalMode) {
 //    share k·ψ̇ of the torque. Bound: 1e-2 rad/s on ~10 rad/s (1e-3 relative); the test also
 //    checks that the difference is explained by the measured twist rate.
 TEST(MultibodyEffects, RigidCouplingMatchesVeryStiffCoupling) {
-  Scene rigid = test_scenes::seed000Scene();
+  Scene rigid = test_scenes::loveikin2018Scene();
   rigid.coupling.type = CouplingType::Rigid;
   rigid.simulation.t_end = 1.0;
   rigid.simulation.accuracy = 1e-8;

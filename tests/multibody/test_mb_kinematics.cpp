@@ -9,7 +9,7 @@
 #include "multibody/MultibodyModel.h"
 #include "multibody/MultibodySimulation.h"
 #include "physics/SliderCrank.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
@@ -27,7 +27,7 @@ std::string label(const Scene& sc) {
 // coupling rigid, so the crank angle is φ0 + ω·t exactly and every cart's motion is pure
 // kinematics. Loads, friction and gravity stay on: they must not move a prescribed mechanism.
 Scene prescribedScene(RodModel rods, double t_end) {
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.motor.enabled = false;
   sc.coupling.type = CouplingType::Rigid;
   sc.rods.model = rods;
@@ -154,7 +154,7 @@ TEST(MultibodyKinematics, CartsStayOnTheirSideNearDeadCentres) {
 TEST(MultibodyKinematics, FreeRunFromDeadCentreKeepsBranches) {
   for (RodModel rods : kRodModels)
     for (double phi0 : {0.0, M_PI - 1e-7}) {
-      Scene sc = test_scenes::seed000Scene();
+      Scene sc = test_scenes::loveikin2018Scene();
       sc.simulation.formulation = Formulation::Constrained;  // Simbody's projection keeps the branches
       sc.loads.guide_normal_force = GuideNormalForce::Lagged;
       sc.rods.model = rods;

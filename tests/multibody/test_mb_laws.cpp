@@ -13,14 +13,14 @@
 
 #include "multibody/MultibodyModel.h"
 #include "multibody/MultibodySimulation.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
 
 // Four carts on alternating sides at a crank offset that is no symmetry of the layout (70°).
 Scene lawScene(RodModel rods) {
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.rods.model = rods;
   sc.carts.side = {1, -1, 1, -1};
   sc.crank.offset = 70.0 * M_PI / 180.0;

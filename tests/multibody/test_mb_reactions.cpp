@@ -14,7 +14,7 @@
 #include "physics/RollerLoads.h"
 #include "physics/SliderCrank.h"
 #include "reduced/CartStatics.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
@@ -49,7 +49,7 @@ std::string label(const Scene& sc) {
 
 // The four-cart Loveikin, Pochka, Romasevych (2018) scene with alternating sides, so every comparison covers σ = +1 and -1.
 Scene reactionScene(RodModel rods, RollerForceDirection dir, double f) {
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.rods.model = rods;
   sc.carts.side = {1, -1, 1, -1};
   sc.loads.roller_force_direction = dir;

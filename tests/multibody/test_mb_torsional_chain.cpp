@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "multibody/MultibodySimulation.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
@@ -16,7 +16,7 @@ namespace {
 // The four-cart drive of Loveikin, Pochka, Romasevych (2018), throws 0.3 m apart in the order
 // 1-3-4-2 from the coupling; G·I_p 0 = the rigid crankshaft.
 Scene fourCartChain(double GIp, double t_end) {
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.simulation.formulation = Formulation::Constrained;
   sc.simulation.t_end = t_end;
   sc.simulation.output_step = 1e-3;
@@ -36,7 +36,7 @@ Scene fourCartChain(double GIp, double t_end) {
 // Two throws, the drive end's carrying the motor side through a rigid coupling, carts of 1 g on
 // massless rods without loads: a two-rotor chain J1 = J'_K + J_n1, J2 = J'_K, c = 2e5 N·m/rad.
 Scene twoThrows(double torsional_damping) {
-  Scene sc = test_scenes::seed000Scene();
+  Scene sc = test_scenes::loveikin2018Scene();
   sc.simulation.formulation = Formulation::Constrained;
   sc.simulation.t_end = 0.3;
   sc.simulation.output_step = 1e-4;

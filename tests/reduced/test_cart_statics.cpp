@@ -10,7 +10,7 @@
 
 namespace rollerdyn {
 namespace test {
-Scene seed000LikeScene();
+Scene loveikin2018LikeScene();
 }
 
 namespace {
@@ -21,8 +21,8 @@ double relErr(double a, double b, double floor = 1.0) {
   return std::abs(a - b) / std::max(std::abs(b), floor);
 }
 
-TEST(CartStatics, ReproducesSeed000ClosedFormsWithZeroDepth) {
-  Scene s = test::seed000LikeScene();
+TEST(CartStatics, ReproducesLoveikin2018ClosedFormsWithZeroDepth) {
+  Scene s = test::loveikin2018LikeScene();
   s.carts.geometry.e = 0.0;  // eq. (18) has no (F01 + F02)·e term
   const double f = s.loads.guide_friction;
   ASSERT_EQ(f, 0.008);
@@ -87,7 +87,7 @@ TEST(CartStatics, EquilibriumResidualVanishesForRandomInputsWithDepth) {
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> U(-1.0, 1.0);
   for (RodModel model : {RodModel::Split, RodModel::Distributed, RodModel::Massless}) {
-    Scene s = test::seed000LikeScene();
+    Scene s = test::loveikin2018LikeScene();
     s.rods.model = model;
     ASSERT_NE(s.carts.geometry.e, 0.0);
     for (int i = 0; i < 500; ++i) {
@@ -110,7 +110,7 @@ TEST(CartStatics, EquilibriumResidualVanishesForRandomInputsWithDepth) {
 TEST(CartStatics, DepthTermShiftsRearReactionByHeOver2b) {
   // Keeping eq. (10)'s (F01 + F02)·e moment (dropped by eq. (18)) with friction off moves H·e/(2b)
   // from the front to the rear guide.
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.loads.guide_friction = 0.0;
   const double H = 15924, beta = 0.1;
   const CartStaticsResult with_e = solveCartStatics(s, beta, H, 1.0);
@@ -123,7 +123,7 @@ TEST(CartStatics, DepthTermShiftsRearReactionByHeOver2b) {
 }
 
 TEST(CartStatics, FrictionOpposesTheGivenDirectionEvenWhenAReactionIsNegative) {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   // Large outward roller force at depth e lifts the front guide roller: N_front < 0.
   const CartStaticsResult r = solveCartStatics(s, 0.0, 60000, -1.0);
   EXPECT_LT(r.N_front, 0.0);
@@ -133,7 +133,7 @@ TEST(CartStatics, FrictionOpposesTheGivenDirectionEvenWhenAReactionIsNegative) {
 
 TEST(CartStatics, WithoutGuideBaseOnlyTheSumOfReactionsIsDetermined) {
   // b = 0 is a valid scene when there is no guide friction (geometry not given, Loveikin and Pochka (2007)).
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.carts.geometry.b = 0.0;
   for (double f : {0.0, 0.008}) {
     s.loads.guide_friction = f;
@@ -155,7 +155,7 @@ namespace rollerdyn {
 TEST(CartStatics, EachCartUsesItsOwnMassAndLoads) {
   // Cart j of a scene with per-cart values must see exactly what a uniform scene with cart j's
   // values gives every cart.
-  Scene lists = test::seed000LikeScene();
+  Scene lists = test::loveikin2018LikeScene();
   lists.carts.masses = {1000, 400, 1000, 700};
   lists.carts.mass = std::nan("");
   const Loads& L = lists.loads;
@@ -164,7 +164,7 @@ TEST(CartStatics, EachCartUsesItsOwnMassAndLoads) {
                       {L.roller_force_front, 0.5 * L.roller_force_rear, 2000, 3000, 0.0},
                       {L.roller_force_front, L.roller_force_rear, L.roller_normal_front, L.roller_normal_rear, 0.0}};
   for (int j = 0; j < 4; ++j) {
-    Scene one = test::seed000LikeScene();
+    Scene one = test::loveikin2018LikeScene();
     one.carts.mass = lists.carts.masses[j];
     const CartLoads& c = lists.cart_loads[j];
     one.loads.roller_force_front = c.roller_force_front;

@@ -14,7 +14,7 @@
 
 namespace rollerdyn {
 namespace test {
-Scene seed000LikeScene();
+Scene loveikin2018LikeScene();
 }
 
 namespace {
@@ -46,7 +46,7 @@ HandStatics handSolve(double a, double b, double p, double e, double d, double h
 }
 
 TEST(CartStaticsFrictionArm, KinetostaticNormalsMatchTheBalanceAboutTheRearGuideContact) {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   ASSERT_EQ(s.rods.model, RodModel::Split);
   ASSERT_EQ(s.carts.mass, 1000.0);
   ASSERT_EQ(s.rods.mass, 64.0);
@@ -85,7 +85,7 @@ TEST(CartStaticsFrictionArm, KinetostaticNormalsMatchTheBalanceAboutTheRearGuide
 // Pochka, Romasevych (2018) eq. (14) with the inertia force added, the friction k·(N1 + N2) =
 // F·cos β − H − Fin, and the normals from the moments about Q as above.
 TEST(CartStaticsFrictionArm, QuasiStaticNormalsMatchTheBalanceAboutTheRearGuideContact) {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   ASSERT_EQ(s.rods.model, RodModel::Split);  // no rod load V at B
   const double G = (1000.0 + 64.0 / 2) * 9.81;
   const double R1 = 9740, R2 = 9740;

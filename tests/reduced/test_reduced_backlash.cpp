@@ -11,7 +11,7 @@
 
 namespace rollerdyn {
 namespace test {
-Scene seed000LikeScene();
+Scene loveikin2018LikeScene();
 }
 
 namespace {
@@ -20,7 +20,7 @@ constexpr double kBacklash = 0.0017453;  // 0.1°
 
 // A free two-carts machine (no motor, no loads), its coupling undamped.
 Scene freeMachine() {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.carts.count = 2;
   s.carts.side = {1, -1};
   s.motor.enabled = false;
@@ -57,7 +57,7 @@ TEST(ReducedBacklash, FreeMachineSwingsThroughTheGapAndKeepsItsEnergy) {
 }
 
 TEST(ReducedBacklash, EnergyAuditClosesWithBacklashAndDamping) {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.reducer.backlash = kBacklash;
   s.simulation.accuracy = 1e-9;
   s.simulation.t_end = 2.0;
@@ -69,7 +69,7 @@ TEST(ReducedBacklash, EnergyAuditClosesWithBacklashAndDamping) {
 }
 
 TEST(ReducedBacklash, StartsFromRestThroughTheGap) {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.reducer.backlash = 5.0 * M_PI / 180.0;  // 5°: b = 0.0436 rad
   s.simulation.t_end = 3.0;
   const RunResult r = runReducedModel(s);
@@ -101,7 +101,7 @@ TEST(ReducedBacklash, StartsFromRestThroughTheGap) {
 }
 
 TEST(ReducedBacklash, StiffContactRunsWithoutAnEventStorm) {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.coupling.stiffness = 1e9;
   s.simulation.t_end = 1.0;
   const RunResult plain = runReducedModel(s);
@@ -115,7 +115,7 @@ TEST(ReducedBacklash, StiffContactRunsWithoutAnEventStorm) {
 }
 
 TEST(ReducedBacklash, AThousandRevolutionsWithoutDrift) {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.reducer.backlash = kBacklash;
   s.simulation.output_step = 5e-3;
   s.simulation.t_end = 600.0;  // ≈ 1020 revolutions at 10.7 rad/s

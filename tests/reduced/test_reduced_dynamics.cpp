@@ -10,13 +10,13 @@
 
 namespace rollerdyn {
 namespace test {
-Scene seed000LikeScene();
+Scene loveikin2018LikeScene();
 }
 
 namespace {
 
 Scene freeRigidScene() {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.coupling.type = CouplingType::Rigid;
   s.carts.count = 2;
   s.carts.side = {1, -1};
@@ -66,7 +66,7 @@ TEST(ReducedDynamics, FreeElasticMachineConservesEnergy) {
 }
 
 TEST(ReducedDynamics, EnergyAuditClosesOnLoadedElasticFourCartScene) {
-  Scene s = test::seed000LikeScene();  // as printed, friction, gravity, elastic damped coupling
+  Scene s = test::loveikin2018LikeScene();  // as printed, friction, gravity, elastic damped coupling
   s.simulation.accuracy = 1e-9;
   s.simulation.t_end = 2.0;
   const RunResult res = runReducedModel(s);
@@ -81,7 +81,7 @@ TEST(ReducedDynamics, EnergyAuditClosesOnLoadedElasticFourCartScene) {
 }
 
 TEST(ReducedDynamics, LightLoadRunsNearSynchronousSpeedWithKlossSlip) {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.loads.roller_force_direction = RollerForceDirection::OpposesVelocity;
   s.loads.roller_force_front = s.loads.roller_force_rear = 500;  // 1 kN per cart
   s.loads.guide_friction = 0;
@@ -105,10 +105,10 @@ TEST(ReducedDynamics, LightLoadRunsNearSynchronousSpeedWithKlossSlip) {
       << "slip expected " << slip << ", got " << 1 - w_mean / w_sync;
 }
 
-// Rigid seed-000-like scene for the Baranov scheme: smooth loads (as printed, friction smoothed
+// Rigid scene like Loveikin, Pochka, Romasevych (2018) for the Baranov scheme: smooth loads (as printed, friction smoothed
 // over 5 cm/s) so that only the scheme's own first-order error is measured.
 Scene baranovScene() {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.coupling.type = CouplingType::Rigid;
   s.loads.velocity_smoothing = 0.05;
   s.initial.crank_speed = 104.72 / 9.8;  // motor started up, machine at synchronous speed
@@ -210,7 +210,7 @@ TEST(ReducedDynamics, BaranovCrankAngleIsTheTimeIntegralOfItsSpeed) {
 }
 
 TEST(ReducedDynamics, BaranovRejectsElasticCoupling) {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.reduced.integrator = ReducedIntegrator::Baranov;
   EXPECT_THROW(runReducedModel(s), std::invalid_argument);
 }
@@ -218,7 +218,7 @@ TEST(ReducedDynamics, BaranovRejectsElasticCoupling) {
 TEST(ReducedDynamics, OverloadedMachineReportsStallWithoutThrowing) {
   // Digest: with forces opposing velocity the four Loveikin, Pochka, Romasevych (2018) carts need ≈ 8.1 kN·m mean torque,
   // above the ≈ 4.6 kN·m the motor gives at breakdown.
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.loads.roller_force_direction = RollerForceDirection::OpposesVelocity;
   s.simulation.t_end = 5.0;
   RunResult res;
@@ -234,7 +234,7 @@ TEST(ReducedDynamics, OverloadedMachineReportsStallWithoutThrowing) {
 }
 
 TEST(ReducedDynamics, OutputContract) {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.coupling.type = CouplingType::Rigid;
   s.simulation.t_end = 0.5;
   s.simulation.output_step = 1e-3;
@@ -286,7 +286,7 @@ TEST(ReducedDynamics, OutputContract) {
 }
 
 TEST(ReducedDynamics, StiffElasticCouplingApproachesRigidDrive) {
-  Scene rigid = test::seed000LikeScene();
+  Scene rigid = test::loveikin2018LikeScene();
   rigid.coupling.type = CouplingType::Rigid;
   rigid.simulation.t_end = 1.0;
   rigid.simulation.accuracy = 1e-8;

@@ -8,15 +8,15 @@
 
 namespace rollerdyn {
 namespace test {
-Scene seed000LikeScene();
+Scene loveikin2018LikeScene();
 }
 
 namespace {
 
 // Loveikin and Pochka (2007) set-up: two carts on opposite sides, Δφ = 90°, distributed rods q = 80 kg/m,
 // one-mass (rigid) drive, I_o = 0.504 kg·m² reduced by u².
-Scene seed004LikeScene() {
-  Scene s = test::seed000LikeScene();
+Scene loveikinPochka2007LikeScene() {
+  Scene s = test::loveikin2018LikeScene();
   s.carts.count = 2;
   s.carts.side = {1, -1};
   s.carts.mass = 1000;
@@ -30,8 +30,8 @@ Scene seed004LikeScene() {
   return s;
 }
 
-TEST(ReducedInertia, MatchesSeed004Eq9ForTwoCartsOnOppositeSides) {
-  const Scene s = seed004LikeScene();
+TEST(ReducedInertia, MatchesLoveikinPochka2007Eq9ForTwoCartsOnOppositeSides) {
+  const Scene s = loveikinPochka2007LikeScene();
   const ReducedModel m(s);
   const double r = 0.2, l = 0.8, q = 80, u = 9.8, Io = 0.138 + 0.32 + 0.046, mc = 1000;
   const double Is = q * l * l * l / 12;
@@ -53,8 +53,8 @@ TEST(ReducedInertia, MatchesSeed004Eq9ForTwoCartsOnOppositeSides) {
   }
 }
 
-TEST(ReducedInertia, SplitRodsFollowSeed000Eq2And9) {
-  const Scene s = test::seed000LikeScene();
+TEST(ReducedInertia, SplitRodsFollowLoveikin2018Eq2And9) {
+  const Scene s = test::loveikin2018LikeScene();
   const ReducedModel m(s);
   const double r = 0.2, l = 0.8, mB = 1032;
   for (double phi = 0.0; phi < 6.3; phi += 0.31) {
@@ -75,7 +75,7 @@ TEST(ReducedInertia, SplitRodsFollowSeed000Eq2And9) {
 TEST(ReducedInertia, DerivativeMatchesCentralDifference) {
   for (RodModel model : {RodModel::Distributed, RodModel::Split, RodModel::Massless}) {
     for (KinematicsForm form : {KinematicsForm::Exact, KinematicsForm::Truncated}) {
-      Scene s = seed004LikeScene();
+      Scene s = loveikinPochka2007LikeScene();
       s.carts.count = 3;
       s.carts.side = {1, -1, 1};
       s.crank.offset = 2.0;
@@ -95,7 +95,7 @@ TEST(ReducedInertia, DerivativeMatchesCentralDifference) {
 
 // max over a revolution of |J_exact - J_truncated| (carts only) for a given r/l
 double maxTruncationDifference(double lambda) {
-  Scene s = seed004LikeScene();
+  Scene s = loveikinPochka2007LikeScene();
   s.rods.model = RodModel::Massless;
   s.rods.length = s.crank.radius / lambda;
   Scene t = s;
@@ -126,7 +126,7 @@ TEST(ReducedLoads, LoadTorqueEqualsRodForceMomentOnTheCrank) {
   // eq. (26)-(30) for σ = +1 (F·r·sin(θ + β)); for σ = -1 the mirrored rod gives
   // F·r·(σ·sin θ·cos β + cos θ·sin β).
   for (auto dir : {RollerForceDirection::AsPrinted, RollerForceDirection::OpposesVelocity}) {
-    Scene s = test::seed000LikeScene();
+    Scene s = test::loveikin2018LikeScene();
     s.carts.side = {1, -1, -1, 1};
     s.loads.roller_force_direction = dir;
     s.loads.gravity = 9.81;
@@ -148,9 +148,9 @@ TEST(ReducedLoads, LoadTorqueEqualsRodForceMomentOnTheCrank) {
   }
 }
 
-TEST(ReducedLoads, OpposingRollerForcesAverageToSeed004MeanTorque) {
+TEST(ReducedLoads, OpposingRollerForcesAverageToLoveikinPochka2007MeanTorque) {
   // Loveikin and Pochka (2007): two carts, F0 = 3562 N opposing velocity, mean M_o = 2·F0·2r/π = 907 N·m.
-  Scene s = seed004LikeScene();
+  Scene s = loveikinPochka2007LikeScene();
   s.loads.roller_force_front = 3562;
   s.loads.roller_force_rear = 0;
   s.loads.roller_normal_front = s.loads.roller_normal_rear = 0;
@@ -173,7 +173,7 @@ TEST(ReducedLoads, OpposingRollerForcesAverageToSeed004MeanTorque) {
 // both from loadTorque() and in the right-hand side the integrator uses (evaluate()).
 TEST(ReducedLoads, GravityTorqueIsTheDerivativeOfTheRodsPotential) {
   for (RodModel rods : {RodModel::Distributed, RodModel::Split, RodModel::Massless}) {
-    Scene s = seed004LikeScene();
+    Scene s = loveikinPochka2007LikeScene();
     s.carts.count = 3;
     s.carts.side = {1, -1, 1};
     s.crank.offset = 2.0;
@@ -213,7 +213,7 @@ namespace rollerdyn {
 
 // Per-cart inputs (docs/per-cart.md): each cart its own m'_B and crank angle.
 TEST(ReducedInertia, PerCartMassesAndCrankErrorsFollowTheHandSum) {
-  Scene s = test::seed000LikeScene();  // 4 carts, split rods: m_B = m'_B + 32 kg
+  Scene s = test::loveikin2018LikeScene();  // 4 carts, split rods: m_B = m'_B + 32 kg
   s.carts.masses = {1000, 400, 1000, 1000};  // cart 2 empty: the steel frame only, ASSUMED 400 kg
   s.carts.mass = std::nan("");
   s.crank.angle_errors = {0, 0, 2 * M_PI / 180, 0};  // cart 3's crank 2° ahead
@@ -241,7 +241,7 @@ TEST(ReducedLoads, AnEmptyCartDropsExactlyItsOwnLoadTorque) {
   // Without guide friction each cart's generalized force is its own roller force times x_B',
   // so emptying cart 2 (no mix: F_j1 = F_j2 = R_j1 = R_j2 = 0) must change M_load by exactly
   // the term that cart contributed in the uniform scene.
-  Scene u = test::seed000LikeScene();
+  Scene u = test::loveikin2018LikeScene();
   u.loads.guide_friction = 0;
   u.loads.roller_force_direction = RollerForceDirection::OpposesVelocity;
   Scene e = u;

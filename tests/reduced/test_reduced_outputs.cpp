@@ -16,12 +16,12 @@
 
 namespace rollerdyn {
 namespace test {
-Scene seed000LikeScene();
+Scene loveikin2018LikeScene();
 }
 namespace {
 
 Scene outputScene() {
-  Scene s = test::seed000LikeScene();
+  Scene s = test::loveikin2018LikeScene();
   s.carts.side = {1, -1, 1, -1};  // both sides
   s.crank.offset = 70.0 * M_PI / 180.0;
   s.rods.model = RodModel::Distributed;

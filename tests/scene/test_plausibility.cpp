@@ -5,13 +5,13 @@
 #include <cmath>
 
 #include "scene/Plausibility.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
 
 TEST(Plausibility, LengthTypedInMillimetresIsNamedAndThePapersValuesAreNot) {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   EXPECT_TRUE(plausibilityWarnings(s).empty());
   s.crank.radius = 200;  // meant 200 mm
   const auto w = plausibilityWarnings(s);
@@ -23,7 +23,7 @@ TEST(Plausibility, LengthTypedInMillimetresIsNamedAndThePapersValuesAreNot) {
 // The 6-cart trial typed crank.offset_deg: 1.0472 (60° in radians) and carts.mass: 1 (tonnes):
 // both were accepted silently.
 TEST(Plausibility, AnAngleTypedInRadiansAndACartMassInTonnesAreNamed) {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   s.crank.offset = 1.0472 * M_PI / 180.0;  // the key is in degrees: 1.0472 deg
   auto w = plausibilityWarnings(s);
   ASSERT_EQ(w.size(), 1u);
@@ -58,7 +58,7 @@ TEST(Plausibility, AnAngleTypedInRadiansAndACartMassInTonnesAreNamed) {
 // rows and a motor FAIL of a drive that ran well; a breakdown torque 1000x the catalogue's, a
 // gravity of 981 and a δ* of 5 were accepted silently.
 TEST(Plausibility, SparseRowsACatalogueMismatchGravityAndAPercentTargetAreNamed) {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   ASSERT_TRUE(plausibilityWarnings(s).empty());
   const double t_rev = 2 * M_PI * s.reducer.ratio / s.motor.omega_sync;
   s.simulation.output_step = t_rev / 40;  // 40 rows per revolution

@@ -4,13 +4,13 @@
 // mass with half the rod for split rods.
 #include <gtest/gtest.h>
 
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
 
 TEST(SceneInertia, FlywheelCountsOnItsShaftAndEq1To3) {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   s.crank.inertia_per_crank = 0.7;
   s.crank.shaft_inertia = 3.0;
   s.reducer.delta = 1.1;

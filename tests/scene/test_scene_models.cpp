@@ -18,7 +18,7 @@ std::string modelPath(const std::string& name) {
   return std::string(ROLLERDYN_SOURCE_DIR) + "/model/" + name;
 }
 
-TEST(SceneModels, Balanced4CartMatchesSeed000) {
+TEST(SceneModels, Balanced4CartMatchesLoveikin2018) {
   const Scene s = parseSceneFile(modelPath("balanced-4cart.yaml"));
   EXPECT_EQ(s.name, "balanced-4cart");
   EXPECT_NE(s.source.find("Romasevych Yu.O. (2018)"), std::string::npos);
@@ -46,7 +46,7 @@ TEST(SceneModels, Balanced4CartMatchesSeed000) {
   EXPECT_DOUBLE_EQ(s.initial.crank_speed, 0.0);
 }
 
-TEST(SceneModels, Recuperative2CartMatchesSeed004) {
+TEST(SceneModels, Recuperative2CartMatchesLoveikinPochka2007) {
   const Scene s = parseSceneFile(modelPath("recuperative-2cart.yaml"));
   EXPECT_EQ(s.name, "recuperative-2cart");
   EXPECT_EQ(s.carts.count, 2);
@@ -64,7 +64,7 @@ TEST(SceneModels, Recuperative2CartMatchesSeed004) {
   EXPECT_DOUBLE_EQ(s.simulation.t_end, 15.0);
 }
 
-TEST(SceneModels, EnergyBalanced3CartMatchesSeed003) {
+TEST(SceneModels, EnergyBalanced3CartMatchesEnergyBalancedDrivePaper) {
   const Scene s = parseSceneFile(modelPath("energy-balanced-3cart.yaml"));
   EXPECT_EQ(s.carts.count, 3);
   EXPECT_EQ(s.carts.side, (std::vector<int>{1, 1, 1}));

@@ -70,7 +70,7 @@ TEST(CamMotionLaw, DerivativesAreThoseOfThePosition) {
   }
 }
 
-TEST(CamMotionLaw, KeyValuesOfSeed001) {
+TEST(CamMotionLaw, KeyValuesOfCamDrivePaper) {
   // Ends of the stroke, x1 = Δx/10 (eq. (28)), constant speed 6Δx/(5t3) (eq. (28)), i.e.
   // 6Δx/(5π) per radian of cam.
   EXPECT_NEAR(camMotion(0, kStroke).x, -kStroke / 2, 1e-15);

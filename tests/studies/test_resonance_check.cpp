@@ -7,7 +7,7 @@
 
 #include "reduced/ReducedModel.h"
 #include "studies/ResonanceCheck.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
@@ -41,8 +41,8 @@ std::vector<int> ordersAbove(const Scene& s, double omega, double share, std::ve
   return out;
 }
 
-TEST(ResonanceCheck, NaturalFrequencyOfSeed000Drive) {
-  const Scene s = test_scenes::seed000Scene();
+TEST(ResonanceCheck, NaturalFrequencyOfLoveikin2018Drive) {
+  const Scene s = test_scenes::loveikin2018Scene();
   const ReducedModel m(s);
   // Mean J_n2 over a revolution against an independent fine trapezoidal average.
   double J2 = 0;
@@ -74,7 +74,7 @@ TEST(ResonanceCheck, TheChainsHarmonicDriveIsCheckedAtOneTwoThreeFiveOmega) {
 // at least 1 % of the largest. So p0 = 3.02ω (c = 5e4 N·m/rad in the trial) is no hit: order 3 is
 // not in the torque (amplitude below 1e-9 of the largest), whatever the docs said.
 TEST(ResonanceCheck, TheFirstEstimateChecksTheOrdersTheExcitingTorqueHas) {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   s.carts.count = 6;
   s.carts.side.assign(6, 1);
   s.crank.offset = M_PI / 3;
@@ -101,7 +101,7 @@ TEST(ResonanceCheck, TheFirstEstimateChecksTheOrdersTheExcitingTorqueHas) {
 // it, and the first estimate checks exactly those at least 1 % of the largest (no longer every
 // order up to 12 whatever its size).
 TEST(ResonanceCheck, UnequalCartsAddTheOrdersTheirDifferenceMakesLarge) {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   const double omega = 10.6;
   ASSERT_EQ(checkResonance(s, omega).orders, ordersAbove(s, omega, 0.01));
   for (int k : checkResonance(s, omega).orders) EXPECT_EQ(k % 4, 0) << k;

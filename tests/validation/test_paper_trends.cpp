@@ -25,7 +25,7 @@ RunMetrics reduced(const std::string& file, const std::vector<std::string>& sets
 
 }  // namespace
 
-TEST(PaperTrends, Seed004OptimalOffsetIsNinetyDegrees) {
+TEST(PaperTrends, LoveikinPochka2007OptimalOffsetIsNinetyDegrees) {
   // Loveikin and Pochka (2007) (conclusions and table): of the offsets 0...180°, δ is smallest at Δφ = π/2.
   // A 30° grid is enough to locate it; each run reaches steady state (checked).
   double best = 1e9, at = -1;
@@ -40,7 +40,7 @@ TEST(PaperTrends, Seed004OptimalOffsetIsNinetyDegrees) {
   EXPECT_EQ(at, 90);
 }
 
-TEST(PaperTrends, Seed003FlywheelLowersUnevenness) {
+TEST(PaperTrends, EnergyBalancedDrivePaperFlywheelLowersUnevenness) {
   // The energy-balanced drive paper (Table 1 and text): δ, H and k_p fall steadily as the flywheel inertia grows.
   double last_delta = 1e9, last_H = 1e9;
   for (double inertia : {0.0, 100.0, 500.0, 1000.0}) {
@@ -53,7 +53,7 @@ TEST(PaperTrends, Seed003FlywheelLowersUnevenness) {
   }
 }
 
-TEST(PaperTrends, Seed000DampingLowersCouplingSwing) {
+TEST(PaperTrends, Loveikin2018DampingLowersCouplingSwing) {
   // Loveikin, Pochka, Romasevych (2018) (Table 1): at Δφ = 90° the larger damping k = 8000 gives smaller coupling swings
   // than k = 2000 (torque and twist).
   const RunMetrics soft = reduced("balanced-4cart.yaml", {"coupling.damping=2000"});

@@ -25,7 +25,7 @@
 #include "reduced/ReducedModel.h"
 #include "scene/SceneParser.h"
 #include "studies/StartLoad.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace {
@@ -33,7 +33,7 @@ namespace {
 // The papers' motor on a crankshaft of 50 kg·m² with (almost) massless carts, no loads, no
 // gravity, a rigid coupling and η = 1: a pure inertia J = (J_p + J_m + J_red) + 50/u² at the rotor.
 Scene noLoadScene(MotorModel model) {
-  Scene s = test_scenes::seed000Scene();
+  Scene s = test_scenes::loveikin2018Scene();
   s.name = "no-load-start";
   s.carts.mass = 1e-6;
   s.rods = {RodModel::Massless, 0.8, 0.0, 0.0};

@@ -3,7 +3,7 @@
 // The expected values are computed HERE from the paper's formulas (eq. (7)-(10), (14) and the
 // steady response of a damped oscillator in complex form), not by the code under test.
 //
-// Parameters (Dyomin (two rotors) prints none; the Loveikin, Pochka, Romasevych (2018) drive of the validation report, seed000Drive()):
+// Parameters (Dyomin (two rotors) prints none; the Loveikin, Pochka, Romasevych (2018) drive of the validation report, loveikin2018Drive()):
 // J1 = 0.766·9.8² kg·m², J2 = 100 kg·m², k = 2e5 N·m/rad, b = 2000 N·m·s/rad, M1 = 1000 N·m,
 // α = 30°, M_c = M1(π - 2α)/π, ω = 10.68 rad/s.
 //
@@ -53,7 +53,7 @@ void expectedHarmonic(const TwoRotorParameters& p, int n, double& a, double& b) 
 }  // namespace
 
 TEST(TwoRotor, FreeOscillationAtNaturalFrequencyEq10) {
-  TwoRotorParameters p = seed000Drive();
+  TwoRotorParameters p = loveikin2018Drive();
   p.b = 0.0;
   const double p0 = std::sqrt(p.k * (p.J1 + p.J2) / (p.J1 * p.J2));  // Dyomin (two rotors), eq. (10)
   const FreeOscillationMeasurement m = measureFreeOscillation(p, 0.01, 40, 64, 1e-10);
@@ -63,7 +63,7 @@ TEST(TwoRotor, FreeOscillationAtNaturalFrequencyEq10) {
 }
 
 TEST(TwoRotor, DampedFrequencyAndDecayEq9Eq14) {
-  TwoRotorParameters p = seed000Drive();
+  TwoRotorParameters p = loveikin2018Drive();
   p.b = 200.0;
   const double p0sq = p.k * (p.J1 + p.J2) / (p.J1 * p.J2);
   const double d1 = p.b * (p.J1 + p.J2) / (2.0 * p.J1 * p.J2);  // eq. (9)
@@ -76,7 +76,7 @@ TEST(TwoRotor, DampedFrequencyAndDecayEq9Eq14) {
 
 TEST(TwoRotor, SteadyHarmonicResponseEq7Eq8) {
   for (double omega : {10.68, 0.0}) {
-    TwoRotorParameters p = seed000Drive();
+    TwoRotorParameters p = loveikin2018Drive();
     // second case: ω = p0/3, the third harmonic at resonance (the paper's warning after (21))
     if (omega == 0.0) p.omega = std::sqrt(p.k * (p.J1 + p.J2) / (p.J1 * p.J2)) / 3.0;
     const ForcedResponseMeasurement m = measureForcedResponse(p, 2.0, 4, 256, 1e-10);
@@ -96,7 +96,7 @@ TEST(TwoRotor, SteadyHarmonicResponseEq7Eq8) {
 }
 
 TEST(TwoRotor, ClosedFormAgreesWithComplexArithmeticAndRecordsThePrintedFormulas) {
-  const TwoRotorParameters p = seed000Drive();
+  const TwoRotorParameters p = loveikin2018Drive();
   const double p0 = std::sqrt(p.k * (p.J1 + p.J2) / (p.J1 * p.J2));
   const double d1 = p.b * (p.J1 + p.J2) / (2.0 * p.J1 * p.J2);
   for (const HarmonicResponse& h : closedFormResponse(p)) {

@@ -8,7 +8,7 @@
 
 #include "compare/PaperFindings.h"
 #include "compare/ValidationSuite.h"
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn::validation {
 namespace {
@@ -55,7 +55,7 @@ const Finding* findingStarting(const std::vector<Finding>& fs, const std::string
 }
 
 TEST(PaperFindings, TrendWithDampingIsAComparisonOfTheRun) {
-  const Scene sc = test_scenes::seed000Scene();
+  const Scene sc = test_scenes::loveikin2018Scene();
   // Ours falls from k = 2000 to 8000 at 60° and 90°, as the paper's: holds.
   auto f = findingsLoveikin2018(table1(460), {}, sc);
   const Finding* trend = findingStarting(f, "Trend with damping");
@@ -71,7 +71,7 @@ TEST(PaperFindings, TrendWithDampingIsAComparisonOfTheRun) {
 }
 
 TEST(PaperFindings, OtherReadingStallsOnlyWhenEveryRunStalled) {
-  const Scene sc = test_scenes::seed000Scene();
+  const Scene sc = test_scenes::loveikin2018Scene();
   PaperSweep p = table1(460);
   auto other = [&](const std::vector<Finding>& fs) { return findingStarting(fs, "The other reading"); };
   const std::vector<Finding> f1 = findingsLoveikin2018(p, {}, sc);
@@ -91,7 +91,7 @@ TEST(PaperFindings, OtherReadingStallsOnlyWhenEveryRunStalled) {
 TEST(PaperFindings, LoadHarmonicByHand) {
   // First harmonic swing of the as-printed load torque at Δφ = 0: all four cranks in phase,
   // 2·(F1 + F2)·r·4 = 2·15924·0.2·4 = 25478 N·m; at 90° the four phasors cancel.
-  const auto f = findingsLoveikin2018(table1(460), {}, test_scenes::seed000Scene());
+  const auto f = findingsLoveikin2018(table1(460), {}, test_scenes::loveikin2018Scene());
   const Finding* load = findingStarting(f, "Load reading as printed");
   ASSERT_NE(load, nullptr);
   EXPECT_TRUE(contains(load->text, "2.55e+04 N·m at 0°")) << load->text;
@@ -127,7 +127,7 @@ TEST(ValidationReport, VerdictsAndNumbersAsComputed) {
   p.title = "synthetic";
   p.scene_file = "balanced-4cart.yaml";
   p.start = {"initial.crank_speed=10.42"};
-  p.findings = findingsLoveikin2018(p, {}, test_scenes::seed000Scene());
+  p.findings = findingsLoveikin2018(p, {}, test_scenes::loveikin2018Scene());
   r.papers = {p};
   const ValidationReport rep = buildValidationReport(r, "figures");
   const std::string& md = rep.markdown;
@@ -159,7 +159,7 @@ TEST(ValidationReport, EveryPrintedVerdictIsCountedAndDecidesTheExitStatus) {
   r.differences = {d};
   PaperSweep p = table1(460);  // every finding holds: the gap is explained
   p.title = "synthetic";
-  p.findings = findingsLoveikin2018(p, {}, test_scenes::seed000Scene());
+  p.findings = findingsLoveikin2018(p, {}, test_scenes::loveikin2018Scene());
   r.papers = {p};
   ValidationSection item("extra", "An item of its own");
   item.claim(true, "a comparison that held");
@@ -180,7 +180,7 @@ TEST(ValidationReport, EveryPrintedVerdictIsCountedAndDecidesTheExitStatus) {
   // explained (its reason's own claim failed).
   r.papers[0] = table1(700);
   r.papers[0].title = "synthetic";
-  r.papers[0].findings = findingsLoveikin2018(r.papers[0], {}, test_scenes::seed000Scene());
+  r.papers[0].findings = findingsLoveikin2018(r.papers[0], {}, test_scenes::loveikin2018Scene());
   rep = buildValidationReport(r, "figures");
   EXPECT_EQ(countClaims(rep.claims).failed, 2);  // the trend and the gap
   EXPECT_EQ(countClaims(rep.claims).gaps, 0);
@@ -258,7 +258,7 @@ PaperSweep flywheelSweep(double fitted_delta_at_large) {
 }
 
 TEST(PaperFindings, SchemeIsNotTheCauseOnlyIfItsFittedStepLeavesTheGap) {
-  const Scene sc = test_scenes::seed000Scene();
+  const Scene sc = test_scenes::loveikin2018Scene();
   auto scheme = [](const std::vector<Finding>& f) { return findingStarting(f, "Integration scheme"); };
   // At the fitted step the large-flywheel point keeps its +22 % gap: not the cause, holds.
   auto f = findingsEnergyBalanced(flywheelSweep(0.0143), {}, sc);

@@ -9,9 +9,9 @@
 
 namespace rollerdyn::test_scenes {
 
-inline Scene seed000Scene() {
+inline Scene loveikin2018Scene() {
   Scene s;
-  s.name = "seed000-test";
+  s.name = "loveikin2018-test";
   s.source = "Loveikin, Pochka, Romasevych (2018) (test copy)";
   s.simulation = {2.0, 1e-6, "RungeKuttaMerson", 0.005, 1e-6, 5.0};
   s.initial = {0.0, 0.0, 0.0};

@@ -1,16 +1,16 @@
-// The seed-000 scene of the reduced-model tests: the shared test scene (tests/support/
-// Seed000Scene.h) with the choices these tests were written for. Declared in each test file as
-// `rollerdyn::test::seed000LikeScene()`.
+// The Loveikin, Pochka, Romasevych (2018) scene of the reduced-model tests: the shared test scene (tests/support/
+// Loveikin2018Scene.h) with the choices these tests were written for. Declared in each test file as
+// `rollerdyn::test::loveikin2018LikeScene()`.
 #include <cmath>
 
-#include "support/Seed000Scene.h"
+#include "support/Loveikin2018Scene.h"
 
 namespace rollerdyn {
 namespace test {
 
-Scene seed000LikeScene() {
-  Scene s = test_scenes::seed000Scene();
-  s.name = "seed000-like";
+Scene loveikin2018LikeScene() {
+  Scene s = test_scenes::loveikin2018Scene();
+  s.name = "loveikin2018-like";
   s.source = "Loveikin, Pochka, Romasevych (2018) (four carts, elastic drive), parameters after eq. (39)";
   s.simulation.output_step = 1e-3;
   s.crank.inertia_per_crank = 0.0;              // J'_K is not given by the paper
