@@ -140,9 +140,7 @@ OdeProblem minimalProblem(const MultibodyModel& model, MinimalSystem& ms, const 
   p.y0 = y0;
   setTolerances(p, model, ms.layout(), s0, scales);
   if (model.options().structured_jacobian) setStructuredJacobian(p, model, ms, ms.layout());
-  // Cam drive: same step cap as the reduced model (ReducedIntegrators.cpp): the right-hand side
-  // is constant over most of a stroke and an unbounded step leaps across a reversal.
-  if (sc.hasCamDrive()) p.max_step = (M_PI / 6.0) / scales.speed / 8.0;
+  p.max_step = scales.max_step;  // a cam drive's (IntegrationScales.h), as the reduced model's
   // Highest Adams-Moulton order 5: the friction normal-force lag puts an eigenvalue λ = -1/τ_N
   // (-500 1/s at 2 ms) in every run with guide friction, at hλ ≈ -0.5 ... -2 for the 1-4 ms
   // steps of accuracies 1e-4 ... 1e-8. Adams-Moulton's stability interval on the negative real

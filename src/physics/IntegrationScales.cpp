@@ -14,6 +14,7 @@ IntegrationScales integrationScales(const Scene& sc, double prescribed_crank_spe
                                                   : std::max(std::abs(sc.initial.crank_speed), 1.0);
   k.torque = std::max({breakdown_torque * sc.reducer.ratio * sc.reducer.efficiency,
                        sc.rollerForceSum() * std::max(sc.crank.radius, sc.hasCamDrive() ? sc.cam.stroke : 0.0), 1.0});
+  k.max_step = sc.hasCamDrive() ? (M_PI / 6.0) / k.speed / 8.0 : 0.0;
   k.twist = k.twist_rate = 0.0;
   if (sc.coupling.type == CouplingType::Elastic && sc.coupling.stiffness > 0) {
     k.twist = k.torque / sc.coupling.stiffness;

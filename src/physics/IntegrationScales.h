@@ -32,6 +32,13 @@ struct IntegrationScales {
   double twist;       // ψ_ref = M_ref/c, the twist the coupling takes under the scene's largest
                       // torques [rad]; 0 for a rigid coupling
   double twist_rate;  // ψ_ref·√(c/J_n1), the coupling's own time scale [rad/s]; 0 for a rigid coupling
+  // Largest step of a cam drive (Loveikin and Pochka (cam drive paper)) [s]; 0: unbounded. In
+  // steady state its right-hand side is exactly constant over the constant-speed 2/3 of every
+  // stroke, so an unbounded step grows until it leaps from one constant segment to the next
+  // across the reversal without its error estimate ever seeing it (measured: the speed froze
+  // while ε = 160 rad/s² at every reversal). The cap: 1/8 of the shortest segment, a crank angle
+  // of π/6 at the reference speed.
+  double max_step;
 };
 
 // Whether an integrator stopped at t_reached (a switching event's time) has reached the output time

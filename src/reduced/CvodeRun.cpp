@@ -90,12 +90,7 @@ void setMethodAndAccuracy(const ReducedModel& m, const IntegrationScales& scales
   res.integrator = stiff ? "cvode-bdf" : "cvode-adams";
   p.bdf = stiff;
   p.max_order = stiff ? 0 : kAdamsMaxOrder;  // BDF keeps its 5
-  // Cam drive (Loveikin and Pochka (cam drive paper)): in steady state the right-hand side is exactly constant over the
-  // constant-speed 2/3 of every stroke, so an unbounded step grows until it leaps from one
-  // constant segment to the next across the reversal without its error estimate ever seeing it
-  // (measured: the speed froze while ε = 160 rad/s² at every reversal). Cap the step at 1/8 of
-  // the shortest segment, a crank angle of π/6 at the reference speed.
-  if (m.scene().hasCamDrive()) p.max_step = (M_PI / 6.0) / scales.speed / 8.0;
+  p.max_step = scales.max_step;  // a cam drive's (IntegrationScales.h)
 }
 
 // The reduced model as CVODE's problem (numerics/CvodeIntegrator.h), integrated from one output
