@@ -12,6 +12,7 @@
 #include "analysis/RunRecorder.h"
 #include "multibody/MinimalSystem.h"
 #include "multibody/MotorForce.h"
+#include "multibody/StopRuleMotion.h"
 #include "motor/Stiffness.h"
 #include "physics/IntegrationScales.h"
 #include "numerics/CvodeIntegrator.h"
@@ -308,12 +309,7 @@ class OutputRows {
       if (!constrained) return loopFailed(t);
       self_check_.compare(*constrained, udot_projected, normals_own, reactions_ ? &re_row_ : nullptr);
     }
-    for (std::size_t j = 0; j < cart_speeds_.size(); ++j) cart_speeds_[j] = model_.carts()[j].v(s);
-    const MotorForce* motor = model_.motorForce();
-    if (motor) phase_ = motor->phase(s);
-    const RowMotion motion{model_.crankAngle(s), model_.crankSpeed(s), model_.motorSpeed(s), &cart_speeds_,
-                           motor ? &phase_ : nullptr};
-    return recorder_.record(t, ts_row_, reactions_ ? &re_row_ : nullptr, motion);
+    return recorder_.record(t, ts_row_, reactions_ ? &re_row_ : nullptr, stopRuleMotion(model_, s, cart_speeds_, phase_));
   }
 
  private:

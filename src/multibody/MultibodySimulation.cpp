@@ -14,6 +14,7 @@
 #include "multibody/MinimalSimulation.h"
 #include "multibody/MultibodyModel.h"
 #include "multibody/MotorForce.h"
+#include "multibody/StopRuleMotion.h"
 
 namespace rollerdyn {
 namespace {
@@ -165,12 +166,7 @@ class OutputRows {
     model_.observeMotion(s, s.getUDot(), ts_row_);
     if (reactions_) model_.observeReactions(s, re_row_);
     stats_.constraint_error_max = std::max(stats_.constraint_error_max, model_.constraintError(s));
-    for (std::size_t j = 0; j < cart_speeds_.size(); ++j) cart_speeds_[j] = model_.carts()[j].v(s);
-    const MotorForce* motor = model_.motorForce();
-    if (motor) phase_ = motor->phase(s);
-    const RowMotion motion{model_.crankAngle(s), model_.crankSpeed(s), model_.motorSpeed(s), &cart_speeds_,
-                           motor ? &phase_ : nullptr};
-    return recorder_.record(t, ts_row_, reactions_ ? &re_row_ : nullptr, motion);
+    return recorder_.record(t, ts_row_, reactions_ ? &re_row_ : nullptr, stopRuleMotion(model_, s, cart_speeds_, phase_));
   }
 
  private:
