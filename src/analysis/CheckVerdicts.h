@@ -9,16 +9,13 @@
 #include <string>
 
 #include "analysis/SizingCheck.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::check_words {
 
 inline constexpr const char* kNotApplicable = "not applicable";
 
-inline std::string g4(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
+inline std::string g4(double v) { return significant(v, 4); }
 
 // "pass" for a ratio ≤ 1, "FAIL" above, "" when it is not a number.
 inline std::string verdictOf(double ratio) {

@@ -10,6 +10,7 @@
 #include "analysis/RunResult.h"
 #include "analysis/StartUp.h"
 #include "scene/Scene.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -20,11 +21,7 @@ constexpr double kTwoPi = 6.283185307179586;
 
 double givenOrNaN(double v) { return v > 0 ? v : kNaN; }
 
-std::string g4(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
+std::string g4(double v) { return significant(v, 4); }
 
 // Classes indexed 1 ... (class k holds (k-1)·ΔT < |T| <= k·ΔT); cycles per index.
 void addCycles(std::vector<double>& bins, double magnitude, double class_width, double cycles) {

@@ -8,6 +8,7 @@
 #include "analysis/DriveSizing.h"
 #include "analysis/StartUp.h"
 #include "scene/Scene.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -17,11 +18,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 double givenOrNaN(double v) { return v > 0 ? v : kNaN; }
 
-std::string g3(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
+std::string g3(double v) { return significant(v, 3); }
 
 }  // namespace
 

@@ -1,4 +1,5 @@
 #include "analysis/SizingChecks.h"
+#include "io/FieldFormat.h"
 
 #include <cmath>
 #include <cstdio>
@@ -17,11 +18,7 @@ std::string verdictOf(double ratio, bool strict) {
   return (strict ? ratio < 1.0 : ratio <= 1.0) ? "pass" : "FAIL";
 }
 
-std::string fmt3(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
+std::string fmt3(double v) { return significant(v, 3); }
 
 // A check that does not apply shows no figure beside its verdict (a 2.6 read as an overload even
 // next to "not applicable"): the figure, where there is one, moves into the reason.

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bench/BenchRun.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::bench {
 
@@ -17,12 +18,6 @@ inline constexpr const char* kMinimal = kMultibodyMinimal;
 inline bool usable(Outcome o) { return o == Outcome::Ok || o == Outcome::Stalled; }
 
 // A number for the reports ("—" when not finite).
-inline std::string num(double v, int precision = 3) {
-  if (!std::isfinite(v)) return "—";
-  std::ostringstream os;
-  os.precision(precision);
-  os << v;
-  return os.str();
-}
+inline std::string num(double v, int precision = 3) { return significantOr(v, precision, "—"); }
 
 }  // namespace rollerdyn::bench

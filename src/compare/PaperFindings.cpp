@@ -1,6 +1,7 @@
 // Findings beside the papers' tables (PaperFindings.h): each a comparison made on the numbers of
 // the run, stated with those numbers and its verdict.
 #include "compare/PaperFindings.h"
+#include "io/FieldFormat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,12 +15,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 using V = Finding::Verdict;
 
-std::string g(double v, int prec = 3) {
-  if (!std::isfinite(v)) return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-  return buf;
-}
+std::string g(double v, int prec = 3) { return significantOr(v, prec, "n/a"); }
 std::string pctText(double v) { return std::isfinite(v) ? g(100.0 * v, std::abs(v) >= 1 ? 3 : 2) + " %" : "n/a"; }
 Finding measurement(std::string text) { return {V::Measurement, std::move(text)}; }
 Finding claim(bool holds, std::string text) { return {holds ? V::Holds : V::Fails, std::move(text)}; }

@@ -12,17 +12,13 @@
 #include <vector>
 
 #include "compare/ValidationSuite.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::validation::report_detail {
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-inline std::string g(double v, int prec = 3) {
-  if (!std::isfinite(v)) return "–";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-  return buf;
-}
+inline std::string g(double v, int prec = 3) { return significantOr(v, prec, "–"); }
 inline std::string fx(double v, int decimals) {
   if (!std::isfinite(v)) return "–";
   char buf[64];

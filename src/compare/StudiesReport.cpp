@@ -15,18 +15,14 @@
 #include <nlohmann/json.hpp>
 
 #include "io/ReadFile.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::validation {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string g(double v, int prec = 3) {
-  if (!std::isfinite(v)) return "–";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-  return buf;
-}
+std::string g(double v, int prec = 3) { return significantOr(v, prec, "–"); }
 std::string pct(double ratio_minus_one) { return std::isfinite(ratio_minus_one) ? g(100 * ratio_minus_one, 2) + " %" : "–"; }
 
 const char* kGenerated =

@@ -14,16 +14,13 @@
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
 #include "scene/SceneParser.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::validation::detail {
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-inline std::string g(double v, int prec = 3) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-  return buf;
-}
+inline std::string g(double v, int prec = 3) { return significant(v, prec); }
 
 // A value for --set that round-trips exactly.
 inline std::string exact(double v) {

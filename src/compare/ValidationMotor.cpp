@@ -18,6 +18,7 @@
 #include "motor/MotorLawFactory.h"
 #include "motor/ParkLaw.h"
 #include "scene/SceneParser.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::validation {
 
@@ -25,11 +26,7 @@ namespace {
 
 using Verdict = Finding::Verdict;
 
-std::string g(double v, int prec = 4) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-  return buf;
-}
+std::string g(double v, int prec = 4) { return significant(v, prec); }
 std::string pct(double rel, int prec = 2) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%+.*f %%", prec, 100.0 * rel);

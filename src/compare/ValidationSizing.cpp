@@ -35,6 +35,7 @@
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
 #include "compare/RunModel.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::validation {
 namespace {
@@ -45,12 +46,7 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 constexpr double kRelative = 1e-9;    // file comment
 constexpr double kTimeSeconds = 1e-8; // window ends [s], file comment
 
-std::string g(double v, int prec = 3) {
-  if (!std::isfinite(v)) return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", prec, v);
-  return buf;
-}
+std::string g(double v, int prec = 3) { return significantOr(v, prec, "n/a"); }
 
 // A CSV as rollerdyn writes it (header of `name[unit]` cells, rows of numbers), read column-wise.
 struct Csv {

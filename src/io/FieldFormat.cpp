@@ -30,6 +30,10 @@ std::string significant(double v, int digits) {
   return buf;
 }
 
+std::string significantOr(double v, int digits, const char* absent) {
+  return std::isfinite(v) ? significant(v, digits) : std::string(absent);
+}
+
 std::string csvText(const std::string& s) {
   if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
   std::string q = "\"";

@@ -22,7 +22,11 @@ nlohmann::json jsonNumber(double v);
 const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k);
 // A JSON number as printf's `format` of v·scale; "n/a" when v is not a number (null, text).
 std::string jsonNumberText(const nlohmann::json& v, const char* format = "%.4g", double scale = 1.0);
-// `digits` significant digits (%.*g), as numbers read in validation lines and study pages.
+// `digits` significant digits (%.*g), as numbers read in validation lines and study pages: the
+// one number formatter of the console, the pages and the figures (files written for programs use
+// csvNumber, 12 digits).
 std::string significant(double v, int digits = 3);
+// The same, with `absent` written instead of a value that is not finite ("n/a", "–" in a table).
+std::string significantOr(double v, int digits, const char* absent);
 
 }  // namespace rollerdyn

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "modes/SeparationMargins.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::modes {
 
@@ -14,11 +15,7 @@ constexpr const char* kMethod =
     "API 617 / API 684 practice: every torsional natural frequency at least 10 % away from every excitation "
     "frequency at the operating speed";
 
-std::string g4(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4g", v);
-  return b;
-}
+std::string g4(double v) { return significant(v, 4); }
 
 SizingCheck base(const std::string& name, const std::string& what) {
   SizingCheck c;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "report/HtmlReport.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -63,12 +64,7 @@ std::string pageBoxes(const SignOffSheet& s) {
          "counter(pages); font: 7.5pt sans-serif; color: #555; } }\n</style>\n";
 }
 
-std::string number(double v) {
-  if (!std::isfinite(v)) return "—";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
+std::string number(double v) { return significantOr(v, 3, "—"); }
 
 std::string limitText(const SizingCheck& c) {
   if (!std::isfinite(c.limit)) return "—";

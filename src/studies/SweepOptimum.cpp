@@ -7,6 +7,7 @@
 
 #include "scene/SceneSchema.h"
 #include "studies/Sweep.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -29,12 +30,7 @@ bool candidate(const SweepPoint& p, const std::string& metric, bool any_steady) 
          std::isfinite(p.metric(metric)) && (!any_steady || p.steady);
 }
 
-std::string number(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
+std::string number(double v) { return significant(v, 6); }
 
 }  // namespace
 

@@ -9,6 +9,7 @@
 
 #include "report/Gnuplot.h"
 #include "scene/SceneSchema.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -16,12 +17,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(12);
-  os << v;
-  return os.str();
-}
+std::string num(double v) { return significant(v, 12); }
 
 const char* kLegend =
     "black-hatched colour: turning, steady state not reached;  grey hatched: starting (run too short), rocking, stalled or "
