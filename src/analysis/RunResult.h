@@ -1,34 +1,8 @@
 // What one simulation run produces, whichever model ran it (MuJoCo's "data" after the run).
 // Both models fill the same column names so that analysis, writers and `compare` never need to
-// know which model produced a table. Column conventions (SI units, angles in rad):
-//
-// timeseries: t, phi_motor, phi_crank, omega_motor, omega_crank, eps_crank, eps_motor,
-//             twist (= phi_motor - phi_crank), twist_rate, twist_accel,
-//             coupling_torque (elastic + damping torque transmitted to the crank, N·m at the crank axis),
-//             motor_torque (motor torque passed on by the reducer at the crank axis, N·m),
-//             load_torque (resisting torque of the loads reduced to the crank axis, N·m; reduced model),
-//             reducer_loss_torque (reducer.losses = power_flow only: the reducer's loss torque L
-//             on the motor's torque at the crank axis, N·m; motor torque at the rotor
-//             = (motor_torque + reducer_loss_torque)/u, physics/ReducerLosses.h),
-//             then per cart j = 1..n: x_cart_j, v_cart_j, a_cart_j.
-//             Motor angle and speed are reduced to the crank axis (rotor angle / u).
-// reactions:  t, per cart j: N_front_j, N_rear_j, F_rod_j, friction_j, crankpin_x_j, crankpin_y_j,
-//             then bearing_x, bearing_y, coupling_torque; when the scene places throws and
-//             bearings (crankshaft.*), then bearing_x_k, bearing_y_k for each main bearing k along
-//             the shaft (analysis/CrankshaftBearings.h; their sum is bearing_x, bearing_y).
-//             N_* > 0 when the guide presses the cart's guide rollers downward (Loveikin, Pochka, Romasevych (2018) fig. 3);
-//             F_rod > 0 in tension (pulls the cart towards the shaft, Loveikin, Pochka, Romasevych (2018) eq. (14)):
-//             the rod's force on the cart at B along B -> A (a rod with mass also pushes across
-//             its axis; the reduced model's quasi-static statics report eq. (14)'s axial force,
-//             which differs from it by half the rod weight times sin β);
-//             friction_j is the guide friction force on cart j along x (N);
-//             crankpin_* is the force the rod exerts on crank pin j, world frame (N);
-//             bearing_* is the force the main bearing exerts on the crankshaft, world frame (N).
-//             A model that cannot compute a column leaves it out (the reduced model has no crank
-//             pin or bearing forces).
-//             Guide normal forces and the friction: multibody, the constraint reactions (friction
-//             by loads.guide_friction.normal_force); reduced, the cart statics of
-//             reduced.guide_normals (kinetostatic: with inertial forces; quasi_static: the papers').
+// know which model produced a table. The columns of the time series and the reactions (name, unit,
+// meaning, sign convention, which model writes each and when) are defined once, in the output
+// column table io/OutputColumns.h, which docs/outputs.md renders; SI units, angles in rad.
 #pragma once
 
 #include <limits>

@@ -5,6 +5,18 @@
 // columnUnit), both models' column lists and the positions their rows are filled at
 // (ColumnLayout: a value is written by its column, never by its place in a list), and the
 // column tables of the outputs page (outputColumnsMarkdown).
+//
+// What the table's meanings cannot say in a line, and the models' code relies on:
+//  * signs: N_* > 0 when the guide presses the cart's guide roller down (Loveikin, Pochka,
+//    Romasevych (2018) fig. 3); F_rod > 0 in tension, the rod's force on the cart at B along
+//    B -> A (eq. (14)): a rod with mass also pushes across its axis, and the reduced model's
+//    quasi-static statics report eq. (14)'s axial force, which differs from it by half the rod
+//    weight times sin β;
+//  * the guide normal forces and the friction: the multibody model's are the constraint reactions
+//    (friction by loads.guide_friction.normal_force), the reduced model's the cart statics of
+//    reduced.guide_normals (kinetostatic: with inertial forces; quasi_static: the papers');
+//  * a model that cannot compute a column leaves it out (the reduced model has no crank-pin or
+//    bearing forces); the motor's angle and speed are reduced to the crank axis (rotor / u).
 #pragma once
 
 #include <string>
