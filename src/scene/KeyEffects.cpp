@@ -80,8 +80,9 @@ std::string afterTheRunsEnd(const std::string& key, const Scene& sc) {
   return "";
 }
 
-std::string why(const std::string& key, const Scene& sc, const std::string& model) {
-  const bool kloss = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
+// Keys another model reads, or that set results this run does not compute (reactions, a bearing's
+// share).
+std::string whyNotThisModel(const std::string& key, const Scene& sc, const std::string& model) {
   if (model == "multibody" && startsWith(key, "reduced."))
     return "it sets the reduced-mass model (run it with --model reduced, or compare)";
   if (model == "reduced") {
@@ -107,6 +108,12 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
            "multibody model)";
   if ((key == "crankshaft.throw_positions" || key == "crankshaft.bearing_positions") && !sc.simulation.reactions)
     return "no reactions are computed (simulation.reactions: false), so no bearing's share either";
+  return "";
+}
+
+// The reducer's and the motor's keys the chosen laws do not read.
+std::string whyNotTheseLaws(const std::string& key, const Scene& sc) {
+  const bool kloss = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
   if (key == "reducer.efficiency_reverse" && sc.reducer.losses == ReducerLossModel::Papers)
     return "the papers' constant η (reducer.losses: papers) multiplies the motor torque by reducer.efficiency "
            "whichever way the power flows; set reducer.losses: power_flow for a reverse efficiency";
@@ -133,8 +140,11 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
   if (!kloss && key == "motor.breakdown_torque" && nominalTorqueSource(sc) != NominalTorqueSource::OverloadRatio)
     return "it is the Kloss law's breakdown torque M_kr; the equivalent circuit has its own breakdown point (from "
            "motor.catalogue or motor.circuit), which the run and the sizing use";
-  const std::string late = afterTheRunsEnd(key, sc);
-  if (!late.empty()) return late;
+  return "";
+}
+
+// The machine's keys that this scene's layout leaves without a force or a motion to act on.
+std::string whyNotThisMachine(const std::string& key, const Scene& sc, const std::string& model) {
   if (key == "reducer.backlash" && sc.coupling.type == CouplingType::Rigid)
     return "the coupling is rigid (coupling.type: rigid): motor and crank turn together, so the teeth never part";
   if (key == "reducer.backlash" && sc.reducer.backlash == 0.0)
@@ -160,6 +170,13 @@ std::string why(const std::string& key, const Scene& sc, const std::string& mode
   if (key == "carts.geometry.a" && !rollerSpacingActs(sc))
     return "it is the arm of the rollers' normal forces about the cart, (R_j2 − R_j1)·a, and each cart's two "
            "normals are equal (loads.roller_normal_front = loads.roller_normal_rear)";
+  return "";
+}
+
+std::string why(const std::string& key, const Scene& sc, const std::string& model) {
+  for (const std::string& reason : {whyNotThisModel(key, sc, model), whyNotTheseLaws(key, sc), afterTheRunsEnd(key, sc),
+                                    whyNotThisMachine(key, sc, model)})
+    if (!reason.empty()) return reason;
   return "";
 }
 
