@@ -11,6 +11,7 @@
 #include "analysis/SteadyState.h"
 #include "motor/BreakdownTorque.h"
 #include "motor/Supply.h"
+#include "scene/MotorModels.h"
 
 namespace rollerdyn {
 
@@ -246,7 +247,7 @@ void addTorquesAtStandstill(const Scene& sc, const MotorLaw& law, const Supply& 
   const double u = sc.reducer.ratio, eta = sc.reducer.efficiency;
   r.starting_torque_crank = law.steadyTorque(supply.atSwitchOn(), 0.0) * u * eta;
   r.starting_torque_rated_crank = law.steadyTorque(SupplyState{}, 0.0) * u * eta;
-  const bool kloss_curve = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
+  const bool kloss_curve = hasKlossCurve(sc.induction.model);
   r.largest_torque_crank = motorBreakdownTorque(sc, &law) * u * eta;
   const SupplyState held = heldAtStandstill(supply);
   r.held_supply = supplyWords(held);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "motor/SharedMotorLaw.h"
+#include "scene/MotorModels.h"
 
 namespace rollerdyn {
 
@@ -38,13 +39,13 @@ double largestSteadyTorque(const MotorLaw& law, const SupplyState& supply) {
 }
 
 double motorBreakdownTorque(const Scene& sc, const MotorLaw* law) {
-  const bool kloss = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
+  const bool kloss = hasKlossCurve(sc.induction.model);
   if (kloss || !law) return sc.motor.breakdown_torque;
   return largestSteadyTorque(*law, SupplyState{});
 }
 
 double motorBreakdownTorque(const Scene& sc) {
-  const bool kloss = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
+  const bool kloss = hasKlossCurve(sc.induction.model);
   if (kloss || !sc.motor.enabled) return sc.motor.breakdown_torque;
   try {
     return motorBreakdownTorque(sc, sharedMotorLaw(sc).get());

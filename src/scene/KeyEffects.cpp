@@ -5,6 +5,7 @@
 
 #include "scene/NominalTorqueSource.h"
 #include "scene/SceneSchema.h"
+#include "scene/MotorModels.h"
 
 namespace rollerdyn {
 
@@ -113,7 +114,7 @@ std::string whyNotThisModel(const std::string& key, const Scene& sc, const std::
 
 // The reducer's and the motor's keys the chosen laws do not read.
 std::string whyNotTheseLaws(const std::string& key, const Scene& sc) {
-  const bool kloss = sc.induction.model == MotorModel::Kloss || sc.induction.model == MotorModel::KlossDynamic;
+  const bool kloss = hasKlossCurve(sc.induction.model);
   if (key == "reducer.efficiency_reverse" && sc.reducer.losses == ReducerLossModel::Papers)
     return "the papers' constant η (reducer.losses: papers) multiplies the motor torque by reducer.efficiency "
            "whichever way the power flows; set reducer.losses: power_flow for a reverse efficiency";

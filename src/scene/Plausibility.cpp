@@ -1,4 +1,5 @@
 #include "scene/Plausibility.h"
+#include "scene/MotorModels.h"
 
 #include <cmath>
 #include <cstdio>
@@ -96,7 +97,7 @@ void sparseOutputRows(const Scene& s, std::vector<std::string>& out) {
 void klossAgainstCatalogue(const Scene& s, std::vector<std::string>& out) {
   char buf[400];
   const MotorCatalogue& cat = s.induction.catalogue;
-  const bool kloss = s.induction.model == MotorModel::Kloss || s.induction.model == MotorModel::KlossDynamic;
+  const bool kloss = hasKlossCurve(s.induction.model);
   if (kloss && s.motor.enabled && cat.given() && cat.omega_nominal > 0 && cat.breakdown_torque_ratio > 0 &&
       s.motor.breakdown_torque > 0) {
     const double M_kr = cat.breakdown_torque_ratio * cat.power / cat.omega_nominal;
