@@ -60,6 +60,87 @@ std::string fmt(const json& v, const char* f, double scale = 1.0) {
   return buf;
 }
 
+// The motor's torques, powers and slip in the steady window and over the whole run; the heating
+// and breakdown verdicts come from the checks.
+json motorSizingJson(const MotorSizing& m, const json& rms_check, const json& peak_check) {
+  const MotorWholeRun& r = m.whole_run;
+  return {
+      {"torque_shaft", {{"mean", num(m.torque_shaft_mean)}, {"rms", num(m.torque_shaft_rms)}, {"peak", num(m.torque_shaft_peak)}}},
+      {"torque_crank", {{"mean", num(m.torque_crank_mean)}, {"rms", num(m.torque_crank_rms)}, {"peak", num(m.torque_crank_peak)}}},
+      {"nominal_torque", num(m.nominal_torque)},
+      {"nominal_torque_source", m.nominal_source},
+      {"breakdown_torque", num(m.breakdown_torque)},
+      {"breakdown_torque_catalogue", num(m.breakdown_torque_catalogue)},
+      {"rms_over_nominal", num(m.rms_over_nominal)},
+      {"rms_check", rms_check},
+      {"peak_over_breakdown", num(m.peak_over_breakdown)},
+      {"torque_motoring_peak", num(m.torque_motoring_peak)},
+      {"torque_generating_peak", num(m.torque_generating_peak)},
+      {"breakdown_torque_generating", num(m.breakdown_torque_generating)},
+      {"peak_check", peak_check},
+      {"power_shaft", {{"mean", num(m.power_shaft_mean)}, {"peak", num(m.power_shaft_peak)}}},
+      {"power_line", {{"mean", num(m.power_line_mean)}, {"peak", num(m.power_line_peak)}}},
+      {"line_power_basis", m.line_power_basis},
+      {"slip", {{"min", num(m.slip_min)}, {"max", num(m.slip_max)}}},
+      {"energy_per_revolution", num(m.energy_per_revolution)},
+      {"whole_run",
+       {{"torque_shaft", {{"mean", num(r.torque_shaft_mean)}, {"rms", num(r.torque_shaft_rms)}, {"peak", num(r.torque_shaft_peak)}}},
+        {"rms_over_nominal", num(r.rms_over_nominal)},
+        {"rotor_losses_mean", num(r.rotor_losses_mean)},
+        {"thermal_over_nominal", num(r.thermal_over_nominal)},
+        {"thermal_basis", r.thermal_basis},
+        {"start_heat", num(r.start_heat)},
+        {"start_duration", num(r.start_duration)},
+        {"start_heat_above_steady", num(r.start_heat_above_steady)},
+        {"starts_per_hour", num(r.starts_per_hour)},
+        {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
+        {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}}}};
+}
+
+// The flywheel the speed fluctuation asks for.
+json flywheelSizingJson(const FlywheelSizing& f) {
+  return {{"kinetic_energy_swing", num(f.kinetic_energy_swing)},
+          {"inertia_effective", num(f.inertia_effective)},
+          {"delta", num(f.delta)},
+          {"target_delta", num(f.target_delta)},
+          {"added_inertia_crankshaft", num(f.added_inertia_crank)},
+          {"flywheel_crankshaft", num(f.flywheel_crankshaft)},
+          {"flywheel_motor_shaft", num(f.flywheel_motor_shaft)},
+          {"excess_work", num(f.excess_work)},
+          {"omega_mean", num(f.omega_mean)},
+          {"inertia_required", num(f.inertia_required)},
+          {"added_inertia_energy_method", num(f.added_inertia_energy_method)},
+          {"method", f.method.empty() ? json(nullptr) : json(f.method)},
+          {"estimate", f.basis.empty() ? json(nullptr) : json(f.estimate)},
+          {"basis", f.basis.empty() ? json(nullptr) : json(f.basis)}};
+}
+
+// The coupling torque against the coupling's rating; the verdict comes from the checks.
+json couplingSizingJson(const CouplingSizing& c, const json& check) {
+  return {{"mean", num(c.mean)}, {"peak", num(c.peak)}, {"swing", num(c.swing)},
+          {"rated_torque", num(c.rating)}, {"peak_over_rating", num(c.peak_over_rating)},
+          {"peak_whole_run", num(c.peak_whole_run)}, {"t_peak_whole_run", num(c.t_peak_whole_run)},
+          {"peak_over_rating_whole_run", num(c.peak_over_rating_whole_run)},
+          {"check", check}};
+}
+
+// Per kind of joint: the worst bearing and every cart's, or null when the run has none.
+json jointsSizingJson(const DriveSizing& s) {
+  json joints = json::object();
+  for (const char* kind : kJointKinds) {
+    const JointSizing* w = s.worst(kind);
+    if (!w) {
+      joints[kind] = nullptr;
+      continue;
+    }
+    json per = json::array();
+    for (const JointSizing& x : s.joints)
+      if (x.joint == kind) per.push_back(jointJson(x));
+    joints[kind] = {{"what", w->what}, {"worst", jointJson(*w)}, {"per_cart", per}};
+  }
+  return joints;
+}
+
 }  // namespace
 
 json sizingJson(const DriveSizing& s) {
@@ -79,81 +160,10 @@ json sizingJson(const DriveSizing& s) {
   auto verdict = [&](int k) -> json {
     return by_name[k] && !by_name[k]->verdict.empty() ? json(by_name[k]->verdict) : json(nullptr);
   };
-  const MotorSizing& m = s.motor;
-  if (m.available) {
-    const MotorWholeRun& r = m.whole_run;
-    j["motor"] = {
-        {"torque_shaft", {{"mean", num(m.torque_shaft_mean)}, {"rms", num(m.torque_shaft_rms)}, {"peak", num(m.torque_shaft_peak)}}},
-        {"torque_crank", {{"mean", num(m.torque_crank_mean)}, {"rms", num(m.torque_crank_rms)}, {"peak", num(m.torque_crank_peak)}}},
-        {"nominal_torque", num(m.nominal_torque)},
-        {"nominal_torque_source", m.nominal_source},
-        {"breakdown_torque", num(m.breakdown_torque)},
-        {"breakdown_torque_catalogue", num(m.breakdown_torque_catalogue)},
-        {"rms_over_nominal", num(m.rms_over_nominal)},
-        {"rms_check", verdict(0)},
-        {"peak_over_breakdown", num(m.peak_over_breakdown)},
-        {"torque_motoring_peak", num(m.torque_motoring_peak)},
-        {"torque_generating_peak", num(m.torque_generating_peak)},
-        {"breakdown_torque_generating", num(m.breakdown_torque_generating)},
-        {"peak_check", verdict(1)},
-        {"power_shaft", {{"mean", num(m.power_shaft_mean)}, {"peak", num(m.power_shaft_peak)}}},
-        {"power_line", {{"mean", num(m.power_line_mean)}, {"peak", num(m.power_line_peak)}}},
-        {"line_power_basis", m.line_power_basis},
-        {"slip", {{"min", num(m.slip_min)}, {"max", num(m.slip_max)}}},
-        {"energy_per_revolution", num(m.energy_per_revolution)},
-        {"whole_run",
-         {{"torque_shaft", {{"mean", num(r.torque_shaft_mean)}, {"rms", num(r.torque_shaft_rms)}, {"peak", num(r.torque_shaft_peak)}}},
-          {"rms_over_nominal", num(r.rms_over_nominal)},
-          {"rotor_losses_mean", num(r.rotor_losses_mean)},
-          {"thermal_over_nominal", num(r.thermal_over_nominal)},
-          {"thermal_basis", r.thermal_basis},
-          {"start_heat", num(r.start_heat)},
-          {"start_duration", num(r.start_duration)},
-          {"start_heat_above_steady", num(r.start_heat_above_steady)},
-          {"starts_per_hour", num(r.starts_per_hour)},
-          {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
-          {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}}}};
-  } else {
-    j["motor"] = nullptr;
-  }
-  const FlywheelSizing& f = s.flywheel;
-  j["flywheel"] = {{"kinetic_energy_swing", num(f.kinetic_energy_swing)},
-                   {"inertia_effective", num(f.inertia_effective)},
-                   {"delta", num(f.delta)},
-                   {"target_delta", num(f.target_delta)},
-                   {"added_inertia_crankshaft", num(f.added_inertia_crank)},
-                   {"flywheel_crankshaft", num(f.flywheel_crankshaft)},
-                   {"flywheel_motor_shaft", num(f.flywheel_motor_shaft)},
-                   {"excess_work", num(f.excess_work)},
-                   {"omega_mean", num(f.omega_mean)},
-                   {"inertia_required", num(f.inertia_required)},
-                   {"added_inertia_energy_method", num(f.added_inertia_energy_method)},
-                   {"method", f.method.empty() ? json(nullptr) : json(f.method)},
-                   {"estimate", f.basis.empty() ? json(nullptr) : json(f.estimate)},
-                   {"basis", f.basis.empty() ? json(nullptr) : json(f.basis)}};
-  const CouplingSizing& c = s.coupling;
-  if (c.available) {
-    j["coupling"] = {{"mean", num(c.mean)}, {"peak", num(c.peak)}, {"swing", num(c.swing)},
-                     {"rated_torque", num(c.rating)}, {"peak_over_rating", num(c.peak_over_rating)},
-                     {"peak_whole_run", num(c.peak_whole_run)}, {"t_peak_whole_run", num(c.t_peak_whole_run)},
-                     {"peak_over_rating_whole_run", num(c.peak_over_rating_whole_run)},
-                     {"check", verdict(2)}};
-  } else {
-    j["coupling"] = nullptr;
-  }
-  json joints = json::object();
-  for (const char* kind : kJointKinds) {
-    const JointSizing* w = s.worst(kind);
-    if (!w) {
-      joints[kind] = nullptr;
-      continue;
-    }
-    json per = json::array();
-    for (const JointSizing& x : s.joints)
-      if (x.joint == kind) per.push_back(jointJson(x));
-    joints[kind] = {{"what", w->what}, {"worst", jointJson(*w)}, {"per_cart", per}};
-  }
-  j["joints"] = joints;
+  j["motor"] = s.motor.available ? motorSizingJson(s.motor, verdict(0), verdict(1)) : json(nullptr);
+  j["flywheel"] = flywheelSizingJson(s.flywheel);
+  j["coupling"] = s.coupling.available ? couplingSizingJson(s.coupling, verdict(2)) : json(nullptr);
+  j["joints"] = jointsSizingJson(s);
   j["fatigue"] = fatigueJson(s.fatigue);
   j["coupling_selection"] = couplingSelectionJson(s.coupling_selection);
   j["gear"] = gearDutyJson(s.gear);

@@ -63,34 +63,25 @@ std::string whyNotUpToSpeed(const StartUpCurrentLimit& c, double load_start) {
          "motor.start.max_start_time (more time)";
 }
 
-}  // namespace
-
-void addCurrentLimit(const Scene& sc, const RunResult& run, const MotorLaw& law, const Supply& supply, StartUp& r) {
-  const MotorStart& ms = sc.motor_start;
-  const Table& ts = run.timeseries;
-  if (!r.applicable || !r.from_rest || ms.method != StartMethod::SoftStarter || !(ms.current_limit > 0) ||
-      !ts.has("t") || ts.rows.size() < 2)
-    return;
-  StartUpCurrentLimit& c = r.current_limit;
-  c.applies = true;
-  c.limit = ms.current_limit;
-  c.bypass_speed = supply.limitSpeed();
-  c.max_start_time = ms.max_start_time > 0 ? ms.max_start_time : kNaN;
-  const double u = sc.reducer.ratio, eta = sc.reducer.efficiency;
+// The motor at standstill under the limit: the voltage the limit allows it, the torque that gives
+// at the crank, and the limit that would break it away against the load at the start angle.
+void standstillUnderLimit(const MotorLaw& law, double u, double eta, double load_torque_start,
+                          StartUpCurrentLimit& c) {
   const SupplyState rated;
   const double I_standstill = law.steadyCurrent(rated, 0.0), M_standstill = law.steadyTorque(rated, 0.0) * u * eta;
   c.standstill_voltage = std::min(1.0, c.limit / I_standstill);
   SupplyState limited;
   limited.voltage = c.standstill_voltage;
   c.standstill_torque_crank = law.steadyTorque(limited, 0.0) * u * eta;
-  c.breakaway_limit = std::isfinite(r.load_torque_start) && r.load_torque_start > 0 && M_standstill > 0
-                          ? I_standstill * std::sqrt(r.load_torque_start / M_standstill)
+  c.breakaway_limit = std::isfinite(load_torque_start) && load_torque_start > 0 && M_standstill > 0
+                          ? I_standstill * std::sqrt(load_torque_start / M_standstill)
                           : kNaN;
+}
 
-  const std::vector<double> t = ts.column("t");
-  std::vector<double> w_rotor = ts.has("omega_motor") ? ts.column("omega_motor") : ts.column("omega_crank");
-  for (double& w : w_rotor) w *= u;  // the tables' speeds are at the crank axis
-  const double t_off = sc.motor_stop.t_off;
+// How the limited start ended, and when: the starter tripped, its bypass closed, the motor was
+// switched off, or the run ended with the limit still holding.
+void limitOutcome(const RunResult& run, const Supply& supply, const MotorStart& ms, double t_off,
+                  const std::vector<double>& t, const std::vector<double>& w_rotor, StartUpCurrentLimit& c) {
   c.end_time = kNaN;
   if (run.stats.status.rfind(Supply::kTripStatus, 0) == 0) {
     c.outcome = "tripped";
@@ -107,10 +98,11 @@ void addCurrentLimit(const Scene& sc, const RunResult& run, const MotorLaw& law,
       c.outcome = "limited_at_end";
     }
   }
-  const double end = std::isfinite(c.end_time) ? c.end_time : t.back();
-  c.held_time = end - ms.t_on;
+}
 
-  // Over the switch-on ... end: the rows while connected.
+// Over the switch-on ... end: the rows while connected.
+void limitedRows(const Table& ts, const MotorStart& ms, const std::vector<double>& t,
+                 const std::vector<double>& w_rotor, double end, StartUpCurrentLimit& c) {
   const std::vector<double> U = ts.has("supply_voltage_ratio") ? ts.column("supply_voltage_ratio") : std::vector<double>{};
   const std::vector<double> I = ts.has("stator_current") ? ts.column("stator_current") : std::vector<double>{};
   c.binding_from = c.voltage_min = c.current_peak = c.rotor_speed_max = kNaN;
@@ -129,8 +121,10 @@ void addCurrentLimit(const Scene& sc, const RunResult& run, const MotorLaw& law,
   if (std::isfinite(v_min)) c.voltage_min = v_min;
   if (i_max >= 0) c.current_peak = i_max;
   if (std::isfinite(w_max)) c.rotor_speed_max = w_max;
+}
 
-  // The verdict, where the limit decided the start.
+// The verdict, where the limit decided the start.
+void limitVerdict(const MotorStart& ms, const Supply& supply, StartUpCurrentLimit& c, StartUp& r) {
   const std::string trip_ahead =
       std::isfinite(supply.tripTime())
           ? "the starter trips at t = " + fmt("%.4g", supply.tripTime()) + " s (motor.start.max_start_time = " +
@@ -154,6 +148,33 @@ void addCurrentLimit(const Scene& sc, const RunResult& run, const MotorLaw& law,
                  fmt("%.3g", c.voltage_min) + "): its bypass closes when the rotor reaches " +
                  fmt("%.4g", c.bypass_speed) + " rad/s, and " + trip_ahead;
   }
+}
+
+}  // namespace
+
+void addCurrentLimit(const Scene& sc, const RunResult& run, const MotorLaw& law, const Supply& supply, StartUp& r) {
+  const MotorStart& ms = sc.motor_start;
+  const Table& ts = run.timeseries;
+  if (!r.applicable || !r.from_rest || ms.method != StartMethod::SoftStarter || !(ms.current_limit > 0) ||
+      !ts.has("t") || ts.rows.size() < 2)
+    return;
+  StartUpCurrentLimit& c = r.current_limit;
+  c.applies = true;
+  c.limit = ms.current_limit;
+  c.bypass_speed = supply.limitSpeed();
+  c.max_start_time = ms.max_start_time > 0 ? ms.max_start_time : kNaN;
+  const double u = sc.reducer.ratio, eta = sc.reducer.efficiency;
+  standstillUnderLimit(law, u, eta, r.load_torque_start, c);
+
+  const std::vector<double> t = ts.column("t");
+  std::vector<double> w_rotor = ts.has("omega_motor") ? ts.column("omega_motor") : ts.column("omega_crank");
+  for (double& w : w_rotor) w *= u;  // the tables' speeds are at the crank axis
+  limitOutcome(run, supply, ms, sc.motor_stop.t_off, t, w_rotor, c);
+  const double end = std::isfinite(c.end_time) ? c.end_time : t.back();
+  c.held_time = end - ms.t_on;
+
+  limitedRows(ts, ms, t, w_rotor, end, c);
+  limitVerdict(ms, supply, c, r);
 }
 
 }  // namespace rollerdyn

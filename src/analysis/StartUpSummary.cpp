@@ -149,9 +149,11 @@ json startUpJson(const StartUp& s) {
   return j;
 }
 
-std::string startUpText(const json& summary) {
-  const json& s = jsonMember(summary, "start_up");
-  if (!s.is_object()) return "";
+namespace {
+
+// The switch-on: method, motor law, verdict, and the starting torque against the load at the start
+// angle (and, when the supply is held reduced at standstill, the torque it gives).
+std::string switchOnText(const json& s) {
   std::ostringstream o;
   o << "start-up     " << jsonMember(s, "method").get<std::string>() << " at t = " << f(jsonMember(s, "t_on"), "%.4g")
     << " s, motor law: " << jsonMember(s, "motor_law").get<std::string>() << "\n";
@@ -169,6 +171,33 @@ std::string startUpText(const json& summary) {
     o << "  held at standstill            " << held.get<std::string>() << " until the rotor turns: starting torque "
       << f(jsonMember(s, "starting_torque_held_crank"), "%.4g") << " N·m, largest " << f(jsonMember(s, "largest_torque_held_crank"), "%.4g")
       << " N·m at the crank\n";
+  return o.str();
+}
+
+// Each joint's peak load in the start against its peak in steady running (or over the run).
+std::string jointPeaksText(const json& joints, const std::string& in_start, const std::string& steady) {
+  std::ostringstream o;
+  for (const char* kind : {"guide_roller_front", "guide_roller_rear", "rod_force", "crank_pin", "main_bearing"}) {
+    const json& p = jsonMember(joints, kind);
+    if (!p.is_object()) continue;
+    // Bearings placed along the shaft (crankshaft.bearing_positions): the most loaded one's column.
+    const json& col = jsonMember(p, "column");
+    const bool each = col.is_string() && col.get<std::string>().rfind("bearing_x_", 0) == 0;
+    const std::string words = each ? "main bearings (most loaded)" : jointWords(kind);
+    o << "  " << words << std::string(30 - words.size(), ' ') << "peak " << f(jsonMember(p, "peak"), "%.4g", 1e-3)
+      << " kN" << in_start << ", " << steady << " " << f(jsonMember(p, "steady_peak"), "%.4g", 1e-3) << " kN (x" << f(jsonMember(p, "ratio"), "%.3g")
+      << ")\n";
+  }
+  return o.str();
+}
+
+}  // namespace
+
+std::string startUpText(const json& summary) {
+  const json& s = jsonMember(summary, "start_up");
+  if (!s.is_object()) return "";
+  std::ostringstream o;
+  o << switchOnText(s);
   const json& st = jsonMember(s, "steady");
   if (jsonMember(s, "from_rest").is_boolean() && !jsonMember(s, "from_rest").get<bool>()) {
     // No start in the run: only the stop, the notes and the legend.
@@ -204,18 +233,7 @@ std::string startUpText(const json& summary) {
       << f(largest, "%.4g") << " N·m, which no steady running reaches)\n";
   o << "  coupling torque |M|           peak " << f(jsonMember(c, "peak"), "%.4g") << " N·m" << in_start << ", " << steady << " "
     << f(jsonMember(c, "steady_peak"), "%.4g") << " N·m (x" << f(jsonMember(c, "ratio"), "%.3g") << ")\n";
-  const json& joints = jsonMember(s, "joints");
-  for (const char* kind : {"guide_roller_front", "guide_roller_rear", "rod_force", "crank_pin", "main_bearing"}) {
-    const json& p = jsonMember(joints, kind);
-    if (!p.is_object()) continue;
-    // Bearings placed along the shaft (crankshaft.bearing_positions): the most loaded one's column.
-    const json& col = jsonMember(p, "column");
-    const bool each = col.is_string() && col.get<std::string>().rfind("bearing_x_", 0) == 0;
-    const std::string words = each ? "main bearings (most loaded)" : jointWords(kind);
-    o << "  " << words << std::string(30 - words.size(), ' ') << "peak " << f(jsonMember(p, "peak"), "%.4g", 1e-3)
-      << " kN" << in_start << ", " << steady << " " << f(jsonMember(p, "steady_peak"), "%.4g", 1e-3) << " kN (x" << f(jsonMember(p, "ratio"), "%.3g")
-      << ")\n";
-  }
+  o << jointPeaksText(jsonMember(s, "joints"), in_start, steady);
   const json& I = jsonMember(s, "stator_current");
   if (I.is_object())
     o << "  stator current (phase, RMS)   peak " << f(jsonMember(I, "peak"), "%.4g") << " A, RMS" << in_start << " "

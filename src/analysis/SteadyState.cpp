@@ -22,6 +22,58 @@ void setRowRange(const std::vector<double>& t, std::size_t n, SteadyState& s) {
   if (s.row_end < s.row_begin) s.row_end = s.row_begin;
 }
 
+// The run's whole crank revolutions, each with its mean speed and its lowest and highest speed.
+std::vector<CrankRevolution> wholeRevolutions(const std::vector<double>& t, const std::vector<double>& phi,
+                                              const std::vector<double>& omega, std::size_t n,
+                                              const std::vector<CrankSpeedExtremum>& extrema) {
+  // Whole revolutions: first crossings of phi_0 + 2πk in the direction of net rotation.
+  const double dir = phi[n - 1] >= phi[0] ? 1.0 : -1.0;
+  std::vector<double> crossings{t[0]};
+  for (std::size_t i = 1; i < n; ++i) {
+    const double u_prev = dir * (phi[i - 1] - phi[0]);
+    const double u = dir * (phi[i] - phi[0]);
+    double target = kTwoPi * static_cast<double>(crossings.size());
+    while (u >= target && u_prev < target) {
+      const double frac = (target - u_prev) / (u - u_prev);
+      crossings.push_back(t[i - 1] + frac * (t[i] - t[i - 1]));
+      target = kTwoPi * static_cast<double>(crossings.size());
+    }
+  }
+  std::vector<CrankRevolution> revolutions;
+  for (std::size_t k = 0; k + 1 < crossings.size(); ++k)
+    revolutions.push_back({crossings[k], crossings[k + 1], dir * kTwoPi / (crossings[k + 1] - crossings[k]),
+                           std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
+  // Each revolution's extremes: its rows and the extrema located inside the integrator's steps.
+  std::size_t r = 0;
+  auto widen = [&](double tq, double w) {
+    while (r < revolutions.size() && revolutions[r].t_end < tq) ++r;
+    if (r == revolutions.size() || tq < revolutions[r].t_begin) return;
+    revolutions[r].omega_min = std::min(revolutions[r].omega_min, w);
+    revolutions[r].omega_max = std::max(revolutions[r].omega_max, w);
+  };
+  for (std::size_t i = 0; i < n; ++i) widen(t[i], omega[i]);
+  r = 0;
+  for (const CrankSpeedExtremum& x : extrema) widen(x.t, x.omega);
+  return revolutions;
+}
+
+// Settling index: the first revolution of the run's final stretch of revolutions that repeat its
+// last one.
+int settledAfter(const std::vector<CrankRevolution>& revolutions, double relative_tolerance) {
+  // Walk back from the final revolution while the revolutions repeat it: mean, lowest and highest
+  // speed each within the tolerance of the mean speed.
+  const CrankRevolution& last = revolutions.back();
+  const double tol = relative_tolerance * std::abs(last.omega_mean);
+  const auto repeats = [&](const CrankRevolution& k) {
+    const auto within = [&](double a, double b) { return std::abs(a - b) < tol || (!std::isfinite(a) && a == b); };
+    return within(k.omega_mean, last.omega_mean) && within(k.omega_min, last.omega_min) &&
+           within(k.omega_max, last.omega_max);
+  };
+  int after = static_cast<int>(revolutions.size()) - 1;
+  while (after > 0 && repeats(revolutions[after - 1])) --after;
+  return after;
+}
+
 }  // namespace
 
 SteadyState detectSteadyState(const Table& ts, double window_revolutions, double relative_tolerance,
@@ -49,35 +101,7 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions, double
     return s;
   }
 
-  // Whole revolutions: first crossings of phi_0 + 2πk in the direction of net rotation.
-  const double dir = phi[n - 1] >= phi[0] ? 1.0 : -1.0;
-  std::vector<double> crossings{t[0]};
-  for (std::size_t i = 1; i < n; ++i) {
-    const double u_prev = dir * (phi[i - 1] - phi[0]);
-    const double u = dir * (phi[i] - phi[0]);
-    double target = kTwoPi * static_cast<double>(crossings.size());
-    while (u >= target && u_prev < target) {
-      const double frac = (target - u_prev) / (u - u_prev);
-      crossings.push_back(t[i - 1] + frac * (t[i] - t[i - 1]));
-      target = kTwoPi * static_cast<double>(crossings.size());
-    }
-  }
-  for (std::size_t k = 0; k + 1 < crossings.size(); ++k)
-    s.revolutions.push_back({crossings[k], crossings[k + 1], dir * kTwoPi / (crossings[k + 1] - crossings[k]),
-                             std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
-  // Each revolution's extremes: its rows and the extrema located inside the integrator's steps.
-  {
-    std::size_t r = 0;
-    auto widen = [&](double tq, double w) {
-      while (r < s.revolutions.size() && s.revolutions[r].t_end < tq) ++r;
-      if (r == s.revolutions.size() || tq < s.revolutions[r].t_begin) return;
-      s.revolutions[r].omega_min = std::min(s.revolutions[r].omega_min, w);
-      s.revolutions[r].omega_max = std::max(s.revolutions[r].omega_max, w);
-    };
-    for (std::size_t i = 0; i < n; ++i) widen(t[i], omega[i]);
-    r = 0;
-    for (const CrankSpeedExtremum& x : extrema) widen(x.t, x.omega);
-  }
+  s.revolutions = wholeRevolutions(t, phi, omega, n, extrema);
   const int count = static_cast<int>(s.revolutions.size());
   s.revolutions_counted = count;
 
@@ -94,17 +118,7 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions, double
     return s;
   }
 
-  // Settling index: walk back from the final revolution while the revolutions repeat it: mean,
-  // lowest and highest speed each within the tolerance of the mean speed.
-  const CrankRevolution& last = s.revolutions.back();
-  const double tol = relative_tolerance * std::abs(last.omega_mean);
-  const auto repeats = [&](const CrankRevolution& k) {
-    const auto within = [&](double a, double b) { return std::abs(a - b) < tol || (!std::isfinite(a) && a == b); };
-    return within(k.omega_mean, last.omega_mean) && within(k.omega_min, last.omega_min) &&
-           within(k.omega_max, last.omega_max);
-  };
-  int after = count - 1;
-  while (after > 0 && repeats(s.revolutions[after - 1])) --after;
+  const int after = settledAfter(s.revolutions, relative_tolerance);
   s.after_revolutions = after;
   s.t_settled = s.revolutions[after].t_begin;
 

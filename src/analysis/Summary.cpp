@@ -345,100 +345,119 @@ void writeSummaryAtomic(const std::string& path, const nlohmann::json& summary) 
   writeFileAtomic(path, summary.dump(2) + "\n");
 }
 
+namespace {
+
+// printf-style formatting of a JSON number, "n/a" for null or absent.
+std::string formatted(const json& v, const char* fmt) {
+  if (!v.is_number()) return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, v.get<double>());
+  return buf;
+}
+
+std::string jsonText(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+
+// What the run's motion means, after its name on the motion line.
+std::string motionExplanation(const std::string& motion) {
+  return motion == "turning"    ? "  (the crank turns one way)"
+         : motion == "rocking"  ? "  (the crank swings back and forth instead of turning)"
+         : motion == "stalled"  ? "  (the motor stalled; why: see status)"
+         : motion == "at_rest"  ? "  (the machine is at rest: with the motor off, friction and loads hold it)"
+         : motion == "coasting" ? "  (the motor is off and the machine slows down: the run ended before it came to rest; "
+                                  "its speed swing is the deceleration, not an unevenness, so δ, H and k_p do not apply; "
+                                  "run longer, simulation.t_end, for the run-out)"
+         : motion == "starting" ? "  (" + std::string(kStillStartingWords) + "; no sizing verdict applies yet)"
+                                : "";
+}
+
+// The steady-state lines: whether the speed settled, from which revolution, and the metrics window.
+std::string steadyStateText(const json& st) {
+  if (!st.is_object()) return "";
+  std::ostringstream o;
+  // after_revolutions is the 0-based index of the first settled revolution: the speed repeats
+  // from the start of revolution after_revolutions + 1 (counted from 1) on.
+  o << "steady state " << (st.value("reached", false) ? "reached" : "NOT reached");
+  if (st.value("not_reached", json(nullptr)).is_string()) {
+    // The sentence begins "steady state not reached": the line has said so already.
+    const std::string why = jsonText(st.value("not_reached", json("")));
+    const std::string lead = "steady state not reached";
+    o << (why.rfind(lead, 0) == 0 ? why.substr(lead.size()) : ": " + why)
+      << "; δ, H, k_p and the steady window's checks do not apply";
+  }
+  if (st.value("reached", false) && st.value("after_revolutions", -1) >= 0)
+    o << ": the crank speed repeats from revolution " << st.value("after_revolutions", -1) + 1 << " on (t = "
+      << formatted(st.value("t_settled", json(nullptr)), "%.4g") << " s), of " << st.value("revolutions", 0)
+      << " whole revolutions in the run";
+  const int window_revs = st.value("window_revolutions", 0);
+  o << "\n             metrics window: "
+    << (window_revs > 0 ? "the last " + std::to_string(window_revs) + " revolutions"
+                        : std::string("the last 20 % of the run (it holds no whole crank revolution)"))
+    << (st.value("reached", false) ? "" : " (no steady state: the window may hold the start)")
+    << ", t = " << formatted(st.value("t_begin", json(nullptr)), "%.4g") << " ... " << formatted(st.value("t_end", json(nullptr)), "%.4g")
+    << " s\n";
+  return o.str();
+}
+
+// The load line: the net power per cart, and a warning when the load does almost no net work.
+std::string loadText(const json& ld) {
+  if (!ld.is_object() || !ld.value("available", false)) return "";
+  std::ostringstream o;
+  o << "load         " << formatted(ld.value("power_mean_per_cart_steady", json(nullptr)), "%.4g")
+    << " W per cart net in the metrics window, " << formatted(ld.value("power_mean_per_cart_whole_run", json(nullptr)), "%.4g")
+    << " W per cart over the whole run (" << jsonText(ld.value("reading", json(""))) << ")\n";
+  if (ld.value("warning", json(nullptr)).is_string())
+    o << "             WARNING: the load does almost no net work: " << jsonText(ld.value("warning_consequence", json("")))
+      << " (warning on stderr, docs/loads.md)\n";
+  return o.str();
+}
+
+}  // namespace
+
 std::string summaryText(const nlohmann::json& s) {
-  // printf-style formatting of a JSON number, "n/a" for null or absent.
-  auto f = [](const json& v, const char* fmt) -> std::string {
-    if (!v.is_number()) return "n/a";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, fmt, v.get<double>());
-    return buf;
-  };
   auto at = [&s](const char* a, const char* b = nullptr) -> json {
     if (!s.contains(a)) return nullptr;
     if (!b) return s.at(a);
     return s.at(a).contains(b) ? s.at(a).at(b) : json(nullptr);
   };
-  auto str = [](const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); };
 
   std::ostringstream o;
-  o << "scene        " << str(at("scene")) << "  (model " << str(at("model")) << ", integrator "
-    << str(at("integrator")) << ")\n";
-  const std::string motion = str(at("motion"));
-  o << "motion       " << motion
-    << (motion == "turning"   ? "  (the crank turns one way)"
-        : motion == "rocking" ? "  (the crank swings back and forth instead of turning)"
-        : motion == "stalled" ? "  (the motor stalled; why: see status)"
-        : motion == "at_rest" ? "  (the machine is at rest: with the motor off, friction and loads hold it)"
-        : motion == "coasting" ? "  (the motor is off and the machine slows down: the run ended before it came to rest; "
-                                 "its speed swing is the deceleration, not an unevenness, so δ, H and k_p do not apply; "
-                                 "run longer, simulation.t_end, for the run-out)"
-        : motion == "starting" ? "  (" + std::string(kStillStartingWords) + "; no sizing verdict applies yet)"
-                              : "")
-    << "\n";
-  o << "status       " << str(at("status")) << "\n";
-  o << "crank speed  mean " << f(at("omega_crank", "mean"), "%.4g") << " rad/s, min "
-    << f(at("omega_crank", "min"), "%.4g") << ", max " << f(at("omega_crank", "max"), "%.4g")
-    << "\n             δ (unevenness) " << f(at("delta"), "%.4g") << ", H (dynamics) " << f(at("H"), "%.4g")
-    << ", k_p (generalised) " << f(at("k_p"), "%.4g")
+  o << "scene        " << jsonText(at("scene")) << "  (model " << jsonText(at("model")) << ", integrator "
+    << jsonText(at("integrator")) << ")\n";
+  const std::string motion = jsonText(at("motion"));
+  o << "motion       " << motion << motionExplanation(motion) << "\n";
+  o << "status       " << jsonText(at("status")) << "\n";
+  o << "crank speed  mean " << formatted(at("omega_crank", "mean"), "%.4g") << " rad/s, min "
+    << formatted(at("omega_crank", "min"), "%.4g") << ", max " << formatted(at("omega_crank", "max"), "%.4g")
+    << "\n             δ (unevenness) " << formatted(at("delta"), "%.4g") << ", H (dynamics) " << formatted(at("H"), "%.4g")
+    << ", k_p (generalised) " << formatted(at("k_p"), "%.4g")
     << "  (Loveikin and Pochka (2007) eq. (12)-(14))\n";
-  const json& st = at("steady_state");
-  if (st.is_object()) {
-    // after_revolutions is the 0-based index of the first settled revolution: the speed repeats
-    // from the start of revolution after_revolutions + 1 (counted from 1) on.
-    o << "steady state " << (st.value("reached", false) ? "reached" : "NOT reached");
-    if (st.value("not_reached", json(nullptr)).is_string()) {
-      // The sentence begins "steady state not reached": the line has said so already.
-      const std::string why = str(st.value("not_reached", json("")));
-      const std::string lead = "steady state not reached";
-      o << (why.rfind(lead, 0) == 0 ? why.substr(lead.size()) : ": " + why)
-        << "; δ, H, k_p and the steady window's checks do not apply";
-    }
-    if (st.value("reached", false) && st.value("after_revolutions", -1) >= 0)
-      o << ": the crank speed repeats from revolution " << st.value("after_revolutions", -1) + 1 << " on (t = "
-        << f(st.value("t_settled", json(nullptr)), "%.4g") << " s), of " << st.value("revolutions", 0)
-        << " whole revolutions in the run";
-    const int window_revs = st.value("window_revolutions", 0);
-    o << "\n             metrics window: "
-      << (window_revs > 0 ? "the last " + std::to_string(window_revs) + " revolutions"
-                          : std::string("the last 20 % of the run (it holds no whole crank revolution)"))
-      << (st.value("reached", false) ? "" : " (no steady state: the window may hold the start)")
-      << ", t = " << f(st.value("t_begin", json(nullptr)), "%.4g") << " ... " << f(st.value("t_end", json(nullptr)), "%.4g")
-      << " s\n";
-  }
-  const json ld = at("load");
-  if (ld.is_object() && ld.value("available", false)) {
-    o << "load         " << f(ld.value("power_mean_per_cart_steady", json(nullptr)), "%.4g")
-      << " W per cart net in the metrics window, " << f(ld.value("power_mean_per_cart_whole_run", json(nullptr)), "%.4g")
-      << " W per cart over the whole run (" << str(ld.value("reading", json(""))) << ")\n";
-    if (ld.value("warning", json(nullptr)).is_string())
-      o << "             WARNING: the load does almost no net work: " << str(ld.value("warning_consequence", json("")))
-        << " (warning on stderr, docs/loads.md)\n";
-  }
-  o << "coupling     torque swing " << f(at("coupling_torque_swing"), "%.4g")
-    << " N·m, twist swing " << f(at("twist_swing"), "%.3g") << " rad\n";
-  o << "energy       residual " << f(at("energy", "residual"), "%.3g") << " J (relative "
-    << f(at("energy_residual_rel"), "%.2e") << ")";
+  o << steadyStateText(at("steady_state"));
+  o << loadText(at("load"));
+  o << "coupling     torque swing " << formatted(at("coupling_torque_swing"), "%.4g")
+    << " N·m, twist swing " << formatted(at("twist_swing"), "%.3g") << " rad\n";
+  o << "energy       residual " << formatted(at("energy", "residual"), "%.3g") << " J (relative "
+    << formatted(at("energy_residual_rel"), "%.2e") << ")";
   if (at("energy", "reducer_loss_model").is_string())
-    o << "; reducer losses " << f(at("energy", "reducer_losses"), "%.4g") << " J of the motor's shaft work "
-      << f(at("energy", "motor_shaft_work"), "%.4g") << " J, " << str(at("energy", "reducer_loss_model"));
+    o << "; reducer losses " << formatted(at("energy", "reducer_losses"), "%.4g") << " J of the motor's shaft work "
+      << formatted(at("energy", "motor_shaft_work"), "%.4g") << " J, " << jsonText(at("energy", "reducer_loss_model"));
   o << "\n";
   // Only a lift-off gets a line (the verdict and a not-applicable reason are in summary.json).
   const json lo = at("guide_lift_off");
-  if (lo.is_object() && str(lo.value("verdict", json(""))) == "lifts off")
+  if (lo.is_object() && jsonText(lo.value("verdict", json(""))) == "lifts off")
     o << "guides       LIFT-OFF: " << lo["lifting"].size()
       << " guide reaction(s) change sign in the steady window: those rollers need a counter-roller (warnings "
          "on stderr; summary.json guide_lift_off)\n";
   o << toothContactText(at("backlash"));
   o << shaftTorsionText(at("crankshaft_torsion"));
-  o << "constraints  max error " << f(at("constraint_error_max"), "%.2e") << "\n";
+  o << "constraints  max error " << formatted(at("constraint_error_max"), "%.2e") << "\n";
   if (at("guide_normal_forces").is_string())
-    o << "guide normal forces  " << str(at("guide_normal_forces")) << "\n";
-  o << "steps        " << str(at("steps")) << " steps"
-    << (at("rejected_steps").is_number() ? " (" + str(at("rejected_steps")) + " rejected by the error test)" : "")
-    << ", " << str(at("realizations")) << " right-hand-side evaluations\n";
-  o << "cpu          " << f(at("cpu_seconds"), "%.3g") << " s for "
-    << f(at("simulated_time"), "%.4g") << " s simulated, real-time factor "
-    << f(at("real_time_factor"), "%.3g") << "\n";
+    o << "guide normal forces  " << jsonText(at("guide_normal_forces")) << "\n";
+  o << "steps        " << jsonText(at("steps")) << " steps"
+    << (at("rejected_steps").is_number() ? " (" + jsonText(at("rejected_steps")) + " rejected by the error test)" : "")
+    << ", " << jsonText(at("realizations")) << " right-hand-side evaluations\n";
+  o << "cpu          " << formatted(at("cpu_seconds"), "%.3g") << " s for "
+    << formatted(at("simulated_time"), "%.4g") << " s simulated, real-time factor "
+    << formatted(at("real_time_factor"), "%.3g") << "\n";
   return o.str();
 }
 

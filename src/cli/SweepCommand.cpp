@@ -131,73 +131,49 @@ void warnImplausibleValues(const SweepOptions& o) {
   }
 }
 
-int runSweepCommand(const SweepArgs& a) {
-  SweepOptions o;
-  o.scene_path = a.scene.scene_path;
-  o.base_overrides = a.scene.overrides;
-  parseDesignOptions(a, o);
-  for (const SweepParameter& p : o.params) requireSceneKey("sweep: --param " + p.key, p.key);  // with a did-you-mean
-  o.model = a.model;
-  o.minimize = a.minimize;
-  if (!o.minimize.empty()) requireSweepMetric("sweep: --minimize", o.minimize);  // before any header or run
-  o.threads = a.threads;
-  o.interrupt = &g_interrupted;
-  o.point_budget = a.point_budget;
-  o.resume = a.resume;
-  o.dispatcher_computes = !a.dispatcher_only;
-  // Under mpirun/srun: share the points over the ranks; only rank 0 prints and writes.
-  const MpiLaunch launch = detectMpiLaunch();
+// This process among the MPI ranks (one rank without MPI).
+struct SweepRanks {
   bool rank0 = true;
-  int ranks = 1;
+  int size = 1;
+};
+
+// Under mpirun/srun: share the points over the ranks; only rank 0 prints and writes.
+SweepRanks joinRanks(SweepOptions& o) {
+  const MpiLaunch launch = detectMpiLaunch();
+  SweepRanks ranks;
   if (launch.launched && (mpiBuilt() || launch.world_size > 1)) {
     const MpiWorld world = startMpi();  // throws when built without MPI
-    rank0 = world.rank == 0;
-    ranks = world.size;
+    ranks.rank0 = world.rank == 0;
+    ranks.size = world.size;
     o.mpi = world.size > 1;  // one rank (mpirun -n 1, a batch script's shell): the threads
   }
-  // Validate the base scene once, so a typo in the file or a --set fails before any run (as the
-  // first point sees it: a key the parameters set counts as given).
-  const Scene base = parseSceneFile(o.scene_path, firstPointOverrides(o));
-  std::string out_dir = a.out_dir;
-  if (out_dir.empty()) {
-    out_dir = defaultOutDir(base.name) + "/sweep";
-    for (const SweepParameter& p : o.params) out_dir += "_" + p.key;
-  }
-  if (rank0) prepareOutputDir(out_dir);  // before any point: a bad --out fails now
-  if (rank0) warnImplausibleValues(o);
+  return ranks;
+}
+
+// The points of the grid (one per combination of the parameters' values) or of the designs.
+std::size_t pointCount(const SweepOptions& o) {
   std::size_t total = o.designs.size();
   if (o.designs.empty()) {
     total = 1;
     for (const SweepParameter& p : o.params) total *= p.values.size();
   }
-  o.progress_path = out_dir + "/sweep.progress.jsonl";
-  if (rank0 && o.resume && !std::filesystem::exists(o.progress_path))
-    std::cout << "--resume: no saved rows in " << o.progress_path << ", starting afresh\n";
-  if (rank0)
-    std::cout << "sweep of " << base.name << ": " << total << " points, " << o.model << " model, "
-              << (o.mpi ? std::to_string(ranks) + " MPI ranks"
-                        : std::to_string(std::min<std::size_t>(std::max(1, o.threads), total)) + " threads")
-              << "\n"
-              << "per point: δ coefficient of unevenness, H coefficient of dynamics, k_p generalised "
-                 "coefficient (Loveikin and Pochka (2007) eq. (12)-(14)), ΔM coupling torque swing, "
-                 "then the motion (turning, starting, rocking, stalled, coasting, at_rest)\n";
-  o.on_point = [&o](const SweepPoint& p, std::size_t done, std::size_t n) {
-    std::cout << lineFor(o, p, done, n) << std::endl;
-  };
-  SweepResult r;
-  try {
-    r = runSweep(o);
-  } catch (const std::exception&) {
-    if (!rank0) return 2;  // every rank meets the same bad input: rank 0 alone says why
-    throw;
-  }
-  if (!r.output_rank) return 0;  // an MPI worker: rank 0 writes the outputs
-  if (r.execution.value("points_resumed", 0) > 0)
-    std::cout << "resumed " << r.execution["points_resumed"] << " saved point(s), computed "
-              << r.execution["points_computed"] << "\n";
-  std::string plot_note;
-  const auto files = writeSweepOutputs(o, r, out_dir, &plot_note);
-  if (!plot_note.empty()) std::cout << "figures: " << plot_note << " (sweep.csv has every point)\n";
+  return total;
+}
+
+// What is swept, how, and the legend of the per-point lines.
+void printSweepHeader(const SweepOptions& o, const std::string& scene_name, std::size_t total, int ranks) {
+  std::cout << "sweep of " << scene_name << ": " << total << " points, " << o.model << " model, "
+            << (o.mpi ? std::to_string(ranks) + " MPI ranks"
+                      : std::to_string(std::min<std::size_t>(std::max(1, o.threads), total)) + " threads")
+            << "\n"
+            << "per point: δ coefficient of unevenness, H coefficient of dynamics, k_p generalised "
+               "coefficient (Loveikin and Pochka (2007) eq. (12)-(14)), ΔM coupling torque swing, "
+               "then the motion (turning, starting, rocking, stalled, coasting, at_rest)\n";
+}
+
+// The points' outcome after the outputs are written: how many did not settle, rock or stall, are
+// near a resonance or failed; returns the exit code.
+int reportPoints(const SweepOptions& o, const SweepResult& r, const std::string& out_dir, std::size_t files) {
   std::size_t failed = 0, unsteady = 0, warned = 0, not_turning = 0;
   for (const SweepPoint& p : r.points) {
     const bool drive_fails = p.motion == "stalled" || p.motion == "rocking";
@@ -218,12 +194,63 @@ int runSweepCommand(const SweepArgs& a) {
     std::cerr << "rollerdyn: warning: " << warned
               << " point(s) near a torsional resonance by the first estimate (two constant inertias, sweep.json); "
                  "the modal analysis of `simulate` on a point gives the verdict\n";
-  std::cout << "outputs in " << out_dir << "/ (" << files.size() << " files)\n";
+  std::cout << "outputs in " << out_dir << "/ (" << files << " files)\n";
   if (failed)
     std::cerr << "rollerdyn: " << failed << " of " << r.points.size()
               << " points failed to run (numerical failure, invalid values or interrupted: status column)\n";
   // 3: some point failed to run; 4: every point ran but some drive stalls or rocks; 0: all turn.
   return failed ? 3 : not_turning ? 4 : 0;
+}
+
+int runSweepCommand(const SweepArgs& a) {
+  SweepOptions o;
+  o.scene_path = a.scene.scene_path;
+  o.base_overrides = a.scene.overrides;
+  parseDesignOptions(a, o);
+  for (const SweepParameter& p : o.params) requireSceneKey("sweep: --param " + p.key, p.key);  // with a did-you-mean
+  o.model = a.model;
+  o.minimize = a.minimize;
+  if (!o.minimize.empty()) requireSweepMetric("sweep: --minimize", o.minimize);  // before any header or run
+  o.threads = a.threads;
+  o.interrupt = &g_interrupted;
+  o.point_budget = a.point_budget;
+  o.resume = a.resume;
+  o.dispatcher_computes = !a.dispatcher_only;
+  const SweepRanks ranks = joinRanks(o);
+  const bool rank0 = ranks.rank0;
+  // Validate the base scene once, so a typo in the file or a --set fails before any run (as the
+  // first point sees it: a key the parameters set counts as given).
+  const Scene base = parseSceneFile(o.scene_path, firstPointOverrides(o));
+  std::string out_dir = a.out_dir;
+  if (out_dir.empty()) {
+    out_dir = defaultOutDir(base.name) + "/sweep";
+    for (const SweepParameter& p : o.params) out_dir += "_" + p.key;
+  }
+  if (rank0) prepareOutputDir(out_dir);  // before any point: a bad --out fails now
+  if (rank0) warnImplausibleValues(o);
+  const std::size_t total = pointCount(o);
+  o.progress_path = out_dir + "/sweep.progress.jsonl";
+  if (rank0 && o.resume && !std::filesystem::exists(o.progress_path))
+    std::cout << "--resume: no saved rows in " << o.progress_path << ", starting afresh\n";
+  if (rank0) printSweepHeader(o, base.name, total, ranks.size);
+  o.on_point = [&o](const SweepPoint& p, std::size_t done, std::size_t n) {
+    std::cout << lineFor(o, p, done, n) << std::endl;
+  };
+  SweepResult r;
+  try {
+    r = runSweep(o);
+  } catch (const std::exception&) {
+    if (!rank0) return 2;  // every rank meets the same bad input: rank 0 alone says why
+    throw;
+  }
+  if (!r.output_rank) return 0;  // an MPI worker: rank 0 writes the outputs
+  if (r.execution.value("points_resumed", 0) > 0)
+    std::cout << "resumed " << r.execution["points_resumed"] << " saved point(s), computed "
+              << r.execution["points_computed"] << "\n";
+  std::string plot_note;
+  const auto files = writeSweepOutputs(o, r, out_dir, &plot_note);
+  if (!plot_note.empty()) std::cout << "figures: " << plot_note << " (sweep.csv has every point)\n";
+  return reportPoints(o, r, out_dir, files.size());
 }
 
 }  // namespace

@@ -8,17 +8,18 @@ namespace rollerdyn {
 
 namespace {
 
+using F = OutputFile;
+using C = Column;
+using M = ColumnModels;
+using W = ColumnCondition;
+using I = ColumnIndex;
+
 constexpr const char* kAtCrank = "N*m at the crank axis";
 
-}  // namespace
-
-const std::vector<OutputColumn>& outputColumns() {
-  using F = OutputFile;
-  using C = Column;
-  using M = ColumnModels;
-  using W = ColumnCondition;
-  using I = ColumnIndex;
-  static const std::vector<OutputColumn> table = {
+// timeseries.csv: time, the motor's and the crank's motion, the coupling twist and the torques on
+// the crank axis.
+std::vector<OutputColumn> timeseriesDriveColumns() {
+  return {
       {F::Timeseries, C::t, "t", "s", "time", M::Both, W::Always, I::None},
       {F::Timeseries, C::phi_motor, "phi_motor", "rad", "motor angle reduced to the crank axis (rotor angle / u)",
        M::Both, W::Always, I::None},
@@ -49,10 +50,23 @@ const std::vector<OutputColumn>& outputColumns() {
        M::Both, W::Always, I::None},
       {F::Timeseries, C::load_torque, "load_torque", kAtCrank,
        "resisting torque of the loads reduced to the crank axis", M::Reduced, W::Always, I::None},
+  };
+}
+
+// timeseries.csv: each cart's motion.
+std::vector<OutputColumn> timeseriesCartColumns() {
+  return {
       {F::Timeseries, C::x_cart, "x_cart", "m", "position of cart j's hinge B along x", M::Both, W::Always, I::Cart},
       {F::Timeseries, C::v_cart, "v_cart", "m/s", "velocity of cart j's hinge B along x", M::Both, W::Always, I::Cart},
       {F::Timeseries, C::a_cart, "a_cart", "m/s^2", "acceleration of cart j's hinge B along x", M::Both, W::Always,
        I::Cart},
+  };
+}
+
+// timeseries.csv: the columns written only when the scene has what they describe (motor current, a
+// switching supply, a brake, reducer losses, backlash, a torsional crankshaft).
+std::vector<OutputColumn> timeseriesOptionalColumns() {
+  return {
       {F::Timeseries, C::stator_current, "stator_current", "A",
        "RMS line current of the motor (the equivalent star's phase current; in star, the windings' current)",
        M::Both, W::MotorCurrent, I::None},
@@ -75,7 +89,12 @@ const std::vector<OutputColumn>& outputColumns() {
        "counted from the coupling (throws in z order), c_k = G·I_p/Δz; > 0 while the drive side leads "
        "([models.md](models.md#the-crankshaft-as-a-torsional-chain))",
        M::Multibody, W::TorsionalChain, I::ShaftSegment},
+  };
+}
 
+// reactions.csv: time and the forces on each cart.
+std::vector<OutputColumn> reactionsCartColumns() {
+  return {
       {F::Reactions, C::t, "t", "s", "time", M::Both, W::Always, I::None},
       {F::Reactions, C::N_front, "N_front", "N",
        "guide reaction at cart j's front guide roller, > 0 when the guide presses the roller down", M::Both,
@@ -88,6 +107,13 @@ const std::vector<OutputColumn>& outputColumns() {
        I::Cart},
       {F::Reactions, C::friction, "friction", "N", "guide friction force on cart j along x", M::Both, W::Always,
        I::Cart},
+  };
+}
+
+// reactions.csv: the forces on the crankshaft (crank pins, main bearings) and the coupling
+// torque.
+std::vector<OutputColumn> reactionsCrankshaftColumns() {
+  return {
       {F::Reactions, C::crankpin_x, "crankpin_x", "N",
        "force of the rod on crank pin j along x, world frame (a cam drive: of the pusher on the cam)", M::Multibody,
        W::Always, I::Cart},
@@ -110,6 +136,21 @@ const std::vector<OutputColumn>& outputColumns() {
        "force of main bearing k on the crankshaft along y; Σ_k = `bearing_y`", M::Multibody, W::MainBearings,
        I::MainBearing},
   };
+}
+
+}  // namespace
+
+const std::vector<OutputColumn>& outputColumns() {
+  // By file, then by family, in the files' column order.
+  static const std::vector<OutputColumn> table = [] {
+    std::vector<OutputColumn> t;
+    for (auto family : {timeseriesDriveColumns, timeseriesCartColumns, timeseriesOptionalColumns,
+                        reactionsCartColumns, reactionsCrankshaftColumns}) {
+      const std::vector<OutputColumn> columns = family();
+      t.insert(t.end(), columns.begin(), columns.end());
+    }
+    return t;
+  }();
   return table;
 }
 

@@ -69,9 +69,28 @@ struct CompareData {
   RunData multibody, reduced;
 };
 
-}  // namespace
+// What `rollerdyn simulate --out DIR [--modes] [--plot]` writes, by the same functions; returns
+// the account of the figures drawn (empty without figures).
+std::string writeRun(const RunData& d, const std::string& out_dir, bool figures) {
+  prepareOutputDir(out_dir, StaleOutputs::RunFiguresAndReport, "out_dir");
+  writeRunFiles(out_dir, d.run, d.summary, d.modal.get());
+  std::string text;
+  if (figures) {
+    py::gil_scoped_release release;  // gnuplot runs in child processes
+    const std::string dir = out_dir + "/figures";
+    text = figureSetText(drawRunFigures(outputFolderOf(out_dir, d.run, d.summary), &d.scene.scene(), dir), dir);
+    if (d.modal) {
+      FigureSet f = modes::drawModesFigures(d.modal->report, dir);
+      const FigureSet sp = modes::drawSpectrumFigures(d.modal->spectrum, dir);
+      f.figures.insert(f.figures.end(), sp.figures.begin(), sp.figures.end());
+      text += figureSetText(f, dir);
+    }
+  }
+  return text;
+}
 
-void bindRuns(py::module_& m) {
+// The run as Python sees it: its status, tables, summary, text and page, and its files.
+void bindRunData(py::module_& m) {
   py::class_<RunData>(m, "RunData")
       .def_property_readonly("scene", [](const RunData& d) { return d.scene; })
       .def_property_readonly("model", [](const RunData& d) { return d.run.model; })
@@ -119,28 +138,11 @@ void bindRuns(py::module_& m) {
                                    "</pre>"
                              : std::string());
            })
-      .def(
-          "write",
-          [](const RunData& d, const std::string& out_dir, bool figures) {
-            // What `rollerdyn simulate --out DIR [--modes] [--plot]` writes, by the same functions.
-            prepareOutputDir(out_dir, StaleOutputs::RunFiguresAndReport, "out_dir");
-            writeRunFiles(out_dir, d.run, d.summary, d.modal.get());
-            std::string text;
-            if (figures) {
-              py::gil_scoped_release release;  // gnuplot runs in child processes
-              const std::string dir = out_dir + "/figures";
-              text = figureSetText(drawRunFigures(outputFolderOf(out_dir, d.run, d.summary), &d.scene.scene(), dir), dir);
-              if (d.modal) {
-                FigureSet f = modes::drawModesFigures(d.modal->report, dir);
-                const FigureSet sp = modes::drawSpectrumFigures(d.modal->spectrum, dir);
-                f.figures.insert(f.figures.end(), sp.figures.begin(), sp.figures.end());
-                text += figureSetText(f, dir);
-              }
-            }
-            return text;
-          },
-          py::arg("out_dir"), py::arg("figures") = false);
+      .def("write", &writeRun, py::arg("out_dir"), py::arg("figures") = false);
+}
 
+// simulate: one run of a scene in memory, interruptible by Ctrl-C.
+void bindSimulate(py::module_& m) {
   m.def(
       "simulate",
       [](const PyScene& scene, const std::string& model, bool with_modes) {
@@ -159,7 +161,10 @@ void bindRuns(py::module_& m) {
         return py::make_tuple(std::move(d), interrupted);
       },
       py::arg("scene"), py::arg("model"), py::arg("modes") = false);
+}
 
+// compare: both models on the same scene, and their comparison.
+void bindComparison(py::module_& m) {
   py::class_<CompareData>(m, "CompareData")
       .def_property_readonly("multibody", [](const CompareData& c) { return c.multibody; })
       .def_property_readonly("reduced", [](const CompareData& c) { return c.reduced; })
@@ -184,6 +189,14 @@ void bindRuns(py::module_& m) {
         return py::make_tuple(std::move(c), interrupted);
       },
       py::arg("scene"));
+}
+
+}  // namespace
+
+void bindRuns(py::module_& m) {
+  bindRunData(m);
+  bindSimulate(m);
+  bindComparison(m);
 }
 
 }  // namespace rollerdyn::python

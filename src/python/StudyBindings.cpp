@@ -111,128 +111,133 @@ std::string functionName(py::handle fn, const std::string& fallback) {
   return name == "<lambda>" ? fallback : name;
 }
 
+// The study of `rollerdyn sweep`: a grid of --values per parameter, or designs given row by row.
+py::tuple sweepStudy(const PyScene& scene, const py::list& params, const std::vector<std::string>& design_keys,
+                     const py::list& design_rows, const std::string& model, const std::string& minimize, int threads) {
+  SweepOptions o;
+  setScene(o, scene);
+  if (!design_keys.empty()) {
+    for (const std::string& k : design_keys) requireSceneKey("sweep: parameter " + k, k);
+    for (auto row : design_rows) {
+      std::vector<std::string> texts;
+      for (auto v : row) texts.push_back(yamlValueText(v));
+      o.designs.push_back(texts);
+    }
+    o.params = designParameters(design_keys, o.designs);
+  } else {
+    for (auto item : params) {
+      const py::tuple kv = item.cast<py::tuple>();
+      o.params.push_back(sweepParameter(kv[0].cast<std::string>(), kv[1]));
+    }
+  }
+  o.model = model;
+  o.minimize = minimize;
+  o.threads = threads;
+  std::atomic<bool> stop{false};
+  o.interrupt = &stop;
+  bool interrupted = false;
+  const SweepResult r = runInterruptible([&o] { return runSweep(o); }, stop, &interrupted);
+  return py::make_tuple(studyTableToPython(sweepTable(o, r)), toPython(sweepOptimumJson(o, r)),
+                        toPython(r.execution), interrupted);
+}
+
+// The optimizer's objective and constraints: metric names and bounds as on the command line, or
+// Python functions of the run's row (a constraint function holds where it is <= 0).
+void setObjectiveAndConstraints(OptimizeOptions& o, const py::object& minimize, const py::list& constraints,
+                                const std::shared_ptr<CallbackError>& failure, std::atomic<bool>* stop) {
+  if (py::isinstance<py::str>(minimize)) {
+    o.minimize = minimize.cast<std::string>();
+  } else {
+    if (!PyCallable_Check(minimize.ptr()))
+      throw py::type_error("optimize: minimize is a metric name or a function of the run's row");
+    o.minimize = functionName(minimize, "objective");
+    o.objective = pythonFunction(minimize.ptr(), "the objective " + o.minimize, &o, failure, stop);
+  }
+  for (auto c : constraints) {
+    if (py::isinstance<py::str>(c)) {
+      o.constraints.push_back(parseConstraint(c.cast<std::string>()));
+    } else if (PyCallable_Check(c.ptr())) {
+      OptimizeConstraint k;
+      k.metric = functionName(c, "constraint " + std::to_string(o.constraints.size() + 1));
+      k.upper = true;
+      k.bound = 0;
+      k.text = k.metric + "(row)<=0";
+      k.value = pythonFunction(c.ptr(), "the constraint " + k.metric, &o, failure, stop);
+      o.constraints.push_back(std::move(k));
+    } else {
+      throw py::type_error("optimize: each constraint is 'METRIC<=VALUE', 'METRIC>=VALUE' or a function of "
+                           "the run's row that is <= 0 where the constraint holds");
+    }
+  }
+}
+
+// The study of `rollerdyn optimize` over ranges of scene keys.
+py::tuple optimizeStudy(const PyScene& scene, const std::vector<std::tuple<std::string, double, double>>& ranges,
+                        const py::object& minimize, const py::list& constraints, const std::string& model,
+                        const std::string& method, int max_evals, int threads) {
+  auto o = std::make_unique<OptimizeOptions>();
+  setScene(*o, scene);
+  for (const auto& [key, lower, upper] : ranges) {
+    requireSceneKey("optimize: parameter " + key, key);
+    o->params.push_back({key, lower, upper});
+  }
+  std::atomic<bool> stop{false};
+  auto failure = std::make_shared<CallbackError>();
+  setObjectiveAndConstraints(*o, minimize, constraints, failure, &stop);
+  o->model = model;
+  o->method = method;
+  o->max_evals = max_evals;
+  o->threads = threads;
+  o->interrupt = &stop;
+  bool interrupted = false;
+  const OptimizeOptions& opts = *o;
+  const OptimizeResult r = runInterruptible([&opts] { return runOptimize(opts); }, stop, &interrupted);
+  if (failure->error) std::rethrow_exception(failure->error);  // the function's own exception
+  return py::make_tuple(studyTableToPython(optimizeHistoryTable(opts, r)), toPython(optimizeJson(opts, r)),
+                        interrupted);
+}
+
+// The study of `rollerdyn identify`: scene keys fitted to measured signals.
+py::tuple identifyStudy(const PyScene& scene, const std::string& data_path, const std::string& data_text,
+                        const std::vector<std::string>& signals, const std::vector<std::string>& free,
+                        const std::vector<std::tuple<std::string, double, double>>& bounds,
+                        const std::map<std::string, double>& noise, const std::string& model, double holdout,
+                        bool global, int max_iterations, int threads) {
+  IdentifyOptions o;
+  setScene(o, scene);
+  // A file is read as the command line reads it; a table from Python comes as CSV text.
+  o.data = data_text.empty() ? readMeasuredData(data_path) : parseMeasuredData(data_text, data_path);
+  o.signals = signals;
+  o.free_keys = free;
+  for (const auto& [key, lower, upper] : bounds) o.bounds[key] = {lower, upper};
+  o.noise = noise;
+  o.model = model;
+  o.holdout = holdout;
+  o.global = global;
+  o.max_iterations = max_iterations;
+  o.threads = threads;
+  std::atomic<bool> stop{false};
+  o.interrupt = &stop;
+  bool interrupted = false;
+  const IdentifyResult r = runInterruptible([&o] { return runIdentify(o); }, stop, &interrupted);
+  py::dict curves;  // per signal: measured and model on the measured times
+  for (std::size_t s = 0; s < r.signals.size(); ++s)
+    curves[py::str(r.signals[s].name)] =
+        py::make_tuple(r.data_values.empty() ? std::vector<double>{} : r.data_values[s],
+                       r.model_values.empty() ? std::vector<double>{} : r.model_values[s]);
+  return py::make_tuple(toPython(identifyJson(o, r)), r.t, curves, describeIdentify(r), interrupted);
+}
+
 }  // namespace
 
 void bindStudies(py::module_& m) {
-  m.def(
-      "sweep",
-      [](const PyScene& scene, const py::list& params, const std::vector<std::string>& design_keys,
-         const py::list& design_rows, const std::string& model, const std::string& minimize, int threads) {
-        SweepOptions o;
-        setScene(o, scene);
-        if (!design_keys.empty()) {
-          for (const std::string& k : design_keys) requireSceneKey("sweep: parameter " + k, k);
-          for (auto row : design_rows) {
-            std::vector<std::string> texts;
-            for (auto v : row) texts.push_back(yamlValueText(v));
-            o.designs.push_back(texts);
-          }
-          o.params = designParameters(design_keys, o.designs);
-        } else {
-          for (auto item : params) {
-            const py::tuple kv = item.cast<py::tuple>();
-            o.params.push_back(sweepParameter(kv[0].cast<std::string>(), kv[1]));
-          }
-        }
-        o.model = model;
-        o.minimize = minimize;
-        o.threads = threads;
-        std::atomic<bool> stop{false};
-        o.interrupt = &stop;
-        bool interrupted = false;
-        const SweepResult r = runInterruptible([&o] { return runSweep(o); }, stop, &interrupted);
-        return py::make_tuple(studyTableToPython(sweepTable(o, r)), toPython(sweepOptimumJson(o, r)),
-                              toPython(r.execution), interrupted);
-      },
-      py::arg("scene"), py::arg("params"), py::arg("design_keys"), py::arg("design_rows"), py::arg("model"),
-      py::arg("minimize"), py::arg("threads"));
-
-  m.def(
-      "optimize",
-      [](const PyScene& scene, const std::vector<std::tuple<std::string, double, double>>& ranges,
-         const py::object& minimize, const py::list& constraints, const std::string& model, const std::string& method,
-         int max_evals, int threads) {
-        auto o = std::make_unique<OptimizeOptions>();
-        setScene(*o, scene);
-        for (const auto& [key, lower, upper] : ranges) {
-          requireSceneKey("optimize: parameter " + key, key);
-          o->params.push_back({key, lower, upper});
-        }
-        std::atomic<bool> stop{false};
-        auto failure = std::make_shared<CallbackError>();
-        if (py::isinstance<py::str>(minimize)) {
-          o->minimize = minimize.cast<std::string>();
-        } else {
-          if (!PyCallable_Check(minimize.ptr()))
-            throw py::type_error("optimize: minimize is a metric name or a function of the run's row");
-          o->minimize = functionName(minimize, "objective");
-          o->objective = pythonFunction(minimize.ptr(), "the objective " + o->minimize, o.get(), failure, &stop);
-        }
-        for (auto c : constraints) {
-          if (py::isinstance<py::str>(c)) {
-            o->constraints.push_back(parseConstraint(c.cast<std::string>()));
-          } else if (PyCallable_Check(c.ptr())) {
-            OptimizeConstraint k;
-            k.metric = functionName(c, "constraint " + std::to_string(o->constraints.size() + 1));
-            k.upper = true;
-            k.bound = 0;
-            k.text = k.metric + "(row)<=0";
-            k.value = pythonFunction(c.ptr(), "the constraint " + k.metric, o.get(), failure, &stop);
-            o->constraints.push_back(std::move(k));
-          } else {
-            throw py::type_error("optimize: each constraint is 'METRIC<=VALUE', 'METRIC>=VALUE' or a function of "
-                                 "the run's row that is <= 0 where the constraint holds");
-          }
-        }
-        o->model = model;
-        o->method = method;
-        o->max_evals = max_evals;
-        o->threads = threads;
-        o->interrupt = &stop;
-        bool interrupted = false;
-        const OptimizeOptions& opts = *o;
-        const OptimizeResult r = runInterruptible([&opts] { return runOptimize(opts); }, stop, &interrupted);
-        if (failure->error) std::rethrow_exception(failure->error);  // the function's own exception
-        return py::make_tuple(studyTableToPython(optimizeHistoryTable(opts, r)), toPython(optimizeJson(opts, r)),
-                              interrupted);
-      },
-      py::arg("scene"), py::arg("ranges"), py::arg("minimize"), py::arg("constraints"), py::arg("model"),
-      py::arg("method"), py::arg("max_evals"), py::arg("threads"));
-
-  m.def(
-      "identify",
-      [](const PyScene& scene, const std::string& data_path, const std::string& data_text,
-         const std::vector<std::string>& signals, const std::vector<std::string>& free,
-         const std::vector<std::tuple<std::string, double, double>>& bounds,
-         const std::map<std::string, double>& noise, const std::string& model, double holdout, bool global,
-         int max_iterations, int threads) {
-        IdentifyOptions o;
-        setScene(o, scene);
-        // A file is read as the command line reads it; a table from Python comes as CSV text.
-        o.data = data_text.empty() ? readMeasuredData(data_path) : parseMeasuredData(data_text, data_path);
-        o.signals = signals;
-        o.free_keys = free;
-        for (const auto& [key, lower, upper] : bounds) o.bounds[key] = {lower, upper};
-        o.noise = noise;
-        o.model = model;
-        o.holdout = holdout;
-        o.global = global;
-        o.max_iterations = max_iterations;
-        o.threads = threads;
-        std::atomic<bool> stop{false};
-        o.interrupt = &stop;
-        bool interrupted = false;
-        const IdentifyResult r = runInterruptible([&o] { return runIdentify(o); }, stop, &interrupted);
-        py::dict curves;  // per signal: measured and model on the measured times
-        for (std::size_t s = 0; s < r.signals.size(); ++s)
-          curves[py::str(r.signals[s].name)] =
-              py::make_tuple(r.data_values.empty() ? std::vector<double>{} : r.data_values[s],
-                             r.model_values.empty() ? std::vector<double>{} : r.model_values[s]);
-        return py::make_tuple(toPython(identifyJson(o, r)), r.t, curves, describeIdentify(r), interrupted);
-      },
-      py::arg("scene"), py::arg("data_path"), py::arg("data_text"), py::arg("signals"), py::arg("free"), py::arg("bounds"),
-      py::arg("noise"), py::arg("model"), py::arg("holdout"), py::arg("global_"), py::arg("max_iterations"),
-      py::arg("threads"));
+  m.def("sweep", &sweepStudy, py::arg("scene"), py::arg("params"), py::arg("design_keys"), py::arg("design_rows"),
+        py::arg("model"), py::arg("minimize"), py::arg("threads"));
+  m.def("optimize", &optimizeStudy, py::arg("scene"), py::arg("ranges"), py::arg("minimize"),
+        py::arg("constraints"), py::arg("model"), py::arg("method"), py::arg("max_evals"), py::arg("threads"));
+  m.def("identify", &identifyStudy, py::arg("scene"), py::arg("data_path"), py::arg("data_text"),
+        py::arg("signals"), py::arg("free"), py::arg("bounds"), py::arg("noise"), py::arg("model"),
+        py::arg("holdout"), py::arg("global_"), py::arg("max_iterations"), py::arg("threads"));
 }
 
 }  // namespace rollerdyn::python

@@ -1,12 +1,17 @@
-// Scene keys of the fatigue (Fatigue.h) and coupling-selection (CouplingSelection.h) sign-off,
-// part of the scene schema (SceneSchema.cpp).
+// Scene keys of the fatigue (Fatigue.h) and coupling-selection (CouplingSelection.h) sign-off and
+// of the reducer's and the motor's duty, part of the scene schema (SceneSchema.cpp).
+#include <iterator>
+
 #include "scene/SchemaBuilders.h"
 
 namespace rollerdyn {
 
 using namespace schema_builders;
 
-std::vector<KeySpec> signOffSchemaKeys() {
+namespace {
+
+// The fatigue check: each loaded part's S-N curve and the life the parts must reach.
+std::vector<KeySpec> fatigueSchemaKeys() {
   using P = Presence;
   return {
       number("sizing.fatigue.coupling_torque.endurance_amplitude", "N·m", P::Optional, positive(), 0.0,
@@ -42,6 +47,13 @@ std::vector<KeySpec> signOffSchemaKeys() {
              "starts the parts must take: the fatigue check of a start compares it with 1/(damage per start)"),
       number("sizing.fatigue.required_hours", "h", P::Optional, positive(), 0.0,
              "hours of steady running the parts must take: the check compares it with 1/(damage per hour)"),
+  };
+}
+
+// The coupling's catalogue values and service factors (DIN 740-2).
+std::vector<KeySpec> couplingSelectionSchemaKeys() {
+  using P = Presence;
+  return {
       number("sizing.coupling.rated_torque", "N·m", P::Optional, positive(), 0.0,
              "T_KN, the coupling's rated torque from its catalogue, reduced to the crank axis; checked "
              "against the steady peak T_N·S_t")
@@ -69,6 +81,13 @@ std::vector<KeySpec> signOffSchemaKeys() {
              "S_A, shock factor for shocks the model does not hold (the simulated peak already holds the "
              "start's and the reversals' shocks; 1 unless the process adds others)")
           .from("DIN 740-2 (KTR coupling selection)"),
+  };
+}
+
+// The reducer's design values against the run's load spectrum (ISO 6336).
+std::vector<KeySpec> reducerDutySchemaKeys() {
+  using P = Presence;
+  return {
       number("sizing.reducer.application_factor", "-", P::Optional, between(1.0, true, 10.0, true), 0.0,
              "K_A the reducer's gears were designed with, from the table of the driving and driven machine "
              "(e.g. 1.75 for an electric motor driving a machine with heavy shocks); checked against the run's "
@@ -86,6 +105,13 @@ std::vector<KeySpec> signOffSchemaKeys() {
              "T_eq = (Σ n_i·T_i^p / N_L)^(1/p), n_i the crank revolutions at the torque T_i, N_L all of them: 6.61 for the flanks (pitting) of case-hardened steel, 8.74 for "
              "their tooth root (both from the life factors Z_NT and Y_NT of ISO 6336-2 and -3)")
           .from("ISO 6336-6:2019 Annex A; ISO 6336-2:2019 and ISO 6336-3:2019 (life factors)"),
+  };
+}
+
+// The motor's catalogue limits for starting (IEC 60034-1 duty S4).
+std::vector<KeySpec> motorDutySchemaKeys() {
+  using P = Presence;
+  return {
       number("sizing.motor.locked_rotor_time", "s", P::Optional, positive(), 0.0,
              "t_E, the motor's permissible locked-rotor (stall) time from the warm state, from its catalogue; a "
              "start may put at most the heat of t_E at standstill, t_E·M_s·ω0, into the rotor")
@@ -95,6 +121,17 @@ std::vector<KeySpec> signOffSchemaKeys() {
              "scaled to this load by the rotor heat of one start: Z = Z_0·(½·J_M·ω0²)/Q_start·(1 − P_steady/P_n,rotor)")
           .from("IEC 60034-1 (duty S4)")
   };
+}
+
+}  // namespace
+
+std::vector<KeySpec> signOffSchemaKeys() {
+  std::vector<KeySpec> keys;
+  for (auto part : {fatigueSchemaKeys, couplingSelectionSchemaKeys, reducerDutySchemaKeys, motorDutySchemaKeys}) {
+    std::vector<KeySpec> k = part();
+    keys.insert(keys.end(), std::make_move_iterator(k.begin()), std::make_move_iterator(k.end()));
+  }
+  return keys;
 }
 
 }  // namespace rollerdyn
