@@ -33,6 +33,10 @@ bool RunRecorder::check(double t, bool row_finite, const RowMotion& motion) {
     return end(supply_->tripStatus(supply_->tripTime()));
   if (motion.cart_speeds && rest_.update(t, *motion.cart_speeds, int(motion.cart_speeds->size())))
     return end(rest_.status());
+  if (initial_row_) {
+    initial_row_ = false;
+    return true;
+  }
   if (control_.progress) control_.progress(t, t_end_);
   if (control_.interrupt && control_.interrupt->load()) return end(statusAt("interrupted", t));
   return true;

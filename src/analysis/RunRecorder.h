@@ -8,7 +8,9 @@
 //     judged only while the motor gets its rated supply (a star stage or a ramp may be slow);
 //  3. a soft starter that gave up (motor/Supply.h: tripped): a failed start;
 //  4. the machine came to rest with the motor off (RestDetector.h);
-//  5. the caller stopped the run (RunControl::interrupt, after its progress report).
+//  5. the caller stopped the run (RunControl::interrupt, after its progress report), from the
+//     first row the integration produced on: the first row is the scene's initial state, no
+//     progress yet (a Ctrl-C before the first step stops at the next row, as in every model).
 // The first that applies ends the run: complete = false and the status line says why. Causes the
 // model itself finds (an integrator failure, a guide-friction loop without solution) end the run
 // through fail().
@@ -63,6 +65,7 @@ class RunRecorder {
   RunResult& run_;
   RunControl control_;
   double t_end_;
+  bool initial_row_ = true;  // the next row checked is the run's first (its initial state)
   StallDetector stall_;
   RestDetector rest_;
 };

@@ -54,11 +54,14 @@ TEST(RunRecorder, NonFiniteValueEndsTheRunBeforeAnyOtherRule) {
   RunControl control;
   control.interrupt = &stop;
   RunRecorder rec(sc, nullptr, false, run, control);
+  stop = false;
+  ASSERT_TRUE(rec.record(0.0, {0.0, 0.0}, nullptr, {0.0, 10.0, 10.0, nullptr, nullptr}));  // the initial state
+  stop = true;
   std::vector<double> reactions = {0.25, std::numeric_limits<double>::quiet_NaN()};
   EXPECT_FALSE(rec.record(0.25, {0.25, 1.0}, &reactions, {1.0, 10.0, 10.0, nullptr, nullptr}));
   EXPECT_FALSE(run.stats.complete);
   EXPECT_EQ(run.stats.status, "numerical failure (non-finite value) at t = 0.25 s");
-  EXPECT_EQ(run.timeseries.rows.size(), 1u);  // the failed row is kept, as the tables show it
+  EXPECT_EQ(run.timeseries.rows.size(), 2u);  // the failed row is kept, as the tables show it
   EXPECT_EQ(run.reactions.rows.size(), 1u);
 }
 
@@ -131,7 +134,7 @@ TEST(RunRecorder, InterruptStopsAfterTheProgressReportOfTheSameRow) {
   int rows = 0;
   for (int i = 0; i <= 100; ++i, ++rows)
     if (!rec.record(0.1 * i, {0.1 * i}, nullptr, {1.0 * i, 10.0, 10.0, nullptr, nullptr})) break;
-  EXPECT_EQ(reported.size(), 4u);  // t = 0, 0.1, 0.2, 0.3
+  EXPECT_EQ(reported.size(), 3u);  // t = 0.1, 0.2, 0.3: the initial state at t = 0 is no progress
   EXPECT_EQ(run.timeseries.rows.size(), 4u);
   EXPECT_EQ(run.stats.status, "interrupted at t = 0.3 s");
 }
