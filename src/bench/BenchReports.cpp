@@ -49,23 +49,10 @@ const BenchRow* findRow(const std::vector<BenchRow>& rows, const std::string& va
 
 }  // namespace
 
-std::string integratorReport(const Scene& scene, const std::vector<BenchRow>& rows, const BenchOptions& opt) {
-  std::ostringstream os;
-  const double T = scene.simulation.t_end;
-  os << "# Integrator benchmark: " << scene.name << "\n\n"
-     << "Simulated time " << num(T) << " s (output step " << num(scene.simulation.output_step)
-     << " s)" << (opt.quick ? ", --quick" : "") << ". " << timingNote(scene, opt) << "\n\n"
-     << "**Error measure.** For each run, over the output grid it shares with the reference run of the "
-        "SAME model: error_omega = max_i |ω_i − ω_ref,i| / max_i |ω_ref,i| (crank speed), "
-        "error_coupling = the same for the coupling torque, error angle = max_i |φ_i − φ_ref,i| (crank angle, "
-        "rad). References: multibody (constrained) RungeKuttaMerson, multibody-minimal CVODE Adams, reduced "
-        "CVODE, all at accuracy "
-     << num(kReferenceAccuracy, 2)
-     << " (Merson rather than the 5th-order Feldberg: at equal accuracy it takes ~3x smaller steps, the "
-        "safer reference for anything not fully under error control; the minimal formulation has its own "
-        "reference because it runs the scene's friction law). Baranov's scheme is compared with "
-        "the reduced CVODE reference.\n\n";
+namespace {
 
+std::string referenceCheck(const std::vector<BenchRow>& rows) {
+  std::ostringstream os;
   // Reference check: the closest any other run of the same model comes to the reference (an
   // estimate of the reference's own error when that run is an independent integrator).
   for (const char* model : {kMultibody, kMinimal, kReduced}) {
@@ -91,7 +78,12 @@ std::string integratorReport(const Scene& scene, const std::vector<BenchRow>& ro
          << " in ω (when it is another integrator, the reference's own error is of this order or less)";
     os << ".\n";
   }
+  return os.str();
+}
 
+// Per model, error target and criterion: the cheapest run that reaches it.
+std::string recommendedSettings(const std::vector<BenchRow>& rows) {
+  std::ostringstream os;
   os << "\n## Recommended settings (cheapest run that reaches the error)\n\n"
      << "| model | target | criterion | setting | CPU [s] | real-time factor | error ω | error coupling |\n"
      << "|---|---|---|---|---|---|---|---|\n";
@@ -108,7 +100,12 @@ std::string integratorReport(const Scene& scene, const std::vector<BenchRow>& ro
            << num(r->m.real_time_factor) << " | " << num(r->error_omega, 2) << " | "
            << num(r->error_coupling, 2) << " |\n";
       }
+  return os.str();
+}
 
+// The real-time targets of each model at its error, and of the minimal formulation at a crank-angle error.
+std::string performanceTargets(const Scene& scene, const std::vector<BenchRow>& rows) {
+  std::ostringstream os;
   os << "\n## Performance targets (relative crank-speed error)\n\n"
      << "| model | error | cheapest setting | real-time factor | target | met |\n|---|---|---|---|---|---|\n";
   struct Target {
@@ -135,7 +132,12 @@ std::string integratorReport(const Scene& scene, const std::vector<BenchRow>& ro
   }
   os << "\nThe targets are stated for model/balanced-4cart.yaml over 10 s; on other scenes or with "
         "--quick (shorter run, start-up transient only) they are indicative.\n";
+  return os.str();
+}
 
+// One row per run: setting, outcome, cost and errors.
+std::string allRunsTable(const std::vector<BenchRow>& rows) {
+  std::ostringstream os;
   os << "\n## All runs\n\n| model | integrator | accuracy / step | outcome | CPU [s] | steps | RHS evals | "
         "error ω | error coupling | error angle [rad] | energy residual | constraint error |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -148,6 +150,32 @@ std::string integratorReport(const Scene& scene, const std::vector<BenchRow>& ro
        << num(r.error_angle, 2) << " | " << num(r.m.energy_residual_rel, 2) << " | "
        << num(r.m.constraint_error_max, 2) << " |\n";
   }
+  return os.str();
+}
+
+}  // namespace
+
+std::string integratorReport(const Scene& scene, const std::vector<BenchRow>& rows, const BenchOptions& opt) {
+  std::ostringstream os;
+  const double T = scene.simulation.t_end;
+  os << "# Integrator benchmark: " << scene.name << "\n\n"
+     << "Simulated time " << num(T) << " s (output step " << num(scene.simulation.output_step)
+     << " s)" << (opt.quick ? ", --quick" : "") << ". " << timingNote(scene, opt) << "\n\n"
+     << "**Error measure.** For each run, over the output grid it shares with the reference run of the "
+        "SAME model: error_omega = max_i |ω_i − ω_ref,i| / max_i |ω_ref,i| (crank speed), "
+        "error_coupling = the same for the coupling torque, error angle = max_i |φ_i − φ_ref,i| (crank angle, "
+        "rad). References: multibody (constrained) RungeKuttaMerson, multibody-minimal CVODE Adams, reduced "
+        "CVODE, all at accuracy "
+     << num(kReferenceAccuracy, 2)
+     << " (Merson rather than the 5th-order Feldberg: at equal accuracy it takes ~3x smaller steps, the "
+        "safer reference for anything not fully under error control; the minimal formulation has its own "
+        "reference because it runs the scene's friction law). Baranov's scheme is compared with "
+        "the reduced CVODE reference.\n\n";
+
+  os << referenceCheck(rows);
+  os << recommendedSettings(rows);
+  os << performanceTargets(scene, rows);
+  os << allRunsTable(rows);
   os << "\nFigures: work_precision_omega.png/.svg, work_precision_coupling.png/.svg (error vs CPU time, "
         "log-log, one line per integrator). Data: bench.csv.\n";
   return os.str();

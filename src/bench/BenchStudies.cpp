@@ -298,15 +298,19 @@ std::vector<BenchRow> runCartsStudy(const SceneSource& source, const BenchOption
   return rows;
 }
 
-std::vector<BenchRow> runEffectsStudy(const SceneSource& source, const BenchOptions& opt) {
-  const Scene base = source.load();
-  struct Variant {
-    std::string name;
-    double x;
-    std::vector<std::string> extra;
-  };
-  std::vector<Variant> v;
-  v.push_back({"baseline", 0, {}});
+namespace {
+
+// One run of the effects table: its name, its x value (the coupling stiffness, else 0) and the
+// scene values it sets.
+struct EffectVariant {
+  std::string name;
+  double x;
+  std::vector<std::string> extra;
+};
+
+// The drive's own parts switched or changed one at a time: coupling, reducer, main bearings and
+// the crankshaft.
+void driveVariants(const Scene& base, std::vector<EffectVariant>& v) {
   const bool elastic = base.coupling.type == CouplingType::Elastic;
   if (elastic) {
     v.push_back({"rigid coupling", 0, {"coupling.type=rigid"}});
@@ -349,6 +353,11 @@ std::vector<BenchRow> runEffectsStudy(const SceneSource& source, const BenchOpti
     chain.push_back("crankshaft.torsional_stiffness=7.85e5");
     v.push_back({"constrained formulation, crankshaft as a torsional chain (G·I_p = 7.85e5 N·m²)", 0, chain});
   }
+}
+
+// The model's choices one at a time: coupling stiffness, guide friction, rod model and gravity.
+void modelVariants(const Scene& base, std::vector<EffectVariant>& v) {
+  const bool elastic = base.coupling.type == CouplingType::Elastic;
   for (double c : {2e5, 1e6, 1e7, 1e8, 1e9}) {
     std::ostringstream name;
     name << "elastic coupling c = " << c << " N·m/rad" << (elastic ? "" : " (k = 0)");
@@ -360,7 +369,7 @@ std::vector<BenchRow> runEffectsStudy(const SceneSource& source, const BenchOpti
     v.push_back({"guide friction on (f = 0.008)", 0, {"loads.guide_friction.coefficient=0.008"}});
   for (RodModel rm : {RodModel::Distributed, RodModel::Split, RodModel::Massless}) {
     if (rm == base.rods.model) continue;
-    Variant var{std::string("rods ") + toString(rm), 0, {std::string("rods.model=") + toString(rm)}};
+    EffectVariant var{std::string("rods ") + toString(rm), 0, {std::string("rods.model=") + toString(rm)}};
     // Without rod masses and without any crankshaft inertia the multibody model refuses an
     // elastic drive (the crank's motion would be undetermined): give the shaft 1 kg·m².
     if (rm == RodModel::Massless && base.crankSideInertia() <= 0.0) {
@@ -373,9 +382,19 @@ std::vector<BenchRow> runEffectsStudy(const SceneSource& source, const BenchOpti
     v.push_back({"gravity off", 0, {"loads.gravity=0"}});
   else
     v.push_back({"gravity on (9.81 m/s²)", 0, {"loads.gravity=9.81"}});
+}
+
+}  // namespace
+
+std::vector<BenchRow> runEffectsStudy(const SceneSource& source, const BenchOptions& opt) {
+  const Scene base = source.load();
+  std::vector<EffectVariant> v;
+  v.push_back({"baseline", 0, {}});
+  driveVariants(base, v);
+  modelVariants(base, v);
 
   std::vector<BenchRow> rows;
-  for (const Variant& var : v) {
+  for (const EffectVariant& var : v) {
     if (stopRequested(opt)) break;
     runVariant("effects", var.name, var.x, source, var.extra, opt, rows);
   }

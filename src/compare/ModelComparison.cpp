@@ -216,21 +216,12 @@ std::vector<std::string> comparedQuantities(int carts, bool reactions) {
   return q;
 }
 
-ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
-  ModelComparison c;
-  c.scene_name = scene.name;
-  c.differences = modelDifferences(scene);
-  c.identical = identicalPhysics(scene);
-  c.motion_equivalent = motionEquivalent(scene);
-  c.reduced_kinetostatic = scene.reduced.guide_normals == ReducedGuideNormals::Kinetostatic;
-  if (!mb.timeseries.has("t") || mb.timeseries.rows.empty() || !red.timeseries.has("t") ||
-      red.timeseries.rows.empty())
-    throw std::runtime_error("compare: a model produced no output rows");
+namespace {
 
-  const std::vector<double> t_mb_all = mb.timeseries.column("t");
-  const std::vector<double> t_red = red.timeseries.column("t");
-  const double t_common = std::min(t_mb_all.back(), t_red.back());
-  // Grid: the multibody rows within the span both runs reached.
+// The grid both runs are compared on: the multibody rows within the span both runs reached. Sets
+// its span, its size and how far its times lie from the reduced model's nearest row.
+std::vector<double> comparisonGrid(const std::vector<double>& t_mb_all, const std::vector<double>& t_red,
+                                   double t_common, ModelComparison& c) {
   std::vector<double> grid;
   for (double t : t_mb_all)
     if (t >= t_red.front() && t <= t_common + 1e-12) grid.push_back(t);
@@ -245,8 +236,13 @@ ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
     if (it != t_red.begin()) off = std::min(off, std::abs(*(it - 1) - t));
     c.grid_max_time_offset = std::max(c.grid_max_time_offset, off);
   }
+  return grid;
+}
 
-  // Kinetostatic reactions of the reduced model on its own rows: φ, φ̇, φ̈ from its timeseries.
+// Kinetostatic reactions of the reduced model on its own rows: φ, φ̇, φ̈ from its timeseries.
+// Three columns per cart (front and rear guide normals, rod force); none without reactions.
+std::vector<std::vector<double>> reducedKinetostaticReactions(const Scene& scene, const RunResult& red,
+                                                              const std::vector<double>& t_red) {
   const int n = scene.carts.count;
   const bool reactions = scene.simulation.reactions;
   std::vector<std::vector<double>> kin(reactions ? 3 * n : 0, std::vector<double>(t_red.size(), kNaN));
@@ -264,6 +260,30 @@ ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
       }
     }
   }
+  return kin;
+}
+
+}  // namespace
+
+ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
+  ModelComparison c;
+  c.scene_name = scene.name;
+  c.differences = modelDifferences(scene);
+  c.identical = identicalPhysics(scene);
+  c.motion_equivalent = motionEquivalent(scene);
+  c.reduced_kinetostatic = scene.reduced.guide_normals == ReducedGuideNormals::Kinetostatic;
+  if (!mb.timeseries.has("t") || mb.timeseries.rows.empty() || !red.timeseries.has("t") ||
+      red.timeseries.rows.empty())
+    throw std::runtime_error("compare: a model produced no output rows");
+
+  const std::vector<double> t_mb_all = mb.timeseries.column("t");
+  const std::vector<double> t_red = red.timeseries.column("t");
+  const double t_common = std::min(t_mb_all.back(), t_red.back());
+  const std::vector<double> grid = comparisonGrid(t_mb_all, t_red, t_common, c);
+
+  const int n = scene.carts.count;
+  const bool reactions = scene.simulation.reactions;
+  const std::vector<std::vector<double>> kin = reducedKinetostaticReactions(scene, red, t_red);
 
   c.table.columns = {"t"};
   std::vector<std::vector<double>> cols = {grid};

@@ -12,13 +12,9 @@ std::string fmt(const char* format, double a, double b = 0.0, double c = 0.0) {
   return buf;
 }
 
-}  // namespace
-
-std::vector<ModelDifference> modelDifferences(const Scene& s) {
-  std::vector<ModelDifference> d;
-  const double r = s.crank.radius, l = s.rods.length, lam = r / l;
-
-  const bool kinetostatic = s.reduced.guide_normals == ReducedGuideNormals::Kinetostatic;
+// The reactions, and with distributed rods their inertia, when the reduced model's cart statics
+// leave out the inertial forces (quasi-static guide normals).
+void reactionDifferences(const Scene& s, bool kinetostatic, std::vector<ModelDifference>& d) {
   // Reactions. The reduced model's reaction columns come from its cart statics: with the
   // papers' quasi-static normals without any inertial force; with kinetostatic normals the carts'
   // d'Alembert forces and the rods' inertial loads at their hinges are in, the same Newton
@@ -44,7 +40,10 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
                    "pass half the rod weight to the hinge)",
                    false, false});
   }
+}
 
+// Guide friction: from which normal forces each model takes it, and with what lag.
+void guideFrictionDifferences(const Scene& s, bool kinetostatic, std::vector<ModelDifference>& d) {
   if (s.hasGuideFriction()) {
     const bool lagged = s.loads.guide_normal_force == GuideNormalForce::Lagged;
     if (!kinetostatic)
@@ -66,7 +65,11 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
                        s.loads.guide_friction, s.loads.guide_friction_lag),
                    true, false});
   }
+}
 
+// The reduced model's truncated kinematics series against the exact loop closure.
+void kinematicsDifferences(const Scene& s, std::vector<ModelDifference>& d) {
+  const double r = s.crank.radius, l = s.rods.length, lam = r / l;
   if (s.reduced.kinematics == KinematicsForm::Truncated && !s.hasCamDrive()) {
     // Largest position error of the series x_B = r cos θ + l(1 - λ² sin² θ / 2) against the
     // exact r cos θ + l·√(1 - λ² sin² θ), at sin² θ = 1.
@@ -79,7 +82,10 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
                      lam, dx),
                  true, false});
   }
+}
 
+// How each model is integrated.
+void integratorDifferences(const Scene& s, std::vector<ModelDifference>& d) {
   if (s.reduced.integrator == ReducedIntegrator::Baranov)
     d.push_back({"integrator",
                  fmt("integration: the papers' fixed-step Baranov scheme in crank angle, step "
@@ -100,6 +106,17 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
                      fmt("%.3g", s.simulation.accuracy) +
                      "; differences of this order are integration error, not modelling",
                  false, true});
+}
+
+}  // namespace
+
+std::vector<ModelDifference> modelDifferences(const Scene& s) {
+  std::vector<ModelDifference> d;
+  const bool kinetostatic = s.reduced.guide_normals == ReducedGuideNormals::Kinetostatic;
+  reactionDifferences(s, kinetostatic, d);
+  guideFrictionDifferences(s, kinetostatic, d);
+  kinematicsDifferences(s, d);
+  integratorDifferences(s, d);
   return d;
 }
 

@@ -114,35 +114,9 @@ void machineTable(std::ostringstream& md, const std::string& dir, const std::str
   findings.push_back(f.str() + ".");
 }
 
-}  // namespace
-
-StudiesPage startUpStudyPage(const std::string& dir) {
-  std::ostringstream md;
-  md << "# Start-up from rest with each motor law\n\n" << kGeneratedNote
-     << "The papers report steady running only; they name start-stop regimes as the source of the largest "
-        "loads. Here each paper's machine is started from rest, direct on line, with three motor laws "
-        "(`motor.model`): Kloss's static formula (the papers' law), and the 4A motor's equivalent circuit "
-        "(double cage) fitted to its catalogue, quasi-static (`circuit`) and as the space-phasor machine "
-        "(`park`, with the supply-frequency transient after switching on). Answers per run from `summary.json` "
-        "`start_up` (docs/startup.md): the run-up time to 95 % of the steady mean crank speed, the torque "
-        "at standstill under the starting supply × u·η (u reducer ratio, η its efficiency), the peaks of motor "
-        "and coupling torque between switch-on and the steady window against the coupling's steady peak, the "
-        "stator current's peak (RMS phase current). Multibody model (minimal formulation), the scenes' accuracy "
-        "and time span; `--set initial.crank_speed=0` (two scenes start at nominal speed by default because Kloss's "
-        "starting torque cannot move their carts).\n\n"
-     << "Commands: `rollerdyn simulate model/<scene>.yaml --set motor.model=<law> --set initial.crank_speed=0` "
-        "(summary.json kept in `startup_<scene>/<law>/`) and, for the offsets, `rollerdyn sweep model/balanced-4cart.yaml "
-        "--param motor.model --values kloss,circuit,park --param crank.offset_deg --values 0:90:10 --param "
-        "coupling.damping --values 2000,8000 --model reduced --set initial.crank_speed=0 --set simulation.t_end=20`.\n\n";
-  std::vector<std::string> findings;
-  md << "## The papers' machines\n\n";
-  machineTable(md, dir, "balanced-4cart", "Loveikin, Pochka, Romasevych (2018), four carts, 4A200M6U3", findings);
-  machineTable(md, dir, "recuperative-2cart", "Loveikin and Pochka (2007), two carts on opposite sides", findings);
-  md << "The scene of Loveikin and Pochka (2007) has no catalogue block: the motor data it prints (M_s = 129.24, "
-        "M_n = 107.7, M_kr = 215.4 N·m for a 4A132S6U3) do not make one catalogue motor (M_n·ω_n is twice that "
-        "motor's 5.5 kW, model/recuperative-2cart.yaml), so only Kloss runs there.\n\n";
-  machineTable(md, dir, "energy-balanced-3cart", "The energy-balanced drive paper, three carts, 4A160M6U3", findings);
-
+// Loveikin, Pochka, Romasevych (2018) Table 1's offsets and dampings started from rest, each motor law
+// beside the published swing; adds the finding on how often the crank turns.
+void table1FromRestSection(std::ostringstream& md, const std::string& dir, std::vector<std::string>& findings) {
   md << "## Loveikin, Pochka, Romasevych (2018) Table 1 offsets, started from rest\n\n"
      << "Coupling torque swing ΔM over the steady window (Table 1's quantity) for each law and coupling damping "
         "k [N·m·s/rad], with how the crank moves after the start (turning, rocking: it swings back and forth, "
@@ -197,6 +171,38 @@ StudiesPage startUpStudyPage(const std::string& dir) {
     if (!stalled_kloss.empty()) f << "; Kloss stalls at " << stalled_kloss;
     findings.push_back(f.str() + ".");
   }
+}
+
+}  // namespace
+
+StudiesPage startUpStudyPage(const std::string& dir) {
+  std::ostringstream md;
+  md << "# Start-up from rest with each motor law\n\n" << kGeneratedNote
+     << "The papers report steady running only; they name start-stop regimes as the source of the largest "
+        "loads. Here each paper's machine is started from rest, direct on line, with three motor laws "
+        "(`motor.model`): Kloss's static formula (the papers' law), and the 4A motor's equivalent circuit "
+        "(double cage) fitted to its catalogue, quasi-static (`circuit`) and as the space-phasor machine "
+        "(`park`, with the supply-frequency transient after switching on). Answers per run from `summary.json` "
+        "`start_up` (docs/startup.md): the run-up time to 95 % of the steady mean crank speed, the torque "
+        "at standstill under the starting supply × u·η (u reducer ratio, η its efficiency), the peaks of motor "
+        "and coupling torque between switch-on and the steady window against the coupling's steady peak, the "
+        "stator current's peak (RMS phase current). Multibody model (minimal formulation), the scenes' accuracy "
+        "and time span; `--set initial.crank_speed=0` (two scenes start at nominal speed by default because Kloss's "
+        "starting torque cannot move their carts).\n\n"
+     << "Commands: `rollerdyn simulate model/<scene>.yaml --set motor.model=<law> --set initial.crank_speed=0` "
+        "(summary.json kept in `startup_<scene>/<law>/`) and, for the offsets, `rollerdyn sweep model/balanced-4cart.yaml "
+        "--param motor.model --values kloss,circuit,park --param crank.offset_deg --values 0:90:10 --param "
+        "coupling.damping --values 2000,8000 --model reduced --set initial.crank_speed=0 --set simulation.t_end=20`.\n\n";
+  std::vector<std::string> findings;
+  md << "## The papers' machines\n\n";
+  machineTable(md, dir, "balanced-4cart", "Loveikin, Pochka, Romasevych (2018), four carts, 4A200M6U3", findings);
+  machineTable(md, dir, "recuperative-2cart", "Loveikin and Pochka (2007), two carts on opposite sides", findings);
+  md << "The scene of Loveikin and Pochka (2007) has no catalogue block: the motor data it prints (M_s = 129.24, "
+        "M_n = 107.7, M_kr = 215.4 N·m for a 4A132S6U3) do not make one catalogue motor (M_n·ω_n is twice that "
+        "motor's 5.5 kW, model/recuperative-2cart.yaml), so only Kloss runs there.\n\n";
+  machineTable(md, dir, "energy-balanced-3cart", "The energy-balanced drive paper, three carts, 4A160M6U3", findings);
+
+  table1FromRestSection(md, dir, findings);
   md << "\n## Findings (computed from the tables above)\n\n";
   for (const std::string& f : findings) md << "- " << f << "\n";
   md << "\nWhat the laws leave out: Kloss's static formula has no electrical transient and understates these motors' "

@@ -19,76 +19,70 @@ std::vector<double> lineCrossings(const std::vector<double>& w, const std::vecto
   return out;
 }
 
-CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::vector<double>& speeds,
-                                const std::vector<int>& orders, int angles) {
-  CampbellDiagram d;
-  if (scene.coupling.type != CouplingType::Elastic) {
-    d.note = "rigid coupling: the drive has no torsional mode";
-    return d;
-  }
-  if (!scene.motor.enabled) {
-    d.note = "no motor: no steady running to vary";
-    return d;
-  }
-  d.applicable = true;
-  d.orders = orders;
-  Eigen::VectorXd warm;
-  for (double w : speeds) {
-    CampbellPoint p;
-    p.omega_target = w;
-    try {
-      const Scene s = sceneAtCrankSpeed(scene, w, omega_op);
-      auto drive = makeReducedDrive(s);
-      SteadyMotionOptions o;
-      o.samples = angles;
-      o.rtol = 1e-7;
-      if (warm.size()) {
-        o.start = warm;
-        o.start(0) = w;
-        o.warmup_periods = 0;
-      }
-      // Reference for the Floquet branch: frozen frequency at uniform rotation.
-      DrivePoint p0;
-      p0.phi = s.initial.crank_angle;
-      p0.omega = w;
-      o.reference_frequency = frozenModes(*drive, s, p0).oscillation_frequency();
-      SteadyMotion m = steadyMotion(*drive, s, o);
-      if (!m.found) {
-        p.failure = m.failure;
-      } else {
-        p.found = true;
-        p.omega_mean = m.omega_mean;
-        warm = m.x0;
-        std::vector<double> f, fd, z;
-        p.oscillates = true;
-        for (const DrivePoint& q : m.samples) {
-          const FrozenAngle fa = frozenModes(*drive, s, q);
-          f.push_back(fa.torsional_frequency());
-          fd.push_back(fa.oscillation_frequency());
-          for (const FrozenMode& mode : fa.modes)
-            if (mode.torsional) {
-              z.push_back(mode.damping_ratio);
-              p.oscillates = p.oscillates && mode.oscillates;
-            }
-        }
-        p.frozen = bandOf(f);
-        p.frozen_damping = bandOf(z);
-        // Floquet frequency on the branch nearest the frozen mean of the damped frequency Im λ.
-        const double ref = bandOf(fd).mean;
-        const auto mult =
-            classifyMultipliers(floquetMultipliers(m.monodromy, m.period, std::isfinite(ref) ? ref : p.frozen.mean), true);
-        const FloquetVerdict v = judge(mult);
-        p.max_modulus = v.max_modulus;
-        if (v.has_torsional) {
-          p.floquet_frequency = v.torsional_frequency;
-          p.floquet_damping_ratio = v.torsional_damping_ratio;
-        }
-      }
-    } catch (const std::exception& e) {
-      p.failure = e.what();
+namespace {
+
+// One speed of the diagram: the steady motion at crank speed w (warm-started from the last speed's
+// orbit, which `warm` carries on), the frozen-angle band along it and the Floquet verdict.
+CampbellPoint campbellPoint(const Scene& scene, double w, double omega_op, int angles, Eigen::VectorXd& warm) {
+  CampbellPoint p;
+  p.omega_target = w;
+  try {
+    const Scene s = sceneAtCrankSpeed(scene, w, omega_op);
+    auto drive = makeReducedDrive(s);
+    SteadyMotionOptions o;
+    o.samples = angles;
+    o.rtol = 1e-7;
+    if (warm.size()) {
+      o.start = warm;
+      o.start(0) = w;
+      o.warmup_periods = 0;
     }
-    d.points.push_back(p);
+    // Reference for the Floquet branch: frozen frequency at uniform rotation.
+    DrivePoint p0;
+    p0.phi = s.initial.crank_angle;
+    p0.omega = w;
+    o.reference_frequency = frozenModes(*drive, s, p0).oscillation_frequency();
+    SteadyMotion m = steadyMotion(*drive, s, o);
+    if (!m.found) {
+      p.failure = m.failure;
+    } else {
+      p.found = true;
+      p.omega_mean = m.omega_mean;
+      warm = m.x0;
+      std::vector<double> f, fd, z;
+      p.oscillates = true;
+      for (const DrivePoint& q : m.samples) {
+        const FrozenAngle fa = frozenModes(*drive, s, q);
+        f.push_back(fa.torsional_frequency());
+        fd.push_back(fa.oscillation_frequency());
+        for (const FrozenMode& mode : fa.modes)
+          if (mode.torsional) {
+            z.push_back(mode.damping_ratio);
+            p.oscillates = p.oscillates && mode.oscillates;
+          }
+      }
+      p.frozen = bandOf(f);
+      p.frozen_damping = bandOf(z);
+      // Floquet frequency on the branch nearest the frozen mean of the damped frequency Im λ.
+      const double ref = bandOf(fd).mean;
+      const auto mult =
+          classifyMultipliers(floquetMultipliers(m.monodromy, m.period, std::isfinite(ref) ? ref : p.frozen.mean), true);
+      const FloquetVerdict v = judge(mult);
+      p.max_modulus = v.max_modulus;
+      if (v.has_torsional) {
+        p.floquet_frequency = v.torsional_frequency;
+        p.floquet_damping_ratio = v.torsional_damping_ratio;
+      }
+    }
+  } catch (const std::exception& e) {
+    p.failure = e.what();
   }
+  return p;
+}
+
+// Where the lines p = k*omega and 2p = k*omega of every order meet the frozen mean, with the band
+// between their crossings of the lowest and highest frozen frequency; sorted by speed.
+void findCrossings(CampbellDiagram& d, const std::vector<int>& orders) {
   std::vector<double> w, fmean, fmin, fmax;
   for (const CampbellPoint& p : d.points) {
     if (!p.found) continue;
@@ -129,6 +123,26 @@ CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::
              " speeds: no crossings are listed there";
   std::sort(d.crossings.begin(), d.crossings.end(),
             [](const CampbellCrossing& a, const CampbellCrossing& b) { return a.omega < b.omega; });
+}
+
+}  // namespace
+
+CampbellDiagram campbellDiagram(const Scene& scene, double omega_op, const std::vector<double>& speeds,
+                                const std::vector<int>& orders, int angles) {
+  CampbellDiagram d;
+  if (scene.coupling.type != CouplingType::Elastic) {
+    d.note = "rigid coupling: the drive has no torsional mode";
+    return d;
+  }
+  if (!scene.motor.enabled) {
+    d.note = "no motor: no steady running to vary";
+    return d;
+  }
+  d.applicable = true;
+  d.orders = orders;
+  Eigen::VectorXd warm;
+  for (double w : speeds) d.points.push_back(campbellPoint(scene, w, omega_op, angles, warm));
+  findCrossings(d, orders);
   return d;
 }
 

@@ -143,6 +143,68 @@ FloquetVerdict judge(const std::vector<ClassifiedMultiplier>& m) {
   return v;
 }
 
+namespace {
+
+// The drive's state at crank angle phi from the orbit's state x (speed, and twist and its rate
+// when the coupling is elastic).
+DrivePoint drivePointAt(double phi, const Eigen::VectorXd& x, bool elastic) {
+  DrivePoint p;
+  p.phi = phi;
+  p.omega = x(0);
+  if (elastic) {
+    p.twist = x(1);
+    p.twist_rate = x(2);
+  }
+  return p;
+}
+
+// The drive over one crank revolution with the crank angle φ2 as the clock: x = [ω2] (rigid) or
+// [ω2, ψ, ψ'] (elastic), scaled by the crank speed and the twist of the breakdown torque, and the
+// time t as the quadrature.
+PeriodicSystem revolutionSystem(DriveModel& drive, double phi0, bool elastic, bool quasi_static, double omega_scale,
+                                double twist_scale) {
+  PeriodicSystem sys;
+  sys.n = elastic ? 3 : 1;
+  sys.quadratures = 1;
+  sys.period = 2 * M_PI;
+  if (elastic)
+    sys.scale = Eigen::VectorXd(Eigen::Vector3d(omega_scale, twist_scale, twist_scale * omega_scale));
+  else
+    sys.scale = Eigen::VectorXd::Constant(1, omega_scale);
+  sys.rhs = [&drive, phi0, elastic, quasi_static](double s, const Eigen::VectorXd& x, Eigen::VectorXd& f) {
+    const DrivePoint p = drivePointAt(phi0 + s, x, elastic);
+    f.resize(x.size());
+    if (!(p.omega > 0)) {  // stalled or reversed: φ2 is no clock any more
+      f.setConstant(NAN);
+      return;
+    }
+    if (quasi_static) drive.setOperatingPoint(p);
+    const Eigen::Vector2d a = drive.accelerations(p);
+    f(0) = a(0) / p.omega;
+    if (elastic) {
+      f(1) = p.twist_rate / p.omega;
+      f(2) = a(1) / p.omega;
+    }
+    f(x.size() - 1) = 1.0 / p.omega;  // dt/dφ2
+  };
+  return sys;
+}
+
+// Tolerances of the orbit search from the steady motion's options.
+OrbitOptions orbitOptions(const SteadyMotionOptions& o) {
+  OrbitOptions oo;
+  oo.flow.rtol = o.rtol;
+  oo.flow.atol_scale = o.rtol;
+  oo.flow.samples = o.samples;
+  oo.warmup_periods = o.warmup_periods;
+  oo.max_newton = o.max_newton;
+  oo.tolerance = 10 * o.rtol;
+  oo.accept_stagnation = 1e-5;
+  return oo;
+}
+
+}  // namespace
+
 SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMotionOptions& o) {
   SteadyMotion r;
   r.elastic = drive.elastic();
@@ -165,47 +227,11 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
     const double M_ref = std::max(motorBreakdownTorque(scene) * scene.reducer.ratio * scene.reducer.efficiency, 1.0);
     twist_scale = M_ref / scene.coupling.stiffness;
   }
-  const bool quasi_static = o.quasi_static_auxiliary;
-  PeriodicSystem sys;
-  sys.n = r.elastic ? 3 : 1;
-  sys.quadratures = 1;
-  sys.period = 2 * M_PI;
-  if (r.elastic)
-    sys.scale = Eigen::VectorXd(Eigen::Vector3d(omega_scale, twist_scale, twist_scale * omega_scale));
-  else
-    sys.scale = Eigen::VectorXd::Constant(1, omega_scale);
   const double phi0 = r.phi0;
   const bool elastic = r.elastic;
-  sys.rhs = [&drive, phi0, elastic, quasi_static](double s, const Eigen::VectorXd& x, Eigen::VectorXd& f) {
-    DrivePoint p;
-    p.phi = phi0 + s;
-    p.omega = x(0);
-    if (elastic) {
-      p.twist = x(1);
-      p.twist_rate = x(2);
-    }
-    f.resize(x.size());
-    if (!(p.omega > 0)) {  // stalled or reversed: φ2 is no clock any more
-      f.setConstant(NAN);
-      return;
-    }
-    if (quasi_static) drive.setOperatingPoint(p);
-    const Eigen::Vector2d a = drive.accelerations(p);
-    f(0) = a(0) / p.omega;
-    if (elastic) {
-      f(1) = p.twist_rate / p.omega;
-      f(2) = a(1) / p.omega;
-    }
-    f(x.size() - 1) = 1.0 / p.omega;  // dt/dφ2
-  };
-  OrbitOptions oo;
-  oo.flow.rtol = o.rtol;
-  oo.flow.atol_scale = o.rtol;
-  oo.flow.samples = o.samples;
-  oo.warmup_periods = o.warmup_periods;
-  oo.max_newton = o.max_newton;
-  oo.tolerance = 10 * o.rtol;
-  oo.accept_stagnation = 1e-5;
+  const PeriodicSystem sys =
+      revolutionSystem(drive, phi0, elastic, o.quasi_static_auxiliary, omega_scale, twist_scale);
+  const OrbitOptions oo = orbitOptions(o);
   const PeriodicOrbit orbit = findPeriodicOrbit(sys, start, oo);
   r.evaluations = orbit.evaluations;
   if (!orbit.found) {
@@ -220,14 +246,7 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
   r.omega_mean = 2 * M_PI / r.period;
   for (size_t k = 0; k < orbit.s_samples.size(); ++k) {
     const Eigen::VectorXd& x = orbit.x_samples[k];
-    DrivePoint p;
-    p.phi = phi0 + orbit.s_samples[k];
-    p.omega = x(0);
-    if (elastic) {
-      p.twist = x(1);
-      p.twist_rate = x(2);
-    }
-    r.samples.push_back(p);
+    r.samples.push_back(drivePointAt(phi0 + orbit.s_samples[k], x, elastic));
     r.sample_time.push_back(x(x.size() - 1));
   }
   rebranch(r, o.reference_frequency);

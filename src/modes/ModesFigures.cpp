@@ -335,15 +335,12 @@ FigureSet drawSpectrumFigures(const OrderSpectrum& s, const std::string& dir) {
   return set;
 }
 
-std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, const OrderSpectrum* spectrum,
-                             const nlohmann::json& run_summary) {
-  const std::string run_na = runStabilityNotApplicable(run_summary);
+namespace {
+
+// The section's key figures, one row each: the modes of both models, the Floquet verdicts, the
+// excitation orders and the stability charts.
+std::string modesKeyTable(const ModesReport& r, const std::string& run_na) {
   std::ostringstream h;
-  h << "<h2 id=\"modes\">Torsional modes and stability</h2>\n";
-  h << "<p class=\"small\">The drive linearized about its steady motion: frozen-angle modes (the crank angle held, "
-       "both models), Floquet multipliers of the steady motion over one revolution (exact for the linearized "
-       "periodic motion), Campbell diagram and stability charts. The two-mass value is the first, cheap estimate "
-       "(two constant inertias, Dyomin (two rotors) eq. (10)).</p>\n";
   h << "<table>\n<tr><th>quantity</th><th>value</th></tr>\n";
   auto row = [&](const std::string& k, const std::string& v) {
     h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"n\">" << htmlEscape(v) << "</td></tr>\n";
@@ -387,6 +384,11 @@ std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, con
                            : "stability chart c × k at ω = " + g(c.fixed_speed) + " rad/s",
         std::to_string(c.unstable_points) + " unstable points, " + std::to_string(c.zones.size()) + " zone(s)");
   h << "</table>\n";
+  return h.str();
+}
+
+std::string campbellCrossingsHtml(const ModesReport& r) {
+  std::ostringstream h;
   if (!r.campbell.crossings.empty()) {
     h << "<h3>Campbell crossings</h3>\n<table>\n<tr><th>order k</th><th>kind</th><th>crank speed [rad/s]</th>"
          "<th>frequency [rad/s]</th><th>band crossed between [rad/s]</th></tr>\n";
@@ -396,7 +398,12 @@ std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, con
         << g(c.omega_band_low) << " … " << g(c.omega_band_high) << "</td></tr>\n";
     h << "</table>\n";
   }
-  h << separationHtml(r.separation);
+  return h.str();
+}
+
+// The run's strongest orders per signal and how much of each signal is locked to the crank.
+std::string orderSpectrumHtml(const OrderSpectrum* spectrum) {
+  std::ostringstream h;
   if (spectrum && spectrum->ok) {
     h << "<h3>Order spectrum of the run (steady window, " << spectrum->revolutions << " revolutions)</h3>\n"
       << "<table>\n<tr><th>signal</th><th>strongest orders (amplitude)</th><th>share at whole orders</th></tr>\n";
@@ -410,6 +417,37 @@ std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, con
     }
     h << "</table>\n";
   }
+  return h.str();
+}
+
+// The figures, embedded in the page (PNG as data).
+std::string figuresHtml(const FigureSet& figures) {
+  std::ostringstream h;
+  for (const FigureFile& f : figures.figures) {
+    h << "<figure id=\"" << htmlEscape(f.name) << "\">";
+    if (!f.png.empty())
+      h << "<img alt=\"" << htmlEscape(f.name) << "\" src=\"data:image/png;base64,"
+        << base64Encode(readFileContents(f.png, "figure")) << "\">";
+    h << "<figcaption>" << htmlEscape(f.caption) << "</figcaption></figure>\n";
+  }
+  return h.str();
+}
+
+}  // namespace
+
+std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, const OrderSpectrum* spectrum,
+                             const nlohmann::json& run_summary) {
+  const std::string run_na = runStabilityNotApplicable(run_summary);
+  std::ostringstream h;
+  h << "<h2 id=\"modes\">Torsional modes and stability</h2>\n";
+  h << "<p class=\"small\">The drive linearized about its steady motion: frozen-angle modes (the crank angle held, "
+       "both models), Floquet multipliers of the steady motion over one revolution (exact for the linearized "
+       "periodic motion), Campbell diagram and stability charts. The two-mass value is the first, cheap estimate "
+       "(two constant inertias, Dyomin (two rotors) eq. (10)).</p>\n";
+  h << modesKeyTable(r, run_na);
+  h << campbellCrossingsHtml(r);
+  h << separationHtml(r.separation);
+  h << orderSpectrumHtml(spectrum);
   // The run's resonance warnings (its verdict, at its steady mean crank speed), as summary.json has them.
   const nlohmann::json& modal = run_summary.contains("resonance_modal") ? run_summary["resonance_modal"] : nlohmann::json();
   if (modal.is_object() && modal.contains("warnings") && modal["warnings"].is_array())
@@ -418,13 +456,7 @@ std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, con
   for (const std::string& n : r.notes) h << "<p class=\"small\">Note: " << htmlEscape(n) << "</p>\n";
   for (const auto& [name, meaning] : r.approximations)
     h << "<p class=\"small\">Approximation, " << htmlEscape(name) << ": " << htmlEscape(meaning) << "</p>\n";
-  for (const FigureFile& f : figures.figures) {
-    h << "<figure id=\"" << htmlEscape(f.name) << "\">";
-    if (!f.png.empty())
-      h << "<img alt=\"" << htmlEscape(f.name) << "\" src=\"data:image/png;base64,"
-        << base64Encode(readFileContents(f.png, "figure")) << "\">";
-    h << "<figcaption>" << htmlEscape(f.caption) << "</figcaption></figure>\n";
-  }
+  h << figuresHtml(figures);
   return h.str();
 }
 

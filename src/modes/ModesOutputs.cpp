@@ -98,28 +98,18 @@ std::string frozenTorsionalText(const ModelFrozenModes& m, bool floquet) {
   return os.str();
 }
 
-}  // namespace
-
-nlohmann::json modesJson(const ModesReport& r) {
-  nlohmann::json j;
-  j["scene"] = r.scene;
-  j["coupling"] = r.elastic ? "elastic" : "rigid";
-  j["cpu_seconds"] = r.cpu_seconds;
-  j["first_estimate_two_mass"] = {
+// The first estimate before any linearization: two constant inertias and the coupling between them.
+nlohmann::json twoMassJson(const ModesReport& r) {
+  return {
       {"method", "two constant inertias, Dyomin (two rotors) eq. (10), crank side at its mean over a revolution"},
       {"applicable", r.two_mass.applicable},
       {"J1", r.two_mass.J1},
       {"J2_mean", r.two_mass.J2_mean},
       {"stiffness", r.elastic ? num(r.two_mass.stiffness) : nlohmann::json(nullptr)},
       {"p0", r.two_mass.applicable ? num(r.two_mass.p0) : nlohmann::json(nullptr)}};
-  j["steady_motion"] = steadyJson(r.steady);
-  j["steady_motion"]["model"] = "reduced";
-  // Without a steady motion: the speed the frozen-angle modes were taken at instead (null: none).
-  if (!r.steady.found) j["steady_motion"]["frozen_modes_at_omega"] = num(r.fallback_omega);
-  if (r.has_multibody_steady) {
-    j["steady_motion_multibody"] = steadyJson(r.steady_multibody);
-    j["steady_motion_multibody"]["friction_normal_force_lags"] = "quasi-static (normal forces of each state)";
-  }
+}
+
+nlohmann::json frozenModesJson(const ModesReport& r) {
   nlohmann::json fz = nlohmann::json::array();
   for (const ModelFrozenModes& m : r.frozen) {
     if (!m.ok) {
@@ -141,8 +131,10 @@ nlohmann::json modesJson(const ModesReport& r) {
                                             {"carts", num(m.energy_carts)}}},
                   {"angles", m.angles.size()}});
   }
-  j["frozen_angle_modes"] = fz;
-  j["models_max_relative_difference"] = num(r.model_difference);
+  return fz;
+}
+
+nlohmann::json excitationOrdersJson(const ModesReport& r) {
   nlohmann::json ord = nlohmann::json::array();
   for (const OrderContent& c : r.orders.table)
     ord.push_back({{"order", c.order},
@@ -150,15 +142,18 @@ nlohmann::json modesJson(const ModesReport& r) {
                    {"inertia_amplitude", c.inertia_amplitude},
                    {"load_torque_amplitude", c.load_amplitude},
                    {"exciting_torque_amplitude", c.exciting_torque}});
-  j["excitation_orders"] = {{"layout", r.orders.layout},
-                            {"forced", r.orders.forced},
-                            {"forced_threshold", "harmonic of the load torque plus J_n2'*omega^2/2 at least 1 % of the largest"},
-                            {"inertia", r.orders.inertia},
-                            {"load_torque", r.orders.load},
-                            {"all", r.orders.all},
-                            {"inertia_mean", r.orders.inertia_mean},
-                            {"inertia_relative_swing", r.orders.inertia_relative_swing},
+  return {{"layout", r.orders.layout},
+          {"forced", r.orders.forced},
+          {"forced_threshold", "harmonic of the load torque plus J_n2'*omega^2/2 at least 1 % of the largest"},
+          {"inertia", r.orders.inertia},
+          {"load_torque", r.orders.load},
+          {"all", r.orders.all},
+          {"inertia_mean", r.orders.inertia_mean},
+          {"inertia_relative_swing", r.orders.inertia_relative_swing},
                             {"table", ord}};
+}
+
+nlohmann::json campbellJson(const ModesReport& r) {
   nlohmann::json cm;
   cm["applicable"] = r.campbell.applicable;
   if (!r.campbell.note.empty()) cm["note"] = r.campbell.note;
@@ -173,9 +168,10 @@ nlohmann::json modesJson(const ModesReport& r) {
                   {"omega_band_high", num(c.omega_band_high)}});
   cm["crossings"] = cr;
   cm["overdamped_speeds"] = r.campbell.overdamped_speeds;
-  j["campbell"] = cm;
-  j["separation_margins"] = separationJson(r.separation);
-  j["crankshaft_chain"] = chainJson(r.chain);
+  return cm;
+}
+
+nlohmann::json stabilityChartsJson(const ModesReport& r) {
   nlohmann::json ch = nlohmann::json::array();
   for (const StabilityChart& c : r.charts) {
     nlohmann::json zones = nlohmann::json::array();
@@ -197,7 +193,32 @@ nlohmann::json modesJson(const ModesReport& r) {
                   {"failed_points", c.failed_points},
                   {"zones", zones}});
   }
-  j["stability_charts"] = ch;
+  return ch;
+}
+
+}  // namespace
+
+nlohmann::json modesJson(const ModesReport& r) {
+  nlohmann::json j;
+  j["scene"] = r.scene;
+  j["coupling"] = r.elastic ? "elastic" : "rigid";
+  j["cpu_seconds"] = r.cpu_seconds;
+  j["first_estimate_two_mass"] = twoMassJson(r);
+  j["steady_motion"] = steadyJson(r.steady);
+  j["steady_motion"]["model"] = "reduced";
+  // Without a steady motion: the speed the frozen-angle modes were taken at instead (null: none).
+  if (!r.steady.found) j["steady_motion"]["frozen_modes_at_omega"] = num(r.fallback_omega);
+  if (r.has_multibody_steady) {
+    j["steady_motion_multibody"] = steadyJson(r.steady_multibody);
+    j["steady_motion_multibody"]["friction_normal_force_lags"] = "quasi-static (normal forces of each state)";
+  }
+  j["frozen_angle_modes"] = frozenModesJson(r);
+  j["models_max_relative_difference"] = num(r.model_difference);
+  j["excitation_orders"] = excitationOrdersJson(r);
+  j["campbell"] = campbellJson(r);
+  j["separation_margins"] = separationJson(r.separation);
+  j["crankshaft_chain"] = chainJson(r.chain);
+  j["stability_charts"] = stabilityChartsJson(r);
   j["warnings"] = r.warnings;
   j["notes"] = r.notes;
   nlohmann::json approximations = nlohmann::json::array();
@@ -268,7 +289,10 @@ Table stabilityTable(const ModesReport& r) {
   return t;
 }
 
-std::string modesText(const ModesReport& r, const std::string& run_stability_na) {
+namespace {
+
+// Title, the two-mass first estimate and the steady motion the modes are taken along.
+std::string modesHeadText(const ModesReport& r) {
   std::ostringstream os;
   char b[512];
   os << "torsional modes of " << r.scene << " (" << (r.elastic ? "elastic" : "rigid") << " coupling)\n";
@@ -286,6 +310,13 @@ std::string modesText(const ModesReport& r, const std::string& run_stability_na)
   } else {
     os << "  steady motion: not found (" << r.steady.failure << ")\n";
   }
+  return os.str();
+}
+
+// The frozen-angle modes of each model, the mode shape and how far the two models agree.
+std::string frozenModesText(const ModesReport& r) {
+  std::ostringstream os;
+  char b[512];
   for (const ModelFrozenModes& m : r.frozen) {
     if (!m.ok) {
       os << "  frozen-angle modes, " << m.model << " model: failed (" << m.failure << ")\n";
@@ -303,30 +334,40 @@ std::string modesText(const ModesReport& r, const std::string& run_stability_na)
     std::snprintf(b, sizeof b, "  multibody against reduced: largest relative difference of p %.2e\n", r.model_difference);
     os << b;
   }
-  auto floquetLine = [&](const SteadyMotion& m, const char* model) {
-    if (!run_stability_na.empty()) {  // the run has no steady motion: no verdict on one
-      os << "  Floquet (" << model << "): stability of the steady motion n/a: " << run_stability_na << "\n";
-      return;
-    }
-    if (!m.found) {
-      os << "  Floquet (" << model << "): no steady motion (" << m.failure << ")\n";
-      return;
-    }
-    const FloquetVerdict& v = m.verdict;
-    std::snprintf(b, sizeof b, "  Floquet (%s): %s, largest |multiplier| %.4g per revolution (margin %.4g)", model,
-                  v.text.c_str(), v.max_modulus, v.margin);
+  return os.str();
+}
+
+// One model's Floquet line: the verdict on its steady motion over one revolution.
+std::string floquetText(const SteadyMotion& m, const char* model, const std::string& run_stability_na) {
+  std::ostringstream os;
+  char b[512];
+  if (!run_stability_na.empty()) {  // the run has no steady motion: no verdict on one
+    os << "  Floquet (" << model << "): stability of the steady motion n/a: " << run_stability_na << "\n";
+    return os.str();
+  }
+  if (!m.found) {
+    os << "  Floquet (" << model << "): no steady motion (" << m.failure << ")\n";
+    return os.str();
+  }
+  const FloquetVerdict& v = m.verdict;
+  std::snprintf(b, sizeof b, "  Floquet (%s): %s, largest |multiplier| %.4g per revolution (margin %.4g)", model,
+                v.text.c_str(), v.max_modulus, v.margin);
+  os << b;
+  if (v.has_torsional && v.torsional_resolved) {
+    std::snprintf(b, sizeof b, "; torsional mode %.5g rad/s, damping ratio %.3g", v.torsional_frequency,
+                  v.torsional_damping_ratio);
     os << b;
-    if (v.has_torsional && v.torsional_resolved) {
-      std::snprintf(b, sizeof b, "; torsional mode %.5g rad/s, damping ratio %.3g", v.torsional_frequency,
-                    v.torsional_damping_ratio);
-      os << b;
-    } else if (v.has_torsional) {
-      os << "; torsional mode decays more than a million-fold per revolution (its frequency is not resolved)";
-    }
-    os << "\n";
-  };
-  floquetLine(r.steady, "reduced");
-  if (r.has_multibody_steady) floquetLine(r.steady_multibody, "multibody");
+  } else if (v.has_torsional) {
+    os << "; torsional mode decays more than a million-fold per revolution (its frequency is not resolved)";
+  }
+  os << "\n";
+  return os.str();
+}
+
+// The orders the layout excites and those whose torque harmonics drive the coupling.
+std::string excitationOrdersText(const ModesReport& r) {
+  std::ostringstream os;
+  char b[512];
   os << "  excitation orders (layout): ";
   for (size_t i = 0; i < r.orders.layout.size() && i < 12; ++i) os << (i ? ", " : "") << r.orders.layout[i];
   if (r.orders.layout.size() > 12) os << ", ...";
@@ -338,6 +379,13 @@ std::string modesText(const ModesReport& r, const std::string& run_stability_na)
   for (size_t i = 0; i < r.orders.forced.size(); ++i) os << (i ? ", " : "") << r.orders.forced[i];
   if (r.orders.forced.empty()) os << "none";
   os << "\n";
+  return os.str();
+}
+
+// Where a mode meets an order (p = k*omega or 2p = k*omega) on the way to the running speed.
+std::string campbellCrossingsText(const ModesReport& r) {
+  std::ostringstream os;
+  char b[512];
   if (r.campbell.applicable) {
     os << "  Campbell crossings (" << r.campbell.crossings.size()
        << "; the layout's orders first, each group nearest the running speed first):";
@@ -364,8 +412,13 @@ std::string modesText(const ModesReport& r, const std::string& run_stability_na)
     }
     os << "\n";
   }
-  os << separationText(r.separation);
-  os << chainText(r.chain);
+  return os.str();
+}
+
+// One line per stability chart: how many of its points are unstable and in how many zones.
+std::string stabilityChartsText(const ModesReport& r) {
+  std::ostringstream os;
+  char b[512];
   for (const StabilityChart& c : r.charts) {
     if (c.y_key == "omega")
       std::snprintf(b, sizeof b, "  stability chart c x omega at k = %.4g N*m*s/rad: %d of %zu points unstable, %zu zone(s)",
@@ -377,6 +430,23 @@ std::string modesText(const ModesReport& r, const std::string& run_stability_na)
     if (c.failed_points) os << ", " << c.failed_points << " without steady running";
     os << "\n";
   }
+  return os.str();
+}
+
+}  // namespace
+
+std::string modesText(const ModesReport& r, const std::string& run_stability_na) {
+  std::ostringstream os;
+  char b[512];
+  os << modesHeadText(r);
+  os << frozenModesText(r);
+  os << floquetText(r.steady, "reduced", run_stability_na);
+  if (r.has_multibody_steady) os << floquetText(r.steady_multibody, "multibody", run_stability_na);
+  os << excitationOrdersText(r);
+  os << campbellCrossingsText(r);
+  os << separationText(r.separation);
+  os << chainText(r.chain);
+  os << stabilityChartsText(r);
   for (const std::string& n : r.notes) os << "  note: " << n << "\n";
   for (const auto& [name, meaning] : r.approximations) os << "  approximation, " << name << ": " << meaning << "\n";
   std::snprintf(b, sizeof b, "  analysis CPU %.2f s\n", r.cpu_seconds);

@@ -10,6 +10,60 @@
 
 namespace rollerdyn::modes {
 
+namespace {
+
+// y(x) interpolated linearly at xq; i walks forward from the last call (xq rises call to call).
+double interpolateForward(const std::vector<double>& x, const std::vector<double>& y, double xq, size_t& i) {
+  while (i + 2 < x.size() && x[i + 1] < xq) ++i;
+  const double w = (x[i + 1] - x[i]) != 0 ? (xq - x[i]) / (x[i + 1] - x[i]) : 0.0;
+  return y[i] + w * (y[i + 1] - y[i]);
+}
+
+// Time at each of N equally spaced crank angles over the window's R revolutions (phi_w: crank
+// angle from the window's start at the times t_w, rising).
+std::vector<double> timesAtEqualCrankAngles(const std::vector<double>& phi_w, const std::vector<double>& t_w, int N,
+                                            int R) {
+  std::vector<double> tq(N);
+  size_t ia = 0;
+  for (int q = 0; q < N; ++q) {
+    const double pq = 2 * M_PI * R * q / N;
+    tq[q] = (pq <= phi_w.front()) ? t_w.front() : interpolateForward(phi_w, t_w, pq, ia);
+  }
+  return tq;
+}
+
+// One signal y(tt) resampled at the times tq of equal crank angles and transformed: its amplitude
+// per order, its n_peaks largest orders and the share of whole orders in its power.
+void addSignalSpectrum(OrderSpectrum& s, const std::string& c, const std::vector<double>& y,
+                       const std::vector<double>& tt, const std::vector<double>& tq, int R, int bins, int n_peaks,
+                       Eigen::FFT<double>& fft) {
+  const int N = int(tq.size());
+  std::vector<double> yq(N);
+  size_t ib = 0;
+  for (int q = 0; q < N; ++q) yq[q] = interpolateForward(tt, y, tq[q], ib);
+  std::vector<std::complex<double>> spec;
+  fft.fwd(spec, yq);
+  std::vector<double> a(bins);
+  for (int b = 0; b < bins; ++b) a[b] = (b == 0 ? 1.0 : 2.0) * std::abs(spec[b]) / N;
+  double total = 0, whole = 0;
+  for (int b = 1; b < N / 2; ++b) {
+    const double ab = 2.0 * std::abs(spec[b]) / N;
+    total += ab * ab;
+    if (b % R == 0) whole += ab * ab;
+  }
+  std::vector<int> idx;
+  for (int b = 1; b < bins; ++b) idx.push_back(b);
+  std::sort(idx.begin(), idx.end(), [&](int p, int q) { return a[p] > a[q]; });
+  std::vector<SpectrumPeak> peaks;
+  for (int k = 0; k < n_peaks && k < int(idx.size()); ++k) peaks.push_back({s.orders[idx[k]], a[idx[k]]});
+  s.signals.push_back(c);
+  s.amplitude.push_back(a);
+  s.peaks.push_back(peaks);
+  s.whole_order_share.push_back(total > 0 ? whole / total : 1.0);
+}
+
+}  // namespace
+
 OrderSpectrum orderSpectrum(const Table& ts, const Table& table, const std::vector<std::string>& columns,
                             double window_revolutions, int M, double max_order, int n_peaks) {
   OrderSpectrum s;
@@ -32,13 +86,8 @@ OrderSpectrum orderSpectrum(const Table& ts, const Table& table, const std::vect
   s.t_end = last.t_end;
   s.revolutions = R;
   // Crank angle at the window's start (interpolated) and the direction of rotation.
-  auto interp = [](const std::vector<double>& x, const std::vector<double>& y, double xq, size_t& i) {
-    while (i + 2 < x.size() && x[i + 1] < xq) ++i;
-    const double w = (x[i + 1] - x[i]) != 0 ? (xq - x[i]) / (x[i + 1] - x[i]) : 0.0;
-    return y[i] + w * (y[i + 1] - y[i]);
-  };
   size_t i0 = 0;
-  const double phi_start = interp(t, phi, s.t_begin, i0);
+  const double phi_start = interpolateForward(t, phi, s.t_begin, i0);
   const double sign = last.omega_mean >= 0 ? 1.0 : -1.0;
   // Rows of the window, monotonic in φ (the crank turns one way in steady running).
   std::vector<double> phi_w, t_w;
@@ -59,12 +108,7 @@ OrderSpectrum orderSpectrum(const Table& ts, const Table& table, const std::vect
   const int N = M * R;
   // Time at each equally spaced crank angle; the signals are then interpolated in time (rows
   // of `table` may be a different table with the same time column).
-  std::vector<double> tq(N);
-  size_t ia = 0;
-  for (int q = 0; q < N; ++q) {
-    const double pq = 2 * M_PI * R * q / N;
-    tq[q] = (pq <= phi_w.front()) ? t_w.front() : interp(phi_w, t_w, pq, ia);
-  }
+  const std::vector<double> tq = timesAtEqualCrankAngles(phi_w, t_w, N, R);
   if (!table.has("t")) {
     s.note = "the table has no t column";
     return s;
@@ -75,29 +119,7 @@ OrderSpectrum orderSpectrum(const Table& ts, const Table& table, const std::vect
   for (int b = 0; b < bins; ++b) s.orders.push_back(double(b) / R);
   for (const std::string& c : columns) {
     if (!table.has(c)) continue;
-    const std::vector<double> y = table.column(c);
-    std::vector<double> yq(N);
-    size_t ib = 0;
-    for (int q = 0; q < N; ++q) yq[q] = interp(tt, y, tq[q], ib);
-    std::vector<std::complex<double>> spec;
-    fft.fwd(spec, yq);
-    std::vector<double> a(bins);
-    for (int b = 0; b < bins; ++b) a[b] = (b == 0 ? 1.0 : 2.0) * std::abs(spec[b]) / N;
-    double total = 0, whole = 0;
-    for (int b = 1; b < N / 2; ++b) {
-      const double ab = 2.0 * std::abs(spec[b]) / N;
-      total += ab * ab;
-      if (b % R == 0) whole += ab * ab;
-    }
-    std::vector<int> idx;
-    for (int b = 1; b < bins; ++b) idx.push_back(b);
-    std::sort(idx.begin(), idx.end(), [&](int p, int q) { return a[p] > a[q]; });
-    std::vector<SpectrumPeak> peaks;
-    for (int k = 0; k < n_peaks && k < int(idx.size()); ++k) peaks.push_back({s.orders[idx[k]], a[idx[k]]});
-    s.signals.push_back(c);
-    s.amplitude.push_back(a);
-    s.peaks.push_back(peaks);
-    s.whole_order_share.push_back(total > 0 ? whole / total : 1.0);
+    addSignalSpectrum(s, c, table.column(c), tt, tq, R, bins, n_peaks, fft);
   }
   s.ok = !s.signals.empty();
   if (!s.ok) s.note = "none of the signals is in the table";

@@ -73,6 +73,55 @@ class Augmented {
   Eigen::MatrixXd A_;
 };
 
+// The stages of one Dormand-Prince step; k1 holds f at the step's start (first same as last).
+struct DormandPrinceStages {
+  explicit DormandPrinceStages(int N) : k1(N), k2(N), k3(N), k4(N), k5(N), k6(N), k7(N), y(N), err(N) {}
+  Eigen::VectorXd k1, k2, k3, k4, k5, k6, k7, y, err;
+};
+
+// One Dormand-Prince step of size h from (s, z): the fifth-order result in k.y, f there in k.k7,
+// and the largest weighted error estimate (NaN: a stage left the region where f is defined).
+double dormandPrinceStep(Augmented& F, double s, double h, const Eigen::VectorXd& z, const Eigen::VectorXd& atol,
+                         double rtol, DormandPrinceStages& k) {
+  k.y = z + h * a21 * k.k1;
+  F(s + c2 * h, k.y, k.k2);
+  k.y = z + h * (a31 * k.k1 + a32 * k.k2);
+  F(s + c3 * h, k.y, k.k3);
+  k.y = z + h * (a41 * k.k1 + a42 * k.k2 + a43 * k.k3);
+  F(s + c4 * h, k.y, k.k4);
+  k.y = z + h * (a51 * k.k1 + a52 * k.k2 + a53 * k.k3 + a54 * k.k4);
+  F(s + c5 * h, k.y, k.k5);
+  k.y = z + h * (a61 * k.k1 + a62 * k.k2 + a63 * k.k3 + a64 * k.k4 + a65 * k.k5);
+  F(s + h, k.y, k.k6);
+  k.y = z + h * (b1 * k.k1 + b3 * k.k3 + b4 * k.k4 + b5 * k.k5 + b6 * k.k6);
+  F(s + h, k.y, k.k7);
+  k.err = h * (e1 * k.k1 + e3 * k.k3 + e4 * k.k4 + e5 * k.k5 + e6 * k.k6 + e7 * k.k7);
+  double en = 0;
+  for (int i = 0; i < z.size(); ++i) {
+    const double sc = atol(i) + rtol * std::max(std::abs(z(i)), std::abs(k.y(i)));
+    const double ei = std::abs(k.err(i)) / sc;
+    en = std::isfinite(ei) ? std::max(en, ei) : NAN;
+    if (!std::isfinite(en)) break;
+  }
+  return en;
+}
+
+// Where the flow is sampled: `samples` points evenly over the period S, the first at its start.
+std::vector<double> sampleTimes(double S, int samples) {
+  std::vector<double> sample_at;
+  for (int k = 0; k < samples; ++k) sample_at.push_back(S * k / samples);
+  return sample_at;
+}
+
+// Error weights: periodic states by their scale, quadratures relative only, Φ absolute.
+Eigen::VectorXd errorWeights(const PeriodicSystem& sys, double atol_scale, int N) {
+  const int n = sys.n, nx = sys.n + sys.quadratures;
+  Eigen::VectorXd atol = Eigen::VectorXd::Constant(N, atol_scale);
+  for (int i = 0; i < n; ++i) atol(i) = atol_scale * sys.scale(i);
+  for (int i = n; i < nx; ++i) atol(i) = atol_scale;
+  return atol;
+}
+
 }  // namespace
 
 FlowResult flowOverPeriod(const PeriodicSystem& sys, const Eigen::VectorXd& x0, const FlowOptions& o) {
@@ -87,14 +136,10 @@ FlowResult flowOverPeriod(const PeriodicSystem& sys, const Eigen::VectorXd& x0, 
   Eigen::VectorXd z(N), w(N);
   z.head(nx) = x0;
   if (o.monodromy) Eigen::Map<Eigen::MatrixXd>(z.data() + nx, n, n).setIdentity();
-  // Error weights: periodic states by their scale, quadratures relative only, Φ absolute.
-  Eigen::VectorXd atol = Eigen::VectorXd::Constant(N, o.atol_scale);
-  for (int i = 0; i < n; ++i) atol(i) = o.atol_scale * sys.scale(i);
-  for (int i = n; i < nx; ++i) atol(i) = o.atol_scale;
+  const Eigen::VectorXd atol = errorWeights(sys, o.atol_scale, N);
 
   const double S = sys.period;
-  std::vector<double> sample_at;
-  for (int k = 0; k < o.samples; ++k) sample_at.push_back(S * k / o.samples);
+  const std::vector<double> sample_at = sampleTimes(S, o.samples);
   size_t next_sample = 0;
   auto record = [&](double s) {
     r.s_samples.push_back(s);
@@ -105,9 +150,9 @@ FlowResult flowOverPeriod(const PeriodicSystem& sys, const Eigen::VectorXd& x0, 
     next_sample = 1;
   }
 
-  Eigen::VectorXd k1(N), k2(N), k3(N), k4(N), k5(N), k6(N), k7(N), y(N), err(N);
+  DormandPrinceStages k(N);
   double s = 0, h = S / 200;
-  F(s, z, k1);
+  F(s, z, k.k1);
   while (s < S) {
     if (r.steps + r.rejected >= o.max_steps) {
       r.failure = "period not integrated within " + std::to_string(o.max_steps) + " steps";
@@ -120,26 +165,7 @@ FlowResult flowOverPeriod(const PeriodicSystem& sys, const Eigen::VectorXd& x0, 
       h = target - s;
       clipped = true;
     }
-    y = z + h * a21 * k1;
-    F(s + c2 * h, y, k2);
-    y = z + h * (a31 * k1 + a32 * k2);
-    F(s + c3 * h, y, k3);
-    y = z + h * (a41 * k1 + a42 * k2 + a43 * k3);
-    F(s + c4 * h, y, k4);
-    y = z + h * (a51 * k1 + a52 * k2 + a53 * k3 + a54 * k4);
-    F(s + c5 * h, y, k5);
-    y = z + h * (a61 * k1 + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5);
-    F(s + h, y, k6);
-    y = z + h * (b1 * k1 + b3 * k3 + b4 * k4 + b5 * k5 + b6 * k6);
-    F(s + h, y, k7);
-    err = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
-    double en = 0;
-    for (int i = 0; i < N; ++i) {
-      const double sc = atol(i) + o.rtol * std::max(std::abs(z(i)), std::abs(y(i)));
-      const double ei = std::abs(err(i)) / sc;
-      en = std::isfinite(ei) ? std::max(en, ei) : NAN;
-      if (!std::isfinite(en)) break;
-    }
+    const double en = dormandPrinceStep(F, s, h, z, atol, o.rtol, k);
     if (!std::isfinite(en)) {  // a stage left the region where f is defined: a smaller step
       ++r.rejected;
       h *= 0.1;
@@ -154,8 +180,8 @@ FlowResult flowOverPeriod(const PeriodicSystem& sys, const Eigen::VectorXd& x0, 
     }
     if (en <= 1.0) {
       s = clipped ? target : s + h;
-      z = y;
-      k1 = k7;  // first same as last
+      z = k.y;
+      k.k1 = k.k7;  // first same as last
       ++r.steps;
       if (clipped && next_sample < sample_at.size() && target == sample_at[next_sample]) {
         record(s);
@@ -179,6 +205,62 @@ FlowResult flowOverPeriod(const PeriodicSystem& sys, const Eigen::VectorXd& x0, 
   return r;
 }
 
+namespace {
+
+// The largest residual entry relative to its state's scale; NaN when any entry is not finite.
+double scaledResidual(const PeriodicSystem& sys, const Eigen::VectorXd& d) {
+  double m = 0;
+  for (int i = 0; i < sys.n; ++i) {
+    const double e = std::abs(d(i)) / sys.scale(i);
+    if (!std::isfinite(e)) return double(NAN);
+    m = std::max(m, e);
+  }
+  return m;
+}
+
+// o.warmup_periods whole periods from the start x (updated), without the variational equations.
+// Returns the flow's failure, empty when every period went through.
+template <class Run>
+std::string warmUp(const PeriodicSystem& sys, Run& run, const OrbitOptions& o, Eigen::VectorXd& x) {
+  const int n = sys.n;
+  FlowOptions plain = o.flow;
+  plain.monodromy = false;
+  plain.samples = 0;
+  for (int k = 0; k < o.warmup_periods; ++k) {
+    const FlowResult f = run(x, plain);
+    if (!f.ok) return f.failure;
+    x.head(n) = f.x_end.head(n);
+  }
+  return "";
+}
+
+// Newton's step dx on the period map, halved (at most eight times) until the residual falls or
+// meets the tolerance. Accepted: x, f, res and r hold the new start, its flow and its residual.
+template <class Run>
+bool dampedNewtonStep(const PeriodicSystem& sys, Run& run, const FlowOptions& var, const Eigen::VectorXd& dx,
+                      double tolerance, Eigen::VectorXd& x, FlowResult& f, Eigen::VectorXd& res, double& r) {
+  const int n = sys.n;
+  double lambda = 1.0;
+  for (int half = 0; half < 8; ++half, lambda *= 0.5) {
+    Eigen::VectorXd xt = x;
+    xt.head(n) += lambda * dx;
+    FlowResult ft = run(xt, var);
+    if (!ft.ok) continue;
+    const Eigen::VectorXd rt = ft.x_end.head(n) - xt.head(n);
+    const double st = scaledResidual(sys, rt);
+    if (std::isfinite(st) && (st < r || st <= tolerance)) {
+      x = xt;
+      f = std::move(ft);
+      res = rt;
+      r = st;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd& guess, const OrbitOptions& o) {
   PeriodicOrbit orbit;
   auto run = [&](const Eigen::VectorXd& x0, const FlowOptions& fo) {
@@ -189,26 +271,8 @@ PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd
   const int n = sys.n, nx = sys.n + sys.quadratures;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(nx);
   x.head(n) = guess.head(n);
-  FlowOptions plain = o.flow;
-  plain.monodromy = false;
-  plain.samples = 0;
-  for (int k = 0; k < o.warmup_periods; ++k) {
-    const FlowResult f = run(x, plain);
-    if (!f.ok) {
-      orbit.failure = f.failure;
-      return orbit;
-    }
-    x.head(n) = f.x_end.head(n);
-  }
-  auto scaled = [&](const Eigen::VectorXd& d) {  // NaN when any entry is not finite
-    double m = 0;
-    for (int i = 0; i < n; ++i) {
-      const double e = std::abs(d(i)) / sys.scale(i);
-      if (!std::isfinite(e)) return double(NAN);
-      m = std::max(m, e);
-    }
-    return m;
-  };
+  orbit.failure = warmUp(sys, run, o, x);
+  if (!orbit.failure.empty()) return orbit;
   FlowOptions var = o.flow;
   var.monodromy = true;
   var.samples = 0;
@@ -218,7 +282,7 @@ PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd
     return orbit;
   }
   Eigen::VectorXd res = f.x_end.head(n) - x.head(n);
-  double r = scaled(res);
+  double r = scaledResidual(sys, res);
   if (!std::isfinite(r)) {
     orbit.failure = "the period map is not finite at the first guess";
     return orbit;
@@ -231,24 +295,7 @@ PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd
       orbit.failure = "Newton step not finite (monodromy has a multiplier 1)";
       return orbit;
     }
-    double lambda = 1.0;
-    bool accepted = false;
-    for (int half = 0; half < 8; ++half, lambda *= 0.5) {
-      Eigen::VectorXd xt = x;
-      xt.head(n) += lambda * dx;
-      FlowResult ft = run(xt, var);
-      if (!ft.ok) continue;
-      const Eigen::VectorXd rt = ft.x_end.head(n) - xt.head(n);
-      const double st = scaled(rt);
-      if (std::isfinite(st) && (st < r || st <= o.tolerance)) {
-        x = xt;
-        f = std::move(ft);
-        res = rt;
-        r = st;
-        accepted = true;
-        break;
-      }
-    }
+    const bool accepted = dampedNewtonStep(sys, run, var, dx, o.tolerance, x, f, res, r);
     if (!accepted) {
       // No step reduces the residual any more: the map's own integration error is reached.
       if (r <= o.accept_stagnation) break;

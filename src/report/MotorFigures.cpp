@@ -87,82 +87,46 @@ struct MotorPlanner {
     plans.push_back({std::move(name), std::move(caption), std::move(spec)});
   }
 
-  void operatingPoint(const std::vector<double>& t, const std::vector<double>& w,
-                      const std::vector<double>& m) {
-    PlotSpec p;
-    const bool kloss_law = !scene || scene->induction.model == MotorModel::Kloss ||
-                           scene->induction.model == MotorModel::KlossDynamic;
-    p.title = title(kloss_law ? "motor operating points on its Kloss curve"
-                              : "motor operating points on its steady torque-speed curve");
-    p.xlabel = "motor speed reduced to the crank axis ω_1 = ω_r/u [rad/s]";
-    p.ylabel = "motor torque at the crank axis M_{n1} = M·u·η [N·m]";
-    p.preamble = "set key inside left bottom box opaque\n";
-    double lo = 0, hi = 0;
-    for (double v : w)
-      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-    std::string marks;
-    MotorMarks k;
-    std::shared_ptr<const MotorLaw> law;
-    if (scene) try {
-        law = sharedMotorLaw(*scene);
-      } catch (const std::exception& ex) {
-        notes.push_back(std::string("motor operating point drawn without its curve: ") + ex.what());
-      }
-    if (scene && law) {
-      k = motorMarks(*scene);
-      const double u = k.u, eta = k.eta;
-      hi = std::max(hi, 1.03 * scene->motor.omega_sync / u);
-      // The law's steady torque-speed curve at the rated supply (the Kloss curve for motor.model kloss).
-      auto curve = [&](double w_crank) { return law->steadyTorque(SupplyState{}, w_crank * u) * u * eta; };
-      std::vector<double> cx, cy;
-      const int n = 600;
-      for (int i = 0; i <= n; ++i) {
-        const double x = lo + (hi - lo) * i / n;
-        cx.push_back(x);
-        cy.push_back(curve(x));
-      }
-      const bool kloss = scene->induction.model == MotorModel::Kloss;
-      p.series.push_back(series((kloss ? "Kloss curve (scene " : "steady torque-speed curve (scene ") +
-                                    literal(scene->name) + ")",
-                                cx, cy, kGrey, 4.0));
-      // A static law's torque is its curve at the run's speed: check the two agree, so a run made
-      // with other motor data (--set motor.*) is not silently drawn on a wrong curve. (A law with
-      // states, or a starting method that changes the supply, leaves the curve by design.)
-      const bool on_curve = law->stateCount() == 0 && !out.timeseries.has("supply_voltage_ratio");
-      double dev = 0;
-      for (size_t i = 0; on_curve && i < w.size() && i < m.size(); ++i)
-        if (std::isfinite(w[i]) && std::isfinite(m[i])) dev = std::max(dev, std::abs(m[i] - curve(w[i])));
-      const double scale = motorBreakdownTorque(*scene, law.get()) * u * eta;
-      if (scale > 0 && dev > 1e-3 * scale)
-        notes.push_back(std::string("motor operating point: the run's motor_torque differs from the ") +
-                        (kloss ? "Kloss curve" : "steady torque-speed curve") + " of scene '" +
-                        scene->name + "' by up to " + fmt("%.3g", dev) +
-                        " N·m; was the run made with other motor data (--set motor.* / reducer.*)? "
-                        "Pass the same --scene and --set to `rollerdyn plot`.");
-      marks = markPoint(101, k.w_kr / u, k.M_kr * u * eta, kRed, "breakdown M_{kr}") +
-              markPoint(102, k.w_n / u, k.M_n * u * eta, kGreen, "nominal M_n");
-    } else if (!scene) {
-      notes.push_back("motor operating point drawn without its Kloss curve: no scene file (pass --scene FILE)");
+  // The law's steady torque-speed curve reduced to the crank axis over [lo, hi] on p, a note when
+  // the run's torque leaves a static law's curve; returns the nominal and breakdown marks.
+  std::string lawCurve(PlotSpec& p, const MotorLaw& law, const MotorMarks& k, double lo, double& hi,
+                       const std::vector<double>& w, const std::vector<double>& m) {
+    const double u = k.u, eta = k.eta;
+    hi = std::max(hi, 1.03 * scene->motor.omega_sync / u);
+    // The law's steady torque-speed curve at the rated supply (the Kloss curve for motor.model kloss).
+    auto curve = [&](double w_crank) { return law.steadyTorque(SupplyState{}, w_crank * u) * u * eta; };
+    std::vector<double> cx, cy;
+    const int n = 600;
+    for (int i = 0; i <= n; ++i) {
+      const double x = lo + (hi - lo) * i / n;
+      cx.push_back(x);
+      cy.push_back(curve(x));
     }
-    p.preamble += marks;
-    const std::vector<size_t> rows = windowRows(t, window);
-    PlotSeries start = series("start-up and whole run", w, m, kBlue, 0.8);
-    p.series.push_back(start);
-    PlotSeries steady = series("operating points, steady window", pick(w, rows), pick(m, rows), kRed);
-    steady.style = "points pt 7 ps 0.6";
-    if (window.found) p.series.push_back(steady);
-    PlotSpec zoom = p;
-    add("motor_operating_point",
-        std::string(kloss_law ? "The motor's static Kloss characteristic reduced to the crank axis, M_n1 = M(u·ω_1)·u·η "
-                                "(Loveikin, Pochka, Romasevych (2018) eq. (37)"
-                              : "The steady torque-speed curve of the motor's law at the rated supply (motor.model, "
-                                "fitted to its catalogue) reduced to the crank axis, M_n1 = M(u·ω_1)·u·η (") +
-            "; M motor torque at the rotor, ω_1 motor speed reduced to the crank, u reducer ratio, η its efficiency), "
-            "the run's operating points over the whole run (thin line; a start with switching transients or a "
-            "starting method leaves the steady curve), the steady-window operating points (red), and the "
-            "nominal and breakdown points.",
-        std::move(p));
-    if (!window.found || rows.empty()) return;
+    const bool kloss = scene->induction.model == MotorModel::Kloss;
+    p.series.push_back(series((kloss ? "Kloss curve (scene " : "steady torque-speed curve (scene ") +
+                                  literal(scene->name) + ")",
+                              cx, cy, kGrey, 4.0));
+    // A static law's torque is its curve at the run's speed: check the two agree, so a run made
+    // with other motor data (--set motor.*) is not silently drawn on a wrong curve. (A law with
+    // states, or a starting method that changes the supply, leaves the curve by design.)
+    const bool on_curve = law.stateCount() == 0 && !out.timeseries.has("supply_voltage_ratio");
+    double dev = 0;
+    for (size_t i = 0; on_curve && i < w.size() && i < m.size(); ++i)
+      if (std::isfinite(w[i]) && std::isfinite(m[i])) dev = std::max(dev, std::abs(m[i] - curve(w[i])));
+    const double scale = motorBreakdownTorque(*scene, &law) * u * eta;
+    if (scale > 0 && dev > 1e-3 * scale)
+      notes.push_back(std::string("motor operating point: the run's motor_torque differs from the ") +
+                      (kloss ? "Kloss curve" : "steady torque-speed curve") + " of scene '" +
+                      scene->name + "' by up to " + fmt("%.3g", dev) +
+                      " N·m; was the run made with other motor data (--set motor.* / reducer.*)? "
+                      "Pass the same --scene and --set to `rollerdyn plot`.");
+    return markPoint(101, k.w_kr / u, k.M_kr * u * eta, kRed, "breakdown M_{kr}") +
+           markPoint(102, k.w_n / u, k.M_n * u * eta, kGreen, "nominal M_n");
+  }
+
+  // The close-up on the steady window's operating range (zoom: the first figure's spec).
+  void operatingPointZoom(PlotSpec zoom, const std::vector<size_t>& rows, const MotorMarks& k,
+                          const std::vector<double>& w, const std::vector<double>& m) {
     double wlo = INFINITY, whi = -INFINITY, mlo = INFINITY, mhi = -INFINITY;
     for (size_t r : rows)
       if (r < w.size() && r < m.size() && std::isfinite(w[r]) && std::isfinite(m[r])) {
@@ -189,6 +153,55 @@ struct MotorPlanner {
         "and torque swing on its characteristic while the crank turns, against its nominal torque "
         "M_n and breakdown torque M_kr (both reduced to the crank, × u·η).",
         std::move(zoom));
+  }
+
+  void operatingPoint(const std::vector<double>& t, const std::vector<double>& w,
+                      const std::vector<double>& m) {
+    PlotSpec p;
+    const bool kloss_law = !scene || scene->induction.model == MotorModel::Kloss ||
+                           scene->induction.model == MotorModel::KlossDynamic;
+    p.title = title(kloss_law ? "motor operating points on its Kloss curve"
+                              : "motor operating points on its steady torque-speed curve");
+    p.xlabel = "motor speed reduced to the crank axis ω_1 = ω_r/u [rad/s]";
+    p.ylabel = "motor torque at the crank axis M_{n1} = M·u·η [N·m]";
+    p.preamble = "set key inside left bottom box opaque\n";
+    double lo = 0, hi = 0;
+    for (double v : w)
+      if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    std::string marks;
+    MotorMarks k;
+    std::shared_ptr<const MotorLaw> law;
+    if (scene) try {
+        law = sharedMotorLaw(*scene);
+      } catch (const std::exception& ex) {
+        notes.push_back(std::string("motor operating point drawn without its curve: ") + ex.what());
+      }
+    if (scene && law) {
+      k = motorMarks(*scene);
+      marks = lawCurve(p, *law, k, lo, hi, w, m);
+    } else if (!scene) {
+      notes.push_back("motor operating point drawn without its Kloss curve: no scene file (pass --scene FILE)");
+    }
+    p.preamble += marks;
+    const std::vector<size_t> rows = windowRows(t, window);
+    PlotSeries start = series("start-up and whole run", w, m, kBlue, 0.8);
+    p.series.push_back(start);
+    PlotSeries steady = series("operating points, steady window", pick(w, rows), pick(m, rows), kRed);
+    steady.style = "points pt 7 ps 0.6";
+    if (window.found) p.series.push_back(steady);
+    PlotSpec zoom = p;
+    add("motor_operating_point",
+        std::string(kloss_law ? "The motor's static Kloss characteristic reduced to the crank axis, M_n1 = M(u·ω_1)·u·η "
+                                "(Loveikin, Pochka, Romasevych (2018) eq. (37)"
+                              : "The steady torque-speed curve of the motor's law at the rated supply (motor.model, "
+                                "fitted to its catalogue) reduced to the crank axis, M_n1 = M(u·ω_1)·u·η (") +
+            "; M motor torque at the rotor, ω_1 motor speed reduced to the crank, u reducer ratio, η its efficiency), "
+            "the run's operating points over the whole run (thin line; a start with switching transients or a "
+            "starting method leaves the steady curve), the steady-window operating points (red), and the "
+            "nominal and breakdown points.",
+        std::move(p));
+    if (!window.found || rows.empty()) return;
+    operatingPointZoom(std::move(zoom), rows, k, w, m);
   }
 
   void torqueAndPower(const std::vector<double>& t, const std::vector<double>& w,

@@ -20,48 +20,33 @@ std::string row(const std::string& what, const std::string& start, const std::st
          htmlEscape(steady) + "</td><td class=\"n\">" + htmlEscape(ratio) + "</td><td>" + unit + "</td></tr>\n";
 }
 
-}  // namespace
+// One row of a value table: what, value, unit.
+std::string line(const std::string& what, const std::string& v, const char* unit) {
+  return "<tr><td>" + htmlEscape(what) + "</td><td class=\"n\">" + htmlEscape(v) + "</td><td>" + unit + "</td></tr>\n";
+}
 
-std::string startUpSectionHtml(const json& summary) {
+// Can it start: the torques at switch-on against the load, the run-up time and the rotor's loss.
+std::string canItStartTable(const json& s) {
   std::ostringstream h;
-  h << "<h2>Start-up and stopping</h2>\n";
-  const json& s = jsonMember(summary, "start_up");
-  if (!s.is_object()) {
-    h << "<p>No start-up answers: the run switches no motor on.</p>\n";
-    return h.str();
-  }
-  const bool starts = jsonMember(s, "starts").is_boolean() && jsonMember(s, "starts").get<bool>();
-  h << "<p class=\"small\">Starting method: " << htmlEscape(jsonMember(s, "method").get<std::string>()) << " at t = "
-    << jsonNumberText(jsonMember(s, "t_on")) << " s; motor law: " << htmlEscape(jsonMember(s, "motor_law").get<std::string>())
-    << ". Torques at the crank axis (M at the rotor × u·η: u reducer ratio, η its efficiency); "
-    << (starts ? "the start runs from the switch-on until the crank speed settles (the first revolution from which "
-                 "every later one has the same mean speed within 1e-3)."
-               : "the drive did not run up, so the peaks are over the whole run and are compared with its last part.")
-    << "</p>\n";
-  const bool still_starting = jsonMember(s, "still_starting").is_boolean() && jsonMember(s, "still_starting").get<bool>();
-  h << "<div class=\"status " << (starts ? "ok" : still_starting ? "warn" : "bad") << "\">" << htmlEscape(jsonMember(s, "verdict").get<std::string>())
-    << "</div>\n";
-  for (const json& n : jsonMember(s, "notes"))
-    h << "<div class=\"status warn\">" << htmlEscape(n.get<std::string>()) << "</div>\n";
-
   h << "<table>\n<tr><th>can it start</th><th>value</th><th>unit</th></tr>\n";
-  auto line = [&h](const std::string& what, const std::string& v, const char* unit) {
-    h << "<tr><td>" << htmlEscape(what) << "</td><td class=\"n\">" << htmlEscape(v) << "</td><td>" << unit
-      << "</td></tr>\n";
-  };
-  line("starting torque at switch-on (the law's torque at standstill under the starting supply × u·η)",
+  h << line("starting torque at switch-on (the law's torque at standstill under the starting supply × u·η)",
        jsonNumberText(jsonMember(s, "starting_torque_crank")), "N·m");
-  line("starting torque at the rated supply", jsonNumberText(jsonMember(s, "starting_torque_rated_crank")), "N·m");
-  line("largest torque of the law's steady curve × u·η", jsonNumberText(jsonMember(s, "largest_torque_crank")), "N·m");
-  line("load torque at the start angle (carts breaking away)", jsonNumberText(jsonMember(s, "load_torque_start")), "N·m");
-  line("load torque averaged over a revolution", jsonNumberText(jsonMember(s, "load_torque_mean")), "N·m");
+  h << line("starting torque at the rated supply", jsonNumberText(jsonMember(s, "starting_torque_rated_crank")), "N·m");
+  h << line("largest torque of the law's steady curve × u·η", jsonNumberText(jsonMember(s, "largest_torque_crank")), "N·m");
+  h << line("load torque at the start angle (carts breaking away)", jsonNumberText(jsonMember(s, "load_torque_start")), "N·m");
+  h << line("load torque averaged over a revolution", jsonNumberText(jsonMember(s, "load_torque_mean")), "N·m");
   const json& st = jsonMember(s, "steady");
-  line("steady mean crank speed", jsonNumberText(jsonMember(st, "mean_speed")), "rad/s");
-  line("run-up time to 95 % of it", jsonNumberText(jsonMember(s, "run_up_time"), "%.3g"), "s");
-  line("rotor energy loss of the start, ∫M·(ω0·f/f_n − ω_r)dt (no load: J·ω0²/2)", jsonNumberText(jsonMember(s, "rotor_energy_loss")),
+  h << line("steady mean crank speed", jsonNumberText(jsonMember(st, "mean_speed")), "rad/s");
+  h << line("run-up time to 95 % of it", jsonNumberText(jsonMember(s, "run_up_time"), "%.3g"), "s");
+  h << line("rotor energy loss of the start, ∫M·(ω0·f/f_n − ω_r)dt (no load: J·ω0²/2)", jsonNumberText(jsonMember(s, "rotor_energy_loss")),
        "J");
   h << "</table>\n";
+  return h.str();
+}
 
+// The peaks of the start (or of the whole run when it did not run up) against the steady ones.
+std::string startPeaksTable(const json& s, bool starts, bool still_starting) {
+  std::ostringstream h;
   if (starts)
     h << "<table>\n<tr><th>peak</th><th>in the start</th><th>steady window</th><th>start/steady</th><th>unit</th></tr>\n";
   else
@@ -93,8 +78,12 @@ std::string startUpSectionHtml(const json& summary) {
     h << row("I²t of the start", jsonNumberText(jsonMember(I, "i2t")), "", "", "A²·s");
   }
   h << "</table>\n";
+  return h.str();
+}
 
-  const json& lim = jsonMember(s, "current_limit");
+// The soft starter's current limit: how long it held, where the bypass closed, what it allows at standstill.
+std::string currentLimitTable(const json& lim) {
+  std::ostringstream h;
   if (lim.is_object()) {
     const std::string outcome = jsonMember(lim, "outcome").is_string() ? jsonMember(lim, "outcome").get<std::string>() : "";
     const char* how = outcome == "bypass"         ? "until the bypass closed (the motor up to speed)"
@@ -102,33 +91,68 @@ std::string startUpSectionHtml(const json& summary) {
                       : outcome == "switched_off" ? "until the switch-off"
                                                   : "still when the run ended";
     h << "<table>\n<tr><th>soft starter's current limit</th><th>value</th><th>unit</th></tr>\n";
-    line("current limit I_lim (RMS stator phase current)", jsonNumberText(jsonMember(lim, "limit")), "A");
-    line(std::string("held from the switch-on, ") + how, jsonNumberText(jsonMember(lim, "held_time"), "%.4g"), "s");
-    line("ended at", jsonNumberText(jsonMember(lim, "end_time"), "%.4g"), "s");
-    line("rotor speed of the bypass, where the current at U_n falls to I_lim", jsonNumberText(jsonMember(lim, "bypass_speed")),
+    h << line("current limit I_lim (RMS stator phase current)", jsonNumberText(jsonMember(lim, "limit")), "A");
+    h << line(std::string("held from the switch-on, ") + how, jsonNumberText(jsonMember(lim, "held_time"), "%.4g"), "s");
+    h << line("ended at", jsonNumberText(jsonMember(lim, "end_time"), "%.4g"), "s");
+    h << line("rotor speed of the bypass, where the current at U_n falls to I_lim", jsonNumberText(jsonMember(lim, "bypass_speed")),
          "rad/s");
-    line("maximum start time (the starter trips after it; n/a: never)", jsonNumberText(jsonMember(lim, "max_start_time")), "s");
-    line("the limit held the voltage below the ramp from", jsonNumberText(jsonMember(lim, "binding_from"), "%.4g"), "s");
-    line("smallest voltage U/U_n while limited", jsonNumberText(jsonMember(lim, "voltage_min"), "%.3g"), "–");
-    line("stator current peak while limited", jsonNumberText(jsonMember(lim, "current_peak")), "A");
-    line("that peak over I_lim", jsonNumberText(jsonMember(lim, "peak_over_limit"), "%.3g"), "–");
-    line("voltage the limit allows at standstill, U/U_n", jsonNumberText(jsonMember(lim, "standstill_voltage"), "%.3g"), "–");
-    line("torque at standstill under it × u·η", jsonNumberText(jsonMember(lim, "standstill_torque_crank")), "N·m");
-    line("limit that breaks the motor away at the start angle", jsonNumberText(jsonMember(lim, "breakaway_limit")), "A");
+    h << line("maximum start time (the starter trips after it; n/a: never)", jsonNumberText(jsonMember(lim, "max_start_time")), "s");
+    h << line("the limit held the voltage below the ramp from", jsonNumberText(jsonMember(lim, "binding_from"), "%.4g"), "s");
+    h << line("smallest voltage U/U_n while limited", jsonNumberText(jsonMember(lim, "voltage_min"), "%.3g"), "–");
+    h << line("stator current peak while limited", jsonNumberText(jsonMember(lim, "current_peak")), "A");
+    h << line("that peak over I_lim", jsonNumberText(jsonMember(lim, "peak_over_limit"), "%.3g"), "–");
+    h << line("voltage the limit allows at standstill, U/U_n", jsonNumberText(jsonMember(lim, "standstill_voltage"), "%.3g"), "–");
+    h << line("torque at standstill under it × u·η", jsonNumberText(jsonMember(lim, "standstill_torque_crank")), "N·m");
+    h << line("limit that breaks the motor away at the start angle", jsonNumberText(jsonMember(lim, "breakaway_limit")), "A");
     h << "</table>\n";
   }
+  return h.str();
+}
 
-  const json& stop = jsonMember(s, "stop");
+// After the switch-off: stopping time and run-out.
+std::string stoppingTable(const json& stop) {
+  std::ostringstream h;
   if (stop.is_object()) {
     h << "<table>\n<tr><th>after the switch-off at t = " << jsonNumberText(jsonMember(stop, "t_off")) << " s</th><th>value</th><th>unit</th></tr>\n";
-    line("stopping time (crank below 1 % of the synchronous crank speed)", jsonNumberText(jsonMember(stop, "stopping_time"), "%.3g"), "s");
-    line("crank run-out", jsonNumberText(jsonMember(stop, "run_out_revolutions"), "%.3g"), "revolutions");
-    line("carts' run-out (largest path of a cart)", jsonNumberText(jsonMember(stop, "run_out_cart_path"), "%.3g"), "m");
+    h << line("stopping time (crank below 1 % of the synchronous crank speed)", jsonNumberText(jsonMember(stop, "stopping_time"), "%.3g"), "s");
+    h << line("crank run-out", jsonNumberText(jsonMember(stop, "run_out_revolutions"), "%.3g"), "revolutions");
+    h << line("carts' run-out (largest path of a cart)", jsonNumberText(jsonMember(stop, "run_out_cart_path"), "%.3g"), "m");
     h << "</table>\n";
   }
+  return h.str();
+}
+
+}  // namespace
+
+std::string startUpSectionHtml(const json& summary) {
+  std::ostringstream h;
+  h << "<h2>Start-up and stopping</h2>\n";
+  const json& s = jsonMember(summary, "start_up");
+  if (!s.is_object()) {
+    h << "<p>No start-up answers: the run switches no motor on.</p>\n";
+    return h.str();
+  }
+  const bool starts = jsonMember(s, "starts").is_boolean() && jsonMember(s, "starts").get<bool>();
+  h << "<p class=\"small\">Starting method: " << htmlEscape(jsonMember(s, "method").get<std::string>()) << " at t = "
+    << jsonNumberText(jsonMember(s, "t_on")) << " s; motor law: " << htmlEscape(jsonMember(s, "motor_law").get<std::string>())
+    << ". Torques at the crank axis (M at the rotor × u·η: u reducer ratio, η its efficiency); "
+    << (starts ? "the start runs from the switch-on until the crank speed settles (the first revolution from which "
+                 "every later one has the same mean speed within 1e-3)."
+               : "the drive did not run up, so the peaks are over the whole run and are compared with its last part.")
+    << "</p>\n";
+  const bool still_starting = jsonMember(s, "still_starting").is_boolean() && jsonMember(s, "still_starting").get<bool>();
+  h << "<div class=\"status " << (starts ? "ok" : still_starting ? "warn" : "bad") << "\">" << htmlEscape(jsonMember(s, "verdict").get<std::string>())
+    << "</div>\n";
+  for (const json& n : jsonMember(s, "notes"))
+    h << "<div class=\"status warn\">" << htmlEscape(n.get<std::string>()) << "</div>\n";
+
+  h << canItStartTable(s);
+  h << startPeaksTable(s, starts, still_starting);
+  h << currentLimitTable(jsonMember(s, "current_limit"));
+  h << stoppingTable(jsonMember(s, "stop"));
   if (startUpHasOwnFigures(s))
     h << "<p class=\"small\">Figures below: <code>start_up_speed</code>, <code>start_up_torque</code>"
-      << (I.is_object() ? ", <code>start_up_current</code>" : "") << " (against time).</p>\n";
+      << (jsonMember(s, "stator_current").is_object() ? ", <code>start_up_current</code>" : "") << " (against time).</p>\n";
   else
     h << "<p class=\"small\">Figures below: <code>crank_speed_vs_time</code>, <code>motor_torque_vs_time</code>, "
          "<code>coupling_torque_vs_time</code> (against time, the steady window marked).</p>\n";

@@ -298,6 +298,24 @@ void holdoutCheck(IdentifyResult& res, ModelRuns& runs, const MeasuredData& d, c
   }
 }
 
+// The runs' accuracy and output step (the data's own spacing at most), and the fitted span: the
+// data before the held-out end. Returns the number of fitted samples per signal.
+std::size_t runGridAndFittedSpan(const IdentifyOptions& o, const MeasuredData& d, const Scene& base, std::size_t p,
+                                 IdentifyResult& res) {
+  res.accuracy = o.accuracy > 0 ? o.accuracy : std::min(base.simulation.accuracy, kDefaultAccuracy);
+  std::vector<double> spacing;
+  for (std::size_t i = 1; i < d.t.size(); ++i) spacing.push_back(d.t[i] - d.t[i - 1]);
+  res.output_step = std::min(base.simulation.output_step, median(spacing));
+  res.t_end = d.t.back();
+  res.t_fit_end = d.t.front() + (1.0 - o.holdout) * (d.t.back() - d.t.front());
+  std::size_t n_fit = 0;
+  while (n_fit < d.t.size() && d.t[n_fit] <= res.t_fit_end * (1 + 1e-12)) ++n_fit;
+  if (n_fit * d.signals.size() <= p + 1)
+    throw std::invalid_argument("identify: the fitted part of the data (" + std::to_string(n_fit) +
+                                " samples) is too short for " + std::to_string(p) + " keys; lower --holdout");
+  return n_fit;
+}
+
 }  // namespace
 
 IdentifyResult runIdentify(const IdentifyOptions& o) {
@@ -313,17 +331,7 @@ IdentifyResult runIdentify(const IdentifyOptions& o) {
   res.scene = o.scene_path.empty() ? base.name : o.scene_path;
   res.model = o.model;
   res.data_file = d.file;
-  res.accuracy = o.accuracy > 0 ? o.accuracy : std::min(base.simulation.accuracy, kDefaultAccuracy);
-  std::vector<double> spacing;
-  for (std::size_t i = 1; i < d.t.size(); ++i) spacing.push_back(d.t[i] - d.t[i - 1]);
-  res.output_step = std::min(base.simulation.output_step, median(spacing));
-  res.t_end = d.t.back();
-  res.t_fit_end = d.t.front() + (1.0 - o.holdout) * (d.t.back() - d.t.front());
-  std::size_t n_fit = 0;
-  while (n_fit < d.t.size() && d.t[n_fit] <= res.t_fit_end * (1 + 1e-12)) ++n_fit;
-  if (n_fit * d.signals.size() <= p + 1)
-    throw std::invalid_argument("identify: the fitted part of the data (" + std::to_string(n_fit) +
-                                " samples) is too short for " + std::to_string(p) + " keys; lower --holdout");
+  const std::size_t n_fit = runGridAndFittedSpan(o, d, base, p, res);
 
   ModelRuns runs(o, d, input, keys, res.accuracy, res.output_step);
   std::vector<bool> given;

@@ -67,6 +67,79 @@ Eigen::VectorXd asVector(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
 }
 
+// How an iteration's damped steps ended: one lowered the cost, none did, or the fit ends here
+// (converged or interrupted: out.reason says which).
+enum class DampedStep { Lowered, NoneLowered, Finished };
+
+// Up to eight steps of the damped normal equations (A + λ·diag D)·δ = −g, λ raised after each that
+// does not lower the cost and lowered after the one that does, which is taken into out.
+DampedStep dampedStep(const ResidualBatch& evaluate, const LmSettings& s, const Eigen::MatrixXd& A,
+                      const Eigen::VectorXd& g, const Eigen::VectorXd& D, double sigma2, int it, double& lambda,
+                      LmOutcome& out) {
+  const std::size_t p = out.u.size();
+  bool accepted = false;
+  double smallest_step = kInf;
+  for (int tries = 0; tries < 8 && !accepted; ++tries) {
+    if (interrupted(s)) {
+      out.reason = "interrupted";
+      return DampedStep::Finished;
+    }
+    Eigen::MatrixXd M = A;
+    M.diagonal() += lambda * D;
+    const Eigen::VectorXd delta = M.ldlt().solve(-g);
+    std::vector<double> trial(p);
+    double step = 0;
+    for (std::size_t k = 0; k < p; ++k) {
+      trial[k] = std::clamp(out.u[k] + delta(static_cast<Eigen::Index>(k)), 0.0, 1.0);
+      step = std::max(step, std::abs(trial[k] - out.u[k]));
+    }
+    smallest_step = std::min(smallest_step, step);
+    if (!(step > s.step_tolerance)) {
+      out.converged = true;
+      out.reason = "converged: the step moved no key by more than " + text(s.step_tolerance) +
+                   " of its bounds (iteration " + std::to_string(it) + ")";
+      return DampedStep::Finished;
+    }
+    const ResidualEvaluation e = evaluate({trial})[0];
+    const double cost = e.ok ? sumOfSquares(e.r) : kInf;
+    if (e.ok && cost < out.cost) {
+      const double fall = out.cost - cost;
+      out.u = trial;
+      out.r = e.r;
+      out.cost = cost;
+      accepted = true;
+      lambda = std::max(lambda / 3.0, 1e-9);
+      if (s.on_iteration) s.on_iteration(it, cost, out.u);
+      if (fall < s.cost_tolerance * sigma2) {
+        out.converged = true;
+        out.reason = "converged: the cost fell by less than " + text(s.cost_tolerance) +
+                     "·σ̂² (iteration " + std::to_string(it) + ")";
+        return DampedStep::Finished;
+      }
+    } else {
+      lambda *= e.ok ? 4.0 : 10.0;
+    }
+  }
+  return accepted ? DampedStep::Lowered : DampedStep::NoneLowered;
+}
+
+// No step lowered the cost: converged or not by how far the undamped step would move the estimate.
+void flatCostVerdict(double predicted, double sigma2, int it, LmOutcome& out) {
+  // The cost is flat within the integration's own noise (or the runs beside the point fail).
+  // The undamped step, measured in standard uncertainties of the estimate (√(gᵀA⁻¹g/σ̂²)),
+  // says whether that matters: below 0.3 the estimate is settled well within what it is known to
+  // (data with noise near the integration's own, e.g. a noise-free record of a model run, end here).
+  const double shift = std::sqrt(std::max(predicted, 0.0) / sigma2);
+  std::ostringstream why;
+  why << "no step lowered the cost in 8 tries (the cost is flat within the integration's noise); the "
+         "Gauss-Newton step would move the estimate by "
+      << text(shift) << " of its standard uncertainty";
+  out.converged = shift < 0.3;
+  out.reason = (out.converged ? "converged within the integration's noise: " : "") + why.str() +
+               (out.converged ? "" : "; tighten --accuracy or check the runs near the estimate") + " (iteration " +
+               std::to_string(it) + ")";
+}
+
 }  // namespace
 
 LmOutcome levenbergMarquardt(const ResidualBatch& evaluate, const std::vector<double>& u0, const LmSettings& s) {
@@ -114,63 +187,10 @@ LmOutcome levenbergMarquardt(const ResidualBatch& evaluate, const std::vector<do
                    "·σ̂² (iteration " + std::to_string(it) + ")";
       return out;
     }
-    bool accepted = false;
-    double smallest_step = kInf;
-    for (int tries = 0; tries < 8 && !accepted; ++tries) {
-      if (interrupted(s)) {
-        out.reason = "interrupted";
-        return out;
-      }
-      Eigen::MatrixXd M = A;
-      M.diagonal() += lambda * D;
-      const Eigen::VectorXd delta = M.ldlt().solve(-g);
-      std::vector<double> trial(p);
-      double step = 0;
-      for (std::size_t k = 0; k < p; ++k) {
-        trial[k] = std::clamp(out.u[k] + delta(static_cast<Eigen::Index>(k)), 0.0, 1.0);
-        step = std::max(step, std::abs(trial[k] - out.u[k]));
-      }
-      smallest_step = std::min(smallest_step, step);
-      if (!(step > s.step_tolerance)) {
-        out.converged = true;
-        out.reason = "converged: the step moved no key by more than " + text(s.step_tolerance) +
-                     " of its bounds (iteration " + std::to_string(it) + ")";
-        return out;
-      }
-      const ResidualEvaluation e = evaluate({trial})[0];
-      const double cost = e.ok ? sumOfSquares(e.r) : kInf;
-      if (e.ok && cost < out.cost) {
-        const double fall = out.cost - cost;
-        out.u = trial;
-        out.r = e.r;
-        out.cost = cost;
-        accepted = true;
-        lambda = std::max(lambda / 3.0, 1e-9);
-        if (s.on_iteration) s.on_iteration(it, cost, out.u);
-        if (fall < s.cost_tolerance * sigma2) {
-          out.converged = true;
-          out.reason = "converged: the cost fell by less than " + text(s.cost_tolerance) +
-                       "·σ̂² (iteration " + std::to_string(it) + ")";
-          return out;
-        }
-      } else {
-        lambda *= e.ok ? 4.0 : 10.0;
-      }
-    }
-    if (!accepted) {
-      // The cost is flat within the integration's own noise (or the runs beside the point fail).
-      // The undamped step, measured in standard uncertainties of the estimate (√(gᵀA⁻¹g/σ̂²)),
-      // says whether that matters: below 0.3 the estimate is settled well within what it is known to
-      // (data with noise near the integration's own, e.g. a noise-free record of a model run, end here).
-      const double shift = std::sqrt(std::max(predicted, 0.0) / sigma2);
-      std::ostringstream why;
-      why << "no step lowered the cost in 8 tries (the cost is flat within the integration's noise); the "
-             "Gauss-Newton step would move the estimate by "
-          << text(shift) << " of its standard uncertainty";
-      out.converged = shift < 0.3;
-      out.reason = (out.converged ? "converged within the integration's noise: " : "") + why.str() +
-                   (out.converged ? "" : "; tighten --accuracy or check the runs near the estimate") + " (iteration " +
-                   std::to_string(it) + ")";
+    const DampedStep step = dampedStep(evaluate, s, A, g, D, sigma2, it, lambda, out);
+    if (step == DampedStep::Finished) return out;
+    if (step == DampedStep::NoneLowered) {
+      flatCostVerdict(predicted, sigma2, it, out);
       return out;
     }
   }

@@ -79,6 +79,95 @@ std::string machineText(const InductionMachineParameters& m, WindingConnection c
   return text;
 }
 
+// The machine: the scene's circuit, else fitted to the catalogue; none: Kloss only. `points`: the
+// model at every catalogue point, when the scene has a catalogue.
+std::unique_ptr<InductionMachineParameters> sceneMachine(const Scene& scene, std::vector<CatalogueComparison>& points,
+                                                         std::string& text, nlohmann::json& j) {
+  const InductionMotor& im = scene.induction;
+  std::unique_ptr<InductionMachineParameters> machine;
+  if (im.circuit.given()) {
+    machine = std::make_unique<InductionMachineParameters>(InductionMachineParameters::fromScene(im));
+    appendf(text, "equivalent circuit from motor.circuit (%s cage):\n", machine->cages == 2 ? "double" : "single");
+    j["machine_source"] = "motor.circuit";
+    if (im.catalogue.given()) points = compareWithCatalogue(*machine, im.catalogue);
+  } else if (im.catalogue.given()) {
+    const CatalogueFit fit = fitSceneCatalogue(scene, im.catalogue.cages);
+    machine = std::make_unique<InductionMachineParameters>(fit.machine);
+    points = fit.points;
+    appendf(text, "equivalent circuit fitted to motor.catalogue (%s cage; weighted least squares, Pedra (2008); "
+                "%d optimizer starts, %d evaluations):\n",
+                fit.machine.cages == 2 ? "double" : "single", fit.starts, fit.evaluations);
+    text += "  " + fit.origin.describe() + "\n";
+    j["machine_source"] = "motor.catalogue (fitted)";
+    j["fit"] = {{"starts", fit.starts}, {"evaluations", fit.evaluations}, {"max_relative_error", fit.max_relative_error},
+                {"origin", fit.origin.describe()}};
+  } else {
+    appendf(text, "no equivalent circuit: the scene gives neither motor.circuit nor motor.catalogue (Kloss curves only)\n");
+  }
+  return machine;
+}
+
+// Catalogue points: model beside catalogue, with Kloss's torque where it has one. Returns the
+// catalogue CSV's text (empty: no catalogue points).
+std::string cataloguePoints(const Scene& scene, const KlossLaw& kloss, const std::vector<CatalogueComparison>& points,
+                            std::string& text, nlohmann::json& j) {
+  const InductionMotor& im = scene.induction;
+  if (points.empty()) return "";
+  std::string cat_csv = "quantity,symbol,unit,catalogue,model,relative_error[-],kloss\n";
+  const MotorCatalogue& c = im.catalogue;
+  const double s_n = 1.0 - c.omega_nominal / scene.motor.omega_sync;
+  auto klossAt = [&](const CatalogueComparison& p) -> double {
+    if (p.symbol == "M_n") return kloss.steadyTorque({}, c.omega_nominal);
+    if (p.symbol == "M_s") return kloss.steadyTorque({}, 0.0);
+    if (p.symbol == "M_k") return scene.motor.breakdown_torque;
+    return NAN;
+  };
+  appendf(text, "\nthe model at every catalogue point (rated slip s_n = %.4g):\n", s_n);
+  appendf(text, "  %-20s %-8s %12s %12s %10s %12s\n", "quantity", "symbol", "catalogue", "model", "error", "Kloss");
+  nlohmann::json pj = nlohmann::json::array();
+  for (size_t i = 0; i < points.size(); ++i) {
+    const CatalogueComparison& p = points[i];
+    const double k = klossAt(p);
+    appendf(text, "  %-20s %-8s %12.5g %12.5g %+9.2f%% %12s\n", p.quantity.c_str(), p.symbol.c_str(), p.catalogue, p.model,
+                100 * p.relativeError(), std::isfinite(k) ? fmt("%.5g", k).c_str() : "–");
+    cat_csv += p.quantity + "," + p.symbol + "," + p.unit + "," + fmt("%.10g", p.catalogue) + "," +
+               fmt("%.10g", p.model) + "," + fmt("%.6g", p.relativeError()) + "," +
+               (std::isfinite(k) ? fmt("%.10g", k) : std::string("")) + "\n";
+    pj.push_back({{"quantity", p.quantity}, {"symbol", p.symbol}, {"unit", p.unit}, {"catalogue", p.catalogue},
+                  {"model", p.model}, {"relative_error", p.relativeError()},
+                  {"kloss", std::isfinite(k) ? nlohmann::json(k) : nlohmann::json(nullptr)}});
+  }
+  appendf(text, "  (points 1-7: M_n, I_n, cos φ_n, η_n at s_n; M_s, I_s at standstill; M_k the largest torque; "
+              "torques [N·m], currents RMS line [A]; the circuit has copper losses only, see docs/motor.md)\n");
+  j["catalogue_points"] = pj;
+  return cat_csv;
+}
+
+// Steady curves over 0 ≤ s ≤ 1 (each law at its own synchronous speed); without a machine only Kloss's.
+Table steadyCurves(const Scene& scene, const KlossLaw& kloss, const InductionMachineParameters* machine,
+                   const CircuitLaw* circuit, const ParkLaw* park) {
+  Table curves;
+  // ASCII units in the header, as every CSV of rollerdyn (io/Table.h).
+  curves.columns = {"slip[-]", "omega_rotor_kloss[rad/s]", "omega_rotor_circuit[rad/s]", "M_kloss[N*m]",
+                    "M_circuit[N*m]", "M_park[N*m]", "I_circuit[A]", "I_park[A]"};
+  const int n = 500;
+  for (int i = 0; i <= n; ++i) {
+    const double s = double(i) / n;
+    const double wk = scene.motor.omega_sync * (1 - s);
+    std::vector<double> row = {s, wk, NAN, kloss.steadyTorque({}, wk), NAN, NAN, NAN, NAN};
+    if (machine) {
+      const double w = machine->synchronousSpeed() * (1 - s);
+      row[2] = w;
+      row[4] = circuit->steadyTorque({}, w);
+      row[5] = park->steadyTorque({}, w);
+      row[6] = circuit->steadyCurrent({}, w);
+      row[7] = park->steadyCurrent({}, w);
+    }
+    curves.rows.push_back(row);
+  }
+  return curves;
+}
+
 }  // namespace
 
 MotorStudy studyMotor(const Scene& scene, const std::string& scene_label, const std::vector<std::string>& overrides) {
@@ -101,28 +190,8 @@ MotorStudy studyMotor(const Scene& scene, const std::string& scene_label, const 
                                  {"critical_slip", scene.motor.critical_slip},
                                  {"dynamic_time_constant[s]", dynamic->fastestTimeConstant()}}}};
 
-  // The machine: the scene's circuit, else fitted to the catalogue; none: Kloss only.
-  std::unique_ptr<InductionMachineParameters> machine;
   std::vector<CatalogueComparison> points;
-  if (im.circuit.given()) {
-    machine = std::make_unique<InductionMachineParameters>(InductionMachineParameters::fromScene(im));
-    appendf(text, "equivalent circuit from motor.circuit (%s cage):\n", machine->cages == 2 ? "double" : "single");
-    j["machine_source"] = "motor.circuit";
-    if (im.catalogue.given()) points = compareWithCatalogue(*machine, im.catalogue);
-  } else if (im.catalogue.given()) {
-    const CatalogueFit fit = fitSceneCatalogue(scene, im.catalogue.cages);
-    machine = std::make_unique<InductionMachineParameters>(fit.machine);
-    points = fit.points;
-    appendf(text, "equivalent circuit fitted to motor.catalogue (%s cage; weighted least squares, Pedra (2008); "
-                "%d optimizer starts, %d evaluations):\n",
-                fit.machine.cages == 2 ? "double" : "single", fit.starts, fit.evaluations);
-    text += "  " + fit.origin.describe() + "\n";
-    j["machine_source"] = "motor.catalogue (fitted)";
-    j["fit"] = {{"starts", fit.starts}, {"evaluations", fit.evaluations}, {"max_relative_error", fit.max_relative_error},
-                {"origin", fit.origin.describe()}};
-  } else {
-    appendf(text, "no equivalent circuit: the scene gives neither motor.circuit nor motor.catalogue (Kloss curves only)\n");
-  }
+  std::unique_ptr<InductionMachineParameters> machine = sceneMachine(scene, points, text, j);
   std::unique_ptr<CircuitLaw> circuit;
   std::unique_ptr<ParkLaw> park;
   double s_k = NAN, m_k = NAN;
@@ -139,58 +208,10 @@ MotorStudy studyMotor(const Scene& scene, const std::string& scene_label, const 
     j["machine"]["fastest_time_constant[s]"] = park->fastestTimeConstant();
   }
 
-  // Catalogue points: model beside catalogue, with Kloss's torque where it has one.
-  std::string cat_csv = "quantity,symbol,unit,catalogue,model,relative_error[-],kloss\n";
-  if (!points.empty()) {
-    const MotorCatalogue& c = im.catalogue;
-    const double s_n = 1.0 - c.omega_nominal / scene.motor.omega_sync;
-    auto klossAt = [&](const CatalogueComparison& p) -> double {
-      if (p.symbol == "M_n") return kloss.steadyTorque({}, c.omega_nominal);
-      if (p.symbol == "M_s") return kloss.steadyTorque({}, 0.0);
-      if (p.symbol == "M_k") return scene.motor.breakdown_torque;
-      return NAN;
-    };
-    appendf(text, "\nthe model at every catalogue point (rated slip s_n = %.4g):\n", s_n);
-    appendf(text, "  %-20s %-8s %12s %12s %10s %12s\n", "quantity", "symbol", "catalogue", "model", "error", "Kloss");
-    nlohmann::json pj = nlohmann::json::array();
-    for (size_t i = 0; i < points.size(); ++i) {
-      const CatalogueComparison& p = points[i];
-      const double k = klossAt(p);
-      appendf(text, "  %-20s %-8s %12.5g %12.5g %+9.2f%% %12s\n", p.quantity.c_str(), p.symbol.c_str(), p.catalogue, p.model,
-                  100 * p.relativeError(), std::isfinite(k) ? fmt("%.5g", k).c_str() : "–");
-      cat_csv += p.quantity + "," + p.symbol + "," + p.unit + "," + fmt("%.10g", p.catalogue) + "," +
-                 fmt("%.10g", p.model) + "," + fmt("%.6g", p.relativeError()) + "," +
-                 (std::isfinite(k) ? fmt("%.10g", k) : std::string("")) + "\n";
-      pj.push_back({{"quantity", p.quantity}, {"symbol", p.symbol}, {"unit", p.unit}, {"catalogue", p.catalogue},
-                    {"model", p.model}, {"relative_error", p.relativeError()},
-                    {"kloss", std::isfinite(k) ? nlohmann::json(k) : nlohmann::json(nullptr)}});
-    }
-    appendf(text, "  (points 1-7: M_n, I_n, cos φ_n, η_n at s_n; M_s, I_s at standstill; M_k the largest torque; "
-                "torques [N·m], currents RMS line [A]; the circuit has copper losses only, see docs/motor.md)\n");
-    j["catalogue_points"] = pj;
-    study.catalogue_csv = cat_csv;
-  }
+  const std::string cat_csv = cataloguePoints(scene, kloss, points, text, j);
+  if (!cat_csv.empty()) study.catalogue_csv = cat_csv;
 
-  // Steady curves over 0 ≤ s ≤ 1 (each law at its own synchronous speed).
-  Table& curves = study.curves;
-  // ASCII units in the header, as every CSV of rollerdyn (io/Table.h).
-  curves.columns = {"slip[-]", "omega_rotor_kloss[rad/s]", "omega_rotor_circuit[rad/s]", "M_kloss[N*m]",
-                    "M_circuit[N*m]", "M_park[N*m]", "I_circuit[A]", "I_park[A]"};
-  const int n = 500;
-  for (int i = 0; i <= n; ++i) {
-    const double s = double(i) / n;
-    const double wk = scene.motor.omega_sync * (1 - s);
-    std::vector<double> row = {s, wk, NAN, kloss.steadyTorque({}, wk), NAN, NAN, NAN, NAN};
-    if (machine) {
-      const double w = machine->synchronousSpeed() * (1 - s);
-      row[2] = w;
-      row[4] = circuit->steadyTorque({}, w);
-      row[5] = park->steadyTorque({}, w);
-      row[6] = circuit->steadyCurrent({}, w);
-      row[7] = park->steadyCurrent({}, w);
-    }
-    curves.rows.push_back(row);
-  }
+  study.curves = steadyCurves(scene, kloss, machine.get(), circuit.get(), park.get());
   study.has_machine = machine != nullptr;
   study.json = std::move(j);
   return study;

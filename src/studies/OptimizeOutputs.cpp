@@ -108,10 +108,11 @@ std::vector<StudyColumn> optimizeHistoryTable(const OptimizeOptions& o, const Op
   return t;
 }
 
-std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const OptimizeResult& r,
-                                              const std::string& out_dir, std::string* plot_note_out) {
-  std::vector<std::string> files;
-  // --- history.csv: one row per distinct evaluation, in the order they were made ---
+namespace {
+
+// history.csv: one row per distinct evaluation, in the order they were made. Also hands back the
+// best-so-far column, the convergence figure's line.
+std::string historyCsv(const OptimizeOptions& o, const OptimizeResult& r, std::vector<double>& best_curve) {
   const std::vector<StudyColumn> table = optimizeHistoryTable(o, r);
   std::ostringstream csv;
   csv << "evaluation";
@@ -121,7 +122,6 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
   csv << ",usable_run,constraints_hold,best_so_far";
   for (const std::string& m : sweepNumericMetrics()) csv << ',' << m;
   csv << ",status,reason,cpu_seconds\n";
-  std::vector<double> best_curve;
   for (std::size_t i = 0; i < r.history.size(); ++i)
     for (std::size_t c = 0; c < table.size(); ++c) {
       const StudyColumn& col = table[c];
@@ -134,85 +134,112 @@ std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const Op
         csv << csvNumber(col.numbers[i]);
       csv << (c + 1 < table.size() ? "," : "\n");
     }
-  writeFileAtomic(out_dir + "/history.csv", csv.str());
-  files.push_back(out_dir + "/history.csv");
+  return csv.str();
+}
 
-  // --- figures ---
+// Convergence: the objective of every usable evaluation, in order, and the best feasible value so far.
+void convergenceFigure(const OptimizeOptions& o, const OptimizeResult& r, const std::vector<double>& best_curve,
+                       const std::string& out_dir) {
+  PlotSpec spec;
+  spec.title = escapeUnderscores("convergence: " + o.minimize + " (" + r.method + ", " + o.model + " model)");
+  spec.xlabel = "evaluation";
+  spec.ylabel = escapeUnderscores(sweepParamLabel(o.minimize));
+  spec.preamble = "set key below";
+  PlotSeries all, bad, line;
+  all.title = "usable design, constraints hold";
+  all.style = "points";
+  bad.title = "constraint violated (usable run)";
+  bad.style = "points";
+  line.title = "best so far";
+  line.style = "lines";
+  line.line_width = 2;
+  for (std::size_t i = 0; i < r.history.size(); ++i) {
+    const OptimizeEvaluation& e = r.history[i];
+    PlotSeries& s = e.feasible() ? all : bad;
+    if (e.run_ok) {
+      s.x.push_back(double(i + 1));
+      s.y.push_back(e.objective);
+    }
+    line.x.push_back(double(i + 1));
+    line.y.push_back(best_curve[i]);
+  }
+  spec.series = {all, bad, line};
+  renderPlot(spec, out_dir + "/convergence");
+}
+
+// The evaluated designs and the optimum: objective against the parameter (one), or the designs in
+// the plane of the two parameters. `self`: the one parameter is the minimised quantity, so the first
+// constraint's metric stands on the vertical axis instead.
+void designsFigure(const OptimizeOptions& o, const OptimizeResult& r, bool self, const std::string& out_dir) {
+  PlotSpec d;
+  d.title = escapeUnderscores("evaluated designs and the optimum (" + r.method + ")");
+  d.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
+  const std::string y_name = o.params.size() == 2 ? o.params[1].key : self ? o.constraints[0].metric : o.minimize;
+  auto yOf = [&](const OptimizeEvaluation& e) {
+    return o.params.size() == 2 ? e.x[1] : self ? e.constraint_metrics[0] : e.objective;
+  };
+  d.ylabel = escapeUnderscores(sweepParamLabel(y_name));
+  d.preamble = "set key below";
+  PlotSeries ok, viol, opt;
+  ok.title = "constraints hold";
+  ok.style = "points";
+  viol.title = "infeasible (constraint violated or run not usable)";
+  viol.style = "points";
+  opt.title = "optimum";
+  opt.style = "points";
+  opt.line_width = 3;
+  for (const OptimizeEvaluation& e : r.history) {
+    if (o.params.size() == 1 && !e.run_ok) continue;
+    PlotSeries& s = e.feasible() ? ok : viol;
+    s.x.push_back(e.x[0]);
+    s.y.push_back(yOf(e));
+  }
+  const OptimizeEvaluation& b = r.history[r.best];
+  opt.x.push_back(b.x[0]);
+  opt.y.push_back(yOf(b));
+  d.series = {ok, viol, opt};
+  renderPlot(d, out_dir + "/designs");
+}
+
+// The figures that apply (png paths), and in plot_note why one is missing or plotting failed.
+std::vector<std::string> optimizeFigures(const OptimizeOptions& o, const OptimizeResult& r,
+                                         const std::vector<double>& best_curve, const std::string& out_dir,
+                                         std::string& plot_note) {
   std::vector<std::string> plots;
-  std::string plot_note;
   if (!gnuplotAvailable()) {
     plot_note = "no figures: gnuplot not found on PATH";
-  } else {
-    try {
-      PlotSpec spec;
-      spec.title = escapeUnderscores("convergence: " + o.minimize + " (" + r.method + ", " + o.model + " model)");
-      spec.xlabel = "evaluation";
-      spec.ylabel = escapeUnderscores(sweepParamLabel(o.minimize));
-      spec.preamble = "set key below";
-      PlotSeries all, bad, line;
-      all.title = "usable design, constraints hold";
-      all.style = "points";
-      bad.title = "constraint violated (usable run)";
-      bad.style = "points";
-      line.title = "best so far";
-      line.style = "lines";
-      line.line_width = 2;
-      for (std::size_t i = 0; i < r.history.size(); ++i) {
-        const OptimizeEvaluation& e = r.history[i];
-        PlotSeries& s = e.feasible() ? all : bad;
-        if (e.run_ok) {
-          s.x.push_back(double(i + 1));
-          s.y.push_back(e.objective);
-        }
-        line.x.push_back(double(i + 1));
-        line.y.push_back(best_curve[i]);
-      }
-      spec.series = {all, bad, line};
-      renderPlot(spec, out_dir + "/convergence");
-      plots.push_back(out_dir + "/convergence.png");
-      // One parameter that is itself the minimised quantity: plot the first constraint's metric
-      // against it instead (the objective against itself is a diagonal line and says nothing).
-      const bool self = o.params.size() == 1 && o.params[0].key == o.minimize;
-      if (self && o.constraints.empty())
-        plot_note = "no designs figure: the minimised quantity is the only parameter and there is no constraint "
-                    "to plot against it";
-      if (o.params.size() <= 2 && r.found && !(self && o.constraints.empty())) {
-        // The evaluated designs and the optimum: objective against the parameter (one), or the
-        // designs in the plane of the two parameters.
-        PlotSpec d;
-        d.title = escapeUnderscores("evaluated designs and the optimum (" + r.method + ")");
-        d.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
-        const std::string y_name = o.params.size() == 2 ? o.params[1].key : self ? o.constraints[0].metric : o.minimize;
-        auto yOf = [&](const OptimizeEvaluation& e) {
-          return o.params.size() == 2 ? e.x[1] : self ? e.constraint_metrics[0] : e.objective;
-        };
-        d.ylabel = escapeUnderscores(sweepParamLabel(y_name));
-        d.preamble = "set key below";
-        PlotSeries ok, viol, opt;
-        ok.title = "constraints hold";
-        ok.style = "points";
-        viol.title = "infeasible (constraint violated or run not usable)";
-        viol.style = "points";
-        opt.title = "optimum";
-        opt.style = "points";
-        opt.line_width = 3;
-        for (const OptimizeEvaluation& e : r.history) {
-          if (o.params.size() == 1 && !e.run_ok) continue;
-          PlotSeries& s = e.feasible() ? ok : viol;
-          s.x.push_back(e.x[0]);
-          s.y.push_back(yOf(e));
-        }
-        const OptimizeEvaluation& b = r.history[r.best];
-        opt.x.push_back(b.x[0]);
-        opt.y.push_back(yOf(b));
-        d.series = {ok, viol, opt};
-        renderPlot(d, out_dir + "/designs");
-        plots.push_back(out_dir + "/designs.png");
-      }
-    } catch (const std::exception& e) {
-      plot_note = std::string("plotting failed: ") + e.what();
-    }
+    return plots;
   }
+  try {
+    convergenceFigure(o, r, best_curve, out_dir);
+    plots.push_back(out_dir + "/convergence.png");
+    // One parameter that is itself the minimised quantity: plot the first constraint's metric
+    // against it instead (the objective against itself is a diagonal line and says nothing).
+    const bool self = o.params.size() == 1 && o.params[0].key == o.minimize;
+    if (self && o.constraints.empty())
+      plot_note = "no designs figure: the minimised quantity is the only parameter and there is no constraint "
+                  "to plot against it";
+    if (o.params.size() <= 2 && r.found && !(self && o.constraints.empty())) {
+      designsFigure(o, r, self, out_dir);
+      plots.push_back(out_dir + "/designs.png");
+    }
+  } catch (const std::exception& e) {
+    plot_note = std::string("plotting failed: ") + e.what();
+  }
+  return plots;
+}
+
+}  // namespace
+
+std::vector<std::string> writeOptimizeOutputs(const OptimizeOptions& o, const OptimizeResult& r,
+                                              const std::string& out_dir, std::string* plot_note_out) {
+  std::vector<std::string> files;
+  std::vector<double> best_curve;
+  writeFileAtomic(out_dir + "/history.csv", historyCsv(o, r, best_curve));
+  files.push_back(out_dir + "/history.csv");
+
+  std::string plot_note;
+  const std::vector<std::string> plots = optimizeFigures(o, r, best_curve, out_dir, plot_note);
   for (const std::string& p : plots) files.push_back(p);
 
   // --- optimize.json ---

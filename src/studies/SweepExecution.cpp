@@ -14,6 +14,68 @@
 
 namespace rollerdyn {
 
+namespace {
+
+// What rank 0 starts a sweep with: the progress file (none without one), an error opening it
+// (raised once the workers were told to stop), the points left to compute and how many were resumed.
+struct SweepStart {
+  std::unique_ptr<SweepProgressFile> progress;
+  std::exception_ptr setup_error;
+  std::vector<std::size_t> todo;
+  std::size_t resumed = 0;
+};
+
+// Opens the progress file, takes the points it saved into `points` and lists the others.
+SweepStart resumeSweep(const SweepOptions& o, const SweepDesigns& d, std::vector<SweepPoint>& points) {
+  SweepStart start;
+  const std::size_t n = d.texts.size();
+  try {
+    if (!o.progress_path.empty())
+      start.progress = std::make_unique<SweepProgressFile>(o.progress_path, sweepFingerprint(o, d.texts), n, o.resume);
+  } catch (...) {
+    start.setup_error = std::current_exception();  // raised after the workers were told to stop
+  }
+  std::vector<bool> have(n, false);
+  if (start.progress)
+    for (const auto& [i, p] : start.progress->saved()) {
+      points[i] = p;
+      have[i] = true;
+      ++start.resumed;
+    }
+  if (!start.setup_error)
+    for (std::size_t i = 0; i < n; ++i)
+      if (!have[i]) start.todo.push_back(i);
+  return start;
+}
+
+// The points of todo on this process's threads, each taking the next point left until none is
+// (or Ctrl-C); returns the number of threads.
+template <class Compute, class Record>
+int runOnThreads(const SweepOptions& o, const std::vector<std::size_t>& todo, Compute& compute, Record& record) {
+  std::size_t next = 0;
+  std::mutex next_mu;
+  auto worker = [&] {
+    for (;;) {
+      std::size_t i = 0;
+      {
+        std::lock_guard<std::mutex> lock(next_mu);
+        if (next >= todo.size() || (o.interrupt && o.interrupt->load())) return;
+        i = todo[next++];
+      }
+      record(i, compute(i), 0);
+    }
+  };
+  const int threads =
+      static_cast<int>(std::min<std::size_t>(std::max(1, o.threads), std::max<std::size_t>(todo.size(), 1)));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  return threads;
+}
+
+}  // namespace
+
 std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& d, SweepResult& result) {
   const auto wall0 = std::chrono::steady_clock::now();
   const std::size_t n = d.texts.size();
@@ -31,28 +93,11 @@ std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& 
   const bool rank0 = world.rank == 0;
 
   // Rank 0 alone reads and writes the progress file and decides what is left to compute.
-  std::unique_ptr<SweepProgressFile> progress;
-  std::exception_ptr setup_error;
-  std::vector<std::size_t> todo;
-  std::size_t resumed = 0;
-  if (rank0) {
-    try {
-      if (!o.progress_path.empty())
-        progress = std::make_unique<SweepProgressFile>(o.progress_path, sweepFingerprint(o, d.texts), n, o.resume);
-    } catch (...) {
-      setup_error = std::current_exception();  // raised after the workers were told to stop
-    }
-    std::vector<bool> have(n, false);
-    if (progress)
-      for (const auto& [i, p] : progress->saved()) {
-        points[i] = p;
-        have[i] = true;
-        ++resumed;
-      }
-    if (!setup_error)
-      for (std::size_t i = 0; i < n; ++i)
-        if (!have[i]) todo.push_back(i);
-  }
+  SweepStart start;
+  if (rank0) start = resumeSweep(o, d, points);
+  std::unique_ptr<SweepProgressFile>& progress = start.progress;
+  const std::vector<std::size_t>& todo = start.todo;
+  const std::size_t resumed = start.resumed;
 
   std::vector<std::size_t> per_rank(std::size_t(world.size), 0);
   std::size_t done = resumed, computed = 0;
@@ -73,26 +118,9 @@ std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& 
   if (o.mpi) {
     dispatcher_busy = runMpiSweep(todo, compute, record, o.dispatcher_computes, o.interrupt);
   } else {
-    std::size_t next = 0;
-    std::mutex next_mu;
-    auto worker = [&] {
-      for (;;) {
-        std::size_t i = 0;
-        {
-          std::lock_guard<std::mutex> lock(next_mu);
-          if (next >= todo.size() || (o.interrupt && o.interrupt->load())) return;
-          i = todo[next++];
-        }
-        record(i, compute(i), 0);
-      }
-    };
-    threads = static_cast<int>(std::min<std::size_t>(std::max(1, o.threads), std::max<std::size_t>(todo.size(), 1)));
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool) t.join();
+    threads = runOnThreads(o, todo, compute, record);
   }
-  if (setup_error) std::rethrow_exception(setup_error);
+  if (start.setup_error) std::rethrow_exception(start.setup_error);
 
   result.output_rank = rank0;
   if (!rank0) return {};
