@@ -8,6 +8,7 @@
 #include "motor/BreakdownTorque.h"
 #include "motor/SharedMotorLaw.h"
 #include "report/FigureSupport.h"
+#include "scene/MotorModels.h"
 
 namespace rollerdyn {
 
@@ -158,8 +159,7 @@ struct MotorPlanner {
   void operatingPoint(const std::vector<double>& t, const std::vector<double>& w,
                       const std::vector<double>& m) {
     PlotSpec p;
-    const bool kloss_law = !scene || scene->induction.model == MotorModel::Kloss ||
-                           scene->induction.model == MotorModel::KlossDynamic;
+    const bool kloss_law = !scene || hasKlossCurve(scene->induction.model);
     p.title = title(kloss_law ? "motor operating points on its Kloss curve"
                               : "motor operating points on its steady torque-speed curve");
     p.xlabel = "motor speed reduced to the crank axis ω_1 = ω_r/u [rad/s]";
