@@ -81,40 +81,26 @@ std::string startingTorqueComparison(const Scene& sc, double kloss_start_rotor) 
          "effect, which Kloss fitted to the rated and breakdown points leaves out)";
 }
 
+// What a start-up with the scene's law cannot show (the motor-law table's words); a law on the
+// Kloss curve also compares its starting torque with the catalogue's and advises a catalogue law.
 void addLawNotes(const Scene& sc, const MotorLaw& law, StartUp& r) {
-  const double M0 = law.steadyTorque(SupplyState{}, 0.0);
-  const std::string advice =
-      "For start-up answers use the catalogue model: motor.model: park (the space-phasor machine, with the switching "
-      "transient) or circuit (quasi-static), with the motor.catalogue keys (docs/startup.md).";
-  switch (sc.induction.model) {
-    case MotorModel::Kloss:
-      r.notes.push_back(
-          "The static Kloss law cannot show the switching transient (the supply-frequency torque oscillation of "
-          "several times the nominal torque right after switching on, which is what loads couplings and joints) and "
-          "understates the starting torque: " +
-          startingTorqueComparison(sc, M0) + ". " + advice);
-      break;
-    case MotorModel::KlossDynamic:
-      r.notes.push_back(
-          "The dynamic Kloss characteristic shows the electromagnetic lag of the torque but not the supply-frequency "
-          "oscillation after switching on, and its starting torque is Kloss's: " +
-          startingTorqueComparison(sc, M0) + ". " + advice);
-      break;
-    case MotorModel::Circuit:
-      r.notes.push_back(
-          "The equivalent circuit is quasi-static: it honours the catalogue's starting torque but shows no switching "
-          "transient (motor.model: park does).");
-      break;
-    case MotorModel::Park: {
-      const double dt = sc.simulation.output_step;
-      if (dt > 1e-3)
-        r.notes.push_back("I²t, the current RMS and the rotor loss are integrated over the output rows (Δt = " +
-                          fmt("%.3g", dt * 1e3) +
-                          " ms); the switching transient oscillates at the supply frequency: set "
-                          "simulation.output_step to 1 ms or less for these integrals and the transient's peaks.");
-      break;
-    }
+  const MotorModelInfo& info = motorModelInfo(sc.induction.model);
+  const std::string limit = info.start_up_limit;
+  if (info.kloss_curve) {
+    const std::string advice =
+        "For start-up answers use the catalogue model: motor.model: park (the space-phasor machine, with the "
+        "switching transient) or circuit (quasi-static), with the motor.catalogue keys (docs/startup.md).";
+    r.notes.push_back(limit + startingTorqueComparison(sc, law.steadyTorque(SupplyState{}, 0.0)) + ". " + advice);
+  } else if (!limit.empty()) {
+    r.notes.push_back(limit);
   }
+  // The switching transient oscillates at the supply frequency: integrals over coarse rows miss it.
+  const double dt = sc.simulation.output_step;
+  if (info.switching_transient && dt > 1e-3)
+    r.notes.push_back("I²t, the current RMS and the rotor loss are integrated over the output rows (Δt = " +
+                      fmt("%.3g", dt * 1e3) +
+                      " ms); the switching transient oscillates at the supply frequency: set "
+                      "simulation.output_step to 1 ms or less for these integrals and the transient's peaks.");
 }
 
 // The supply the starting method holds while the rotor stands still: the supply at switch-on with

@@ -8,6 +8,7 @@
 #include "motor/KlossDynamicLaw.h"
 #include "motor/KlossLaw.h"
 #include "motor/ParkLaw.h"
+#include "scene/MotorModels.h"
 
 namespace rollerdyn {
 
@@ -34,7 +35,7 @@ std::unique_ptr<MotorLaw> makeMotorLaw(const Scene& scene, MotorModel model) {
 namespace {
 CatalogueSupply sceneSupply(const InductionMotor& im) { return {im.voltage, im.frequency, im.pole_pairs}; }
 bool lawIsFitted(const InductionMotor& im) {
-  return (im.model == MotorModel::Circuit || im.model == MotorModel::Park) && !im.circuit.given() &&
+  return isMachineLaw(im.model) && !im.circuit.given() &&
          im.catalogue.given();
 }
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "scene/MotorModels.h"
 #include "scene/Scene.h"
 
 namespace rollerdyn {
@@ -66,8 +67,8 @@ Supply::Supply(const MotorStart& start, const MotorStop& stop, double omega_sync
     const bool has_current = law_ && std::isfinite(law_->steadyCurrent(SupplyState{}, 0.0));
     if (!has_current)
       throw std::invalid_argument(
-          "motor.start.current_limit needs a motor model with a stator current (motor.model circuit or park); "
-          "the Kloss laws have none");
+          "motor.start.current_limit needs a motor model with a stator current (motor.model " +
+          motorModelWords(false, "or") + "); the Kloss laws have none");
     limit_speed_ = findLimitSpeed();
     if (start_.max_start_time > 0 && !(start_.max_start_time > start_.ramp_time))
       throw std::invalid_argument("motor.start.max_start_time must exceed motor.start.ramp_time");

@@ -42,7 +42,7 @@ MotorMarks motorMarks(const Scene& sc) {
   // A catalogue law (circuit, Park machine) is drawn with its own curve: mark its own breakdown
   // point (the curve's largest torque, where it lies) and its catalogue's rated point, not Kloss's
   // (the second trial saw the M_kr marker at Kloss's s_kr beside a curve peaking elsewhere).
-  if (sc.induction.model == MotorModel::Circuit || sc.induction.model == MotorModel::Park) try {
+  if (isMachineLaw(sc.induction.model)) try {
       const std::shared_ptr<const MotorLaw> law = sharedMotorLaw(sc);
       const SteadyTorquePeak peak = largestSteadyTorquePoint(*law, SupplyState{});  // the sizing's M_kr too
       k.w_kr = peak.speed;

@@ -122,16 +122,16 @@ std::string whyNotTheseLaws(const std::string& key, const Scene& sc) {
     return "the laws use the equivalent star's per-phase values either way; a star-delta start is set by "
            "motor.start.method (the connection shows only in `rollerdyn motor`)";
   if (kloss && startsWith(key, "motor.circuit."))
-    return "it sets the equivalent circuit (motor.model: circuit or park), not the Kloss law";
+    return "it sets the equivalent circuit (motor.model: " + motorModelWords(false, "or") + "), not the Kloss law";
   // f_n: the speed of a Kloss law is motor.omega_sync; f_n only turns a converter's frequencies
   // into ratios and gives the dynamic Kloss law its default T_e = 1/(2π·f_n·s_kr).
   if (key == "motor.frequency" && kloss && sc.motor_start.method != StartMethod::FrequencyConverter &&
-      (sc.induction.model == MotorModel::Kloss || sc.induction.torque_time_constant > 0))
+      !(sc.induction.model == MotorModel::KlossDynamic && !(sc.induction.torque_time_constant > 0)))
     return "a Kloss law's speed is motor.omega_sync; f_n only scales a frequency converter's frequencies and "
            "sets the dynamic Kloss law's default T_e = 1/(2π·f_n·s_kr)";
   if (kloss && isCurrentData(key))
-    return "the Kloss law has no stator current: it is the equivalent circuit's data (motor.model circuit or park, "
-           "and `rollerdyn motor`)";
+    return "the Kloss law has no stator current: it is the equivalent circuit's data (motor.model " +
+           motorModelWords(false, "or") + ", and `rollerdyn motor`)";
   if (!kloss && isKlossSlip(key) &&
       !(key == "motor.overload_ratio" && nominalTorqueSource(sc) == NominalTorqueSource::OverloadRatio))
     return "it sets the Kloss law's critical slip; the equivalent circuit has its own breakdown point (from "

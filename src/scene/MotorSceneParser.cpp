@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/MotorModels.h"
 #include "scene/SceneReader.h"
 
 namespace rollerdyn::scene_detail {
@@ -183,13 +184,13 @@ void readMotor(const Reader& in, KlossMotor& m, InductionMotor& im) {
   im.connection = in.choiceOf<WindingConnection>("motor.connection");
   im.catalogue = readCatalogue(in, m.omega_sync);
   im.circuit = readCircuit(in);
-  const bool machine_law = im.model == MotorModel::Circuit || im.model == MotorModel::Park;
+  const bool machine_law = isMachineLaw(im.model);
   const bool machine_data = im.catalogue.given() || im.circuit.given();
   im.pole_pairs = readPolePairs(in, m.omega_sync, im.frequency, machine_law || machine_data);
 
   if (machine_law && !machine_data)
-    doc.fail("motor.model", std::string("kloss or kloss_dynamic, or the machine as motor.circuit.* or "
-                                        "motor.catalogue.* (motor.model ") + toString(im.model) + " needs one)",
+    doc.fail("motor.model", motorModelWords(true, "or") + ", or the machine as motor.circuit.* or motor.catalogue.* "
+                            "(motor.model " + toString(im.model) + " needs one)",
              toString(im.model));
   // The voltage sets the current scale of the circuit and of the fit (I_n is at U_n).
   if (machine_law || machine_data) {

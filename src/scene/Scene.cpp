@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "scene/MotorModels.h"
 #include "scene/SceneChoices.h"
 
 namespace rollerdyn {
@@ -111,10 +112,9 @@ std::vector<std::string> Scene::effects() const {
 }
 
 std::string effectWords(const std::string& e) {
-  if (e == "kloss_motor") return "induction motor, Kloss formula (motor.model: kloss)";
-  if (e == "kloss_dynamic_motor") return "induction motor, dynamic Kloss characteristic (motor.model: kloss_dynamic)";
-  if (e == "circuit_motor") return "induction motor, equivalent circuit (motor.model: circuit)";
-  if (e == "park_motor") return "induction motor, space-phasor model (motor.model: park)";
+  for (const MotorModelInfo& law : motorModelTable())
+    if (e == std::string(law.word) + "_motor")
+      return std::string("induction motor, ") + law.effect + " (motor.model: " + law.word + ")";
   if (e == "rigid_coupling") return "rigid coupling (coupling.type: rigid)";
   if (e == "elastic_coupling") return "torsional spring of the coupling (coupling.stiffness)";
   if (e == "coupling_damping") return "damping of the coupling (coupling.damping)";

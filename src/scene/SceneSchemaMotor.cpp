@@ -1,10 +1,27 @@
 // Scene keys of the motor: its characteristic and model, its equivalent circuit, its catalogue data,
 // its starting method and switch-off; part of the scene schema (SceneSchema.cpp).
+#include "scene/MotorModels.h"
 #include "scene/SchemaSections.h"
 
 namespace rollerdyn {
 
 using namespace schema_builders;
+
+namespace {
+// motor.model: its words, meanings and sources are the rows of the motor-law table.
+KeySpec motorModelKey() {
+  std::vector<std::string> words;
+  std::string meaning = "law of the motor torque: ", sources;
+  for (const MotorModelInfo& law : motorModelTable()) {
+    const std::string sep = words.empty() ? "" : "; ";
+    meaning += sep + law.word + ", " + law.meaning;
+    sources += sep + law.source + " (" + law.word + ")";
+    words.push_back(law.word);
+  }
+  // The default is the first row: the papers' static Kloss formula.
+  return choice("motor.model", Presence::Optional, words, words.front(), meaning + " (motor.md)").from(sources);
+}
+}  // namespace
 
 // motor.* but the circuit, the catalogue, the start and the stop.
 std::vector<KeySpec> motorSchemaKeys() {
@@ -39,19 +56,14 @@ std::vector<KeySpec> motorSchemaKeys() {
       number("motor.rotor_inertia", "kg·m²", P::Required, positive(), 0.0,
              "rotor inertia J_p")
           .from(L2018 + " eq. (1)"),
-      choice("motor.model", P::Optional, {"kloss", "kloss_dynamic", "circuit", "park"}, "kloss",
-             "law of the motor torque: kloss, the static Kloss formula; kloss_dynamic, the Kloss torque "
-             "lagging by T_e; circuit, the steady-state equivalent circuit (single or double cage); "
-             "park, the space-phasor machine with its flux linkages as states (motor.md)")
-          .from(L2018 + " eq. (37) (kloss); Klyuchev (1985) (kloss_dynamic); Pedra (2008) fig. 1 "
-                "(circuit); Krause, Wasynczuk, Sudhoff, ch. 6 (park)"),
+      motorModelKey(),
       number("motor.torque_time_constant", "s", P::Conditional, positive(), 0.0,
              "T_e of the dynamic Kloss characteristic T_e·dM/dt + M = M_static")
           .from("Klyuchev (1985)")
           .when("1/(2π·f_n·s_kr)"),
       number("motor.voltage", "V", P::Conditional, positive(), 0.0,
              "U_n, rated line-to-line RMS voltage")
-          .when("required for motor.model circuit and park, and with motor.circuit or motor.catalogue"),
+          .when("required for motor.model " + motorModelWords(false, "and") + ", and with motor.circuit or motor.catalogue"),
       number("motor.frequency", "Hz", P::Optional, positive(), 50.0,
              "f_n, rated supply frequency"),
       choice("motor.connection", P::Optional, {"star", "delta"}, "star",

@@ -1,0 +1,75 @@
+// The motor-law table (scene/MotorModels.h) is the one description of each motor.model: its rows
+// follow the enumeration, the schema and the run's effect line read their words from it, and its
+// classification agrees with the laws makeMotorLaw builds (a law on the Kloss curve peaks at M_kr
+// at the critical slip; a machine law cannot be parsed without machine data).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "motor/MotorLawFactory.h"
+#include "scene/MotorModels.h"
+#include "scene/SceneChoices.h"
+#include "scene/SceneParser.h"
+
+namespace rollerdyn {
+namespace {
+
+// The drive of Loveikin, Pochka, Romasevych (2018) with the Kloss data only (no catalogue, no circuit).
+const char* const kKlossOnlyScene = R"(
+simulation: {t_end: 1.0}
+crank: {radius: 0.2, offset_deg: 90}
+rods: {model: distributed, length: 0.8, mass: 64}
+carts: {count: 4, mass: 1000}
+motor: {omega_sync: 104.72, breakdown_torque: 517.14, critical_slip: 0.1146, rotor_inertia: 0.4}
+reducer: {ratio: 9.8, efficiency: 0.9}
+coupling: {type: elastic, stiffness: 200000}
+)";
+
+TEST(MotorModelTable, RowsFollowTheEnumerationAndNameTheSchemasWords) {
+  const auto& table = motorModelTable();
+  const KeySpec& key = choiceKey("motor.model");
+  ASSERT_EQ(table.size(), key.choices.size());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    EXPECT_EQ(static_cast<int>(table[i].model), static_cast<int>(i)) << table[i].word;
+    EXPECT_EQ(key.choices[i], table[i].word);
+    EXPECT_EQ(std::string(toString(table[i].model)), table[i].word);
+    EXPECT_NE(key.meaning.find(std::string(table[i].word) + ", " + table[i].meaning), std::string::npos);
+    EXPECT_EQ(&motorModelInfo(table[i].model), &table[i]);
+  }
+}
+
+TEST(MotorModelTable, EveryLawNamesItselfInTheRunsEffects) {
+  for (const MotorModelInfo& law : motorModelTable()) {
+    const std::string effect = std::string(law.word) + "_motor";
+    EXPECT_EQ(effectWords(effect),
+              std::string("induction motor, ") + law.effect + " (motor.model: " + law.word + ")");
+  }
+}
+
+TEST(MotorModelTable, KlossCurveLawsPeakAtTheBreakdownTorqueAtTheCriticalSlip) {
+  for (const MotorModelInfo& law : motorModelTable()) {
+    if (!law.kloss_curve) continue;
+    const Scene sc = parseSceneText(kKlossOnlyScene, "kloss-only.yaml", {std::string("motor.model=") + law.word});
+    const auto m = makeMotorLaw(sc);
+    const double w_kr = sc.motor.omega_sync * (1.0 - sc.motor.critical_slip);
+    EXPECT_NEAR(m->steadyTorque(SupplyState{}, w_kr), sc.motor.breakdown_torque, 1e-9 * sc.motor.breakdown_torque)
+        << law.word;
+  }
+}
+
+TEST(MotorModelTable, MachineLawsNeedTheCatalogueOrTheCircuit) {
+  for (const MotorModelInfo& law : motorModelTable()) {
+    const std::string set = std::string("motor.model=") + law.word;
+    if (law.kloss_curve) {
+      EXPECT_NO_THROW(parseSceneText(kKlossOnlyScene, "kloss-only.yaml", {set})) << law.word;
+    } else {
+      EXPECT_TRUE(isMachineLaw(law.model));
+      EXPECT_ANY_THROW(parseSceneText(kKlossOnlyScene, "kloss-only.yaml", {set})) << law.word;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rollerdyn
