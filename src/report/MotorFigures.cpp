@@ -24,6 +24,25 @@ struct MotorMarks {
   double P_n = kNaN;              // nominal shaft power M_n·ω_n [W]
 };
 
+// A catalogue law (circuit, Park machine) is drawn with its own curve: mark its own breakdown
+// point (the curve's largest torque, where it lies) and its catalogue's rated point, not Kloss's
+// (the second trial saw the M_kr marker at Kloss's s_kr beside a curve peaking elsewhere).
+void markMachineLawPoints(const Scene& sc, MotorMarks& k) {
+  try {
+    const std::shared_ptr<const MotorLaw> law = sharedMotorLaw(sc);
+    const SteadyTorquePeak peak = largestSteadyTorquePoint(*law, SupplyState{});  // the sizing's M_kr too
+    k.w_kr = peak.speed;
+    k.M_kr = peak.torque;
+    const MotorCatalogue& cat = sc.induction.catalogue;
+    if (sc.sizing.motor_omega_nominal <= 0 && cat.given() && cat.omega_nominal > 0) {
+      k.w_n = cat.omega_nominal;
+      k.M_n = law->steadyTorque(SupplyState{}, cat.omega_nominal);
+    }
+  } catch (const std::exception&) {
+    // no law: the Kloss data stand
+  }
+}
+
 MotorMarks motorMarks(const Scene& sc) {
   MotorMarks k;
   k.u = sc.reducer.ratio;
@@ -39,22 +58,7 @@ MotorMarks motorMarks(const Scene& sc) {
     const double lambda = k.M_kr / k.M_n;
     k.w_n = w0 * (1.0 - s_kr * (lambda - std::sqrt(lambda * lambda - 1.0)));
   }
-  // A catalogue law (circuit, Park machine) is drawn with its own curve: mark its own breakdown
-  // point (the curve's largest torque, where it lies) and its catalogue's rated point, not Kloss's
-  // (the second trial saw the M_kr marker at Kloss's s_kr beside a curve peaking elsewhere).
-  if (isMachineLaw(sc.induction.model)) try {
-      const std::shared_ptr<const MotorLaw> law = sharedMotorLaw(sc);
-      const SteadyTorquePeak peak = largestSteadyTorquePoint(*law, SupplyState{});  // the sizing's M_kr too
-      k.w_kr = peak.speed;
-      k.M_kr = peak.torque;
-      const MotorCatalogue& cat = sc.induction.catalogue;
-      if (sc.sizing.motor_omega_nominal <= 0 && cat.given() && cat.omega_nominal > 0) {
-        k.w_n = cat.omega_nominal;
-        k.M_n = law->steadyTorque(SupplyState{}, cat.omega_nominal);
-      }
-    } catch (const std::exception&) {
-      // no law: the Kloss data stand
-    }
+  if (isMachineLaw(sc.induction.model)) markMachineLawPoints(sc, k);
   k.P_n = k.M_n * k.w_n;
   return k;
 }
@@ -73,6 +77,54 @@ std::string markPoint(int id, double x, double y, const char* color, const std::
          " point pt 7 ps 1.8 lc rgb '" + color + "' offset 1,-1 font ',9' tc rgb '" + color + "' front\n";
 }
 
+// The y range spanning the data and a level line (the nominal or breakdown level), so the margin
+// to it is visible; "" when the data have no spread.
+std::string yRangeWithLevel(const std::vector<double>& y, double level) {
+  double lo = 0, hi = 0;
+  for (double v : y)
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (std::isfinite(level)) hi = std::max(hi, level);
+  const double pad = 0.05 * (hi - lo);
+  return hi > lo ? "set yrange [" + fmt("%.9g", lo - pad) + ":" + fmt("%.9g", hi + pad) + "]\n" : std::string();
+}
+
+// One of the motor's quantities drawn against time and crank angle, with its level lines.
+struct MotorQuantity {
+  const char* stem;       // figure name's stem
+  const char* what;       // the quantity in words
+  const char* ylabel;     // y axis label, with its unit
+  std::vector<double> y;  // its values per row
+  std::string lines;      // the gnuplot level lines (nominal, breakdown)
+  double level;           // highest level line, kept in view [same unit as y]
+};
+
+// The rotor torque M = M_n1/(u·η) and the shaft power M·ω_r [kW] of the run's rows.
+std::vector<MotorQuantity> torqueAndPowerQuantities(const MotorMarks& k, const std::vector<double>& w,
+                                                    const std::vector<double>& m) {
+  std::vector<double> M(m.size()), P(m.size());
+  for (size_t i = 0; i < m.size(); ++i) {
+    M[i] = m[i] / (k.u * k.eta);        // rotor torque
+    P[i] = M[i] * k.u * w[i] * 1e-3;    // shaft power M·ω_r [kW]
+  }
+  const std::string lines_M = hline(k.M_n, kGreen, "nominal torque M_n") + hline(k.M_kr, kRed, "breakdown torque M_{kr}");
+  const std::string lines_P = hline(k.P_n * 1e-3, kGreen, "nominal power P_n = M_n·ω_n");
+  return {{"motor_torque", "motor torque", "motor torque at the rotor M [N·m]", std::move(M), lines_M, k.M_kr},
+          {"motor_power", "motor shaft power", "shaft power M·ω_r [kW] (ω_r rotor speed)", std::move(P), lines_P,
+           k.P_n * 1e-3}};
+}
+
+// The operating-point figure's caption: the Kloss curve of the papers or the law's own steady curve.
+std::string operatingPointCaption(bool kloss_law) {
+  return std::string(kloss_law ? "The motor's static Kloss characteristic reduced to the crank axis, M_n1 = M(u·ω_1)·u·η "
+                                 "(Loveikin, Pochka, Romasevych (2018) eq. (37)"
+                               : "The steady torque-speed curve of the motor's law at the rated supply (motor.model, "
+                                 "fitted to its catalogue) reduced to the crank axis, M_n1 = M(u·ω_1)·u·η (") +
+         "; M motor torque at the rotor, ω_1 motor speed reduced to the crank, u reducer ratio, η its efficiency), "
+         "the run's operating points over the whole run (thin line; a start with switching transients or a "
+         "starting method leaves the steady curve), the steady-window operating points (red), and the "
+         "nominal and breakdown points.";
+}
+
 struct MotorPlanner {
   const OutputFolder& out;
   const Scene* scene;
@@ -88,6 +140,24 @@ struct MotorPlanner {
     plans.push_back({std::move(name), std::move(caption), std::move(spec)});
   }
 
+  // A static law's torque is its curve at the run's speed: a note when the two disagree, so a run
+  // made with other motor data (--set motor.*) is not silently drawn on a wrong curve. (A law with
+  // states, or a starting method that changes the supply, leaves the curve by design.)
+  template <class Curve>
+  void noteRunOffCurve(const MotorLaw& law, const MotorMarks& k, const Curve& curve, const std::vector<double>& w,
+                       const std::vector<double>& m, const char* curve_name) {
+    const bool on_curve = law.stateCount() == 0 && !out.timeseries.has("supply_voltage_ratio");
+    double dev = 0;
+    for (size_t i = 0; on_curve && i < w.size() && i < m.size(); ++i)
+      if (std::isfinite(w[i]) && std::isfinite(m[i])) dev = std::max(dev, std::abs(m[i] - curve(w[i])));
+    const double scale = motorBreakdownTorque(*scene, &law) * k.u * k.eta;
+    if (scale > 0 && dev > 1e-3 * scale)
+      notes.push_back(std::string("motor operating point: the run's motor_torque differs from the ") + curve_name +
+                      " of scene '" + scene->name + "' by up to " + fmt("%.3g", dev) +
+                      " N·m; was the run made with other motor data (--set motor.* / reducer.*)? "
+                      "Pass the same --scene and --set to `rollerdyn plot`.");
+  }
+
   // The law's steady torque-speed curve reduced to the crank axis over [lo, hi] on p, a note when
   // the run's torque leaves a static law's curve; returns the nominal and breakdown marks.
   std::string lawCurve(PlotSpec& p, const MotorLaw& law, const MotorMarks& k, double lo, double& hi,
@@ -99,28 +169,13 @@ struct MotorPlanner {
     std::vector<double> cx, cy;
     const int n = 600;
     for (int i = 0; i <= n; ++i) {
-      const double x = lo + (hi - lo) * i / n;
-      cx.push_back(x);
-      cy.push_back(curve(x));
+      cx.push_back(lo + (hi - lo) * i / n);
+      cy.push_back(curve(cx.back()));
     }
     const bool kloss = scene->induction.model == MotorModel::Kloss;
-    p.series.push_back(series((kloss ? "Kloss curve (scene " : "steady torque-speed curve (scene ") +
-                                  literal(scene->name) + ")",
-                              cx, cy, kGrey, 4.0));
-    // A static law's torque is its curve at the run's speed: check the two agree, so a run made
-    // with other motor data (--set motor.*) is not silently drawn on a wrong curve. (A law with
-    // states, or a starting method that changes the supply, leaves the curve by design.)
-    const bool on_curve = law.stateCount() == 0 && !out.timeseries.has("supply_voltage_ratio");
-    double dev = 0;
-    for (size_t i = 0; on_curve && i < w.size() && i < m.size(); ++i)
-      if (std::isfinite(w[i]) && std::isfinite(m[i])) dev = std::max(dev, std::abs(m[i] - curve(w[i])));
-    const double scale = motorBreakdownTorque(*scene, &law) * u * eta;
-    if (scale > 0 && dev > 1e-3 * scale)
-      notes.push_back(std::string("motor operating point: the run's motor_torque differs from the ") +
-                      (kloss ? "Kloss curve" : "steady torque-speed curve") + " of scene '" +
-                      scene->name + "' by up to " + fmt("%.3g", dev) +
-                      " N·m; was the run made with other motor data (--set motor.* / reducer.*)? "
-                      "Pass the same --scene and --set to `rollerdyn plot`.");
+    const char* curve_name = kloss ? "Kloss curve" : "steady torque-speed curve";
+    p.series.push_back(series(curve_name + std::string(" (scene ") + literal(scene->name) + ")", cx, cy, kGrey, 4.0));
+    noteRunOffCurve(law, k, curve, w, m, curve_name);
     return markPoint(101, k.w_kr / u, k.M_kr * u * eta, kRed, "breakdown M_{kr}") +
            markPoint(102, k.w_n / u, k.M_n * u * eta, kGreen, "nominal M_n");
   }
@@ -156,6 +211,24 @@ struct MotorPlanner {
         std::move(zoom));
   }
 
+  // The law's curve and marks on p, or a note why the figure has none; k gets the marks drawn.
+  std::string curveAndMarks(PlotSpec& p, MotorMarks& k, double lo, double& hi, const std::vector<double>& w,
+                            const std::vector<double>& m) {
+    if (!scene) {
+      notes.push_back("motor operating point drawn without its Kloss curve: no scene file (pass --scene FILE)");
+      return "";
+    }
+    std::shared_ptr<const MotorLaw> law;
+    try {
+      law = sharedMotorLaw(*scene);
+    } catch (const std::exception& ex) {
+      notes.push_back(std::string("motor operating point drawn without its curve: ") + ex.what());
+      return "";
+    }
+    k = motorMarks(*scene);
+    return lawCurve(p, *law, k, lo, hi, w, m);
+  }
+
   void operatingPoint(const std::vector<double>& t, const std::vector<double>& w,
                       const std::vector<double>& m) {
     PlotSpec p;
@@ -168,40 +241,47 @@ struct MotorPlanner {
     double lo = 0, hi = 0;
     for (double v : w)
       if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-    std::string marks;
     MotorMarks k;
-    std::shared_ptr<const MotorLaw> law;
-    if (scene) try {
-        law = sharedMotorLaw(*scene);
-      } catch (const std::exception& ex) {
-        notes.push_back(std::string("motor operating point drawn without its curve: ") + ex.what());
-      }
-    if (scene && law) {
-      k = motorMarks(*scene);
-      marks = lawCurve(p, *law, k, lo, hi, w, m);
-    } else if (!scene) {
-      notes.push_back("motor operating point drawn without its Kloss curve: no scene file (pass --scene FILE)");
-    }
-    p.preamble += marks;
+    p.preamble += curveAndMarks(p, k, lo, hi, w, m);
     const std::vector<size_t> rows = windowRows(t, window);
-    PlotSeries start = series("start-up and whole run", w, m, kBlue, 0.8);
-    p.series.push_back(start);
+    p.series.push_back(series("start-up and whole run", w, m, kBlue, 0.8));
     PlotSeries steady = series("operating points, steady window", pick(w, rows), pick(m, rows), kRed);
     steady.style = "points pt 7 ps 0.6";
     if (window.found) p.series.push_back(steady);
     PlotSpec zoom = p;
-    add("motor_operating_point",
-        std::string(kloss_law ? "The motor's static Kloss characteristic reduced to the crank axis, M_n1 = M(u·ω_1)·u·η "
-                                "(Loveikin, Pochka, Romasevych (2018) eq. (37)"
-                              : "The steady torque-speed curve of the motor's law at the rated supply (motor.model, "
-                                "fitted to its catalogue) reduced to the crank axis, M_n1 = M(u·ω_1)·u·η (") +
-            "; M motor torque at the rotor, ω_1 motor speed reduced to the crank, u reducer ratio, η its efficiency), "
-            "the run's operating points over the whole run (thin line; a start with switching transients or a "
-            "starting method leaves the steady curve), the steady-window operating points (red), and the "
-            "nominal and breakdown points.",
-        std::move(p));
+    add("motor_operating_point", operatingPointCaption(kloss_law), std::move(p));
     if (!window.found || rows.empty()) return;
     operatingPointZoom(std::move(zoom), rows, k, w, m);
+  }
+
+  void quantityVsTime(const MotorQuantity& q, const std::vector<double>& t) {
+    PlotSpec a;
+    a.title = title(std::string(q.what) + " against time");
+    a.xlabel = "t [s]";
+    a.ylabel = q.ylabel;
+    a.preamble = windowMarker(window) + "\nset key off\n" + q.lines + yRangeWithLevel(q.y, q.level);
+    a.series.push_back(series("", t, q.y, kBlue));
+    add(std::string(q.stem) + "_vs_time",
+        capitalized(q.what) + " over the whole run, with the motor's nominal (green) and, for the "
+        "torque, breakdown (red) levels; the dashed vertical line marks the start of the steady window.",
+        std::move(a));
+  }
+
+  // theta: the steady window's crank angle folded per revolution (fold: the revolution of each row).
+  void quantityVsAngle(const MotorQuantity& q, const std::vector<double>& theta, const std::vector<long>& fold,
+                       const std::vector<size_t>& rows) {
+    PlotSpec b;
+    b.title = title(std::string(q.what) + " against crank angle (" + windowText(window) + ")");
+    b.xlabel = kAngleLabel;
+    b.ylabel = q.ylabel;
+    b.preamble = std::string(kAnglePreamble) + "\nset key off\n" + q.lines + yRangeWithLevel(q.y, q.level);
+    PlotSeries s = series("", theta, alongFold(pick(q.y, rows), fold), kBlue, 1.2);
+    s.break_at_nonfinite = true;
+    b.series.push_back(std::move(s));
+    add(std::string(q.stem) + "_vs_angle",
+        capitalized(q.what) + " against the crank angle over the steady window, one curve per "
+        "revolution, with the nominal and breakdown levels.",
+        std::move(b));
   }
 
   void torqueAndPower(const std::vector<double>& t, const std::vector<double>& w,
@@ -210,62 +290,13 @@ struct MotorPlanner {
       notes.push_back("motor torque and power figures left out: no scene file for u and η (pass --scene FILE)");
       return;
     }
-    const MotorMarks k = motorMarks(*scene);
-    std::vector<double> M(m.size()), P(m.size());
-    for (size_t i = 0; i < m.size(); ++i) {
-      M[i] = m[i] / (k.u * k.eta);        // rotor torque
-      P[i] = M[i] * k.u * w[i] * 1e-3;    // shaft power M·ω_r [kW]
-    }
-    const std::string lines_M = hline(k.M_n, kGreen, "nominal torque M_n") + hline(k.M_kr, kRed, "breakdown torque M_{kr}");
-    const std::string lines_P = hline(k.P_n * 1e-3, kGreen, "nominal power P_n = M_n·ω_n");
-    struct Q {
-      const char* stem;
-      const char* what;
-      const char* ylabel;
-      const std::vector<double>* y;
-      std::string lines;
-      double level;  // highest level line, kept in view [same unit as y]
-    };
-    const Q qs[] = {{"motor_torque", "motor torque", "motor torque at the rotor M [N·m]", &M, lines_M, k.M_kr},
-                    {"motor_power", "motor shaft power", "shaft power M·ω_r [kW] (ω_r rotor speed)", &P, lines_P,
-                     k.P_n * 1e-3}};
-    // The y axis spans the data and the nominal/breakdown levels, so the margin is visible.
-    auto yrange = [](const std::vector<double>& y, double level) {
-      double lo = 0, hi = 0;
-      for (double v : y)
-        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-      if (std::isfinite(level)) hi = std::max(hi, level);
-      const double pad = 0.05 * (hi - lo);
-      return hi > lo ? "set yrange [" + fmt("%.9g", lo - pad) + ":" + fmt("%.9g", hi + pad) + "]\n" : std::string();
-    };
     const std::vector<double> phi = col(out.timeseries, "phi_crank");
     const std::vector<size_t> rows = windowRows(t, window);
     std::vector<long> fold;
     const std::vector<double> theta = phi.empty() ? std::vector<double>{} : foldedAngle(pick(phi, rows), &fold);
-    for (const Q& q : qs) {
-      PlotSpec a;
-      a.title = title(std::string(q.what) + " against time");
-      a.xlabel = "t [s]";
-      a.ylabel = q.ylabel;
-      a.preamble = windowMarker(window) + "\nset key off\n" + q.lines + yrange(*q.y, q.level);
-      a.series.push_back(series("", t, *q.y, kBlue));
-      add(std::string(q.stem) + "_vs_time",
-          capitalized(q.what) + " over the whole run, with the motor's nominal (green) and, for the "
-          "torque, breakdown (red) levels; the dashed vertical line marks the start of the steady window.",
-          std::move(a));
-      if (theta.empty()) continue;
-      PlotSpec b;
-      b.title = title(std::string(q.what) + " against crank angle (" + windowText(window) + ")");
-      b.xlabel = kAngleLabel;
-      b.ylabel = q.ylabel;
-      b.preamble = std::string(kAnglePreamble) + "\nset key off\n" + q.lines + yrange(*q.y, q.level);
-      PlotSeries s = series("", theta, alongFold(pick(*q.y, rows), fold), kBlue, 1.2);
-      s.break_at_nonfinite = true;
-      b.series.push_back(std::move(s));
-      add(std::string(q.stem) + "_vs_angle",
-          capitalized(q.what) + " against the crank angle over the steady window, one curve per "
-          "revolution, with the nominal and breakdown levels.",
-          std::move(b));
+    for (const MotorQuantity& q : torqueAndPowerQuantities(motorMarks(*scene), w, m)) {
+      quantityVsTime(q, t);
+      if (!theta.empty()) quantityVsAngle(q, theta, fold, rows);
     }
   }
 };
