@@ -83,58 +83,64 @@ MotorCircuit readCircuit(const Reader& in) {
   return c;
 }
 
-// Kloss's critical slip from exactly one of three equivalent descriptions, or -1 when none is
-// given and the caller may derive it (from the catalogue).
-double readCriticalSlip(const Reader& in, double omega0, bool may_be_absent) {
-  const SceneDocument& doc = in.doc();
-  const std::string ways_txt =
-      "exactly one of motor.critical_slip, motor.omega_critical, or "
-      "motor.omega_nominal + motor.overload_ratio";
-  std::vector<std::string> given;  // first key of each way present, in schema order
+const char* const kSlipWays =
+    "exactly one of motor.critical_slip, motor.omega_critical, or motor.omega_nominal + motor.overload_ratio";
+
+// The first key of each way of giving Kloss's critical slip present in the file, in schema order;
+// two descriptions could disagree, so more than one is refused rather than one picked silently.
+std::vector<std::string> slipWaysGiven(const Reader& in) {
+  std::vector<std::string> given;
   if (in.has("motor.critical_slip")) given.push_back("motor.critical_slip");
   if (in.has("motor.omega_critical")) given.push_back("motor.omega_critical");
   if (in.has("motor.omega_nominal")) given.push_back("motor.omega_nominal");
   else if (in.has("motor.overload_ratio")) given.push_back("motor.overload_ratio");
-  if (given.empty() && may_be_absent) return -1.0;
-  if (given.empty()) doc.failMissing("motor.critical_slip", ways_txt);
   if (given.size() > 1) {
-    // Two descriptions could disagree; refuse rather than pick one silently. Blame the one a
-    // --set added, if any (the latest), else the second in schema order.
+    // Blame the one a --set added, if any (the latest), else the second in schema order.
+    const SceneDocument& doc = in.doc();
     size_t blamed = 1;
     for (size_t i = 0; i < given.size(); ++i)
       if (doc.overrideFor(given[i]) > doc.overrideFor(given[blamed])) blamed = i;
     const std::string& other = given[blamed == 0 ? 1 : 0];
-    doc.fail(given[blamed], ways_txt + " (" + other + " is given too)",
+    doc.fail(given[blamed], std::string(kSlipWays) + " (" + other + " is given too)",
              describeNode(doc.find(given[blamed])));
   }
-  const std::string& way = given[0];
-  if (way == "motor.critical_slip") return in.number(way);  // range (0, 1) from the schema
+  return given;
+}
 
-  const std::string w0_txt = formatNumber(omega0);
-  if (way == "motor.omega_critical") {
-    const double w_kr = in.number(way);
-    if (w_kr >= omega0) {
-      doc.fail(way, "a number in (0, omega_sync = " + w0_txt + ") [rad/s]", formatNumber(w_kr));
-    }
-    return 1.0 - w_kr / omega0;  // Loveikin and Pochka (2007) eq. (7)
-  }
-  const double w_n =
-      in.requiredNumber("motor.omega_nominal", "required with motor.overload_ratio");
-  const double lambda =
-      in.requiredNumber("motor.overload_ratio", "required with motor.omega_nominal");
-  if (w_n >= omega0) {
-    doc.fail("motor.omega_nominal", "a number in (0, omega_sync = " + w0_txt + ") [rad/s]",
+// s_kr = s_n·(λ + √(λ² − 1)) from the nominal speed and the overload ratio (Loveikin, Pochka,
+// Romasevych (2018) eq. (37)).
+double slipFromOverloadRatio(const Reader& in, double omega0) {
+  const SceneDocument& doc = in.doc();
+  const double w_n = in.requiredNumber("motor.omega_nominal", "required with motor.overload_ratio");
+  const double lambda = in.requiredNumber("motor.overload_ratio", "required with motor.omega_nominal");
+  if (w_n >= omega0)
+    doc.fail("motor.omega_nominal", "a number in (0, omega_sync = " + formatNumber(omega0) + ") [rad/s]",
              formatNumber(w_n));
-  }
   const double s_n = 1.0 - w_n / omega0;
-  const double s_kr = s_n * (lambda + std::sqrt(lambda * lambda - 1.0));  // Loveikin, Pochka, Romasevych (2018) eq. (37)
-  if (s_kr >= 1.0) {
+  const double s_kr = s_n * (lambda + std::sqrt(lambda * lambda - 1.0));
+  if (s_kr >= 1.0)
     doc.fail("motor.overload_ratio",
              "a value giving critical slip s_kr = s_n(lambda + sqrt(lambda^2 - 1)) < 1 with s_n = " +
                  formatNumber(s_n),
              formatNumber(lambda) + " (s_kr = " + formatNumber(s_kr) + ")");
-  }
   return s_kr;
+}
+
+// Kloss's critical slip from exactly one of three equivalent descriptions, or -1 when none is
+// given and the caller may derive it (from the catalogue).
+double readCriticalSlip(const Reader& in, double omega0, bool may_be_absent) {
+  const std::vector<std::string> given = slipWaysGiven(in);
+  if (given.empty() && may_be_absent) return -1.0;
+  if (given.empty()) in.doc().failMissing("motor.critical_slip", kSlipWays);
+  const std::string& way = given[0];
+  if (way == "motor.critical_slip") return in.number(way);  // range (0, 1) from the schema
+  if (way == "motor.omega_critical") {
+    const double w_kr = in.number(way);
+    if (w_kr >= omega0)
+      in.doc().fail(way, "a number in (0, omega_sync = " + formatNumber(omega0) + ") [rad/s]", formatNumber(w_kr));
+    return 1.0 - w_kr / omega0;  // Loveikin and Pochka (2007) eq. (7)
+  }
+  return slipFromOverloadRatio(in, omega0);
 }
 
 // Pole pairs: given, or the whole number nearest 2π·f_n/ω0. Checked against ω0 only where a law
@@ -170,40 +176,48 @@ int readPolePairs(const Reader& in, double omega0, double f, bool checked) {
   return p;
 }
 
-}  // namespace
-
-void readMotor(const Reader& in, KlossMotor& m, InductionMotor& im) {
-  const SceneDocument& doc = in.doc();
-  m.enabled = in.flag("motor.enabled");
-  m.omega_sync = in.number("motor.omega_sync");
-  m.rotor_inertia = in.number("motor.rotor_inertia");
-
+// The law and the machine data it needs: a machine law (circuit, park) needs motor.catalogue or
+// motor.circuit; machine data need the voltage (the current scale of the circuit and of the fit:
+// I_n is at U_n) and pole pairs that agree with ω0.
+void readMachine(const Reader& in, double omega0, InductionMotor& im) {
   im.model = in.choiceOf<MotorModel>("motor.model");
   im.torque_time_constant = in.numberOr("motor.torque_time_constant", 0.0);  // 0: 1/(ω1·s_kr)
   im.frequency = in.number("motor.frequency");
   im.connection = in.choiceOf<WindingConnection>("motor.connection");
-  im.catalogue = readCatalogue(in, m.omega_sync);
+  im.catalogue = readCatalogue(in, omega0);
   im.circuit = readCircuit(in);
   const bool machine_law = isMachineLaw(im.model);
   const bool machine_data = im.catalogue.given() || im.circuit.given();
-  im.pole_pairs = readPolePairs(in, m.omega_sync, im.frequency, machine_law || machine_data);
-
+  im.pole_pairs = readPolePairs(in, omega0, im.frequency, machine_law || machine_data);
   if (machine_law && !machine_data)
-    doc.fail("motor.model", motorModelWords(true, "or") + ", or the machine as motor.circuit.* or motor.catalogue.* "
-                            "(motor.model " + toString(im.model) + " needs one)",
-             toString(im.model));
-  // The voltage sets the current scale of the circuit and of the fit (I_n is at U_n).
-  if (machine_law || machine_data) {
-    im.voltage = in.requiredNumber("motor.voltage", machine_law ? std::string("required for motor.model ") +
-                                                                      toString(im.model)
-                                                                : "required with motor.circuit or motor.catalogue");
-  } else {
+    in.doc().fail("motor.model", motorModelWords(true, "or") + ", or the machine as motor.circuit.* or "
+                                 "motor.catalogue.* (motor.model " + toString(im.model) + " needs one)",
+                  toString(im.model));
+  if (!machine_law && !machine_data) {
     im.voltage = in.numberOr("motor.voltage", 0.0);
+    return;
   }
+  im.voltage = in.requiredNumber("motor.voltage", machine_law ? std::string("required for motor.model ") +
+                                                                    toString(im.model)
+                                                              : "required with motor.circuit or motor.catalogue");
+}
 
-  // Kloss's M_kr and s_kr: as given; else, with a catalogue, through its breakdown point:
-  // M_kr = (M_k/M_n)·P_n/ω_n and s_kr = s_n(λ + √(λ² − 1)), s_n = 1 − ω_n/ω0
-  // (Loveikin, Pochka, Romasevych (2018) eq. (37)).
+// Kloss's M_kr and s_kr through the catalogue's breakdown point: M_kr = (M_k/M_n)·P_n/ω_n and
+// s_kr = s_n(λ + √(λ² − 1)), s_n = 1 − ω_n/ω0 (Loveikin, Pochka, Romasevych (2018) eq. (37)).
+void klossFromCatalogue(const Reader& in, const MotorCatalogue& c, KlossMotor& m) {
+  const double lambda = c.breakdown_torque_ratio, s_n = 1.0 - c.omega_nominal / m.omega_sync;
+  m.breakdown_torque = lambda * c.nominalTorque();
+  m.critical_slip = s_n * (lambda + std::sqrt(lambda * lambda - 1.0));
+  if (m.critical_slip >= 1.0)
+    in.doc().fail("motor.catalogue.breakdown_torque_ratio",
+                  "a ratio giving Kloss's critical slip s_n(lambda + sqrt(lambda^2 - 1)) < 1 with s_n = " +
+                      formatNumber(s_n) + " (or give motor.breakdown_torque and the critical slip)",
+                  formatNumber(lambda));
+}
+
+// Kloss's M_kr and s_kr: as given; else, with a catalogue, both through its breakdown point.
+void readKlossPoint(const Reader& in, const InductionMotor& im, KlossMotor& m) {
+  const SceneDocument& doc = in.doc();
   const bool derive = im.catalogue.given() && !in.has("motor.breakdown_torque");
   const double s_kr = readCriticalSlip(in, m.omega_sync, derive);
   if (derive) {
@@ -211,23 +225,24 @@ void readMotor(const Reader& in, KlossMotor& m, InductionMotor& im) {
       doc.fail("motor.breakdown_torque",
                "a breakdown torque M_kr with the critical slip given (or neither: both from motor.catalogue)",
                "nothing (key missing)");
-    const MotorCatalogue& c = im.catalogue;
-    const double lambda = c.breakdown_torque_ratio, s_n = 1.0 - c.omega_nominal / m.omega_sync;
-    m.breakdown_torque = lambda * c.nominalTorque();
-    m.critical_slip = s_n * (lambda + std::sqrt(lambda * lambda - 1.0));
-    if (m.critical_slip >= 1.0)
-      doc.fail("motor.catalogue.breakdown_torque_ratio",
-               "a ratio giving Kloss's critical slip s_n(lambda + sqrt(lambda^2 - 1)) < 1 with s_n = " +
-                   formatNumber(s_n) + " (or give motor.breakdown_torque and the critical slip)",
-               formatNumber(lambda));
-  } else {
-    if (!in.has("motor.breakdown_torque"))
-      doc.failMissing("motor.breakdown_torque",
-                      describeExpected(*findSceneKey("motor.breakdown_torque")) +
-                          " (required unless motor.catalogue is given)");
-    m.breakdown_torque = in.number("motor.breakdown_torque");
-    m.critical_slip = s_kr;
+    klossFromCatalogue(in, im.catalogue, m);
+    return;
   }
+  if (!in.has("motor.breakdown_torque"))
+    doc.failMissing("motor.breakdown_torque", describeExpected(*findSceneKey("motor.breakdown_torque")) +
+                                                  " (required unless motor.catalogue is given)");
+  m.breakdown_torque = in.number("motor.breakdown_torque");
+  m.critical_slip = s_kr;
+}
+
+}  // namespace
+
+void readMotor(const Reader& in, KlossMotor& m, InductionMotor& im) {
+  m.enabled = in.flag("motor.enabled");
+  m.omega_sync = in.number("motor.omega_sync");
+  m.rotor_inertia = in.number("motor.rotor_inertia");
+  readMachine(in, m.omega_sync, im);
+  readKlossPoint(in, im, m);
 }
 
 }  // namespace rollerdyn::scene_detail
