@@ -138,6 +138,32 @@ std::string supplyWords(const SupplyState& s) {
   return buf;
 }
 
+// Why the motor cannot break away: its starting torque under the held supply against the load at
+// the start angle; "" when it can.
+std::string breakAwayFailure(const Scene& sc, const StartUp& r, const std::string& held) {
+  if (r.starting_torque_held_crank > r.load_torque_start) return "";
+  std::string cause = "the motor's starting torque " + fmt("%.4g", r.starting_torque_held_crank) + " N·m at the crank (" +
+                      r.method + held + ", the law's torque at standstill × u·η) is below the load torque " +
+                      fmt("%.4g", r.load_torque_start) + " N·m at the start angle " +
+                      fmt("%.4g", sc.initial.crank_angle * 180 / M_PI) + " deg, so it cannot turn the crank forwards";
+  if (r.starting_torque_rated_crank > r.load_torque_start)
+    cause += " (at the rated supply it would give " + fmt("%.4g", r.starting_torque_rated_crank) + " N·m)";
+  return cause;
+}
+
+// Why the motor cannot run the machine up: its largest torque under the held supply against the
+// load averaged over a revolution; "" when it can. `first`: no cause precedes this one.
+std::string runUpFailure(const StartUp& r, const std::string& held, bool first) {
+  if (r.largest_torque_held_crank > r.load_torque_mean) return "";
+  return std::string(first ? "the motor's" : "; and its") + " largest torque " +
+         fmt("%.4g", r.largest_torque_held_crank) + " N·m at the crank (" + r.method + held +
+         ") is below the load averaged over a revolution, " + fmt("%.4g", r.load_torque_mean) +
+         " N·m, so it cannot run the machine up" +
+         (r.largest_torque_crank <= r.load_torque_mean ? std::string(": no steady running is possible")
+                                                       : " (at the rated supply it would give " +
+                                                             fmt("%.4g", r.largest_torque_crank) + " N·m)");
+}
+
 // Whether the torques allow a start from rest, and the one sentence that says why a drive does not
 // start or run (StartUp::stall_cause).
 void judgeStartFromTorques(const Scene& sc, StartUp& r) {
@@ -150,69 +176,55 @@ void judgeStartFromTorques(const Scene& sc, StartUp& r) {
                                 r.load_torque_mean / r.largest_torque_held_crank);
   const std::string held = r.held_supply_is_rated ? "" : " " + r.held_supply;
   // Every reason that holds, the one that ends the start first (breaking away) first.
-  std::string cause;
-  if (r.starting_torque_held_crank <= r.load_torque_start) {
-    cause = "the motor's starting torque " + fmt("%.4g", r.starting_torque_held_crank) + " N·m at the crank (" + r.method +
-            held + ", the law's torque at standstill × u·η) is below the load torque " + fmt("%.4g", r.load_torque_start) +
-            " N·m at the start angle " + fmt("%.4g", sc.initial.crank_angle * 180 / M_PI) +
-            " deg, so it cannot turn the crank forwards";
-    if (r.starting_torque_rated_crank > r.load_torque_start)
-      cause += " (at the rated supply it would give " + fmt("%.4g", r.starting_torque_rated_crank) + " N·m)";
+  std::string cause = breakAwayFailure(sc, r, held);
+  cause += runUpFailure(r, held, cause.empty());
+  r.can_start_from_rest = cause.empty() ? 1 : 0;
+  r.stall_cause = !cause.empty() ? cause
+                                 : "the motor can break away (" + fmt("%.4g", r.starting_torque_held_crank) +
+                                       " N·m against " + fmt("%.4g", r.load_torque_start) +
+                                       " N·m at the start angle) and carry the mean load (" +
+                                       fmt("%.4g", r.largest_torque_held_crank) + " N·m against " +
+                                       fmt("%.4g", r.load_torque_mean) +
+                                       " N·m), so the load peaks near a dead centre together with the inertia hold "
+                                       "the crank back";
+}
+
+// The largest path any cart travels over rows [begin, end) [m].
+double largestCartPath(const Table& ts, const std::vector<double>& t, std::size_t begin, std::size_t end) {
+  double path = 0;
+  for (int j = 1; ts.has("v_cart_" + std::to_string(j)); ++j) {
+    const std::vector<double> v = ts.column("v_cart_" + std::to_string(j));
+    path = std::max(path, integrate(t, begin, end, [&](std::size_t i) { return std::abs(v[i]); }));
   }
-  if (r.largest_torque_held_crank <= r.load_torque_mean) {
-    cause += std::string(cause.empty() ? "the motor's" : "; and its") + " largest torque " +
-             fmt("%.4g", r.largest_torque_held_crank) + " N·m at the crank (" + r.method + held +
-             ") is below the load averaged over a revolution, " + fmt("%.4g", r.load_torque_mean) +
-             " N·m, so it cannot run the machine up" +
-             (r.largest_torque_crank <= r.load_torque_mean ? std::string(": no steady running is possible")
-                                                           : " (at the rated supply it would give " +
-                                                                 fmt("%.4g", r.largest_torque_crank) + " N·m)");
-  }
-  if (!cause.empty()) {
-    r.can_start_from_rest = 0;
-    r.stall_cause = cause;
-  } else {
-    r.can_start_from_rest = 1;
-    r.stall_cause = "the motor can break away (" + fmt("%.4g", r.starting_torque_held_crank) + " N·m against " +
-                    fmt("%.4g", r.load_torque_start) + " N·m at the start angle) and carry the mean load (" +
-                    fmt("%.4g", r.largest_torque_held_crank) + " N·m against " + fmt("%.4g", r.load_torque_mean) +
-                    " N·m), so the load peaks near a dead centre together with the inertia hold the crank back";
-  }
+  return path;
 }
 
 // After a switch-off within the run: the stopping time and the run-out of the crank and the carts.
 void addStopping(const Scene& sc, const Table& ts, StartUp& r) {
   const std::vector<double> t = ts.column("t"), w = ts.column("omega_crank");
-  const double u = sc.reducer.ratio;
   r.stopping_time = r.run_out_revolutions = r.run_out_cart_path = kNaN;
-  if (std::isfinite(r.t_off) && r.t_off <= t.back()) {
-    const double limit = StallDetector::kSpeedFraction * sc.motor.omega_sync / u;
-    const std::size_t i_off = firstRowAtOrAfter(t, r.t_off);
-    const double t_restart = sc.motor_stop.t_restart;
-    std::size_t i_stop = t.size() - 1;
-    for (std::size_t i = i_off; i < t.size() && t[i] < t_restart; ++i) {
-      i_stop = i;
-      if (std::abs(w[i]) <= limit) {
-        r.stopping_time = t[i] - r.t_off;
-        break;
-      }
+  if (!(std::isfinite(r.t_off) && r.t_off <= t.back())) return;
+  const double limit = StallDetector::kSpeedFraction * sc.motor.omega_sync / sc.reducer.ratio;
+  const std::size_t i_off = firstRowAtOrAfter(t, r.t_off);
+  const double t_restart = sc.motor_stop.t_restart;
+  std::size_t i_stop = t.size() - 1;
+  for (std::size_t i = i_off; i < t.size() && t[i] < t_restart; ++i) {
+    i_stop = i;
+    if (std::abs(w[i]) <= limit) {
+      r.stopping_time = t[i] - r.t_off;
+      break;
     }
-    if (ts.has("phi_crank")) {
-      const std::vector<double> phi = ts.column("phi_crank");
-      r.run_out_revolutions = std::abs(phi[i_stop] - phi[i_off]) / (2 * M_PI);
-    }
-    double path = 0;
-    for (int j = 1; ts.has("v_cart_" + std::to_string(j)); ++j) {
-      const std::vector<double> v = ts.column("v_cart_" + std::to_string(j));
-      path = std::max(path, integrate(t, i_off, i_stop + 1, [&](std::size_t i) { return std::abs(v[i]); }));
-    }
-    r.run_out_cart_path = path;
-    if (std::isnan(r.stopping_time))
-      r.notes.push_back(std::isfinite(t_restart) && t_restart <= t.back()
-                            ? "The motor was switched on again at t = " + fmt("%.4g", t_restart) +
-                                  " s before the machine came to rest (a restart at speed); the run-out is counted up to then."
-                            : "The machine had not come to rest when the run ended; the run-out is counted up to the end.");
   }
+  if (ts.has("phi_crank")) {
+    const std::vector<double> phi = ts.column("phi_crank");
+    r.run_out_revolutions = std::abs(phi[i_stop] - phi[i_off]) / (2 * M_PI);
+  }
+  r.run_out_cart_path = largestCartPath(ts, t, i_off, i_stop + 1);
+  if (std::isnan(r.stopping_time))
+    r.notes.push_back(std::isfinite(t_restart) && t_restart <= t.back()
+                          ? "The motor was switched on again at t = " + fmt("%.4g", t_restart) +
+                                " s before the machine came to rest (a restart at speed); the run-out is counted up to then."
+                          : "The machine had not come to rest when the run ended; the run-out is counted up to the end.");
 }
 
 // A star-delta changeover by speed that the motor never reached: its keys changed nothing in this
