@@ -81,9 +81,8 @@ std::string afterTheRunsEnd(const std::string& key, const Scene& sc) {
   return "";
 }
 
-// Keys another model reads, or that set results this run does not compute (reactions, a bearing's
-// share).
-std::string whyNotThisModel(const std::string& key, const Scene& sc, const std::string& model) {
+// Keys the other model reads.
+std::string whyNotThisModel(const std::string& key, const std::string& model) {
   if (model == "multibody" && startsWith(key, "reduced."))
     return "it sets the reduced-mass model (run it with --model reduced, or compare)";
   if (model == "reduced") {
@@ -94,6 +93,11 @@ std::string whyNotThisModel(const std::string& key, const Scene& sc, const std::
     if (key == "sizing.bearing_rating.crank_pin" || key == "sizing.bearing_rating.main_bearing")
       return "the reduced model computes no crank-pin or main-bearing forces (run the multibody model for their lives)";
   }
+  return "";
+}
+
+// Keys that set results this run does not compute (reactions, a bearing's share).
+std::string whyNotTheseResults(const std::string& key, const Scene& sc, const std::string& model) {
   // The ratings turn joint loads into lives; without reactions no joint is loaded (a rating names
   // the joint whose life it gives, and that joint's loads are the reactions).
   if (startsWith(key, "sizing.bearing_rating.") && !sc.simulation.reactions)
@@ -112,40 +116,50 @@ std::string whyNotThisModel(const std::string& key, const Scene& sc, const std::
   return "";
 }
 
+// The keys a law on the Kloss curve does not read: the machine's circuit and currents, and f_n
+// unless a converter or the dynamic law's default T_e reads it.
+std::string whyNotTheKlossLaw(const std::string& key, const Scene& sc) {
+  if (startsWith(key, "motor.circuit."))
+    return "it sets the equivalent circuit (motor.model: " + motorModelWords(false, "or") + "), not the Kloss law";
+  // f_n: the speed of a Kloss law is motor.omega_sync; f_n only turns a converter's frequencies
+  // into ratios and gives the dynamic Kloss law its default T_e = 1/(2π·f_n·s_kr).
+  if (key == "motor.frequency" && sc.motor_start.method != StartMethod::FrequencyConverter &&
+      !(sc.induction.model == MotorModel::KlossDynamic && !(sc.induction.torque_time_constant > 0)))
+    return "a Kloss law's speed is motor.omega_sync; f_n only scales a frequency converter's frequencies and "
+           "sets the dynamic Kloss law's default T_e = 1/(2π·f_n·s_kr)";
+  if (isCurrentData(key))
+    return "the Kloss law has no stator current: it is the equivalent circuit's data (motor.model " +
+           motorModelWords(false, "or") + ", and `rollerdyn motor`)";
+  return "";
+}
+
+// The Kloss keys a machine law (circuit, park) does not read: it has its own breakdown point.
+std::string whyNotTheMachineLaw(const std::string& key, const Scene& sc) {
+  if (isKlossSlip(key) &&
+      !(key == "motor.overload_ratio" && nominalTorqueSource(sc) == NominalTorqueSource::OverloadRatio))
+    return "it sets the Kloss law's critical slip; the equivalent circuit has its own breakdown point (from "
+           "motor.catalogue or motor.circuit)";
+  // M_kr: every scale that reads the motor's breakdown torque reads the law's own under a
+  // catalogue law (motor/BreakdownTorque.h); only M_n = M_kr/λ still reads the key.
+  if (key == "motor.breakdown_torque" && nominalTorqueSource(sc) != NominalTorqueSource::OverloadRatio)
+    return "it is the Kloss law's breakdown torque M_kr; the equivalent circuit has its own breakdown point (from "
+           "motor.catalogue or motor.circuit), which the run and the sizing use";
+  return "";
+}
+
 // The reducer's and the motor's keys the chosen laws do not read.
 std::string whyNotTheseLaws(const std::string& key, const Scene& sc) {
-  const bool kloss = hasKlossCurve(sc.induction.model);
   if (key == "reducer.efficiency_reverse" && sc.reducer.losses == ReducerLossModel::Papers)
     return "the papers' constant η (reducer.losses: papers) multiplies the motor torque by reducer.efficiency "
            "whichever way the power flows; set reducer.losses: power_flow for a reverse efficiency";
   if (key == "motor.connection")
     return "the laws use the equivalent star's per-phase values either way; a star-delta start is set by "
            "motor.start.method (the connection shows only in `rollerdyn motor`)";
-  if (kloss && startsWith(key, "motor.circuit."))
-    return "it sets the equivalent circuit (motor.model: " + motorModelWords(false, "or") + "), not the Kloss law";
-  // f_n: the speed of a Kloss law is motor.omega_sync; f_n only turns a converter's frequencies
-  // into ratios and gives the dynamic Kloss law its default T_e = 1/(2π·f_n·s_kr).
-  if (key == "motor.frequency" && kloss && sc.motor_start.method != StartMethod::FrequencyConverter &&
-      !(sc.induction.model == MotorModel::KlossDynamic && !(sc.induction.torque_time_constant > 0)))
-    return "a Kloss law's speed is motor.omega_sync; f_n only scales a frequency converter's frequencies and "
-           "sets the dynamic Kloss law's default T_e = 1/(2π·f_n·s_kr)";
-  if (kloss && isCurrentData(key))
-    return "the Kloss law has no stator current: it is the equivalent circuit's data (motor.model " +
-           motorModelWords(false, "or") + ", and `rollerdyn motor`)";
-  if (!kloss && isKlossSlip(key) &&
-      !(key == "motor.overload_ratio" && nominalTorqueSource(sc) == NominalTorqueSource::OverloadRatio))
-    return "it sets the Kloss law's critical slip; the equivalent circuit has its own breakdown point (from "
-           "motor.catalogue or motor.circuit)";
-  // M_kr: every scale that reads the motor's breakdown torque reads the law's own under a
-  // catalogue law (motor/BreakdownTorque.h); only M_n = M_kr/λ still reads the key.
-  if (!kloss && key == "motor.breakdown_torque" && nominalTorqueSource(sc) != NominalTorqueSource::OverloadRatio)
-    return "it is the Kloss law's breakdown torque M_kr; the equivalent circuit has its own breakdown point (from "
-           "motor.catalogue or motor.circuit), which the run and the sizing use";
-  return "";
+  return hasKlossCurve(sc.induction.model) ? whyNotTheKlossLaw(key, sc) : whyNotTheMachineLaw(key, sc);
 }
 
-// The machine's keys that this scene's layout leaves without a force or a motion to act on.
-std::string whyNotThisMachine(const std::string& key, const Scene& sc, const std::string& model) {
+// The drive train's keys that this scene's layout leaves without a motion to act on.
+std::string whyNotThisDriveTrain(const std::string& key, const Scene& sc) {
   if (key == "reducer.backlash" && sc.coupling.type == CouplingType::Rigid)
     return "the coupling is rigid (coupling.type: rigid): motor and crank turn together, so the teeth never part";
   if (key == "reducer.backlash" && sc.reducer.backlash == 0.0)
@@ -155,6 +169,11 @@ std::string whyNotThisMachine(const std::string& key, const Scene& sc, const std
            "cranks to place";
   if (key == "initial.twist" && sc.coupling.type == CouplingType::Rigid)
     return "the coupling is rigid (coupling.type: rigid): motor and crank turn together, with no twist between them";
+  return "";
+}
+
+// The carts' geometry keys that this scene's loads leave without a force to act on.
+std::string whyNotThisCartGeometry(const std::string& key, const Scene& sc, const std::string& model) {
   if (isCartMomentArm(key) && !guideSplitActs(sc))
     return "it is an arm in the cart's moment balance, which splits the guide normal between the two guide rollers; "
            "this run uses that split nowhere: there is no guide friction (loads.guide_friction.coefficient: 0) "
@@ -175,8 +194,9 @@ std::string whyNotThisMachine(const std::string& key, const Scene& sc, const std
 }
 
 std::string why(const std::string& key, const Scene& sc, const std::string& model) {
-  for (const std::string& reason : {whyNotThisModel(key, sc, model), whyNotTheseLaws(key, sc), afterTheRunsEnd(key, sc),
-                                    whyNotThisMachine(key, sc, model)})
+  for (const std::string& reason :
+       {whyNotThisModel(key, model), whyNotTheseResults(key, sc, model), whyNotTheseLaws(key, sc),
+        afterTheRunsEnd(key, sc), whyNotThisDriveTrain(key, sc), whyNotThisCartGeometry(key, sc, model)})
     if (!reason.empty()) return reason;
   return "";
 }
