@@ -53,15 +53,41 @@ std::optional<FitOrigin> sceneFitOrigin(const Scene& scene) {
   return fitSceneCatalogue(scene, scene.induction.catalogue.cages).origin;
 }
 
+namespace {
+// Each field by a structured binding, so a field added to the struct and left off here does not
+// compile (the key must hold the whole motor description).
+void addCircuit(ExactKey& key, const MotorCircuit& circuit) {
+  const auto& [R_s, L_sigma_s, L_m, R_r, L_sigma_r, R_r2, L_sigma_r2] = circuit;
+  key.add("circuit.R_s", R_s)
+      .add("circuit.L_sigma_s", L_sigma_s)
+      .add("circuit.L_m", L_m)
+      .add("circuit.R_r", R_r)
+      .add("circuit.L_sigma_r", L_sigma_r)
+      .add("circuit.R_r2", R_r2)
+      .add("circuit.L_sigma_r2", L_sigma_r2);
+}
+
+void addCatalogue(ExactKey& key, const MotorCatalogue& catalogue) {
+  const auto& [power, omega_nominal, current, power_factor, efficiency, starting_torque_ratio, breakdown_torque_ratio,
+               starting_current_ratio, cages] = catalogue;
+  key.add("catalogue.power", power)
+      .add("catalogue.omega_nominal", omega_nominal)
+      .add("catalogue.current", current)
+      .add("catalogue.power_factor", power_factor)
+      .add("catalogue.efficiency", efficiency)
+      .add("catalogue.starting_torque_ratio", starting_torque_ratio)
+      .add("catalogue.breakdown_torque_ratio", breakdown_torque_ratio)
+      .add("catalogue.starting_current_ratio", starting_current_ratio)
+      .add("catalogue.cages", cages);
+}
+}  // namespace
+
 std::string motorLawKey(const Scene& scene) {
   const auto& [enabled, omega_sync, breakdown_torque, critical_slip, rotor_inertia] = scene.motor;
   const auto& [model, torque_time_constant, voltage, frequency, connection, pole_pairs, circuit, catalogue] =
       scene.induction;
-  const auto& [R_s, L_sigma_s, L_m, R_r, L_sigma_r, R_r2, L_sigma_r2] = circuit;
-  const auto& [power, omega_nominal, current, power_factor, efficiency, starting_torque_ratio, breakdown_torque_ratio,
-               starting_current_ratio, cages] = catalogue;
-  return ExactKey()
-      .add("enabled", enabled)
+  ExactKey key;
+  key.add("enabled", enabled)
       .add("omega_sync", omega_sync)
       .add("breakdown_torque", breakdown_torque)
       .add("critical_slip", critical_slip)
@@ -71,24 +97,10 @@ std::string motorLawKey(const Scene& scene) {
       .add("voltage", voltage)
       .add("frequency", frequency)
       .add("connection", connection)
-      .add("pole_pairs", pole_pairs)
-      .add("circuit.R_s", R_s)
-      .add("circuit.L_sigma_s", L_sigma_s)
-      .add("circuit.L_m", L_m)
-      .add("circuit.R_r", R_r)
-      .add("circuit.L_sigma_r", L_sigma_r)
-      .add("circuit.R_r2", R_r2)
-      .add("circuit.L_sigma_r2", L_sigma_r2)
-      .add("catalogue.power", power)
-      .add("catalogue.omega_nominal", omega_nominal)
-      .add("catalogue.current", current)
-      .add("catalogue.power_factor", power_factor)
-      .add("catalogue.efficiency", efficiency)
-      .add("catalogue.starting_torque_ratio", starting_torque_ratio)
-      .add("catalogue.breakdown_torque_ratio", breakdown_torque_ratio)
-      .add("catalogue.starting_current_ratio", starting_current_ratio)
-      .add("catalogue.cages", cages)
-      .text();
+      .add("pole_pairs", pole_pairs);
+  addCircuit(key, circuit);
+  addCatalogue(key, catalogue);
+  return key.text();
 }
 
 InductionMachineParameters sceneMachine(const Scene& scene) {

@@ -24,6 +24,24 @@ const char* const kCatalogueValueKeys[] = {
 const char* const kCircuitKeys[] = {"motor.circuit.R_s", "motor.circuit.L_sigma_s", "motor.circuit.L_m",
                                     "motor.circuit.R_r", "motor.circuit.L_sigma_r"};
 
+// The catalogue's rated speed below ω0, and a single cage's breakdown torque above its starting
+// torque (its torque at standstill is always below its maximum).
+void checkCatalogue(const Reader& in, const MotorCatalogue& c, double omega0) {
+  if (c.omega_nominal >= omega0) {
+    const std::string w0 = formatNumber(omega0);
+    if (blameSecond(in.doc(), "motor.catalogue.omega_nominal", "motor.omega_sync"))
+      in.doc().fail("motor.omega_sync", "a number > motor.catalogue.omega_nominal = " +
+                                            formatNumber(c.omega_nominal) + " [rad/s]", w0);
+    in.doc().fail("motor.catalogue.omega_nominal", "a number in (0, omega_sync = " + w0 + ") [rad/s]",
+                  formatNumber(c.omega_nominal));
+  }
+  if (c.breakdown_torque_ratio <= c.starting_torque_ratio && c.cages == 1) {
+    in.doc().fail("motor.catalogue.breakdown_torque_ratio",
+                  "a ratio above starting_torque_ratio = " + formatNumber(c.starting_torque_ratio),
+                  formatNumber(c.breakdown_torque_ratio));
+  }
+}
+
 // All catalogue values, or none: a fit to part of a data sheet would be underdetermined.
 MotorCatalogue readCatalogue(const Reader& in, double omega0) {
   MotorCatalogue c;
@@ -43,20 +61,7 @@ MotorCatalogue readCatalogue(const Reader& in, double omega0) {
   c.starting_torque_ratio = in.requiredNumber("motor.catalogue.starting_torque_ratio", why);
   c.breakdown_torque_ratio = in.requiredNumber("motor.catalogue.breakdown_torque_ratio", why);
   c.starting_current_ratio = in.requiredNumber("motor.catalogue.starting_current_ratio", why);
-  if (c.omega_nominal >= omega0) {
-    const std::string w0 = formatNumber(omega0);
-    if (blameSecond(in.doc(), "motor.catalogue.omega_nominal", "motor.omega_sync"))
-      in.doc().fail("motor.omega_sync", "a number > motor.catalogue.omega_nominal = " +
-                                            formatNumber(c.omega_nominal) + " [rad/s]", w0);
-    in.doc().fail("motor.catalogue.omega_nominal", "a number in (0, omega_sync = " + w0 + ") [rad/s]",
-                  formatNumber(c.omega_nominal));
-  }
-  if (c.breakdown_torque_ratio <= c.starting_torque_ratio && c.cages == 1) {
-    // A single cage's torque at standstill is always below its maximum.
-    in.doc().fail("motor.catalogue.breakdown_torque_ratio",
-                  "a ratio above starting_torque_ratio = " + formatNumber(c.starting_torque_ratio),
-                  formatNumber(c.breakdown_torque_ratio));
-  }
+  checkCatalogue(in, c, omega0);
   return c;
 }
 
