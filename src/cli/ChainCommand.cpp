@@ -26,12 +26,10 @@ struct ChainArgs {
   std::string out_dir = "out/two-rotor-chain";
 };
 
-int runChain(const ChainArgs& a) {
-  prepareOutputDir(a.out_dir);  // before the run: a bad --out fails now
-  const TwoRotorChainParams& p = a.p;
-  const ChainComparison c = compareTwoRotorChain(p);
+// chain.json: the parameters, the derived values, the harmonic amplitudes as printed and
+// corrected, the last period's swing and mean, the errors of both closed forms.
+nlohmann::json chainJson(const TwoRotorChainParams& p, const ChainComparison& c) {
   const TwoRotorChainDerived& d = c.derived;
-  writeCsvAtomic(a.out_dir + "/chain.csv", c.table);
   auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
   nlohmann::json j;
   j["parameters"] = {{"J1", p.J1}, {"J2", p.J2}, {"k", p.k}, {"b", p.b}, {"M1", p.M1}, {"alpha", p.alpha},
@@ -49,28 +47,34 @@ int runChain(const ChainArgs& a) {
                              {"max_err_printed", c.max_err_printed_steady}};
   j["full_run"] = {{"max_err_corrected", c.max_err_corrected_full}, {"max_err_printed", num(c.max_err_printed_full)}};
   j["warnings"] = c.resonance_warnings;
-  writeFileAtomic(a.out_dir + "/chain.json", j.dump(2) + "\n");
-  if (gnuplotAvailable()) {
-    PlotSpec spec;
-    spec.title = "Dyomin (two rotors): twist of the chain, last three periods";
-    spec.xlabel = "t [s]";
-    spec.ylabel = "psi = phi1 - phi2 [rad]";
-    const double t0 = d.t_end - 3 * 2 * M_PI / p.omega;
-    const char* cols[] = {"psi_sim", "psi_corrected", "psi_printed"};
-    const char* titles[] = {"simulation (Simbody)", "closed form, corrected", "closed form as printed (26)"};
-    for (int k = 0; k < 3; ++k) {
-      PlotSeries s;
-      s.title = titles[k];
-      const int it = c.table.index("t"), iy = c.table.index(cols[k]);
-      for (const auto& row : c.table.rows)
-        if (row[it] >= t0) {
-          s.x.push_back(row[it]);
-          s.y.push_back(row[iy]);
-        }
-      spec.series.push_back(s);
-    }
-    renderPlot(spec, a.out_dir + "/chain_twist");
+  return j;
+}
+
+// The chain's twist over the last three periods: the simulation and both closed forms.
+void drawChainTwist(const TwoRotorChainParams& p, const ChainComparison& c, const std::string& stem) {
+  PlotSpec spec;
+  spec.title = "Dyomin (two rotors): twist of the chain, last three periods";
+  spec.xlabel = "t [s]";
+  spec.ylabel = "psi = phi1 - phi2 [rad]";
+  const double t0 = c.derived.t_end - 3 * 2 * M_PI / p.omega;
+  const char* cols[] = {"psi_sim", "psi_corrected", "psi_printed"};
+  const char* titles[] = {"simulation (Simbody)", "closed form, corrected", "closed form as printed (26)"};
+  for (int k = 0; k < 3; ++k) {
+    PlotSeries s;
+    s.title = titles[k];
+    const int it = c.table.index("t"), iy = c.table.index(cols[k]);
+    for (const auto& row : c.table.rows)
+      if (row[it] >= t0) {
+        s.x.push_back(row[it]);
+        s.y.push_back(row[iy]);
+      }
+    spec.series.push_back(s);
   }
+  renderPlot(spec, stem);
+}
+
+void printChain(const TwoRotorChainParams& p, const ChainComparison& c) {
+  const TwoRotorChainDerived& d = c.derived;
   std::printf("two rotors on an elastic chain (Dyomin (two rotors)): delta1 = %.4g 1/s, p0 = %.4g rad/s, p0/omega = %.4g\n",
               d.delta1, d.p0, d.p0 / p.omega);
   std::printf("harmonic amplitudes [rad]   n=1        n=2        n=3        n=5\n");
@@ -83,6 +87,15 @@ int runChain(const ChainArgs& a) {
   std::printf("mean twist [rad]: simulation %.6e, Phi0 (eq. (11)) %.6e\n", c.mean_sim, c.mean_closed);
   std::printf("max |psi_sim - psi_closed| [rad]: corrected %.3e (steady) %.3e (whole run); printed %.3e (steady)\n",
               c.max_err_corrected_steady, c.max_err_corrected_full, c.max_err_printed_steady);
+}
+
+int runChain(const ChainArgs& a) {
+  prepareOutputDir(a.out_dir);  // before the run: a bad --out fails now
+  const ChainComparison c = compareTwoRotorChain(a.p);
+  writeCsvAtomic(a.out_dir + "/chain.csv", c.table);
+  writeFileAtomic(a.out_dir + "/chain.json", chainJson(a.p, c).dump(2) + "\n");
+  if (gnuplotAvailable()) drawChainTwist(a.p, c, a.out_dir + "/chain_twist");
+  printChain(a.p, c);
   for (const std::string& w : c.resonance_warnings) std::cerr << "rollerdyn: warning: resonance: " << w << "\n";
   std::cout << "outputs in " << a.out_dir << "/\n";
   return 0;
