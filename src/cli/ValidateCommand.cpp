@@ -56,38 +56,23 @@ int runModesChecks(const std::string& out_dir, const std::string& model_dir) {
   return m.failed();
 }
 
-int runValidate(bool quick, const std::string& out_dir, bool modes_only) {
-  using namespace rollerdyn::validation;
-  prepareOutputDir(out_dir);  // before the suite: a bad --out fails now
-  const std::string top = repositoryDir();
-  const std::string prefix = top == "." ? "" : top + "/";  // as before from the top folder
-  if (modes_only) return runModesChecks(out_dir, prefix + "model") == 0 ? 0 : 1;
-  ValidationOptions o;
-  o.quick = quick;
-  o.model_dir = prefix + "model";
-  o.published_dir = prefix + "validation/published";
-  o.items = validationItems(out_dir);
-  o.interrupt = &g_interrupted;
-  const std::clock_t c0 = std::clock();
-  o.log = [c0](const std::string& line) {
-    std::cerr << "[" << int(double(std::clock() - c0) / CLOCKS_PER_SEC) << " s cpu] " << line << '\n';
-  };
-  const ValidationResults results = runValidation(o);
-  const ValidationReport report = buildValidationReport(results, "figures");
-
-  int figures = 0;
-  if (gnuplotAvailable()) {
-    for (const ReportFigure& f : report.figures) {
-      renderPlot(f.spec, out_dir + "/figures/" + f.name, /*png=*/true, /*svg=*/false);
-      ++figures;
-    }
-  } else {
+// The report's figures (PNG) when gnuplot is there; how many were drawn.
+int drawValidationFigures(const validation::ValidationReport& report, const std::string& out_dir) {
+  if (!gnuplotAvailable()) {
     std::cerr << "rollerdyn: gnuplot not found (Debian package gnuplot-nox): report written without figures\n";
+    return 0;
   }
-  for (const auto& [name, table] : report.tables) writeCsvAtomic(out_dir + "/results/" + name, table);
-  writeFileAtomic(out_dir + "/results.json", report.results.dump(2) + "\n");
-  writeFileAtomic(out_dir + "/report.md", report.markdown);
+  int figures = 0;
+  for (const validation::ReportFigure& f : report.figures) {
+    renderPlot(f.spec, out_dir + "/figures/" + f.name, /*png=*/true, /*svg=*/false);
+    ++figures;
+  }
+  return figures;
+}
 
+// The console's lines of the cases of carts of their own and of the induction-motor claims.
+void printCartAndMotorClaims(const validation::ValidationResults& results) {
+  using validation::Finding;
   for (const auto& c : results.per_cart) {
     const bool fails = c.verdict != Finding::Verdict::Holds;
     std::cout << "carts of their own " << c.label << (fails ? " FAILS: " : " holds: ") << c.description << '\n'
@@ -99,6 +84,35 @@ int runValidate(bool quick, const std::string& out_dir, bool modes_only) {
               << c.title << '\n';
     for (const auto& l : c.lines) std::cout << "    " << l << '\n';
   }
+}
+
+validation::ValidationOptions validationOptions(bool quick, const std::string& out_dir, const std::string& prefix) {
+  validation::ValidationOptions o;
+  o.quick = quick;
+  o.model_dir = prefix + "model";
+  o.published_dir = prefix + "validation/published";
+  o.items = validationItems(out_dir);
+  o.interrupt = &g_interrupted;
+  const std::clock_t c0 = std::clock();
+  o.log = [c0](const std::string& line) {
+    std::cerr << "[" << int(double(std::clock() - c0) / CLOCKS_PER_SEC) << " s cpu] " << line << '\n';
+  };
+  return o;
+}
+
+int runValidate(bool quick, const std::string& out_dir, bool modes_only) {
+  using namespace rollerdyn::validation;
+  prepareOutputDir(out_dir);  // before the suite: a bad --out fails now
+  const std::string top = repositoryDir();
+  const std::string prefix = top == "." ? "" : top + "/";  // as before from the top folder
+  if (modes_only) return runModesChecks(out_dir, prefix + "model") == 0 ? 0 : 1;
+  const ValidationResults results = runValidation(validationOptions(quick, out_dir, prefix));
+  const ValidationReport report = buildValidationReport(results, "figures");
+  const int figures = drawValidationFigures(report, out_dir);
+  for (const auto& [name, table] : report.tables) writeCsvAtomic(out_dir + "/results/" + name, table);
+  writeFileAtomic(out_dir + "/results.json", report.results.dump(2) + "\n");
+  writeFileAtomic(out_dir + "/report.md", report.markdown);
+  printCartAndMotorClaims(results);
   std::cout << "validation report: " << out_dir << "/report.md (" << figures << " figures; CPU " << results.cpu_seconds
             << " s)\n"
             << validationSummary(results, report);
