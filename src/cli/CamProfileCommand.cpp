@@ -40,6 +40,52 @@ nlohmann::json responseJson(const DriveResponse& r) {
           {"drive_force_abs_peak", r.force_abs_peak}};
 }
 
+// The motion law x, v, a, jerk against the cam angle (eq. (29)-(34)).
+void drawCamMotionLaw(const Table& t, const std::string& stem) {
+  PlotSpec law;
+  law.title = "Loveikin and Pochka (cam drive paper) motion law at constant crank speed (eq. (29)-(34))";
+  law.xlabel = "cam angle [deg]";
+  law.ylabel = "x [m], v [m/s], a [m/s²], jerk [m/s³]";
+  const char* names[] = {"x", "v", "a", "jerk"};
+  for (const char* n : names) {
+    PlotSeries s;
+    s.title = n;
+    s.x = t.column("theta_deg");
+    s.y = t.column(n);
+    law.series.push_back(s);
+  }
+  renderPlot(law, stem);
+}
+
+// The cam's shape ρ(θ) in the cam frame (eq. (38)-(43)).
+void drawCamShape(const Table& t, const std::string& stem) {
+  PlotSpec shape;
+  shape.title = "cam profile rho(theta) = b/2 + x(theta) (eq. (38)-(43)), cam frame";
+  shape.xlabel = "X [m]";
+  shape.ylabel = "Y [m]";
+  shape.width = shape.height = 700;
+  PlotSeries s;
+  s.title = "profile";
+  const auto th = t.column("theta"), rho = t.column("rho");
+  for (std::size_t i = 0; i < th.size(); ++i) {
+    s.x.push_back(rho[i] * std::cos(-th[i]));
+    s.y.push_back(rho[i] * std::sin(-th[i]));
+  }
+  shape.series.push_back(s);
+  renderPlot(shape, stem);
+}
+
+// The cam-driven cart against a crank-driven one of equal stroke and cycle time.
+void writeCamVsCrank(const CamArgs& a, const std::string& out) {
+  const CamVsCrank c = compareCamWithCrank(a.scene.scene_path, a.scene.overrides, a.model);
+  writeFileAtomic(out + "/cam_vs_crank.csv", camVsCrankCsv(c));
+  nlohmann::json j = {{"scene", a.scene.scene_path}, {"overrides", a.scene.overrides}, {"model", c.model},
+                      {"note", c.note}, {"cam", responseJson(c.cam)}, {"crank", responseJson(c.crank)}};
+  writeFileAtomic(out + "/cam_vs_crank.json", j.dump(2) + "\n");
+  std::cout << "cam vs crank (" << c.model << " model, steady state):\n" << camVsCrankCsv(c);
+  if (!c.note.empty()) std::cout << "note: " << c.note << "\n";
+}
+
 int runCamProfile(const CamArgs& a) {
   const Scene scene = parseSceneFile(a.scene.scene_path, a.scene.overrides);
   const std::string out = a.out_dir.empty() ? defaultOutDir(scene.name) + "/cam" : a.out_dir;
@@ -51,45 +97,12 @@ int runCamProfile(const CamArgs& a) {
               "omega = %.4g rad/s\n",
               scene.name.c_str(), scene.cam.stroke, scene.cam.pusher_distance, M_PI / w, w);
   if (gnuplotAvailable()) {
-    PlotSpec law;
-    law.title = "Loveikin and Pochka (cam drive paper) motion law at constant crank speed (eq. (29)-(34))";
-    law.xlabel = "cam angle [deg]";
-    law.ylabel = "x [m], v [m/s], a [m/s²], jerk [m/s³]";
-    const char* names[] = {"x", "v", "a", "jerk"};
-    for (const char* n : names) {
-      PlotSeries s;
-      s.title = n;
-      s.x = t.column("theta_deg");
-      s.y = t.column(n);
-      law.series.push_back(s);
-    }
-    renderPlot(law, out + "/cam_motion_law");
-    PlotSpec shape;
-    shape.title = "cam profile rho(theta) = b/2 + x(theta) (eq. (38)-(43)), cam frame";
-    shape.xlabel = "X [m]";
-    shape.ylabel = "Y [m]";
-    shape.width = shape.height = 700;
-    PlotSeries s;
-    s.title = "profile";
-    const auto th = t.column("theta"), rho = t.column("rho");
-    for (std::size_t i = 0; i < th.size(); ++i) {
-      s.x.push_back(rho[i] * std::cos(-th[i]));
-      s.y.push_back(rho[i] * std::sin(-th[i]));
-    }
-    shape.series.push_back(s);
-    renderPlot(shape, out + "/cam_profile");
+    drawCamMotionLaw(t, out + "/cam_motion_law");
+    drawCamShape(t, out + "/cam_profile");
   } else {
     std::cout << "gnuplot not found: no figures\n";
   }
-  if (a.compare) {
-    const CamVsCrank c = compareCamWithCrank(a.scene.scene_path, a.scene.overrides, a.model);
-    writeFileAtomic(out + "/cam_vs_crank.csv", camVsCrankCsv(c));
-    nlohmann::json j = {{"scene", a.scene.scene_path}, {"overrides", a.scene.overrides}, {"model", c.model},
-                        {"note", c.note}, {"cam", responseJson(c.cam)}, {"crank", responseJson(c.crank)}};
-    writeFileAtomic(out + "/cam_vs_crank.json", j.dump(2) + "\n");
-    std::cout << "cam vs crank (" << c.model << " model, steady state):\n" << camVsCrankCsv(c);
-    if (!c.note.empty()) std::cout << "note: " << c.note << "\n";
-  }
+  if (a.compare) writeCamVsCrank(a, out);
   std::cout << "outputs in " << out << "/\n";
   return 0;
 }
