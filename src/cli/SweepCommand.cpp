@@ -42,6 +42,17 @@ struct SweepArgs {
   bool dispatcher_only = false;     // --dispatcher-only: under MPI, rank 0 computes no points
 };
 
+// The Latin hypercube's designs of --lhs N, one --range after each --param.
+std::vector<std::vector<std::string>> lhsDesigns(const SweepArgs& a) {
+  if (a.params.size() != a.ranges.size())
+    throw std::invalid_argument("sweep: --lhs needs one --range a:b after each --param (" +
+                                std::to_string(a.params.size()) + " --param, " + std::to_string(a.ranges.size()) +
+                                " --range)");
+  std::vector<SampleRange> ranges;
+  for (std::size_t i = 0; i < a.params.size(); ++i) ranges.push_back(parseSampleRange(a.params[i], a.ranges[i]));
+  return latinHypercube(ranges, a.lhs, a.seed);
+}
+
 // The parameters (and explicit designs) from --values, --values-file or --lhs/--range.
 void parseDesignOptions(const SweepArgs& a, SweepOptions& o) {
   const int sources = int(!a.values.empty()) + int(!a.values_file.empty()) + int(a.lhs > 0);
@@ -57,17 +68,7 @@ void parseDesignOptions(const SweepArgs& a, SweepOptions& o) {
     for (std::size_t i = 0; i < a.params.size(); ++i) o.params.push_back(parseSweepValues(a.params[i], a.values[i]));
     return;
   }
-  if (!a.values_file.empty()) {
-    o.designs = readValuesFile(a.values_file, a.params);
-  } else {
-    if (a.params.size() != a.ranges.size())
-      throw std::invalid_argument("sweep: --lhs needs one --range a:b after each --param (" +
-                                  std::to_string(a.params.size()) + " --param, " + std::to_string(a.ranges.size()) +
-                                  " --range)");
-    std::vector<SampleRange> ranges;
-    for (std::size_t i = 0; i < a.params.size(); ++i) ranges.push_back(parseSampleRange(a.params[i], a.ranges[i]));
-    o.designs = latinHypercube(ranges, a.lhs, a.seed);
-  }
+  o.designs = !a.values_file.empty() ? readValuesFile(a.values_file, a.params) : lhsDesigns(a);
   o.params = designParameters(a.params, o.designs);
 }
 
@@ -94,35 +95,46 @@ std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done
   return s;
 }
 
+// The values of parameter k the sweep runs: its grid values, or its column of the designs.
+std::vector<std::string> sweptTexts(const SweepOptions& o, std::size_t k) {
+  if (o.designs.empty()) return o.params[k].texts;
+  std::vector<std::string> texts;
+  for (const auto& d : o.designs)
+    if (k < d.size()) texts.push_back(d[k]);
+  return texts;
+}
+
+// The values of `key` whose base scene draws a plausibility warning on the key itself (at most
+// 200: enough to say it); `first`: the first such warning.
+std::vector<std::string> implausibleValues(const SweepOptions& o, const std::string& key,
+                                           const std::vector<std::string>& texts, std::string& first) {
+  std::vector<std::string> flagged;
+  for (const std::string& text : texts) {
+    if (flagged.size() >= 200) break;
+    std::vector<std::string> overrides = o.base_overrides;
+    overrides.push_back(key + "=" + text);
+    try {
+      for (const std::string& w : plausibilityWarnings(parseSceneFile(o.scene_path, overrides)))
+        if (w.rfind(key, 0) == 0) {
+          if (first.empty()) first = w;
+          flagged.push_back(text);
+          break;
+        }
+    } catch (const std::exception&) {
+      // a value the scene rejects: the run of that point says so
+    }
+  }
+  return flagged;
+}
+
 // The plausibility warnings of the swept values themselves (an offset swept in radians, a length
 // in millimetres): each value of each parameter on the base scene, one line per parameter naming
 // the values concerned. simulate warns of a single such value; a sweep ran them silently.
 void warnImplausibleValues(const SweepOptions& o) {
   for (std::size_t k = 0; k < o.params.size(); ++k) {
     const std::string& key = o.params[k].key;
-    std::vector<std::string> texts = o.params[k].texts;
-    if (!o.designs.empty()) {
-      texts.clear();
-      for (const auto& d : o.designs)
-        if (k < d.size()) texts.push_back(d[k]);
-    }
-    std::vector<std::string> flagged;
     std::string first;
-    for (const std::string& text : texts) {
-      if (flagged.size() >= 200) break;  // enough to say it
-      std::vector<std::string> overrides = o.base_overrides;
-      overrides.push_back(key + "=" + text);
-      try {
-        for (const std::string& w : plausibilityWarnings(parseSceneFile(o.scene_path, overrides)))
-          if (w.rfind(key, 0) == 0) {
-            if (first.empty()) first = w;
-            flagged.push_back(text);
-            break;
-          }
-      } catch (const std::exception&) {
-        // a value the scene rejects: the run of that point says so
-      }
-    }
+    const std::vector<std::string> flagged = implausibleValues(o, key, sweptTexts(o, k), first);
     if (flagged.empty()) continue;
     std::string list;
     for (std::size_t i = 0; i < flagged.size() && i < 6; ++i) list += (i ? ", " : "") + flagged[i];
@@ -173,21 +185,31 @@ void printSweepHeader(const SweepOptions& o, const std::string& scene_name, std:
 
 // The points' outcome after the outputs are written: how many did not settle, rock or stall, are
 // near a resonance or failed; returns the exit code.
-int reportPoints(const SweepOptions& o, const SweepResult& r, const std::string& out_dir, std::size_t files) {
-  std::size_t failed = 0, unsteady = 0, warned = 0, not_turning = 0;
+struct PointCounts {
+  std::size_t failed = 0, unsteady = 0, warned = 0, not_turning = 0, rocking = 0, stalled = 0;
+};
+
+PointCounts countPoints(const SweepResult& r) {
+  PointCounts n;
   for (const SweepPoint& p : r.points) {
     const bool drive_fails = p.motion == "stalled" || p.motion == "rocking";
-    not_turning += drive_fails;
-    failed += !p.complete && !drive_fails;
-    unsteady += p.complete && !p.steady;
-    warned += !p.warnings.empty();
+    n.not_turning += drive_fails;
+    n.failed += !p.complete && !drive_fails;
+    n.unsteady += p.complete && !p.steady;
+    n.warned += !p.warnings.empty();
+    n.rocking += p.motion == "rocking";
+    n.stalled += p.motion == "stalled";
   }
+  return n;
+}
+
+int reportPoints(const SweepOptions& o, const SweepResult& r, const std::string& out_dir, std::size_t files) {
+  const PointCounts n = countPoints(r);
+  const std::size_t failed = n.failed, warned = n.warned;
   if (!o.minimize.empty()) std::cout << describeOptimum(o, r) << "\n";
-  if (unsteady) std::cout << unsteady << " point(s) did not reach steady state (see steady_state_reached)\n";
-  std::size_t rocking = 0, stalled = 0;
-  for (const SweepPoint& p : r.points) rocking += p.motion == "rocking", stalled += p.motion == "stalled";
-  if (rocking || stalled)
-    std::cout << rocking << " point(s) rocking, " << stalled << " stalled (motion column; their δ, H, k_p are n/a)\n";
+  if (n.unsteady) std::cout << n.unsteady << " point(s) did not reach steady state (see steady_state_reached)\n";
+  if (n.rocking || n.stalled)
+    std::cout << n.rocking << " point(s) rocking, " << n.stalled << " stalled (motion column; their δ, H, k_p are n/a)\n";
   // A sweep runs no modal analysis: its warnings are the first estimate's (two constant inertias),
   // which simulate's modal verdict may overrule (six carts at 60°: heavily damped, no resonance).
   if (warned)
@@ -199,10 +221,10 @@ int reportPoints(const SweepOptions& o, const SweepResult& r, const std::string&
     std::cerr << "rollerdyn: " << failed << " of " << r.points.size()
               << " points failed to run (numerical failure, invalid values or interrupted: status column)\n";
   // 3: some point failed to run; 4: every point ran but some drive stalls or rocks; 0: all turn.
-  return failed ? 3 : not_turning ? 4 : 0;
+  return failed ? 3 : n.not_turning ? 4 : 0;
 }
 
-int runSweepCommand(const SweepArgs& a) {
+SweepOptions sweepOptions(const SweepArgs& a) {
   SweepOptions o;
   o.scene_path = a.scene.scene_path;
   o.base_overrides = a.scene.overrides;
@@ -216,16 +238,36 @@ int runSweepCommand(const SweepArgs& a) {
   o.point_budget = a.point_budget;
   o.resume = a.resume;
   o.dispatcher_computes = !a.dispatcher_only;
+  return o;
+}
+
+// --out, or out/<scene name>/sweep_<keys>.
+std::string sweepOutDir(const SweepArgs& a, const Scene& base, const SweepOptions& o) {
+  if (!a.out_dir.empty()) return a.out_dir;
+  std::string out_dir = defaultOutDir(base.name) + "/sweep";
+  for (const SweepParameter& p : o.params) out_dir += "_" + p.key;
+  return out_dir;
+}
+
+// After the runs (rank 0): the resumed points, the files and the points' outcome.
+int finishSweep(const SweepOptions& o, SweepResult& r, const std::string& out_dir) {
+  if (r.execution.value("points_resumed", 0) > 0)
+    std::cout << "resumed " << r.execution["points_resumed"] << " saved point(s), computed "
+              << r.execution["points_computed"] << "\n";
+  std::string plot_note;
+  const auto files = writeSweepOutputs(o, r, out_dir, &plot_note);
+  if (!plot_note.empty()) std::cout << "figures: " << plot_note << " (sweep.csv has every point)\n";
+  return reportPoints(o, r, out_dir, files.size());
+}
+
+int runSweepCommand(const SweepArgs& a) {
+  SweepOptions o = sweepOptions(a);
   const SweepRanks ranks = joinRanks(o);
   const bool rank0 = ranks.rank0;
   // Validate the base scene once, so a typo in the file or a --set fails before any run (as the
   // first point sees it: a key the parameters set counts as given).
   const Scene base = parseSceneFile(o.scene_path, firstPointOverrides(o));
-  std::string out_dir = a.out_dir;
-  if (out_dir.empty()) {
-    out_dir = defaultOutDir(base.name) + "/sweep";
-    for (const SweepParameter& p : o.params) out_dir += "_" + p.key;
-  }
+  const std::string out_dir = sweepOutDir(a, base, o);
   if (rank0) prepareOutputDir(out_dir);  // before any point: a bad --out fails now
   if (rank0) warnImplausibleValues(o);
   const std::size_t total = pointCount(o);
@@ -244,61 +286,10 @@ int runSweepCommand(const SweepArgs& a) {
     throw;
   }
   if (!r.output_rank) return 0;  // an MPI worker: rank 0 writes the outputs
-  if (r.execution.value("points_resumed", 0) > 0)
-    std::cout << "resumed " << r.execution["points_resumed"] << " saved point(s), computed "
-              << r.execution["points_computed"] << "\n";
-  std::string plot_note;
-  const auto files = writeSweepOutputs(o, r, out_dir, &plot_note);
-  if (!plot_note.empty()) std::cout << "figures: " << plot_note << " (sweep.csv has every point)\n";
-  return reportPoints(o, r, out_dir, files.size());
+  return finishSweep(o, r, out_dir);
 }
 
-}  // namespace
-
-Subcommand addSweepCommand(CLI::App& app) {
-  auto args = std::make_shared<SweepArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "sweep", "one simulation per value of one or more scene keys; sweep.csv, sweep.json, plots, optimum");
-  cmd->add_option("scene", args->scene.scene_path, "scene file (YAML)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--set", args->scene.overrides, "override a scene value for every point, key.path=value (repeatable)")
-      ->allow_extra_args(false);
-  cmd->add_option("--param", args->params, "scene key to vary, e.g. crank.offset_deg (repeatable)")
-      ->required()
-      ->allow_extra_args(false);
-  cmd->add_option("--values", args->values, "values of the preceding --param: a:b:step or v1,v2,...")
-      ->allow_extra_args(false);
-  cmd->add_option("--values-file", args->values_file,
-                  "designs instead of a grid: one per line, one value per --param in their order (commas or "
-                  "blanks; '#' comments; an optional header line naming the keys)")
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--lhs", args->lhs, "Latin hypercube of N designs instead of a grid (McKay et al. (1979)); "
-                                      "needs a --range after each --param")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--range", args->ranges, "range a:b of the preceding --param for --lhs")->allow_extra_args(false);
-  cmd->add_option("--seed", args->seed, "seed of --lhs (default 1; the same seed gives the same designs)");
-  cmd->add_option("--point-budget", args->point_budget,
-                  "CPU seconds per point (rounded up to whole seconds); each point then runs in a child process "
-                  "and one over budget becomes a 'timeout' row")
-      ->check(CLI::PositiveNumber);
-  cmd->add_flag("--resume", args->resume,
-                "continue a killed sweep: reuse the rows saved in DIR/sweep.progress.jsonl (same command "
-                "required; checked by a fingerprint) and compute only the missing points");
-  cmd->add_flag("--dispatcher-only", args->dispatcher_only,
-                "under MPI: rank 0 only hands out points and collects rows (default: it also computes)");
-  cmd->add_option("--model", args->model, "multibody (default) or reduced")
-      ->check(oneOf({"multibody", "reduced"}));
-  cmd->add_option("--minimize", args->minimize,
-                  "metric whose minimum to report: delta, H, k_p, omega_crank_mean, coupling_torque_swing, "
-                  "twist_swing, eps_crank_abs_max, energy_residual_rel, omega_crank_min, omega_crank_max, "
-                  "omega_crank_midrange, twist_rate_swing, twist_accel_swing, or a drive-sizing metric "
-                  "(motor_torque_rotor_rms, motor_rms_over_nominal, motor_peak_over_breakdown, motor_power_mean, "
-                  "energy_per_revolution, coupling_torque_peak, guide_roller_peak, rod_force_peak, "
-                  "crank_pin_peak, main_bearing_peak, ..._equivalent_load: see sweep.csv); with one numeric "
-                  "parameter the vertex of the parabola through the best point and its neighbours is run as one "
-                  "more point, and the optimum is the better of the two runs");
-  cmd->add_option("--threads", args->threads, "worker threads (default 2; under MPI one per rank)")->check(CLI::Range(1, 64));
-  cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/sweep_<keys>)");
-  cmd->footer(
+const char* const kSweepFooter =
       "Each value is applied as --set KEY=VALUE, so it is validated like a scene file; a point that fails "
       "is reported in its row (status) and the sweep goes on. Exit code 3 when any point failed to run (numerical "
       "failure, invalid values, interrupted), else 4 when a drive stalls or rocks at some point, else 0.\n"
@@ -315,7 +306,64 @@ Subcommand addSweepCommand(CLI::App& app) {
       "  rollerdyn sweep model/energy-balanced-3cart.yaml --param flywheel.inertia --range 0:400 "
       "--param crank.offset_deg --range 90:150 --lhs 200 --seed 7 --model reduced\n"
       "  mpirun -n 64 rollerdyn sweep model/balanced-4cart.yaml --values-file designs.txt --param crank.offset_deg "
-      "--param coupling.damping --point-budget 600 --resume --out out/big");
+      "--param coupling.damping --point-budget 600 --resume --out out/big";
+
+// The points: a grid of --values, designs of --values-file, or a Latin hypercube.
+void addDesignOptions(CLI::App& cmd, SweepArgs& a) {
+  cmd.add_option("--values", a.values, "values of the preceding --param: a:b:step or v1,v2,...")
+      ->allow_extra_args(false);
+  cmd.add_option("--values-file", a.values_file,
+                  "designs instead of a grid: one per line, one value per --param in their order (commas or "
+                  "blanks; '#' comments; an optional header line naming the keys)")
+      ->check(CLI::ExistingFile);
+  cmd.add_option("--lhs", a.lhs, "Latin hypercube of N designs instead of a grid (McKay et al. (1979)); "
+                                      "needs a --range after each --param")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--range", a.ranges, "range a:b of the preceding --param for --lhs")->allow_extra_args(false);
+  cmd.add_option("--seed", a.seed, "seed of --lhs (default 1; the same seed gives the same designs)");
+}
+
+// How the points are run: a CPU budget per point, resuming, MPI's dispatcher.
+void addExecutionOptions(CLI::App& cmd, SweepArgs& a) {
+  cmd.add_option("--point-budget", a.point_budget,
+                  "CPU seconds per point (rounded up to whole seconds); each point then runs in a child process "
+                  "and one over budget becomes a 'timeout' row")
+      ->check(CLI::PositiveNumber);
+  cmd.add_flag("--resume", a.resume,
+                "continue a killed sweep: reuse the rows saved in DIR/sweep.progress.jsonl (same command "
+                "required; checked by a fingerprint) and compute only the missing points");
+  cmd.add_flag("--dispatcher-only", a.dispatcher_only,
+                "under MPI: rank 0 only hands out points and collects rows (default: it also computes)");
+}
+
+}  // namespace
+
+Subcommand addSweepCommand(CLI::App& app) {
+  auto args = std::make_shared<SweepArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "sweep", "one simulation per value of one or more scene keys; sweep.csv, sweep.json, plots, optimum");
+  cmd->add_option("scene", args->scene.scene_path, "scene file (YAML)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--set", args->scene.overrides, "override a scene value for every point, key.path=value (repeatable)")
+      ->allow_extra_args(false);
+  cmd->add_option("--param", args->params, "scene key to vary, e.g. crank.offset_deg (repeatable)")
+      ->required()
+      ->allow_extra_args(false);
+  addDesignOptions(*cmd, *args);
+  addExecutionOptions(*cmd, *args);
+  cmd->add_option("--model", args->model, "multibody (default) or reduced")
+      ->check(oneOf({"multibody", "reduced"}));
+  cmd->add_option("--minimize", args->minimize,
+                  "metric whose minimum to report: delta, H, k_p, omega_crank_mean, coupling_torque_swing, "
+                  "twist_swing, eps_crank_abs_max, energy_residual_rel, omega_crank_min, omega_crank_max, "
+                  "omega_crank_midrange, twist_rate_swing, twist_accel_swing, or a drive-sizing metric "
+                  "(motor_torque_rotor_rms, motor_rms_over_nominal, motor_peak_over_breakdown, motor_power_mean, "
+                  "energy_per_revolution, coupling_torque_peak, guide_roller_peak, rod_force_peak, "
+                  "crank_pin_peak, main_bearing_peak, ..._equivalent_load: see sweep.csv); with one numeric "
+                  "parameter the vertex of the parabola through the best point and its neighbours is run as one "
+                  "more point, and the optimum is the better of the two runs");
+  cmd->add_option("--threads", args->threads, "worker threads (default 2; under MPI one per rank)")->check(CLI::Range(1, 64));
+  cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/sweep_<keys>)");
+  cmd->footer(kSweepFooter);
   return {cmd, [args] { return runSweepCommand(*args); }};
 }
 
