@@ -54,20 +54,19 @@ double number(const std::string& option, const std::string& text, const std::str
   return v;
 }
 
-int runIdentifyCommand(const IdentifyArgs& a) {
-  IdentifyOptions o;
-  o.scene_path = a.scene.scene_path;
-  o.base_overrides = a.scene.overrides;
-  for (const std::string& f : a.free) {
+// The items of comma-separated lists given once or more (--free a,b --free c).
+std::vector<std::string> commaItems(const std::vector<std::string>& lists) {
+  std::vector<std::string> items;
+  for (const std::string& f : lists) {
     std::stringstream ss(f);
-    for (std::string key; std::getline(ss, key, ',');)
-      if (!key.empty()) o.free_keys.push_back(key);
+    for (std::string item; std::getline(ss, item, ',');)
+      if (!item.empty()) items.push_back(item);
   }
-  for (const std::string& f : a.signals) {
-    std::stringstream ss(f);
-    for (std::string column; std::getline(ss, column, ',');)
-      if (!column.empty()) o.signals.push_back(column);
-  }
+  return items;
+}
+
+// --bounds KEY=LOWER:UPPER and --noise COLUMN=SIGMA.
+void readBoundsAndNoise(const IdentifyArgs& a, IdentifyOptions& o) {
   for (const std::string& b : a.bounds) {
     const auto [key, spec] = assignment("--bounds", b, "KEY=LOWER:UPPER");
     const auto colon = spec.find(':');
@@ -79,6 +78,15 @@ int runIdentifyCommand(const IdentifyArgs& a) {
     const auto [column, sigma] = assignment("--noise", n, "COLUMN=SIGMA (in the column's unit)");
     o.noise[column] = number("--noise", sigma, n);
   }
+}
+
+IdentifyOptions identifyOptions(const IdentifyArgs& a) {
+  IdentifyOptions o;
+  o.scene_path = a.scene.scene_path;
+  o.base_overrides = a.scene.overrides;
+  o.free_keys = commaItems(a.free);
+  o.signals = commaItems(a.signals);
+  readBoundsAndNoise(a, o);
   o.model = a.model;
   o.holdout = a.holdout;
   o.global = a.global;
@@ -88,6 +96,11 @@ int runIdentifyCommand(const IdentifyArgs& a) {
   o.interrupt = &g_interrupted;
   o.on_progress = [](const std::string& line) { std::cout << line << std::endl; };
   o.data = readMeasuredData(a.data);
+  return o;
+}
+
+int runIdentifyCommand(const IdentifyArgs& a) {
+  const IdentifyOptions o = identifyOptions(a);
   const Scene base = parseSceneFile(o.scene_path, o.base_overrides);  // a bad scene fails before any run
   const std::string out_dir = a.out_dir.empty() ? defaultOutDir(base.name) + "/identify" : a.out_dir;
   prepareOutputDir(out_dir);
@@ -100,6 +113,32 @@ int runIdentifyCommand(const IdentifyArgs& a) {
   if (!plot_note.empty()) std::cerr << "rollerdyn: figures: " << plot_note << "\n";
   std::cout << "outputs in " << out_dir << "/ (" << files.size() << " files)\n";
   return r.converged ? 0 : 4;
+}
+
+const char* const kIdentifyFooter =
+      "The model runs from the scene's initial state (t = 0) to the last measured time and is interpolated "
+      "linearly onto the measured times; record from rest. Weighted least squares by Levenberg-Marquardt; the "
+      "uncertainties from the Jacobian at the estimate. Warnings: keys the data cannot tell apart (correlation above "
+      "0.95), keys they do not determine (relative uncertainty above 50 %), estimates on a bound.\n"
+      "Exit codes: 0 converged, 4 not converged (the reason is printed and in identify.json), 2 bad input.\n"
+      "Example:\n"
+      "  rollerdyn identify model/balanced-4cart.yaml --data start.csv --free coupling.stiffness,coupling.damping "
+      "--bounds coupling.stiffness=5e4:1e6 --bounds coupling.damping=500:30000";
+
+// How the values are fitted: the model, the holdout, the search, the runs' threads and accuracy.
+void addFitOptions(CLI::App& cmd, IdentifyArgs& a) {
+  cmd.add_option("--model", a.model, "multibody (default) or reduced")->check(oneOf({"multibody", "reduced"}));
+  cmd.add_option("--holdout", a.holdout,
+                  "fraction of the measured span at its end that is predicted, not fitted (default 0.3; 0: none)")
+      ->check(CLI::Range(0.0, 0.9));
+  cmd.add_flag("--global", a.global, "a global search (DIRECT-L, 30 runs per key) before the local fit");
+  cmd.add_option("--max-iterations", a.max_iterations, "Levenberg-Marquardt iterations per fit (default 30)")
+      ->check(CLI::Range(1, 1000));
+  cmd.add_option("--threads", a.threads, "runs of one Jacobian side by side (default 2)")->check(CLI::Range(1, 64));
+  cmd.add_option("--accuracy", a.accuracy,
+                  "integrator accuracy of the runs (default: the scene's, at most 1e-8, so the finite differences "
+                  "stay far above the integration's noise)")
+      ->check(CLI::Range(1e-14, 1e-2));
 }
 
 }  // namespace
@@ -132,28 +171,9 @@ Subcommand addIdentifyCommand(CLI::App& app) {
       ->allow_extra_args(false);
   cmd->add_option("--set", args->scene.overrides, "override a scene value for every run, key.path=value (repeatable)")
       ->allow_extra_args(false);
-  cmd->add_option("--model", args->model, "multibody (default) or reduced")->check(oneOf({"multibody", "reduced"}));
-  cmd->add_option("--holdout", args->holdout,
-                  "fraction of the measured span at its end that is predicted, not fitted (default 0.3; 0: none)")
-      ->check(CLI::Range(0.0, 0.9));
-  cmd->add_flag("--global", args->global, "a global search (DIRECT-L, 30 runs per key) before the local fit");
-  cmd->add_option("--max-iterations", args->max_iterations, "Levenberg-Marquardt iterations per fit (default 30)")
-      ->check(CLI::Range(1, 1000));
-  cmd->add_option("--threads", args->threads, "runs of one Jacobian side by side (default 2)")->check(CLI::Range(1, 64));
-  cmd->add_option("--accuracy", args->accuracy,
-                  "integrator accuracy of the runs (default: the scene's, at most 1e-8, so the finite differences "
-                  "stay far above the integration's noise)")
-      ->check(CLI::Range(1e-14, 1e-2));
+  addFitOptions(*cmd, *args);
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/identify)");
-  cmd->footer(
-      "The model runs from the scene's initial state (t = 0) to the last measured time and is interpolated "
-      "linearly onto the measured times; record from rest. Weighted least squares by Levenberg-Marquardt; the "
-      "uncertainties from the Jacobian at the estimate. Warnings: keys the data cannot tell apart (correlation above "
-      "0.95), keys they do not determine (relative uncertainty above 50 %), estimates on a bound.\n"
-      "Exit codes: 0 converged, 4 not converged (the reason is printed and in identify.json), 2 bad input.\n"
-      "Example:\n"
-      "  rollerdyn identify model/balanced-4cart.yaml --data start.csv --free coupling.stiffness,coupling.damping "
-      "--bounds coupling.stiffness=5e4:1e6 --bounds coupling.damping=500:30000");
+  cmd->footer(kIdentifyFooter);
   return {cmd, [args] { return runIdentifyCommand(*args); }};
 }
 
