@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scene/MotorModels.h"
+
 namespace rollerdyn {
 
 namespace {
@@ -97,21 +99,10 @@ void refuseIdleKeys(const scene_detail::Reader& in, Scene& scene) {
             "there is no brake to engage");
 }
 
-}  // namespace
-
-void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
+// The soft starter's ramp, initial voltage, current limit and start time after which it trips;
+// the limit needs a law that knows the stator current (motor/Supply.h).
+void readSoftStarter(const scene_detail::Reader& in, MotorStart& m, const std::string& needed_by) {
   const SceneDocument& doc = in.doc();
-  MotorStart& m = scene.motor_start;
-  m.method = in.choiceOf<StartMethod>("motor.start.method");
-  m.t_on = in.number("motor.start.t_on");
-  m.phase = in.number("motor.start.phase_deg") * kDegToRad;
-  readStarDelta(in, m, scene.motor.omega_sync);
-  m.changeover_gap = in.number("motor.start.changeover_gap");
-
-  const bool ramped = m.method == StartMethod::SoftStarter || m.method == StartMethod::FrequencyConverter;
-  const std::string needed_by = std::string("motor.start.method is ") + toString(m.method);
-  m.ramp_time = ramped ? in.requiredNumber("motor.start.ramp_time", "required when " + needed_by)
-                       : in.numberOr("motor.start.ramp_time", 0.0);
   m.initial_voltage = m.method == StartMethod::SoftStarter
                           ? in.requiredNumber("motor.start.initial_voltage", "required when " + needed_by)
                           : in.numberOr("motor.start.initial_voltage", 1.0);
@@ -126,28 +117,40 @@ void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
     requireLater(in, "motor.start.max_start_time", m.max_start_time, "motor.start.ramp_time", m.ramp_time, "ramp_time",
                  "max_start_time");
   }
+}
+
+// A current limit needs a law that knows the stator current (motor/Supply.h): a machine law.
+void requireLawWithCurrent(const scene_detail::Reader& in, const Scene& scene) {
+  const SceneDocument& doc = in.doc();
+  const MotorStart& m = scene.motor_start;
+  if (!(m.method == StartMethod::SoftStarter && m.current_limit > 0 && !isMachineLaw(scene.induction.model))) return;
+  const std::string laws = motorModelWords(false, "or");
+  if (scene_detail::blameSecond(doc, "motor.start.current_limit", "motor.model"))
+    doc.fail("motor.model", laws + " (motor.start.current_limit needs a model of the stator current)",
+             toString(scene.induction.model));
+  doc.fail("motor.start.current_limit",
+           std::string("0 with motor.model ") + toString(scene.induction.model) +
+               " (no stator current in that law; use motor.model " + laws + ")",
+           formatNumber(m.current_limit));
+}
+
+// The frequency converter's initial frequency (below f_n) and voltage boost.
+void readFrequencyConverter(const scene_detail::Reader& in, const Scene& scene, MotorStart& m,
+                            const std::string& needed_by) {
   m.initial_frequency = m.method == StartMethod::FrequencyConverter
                             ? in.requiredNumber("motor.start.initial_frequency", "required when " + needed_by)
                             : in.numberOr("motor.start.initial_frequency", 0.0);
   m.boost = in.number("motor.start.boost");
   if (m.method == StartMethod::FrequencyConverter && !(m.initial_frequency < scene.induction.frequency))
-    doc.fail("motor.start.initial_frequency",
-             "a frequency in (0, f_n = " + formatNumber(scene.induction.frequency) + ") [Hz] (motor.frequency)",
-             formatNumber(m.initial_frequency));
-  // A current limit needs a law that knows the stator current (motor/Supply.h).
-  const bool law_has_current =
-      scene.induction.model == MotorModel::Circuit || scene.induction.model == MotorModel::Park;
-  if (m.method == StartMethod::SoftStarter && m.current_limit > 0 && !law_has_current) {
-    if (scene_detail::blameSecond(doc, "motor.start.current_limit", "motor.model"))
-      doc.fail("motor.model", "circuit or park (motor.start.current_limit needs a model of the stator current)",
-               toString(scene.induction.model));
-    doc.fail("motor.start.current_limit",
-             std::string("0 with motor.model ") + toString(scene.induction.model) +
-                 " (no stator current in that law; use motor.model circuit or park)",
-             formatNumber(m.current_limit));
-  }
+    in.doc().fail("motor.start.initial_frequency",
+                  "a frequency in (0, f_n = " + formatNumber(scene.induction.frequency) + ") [Hz] (motor.frequency)",
+                  formatNumber(m.initial_frequency));
+}
 
-  MotorStop& st = scene.motor_stop;
+// The switch-off after the switch-on (and after a star-delta changeover), a brake only after a
+// switch-off, a restart after the switch-off and after the brake engaged.
+void readMotorStop(const scene_detail::Reader& in, const MotorStart& m, MotorStop& st) {
+  const SceneDocument& doc = in.doc();
   st.t_off = in.number("motor.stop.t_off");
   st.brake_torque = in.number("motor.stop.brake_torque");
   st.brake_delay = in.number("motor.stop.brake_delay");
@@ -162,15 +165,33 @@ void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
   if (!off && st.brake_torque > 0)
     doc.fail("motor.stop.brake_torque", "0 without motor.stop.t_off (the brake acts after the switch-off)",
              formatNumber(st.brake_torque));
-  if (std::isfinite(st.t_restart)) {
-    if (!off) doc.failMissing("motor.stop.t_off", "a switch-off time before motor.stop.t_restart");
-    requireLater(in, "motor.stop.t_restart", st.t_restart, "motor.stop.t_off", st.t_off, "t_off", "t_restart");
-    if (st.brake_torque > 0 && !(st.t_off + st.brake_delay < st.t_restart))
-      doc.fail("motor.stop.brake_delay",
-               "a delay that engages the brake before motor.stop.t_restart = " + formatNumber(st.t_restart) +
-                   " s (t_off + brake_delay < t_restart)",
-               formatNumber(st.brake_delay));
-  }
+  if (!std::isfinite(st.t_restart)) return;
+  if (!off) doc.failMissing("motor.stop.t_off", "a switch-off time before motor.stop.t_restart");
+  requireLater(in, "motor.stop.t_restart", st.t_restart, "motor.stop.t_off", st.t_off, "t_off", "t_restart");
+  if (st.brake_torque > 0 && !(st.t_off + st.brake_delay < st.t_restart))
+    doc.fail("motor.stop.brake_delay",
+             "a delay that engages the brake before motor.stop.t_restart = " + formatNumber(st.t_restart) +
+                 " s (t_off + brake_delay < t_restart)",
+             formatNumber(st.brake_delay));
+}
+
+}  // namespace
+
+void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
+  MotorStart& m = scene.motor_start;
+  m.method = in.choiceOf<StartMethod>("motor.start.method");
+  m.t_on = in.number("motor.start.t_on");
+  m.phase = in.number("motor.start.phase_deg") * kDegToRad;
+  readStarDelta(in, m, scene.motor.omega_sync);
+  m.changeover_gap = in.number("motor.start.changeover_gap");
+  const bool ramped = m.method == StartMethod::SoftStarter || m.method == StartMethod::FrequencyConverter;
+  const std::string needed_by = std::string("motor.start.method is ") + toString(m.method);
+  m.ramp_time = ramped ? in.requiredNumber("motor.start.ramp_time", "required when " + needed_by)
+                       : in.numberOr("motor.start.ramp_time", 0.0);
+  readSoftStarter(in, m, needed_by);
+  readFrequencyConverter(in, scene, m, needed_by);
+  requireLawWithCurrent(in, scene);
+  readMotorStop(in, m, scene.motor_stop);
   refuseIdleKeys(in, scene);
 }
 
