@@ -283,37 +283,27 @@ YAML::Node SceneDocument::find(const std::string& path) const {
   return cur;
 }
 
-void SceneDocument::applyOverride(int n, const std::string& arg) {
-  const size_t eq = arg.find('=');
-  if (eq == std::string::npos) {
-    failOverride(n, arg, arg, "KEY.PATH=VALUE, e.g. coupling.damping=8000", "no '='");
-  }
-  const std::string path = trim(arg.substr(0, eq));
-  const std::string text = trim(arg.substr(eq + 1));
-
-  // The key path must exist in the schema before anything is touched.
-  int element = -1;  // key[i] of a per-cart key: i
-  const KeySpec* leaf = findSceneKeyOrElement(path, &element);
-  if (path.empty() || !(leaf || isSceneMap(path))) {
-    std::string map_path;
-    std::string missing = path;
-    for (const std::string& seg : splitPath(path)) {
-      const std::string next = childPath(map_path, seg);
-      if (findSceneKey(next)) {
-        failOverride(n, arg, path, "no key below leaf key " + next,
-                     "unknown key path '" + path + "'");
-      }
-      if (seg.empty() || !isSceneMap(next)) {
-        missing = seg;
-        break;
-      }
-      map_path = next;
+void SceneDocument::failUnknownOverridePath(int n, const std::string& arg, const std::string& path) const {
+  std::string map_path;
+  std::string missing = path;
+  for (const std::string& seg : splitPath(path)) {
+    const std::string next = childPath(map_path, seg);
+    if (findSceneKey(next)) {
+      failOverride(n, arg, path, "no key below leaf key " + next,
+                   "unknown key path '" + path + "'");
     }
-    failOverride(n, arg, path, "a key path of the scene schema; " + allowedKeys(map_path),
-                 unknownKey(map_path, missing));
+    if (seg.empty() || !isSceneMap(next)) {
+      missing = seg;
+      break;
+    }
+    map_path = next;
   }
+  failOverride(n, arg, path, "a key path of the scene schema; " + allowedKeys(map_path),
+               unknownKey(map_path, missing));
+}
 
-  YAML::Node value;
+YAML::Node SceneDocument::overrideValue(int n, const std::string& arg, const std::string& path,
+                                        const std::string& text) const {
   try {
     const DocumentScan scan = scanDocuments(text);
     if (scan.stuck) {
@@ -324,16 +314,13 @@ void SceneDocument::applyOverride(int n, const std::string& arg) {
       failOverride(n, arg, path, "a YAML scalar or flow value",
                    "'" + text + "' (more than one YAML document)");
     }
-    value = YAML::Load(text);
+    return YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     failOverride(n, arg, path, "a YAML scalar or flow value", "'" + text + "' (" + e.msg + ")");
   }
+}
 
-  if (element >= 0) value = listWithElement(n, arg, path, *leaf, element, value);
-
-  // Walk to the parent map, creating maps the file omits (an override may set an optional key
-  // of a section the file leaves out entirely).
-  const std::vector<std::string> segs = splitPath(element >= 0 ? leaf->path : path);
+YAML::Node SceneDocument::parentMapOf(const std::vector<std::string>& segs) {
   YAML::Node cur = root_;
   std::string cur_path;
   for (size_t i = 0; i + 1 < segs.size(); ++i) {
@@ -348,7 +335,25 @@ void SceneDocument::applyOverride(int n, const std::string& arg) {
     }
     cur.reset(next);
   }
-  cur[segs.back()] = value;
+  return cur;
+}
+
+void SceneDocument::applyOverride(int n, const std::string& arg) {
+  const size_t eq = arg.find('=');
+  if (eq == std::string::npos) {
+    failOverride(n, arg, arg, "KEY.PATH=VALUE, e.g. coupling.damping=8000", "no '='");
+  }
+  const std::string path = trim(arg.substr(0, eq));
+  const std::string text = trim(arg.substr(eq + 1));
+  // The key path must exist in the schema before anything is touched.
+  int element = -1;  // key[i] of a per-cart key: i
+  const KeySpec* leaf = findSceneKeyOrElement(path, &element);
+  if (path.empty() || !(leaf || isSceneMap(path))) failUnknownOverridePath(n, arg, path);
+  YAML::Node value = overrideValue(n, arg, path, text);
+  if (element >= 0) value = listWithElement(n, arg, path, *leaf, element, value);
+  const std::vector<std::string> segs = splitPath(element >= 0 ? leaf->path : path);
+  YAML::Node parent = parentMapOf(segs);
+  parent[segs.back()] = value;
   overrides_.push_back({n, arg, path});
 }
 

@@ -72,6 +72,14 @@ class SceneDocument {
   [[noreturn]] void failOverride(int n, const std::string& arg, const std::string& key,
                                  const std::string& expected, const std::string& got) const;
   void checkMap(const YAML::Node& node, const std::string& path) const;
+  // The complaint about an override whose key path is not in the schema, naming the first unknown
+  // part and the keys allowed there.
+  [[noreturn]] void failUnknownOverridePath(int n, const std::string& arg, const std::string& path) const;
+  // The override's value as YAML: one scalar or flow value, else a complaint.
+  YAML::Node overrideValue(int n, const std::string& arg, const std::string& path, const std::string& text) const;
+  // The map that holds the last part of `segs`, created where the file omits it (an override may
+  // set an optional key of a section the file leaves out entirely).
+  YAML::Node parentMapOf(const std::vector<std::string>& segs);
   // The list of per-cart key `spec` with element `element` replaced by `value` (--set key[i]=value).
   YAML::Node listWithElement(int n, const std::string& arg, const std::string& path, const KeySpec& spec,
                              int element, const YAML::Node& value) const;
