@@ -395,6 +395,52 @@ SizingInputs readSizing(const Reader& in) {
   return z;
 }
 
+// Backlash: the teeth's contact stiffness and damping are the coupling's c, k, which a rigid
+// coupling does not have (physics/CouplingLaw.h).
+void requireElasticCouplingForBacklash(const Reader& in, const Scene& s) {
+  if (s.reducer.backlash > 0.0 && s.coupling.type == CouplingType::Rigid)
+    in.doc().fail("reducer.backlash",
+                  "0 with coupling.type: rigid (the teeth in contact act through the coupling's stiffness and "
+                  "damping: set coupling.type: elastic with coupling.stiffness, or reducer.backlash: 0)",
+                  formatNumber(s.reducer.backlash));
+}
+
+// Guide reactions (Loveikin, Pochka, Romasevych (2018) eq. (18)-(25)) divide by 2b; with friction
+// they drive the load.
+void requireGuideBaseForFriction(const Reader& in, const Scene& s) {
+  if (!(s.loads.guide_friction > 0.0)) return;
+  const std::string want = "a number > 0 [m] (required when loads.guide_friction.coefficient > 0)";
+  if (!in.has("carts.geometry.b")) in.doc().failMissing("carts.geometry.b", want);
+  if (s.carts.geometry.b <= 0.0) in.doc().fail("carts.geometry.b", want, formatNumber(s.carts.geometry.b));
+}
+
+// Fewer than 10 output rows per crank revolution leave no metric worth printing: δ, the peaks,
+// the steady state and the run-up are read from the rows (the second trial's 0.5 s step, 1.2
+// rows per revolution, printed a run-up "to 95 % of 11.19 rad/s", above the synchronous crank
+// speed of 10.69). Between 10 and 50 rows a warning says what it costs (Plausibility.h).
+void requireRowsPerRevolution(const Reader& in, const Scene& s) {
+  if (!(s.motor.enabled && s.motor.omega_sync > 0 && s.reducer.ratio > 0)) return;
+  const double t_rev = 2.0 * M_PI * s.reducer.ratio / s.motor.omega_sync;
+  auto g3 = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3g", v);
+    return std::string(b);
+  };
+  if (s.simulation.output_step > t_rev / 10.0)
+    in.doc().fail("simulation.output_step",
+                  "at most " + g3(t_rev / 10.0) + " s: 10 output rows per crank revolution (" + g3(t_rev) +
+                      " s at the synchronous crank speed ω0/u), better 50 or more (" + g3(t_rev / 50.0) +
+                      " s), since δ, the peaks and the steady state are read from the rows",
+                  formatNumber(s.simulation.output_step));
+}
+
+// The rules that tie keys of different sections together, checked once every section is read.
+void checkAcrossSections(const Reader& in, const Scene& s) {
+  requireElasticCouplingForBacklash(in, s);
+  requireGuideBaseForFriction(in, s);
+  requireRowsPerRevolution(in, s);
+}
+
 Scene readScene(const SceneDocument& doc) {
   const Reader in(doc);
   Scene s;
@@ -421,39 +467,7 @@ Scene readScene(const SceneDocument& doc) {
   s.sizing = readSizing(in);
   readMotorSwitching(in, s);
   scene_detail::checkTorsionalChain(in, s);
-
-  // Backlash: the teeth's contact stiffness and damping are the coupling's c, k, which a rigid
-  // coupling does not have (physics/CouplingLaw.h).
-  if (s.reducer.backlash > 0.0 && s.coupling.type == CouplingType::Rigid)
-    doc.fail("reducer.backlash",
-             "0 with coupling.type: rigid (the teeth in contact act through the coupling's stiffness and "
-             "damping: set coupling.type: elastic with coupling.stiffness, or reducer.backlash: 0)",
-             formatNumber(s.reducer.backlash));
-  // Guide reactions (Loveikin, Pochka, Romasevych (2018) eq. (18)-(25)) divide by 2b; with friction they drive the load.
-  if (s.loads.guide_friction > 0.0) {
-    const std::string want =
-        "a number > 0 [m] (required when loads.guide_friction.coefficient > 0)";
-    if (!in.has("carts.geometry.b")) doc.failMissing("carts.geometry.b", want);
-    if (s.carts.geometry.b <= 0.0) doc.fail("carts.geometry.b", want, formatNumber(s.carts.geometry.b));
-  }
-  // Fewer than 10 output rows per crank revolution leave no metric worth printing: δ, the peaks,
-  // the steady state and the run-up are read from the rows (the second trial's 0.5 s step, 1.2
-  // rows per revolution, printed a run-up "to 95 % of 11.19 rad/s", above the synchronous crank
-  // speed of 10.69). Between 10 and 50 rows a warning says what it costs (Plausibility.h).
-  if (s.motor.enabled && s.motor.omega_sync > 0 && s.reducer.ratio > 0) {
-    const double t_rev = 2.0 * M_PI * s.reducer.ratio / s.motor.omega_sync;
-    auto g3 = [](double v) {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.3g", v);
-      return std::string(b);
-    };
-    if (s.simulation.output_step > t_rev / 10.0)
-      doc.fail("simulation.output_step",
-               "at most " + g3(t_rev / 10.0) + " s: 10 output rows per crank revolution (" + g3(t_rev) +
-                   " s at the synchronous crank speed ω0/u), better 50 or more (" + g3(t_rev / 50.0) +
-                   " s), since δ, the peaks and the steady state are read from the rows",
-               formatNumber(s.simulation.output_step));
-  }
+  checkAcrossSections(in, s);
   return s;
 }
 
