@@ -6,6 +6,37 @@
 
 namespace rollerdyn::scene_detail {
 
+namespace {
+
+// One axial position per throw: one number would put every throw in one plane, so say where each is.
+std::vector<double> readThrowPositions(const Reader& in, int cart_count) {
+  double uniform = 0.0;
+  std::vector<double> z = in.perCartNumbers("crankshaft.throw_positions", cart_count, uniform);
+  if (z.empty())
+    in.doc().fail("crankshaft.throw_positions",
+                  describeExpectedList(*findSceneKey("crankshaft.throw_positions"), cart_count), formatNumber(uniform));
+  return z;
+}
+
+// Two or more main bearings (one cannot carry a shaft's moments), ascending, no two in one place.
+std::vector<double> readBearingPositions(const Reader& in) {
+  const SceneDocument& doc = in.doc();
+  const std::vector<double> z = in.numberList("crankshaft.bearing_positions");
+  if (z.size() < 2)
+    doc.fail("crankshaft.bearing_positions",
+             "a list of two or more axial positions [m], ascending (one bearing cannot carry a shaft's moments)",
+             std::to_string(z.size()) + " value" + (z.size() == 1 ? "" : "s"));
+  for (size_t k = 1; k < z.size(); ++k)
+    if (!(z[k] > z[k - 1]))
+      doc.fail("crankshaft.bearing_positions[" + std::to_string(k) + "]",
+               "a position greater than crankshaft.bearing_positions[" + std::to_string(k - 1) + "] = " +
+                   formatNumber(z[k - 1]) + " m (ascending, no two bearings in one place)",
+               formatNumber(z[k]));
+  return z;
+}
+
+}  // namespace
+
 CrankshaftLayout readCrankshaft(const Reader& in, int cart_count) {
   const SceneDocument& doc = in.doc();
   CrankshaftLayout c;
@@ -34,23 +65,8 @@ CrankshaftLayout readCrankshaft(const Reader& in, int cart_count) {
     doc.failMissing("crankshaft.throw_positions",
                     "a list of " + std::to_string(cart_count) +
                         " axial positions z [m], one per cart's crank throw (needed with crankshaft.bearing_positions)");
-  double uniform = 0.0;
-  c.throw_positions = in.perCartNumbers("crankshaft.throw_positions", cart_count, uniform);
-  if (c.throw_positions.empty())  // one number would put every throw in one plane: say where each is
-    doc.fail("crankshaft.throw_positions", describeExpectedList(*findSceneKey("crankshaft.throw_positions"), cart_count),
-             formatNumber(uniform));
-  if (!has_bearings) return c;
-  c.bearing_positions = in.numberList("crankshaft.bearing_positions");
-  if (c.bearing_positions.size() < 2)
-    doc.fail("crankshaft.bearing_positions",
-             "a list of two or more axial positions [m], ascending (one bearing cannot carry a shaft's moments)",
-             std::to_string(c.bearing_positions.size()) + " value" + (c.bearing_positions.size() == 1 ? "" : "s"));
-  for (size_t k = 1; k < c.bearing_positions.size(); ++k)
-    if (!(c.bearing_positions[k] > c.bearing_positions[k - 1]))
-      doc.fail("crankshaft.bearing_positions[" + std::to_string(k) + "]",
-               "a position greater than crankshaft.bearing_positions[" + std::to_string(k - 1) + "] = " +
-                   formatNumber(c.bearing_positions[k - 1]) + " m (ascending, no two bearings in one place)",
-               formatNumber(c.bearing_positions[k]));
+  c.throw_positions = readThrowPositions(in, cart_count);
+  if (has_bearings) c.bearing_positions = readBearingPositions(in);
   return c;
 }
 

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "scene/MotorSwitchingParser.h"
@@ -143,51 +144,54 @@ void readDrive(const Reader& in, Scene& s) {
   if (s.drive == DriveType::Cam) s.rods = {RodModel::Massless, s.rods.length, 0.0, 0.0};
 }
 
+// The sides one word gives every cart: same, opposite or alternate (+1, -1, ...); none for any
+// other word.
+std::optional<std::vector<int>> sidesOfWord(const std::string& w, int count) {
+  std::vector<int> sides(static_cast<size_t>(count), +1);
+  if (w == "same") return sides;
+  if (w == "opposite") return std::vector<int>(static_cast<size_t>(count), -1);
+  if (w == "alternate") {
+    for (size_t j = 0; j < sides.size(); ++j) sides[j] = (j % 2 == 0) ? +1 : -1;
+    return sides;
+  }
+  return std::nullopt;
+}
+
+// One entry same/opposite per cart; a list of another length blames carts.count when a --set
+// changed it last.
+std::vector<int> sidesOfList(const Reader& in, const YAML::Node& node, int count) {
+  const std::string path = "carts.sides";
+  const SceneDocument& doc = in.doc();
+  if (node.size() != static_cast<size_t>(count)) {
+    const std::string want = "a list of " + std::to_string(count) +
+                             " entries same/opposite, one per cart (carts.count = " + std::to_string(count) + ")";
+    if (blameSecond(doc, path, "carts.count"))
+      doc.fail("carts.count", "an integer equal to the length of carts.sides (" + std::to_string(node.size()) + ")",
+               std::to_string(count));
+    doc.fail(path, want, describeNode(node));
+  }
+  std::vector<int> sides(static_cast<size_t>(count), +1);
+  for (size_t j = 0; j < node.size(); ++j) {
+    const YAML::Node e = node[j];
+    const std::string w = e.IsScalar() ? e.Scalar() : "";
+    if (w == "same" || w == "opposite") sides[j] = w == "same" ? +1 : -1;
+    else doc.fail(path + "[" + std::to_string(j) + "]", "same or opposite", describeNode(e));
+  }
+  return sides;
+}
+
 // carts.sides: +1 for a cart on the same side as cart 1 (x > 0, Loveikin, Pochka, Romasevych (2018)), -1 for the opposite
 // side (Loveikin and Pochka's (2007) second cart).
 std::vector<int> readSides(const Reader& in, int count) {
   const std::string path = "carts.sides";
-  const KeySpec& spec = *findSceneKey(path);
-  const SceneDocument& doc = in.doc();
-  std::vector<int> sides(static_cast<size_t>(count), +1);
-  if (!in.has(path)) return sides;
-  const YAML::Node node = doc.find(path);
-  if (node.IsScalar()) {
-    const std::string w = node.Scalar();
-    if (w == "same") return sides;
-    if (w == "opposite") return std::vector<int>(static_cast<size_t>(count), -1);
-    if (w == "alternate") {
-      for (size_t j = 0; j < sides.size(); ++j) sides[j] = (j % 2 == 0) ? +1 : -1;
-      return sides;
-    }
-  }
+  if (!in.has(path)) return std::vector<int>(static_cast<size_t>(count), +1);
+  const YAML::Node node = in.doc().find(path);
+  if (node.IsScalar())
+    if (std::optional<std::vector<int>> sides = sidesOfWord(node.Scalar(), count)) return *sides;
   if (!node.IsSequence())
-    in.fail(spec, describeNode(node) + (node.IsScalar() ? didYouMean(node.Scalar(), {"same", "opposite", "alternate"})
-                                                        : std::string()));
-  if (node.size() != static_cast<size_t>(count)) {
-    const std::string want = "a list of " + std::to_string(count) +
-                             " entries same/opposite, one per cart (carts.count = " +
-                             std::to_string(count) + ")";
-    if (blameSecond(doc, path, "carts.count")) {
-      doc.fail("carts.count",
-               "an integer equal to the length of carts.sides (" + std::to_string(node.size()) +
-                   ")",
-               std::to_string(count));
-    }
-    doc.fail(path, want, describeNode(node));
-  }
-  for (size_t j = 0; j < node.size(); ++j) {
-    const YAML::Node e = node[j];
-    const std::string w = e.IsScalar() ? e.Scalar() : "";
-    if (w == "same") {
-      sides[j] = +1;
-    } else if (w == "opposite") {
-      sides[j] = -1;
-    } else {
-      doc.fail(path + "[" + std::to_string(j) + "]", "same or opposite", describeNode(e));
-    }
-  }
-  return sides;
+    in.fail(*findSceneKey(path), describeNode(node) + (node.IsScalar() ? didYouMean(node.Scalar(), {"same", "opposite", "alternate"})
+                                                                       : std::string()));
+  return sidesOfList(in, node, count);
 }
 
 // crank.angles_deg (each crank's nominal angle, instead of j·Δφ) and crank.angle_error_deg (each
