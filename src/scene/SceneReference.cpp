@@ -1,5 +1,6 @@
 #include "scene/SceneReference.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "scene/SceneSchema.h"
@@ -51,21 +52,24 @@ std::vector<SceneKeyDoc> sceneKeyDocs() {
   return docs;
 }
 
-std::string sceneReferenceMarkdown() {
-  const std::vector<SceneKeyDoc> keys = sceneKeyDocs();
-  std::vector<std::string> sections;  // in order of first appearance
-  for (const SceneKeyDoc& k : keys) {
-    bool seen = false;
-    for (const std::string& s : sections) seen = seen || s == k.section;
-    if (!seen) sections.push_back(k.section);
-  }
-  std::ostringstream md;
+namespace {
+
+// The sections in the order of their first key.
+std::vector<std::string> sectionsInOrder(const std::vector<SceneKeyDoc>& keys) {
+  std::vector<std::string> sections;
+  for (const SceneKeyDoc& k : keys)
+    if (std::find(sections.begin(), sections.end(), k.section) == sections.end()) sections.push_back(k.section);
+  return sections;
+}
+
+// The page's head: how it is made, and how to read its columns.
+void referenceIntroduction(std::ostringstream& md, std::size_t key_count, std::size_t section_count) {
   md << "# Scene file reference\n\n"
      << "<!-- Generated from the scene schema by `rollerdyn schema --markdown`; do not edit by hand.\n"
      << "     A test fails when this file differs from the generated text. After changing the schema:\n"
      << "     ./build/rollerdyn schema --markdown > docs/scene-reference.md -->\n\n"
      << "Every key a scene file may contain, with its meaning, unit, default, the values allowed and the\n"
-     << "paper it comes from: " << keys.size() << " keys in " << sections.size() << " sections. "
+     << "paper it comes from: " << key_count << " keys in " << section_count << " sections. "
      << "A key that is not listed here is an error\n"
      << "naming the closest key. How scene files work (rules, frames and geometry, the cam drive, the\n"
      << "three ways to give the critical slip, the sizing keys): [scene files](scene-files.md).\n\n"
@@ -78,20 +82,32 @@ std::string sceneReferenceMarkdown() {
      << "- **source**: where the quantity is defined; – for rollerdyn's own numerical settings.\n"
      << "- Any key can be overridden on the command line with `--set key.path=value` and in Python\n"
      << "  with `scene.with_({\"key.path\": value})`; an override passes the same checks as the file.\n";
-  for (const std::string& section : sections) {
-    const bool nested = section.find('.') != std::string::npos;
-    md << "\n" << (nested ? "### " : "## ") << (section.empty() ? "Top level" : "`" + section + "`") << "\n\n";
-    const std::string about = section.empty() ? std::string("Keys at the top level of the file.")
-                                              : sceneMapDescription(section);
-    if (!about.empty()) md << about << "\n\n";
-    md << "| key | meaning | unit | default | allowed | source |\n|---|---|---|---|---|---|\n";
-    for (const SceneKeyDoc& k : keys) {
-      if (k.section != section) continue;
-      md << "| `" << k.key << "` | " << cell(k.meaning) << " | " << (k.unit == "-" ? "–" : cell(k.unit)) << " | "
-         << defaultCell(k) << " | " << cell(k.allowed) << " | " << (k.source.empty() ? "–" : cell(k.source))
-         << " |\n";
-    }
+}
+
+// One section: its heading, what it describes and the table of its keys.
+void referenceSection(std::ostringstream& md, const std::string& section, const std::vector<SceneKeyDoc>& keys) {
+  const bool nested = section.find('.') != std::string::npos;
+  md << "\n" << (nested ? "### " : "## ") << (section.empty() ? "Top level" : "`" + section + "`") << "\n\n";
+  const std::string about = section.empty() ? std::string("Keys at the top level of the file.")
+                                            : sceneMapDescription(section);
+  if (!about.empty()) md << about << "\n\n";
+  md << "| key | meaning | unit | default | allowed | source |\n|---|---|---|---|---|---|\n";
+  for (const SceneKeyDoc& k : keys) {
+    if (k.section != section) continue;
+    md << "| `" << k.key << "` | " << cell(k.meaning) << " | " << (k.unit == "-" ? "–" : cell(k.unit)) << " | "
+       << defaultCell(k) << " | " << cell(k.allowed) << " | " << (k.source.empty() ? "–" : cell(k.source))
+       << " |\n";
   }
+}
+
+}  // namespace
+
+std::string sceneReferenceMarkdown() {
+  const std::vector<SceneKeyDoc> keys = sceneKeyDocs();
+  const std::vector<std::string> sections = sectionsInOrder(keys);
+  std::ostringstream md;
+  referenceIntroduction(md, keys.size(), sections.size());
+  for (const std::string& section : sections) referenceSection(md, section, keys);
   return md.str();
 }
 
