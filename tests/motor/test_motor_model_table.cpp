@@ -12,20 +12,13 @@
 #include "scene/MotorModels.h"
 #include "scene/SceneChoices.h"
 #include "scene/SceneParser.h"
+#include "scene/SceneTestSupport.h"
 
 namespace rollerdyn {
 namespace {
 
-// The drive of Loveikin, Pochka, Romasevych (2018) with the Kloss data only (no catalogue, no circuit).
-const char* const kKlossOnlyScene = R"(
-simulation: {t_end: 1.0}
-crank: {radius: 0.2, offset_deg: 90}
-rods: {model: distributed, length: 0.8, mass: 64}
-carts: {count: 4, mass: 1000}
-motor: {omega_sync: 104.72, breakdown_torque: 517.14, critical_slip: 0.1146, rotor_inertia: 0.4}
-reducer: {ratio: 9.8, efficiency: 0.9}
-coupling: {type: elastic, stiffness: 200000}
-)";
+// The scene tests' minimal scene: the Kloss data only (no catalogue, no circuit).
+using test::kMinimalScene;
 
 TEST(MotorModelTable, RowsFollowTheEnumerationAndNameTheSchemasWords) {
   const auto& table = motorModelTable();
@@ -51,7 +44,7 @@ TEST(MotorModelTable, EveryLawNamesItselfInTheRunsEffects) {
 TEST(MotorModelTable, KlossCurveLawsPeakAtTheBreakdownTorqueAtTheCriticalSlip) {
   for (const MotorModelInfo& law : motorModelTable()) {
     if (!law.kloss_curve) continue;
-    const Scene sc = parseSceneText(kKlossOnlyScene, "kloss-only.yaml", {std::string("motor.model=") + law.word});
+    const Scene sc = parseSceneText(kMinimalScene, "kloss-only.yaml", {std::string("motor.model=") + law.word});
     const auto m = makeMotorLaw(sc);
     const double w_kr = sc.motor.omega_sync * (1.0 - sc.motor.critical_slip);
     EXPECT_NEAR(m->steadyTorque(SupplyState{}, w_kr), sc.motor.breakdown_torque, 1e-9 * sc.motor.breakdown_torque)
@@ -63,10 +56,10 @@ TEST(MotorModelTable, MachineLawsNeedTheCatalogueOrTheCircuit) {
   for (const MotorModelInfo& law : motorModelTable()) {
     const std::string set = std::string("motor.model=") + law.word;
     if (law.kloss_curve) {
-      EXPECT_NO_THROW(parseSceneText(kKlossOnlyScene, "kloss-only.yaml", {set})) << law.word;
+      EXPECT_NO_THROW(parseSceneText(kMinimalScene, "kloss-only.yaml", {set})) << law.word;
     } else {
       EXPECT_TRUE(isMachineLaw(law.model));
-      EXPECT_ANY_THROW(parseSceneText(kKlossOnlyScene, "kloss-only.yaml", {set})) << law.word;
+      EXPECT_ANY_THROW(parseSceneText(kMinimalScene, "kloss-only.yaml", {set})) << law.word;
     }
   }
 }
