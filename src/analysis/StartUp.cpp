@@ -268,6 +268,16 @@ struct SteadyWindow {
   std::size_t n_running = 0; // rows before the switch-off
 };
 
+// No steady state within the run: its last whole revolution stands in for it (said in the notes).
+RowSpan lastRevolutionStandsIn(const SteadyState& ss, const std::vector<double>& t, StartUp& r) {
+  r.steady_begin = ss.revolutions.back().t_begin;
+  r.steady_end = ss.revolutions.back().t_end;
+  r.notes.push_back("The run reaches no steady state (the last revolutions' mean crank speeds differ by more "
+                    "than 1e-3): its last whole revolution, t = " + fmt("%.4g", r.steady_begin) + " ... " +
+                    fmt("%.4g", r.steady_end) + " s, stands in for the steady window.");
+  return {firstRowAtOrAfter(t, r.steady_begin), std::min(t.size(), firstRowAtOrAfter(t, r.steady_end) + 1)};
+}
+
 // The steady window: on the rows before the switch-off. Sets r.t_off, the window's times and the
 // steady mean crank speed.
 SteadyWindow findSteadyWindow(const Scene& sc, const RunResult& run, const std::vector<double>& t,
@@ -281,18 +291,10 @@ SteadyWindow findSteadyWindow(const Scene& sc, const RunResult& run, const std::
   r.steady_reached = ss.reached;
   r.steady_begin = ss.t_begin;
   r.steady_end = ss.t_end;
-  std::size_t w0 = ss.row_begin, w1 = std::min(ss.row_end, t.size());
-  if (!ss.reached && !ss.revolutions.empty()) {
-    // No steady state within the run: its last whole revolution stands in for it (said in the notes).
-    r.steady_begin = ss.revolutions.back().t_begin;
-    r.steady_end = ss.revolutions.back().t_end;
-    w0 = firstRowAtOrAfter(t, r.steady_begin);
-    w1 = std::min(t.size(), firstRowAtOrAfter(t, r.steady_end) + 1);
-    r.notes.push_back("The run reaches no steady state (the last revolutions' mean crank speeds differ by more "
-                      "than 1e-3): its last whole revolution, t = " + fmt("%.4g", r.steady_begin) + " ... " +
-                      fmt("%.4g", r.steady_end) + " s, stands in for the steady window.");
-  }
-  window.rows = {w0, w1};
+  const RowSpan rows = !ss.reached && !ss.revolutions.empty() ? lastRevolutionStandsIn(ss, t, r)
+                                                              : RowSpan{ss.row_begin, std::min(ss.row_end, t.size())};
+  const std::size_t w0 = rows.begin, w1 = rows.end;
+  window.rows = rows;
   window.duration = w1 > w0 + 1 ? t[w1 - 1] - t[w0] : 0.0;
   r.steady_mean_speed =
       window.duration > 0 ? integrate(t, w0, w1, [&](std::size_t i) { return w[i]; }) / window.duration : kNaN;
