@@ -125,6 +125,23 @@ std::string operatingPointCaption(bool kloss_law) {
          "nominal and breakdown points.";
 }
 
+// The speeds and torques the steady window's operating points span.
+struct OperatingRange {
+  double wlo = INFINITY, whi = -INFINITY;  // speed reduced to the crank [rad/s]
+  double mlo = INFINITY, mhi = -INFINITY;  // torque at the crank [N·m]
+};
+
+OperatingRange operatingRange(const std::vector<size_t>& rows, const std::vector<double>& w,
+                              const std::vector<double>& m) {
+  OperatingRange g;
+  for (size_t r : rows)
+    if (r < w.size() && r < m.size() && std::isfinite(w[r]) && std::isfinite(m[r])) {
+      g.wlo = std::min(g.wlo, w[r]), g.whi = std::max(g.whi, w[r]);
+      g.mlo = std::min(g.mlo, m[r]), g.mhi = std::max(g.mhi, m[r]);
+    }
+  return g;
+}
+
 struct MotorPlanner {
   const OutputFolder& out;
   const Scene* scene;
@@ -183,12 +200,8 @@ struct MotorPlanner {
   // The close-up on the steady window's operating range (zoom: the first figure's spec).
   void operatingPointZoom(PlotSpec zoom, const std::vector<size_t>& rows, const MotorMarks& k,
                           const std::vector<double>& w, const std::vector<double>& m) {
-    double wlo = INFINITY, whi = -INFINITY, mlo = INFINITY, mhi = -INFINITY;
-    for (size_t r : rows)
-      if (r < w.size() && r < m.size() && std::isfinite(w[r]) && std::isfinite(m[r])) {
-        wlo = std::min(wlo, w[r]), whi = std::max(whi, w[r]);
-        mlo = std::min(mlo, m[r]), mhi = std::max(mhi, m[r]);
-      }
+    const OperatingRange range = operatingRange(rows, w, m);
+    const double wlo = range.wlo, whi = range.whi, mlo = range.mlo, mhi = range.mhi;
     if (!(whi > wlo) || !(mhi > mlo)) return;
     // Zoom on the operating range; the torque axis keeps the nominal and breakdown lines in view.
     const double dw = 0.5 * (whi - wlo);
