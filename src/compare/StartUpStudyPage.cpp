@@ -135,7 +135,7 @@ void table1FromRestSection(std::ostringstream& md, const std::string& dir, std::
     std::map<std::pair<double, double>, double> published;
     const std::string pub = dir + "/../published/loveikin2018_table1.csv";
     if (std::filesystem::exists(pub)) {
-      const LooseTable t = readLooseCsv(pub);
+      const StudyTable t = readStudyTable(pub);
       for (std::size_t i = 0; i < t.rows.size(); ++i)
         published[{t.at(i, "dphi_deg"), t.at(i, "k")}] = t.at(i, "coupling_torque_swing");
     }

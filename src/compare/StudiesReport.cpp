@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/CsvTable.h"
 #include "io/ReadFile.h"
 #include "io/FieldFormat.h"
 
@@ -33,7 +34,7 @@ const char* kGenerated =
 bool exists(const std::string& path) { return std::filesystem::exists(path); }
 
 // Index of the smallest finite value of a column over rows passing `keep`; -1 when none.
-int argmin(const LooseTable& t, const std::string& col, const std::function<bool(std::size_t)>& keep = {}) {
+int argmin(const StudyTable& t, const std::string& col, const std::function<bool(std::size_t)>& keep = {}) {
   int best = -1;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const double v = t.at(i, col);
@@ -44,7 +45,7 @@ int argmin(const LooseTable& t, const std::string& col, const std::function<bool
 }
 
 // A markdown table of selected columns (header, column) with `prec` significant digits.
-void table(std::ostream& md, const LooseTable& t, const std::vector<std::pair<std::string, std::string>>& cols,
+void table(std::ostream& md, const StudyTable& t, const std::vector<std::pair<std::string, std::string>>& cols,
            int prec = 4) {
   for (const auto& c : cols) md << "| " << c.first << " ";
   md << "|\n";
@@ -66,7 +67,7 @@ StudiesPage coefficientPage(const std::string& dir, const std::string& stem, con
   md << "# " << title << "\n\n" << kGenerated;
   const std::string path = dir + "/" + stem + ".csv";
   if (!exists(path)) return {stem + ".md", md.str() + missing(stem + ".csv")};
-  const LooseTable t = readLooseCsv(path);
+  const StudyTable t = readStudyTable(path);
   md << "Command: `" << command << "`. Ours: reduced model, `" << stem << ".csv` (our columns `ours_*` beside the "
      << "published `published_*` from `../published/" << published_file << "`); raw sweep and plots in `" << stem
      << "/`. δ = (ω_max − ω_min)/ω_mean: coefficient of unevenness (Loveikin and Pochka (2007), eq. (12)); H, k_p: "
@@ -95,7 +96,7 @@ StudiesPage coefficientPage(const std::string& dir, const std::string& stem, con
   md << "- Gap of δ, (ours − paper)/paper, over the points: " << pct(lo) << " … " << pct(hi) << ".\n";
   const std::string mb = dir + "/" + stem + "_multibody.csv";
   if (exists(mb)) {
-    const LooseTable m = readLooseCsv(mb);
+    const StudyTable m = readStudyTable(mb);
     double worst = 0;
     std::string at;
     for (std::size_t i = 0; i < m.rows.size(); ++i)
@@ -121,7 +122,7 @@ StudiesPage loveikin2018Table1(const std::string& dir) {
      << kGenerated;
   const std::string path = dir + "/" + stem + ".csv";
   if (!exists(path)) return {"loveikin2018_table1.md", md.str() + missing(stem + ".csv")};
-  const LooseTable t = readLooseCsv(path);
+  const StudyTable t = readStudyTable(path);
   md << "Command: `rollerdyn sweep model/balanced-4cart.yaml --param coupling.damping --values 2000,8000 --param "
         "crank.offset_deg --values 0:90:10 --model reduced --set initial.crank_speed=10.42 --set simulation.t_end=20`, "
         "the same start (nominal crank speed ω_n/u = 102.1/9.8 = 10.42 rad/s) and length as the Table 1 comparison of "
@@ -153,7 +154,7 @@ StudiesPage loveikin2018Table1(const std::string& dir) {
   }
   const std::string mb = dir + "/" + stem + "_multibody.csv";
   if (exists(mb)) {
-    const LooseTable m = readLooseCsv(mb);
+    const StudyTable m = readStudyTable(mb);
     double worst = 0;
     for (std::size_t i = 0; i < m.rows.size(); ++i)
       for (std::size_t j = 0; j < t.rows.size(); ++j)
@@ -184,7 +185,7 @@ StudiesPage loveikin2018Stiffness(const std::string& dir) {
       md << missing(path);
       continue;
     }
-    const LooseTable t = readLooseCsv(path);
+    const StudyTable t = readStudyTable(path);
     table(md, t, {{"c [N·m/rad]", "coupling.stiffness"}, {"ΔM [N·m]", "coupling_torque_swing"}, {"δ", "delta"},
                   {"mean ω [rad/s]", "omega_crank_mean"}, {"steady", "steady_state_reached"},
                   {"resonance warnings", "resonance_warnings"}});
@@ -275,51 +276,20 @@ StudiesPage chainPage(const std::string& dir) {
 
 }  // namespace
 
-int LooseTable::index(const std::string& column) const {
+int StudyTable::index(const std::string& column) const {
   for (std::size_t i = 0; i < columns.size(); ++i)
     if (columns[i] == column) return int(i);
   return -1;
 }
-double LooseTable::at(std::size_t row, const std::string& column) const {
+double StudyTable::at(std::size_t row, const std::string& column) const {
   const int c = index(column);
   return c < 0 || row >= rows.size() ? kNaN : rows[row][c];
 }
 
-LooseTable readLooseCsv(const std::string& path) {
-  std::istringstream in(readFileContents(path, "study table"));
-  LooseTable t;
-  std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> fields;
-    std::string f;
-    bool quoted = false;
-    for (char ch : line) {  // commas inside "..." (status texts) do not split
-      if (ch == '"') quoted = !quoted;
-      else if (ch == ',' && !quoted) { fields.push_back(f); f.clear(); }
-      else f += ch;
-    }
-    fields.push_back(f);
-    if (t.columns.empty()) {
-      t.columns = fields;
-      continue;
-    }
-    if (fields.size() != t.columns.size())
-      throw std::runtime_error(path + ":" + std::to_string(lineno) + ": expected " + std::to_string(t.columns.size()) +
-                               " fields, got " + std::to_string(fields.size()));
-    std::vector<double> row;
-    for (const auto& x : fields) {
-      char* end = nullptr;
-      const double v = std::strtod(x.c_str(), &end);
-      row.push_back(!x.empty() && end && *end == '\0' ? v : kNaN);
-    }
-    t.rows.push_back(row);
-  }
-  if (t.columns.empty()) throw std::runtime_error(path + ": no header row");
-  return t;
+StudyTable readStudyTable(const std::string& path) {
+  CsvLayout layout;
+  Table table = readAnnotatedCsvFileWithText(path, "study table", &layout);
+  return {layout.header, std::move(table.rows)};
 }
 
 std::vector<StudiesPage> buildStudiesPages(const std::string& dir) {
