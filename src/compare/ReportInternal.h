@@ -100,6 +100,9 @@ class ReportWriter {
   void loveikin2018(const PaperSweep& p);
   void sensitivity();
   void analytic();
+  void analyticCheck(int n, const std::string& what, double closed, double simulated, int prec);
+  void analyticFrequencies(double p0);
+  void analyticHarmonicsClaim(double worst);
   void motor();
   void items();
   int firstItemNumber() const;  // (5) when there is no motor section, else (6)
