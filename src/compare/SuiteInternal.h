@@ -95,7 +95,27 @@ class Suite {
   ComparisonCase shippedSceneDifference(const char* label, const char* file, const char* description,
                                         const std::vector<ComparisonCase>& earlier);
   void papers(ValidationResults& r);
+  // One paper's sweep each, described and run into `p`; false when interrupted (p incomplete).
+  bool loveikin2007Sweep(PaperSweep& p);
+  bool energyBalancedSweep(PaperSweep& p);
+  bool fittedBaranovStep(PaperSweep& p);
+  bool loveikin2018Sweep(PaperSweep& p);
+  bool loveikin2018Points(PaperSweep& p);
+  bool otherReadingPoints(PaperSweep& p);
   void sensitivity(ValidationResults& r);
+  // The point of a paper where the sensitivity table changes one input at a time.
+  struct SensitivityPoint {
+    std::string paper, point, file;
+    std::vector<std::string> base;  // --set values of the point as the scene ships
+    std::string metric;
+    double published;
+    double RunMetrics::*field;
+  };
+  void sensitivityRow(ValidationResults& r, const SensitivityPoint& at, const std::string& change_label,
+                      const std::vector<std::string>& change) const;
+  void sensitivityLoveikin2007(ValidationResults& r) const;
+  void sensitivityEnergyBalanced(ValidationResults& r) const;
+  void sensitivityLoveikin2018(ValidationResults& r) const;
   void findings(ValidationResults& r);
   void analytic(ValidationResults& r);
 
