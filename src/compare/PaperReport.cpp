@@ -188,6 +188,32 @@ void ReportWriter::coefficientFigure(const std::string& name, PlotSpec spec, con
   figure(name, std::move(spec), caption);
 }
 
+// Section (3): each paper's table beside ours, then the gap's likely causes.
+void ReportWriter::papers() {
+  md_ << "\n## (3) The papers' tables\n\nInputs are the shipped scene files; they are never tuned to "
+      << "the published numbers. The published tables came from the papers' own coarse scheme and "
+      << "partly unstated inputs (listed in the scene files' headers); the likely causes of "
+      << "each gap are listed after its table.\n";
+  for (const auto& p : r_.papers) {
+    section("(3) " + p.title);
+    if (p.id == "loveikin2007") loveikin2007(p);
+    if (p.id == "energy_balanced") energyBalanced(p);
+    if (p.id == "loveikin2018") loveikin2018(p);
+    if (!p.findings.empty()) paperFindings(p);
+  }
+}
+
+// The gap's likely causes (PaperFindings.h), each a claim unless it is a measurement.
+void ReportWriter::paperFindings(const PaperSweep& p) {
+  md_ << "\nThe gap and its likely causes, each with the comparison behind it:\n\n";
+  int n = 0;
+  for (const auto& f : p.findings) {
+    const std::string id = p.id + "." + std::to_string(++n);
+    md_ << "- " << (f.verdict == Verdict::Measurement ? "" : "**" + id + "** ") << f.text
+        << (f.verdict == Verdict::Measurement ? "" : " " + verdict(id, f.verdict, f.text)) << "\n";
+  }
+}
+
 void ReportWriter::loveikin2007(const PaperSweep& p) {
   md_ << "\n### Loveikin and Pochka (2007): recuperative drive, Δφ sweep\n\n"
       << "Scene `model/" << p.scene_file << "` as shipped (its header lists every assumption), "
