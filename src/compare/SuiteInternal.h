@@ -90,6 +90,14 @@ class Suite {
 
   void equivalence(ValidationResults& r);
   void perCart(ValidationResults& r);
+ public:  // named by the functions of ValidationPerCart.cpp
+  struct PerCartSpec;
+  struct PerCartOrders;
+
+ private:
+  ComparisonCase perCartCase(const PerCartSpec& s, const std::vector<std::string>& base);
+  PerCartOrders perCartOrders(const ModelComparison& c, double t_end, const PerCartSpec& s,
+                              const std::vector<std::string>& base) const;
   void differences(ValidationResults& r);
   // A shipped scene as it is in both models, with the claim that explains their difference.
   ComparisonCase shippedSceneDifference(const char* label, const char* file, const char* description,
