@@ -88,7 +88,16 @@ class Suite {
   bool sweepPaper(PaperSweep& p, const std::vector<double>& xs, const std::vector<double>& multibody_at,
                   const std::string& published_key, const std::function<std::string(double)>& describe);
 
+  // Crank revolutions of each equivalence and per-cart run.
+  double revolutions() const { return o_.quick ? 5 : 20; }
   void equivalence(ValidationResults& r);
+ public:  // named by the functions of ValidationSuite.cpp
+  struct EquivalenceSpec;
+
+ private:
+  void equivalenceE0(ValidationResults& r);
+  bool equivalenceCases(ValidationResults& r, const std::vector<EquivalenceSpec>& specs);
+  void convergence(ValidationResults& r, const std::vector<EquivalenceSpec>& specs);
   void perCart(ValidationResults& r);
  public:  // named by the functions of ValidationPerCart.cpp
   struct PerCartSpec;
@@ -99,6 +108,12 @@ class Suite {
   PerCartOrders perCartOrders(const ModelComparison& c, double t_end, const PerCartSpec& s,
                               const std::vector<std::string>& base) const;
   void differences(ValidationResults& r);
+  // Crank revolutions of each run of section (2) (D6-D8: the scene's own t_end).
+  double differenceRevolutions() const { return o_.quick ? 3 : 10; }
+  ComparisonCase distributedRodsDifference(ValidationResults& r);
+  ComparisonCase frictionDifference(ValidationResults& r);
+  ComparisonCase truncatedKinematicsDifference();
+  ComparisonCase baranovDifference();
   // A shipped scene as it is in both models, with the claim that explains their difference.
   ComparisonCase shippedSceneDifference(const char* label, const char* file, const char* description,
                                         const std::vector<ComparisonCase>& earlier);

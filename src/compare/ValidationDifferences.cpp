@@ -213,52 +213,15 @@ ComparisonCase Suite::shippedSceneDifference(const char* label, const char* file
 }
 
 void Suite::differences(ValidationResults& r) {
-  const double revs = o_.quick ? 3 : 10;
-  // D1: distributed rods, no friction.
-  ModelComparison c1;
-  ComparisonCase d1 = compareCase("D1", "distributed rods, no guide friction (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml",
-                                  {"loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, revs, &c1);
-  if (d1.complete) {
-    explainDistributedRods(load("balanced-4cart.yaml", {}), c1, d1);
-    r.distributed_example = c1.table;
-  }
-  r.differences.push_back(d1);
+  r.differences.push_back(distributedRodsDifference(r));
   // D2: split rods, reactions only (E1 of the equivalence section, no new run).
   if (!r.equivalence.empty() && r.equivalence.front().complete) r.differences.push_back(splitRodsReactions(r.equivalence.front()));
   if (interrupted()) return;
-  // D3: guide friction from dynamic reactions.
-  ModelComparison c3;
-  ComparisonCase d3 = compareCase("D3", "guide friction f = 0.008, split rods (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml",
-                                  {"rods.model=split", "simulation.accuracy=1e-9"}, revs, &c3);
-  if (d3.complete) {
-    frictionMeasurements(load("balanced-4cart.yaml", {}), c3, d3);
-    r.friction_example = c3.table;
-  }
-  r.differences.push_back(d3);
+  r.differences.push_back(frictionDifference(r));
   if (interrupted()) return;
-  // D4: truncated kinematics.
-  ModelComparison c4;
-  ComparisonCase d4 = compareCase("D4", "truncated series kinematics in reduced (Loveikin, Pochka, Romasevych (2018) eq. (52)-(57)), split rods, no friction",
-                                  "balanced-4cart.yaml",
-                                  {"rods.model=split", "loads.guide_friction.coefficient=0",
-                                   "reduced.kinematics=truncated", "simulation.accuracy=1e-9"},
-                                  revs, &c4);
-  if (d4.complete) explainTruncatedKinematics(load("balanced-4cart.yaml", {}), c4, d4);
-  r.differences.push_back(d4);
+  r.differences.push_back(truncatedKinematicsDifference());
   if (interrupted()) return;
-  // D5: the papers' Baranov scheme (rigid drive).
-  ModelComparison c5;
-  const std::vector<std::string> sets = {"rods.model=split", "reduced.integrator=baranov",
-                                         "reduced.baranov_step_deg=1", "simulation.accuracy=1e-9"};
-  ComparisonCase d5 = compareCase("D5", "the papers' Baranov scheme, 1° step, in the reduced model; 2 carts opposite, rigid drive",
-                                  "recuperative-2cart.yaml", sets, revs, &c5);
-  if (d5.complete) {
-    std::vector<std::string> fine = sets;
-    fine[2] = "reduced.baranov_step_deg=0.25";
-    fine.push_back("simulation.t_end=" + exact(d5.t_end));
-    explainBaranovOrder(load("recuperative-2cart.yaml", fine), c5, d5);
-  }
-  r.differences.push_back(d5);
+  r.differences.push_back(baranovDifference());
   // D6-D8: the shipped scenes as they are.
   struct Spec { const char* label; const char* file; const char* description; };
   const Spec shipped[] = {{"D6", "balanced-4cart.yaml", "Loveikin, Pochka, Romasevych (2018) scene as shipped (distributed rods, friction 0.008)"},
@@ -269,6 +232,58 @@ void Suite::differences(ValidationResults& r) {
     if (o_.quick && std::string(s.label) != "D6") continue;
     r.differences.push_back(shippedSceneDifference(s.label, s.file, s.description, r.differences));
   }
+}
+
+// D1: distributed rods, no friction.
+ComparisonCase Suite::distributedRodsDifference(ValidationResults& r) {
+  ModelComparison c1;
+  ComparisonCase d1 = compareCase("D1", "distributed rods, no guide friction (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml",
+                                  {"loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, differenceRevolutions(), &c1);
+  if (d1.complete) {
+    explainDistributedRods(load("balanced-4cart.yaml", {}), c1, d1);
+    r.distributed_example = c1.table;
+  }
+  return d1;
+}
+
+// D3: guide friction from dynamic reactions.
+ComparisonCase Suite::frictionDifference(ValidationResults& r) {
+  ModelComparison c3;
+  ComparisonCase d3 = compareCase("D3", "guide friction f = 0.008, split rods (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml",
+                                  {"rods.model=split", "simulation.accuracy=1e-9"}, differenceRevolutions(), &c3);
+  if (d3.complete) {
+    frictionMeasurements(load("balanced-4cart.yaml", {}), c3, d3);
+    r.friction_example = c3.table;
+  }
+  return d3;
+}
+
+// D4: truncated kinematics.
+ComparisonCase Suite::truncatedKinematicsDifference() {
+  ModelComparison c4;
+  ComparisonCase d4 = compareCase("D4", "truncated series kinematics in reduced (Loveikin, Pochka, Romasevych (2018) eq. (52)-(57)), split rods, no friction",
+                                  "balanced-4cart.yaml",
+                                  {"rods.model=split", "loads.guide_friction.coefficient=0",
+                                   "reduced.kinematics=truncated", "simulation.accuracy=1e-9"},
+                                  differenceRevolutions(), &c4);
+  if (d4.complete) explainTruncatedKinematics(load("balanced-4cart.yaml", {}), c4, d4);
+  return d4;
+}
+
+// D5: the papers' Baranov scheme (rigid drive), its order measured against a finer step.
+ComparisonCase Suite::baranovDifference() {
+  ModelComparison c5;
+  const std::vector<std::string> sets = {"rods.model=split", "reduced.integrator=baranov",
+                                         "reduced.baranov_step_deg=1", "simulation.accuracy=1e-9"};
+  ComparisonCase d5 = compareCase("D5", "the papers' Baranov scheme, 1° step, in the reduced model; 2 carts opposite, rigid drive",
+                                  "recuperative-2cart.yaml", sets, differenceRevolutions(), &c5);
+  if (d5.complete) {
+    std::vector<std::string> fine = sets;
+    fine[2] = "reduced.baranov_step_deg=0.25";
+    fine.push_back("simulation.t_end=" + exact(d5.t_end));
+    explainBaranovOrder(load("recuperative-2cart.yaml", fine), c5, d5);
+  }
+  return d5;
 }
 
 }  // namespace rollerdyn::validation::detail

@@ -140,7 +140,7 @@ void Suite::perCart(ValidationResults& r) {
 // One case: both models on the changed scene, then claims (a) and (b).
 ComparisonCase Suite::perCartCase(const PerCartSpec& s, const std::vector<std::string>& base) {
   ModelComparison c;
-  ComparisonCase cc = compareCase(s.label, s.description, kPerCartScene, concat(base, s.sets), o_.quick ? 5 : 20, &c);
+  ComparisonCase cc = compareCase(s.label, s.description, kPerCartScene, concat(base, s.sets), revolutions(), &c);
   if (!cc.complete) {
     cc.verdict = Finding::Verdict::Fails;
     return cc;

@@ -84,25 +84,22 @@ ComparisonCase Suite::compareCase(const std::string& label, const std::string& d
   return cc;
 }
 
-void Suite::equivalence(ValidationResults& r) {
-  const double revs = o_.quick ? 5 : 20;
-  // E0: the README's command, `rollerdyn compare model/balanced-4cart.yaml --set rods.model=split
-  // --set loads.guide_friction.coefficient=0 --set simulation.accuracy=1e-9`, over 20 revolutions.
-  {
-    ModelComparison c;
-    ComparisonCase cc =
-        compareCase("E0", "4 carts, one side, Δφ = 90°, elastic coupling (Loveikin, Pochka, Romasevych (2018) scene), accuracy 1e-9",
-                    "balanced-4cart.yaml",
-                    {"rods.model=split", "loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, revs, &c);
-    r.equivalence_example = c.table;
-    r.equivalence.push_back(cc);
-  }
-  // E1-E7 at accuracy 1e-11: at 1e-9 the rigid-drive scenes with loads opposing the velocity and
-  // the single cart reach a few 1e-6 in the coupling torque and at 1e-10 the single cart still
-  // ~1e-6, an integration error (the convergence study below shows it falling tenfold per decade
-  // of accuracy); 1e-11 leaves a margin of about ten.
-  struct Spec { const char* description; const char* file; std::vector<std::string> sets; bool quick; };
-  const std::vector<Spec> specs = {
+// An equivalence case E1-E7: the scene, what it changes, and whether --quick runs it.
+struct Suite::EquivalenceSpec {
+  const char* description;
+  const char* file;
+  std::vector<std::string> sets;
+  bool quick;
+};
+
+namespace {
+
+// E1-E7 at accuracy 1e-11: at 1e-9 the rigid-drive scenes with loads opposing the velocity and
+// the single cart reach a few 1e-6 in the coupling torque and at 1e-10 the single cart still
+// ~1e-6, an integration error (the convergence study below shows it falling tenfold per decade
+// of accuracy); 1e-11 leaves a margin of about ten.
+std::vector<Suite::EquivalenceSpec> equivalenceSpecs() {
+  return {
       {"4 carts, one side, Δφ = 90°, elastic coupling (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml", {}, false},
       {"4 carts, one side, Δφ = 90°, rigid drive", "balanced-4cart.yaml", {"coupling.type=rigid"}, false},
       {"1 cart, elastic coupling", "balanced-4cart.yaml", {"carts.count=1"}, false},
@@ -112,29 +109,58 @@ void Suite::equivalence(ValidationResults& r) {
        {"coupling.type=elastic", "coupling.stiffness=200000", "coupling.damping=8000"}, false},
       {"4 carts on alternate sides, Δφ = 90°, elastic coupling", "balanced-4cart.yaml", {"carts.sides=alternate"}, false},
   };
+}
+
+}  // namespace
+
+void Suite::equivalence(ValidationResults& r) {
+  equivalenceE0(r);
+  const std::vector<EquivalenceSpec> specs = equivalenceSpecs();
+  if (equivalenceCases(r, specs)) convergence(r, specs);
+}
+
+// E0: the README's command, `rollerdyn compare model/balanced-4cart.yaml --set rods.model=split
+// --set loads.guide_friction.coefficient=0 --set simulation.accuracy=1e-9`, over 20 revolutions.
+void Suite::equivalenceE0(ValidationResults& r) {
+  ModelComparison c;
+  ComparisonCase cc =
+      compareCase("E0", "4 carts, one side, Δφ = 90°, elastic coupling (Loveikin, Pochka, Romasevych (2018) scene), accuracy 1e-9",
+                  "balanced-4cart.yaml",
+                  {"rods.model=split", "loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, revolutions(), &c);
+  r.equivalence_example = c.table;
+  r.equivalence.push_back(cc);
+}
+
+// E1-E7 (--quick: E4 only); false when interrupted.
+bool Suite::equivalenceCases(ValidationResults& r, const std::vector<EquivalenceSpec>& specs) {
   int k = 0;
-  for (const Spec& s : specs) {
+  for (const EquivalenceSpec& s : specs) {
     ++k;
     if (o_.quick && !s.quick) continue;
-    if (interrupted()) return;
+    if (interrupted()) return false;
     ComparisonCase cc = compareCase("E" + std::to_string(k), s.description, s.file,
-                                    concat(concat(kEquivalentPhysics, s.sets), {"simulation.accuracy=1e-11"}), revs, nullptr);
+                                    concat(concat(kEquivalentPhysics, s.sets), {"simulation.accuracy=1e-11"}),
+                                    revolutions(), nullptr);
     if (!cc.motion_equivalent && cc.complete)
       throw std::logic_error("validation: equivalence case " + cc.label + " is not motion-equivalent");
     r.equivalence.push_back(cc);
   }
-  // Convergence: the same comparison at other accuracies. A modelling difference would stay put
-  // as the accuracy tightens; integration error falls with it.
+  return true;
+}
+
+// Convergence: the same comparison at other accuracies. A modelling difference would stay put
+// as the accuracy tightens; integration error falls with it.
+void Suite::convergence(ValidationResults& r, const std::vector<EquivalenceSpec>& specs) {
   const std::vector<double> accs = o_.quick ? std::vector<double>{1e-9} : std::vector<double>{1e-8, 1e-9, 1e-10};
   for (int e : {4, 3}) {
     if (o_.quick && e != 4) continue;
-    const Spec& s = specs[e - 1];
+    const EquivalenceSpec& s = specs[e - 1];
     for (double acc : accs) {
       if (interrupted()) return;
       char a[48];
       std::snprintf(a, sizeof a, "simulation.accuracy=%g", acc);
       r.convergence.push_back(compareCase("E" + std::to_string(e), s.description, s.file,
-                                          concat(concat(kEquivalentPhysics, s.sets), {a}), revs, nullptr));
+                                          concat(concat(kEquivalentPhysics, s.sets), {a}), revolutions(), nullptr));
     }
     for (const auto& c : r.equivalence)
       if (c.label == "E" + std::to_string(e)) r.convergence.push_back(c);
