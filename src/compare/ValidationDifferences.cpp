@@ -16,56 +16,76 @@
 
 namespace rollerdyn::validation::detail {
 
-// Largest |friction| mismatch and the lag of the multibody friction behind the reactions, from the tables.
-void frictionMeasurements(const Scene& sc, const ModelComparison& c, ComparisonCase& cc) {
+namespace {
+
+// The friction of the two models compared on the multibody rows: largest ||friction|| and
+// |N_front|+|N_rear| differences, their scales, and the lag of the multibody friction behind
+// f·(|N_front| + |N_rear|) of the same instant.
+struct FrictionGap {
+  double fr_diff = 0, fr_max = 0, n_diff = 0, n_max = 0, lag = 0;  // [N]
+};
+
+// Adds cart j's rows (1-based, as in the column names) to the gap.
+void addCartFrictionGap(const Scene& sc, const ModelComparison& c, int j, FrictionGap& gap) {
   const Table& rm = c.multibody.reactions;
   const Table& rr = c.reduced.reactions;
-  const Table& tm = c.multibody.timeseries;
   const std::vector<double> t = rm.column("t"), tr = rr.column("t");
-  double fr_diff = 0, fr_max = 0, n_diff = 0, n_max = 0, lag = 0;
   const double f = sc.loads.guide_friction, vs = sc.loads.velocity_smoothing;
-  for (int j = 1; j <= sc.carts.count; ++j) {
-    const std::string s = std::to_string(j);
-    const auto fm = rm.column("friction_" + s);
-    const auto fr = resampleLinear(tr, rr.column("friction_" + s), t);
-    const auto n1m = rm.column("N_front_" + s), n2m = rm.column("N_rear_" + s);
-    const auto n1r = resampleLinear(tr, rr.column("N_front_" + s), t);
-    const auto n2r = resampleLinear(tr, rr.column("N_rear_" + s), t);
-    const auto v = tm.column("v_cart_" + s);
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      if (!std::isfinite(fr[i])) continue;
-      // Magnitudes: near a reversal the two runs' carts change direction at slightly different
-      // times (their crank angles drift apart by the motion difference), which flips the sign
-      // of one friction force before the other; that is timing, not friction physics.
-      fr_diff = std::max(fr_diff, std::abs(std::abs(fm[i]) - std::abs(fr[i])));
-      fr_max = std::max(fr_max, std::abs(fm[i]));
-      const double nm = std::abs(n1m[i]) + std::abs(n2m[i]), nr = std::abs(n1r[i]) + std::abs(n2r[i]);
-      n_diff = std::max(n_diff, std::abs(nm - nr));
-      n_max = std::max(n_max, nm);
-      // Applied (lagged) friction against f·(|N1| + |N2|) of this very step's reactions.
-      if (i < v.size() && std::abs(v[i]) > 100 * vs)
-        lag = std::max(lag, std::abs(std::abs(fm[i]) - f * nm * std::abs(std::tanh(v[i] / vs))));
-    }
+  const std::string s = std::to_string(j);
+  const auto fm = rm.column("friction_" + s);
+  const auto fr = resampleLinear(tr, rr.column("friction_" + s), t);
+  const auto n1m = rm.column("N_front_" + s), n2m = rm.column("N_rear_" + s);
+  const auto n1r = resampleLinear(tr, rr.column("N_front_" + s), t);
+  const auto n2r = resampleLinear(tr, rr.column("N_rear_" + s), t);
+  const auto v = c.multibody.timeseries.column("v_cart_" + s);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!std::isfinite(fr[i])) continue;
+    // Magnitudes: near a reversal the two runs' carts change direction at slightly different
+    // times (their crank angles drift apart by the motion difference), which flips the sign
+    // of one friction force before the other; that is timing, not friction physics.
+    gap.fr_diff = std::max(gap.fr_diff, std::abs(std::abs(fm[i]) - std::abs(fr[i])));
+    gap.fr_max = std::max(gap.fr_max, std::abs(fm[i]));
+    const double nm = std::abs(n1m[i]) + std::abs(n2m[i]), nr = std::abs(n1r[i]) + std::abs(n2r[i]);
+    gap.n_diff = std::max(gap.n_diff, std::abs(nm - nr));
+    gap.n_max = std::max(gap.n_max, nm);
+    // Applied (lagged) friction against f·(|N1| + |N2|) of this very step's reactions.
+    if (i < v.size() && std::abs(v[i]) > 100 * vs)
+      gap.lag = std::max(gap.lag, std::abs(std::abs(fm[i]) - f * nm * std::abs(std::tanh(v[i] / vs))));
   }
-  cc.measured.push_back({"max ||friction| difference| [N]", g(fr_diff) + " (max |friction| " + g(fr_max) + " N)"});
-  cc.measured.push_back({"max ||N_front|+|N_rear|| difference [N]", g(n_diff) + " (max " + g(n_max) + " N)"});
-  cc.measured.push_back({"lag of the multibody friction behind f*(|N_front|+|N_rear|) [N]", g(lag)});
+}
+
+// Why the friction differs, in words with the numbers.
+std::string frictionExplanation(const Scene& sc, const FrictionGap& gap) {
+  const double f = sc.loads.guide_friction;
+  return "The guide friction f·(|N_front| + |N_rear|) (f: friction coefficient, N: guide normal forces) differs because "
+         "the normal forces differ: up to " + g(gap.n_diff) + " N between dynamic and quasi-static reactions, i.e. " +
+         g(f * gap.n_diff) + " N of friction against a measured friction difference of " + g(gap.fr_diff) +
+         " N. " +
+         (sc.loads.guide_normal_force == GuideNormalForce::Lagged
+              ? "The multibody friction follows the reactions with a lag τ_N = " + g(sc.loads.guide_friction_lag) +
+                    " s, which accounts for at most " + g(gap.lag) + " N (applied friction against f·(|N|) of the same instant). "
+              : "The multibody friction uses the reactions of the same instant (loads.guide_friction.normal_force = "
+                "algebraic): applied friction and f·(|N|) of the same instant differ by at most " + g(gap.lag) + " N. ") +
+         "Claim: the motion difference comes from the reaction difference (f·ΔN within a factor 2 of the friction "
+         "difference), not from the lag (under a fifth of it).";
+}
+
+}  // namespace
+
+// Largest |friction| mismatch and the lag of the multibody friction behind the reactions, from the tables.
+void frictionMeasurements(const Scene& sc, const ModelComparison& c, ComparisonCase& cc) {
+  FrictionGap gap;
+  for (int j = 1; j <= sc.carts.count; ++j) addCartFrictionGap(sc, c, j, gap);
+  cc.measured.push_back({"max ||friction| difference| [N]", g(gap.fr_diff) + " (max |friction| " + g(gap.fr_max) + " N)"});
+  cc.measured.push_back({"max ||N_front|+|N_rear|| difference [N]", g(gap.n_diff) + " (max " + g(gap.n_max) + " N)"});
+  cc.measured.push_back({"lag of the multibody friction behind f*(|N_front|+|N_rear|) [N]", g(gap.lag)});
   // Claim: the friction difference is the normal-force difference times f (within a factor 2),
   // and the lag accounts for less than a fifth of it.
-  const bool holds = fr_diff > 0 && f * n_diff > 0.5 * fr_diff && f * n_diff < 2.0 * fr_diff && lag < 0.2 * fr_diff;
+  const double f = sc.loads.guide_friction;
+  const bool holds = gap.fr_diff > 0 && f * gap.n_diff > 0.5 * gap.fr_diff && f * gap.n_diff < 2.0 * gap.fr_diff &&
+                     gap.lag < 0.2 * gap.fr_diff;
   cc.verdict = holds ? Finding::Verdict::Holds : Finding::Verdict::Fails;
-  cc.explanation =
-      "The guide friction f·(|N_front| + |N_rear|) (f: friction coefficient, N: guide normal forces) differs because "
-      "the normal forces differ: up to " + g(n_diff) + " N between dynamic and quasi-static reactions, i.e. " +
-      g(f * n_diff) + " N of friction against a measured friction difference of " + g(fr_diff) +
-      " N. " +
-      (sc.loads.guide_normal_force == GuideNormalForce::Lagged
-           ? "The multibody friction follows the reactions with a lag τ_N = " + g(sc.loads.guide_friction_lag) +
-                 " s, which accounts for at most " + g(lag) + " N (applied friction against f·(|N|) of the same instant). "
-           : "The multibody friction uses the reactions of the same instant (loads.guide_friction.normal_force = "
-             "algebraic): applied friction and f·(|N|) of the same instant differ by at most " + g(lag) + " N. ") +
-      "Claim: the motion difference comes from the reaction difference (f·ΔN within a factor 2 of the friction "
-      "difference), not from the lag (under a fifth of it).";
+  cc.explanation = frictionExplanation(sc, gap);
 }
 
 namespace {
