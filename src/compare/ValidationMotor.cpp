@@ -86,12 +86,9 @@ MotorClaim parkAgainstCircuit(const std::vector<std::pair<std::string, Induction
   return c;
 }
 
-MotorClaim klossLimit() {
-  MotorClaim c;
-  c.id = "M2";
-  c.title = "Static Kloss formula as the equivalent circuit's limit R_s → 0, L_m → ∞ (Modelica default machine "
-            "scaled): largest |M_circuit − M_Kloss|/M_kr over 0 < s ≤ 1";
-  const InductionMachineParameters base = reference::mslSquirrelCage();
+// The Kloss law the circuit tends to as R_s → 0, L_m → ∞: M_kr = 3p·U²/(2ω1·X), s_kr = R_r/X
+// with X = X_σs + X_σr.
+KlossMotor klossLimitOf(const InductionMachineParameters& base) {
   const double w1 = base.supplyAngularFrequency();
   const double X = w1 * (base.L_sigma_s + base.L_sigma_r[0]);
   KlossMotor kloss;
@@ -100,21 +97,36 @@ MotorClaim klossLimit() {
   kloss.breakdown_torque = 3.0 * base.pole_pairs * base.phase_voltage * base.phase_voltage / (2.0 * w1 * X);
   kloss.critical_slip = base.R_r[0] / X;
   kloss.rotor_inertia = reference::kMslRotorInertia;
+  return kloss;
+}
+
+// Largest |M_circuit − M_Kloss|/M_kr of machine m over 400 slips from 1e-4 to 1 (log-spaced).
+double klossDeviation(const InductionMachineParameters& m, const KlossLaw& kl, double breakdown_torque) {
+  const CircuitLaw circuit(m);
+  double worst = 0;
+  for (int i = 0; i <= 400; ++i) {
+    const double s = 1e-4 * std::pow(1e4, i / 400.0);
+    const double w = m.synchronousSpeed() * (1 - s);
+    worst = std::max(worst, std::abs(circuit.steadyTorque({}, w) - kl.steadyTorque({}, w)) / breakdown_torque);
+  }
+  return worst;
+}
+
+MotorClaim klossLimit() {
+  MotorClaim c;
+  c.id = "M2";
+  c.title = "Static Kloss formula as the equivalent circuit's limit R_s → 0, L_m → ∞ (Modelica default machine "
+            "scaled): largest |M_circuit − M_Kloss|/M_kr over 0 < s ≤ 1";
+  const InductionMachineParameters base = reference::mslSquirrelCage();
+  const KlossMotor kloss = klossLimitOf(base);
   const KlossLaw kl(kloss);
   std::vector<double> dev;
   for (int k = 0; k <= 5; ++k) {
     InductionMachineParameters m = base;
     m.R_s = base.R_s * std::pow(10.0, -k);
     m.L_m = base.L_m * std::pow(10.0, k);
-    const CircuitLaw circuit(m);
-    double worst = 0;
-    for (int i = 0; i <= 400; ++i) {
-      const double s = 1e-4 * std::pow(1e4, i / 400.0);
-      const double w = m.synchronousSpeed() * (1 - s);
-      worst = std::max(worst, std::abs(circuit.steadyTorque({}, w) - kl.steadyTorque({}, w)) / kloss.breakdown_torque);
-    }
-    dev.push_back(worst);
-    c.lines.push_back("R_s = " + g(m.R_s, 3) + " Ω, L_m = " + g(m.L_m, 3) + " H: " + g(worst, 3));
+    dev.push_back(klossDeviation(m, kl, kloss.breakdown_torque));
+    c.lines.push_back("R_s = " + g(m.R_s, 3) + " Ω, L_m = " + g(m.L_m, 3) + " H: " + g(dev.back(), 3));
   }
   // Both neglected terms are first order (R_s/X_σ and X_σ/X_m): a decade of each should cut the
   // deviation tenfold; claim at least fivefold per decade and below 1e-4 at the end.
@@ -279,6 +291,45 @@ MotorClaim krauseFreeAcceleration() {
   return c;
 }
 
+// One classical RK4 step of the law's states x at a fixed speed; f(y, dy) writes the derivatives.
+template <class F>
+void rk4Step(const F& f, std::vector<double>& x, double h) {
+  std::vector<double> k1(4), k2(4), k3(4), k4(4), tmp(4);
+  f(x, k1);
+  for (int i = 0; i < 4; ++i) tmp[i] = x[i] + 0.5 * h * k1[i];
+  f(tmp, k2);
+  for (int i = 0; i < 4; ++i) tmp[i] = x[i] + 0.5 * h * k2[i];
+  f(tmp, k3);
+  for (int i = 0; i < 4; ++i) tmp[i] = x[i] + h * k3[i];
+  f(tmp, k4);
+  for (int i = 0; i < 4; ++i) x[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+}
+
+// The space-phasor torque after a speed step w1 → w2 (held fixed; RK4 at te/2000 up to 5·te):
+// when it reaches 63 % of its step (interpolated between steps); -1 when it does not.
+double torqueLagTime(const ParkLaw& park, double w1, double w2, double te) {
+  std::vector<double> x(4);
+  park.initialState({}, w1, true, x.data());
+  const double m1 = park.steadyTorque({}, w1), m2 = park.steadyTorque({}, w2);
+  const double target = m1 + (1 - std::exp(-1.0)) * (m2 - m1);
+  auto f = [&](const std::vector<double>& y, std::vector<double>& d) {
+    MotorEvaluation e;
+    park.evaluate({}, w2, y.data(), e, d.data());
+    return e.torque;
+  };
+  const double h = te / 2000;
+  double t = 0, m_prev = m1, t_cross = -1;
+  while (t < 5 * te && t_cross < 0) {
+    rk4Step(f, x, h);
+    t += h;
+    std::vector<double> d(4);
+    const double mt = f(x, d);
+    if (mt >= target) t_cross = t - h * (mt - target) / (mt - m_prev);
+    m_prev = mt;
+  }
+  return t_cross;
+}
+
 MotorClaim dynamicKlossLag() {
   MotorClaim c;
   c.id = "M7";
@@ -291,33 +342,7 @@ MotorClaim dynamicKlossLag() {
   const double s_k = breakdownSlip(m, &m_k);
   const KlossMotor kloss{true, m.synchronousSpeed(), m_k, s_k, reference::kMslRotorInertia};
   const double te = KlossDynamicLaw::defaultTimeConstant(kloss, m.frequency);
-  const double w1 = m.synchronousSpeed() * 0.99, w2 = m.synchronousSpeed() * 0.988;
-  std::vector<double> x(4), k1(4), k2(4), k3(4), k4(4), tmp(4);
-  park.initialState({}, w1, true, x.data());
-  const double m1 = park.steadyTorque({}, w1), m2 = park.steadyTorque({}, w2);
-  const double target = m1 + (1 - std::exp(-1.0)) * (m2 - m1);
-  auto f = [&](const std::vector<double>& y, std::vector<double>& d) {
-    MotorEvaluation e;
-    park.evaluate({}, w2, y.data(), e, d.data());
-    return e.torque;
-  };
-  const double h = te / 2000;
-  double t = 0, m_prev = m1, t_cross = -1;
-  while (t < 5 * te && t_cross < 0) {  // classical RK4 at a fixed speed
-    f(x, k1);
-    for (int i = 0; i < 4; ++i) tmp[i] = x[i] + 0.5 * h * k1[i];
-    f(tmp, k2);
-    for (int i = 0; i < 4; ++i) tmp[i] = x[i] + 0.5 * h * k2[i];
-    f(tmp, k3);
-    for (int i = 0; i < 4; ++i) tmp[i] = x[i] + h * k3[i];
-    f(tmp, k4);
-    for (int i = 0; i < 4; ++i) x[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-    t += h;
-    std::vector<double> d(4);
-    const double mt = f(x, d);
-    if (mt >= target) t_cross = t - h * (mt - target) / (mt - m_prev);
-    m_prev = mt;
-  }
+  const double t_cross = torqueLagTime(park, m.synchronousSpeed() * 0.99, m.synchronousSpeed() * 0.988, te);
   const double rel = t_cross / te - 1;
   c.lines.push_back("T_e = " + g(te * 1e3) + " ms (s_kr = " + g(s_k) + "), the space-phasor torque reaches 63 % of its step after " +
                     g(t_cross * 1e3) + " ms (" + pct(rel) + "); tolerance 2 %: at s/s_kr ≈ 0.06 the rotor flux turns "
