@@ -330,30 +330,27 @@ Finding schemeClaimEnergyBalanced(const PaperSweep& p) {
 
 }  // namespace
 
-std::vector<Finding> findingsEnergyBalanced(const PaperSweep& p, const std::vector<SensitivityRow>& sens,
-                                            const Scene& scene) {
-  const std::string paper = "the energy-balanced drive paper";
-  std::vector<Finding> c;
-  const SweepPoint* p0 = at(p.points, 0);
-  const SweepPoint* p1 = p.points.empty() ? nullptr : &p.points.back();
-  const double gap0 = p0 ? gap(*p0, &RunMetrics::delta, "delta") : kNaN;
-  if (p0 && p1)
-    c.push_back(measurement("Without a flywheel our δ is " + pctText(gap0) + " off the published, at " + g(p1->x, 6) +
-                            " kg·m² " + pctText(gap(*p1, &RunMetrics::delta, "delta")) +
-                            ". With a large flywheel δ ≈ (energy swing of the load)/(J·ω²), so a steady ratio at "
-                            "large inertia would point to a published load energy swing (or inertia) different from "
-                            "the one the printed inputs give."));
+namespace {
+
+// δ without a flywheel and with the largest one against the published: a steady ratio at large
+// inertia points to the published load energy swing.
+Finding flywheelEnds(const SweepPoint& p1, double gap0) {
+  return measurement("Without a flywheel our δ is " + pctText(gap0) + " off the published, at " + g(p1.x, 6) +
+                     " kg·m² " + pctText(gap(p1, &RunMetrics::delta, "delta")) +
+                     ". With a large flywheel δ ≈ (energy swing of the load)/(J·ω²), so a steady ratio at "
+                     "large inertia would point to a published load energy swing (or inertia) different from "
+                     "the one the printed inputs give.");
+}
+
+Finding flywheelLocation(const Scene& scene) {
   const double u = scene.reducer.ratio;
-  c.push_back(measurement("Flywheel location: on the crankshaft (scene file). On the motor shaft a flywheel would count "
-                          "u² = " + g(u * u) + " times (u = " + g(u) + ", reducer ratio) and the first step of the "
-                          "published table would flatten δ almost completely."));
-  c.push_back(schemeClaimEnergyBalanced(p));
-  std::string which;
-  const double sens_max = largestSensitivity(sens, paper, "delta", &which);
-  c.push_back(claim(std::isfinite(sens_max) && std::isfinite(gap0) && sens_max < std::abs(gap0),
-                    "Unstated or inconsistent inputs (sensitivity table): the largest moves δ without a flywheel by " +
-                        pctText(sens_max) + " (" + which + "), less than the gap there (" + pctText(gap0) + ")."));
-  multibodyFinding(c, p, gap0, "without a flywheel");
+  return measurement("Flywheel location: on the crankshaft (scene file). On the motor shaft a flywheel would count "
+                     "u² = " + g(u * u) + " times (u = " + g(u) + ", reducer ratio) and the first step of the "
+                     "published table would flatten δ almost completely.");
+}
+
+// The gap to the flywheel table and its reading, put first among the findings.
+void putFlywheelGapFirst(const PaperSweep& p, std::vector<Finding>& c, double gap0) {
   const GapRange gr = gapRange(p.points, &RunMetrics::delta, "delta");
   putGapFirst(c,
               "our δ differs from the published by " + pctText(gr.lo) + " … " + pctText(gr.hi) + " over the " +
@@ -364,6 +361,27 @@ std::vector<Finding> findingsEnergyBalanced(const PaperSweep& p, const std::vect
               "in the paper different from what its printed inputs give; the integration scheme (a coarse step fits "
               "the point without a flywheel only), the unstated inputs one at a time, and the difference between our "
               "two models are ruled out by the claims below.");
+}
+
+}  // namespace
+
+std::vector<Finding> findingsEnergyBalanced(const PaperSweep& p, const std::vector<SensitivityRow>& sens,
+                                            const Scene& scene) {
+  const std::string paper = "the energy-balanced drive paper";
+  std::vector<Finding> c;
+  const SweepPoint* p0 = at(p.points, 0);
+  const SweepPoint* p1 = p.points.empty() ? nullptr : &p.points.back();
+  const double gap0 = p0 ? gap(*p0, &RunMetrics::delta, "delta") : kNaN;
+  if (p0 && p1) c.push_back(flywheelEnds(*p1, gap0));
+  c.push_back(flywheelLocation(scene));
+  c.push_back(schemeClaimEnergyBalanced(p));
+  std::string which;
+  const double sens_max = largestSensitivity(sens, paper, "delta", &which);
+  c.push_back(claim(std::isfinite(sens_max) && std::isfinite(gap0) && sens_max < std::abs(gap0),
+                    "Unstated or inconsistent inputs (sensitivity table): the largest moves δ without a flywheel by " +
+                        pctText(sens_max) + " (" + which + "), less than the gap there (" + pctText(gap0) + ")."));
+  multibodyFinding(c, p, gap0, "without a flywheel");
+  putFlywheelGapFirst(p, c, gap0);
   return c;
 }
 
@@ -371,17 +389,20 @@ namespace {
 
 // First harmonic of the quasi-static load torque with the roller forces as printed (constant
 // direction): M = Σ_j (F1 + F2)·r·sin(θ + jΔφ) + O(r/l), amplitude (F1 + F2)·r·|Σ_j e^{ijΔφ}|,
-// swing twice that; against the published swings at k = 2000.
-Finding loadReadingAsPrinted(const PaperSweep& p, const Scene& sc, const std::string& paper) {
+// swing twice that.
+double firstHarmonicSwing(const Scene& sc, double dphi_deg) {
   const double F = sc.loads.roller_force_front + sc.loads.roller_force_rear, r = sc.crank.radius;
-  auto swing1 = [&](double dphi_deg) {
-    double re = 0, im = 0;
-    for (int j = 0; j < sc.carts.count; ++j) {
-      re += std::cos(j * dphi_deg * M_PI / 180);
-      im += std::sin(j * dphi_deg * M_PI / 180);
-    }
-    return 2.0 * F * r * std::hypot(re, im);
-  };
+  double re = 0, im = 0;
+  for (int j = 0; j < sc.carts.count; ++j) {
+    re += std::cos(j * dphi_deg * M_PI / 180);
+    im += std::sin(j * dphi_deg * M_PI / 180);
+  }
+  return 2.0 * F * r * std::hypot(re, im);
+}
+
+// That swing against the published swings at k = 2000.
+Finding loadReadingAsPrinted(const PaperSweep& p, const Scene& sc, const std::string& paper) {
+  auto swing1 = [&](double dphi_deg) { return firstHarmonicSwing(sc, dphi_deg); };
   auto rounded = [](double v) { return std::abs(v) < 1e-6 ? std::string("0") : g(v, 3); };
   std::string harmonics, pubs;
   bool far_below = true;
@@ -487,6 +508,25 @@ Finding trendWithDamping(const PaperSweep& p) {
                    (disagree.empty() ? "" : "; it disagrees at " + disagree) + ".");
 }
 
+// The paper's own lumping and series (the variant) against the smallest gap.
+Finding modellingChoicesClaim(const PaperSweep& p, double min_gap) {
+  const double variant = maxRelative(p.points, &RunMetrics::torque_swing, false);
+  return claim(std::isfinite(variant) && std::isfinite(min_gap) && variant < 0.5 * min_gap,
+               "The paper's own modelling choices (rods split into two point masses, eq. (2)-(3); truncated "
+               "kinematics, eq. (52)-(57)) change our swings by at most " + pctText(variant) +
+                   " where the crank rotates, less than half the smallest gap (" + pctText(min_gap) +
+                   "): they are not the cause.");
+}
+
+// The multibody model's swings (largest relative difference mb) against the smallest gap.
+Finding multibodySwingClaim(double mb, double min_gap) {
+  return claim(std::isfinite(min_gap) && mb < 0.1 * min_gap,
+               "Multibody model: coupling-torque swing within " + pctText(mb) +
+                   " of the reduced model where both rotate (guide friction from dynamic rather than "
+                   "quasi-static reactions is the only difference in the motion, section (2)), less than a "
+                   "tenth of the smallest gap (" + pctText(min_gap) + ").");
+}
+
 // The gap to Table 1 and its reading, put first among the findings.
 void putTable1GapFirst(const PaperSweep& p, std::vector<Finding>& c) {
   const GapRange gr = gapRange(p.points, &RunMetrics::torque_swing, "coupling_torque_swing");
@@ -516,19 +556,9 @@ std::vector<Finding> findingsLoveikin2018(const PaperSweep& p, const std::vector
   c.push_back(otherReadingStalls(p, sc));
   c.push_back(swingAt90(p));
   const double min_gap = smallestGap(p);
-  const double variant = maxRelative(p.points, &RunMetrics::torque_swing, false);
-  c.push_back(claim(std::isfinite(variant) && std::isfinite(min_gap) && variant < 0.5 * min_gap,
-                    "The paper's own modelling choices (rods split into two point masses, eq. (2)-(3); truncated "
-                    "kinematics, eq. (52)-(57)) change our swings by at most " + pctText(variant) +
-                        " where the crank rotates, less than half the smallest gap (" + pctText(min_gap) +
-                        "): they are not the cause."));
+  c.push_back(modellingChoicesClaim(p, min_gap));
   const double mb = maxRelative(p.points, &RunMetrics::torque_swing, true);
-  if (std::isfinite(mb))
-    c.push_back(claim(std::isfinite(min_gap) && mb < 0.1 * min_gap,
-                      "Multibody model: coupling-torque swing within " + pctText(mb) +
-                          " of the reduced model where both rotate (guide friction from dynamic rather than "
-                          "quasi-static reactions is the only difference in the motion, section (2)), less than a "
-                          "tenth of the smallest gap (" + pctText(min_gap) + ")."));
+  if (std::isfinite(mb)) c.push_back(multibodySwingClaim(mb, min_gap));
   c.push_back(trendWithDamping(p));
   (void)sens;
   putTable1GapFirst(p, c);

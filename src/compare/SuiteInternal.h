@@ -117,6 +117,8 @@ class Suite {
   // A shipped scene as it is in both models, with the claim that explains their difference.
   ComparisonCase shippedSceneDifference(const char* label, const char* file, const char* description,
                                         const std::vector<ComparisonCase>& earlier);
+  void papersSection(ValidationResults& r);
+  ItemContext itemContext() const;
   void papers(ValidationResults& r);
   // One paper's sweep each, described and run into `p`; false when interrupted (p incomplete).
   bool loveikin2007Sweep(PaperSweep& p);

@@ -40,6 +40,31 @@ double Suite::timeForRevolutions(const std::string& file, const std::vector<std:
                            " s (" + run.stats.status + ")");
 }
 
+namespace {
+
+// What a case reports of its comparison: the largest differences, CPU times, whether both runs
+// completed, the modelling topics that differ, and whether it meets the equivalence target.
+void measureCase(const ModelComparison& c, ComparisonCase& cc) {
+  cc.max_rel_omega = c.find("omega_crank")->stats.max_rel_diff;
+  cc.max_rel_torque = c.find("coupling_torque")->stats.max_rel_diff;
+  for (const auto& q : c.quantities)
+    if (q.name != "omega_crank" && q.name != "coupling_torque")
+      cc.max_rel_reactions_quasistatic = std::max(cc.max_rel_reactions_quasistatic, q.stats.max_rel_diff);
+  for (const auto& q : c.kinetostatic)
+    cc.max_rel_reactions_kinetostatic = std::max(cc.max_rel_reactions_kinetostatic, q.stats.max_rel_diff);
+  cc.cpu_multibody = c.cpuMultibody();
+  cc.cpu_reduced = c.cpuReduced();
+  cc.complete = c.multibody.stats.complete && c.reduced.stats.complete;
+  if (!cc.complete)
+    cc.explanation = "run ended early: multibody " + c.multibody.stats.status + "; reduced " + c.reduced.stats.status;
+  cc.motion_equivalent = c.motion_equivalent;
+  for (const auto& d : c.differences)
+    if (!d.numerical) cc.topics.push_back(d.topic);
+  cc.pass = cc.complete && cc.max_rel_omega <= kEquivalenceTarget && cc.max_rel_torque <= kEquivalenceTarget;
+}
+
+}  // namespace
+
 ComparisonCase Suite::compareCase(const std::string& label, const std::string& description,
                                   const std::string& file, const std::vector<std::string>& sets_in,
                                   double revs, ModelComparison* keep) {
@@ -58,22 +83,7 @@ ComparisonCase Suite::compareCase(const std::string& label, const std::string& d
     CompareControl control;
     control.interrupt = o_.interrupt;
     ModelComparison c = runComparison(sc, control);
-    cc.max_rel_omega = c.find("omega_crank")->stats.max_rel_diff;
-    cc.max_rel_torque = c.find("coupling_torque")->stats.max_rel_diff;
-    for (const auto& q : c.quantities)
-      if (q.name != "omega_crank" && q.name != "coupling_torque")
-        cc.max_rel_reactions_quasistatic = std::max(cc.max_rel_reactions_quasistatic, q.stats.max_rel_diff);
-    for (const auto& q : c.kinetostatic)
-      cc.max_rel_reactions_kinetostatic = std::max(cc.max_rel_reactions_kinetostatic, q.stats.max_rel_diff);
-    cc.cpu_multibody = c.cpuMultibody();
-    cc.cpu_reduced = c.cpuReduced();
-    cc.complete = c.multibody.stats.complete && c.reduced.stats.complete;
-    if (!cc.complete)
-      cc.explanation = "run ended early: multibody " + c.multibody.stats.status + "; reduced " + c.reduced.stats.status;
-    cc.motion_equivalent = c.motion_equivalent;
-    for (const auto& d : c.differences)
-      if (!d.numerical) cc.topics.push_back(d.topic);
-    cc.pass = cc.complete && cc.max_rel_omega <= kEquivalenceTarget && cc.max_rel_torque <= kEquivalenceTarget;
+    measureCase(c, cc);
     if (keep) *keep = std::move(c);
   } catch (const std::exception& e) {
     cc.complete = false;
@@ -194,6 +204,23 @@ void Suite::analytic(ValidationResults& r) {
   a.measured_damped = measureFreeOscillation(a.free_damped, 0.01, 20, 64, a.accuracy);
 }
 
+// Section (3): the papers' sweeps, the sensitivity table, and the findings from both.
+void Suite::papersSection(ValidationResults& r) {
+  log("(3) papers");
+  papers(r);
+  if (!interrupted()) sensitivity(r);
+  findings(r);
+}
+
+ItemContext Suite::itemContext() const {
+  ItemContext ctx;
+  ctx.model_dir = o_.model_dir;
+  ctx.quick = o_.quick;
+  ctx.interrupt = o_.interrupt;
+  ctx.log_line = o_.log;
+  return ctx;
+}
+
 ValidationResults Suite::run() {
   ValidationResults r;
   r.quick = o_.quick;
@@ -205,12 +232,7 @@ ValidationResults Suite::run() {
     log("(2) where the physics differ");
     differences(r);
   }
-  if (!interrupted()) {
-    log("(3) papers");
-    papers(r);
-    if (!interrupted()) sensitivity(r);
-    findings(r);
-  }
+  if (!interrupted()) papersSection(r);
   if (!interrupted()) {
     log("(4) analytic, Dyomin (two rotors)");
     analytic(r);
@@ -219,14 +241,7 @@ ValidationResults Suite::run() {
     log("(5) induction motor");
     r.motor = runMotorValidation(o_);
   }
-  if (!interrupted()) {
-    ItemContext ctx;
-    ctx.model_dir = o_.model_dir;
-    ctx.quick = o_.quick;
-    ctx.interrupt = o_.interrupt;
-    ctx.log_line = o_.log;
-    r.sections = runValidationItems(ctx, o_.items);
-  }
+  if (!interrupted()) r.sections = runValidationItems(itemContext(), o_.items);
   r.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
   return r;
 }
