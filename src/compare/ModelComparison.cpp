@@ -128,6 +128,12 @@ void compareSteady(const Scene& scene, ModelComparison& c) {
   for (const char* name : {"omega_crank", "coupling_torque"}) c.shapes.push_back(compareShape(c, sm, sr, name));
 }
 
+// Statistics without a value: no samples, or a non-finite one.
+DifferenceStats undefinedStats(DifferenceStats s) {
+  s.max_abs_diff = s.rms_diff = s.max_rel_diff = s.max_abs_a = s.t_at_max = kNaN;
+  return s;
+}
+
 }  // namespace
 
 DifferenceStats differenceStats(const std::vector<double>& t, const std::vector<double>& a,
@@ -135,17 +141,11 @@ DifferenceStats differenceStats(const std::vector<double>& t, const std::vector<
   DifferenceStats s;
   const std::size_t n = std::min({t.size(), a.size(), b.size()});
   s.samples = n;
-  if (n == 0) {
-    s.max_abs_diff = s.rms_diff = s.max_rel_diff = s.max_abs_a = s.t_at_max = kNaN;
-    return s;
-  }
+  if (n == 0) return undefinedStats(s);
   double integral = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const double d = a[i] - b[i];
-    if (!std::isfinite(d) || !std::isfinite(t[i])) {
-      s.max_abs_diff = s.rms_diff = s.max_rel_diff = s.max_abs_a = s.t_at_max = kNaN;
-      return s;
-    }
+    if (!std::isfinite(d) || !std::isfinite(t[i])) return undefinedStats(s);
     if (i == 0 || std::abs(d) > s.max_abs_diff) {
       s.max_abs_diff = std::abs(d);
       s.t_at_max = t[i];

@@ -212,7 +212,7 @@ void table1FromRestSection(std::ostringstream& md, const std::string& dir, std::
 }
 
 // What the page runs and how to read its tables.
-const char* kStartUpIntro =
+const char* const kStartUpIntro =
     "The papers report steady running only; they name start-stop regimes as the source of the largest "
     "loads. Here each paper's machine is started from rest, direct on line, with three motor laws "
     "(`motor.model`): Kloss's static formula (the papers' law), and the 4A motor's equivalent circuit "

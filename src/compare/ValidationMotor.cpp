@@ -254,18 +254,32 @@ std::vector<MotorClaim> mslStart() {
   return {c, startEnergyAudit(rp)};
 }
 
+// Krause's free acceleration: no load, 1 s.
+InertiaRunOptions krauseOptions() {
+  InertiaRunOptions o;
+  o.inertia = reference::kKrause3hpInertia;
+  o.t_end = 1.0;
+  o.output_step = 2e-4;
+  o.rtol = 1e-9;
+  return o;
+}
+
+// Largest torque while the speed passes within ±10 % of the static breakdown speed w_k: the
+// dynamic torque-speed curve against the static one where the latter peaks.
+double peakTorqueNear(const InertiaRun& run, double w_k) {
+  double peak_near = 0;
+  for (const auto& r : run.rows)
+    if (std::abs(r.omega / w_k - 1) < 0.1) peak_near = std::max(peak_near, r.torque);
+  return peak_near;
+}
+
 MotorClaim krauseFreeAcceleration() {
   MotorClaim c;
   c.id = "M5";
   c.title = "Krause's 3 hp machine: free acceleration from rest (no load, J = 0.089 kg·m²)";
   const InductionMachineParameters m = reference::krause3hp();
   const ParkLaw park(m);
-  InertiaRunOptions o;
-  o.inertia = reference::kKrause3hpInertia;
-  o.t_end = 1.0;
-  o.output_step = 2e-4;
-  o.rtol = 1e-9;
-  const InertiaRun run = runMotorOnInertia(park, o);
+  const InertiaRun run = runMotorOnInertia(park, krauseOptions());
   if (!run.complete) {
     c.lines.push_back("run failed: " + run.error);
     c.verdict = Verdict::Fails;
@@ -274,12 +288,8 @@ MotorClaim krauseFreeAcceleration() {
   double m_k = 0;
   const double s_k = breakdownSlip(m, &m_k);
   const StartFigures f = startFigures(run, m.synchronousSpeed());
-  // Largest torque while the speed passes within ±10 % of the static breakdown speed: the
-  // dynamic torque-speed curve against the static one where the latter peaks.
   const double w_k = m.synchronousSpeed() * (1 - s_k);
-  double peak_near = 0;
-  for (const auto& r : run.rows)
-    if (std::abs(r.omega / w_k - 1) < 0.1) peak_near = std::max(peak_near, r.torque);
+  const double peak_near = peakTorqueNear(run, w_k);
   c.lines.push_back("static breakdown torque " + g(m_k) + " N·m at " + g(rpm(w_k), 5) + " rpm; dynamic peak " +
                     g(f.peak_torque) + " N·m (" + g(f.peak_torque / m_k, 3) + "×) right after switching on, most negative " +
                     g(f.min_torque) + " N·m, peak current " + g(f.peak_current) + " A RMS; within ±10 % of the breakdown "

@@ -274,6 +274,15 @@ PlotSpec frictionD3Plot(const Table& t) {
 
 }  // namespace
 
+// The symbols of the whole report.
+const char* const kSymbols =
+    "Symbols: ω crank speed [rad/s]; Δφ crank offset between successive carts [°]; δ = (ω_max − ω_min)/ω_mean "
+    "coefficient of unevenness (Loveikin and Pochka (2007), eq. (12)); H coefficient of dynamics and k_p "
+    "dynamic factor of the drive torque (Loveikin and Pochka (2007), eq. (13)-(14)); c, k coupling stiffness "
+    "[N·m/rad] and damping [N·m·s/rad]; ψ = φ_motor − φ_crank coupling twist [rad]; ΔM, Δψ, Δψ̇, Δψ̈ swings "
+    "(max − min over the steady window) of the coupling torque c·ψ + k·ψ̇ and of the twist and its "
+    "derivatives.\n\n";
+
 void ReportWriter::header() {
   md_ << "# rollerdyn validation report\n\n"
       << "Written by `rollerdyn validate" << (r_.quick ? " --quick" : "")
@@ -290,12 +299,7 @@ void ReportWriter::header() {
       << "max_rel = max|multibody − reduced| / max|multibody| over the compared run. Each case lists the "
       << "`rollerdyn compare` command that reproduces it. Machine-readable results: `results.json`; our sweep "
       << "numbers: `results/*.csv`.\n\n"
-      << "Symbols: ω crank speed [rad/s]; Δφ crank offset between successive carts [°]; δ = (ω_max − ω_min)/ω_mean "
-      << "coefficient of unevenness (Loveikin and Pochka (2007), eq. (12)); H coefficient of dynamics and k_p "
-      << "dynamic factor of the drive torque (Loveikin and Pochka (2007), eq. (13)-(14)); c, k coupling stiffness "
-      << "[N·m/rad] and damping [N·m·s/rad]; ψ = φ_motor − φ_crank coupling twist [rad]; ΔM, Δψ, Δψ̇, Δψ̈ swings "
-      << "(max − min over the steady window) of the coupling torque c·ψ + k·ψ̇ and of the twist and its "
-      << "derivatives.\n\n"
+      << kSymbols
       << "Contents: (1) equivalence of the two models where their physics is identical; "
       << "(2) where the physics differ; (3) the papers' tables; (4) the analytic two-rotor check "
       << "of Dyomin (two rotors)";
