@@ -12,6 +12,18 @@ std::string fmt(const char* format, double a, double b = 0.0, double c = 0.0) {
   return buf;
 }
 
+// Distributed rods: the same kinetic energy in both, their inertial forces on the guides only in
+// multibody.
+ModelDifference rodInertiaDifference() {
+  return {"rod_inertia",
+          "rod inertia: distributed rod bodies (multibody) vs distributed reduced-inertia "
+          "terms m_rod*(x_S'^2 + y_S'^2) + I_S*beta'^2 (reduced, Loveikin and Pochka (2007) eq. (9)); both are "
+          "the exact kinetic energy of the rods, so the motion agrees, but the rods' own "
+          "inertial forces reach the carts' guides only in multibody (the reduced quasi-static statics "
+          "pass half the rod weight to the hinge)",
+          false, false};
+}
+
 // The reactions, and with distributed rods their inertia, when the reduced model's cart statics
 // leave out the inertial forces (quasi-static guide normals).
 void reactionDifferences(const Scene& s, bool kinetostatic, std::vector<ModelDifference>& d) {
@@ -31,14 +43,7 @@ void reactionDifferences(const Scene& s, bool kinetostatic, std::vector<ModelDif
                        "force to the guide reactions",
                        s.carts.geometry.com_height);
     d.push_back({"reactions", reactions, false, false});
-    if (s.rods.model == RodModel::Distributed)
-      d.push_back({"rod_inertia",
-                   "rod inertia: distributed rod bodies (multibody) vs distributed reduced-inertia "
-                   "terms m_rod*(x_S'^2 + y_S'^2) + I_S*beta'^2 (reduced, Loveikin and Pochka (2007) eq. (9)); both are "
-                   "the exact kinetic energy of the rods, so the motion agrees, but the rods' own "
-                   "inertial forces reach the carts' guides only in multibody (the reduced quasi-static statics "
-                   "pass half the rod weight to the hinge)",
-                   false, false});
+    if (s.rods.model == RodModel::Distributed) d.push_back(rodInertiaDifference());
   }
 }
 

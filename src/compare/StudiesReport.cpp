@@ -261,6 +261,7 @@ StudiesPage camPage(const std::string& dir) {
 
 // The chain's twist harmonics, exact and as printed.
 void chainHarmonics(std::ostream& md, const nlohmann::json& amplitudes) {
+  md << "| harmonic | exact amplitude [rad] | printed amplitude [rad] | printed/exact |\n|---|---|---|---|\n";
   for (const char* n : {"n1", "n2", "n3", "n5"}) {
     const auto& h = amplitudes[n];
     md << "| " << std::string(n).substr(1) << "ω | " << g(h.value("corrected", kNaN), 5) << " | " << g(h.value("printed", kNaN), 5) << " | "
@@ -268,16 +269,8 @@ void chainHarmonics(std::ostream& md, const nlohmann::json& amplitudes) {
   }
 }
 
-// One chain run (`sub`: its output folder): simulation against the exact and the printed closed
-// form, and the harmonics.
-void chainRun(std::ostream& md, const std::string& dir, const char* sub) {
-  const std::string path = dir + "/" + sub + "/chain.json";
-  md << "## `" << sub << "/`\n\n";
-  if (!exists(path)) {
-    md << missing(std::string(sub) + "/chain.json");
-    return;
-  }
-  const nlohmann::json j = nlohmann::json::parse(readFileContents(path, "chain result"));
+// A chain run's parameters and its twist against the exact and the printed closed form.
+void chainAgainstClosedForm(std::ostream& md, const nlohmann::json& j) {
   const auto& d = j["derived"];
   const auto& s = j["steady_last_period"];
   const auto& f = j["full_run"];
@@ -291,8 +284,20 @@ void chainRun(std::ostream& md, const std::string& dir, const char* sub) {
      << "| max abs(ψ_sim − ψ_closed), last period [rad] | | " << g(s.value("max_err_corrected", kNaN), 2) << " | "
      << g(s.value("max_err_printed", kNaN), 2) << " |\n"
      << "| max abs(ψ_sim − ψ_closed), whole run with transient [rad] | | " << g(f.value("max_err_corrected", kNaN), 2) << " | "
-     << g(f.value("max_err_printed", kNaN), 2) << " |\n\n"
-     << "| harmonic | exact amplitude [rad] | printed amplitude [rad] | printed/exact |\n|---|---|---|---|\n";
+     << g(f.value("max_err_printed", kNaN), 2) << " |\n\n";
+}
+
+// One chain run (`sub`: its output folder): simulation against the exact and the printed closed
+// form, and the harmonics.
+void chainRun(std::ostream& md, const std::string& dir, const char* sub) {
+  const std::string path = dir + "/" + sub + "/chain.json";
+  md << "## `" << sub << "/`\n\n";
+  if (!exists(path)) {
+    md << missing(std::string(sub) + "/chain.json");
+    return;
+  }
+  const nlohmann::json j = nlohmann::json::parse(readFileContents(path, "chain result"));
+  chainAgainstClosedForm(md, j);
   chainHarmonics(md, j["harmonic_amplitudes"]);
   const auto& w = j["warnings"];
   md << "\nResonance warnings: " << (w.empty() ? std::string("none") : w.dump()) << ".\n\n";
