@@ -128,6 +128,17 @@ void compareSteady(const Scene& scene, ModelComparison& c) {
   for (const char* name : {"omega_crank", "coupling_torque"}) c.shapes.push_back(compareShape(c, sm, sr, name));
 }
 
+// RMS of the difference from ∫d² dt over the span; a single sample's |d| when the span is empty.
+double rmsOverSpan(double integral, double span, double first_abs_diff) {
+  return span > 0 ? std::sqrt(integral / span) : first_abs_diff;
+}
+
+// max|a - b| / max|a|; 0 for two zero signals, NaN when only the reference is zero.
+double relativeToReference(double max_abs_diff, double max_abs_a) {
+  if (max_abs_a > 0) return max_abs_diff / max_abs_a;
+  return max_abs_diff == 0 ? 0.0 : kNaN;
+}
+
 // Statistics without a value: no samples, or a non-finite one.
 DifferenceStats undefinedStats(DifferenceStats s) {
   s.max_abs_diff = s.rms_diff = s.max_rel_diff = s.max_abs_a = s.t_at_max = kNaN;
@@ -156,12 +167,8 @@ DifferenceStats differenceStats(const std::vector<double>& t, const std::vector<
       integral += 0.5 * (d0 * d0 + d * d) * (t[i] - t[i - 1]);
     }
   }
-  const double span = t[n - 1] - t[0];
-  s.rms_diff = span > 0 ? std::sqrt(integral / span) : std::abs(a[0] - b[0]);
-  if (s.max_abs_a > 0)
-    s.max_rel_diff = s.max_abs_diff / s.max_abs_a;
-  else
-    s.max_rel_diff = s.max_abs_diff == 0 ? 0.0 : kNaN;
+  s.rms_diff = rmsOverSpan(integral, t[n - 1] - t[0], std::abs(a[0] - b[0]));
+  s.max_rel_diff = relativeToReference(s.max_abs_diff, s.max_abs_a);
   return s;
 }
 

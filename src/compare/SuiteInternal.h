@@ -72,6 +72,8 @@ class Suite {
   double timeForRevolutions(const std::string& file, const std::vector<std::string>& sets, double revs) const;
   ComparisonCase compareCase(const std::string& label, const std::string& description, const std::string& file,
                              const std::vector<std::string>& sets, double revs, ModelComparison* keep);
+  void runCase(ComparisonCase& cc, const std::string& file, std::vector<std::string> sets, double revs,
+               ModelComparison* keep);
   RunMetrics reducedMetrics(const std::string& file, const std::vector<std::string>& sets) const {
     const Scene sc = load(file, sets);
     return runMetrics(sc, runReducedModel(sc));

@@ -25,19 +25,31 @@ struct FrictionGap {
   double fr_diff = 0, fr_max = 0, n_diff = 0, n_max = 0, lag = 0;  // [N]
 };
 
-// Adds cart j's rows (1-based, as in the column names) to the gap.
-void addCartFrictionGap(const Scene& sc, const ModelComparison& c, int j, FrictionGap& gap) {
+// Cart j's friction and guide normals of both models on the multibody reaction rows (the reduced
+// model's interpolated onto them), and its velocity.
+struct CartFrictionColumns {
+  std::vector<double> t, fm, fr, n1m, n2m, n1r, n2r, v;
+};
+CartFrictionColumns cartFrictionColumns(const ModelComparison& c, int j) {
   const Table& rm = c.multibody.reactions;
   const Table& rr = c.reduced.reactions;
   const std::vector<double> t = rm.column("t"), tr = rr.column("t");
-  const double f = sc.loads.guide_friction, vs = sc.loads.velocity_smoothing;
   const std::string s = std::to_string(j);
-  const auto fm = rm.column("friction_" + s);
-  const auto fr = resampleLinear(tr, rr.column("friction_" + s), t);
-  const auto n1m = rm.column("N_front_" + s), n2m = rm.column("N_rear_" + s);
-  const auto n1r = resampleLinear(tr, rr.column("N_front_" + s), t);
-  const auto n2r = resampleLinear(tr, rr.column("N_rear_" + s), t);
-  const auto v = c.multibody.timeseries.column("v_cart_" + s);
+  return {t,
+          rm.column("friction_" + s),
+          resampleLinear(tr, rr.column("friction_" + s), t),
+          rm.column("N_front_" + s),
+          rm.column("N_rear_" + s),
+          resampleLinear(tr, rr.column("N_front_" + s), t),
+          resampleLinear(tr, rr.column("N_rear_" + s), t),
+          c.multibody.timeseries.column("v_cart_" + s)};
+}
+
+// Adds cart j's rows (1-based, as in the column names) to the gap.
+void addCartFrictionGap(const Scene& sc, const ModelComparison& c, int j, FrictionGap& gap) {
+  const CartFrictionColumns x = cartFrictionColumns(c, j);
+  const auto &t = x.t, &fm = x.fm, &fr = x.fr, &n1m = x.n1m, &n2m = x.n2m, &n1r = x.n1r, &n2r = x.n2r, &v = x.v;
+  const double f = sc.loads.guide_friction, vs = sc.loads.velocity_smoothing;
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (!std::isfinite(fr[i])) continue;
     // Magnitudes: near a reversal the two runs' carts change direction at slightly different

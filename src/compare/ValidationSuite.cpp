@@ -66,25 +66,14 @@ void measureCase(const ModelComparison& c, ComparisonCase& cc) {
 }  // namespace
 
 ComparisonCase Suite::compareCase(const std::string& label, const std::string& description,
-                                  const std::string& file, const std::vector<std::string>& sets_in,
+                                  const std::string& file, const std::vector<std::string>& sets,
                                   double revs, ModelComparison* keep) {
   ComparisonCase cc;
   cc.label = label;
   cc.description = description;
   cc.revolutions = revs;
-  std::vector<std::string> sets = sets_in;
   try {
-    if (revs > 0) sets.push_back("simulation.t_end=" + exact(timeForRevolutions(file, sets, revs)));
-    const Scene sc = load(file, sets);
-    cc.command = command("compare", file, sets);
-    cc.t_end = sc.simulation.t_end;
-    cc.accuracy = sc.simulation.accuracy;
-    log(label + ": " + description + " (t_end = " + g(cc.t_end, 5) + " s)");
-    CompareControl control;
-    control.interrupt = o_.interrupt;
-    ModelComparison c = runComparison(sc, control);
-    measureCase(c, cc);
-    if (keep) *keep = std::move(c);
+    runCase(cc, file, sets, revs, keep);
   } catch (const std::exception& e) {
     cc.complete = false;
     cc.explanation = std::string("failed: ") + e.what();
@@ -92,6 +81,23 @@ ComparisonCase Suite::compareCase(const std::string& label, const std::string& d
     log(label + ": " + cc.explanation);
   }
   return cc;
+}
+
+// Both models on the case's scene (`revs` > 0: run for that many crank revolutions), measured
+// into cc; the comparison kept in `keep` when given.
+void Suite::runCase(ComparisonCase& cc, const std::string& file, std::vector<std::string> sets, double revs,
+                    ModelComparison* keep) {
+  if (revs > 0) sets.push_back("simulation.t_end=" + exact(timeForRevolutions(file, sets, revs)));
+  const Scene sc = load(file, sets);
+  cc.command = command("compare", file, sets);
+  cc.t_end = sc.simulation.t_end;
+  cc.accuracy = sc.simulation.accuracy;
+  log(cc.label + ": " + cc.description + " (t_end = " + g(cc.t_end, 5) + " s)");
+  CompareControl control;
+  control.interrupt = o_.interrupt;
+  ModelComparison c = runComparison(sc, control);
+  measureCase(c, cc);
+  if (keep) *keep = std::move(c);
 }
 
 // An equivalence case E1-E7: the scene, what it changes, and whether --quick runs it.
