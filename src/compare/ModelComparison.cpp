@@ -1,10 +1,11 @@
+// The comparison of the two models' runs on one scene (ModelComparison.h): the common time grid,
+// every quantity row by row, the steady-state answers and the shapes over a revolution; how it is
+// written (comparison.json, the console text) is in ComparisonOutputs.cpp.
 #include "compare/ModelComparison.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 
 #include "analysis/Metrics.h"
@@ -21,29 +22,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 bool isReactionQuantity(const std::string& name) {
   return name.rfind("N_front_", 0) == 0 || name.rfind("N_rear_", 0) == 0 ||
          name.rfind("F_rod_", 0) == 0;
-}
-
-nlohmann::json num(double v) {
-  if (std::isfinite(v)) return v;
-  return nullptr;
-}
-
-nlohmann::json statsJson(const DifferenceStats& s) {
-  return {{"max_abs_diff", num(s.max_abs_diff)},
-          {"rms_diff", num(s.rms_diff)},
-          {"max_rel_diff", num(s.max_rel_diff)},
-          {"max_abs_multibody", num(s.max_abs_a)},
-          {"t_at_max_abs_diff", num(s.t_at_max)},
-          {"samples", s.samples}};
-}
-
-nlohmann::json runJson(const RunResult& r) {
-  return {{"integrator", r.integrator},
-          {"status", r.stats.status},
-          {"complete", r.stats.complete},
-          {"steps", r.stats.steps},
-          {"realizations", r.stats.realizations},
-          {"cpu_seconds", num(r.stats.cpu_seconds)}};
 }
 
 // Column `name` of the run's timeseries, or of its reactions table, with that table's times.
@@ -85,7 +63,7 @@ std::vector<double> foldOnRevolution(const RunResult& run, const SteadyState& w,
   return sum;
 }
 
-double summaryNumber(const nlohmann::json& j, std::initializer_list<const char*> path) {
+double summaryNumber(const nlohmann::json& j, const std::vector<const char*>& path) {
   const nlohmann::json* p = &j;
   for (const char* k : path) {
     if (!p->is_object() || !p->contains(k)) return kNaN;
@@ -94,26 +72,26 @@ double summaryNumber(const nlohmann::json& j, std::initializer_list<const char*>
   return p->is_number() ? p->get<double>() : kNaN;
 }
 
-void compareSteady(const Scene& scene, ModelComparison& c) {
-  const double wr = scene.simulation.steady_window_revolutions;
-  const SteadyState sm = detectSteadyState(c.multibody, wr);
-  const SteadyState sr = detectSteadyState(c.reduced, wr);
+// The steady-state answers compared, each by its path in the run's summary (analysis/Summary.h).
+struct SteadyItem {
+  const char* name;
+  const char* unit;
+  std::vector<const char*> path;
+};
+const SteadyItem kSteadyItems[] = {
+    {"omega_crank_mean", "rad/s", {"omega_crank", "mean"}},
+    {"delta", "-", {"delta"}},
+    {"coupling_torque_swing", "N·m", {"coupling_torque_swing"}},
+    {"coupling_torque_mean", "N·m", {"sizing", "coupling", "mean"}},
+    {"coupling_torque_peak", "N·m", {"sizing", "coupling", "peak"}},
+    {"motor_torque_rotor_rms", "N·m", {"sizing", "motor", "torque_shaft", "rms"}},
+    {"motor_torque_mean", "N·m", {"sizing", "motor", "torque_shaft", "mean"}},
+};
+
+// The steady-state answers of both models, each from its own summary.
+void compareSteadyMetrics(const Scene& scene, ModelComparison& c) {
   const nlohmann::json jm = makeSummary(scene, c.multibody), jr = makeSummary(scene, c.reduced);
-  struct Item {
-    const char* name;
-    const char* unit;
-    std::initializer_list<const char*> path;
-  };
-  const Item items[] = {
-      {"omega_crank_mean", "rad/s", {"omega_crank", "mean"}},
-      {"delta", "-", {"delta"}},
-      {"coupling_torque_swing", "N·m", {"coupling_torque_swing"}},
-      {"coupling_torque_mean", "N·m", {"sizing", "coupling", "mean"}},
-      {"coupling_torque_peak", "N·m", {"sizing", "coupling", "peak"}},
-      {"motor_torque_rotor_rms", "N·m", {"sizing", "motor", "torque_shaft", "rms"}},
-      {"motor_torque_mean", "N·m", {"sizing", "motor", "torque_shaft", "mean"}},
-  };
-  for (const Item& it : items) {
+  for (const SteadyItem& it : kSteadyItems) {
     SteadyMetricComparison m;
     m.name = it.name;
     m.unit = it.unit;
@@ -123,20 +101,48 @@ void compareSteady(const Scene& scene, ModelComparison& c) {
     c.steady.push_back(m);
   }
   c.speed_difference = summaryNumber(jr, {"omega_crank", "mean"}) - summaryNumber(jm, {"omega_crank", "mean"});
-  for (const char* name : {"omega_crank", "coupling_torque"}) {
-    const std::vector<double> a = foldOnRevolution(c.multibody, sm, name), b = foldOnRevolution(c.reduced, sr, name);
-    ShapeComparison sh;
-    sh.name = name;
-    double lo = INFINITY, hi = -INFINITY;
-    for (std::size_t k = 0; k < a.size(); ++k) {
-      if (!std::isfinite(a[k]) || !std::isfinite(b[k])) continue;
-      sh.max_abs_diff = std::max(sh.max_abs_diff, std::abs(a[k] - b[k]));
-      lo = std::min(lo, a[k]);
-      hi = std::max(hi, a[k]);
-    }
-    sh.rel_diff = hi > lo ? sh.max_abs_diff / (hi - lo) : kNaN;
-    c.shapes.push_back(sh);
+}
+
+// One quantity's shape over a revolution: both steady windows folded onto the crank angle, the
+// largest difference against the multibody swing.
+ShapeComparison compareShape(const ModelComparison& c, const SteadyState& sm, const SteadyState& sr, const char* name) {
+  const std::vector<double> a = foldOnRevolution(c.multibody, sm, name), b = foldOnRevolution(c.reduced, sr, name);
+  ShapeComparison sh;
+  sh.name = name;
+  double lo = INFINITY, hi = -INFINITY;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (!std::isfinite(a[k]) || !std::isfinite(b[k])) continue;
+    sh.max_abs_diff = std::max(sh.max_abs_diff, std::abs(a[k] - b[k]));
+    lo = std::min(lo, a[k]);
+    hi = std::max(hi, a[k]);
   }
+  sh.rel_diff = hi > lo ? sh.max_abs_diff / (hi - lo) : kNaN;
+  return sh;
+}
+
+void compareSteady(const Scene& scene, ModelComparison& c) {
+  const double wr = scene.simulation.steady_window_revolutions;
+  const SteadyState sm = detectSteadyState(c.multibody, wr);
+  const SteadyState sr = detectSteadyState(c.reduced, wr);
+  compareSteadyMetrics(scene, c);
+  for (const char* name : {"omega_crank", "coupling_torque"}) c.shapes.push_back(compareShape(c, sm, sr, name));
+}
+
+// RMS of the difference from ∫d² dt over the span; a single sample's |d| when the span is empty.
+double rmsOverSpan(double integral, double span, double first_abs_diff) {
+  return span > 0 ? std::sqrt(integral / span) : first_abs_diff;
+}
+
+// max|a - b| / max|a|; 0 for two zero signals, NaN when only the reference is zero.
+double relativeToReference(double max_abs_diff, double max_abs_a) {
+  if (max_abs_a > 0) return max_abs_diff / max_abs_a;
+  return max_abs_diff == 0 ? 0.0 : kNaN;
+}
+
+// Statistics without a value: no samples, or a non-finite one.
+DifferenceStats undefinedStats(DifferenceStats s) {
+  s.max_abs_diff = s.rms_diff = s.max_rel_diff = s.max_abs_a = s.t_at_max = kNaN;
+  return s;
 }
 
 }  // namespace
@@ -146,17 +152,11 @@ DifferenceStats differenceStats(const std::vector<double>& t, const std::vector<
   DifferenceStats s;
   const std::size_t n = std::min({t.size(), a.size(), b.size()});
   s.samples = n;
-  if (n == 0) {
-    s.max_abs_diff = s.rms_diff = s.max_rel_diff = s.max_abs_a = s.t_at_max = kNaN;
-    return s;
-  }
+  if (n == 0) return undefinedStats(s);
   double integral = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const double d = a[i] - b[i];
-    if (!std::isfinite(d) || !std::isfinite(t[i])) {
-      s.max_abs_diff = s.rms_diff = s.max_rel_diff = s.max_abs_a = s.t_at_max = kNaN;
-      return s;
-    }
+    if (!std::isfinite(d) || !std::isfinite(t[i])) return undefinedStats(s);
     if (i == 0 || std::abs(d) > s.max_abs_diff) {
       s.max_abs_diff = std::abs(d);
       s.t_at_max = t[i];
@@ -167,12 +167,8 @@ DifferenceStats differenceStats(const std::vector<double>& t, const std::vector<
       integral += 0.5 * (d0 * d0 + d * d) * (t[i] - t[i - 1]);
     }
   }
-  const double span = t[n - 1] - t[0];
-  s.rms_diff = span > 0 ? std::sqrt(integral / span) : std::abs(a[0] - b[0]);
-  if (s.max_abs_a > 0)
-    s.max_rel_diff = s.max_abs_diff / s.max_abs_a;
-  else
-    s.max_rel_diff = s.max_abs_diff == 0 ? 0.0 : kNaN;
+  s.rms_diff = rmsOverSpan(integral, t[n - 1] - t[0], std::abs(a[0] - b[0]));
+  s.max_rel_diff = relativeToReference(s.max_abs_diff, s.max_abs_a);
   return s;
 }
 
@@ -263,62 +259,86 @@ std::vector<std::vector<double>> reducedKinetostaticReactions(const Scene& scene
   return kin;
 }
 
-}  // namespace
+// A quantity of a run on the comparison grid.
+std::vector<double> onGrid(const RunResult& run, const std::string& name, const std::vector<double>& grid) {
+  std::vector<double> t, y;
+  columnWithTime(run, name, t, y);
+  return resampleLinear(t, y, grid);
+}
 
-ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
-  ModelComparison c;
+// comparison.csv being filled: a name and a vector on the grid per column.
+struct ComparisonColumns {
+  Table& table;
+  std::vector<std::vector<double>> cols;
+
+  void add(const std::string& name, std::vector<double> values) {
+    table.columns.push_back(name);
+    cols.push_back(std::move(values));
+  }
+  void fillRows(std::size_t rows) {
+    table.rows.assign(rows, std::vector<double>(cols.size()));
+    for (std::size_t i = 0; i < rows; ++i)
+      for (std::size_t k = 0; k < cols.size(); ++k) table.rows[i][k] = cols[k][i];
+  }
+};
+
+// Every compared quantity on the grid: its statistics, its columns of both models, and for a
+// reaction also the reduced model's kinetostatic reaction.
+void compareQuantities(const Scene& scene, const RunResult& mb, const RunResult& red, const std::vector<double>& grid,
+                       ModelComparison& c) {
+  const std::vector<double> t_red = red.timeseries.column("t");
+  const std::vector<std::vector<double>> kin = reducedKinetostaticReactions(scene, red, t_red);
+  ComparisonColumns cols{c.table, {}};
+  cols.add("t", grid);
+  const std::vector<std::string> names = comparedQuantities(scene.carts.count, scene.simulation.reactions);
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::string& q = names[k];
+    const std::vector<double> a = onGrid(mb, q, grid), b = onGrid(red, q, grid);
+    c.quantities.push_back({q, differenceStats(grid, a, b)});
+    cols.add(q + "_multibody", a);
+    cols.add(q + "_reduced", b);
+    if (isReactionQuantity(q)) {
+      const std::size_t kin_index = k - 2;  // names: omega, torque, then 3 per cart
+      const std::vector<double> bk = resampleLinear(t_red, kin[kin_index], grid);
+      c.kinetostatic.push_back({q, differenceStats(grid, a, bk)});
+      cols.add(q + "_reduced_kinetostatic", bk);
+    }
+  }
+  cols.fillRows(grid.size());
+}
+
+// What the two models are asked to model alike, from the scene alone.
+void describeModels(const Scene& scene, ModelComparison& c) {
   c.scene_name = scene.name;
   c.differences = modelDifferences(scene);
   c.identical = identicalPhysics(scene);
   c.motion_equivalent = motionEquivalent(scene);
   c.reduced_kinetostatic = scene.reduced.guide_normals == ReducedGuideNormals::Kinetostatic;
+}
+
+// Crank angle multibody minus reduced at the end of the compared span.
+double phaseDrift(const ModelComparison& c, const std::vector<double>& t_mb_all, const std::vector<double>& t_red) {
+  const std::vector<double> pa = resampleLinear(t_mb_all, c.multibody.timeseries.column("phi_crank"), {c.t_end});
+  const std::vector<double> pb = resampleLinear(t_red, c.reduced.timeseries.column("phi_crank"), {c.t_end});
+  return pa[0] - pb[0];
+}
+
+}  // namespace
+
+ModelComparison compareRuns(const Scene& scene, RunResult mb, RunResult red) {
+  ModelComparison c;
+  describeModels(scene, c);
   if (!mb.timeseries.has("t") || mb.timeseries.rows.empty() || !red.timeseries.has("t") ||
       red.timeseries.rows.empty())
     throw std::runtime_error("compare: a model produced no output rows");
-
   const std::vector<double> t_mb_all = mb.timeseries.column("t");
   const std::vector<double> t_red = red.timeseries.column("t");
   const double t_common = std::min(t_mb_all.back(), t_red.back());
   const std::vector<double> grid = comparisonGrid(t_mb_all, t_red, t_common, c);
-
-  const int n = scene.carts.count;
-  const bool reactions = scene.simulation.reactions;
-  const std::vector<std::vector<double>> kin = reducedKinetostaticReactions(scene, red, t_red);
-
-  c.table.columns = {"t"};
-  std::vector<std::vector<double>> cols = {grid};
-  const std::vector<std::string> names = comparedQuantities(n, reactions);
-  for (std::size_t k = 0; k < names.size(); ++k) {
-    const std::string& q = names[k];
-    std::vector<double> ta, ya, tb, yb;
-    columnWithTime(mb, q, ta, ya);
-    columnWithTime(red, q, tb, yb);
-    const std::vector<double> a = resampleLinear(ta, ya, grid);
-    const std::vector<double> b = resampleLinear(tb, yb, grid);
-    c.quantities.push_back({q, differenceStats(grid, a, b)});
-    c.table.columns.push_back(q + "_multibody");
-    c.table.columns.push_back(q + "_reduced");
-    cols.push_back(a);
-    cols.push_back(b);
-    if (isReactionQuantity(q)) {
-      const std::size_t kin_index = k - 2;  // names: omega, torque, then 3 per cart
-      const std::vector<double> bk = resampleLinear(t_red, kin[kin_index], grid);
-      c.kinetostatic.push_back({q, differenceStats(grid, a, bk)});
-      c.table.columns.push_back(q + "_reduced_kinetostatic");
-      cols.push_back(bk);
-    }
-  }
-  c.table.rows.assign(grid.size(), std::vector<double>(cols.size()));
-  for (std::size_t i = 0; i < grid.size(); ++i)
-    for (std::size_t k = 0; k < cols.size(); ++k) c.table.rows[i][k] = cols[k][i];
-
+  compareQuantities(scene, mb, red, grid, c);
   c.multibody = std::move(mb);
   c.reduced = std::move(red);
-  {
-    const std::vector<double> pa = resampleLinear(t_mb_all, c.multibody.timeseries.column("phi_crank"), {c.t_end});
-    const std::vector<double> pb = resampleLinear(t_red, c.reduced.timeseries.column("phi_crank"), {c.t_end});
-    c.phase_drift = pa[0] - pb[0];
-  }
+  c.phase_drift = phaseDrift(c, t_mb_all, t_red);
   compareSteady(scene, c);
   return c;
 }
@@ -331,117 +351,6 @@ ModelComparison runComparison(const Scene& scene, const CompareControl& control)
   RunResult red = runReducedModel(scene, rc);
   RunResult mb = runMultibodyModel(scene, rc);
   return compareRuns(scene, std::move(mb), std::move(red));
-}
-
-nlohmann::json comparisonJson(const ModelComparison& c) {
-  nlohmann::json j;
-  j["scene"] = c.scene_name;
-  j["compared"] = {{"t_begin", num(c.t_begin)},
-                   {"t_end", num(c.t_end)},
-                   {"rows", c.rows},
-                   {"grid_max_time_offset", num(c.grid_max_time_offset)},
-                   {"reference", "multibody"},
-                   {"max_rel_diff_definition", "max|multibody - reduced| / max|multibody|"}};
-  nlohmann::json q = nlohmann::json::object();
-  for (const auto& x : c.quantities) q[x.name] = statsJson(x.stats);
-  j["quantities"] = q;
-  nlohmann::json k = nlohmann::json::object();
-  for (const auto& x : c.kinetostatic) k[x.name] = statsJson(x.stats);
-  j["kinetostatic_reactions"] = k;
-  std::vector<std::string> sentences;
-  nlohmann::json detail = nlohmann::json::array();
-  for (const auto& d : c.differences) {
-    sentences.push_back(d.sentence);
-    detail.push_back({{"topic", d.topic},
-                      {"affects_motion", d.affects_motion},
-                      {"numerical", d.numerical},
-                      {"sentence", d.sentence}});
-  }
-  nlohmann::json steady = nlohmann::json::object();
-  for (const auto& m : c.steady)
-    steady[m.name] = {{"multibody", num(m.multibody)}, {"reduced", num(m.reduced)}, {"rel_diff", num(m.rel_diff)},
-                      {"unit", m.unit}};
-  j["steady"] = steady;
-  nlohmann::json shapes = nlohmann::json::object();
-  for (const auto& sh : c.shapes)
-    shapes[sh.name] = {{"max_abs_diff", num(sh.max_abs_diff)}, {"rel_diff_of_swing", num(sh.rel_diff)}};
-  j["shape_at_same_crank_angle"] = shapes;
-  j["phase_drift"] = num(c.phase_drift);
-  j["mean_speed_difference"] = num(c.speed_difference);
-  j["compared"]["row_by_row_note"] =
-      "quantities: row by row at equal times over the whole compared span (start-up included), so a phase drift "
-      "between the models counts as a difference; max_rel_diff is normalised by the largest multibody value of "
-      "the whole span";
-  j["differences"] = sentences;
-  j["differences_detail"] = detail;
-  j["identical_physics"] = c.identical;
-  j["motion_equivalent"] = c.motion_equivalent;
-  const double cm = c.cpuMultibody(), cr = c.cpuReduced();
-  j["speed"] = {{"cpu_seconds_multibody", num(cm)},
-                {"cpu_seconds_reduced", num(cr)},
-                {"cpu_ratio_reduced_to_multibody", num(cm > 0 ? cr / cm : kNaN)},
-                {"speedup_reduced_over_multibody", num(cr > 0 ? cm / cr : kNaN)}};
-  j["runs"] = {{"multibody", runJson(c.multibody)}, {"reduced", runJson(c.reduced)}};
-  return j;
-}
-
-std::string comparisonText(const ModelComparison& c) {
-  std::ostringstream os;
-  os.precision(3);
-  os << "scene        " << c.scene_name << "  (" << c.rows << " rows, t = " << c.t_begin << " ... "
-     << c.t_end << " s)\n";
-  os << "runs         multibody: " << c.multibody.stats.status << "; reduced: " << c.reduced.stats.status
-     << '\n';
-  os << "steady running (each model over its own steady window; rel. diff = (reduced - multibody)/|multibody|):\n";
-  for (const auto& m : c.steady) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "  %-22s multibody %-11.5g reduced %-11.5g rel. diff %+.2e  [%s]\n", m.name.c_str(),
-                  m.multibody, m.reduced, m.rel_diff, m.unit.c_str());
-    os << buf;
-  }
-  os << "shape at the same crank angle (steady windows folded onto one revolution; against the multibody swing):\n";
-  for (const auto& sh : c.shapes) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "  %-22s max diff %.4g (%.2e of its swing)\n", sh.name.c_str(), sh.max_abs_diff,
-                  sh.rel_diff);
-    os << buf;
-  }
-  {
-    char buf[260];
-    std::snprintf(buf, sizeof buf,
-                  "phase drift  the multibody crank is %.4g rad (%.3g°) %s the reduced one at t = %.4g s (mean "
-                  "speeds differ by %.3g rad/s): it shifts the time series against each other without changing "
-                  "their shape\n",
-                  std::abs(c.phase_drift), std::abs(c.phase_drift) * 180.0 / M_PI,
-                  c.phase_drift >= 0 ? "ahead of" : "behind", c.t_end, -c.speed_difference);
-    os << buf;
-  }
-  os << "row by row at equal times (whole span, start-up and phase drift included; normalised by the largest "
-        "multibody value):\n";
-  for (const char* name : {"omega_crank", "coupling_torque"}) {
-    if (const QuantityComparison* q = c.find(name))
-      os << "  " << name << std::string(17 - std::string(name).size(), ' ') << "max_rel_diff "
-         << q->stats.max_rel_diff << "  max_abs_diff " << q->stats.max_abs_diff << "  rms_diff "
-         << q->stats.rms_diff << '\n';
-  }
-  double worst = 0, worst_kin = 0;
-  for (const auto& q : c.quantities)
-    if (q.name != "omega_crank" && q.name != "coupling_torque") worst = std::max(worst, q.stats.max_rel_diff);
-  for (const auto& q : c.kinetostatic) worst_kin = std::max(worst_kin, q.stats.max_rel_diff);
-  if (c.kinetostatic.empty())
-    os << "  reactions      not computed (simulation.reactions: false)\n";
-  else
-    os << "  reactions      largest max_rel_diff " << worst << " (the reduced run's own rows, "
-       << (c.reduced_kinetostatic ? "kinetostatic" : "the papers' quasi-static") << " guide normals), " << worst_kin
-       << " (the reduced rows with only the carts' d'Alembert forces added afterwards: no rod inertia, no "
-          "friction loop)\n";
-  os << "physics      " << (c.motion_equivalent ? "the same equations of motion" : "the models differ in what they model (below)")
-     << '\n';
-  for (const auto& d : c.differences) os << "  - " << d.sentence << '\n';
-  os << "cpu          multibody " << c.cpuMultibody() << " s, reduced " << c.cpuReduced() << " s";
-  if (c.cpuReduced() > 0) os << " (reduced " << c.cpuMultibody() / c.cpuReduced() << "x faster)";
-  os << '\n';
-  return os.str();
 }
 
 }  // namespace rollerdyn

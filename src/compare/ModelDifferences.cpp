@@ -12,6 +12,18 @@ std::string fmt(const char* format, double a, double b = 0.0, double c = 0.0) {
   return buf;
 }
 
+// Distributed rods: the same kinetic energy in both, their inertial forces on the guides only in
+// multibody.
+ModelDifference rodInertiaDifference() {
+  return {"rod_inertia",
+          "rod inertia: distributed rod bodies (multibody) vs distributed reduced-inertia "
+          "terms m_rod*(x_S'^2 + y_S'^2) + I_S*beta'^2 (reduced, Loveikin and Pochka (2007) eq. (9)); both are "
+          "the exact kinetic energy of the rods, so the motion agrees, but the rods' own "
+          "inertial forces reach the carts' guides only in multibody (the reduced quasi-static statics "
+          "pass half the rod weight to the hinge)",
+          false, false};
+}
+
 // The reactions, and with distributed rods their inertia, when the reduced model's cart statics
 // leave out the inertial forces (quasi-static guide normals).
 void reactionDifferences(const Scene& s, bool kinetostatic, std::vector<ModelDifference>& d) {
@@ -31,14 +43,7 @@ void reactionDifferences(const Scene& s, bool kinetostatic, std::vector<ModelDif
                        "force to the guide reactions",
                        s.carts.geometry.com_height);
     d.push_back({"reactions", reactions, false, false});
-    if (s.rods.model == RodModel::Distributed)
-      d.push_back({"rod_inertia",
-                   "rod inertia: distributed rod bodies (multibody) vs distributed reduced-inertia "
-                   "terms m_rod*(x_S'^2 + y_S'^2) + I_S*beta'^2 (reduced, Loveikin and Pochka (2007) eq. (9)); both are "
-                   "the exact kinetic energy of the rods, so the motion agrees, but the rods' own "
-                   "inertial forces reach the carts' guides only in multibody (the reduced quasi-static statics "
-                   "pass half the rod weight to the hinge)",
-                   false, false});
+    if (s.rods.model == RodModel::Distributed) d.push_back(rodInertiaDifference());
   }
 }
 
@@ -120,8 +125,10 @@ std::vector<ModelDifference> modelDifferences(const Scene& s) {
   return d;
 }
 
-std::vector<std::string> identicalPhysics(const Scene& s) {
-  std::vector<std::string> same;
+namespace {
+
+// The drive (cams or cranks, the coupling) and the motor law, alike in both models.
+void sameDriveAndMotor(const Scene& s, std::vector<std::string>& same) {
   if (s.hasCamDrive())
     same.push_back("drive: cams with the motion law of Loveikin and Pochka (cam drive paper) eq. (29)-(34), x_B = sigma*x(theta), in both "
                    "(a coordinate coupler in multibody, the same transfer functions in reduced); no rods");
@@ -139,6 +146,10 @@ std::vector<std::string> identicalPhysics(const Scene& s) {
       same.push_back(std::string("motor: the same motor law (motor.model: ") + toString(s.induction.model) +
                      ") and starting method in both, its electrical states integrated with the motion");
   }
+}
+
+// The rods and the roller loads, alike in both models.
+void sameRodsAndLoads(const Scene& s, std::vector<std::string>& same) {
   if (s.rods.model == RodModel::Split)
     same.push_back("rods: half the rod mass on the crank pin, half on the cart (Loveikin, Pochka, Romasevych (2018) eq. "
                    "(2)-(3)) in both, including the pin half-masses' weight");
@@ -148,6 +159,10 @@ std::vector<std::string> identicalPhysics(const Scene& s) {
     same.push_back(std::string("roller loads: the same direction law (") +
                    toString(s.loads.roller_force_direction) +
                    ") in both; vertical roller forces do no work");
+}
+
+// The reactions and the guide friction taken from them, where both models agree.
+void sameReactionsAndFriction(const Scene& s, std::vector<std::string>& same) {
   const bool kinetostatic = s.reduced.guide_normals == ReducedGuideNormals::Kinetostatic;
   if (kinetostatic)
     same.push_back("reactions: the cart's and the rod's Newton equations with their inertial forces in both "
@@ -157,6 +172,15 @@ std::vector<std::string> identicalPhysics(const Scene& s) {
   else if (kinetostatic && s.loads.guide_normal_force == GuideNormalForce::Algebraic)
     same.push_back("guide friction: f*(|N_front| + |N_rear|) with the guide reactions of the same instant, the loop "
                    "solved with the motion by one law in both");
+}
+
+}  // namespace
+
+std::vector<std::string> identicalPhysics(const Scene& s) {
+  std::vector<std::string> same;
+  sameDriveAndMotor(s, same);
+  sameRodsAndLoads(s, same);
+  sameReactionsAndFriction(s, same);
   if (s.reduced.kinematics == KinematicsForm::Exact && !s.hasCamDrive())
     same.push_back("kinematics: exact slider-crank (Loveikin, Pochka, Romasevych (2018) eq. (40)-(47)) in the reduced "
                    "model, exact loop closure in multibody");

@@ -98,6 +98,86 @@ CoefficientCurves coefficientCurves(const std::vector<SweepPoint>& pts, const st
   return c;
 }
 
+// Loveikin, Pochka, Romasevych (2018) Table 1: how the runs start and what the columns mean.
+void loveikin2018Setup(std::ostream& md, const PaperSweep& p) {
+  md << "\n### Loveikin, Pochka, Romasevych (2018): four carts, elastic coupling, Table 1\n\n"
+     << "Scene `model/" << p.scene_file << "` (roller forces as printed, "
+     << "distributed rods, guide friction as in the scene), every run started with";
+  for (const auto& st : p.start) md << " `--set " << st << "`";
+  md << " (Table 1 lists steady swings; from rest the drive cannot start at some offsets, see the "
+     << "sensitivity table), and `--set crank.offset_deg=... --set coupling.damping=k`. "
+     << "\"variant\" = " << p.variant_label << ". Swings (max - min) over the steady window. "
+     << "\"rotates\": the crank turns steadily (mean crank speed in rad/s); where it does not (it swings back "
+     << "and forth without whole turns in one direction, or the motor cannot start it) the swings describe a different motion and are left out "
+     << "(\"–\"). Published: `validation/published/" << p.published_file << "`.\n\n";
+}
+
+// Whether the reduced model's crank turns steadily at a point, with its mean speed or why not.
+std::string rotationCell(const RunMetrics& m) {
+  return m.rotating ? "yes (" + fx(m.omega_mean, 2) + ")"
+         : !m.complete ? "no: " + m.status
+                       : "no: oscillates (mean " + fx(m.omega_mean, 2) + ")";
+}
+
+// Table 1's columns: coupling torque swing published, ours, gap, variant and multibody; the
+// twist's swings published and ours.
+std::vector<SweepColumn> loveikin2018Columns() {
+  using M = RunMetrics;
+  return {{"Δφ [deg]", [](const SweepPoint& s) { return g(s.x); }},
+          {"k", [](const SweepPoint& s) { return g(s.k, 6); }},
+          {"rotates (mean ω)", [](const SweepPoint& s) { return rotationCell(s.reduced); }},
+          {"ΔM pub [N·m]", [](const SweepPoint& s) { return g(pub(s, "coupling_torque_swing"), 4); }},
+          {"ΔM ours", [](const SweepPoint& s) { return g(ok(s.reduced, &M::torque_swing), 4); }},
+          {"gap", [](const SweepPoint& s) { return pct(ok(s.reduced, &M::torque_swing), pub(s, "coupling_torque_swing")); }},
+          {"ΔM variant", [](const SweepPoint& s) { return g(ok(s.variant, &M::torque_swing), 4); }},
+          {"ΔM mb", [](const SweepPoint& s) { return s.has_multibody ? g(ok(s.multibody, &M::torque_swing), 4) : ""; }},
+          {"Δψ pub [rad]", [](const SweepPoint& s) { return g(pub(s, "twist_swing")); }},
+          {"Δψ ours", [](const SweepPoint& s) { return g(ok(s.reduced, &M::twist_swing)); }},
+          {"Δψ̇ pub [rad/s]", [](const SweepPoint& s) { return g(pub(s, "twist_rate_swing")); }},
+          {"Δψ̇ ours", [](const SweepPoint& s) { return g(ok(s.reduced, &M::twist_rate_swing)); }},
+          {"Δψ̈ pub [rad/s²]", [](const SweepPoint& s) { return g(pub(s, "twist_accel_swing")); }},
+          {"Δψ̈ ours", [](const SweepPoint& s) { return g(ok(s.reduced, &M::twist_accel_swing)); }}};
+}
+
+// Our numbers of Table 1 for results/loveikin2018_table1.csv (unmasked, as coefficientCsv).
+Table loveikin2018Csv(const std::vector<SweepPoint>& pts) {
+  Table t;
+  t.columns = {"dphi_deg", "k", "rotating", "omega_mean", "coupling_torque_swing", "twist_swing", "twist_rate_swing",
+               "twist_accel_swing", "coupling_torque_swing_variant", "coupling_torque_swing_multibody",
+               "coupling_torque_swing_published"};
+  for (const auto& s : pts) {
+    const RunMetrics& m = s.reduced;
+    t.rows.push_back({s.x, s.k, m.rotating ? 1.0 : 0.0, m.omega_mean, m.torque_swing, m.twist_swing, m.twist_rate_swing,
+                      m.twist_accel_swing, s.variant.torque_swing, s.has_multibody ? s.multibody.torque_swing : kNaN,
+                      pub(s, "coupling_torque_swing")});
+  }
+  return t;
+}
+
+// The coupling torque swing against Δφ, published and reduced for each damping k (NaN where the
+// crank does not rotate), multibody at k = 8000 where it ran.
+PlotSpec torqueSwingPlot(const PaperSweep& p) {
+  std::map<double, std::vector<double>> x, published, reduced;
+  std::vector<double> xm, mm;
+  for (const auto& s : p.points) {
+    x[s.k].push_back(s.x);
+    published[s.k].push_back(pub(s, "coupling_torque_swing"));
+    reduced[s.k].push_back(ok(s.reduced, &RunMetrics::torque_swing));
+    if (s.has_multibody && s.k == 8000) {
+      xm.push_back(s.x);
+      mm.push_back(ok(s.multibody, &RunMetrics::torque_swing));
+    }
+  }
+  PlotSpec s = plot("Loveikin, Pochka, Romasevych (2018) Table 1: coupling torque swing", p.x_label,
+                    "coupling torque swing [N m]", /*logy=*/true);
+  for (const auto& [k, xs] : x) {
+    s.series.push_back(series("published, k = " + g(k, 6), xs, published[k], "linespoints"));
+    s.series.push_back(series("reduced, k = " + g(k, 6), xs, reduced[k], "linespoints"));
+  }
+  s.series.push_back(series("multibody, k = 8000", xm, mm, "points pt 7 ps 1.5"));
+  return s;
+}
+
 }  // namespace
 
 void ReportWriter::coefficientFigure(const std::string& name, PlotSpec spec, const std::string& published_title,
@@ -106,6 +186,32 @@ void ReportWriter::coefficientFigure(const std::string& name, PlotSpec spec, con
   if (variant) spec.series.push_back(series("reduced, Baranov 1 deg", c.x, c.variant));
   spec.series.push_back(series("multibody", c.x_multibody, c.multibody, "points pt 7 ps 1.5"));
   figure(name, std::move(spec), caption);
+}
+
+// Section (3): each paper's table beside ours, then the gap's likely causes.
+void ReportWriter::papers() {
+  md_ << "\n## (3) The papers' tables\n\nInputs are the shipped scene files; they are never tuned to "
+      << "the published numbers. The published tables came from the papers' own coarse scheme and "
+      << "partly unstated inputs (listed in the scene files' headers); the likely causes of "
+      << "each gap are listed after its table.\n";
+  for (const auto& p : r_.papers) {
+    section("(3) " + p.title);
+    if (p.id == "loveikin2007") loveikin2007(p);
+    if (p.id == "energy_balanced") energyBalanced(p);
+    if (p.id == "loveikin2018") loveikin2018(p);
+    if (!p.findings.empty()) paperFindings(p);
+  }
+}
+
+// The gap's likely causes (PaperFindings.h), each a claim unless it is a measurement.
+void ReportWriter::paperFindings(const PaperSweep& p) {
+  md_ << "\nThe gap and its likely causes, each with the comparison behind it:\n\n";
+  int n = 0;
+  for (const auto& f : p.findings) {
+    const std::string id = p.id + "." + std::to_string(++n);
+    md_ << "- " << (f.verdict == Verdict::Measurement ? "" : "**" + id + "** ") << f.text
+        << (f.verdict == Verdict::Measurement ? "" : " " + verdict(id, f.verdict, f.text)) << "\n";
+  }
 }
 
 void ReportWriter::loveikin2007(const PaperSweep& p) {
@@ -155,60 +261,10 @@ void ReportWriter::energyBalanced(const PaperSweep& p) {
 }
 
 void ReportWriter::loveikin2018(const PaperSweep& p) {
-  md_ << "\n### Loveikin, Pochka, Romasevych (2018): four carts, elastic coupling, Table 1\n\n"
-      << "Scene `model/" << p.scene_file << "` (roller forces as printed, "
-      << "distributed rods, guide friction as in the scene), every run started with";
-  for (const auto& st : p.start) md_ << " `--set " << st << "`";
-  md_ << " (Table 1 lists steady swings; from rest the drive cannot start at some offsets, see the "
-      << "sensitivity table), and `--set crank.offset_deg=... --set coupling.damping=k`. "
-      << "\"variant\" = " << p.variant_label << ". Swings (max - min) over the steady window. "
-      << "\"rotates\": the crank turns steadily (mean crank speed in rad/s); where it does not (it swings back "
-      << "and forth without whole turns in one direction, or the motor cannot start it) the swings describe a different motion and are left out "
-      << "(\"–\"). Published: `validation/published/" << p.published_file << "`.\n\n"
-      << "| Δφ [deg] | k | rotates (mean ω) | ΔM pub [N·m] | ΔM ours | gap | ΔM variant | ΔM mb | Δψ pub [rad] | Δψ ours | Δψ̇ pub [rad/s] | Δψ̇ ours | Δψ̈ pub [rad/s²] | Δψ̈ ours |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  Table t;
-  t.columns = {"dphi_deg", "k", "rotating", "omega_mean", "coupling_torque_swing", "twist_swing", "twist_rate_swing",
-               "twist_accel_swing", "coupling_torque_swing_variant", "coupling_torque_swing_multibody",
-               "coupling_torque_swing_published"};
-  std::map<double, std::vector<double>> x, mp, mr, mv;
-  std::vector<double> xm, mm;
-  for (const auto& s : p.points) {
-    const RunMetrics& m = s.reduced;
-    std::string rot = m.rotating ? "yes (" + fx(m.omega_mean, 2) + ")"
-                      : !m.complete ? "no: " + m.status
-                                    : "no: oscillates (mean " + fx(m.omega_mean, 2) + ")";
-    md_ << "| " << g(s.x) << " | " << g(s.k, 6) << " | " << rot << " | " << g(pub(s, "coupling_torque_swing"), 4) << " | " << g(ok(m, &RunMetrics::torque_swing), 4) << " | "
-        << pct(ok(m, &RunMetrics::torque_swing), pub(s, "coupling_torque_swing")) << " | "
-        << g(ok(s.variant, &RunMetrics::torque_swing), 4) << " | "
-        << (s.has_multibody ? g(ok(s.multibody, &RunMetrics::torque_swing), 4) : "") << " | "
-        << g(pub(s, "twist_swing")) << " | " << g(ok(m, &RunMetrics::twist_swing)) << " | "
-        << g(pub(s, "twist_rate_swing")) << " | " << g(ok(m, &RunMetrics::twist_rate_swing)) << " | "
-        << g(pub(s, "twist_accel_swing")) << " | " << g(ok(m, &RunMetrics::twist_accel_swing)) << " |\n";
-    t.rows.push_back({s.x, s.k, m.rotating ? 1.0 : 0.0, m.omega_mean, m.torque_swing, m.twist_swing, m.twist_rate_swing,
-                      m.twist_accel_swing, s.variant.torque_swing, s.has_multibody ? s.multibody.torque_swing : kNaN,
-                      pub(s, "coupling_torque_swing")});
-    x[s.k].push_back(s.x);
-    mp[s.k].push_back(pub(s, "coupling_torque_swing"));
-    mr[s.k].push_back(ok(m, &RunMetrics::torque_swing));
-    mv[s.k].push_back(ok(s.variant, &RunMetrics::torque_swing));
-    if (s.has_multibody && s.k == 8000) {
-      xm.push_back(s.x);
-      mm.push_back(ok(s.multibody, &RunMetrics::torque_swing));
-    }
-  }
-  out_.tables.push_back({"loveikin2018_table1.csv", t});
-  PlotSpec s;
-  s.title = "Loveikin, Pochka, Romasevych (2018) Table 1: coupling torque swing";
-  s.xlabel = p.x_label;
-  s.ylabel = "coupling torque swing [N m]";
-  s.logy = true;
-  for (const auto& [k, xs] : x) {
-    s.series.push_back(series("published, k = " + g(k, 6), xs, mp[k], "linespoints"));
-    s.series.push_back(series("reduced, k = " + g(k, 6), xs, mr[k], "linespoints"));
-  }
-  s.series.push_back(series("multibody, k = 8000", xm, mm, "points pt 7 ps 1.5"));
-  figure("loveikin2018_torque_swing", s, "Loveikin, Pochka, Romasevych (2018): coupling torque swing against the crank offset (missing points: the crank does not rotate)");
+  loveikin2018Setup(md_, p);
+  sweepTable(md_, loveikin2018Columns(), p.points);
+  out_.tables.push_back({"loveikin2018_table1.csv", loveikin2018Csv(p.points)});
+  figure("loveikin2018_torque_swing", torqueSwingPlot(p), "Loveikin, Pochka, Romasevych (2018): coupling torque swing against the crank offset (missing points: the crank does not rotate)");
 }
 
 void ReportWriter::sensitivity() {
@@ -221,62 +277,126 @@ void ReportWriter::sensitivity() {
         << " | " << g(s.changed, 4) << " | " << g(s.published, 5) << " |\n";
 }
 
-void ReportWriter::analytic() {
+namespace {
+
+// The two-rotor system as set up (the drive of Loveikin, Pochka, Romasevych (2018), ASSUMED) and
+// how it is integrated.
+void analyticSetup(std::ostream& md, const AnalyticResults& a) {
+  md << "\n## (4) Analytic: two rotors on an elastic link (Dyomin (two rotors)) against the multibody coupling element\n\n"
+     << "A Simbody system of two rotors on pin joints, joined by the elastic, damped coupling element of the multibody model, "
+     << "driven by the paper's torque series eq. (8) on rotor 1 and a constant resisting torque on rotor 2 "
+     << "(ψ = φ1 − φ2: twist; J1, J2: rotor inertias; k, b: link stiffness and damping; M1, α: level and angle of the "
+     << "drive series; M_c: resisting torque; p0, p1: undamped and damped natural frequencies; δ1: decay rate). "
+     << "Dyomin (two rotors) prints no numbers; the rotors are the Loveikin, Pochka, Romasevych (2018) drive "
+     << "(ASSUMED): J1 = " << g(a.forced.J1, 4) << " kg·m², J2 = " << g(a.forced.J2, 4) << " kg·m², k = "
+     << g(a.forced.k) << " N·m/rad, b = " << g(a.forced.b) << " N·m·s/rad, M1 = " << g(a.forced.M1)
+     << " N·m, α = " << g(a.forced.alpha * 180.0 / M_PI) << "°, M_c = " << g(a.forced.Mc, 4) << " N·m. Integrator RungeKuttaMerson at accuracy "
+     << g(a.accuracy) << ", no interpolation.\n\n";
+}
+
+// One forced run's steady twist harmonics: closed form (exact and as printed) against the
+// simulation. Returns the largest error relative to the first harmonic.
+double harmonicTable(std::ostream& md, const char* title, const TwoRotorParameters& pp,
+                     const std::vector<HarmonicResponse>& cf, const ForcedResponseMeasurement& m, double p0) {
+  md << "**" << title << "** (ω = " << g(pp.omega, 5) << " rad/s, p0/ω = " << g(p0 / pp.omega, 4)
+     << "): steady twist harmonics, measured over " << m.periods << " periods after " << g(m.settle_time)
+     << " s.\n\n| harmonic | exact closed form [rad] | paper as printed, eq. (16)-(21), (27)-(28) [rad] | simulated [rad] | error vs exact (of the 1st harmonic) |\n|---|---|---|---|---|\n";
+  double a1 = 0;
+  for (const auto& h : cf)
+    if (h.n == 1) a1 = h.amplitude;
+  double worst = 0;
+  for (std::size_t i = 0; i < cf.size() && i < m.harmonics.size(); ++i) {
+    const double err = std::hypot(m.harmonics[i].a_sin - cf[i].a_sin, m.harmonics[i].b_cos - cf[i].b_cos);
+    worst = std::max(worst, err / a1);
+    md << "| " << cf[i].n << "ω | " << g(cf[i].amplitude, 6) << " | " << g(cf[i].amplitude_printed, 6) << " | "
+       << g(m.harmonics[i].amplitude, 6) << " | " << g(err / a1, 2) << " |\n";
+  }
+  md << "\n";
+  return worst;
+}
+
+// The closed-form steady twist of the forced run at time t: the mean twist plus the harmonics.
+double closedFormTwist(const AnalyticResults& a, double t) {
+  double y = a.mean_twist_expected;
+  for (const auto& h : a.closed_forced)
+    y += h.a_sin * std::sin(h.n * a.forced.omega * t) + h.b_cos * std::cos(h.n * a.forced.omega * t);
+  return y;
+}
+
+// Figure: ψ(t) over two periods, simulated samples vs closed form.
+PlotSpec dyominForcedPlot(const AnalyticResults& a) {
+  const auto& m = a.measured_forced;
+  const double T = 2 * M_PI / a.forced.omega;
+  std::vector<double> ts, ys, tc, yc;
+  for (std::size_t i = 0; i < m.t.size(); ++i)
+    if (m.t[i] <= m.settle_time + 2 * T) {
+      if (i % 4 == 0) {
+        ts.push_back(m.t[i]);
+        ys.push_back(m.twist[i]);
+      }
+      tc.push_back(m.t[i]);
+      yc.push_back(closedFormTwist(a, m.t[i]));
+    }
+  PlotSpec s;
+  s.title = "Dyomin (two rotors): steady twist of two rotors on the coupling element";
+  s.xlabel = "t [s]";
+  s.ylabel = "twist ψ = φ_1 - φ_2 [rad]";
+  s.series = {series("closed form (eq. (7), (8), exact)", tc, yc), series("Simbody simulation", ts, ys, "points pt 6")};
+  return s;
+}
+
+// Figure: the damped free oscillation and its decay envelope ±ψ_0 exp(-δ_1 t).
+PlotSpec dyominFreePlot(const AnalyticResults& a) {
+  const auto& m = a.measured_damped;
+  const std::vector<double>& ts = m.t;
+  const double dl = dampingRate(a.free_damped);
+  std::vector<double> env, envn;
+  for (double t : ts) {
+    env.push_back(m.initial_twist * std::exp(-dl * t));
+    envn.push_back(-m.initial_twist * std::exp(-dl * t));
+  }
+  PlotSpec s;
+  s.title = "Dyomin (two rotors): free oscillation, b = " + g(a.free_damped.b) + " N m s/rad";
+  s.xlabel = "t [s]";
+  s.ylabel = "twist [rad]";
+  s.series = {series("Simbody simulation", ts, m.twist), series("±ψ_0 exp(-δ_1 t), eq. (9)", ts, env),
+              series("", ts, envn)};
+  return s;
+}
+
+}  // namespace
+
+// One row of the frequency table, with its claim: the simulation reproduces the closed form to
+// kAnalyticTolerance (relative).
+void ReportWriter::analyticCheck(int n, const std::string& what, double closed, double simulated, int prec) {
+  const double e = simulated / closed - 1;
+  const std::string text = what + ": simulated " + g(simulated, prec) + " against the closed form " + g(closed, prec) +
+                           ", relative error " + g(e, 2) + " (within " + g(kAnalyticTolerance) + " required)";
+  md_ << "| " << what << " | " << g(closed, prec) << " | " << g(simulated, prec) << " | " << g(e, 2) << " | "
+      << verdict("dyomin." + std::to_string(n), std::abs(e) <= kAnalyticTolerance ? Verdict::Holds : Verdict::Fails, text)
+      << " |\n";
+}
+
+// Natural frequencies, decay rate and mean twist: simulated against the closed form.
+void ReportWriter::analyticFrequencies(double p0) {
   const AnalyticResults& a = r_.analytic;
-  if (a.closed_forced.empty()) return;
-  const double p0 = naturalFrequency(a.forced);
-  section("(4) Analytic: two rotors on an elastic link (Dyomin (two rotors))");
-  md_ << "\n## (4) Analytic: two rotors on an elastic link (Dyomin (two rotors)) against the multibody coupling element\n\n"
-      << "A Simbody system of two rotors on pin joints, joined by the elastic, damped coupling element of the multibody model, "
-      << "driven by the paper's torque series eq. (8) on rotor 1 and a constant resisting torque on rotor 2 "
-      << "(ψ = φ1 − φ2: twist; J1, J2: rotor inertias; k, b: link stiffness and damping; M1, α: level and angle of the "
-      << "drive series; M_c: resisting torque; p0, p1: undamped and damped natural frequencies; δ1: decay rate). "
-      << "Dyomin (two rotors) prints no numbers; the rotors are the Loveikin, Pochka, Romasevych (2018) drive "
-      << "(ASSUMED): J1 = " << g(a.forced.J1, 4) << " kg·m², J2 = " << g(a.forced.J2, 4) << " kg·m², k = "
-      << g(a.forced.k) << " N·m/rad, b = " << g(a.forced.b) << " N·m·s/rad, M1 = " << g(a.forced.M1)
-      << " N·m, α = " << g(a.forced.alpha * 180.0 / M_PI) << "°, M_c = " << g(a.forced.Mc, 4) << " N·m. Integrator RungeKuttaMerson at accuracy "
-      << g(a.accuracy) << ", no interpolation.\n\n";
   const auto& u = a.measured_undamped;
   const auto& d = a.measured_damped;
-  // Claim per row: the simulation reproduces the closed form to kAnalyticTolerance (relative).
-  int n_row = 0;
-  auto row = [&](const std::string& what, double closed, double simulated, int prec) {
-    const double e = simulated / closed - 1;
-    const std::string text = what + ": simulated " + g(simulated, prec) + " against the closed form " + g(closed, prec) +
-                             ", relative error " + g(e, 2) + " (within " + g(kAnalyticTolerance) + " required)";
-    md_ << "| " << what << " | " << g(closed, prec) << " | " << g(simulated, prec) << " | " << g(e, 2) << " | "
-        << verdict("dyomin." + std::to_string(++n_row), std::abs(e) <= kAnalyticTolerance ? Verdict::Holds : Verdict::Fails, text)
-        << " |\n";
-  };
   md_ << "| check | closed form | simulated | relative error | within " << g(kAnalyticTolerance) << " |\n|---|---|---|---|---|\n";
-  row("p0, eq. (10), free oscillation b = 0 [rad/s]", p0, u.frequency, 10);
-  row("p1, eq. (14), b = " + g(a.free_damped.b) + " [rad/s]", dampedFrequency(a.free_damped), d.frequency, 10);
-  row("δ1, eq. (9), b = " + g(a.free_damped.b) + " [1/s]", dampingRate(a.free_damped), d.decay_rate, 10);
-  row("p0 from the damped run, √(p1² + δ1²) [rad/s]", p0, d.natural_frequency, 10);
-  row("mean twist Φ0, eq. (42)-(43) [rad]", a.mean_twist_expected, a.measured_forced.mean_twist, 8);
+  analyticCheck(1, "p0, eq. (10), free oscillation b = 0 [rad/s]", p0, u.frequency, 10);
+  analyticCheck(2, "p1, eq. (14), b = " + g(a.free_damped.b) + " [rad/s]", dampedFrequency(a.free_damped), d.frequency, 10);
+  analyticCheck(3, "δ1, eq. (9), b = " + g(a.free_damped.b) + " [1/s]", dampingRate(a.free_damped), d.decay_rate, 10);
+  analyticCheck(4, "p0 from the damped run, √(p1² + δ1²) [rad/s]", p0, d.natural_frequency, 10);
+  analyticCheck(5, "mean twist Φ0, eq. (42)-(43) [rad]", a.mean_twist_expected, a.measured_forced.mean_twist, 8);
   md_ << "\n"
       << "Frequencies from " << u.periods << " (undamped) and " << d.periods
       << " (damped) periods of upward zero crossings located by cubic Hermite interpolation; decay from maxima " << d.decay_periods
       << " periods apart.\n\n";
-  double worst = 0;  // largest harmonic error relative to the first harmonic, both forced runs
-  auto harmonics = [&](const char* title, const TwoRotorParameters& pp, const std::vector<HarmonicResponse>& cf,
-                       const ForcedResponseMeasurement& m) {
-    md_ << "**" << title << "** (ω = " << g(pp.omega, 5) << " rad/s, p0/ω = " << g(p0 / pp.omega, 4)
-        << "): steady twist harmonics, measured over " << m.periods << " periods after " << g(m.settle_time)
-        << " s.\n\n| harmonic | exact closed form [rad] | paper as printed, eq. (16)-(21), (27)-(28) [rad] | simulated [rad] | error vs exact (of the 1st harmonic) |\n|---|---|---|---|---|\n";
-    double a1 = 0;
-    for (const auto& h : cf)
-      if (h.n == 1) a1 = h.amplitude;
-    for (std::size_t i = 0; i < cf.size() && i < m.harmonics.size(); ++i) {
-      const double err = std::hypot(m.harmonics[i].a_sin - cf[i].a_sin, m.harmonics[i].b_cos - cf[i].b_cos);
-      worst = std::max(worst, err / a1);
-      md_ << "| " << cf[i].n << "ω | " << g(cf[i].amplitude, 6) << " | " << g(cf[i].amplitude_printed, 6) << " | "
-          << g(m.harmonics[i].amplitude, 6) << " | " << g(err / a1, 2) << " |\n";
-    }
-    md_ << "\n";
-  };
-  harmonics("Forced, crank speed of Loveikin, Pochka, Romasevych (2018)", a.forced, a.closed_forced, a.measured_forced);
-  harmonics("Forced, third harmonic at resonance (3ω = p0)", a.resonant, a.closed_resonant, a.measured_resonant);
+}
+
+// Why the paper's printed amplitudes differ, and the claim on the exact ones (`worst`: the
+// largest harmonic error relative to the first harmonic, both forced runs).
+void ReportWriter::analyticHarmonicsClaim(double worst) {
   md_ << "The simulated harmonics (sin and cos parts) match the exact steady solution of eq. (7) with the "
       << "forcing of eq. (8). The paper's printed amplitudes agree for the first harmonic up to its phase "
       << "combination: eq. (17), (18), (20), (21) as printed omit the 1/n factor of the series (8) (they are n "
@@ -288,51 +408,22 @@ void ReportWriter::analytic() {
                  "the closed form and the simulated twist harmonics agree to " + g(kAnalyticTolerance) +
                      " of the first harmonic (largest error measured: " + g(worst, 2) + ")")
       << ".\n";
-  // Figure: ψ(t) over two periods, simulated samples vs closed form.
-  {
-    const auto& m = a.measured_forced;
-    const double T = 2 * M_PI / a.forced.omega;
-    std::vector<double> ts, ys, tc, yc;
-    for (std::size_t i = 0; i < m.t.size(); ++i)
-      if (m.t[i] <= m.settle_time + 2 * T) {
-        if (i % 4 == 0) {
-          ts.push_back(m.t[i]);
-          ys.push_back(m.twist[i]);
-        }
-        double y = a.mean_twist_expected;
-        for (const auto& h : a.closed_forced)
-          y += h.a_sin * std::sin(h.n * a.forced.omega * m.t[i]) + h.b_cos * std::cos(h.n * a.forced.omega * m.t[i]);
-        tc.push_back(m.t[i]);
-        yc.push_back(y);
-      }
-    PlotSpec s;
-    s.title = "Dyomin (two rotors): steady twist of two rotors on the coupling element";
-    s.xlabel = "t [s]";
-    s.ylabel = "twist ψ = φ_1 - φ_2 [rad]";
-    s.series = {series("closed form (eq. (7), (8), exact)", tc, yc), series("Simbody simulation", ts, ys, "points pt 6")};
-    figure("dyomin_forced", s, "Dyomin (two rotors): simulated twist against the closed-form steady response");
-  }
-  {
-    const auto& m = a.measured_damped;
-    std::vector<double> ts, ys;
-    for (std::size_t i = 0; i < m.t.size(); ++i) {
-      ts.push_back(m.t[i]);
-      ys.push_back(m.twist[i]);
-    }
-    const double dl = dampingRate(a.free_damped);
-    std::vector<double> env, envn;
-    for (double t : ts) {
-      env.push_back(m.initial_twist * std::exp(-dl * t));
-      envn.push_back(-m.initial_twist * std::exp(-dl * t));
-    }
-    PlotSpec s;
-    s.title = "Dyomin (two rotors): free oscillation, b = " + g(a.free_damped.b) + " N m s/rad";
-    s.xlabel = "t [s]";
-    s.ylabel = "twist [rad]";
-    s.series = {series("Simbody simulation", ts, ys), series("±ψ_0 exp(-δ_1 t), eq. (9)", ts, env),
-                series("", ts, envn)};
-    figure("dyomin_free", s, "Dyomin (two rotors): free oscillation and the decay envelope of eq. (9)");
-  }
+}
+
+void ReportWriter::analytic() {
+  const AnalyticResults& a = r_.analytic;
+  if (a.closed_forced.empty()) return;
+  const double p0 = naturalFrequency(a.forced);
+  section("(4) Analytic: two rotors on an elastic link (Dyomin (two rotors))");
+  analyticSetup(md_, a);
+  analyticFrequencies(p0);
+  const double forced = harmonicTable(md_, "Forced, crank speed of Loveikin, Pochka, Romasevych (2018)", a.forced,
+                                      a.closed_forced, a.measured_forced, p0);
+  const double resonant = harmonicTable(md_, "Forced, third harmonic at resonance (3ω = p0)", a.resonant,
+                                        a.closed_resonant, a.measured_resonant, p0);
+  analyticHarmonicsClaim(std::max(forced, resonant));
+  figure("dyomin_forced", dyominForcedPlot(a), "Dyomin (two rotors): simulated twist against the closed-form steady response");
+  figure("dyomin_free", dyominFreePlot(a), "Dyomin (two rotors): free oscillation and the decay envelope of eq. (9)");
 }
 
 }  // namespace rollerdyn::validation::report_detail

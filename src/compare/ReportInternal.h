@@ -89,19 +89,26 @@ class ReportWriter {
   }
   void header();
   void equivalence();
+  void convergence();
+  void convergenceClaim(const std::string& label, const std::vector<const ComparisonCase*>& cs);
   void perCart();
   void differences();
   // Published, reduced, [Baranov 1 deg,] multibody against the swept value (seeds 004 and 003).
   void coefficientFigure(const std::string& name, PlotSpec spec, const std::string& published_title,
                          const CoefficientCurves& c, bool variant, const std::string& caption);
   void papers();
+  void paperFindings(const PaperSweep& p);
   void loveikin2007(const PaperSweep& p);
   void energyBalanced(const PaperSweep& p);
   void loveikin2018(const PaperSweep& p);
   void sensitivity();
   void analytic();
+  void analyticCheck(int n, const std::string& what, double closed, double simulated, int prec);
+  void analyticFrequencies(double p0);
+  void analyticHarmonicsClaim(double worst);
   void motor();
   void items();
+  nlohmann::json resultsJson() const;
   int firstItemNumber() const;  // (5) when there is no motor section, else (6)
 
   const ValidationResults& r_;

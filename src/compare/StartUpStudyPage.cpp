@@ -65,6 +65,41 @@ std::string startsText(const json& su) {
   return "does not start";
 }
 
+// One law's row of a machine's table.
+void machineRow(std::ostringstream& md, const char* law, const json& su) {
+  const json &m = su.value("motor_torque", json::object()), &c = su.value("coupling_torque", json::object());
+  const json& I = su.value("stator_current", json());
+  md << "| " << law << " (" << lawWords(law) << ") | " << startsText(su) << " | "
+     << g(su.value("starting_torque_crank", json()), 4) << " | " << g(m.value("peak", json()), 4) << " | "
+     << g(c.value("peak", json()), 4) << " | " << g(c.value("steady_peak", json()), 4) << " | "
+     << g(c.value("ratio", json())) << " | " << (I.is_object() ? g(I.value("peak", json()), 4) : "–") << " |\n";
+}
+
+// The finding of one machine: Kloss's start against the catalogue motor's (space-phasor), where
+// Kloss ran.
+void klossAgainstCatalogue(const std::string& title, const std::map<std::string, json>& by_law,
+                           std::vector<std::string>& findings) {
+  if (!by_law.count("kloss")) return;
+  const json& k = by_law.at("kloss");
+  std::ostringstream f;
+  f << title << ": Kloss " << (k.value("starts", false) ? "starts in " + g(k["run_up_time"]) + " s" : startsText(k));
+  if (!by_law.count("park")) {
+    findings.push_back(f.str() + " (starting torque at the crank " + g(k.value("starting_torque_crank", json()), 4) +
+                       " N·m); no catalogue motor to compare with.");
+    return;
+  }
+  const json& p = by_law.at("park");
+  f << ", the catalogue motor (space-phasor) " << (p.value("starts", false) ? "starts in " + g(p["run_up_time"]) + " s" : startsText(p))
+    << "; starting torque at the crank " << g(k.value("starting_torque_crank", json()), 4) << " against "
+    << g(p.value("starting_torque_crank", json()), 4) << " N·m";
+  if (k.value("starts", false) && p.value("starts", false))
+    f << "; peak coupling torque in the start " << g(k["coupling_torque"].value("peak", json()), 4) << " against "
+      << g(p["coupling_torque"].value("peak", json()), 4) << " N·m, peak motor torque "
+      << g(k["motor_torque"].value("peak", json()), 4) << " against " << g(p["motor_torque"].value("peak", json()), 4)
+      << " N·m";
+  findings.push_back(f.str() + ".");
+}
+
 void machineTable(std::ostringstream& md, const std::string& dir, const std::string& scene, const std::string& title,
                   std::vector<std::string>& findings) {
   md << "### " << title << " (`model/" << scene << ".yaml`, from rest)\n\n";
@@ -82,35 +117,82 @@ void machineTable(std::ostringstream& md, const std::string& dir, const std::str
       continue;
     }
     by_law[law] = su;
-    const json &m = su.value("motor_torque", json::object()), &c = su.value("coupling_torque", json::object());
-    const json& I = su.value("stator_current", json());
-    md << "| " << law << " (" << lawWords(law) << ") | " << startsText(su) << " | "
-       << g(su.value("starting_torque_crank", json()), 4) << " | " << g(m.value("peak", json()), 4) << " | "
-       << g(c.value("peak", json()), 4) << " | " << g(c.value("steady_peak", json()), 4) << " | "
-       << g(c.value("ratio", json())) << " | " << (I.is_object() ? g(I.value("peak", json()), 4) : "–") << " |\n";
+    machineRow(md, law, su);
   }
   md << "\n";
   for (const std::string& n : not_run) md << "Not run, " << n << "\n\n";
   for (const auto& [law, su] : by_law)
     if (!su.value("starts", false)) md << "Why " << law << (su.value("still_starting", false) ? " has not started: " : " does not start: ") << su.value("verdict", std::string()) << ".\n\n";
-  if (!by_law.count("kloss")) return;
-  const json& k = by_law["kloss"];
-  std::ostringstream f;
-  f << title << ": Kloss " << (k.value("starts", false) ? "starts in " + g(k["run_up_time"]) + " s" : startsText(k));
-  if (!by_law.count("park")) {
-    findings.push_back(f.str() + " (starting torque at the crank " + g(k.value("starting_torque_crank", json()), 4) +
-                       " N·m); no catalogue motor to compare with.");
-    return;
+  klossAgainstCatalogue(title, by_law, findings);
+}
+
+using OffsetAndDamping = std::pair<double, double>;  // (Δφ [°], k [N·m·s/rad])
+
+// The Table 1 sweep's points: (Δφ, k) -> motor law -> point.
+std::map<OffsetAndDamping, std::map<std::string, json>> pointsByOffset(const json& sweep) {
+  std::map<OffsetAndDamping, std::map<std::string, json>> cell;
+  for (const json& p : sweep["points"]) {
+    const json& v = p["values"];
+    cell[{d(v["crank.offset_deg"]), d(v["coupling.damping"])}][v.value("motor.model", std::string("?"))] = p;
   }
-  const json& p = by_law["park"];
-  f << ", the catalogue motor (space-phasor) " << (p.value("starts", false) ? "starts in " + g(p["run_up_time"]) + " s" : startsText(p))
-    << "; starting torque at the crank " << g(k.value("starting_torque_crank", json()), 4) << " against "
-    << g(p.value("starting_torque_crank", json()), 4) << " N·m";
-  if (k.value("starts", false) && p.value("starts", false))
-    f << "; peak coupling torque in the start " << g(k["coupling_torque"].value("peak", json()), 4) << " against "
-      << g(p["coupling_torque"].value("peak", json()), 4) << " N·m, peak motor torque "
-      << g(k["motor_torque"].value("peak", json()), 4) << " against " << g(p["motor_torque"].value("peak", json()), 4)
-      << " N·m";
+  return cell;
+}
+
+// Published swings, keyed like ours (none when the published table is absent).
+std::map<OffsetAndDamping, double> publishedSwings(const std::string& dir) {
+  std::map<OffsetAndDamping, double> published;
+  const std::string pub = dir + "/../published/loveikin2018_table1.csv";
+  if (std::filesystem::exists(pub)) {
+    const StudyTable t = readStudyTable(pub);
+    for (std::size_t i = 0; i < t.rows.size(); ++i)
+      published[{t.at(i, "dphi_deg"), t.at(i, "k")}] = t.at(i, "coupling_torque_swing");
+  }
+  return published;
+}
+
+// How the crank moves over the table's points with Kloss and the catalogue motor.
+struct FromRestCount {
+  int kloss_moving = 0, park_moving = 0, rows = 0;
+  std::string stalled_kloss;  // "Δφ° (k = ...)" where Kloss stalls
+};
+
+// One (Δφ, k) row: each law's motion (and swing where it turns), the published swing.
+void fromRestRow(std::ostringstream& md, const OffsetAndDamping& key, const std::map<std::string, json>& laws,
+                 const std::map<OffsetAndDamping, double>& published, FromRestCount& n) {
+  ++n.rows;
+  md << "| " << key.first << " | " << key.second << " |";
+  for (const char* law : {"kloss", "circuit", "park"}) {
+    const auto it = laws.find(law);
+    if (it == laws.end()) {
+      md << " – |";
+      continue;
+    }
+    const json& p = it->second;
+    const std::string motion = p.value("motion", std::string("?"));
+    md << " " << motion;
+    if (motion == "turning") md << ", ΔM " << g(p["metrics"].value("coupling_torque_swing", json()), 4);
+    md << " |";
+    if (std::string(law) == "kloss" && motion == "turning") ++n.kloss_moving;
+    if (std::string(law) == "park" && motion == "turning") ++n.park_moving;
+    if (std::string(law) == "kloss" && motion == "stalled")
+      n.stalled_kloss += (n.stalled_kloss.empty() ? "" : ", ") + g(json(key.first), 4) + "° (k = " + g(json(key.second), 5) + ")";
+  }
+  const auto pit = published.find(key);
+  md << " " << (pit != published.end() && std::isfinite(pit->second) ? g(json(pit->second), 4) : "–") << " |\n";
+}
+
+// The Table 1 offsets' table from the sweep, and the finding on how often the crank turns.
+void fromRestTable(std::ostringstream& md, const std::string& dir, const json& sweep, std::vector<std::string>& findings) {
+  const auto cell = pointsByOffset(sweep);
+  const auto published = publishedSwings(dir);
+  md << "| Δφ [°] | k | kloss | circuit | park | published ΔM [N·m] |\n|---|---|---|---|---|---|\n";
+  FromRestCount n;
+  for (const auto& [key, laws] : cell) fromRestRow(md, key, laws, published, n);
+  md << "\n";
+  std::ostringstream f;
+  f << "Table 1 offsets from rest: the crank turns at " << n.kloss_moving << " of " << n.rows
+    << " (Δφ, k) points with Kloss and at " << n.park_moving << " with the catalogue motor (space-phasor)";
+  if (!n.stalled_kloss.empty()) f << "; Kloss stalls at " << n.stalled_kloss;
   findings.push_back(f.str() + ".");
 }
 
@@ -123,76 +205,35 @@ void table1FromRestSection(std::ostringstream& md, const std::string& dir, std::
         "stalled: the motor cannot keep it going); reduced model, 20 s. Published: Table 1 (which starts from an "
         "unstated state; `loveikin2018_table1.md` compares the swing from nominal speed).\n\n";
   const json t1 = readSweep(dir + "/startup_loveikin2018_table1/sweep.json");
-  if (t1.is_null()) {
+  if (t1.is_null())
     md << "*Not available: startup_loveikin2018_table1/sweep.json; run `bash validation/studies/run.sh`.*\n";
-  } else {
-    std::map<std::pair<double, double>, std::map<std::string, json>> cell;  // (Δφ, k) -> law -> point
-    for (const json& p : t1["points"]) {
-      const json& v = p["values"];
-      cell[{d(v["crank.offset_deg"]), d(v["coupling.damping"])}][v.value("motor.model", std::string("?"))] = p;
-    }
-    // Published swings, keyed like ours.
-    std::map<std::pair<double, double>, double> published;
-    const std::string pub = dir + "/../published/loveikin2018_table1.csv";
-    if (std::filesystem::exists(pub)) {
-      const LooseTable t = readLooseCsv(pub);
-      for (std::size_t i = 0; i < t.rows.size(); ++i)
-        published[{t.at(i, "dphi_deg"), t.at(i, "k")}] = t.at(i, "coupling_torque_swing");
-    }
-    md << "| Δφ [°] | k | kloss | circuit | park | published ΔM [N·m] |\n|---|---|---|---|---|---|\n";
-    int kloss_moving = 0, park_moving = 0, rows = 0;
-    std::string stalled_kloss;
-    for (const auto& [key, laws] : cell) {
-      ++rows;
-      md << "| " << key.first << " | " << key.second << " |";
-      for (const char* law : {"kloss", "circuit", "park"}) {
-        const auto it = laws.find(law);
-        if (it == laws.end()) {
-          md << " – |";
-          continue;
-        }
-        const json& p = it->second;
-        const std::string motion = p.value("motion", std::string("?"));
-        md << " " << motion;
-        if (motion == "turning") md << ", ΔM " << g(p["metrics"].value("coupling_torque_swing", json()), 4);
-        md << " |";
-        if (std::string(law) == "kloss" && motion == "turning") ++kloss_moving;
-        if (std::string(law) == "park" && motion == "turning") ++park_moving;
-        if (std::string(law) == "kloss" && motion == "stalled")
-          stalled_kloss += (stalled_kloss.empty() ? "" : ", ") + g(json(key.first), 4) + "° (k = " + g(json(key.second), 5) + ")";
-      }
-      const auto pit = published.find(key);
-      md << " " << (pit != published.end() && std::isfinite(pit->second) ? g(json(pit->second), 4) : "–") << " |\n";
-    }
-    md << "\n";
-    std::ostringstream f;
-    f << "Table 1 offsets from rest: the crank turns at " << kloss_moving << " of " << rows
-      << " (Δφ, k) points with Kloss and at " << park_moving << " with the catalogue motor (space-phasor)";
-    if (!stalled_kloss.empty()) f << "; Kloss stalls at " << stalled_kloss;
-    findings.push_back(f.str() + ".");
-  }
+  else
+    fromRestTable(md, dir, t1, findings);
 }
+
+// What the page runs and how to read its tables.
+const char* const kStartUpIntro =
+    "The papers report steady running only; they name start-stop regimes as the source of the largest "
+    "loads. Here each paper's machine is started from rest, direct on line, with three motor laws "
+    "(`motor.model`): Kloss's static formula (the papers' law), and the 4A motor's equivalent circuit "
+    "(double cage) fitted to its catalogue, quasi-static (`circuit`) and as the space-phasor machine "
+    "(`park`, with the supply-frequency transient after switching on). Answers per run from `summary.json` "
+    "`start_up` (docs/startup.md): the run-up time to 95 % of the steady mean crank speed, the torque "
+    "at standstill under the starting supply × u·η (u reducer ratio, η its efficiency), the peaks of motor "
+    "and coupling torque between switch-on and the steady window against the coupling's steady peak, the "
+    "stator current's peak (RMS phase current). Multibody model (minimal formulation), the scenes' accuracy "
+    "and time span; `--set initial.crank_speed=0` (two scenes start at nominal speed by default because Kloss's "
+    "starting torque cannot move their carts).\n\n"
+    "Commands: `rollerdyn simulate model/<scene>.yaml --set motor.model=<law> --set initial.crank_speed=0` "
+    "(summary.json kept in `startup_<scene>/<law>/`) and, for the offsets, `rollerdyn sweep model/balanced-4cart.yaml "
+    "--param motor.model --values kloss,circuit,park --param crank.offset_deg --values 0:90:10 --param "
+    "coupling.damping --values 2000,8000 --model reduced --set initial.crank_speed=0 --set simulation.t_end=20`.\n\n";
 
 }  // namespace
 
 StudiesPage startUpStudyPage(const std::string& dir) {
   std::ostringstream md;
-  md << "# Start-up from rest with each motor law\n\n" << kGeneratedNote
-     << "The papers report steady running only; they name start-stop regimes as the source of the largest "
-        "loads. Here each paper's machine is started from rest, direct on line, with three motor laws "
-        "(`motor.model`): Kloss's static formula (the papers' law), and the 4A motor's equivalent circuit "
-        "(double cage) fitted to its catalogue, quasi-static (`circuit`) and as the space-phasor machine "
-        "(`park`, with the supply-frequency transient after switching on). Answers per run from `summary.json` "
-        "`start_up` (docs/startup.md): the run-up time to 95 % of the steady mean crank speed, the torque "
-        "at standstill under the starting supply × u·η (u reducer ratio, η its efficiency), the peaks of motor "
-        "and coupling torque between switch-on and the steady window against the coupling's steady peak, the "
-        "stator current's peak (RMS phase current). Multibody model (minimal formulation), the scenes' accuracy "
-        "and time span; `--set initial.crank_speed=0` (two scenes start at nominal speed by default because Kloss's "
-        "starting torque cannot move their carts).\n\n"
-     << "Commands: `rollerdyn simulate model/<scene>.yaml --set motor.model=<law> --set initial.crank_speed=0` "
-        "(summary.json kept in `startup_<scene>/<law>/`) and, for the offsets, `rollerdyn sweep model/balanced-4cart.yaml "
-        "--param motor.model --values kloss,circuit,park --param crank.offset_deg --values 0:90:10 --param "
-        "coupling.damping --values 2000,8000 --model reduced --set initial.crank_speed=0 --set simulation.t_end=20`.\n\n";
+  md << "# Start-up from rest with each motor law\n\n" << kGeneratedNote << kStartUpIntro;
   std::vector<std::string> findings;
   md << "## The papers' machines\n\n";
   machineTable(md, dir, "balanced-4cart", "Loveikin, Pochka, Romasevych (2018), four carts, 4A200M6U3", findings);

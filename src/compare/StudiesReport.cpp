@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/CsvTable.h"
 #include "io/ReadFile.h"
 #include "io/FieldFormat.h"
 
@@ -33,7 +34,7 @@ const char* kGenerated =
 bool exists(const std::string& path) { return std::filesystem::exists(path); }
 
 // Index of the smallest finite value of a column over rows passing `keep`; -1 when none.
-int argmin(const LooseTable& t, const std::string& col, const std::function<bool(std::size_t)>& keep = {}) {
+int argmin(const StudyTable& t, const std::string& col, const std::function<bool(std::size_t)>& keep = {}) {
   int best = -1;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const double v = t.at(i, col);
@@ -44,7 +45,7 @@ int argmin(const LooseTable& t, const std::string& col, const std::function<bool
 }
 
 // A markdown table of selected columns (header, column) with `prec` significant digits.
-void table(std::ostream& md, const LooseTable& t, const std::vector<std::pair<std::string, std::string>>& cols,
+void table(std::ostream& md, const StudyTable& t, const std::vector<std::pair<std::string, std::string>>& cols,
            int prec = 4) {
   for (const auto& c : cols) md << "| " << c.first << " ";
   md << "|\n";
@@ -58,25 +59,9 @@ void table(std::ostream& md, const LooseTable& t, const std::vector<std::pair<st
 
 std::string missing(const std::string& what) { return "*Not available: " + what + " was not found; run `bash validation/studies/run.sh`.*\n"; }
 
-// Loveikin and Pochka (2007) and the energy-balanced drive paper: δ/H/k_p against a parameter.
-StudiesPage coefficientPage(const std::string& dir, const std::string& stem, const std::string& title,
-                            const std::string& key, const std::string& key_label, const std::string& command,
-                            const std::string& published_file, const std::string& paper) {
-  std::ostringstream md;
-  md << "# " << title << "\n\n" << kGenerated;
-  const std::string path = dir + "/" + stem + ".csv";
-  if (!exists(path)) return {stem + ".md", md.str() + missing(stem + ".csv")};
-  const LooseTable t = readLooseCsv(path);
-  md << "Command: `" << command << "`. Ours: reduced model, `" << stem << ".csv` (our columns `ours_*` beside the "
-     << "published `published_*` from `../published/" << published_file << "`); raw sweep and plots in `" << stem
-     << "/`. δ = (ω_max − ω_min)/ω_mean: coefficient of unevenness (Loveikin and Pochka (2007), eq. (12)); H, k_p: "
-     << "coefficient of dynamics and dynamic factor (eq. (13)-(14)); ω: crank speed [rad/s].\n\n";
-  table(md, t,
-        {{key_label, key}, {"δ ours", "ours_delta"}, {"δ paper", "published_delta"}, {"H ours", "ours_H"},
-         {"H paper", "published_H"}, {"k_p ours", "ours_k_p"}, {"k_p paper", "published_k_p"},
-         {"ω_min ours", "ours_omega_crank_min"}, {"ω_min paper", "published_omega_min"},
-         {"ω_max ours", "ours_omega_crank_max"}, {"ω_max paper", "published_omega_max"},
-         {"steady", "ours_steady_state_reached"}});
+// The findings under a coefficient table: steady points, the smallest δ ours and the paper's,
+// and the range of the gap of δ over the points.
+void coefficientFindings(std::ostream& md, const StudyTable& t, const std::string& key, const std::string& key_label) {
   int steady = 0;
   for (std::size_t i = 0; i < t.rows.size(); ++i) steady += t.at(i, "ours_steady_state_reached") == 1.0;
   md << "\n- Steady state reached at " << steady << " of " << t.rows.size() << " points.\n";
@@ -93,26 +78,95 @@ StudiesPage coefficientPage(const std::string& dir, const std::string& stem, con
     hi = std::isfinite(hi) ? std::max(hi, r) : r;
   }
   md << "- Gap of δ, (ours − paper)/paper, over the points: " << pct(lo) << " … " << pct(hi) << ".\n";
+}
+
+// The multibody runs of a coefficient sweep (stem_multibody.csv, where present): δ against the
+// reduced model's at the same points.
+void coefficientMultibody(std::ostream& md, const std::string& dir, const std::string& stem, const StudyTable& t,
+                          const std::string& key, const std::string& key_label) {
   const std::string mb = dir + "/" + stem + "_multibody.csv";
-  if (exists(mb)) {
-    const LooseTable m = readLooseCsv(mb);
-    double worst = 0;
-    std::string at;
-    for (std::size_t i = 0; i < m.rows.size(); ++i)
-      for (std::size_t j = 0; j < t.rows.size(); ++j)
-        if (std::abs(m.at(i, key) - t.at(j, key)) < 1e-9) {
-          const double d = std::abs(m.at(i, "ours_delta") / t.at(j, "ours_delta") - 1);
-          if (d > worst) worst = d;
-          at += (at.empty() ? "" : ", ") + g(m.at(i, key), 6);
-        }
-    md << "- Multibody model (`" << stem << "_multibody.csv`, at " << key_label << " = " << at
-       << "): δ within " << pct(worst) << " of the reduced model.\n";
-  }
+  if (!exists(mb)) return;
+  const StudyTable m = readStudyTable(mb);
+  double worst = 0;
+  std::string at;
+  for (std::size_t i = 0; i < m.rows.size(); ++i)
+    for (std::size_t j = 0; j < t.rows.size(); ++j)
+      if (std::abs(m.at(i, key) - t.at(j, key)) < 1e-9) {
+        const double d = std::abs(m.at(i, "ours_delta") / t.at(j, "ours_delta") - 1);
+        if (d > worst) worst = d;
+        at += (at.empty() ? "" : ", ") + g(m.at(i, key), 6);
+      }
+  md << "- Multibody model (`" << stem << "_multibody.csv`, at " << key_label << " = " << at
+     << "): δ within " << pct(worst) << " of the reduced model.\n";
+}
+
+// Loveikin and Pochka (2007) and the energy-balanced drive paper: δ/H/k_p against a parameter.
+StudiesPage coefficientPage(const std::string& dir, const std::string& stem, const std::string& title,
+                            const std::string& key, const std::string& key_label, const std::string& command,
+                            const std::string& published_file, const std::string& paper) {
+  std::ostringstream md;
+  md << "# " << title << "\n\n" << kGenerated;
+  const std::string path = dir + "/" + stem + ".csv";
+  if (!exists(path)) return {stem + ".md", md.str() + missing(stem + ".csv")};
+  const StudyTable t = readStudyTable(path);
+  md << "Command: `" << command << "`. Ours: reduced model, `" << stem << ".csv` (our columns `ours_*` beside the "
+     << "published `published_*` from `../published/" << published_file << "`); raw sweep and plots in `" << stem
+     << "/`. δ = (ω_max − ω_min)/ω_mean: coefficient of unevenness (Loveikin and Pochka (2007), eq. (12)); H, k_p: "
+     << "coefficient of dynamics and dynamic factor (eq. (13)-(14)); ω: crank speed [rad/s].\n\n";
+  table(md, t,
+        {{key_label, key}, {"δ ours", "ours_delta"}, {"δ paper", "published_delta"}, {"H ours", "ours_H"},
+         {"H paper", "published_H"}, {"k_p ours", "ours_k_p"}, {"k_p paper", "published_k_p"},
+         {"ω_min ours", "ours_omega_crank_min"}, {"ω_min paper", "published_omega_min"},
+         {"ω_max ours", "ours_omega_crank_max"}, {"ω_max paper", "published_omega_max"},
+         {"steady", "ours_steady_state_reached"}});
+  coefficientFindings(md, t, key, key_label);
+  coefficientMultibody(md, dir, stem, t, key, key_label);
   md << "\nThe likely causes of the gap to " << paper << ", each with the comparison behind it, and the sensitivity "
      << "to what the paper leaves open are in the validation report (`../report.md`, section (3)), written by "
      << "`rollerdyn validate`.\n";
   return {stem + ".md", md.str()};
 }
+
+// One damping k of Table 1: where ours rotates steadily, and the smallest swing ours and the paper's.
+void table1AtDamping(std::ostream& md, const StudyTable& t, double k) {
+  auto keep = [&](std::size_t i) { return t.at(i, "coupling.damping") == k && t.at(i, "ours_steady_state_reached") == 1.0; };
+  const int io = argmin(t, "ours_coupling_torque_swing", keep);
+  const int ip = argmin(t, "published_coupling_torque_swing", [&](std::size_t i) { return t.at(i, "coupling.damping") == k; });
+  std::string steady;
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    if (keep(i)) steady += (steady.empty() ? "" : ", ") + g(t.at(i, "crank.offset_deg"));
+  md << "- k = " << g(k, 6) << ": steady rotation at Δφ = " << (steady.empty() ? "none" : steady) << "°";
+  if (io >= 0 && ip >= 0)
+    md << "; smallest ΔM ours " << g(t.at(io, "ours_coupling_torque_swing"), 4) << " N·m at "
+       << g(t.at(io, "crank.offset_deg")) << "°, the paper's " << g(t.at(ip, "published_coupling_torque_swing"), 5)
+       << " at " << g(t.at(ip, "crank.offset_deg")) << "°; ratio ours/paper there "
+       << g(t.at(io, "ours_coupling_torque_swing") / t.at(io, "published_coupling_torque_swing"), 2);
+  md << ".\n";
+}
+
+// The multibody runs of Table 1 (where present): ΔM against the reduced model's at the same points.
+void table1Multibody(std::ostream& md, const std::string& dir, const std::string& stem, const StudyTable& t) {
+  const std::string mb = dir + "/" + stem + "_multibody.csv";
+  if (!exists(mb)) return;
+  const StudyTable m = readStudyTable(mb);
+  double worst = 0;
+  for (std::size_t i = 0; i < m.rows.size(); ++i)
+    for (std::size_t j = 0; j < t.rows.size(); ++j)
+      if (m.at(i, "crank.offset_deg") == t.at(j, "crank.offset_deg") &&
+          m.at(i, "coupling.damping") == t.at(j, "coupling.damping"))
+        worst = std::max(worst, std::abs(m.at(i, "ours_coupling_torque_swing") / t.at(j, "ours_coupling_torque_swing") - 1));
+  md << "- Multibody model (`" << stem << "_multibody.csv`, " << m.rows.size() << " points): ΔM within " << pct(worst)
+     << " of the reduced model.\n";
+}
+
+// Table 1's columns on its page: (header, column of the joined table).
+const std::vector<std::pair<std::string, std::string>> kTable1Columns = {
+    {"Δφ [°]", "crank.offset_deg"}, {"k", "coupling.damping"}, {"ΔM ours", "ours_coupling_torque_swing"},
+    {"ΔM paper", "published_coupling_torque_swing"}, {"Δψ ours", "ours_twist_swing"},
+    {"Δψ paper", "published_twist_swing"}, {"Δψ̇ ours", "ours_twist_rate_swing"},
+    {"Δψ̇ paper", "published_twist_rate_swing"}, {"Δψ̈ ours", "ours_twist_accel_swing"},
+    {"Δψ̈ paper", "published_twist_accel_swing"}, {"mean ω ours", "ours_omega_crank_mean"},
+    {"steady", "ours_steady_state_reached"}};
 
 StudiesPage loveikin2018Table1(const std::string& dir) {
   const std::string stem = "loveikin2018_dphi_damping";
@@ -121,52 +175,46 @@ StudiesPage loveikin2018Table1(const std::string& dir) {
      << kGenerated;
   const std::string path = dir + "/" + stem + ".csv";
   if (!exists(path)) return {"loveikin2018_table1.md", md.str() + missing(stem + ".csv")};
-  const LooseTable t = readLooseCsv(path);
+  const StudyTable t = readStudyTable(path);
   md << "Command: `rollerdyn sweep model/balanced-4cart.yaml --param coupling.damping --values 2000,8000 --param "
         "crank.offset_deg --values 0:90:10 --model reduced --set initial.crank_speed=10.42 --set simulation.t_end=20`, "
         "the same start (nominal crank speed ω_n/u = 102.1/9.8 = 10.42 rad/s) and length as the Table 1 comparison of "
         "`rollerdyn validate`. ΔM: coupling torque swing c·ψ + k·ψ̇ [N·m]; Δψ, Δψ̇, Δψ̈: swings of the coupling twist "
         "ψ = φ_motor − φ_crank [rad] and its derivatives; max − min over the steady window. \"steady\" = 0: the crank "
         "does not reach a steady rotation (the swings then describe a rocking or stalled crank).\n\n";
-  table(md, t,
-        {{"Δφ [°]", "crank.offset_deg"}, {"k", "coupling.damping"}, {"ΔM ours", "ours_coupling_torque_swing"},
-         {"ΔM paper", "published_coupling_torque_swing"}, {"Δψ ours", "ours_twist_swing"},
-         {"Δψ paper", "published_twist_swing"}, {"Δψ̇ ours", "ours_twist_rate_swing"},
-         {"Δψ̇ paper", "published_twist_rate_swing"}, {"Δψ̈ ours", "ours_twist_accel_swing"},
-         {"Δψ̈ paper", "published_twist_accel_swing"}, {"mean ω ours", "ours_omega_crank_mean"},
-         {"steady", "ours_steady_state_reached"}});
+  table(md, t, kTable1Columns);
   md << "\n";
-  for (double k : {2000.0, 8000.0}) {
-    auto keep = [&](std::size_t i) { return t.at(i, "coupling.damping") == k && t.at(i, "ours_steady_state_reached") == 1.0; };
-    const int io = argmin(t, "ours_coupling_torque_swing", keep);
-    const int ip = argmin(t, "published_coupling_torque_swing", [&](std::size_t i) { return t.at(i, "coupling.damping") == k; });
-    std::string steady;
-    for (std::size_t i = 0; i < t.rows.size(); ++i)
-      if (keep(i)) steady += (steady.empty() ? "" : ", ") + g(t.at(i, "crank.offset_deg"));
-    md << "- k = " << g(k, 6) << ": steady rotation at Δφ = " << (steady.empty() ? "none" : steady) << "°";
-    if (io >= 0 && ip >= 0)
-      md << "; smallest ΔM ours " << g(t.at(io, "ours_coupling_torque_swing"), 4) << " N·m at "
-         << g(t.at(io, "crank.offset_deg")) << "°, the paper's " << g(t.at(ip, "published_coupling_torque_swing"), 5)
-         << " at " << g(t.at(ip, "crank.offset_deg")) << "°; ratio ours/paper there "
-         << g(t.at(io, "ours_coupling_torque_swing") / t.at(io, "published_coupling_torque_swing"), 2);
-    md << ".\n";
-  }
-  const std::string mb = dir + "/" + stem + "_multibody.csv";
-  if (exists(mb)) {
-    const LooseTable m = readLooseCsv(mb);
-    double worst = 0;
-    for (std::size_t i = 0; i < m.rows.size(); ++i)
-      for (std::size_t j = 0; j < t.rows.size(); ++j)
-        if (m.at(i, "crank.offset_deg") == t.at(j, "crank.offset_deg") &&
-            m.at(i, "coupling.damping") == t.at(j, "coupling.damping"))
-          worst = std::max(worst, std::abs(m.at(i, "ours_coupling_torque_swing") / t.at(j, "ours_coupling_torque_swing") - 1));
-    md << "- Multibody model (`" << stem << "_multibody.csv`, " << m.rows.size() << " points): ΔM within " << pct(worst)
-       << " of the reduced model.\n";
-  }
+  for (double k : {2000.0, 8000.0}) table1AtDamping(md, t, k);
+  table1Multibody(md, dir, stem, t);
   md << "\nThe likely causes of the gap, each with the comparison behind it (load reading, the other reading's "
         "stall, modelling choices, trend with damping), and the sensitivity table are in the validation report "
         "(`../report.md`, section (3)), which runs this table with the same start and length.\n";
   return {"loveikin2018_table1.md", md.str()};
+}
+
+// One stiffness sweep (coupling damping k): its table, the smallest swing and the paper's c.
+void stiffnessSweep(std::ostream& md, const std::string& dir, const char* k) {
+  const std::string path = dir + "/loveikin2018_stiffness_k" + k + "/sweep.csv";
+  md << "## k = " << k << " N·m·s/rad\n\n";
+  if (!exists(path)) {
+    md << missing(path);
+    return;
+  }
+  const StudyTable t = readStudyTable(path);
+  table(md, t, {{"c [N·m/rad]", "coupling.stiffness"}, {"ΔM [N·m]", "coupling_torque_swing"}, {"δ", "delta"},
+                {"mean ω [rad/s]", "omega_crank_mean"}, {"steady", "steady_state_reached"},
+                {"resonance warnings", "resonance_warnings"}});
+  const int i = argmin(t, "coupling_torque_swing", [&](std::size_t r) { return t.at(r, "steady_state_reached") == 1.0; });
+  if (i < 0) return;
+  const bool interior = i > 0 && i + 1 < int(t.rows.size());
+  md << "\nSmallest ΔM " << g(t.at(i, "coupling_torque_swing"), 4) << " N·m at c = " << g(t.at(i, "coupling.stiffness"), 6)
+     << " N·m/rad: " << (interior ? "an interior minimum of the swept range" : "at an end of the swept range, no interior minimum")
+     << ".";
+  for (std::size_t r = 0; r < t.rows.size(); ++r)
+    if (t.at(r, "coupling.stiffness") == 200000)
+      md << " At the paper's c = 200000: ΔM = " << g(t.at(r, "coupling_torque_swing"), 4) << " N·m ("
+         << g(t.at(r, "coupling_torque_swing") / t.at(i, "coupling_torque_swing"), 3) << "× the smallest).";
+  md << "\n\n";
 }
 
 StudiesPage loveikin2018Stiffness(const std::string& dir) {
@@ -177,32 +225,19 @@ StudiesPage loveikin2018Stiffness(const std::string& dir) {
         "--set initial.crank_speed=10.42 --set simulation.t_end=20 --set coupling.damping=k` for k = 0 and 8000 "
         "(Δφ = 90°). Tables and plots in `loveikin2018_stiffness_k0/` and `loveikin2018_stiffness_k8000/`. ΔM: "
         "coupling torque swing [N·m].\n\n";
-  for (const char* k : {"0", "8000"}) {
-    const std::string path = dir + "/loveikin2018_stiffness_k" + k + "/sweep.csv";
-    md << "## k = " << k << " N·m·s/rad\n\n";
-    if (!exists(path)) {
-      md << missing(path);
-      continue;
-    }
-    const LooseTable t = readLooseCsv(path);
-    table(md, t, {{"c [N·m/rad]", "coupling.stiffness"}, {"ΔM [N·m]", "coupling_torque_swing"}, {"δ", "delta"},
-                  {"mean ω [rad/s]", "omega_crank_mean"}, {"steady", "steady_state_reached"},
-                  {"resonance warnings", "resonance_warnings"}});
-    const int i = argmin(t, "coupling_torque_swing", [&](std::size_t r) { return t.at(r, "steady_state_reached") == 1.0; });
-    if (i >= 0) {
-      const bool interior = i > 0 && i + 1 < int(t.rows.size());
-      md << "\nSmallest ΔM " << g(t.at(i, "coupling_torque_swing"), 4) << " N·m at c = " << g(t.at(i, "coupling.stiffness"), 6)
-         << " N·m/rad: " << (interior ? "an interior minimum of the swept range" : "at an end of the swept range, no interior minimum")
-         << ".";
-      for (std::size_t r = 0; r < t.rows.size(); ++r)
-        if (t.at(r, "coupling.stiffness") == 200000)
-          md << " At the paper's c = 200000: ΔM = " << g(t.at(r, "coupling_torque_swing"), 4) << " N·m ("
-             << g(t.at(r, "coupling_torque_swing") / t.at(i, "coupling_torque_swing"), 3) << "× the smallest).";
-      md << "\n\n";
-    }
-  }
+  for (const char* k : {"0", "8000"}) stiffnessSweep(md, dir, k);
   return {"loveikin2018_stiffness.md", md.str()};
 }
+
+// The cam page's rows: (quantity, key of cam_vs_crank.json's "cam" and "crank").
+const char* const kCamRows[][2] = {{"stroke [m]", "stroke"},
+                                   {"peak cart velocity [m/s]", "velocity_peak"},
+                                   {"peak cart acceleration [m/s²]", "accel_peak"},
+                                   {"peak cart jerk [m/s³]", "jerk_peak"},
+                                   {"peak drive force [N]", "drive_force_abs_peak"},
+                                   {"peak motor torque [N·m]", "motor_torque_abs_max"},
+                                   {"coefficient of unevenness δ", "delta"},
+                                   {"mean crank/cam speed [rad/s]", "omega_mean"}};
 
 StudiesPage camPage(const std::string& dir) {
   std::ostringstream md;
@@ -214,15 +249,7 @@ StudiesPage camPage(const std::string& dir) {
   md << "Command: `rollerdyn cam-profile model/cam-drive.yaml --compare --model " << j.value("model", std::string("?"))
      << "`; outputs in `cam/` (`cam_vs_crank.csv` copied beside this page).\n\n"
      << "| quantity | cam | crank | cam/crank |\n|---|---|---|---|\n";
-  const char* rows[][2] = {{"stroke [m]", "stroke"},
-                           {"peak cart velocity [m/s]", "velocity_peak"},
-                           {"peak cart acceleration [m/s²]", "accel_peak"},
-                           {"peak cart jerk [m/s³]", "jerk_peak"},
-                           {"peak drive force [N]", "drive_force_abs_peak"},
-                           {"peak motor torque [N·m]", "motor_torque_abs_max"},
-                           {"coefficient of unevenness δ", "delta"},
-                           {"mean crank/cam speed [rad/s]", "omega_mean"}};
-  for (const auto& r : rows) {
+  for (const auto& r : kCamRows) {
     const double c = j["cam"].value(r[1], kNaN), k = j["crank"].value(r[1], kNaN);
     md << "| " << r[0] << " | " << g(c, 4) << " | " << g(k, 4) << " | " << g(c / k, 3) << " |\n";
   }
@@ -232,6 +259,50 @@ StudiesPage camPage(const std::string& dir) {
   return {"cam_vs_crank.md", md.str()};
 }
 
+// The chain's twist harmonics, exact and as printed.
+void chainHarmonics(std::ostream& md, const nlohmann::json& amplitudes) {
+  md << "| harmonic | exact amplitude [rad] | printed amplitude [rad] | printed/exact |\n|---|---|---|---|\n";
+  for (const char* n : {"n1", "n2", "n3", "n5"}) {
+    const auto& h = amplitudes[n];
+    md << "| " << std::string(n).substr(1) << "ω | " << g(h.value("corrected", kNaN), 5) << " | " << g(h.value("printed", kNaN), 5) << " | "
+       << g(h.value("printed", kNaN) / h.value("corrected", kNaN), 3) << " |\n";
+  }
+}
+
+// A chain run's parameters and its twist against the exact and the printed closed form.
+void chainAgainstClosedForm(std::ostream& md, const nlohmann::json& j) {
+  const auto& d = j["derived"];
+  const auto& s = j["steady_last_period"];
+  const auto& f = j["full_run"];
+  md << "ω = " << g(j["parameters"].value("omega", kNaN), 4) << " rad/s, p0 = " << g(d.value("p0", kNaN), 5)
+     << " rad/s (p0/ω = " << g(d.value("p0_over_omega", kNaN), 4) << "), δ1 = " << g(d.value("delta1", kNaN), 4)
+     << " 1/s.\n\n| quantity | simulation | exact closed form | printed closed form |\n|---|---|---|---|\n"
+     << "| steady swing of ψ [rad] | " << g(s.value("swing_sim", kNaN), 6) << " | " << g(s.value("swing_corrected", kNaN), 6)
+     << " | " << g(s.value("swing_printed", kNaN), 6) << " |\n"
+     << "| mean ψ over the last period [rad] | " << g(s.value("mean_sim", kNaN), 6) << " | Φ0 = " << g(s.value("Phi0", kNaN), 6)
+     << " | |\n"
+     << "| max abs(ψ_sim − ψ_closed), last period [rad] | | " << g(s.value("max_err_corrected", kNaN), 2) << " | "
+     << g(s.value("max_err_printed", kNaN), 2) << " |\n"
+     << "| max abs(ψ_sim − ψ_closed), whole run with transient [rad] | | " << g(f.value("max_err_corrected", kNaN), 2) << " | "
+     << g(f.value("max_err_printed", kNaN), 2) << " |\n\n";
+}
+
+// One chain run (`sub`: its output folder): simulation against the exact and the printed closed
+// form, and the harmonics.
+void chainRun(std::ostream& md, const std::string& dir, const char* sub) {
+  const std::string path = dir + "/" + sub + "/chain.json";
+  md << "## `" << sub << "/`\n\n";
+  if (!exists(path)) {
+    md << missing(std::string(sub) + "/chain.json");
+    return;
+  }
+  const nlohmann::json j = nlohmann::json::parse(readFileContents(path, "chain result"));
+  chainAgainstClosedForm(md, j);
+  chainHarmonics(md, j["harmonic_amplitudes"]);
+  const auto& w = j["warnings"];
+  md << "\nResonance warnings: " << (w.empty() ? std::string("none") : w.dump()) << ".\n\n";
+}
+
 StudiesPage chainPage(const std::string& dir) {
   std::ostringstream md;
   md << "# Dyomin (two rotors): two rotors on an elastic chain, simulation against the closed form\n\n" << kGenerated
@@ -239,87 +310,44 @@ StudiesPage chainPage(const std::string& dir) {
         "outputs in `chain/` and `chain_resonance3/`. ψ: twist [rad]; p0, p1: undamped and damped natural "
         "frequencies (eq. (10), (14)); δ1: decay rate (eq. (9)); Φ0: mean twist (eq. (11)); \"exact\": the steady and "
         "transient solution of eq. (12) for the forcing of eq. (8); \"printed\": eq. (16)-(36) as printed.\n\n";
-  for (const char* sub : {"chain", "chain_resonance3"}) {
-    const std::string path = dir + "/" + sub + "/chain.json";
-    md << "## `" << sub << "/`\n\n";
-    if (!exists(path)) {
-      md << missing(std::string(sub) + "/chain.json");
-      continue;
-    }
-    const nlohmann::json j = nlohmann::json::parse(readFileContents(path, "chain result"));
-    const auto& d = j["derived"];
-    const auto& s = j["steady_last_period"];
-    const auto& f = j["full_run"];
-    md << "ω = " << g(j["parameters"].value("omega", kNaN), 4) << " rad/s, p0 = " << g(d.value("p0", kNaN), 5)
-       << " rad/s (p0/ω = " << g(d.value("p0_over_omega", kNaN), 4) << "), δ1 = " << g(d.value("delta1", kNaN), 4)
-       << " 1/s.\n\n| quantity | simulation | exact closed form | printed closed form |\n|---|---|---|---|\n"
-       << "| steady swing of ψ [rad] | " << g(s.value("swing_sim", kNaN), 6) << " | " << g(s.value("swing_corrected", kNaN), 6)
-       << " | " << g(s.value("swing_printed", kNaN), 6) << " |\n"
-       << "| mean ψ over the last period [rad] | " << g(s.value("mean_sim", kNaN), 6) << " | Φ0 = " << g(s.value("Phi0", kNaN), 6)
-       << " | |\n"
-       << "| max abs(ψ_sim − ψ_closed), last period [rad] | | " << g(s.value("max_err_corrected", kNaN), 2) << " | "
-       << g(s.value("max_err_printed", kNaN), 2) << " |\n"
-       << "| max abs(ψ_sim − ψ_closed), whole run with transient [rad] | | " << g(f.value("max_err_corrected", kNaN), 2) << " | "
-       << g(f.value("max_err_printed", kNaN), 2) << " |\n\n"
-       << "| harmonic | exact amplitude [rad] | printed amplitude [rad] | printed/exact |\n|---|---|---|---|\n";
-    for (const char* n : {"n1", "n2", "n3", "n5"}) {
-      const auto& h = j["harmonic_amplitudes"][n];
-      md << "| " << std::string(n).substr(1) << "ω | " << g(h.value("corrected", kNaN), 5) << " | " << g(h.value("printed", kNaN), 5) << " | "
-         << g(h.value("printed", kNaN) / h.value("corrected", kNaN), 3) << " |\n";
-    }
-    const auto& w = j["warnings"];
-    md << "\nResonance warnings: " << (w.empty() ? std::string("none") : w.dump()) << ".\n\n";
-  }
+  for (const char* sub : {"chain", "chain_resonance3"}) chainRun(md, dir, sub);
   return {"two_rotor_chain.md", md.str()};
+}
+
+// README.md of the studies folder: how to regenerate it and which page holds which study.
+StudiesPage studiesReadme() {
+  std::ostringstream md;
+  md << "# Studies of the papers\n\n" << kGenerated
+     << "Regenerate everything with `bash validation/studies/run.sh` from the repository root (set `ROLLERDYN=` to the "
+        "executable if it is not `build/rollerdyn`). Published tables come from `../published/` (one copy, shared "
+        "with `rollerdyn validate`); the CSVs here put ours beside them, one row per point. Inputs are never tuned to "
+        "close a gap.\n\n| study | page | tables |\n|---|---|---|\n"
+     << "| Loveikin and Pochka (2007): crank offset Δφ = 0…180° | `loveikin2007_dphi.md` | `loveikin2007_dphi*.csv`, `loveikin2007_dphi*/` |\n"
+     << "| the energy-balanced drive paper: flywheel 0…1000 kg·m² | `energy_balanced_flywheel.md` | `energy_balanced_flywheel.csv`, `energy_balanced_flywheel/` |\n"
+     << "| Loveikin, Pochka, Romasevych (2018) Table 1: Δφ = 0…90°, k = 2000/8000 | `loveikin2018_table1.md` | `loveikin2018_dphi_damping*.csv`, `loveikin2018_dphi_damping*/` |\n"
+     << "| Loveikin, Pochka, Romasevych (2018): coupling stiffness | `loveikin2018_stiffness.md` | `loveikin2018_stiffness_k*/` |\n"
+     << "| Loveikin and Pochka, cam drive with optimal reversal: cam vs crank | `cam_vs_crank.md` | `cam_vs_crank.csv`, `cam/` |\n"
+     << "| Dyomin (two rotors on an elastic chain) | `two_rotor_chain.md` | `chain/`, `chain_resonance3/` |\n"
+     << "| Start-up from rest with each motor law (the papers' machines; Table 1's offsets) | `startup.md` | `startup_*/` |\n";
+  return {"README.md", md.str()};
 }
 
 }  // namespace
 
-int LooseTable::index(const std::string& column) const {
+int StudyTable::index(const std::string& column) const {
   for (std::size_t i = 0; i < columns.size(); ++i)
     if (columns[i] == column) return int(i);
   return -1;
 }
-double LooseTable::at(std::size_t row, const std::string& column) const {
+double StudyTable::at(std::size_t row, const std::string& column) const {
   const int c = index(column);
   return c < 0 || row >= rows.size() ? kNaN : rows[row][c];
 }
 
-LooseTable readLooseCsv(const std::string& path) {
-  std::istringstream in(readFileContents(path, "study table"));
-  LooseTable t;
-  std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> fields;
-    std::string f;
-    bool quoted = false;
-    for (char ch : line) {  // commas inside "..." (status texts) do not split
-      if (ch == '"') quoted = !quoted;
-      else if (ch == ',' && !quoted) { fields.push_back(f); f.clear(); }
-      else f += ch;
-    }
-    fields.push_back(f);
-    if (t.columns.empty()) {
-      t.columns = fields;
-      continue;
-    }
-    if (fields.size() != t.columns.size())
-      throw std::runtime_error(path + ":" + std::to_string(lineno) + ": expected " + std::to_string(t.columns.size()) +
-                               " fields, got " + std::to_string(fields.size()));
-    std::vector<double> row;
-    for (const auto& x : fields) {
-      char* end = nullptr;
-      const double v = std::strtod(x.c_str(), &end);
-      row.push_back(!x.empty() && end && *end == '\0' ? v : kNaN);
-    }
-    t.rows.push_back(row);
-  }
-  if (t.columns.empty()) throw std::runtime_error(path + ": no header row");
-  return t;
+StudyTable readStudyTable(const std::string& path) {
+  CsvLayout layout;
+  Table table = readAnnotatedCsvFileWithText(path, "study table", &layout);
+  return {layout.header, std::move(table.rows)};
 }
 
 std::vector<StudiesPage> buildStudiesPages(const std::string& dir) {
@@ -341,20 +369,7 @@ std::vector<StudiesPage> buildStudiesPages(const std::string& dir) {
   pages.push_back(camPage(dir));
   pages.push_back(chainPage(dir));
   pages.push_back(startUpStudyPage(dir));
-  std::ostringstream md;
-  md << "# Studies of the papers\n\n" << kGenerated
-     << "Regenerate everything with `bash validation/studies/run.sh` from the repository root (set `ROLLERDYN=` to the "
-        "executable if it is not `build/rollerdyn`). Published tables come from `../published/` (one copy, shared "
-        "with `rollerdyn validate`); the CSVs here put ours beside them, one row per point. Inputs are never tuned to "
-        "close a gap.\n\n| study | page | tables |\n|---|---|---|\n"
-     << "| Loveikin and Pochka (2007): crank offset Δφ = 0…180° | `loveikin2007_dphi.md` | `loveikin2007_dphi*.csv`, `loveikin2007_dphi*/` |\n"
-     << "| the energy-balanced drive paper: flywheel 0…1000 kg·m² | `energy_balanced_flywheel.md` | `energy_balanced_flywheel.csv`, `energy_balanced_flywheel/` |\n"
-     << "| Loveikin, Pochka, Romasevych (2018) Table 1: Δφ = 0…90°, k = 2000/8000 | `loveikin2018_table1.md` | `loveikin2018_dphi_damping*.csv`, `loveikin2018_dphi_damping*/` |\n"
-     << "| Loveikin, Pochka, Romasevych (2018): coupling stiffness | `loveikin2018_stiffness.md` | `loveikin2018_stiffness_k*/` |\n"
-     << "| Loveikin and Pochka, cam drive with optimal reversal: cam vs crank | `cam_vs_crank.md` | `cam_vs_crank.csv`, `cam/` |\n"
-     << "| Dyomin (two rotors on an elastic chain) | `two_rotor_chain.md` | `chain/`, `chain_resonance3/` |\n"
-     << "| Start-up from rest with each motor law (the papers' machines; Table 1's offsets) | `startup.md` | `startup_*/` |\n";
-  pages.insert(pages.begin(), {"README.md", md.str()});
+  pages.insert(pages.begin(), studiesReadme());
   return pages;
 }
 

@@ -19,16 +19,18 @@ struct StudiesPage {
 // std::runtime_error naming the file when a table exists but cannot be parsed.
 std::vector<StudiesPage> buildStudiesPages(const std::string& dir);
 
-// Reads a CSV with optional leading '#' lines; empty or non-numeric cells become NaN (the joined
-// tables leave the published columns empty where the paper has no row). Throws
-// std::runtime_error naming the file and line on a row with the wrong number of fields.
-struct LooseTable {
+// A table of the studies folder, read by the tool's CSV reader (io/CsvTable.h,
+// readAnnotatedCsvFileWithText: '#' lines skipped, text and empty cells NaN; the joined tables leave
+// the published columns empty where the paper has no row), its columns named by the header cells
+// as written. Throws std::runtime_error naming the file and line on a row with the wrong number
+// of fields.
+struct StudyTable {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> rows;
   int index(const std::string& column) const;  // -1 when absent
   double at(std::size_t row, const std::string& column) const;  // NaN when absent
 };
-LooseTable readLooseCsv(const std::string& path);
+StudyTable readStudyTable(const std::string& path);
 
 // startup.md: the papers' machines started from rest with each motor law, and Table 1's offsets
 // from rest (StartUpStudyPage.cpp), from the startup_*/sweep.json under `dir`.

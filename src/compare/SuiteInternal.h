@@ -72,6 +72,8 @@ class Suite {
   double timeForRevolutions(const std::string& file, const std::vector<std::string>& sets, double revs) const;
   ComparisonCase compareCase(const std::string& label, const std::string& description, const std::string& file,
                              const std::vector<std::string>& sets, double revs, ModelComparison* keep);
+  void runCase(ComparisonCase& cc, const std::string& file, std::vector<std::string> sets, double revs,
+               ModelComparison* keep);
   RunMetrics reducedMetrics(const std::string& file, const std::vector<std::string>& sets) const {
     const Scene sc = load(file, sets);
     return runMetrics(sc, runReducedModel(sc));
@@ -88,14 +90,59 @@ class Suite {
   bool sweepPaper(PaperSweep& p, const std::vector<double>& xs, const std::vector<double>& multibody_at,
                   const std::string& published_key, const std::function<std::string(double)>& describe);
 
+  // Crank revolutions of each equivalence and per-cart run.
+  double revolutions() const { return o_.quick ? 5 : 20; }
   void equivalence(ValidationResults& r);
+ public:  // named by the functions of ValidationSuite.cpp
+  struct EquivalenceSpec;
+
+ private:
+  void equivalenceE0(ValidationResults& r);
+  bool equivalenceCases(ValidationResults& r, const std::vector<EquivalenceSpec>& specs);
+  void convergence(ValidationResults& r, const std::vector<EquivalenceSpec>& specs);
   void perCart(ValidationResults& r);
+ public:  // named by the functions of ValidationPerCart.cpp
+  struct PerCartSpec;
+  struct PerCartOrders;
+
+ private:
+  ComparisonCase perCartCase(const PerCartSpec& s, const std::vector<std::string>& base);
+  PerCartOrders perCartOrders(const ModelComparison& c, double t_end, const PerCartSpec& s,
+                              const std::vector<std::string>& base) const;
   void differences(ValidationResults& r);
+  // Crank revolutions of each run of section (2) (D6-D8: the scene's own t_end).
+  double differenceRevolutions() const { return o_.quick ? 3 : 10; }
+  ComparisonCase distributedRodsDifference(ValidationResults& r);
+  ComparisonCase frictionDifference(ValidationResults& r);
+  ComparisonCase truncatedKinematicsDifference();
+  ComparisonCase baranovDifference();
   // A shipped scene as it is in both models, with the claim that explains their difference.
   ComparisonCase shippedSceneDifference(const char* label, const char* file, const char* description,
                                         const std::vector<ComparisonCase>& earlier);
+  void papersSection(ValidationResults& r);
+  ItemContext itemContext() const;
   void papers(ValidationResults& r);
+  // One paper's sweep each, described and run into `p`; false when interrupted (p incomplete).
+  bool loveikin2007Sweep(PaperSweep& p);
+  bool energyBalancedSweep(PaperSweep& p);
+  bool fittedBaranovStep(PaperSweep& p);
+  bool loveikin2018Sweep(PaperSweep& p);
+  bool loveikin2018Points(PaperSweep& p);
+  bool otherReadingPoints(PaperSweep& p);
   void sensitivity(ValidationResults& r);
+  // The point of a paper where the sensitivity table changes one input at a time.
+  struct SensitivityPoint {
+    std::string paper, point, file;
+    std::vector<std::string> base;  // --set values of the point as the scene ships
+    std::string metric;
+    double published;
+    double RunMetrics::*field;
+  };
+  void sensitivityRow(ValidationResults& r, const SensitivityPoint& at, const std::string& change_label,
+                      const std::vector<std::string>& change) const;
+  void sensitivityLoveikin2007(ValidationResults& r) const;
+  void sensitivityEnergyBalanced(ValidationResults& r) const;
+  void sensitivityLoveikin2018(ValidationResults& r) const;
   void findings(ValidationResults& r);
   void analytic(ValidationResults& r);
 

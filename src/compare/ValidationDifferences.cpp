@@ -16,56 +16,88 @@
 
 namespace rollerdyn::validation::detail {
 
-// Largest |friction| mismatch and the lag of the multibody friction behind the reactions, from the tables.
-void frictionMeasurements(const Scene& sc, const ModelComparison& c, ComparisonCase& cc) {
+namespace {
+
+// The friction of the two models compared on the multibody rows: largest ||friction|| and
+// |N_front|+|N_rear| differences, their scales, and the lag of the multibody friction behind
+// f·(|N_front| + |N_rear|) of the same instant.
+struct FrictionGap {
+  double fr_diff = 0, fr_max = 0, n_diff = 0, n_max = 0, lag = 0;  // [N]
+};
+
+// Cart j's friction and guide normals of both models on the multibody reaction rows (the reduced
+// model's interpolated onto them), and its velocity.
+struct CartFrictionColumns {
+  std::vector<double> t, fm, fr, n1m, n2m, n1r, n2r, v;
+};
+CartFrictionColumns cartFrictionColumns(const ModelComparison& c, int j) {
   const Table& rm = c.multibody.reactions;
   const Table& rr = c.reduced.reactions;
-  const Table& tm = c.multibody.timeseries;
   const std::vector<double> t = rm.column("t"), tr = rr.column("t");
-  double fr_diff = 0, fr_max = 0, n_diff = 0, n_max = 0, lag = 0;
+  const std::string s = std::to_string(j);
+  return {t,
+          rm.column("friction_" + s),
+          resampleLinear(tr, rr.column("friction_" + s), t),
+          rm.column("N_front_" + s),
+          rm.column("N_rear_" + s),
+          resampleLinear(tr, rr.column("N_front_" + s), t),
+          resampleLinear(tr, rr.column("N_rear_" + s), t),
+          c.multibody.timeseries.column("v_cart_" + s)};
+}
+
+// Adds cart j's rows (1-based, as in the column names) to the gap.
+void addCartFrictionGap(const Scene& sc, const ModelComparison& c, int j, FrictionGap& gap) {
+  const CartFrictionColumns x = cartFrictionColumns(c, j);
+  const auto &t = x.t, &fm = x.fm, &fr = x.fr, &n1m = x.n1m, &n2m = x.n2m, &n1r = x.n1r, &n2r = x.n2r, &v = x.v;
   const double f = sc.loads.guide_friction, vs = sc.loads.velocity_smoothing;
-  for (int j = 1; j <= sc.carts.count; ++j) {
-    const std::string s = std::to_string(j);
-    const auto fm = rm.column("friction_" + s);
-    const auto fr = resampleLinear(tr, rr.column("friction_" + s), t);
-    const auto n1m = rm.column("N_front_" + s), n2m = rm.column("N_rear_" + s);
-    const auto n1r = resampleLinear(tr, rr.column("N_front_" + s), t);
-    const auto n2r = resampleLinear(tr, rr.column("N_rear_" + s), t);
-    const auto v = tm.column("v_cart_" + s);
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      if (!std::isfinite(fr[i])) continue;
-      // Magnitudes: near a reversal the two runs' carts change direction at slightly different
-      // times (their crank angles drift apart by the motion difference), which flips the sign
-      // of one friction force before the other; that is timing, not friction physics.
-      fr_diff = std::max(fr_diff, std::abs(std::abs(fm[i]) - std::abs(fr[i])));
-      fr_max = std::max(fr_max, std::abs(fm[i]));
-      const double nm = std::abs(n1m[i]) + std::abs(n2m[i]), nr = std::abs(n1r[i]) + std::abs(n2r[i]);
-      n_diff = std::max(n_diff, std::abs(nm - nr));
-      n_max = std::max(n_max, nm);
-      // Applied (lagged) friction against f·(|N1| + |N2|) of this very step's reactions.
-      if (i < v.size() && std::abs(v[i]) > 100 * vs)
-        lag = std::max(lag, std::abs(std::abs(fm[i]) - f * nm * std::abs(std::tanh(v[i] / vs))));
-    }
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!std::isfinite(fr[i])) continue;
+    // Magnitudes: near a reversal the two runs' carts change direction at slightly different
+    // times (their crank angles drift apart by the motion difference), which flips the sign
+    // of one friction force before the other; that is timing, not friction physics.
+    gap.fr_diff = std::max(gap.fr_diff, std::abs(std::abs(fm[i]) - std::abs(fr[i])));
+    gap.fr_max = std::max(gap.fr_max, std::abs(fm[i]));
+    const double nm = std::abs(n1m[i]) + std::abs(n2m[i]), nr = std::abs(n1r[i]) + std::abs(n2r[i]);
+    gap.n_diff = std::max(gap.n_diff, std::abs(nm - nr));
+    gap.n_max = std::max(gap.n_max, nm);
+    // Applied (lagged) friction against f·(|N1| + |N2|) of this very step's reactions.
+    if (i < v.size() && std::abs(v[i]) > 100 * vs)
+      gap.lag = std::max(gap.lag, std::abs(std::abs(fm[i]) - f * nm * std::abs(std::tanh(v[i] / vs))));
   }
-  cc.measured.push_back({"max ||friction| difference| [N]", g(fr_diff) + " (max |friction| " + g(fr_max) + " N)"});
-  cc.measured.push_back({"max ||N_front|+|N_rear|| difference [N]", g(n_diff) + " (max " + g(n_max) + " N)"});
-  cc.measured.push_back({"lag of the multibody friction behind f*(|N_front|+|N_rear|) [N]", g(lag)});
+}
+
+// Why the friction differs, in words with the numbers.
+std::string frictionExplanation(const Scene& sc, const FrictionGap& gap) {
+  const double f = sc.loads.guide_friction;
+  return "The guide friction f·(|N_front| + |N_rear|) (f: friction coefficient, N: guide normal forces) differs because "
+         "the normal forces differ: up to " + g(gap.n_diff) + " N between dynamic and quasi-static reactions, i.e. " +
+         g(f * gap.n_diff) + " N of friction against a measured friction difference of " + g(gap.fr_diff) +
+         " N. " +
+         (sc.loads.guide_normal_force == GuideNormalForce::Lagged
+              ? "The multibody friction follows the reactions with a lag τ_N = " + g(sc.loads.guide_friction_lag) +
+                    " s, which accounts for at most " + g(gap.lag) + " N (applied friction against f·(|N|) of the same instant). "
+              : "The multibody friction uses the reactions of the same instant (loads.guide_friction.normal_force = "
+                "algebraic): applied friction and f·(|N|) of the same instant differ by at most " + g(gap.lag) + " N. ") +
+         "Claim: the motion difference comes from the reaction difference (f·ΔN within a factor 2 of the friction "
+         "difference), not from the lag (under a fifth of it).";
+}
+
+}  // namespace
+
+// Largest |friction| mismatch and the lag of the multibody friction behind the reactions, from the tables.
+void frictionMeasurements(const Scene& sc, const ModelComparison& c, ComparisonCase& cc) {
+  FrictionGap gap;
+  for (int j = 1; j <= sc.carts.count; ++j) addCartFrictionGap(sc, c, j, gap);
+  cc.measured.push_back({"max ||friction| difference| [N]", g(gap.fr_diff) + " (max |friction| " + g(gap.fr_max) + " N)"});
+  cc.measured.push_back({"max ||N_front|+|N_rear|| difference [N]", g(gap.n_diff) + " (max " + g(gap.n_max) + " N)"});
+  cc.measured.push_back({"lag of the multibody friction behind f*(|N_front|+|N_rear|) [N]", g(gap.lag)});
   // Claim: the friction difference is the normal-force difference times f (within a factor 2),
   // and the lag accounts for less than a fifth of it.
-  const bool holds = fr_diff > 0 && f * n_diff > 0.5 * fr_diff && f * n_diff < 2.0 * fr_diff && lag < 0.2 * fr_diff;
+  const double f = sc.loads.guide_friction;
+  const bool holds = gap.fr_diff > 0 && f * gap.n_diff > 0.5 * gap.fr_diff && f * gap.n_diff < 2.0 * gap.fr_diff &&
+                     gap.lag < 0.2 * gap.fr_diff;
   cc.verdict = holds ? Finding::Verdict::Holds : Finding::Verdict::Fails;
-  cc.explanation =
-      "The guide friction f·(|N_front| + |N_rear|) (f: friction coefficient, N: guide normal forces) differs because "
-      "the normal forces differ: up to " + g(n_diff) + " N between dynamic and quasi-static reactions, i.e. " +
-      g(f * n_diff) + " N of friction against a measured friction difference of " + g(fr_diff) +
-      " N. " +
-      (sc.loads.guide_normal_force == GuideNormalForce::Lagged
-           ? "The multibody friction follows the reactions with a lag τ_N = " + g(sc.loads.guide_friction_lag) +
-                 " s, which accounts for at most " + g(lag) + " N (applied friction against f·(|N|) of the same instant). "
-           : "The multibody friction uses the reactions of the same instant (loads.guide_friction.normal_force = "
-             "algebraic): applied friction and f·(|N|) of the same instant differ by at most " + g(lag) + " N. ") +
-      "Claim: the motion difference comes from the reaction difference (f·ΔN within a factor 2 of the friction "
-      "difference), not from the lag (under a fifth of it).";
+  cc.explanation = frictionExplanation(sc, gap);
 }
 
 namespace {
@@ -213,52 +245,15 @@ ComparisonCase Suite::shippedSceneDifference(const char* label, const char* file
 }
 
 void Suite::differences(ValidationResults& r) {
-  const double revs = o_.quick ? 3 : 10;
-  // D1: distributed rods, no friction.
-  ModelComparison c1;
-  ComparisonCase d1 = compareCase("D1", "distributed rods, no guide friction (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml",
-                                  {"loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, revs, &c1);
-  if (d1.complete) {
-    explainDistributedRods(load("balanced-4cart.yaml", {}), c1, d1);
-    r.distributed_example = c1.table;
-  }
-  r.differences.push_back(d1);
+  r.differences.push_back(distributedRodsDifference(r));
   // D2: split rods, reactions only (E1 of the equivalence section, no new run).
   if (!r.equivalence.empty() && r.equivalence.front().complete) r.differences.push_back(splitRodsReactions(r.equivalence.front()));
   if (interrupted()) return;
-  // D3: guide friction from dynamic reactions.
-  ModelComparison c3;
-  ComparisonCase d3 = compareCase("D3", "guide friction f = 0.008, split rods (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml",
-                                  {"rods.model=split", "simulation.accuracy=1e-9"}, revs, &c3);
-  if (d3.complete) {
-    frictionMeasurements(load("balanced-4cart.yaml", {}), c3, d3);
-    r.friction_example = c3.table;
-  }
-  r.differences.push_back(d3);
+  r.differences.push_back(frictionDifference(r));
   if (interrupted()) return;
-  // D4: truncated kinematics.
-  ModelComparison c4;
-  ComparisonCase d4 = compareCase("D4", "truncated series kinematics in reduced (Loveikin, Pochka, Romasevych (2018) eq. (52)-(57)), split rods, no friction",
-                                  "balanced-4cart.yaml",
-                                  {"rods.model=split", "loads.guide_friction.coefficient=0",
-                                   "reduced.kinematics=truncated", "simulation.accuracy=1e-9"},
-                                  revs, &c4);
-  if (d4.complete) explainTruncatedKinematics(load("balanced-4cart.yaml", {}), c4, d4);
-  r.differences.push_back(d4);
+  r.differences.push_back(truncatedKinematicsDifference());
   if (interrupted()) return;
-  // D5: the papers' Baranov scheme (rigid drive).
-  ModelComparison c5;
-  const std::vector<std::string> sets = {"rods.model=split", "reduced.integrator=baranov",
-                                         "reduced.baranov_step_deg=1", "simulation.accuracy=1e-9"};
-  ComparisonCase d5 = compareCase("D5", "the papers' Baranov scheme, 1° step, in the reduced model; 2 carts opposite, rigid drive",
-                                  "recuperative-2cart.yaml", sets, revs, &c5);
-  if (d5.complete) {
-    std::vector<std::string> fine = sets;
-    fine[2] = "reduced.baranov_step_deg=0.25";
-    fine.push_back("simulation.t_end=" + exact(d5.t_end));
-    explainBaranovOrder(load("recuperative-2cart.yaml", fine), c5, d5);
-  }
-  r.differences.push_back(d5);
+  r.differences.push_back(baranovDifference());
   // D6-D8: the shipped scenes as they are.
   struct Spec { const char* label; const char* file; const char* description; };
   const Spec shipped[] = {{"D6", "balanced-4cart.yaml", "Loveikin, Pochka, Romasevych (2018) scene as shipped (distributed rods, friction 0.008)"},
@@ -269,6 +264,58 @@ void Suite::differences(ValidationResults& r) {
     if (o_.quick && std::string(s.label) != "D6") continue;
     r.differences.push_back(shippedSceneDifference(s.label, s.file, s.description, r.differences));
   }
+}
+
+// D1: distributed rods, no friction.
+ComparisonCase Suite::distributedRodsDifference(ValidationResults& r) {
+  ModelComparison c1;
+  ComparisonCase d1 = compareCase("D1", "distributed rods, no guide friction (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml",
+                                  {"loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, differenceRevolutions(), &c1);
+  if (d1.complete) {
+    explainDistributedRods(load("balanced-4cart.yaml", {}), c1, d1);
+    r.distributed_example = c1.table;
+  }
+  return d1;
+}
+
+// D3: guide friction from dynamic reactions.
+ComparisonCase Suite::frictionDifference(ValidationResults& r) {
+  ModelComparison c3;
+  ComparisonCase d3 = compareCase("D3", "guide friction f = 0.008, split rods (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml",
+                                  {"rods.model=split", "simulation.accuracy=1e-9"}, differenceRevolutions(), &c3);
+  if (d3.complete) {
+    frictionMeasurements(load("balanced-4cart.yaml", {}), c3, d3);
+    r.friction_example = c3.table;
+  }
+  return d3;
+}
+
+// D4: truncated kinematics.
+ComparisonCase Suite::truncatedKinematicsDifference() {
+  ModelComparison c4;
+  ComparisonCase d4 = compareCase("D4", "truncated series kinematics in reduced (Loveikin, Pochka, Romasevych (2018) eq. (52)-(57)), split rods, no friction",
+                                  "balanced-4cart.yaml",
+                                  {"rods.model=split", "loads.guide_friction.coefficient=0",
+                                   "reduced.kinematics=truncated", "simulation.accuracy=1e-9"},
+                                  differenceRevolutions(), &c4);
+  if (d4.complete) explainTruncatedKinematics(load("balanced-4cart.yaml", {}), c4, d4);
+  return d4;
+}
+
+// D5: the papers' Baranov scheme (rigid drive), its order measured against a finer step.
+ComparisonCase Suite::baranovDifference() {
+  ModelComparison c5;
+  const std::vector<std::string> sets = {"rods.model=split", "reduced.integrator=baranov",
+                                         "reduced.baranov_step_deg=1", "simulation.accuracy=1e-9"};
+  ComparisonCase d5 = compareCase("D5", "the papers' Baranov scheme, 1° step, in the reduced model; 2 carts opposite, rigid drive",
+                                  "recuperative-2cart.yaml", sets, differenceRevolutions(), &c5);
+  if (d5.complete) {
+    std::vector<std::string> fine = sets;
+    fine[2] = "reduced.baranov_step_deg=0.25";
+    fine.push_back("simulation.t_end=" + exact(d5.t_end));
+    explainBaranovOrder(load("recuperative-2cart.yaml", fine), c5, d5);
+  }
+  return d5;
 }
 
 }  // namespace rollerdyn::validation::detail

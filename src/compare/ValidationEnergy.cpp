@@ -23,6 +23,21 @@ namespace {
 constexpr double kAccuracy = 1e-9;
 constexpr double kRelativeResidual = 1e-6;  // file comment
 
+// One model's run of one scene: its work integrals close, a claim.
+void energyClaim(ValidationSection& s, const ItemContext& ctx, const char* file, const std::vector<std::string>& sets,
+                 const Scene& sc, bool multibody) {
+  const RunResult r = runModel(sc, multibody ? "multibody" : "reduced");
+  const EnergyAudit& e = r.energy;
+  const double rel = e.residualRelative();
+  s.claim(r.stats.complete && std::abs(rel) <= kRelativeResidual,
+          std::string(multibody ? "multibody model" : "reduced model") + ", `" + ctx.command("simulate", file, sets) +
+              "`: W_m = " + significant(e.motor_work, 5) + " J, D_k = " + significant(e.damping_dissipation, 4) + " J, D_f = " +
+              significant(e.friction_dissipation, 4) + " J, W_l = " + significant(e.load_work, 5) + " J, ΔT = " +
+              significant(e.kinetic_final - e.kinetic_initial, 4) + " J, ΔV = " + significant(e.potential_final - e.potential_initial, 4) +
+              " J; residual " + significant(e.residual(), 2) + " J = " + significant(rel, 2) + "·E (at most " + significant(kRelativeResidual) + ")" +
+              (r.stats.complete ? "" : "; the run ended early: " + r.stats.status) + ".");
+}
+
 }  // namespace
 
 ValidationSection energyBalanceChecks(const ItemContext& ctx) {
@@ -38,16 +53,7 @@ ValidationSection energyBalanceChecks(const ItemContext& ctx) {
     const Scene sc = ctx.load(file, sets);
     for (const bool multibody : {true, false}) {
       if (ctx.interrupted()) return s;
-      const RunResult r = runModel(sc, multibody ? "multibody" : "reduced");
-      const EnergyAudit& e = r.energy;
-      const double rel = e.residualRelative();
-      s.claim(r.stats.complete && std::abs(rel) <= kRelativeResidual,
-              std::string(multibody ? "multibody model" : "reduced model") + ", `" + ctx.command("simulate", file, sets) +
-                  "`: W_m = " + significant(e.motor_work, 5) + " J, D_k = " + significant(e.damping_dissipation, 4) + " J, D_f = " +
-                  significant(e.friction_dissipation, 4) + " J, W_l = " + significant(e.load_work, 5) + " J, ΔT = " +
-                  significant(e.kinetic_final - e.kinetic_initial, 4) + " J, ΔV = " + significant(e.potential_final - e.potential_initial, 4) +
-                  " J; residual " + significant(e.residual(), 2) + " J = " + significant(rel, 2) + "·E (at most " + significant(kRelativeResidual) + ")" +
-                  (r.stats.complete ? "" : "; the run ended early: " + r.stats.status) + ".");
+      energyClaim(s, ctx, file, sets, sc, multibody);
     }
   }
   return s;

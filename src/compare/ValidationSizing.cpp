@@ -29,6 +29,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/Summary.h"
+#include "compare/SizingByHand.h"
 #include "compare/ValidationItems.h"
 #include "io/AtomicFile.h"
 #include "io/CsvTable.h"
@@ -40,25 +41,8 @@
 namespace rollerdyn::validation {
 namespace {
 
-using nlohmann::json;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-constexpr double kRelative = 1e-9;    // file comment
+using namespace sizing_by_hand;
 constexpr double kTimeSeconds = 1e-8; // window ends [s], file comment
-
-std::string g(double v, int prec = 3) { return significantOr(v, prec, "n/a"); }
-
-// A CSV as rollerdyn writes it (header of `name[unit]` cells, rows of numbers), read column-wise.
-struct Csv {
-  std::vector<std::string> names;
-  std::vector<std::vector<double>> columns;
-  bool has(const std::string& n) const { return std::find(names.begin(), names.end(), n) != names.end(); }
-  const std::vector<double>& col(const std::string& n) const {
-    const auto it = std::find(names.begin(), names.end(), n);
-    if (it == names.end()) throw std::runtime_error("CSV has no column " + n);
-    return columns[static_cast<std::size_t>(it - names.begin())];
-  }
-};
 
 // The tool's one reader (io/CsvTable.h), its rows turned into columns.
 Csv columnsOf(const std::string& text, const std::string& file) {
@@ -71,15 +55,6 @@ Csv columnsOf(const std::string& text, const std::string& file) {
   return c;
 }
 
-// The last `n` whole crank revolutions: revolution k runs from the first time φ reaches
-// φ_0 + 2πk to the first time it reaches φ_0 + 2π(k+1) (linear between rows); the window's rows
-// are those with t_begin <= t <= t_end.
-struct Window {
-  double t_begin = kNaN, t_end = kNaN;
-  int revolutions = 0;
-  std::size_t b = 0, e = 0;      // rows [b, e)
-  std::vector<double> crossings; // t of φ_0 + 2πk, k = 0, 1, ... (the run's whole revolutions)
-};
 Window lastRevolutions(const std::vector<double>& t, const std::vector<double>& phi, int n) {
   std::vector<double> cross{t.front()};
   for (std::size_t i = 1; i < t.size(); ++i) {
@@ -102,67 +77,6 @@ Window lastRevolutions(const std::vector<double>& t, const std::vector<double>& 
   return w;
 }
 
-// ∫ y dt over rows [b, e) by trapezoids.
-double integral(const std::vector<double>& t, const std::vector<double>& y, std::size_t b, std::size_t e) {
-  double s = 0;
-  for (std::size_t i = b + 1; i < e; ++i) s += 0.5 * (y[i] + y[i - 1]) * (t[i] - t[i - 1]);
-  return s;
-}
-
-// Relative differences of reported figures from the hand-computed ones, the largest kept.
-struct Comparison {
-  double worst = 0;
-  std::string worst_name;
-  int count = 0;
-  std::vector<std::string> missing;
-  // |hand - reported| / scale; `scale`: the size the figure is judged against (its own |value|
-  // unless that can be 0, e.g. the mean of a swinging force: then its peak).
-  void add(const std::string& name, double hand, const json& reported, double scale) {
-    ++count;
-    if (!reported.is_number() || !std::isfinite(hand)) {
-      if (std::isfinite(hand) || reported.is_number()) missing.push_back(name);
-      return;
-    }
-    const double d = std::abs(hand - reported.get<double>()) / std::max(scale, 1e-300);
-    if (d >= worst) {
-      worst = d;
-      worst_name = name;
-    }
-  }
-  void add(const std::string& name, double hand, const json& reported) { add(name, hand, reported, std::abs(hand)); }
-  bool holds() const { return count > 0 && missing.empty() && worst <= kRelative; }
-  std::string sentence() const {
-    std::string s = std::to_string(count) + " figures, largest relative difference " + g(worst, 2) +
-                    (worst_name.empty() ? "" : " (" + worst_name + ")") + ", at most " + g(kRelative) + " required";
-    if (!missing.empty()) {
-      s += "; null in summary.json but computable by hand, or the reverse:";
-      for (const auto& m : missing) s += " " + m;
-    }
-    return s;
-  }
-};
-
-const json& at(const json& j, std::initializer_list<const char*> path) {
-  static const json null_json;
-  const json* p = &j;
-  for (const char* k : path) {
-    if (!p->is_object() || !p->contains(k)) return null_json;
-    p = &p->at(k);
-  }
-  return *p;
-}
-
-// One run's tables as a user gets them, read once, its summary.json, and the steady window found
-// by hand on its rows.
-struct RunFiles {
-  Csv ts, ex, rx;        // timeseries.csv, crank_speed_extrema.csv, reactions.csv (empty without)
-  const json& summary;
-  const json& sz;        // summary.json's sizing
-  Window win;
-  std::size_t b = 0, e = 0;  // the window's rows [b, e)
-  double span = 0;           // the time its rows span [s]
-};
-
 // The crank speed over the steady window, computed by hand.
 struct CrankSpeedByHand {
   double revolutions_in_rows = 0;  // (φ at its last row - φ at its first)/2π
@@ -172,30 +86,35 @@ struct CrankSpeedByHand {
 
 // The window and the crank-speed metrics (Loveikin and Pochka (2007), eq. (12)-(14)); the mean
 // speed of whole revolutions in closed form, 2πN/(t_end - t_begin).
-CrankSpeedByHand checkWindow(ValidationSection& s, const std::string& who, const RunFiles& f) {
+CrankSpeedByHand crankSpeedByHand(const RunFiles& f) {
   const std::vector<double>& phi = f.ts.col("phi_crank");
   const std::vector<double>& w = f.ts.col("omega_crank");
   const Window& win = f.win;
-  const std::size_t b = f.b, e = f.e;
-  const double dtb = std::abs(win.t_begin - at(f.sz, {"window", "t_begin"}).get<double>());
-  const double dte = std::abs(win.t_end - at(f.sz, {"window", "t_end"}).get<double>());
   CrankSpeedByHand c;
-  c.revolutions_in_rows = (phi[e - 1] - phi[b]) / kTwoPi;
-  Comparison cw;
-  cw.add("revolutions in the window's rows", c.revolutions_in_rows, at(f.sz, {"window", "revolutions"}));
+  c.revolutions_in_rows = (phi[f.e - 1] - phi[f.b]) / kTwoPi;
   c.mean = kTwoPi * win.revolutions / (win.t_end - win.t_begin);
   // ω's extremes: the window's rows and the extrema of crank_speed_extrema.csv inside the window.
-  const auto [row_lo, row_hi] = std::minmax_element(w.begin() + long(b), w.begin() + long(e));
+  const auto [row_lo, row_hi] = std::minmax_element(w.begin() + long(f.b), w.begin() + long(f.e));
   c.lowest = *row_lo, c.highest = *row_hi;
   for (std::size_t i = 0; i < f.ex.col("t").size(); ++i)
     if (f.ex.col("t")[i] >= win.t_begin && f.ex.col("t")[i] <= win.t_end) {
       c.lowest = std::min(c.lowest, f.ex.col("omega_crank")[i]);
       c.highest = std::max(c.highest, f.ex.col("omega_crank")[i]);
     }
-  double eps_max = 0;
-  for (std::size_t i = b; i < e; ++i) eps_max = std::max(eps_max, std::abs(f.ts.col("eps_crank")[i]));
   c.delta = (c.highest - c.lowest) / c.mean;
+  return c;
+}
+
+CrankSpeedByHand checkWindow(ValidationSection& s, const std::string& who, const RunFiles& f) {
+  const Window& win = f.win;
+  const double dtb = std::abs(win.t_begin - at(f.sz, {"window", "t_begin"}).get<double>());
+  const double dte = std::abs(win.t_end - at(f.sz, {"window", "t_end"}).get<double>());
+  const CrankSpeedByHand c = crankSpeedByHand(f);
+  double eps_max = 0;
+  for (std::size_t i = f.b; i < f.e; ++i) eps_max = std::max(eps_max, std::abs(f.ts.col("eps_crank")[i]));
   const double H = eps_max / (c.mean * c.mean);
+  Comparison cw;
+  cw.add("revolutions in the window's rows", c.revolutions_in_rows, at(f.sz, {"window", "revolutions"}));
   cw.add("ω_mean = 2πN/Δt", c.mean, at(f.summary, {"omega_crank", "mean"}));
   cw.add("ω_min", c.lowest, at(f.summary, {"omega_crank", "min"}));
   cw.add("ω_max", c.highest, at(f.summary, {"omega_crank", "max"}));
@@ -212,8 +131,15 @@ CrankSpeedByHand checkWindow(ValidationSection& s, const std::string& who, const
 
 // Motor (DriveSizing.h notation): rotor torque M = motor_torque/(u·η), rotor speed ω_r =
 // u·omega_motor, slip s = 1 - ω_r/ω0, energy per crank revolution ∫M·ω_r dt / revolutions.
-void checkMotor(ValidationSection& s, const Scene& sc, const std::string& who, const RunFiles& f,
-                const CrankSpeedByHand& crank) {
+// The motor's figures by hand over the window (DriveSizing.h notation).
+struct MotorByHand {
+  double mean = 0, rms = 0, peak = 0;  // M at the rotor [N·m]
+  double M_n = 0;                      // M_kr/λ [N·m]
+  double energy = 0;                   // ∫M·ω_r dt per crank revolution [J]
+  double slip_lo = 0, slip_hi = 0;
+};
+
+MotorByHand motorByHand(const Scene& sc, const RunFiles& f, const CrankSpeedByHand& crank) {
   const std::vector<double>& t = f.ts.col("t");
   const std::size_t b = f.b, e = f.e;
   const double u = sc.reducer.ratio, eta = sc.reducer.efficiency, w0 = sc.motor.omega_sync;
@@ -225,28 +151,36 @@ void checkMotor(ValidationSection& s, const Scene& sc, const std::string& who, c
     P.push_back(m * wr);
     slip.push_back(1.0 - wr / w0);
   }
-  double peak = 0;
-  for (std::size_t i = b; i < e; ++i) peak = std::max(peak, std::abs(M[i]));
-  const double mean = integral(t, M, b, e) / f.span, rms = std::sqrt(integral(t, M2, b, e) / f.span);
-  const double M_n = sc.motor.breakdown_torque / sc.sizing.motor_overload_ratio;
-  const double energy = integral(t, P, b, e) / crank.revolutions_in_rows;
+  MotorByHand x;
+  for (std::size_t i = b; i < e; ++i) x.peak = std::max(x.peak, std::abs(M[i]));
+  x.mean = integral(t, M, b, e) / f.span, x.rms = std::sqrt(integral(t, M2, b, e) / f.span);
+  x.M_n = sc.motor.breakdown_torque / sc.sizing.motor_overload_ratio;
+  x.energy = integral(t, P, b, e) / crank.revolutions_in_rows;
   const auto [slo, shi] = std::minmax_element(slip.begin() + long(b), slip.begin() + long(e));
+  x.slip_lo = *slo, x.slip_hi = *shi;
+  return x;
+}
+
+void checkMotor(ValidationSection& s, const Scene& sc, const std::string& who, const RunFiles& f,
+                const CrankSpeedByHand& crank) {
+  const double u = sc.reducer.ratio, eta = sc.reducer.efficiency;
+  const MotorByHand x = motorByHand(sc, f, crank);
   const json& m = at(f.sz, {"motor"});
   Comparison c;
-  c.add("mean M", mean, at(m, {"torque_shaft", "mean"}), peak);
-  c.add("RMS M", rms, at(m, {"torque_shaft", "rms"}));
-  c.add("peak |M|", peak, at(m, {"torque_shaft", "peak"}));
-  c.add("RMS at the crank", rms * u * eta, at(m, {"torque_crank", "rms"}));
-  c.add("M_n = M_kr/λ", M_n, at(m, {"nominal_torque"}));
-  c.add("RMS/M_n", rms / M_n, at(m, {"rms_over_nominal"}));
-  c.add("peak/M_kr", peak / sc.motor.breakdown_torque, at(m, {"peak_over_breakdown"}));
-  c.add("energy per revolution", energy, at(m, {"energy_per_revolution"}));
-  c.add("slip min", *slo, at(m, {"slip", "min"}), 1.0);  // s = 1 - ω_r/ω0: operands of size 1
-  c.add("slip max", *shi, at(m, {"slip", "max"}), 1.0);
+  c.add("mean M", x.mean, at(m, {"torque_shaft", "mean"}), x.peak);
+  c.add("RMS M", x.rms, at(m, {"torque_shaft", "rms"}));
+  c.add("peak |M|", x.peak, at(m, {"torque_shaft", "peak"}));
+  c.add("RMS at the crank", x.rms * u * eta, at(m, {"torque_crank", "rms"}));
+  c.add("M_n = M_kr/λ", x.M_n, at(m, {"nominal_torque"}));
+  c.add("RMS/M_n", x.rms / x.M_n, at(m, {"rms_over_nominal"}));
+  c.add("peak/M_kr", x.peak / sc.motor.breakdown_torque, at(m, {"peak_over_breakdown"}));
+  c.add("energy per revolution", x.energy, at(m, {"energy_per_revolution"}));
+  c.add("slip min", x.slip_lo, at(m, {"slip", "min"}), 1.0);  // s = 1 - ω_r/ω0: operands of size 1
+  c.add("slip max", x.slip_hi, at(m, {"slip", "max"}), 1.0);
   s.claim(c.holds(), who + ": motor at the rotor, M = motor_torque/(u·η) (u = " + g(u) + ", η = " + g(eta) +
-                         "): mean " + g(mean, 4) + ", RMS " + g(rms, 4) + ", peak " + g(peak, 4) + " N·m; RMS/M_n = " +
-                         g(rms / M_n, 3) + " with M_n = M_kr/λ = " + g(M_n, 4) + " N·m; ∫M·ω_r dt per crank "
-                         "revolution " + g(energy, 5) + " J; slip " + g(*slo, 3) + " ... " + g(*shi, 3) + ": " +
+                         "): mean " + g(x.mean, 4) + ", RMS " + g(x.rms, 4) + ", peak " + g(x.peak, 4) + " N·m; RMS/M_n = " +
+                         g(x.rms / x.M_n, 3) + " with M_n = M_kr/λ = " + g(x.M_n, 4) + " N·m; ∫M·ω_r dt per crank "
+                         "revolution " + g(x.energy, 5) + " J; slip " + g(x.slip_lo, 3) + " ... " + g(x.slip_hi, 3) + ": " +
                          c.sentence() + ".");
 }
 
@@ -290,6 +224,27 @@ std::pair<double, double> kineticEnergySwing(const RunFiles& f, const std::vecto
   return {dT, T_max};
 }
 
+// The flywheel to add for the target δ* by both methods, compared; returns the one proposed.
+double addedFlywheel(Comparison& k, const json& fw, double J, const CrankSpeedByHand& crank, double target) {
+  const double added_energy = target > 0 ? std::max(0.0, J * (crank.delta / target - 1.0)) : kNaN;
+  // ΔJ inherits δ's operands: judged against J·(ω_max/ω_mean)/δ*.
+  k.add("ΔJ = J·(δ/δ* - 1)", added_energy, at(fw, {"added_inertia_energy_method"}),
+        J * (crank.highest / crank.mean) / target);
+  // The excess-work method: ΔA (from the load law at constant speed, checked on its own in the
+  // tests against ½ω²(J_max - J_min) of a load-free machine) over δ*·ω̄², ω̄ from the rows here.
+  const json& dA = at(fw, {"excess_work"});
+  if (!(dA.is_number() && target > 0)) {
+    k.add("ΔJ (no ΔA: energy method)", added_energy, at(fw, {"added_inertia_crankshaft"}),
+          J * (crank.highest / crank.mean) / target);
+    return added_energy;
+  }
+  const double J_req = dA.get<double>() / (target * crank.mean * crank.mean);
+  const double added = std::max(std::max(0.0, J_req - J), added_energy);
+  k.add("J* = ΔA/(δ*·ω̄²)", J_req, at(fw, {"inertia_required"}));
+  k.add("ΔJ = max(J* - J, J·(δ/δ* - 1))", added, at(fw, {"added_inertia_crankshaft"}), J_req);
+  return added;
+}
+
 // Coupling torque and the flywheel's two estimates: ΔT per revolution, J = time mean of 2T/ω²,
 // ΔJ = J·(δ/δ* - 1) for the target δ* (energy method) and ΔJ = ΔA/(δ*·ω̄²) - J (excess work, the
 // proposal when ΔA is known).
@@ -312,132 +267,11 @@ void checkCouplingAndFlywheel(ValidationSection& s, const Scene& sc, const std::
   k.add("ΔT per revolution", dT, at(fw, {"kinetic_energy_swing"}), T_max);  // a difference of T values
   k.add("J = mean 2T/ω²", J, at(fw, {"inertia_effective"}));
   const double target = sc.sizing.target_delta;
-  const double added_energy = target > 0 ? std::max(0.0, J * (crank.delta / target - 1.0)) : kNaN;
-  // ΔJ inherits δ's operands: judged against J·(ω_max/ω_mean)/δ*.
-  k.add("ΔJ = J·(δ/δ* - 1)", added_energy, at(fw, {"added_inertia_energy_method"}),
-        J * (crank.highest / crank.mean) / target);
-  // The excess-work method: ΔA (from the load law at constant speed, checked on its own in the
-  // tests against ½ω²(J_max - J_min) of a load-free machine) over δ*·ω̄², ω̄ from the rows here.
-  const json& dA = at(fw, {"excess_work"});
-  double added = added_energy;
-  if (dA.is_number() && target > 0) {
-    const double J_req = dA.get<double>() / (target * crank.mean * crank.mean);
-    added = std::max(std::max(0.0, J_req - J), added_energy);
-    k.add("J* = ΔA/(δ*·ω̄²)", J_req, at(fw, {"inertia_required"}));
-    k.add("ΔJ = max(J* - J, J·(δ/δ* - 1))", added, at(fw, {"added_inertia_crankshaft"}), J_req);
-  } else {
-    k.add("ΔJ (no ΔA: energy method)", added_energy, at(fw, {"added_inertia_crankshaft"}),
-          J * (crank.highest / crank.mean) / target);
-  }
+  const double added = addedFlywheel(k, fw, J, crank, target);
   s.claim(k.holds(), who + ": coupling torque mean " + g(integral(t, Mc, b, e) / f.span, 4) + ", peak " + g(cpeak, 4) +
                          ", swing " + g(*chi - *clo, 4) + " N·m; kinetic energy swing per revolution ΔT = " + g(dT, 4) +
                          " J, J = " + g(J, 5) + " kg·m², flywheel to add for δ* = " + g(target) + ": " + g(added, 4) +
                          " kg·m²: " + k.sentence() + ".");
-}
-
-// A joint's force F and rotation speed n at every row.
-struct JointRows {
-  std::vector<double> F, n;
-};
-
-// |F| and the joint's rotation speed n (JointSizing.h): guide rollers |v|/(d/2), the rod end
-// its swing |β̇| = |ω·dβ/dθ|, the crank pin |ω·(1 + σ·dβ/dθ)| relative to the rod, the main
-// bearing |ω_crank|; dβ/dθ = λ·cos θ/√(1 - λ²·sin² θ) of sin β = λ·sin θ, λ = r/l.
-JointRows jointRows(const Scene& sc, const RunFiles& f, const std::string& k, int j) {
-  const std::vector<double>& t = f.ts.col("t");
-  const std::vector<double>& phi = f.ts.col("phi_crank");
-  const std::vector<double>& w = f.ts.col("omega_crank");
-  const Csv& rx = f.rx;
-  const double d = sc.carts.geometry.d;
-  const std::string cart = std::to_string(j);
-  const double lam = sc.crank.radius / sc.rods.length;
-  const int side = j >= 1 && std::size_t(j - 1) < sc.carts.side.size() && sc.carts.side[j - 1] == -1 ? -1 : 1;
-  auto dbeta = [&](std::size_t i) {
-    const double th = phi[i] + sc.crankPhase(j - 1);
-    return lam * std::cos(th) / std::sqrt(1 - lam * lam * std::sin(th) * std::sin(th));
-  };
-  JointRows r;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (k == "guide_roller_front") r.F.push_back(rx.col("N_front_" + cart)[i]);
-    if (k == "guide_roller_rear") r.F.push_back(rx.col("N_rear_" + cart)[i]);
-    if (k == "rod_end") r.F.push_back(rx.col("F_rod_" + cart)[i]);
-    if (k == "crank_pin") r.F.push_back(std::hypot(rx.col("crankpin_x_" + cart)[i], rx.col("crankpin_y_" + cart)[i]));
-    if (k == "main_bearing") r.F.push_back(std::hypot(rx.col("bearing_x")[i], rx.col("bearing_y")[i]));
-    if (k == "guide_roller_front" || k == "guide_roller_rear")
-      r.n.push_back(d > 0 ? std::abs(f.ts.col("v_cart_" + cart)[i]) / (0.5 * d) : 1.0);
-    else if (k == "rod_end")
-      r.n.push_back(std::abs(w[i] * dbeta(i)));
-    else if (k == "crank_pin")
-      r.n.push_back(std::abs(w[i] * (1 + side * dbeta(i))));
-    else
-      r.n.push_back(std::abs(w[i]));
-  }
-  return r;
-}
-
-// One joint row of summary.json (one cart's joint of one kind) against its figures by hand; the
-// sentence of its life for the claim's examples.
-std::string compareJoint(Comparison& jc, const Scene& sc, const RunFiles& f, const std::string& k, const json& row) {
-  const std::vector<double>& t = f.ts.col("t");
-  const std::vector<double>& w = f.ts.col("omega_crank");
-  const std::size_t b = f.b, e = f.e;
-  const int j = row.at("cart").is_number() ? row.at("cart").get<int>() : 0;
-  const std::string label = k + (j ? " " + std::to_string(j) : "");
-  const JointRows jr = jointRows(sc, f, k, j);
-  const std::vector<double>& F = jr.F;
-  std::vector<double> Fn(t.size()), F3n(t.size());
-  double peak = 0, lo = INFINITY, hi = -INFINITY;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    Fn[i] = F[i];
-    F3n[i] = std::pow(std::abs(F[i]), 3) * jr.n[i];
-  }
-  for (std::size_t i = b; i < e; ++i) {
-    peak = std::max(peak, std::abs(F[i]));
-    lo = std::min(lo, F[i]);
-    hi = std::max(hi, F[i]);
-  }
-  const double n_int = integral(t, jr.n, b, e);
-  const double P = std::cbrt(integral(t, F3n, b, e) / n_int);
-  const double n_mean = n_int / f.span;
-  const double C = row.at("rating").is_number() ? row.at("rating").get<double>() : kNaN;
-  const double L10 = std::pow(C / P, 3.0) * 1e6;
-  // The rod end oscillates through 2γ = 2·asin(λ) once per crank revolution: L10·180°/(2γ)
-  // oscillations at f = (mean |ω_crank|)/2π a second; the others turn at n̄.
-  std::vector<double> w_abs(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i) w_abs[i] = std::abs(w[i]);
-  const double frequency = integral(t, w_abs, b, e) / f.span / kTwoPi;
-  const double lam = sc.crank.radius / sc.rods.length;
-  const double L10h = k == "rod_end" ? L10 * (kTwoPi / 2) / (2 * std::asin(lam)) / (3600.0 * frequency)
-                                     : L10 / (n_mean / kTwoPi * 3600.0);
-  jc.add(label + " mean", integral(t, Fn, b, e) / f.span, row.at("mean"), peak);
-  jc.add(label + " amplitude", 0.5 * (hi - lo), row.at("amplitude"), peak);
-  jc.add(label + " peak", peak, row.at("peak"));
-  jc.add(label + " P", P, row.at("equivalent_load"));
-  jc.add(label + " mean speed", n_mean, row.at("mean_speed"));
-  jc.add(label + " L10", L10, row.at("L10_revolutions"));
-  jc.add(label + " L10h", L10h, row.at("L10_hours"));
-  return label + ": P = " + g(P, 4) + " N, L10 = " + g(L10, 3) + " revolutions";
-}
-
-// Joints: every per-cart row of every joint kind in summary.json against the CSV columns.
-void checkJoints(ValidationSection& s, const Scene& sc, const std::string& who, const RunFiles& f) {
-  if (f.rx.col("t") != f.ts.col("t")) throw std::runtime_error(who + ": reactions.csv and timeseries.csv rows differ in time");
-  Comparison jc;
-  std::string lives;
-  for (const char* kind : {"guide_roller_front", "guide_roller_rear", "rod_end", "crank_pin", "main_bearing"}) {
-    const json& per = at(f.sz, {"joints", kind, "per_cart"});
-    if (!per.is_array()) continue;
-    for (const json& row : per) {
-      const int j = row.at("cart").is_number() ? row.at("cart").get<int>() : 0;
-      const std::string life = compareJoint(jc, sc, f, kind, row);
-      if (std::string(kind) == "main_bearing" || (j == 1 && std::string(kind) == "guide_roller_front"))
-        lives += (lives.empty() ? "" : "; ") + life;
-    }
-  }
-  s.claim(jc.holds(), who + ": joint loads of every cart (mean, amplitude (max - min)/2, peak |F|, the "
-                          "speed-weighted cubic mean P, mean speed n̄, L10 = (C/P)³·10⁶, L10h = L10/(n̄/2π·3600), the rod end's "
-                          "L10h = L10·180°/(2γ)/(3600·f)) "
-                          "from reactions.csv, e.g. " + lives + ": " + jc.sentence() + ".");
 }
 
 // The checks on one run of the scene: its CSV text and its summary.json, as a user gets them.
@@ -457,6 +291,23 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
   if (!f.rx.names.empty()) checkJoints(s, sc, who, f);
 }
 
+// What is recomputed, by which definitions, and the tolerance (`command`: the run's command).
+void sizingIntroduction(std::ostream& text, const std::string& command) {
+  text << "The scene `model/balanced-4cart.yaml` as shipped, run by both models, with bearing ratings C and a "
+          "target δ* given only so that every figure is computed: `"
+       << command
+       << "` (and `--model reduced`). Every figure of the drive sizing (summary.json `sizing`, the table the "
+          "console prints) is recomputed here from the columns of timeseries.csv and reactions.csv as written, "
+          "by the definitions the documentation states, sharing no code with the sizing: the steady window as "
+          "the last N whole crank revolutions (N = simulation.steady_window_revolutions), time means and RMS by "
+          "trapezoids over its rows, the equivalent load P = (∫|F|³·n dt / ∫n dt)^(1/3) (F: joint force, n: the "
+          "joint's rotation speed), L10 = (C/P)³·10⁶ revolutions (ball-bearing exponent 3), L10h = "
+          "L10/(n̄/2π·3600), M_n = M_kr/λ. Tolerance 1e-9 of each figure's scale, the size of the operands "
+          "it is computed from (for the slip 1 − ω_r/ω0: 1; for δ: ω_max/ω_mean; for ΔT: the largest T; for "
+          "a mean of a swinging signal: its peak): the CSV's 12 digits and the summation order account for ~1e-12 of that, a wrong "
+          "definition moves a figure by 1e-3 or more.\n\n";
+}
+
 }  // namespace
 
 ValidationSection driveSizingChecks(const ItemContext& ctx) {
@@ -467,19 +318,7 @@ ValidationSection driveSizingChecks(const ItemContext& ctx) {
                                          "sizing.bearing_rating.rod_end=150000", "sizing.bearing_rating.crank_pin=150000",
                                          "sizing.bearing_rating.main_bearing=400000"};
   const Scene sc = ctx.load("balanced-4cart.yaml", sets);
-  s.text() << "The scene `model/balanced-4cart.yaml` as shipped, run by both models, with bearing ratings C and a "
-              "target δ* given only so that every figure is computed: `"
-           << ctx.command("simulate", "balanced-4cart.yaml", sets)
-           << "` (and `--model reduced`). Every figure of the drive sizing (summary.json `sizing`, the table the "
-              "console prints) is recomputed here from the columns of timeseries.csv and reactions.csv as written, "
-              "by the definitions the documentation states, sharing no code with the sizing: the steady window as "
-              "the last N whole crank revolutions (N = simulation.steady_window_revolutions), time means and RMS by "
-              "trapezoids over its rows, the equivalent load P = (∫|F|³·n dt / ∫n dt)^(1/3) (F: joint force, n: the "
-              "joint's rotation speed), L10 = (C/P)³·10⁶ revolutions (ball-bearing exponent 3), L10h = "
-              "L10/(n̄/2π·3600), M_n = M_kr/λ. Tolerance 1e-9 of each figure's scale, the size of the operands "
-              "it is computed from (for the slip 1 − ω_r/ω0: 1; for δ: ω_max/ω_mean; for ΔT: the largest T; for "
-              "a mean of a swinging signal: its peak): the CSV's 12 digits and the summation order account for ~1e-12 of that, a wrong "
-              "definition moves a figure by 1e-3 or more.\n\n";
+  sizingIntroduction(s.text(), ctx.command("simulate", "balanced-4cart.yaml", sets));
   for (const bool multibody : {true, false}) {
     if (ctx.interrupted()) break;
     const RunResult run = runModel(sc, multibody ? "multibody" : "reduced");

@@ -40,41 +40,40 @@ double Suite::timeForRevolutions(const std::string& file, const std::vector<std:
                            " s (" + run.stats.status + ")");
 }
 
+namespace {
+
+// What a case reports of its comparison: the largest differences, CPU times, whether both runs
+// completed, the modelling topics that differ, and whether it meets the equivalence target.
+void measureCase(const ModelComparison& c, ComparisonCase& cc) {
+  cc.max_rel_omega = c.find("omega_crank")->stats.max_rel_diff;
+  cc.max_rel_torque = c.find("coupling_torque")->stats.max_rel_diff;
+  for (const auto& q : c.quantities)
+    if (q.name != "omega_crank" && q.name != "coupling_torque")
+      cc.max_rel_reactions_quasistatic = std::max(cc.max_rel_reactions_quasistatic, q.stats.max_rel_diff);
+  for (const auto& q : c.kinetostatic)
+    cc.max_rel_reactions_kinetostatic = std::max(cc.max_rel_reactions_kinetostatic, q.stats.max_rel_diff);
+  cc.cpu_multibody = c.cpuMultibody();
+  cc.cpu_reduced = c.cpuReduced();
+  cc.complete = c.multibody.stats.complete && c.reduced.stats.complete;
+  if (!cc.complete)
+    cc.explanation = "run ended early: multibody " + c.multibody.stats.status + "; reduced " + c.reduced.stats.status;
+  cc.motion_equivalent = c.motion_equivalent;
+  for (const auto& d : c.differences)
+    if (!d.numerical) cc.topics.push_back(d.topic);
+  cc.pass = cc.complete && cc.max_rel_omega <= kEquivalenceTarget && cc.max_rel_torque <= kEquivalenceTarget;
+}
+
+}  // namespace
+
 ComparisonCase Suite::compareCase(const std::string& label, const std::string& description,
-                                  const std::string& file, const std::vector<std::string>& sets_in,
+                                  const std::string& file, const std::vector<std::string>& sets,
                                   double revs, ModelComparison* keep) {
   ComparisonCase cc;
   cc.label = label;
   cc.description = description;
   cc.revolutions = revs;
-  std::vector<std::string> sets = sets_in;
   try {
-    if (revs > 0) sets.push_back("simulation.t_end=" + exact(timeForRevolutions(file, sets, revs)));
-    const Scene sc = load(file, sets);
-    cc.command = command("compare", file, sets);
-    cc.t_end = sc.simulation.t_end;
-    cc.accuracy = sc.simulation.accuracy;
-    log(label + ": " + description + " (t_end = " + g(cc.t_end, 5) + " s)");
-    CompareControl control;
-    control.interrupt = o_.interrupt;
-    ModelComparison c = runComparison(sc, control);
-    cc.max_rel_omega = c.find("omega_crank")->stats.max_rel_diff;
-    cc.max_rel_torque = c.find("coupling_torque")->stats.max_rel_diff;
-    for (const auto& q : c.quantities)
-      if (q.name != "omega_crank" && q.name != "coupling_torque")
-        cc.max_rel_reactions_quasistatic = std::max(cc.max_rel_reactions_quasistatic, q.stats.max_rel_diff);
-    for (const auto& q : c.kinetostatic)
-      cc.max_rel_reactions_kinetostatic = std::max(cc.max_rel_reactions_kinetostatic, q.stats.max_rel_diff);
-    cc.cpu_multibody = c.cpuMultibody();
-    cc.cpu_reduced = c.cpuReduced();
-    cc.complete = c.multibody.stats.complete && c.reduced.stats.complete;
-    if (!cc.complete)
-      cc.explanation = "run ended early: multibody " + c.multibody.stats.status + "; reduced " + c.reduced.stats.status;
-    cc.motion_equivalent = c.motion_equivalent;
-    for (const auto& d : c.differences)
-      if (!d.numerical) cc.topics.push_back(d.topic);
-    cc.pass = cc.complete && cc.max_rel_omega <= kEquivalenceTarget && cc.max_rel_torque <= kEquivalenceTarget;
-    if (keep) *keep = std::move(c);
+    runCase(cc, file, sets, revs, keep);
   } catch (const std::exception& e) {
     cc.complete = false;
     cc.explanation = std::string("failed: ") + e.what();
@@ -84,25 +83,39 @@ ComparisonCase Suite::compareCase(const std::string& label, const std::string& d
   return cc;
 }
 
-void Suite::equivalence(ValidationResults& r) {
-  const double revs = o_.quick ? 5 : 20;
-  // E0: the README's command, `rollerdyn compare model/balanced-4cart.yaml --set rods.model=split
-  // --set loads.guide_friction.coefficient=0 --set simulation.accuracy=1e-9`, over 20 revolutions.
-  {
-    ModelComparison c;
-    ComparisonCase cc =
-        compareCase("E0", "4 carts, one side, Δφ = 90°, elastic coupling (Loveikin, Pochka, Romasevych (2018) scene), accuracy 1e-9",
-                    "balanced-4cart.yaml",
-                    {"rods.model=split", "loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, revs, &c);
-    r.equivalence_example = c.table;
-    r.equivalence.push_back(cc);
-  }
-  // E1-E7 at accuracy 1e-11: at 1e-9 the rigid-drive scenes with loads opposing the velocity and
-  // the single cart reach a few 1e-6 in the coupling torque and at 1e-10 the single cart still
-  // ~1e-6, an integration error (the convergence study below shows it falling tenfold per decade
-  // of accuracy); 1e-11 leaves a margin of about ten.
-  struct Spec { const char* description; const char* file; std::vector<std::string> sets; bool quick; };
-  const std::vector<Spec> specs = {
+// Both models on the case's scene (`revs` > 0: run for that many crank revolutions), measured
+// into cc; the comparison kept in `keep` when given.
+void Suite::runCase(ComparisonCase& cc, const std::string& file, std::vector<std::string> sets, double revs,
+                    ModelComparison* keep) {
+  if (revs > 0) sets.push_back("simulation.t_end=" + exact(timeForRevolutions(file, sets, revs)));
+  const Scene sc = load(file, sets);
+  cc.command = command("compare", file, sets);
+  cc.t_end = sc.simulation.t_end;
+  cc.accuracy = sc.simulation.accuracy;
+  log(cc.label + ": " + cc.description + " (t_end = " + g(cc.t_end, 5) + " s)");
+  CompareControl control;
+  control.interrupt = o_.interrupt;
+  ModelComparison c = runComparison(sc, control);
+  measureCase(c, cc);
+  if (keep) *keep = std::move(c);
+}
+
+// An equivalence case E1-E7: the scene, what it changes, and whether --quick runs it.
+struct Suite::EquivalenceSpec {
+  const char* description;
+  const char* file;
+  std::vector<std::string> sets;
+  bool quick;
+};
+
+namespace {
+
+// E1-E7 at accuracy 1e-11: at 1e-9 the rigid-drive scenes with loads opposing the velocity and
+// the single cart reach a few 1e-6 in the coupling torque and at 1e-10 the single cart still
+// ~1e-6, an integration error (the convergence study below shows it falling tenfold per decade
+// of accuracy); 1e-11 leaves a margin of about ten.
+std::vector<Suite::EquivalenceSpec> equivalenceSpecs() {
+  return {
       {"4 carts, one side, Δφ = 90°, elastic coupling (Loveikin, Pochka, Romasevych (2018) scene)", "balanced-4cart.yaml", {}, false},
       {"4 carts, one side, Δφ = 90°, rigid drive", "balanced-4cart.yaml", {"coupling.type=rigid"}, false},
       {"1 cart, elastic coupling", "balanced-4cart.yaml", {"carts.count=1"}, false},
@@ -112,29 +125,58 @@ void Suite::equivalence(ValidationResults& r) {
        {"coupling.type=elastic", "coupling.stiffness=200000", "coupling.damping=8000"}, false},
       {"4 carts on alternate sides, Δφ = 90°, elastic coupling", "balanced-4cart.yaml", {"carts.sides=alternate"}, false},
   };
+}
+
+}  // namespace
+
+void Suite::equivalence(ValidationResults& r) {
+  equivalenceE0(r);
+  const std::vector<EquivalenceSpec> specs = equivalenceSpecs();
+  if (equivalenceCases(r, specs)) convergence(r, specs);
+}
+
+// E0: the README's command, `rollerdyn compare model/balanced-4cart.yaml --set rods.model=split
+// --set loads.guide_friction.coefficient=0 --set simulation.accuracy=1e-9`, over 20 revolutions.
+void Suite::equivalenceE0(ValidationResults& r) {
+  ModelComparison c;
+  ComparisonCase cc =
+      compareCase("E0", "4 carts, one side, Δφ = 90°, elastic coupling (Loveikin, Pochka, Romasevych (2018) scene), accuracy 1e-9",
+                  "balanced-4cart.yaml",
+                  {"rods.model=split", "loads.guide_friction.coefficient=0", "simulation.accuracy=1e-9"}, revolutions(), &c);
+  r.equivalence_example = c.table;
+  r.equivalence.push_back(cc);
+}
+
+// E1-E7 (--quick: E4 only); false when interrupted.
+bool Suite::equivalenceCases(ValidationResults& r, const std::vector<EquivalenceSpec>& specs) {
   int k = 0;
-  for (const Spec& s : specs) {
+  for (const EquivalenceSpec& s : specs) {
     ++k;
     if (o_.quick && !s.quick) continue;
-    if (interrupted()) return;
+    if (interrupted()) return false;
     ComparisonCase cc = compareCase("E" + std::to_string(k), s.description, s.file,
-                                    concat(concat(kEquivalentPhysics, s.sets), {"simulation.accuracy=1e-11"}), revs, nullptr);
+                                    concat(concat(kEquivalentPhysics, s.sets), {"simulation.accuracy=1e-11"}),
+                                    revolutions(), nullptr);
     if (!cc.motion_equivalent && cc.complete)
       throw std::logic_error("validation: equivalence case " + cc.label + " is not motion-equivalent");
     r.equivalence.push_back(cc);
   }
-  // Convergence: the same comparison at other accuracies. A modelling difference would stay put
-  // as the accuracy tightens; integration error falls with it.
+  return true;
+}
+
+// Convergence: the same comparison at other accuracies. A modelling difference would stay put
+// as the accuracy tightens; integration error falls with it.
+void Suite::convergence(ValidationResults& r, const std::vector<EquivalenceSpec>& specs) {
   const std::vector<double> accs = o_.quick ? std::vector<double>{1e-9} : std::vector<double>{1e-8, 1e-9, 1e-10};
   for (int e : {4, 3}) {
     if (o_.quick && e != 4) continue;
-    const Spec& s = specs[e - 1];
+    const EquivalenceSpec& s = specs[e - 1];
     for (double acc : accs) {
       if (interrupted()) return;
       char a[48];
       std::snprintf(a, sizeof a, "simulation.accuracy=%g", acc);
       r.convergence.push_back(compareCase("E" + std::to_string(e), s.description, s.file,
-                                          concat(concat(kEquivalentPhysics, s.sets), {a}), revs, nullptr));
+                                          concat(concat(kEquivalentPhysics, s.sets), {a}), revolutions(), nullptr));
     }
     for (const auto& c : r.equivalence)
       if (c.label == "E" + std::to_string(e)) r.convergence.push_back(c);
@@ -168,6 +210,23 @@ void Suite::analytic(ValidationResults& r) {
   a.measured_damped = measureFreeOscillation(a.free_damped, 0.01, 20, 64, a.accuracy);
 }
 
+// Section (3): the papers' sweeps, the sensitivity table, and the findings from both.
+void Suite::papersSection(ValidationResults& r) {
+  log("(3) papers");
+  papers(r);
+  if (!interrupted()) sensitivity(r);
+  findings(r);
+}
+
+ItemContext Suite::itemContext() const {
+  ItemContext ctx;
+  ctx.model_dir = o_.model_dir;
+  ctx.quick = o_.quick;
+  ctx.interrupt = o_.interrupt;
+  ctx.log_line = o_.log;
+  return ctx;
+}
+
 ValidationResults Suite::run() {
   ValidationResults r;
   r.quick = o_.quick;
@@ -179,12 +238,7 @@ ValidationResults Suite::run() {
     log("(2) where the physics differ");
     differences(r);
   }
-  if (!interrupted()) {
-    log("(3) papers");
-    papers(r);
-    if (!interrupted()) sensitivity(r);
-    findings(r);
-  }
+  if (!interrupted()) papersSection(r);
   if (!interrupted()) {
     log("(4) analytic, Dyomin (two rotors)");
     analytic(r);
@@ -193,14 +247,7 @@ ValidationResults Suite::run() {
     log("(5) induction motor");
     r.motor = runMotorValidation(o_);
   }
-  if (!interrupted()) {
-    ItemContext ctx;
-    ctx.model_dir = o_.model_dir;
-    ctx.quick = o_.quick;
-    ctx.interrupt = o_.interrupt;
-    ctx.log_line = o_.log;
-    r.sections = runValidationItems(ctx, o_.items);
-  }
+  if (!interrupted()) r.sections = runValidationItems(itemContext(), o_.items);
   r.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
   return r;
 }

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -11,21 +12,57 @@ namespace rollerdyn {
 
 namespace {
 
-std::vector<std::string> splitFields(const std::string& line) {
-  std::vector<std::string> out;
-  size_t start = 0;
-  while (true) {
-    const size_t comma = line.find(',', start);
-    out.push_back(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
+// What a cell that is not a number means: in the tool's own tables and measured data, an error
+// (naming file, line and column); in the studies' joined tables, text (a status, a motion) or a
+// published value the paper does not give, read as NaN.
+enum class TextCells { Rejected, AsNaN };
+
+// The fields of one line. Text cells may hold commas inside "..." (a status text); the quotes are
+// dropped. Without text cells every comma splits.
+std::vector<std::string> splitFields(const std::string& line, TextCells text) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (char ch : line) {
+    if (text == TextCells::AsNaN && ch == '"') quoted = !quoted;
+    else if (ch == ',' && !quoted) out.emplace_back();
+    else out.back() += ch;
   }
   return out;
 }
 
-}  // namespace
+std::string where(const std::string& file_label, int line_no) {
+  return file_label + ":" + std::to_string(line_no) + ": ";
+}
 
-Table parseCsv(const std::string& text, const std::string& file_label, CsvLayout* layout) {
+void readHeader(const std::vector<std::string>& fields, const std::string& file_label, int line_no, Table& table) {
+  for (const std::string& f : fields)
+    if (f.empty())
+      throw std::runtime_error(where(file_label, line_no) + "expected a header of column names, got an empty name");
+  for (const std::string& f : fields) table.columns.push_back(stripUnit(f));  // io/Table.h
+}
+
+std::vector<double> readRow(const std::vector<std::string>& fields, const std::string& file_label, int line_no,
+                            const Table& table, TextCells text) {
+  if (fields.size() != table.columns.size())
+    throw std::runtime_error(where(file_label, line_no) + "expected " + std::to_string(table.columns.size()) +
+                             " fields, got " + std::to_string(fields.size()));
+  std::vector<double> row;
+  row.reserve(fields.size());
+  for (std::size_t c = 0; c < fields.size(); ++c) {
+    const std::string& f = fields[c];
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(f.c_str(), &end);
+    const bool number = !f.empty() && end == f.c_str() + f.size();
+    if (!number && text == TextCells::Rejected)
+      throw std::runtime_error(where(file_label, line_no) + "column '" + table.columns[c] + "' (column " +
+                               std::to_string(c + 1) + "): expected a number, got '" + f + "'");
+    row.push_back(number ? v : std::numeric_limits<double>::quiet_NaN());
+  }
+  return row;
+}
+
+Table parseTable(const std::string& text, const std::string& file_label, CsvLayout* layout, TextCells cells) {
   Table table;
   std::istringstream in(text);
   std::string line;
@@ -35,13 +72,9 @@ Table parseCsv(const std::string& text, const std::string& file_label, CsvLayout
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
-    const std::vector<std::string> fields = splitFields(line);
+    const std::vector<std::string> fields = splitFields(line, cells);
     if (header) {
-      for (const std::string& f : fields)
-        if (f.empty())
-          throw std::runtime_error(file_label + ":" + std::to_string(line_no) +
-                                   ": expected a header of column names, got an empty name");
-      for (const std::string& f : fields) table.columns.push_back(stripUnit(f));  // io/Table.h
+      readHeader(fields, file_label, line_no, table);
       if (layout) {
         layout->header = fields;
         layout->header_line = line_no;
@@ -49,27 +82,26 @@ Table parseCsv(const std::string& text, const std::string& file_label, CsvLayout
       header = false;
       continue;
     }
-    if (fields.size() != table.columns.size())
-      throw std::runtime_error(file_label + ":" + std::to_string(line_no) + ": expected " +
-                               std::to_string(table.columns.size()) + " fields, got " +
-                               std::to_string(fields.size()));
-    std::vector<double> row;
-    row.reserve(fields.size());
-    for (std::size_t c = 0; c < fields.size(); ++c) {
-      const std::string& f = fields[c];
-      char* end = nullptr;
-      errno = 0;
-      const double v = std::strtod(f.c_str(), &end);
-      if (f.empty() || end != f.c_str() + f.size())
-        throw std::runtime_error(file_label + ":" + std::to_string(line_no) + ": column '" + table.columns[c] +
-                                 "' (column " + std::to_string(c + 1) + "): expected a number, got '" + f + "'");
-      row.push_back(v);
-    }
-    table.rows.push_back(std::move(row));
+    table.rows.push_back(readRow(fields, file_label, line_no, table, cells));
     if (layout) layout->row_lines.push_back(line_no);
   }
   if (header) throw std::runtime_error(file_label + ": expected a header row, got an empty file");
   return table;
+}
+
+// The text of an annotated table with its '#' lines blanked: parsing skips them and the other
+// lines keep their numbers.
+std::string withoutComments(const std::string& path, const std::string& what) {
+  std::istringstream in(readFileContents(path, what));
+  std::string text, line;
+  while (std::getline(in, line)) text += (line.compare(0, 1, "#") == 0 ? std::string() : line) + "\n";
+  return text;
+}
+
+}  // namespace
+
+Table parseCsv(const std::string& text, const std::string& file_label, CsvLayout* layout) {
+  return parseTable(text, file_label, layout, TextCells::Rejected);
 }
 
 Table readCsvFile(const std::string& path, CsvLayout* layout) {
@@ -77,10 +109,11 @@ Table readCsvFile(const std::string& path, CsvLayout* layout) {
 }
 
 Table readAnnotatedCsvFile(const std::string& path, const std::string& what) {
-  std::istringstream in(readFileContents(path, what));
-  std::string text, line;
-  while (std::getline(in, line)) text += (line.compare(0, 1, "#") == 0 ? std::string() : line) + "\n";
-  return parseCsv(text, path);
+  return parseCsv(withoutComments(path, what), path);
+}
+
+Table readAnnotatedCsvFileWithText(const std::string& path, const std::string& what, CsvLayout* layout) {
+  return parseTable(withoutComments(path, what), path, layout, TextCells::AsNaN);
 }
 
 }  // namespace rollerdyn

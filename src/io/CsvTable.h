@@ -30,4 +30,11 @@ Table readCsvFile(const std::string& path, CsvLayout* layout = nullptr);
 // comments (the source, the units) and skipped; the lines keep their numbers in messages.
 Table readAnnotatedCsvFile(const std::string& path, const std::string& what = "");
 
+// The same for a table whose rows also hold text (the studies' joined tables: a sweep's motion and
+// status, "..." quoted with commas inside; published cells left empty where the paper has no row):
+// a comma inside "..." does not split a field, the quotes are dropped, and a text or empty cell
+// reads as NaN instead of being an error.
+Table readAnnotatedCsvFileWithText(const std::string& path, const std::string& what = "",
+                                   CsvLayout* layout = nullptr);
+
 }  // namespace rollerdyn

@@ -57,7 +57,7 @@ TEST(StudiesPages, MalformedTableNamesFileAndLine) {
     f << "# comment\na,b\n1,2\n3\n";
   }
   try {
-    readLooseCsv((dir / "t.csv").string());
+    readStudyTable((dir / "t.csv").string());
     FAIL() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_TRUE(contains(e.what(), "t.csv:4: expected 2 fields, got 1")) << e.what();
