@@ -347,7 +347,7 @@ double StudyTable::at(std::size_t row, const std::string& column) const {
 StudyTable readStudyTable(const std::string& path) {
   CsvLayout layout;
   Table table = readAnnotatedCsvFileWithText(path, "study table", &layout);
-  return {layout.header, std::move(table.rows)};
+  return {table.columns, std::move(table.rows)};
 }
 
 std::vector<StudiesPage> buildStudiesPages(const std::string& dir) {

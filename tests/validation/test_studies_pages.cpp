@@ -49,6 +49,28 @@ TEST(StudiesPages, CoefficientPageFromTheJoinedTable) {
   std::filesystem::remove_all(dir);
 }
 
+// A sweep's sweep.csv names its columns with their units (coupling.stiffness[N*m/rad]); the page
+// reads them by name, so the stiffness table shows the swept values and the smallest swing (it
+// showed "–" in every number cell while the reader kept the units in the names).
+TEST(StudiesPages, StiffnessPageReadsColumnsWithUnits) {
+  const auto dir = std::filesystem::temp_directory_path() / "rollerdyn_studies_units";
+  std::filesystem::remove_all(dir);
+  for (const char* k : {"0", "8000"}) {
+    std::filesystem::create_directories(dir / (std::string("loveikin2018_stiffness_k") + k));
+    std::ofstream f(dir / (std::string("loveikin2018_stiffness_k") + k) / "sweep.csv");
+    f << "coupling.stiffness[N*m/rad],coupling_torque_swing[N*m],delta,omega_crank_mean[rad/s],steady_state_reached,"
+         "resonance_warnings\n"
+      << "100000,950.5,0.035,10.68,1,1\n"
+      << "200000,1006,0.019,10.68,1,0\n";
+  }
+  const std::vector<StudiesPage> ps = buildStudiesPages(dir.string());
+  const StudiesPage* p = page(ps, "loveikin2018_stiffness.md");
+  ASSERT_NE(p, nullptr);
+  EXPECT_TRUE(contains(p->markdown, "| 2e+05 | 1006 | 0.019 | 10.68 | 1 | 0 |")) << p->markdown;
+  EXPECT_TRUE(contains(p->markdown, "Smallest ΔM 950.5 N·m at c = 100000 N·m/rad")) << p->markdown;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(StudiesPages, MalformedTableNamesFileAndLine) {
   const auto dir = std::filesystem::temp_directory_path() / "rollerdyn_studies_bad";
   std::filesystem::create_directories(dir);
