@@ -25,34 +25,38 @@ namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
 
+// A Simbody integrator only applies to the constrained formulation: never ignore it silently.
+void requireConstrainedForIntegrator(const Reader& in, const SimulationSettings& s) {
+  if (!(s.formulation == Formulation::Minimal && in.has("simulation.integrator"))) return;
+  const std::string why = "no simulation.integrator: the minimal formulation (simulation.formulation) "
+                          "always integrates with CVODE Adams; set simulation.formulation: constrained "
+                          "to use a Simbody integrator";
+  if (blameSecond(in.doc(), "simulation.integrator", "simulation.formulation"))
+    in.doc().fail("simulation.formulation", "constrained (simulation.integrator = " + s.integrator + " is set)",
+                  "minimal");
+  in.doc().fail("simulation.integrator", why, s.integrator);
+}
+
+// One output row at least: output_step within the run.
+void requireOutputStepWithinRun(const Reader& in, const SimulationSettings& s) {
+  if (!(s.output_step > s.t_end)) return;
+  const std::string t = formatNumber(s.t_end), dt = formatNumber(s.output_step);
+  if (blameSecond(in.doc(), "simulation.output_step", "simulation.t_end"))
+    in.doc().fail("simulation.t_end", "t_end >= output_step = " + dt + " s (simulation.output_step)", t);
+  in.doc().fail("simulation.output_step", "a number in (0, t_end = " + t + "] [s] (simulation.t_end)", dt);
+}
+
 SimulationSettings readSimulation(const Reader& in) {
   SimulationSettings s;
   s.t_end = in.number("simulation.t_end");
   s.accuracy = in.number("simulation.accuracy");
   s.integrator = in.choice("simulation.integrator");
   s.formulation = in.choiceOf<Formulation>("simulation.formulation");
-  // A Simbody integrator only applies to the constrained formulation: never ignore it silently.
-  if (s.formulation == Formulation::Minimal && in.has("simulation.integrator")) {
-    const std::string why = "no simulation.integrator: the minimal formulation (simulation.formulation) "
-                            "always integrates with CVODE Adams; set simulation.formulation: constrained "
-                            "to use a Simbody integrator";
-    if (blameSecond(in.doc(), "simulation.integrator", "simulation.formulation"))
-      in.doc().fail("simulation.formulation", "constrained (simulation.integrator = " + s.integrator + " is set)",
-                    "minimal");
-    in.doc().fail("simulation.integrator", why, s.integrator);
-  }
+  requireConstrainedForIntegrator(in, s);
   s.output_step = in.number("simulation.output_step");
   s.reactions = in.flag("simulation.reactions");
   s.self_check_interval = in.has("simulation.self_check_interval") ? in.integer("simulation.self_check_interval") : 0;
-  if (s.output_step > s.t_end) {
-    const std::string t = formatNumber(s.t_end), dt = formatNumber(s.output_step);
-    if (blameSecond(in.doc(), "simulation.output_step", "simulation.t_end")) {
-      in.doc().fail("simulation.t_end",
-                    "t_end >= output_step = " + dt + " s (simulation.output_step)", t);
-    }
-    in.doc().fail("simulation.output_step",
-                  "a number in (0, t_end = " + t + "] [s] (simulation.t_end)", dt);
-  }
+  requireOutputStepWithinRun(in, s);
   // The constraint projection cannot usefully be looser or tighter than the integration itself
   // unless asked for.
   s.constraint_tolerance = in.numberOr("simulation.constraint_tolerance", s.accuracy);
@@ -95,6 +99,19 @@ CrankShaft readCrank(const Reader& in) {
   return c;
 }
 
+// The rods' mass: >= 0 for massless rods (kept for reference; the models ignore it), > 0
+// otherwise. The range is checked here, not in the schema, so that one rule gives one message.
+double readRodMass(const Reader& in, RodModel model) {
+  if (model == RodModel::Massless) {
+    const double m = in.numberOr("rods.mass", 0.0);
+    if (m < 0.0) in.doc().fail("rods.mass", "a number >= 0 [kg]", formatNumber(m));
+    return m;
+  }
+  const double m = in.requiredNumber("rods.mass", "required unless rods.model is massless");
+  if (m <= 0.0) in.doc().fail("rods.mass", "a number > 0 [kg] (0 only with rods.model massless)", formatNumber(m));
+  return m;
+}
+
 ConnectingRods readRods(const Reader& in, double r) {
   ConnectingRods rods;
   rods.model = in.choiceOf<RodModel>("rods.model");
@@ -108,19 +125,7 @@ ConnectingRods readRods(const Reader& in, double r) {
     }
     in.doc().fail("rods.length", "l > r = " + r_txt + " m (crank.radius)", l_txt);
   }
-  if (rods.model == RodModel::Massless) {
-    rods.mass = in.numberOr("rods.mass", 0.0);  // kept for reference; the models ignore it
-    // The range is checked here, not in the schema, so that one rule gives one message: >= 0
-    // for massless rods, > 0 otherwise.
-    if (rods.mass < 0.0) in.doc().fail("rods.mass", "a number >= 0 [kg]", formatNumber(rods.mass));
-  } else {
-    rods.mass = in.requiredNumber("rods.mass", "required unless rods.model is massless");
-    if (rods.mass <= 0.0) {
-      in.doc().fail("rods.mass",
-                    "a number > 0 [kg] (0 only with rods.model massless)",
-                    formatNumber(rods.mass));
-    }
-  }
+  rods.mass = readRodMass(in, rods.model);
   // Uniform slender rod about its centre: m·l²/12 (Loveikin and Pochka (2007): I_s = q·l³/12 with m = q·l).
   rods.inertia_com =
       in.numberOr("rods.inertia_com", rods.mass * rods.length * rods.length / 12.0);
