@@ -163,8 +163,7 @@ std::string describeNode(const YAML::Node& node) {
   return "nothing";
 }
 
-SceneDocument::SceneDocument(const std::string& yaml_text, std::string file_label, bool line_numbers)
-    : file_(std::move(file_label)), line_numbers_(line_numbers) {
+void SceneDocument::requireOneDocument(const std::string& yaml_text) const {
   DocumentScan scan;
   try {
     scan = scanDocuments(yaml_text);  // never YAML::LoadAll(): see scanDocuments()
@@ -186,6 +185,11 @@ SceneDocument::SceneDocument(const std::string& yaml_text, std::string file_labe
                              "exactly one YAML document per scene file",
                              "a second document (after '---')");
   }
+}
+
+SceneDocument::SceneDocument(const std::string& yaml_text, std::string file_label, bool line_numbers)
+    : file_(std::move(file_label)), line_numbers_(line_numbers) {
+  requireOneDocument(yaml_text);
   try {
     root_ = YAML::Load(yaml_text);
   } catch (const YAML::ParserException& e) {  // not expected: the scan parsed the same text
@@ -357,34 +361,39 @@ void SceneDocument::applyOverride(int n, const std::string& arg) {
   overrides_.push_back({n, arg, path});
 }
 
+YAML::Node SceneDocument::uniformList(int n, const std::string& arg, const std::string& path, const KeySpec& spec,
+                                      const YAML::Node& current) const {
+  const YAML::Node count_node = find("carts.count");
+  long long count = 0;
+  if (!count_node.IsDefined() || !count_node.IsScalar() || !YAML::convert<long long>::decode(count_node, count) ||
+      count < 1 || count > 1000)
+    failOverride(n, arg, path, "a scene with a valid carts.count (a list element needs the number of carts)",
+                 describeNode(count_node));
+  YAML::Node uniform;
+  if (current.IsDefined() && current.IsScalar()) {
+    uniform = YAML::Clone(current);
+  } else if (spec.presence == Presence::Optional) {
+    uniform = YAML::Node(formatNumber(spec.default_number));
+  } else {
+    failOverride(n, arg, path, "a scene that gives " + spec.path + " (an element replaces one of its values)",
+                 current.IsDefined() ? describeNode(current) : "no " + spec.path);
+  }
+  YAML::Node list(YAML::NodeType::Sequence);
+  for (long long i = 0; i < count; ++i) list.push_back(YAML::Clone(uniform));
+  return list;
+}
+
 YAML::Node SceneDocument::listWithElement(int n, const std::string& arg, const std::string& path,
                                           const KeySpec& spec, int element, const YAML::Node& value) const {
   if (!value.IsScalar())
     failOverride(n, arg, path, "one value for one cart (the whole list: --set " + spec.path + "=[...])",
                  describeNode(value));
   const YAML::Node current = find(spec.path);
-  YAML::Node list(YAML::NodeType::Sequence);
-  if (current.IsDefined() && current.IsSequence()) {
+  // A scalar (or an optional key's default) is the uniform value: repeated for every cart.
+  const bool given_list = current.IsDefined() && current.IsSequence();
+  YAML::Node list = given_list ? YAML::Node(YAML::NodeType::Sequence) : uniformList(n, arg, path, spec, current);
+  if (given_list)
     for (size_t i = 0; i < current.size(); ++i) list.push_back(YAML::Clone(current[i]));
-  } else {
-    // A scalar (or an optional key's default) is the uniform value: repeat it for every cart.
-    const YAML::Node count_node = find("carts.count");
-    long long count = 0;
-    if (!count_node.IsDefined() || !count_node.IsScalar() || !YAML::convert<long long>::decode(count_node, count) ||
-        count < 1 || count > 1000)
-      failOverride(n, arg, path, "a scene with a valid carts.count (a list element needs the number of carts)",
-                   describeNode(count_node));
-    YAML::Node uniform;
-    if (current.IsDefined() && current.IsScalar()) {
-      uniform = YAML::Clone(current);
-    } else if (spec.presence == Presence::Optional) {
-      uniform = YAML::Node(formatNumber(spec.default_number));
-    } else {
-      failOverride(n, arg, path, "a scene that gives " + spec.path + " (an element replaces one of its values)",
-                   current.IsDefined() ? describeNode(current) : "no " + spec.path);
-    }
-    for (long long i = 0; i < count; ++i) list.push_back(YAML::Clone(uniform));
-  }
   if (static_cast<size_t>(element) >= list.size())
     failOverride(n, arg, path,
                  "an index from 0 to " + std::to_string(list.size() - 1) + " (" + spec.path + " has " +

@@ -83,6 +83,12 @@ class SceneDocument {
   // The list of per-cart key `spec` with element `element` replaced by `value` (--set key[i]=value).
   YAML::Node listWithElement(int n, const std::string& arg, const std::string& path, const KeySpec& spec,
                              int element, const YAML::Node& value) const;
+  // The YAML text scanned: one document that parses, else the complaint where it fails.
+  void requireOneDocument(const std::string& yaml_text) const;
+  // The list a per-cart key stands for when the file gives one value (or leaves an optional key
+  // at its default): that value once per cart (carts.count).
+  YAML::Node uniformList(int n, const std::string& arg, const std::string& path, const KeySpec& spec,
+                         const YAML::Node& current) const;
   // 1-based line of a mark of this document; 0 for nodes built in memory or without line numbers.
   int lineAt(const YAML::Mark& m) const;
   // `line`, at least 1 (a whole-document complaint points at the top); 0 without line numbers.

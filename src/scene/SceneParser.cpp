@@ -25,34 +25,38 @@ namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
 
+// A Simbody integrator only applies to the constrained formulation: never ignore it silently.
+void requireConstrainedForIntegrator(const Reader& in, const SimulationSettings& s) {
+  if (!(s.formulation == Formulation::Minimal && in.has("simulation.integrator"))) return;
+  const std::string why = "no simulation.integrator: the minimal formulation (simulation.formulation) "
+                          "always integrates with CVODE Adams; set simulation.formulation: constrained "
+                          "to use a Simbody integrator";
+  if (blameSecond(in.doc(), "simulation.integrator", "simulation.formulation"))
+    in.doc().fail("simulation.formulation", "constrained (simulation.integrator = " + s.integrator + " is set)",
+                  "minimal");
+  in.doc().fail("simulation.integrator", why, s.integrator);
+}
+
+// One output row at least: output_step within the run.
+void requireOutputStepWithinRun(const Reader& in, const SimulationSettings& s) {
+  if (!(s.output_step > s.t_end)) return;
+  const std::string t = formatNumber(s.t_end), dt = formatNumber(s.output_step);
+  if (blameSecond(in.doc(), "simulation.output_step", "simulation.t_end"))
+    in.doc().fail("simulation.t_end", "t_end >= output_step = " + dt + " s (simulation.output_step)", t);
+  in.doc().fail("simulation.output_step", "a number in (0, t_end = " + t + "] [s] (simulation.t_end)", dt);
+}
+
 SimulationSettings readSimulation(const Reader& in) {
   SimulationSettings s;
   s.t_end = in.number("simulation.t_end");
   s.accuracy = in.number("simulation.accuracy");
   s.integrator = in.choice("simulation.integrator");
   s.formulation = in.choiceOf<Formulation>("simulation.formulation");
-  // A Simbody integrator only applies to the constrained formulation: never ignore it silently.
-  if (s.formulation == Formulation::Minimal && in.has("simulation.integrator")) {
-    const std::string why = "no simulation.integrator: the minimal formulation (simulation.formulation) "
-                            "always integrates with CVODE Adams; set simulation.formulation: constrained "
-                            "to use a Simbody integrator";
-    if (blameSecond(in.doc(), "simulation.integrator", "simulation.formulation"))
-      in.doc().fail("simulation.formulation", "constrained (simulation.integrator = " + s.integrator + " is set)",
-                    "minimal");
-    in.doc().fail("simulation.integrator", why, s.integrator);
-  }
+  requireConstrainedForIntegrator(in, s);
   s.output_step = in.number("simulation.output_step");
   s.reactions = in.flag("simulation.reactions");
   s.self_check_interval = in.has("simulation.self_check_interval") ? in.integer("simulation.self_check_interval") : 0;
-  if (s.output_step > s.t_end) {
-    const std::string t = formatNumber(s.t_end), dt = formatNumber(s.output_step);
-    if (blameSecond(in.doc(), "simulation.output_step", "simulation.t_end")) {
-      in.doc().fail("simulation.t_end",
-                    "t_end >= output_step = " + dt + " s (simulation.output_step)", t);
-    }
-    in.doc().fail("simulation.output_step",
-                  "a number in (0, t_end = " + t + "] [s] (simulation.t_end)", dt);
-  }
+  requireOutputStepWithinRun(in, s);
   // The constraint projection cannot usefully be looser or tighter than the integration itself
   // unless asked for.
   s.constraint_tolerance = in.numberOr("simulation.constraint_tolerance", s.accuracy);
@@ -95,6 +99,19 @@ CrankShaft readCrank(const Reader& in) {
   return c;
 }
 
+// The rods' mass: >= 0 for massless rods (kept for reference; the models ignore it), > 0
+// otherwise. The range is checked here, not in the schema, so that one rule gives one message.
+double readRodMass(const Reader& in, RodModel model) {
+  if (model == RodModel::Massless) {
+    const double m = in.numberOr("rods.mass", 0.0);
+    if (m < 0.0) in.doc().fail("rods.mass", "a number >= 0 [kg]", formatNumber(m));
+    return m;
+  }
+  const double m = in.requiredNumber("rods.mass", "required unless rods.model is massless");
+  if (m <= 0.0) in.doc().fail("rods.mass", "a number > 0 [kg] (0 only with rods.model massless)", formatNumber(m));
+  return m;
+}
+
 ConnectingRods readRods(const Reader& in, double r) {
   ConnectingRods rods;
   rods.model = in.choiceOf<RodModel>("rods.model");
@@ -108,19 +125,7 @@ ConnectingRods readRods(const Reader& in, double r) {
     }
     in.doc().fail("rods.length", "l > r = " + r_txt + " m (crank.radius)", l_txt);
   }
-  if (rods.model == RodModel::Massless) {
-    rods.mass = in.numberOr("rods.mass", 0.0);  // kept for reference; the models ignore it
-    // The range is checked here, not in the schema, so that one rule gives one message: >= 0
-    // for massless rods, > 0 otherwise.
-    if (rods.mass < 0.0) in.doc().fail("rods.mass", "a number >= 0 [kg]", formatNumber(rods.mass));
-  } else {
-    rods.mass = in.requiredNumber("rods.mass", "required unless rods.model is massless");
-    if (rods.mass <= 0.0) {
-      in.doc().fail("rods.mass",
-                    "a number > 0 [kg] (0 only with rods.model massless)",
-                    formatNumber(rods.mass));
-    }
-  }
+  rods.mass = readRodMass(in, rods.model);
   // Uniform slender rod about its centre: m·l²/12 (Loveikin and Pochka (2007): I_s = q·l³/12 with m = q·l).
   rods.inertia_com =
       in.numberOr("rods.inertia_com", rods.mass * rods.length * rods.length / 12.0);
@@ -275,8 +280,9 @@ Flywheel readFlywheel(const Reader& in) {
 // formulation's O(n) inverse-dynamics pass solves the loop (docs/friction-and-reactions.md,
 // "Which normal force"), lagged in the constrained formulation, where the guide reaction is only
 // known after Simbody's constrained solve.
-Loads readLoads(const Reader& in, int count, Formulation formulation, std::vector<CartLoads>& per_cart) {
-  Loads l;
+// The roller loads, per cart where a key gives a list (per_cart then holds every cart's loads;
+// empty when every key gives one number).
+void readRollerLoads(const Reader& in, int count, Loads& l, std::vector<CartLoads>& per_cart) {
   const std::vector<double> F1 = in.perCartNumbers("loads.roller_force_front", count, l.roller_force_front);
   const std::vector<double> F2 = in.perCartNumbers("loads.roller_force_rear", count, l.roller_force_rear);
   const std::vector<double> R1 = in.perCartNumbers("loads.roller_normal_front", count, l.roller_normal_front);
@@ -290,16 +296,16 @@ Loads readLoads(const Reader& in, int count, Formulation formulation, std::vecto
                           at(R1, l.roller_normal_front, j), at(R2, l.roller_normal_rear, j),
                           at(mu, l.rolling_resistance, j)});
   }
-  l.roller_force_direction = in.choiceOf<RollerForceDirection>("loads.roller_force_direction");
-  l.guide_friction = in.number("loads.guide_friction.coefficient");
-  l.gravity = in.number("loads.gravity");
-  l.velocity_smoothing = in.number("loads.velocity_smoothing");
-  l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
+}
+
+// The guide normal force the friction reads: algebraic needs the minimal formulation, whose
+// default it is; lagged is the constrained formulation's.
+GuideNormalForce readGuideNormalForce(const Reader& in, Formulation formulation) {
   const std::string normal_key = "loads.guide_friction.normal_force";
-  l.guide_normal_force = in.has(normal_key)                     ? in.choiceOf<GuideNormalForce>(normal_key)
-                         : formulation == Formulation::Minimal ? GuideNormalForce::Algebraic
-                                                               : GuideNormalForce::Lagged;
-  if (l.guide_normal_force == GuideNormalForce::Algebraic && formulation == Formulation::Constrained) {
+  const GuideNormalForce g = in.has(normal_key)                     ? in.choiceOf<GuideNormalForce>(normal_key)
+                             : formulation == Formulation::Minimal ? GuideNormalForce::Algebraic
+                                                                   : GuideNormalForce::Lagged;
+  if (g == GuideNormalForce::Algebraic && formulation == Formulation::Constrained) {
     if (blameSecond(in.doc(), normal_key, "simulation.formulation"))
       in.doc().fail("simulation.formulation",
                     "minimal (loads.guide_friction.normal_force = algebraic needs the minimal formulation)",
@@ -308,8 +314,20 @@ Loads readLoads(const Reader& in, int count, Formulation formulation, std::vecto
                   "lagged with simulation.formulation: constrained (the constrained formulation knows the "
                   "guide reaction only after Simbody's constrained solve, so it cannot solve the friction "
                   "loop algebraically; use simulation.formulation: minimal)",
-                  toString(l.guide_normal_force));
+                  toString(g));
   }
+  return g;
+}
+
+Loads readLoads(const Reader& in, int count, Formulation formulation, std::vector<CartLoads>& per_cart) {
+  Loads l;
+  readRollerLoads(in, count, l, per_cart);
+  l.roller_force_direction = in.choiceOf<RollerForceDirection>("loads.roller_force_direction");
+  l.guide_friction = in.number("loads.guide_friction.coefficient");
+  l.gravity = in.number("loads.gravity");
+  l.velocity_smoothing = in.number("loads.velocity_smoothing");
+  l.guide_friction_lag = in.number("loads.guide_friction.normal_force_lag");
+  l.guide_normal_force = readGuideNormalForce(in, formulation);
   return l;
 }
 
@@ -361,23 +379,8 @@ CouplingRatings readCouplingRatings(const Reader& in) {
 }
 
 // Ratings and targets of the sizing answers (SizingInputs.h); absent keys stay 0 = not given.
-SizingInputs readSizing(const Reader& in) {
-  SizingInputs z;
-  z.motor_nominal_torque = in.number("sizing.motor_nominal_torque");
-  z.motor_nominal_power = in.number("sizing.motor_nominal_power");
-  z.motor_efficiency = in.number("sizing.motor_efficiency");
-  z.starts_per_hour = in.number("sizing.starts_per_hour");
-  z.target_delta = in.number("sizing.target_delta");
-  z.coupling_rated_torque = in.number("sizing.coupling_rated_torque");
-  z.rating_guide_roller = in.number("sizing.bearing_rating.guide_roller");
-  z.rating_rod_end = in.number("sizing.bearing_rating.rod_end");
-  z.rating_crank_pin = in.number("sizing.bearing_rating.crank_pin");
-  z.rating_main_bearing = in.number("sizing.bearing_rating.main_bearing");
-  z.fatigue = readFatigue(in);
-  z.coupling = readCouplingRatings(in);
-  scene_detail::readGearAndDutyRatings(in, z);
-  if (in.has("motor.omega_nominal")) z.motor_omega_nominal = in.number("motor.omega_nominal");
-  if (in.has("motor.overload_ratio")) z.motor_overload_ratio = in.number("motor.overload_ratio");
+// Ratings that could contradict each other are refused.
+void checkSizingRatings(const Reader& in, const SizingInputs& z) {
   // One rated torque of the coupling: the single rating against the run's largest peak, or the
   // makers' T_KN and T_Kmax against the steady and the start's peaks (two verdicts from two
   // ratings of the same coupling could contradict each other).
@@ -396,8 +399,29 @@ SizingInputs readSizing(const Reader& in) {
     in.doc().fail("sizing.motor_nominal_power",
                   "a nominal power together with motor.omega_nominal (M_n = P_n/omega_n)",
                   formatNumber(z.motor_nominal_power) + " without motor.omega_nominal");
+}
+
+SizingInputs readSizing(const Reader& in) {
+  SizingInputs z;
+  z.motor_nominal_torque = in.number("sizing.motor_nominal_torque");
+  z.motor_nominal_power = in.number("sizing.motor_nominal_power");
+  z.motor_efficiency = in.number("sizing.motor_efficiency");
+  z.starts_per_hour = in.number("sizing.starts_per_hour");
+  z.target_delta = in.number("sizing.target_delta");
+  z.coupling_rated_torque = in.number("sizing.coupling_rated_torque");
+  z.rating_guide_roller = in.number("sizing.bearing_rating.guide_roller");
+  z.rating_rod_end = in.number("sizing.bearing_rating.rod_end");
+  z.rating_crank_pin = in.number("sizing.bearing_rating.crank_pin");
+  z.rating_main_bearing = in.number("sizing.bearing_rating.main_bearing");
+  z.fatigue = readFatigue(in);
+  z.coupling = readCouplingRatings(in);
+  scene_detail::readGearAndDutyRatings(in, z);
+  if (in.has("motor.omega_nominal")) z.motor_omega_nominal = in.number("motor.omega_nominal");
+  if (in.has("motor.overload_ratio")) z.motor_overload_ratio = in.number("motor.overload_ratio");
+  checkSizingRatings(in, z);
   return z;
 }
+
 
 // Backlash: the teeth's contact stiffness and damping are the coupling's c, k, which a rigid
 // coupling does not have (physics/CouplingLaw.h).
