@@ -66,54 +66,73 @@ double KeyMap::slope(double x) const {
   return info.log_scale ? x * std::log(info.upper / info.lower) : info.upper - info.lower;
 }
 
+namespace {
+
+// The schema's entry of a --free key: a number or a list element of numbers.
+const KeySpec& numericKeySpec(const std::string& key) {
+  const KeySpec* spec = findSceneKeyOrElement(key);
+  if (!spec) {
+    requireSceneKey("identify: --free " + key, key);  // throws with the did-you-mean hint
+    throw std::invalid_argument("identify: --free " + key + ": expected a key of the scene schema");
+  }
+  if (spec->kind != KeyKind::Number && spec->kind != KeyKind::NumberList)
+    throw std::invalid_argument("identify: --free " + key + ": expected a key whose value is a number, got " +
+                                describeExpected(*spec));
+  return *spec;
+}
+
+// The search bounds: --bounds, else the schema's finite range; the search runs in log scale over
+// two decades or more.
+void searchBounds(const IdentifyOptions& o, const KeySpec& spec, IdentifiedKey& info) {
+  const std::string& key = info.key;
+  const auto given = o.bounds.find(key);
+  if (given != o.bounds.end()) {
+    info.lower = given->second.first;
+    info.upper = given->second.second;
+    info.bounds_from = "--bounds";
+  } else {
+    const Range& r = spec.range;
+    if (!std::isfinite(r.lo) || !std::isfinite(r.hi))
+      throw std::invalid_argument("identify: --free " + key + ": the scene schema allows " + describeAllowed(spec) +
+                                  ", no finite range; give bounds with --bounds " + key + "=LOWER:UPPER [" +
+                                  spec.unit + "]");
+    // An open end of the schema's range is no value a run may take: bounds just inside it.
+    const double inset = 1e-9 * (r.hi - r.lo);
+    info.lower = r.lo_inclusive ? r.lo : r.lo + inset;
+    info.upper = r.hi_inclusive ? r.hi : r.hi - inset;
+    info.bounds_from = "schema";
+  }
+  if (!(std::isfinite(info.lower) && std::isfinite(info.upper) && info.lower < info.upper))
+    throw std::invalid_argument("identify: bounds of " + key + ": expected LOWER < UPPER, both finite, got " +
+                                formatNumber(info.lower) + ":" + formatNumber(info.upper));
+  info.log_scale = info.lower > 0 && info.upper / info.lower >= 100.0;
+}
+
+// The search starts from the scene's value (inside the bounds), else from the middle of the bounds.
+double searchStart(const std::vector<SceneParameterRow>& rows, const KeyMap& k) {
+  const double scene_value = startValue(rows, k.info.key);
+  if (std::isfinite(scene_value) && scene_value >= k.info.lower && scene_value <= k.info.upper) return scene_value;
+  if (std::isfinite(scene_value))
+    throw std::invalid_argument("identify: " + k.info.key + ": the scene's value " + formatNumber(scene_value) +
+                                " lies outside the bounds " + formatNumber(k.info.lower) + ":" +
+                                formatNumber(k.info.upper) + "; widen them or --set a starting value inside");
+  return k.toValue(0.5);
+}
+
+}  // namespace
+
 std::vector<KeyMap> resolveKeys(const IdentifyOptions& o, const std::vector<SceneParameterRow>& rows) {
   if (o.free_keys.empty()) throw std::invalid_argument("identify: expected at least one --free key, got none");
   std::vector<KeyMap> keys;
   for (const std::string& key : o.free_keys) {
     for (const KeyMap& k : keys)
       if (k.info.key == key) throw std::invalid_argument("identify: --free " + key + " is given twice");
-    const KeySpec* spec = findSceneKeyOrElement(key);
-    if (!spec) {
-      requireSceneKey("identify: --free " + key, key);  // throws with the did-you-mean hint
-      throw std::invalid_argument("identify: --free " + key + ": expected a key of the scene schema");
-    }
-    if (spec->kind != KeyKind::Number && spec->kind != KeyKind::NumberList)
-      throw std::invalid_argument("identify: --free " + key + ": expected a key whose value is a number, got " +
-                                  describeExpected(*spec));
+    const KeySpec& spec = numericKeySpec(key);
     KeyMap k;
     k.info.key = key;
-    k.info.unit = spec->unit;
-    const auto given = o.bounds.find(key);
-    if (given != o.bounds.end()) {
-      k.info.lower = given->second.first;
-      k.info.upper = given->second.second;
-      k.info.bounds_from = "--bounds";
-    } else {
-      const Range& r = spec->range;
-      if (!std::isfinite(r.lo) || !std::isfinite(r.hi))
-        throw std::invalid_argument("identify: --free " + key + ": the scene schema allows " + describeAllowed(*spec) +
-                                    ", no finite range; give bounds with --bounds " + key + "=LOWER:UPPER [" +
-                                    spec->unit + "]");
-      // An open end of the schema's range is no value a run may take: bounds just inside it.
-      const double inset = 1e-9 * (r.hi - r.lo);
-      k.info.lower = r.lo_inclusive ? r.lo : r.lo + inset;
-      k.info.upper = r.hi_inclusive ? r.hi : r.hi - inset;
-      k.info.bounds_from = "schema";
-    }
-    if (!(std::isfinite(k.info.lower) && std::isfinite(k.info.upper) && k.info.lower < k.info.upper))
-      throw std::invalid_argument("identify: bounds of " + key + ": expected LOWER < UPPER, both finite, got " +
-                                  formatNumber(k.info.lower) + ":" + formatNumber(k.info.upper));
-    k.info.log_scale = k.info.lower > 0 && k.info.upper / k.info.lower >= 100.0;
-    const double scene_value = startValue(rows, key);
-    if (std::isfinite(scene_value) && scene_value >= k.info.lower && scene_value <= k.info.upper) {
-      k.info.start = scene_value;
-    } else if (std::isfinite(scene_value)) {
-      throw std::invalid_argument("identify: " + key + ": the scene's value " + formatNumber(scene_value) +
-                                  " lies outside the bounds " + formatNumber(k.info.lower) + ":" +
-                                  formatNumber(k.info.upper) + "; widen them or --set a starting value inside");
-    } else {
-      k.info.start = k.toValue(0.5);
-    }
+    k.info.unit = spec.unit;
+    searchBounds(o, spec, k.info);
+    k.info.start = searchStart(rows, k);
     keys.push_back(k);
   }
   for (const auto& [key, b] : o.bounds)
