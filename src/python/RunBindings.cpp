@@ -177,6 +177,22 @@ void bindSimulate(py::module_& m) {
       py::arg("scene"), py::arg("model"), py::arg("modes") = false);
 }
 
+// compare(): both models on the same scene and their comparison, interruptible by Ctrl-C.
+py::tuple compareScene(const PyScene& scene) {
+  std::atomic<bool> stop{false};
+  bool interrupted = false;
+  CompareData c = runInterruptible(
+      [&scene, &stop] {
+        CompareControl control;
+        control.interrupt = &stop;
+        ModelComparison mc = runComparison(scene.scene(), control);
+        RunData mb = summarized(scene, mc.multibody), red = summarized(scene, mc.reduced);
+        return CompareData{scene, std::move(mc), std::move(mb), std::move(red)};
+      },
+      stop, &interrupted);
+  return py::make_tuple(std::move(c), interrupted);
+}
+
 // compare: both models on the same scene, and their comparison.
 void bindComparison(py::module_& m) {
   py::class_<CompareData>(m, "CompareData")
@@ -186,23 +202,7 @@ void bindComparison(py::module_& m) {
       .def("json", [](const CompareData& c) { return toPython(comparisonJson(c.comparison)); })
       .def("text", [](const CompareData& c) { return comparisonText(c.comparison); });
 
-  m.def(
-      "compare",
-      [](const PyScene& scene) {
-        std::atomic<bool> stop{false};
-        bool interrupted = false;
-        CompareData c = runInterruptible(
-            [&scene, &stop] {
-              CompareControl control;
-              control.interrupt = &stop;
-              ModelComparison mc = runComparison(scene.scene(), control);
-              RunData mb = summarized(scene, mc.multibody), red = summarized(scene, mc.reduced);
-              return CompareData{scene, std::move(mc), std::move(mb), std::move(red)};
-            },
-            stop, &interrupted);
-        return py::make_tuple(std::move(c), interrupted);
-      },
-      py::arg("scene"));
+  m.def("compare", &compareScene, py::arg("scene"));
 }
 
 }  // namespace
