@@ -171,6 +171,37 @@ std::string joinList(const std::vector<std::string>& v) {
   return s;
 }
 
+std::vector<std::string> ModelRuns::overridesAt(const std::vector<double>& u, std::size_t n, double accuracy) const {
+  std::vector<std::string> overrides = o_.base_overrides;
+  overrides.push_back("simulation.t_end=" + formatNumber(data_.t[n - 1]));
+  overrides.push_back("simulation.accuracy=" + formatNumber(accuracy > 0 ? accuracy : accuracy_));
+  overrides.push_back("simulation.output_step=" + formatNumber(output_step_));
+  for (std::size_t k = 0; k < keys_.size(); ++k)
+    overrides.push_back(keys_[k].info.key + "=" + formatNumber(keys_[k].toValue(u[k])));
+  return overrides;
+}
+
+std::vector<std::vector<double>> ModelRuns::signalsOf(const RunResult& result, std::size_t n) const {
+  std::vector<std::vector<double>> model(data_.signals.size());
+  for (std::size_t s = 0; s < data_.signals.size(); ++s) {
+    const std::string& name = data_.signals[s].name;
+    const Table* table = result.timeseries.has(name) ? &result.timeseries
+                         : result.reactions.has(name) ? &result.reactions
+                                                      : nullptr;
+    if (!table) {
+      std::vector<std::string> columns = result.timeseries.columns;
+      columns.insert(columns.end(), result.reactions.columns.begin(), result.reactions.columns.end());
+      throw MissingColumn(data_.file + ": column '" + name + "': the " + o_.model +
+                          " model's run writes no such column" + didYouMean(name, columns) +
+                          "; it writes " + joinList(columns));
+    }
+    const int tc = table->index("t"), c = table->index(name);
+    std::size_t hint = 0;
+    for (std::size_t i = 0; i < n; ++i) model[s].push_back(interpolate(*table, tc, c, data_.t[i], &hint));
+  }
+  return model;
+}
+
 ModelRuns::Trial ModelRuns::run(const std::vector<double>& u, std::size_t n, double accuracy) {
   Trial trial;
   if (o_.interrupt && o_.interrupt->load()) {
@@ -178,12 +209,7 @@ ModelRuns::Trial ModelRuns::run(const std::vector<double>& u, std::size_t n, dou
     return trial;
   }
   runs_.fetch_add(1);
-  std::vector<std::string> overrides = o_.base_overrides;
-  overrides.push_back("simulation.t_end=" + formatNumber(data_.t[n - 1]));
-  overrides.push_back("simulation.accuracy=" + formatNumber(accuracy > 0 ? accuracy : accuracy_));
-  overrides.push_back("simulation.output_step=" + formatNumber(output_step_));
-  for (std::size_t k = 0; k < keys_.size(); ++k)
-    overrides.push_back(keys_[k].info.key + "=" + formatNumber(keys_[k].toValue(u[k])));
+  const std::vector<std::string> overrides = overridesAt(u, n, accuracy);
   try {
     const Scene scene = parseSceneInput(input_, overrides);
     RunControl control;
@@ -194,23 +220,7 @@ ModelRuns::Trial ModelRuns::run(const std::vector<double>& u, std::size_t n, dou
       trial.reason = result.stats.status;
       return trial;
     }
-    trial.model.resize(data_.signals.size());
-    for (std::size_t s = 0; s < data_.signals.size(); ++s) {
-      const std::string& name = data_.signals[s].name;
-      const Table* table = result.timeseries.has(name) ? &result.timeseries
-                           : result.reactions.has(name) ? &result.reactions
-                                                        : nullptr;
-      if (!table) {
-        std::vector<std::string> columns = result.timeseries.columns;
-        columns.insert(columns.end(), result.reactions.columns.begin(), result.reactions.columns.end());
-        throw MissingColumn(data_.file + ": column '" + name + "': the " + o_.model +
-                            " model's run writes no such column" + didYouMean(name, columns) +
-                            "; it writes " + joinList(columns));
-      }
-      const int tc = table->index("t"), c = table->index(name);
-      std::size_t hint = 0;
-      for (std::size_t i = 0; i < n; ++i) trial.model[s].push_back(interpolate(*table, tc, c, data_.t[i], &hint));
-    }
+    trial.model = signalsOf(result, n);
     trial.ok = true;
   } catch (const MissingColumn&) {
     throw;
