@@ -91,9 +91,7 @@ std::vector<double> globalStart(const ResidualBatch& evaluate, const std::vector
 
 std::string percent(double v) { return formatNumber(std::round(v * 1000.0) / 10.0) + " %"; }
 
-// Correlated pairs, keys the data do not determine, estimates on a bound, and the combination the
-// data determine worst when JᵀJ is (near) singular (docs/identify.md, "Warnings").
-void addWarnings(IdentifyResult& res, const std::vector<bool>& no_effect, bool singular) {
+void addCorrelationWarnings(IdentifyResult& res) {
   const std::size_t p = res.keys.size();
   for (std::size_t a = 0; a < p; ++a)
     for (std::size_t b = a + 1; b < p; ++b) {
@@ -105,40 +103,56 @@ void addWarnings(IdentifyResult& res, const std::vector<bool>& no_effect, bool s
                                     "): the fit trades one for the other; fix one with --set or measure a signal "
                                     "that separates them"});
     }
+}
+
+// A key the signals do not change with, or known to worse than 50 %, and one on a bound of the
+// search. Returns whether the key is undetermined.
+bool addKeyWarnings(IdentifyResult& res, const IdentifiedKey& key, bool no_effect) {
   bool undetermined = false;
-  for (std::size_t k = 0; k < p; ++k) {
-    const IdentifiedKey& key = res.keys[k];
-    if (no_effect[k]) {
-      undetermined = true;
-      res.warnings.push_back({"undetermined", {key.key}, kNaN,
-                              "the measured signals do not change with " + key.key +
-                                  ": these data cannot determine it (fix it with --set, or measure a signal it moves)"});
-    } else if (!(key.relative_std <= 0.5)) {
-      undetermined = true;
-      res.warnings.push_back({"undetermined", {key.key}, key.relative_std,
-                              "these data do not determine " + key.key + ": its relative standard uncertainty is " +
-                                  (std::isfinite(key.relative_std) ? percent(key.relative_std) : std::string("unbounded")) +
-                                  " (above 50 %)"});
-    }
-    if (key.at_bound)
-      res.warnings.push_back({"at_bound", {key.key}, key.value,
-                              key.key + " = " + key.text + " lies on a bound of the search (" + formatNumber(key.lower) +
-                                  ":" + formatNumber(key.upper) + "): the best value may lie beyond it and its "
-                                  "uncertainty means little; widen --bounds"});
+  if (no_effect) {
+    undetermined = true;
+    res.warnings.push_back({"undetermined", {key.key}, kNaN,
+                            "the measured signals do not change with " + key.key +
+                                ": these data cannot determine it (fix it with --set, or measure a signal it moves)"});
+  } else if (!(key.relative_std <= 0.5)) {
+    undetermined = true;
+    res.warnings.push_back({"undetermined", {key.key}, key.relative_std,
+                            "these data do not determine " + key.key + ": its relative standard uncertainty is " +
+                                (std::isfinite(key.relative_std) ? percent(key.relative_std) : std::string("unbounded")) +
+                                " (above 50 %)"});
   }
-  if (undetermined || singular || res.condition > 1e3) {
-    std::string combo;
-    for (std::size_t k = 0; k < p; ++k) {
-      const double v = res.weakest_direction[k];
-      if (std::abs(v) < 0.01) continue;
-      combo += std::string(combo.empty() ? (v < 0 ? "-" : "") : (v < 0 ? " - " : " + ")) +
-               formatNumber(std::round(std::abs(v) * 100) / 100) + "·Δ" + res.keys[k].key + "/" + res.keys[k].key;
-    }
+  if (key.at_bound)
+    res.warnings.push_back({"at_bound", {key.key}, key.value,
+                            key.key + " = " + key.text + " lies on a bound of the search (" + formatNumber(key.lower) +
+                                ":" + formatNumber(key.upper) + "): the best value may lie beyond it and its "
+                                "uncertainty means little; widen --bounds"});
+  return undetermined;
+}
+
+// The combination of relative changes the data determine worst (the weakest direction).
+std::string weakestCombination(const IdentifyResult& res) {
+  std::string combo;
+  for (std::size_t k = 0; k < res.keys.size(); ++k) {
+    const double v = res.weakest_direction[k];
+    if (std::abs(v) < 0.01) continue;
+    combo += std::string(combo.empty() ? (v < 0 ? "-" : "") : (v < 0 ? " - " : " + ")) +
+             formatNumber(std::round(std::abs(v) * 100) / 100) + "·Δ" + res.keys[k].key + "/" + res.keys[k].key;
+  }
+  return combo;
+}
+
+// Correlated pairs, keys the data do not determine, estimates on a bound, and the combination the
+// data determine worst when JᵀJ is (near) singular (docs/identify.md, "Warnings").
+void addWarnings(IdentifyResult& res, const std::vector<bool>& no_effect, bool singular) {
+  addCorrelationWarnings(res);
+  bool undetermined = false;
+  for (std::size_t k = 0; k < res.keys.size(); ++k)
+    undetermined = addKeyWarnings(res, res.keys[k], no_effect[k]) || undetermined;
+  if (undetermined || singular || res.condition > 1e3)
     res.warnings.push_back({"weak_direction", {}, res.condition,
                             std::string(singular ? "JᵀJ is singular" : "JᵀJ is near singular") + " (condition " +
                                 formatNumber(std::round(res.condition * 10) / 10) +
-                                "): the data determine worst the relative change " + combo});
-  }
+                                "): the data determine worst the relative change " + weakestCombination(res)});
 }
 
 void checkOptions(const IdentifyOptions& o, const MeasuredData& d) {

@@ -186,55 +186,71 @@ double gaussNewtonFall(const NormalEquations& n) {
   return -n.g.dot(gn);
 }
 
-}  // namespace
+// One search: the outcome so far, the damping λ and the residuals' degrees of freedom.
+class LmSearch {
+ public:
+  LmSearch(const ResidualBatch& evaluate, const LmSettings& s) : evaluate_(evaluate), s_(s) {}
 
-LmOutcome levenbergMarquardt(const ResidualBatch& evaluate, const std::vector<double>& u0, const LmSettings& s) {
-  LmOutcome out;
-  out.u = u0;
-  const std::size_t p = u0.size();
-  ResidualEvaluation start = evaluate({u0})[0];
-  if (!start.ok) {
-    out.reason = "the run at the starting values failed: " + start.reason;
-    return out;
+  // The run at the starting values; false when it failed.
+  bool start(const std::vector<double>& u0) {
+    out.u = u0;
+    ResidualEvaluation start = evaluate_({u0})[0];
+    if (!start.ok) {
+      out.reason = "the run at the starting values failed: " + start.reason;
+      return false;
+    }
+    out.r = start.r;
+    out.cost = sumOfSquares(out.r);
+    dof_ = std::max<double>(1.0, static_cast<double>(out.r.size()) - static_cast<double>(u0.size()));
+    return true;
   }
-  out.r = start.r;
-  out.cost = sumOfSquares(out.r);
-  const double dof = std::max<double>(1.0, static_cast<double>(out.r.size()) - static_cast<double>(p));
-  double lambda = 1e-3;
-  for (int it = 1; it <= s.max_iterations; ++it) {
-    if (interrupted(s)) {
+
+  // Iteration `it`: a Jacobian, the normal equations and the damped steps; false when the search
+  // ends here (out.reason says why).
+  bool iterate(int it) {
+    if (interrupted(s_)) {
       out.reason = "interrupted";
-      return out;
+      return false;
     }
     Eigen::MatrixXd J;
-    std::string why;
-    if (!jacobian(evaluate, out.u, out.r, s.fd_step, &J, &why)) {
-      out.reason = why;
-      return out;
-    }
+    if (!jacobian(evaluate_, out.u, out.r, s_.fd_step, &J, &out.reason)) return false;
     out.iterations = it;
     const NormalEquations n = normalEquations(J, out.r);
     if (!(n.dmax > 0)) {
       out.reason = "the residuals do not change with any free key (the Jacobian is zero)";
-      return out;
+      return false;
     }
-    const double sigma2 = std::max(out.cost / dof, std::numeric_limits<double>::min());
+    const double sigma2 = std::max(out.cost / dof_, std::numeric_limits<double>::min());
     const double predicted = gaussNewtonFall(n);
-    if (std::isfinite(predicted) && predicted < s.cost_tolerance * sigma2) {
+    if (std::isfinite(predicted) && predicted < s_.cost_tolerance * sigma2) {
       out.converged = true;
-      out.reason = "converged: the next step would lower the cost by less than " + text(s.cost_tolerance) +
+      out.reason = "converged: the next step would lower the cost by less than " + text(s_.cost_tolerance) +
                    "·σ̂² (iteration " + std::to_string(it) + ")";
-      return out;
+      return false;
     }
-    const DampedStep step = dampedStep(evaluate, s, n.A, n.g, n.D, sigma2, it, lambda, out);
-    if (step == DampedStep::Finished) return out;
-    if (step == DampedStep::NoneLowered) {
-      flatCostVerdict(predicted, sigma2, it, out);
-      return out;
-    }
+    const DampedStep step = dampedStep(evaluate_, s_, n.A, n.g, n.D, sigma2, it, lambda_, out);
+    if (step == DampedStep::NoneLowered) flatCostVerdict(predicted, sigma2, it, out);
+    return step == DampedStep::Lowered;
   }
-  out.reason = "the iteration limit (" + std::to_string(s.max_iterations) + ") was reached before the cost settled";
-  return out;
+
+  LmOutcome out;
+
+ private:
+  const ResidualBatch& evaluate_;
+  const LmSettings& s_;
+  double dof_ = 1.0;
+  double lambda_ = 1e-3;
+};
+
+}  // namespace
+
+LmOutcome levenbergMarquardt(const ResidualBatch& evaluate, const std::vector<double>& u0, const LmSettings& s) {
+  LmSearch search(evaluate, s);
+  if (!search.start(u0)) return search.out;
+  for (int it = 1; it <= s.max_iterations; ++it)
+    if (!search.iterate(it)) return search.out;
+  search.out.reason = "the iteration limit (" + std::to_string(s.max_iterations) + ") was reached before the cost settled";
+  return search.out;
 }
 
 namespace {

@@ -51,7 +51,10 @@ std::string sweepMetricUnit(const std::string& m) {
   return "";
 }
 
-std::string sweepMetricLabel(const std::string& m) {
+namespace {
+
+// What each metric is, in the words of the figures' axes (the others: their names).
+const std::vector<std::pair<std::string, std::string>>& metricDescriptions() {
   static const std::vector<std::pair<std::string, std::string>> names = {
       {"delta", "δ, coefficient of unevenness (Loveikin and Pochka (2007) eq. (12))"},
       {"H", "H, coefficient of dynamics (Loveikin and Pochka (2007) eq. (13))"},
@@ -86,8 +89,14 @@ std::string sweepMetricLabel(const std::string& m) {
       {"crank_pin_equivalent_load", "crank-pin equivalent dynamic load P"},
       {"main_bearing_equivalent_load", "main-bearing equivalent dynamic load P"},
   };
+  return names;
+}
+
+}  // namespace
+
+std::string sweepMetricLabel(const std::string& m) {
   std::string label = escapeUnderscores(m);
-  for (const auto& [k, v] : names)
+  for (const auto& [k, v] : metricDescriptions())
     if (k == m) label = v;
   std::string unit = sweepMetricUnit(m);
   if (unit == "N*m") unit = "N·m";
@@ -160,34 +169,38 @@ std::string noValueBand(const SweepParameter& p, const std::vector<std::pair<dou
   return band.str();
 }
 
-// One parameter: metric m against it, steady points joined, unsteady ones marked, the cells
-// without a value hatched.
-void drawMetricCurve(const SweepOptions& o, const SweepResult& r, const std::string& m, const std::string& out_dir) {
-  PlotSpec spec;
-  spec.title = escapeUnderscores(m + " vs " + o.params[0].key + " (" + o.model + " model)");
-  spec.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
-  spec.ylabel = sweepMetricLabel(m);
-  PlotSeries steady, unsteady;
-  steady.title = "turning, steady state";
-  steady.style = "linespoints pt 7";
-  steady.break_at_nonfinite = true;
-  steady.color = "#1f77b4";
-  unsteady.title = "turning, steady state not reached";
-  unsteady.style = "points pt 9 ps 1.5";
-  unsteady.color = "#ff7f0e";
+// The points in the order of the one parameter's value.
+std::vector<std::size_t> orderOfParameter(const SweepResult& r) {
   std::vector<std::size_t> idx(r.points.size());
   std::iota(idx.begin(), idx.end(), 0);
   std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
     return r.points[a].values[0] < r.points[b].values[0];
   });
-  const auto edges = heatMapCellEdges(o.params[0].values);
+  return idx;
+}
+
+// A metric's curve over one parameter: steady points joined, unsteady ones marked, and the gnuplot
+// commands that hatch the cells without a value.
+struct MetricCurve {
+  PlotSeries steady, unsteady;
   std::ostringstream pre;
   int obj = 1;
   bool any_bad = false;
-  for (std::size_t i : idx) {
-    const SweepPoint& p = r.points[i];
+
+  MetricCurve() {
+    steady.title = "turning, steady state";
+    steady.style = "linespoints pt 7";
+    steady.break_at_nonfinite = true;
+    steady.color = "#1f77b4";
+    unsteady.title = "turning, steady state not reached";
+    unsteady.style = "points pt 9 ps 1.5";
+    unsteady.color = "#ff7f0e";
+  }
+
+  void add(const SweepParameter& param, const std::vector<std::pair<double, double>>& edges, const SweepPoint& p,
+           double y) {
     const SweepPointClass c = classifySweepPoint(p);
-    const double x = p.values[0], y = p.metric(m);
+    const double x = p.values[0];
     steady.x.push_back(x);
     steady.y.push_back(c == SweepPointClass::Steady ? y : kNaN);
     if (c == SweepPointClass::Unsteady) {
@@ -196,18 +209,30 @@ void drawMetricCurve(const SweepOptions& o, const SweepResult& r, const std::str
     }
     if (c == SweepPointClass::NoValue) {
       any_bad = true;
-      pre << noValueBand(o.params[0], edges, x, obj++);
+      pre << noValueBand(param, edges, x, obj++);
     }
   }
+};
+
+// One parameter: metric m against it, steady points joined, unsteady ones marked, the cells
+// without a value hatched.
+void drawMetricCurve(const SweepOptions& o, const SweepResult& r, const std::string& m, const std::string& out_dir) {
+  PlotSpec spec;
+  spec.title = escapeUnderscores(m + " vs " + o.params[0].key + " (" + o.model + " model)");
+  spec.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
+  spec.ylabel = sweepMetricLabel(m);
+  const auto edges = heatMapCellEdges(o.params[0].values);
+  MetricCurve curve;
+  for (std::size_t i : orderOfParameter(r)) curve.add(o.params[0], edges, r.points[i], r.points[i].metric(m));
   // The whole grid stays in view, whichever points have values.
   double xl = INFINITY, xh = -INFINITY;
   for (const auto& e : edges) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
-  if (xh > xl) pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
-  if (any_bad)
-    pre << "set label 1 \"grey hatched: starting, rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
-  spec.preamble = pre.str();
-  spec.series.push_back(steady);
-  if (!unsteady.x.empty()) spec.series.push_back(unsteady);
+  if (xh > xl) curve.pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
+  if (curve.any_bad)
+    curve.pre << "set label 1 \"grey hatched: starting, rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
+  spec.preamble = curve.pre.str();
+  spec.series.push_back(curve.steady);
+  if (!curve.unsteady.x.empty()) spec.series.push_back(curve.unsteady);
   renderPlot(spec, out_dir + "/plot_" + m);
 }
 
