@@ -323,6 +323,27 @@ bool inAnotherBasin(const OptimizeOptions& o, const OptimizeResult& r, bool loca
 // carts, δ = 0.0002 at 60° against 0.1 at 55° and 65°); (3) the local method again from the best
 // design when it lies in another basin than (1)'s. A local method alone converges to the minimum
 // nearest its start (six carts: 97.4° from the middle of 0:180).
+// What auto did, in words: the trial read "polished by bobyqa" where no evaluation was left for it.
+std::string automaticScope(const std::string& local, bool polish, bool elsewhere) {
+  return std::string("global: ") + local + " from the middle of the ranges, a grid over the whole ranges" +
+         (polish      ? ", whose best design lay in another basin and was polished by " + local
+          : elsewhere ? ", whose best design lay in another basin; no evaluations were left to polish it "
+                        "(raise --max-evals), so the optimum is the best grid design"
+                      : " (no better basin found)");
+}
+
+// auto's global stage: the grid over the whole box, as much of it as the evaluations left allow
+// (none after an interrupted first stage).
+void runGridStage(const OptimizeOptions& o, const std::string& first, Search& search, OptimizeResult& r) {
+  std::vector<std::vector<double>> grid = globalGrid(o);
+  const int left = o.max_evals - int(search.requests());
+  if (int(grid.size()) > left) grid.resize(std::size_t(std::max(0, left)));
+  if (first != "interrupted" && !grid.empty()) {
+    evaluateAll(o, grid, search);
+    r.stop_reason += "; grid of " + std::to_string(grid.size()) + " designs over the whole ranges";
+  }
+}
+
 void runAutomatic(const OptimizeOptions& o, const std::string& local, Search& search, OptimizeResult& r) {
   search.method = local;
   const int first_share = std::max(1, o.max_evals / 3);
@@ -334,16 +355,10 @@ void runAutomatic(const OptimizeOptions& o, const std::string& local, Search& se
   std::size_t local_best = 0;
   const bool local_found = bestFeasible(r, &local_best);
   const std::vector<double> x_local = local_found ? r.history[local_best].x : std::vector<double>{};
-  std::vector<std::vector<double>> grid = globalGrid(o);
-  int left = o.max_evals - int(search.requests());
-  if (int(grid.size()) > left) grid.resize(std::size_t(std::max(0, left)));
-  if (first != "interrupted" && !grid.empty()) {
-    evaluateAll(o, grid, search);
-    r.stop_reason += "; grid of " + std::to_string(grid.size()) + " designs over the whole ranges";
-  }
+  runGridStage(o, first, search, r);
   r.found = bestFeasible(r, &r.best);
   const bool elsewhere = inAnotherBasin(o, r, local_found, x_local);
-  left = o.max_evals - int(search.requests());
+  const int left = o.max_evals - int(search.requests());
   const bool interrupted = o.interrupt && o.interrupt->load();
   const bool polish = elsewhere && left > 0 && !interrupted;
   if (polish) {
@@ -353,12 +368,7 @@ void runAutomatic(const OptimizeOptions& o, const std::string& local, Search& se
     r.found = bestFeasible(r, &r.best);
   }
   r.method = local + ", grid" + (polish ? ", " + local : std::string());
-  // Say what happened: the trial read "polished by bobyqa" where no evaluation was left for it.
-  r.scope = std::string("global: ") + local + " from the middle of the ranges, a grid over the whole ranges" +
-            (polish      ? ", whose best design lay in another basin and was polished by " + local
-             : elsewhere ? ", whose best design lay in another basin; no evaluations were left to polish it "
-                           "(raise --max-evals), so the optimum is the best grid design"
-                         : " (no better basin found)");
+  r.scope = automaticScope(local, polish, elsewhere);
 }
 
 // The method asked for by name: a local one from the middle of the box, or a global one followed

@@ -169,6 +169,14 @@ std::string noValueBand(const SweepParameter& p, const std::vector<std::pair<dou
   return band.str();
 }
 
+// The whole grid's extent along one parameter: from the first cell's lower edge to the last one's
+// upper edge, so the edge cells are never clipped.
+std::pair<double, double> gridExtent(const std::vector<std::pair<double, double>>& edges) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const auto& e : edges) lo = std::min(lo, e.first), hi = std::max(hi, e.second);
+  return {lo, hi};
+}
+
 // The points in the order of the one parameter's value.
 std::vector<std::size_t> orderOfParameter(const SweepResult& r) {
   std::vector<std::size_t> idx(r.points.size());
@@ -225,8 +233,7 @@ void drawMetricCurve(const SweepOptions& o, const SweepResult& r, const std::str
   MetricCurve curve;
   for (std::size_t i : orderOfParameter(r)) curve.add(o.params[0], edges, r.points[i], r.points[i].metric(m));
   // The whole grid stays in view, whichever points have values.
-  double xl = INFINITY, xh = -INFINITY;
-  for (const auto& e : edges) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
+  const auto [xl, xh] = gridExtent(edges);
   if (xh > xl) curve.pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
   if (curve.any_bad)
     curve.pre << "set label 1 \"grey hatched: starting, rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
@@ -268,10 +275,9 @@ void addHeatMapCells(const SweepParameter& px, const std::vector<std::pair<doubl
   }
 }
 
-// Two parameters: a heat map of metric m, rows following the first parameter (y), columns the second (x).
-void drawMetricHeatMap(const SweepOptions& o, const SweepResult& r, const std::string& m, const std::string& out_dir) {
-  const SweepParameter &py = o.params[0], &px = o.params[1];
-  const auto ex = heatMapCellEdges(px.values), ey = heatMapCellEdges(py.values);
+// The colour scale's range: the metric's values at the points that have one (a little width when
+// they are all equal).
+std::pair<double, double> colourRange(const SweepResult& r, const std::string& m) {
   double lo = INFINITY, hi = -INFINITY;
   for (const SweepPoint& p : r.points) {
     const double v = p.metric(m);
@@ -279,14 +285,20 @@ void drawMetricHeatMap(const SweepOptions& o, const SweepResult& r, const std::s
       lo = std::min(lo, v), hi = std::max(hi, v);
   }
   if (hi <= lo) hi = lo + std::max(std::abs(lo) * 1e-6, 1e-12);
+  return {lo, hi};
+}
+
+// Two parameters: a heat map of metric m, rows following the first parameter (y), columns the second (x).
+void drawMetricHeatMap(const SweepOptions& o, const SweepResult& r, const std::string& m, const std::string& out_dir) {
+  const SweepParameter &py = o.params[0], &px = o.params[1];
+  const auto ex = heatMapCellEdges(px.values), ey = heatMapCellEdges(py.values);
+  const auto [lo, hi] = colourRange(r, m);
   std::ostringstream pre;
   pre << "set palette rgb 33,13,10\nset cbrange [" << num(lo) << ":" << num(hi) << "]\n"
       << "unset key\nset cblabel \"" << sweepMetricLabel(m) << "\"\nset colorbox\nunset grid\n"
       << "set bmargin 6\nset label 1 \"" << kLegend << "\" at screen 0.02, screen 0.03 left\n";
-  // xrange from the cell edges of every value, so the edge cells are never clipped.
-  double xl = INFINITY, xh = -INFINITY, yl = INFINITY, yh = -INFINITY;
-  for (const auto& e : ex) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
-  for (const auto& e : ey) yl = std::min(yl, e.first), yh = std::max(yh, e.second);
+  const auto [xl, xh] = gridExtent(ex);
+  const auto [yl, yh] = gridExtent(ey);
   pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\nset yrange [" << num(yl) << ":" << num(yh) << "]\n";
   addHeatMapCells(px, ex, ey, r, m, pre);
   PlotSpec spec;
