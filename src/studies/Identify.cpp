@@ -311,6 +311,35 @@ void estimateWithUncertainty(IdentifyResult& res, const std::vector<KeyMap>& key
   failOnKeysWithoutEffect(res, c.no_effect);
 }
 
+// Each signal's RMS error of the model at the estimate over the fitted and the held-out part.
+void fitAndHoldoutErrors(IdentifyResult& res, const ModelRuns::Trial& all, const MeasuredData& d, std::size_t n_fit) {
+  const std::size_t n_all = d.t.size();
+  for (std::size_t s = 0; s < d.signals.size(); ++s) {
+    std::vector<double> diff(n_all);
+    for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - d.signals[s].values[i];
+    res.signals[s].rms_fit = rmsOf(diff, 0, n_fit);
+    res.signals[s].rms_holdout = rmsOf(diff, n_fit, n_all);
+  }
+}
+
+// Each signal's integration error: the run at the estimate against the same run at 1/100 of the
+// accuracy; a warning where it is not far below the signal's noise.
+void integrationErrors(IdentifyResult& res, const ModelRuns::Trial& all, const ModelRuns::Trial& fine) {
+  const std::size_t n_all = res.t.size();
+  for (std::size_t s = 0; s < res.signals.size() && fine.ok; ++s) {
+    std::vector<double> diff(n_all);
+    for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - fine.model[s][i];
+    SignalFit& f = res.signals[s];
+    f.integration_error = rmsOf(diff, 0, n_all);
+    if (f.integration_error > 0.1 * f.sigma)
+      res.warnings.push_back({"integration", {}, f.integration_error,
+                              "the integration's own error in " + f.name + " (RMS " +
+                                  formatNumber(std::round(f.integration_error / f.sigma * 100) / 100) +
+                                  " of its σ) is not far below the measurement noise: tighten --accuracy (now " +
+                                  formatNumber(res.accuracy) + ")"});
+  }
+}
+
 // The run at the estimate over the whole span: the RMS errors of the fitted and the held-out part,
 // and the integration's own error (the same run at 1/100 of the accuracy: far below σ_s it is no
 // part of the residuals; near σ_s the cost is flat within it and the fit cannot settle).
@@ -327,25 +356,8 @@ void holdoutCheck(IdentifyResult& res, ModelRuns& runs, const MeasuredData& d, c
     return;
   }
   res.model_values = all.model;
-  for (std::size_t s = 0; s < d.signals.size(); ++s) {
-    std::vector<double> diff(n_all);
-    for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - d.signals[s].values[i];
-    res.signals[s].rms_fit = rmsOf(diff, 0, n_fit);
-    res.signals[s].rms_holdout = rmsOf(diff, n_fit, n_all);
-  }
-  const ModelRuns::Trial fine = runs.run(u, n_all, res.accuracy / 100);
-  for (std::size_t s = 0; s < d.signals.size() && fine.ok; ++s) {
-    std::vector<double> diff(n_all);
-    for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - fine.model[s][i];
-    SignalFit& f = res.signals[s];
-    f.integration_error = rmsOf(diff, 0, n_all);
-    if (f.integration_error > 0.1 * f.sigma)
-      res.warnings.push_back({"integration", {}, f.integration_error,
-                              "the integration's own error in " + f.name + " (RMS " +
-                                  formatNumber(std::round(f.integration_error / f.sigma * 100) / 100) +
-                                  " of its σ) is not far below the measurement noise: tighten --accuracy (now " +
-                                  formatNumber(res.accuracy) + ")"});
-  }
+  fitAndHoldoutErrors(res, all, d, n_fit);
+  integrationErrors(res, all, runs.run(u, n_all, res.accuracy / 100));
 }
 
 // The runs' accuracy and output step (the data's own spacing at most), and the fitted span: the

@@ -118,10 +118,7 @@ void readRunInto(const Scene& scene, const RunResult& run, const std::vector<std
 
 SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts,
                     const std::vector<double>& values) {
-  SweepPoint p;
-  p.texts = texts;
-  p.values = values;
-  p.metrics.assign(sweepNumericMetrics().size(), kNaN);
+  SweepPoint p = pointNotRun(texts, values);
   const double cpu0 = threadCpuSeconds();
   std::vector<std::string> overrides = o.base_overrides;
   for (std::size_t i = 0; i < o.params.size(); ++i) overrides.push_back(o.params[i].key + "=" + texts[i]);
@@ -151,6 +148,14 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
 SweepPoint runSweepPoint(const SweepOptions& o, const std::vector<std::string>& texts,
                          const std::vector<double>& values) {
   return o.run_point ? o.run_point(texts, values) : runPoint(o, texts, values);
+}
+
+SweepPoint pointNotRun(const std::vector<std::string>& texts, const std::vector<double>& values) {
+  SweepPoint p;
+  p.texts = texts;
+  p.values = values;
+  p.metrics.assign(sweepNumericMetrics().size(), kNaN);
+  return p;
 }
 
 bool SweepParameter::numeric() const {

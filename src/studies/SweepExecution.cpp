@@ -77,12 +77,8 @@ int runOnThreads(const SweepOptions& o, const std::vector<std::size_t>& todo, Co
 
 // Every design as a point not yet run: its values, its metrics NaN.
 std::vector<SweepPoint> pointsNotYetRun(const SweepDesigns& d) {
-  std::vector<SweepPoint> points(d.texts.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    points[i].texts = d.texts[i];
-    points[i].values = d.values[i];
-    points[i].metrics.assign(sweepNumericMetrics().size(), std::numeric_limits<double>::quiet_NaN());
-  }
+  std::vector<SweepPoint> points;
+  for (std::size_t i = 0; i < d.texts.size(); ++i) points.push_back(pointNotRun(d.texts[i], d.values[i]));
   return points;
 }
 
