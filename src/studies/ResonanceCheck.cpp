@@ -292,6 +292,25 @@ void judgeFirstEstimate(RunResonance* v) {
   }
 }
 
+// The verdict by the modal analysis (the one made for the run, else a light one): stability from
+// its Floquet multipliers; for an elastic coupling its warnings and the first estimate against them.
+void judgeByModalAnalysis(RunResonance* v, const Scene& scene, const modes::ModesReport* analysis) {
+  v->modal = std::make_shared<const modes::ModesReport>(analysis ? *analysis : lightAnalysis(scene));
+  const modes::ModesReport& r = *v->modal;
+  v->modal_made = r.steady.found && !r.frozen.empty() && r.frozen[0].ok;
+  if (!v->modal_made) {
+    markAnalysisNotMade(v, r);
+    return;
+  }
+  v->analysis_omega = r.steady.omega_mean;
+  v->stability = r.steady.verdict.text;
+  v->max_multiplier_modulus = r.steady.verdict.max_modulus;
+  v->stability_reason = "Floquet multipliers of the drive linearized about its steady motion (reduced model)";
+  if (!v->elastic) return;
+  judgeByModalWarnings(v, r);
+  judgeFirstEstimate(v);
+}
+
 }  // namespace
 
 RunResonance judgeRunResonance(const Scene& scene, const RunState& st, const modes::ModesReport* analysis) {
@@ -311,20 +330,7 @@ RunResonance judgeRunResonance(const Scene& scene, const RunState& st, const mod
     markRigidCoupling(&v, analysis != nullptr);
     if (!analysis) return v;
   }
-  v.modal = std::make_shared<const modes::ModesReport>(analysis ? *analysis : lightAnalysis(scene));
-  const modes::ModesReport& r = *v.modal;
-  v.modal_made = r.steady.found && !r.frozen.empty() && r.frozen[0].ok;
-  if (!v.modal_made) {
-    markAnalysisNotMade(&v, r);
-    return v;
-  }
-  v.analysis_omega = r.steady.omega_mean;
-  v.stability = r.steady.verdict.text;
-  v.max_multiplier_modulus = r.steady.verdict.max_modulus;
-  v.stability_reason = "Floquet multipliers of the drive linearized about its steady motion (reduced model)";
-  if (!v.elastic) return v;
-  judgeByModalWarnings(&v, r);
-  judgeFirstEstimate(&v);
+  judgeByModalAnalysis(&v, scene, analysis);
   return v;
 }
 

@@ -118,12 +118,27 @@ nlohmann::json executionJson(const SweepOptions& o, const FinishedPoints& f, int
           {"point_budget_cpu_seconds", o.point_budget}};
 }
 
+// The points of todo: over the MPI ranks (rank 0's dispatch time into *dispatcher_busy), else on
+// this process's threads. Returns the threads per rank.
+int computePoints(const SweepOptions& o, const std::vector<std::size_t>& todo,
+                  const std::function<SweepPoint(std::size_t)>& compute, FinishedPoints& finished,
+                  double* dispatcher_busy) {
+  if (!o.mpi) return runOnThreads(o, todo, compute, finished);
+  *dispatcher_busy = runMpiSweep(todo, compute, std::ref(finished), o.dispatcher_computes, o.interrupt);
+  return 1;
+}
+
+void markNotRunAsInterrupted(std::vector<SweepPoint>& points) {
+  for (SweepPoint& p : points)
+    if (p.status == "not run") p.status = "not run (interrupted)";
+}
+
 }  // namespace
 
 std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& d, SweepResult& result) {
   const auto wall0 = std::chrono::steady_clock::now();
   std::vector<SweepPoint> points = pointsNotYetRun(d);
-  auto compute = [&](std::size_t i) {
+  const std::function<SweepPoint(std::size_t)> compute = [&](std::size_t i) {
     return o.point_budget > 0 ? runSweepPointWithBudget(o, d.texts[i], d.values[i], o.point_budget)
                               : runSweepPoint(o, d.texts[i], d.values[i]);
   };
@@ -135,20 +150,13 @@ std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& 
   if (rank0) start = resumeSweep(o, d, points);
   FinishedPoints finished{o, points, start.progress.get(), std::vector<std::size_t>(std::size_t(world.size), 0),
                           start.resumed, start.resumed, 0, {}};
-  int threads = 1;
   double dispatcher_busy = 0;
-  if (o.mpi) {
-    dispatcher_busy = runMpiSweep(start.todo, compute, std::ref(finished), o.dispatcher_computes, o.interrupt);
-  } else {
-    threads = runOnThreads(o, start.todo, compute, finished);
-  }
+  const int threads = computePoints(o, start.todo, compute, finished, &dispatcher_busy);
   if (start.setup_error) std::rethrow_exception(start.setup_error);
 
   result.output_rank = rank0;
   if (!rank0) return {};
-  if (o.interrupt && o.interrupt->load())
-    for (SweepPoint& p : points)
-      if (p.status == "not run") p.status = "not run (interrupted)";
+  if (o.interrupt && o.interrupt->load()) markNotRunAsInterrupted(points);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   result.execution = executionJson(o, finished, o.mpi ? 1 : threads, wall);
   if (o.mpi) result.execution["dispatcher_busy_seconds"] = dispatcher_busy;

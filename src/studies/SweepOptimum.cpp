@@ -92,6 +92,20 @@ SweepOptimum findOptimum(const std::vector<SweepParameter>& params,
   return opt;
 }
 
+namespace {
+
+// What the run at the vertex says about the parabola's estimate.
+std::string vertexRunNote(const SweepVertex& v, const SweepPoint& run) {
+  if (!v.usable)
+    return "run, not usable: " + (run.complete ? "the crank is " + run.motion + (run.steady ? "" : ", no steady state")
+                                               : run.status);
+  if (v.holds) return "run; the parabola's estimate holds within the integration tolerance";
+  if (v.lower) return "run; lower than the parabola's estimate: the metric is no parabola between the grid points";
+  return "run; the parabola's estimate does not hold: the minimum is a kink or lies between grid points";
+}
+
+}  // namespace
+
 void judgeVertexRun(SweepOptimum& opt, const std::vector<SweepPoint>& points, const SweepPoint& run, double accuracy) {
   SweepVertex& v = opt.vertex;
   if (!opt.found || !v.available) return;
@@ -112,15 +126,7 @@ void judgeVertexRun(SweepOptimum& opt, const std::vector<SweepPoint>& points, co
     opt.value = v.value;
     opt.steady = run.steady;
   }
-  if (!v.usable)
-    v.note = "run, not usable: " + (run.complete ? "the crank is " + run.motion + (run.steady ? "" : ", no steady state")
-                                                 : run.status);
-  else if (v.holds)
-    v.note = "run; the parabola's estimate holds within the integration tolerance";
-  else if (v.lower)
-    v.note = "run; lower than the parabola's estimate: the metric is no parabola between the grid points";
-  else
-    v.note = "run; the parabola's estimate does not hold: the minimum is a kink or lies between grid points";
+  v.note = vertexRunNote(v, run);
 }
 
 namespace {
