@@ -413,10 +413,23 @@ LmSettings lmSettings(const IdentifyOptions& o, const std::vector<KeyMap>& keys,
   return lm;
 }
 
-std::vector<double> scaledStart(const std::vector<KeyMap>& keys) {
+// Where the local fit starts: the keys' starting values, or with --global the best design of a
+// global search from them.
+std::vector<double> searchStart(const IdentifyOptions& o, const std::vector<KeyMap>& keys,
+                                const ResidualBatch& evaluate) {
   std::vector<double> u0(keys.size());
   for (std::size_t k = 0; k < keys.size(); ++k) u0[k] = keys[k].toScaled(keys[k].info.start);
+  // The data's columns are checked by the first run, before any search (a missing column throws).
+  if (o.global) u0 = globalStart(evaluate, u0, o.interrupt);
   return u0;
+}
+
+IdentifyResult resultHeading(const IdentifyOptions& o, const Scene& base, const MeasuredData& d) {
+  IdentifyResult res;
+  res.scene = o.scene_path.empty() ? base.name : o.scene_path;
+  res.model = o.model;
+  res.data_file = d.file;
+  return res;
 }
 
 // σ_s = the RMS residual of each estimated signal at the first optimum (before the refit).
@@ -451,10 +464,7 @@ IdentifyResult runIdentify(const IdentifyOptions& o) {
   const Scene base = parseSceneInput(input, o.base_overrides);
   const std::vector<KeyMap> keys = identify::resolveKeys(o, sceneParameterRows(input, o.base_overrides));
 
-  IdentifyResult res;
-  res.scene = o.scene_path.empty() ? base.name : o.scene_path;
-  res.model = o.model;
-  res.data_file = d.file;
+  IdentifyResult res = resultHeading(o, base, d);
   const std::size_t n_fit = runGridAndFittedSpan(o, d, base, keys.size(), res);
 
   ModelRuns runs(o, d, input, keys, res.accuracy, res.output_step);
@@ -463,10 +473,7 @@ IdentifyResult runIdentify(const IdentifyOptions& o) {
   const ResidualBatch evaluate = weightedResidualBatch(runs, d, sigma, n_fit);
   int fit_number = 1;
   const LmSettings lm = lmSettings(o, keys, &fit_number);
-  std::vector<double> u0 = scaledStart(keys);
-  // The data's columns are checked by the first run, before any search (a missing column throws).
-  if (o.global) u0 = globalStart(evaluate, u0, o.interrupt);
-  LmOutcome fit = levenbergMarquardt(evaluate, u0, lm);
+  LmOutcome fit = levenbergMarquardt(evaluate, searchStart(o, keys, evaluate), lm);
   res.iterations = fit.iterations;
   if (fit.converged && std::find(given.begin(), given.end(), false) != given.end()) {
     reestimateSigmas(fit, given, n_fit, sigma);

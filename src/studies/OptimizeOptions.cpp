@@ -85,6 +85,22 @@ void validateOptimizeOptions(const OptimizeOptions& o) {
   validateMethod(o);
 }
 
+namespace {
+
+// A constraint's bound: the whole text one finite number.
+bool readBound(const std::string& value, double* bound) {
+  if (value.empty()) return false;
+  std::size_t used = 0;
+  try {
+    *bound = std::stod(value, &used);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return used == value.size() && std::isfinite(*bound);
+}
+
+}  // namespace
+
 OptimizeConstraint parseConstraint(const std::string& text) {
   OptimizeConstraint c;
   c.text = text;
@@ -98,16 +114,7 @@ OptimizeConstraint parseConstraint(const std::string& text) {
     throw std::invalid_argument("--constraint '" + text + "': expected METRIC<=VALUE or METRIC>=VALUE, e.g. 'delta<=0.05'");
   c.metric = trim(text.substr(0, at));
   const std::string value = trim(text.substr(at + 2));
-  std::size_t used = 0;
-  bool ok = !c.metric.empty() && !value.empty();
-  if (ok) {
-    try {
-      c.bound = std::stod(value, &used);
-    } catch (const std::exception&) {
-      ok = false;
-    }
-  }
-  if (!ok || used != value.size() || !std::isfinite(c.bound))
+  if (c.metric.empty() || !readBound(value, &c.bound))
     throw std::invalid_argument("--constraint '" + text + "': expected METRIC<=VALUE or METRIC>=VALUE with a number, "
                                 "e.g. 'delta<=0.05'");
   return c;

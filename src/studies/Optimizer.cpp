@@ -78,13 +78,7 @@ class Search {
   // The design at u, run now unless already evaluated. Thread-safe: the runs of parallel local
   // searches (multistart) proceed side by side; history, cache and bounds are guarded.
   OptimizeEvaluation evaluate(const std::vector<double>& u) {
-    OptimizeEvaluation e;
-    for (std::size_t k = 0; k < u.size(); ++k) {
-      const SampleRange& p = o_.params[k];
-      const double x = p.lower + std::clamp(u[k], 0.0, 1.0) * (p.upper - p.lower);
-      e.texts.push_back(formatNumber(x));
-      e.x.push_back(std::stod(e.texts.back()));  // the value the run used
-    }
+    OptimizeEvaluation e = designAt(u);
     {
       std::lock_guard<std::mutex> lock(mu_);
       ++r_.requests;
@@ -93,18 +87,7 @@ class Search {
     }
     e.point = runSweepPoint(sweep_, e.texts, e.x);
     judge(e);
-    std::lock_guard<std::mutex> lock(mu_);
-    const auto hit = cache_.find(e.texts);  // another search may have run it meanwhile
-    if (hit != cache_.end()) return r_.history[hit->second];
-    r_.history.push_back(e);
-    const std::size_t index = r_.history.size() - 1;
-    cache_.emplace(e.texts, index);
-    if (e.run_ok) {
-      lo_ = std::min(lo_, e.objective);
-      hi_ = std::max(hi_, e.objective);
-    }
-    if (o_.on_evaluation) o_.on_evaluation(r_.history.back(), index + 1);
-    return e;
+    return keep(e);
   }
 
   std::size_t requests() {
@@ -151,6 +134,35 @@ class Search {
   OptimizeResult& result() { return r_; }
 
  private:
+  // The design at scaled point u: each parameter's value as --set applies it, and that value.
+  OptimizeEvaluation designAt(const std::vector<double>& u) const {
+    OptimizeEvaluation e;
+    for (std::size_t k = 0; k < u.size(); ++k) {
+      const SampleRange& p = o_.params[k];
+      const double x = p.lower + std::clamp(u[k], 0.0, 1.0) * (p.upper - p.lower);
+      e.texts.push_back(formatNumber(x));
+      e.x.push_back(std::stod(e.texts.back()));  // the value the run used
+    }
+    return e;
+  }
+
+  // A judged evaluation into the history and the cache (unless another search ran it meanwhile),
+  // the usable objectives' range widened, and the caller told.
+  OptimizeEvaluation keep(const OptimizeEvaluation& e) {
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto hit = cache_.find(e.texts);  // another search may have run it meanwhile
+    if (hit != cache_.end()) return r_.history[hit->second];
+    r_.history.push_back(e);
+    const std::size_t index = r_.history.size() - 1;
+    cache_.emplace(e.texts, index);
+    if (e.run_ok) {
+      lo_ = std::min(lo_, e.objective);
+      hi_ = std::max(hi_, e.objective);
+    }
+    if (o_.on_evaluation) o_.on_evaluation(r_.history.back(), index + 1);
+    return e;
+  }
+
   // The objective: the caller's function (of usable runs only), the minimised parameter's value,
   // or the metric.
   double objectiveOf(const OptimizeEvaluation& e, bool usable) const {
