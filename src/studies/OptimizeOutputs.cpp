@@ -26,9 +26,8 @@ nlohmann::json evaluationJson(const OptimizeOptions& o, const OptimizeEvaluation
           {"steady_state_reached", e.point.steady}, {"cpu_seconds", jsonNumber(e.point.cpu_seconds)}};
 }
 
-}  // namespace
-
-nlohmann::json optimizeJson(const OptimizeOptions& o, const OptimizeResult& r) {
+// What was asked: the scene, model, overrides, the quantity minimised, constraints and ranges.
+nlohmann::json optimizeQuestionJson(const OptimizeOptions& o) {
   nlohmann::json j;
   j["scene"] = o.scene_path;
   j["model"] = o.model;
@@ -38,6 +37,13 @@ nlohmann::json optimizeJson(const OptimizeOptions& o, const OptimizeResult& r) {
   for (const OptimizeConstraint& c : o.constraints) j["constraints"].push_back(c.text);
   j["parameters"] = nlohmann::json::array();
   for (const SampleRange& p : o.params) j["parameters"].push_back({{"key", p.key}, {"lower", p.lower}, {"upper", p.upper}});
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json optimizeJson(const OptimizeOptions& o, const OptimizeResult& r) {
+  nlohmann::json j = optimizeQuestionJson(o);
   j["method"] = r.method;
   j["scope"] = r.scope;
   j["evaluations"] = r.history.size();

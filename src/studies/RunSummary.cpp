@@ -123,6 +123,14 @@ void addKeysWithoutEffect(const Scene& scene, const RunResult& run, nlohmann::js
                                   " (why for each: summary.json keys_without_effect)");
 }
 
+// The runs that check the flywheel's estimate, and with `by_runs` the flywheel sized by runs.
+void addFlywheelChecks(const Scene& scene, const std::string& model, bool by_runs, nlohmann::json& summary) {
+  if (!(summary.contains("sizing") && summary["sizing"].is_object() && summary["sizing"]["flywheel"].is_object()))
+    return;
+  summary["sizing"]["flywheel"]["check_by_runs"] = flywheelChecks(summary);  // the runs that check its estimate
+  if (by_runs) addFlywheelByRuns(scene, model, summary);
+}
+
 // The console's share of the summary: the run's warnings (the first run_warnings) apart from the
 // resonance warnings, and the verdict's lines.
 void passMessages(const nlohmann::json& summary, std::size_t run_warnings, const RunResonance& verdict,
@@ -147,11 +155,7 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
           : nlohmann::json(std::filesystem::absolute(options.scene_file).lexically_normal().string());
   summary["overrides"] = options.overrides;
   summary["motor_fit"] = motorFitJson(scene);
-  if (summary.contains("sizing") && summary["sizing"].is_object() && summary["sizing"]["flywheel"].is_object())
-  {
-    summary["sizing"]["flywheel"]["check_by_runs"] = flywheelChecks(summary);  // the runs that check its estimate
-    if (options.flywheel_by_runs) addFlywheelByRuns(scene, run.model, summary);
-  }
+  addFlywheelChecks(scene, run.model, options.flywheel_by_runs, summary);
   if (!summary.contains("warnings") || !summary["warnings"].is_array()) summary["warnings"] = nlohmann::json::array();
   for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
   addKeysWithoutEffect(scene, run, summary);

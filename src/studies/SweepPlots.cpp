@@ -243,6 +243,16 @@ void drawMetricCurve(const SweepOptions& o, const SweepResult& r, const std::str
   renderPlot(spec, out_dir + "/plot_" + m);
 }
 
+// A cell's value as gnuplot label `lab` at the cell's centre (x, y).
+std::string cellLabel(int lab, double v, double x, double y) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  std::ostringstream label;
+  label << "set label " << lab << " \"" << buf << "\" at " << num(x) << "," << num(y)
+        << " center front font 'Sans,8'\n";
+  return label.str();
+}
+
 // The heat map's cells (gnuplot objects): coloured by the value, hatched where there is none,
 // overlaid where the steady state was not reached, labelled with the value up to 150 points.
 // `ex`, `ey`: the cells' edges along x and y.
@@ -266,12 +276,7 @@ void addHeatMapCells(const SweepParameter& px, const std::vector<std::pair<doubl
     pre << "set object " << obj++ << " " << rect << " fc palette cb " << num(v) << " fs solid 1.0 noborder\n";
     if (c == SweepPointClass::Unsteady)
       pre << "set object " << obj++ << " " << rect << " fc rgb '#000000' fs transparent pattern 5 noborder\n";
-    if (labels) {
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "%.3g", v);
-      pre << "set label " << lab++ << " \"" << buf << "\" at " << num(0.5 * (x0 + x1)) << ","
-          << num(0.5 * (y0 + y1)) << " center front font 'Sans,8'\n";
-    }
+    if (labels) pre << cellLabel(lab++, v, 0.5 * (x0 + x1), 0.5 * (y0 + y1));
   }
 }
 
@@ -286,6 +291,16 @@ std::pair<double, double> colourRange(const SweepResult& r, const std::string& m
   }
   if (hi <= lo) hi = lo + std::max(std::abs(lo) * 1e-6, 1e-12);
   return {lo, hi};
+}
+
+// One invisible point that uses the palette, so the colour box is drawn.
+PlotSeries paletteAnchor(double x, double y, double lo) {
+  PlotSeries anchor;
+  anchor.title = "";
+  anchor.style = "points pt 7 ps 0 lc palette cb " + num(lo);
+  anchor.x = {x};
+  anchor.y = {y};
+  return anchor;
 }
 
 // Two parameters: a heat map of metric m, rows following the first parameter (y), columns the second (x).
@@ -308,12 +323,7 @@ void drawMetricHeatMap(const SweepOptions& o, const SweepResult& r, const std::s
   spec.width = 900;
   spec.height = 680;
   spec.preamble = pre.str();
-  PlotSeries anchor;  // one invisible point that uses the palette, so the colour box is drawn
-  anchor.title = "";
-  anchor.style = "points pt 7 ps 0 lc palette cb " + num(lo);
-  anchor.x = {px.values[0]};
-  anchor.y = {py.values[0]};
-  spec.series.push_back(anchor);
+  spec.series.push_back(paletteAnchor(px.values[0], py.values[0], lo));
   renderPlot(spec, out_dir + "/heatmap_" + m);
 }
 
