@@ -78,6 +78,35 @@ py::object toPython(const nlohmann::json& j) {
   }
 }
 
+namespace {
+
+// A dict as a YAML flow mapping; its keys must be text.
+std::string yamlMapText(py::handle v) {
+  std::string s = "{";
+  bool first = true;
+  for (auto item : v.cast<py::dict>()) {
+    if (!py::isinstance<py::str>(item.first))
+      throw py::type_error("scene keys are text, got a key of type " +
+                           py::str(py::type::handle_of(item.first).attr("__name__")).cast<std::string>());
+    s += (first ? "" : ", ") + textScalar(item.first.cast<std::string>()) + ": " + yamlValueText(item.second);
+    first = false;
+  }
+  return s + "}";
+}
+
+// A list or tuple as a YAML flow sequence.
+std::string yamlListText(py::handle v) {
+  std::string s = "[";
+  bool first = true;
+  for (auto item : v) {
+    s += (first ? "" : ", ") + yamlValueText(item);
+    first = false;
+  }
+  return s + "]";
+}
+
+}  // namespace
+
 std::string yamlValueText(py::handle v) {
   if (v.is_none()) return "null";
   if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "true" : "false";
@@ -86,32 +115,16 @@ std::string yamlValueText(py::handle v) {
   if (py::isinstance<py::int_>(v)) return py::str(v).cast<std::string>();
   if (py::isinstance<py::float_>(v)) return floatText(v.cast<double>());
   if (py::isinstance<py::str>(v)) return textScalar(v.cast<std::string>());
-  if (py::isinstance<py::dict>(v)) {
-    std::string s = "{";
-    bool first = true;
-    for (auto item : v.cast<py::dict>()) {
-      if (!py::isinstance<py::str>(item.first))
-        throw py::type_error("scene keys are text, got a key of type " +
-                             py::str(py::type::handle_of(item.first).attr("__name__")).cast<std::string>());
-      s += (first ? "" : ", ") + textScalar(item.first.cast<std::string>()) + ": " + yamlValueText(item.second);
-      first = false;
-    }
-    return s + "}";
-  }
-  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
-    std::string s = "[";
-    bool first = true;
-    for (auto item : v) {
-      s += (first ? "" : ", ") + yamlValueText(item);
-      first = false;
-    }
-    return s + "]";
-  }
+  if (py::isinstance<py::dict>(v)) return yamlMapText(v);
+  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) return yamlListText(v);
   throw py::type_error("a scene value must be a number, text, true/false, None, a list or a dict, got " +
                        py::str(py::type::handle_of(v).attr("__name__")).cast<std::string>());
 }
 
-py::dict tableToPython(const Table& t) {
+namespace {
+
+// The table's values as a rows × columns float array.
+py::array_t<double> valuesArray(const Table& t) {
   const py::ssize_t rows = static_cast<py::ssize_t>(t.rows.size());
   const py::ssize_t cols = static_cast<py::ssize_t>(t.columns.size());
   py::array_t<double> values({rows, cols});
@@ -120,6 +133,13 @@ py::dict tableToPython(const Table& t) {
     const std::vector<double>& row = t.rows[static_cast<std::size_t>(i)];
     for (py::ssize_t k = 0; k < cols; ++k) m(i, k) = row[static_cast<std::size_t>(k)];
   }
+  return values;
+}
+
+}  // namespace
+
+py::dict tableToPython(const Table& t) {
+  py::array_t<double> values = valuesArray(t);
   py::list names, units;
   for (const std::string& c : t.columns) {
     // A column that carries its unit ("slip[-]", as the motor's and the modes' tables do): bare

@@ -89,21 +89,26 @@ std::string writeRun(const RunData& d, const std::string& out_dir, bool figures)
   return text;
 }
 
-// The run as Python sees it: its status, tables, summary, text and page, and its files.
-void bindRunData(py::module_& m) {
-  py::class_<RunData>(m, "RunData")
-      .def_property_readonly("scene", [](const RunData& d) { return d.scene; })
+// The run's modal analysis as text ("" without one).
+std::string runModesText(const RunData& d) {
+  return d.modal ? modes::modesText(d.modal->report, modes::runStabilityNotApplicable(d.summary)) : std::string();
+}
+
+// The run's status and warnings.
+void bindRunStatus(py::class_<RunData>& c) {
+  c.def_property_readonly("scene", [](const RunData& d) { return d.scene; })
       .def_property_readonly("model", [](const RunData& d) { return d.run.model; })
       .def_property_readonly("complete", [](const RunData& d) { return d.run.stats.complete; })
       .def_property_readonly("status", [](const RunData& d) { return d.run.stats.status; })
       .def_property_readonly("run_warnings", [](const RunData& d) { return d.messages.run_warnings; })
       .def_property_readonly("resonance_warnings", [](const RunData& d) { return d.messages.resonance_warnings; })
-      .def_property_readonly("resonance_verdict", [](const RunData& d) { return d.messages.resonance_verdict; })
-      .def_property_readonly("has_modes", [](const RunData& d) { return d.modal != nullptr; })
-      .def("modes_text",
-           [](const RunData& d) {
-             return d.modal ? modes::modesText(d.modal->report, modes::runStabilityNotApplicable(d.summary)) : std::string();
-           })
+      .def_property_readonly("resonance_verdict", [](const RunData& d) { return d.messages.resonance_verdict; });
+}
+
+// The run's modal analysis (simulate(modes=True)): its text and tables, None without one.
+void bindRunModes(py::class_<RunData>& c) {
+  c.def_property_readonly("has_modes", [](const RunData& d) { return d.modal != nullptr; })
+      .def("modes_text", &runModesText)
       .def("frozen",
            [](const RunData& d) {
              return d.modal ? py::object(tableToPython(modes::frozenTable(d.modal->report))) : py::object(py::none());
@@ -118,8 +123,12 @@ void bindRunData(py::module_& m) {
            [](const RunData& d) {
              return d.modal && d.modal->spectrum.ok ? py::object(tableToPython(modes::spectrumTable(d.modal->spectrum)))
                                                      : py::object(py::none());
-           })
-      .def("timeseries", [](const RunData& d) { return tableToPython(d.run.timeseries); })
+           });
+}
+
+// The run's tables, summary, text and page, and its files.
+void bindRunOutputs(py::class_<RunData>& c) {
+  c.def("timeseries", [](const RunData& d) { return tableToPython(d.run.timeseries); })
       .def("reactions",
            [](const RunData& d) { return d.run.reactions.columns.empty() ? py::object(py::none()) : py::object(tableToPython(d.run.reactions)); })
       .def("crank_speed_extrema",
@@ -127,18 +136,23 @@ void bindRunData(py::module_& m) {
       .def("summary", [](const RunData& d) { return toPython(d.summary); })
       .def("text",
            [](const RunData& d) {
-             return summaryText(d.summary) + startUpText(d.summary) + sizingText(d.summary) +
-                    (d.modal ? modes::modesText(d.modal->report, modes::runStabilityNotApplicable(d.summary)) : "");
+             return summaryText(d.summary) + startUpText(d.summary) + sizingText(d.summary) + runModesText(d);
            })
       .def("html",
            [](const RunData& d) {
              return runStatusHtml(d.summary) + summaryMetricsHtml(d.summary) + sizingSectionHtml(d.summary) +
                     startUpSectionHtml(d.summary) + reactionsTableHtml(d.summary, d.run.reactions.columns) +
-                    (d.modal ? "<pre>" + htmlEscape(modes::modesText(d.modal->report, modes::runStabilityNotApplicable(d.summary))) +
-                                   "</pre>"
-                             : std::string());
+                    (d.modal ? "<pre>" + htmlEscape(runModesText(d)) + "</pre>" : std::string());
            })
       .def("write", &writeRun, py::arg("out_dir"), py::arg("figures") = false);
+}
+
+// The run as Python sees it: its status, tables, summary, text and page, and its files.
+void bindRunData(py::module_& m) {
+  py::class_<RunData> c(m, "RunData");
+  bindRunStatus(c);
+  bindRunModes(c);
+  bindRunOutputs(c);
 }
 
 // simulate: one run of a scene in memory, interruptible by Ctrl-C.
@@ -163,6 +177,22 @@ void bindSimulate(py::module_& m) {
       py::arg("scene"), py::arg("model"), py::arg("modes") = false);
 }
 
+// compare(): both models on the same scene and their comparison, interruptible by Ctrl-C.
+py::tuple compareScene(const PyScene& scene) {
+  std::atomic<bool> stop{false};
+  bool interrupted = false;
+  CompareData c = runInterruptible(
+      [&scene, &stop] {
+        CompareControl control;
+        control.interrupt = &stop;
+        ModelComparison mc = runComparison(scene.scene(), control);
+        RunData mb = summarized(scene, mc.multibody), red = summarized(scene, mc.reduced);
+        return CompareData{scene, std::move(mc), std::move(mb), std::move(red)};
+      },
+      stop, &interrupted);
+  return py::make_tuple(std::move(c), interrupted);
+}
+
 // compare: both models on the same scene, and their comparison.
 void bindComparison(py::module_& m) {
   py::class_<CompareData>(m, "CompareData")
@@ -172,23 +202,7 @@ void bindComparison(py::module_& m) {
       .def("json", [](const CompareData& c) { return toPython(comparisonJson(c.comparison)); })
       .def("text", [](const CompareData& c) { return comparisonText(c.comparison); });
 
-  m.def(
-      "compare",
-      [](const PyScene& scene) {
-        std::atomic<bool> stop{false};
-        bool interrupted = false;
-        CompareData c = runInterruptible(
-            [&scene, &stop] {
-              CompareControl control;
-              control.interrupt = &stop;
-              ModelComparison mc = runComparison(scene.scene(), control);
-              RunData mb = summarized(scene, mc.multibody), red = summarized(scene, mc.reduced);
-              return CompareData{scene, std::move(mc), std::move(mb), std::move(red)};
-            },
-            stop, &interrupted);
-        return py::make_tuple(std::move(c), interrupted);
-      },
-      py::arg("scene"));
+  m.def("compare", &compareScene, py::arg("scene"));
 }
 
 }  // namespace

@@ -111,25 +111,31 @@ std::string functionName(py::handle fn, const std::string& fallback) {
   return name == "<lambda>" ? fallback : name;
 }
 
+// The sweep's parameters: designs given row by row (design_keys), else a grid of (key, values) pairs.
+void setSweepParameters(SweepOptions& o, const py::list& params, const std::vector<std::string>& design_keys,
+                        const py::list& design_rows) {
+  if (design_keys.empty()) {
+    for (auto item : params) {
+      const py::tuple kv = item.cast<py::tuple>();
+      o.params.push_back(sweepParameter(kv[0].cast<std::string>(), kv[1]));
+    }
+    return;
+  }
+  for (const std::string& k : design_keys) requireSceneKey("sweep: parameter " + k, k);
+  for (auto row : design_rows) {
+    std::vector<std::string> texts;
+    for (auto v : row) texts.push_back(yamlValueText(v));
+    o.designs.push_back(texts);
+  }
+  o.params = designParameters(design_keys, o.designs);
+}
+
 // The study of `rollerdyn sweep`: a grid of --values per parameter, or designs given row by row.
 py::tuple sweepStudy(const PyScene& scene, const py::list& params, const std::vector<std::string>& design_keys,
                      const py::list& design_rows, const std::string& model, const std::string& minimize, int threads) {
   SweepOptions o;
   setScene(o, scene);
-  if (!design_keys.empty()) {
-    for (const std::string& k : design_keys) requireSceneKey("sweep: parameter " + k, k);
-    for (auto row : design_rows) {
-      std::vector<std::string> texts;
-      for (auto v : row) texts.push_back(yamlValueText(v));
-      o.designs.push_back(texts);
-    }
-    o.params = designParameters(design_keys, o.designs);
-  } else {
-    for (auto item : params) {
-      const py::tuple kv = item.cast<py::tuple>();
-      o.params.push_back(sweepParameter(kv[0].cast<std::string>(), kv[1]));
-    }
-  }
+  setSweepParameters(o, params, design_keys, design_rows);
   o.model = model;
   o.minimize = minimize;
   o.threads = threads;
@@ -139,6 +145,18 @@ py::tuple sweepStudy(const PyScene& scene, const py::list& params, const std::ve
   const SweepResult r = runInterruptible([&o] { return runSweep(o); }, stop, &interrupted);
   return py::make_tuple(studyTableToPython(sweepTable(o, r)), toPython(sweepOptimumJson(o, r)),
                         toPython(r.execution), interrupted);
+}
+
+// A constraint given as a Python function of the run's row: it holds where the function is <= 0.
+OptimizeConstraint functionConstraint(const py::handle& c, OptimizeOptions& o, const std::shared_ptr<CallbackError>& failure,
+                                      std::atomic<bool>* stop) {
+  OptimizeConstraint k;
+  k.metric = functionName(c, "constraint " + std::to_string(o.constraints.size() + 1));
+  k.upper = true;
+  k.bound = 0;
+  k.text = k.metric + "(row)<=0";
+  k.value = pythonFunction(c.ptr(), "the constraint " + k.metric, &o, failure, stop);
+  return k;
 }
 
 // The optimizer's objective and constraints: metric names and bounds as on the command line, or
@@ -157,13 +175,7 @@ void setObjectiveAndConstraints(OptimizeOptions& o, const py::object& minimize, 
     if (py::isinstance<py::str>(c)) {
       o.constraints.push_back(parseConstraint(c.cast<std::string>()));
     } else if (PyCallable_Check(c.ptr())) {
-      OptimizeConstraint k;
-      k.metric = functionName(c, "constraint " + std::to_string(o.constraints.size() + 1));
-      k.upper = true;
-      k.bound = 0;
-      k.text = k.metric + "(row)<=0";
-      k.value = pythonFunction(c.ptr(), "the constraint " + k.metric, &o, failure, stop);
-      o.constraints.push_back(std::move(k));
+      o.constraints.push_back(functionConstraint(c, o, failure, stop));
     } else {
       throw py::type_error("optimize: each constraint is 'METRIC<=VALUE', 'METRIC>=VALUE' or a function of "
                            "the run's row that is <= 0 where the constraint holds");
@@ -197,6 +209,16 @@ py::tuple optimizeStudy(const PyScene& scene, const std::vector<std::tuple<std::
                         interrupted);
 }
 
+// Per signal: measured and model on the measured times (empty lists without them).
+py::dict signalCurves(const IdentifyResult& r) {
+  py::dict curves;
+  for (std::size_t s = 0; s < r.signals.size(); ++s)
+    curves[py::str(r.signals[s].name)] =
+        py::make_tuple(r.data_values.empty() ? std::vector<double>{} : r.data_values[s],
+                       r.model_values.empty() ? std::vector<double>{} : r.model_values[s]);
+  return curves;
+}
+
 // The study of `rollerdyn identify`: scene keys fitted to measured signals.
 py::tuple identifyStudy(const PyScene& scene, const std::string& data_path, const std::string& data_text,
                         const std::vector<std::string>& signals, const std::vector<std::string>& free,
@@ -220,12 +242,7 @@ py::tuple identifyStudy(const PyScene& scene, const std::string& data_path, cons
   o.interrupt = &stop;
   bool interrupted = false;
   const IdentifyResult r = runInterruptible([&o] { return runIdentify(o); }, stop, &interrupted);
-  py::dict curves;  // per signal: measured and model on the measured times
-  for (std::size_t s = 0; s < r.signals.size(); ++s)
-    curves[py::str(r.signals[s].name)] =
-        py::make_tuple(r.data_values.empty() ? std::vector<double>{} : r.data_values[s],
-                       r.model_values.empty() ? std::vector<double>{} : r.model_values[s]);
-  return py::make_tuple(toPython(identifyJson(o, r)), r.t, curves, describeIdentify(r), interrupted);
+  return py::make_tuple(toPython(identifyJson(o, r)), r.t, signalCurves(r), describeIdentify(r), interrupted);
 }
 
 }  // namespace

@@ -69,31 +69,35 @@ Table camProfileTable(const Scene& sc, int samples) {
   return t;
 }
 
-DriveResponse driveResponse(const Scene& sc, const RunResult& run) {
-  DriveResponse r;
-  r.drive = toString(sc.drive);
-  r.status = run.stats.status;
-  r.complete = run.stats.complete;
-  const SteadyState ss = detectSteadyState(run, sc.simulation.steady_window_revolutions);
-  r.steady = ss.reached;
-  const Table& ts = run.timeseries;
-  const int it = ts.index("t"), iw = ts.index("omega_crank"), ix = ts.index("x_cart_1"),
-            iv = ts.index("v_cart_1"), ia = ts.index("a_cart_1"), ic = ts.index("coupling_torque"),
-            im = ts.index("motor_torque"), iphi = ts.index("phi_crank");
-  const std::size_t b = ss.row_begin, e = ss.row_end;
-  if (e <= b + 2) {
-    r.status += "; no steady-state window";
-    return r;
-  }
+namespace {
+
+// The steady window's rows [b, e): mean crank speed (from the crank angle), half-cycle time, δ and stroke.
+void windowSpeedAndStroke(const Table& ts, std::size_t b, std::size_t e, DriveResponse& r) {
+  const int it = ts.index("t"), iw = ts.index("omega_crank"), ix = ts.index("x_cart_1"), iphi = ts.index("phi_crank");
   double wmin = 1e300, wmax = -1e300, xmin = 1e300, xmax = -1e300;
-  r.coupling_torque_max = -1e300;
-  r.coupling_torque_min = 1e300;
   for (std::size_t k = b; k < e; ++k) {
     const auto& row = ts.rows[k];
     wmin = std::min(wmin, row[iw]);
     wmax = std::max(wmax, row[iw]);
     xmin = std::min(xmin, row[ix]);
     xmax = std::max(xmax, row[ix]);
+  }
+  const double span_t = ts.rows[e - 1][it] - ts.rows[b][it];
+  r.omega_mean = (ts.rows[e - 1][iphi] - ts.rows[b][iphi]) / span_t;
+  r.t3 = M_PI / r.omega_mean;
+  r.delta = (wmax - wmin) / r.omega_mean;
+  r.stroke = xmax - xmin;
+}
+
+// The steady window's peaks: cart velocity, acceleration and jerk (central differences of the
+// acceleration), coupling torque range, largest |motor torque|.
+void windowPeaks(const Table& ts, std::size_t b, std::size_t e, DriveResponse& r) {
+  const int it = ts.index("t"), iv = ts.index("v_cart_1"), ia = ts.index("a_cart_1"),
+            ic = ts.index("coupling_torque"), im = ts.index("motor_torque");
+  r.coupling_torque_max = -1e300;
+  r.coupling_torque_min = 1e300;
+  for (std::size_t k = b; k < e; ++k) {
+    const auto& row = ts.rows[k];
     r.velocity_peak = std::max(r.velocity_peak, std::abs(row[iv]));
     r.accel_peak = std::max(r.accel_peak, std::abs(row[ia]));
     r.coupling_torque_max = std::max(r.coupling_torque_max, row[ic]);
@@ -104,25 +108,42 @@ DriveResponse driveResponse(const Scene& sc, const RunResult& run) {
       r.jerk_peak = std::max(r.jerk_peak, std::abs((next[ia] - prev[ia]) / (next[it] - prev[it])));
     }
   }
-  const double span_t = ts.rows[e - 1][it] - ts.rows[b][it];
-  r.omega_mean = (ts.rows[e - 1][iphi] - ts.rows[b][iphi]) / span_t;
-  r.t3 = M_PI / r.omega_mean;
-  r.delta = (wmax - wmin) / r.omega_mean;
-  r.stroke = xmax - xmin;
-  const Table& rx = run.reactions;
-  if (rx.has("t") && rx.has("F_rod_1")) {
-    const int rt = rx.index("t"), rf = rx.index("F_rod_1");
-    r.force_max = -1e300;
-    r.force_min = 1e300;
-    for (const auto& row : rx.rows) {
-      if (row[rt] < ss.t_begin - 1e-12 || row[rt] > ss.t_end + 1e-12) continue;
-      r.force_max = std::max(r.force_max, row[rf]);
-      r.force_min = std::min(r.force_min, row[rf]);
-    }
-    r.force_abs_peak = std::max(std::abs(r.force_max), std::abs(r.force_min));
-  } else {  // simulation.reactions: false: the drive force is not computed
+}
+
+// The drive force (the rod's, F_rod_1) over the steady window, from the reactions.
+void driveForceRange(const Table& rx, const SteadyState& ss, DriveResponse& r) {
+  if (!(rx.has("t") && rx.has("F_rod_1"))) {  // simulation.reactions: false: the drive force is not computed
     r.force_max = r.force_min = r.force_abs_peak = std::nan("");
+    return;
   }
+  const int rt = rx.index("t"), rf = rx.index("F_rod_1");
+  r.force_max = -1e300;
+  r.force_min = 1e300;
+  for (const auto& row : rx.rows) {
+    if (row[rt] < ss.t_begin - 1e-12 || row[rt] > ss.t_end + 1e-12) continue;
+    r.force_max = std::max(r.force_max, row[rf]);
+    r.force_min = std::min(r.force_min, row[rf]);
+  }
+  r.force_abs_peak = std::max(std::abs(r.force_max), std::abs(r.force_min));
+}
+
+}  // namespace
+
+DriveResponse driveResponse(const Scene& sc, const RunResult& run) {
+  DriveResponse r;
+  r.drive = toString(sc.drive);
+  r.status = run.stats.status;
+  r.complete = run.stats.complete;
+  const SteadyState ss = detectSteadyState(run, sc.simulation.steady_window_revolutions);
+  r.steady = ss.reached;
+  const std::size_t b = ss.row_begin, e = ss.row_end;
+  if (e <= b + 2) {
+    r.status += "; no steady-state window";
+    return r;
+  }
+  windowPeaks(run.timeseries, b, e, r);
+  windowSpeedAndStroke(run.timeseries, b, e, r);
+  driveForceRange(run.reactions, ss, r);
   kinematicPeaks(sc, r.omega_mean, &r.accel_peak_kinematic, &r.jerk_peak_kinematic);
   return r;
 }
@@ -146,14 +167,18 @@ CamVsCrank compareCamWithCrank(const std::string& scene_path, const std::vector<
   return out;
 }
 
-std::string camVsCrankCsv(const CamVsCrank& c) {
-  struct Row {
-    const char* name;
-    const char* unit;
-    double cam, crank;
-  };
+namespace {
+
+// One quantity of the comparison, cam beside crank.
+struct CamVsCrankRow {
+  const char* name;
+  const char* unit;
+  double cam, crank;
+};
+
+std::vector<CamVsCrankRow> camVsCrankRows(const CamVsCrank& c) {
   const DriveResponse &a = c.cam, &b = c.crank;
-  const Row rows[] = {
+  return {
       {"omega_mean", "rad/s", a.omega_mean, b.omega_mean},
       {"half_cycle_time_t3", "s", a.t3, b.t3},
       {"delta", "-", a.delta, b.delta},
@@ -170,9 +195,14 @@ std::string camVsCrankCsv(const CamVsCrank& c) {
       {"drive_force_min", "N", a.force_min, b.force_min},
       {"drive_force_abs_peak", "N", a.force_abs_peak, b.force_abs_peak},
   };
+}
+
+}  // namespace
+
+std::string camVsCrankCsv(const CamVsCrank& c) {
   std::ostringstream os;
   os << "quantity,unit,cam,crank,ratio_cam_over_crank\n";
-  for (const Row& r : rows) {
+  for (const CamVsCrankRow& r : camVsCrankRows(c)) {
     char buf[256];
     std::snprintf(buf, sizeof buf, "%s,%s,%.6g,%.6g,%.4g\n", r.name, r.unit, r.cam, r.crank,
                   r.crank != 0 ? r.cam / r.crank : kNaN);

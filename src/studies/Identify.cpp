@@ -91,9 +91,7 @@ std::vector<double> globalStart(const ResidualBatch& evaluate, const std::vector
 
 std::string percent(double v) { return formatNumber(std::round(v * 1000.0) / 10.0) + " %"; }
 
-// Correlated pairs, keys the data do not determine, estimates on a bound, and the combination the
-// data determine worst when JᵀJ is (near) singular (docs/identify.md, "Warnings").
-void addWarnings(IdentifyResult& res, const std::vector<bool>& no_effect, bool singular) {
+void addCorrelationWarnings(IdentifyResult& res) {
   const std::size_t p = res.keys.size();
   for (std::size_t a = 0; a < p; ++a)
     for (std::size_t b = a + 1; b < p; ++b) {
@@ -105,40 +103,56 @@ void addWarnings(IdentifyResult& res, const std::vector<bool>& no_effect, bool s
                                     "): the fit trades one for the other; fix one with --set or measure a signal "
                                     "that separates them"});
     }
+}
+
+// A key the signals do not change with, or known to worse than 50 %, and one on a bound of the
+// search. Returns whether the key is undetermined.
+bool addKeyWarnings(IdentifyResult& res, const IdentifiedKey& key, bool no_effect) {
   bool undetermined = false;
-  for (std::size_t k = 0; k < p; ++k) {
-    const IdentifiedKey& key = res.keys[k];
-    if (no_effect[k]) {
-      undetermined = true;
-      res.warnings.push_back({"undetermined", {key.key}, kNaN,
-                              "the measured signals do not change with " + key.key +
-                                  ": these data cannot determine it (fix it with --set, or measure a signal it moves)"});
-    } else if (!(key.relative_std <= 0.5)) {
-      undetermined = true;
-      res.warnings.push_back({"undetermined", {key.key}, key.relative_std,
-                              "these data do not determine " + key.key + ": its relative standard uncertainty is " +
-                                  (std::isfinite(key.relative_std) ? percent(key.relative_std) : std::string("unbounded")) +
-                                  " (above 50 %)"});
-    }
-    if (key.at_bound)
-      res.warnings.push_back({"at_bound", {key.key}, key.value,
-                              key.key + " = " + key.text + " lies on a bound of the search (" + formatNumber(key.lower) +
-                                  ":" + formatNumber(key.upper) + "): the best value may lie beyond it and its "
-                                  "uncertainty means little; widen --bounds"});
+  if (no_effect) {
+    undetermined = true;
+    res.warnings.push_back({"undetermined", {key.key}, kNaN,
+                            "the measured signals do not change with " + key.key +
+                                ": these data cannot determine it (fix it with --set, or measure a signal it moves)"});
+  } else if (!(key.relative_std <= 0.5)) {
+    undetermined = true;
+    res.warnings.push_back({"undetermined", {key.key}, key.relative_std,
+                            "these data do not determine " + key.key + ": its relative standard uncertainty is " +
+                                (std::isfinite(key.relative_std) ? percent(key.relative_std) : std::string("unbounded")) +
+                                " (above 50 %)"});
   }
-  if (undetermined || singular || res.condition > 1e3) {
-    std::string combo;
-    for (std::size_t k = 0; k < p; ++k) {
-      const double v = res.weakest_direction[k];
-      if (std::abs(v) < 0.01) continue;
-      combo += std::string(combo.empty() ? (v < 0 ? "-" : "") : (v < 0 ? " - " : " + ")) +
-               formatNumber(std::round(std::abs(v) * 100) / 100) + "·Δ" + res.keys[k].key + "/" + res.keys[k].key;
-    }
+  if (key.at_bound)
+    res.warnings.push_back({"at_bound", {key.key}, key.value,
+                            key.key + " = " + key.text + " lies on a bound of the search (" + formatNumber(key.lower) +
+                                ":" + formatNumber(key.upper) + "): the best value may lie beyond it and its "
+                                "uncertainty means little; widen --bounds"});
+  return undetermined;
+}
+
+// The combination of relative changes the data determine worst (the weakest direction).
+std::string weakestCombination(const IdentifyResult& res) {
+  std::string combo;
+  for (std::size_t k = 0; k < res.keys.size(); ++k) {
+    const double v = res.weakest_direction[k];
+    if (std::abs(v) < 0.01) continue;
+    combo += std::string(combo.empty() ? (v < 0 ? "-" : "") : (v < 0 ? " - " : " + ")) +
+             formatNumber(std::round(std::abs(v) * 100) / 100) + "·Δ" + res.keys[k].key + "/" + res.keys[k].key;
+  }
+  return combo;
+}
+
+// Correlated pairs, keys the data do not determine, estimates on a bound, and the combination the
+// data determine worst when JᵀJ is (near) singular (docs/identify.md, "Warnings").
+void addWarnings(IdentifyResult& res, const std::vector<bool>& no_effect, bool singular) {
+  addCorrelationWarnings(res);
+  bool undetermined = false;
+  for (std::size_t k = 0; k < res.keys.size(); ++k)
+    undetermined = addKeyWarnings(res, res.keys[k], no_effect[k]) || undetermined;
+  if (undetermined || singular || res.condition > 1e3)
     res.warnings.push_back({"weak_direction", {}, res.condition,
                             std::string(singular ? "JᵀJ is singular" : "JᵀJ is near singular") + " (condition " +
                                 formatNumber(std::round(res.condition * 10) / 10) +
-                                "): the data determine worst the relative change " + combo});
-  }
+                                "): the data determine worst the relative change " + weakestCombination(res)});
 }
 
 void checkOptions(const IdentifyOptions& o, const MeasuredData& d) {
@@ -199,65 +213,130 @@ std::vector<double> differenceSteps(const std::vector<KeyMap>& keys) {
   return steps;
 }
 
-// The estimate into res.keys, and at it the central-difference Jacobian in the keys' own units,
-// the covariance, correlations and warnings (a failure beside the estimate leaves no uncertainty).
-void estimateWithUncertainty(IdentifyResult& res, const std::vector<KeyMap>& keys, const LmOutcome& fit,
-                             const std::vector<double>& step, const ResidualBatch& evaluate) {
-  const std::size_t p = keys.size();
-  std::vector<double> x(p), scale(p);
-  for (std::size_t k = 0; k < p; ++k) {
+// The estimate into res.keys: each key's value as written, and whether it sits on a bound.
+void recordEstimates(IdentifyResult& res, const std::vector<KeyMap>& keys, const LmOutcome& fit) {
+  for (std::size_t k = 0; k < keys.size(); ++k) {
     IdentifiedKey info = keys[k].info;
     info.text = formatNumber(keys[k].toValue(fit.u[k]));
     info.value = std::stod(info.text);
     info.at_bound = fit.u[k] <= 1e-6 || fit.u[k] >= 1 - 1e-6;
-    x[k] = info.value;
-    scale[k] = std::abs(info.value) > 0 ? std::abs(info.value) : info.upper - info.lower;
     res.keys.push_back(info);
   }
-  if (fit.r.empty()) return;
+}
+
+// The designs beside the estimate, one step up and one down in each scaled key (within [0, 1]).
+std::vector<std::vector<double>> centralDifferencePoints(const std::vector<double>& u, const std::vector<double>& step) {
   std::vector<std::vector<double>> points;
-  for (std::size_t k = 0; k < p; ++k) {
-    std::vector<double> a = fit.u, b = fit.u;
-    a[k] = std::min(1.0, fit.u[k] + step[k]);
-    b[k] = std::max(0.0, fit.u[k] - step[k]);
+  for (std::size_t k = 0; k < u.size(); ++k) {
+    std::vector<double> a = u, b = u;
+    a[k] = std::min(1.0, u[k] + step[k]);
+    b[k] = std::max(0.0, u[k] - step[k]);
     points.push_back(a);
     points.push_back(b);
   }
+  return points;
+}
+
+// The central-difference Jacobian at the estimate in the keys' own units (a failed side: the
+// estimate itself). Empty, with `failure` why, when both runs beside a key failed.
+std::vector<std::vector<double>> jacobianAtEstimate(const IdentifyResult& res, const std::vector<KeyMap>& keys,
+                                                    const LmOutcome& fit, const std::vector<double>& step,
+                                                    const ResidualBatch& evaluate, std::string* failure) {
+  const std::vector<std::vector<double>> points = centralDifferencePoints(fit.u, step);
   const std::vector<ResidualEvaluation> e = evaluate(points);
-  std::vector<std::vector<double>> J(fit.r.size(), std::vector<double>(p, 0.0));
-  for (std::size_t k = 0; k < p; ++k) {
-    const ResidualEvaluation* hi = e[2 * k].ok ? &e[2 * k] : nullptr;  // a failed side: the estimate itself
+  std::vector<std::vector<double>> J(fit.r.size(), std::vector<double>(keys.size(), 0.0));
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    const ResidualEvaluation* hi = e[2 * k].ok ? &e[2 * k] : nullptr;
     const ResidualEvaluation* lo = e[2 * k + 1].ok ? &e[2 * k + 1] : nullptr;
     if (!hi && !lo) {
-      res.converged = false;
-      res.convergence = "the runs beside the estimate failed (" + e[2 * k].reason + "): no uncertainty";
-      return;
+      *failure = e[2 * k].reason;
+      return {};
     }
-    const double x_hi = hi ? keys[k].toValue(points[2 * k][k]) : x[k];
-    const double x_lo = lo ? keys[k].toValue(points[2 * k + 1][k]) : x[k];
+    const double x_hi = hi ? keys[k].toValue(points[2 * k][k]) : res.keys[k].value;
+    const double x_lo = lo ? keys[k].toValue(points[2 * k + 1][k]) : res.keys[k].value;
     for (std::size_t i = 0; i < fit.r.size(); ++i)
       J[i][k] = ((hi ? hi->r[i] : fit.r[i]) - (lo ? lo->r[i] : fit.r[i])) / (x_hi - x_lo);
   }
-  const CovarianceEstimate c = estimateCovariance(J, fit.cost, scale);
+  return J;
+}
+
+// Each key's scale for the covariance: its value, or its range at 0.
+std::vector<double> keyScales(const std::vector<IdentifiedKey>& keys) {
+  std::vector<double> scale;
+  for (const IdentifiedKey& k : keys) scale.push_back(std::abs(k.value) > 0 ? std::abs(k.value) : k.upper - k.lower);
+  return scale;
+}
+
+void recordUncertainty(IdentifyResult& res, const CovarianceEstimate& c) {
   res.sigma_hat2 = c.sigma_hat2;
   res.correlation = c.correlation;
   res.condition = c.condition;
   res.weakest_direction = c.weakest_direction;
-  for (std::size_t k = 0; k < p; ++k) {
+  for (std::size_t k = 0; k < res.keys.size(); ++k) {
     res.keys[k].std = c.std[k];
     res.keys[k].relative_std = res.keys[k].value != 0 ? c.std[k] / std::abs(res.keys[k].value) : kNaN;
   }
-  addWarnings(res, c.no_effect, c.singular);
-  // A key the signals do not change with at all leaves no estimate: not converged. Keys the data
-  // determine poorly (a near-singular JᵀJ, however near) are warnings: how near depends on the
-  // integration's noise in the finite differences, not on the data alone.
+}
+
+// A key the signals do not change with at all leaves no estimate: not converged. Keys the data
+// determine poorly (a near-singular JᵀJ, however near) are warnings: how near depends on the
+// integration's noise in the finite differences, not on the data alone.
+void failOnKeysWithoutEffect(IdentifyResult& res, const std::vector<bool>& no_effect) {
   std::string without_effect;
-  for (std::size_t k = 0; k < p; ++k)
-    if (c.no_effect[k]) without_effect += (without_effect.empty() ? "" : ", ") + res.keys[k].key;
+  for (std::size_t k = 0; k < res.keys.size(); ++k)
+    if (no_effect[k]) without_effect += (without_effect.empty() ? "" : ", ") + res.keys[k].key;
   if (!without_effect.empty() && res.converged) {
     res.converged = false;
     res.convergence = "the data do not determine " + without_effect +
                       ": the measured signals do not change with it (JᵀJ is singular; see the warnings)";
+  }
+}
+
+// The estimate into res.keys, and at it the central-difference Jacobian in the keys' own units,
+// the covariance, correlations and warnings (a failure beside the estimate leaves no uncertainty).
+void estimateWithUncertainty(IdentifyResult& res, const std::vector<KeyMap>& keys, const LmOutcome& fit,
+                             const std::vector<double>& step, const ResidualBatch& evaluate) {
+  recordEstimates(res, keys, fit);
+  if (fit.r.empty()) return;
+  std::string failure;
+  const std::vector<std::vector<double>> J = jacobianAtEstimate(res, keys, fit, step, evaluate, &failure);
+  if (J.empty()) {
+    res.converged = false;
+    res.convergence = "the runs beside the estimate failed (" + failure + "): no uncertainty";
+    return;
+  }
+  const CovarianceEstimate c = estimateCovariance(J, fit.cost, keyScales(res.keys));
+  recordUncertainty(res, c);
+  addWarnings(res, c.no_effect, c.singular);
+  failOnKeysWithoutEffect(res, c.no_effect);
+}
+
+// Each signal's RMS error of the model at the estimate over the fitted and the held-out part.
+void fitAndHoldoutErrors(IdentifyResult& res, const ModelRuns::Trial& all, const MeasuredData& d, std::size_t n_fit) {
+  const std::size_t n_all = d.t.size();
+  for (std::size_t s = 0; s < d.signals.size(); ++s) {
+    std::vector<double> diff(n_all);
+    for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - d.signals[s].values[i];
+    res.signals[s].rms_fit = rmsOf(diff, 0, n_fit);
+    res.signals[s].rms_holdout = rmsOf(diff, n_fit, n_all);
+  }
+}
+
+// Each signal's integration error: the run at the estimate against the same run at 1/100 of the
+// accuracy; a warning where it is not far below the signal's noise.
+void integrationErrors(IdentifyResult& res, const ModelRuns::Trial& all, const ModelRuns::Trial& fine) {
+  const std::size_t n_all = res.t.size();
+  for (std::size_t s = 0; s < res.signals.size() && fine.ok; ++s) {
+    std::vector<double> diff(n_all);
+    for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - fine.model[s][i];
+    SignalFit& f = res.signals[s];
+    f.integration_error = rmsOf(diff, 0, n_all);
+    if (f.integration_error > 0.1 * f.sigma)
+      res.warnings.push_back({"integration", {}, f.integration_error,
+                              "the integration's own error in " + f.name + " (RMS " +
+                                  formatNumber(std::round(f.integration_error / f.sigma * 100) / 100) +
+                                  " of its σ) is not far below the measurement noise: tighten --accuracy (now " +
+                                  formatNumber(res.accuracy) + ")"});
   }
 }
 
@@ -277,25 +356,8 @@ void holdoutCheck(IdentifyResult& res, ModelRuns& runs, const MeasuredData& d, c
     return;
   }
   res.model_values = all.model;
-  for (std::size_t s = 0; s < d.signals.size(); ++s) {
-    std::vector<double> diff(n_all);
-    for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - d.signals[s].values[i];
-    res.signals[s].rms_fit = rmsOf(diff, 0, n_fit);
-    res.signals[s].rms_holdout = rmsOf(diff, n_fit, n_all);
-  }
-  const ModelRuns::Trial fine = runs.run(u, n_all, res.accuracy / 100);
-  for (std::size_t s = 0; s < d.signals.size() && fine.ok; ++s) {
-    std::vector<double> diff(n_all);
-    for (std::size_t i = 0; i < n_all; ++i) diff[i] = all.model[s][i] - fine.model[s][i];
-    SignalFit& f = res.signals[s];
-    f.integration_error = rmsOf(diff, 0, n_all);
-    if (f.integration_error > 0.1 * f.sigma)
-      res.warnings.push_back({"integration", {}, f.integration_error,
-                              "the integration's own error in " + f.name + " (RMS " +
-                                  formatNumber(std::round(f.integration_error / f.sigma * 100) / 100) +
-                                  " of its σ) is not far below the measurement noise: tighten --accuracy (now " +
-                                  formatNumber(res.accuracy) + ")"});
-  }
+  fitAndHoldoutErrors(res, all, d, n_fit);
+  integrationErrors(res, all, runs.run(u, n_all, res.accuracy / 100));
 }
 
 // The runs' accuracy and output step (the data's own spacing at most), and the fitted span: the
@@ -316,27 +378,11 @@ std::size_t runGridAndFittedSpan(const IdentifyOptions& o, const MeasuredData& d
   return n_fit;
 }
 
-}  // namespace
-
-IdentifyResult runIdentify(const IdentifyOptions& o) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  const MeasuredData d = identify::selectSignals(o.data, o.signals);
-  checkOptions(o, d);
-  const SceneInput input = o.scene_input ? *o.scene_input : readSceneInput(o.scene_path);
-  const Scene base = parseSceneInput(input, o.base_overrides);
-  const std::vector<KeyMap> keys = identify::resolveKeys(o, sceneParameterRows(input, o.base_overrides));
-  const std::size_t p = keys.size();
-
-  IdentifyResult res;
-  res.scene = o.scene_path.empty() ? base.name : o.scene_path;
-  res.model = o.model;
-  res.data_file = d.file;
-  const std::size_t n_fit = runGridAndFittedSpan(o, d, base, p, res);
-
-  ModelRuns runs(o, d, input, keys, res.accuracy, res.output_step);
-  std::vector<bool> given;
-  std::vector<double> sigma = startingSigmas(o, d, res, given);
-  const ResidualBatch evaluate = [&](const std::vector<std::vector<double>>& points) {
+// The residuals of a batch of designs, each signal weighted by its noise σ_s (read when the batch
+// runs: the estimated ones change between the two fits).
+ResidualBatch weightedResidualBatch(ModelRuns& runs, const MeasuredData& d, const std::vector<double>& sigma,
+                                    std::size_t n_fit) {
+  return [&runs, &d, &sigma, n_fit](const std::vector<std::vector<double>>& points) {
     std::vector<ResidualEvaluation> out;
     for (ModelRuns::Trial& t : runs.runAll(points, n_fit)) {
       ResidualEvaluation e;
@@ -347,44 +393,95 @@ IdentifyResult runIdentify(const IdentifyOptions& o) {
     }
     return out;
   };
+}
 
+// The search's settings; each iteration reported to o.on_progress as "fit N, iteration I: cost C at
+// KEY=VALUE ..." (*fit_number: 1, then 2 for the refit).
+LmSettings lmSettings(const IdentifyOptions& o, const std::vector<KeyMap>& keys, const int* fit_number) {
   LmSettings lm;
   lm.max_iterations = o.max_iterations;
   lm.interrupt = o.interrupt;
   lm.fd_step = differenceSteps(keys);
-  int fit_number = 1;
-  lm.on_iteration = [&](int it, double cost, const std::vector<double>& u) {
+  lm.on_iteration = [&o, &keys, fit_number](int it, double cost, const std::vector<double>& u) {
     if (!o.on_progress) return;
-    std::string line = "fit " + std::to_string(fit_number) + ", iteration " + std::to_string(it) + ": cost " +
+    std::string line = "fit " + std::to_string(*fit_number) + ", iteration " + std::to_string(it) + ": cost " +
                        formatNumber(cost) + " at";
-    for (std::size_t k = 0; k < p; ++k) line += " " + keys[k].info.key + "=" + formatNumber(keys[k].toValue(u[k]));
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      line += " " + keys[k].info.key + "=" + formatNumber(keys[k].toValue(u[k]));
     o.on_progress(line);
   };
-  std::vector<double> u0(p);
-  for (std::size_t k = 0; k < p; ++k) u0[k] = keys[k].toScaled(keys[k].info.start);
+  return lm;
+}
+
+// Where the local fit starts: the keys' starting values, or with --global the best design of a
+// global search from them.
+std::vector<double> searchStart(const IdentifyOptions& o, const std::vector<KeyMap>& keys,
+                                const ResidualBatch& evaluate) {
+  std::vector<double> u0(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k) u0[k] = keys[k].toScaled(keys[k].info.start);
   // The data's columns are checked by the first run, before any search (a missing column throws).
   if (o.global) u0 = globalStart(evaluate, u0, o.interrupt);
-  LmOutcome fit = levenbergMarquardt(evaluate, u0, lm);
+  return u0;
+}
+
+IdentifyResult resultHeading(const IdentifyOptions& o, const Scene& base, const MeasuredData& d) {
+  IdentifyResult res;
+  res.scene = o.scene_path.empty() ? base.name : o.scene_path;
+  res.model = o.model;
+  res.data_file = d.file;
+  return res;
+}
+
+// σ_s = the RMS residual of each estimated signal at the first optimum (before the refit).
+void reestimateSigmas(const LmOutcome& fit, const std::vector<bool>& given, std::size_t n_fit,
+                      std::vector<double>& sigma) {
+  for (std::size_t s = 0; s < sigma.size(); ++s)
+    if (!given[s]) sigma[s] = std::max(sigma[s] * rmsOf(fit.r, s * n_fit, (s + 1) * n_fit), 1e-9 * sigma[s]);
+}
+
+// The fit's outcome into the result: convergence, residuals, and each signal's noise and samples.
+void recordFit(IdentifyResult& res, const LmOutcome& fit, const std::vector<double>& sigma,
+               const std::vector<bool>& given, std::size_t n_fit, std::size_t n_samples) {
+  res.converged = fit.converged;
+  res.convergence = fit.reason;
+  for (std::size_t s = 0; s < sigma.size(); ++s) {
+    res.signals[s].sigma = sigma[s];
+    res.signals[s].sigma_from = given[s] ? "given" : "estimated";
+    res.signals[s].samples_fit = n_fit;
+    res.signals[s].samples_holdout = n_samples - n_fit;
+  }
+  res.residuals = fit.r.size();
+  res.rss = fit.cost;
+}
+
+}  // namespace
+
+IdentifyResult runIdentify(const IdentifyOptions& o) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const MeasuredData d = identify::selectSignals(o.data, o.signals);
+  checkOptions(o, d);
+  const SceneInput input = o.scene_input ? *o.scene_input : readSceneInput(o.scene_path);
+  const Scene base = parseSceneInput(input, o.base_overrides);
+  const std::vector<KeyMap> keys = identify::resolveKeys(o, sceneParameterRows(input, o.base_overrides));
+
+  IdentifyResult res = resultHeading(o, base, d);
+  const std::size_t n_fit = runGridAndFittedSpan(o, d, base, keys.size(), res);
+
+  ModelRuns runs(o, d, input, keys, res.accuracy, res.output_step);
+  std::vector<bool> given;
+  std::vector<double> sigma = startingSigmas(o, d, res, given);
+  const ResidualBatch evaluate = weightedResidualBatch(runs, d, sigma, n_fit);
+  int fit_number = 1;
+  const LmSettings lm = lmSettings(o, keys, &fit_number);
+  LmOutcome fit = levenbergMarquardt(evaluate, searchStart(o, keys, evaluate), lm);
   res.iterations = fit.iterations;
   if (fit.converged && std::find(given.begin(), given.end(), false) != given.end()) {
-    // σ_s = the RMS residual of each estimated signal at the first optimum, then one refit.
-    for (std::size_t s = 0; s < d.signals.size(); ++s)
-      if (!given[s])
-        sigma[s] = std::max(sigma[s] * rmsOf(fit.r, s * n_fit, (s + 1) * n_fit), 1e-9 * sigma[s]);
+    reestimateSigmas(fit, given, n_fit, sigma);
     fit_number = 2;
     fit = levenbergMarquardt(evaluate, fit.u, lm);
     res.iterations += fit.iterations;
   }
-  res.converged = fit.converged;
-  res.convergence = fit.reason;
-  for (std::size_t s = 0; s < d.signals.size(); ++s) {
-    res.signals[s].sigma = sigma[s];
-    res.signals[s].sigma_from = given[s] ? "given" : "estimated";
-    res.signals[s].samples_fit = n_fit;
-    res.signals[s].samples_holdout = d.t.size() - n_fit;
-  }
-  res.residuals = fit.r.size();
-  res.rss = fit.cost;
+  recordFit(res, fit, sigma, given, n_fit, d.t.size());
   estimateWithUncertainty(res, keys, fit, lm.fd_step, evaluate);
   if (!fit.r.empty()) holdoutCheck(res, runs, d, fit.u, n_fit);
   res.runs = runs.runs();

@@ -66,54 +66,73 @@ double KeyMap::slope(double x) const {
   return info.log_scale ? x * std::log(info.upper / info.lower) : info.upper - info.lower;
 }
 
+namespace {
+
+// The schema's entry of a --free key: a number or a list element of numbers.
+const KeySpec& numericKeySpec(const std::string& key) {
+  const KeySpec* spec = findSceneKeyOrElement(key);
+  if (!spec) {
+    requireSceneKey("identify: --free " + key, key);  // throws with the did-you-mean hint
+    throw std::invalid_argument("identify: --free " + key + ": expected a key of the scene schema");
+  }
+  if (spec->kind != KeyKind::Number && spec->kind != KeyKind::NumberList)
+    throw std::invalid_argument("identify: --free " + key + ": expected a key whose value is a number, got " +
+                                describeExpected(*spec));
+  return *spec;
+}
+
+// The search bounds: --bounds, else the schema's finite range; the search runs in log scale over
+// two decades or more.
+void searchBounds(const IdentifyOptions& o, const KeySpec& spec, IdentifiedKey& info) {
+  const std::string& key = info.key;
+  const auto given = o.bounds.find(key);
+  if (given != o.bounds.end()) {
+    info.lower = given->second.first;
+    info.upper = given->second.second;
+    info.bounds_from = "--bounds";
+  } else {
+    const Range& r = spec.range;
+    if (!std::isfinite(r.lo) || !std::isfinite(r.hi))
+      throw std::invalid_argument("identify: --free " + key + ": the scene schema allows " + describeAllowed(spec) +
+                                  ", no finite range; give bounds with --bounds " + key + "=LOWER:UPPER [" +
+                                  spec.unit + "]");
+    // An open end of the schema's range is no value a run may take: bounds just inside it.
+    const double inset = 1e-9 * (r.hi - r.lo);
+    info.lower = r.lo_inclusive ? r.lo : r.lo + inset;
+    info.upper = r.hi_inclusive ? r.hi : r.hi - inset;
+    info.bounds_from = "schema";
+  }
+  if (!(std::isfinite(info.lower) && std::isfinite(info.upper) && info.lower < info.upper))
+    throw std::invalid_argument("identify: bounds of " + key + ": expected LOWER < UPPER, both finite, got " +
+                                formatNumber(info.lower) + ":" + formatNumber(info.upper));
+  info.log_scale = info.lower > 0 && info.upper / info.lower >= 100.0;
+}
+
+// The search starts from the scene's value (inside the bounds), else from the middle of the bounds.
+double searchStart(const std::vector<SceneParameterRow>& rows, const KeyMap& k) {
+  const double scene_value = startValue(rows, k.info.key);
+  if (std::isfinite(scene_value) && scene_value >= k.info.lower && scene_value <= k.info.upper) return scene_value;
+  if (std::isfinite(scene_value))
+    throw std::invalid_argument("identify: " + k.info.key + ": the scene's value " + formatNumber(scene_value) +
+                                " lies outside the bounds " + formatNumber(k.info.lower) + ":" +
+                                formatNumber(k.info.upper) + "; widen them or --set a starting value inside");
+  return k.toValue(0.5);
+}
+
+}  // namespace
+
 std::vector<KeyMap> resolveKeys(const IdentifyOptions& o, const std::vector<SceneParameterRow>& rows) {
   if (o.free_keys.empty()) throw std::invalid_argument("identify: expected at least one --free key, got none");
   std::vector<KeyMap> keys;
   for (const std::string& key : o.free_keys) {
     for (const KeyMap& k : keys)
       if (k.info.key == key) throw std::invalid_argument("identify: --free " + key + " is given twice");
-    const KeySpec* spec = findSceneKeyOrElement(key);
-    if (!spec) {
-      requireSceneKey("identify: --free " + key, key);  // throws with the did-you-mean hint
-      throw std::invalid_argument("identify: --free " + key + ": expected a key of the scene schema");
-    }
-    if (spec->kind != KeyKind::Number && spec->kind != KeyKind::NumberList)
-      throw std::invalid_argument("identify: --free " + key + ": expected a key whose value is a number, got " +
-                                  describeExpected(*spec));
+    const KeySpec& spec = numericKeySpec(key);
     KeyMap k;
     k.info.key = key;
-    k.info.unit = spec->unit;
-    const auto given = o.bounds.find(key);
-    if (given != o.bounds.end()) {
-      k.info.lower = given->second.first;
-      k.info.upper = given->second.second;
-      k.info.bounds_from = "--bounds";
-    } else {
-      const Range& r = spec->range;
-      if (!std::isfinite(r.lo) || !std::isfinite(r.hi))
-        throw std::invalid_argument("identify: --free " + key + ": the scene schema allows " + describeAllowed(*spec) +
-                                    ", no finite range; give bounds with --bounds " + key + "=LOWER:UPPER [" +
-                                    spec->unit + "]");
-      // An open end of the schema's range is no value a run may take: bounds just inside it.
-      const double inset = 1e-9 * (r.hi - r.lo);
-      k.info.lower = r.lo_inclusive ? r.lo : r.lo + inset;
-      k.info.upper = r.hi_inclusive ? r.hi : r.hi - inset;
-      k.info.bounds_from = "schema";
-    }
-    if (!(std::isfinite(k.info.lower) && std::isfinite(k.info.upper) && k.info.lower < k.info.upper))
-      throw std::invalid_argument("identify: bounds of " + key + ": expected LOWER < UPPER, both finite, got " +
-                                  formatNumber(k.info.lower) + ":" + formatNumber(k.info.upper));
-    k.info.log_scale = k.info.lower > 0 && k.info.upper / k.info.lower >= 100.0;
-    const double scene_value = startValue(rows, key);
-    if (std::isfinite(scene_value) && scene_value >= k.info.lower && scene_value <= k.info.upper) {
-      k.info.start = scene_value;
-    } else if (std::isfinite(scene_value)) {
-      throw std::invalid_argument("identify: " + key + ": the scene's value " + formatNumber(scene_value) +
-                                  " lies outside the bounds " + formatNumber(k.info.lower) + ":" +
-                                  formatNumber(k.info.upper) + "; widen them or --set a starting value inside");
-    } else {
-      k.info.start = k.toValue(0.5);
-    }
+    k.info.unit = spec.unit;
+    searchBounds(o, spec, k.info);
+    k.info.start = searchStart(rows, k);
     keys.push_back(k);
   }
   for (const auto& [key, b] : o.bounds)
@@ -152,6 +171,37 @@ std::string joinList(const std::vector<std::string>& v) {
   return s;
 }
 
+std::vector<std::string> ModelRuns::overridesAt(const std::vector<double>& u, std::size_t n, double accuracy) const {
+  std::vector<std::string> overrides = o_.base_overrides;
+  overrides.push_back("simulation.t_end=" + formatNumber(data_.t[n - 1]));
+  overrides.push_back("simulation.accuracy=" + formatNumber(accuracy > 0 ? accuracy : accuracy_));
+  overrides.push_back("simulation.output_step=" + formatNumber(output_step_));
+  for (std::size_t k = 0; k < keys_.size(); ++k)
+    overrides.push_back(keys_[k].info.key + "=" + formatNumber(keys_[k].toValue(u[k])));
+  return overrides;
+}
+
+std::vector<std::vector<double>> ModelRuns::signalsOf(const RunResult& result, std::size_t n) const {
+  std::vector<std::vector<double>> model(data_.signals.size());
+  for (std::size_t s = 0; s < data_.signals.size(); ++s) {
+    const std::string& name = data_.signals[s].name;
+    const Table* table = result.timeseries.has(name) ? &result.timeseries
+                         : result.reactions.has(name) ? &result.reactions
+                                                      : nullptr;
+    if (!table) {
+      std::vector<std::string> columns = result.timeseries.columns;
+      columns.insert(columns.end(), result.reactions.columns.begin(), result.reactions.columns.end());
+      throw MissingColumn(data_.file + ": column '" + name + "': the " + o_.model +
+                          " model's run writes no such column" + didYouMean(name, columns) +
+                          "; it writes " + joinList(columns));
+    }
+    const int tc = table->index("t"), c = table->index(name);
+    std::size_t hint = 0;
+    for (std::size_t i = 0; i < n; ++i) model[s].push_back(interpolate(*table, tc, c, data_.t[i], &hint));
+  }
+  return model;
+}
+
 ModelRuns::Trial ModelRuns::run(const std::vector<double>& u, std::size_t n, double accuracy) {
   Trial trial;
   if (o_.interrupt && o_.interrupt->load()) {
@@ -159,12 +209,7 @@ ModelRuns::Trial ModelRuns::run(const std::vector<double>& u, std::size_t n, dou
     return trial;
   }
   runs_.fetch_add(1);
-  std::vector<std::string> overrides = o_.base_overrides;
-  overrides.push_back("simulation.t_end=" + formatNumber(data_.t[n - 1]));
-  overrides.push_back("simulation.accuracy=" + formatNumber(accuracy > 0 ? accuracy : accuracy_));
-  overrides.push_back("simulation.output_step=" + formatNumber(output_step_));
-  for (std::size_t k = 0; k < keys_.size(); ++k)
-    overrides.push_back(keys_[k].info.key + "=" + formatNumber(keys_[k].toValue(u[k])));
+  const std::vector<std::string> overrides = overridesAt(u, n, accuracy);
   try {
     const Scene scene = parseSceneInput(input_, overrides);
     RunControl control;
@@ -175,23 +220,7 @@ ModelRuns::Trial ModelRuns::run(const std::vector<double>& u, std::size_t n, dou
       trial.reason = result.stats.status;
       return trial;
     }
-    trial.model.resize(data_.signals.size());
-    for (std::size_t s = 0; s < data_.signals.size(); ++s) {
-      const std::string& name = data_.signals[s].name;
-      const Table* table = result.timeseries.has(name) ? &result.timeseries
-                           : result.reactions.has(name) ? &result.reactions
-                                                        : nullptr;
-      if (!table) {
-        std::vector<std::string> columns = result.timeseries.columns;
-        columns.insert(columns.end(), result.reactions.columns.begin(), result.reactions.columns.end());
-        throw MissingColumn(data_.file + ": column '" + name + "': the " + o_.model +
-                            " model's run writes no such column" + didYouMean(name, columns) +
-                            "; it writes " + joinList(columns));
-      }
-      const int tc = table->index("t"), c = table->index(name);
-      std::size_t hint = 0;
-      for (std::size_t i = 0; i < n; ++i) trial.model[s].push_back(interpolate(*table, tc, c, data_.t[i], &hint));
-    }
+    trial.model = signalsOf(result, n);
     trial.ok = true;
   } catch (const MissingColumn&) {
     throw;

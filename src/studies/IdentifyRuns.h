@@ -14,6 +14,10 @@
 #include "report/SceneTable.h"
 #include "studies/Identify.h"
 
+namespace rollerdyn {
+struct RunResult;
+}
+
 namespace rollerdyn::identify {
 
 // One free key and its map to the scaled parameter u in [0, 1].
@@ -61,6 +65,12 @@ class ModelRuns {
   int failed() const { return failed_.load(); }  // runs that failed or ended early
 
  private:
+  // The scene's overrides of a run at u: the base ones, the span to the n-th measured time, the
+  // accuracy and output step, and the free keys' values.
+  std::vector<std::string> overridesAt(const std::vector<double>& u, std::size_t n, double accuracy) const;
+  // Each measured signal of a finished run on the first n measured times (throws MissingColumn).
+  std::vector<std::vector<double>> signalsOf(const RunResult& result, std::size_t n) const;
+
   const IdentifyOptions& o_;
   const MeasuredData& data_;
   const SceneInput& input_;

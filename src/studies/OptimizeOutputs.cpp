@@ -26,9 +26,8 @@ nlohmann::json evaluationJson(const OptimizeOptions& o, const OptimizeEvaluation
           {"steady_state_reached", e.point.steady}, {"cpu_seconds", jsonNumber(e.point.cpu_seconds)}};
 }
 
-}  // namespace
-
-nlohmann::json optimizeJson(const OptimizeOptions& o, const OptimizeResult& r) {
+// What was asked: the scene, model, overrides, the quantity minimised, constraints and ranges.
+nlohmann::json optimizeQuestionJson(const OptimizeOptions& o) {
   nlohmann::json j;
   j["scene"] = o.scene_path;
   j["model"] = o.model;
@@ -38,6 +37,13 @@ nlohmann::json optimizeJson(const OptimizeOptions& o, const OptimizeResult& r) {
   for (const OptimizeConstraint& c : o.constraints) j["constraints"].push_back(c.text);
   j["parameters"] = nlohmann::json::array();
   for (const SampleRange& p : o.params) j["parameters"].push_back({{"key", p.key}, {"lower", p.lower}, {"upper", p.upper}});
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json optimizeJson(const OptimizeOptions& o, const OptimizeResult& r) {
+  nlohmann::json j = optimizeQuestionJson(o);
   j["method"] = r.method;
   j["scope"] = r.scope;
   j["evaluations"] = r.history.size();
@@ -56,54 +62,74 @@ nlohmann::json optimizeJson(const OptimizeOptions& o, const OptimizeResult& r) {
   return j;
 }
 
+namespace {
+
+// Where each column family of the history table starts.
+struct HistoryColumns {
+  std::size_t evaluation, params, objective, constraints, usable, hold, best, metrics, status, reason, cpu;
+  std::size_t param_count, constraint_count;
+};
+
+std::size_t addColumn(std::vector<StudyColumn>& t, const std::string& name, bool is_text = false) {
+  StudyColumn c;
+  c.name = name;
+  c.is_text = is_text;
+  t.push_back(c);
+  return t.size() - 1;
+}
+
+HistoryColumns historyColumns(const OptimizeOptions& o, std::vector<StudyColumn>& t) {
+  HistoryColumns c;
+  c.evaluation = addColumn(t, "evaluation");
+  c.params = t.size();
+  for (const SampleRange& p : o.params) t[addColumn(t, p.key)].parameter = true;
+  c.objective = addColumn(t, "objective");
+  c.constraints = t.size();
+  for (const OptimizeConstraint& k : o.constraints) addColumn(t, k.text);
+  c.usable = addColumn(t, "usable_run");
+  c.hold = addColumn(t, "constraints_hold");
+  c.best = addColumn(t, "best_so_far");
+  c.metrics = t.size();
+  for (const std::string& m : sweepNumericMetrics()) addColumn(t, m);
+  c.status = addColumn(t, "status", true);
+  c.reason = addColumn(t, "reason", true);
+  c.cpu = addColumn(t, "cpu_seconds");
+  c.param_count = o.params.size();
+  c.constraint_count = o.constraints.size();
+  return c;
+}
+
+// Evaluation i (0-based) as the table's next row; `best`: the best feasible objective so far.
+void appendEvaluation(std::vector<StudyColumn>& t, const HistoryColumns& c, const OptimizeEvaluation& e,
+                      std::size_t i, double best) {
+  t[c.evaluation].numbers.push_back(double(i + 1));
+  for (std::size_t k = 0; k < c.param_count; ++k) {
+    t[c.params + k].texts.push_back(e.texts[k]);
+    t[c.params + k].numbers.push_back(e.x[k]);
+  }
+  t[c.objective].numbers.push_back(e.objective);
+  for (std::size_t j = 0; j < c.constraint_count; ++j)
+    t[c.constraints + j].numbers.push_back(e.constraint_metrics[j]);
+  t[c.usable].numbers.push_back(e.run_ok ? 1 : 0);
+  t[c.hold].numbers.push_back(e.constraints_hold ? 1 : 0);
+  t[c.best].numbers.push_back(best);
+  const auto& names = sweepNumericMetrics();
+  for (std::size_t m = 0; m < names.size(); ++m) t[c.metrics + m].numbers.push_back(e.point.metric(names[m]));
+  t[c.status].texts.push_back(e.point.status);
+  t[c.reason].texts.push_back(e.reason);
+  t[c.cpu].numbers.push_back(e.point.cpu_seconds);
+}
+
+}  // namespace
+
 std::vector<StudyColumn> optimizeHistoryTable(const OptimizeOptions& o, const OptimizeResult& r) {
   std::vector<StudyColumn> t;
-  auto numeric = [&t](const std::string& name, const std::string& unit = "") {
-    StudyColumn c;
-    c.name = name;
-    c.unit = unit;
-    t.push_back(c);
-    return t.size() - 1;
-  };
-  auto text = [&t](const std::string& name) {
-    StudyColumn c;
-    c.name = name;
-    c.is_text = true;
-    t.push_back(c);
-    return t.size() - 1;
-  };
-  const std::size_t evaluation = numeric("evaluation");
-  const std::size_t params = t.size();
-  for (const SampleRange& p : o.params) {
-    const std::size_t i = numeric(p.key);
-    t[i].parameter = true;
-  }
-  const std::size_t objective = numeric("objective");
-  const std::size_t constraints = t.size();
-  for (const OptimizeConstraint& c : o.constraints) numeric(c.text);
-  const std::size_t usable = numeric("usable_run"), hold = numeric("constraints_hold"), best_col = numeric("best_so_far");
-  const std::size_t metrics = t.size();
-  for (const std::string& m : sweepNumericMetrics()) numeric(m);
-  const std::size_t status = text("status"), reason = text("reason"), cpu = numeric("cpu_seconds");
+  const HistoryColumns columns = historyColumns(o, t);
   double best = NAN;
   for (std::size_t i = 0; i < r.history.size(); ++i) {
     const OptimizeEvaluation& e = r.history[i];
     if (e.feasible() && !(e.objective >= best)) best = e.objective;
-    t[evaluation].numbers.push_back(double(i + 1));
-    for (std::size_t k = 0; k < o.params.size(); ++k) {
-      t[params + k].texts.push_back(e.texts[k]);
-      t[params + k].numbers.push_back(e.x[k]);
-    }
-    t[objective].numbers.push_back(e.objective);
-    for (std::size_t j = 0; j < o.constraints.size(); ++j) t[constraints + j].numbers.push_back(e.constraint_metrics[j]);
-    t[usable].numbers.push_back(e.run_ok ? 1 : 0);
-    t[hold].numbers.push_back(e.constraints_hold ? 1 : 0);
-    t[best_col].numbers.push_back(best);
-    const auto& names = sweepNumericMetrics();
-    for (std::size_t m = 0; m < names.size(); ++m) t[metrics + m].numbers.push_back(e.point.metric(names[m]));
-    t[status].texts.push_back(e.point.status);
-    t[reason].texts.push_back(e.reason);
-    t[cpu].numbers.push_back(e.point.cpu_seconds);
+    appendEvaluation(t, columns, e, i, best);
   }
   return t;
 }
@@ -137,6 +163,14 @@ std::string historyCsv(const OptimizeOptions& o, const OptimizeResult& r, std::v
   return csv.str();
 }
 
+// A series of points with its key title.
+PlotSeries pointsSeries(const std::string& title) {
+  PlotSeries s;
+  s.title = title;
+  s.style = "points";
+  return s;
+}
+
 // Convergence: the objective of every usable evaluation, in order, and the best feasible value so far.
 void convergenceFigure(const OptimizeOptions& o, const OptimizeResult& r, const std::vector<double>& best_curve,
                        const std::string& out_dir) {
@@ -145,11 +179,8 @@ void convergenceFigure(const OptimizeOptions& o, const OptimizeResult& r, const 
   spec.xlabel = "evaluation";
   spec.ylabel = escapeUnderscores(sweepParamLabel(o.minimize));
   spec.preamble = "set key below";
-  PlotSeries all, bad, line;
-  all.title = "usable design, constraints hold";
-  all.style = "points";
-  bad.title = "constraint violated (usable run)";
-  bad.style = "points";
+  PlotSeries all = pointsSeries("usable design, constraints hold"), bad = pointsSeries("constraint violated (usable run)");
+  PlotSeries line;
   line.title = "best so far";
   line.style = "lines";
   line.line_width = 2;
@@ -180,13 +211,8 @@ void designsFigure(const OptimizeOptions& o, const OptimizeResult& r, bool self,
   };
   d.ylabel = escapeUnderscores(sweepParamLabel(y_name));
   d.preamble = "set key below";
-  PlotSeries ok, viol, opt;
-  ok.title = "constraints hold";
-  ok.style = "points";
-  viol.title = "infeasible (constraint violated or run not usable)";
-  viol.style = "points";
-  opt.title = "optimum";
-  opt.style = "points";
+  PlotSeries ok = pointsSeries("constraints hold"),
+             viol = pointsSeries("infeasible (constraint violated or run not usable)"), opt = pointsSeries("optimum");
   opt.line_width = 3;
   for (const OptimizeEvaluation& e : r.history) {
     if (o.params.size() == 1 && !e.run_ok) continue;

@@ -12,8 +12,8 @@
 
 #include <nlopt.hpp>
 
-#include "scene/DidYouMean.h"
 #include "studies/OptimizeGrid.h"
+#include "studies/OptimizeOptions.h"
 #include "scene/SceneSchema.h"
 
 namespace rollerdyn {
@@ -21,23 +21,6 @@ namespace rollerdyn {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
-}
-
-bool knownMetric(const std::string& m) {
-  const auto& names = sweepNumericMetrics();
-  return std::find(names.begin(), names.end(), m) != names.end();
-}
-
-std::string metricList() {
-  std::string list;
-  for (const std::string& m : sweepNumericMetrics()) list += (list.empty() ? "" : ", ") + m;
-  return list;
-}
 
 nlopt::algorithm algorithmOf(const std::string& method) {
   if (method == "bobyqa") return nlopt::LN_BOBYQA;
@@ -56,6 +39,22 @@ std::string resultText(nlopt::result r) {
     case nlopt::MAXTIME_REACHED: return "time limit reached";
     default: return "stopped (NLopt result " + std::to_string(int(r)) + ")";
   }
+}
+
+// Why a design's run is no usable answer ("" when it is): it did not complete, did not reach steady
+// state, or the crank does not turn steadily.
+std::string unusableRunReason(const SweepPoint& p) {
+  const double omega_min = p.metric("omega_crank_min");
+  if (!p.complete) return "did not complete: " + p.status;
+  if (!p.steady)
+    return "no steady state by t_end (a longer simulation.t_end, or a start at speed with "
+           "initial.crank_speed, may settle it)";
+  if (!(omega_min > 0)) {
+    std::ostringstream os;
+    os << "the crank does not turn steadily (rocks or stops): omega_crank_min = " << omega_min << " rad/s";
+    return os.str();
+  }
+  return "";
 }
 
 // The search: evaluations in the unit box u in [0,1]^n (x = lower + u·(upper − lower)), so a
@@ -79,13 +78,7 @@ class Search {
   // The design at u, run now unless already evaluated. Thread-safe: the runs of parallel local
   // searches (multistart) proceed side by side; history, cache and bounds are guarded.
   OptimizeEvaluation evaluate(const std::vector<double>& u) {
-    OptimizeEvaluation e;
-    for (std::size_t k = 0; k < u.size(); ++k) {
-      const SampleRange& p = o_.params[k];
-      const double x = p.lower + std::clamp(u[k], 0.0, 1.0) * (p.upper - p.lower);
-      e.texts.push_back(formatNumber(x));
-      e.x.push_back(std::stod(e.texts.back()));  // the value the run used
-    }
+    OptimizeEvaluation e = designAt(u);
     {
       std::lock_guard<std::mutex> lock(mu_);
       ++r_.requests;
@@ -94,18 +87,7 @@ class Search {
     }
     e.point = runSweepPoint(sweep_, e.texts, e.x);
     judge(e);
-    std::lock_guard<std::mutex> lock(mu_);
-    const auto hit = cache_.find(e.texts);  // another search may have run it meanwhile
-    if (hit != cache_.end()) return r_.history[hit->second];
-    r_.history.push_back(e);
-    const std::size_t index = r_.history.size() - 1;
-    cache_.emplace(e.texts, index);
-    if (e.run_ok) {
-      lo_ = std::min(lo_, e.objective);
-      hi_ = std::max(hi_, e.objective);
-    }
-    if (o_.on_evaluation) o_.on_evaluation(r_.history.back(), index + 1);
-    return e;
+    return keep(e);
   }
 
   std::size_t requests() {
@@ -152,33 +134,59 @@ class Search {
   OptimizeResult& result() { return r_; }
 
  private:
-  void judge(OptimizeEvaluation& e) const {
-    const SweepPoint& p = e.point;
-    const double omega_min = p.metric("omega_crank_min");
-    if (!p.complete) {
-      e.reason = "did not complete: " + p.status;
-    } else if (!p.steady) {
-      e.reason = "no steady state by t_end (a longer simulation.t_end, or a start at speed with "
-                 "initial.crank_speed, may settle it)";
-    } else if (!(omega_min > 0)) {
-      std::ostringstream os;
-      os << "the crank does not turn steadily (rocks or stops): omega_crank_min = " << omega_min << " rad/s";
-      e.reason = os.str();
+  // The design at scaled point u: each parameter's value as --set applies it, and that value.
+  OptimizeEvaluation designAt(const std::vector<double>& u) const {
+    OptimizeEvaluation e;
+    for (std::size_t k = 0; k < u.size(); ++k) {
+      const SampleRange& p = o_.params[k];
+      const double x = p.lower + std::clamp(u[k], 0.0, 1.0) * (p.upper - p.lower);
+      e.texts.push_back(formatNumber(x));
+      e.x.push_back(std::stod(e.texts.back()));  // the value the run used
     }
-    const bool usable = e.reason.empty();  // the caller's functions see usable runs only
-    e.objective = kNaN;
-    if (o_.objective) {
-      if (usable) e.objective = o_.objective(e);
-    } else {
-      for (std::size_t k = 0; k < o_.params.size(); ++k)
-        if (o_.params[k].key == o_.minimize) e.objective = e.x[k];
-      if (!std::isfinite(e.objective)) e.objective = p.metric(o_.minimize);
+    return e;
+  }
+
+  // A judged evaluation into the history and the cache (unless another search ran it meanwhile),
+  // the usable objectives' range widened, and the caller told.
+  OptimizeEvaluation keep(const OptimizeEvaluation& e) {
+    std::lock_guard<std::mutex> lock(mu_);
+    const auto hit = cache_.find(e.texts);  // another search may have run it meanwhile
+    if (hit != cache_.end()) return r_.history[hit->second];
+    r_.history.push_back(e);
+    const std::size_t index = r_.history.size() - 1;
+    cache_.emplace(e.texts, index);
+    if (e.run_ok) {
+      lo_ = std::min(lo_, e.objective);
+      hi_ = std::max(hi_, e.objective);
     }
+    if (o_.on_evaluation) o_.on_evaluation(r_.history.back(), index + 1);
+    return e;
+  }
+
+  // The objective: the caller's function (of usable runs only), the minimised parameter's value,
+  // or the metric.
+  double objectiveOf(const OptimizeEvaluation& e, bool usable) const {
+    if (o_.objective) return usable ? o_.objective(e) : kNaN;
+    double objective = kNaN;
+    for (std::size_t k = 0; k < o_.params.size(); ++k)
+      if (o_.params[k].key == o_.minimize) objective = e.x[k];
+    return std::isfinite(objective) ? objective : e.point.metric(o_.minimize);
+  }
+
+  // Each constraint's quantity and its value as NLopt's constraints take it (<= 0 holds).
+  void constraintsOf(OptimizeEvaluation& e, bool usable) const {
     for (const OptimizeConstraint& c : o_.constraints) {
-      const double m = c.value ? (usable ? c.value(e) : kNaN) : p.metric(c.metric);
+      const double m = c.value ? (usable ? c.value(e) : kNaN) : e.point.metric(c.metric);
       e.constraint_metrics.push_back(m);
       e.constraint_values.push_back(c.upper ? m - c.bound : c.bound - m);
     }
+  }
+
+  void judge(OptimizeEvaluation& e) const {
+    e.reason = unusableRunReason(e.point);
+    const bool usable = e.reason.empty();  // the caller's functions see usable runs only
+    e.objective = objectiveOf(e, usable);
+    constraintsOf(e, usable);
     if (usable) {
       if (!std::isfinite(e.objective)) {
         e.reason = o_.minimize + " not available";
@@ -215,76 +223,6 @@ double constraintCallback(const std::vector<double>& u, std::vector<double>&, vo
   const ConstraintRef& c = *static_cast<ConstraintRef*>(data);
   return c.search->constraintSeen(c.search->evaluate(u), c.j);
 }
-
-void validate(const OptimizeOptions& o) {
-  if (o.params.empty()) throw std::invalid_argument("optimize: give at least one --param KEY with --range a:b");
-  if (o.model != "multibody" && o.model != "reduced")
-    throw std::invalid_argument("optimize: --model must be multibody or reduced, got '" + o.model + "'");
-  for (std::size_t k = 0; k < o.params.size(); ++k) {
-    const SampleRange& p = o.params[k];
-    if (!findSceneKey(p.key))
-      throw std::invalid_argument("optimize: --param " + p.key + " is not a scene key (see docs/scene-reference.md)");
-    if (!(p.lower < p.upper) || !std::isfinite(p.lower) || !std::isfinite(p.upper))
-      throw std::invalid_argument("optimize: --range of " + p.key + ": expected a:b with a < b");
-    for (std::size_t m = 0; m < k; ++m)
-      if (o.params[m].key == p.key) throw std::invalid_argument("optimize: --param " + p.key + " given twice");
-  }
-  bool is_key = false;
-  for (const SampleRange& p : o.params) is_key = is_key || p.key == o.minimize;
-  if (!is_key && !o.objective && !knownMetric(o.minimize)) {
-    std::vector<std::string> names = sweepNumericMetrics();
-    for (const SampleRange& p : o.params) names.push_back(p.key);
-    throw std::invalid_argument("optimize: --minimize: unknown metric '" + o.minimize + "'" + didYouMean(o.minimize, names) +
-                                "; expected a metric (" + metricList() + ") or one of the --param keys");
-  }
-  for (const OptimizeConstraint& c : o.constraints)
-    if (!c.value && !knownMetric(c.metric))
-      throw std::invalid_argument("optimize: --constraint '" + c.text + "': unknown metric '" + c.metric + "'" +
-                                  didYouMean(c.metric, sweepNumericMetrics()) + "; expected one of " + metricList());
-  const std::string& m = o.method;
-  if (m != "auto" && m != "bobyqa" && m != "cobyla" && m != "direct-l" && m != "crs2" && m != "multistart")
-    throw std::invalid_argument("optimize: --method: expected auto, bobyqa, cobyla, direct-l, crs2 or multistart, got '" +
-                                m + "'");
-  if (o.threads < 1) throw std::invalid_argument("optimize: --threads must be at least 1");
-  if (m == "bobyqa" && !o.constraints.empty())
-    throw std::invalid_argument("optimize: --method bobyqa handles no --constraint: use cobyla (or auto), or a "
-                                "global method (direct-l, crs2: constraints by penalty)");
-  if (o.max_evals < 1) throw std::invalid_argument("optimize: --max-evals must be at least 1");
-  if (!(o.x_tolerance > 0 && o.x_tolerance < 1))
-    throw std::invalid_argument("optimize: the parameter tolerance must be between 0 and 1 (fraction of each range)");
-}
-
-}  // namespace
-
-OptimizeConstraint parseConstraint(const std::string& text) {
-  OptimizeConstraint c;
-  c.text = text;
-  std::size_t at = text.find("<=");
-  c.upper = true;
-  if (at == std::string::npos) {
-    at = text.find(">=");
-    c.upper = false;
-  }
-  if (at == std::string::npos)
-    throw std::invalid_argument("--constraint '" + text + "': expected METRIC<=VALUE or METRIC>=VALUE, e.g. 'delta<=0.05'");
-  c.metric = trim(text.substr(0, at));
-  const std::string value = trim(text.substr(at + 2));
-  std::size_t used = 0;
-  bool ok = !c.metric.empty() && !value.empty();
-  if (ok) {
-    try {
-      c.bound = std::stod(value, &used);
-    } catch (const std::exception&) {
-      ok = false;
-    }
-  }
-  if (!ok || used != value.size() || !std::isfinite(c.bound))
-    throw std::invalid_argument("--constraint '" + text + "': expected METRIC<=VALUE or METRIC>=VALUE with a number, "
-                                "e.g. 'delta<=0.05'");
-  return c;
-}
-
-namespace {
 
 // One NLopt run of `method` from u (unit box) with at most max_evals evaluations; the words of
 // its stopping reason.
@@ -397,6 +335,27 @@ bool inAnotherBasin(const OptimizeOptions& o, const OptimizeResult& r, bool loca
 // carts, δ = 0.0002 at 60° against 0.1 at 55° and 65°); (3) the local method again from the best
 // design when it lies in another basin than (1)'s. A local method alone converges to the minimum
 // nearest its start (six carts: 97.4° from the middle of 0:180).
+// What auto did, in words: the trial read "polished by bobyqa" where no evaluation was left for it.
+std::string automaticScope(const std::string& local, bool polish, bool elsewhere) {
+  return std::string("global: ") + local + " from the middle of the ranges, a grid over the whole ranges" +
+         (polish      ? ", whose best design lay in another basin and was polished by " + local
+          : elsewhere ? ", whose best design lay in another basin; no evaluations were left to polish it "
+                        "(raise --max-evals), so the optimum is the best grid design"
+                      : " (no better basin found)");
+}
+
+// auto's global stage: the grid over the whole box, as much of it as the evaluations left allow
+// (none after an interrupted first stage).
+void runGridStage(const OptimizeOptions& o, const std::string& first, Search& search, OptimizeResult& r) {
+  std::vector<std::vector<double>> grid = globalGrid(o);
+  const int left = o.max_evals - int(search.requests());
+  if (int(grid.size()) > left) grid.resize(std::size_t(std::max(0, left)));
+  if (first != "interrupted" && !grid.empty()) {
+    evaluateAll(o, grid, search);
+    r.stop_reason += "; grid of " + std::to_string(grid.size()) + " designs over the whole ranges";
+  }
+}
+
 void runAutomatic(const OptimizeOptions& o, const std::string& local, Search& search, OptimizeResult& r) {
   search.method = local;
   const int first_share = std::max(1, o.max_evals / 3);
@@ -408,16 +367,10 @@ void runAutomatic(const OptimizeOptions& o, const std::string& local, Search& se
   std::size_t local_best = 0;
   const bool local_found = bestFeasible(r, &local_best);
   const std::vector<double> x_local = local_found ? r.history[local_best].x : std::vector<double>{};
-  std::vector<std::vector<double>> grid = globalGrid(o);
-  int left = o.max_evals - int(search.requests());
-  if (int(grid.size()) > left) grid.resize(std::size_t(std::max(0, left)));
-  if (first != "interrupted" && !grid.empty()) {
-    evaluateAll(o, grid, search);
-    r.stop_reason += "; grid of " + std::to_string(grid.size()) + " designs over the whole ranges";
-  }
+  runGridStage(o, first, search, r);
   r.found = bestFeasible(r, &r.best);
   const bool elsewhere = inAnotherBasin(o, r, local_found, x_local);
-  left = o.max_evals - int(search.requests());
+  const int left = o.max_evals - int(search.requests());
   const bool interrupted = o.interrupt && o.interrupt->load();
   const bool polish = elsewhere && left > 0 && !interrupted;
   if (polish) {
@@ -427,12 +380,7 @@ void runAutomatic(const OptimizeOptions& o, const std::string& local, Search& se
     r.found = bestFeasible(r, &r.best);
   }
   r.method = local + ", grid" + (polish ? ", " + local : std::string());
-  // Say what happened: the trial read "polished by bobyqa" where no evaluation was left for it.
-  r.scope = std::string("global: ") + local + " from the middle of the ranges, a grid over the whole ranges" +
-            (polish      ? ", whose best design lay in another basin and was polished by " + local
-             : elsewhere ? ", whose best design lay in another basin; no evaluations were left to polish it "
-                           "(raise --max-evals), so the optimum is the best grid design"
-                         : " (no better basin found)");
+  r.scope = automaticScope(local, polish, elsewhere);
 }
 
 // The method asked for by name: a local one from the middle of the box, or a global one followed
@@ -466,7 +414,7 @@ void runNamedMethod(const OptimizeOptions& o, const std::string& local, Search& 
 }  // namespace
 
 OptimizeResult runOptimize(const OptimizeOptions& o) {
-  validate(o);
+  validateOptimizeOptions(o);
   OptimizeResult r;
   r.method = o.method;
   Search search(o, r);

@@ -28,6 +28,16 @@ std::vector<ResonanceHit> resonanceHits(double p0, double omega, double toleranc
 
 namespace {
 
+std::string firstEstimateHitSentence(double p0, const ResonanceHit& h, double omega, double tolerance) {
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "first estimate (two constant inertias, Dyomin (two rotors) eq. (10)): the coupling's natural frequency "
+                "p0 = %.4g rad/s is within %.0f %% of order %d of the crank speed, %d*omega = %.4g rad/s at omega = "
+                "%.4g rad/s (p0/(k*omega) = %.3f), an order that drives the coupling",
+                p0, 100 * tolerance, h.harmonic, h.harmonic, h.harmonic * std::abs(omega), std::abs(omega), h.ratio);
+  return buf;
+}
+
 ResonanceReport firstEstimate(const ReducedModel& model, double omega, const modes::ExcitationOrders& orders,
                               double tolerance) {
   ResonanceReport r;
@@ -42,16 +52,7 @@ ResonanceReport firstEstimate(const ReducedModel& model, double omega, const mod
   r.applicable = std::isfinite(omega) && std::abs(omega) > 0;
   if (!r.applicable) return r;
   r.hits = resonanceHits(r.p0, omega, tolerance, r.orders);
-  for (const ResonanceHit& h : r.hits) {
-    char buf[400];
-    std::snprintf(buf, sizeof buf,
-                  "first estimate (two constant inertias, Dyomin (two rotors) eq. (10)): the coupling's natural frequency "
-                  "p0 = %.4g rad/s is within %.0f %% of order %d of the crank speed, %d*omega = %.4g rad/s at omega = "
-                  "%.4g rad/s (p0/(k*omega) = %.3f), an order that drives the coupling",
-                  r.p0, 100 * tolerance, h.harmonic, h.harmonic, h.harmonic * std::abs(omega), std::abs(omega),
-                  h.ratio);
-    r.sentences.push_back(buf);
-  }
+  for (const ResonanceHit& h : r.hits) r.sentences.push_back(firstEstimateHitSentence(r.p0, h, omega, tolerance));
   return r;
 }
 
@@ -148,11 +149,8 @@ std::string whereAmongOrders(double ratio, const std::vector<int>& orders) {
   return "clear of every order (none drives the coupling up to order 24)";
 }
 
-// Why the coupling mode is not in resonance at ω, every word from the analysis' numbers.
-std::string conclusionOf(const modes::ModesReport& r, double w, const modes::ExcitationOrders& orders) {
-  const modes::Band& p = r.frozen[0].torsional;
-  const double ratio = p.mean / w;
-  const std::string where = whereAmongOrders(ratio, orders.forced);
+// What the coupling mode's damping ratio means for a forced response.
+std::string dampingSentence(const modes::ModesReport& r) {
   bool floquet_zeta = false;
   const double zeta = verdictDampingRatio(r, &floquet_zeta);
   char z[300];
@@ -168,8 +166,12 @@ std::string conclusionOf(const modes::ModesReport& r, double w, const modes::Exc
                   "its damping ratio %.2g (%s) limits a forced response at resonance to 1/(2*zeta*sqrt(1 - zeta^2)) = "
                   "%.3g times the static one",
                   zeta, floquet_zeta ? "Floquet" : "frozen-angle mean", 1 / (2 * zeta * std::sqrt(1 - zeta * zeta)));
+  return z;
+}
+
+// How the coupling mode oscillates and decays by the Floquet multipliers ("" without a coupling mode).
+std::string floquetDecaySentence(const modes::ModesReport& r, double w) {
   const modes::FloquetVerdict& v = r.steady.verdict;
-  std::string decay;
   if (v.has_torsional && v.torsional_resolved) {
     // With heavy damping the mode no longer oscillates at p: its natural frequency from the
     // multipliers is √(σ² + ω_d²) (where a forced response peaks, as the warnings compare it).
@@ -181,18 +183,29 @@ std::string conclusionOf(const modes::ModesReport& r, double w, const modes::Exc
                   "oscillates at %.4g rad/s (damped) about an undamped natural frequency of %.4g rad/s (%.3g times "
                   "the crank speed), and it decays %s-fold per revolution",
                   v.torsional_frequency, pf, pf / w, foldOf(v.torsional_modulus).c_str());
-    decay = f;
-  } else if (v.has_torsional) {
-    decay = "; the coupling mode decays more than a million-fold per revolution (its multiplier is below 1e-6, too "
-            "small to resolve)";
+    return f;
   }
+  if (v.has_torsional)
+    return "; the coupling mode decays more than a million-fold per revolution (its multiplier is below 1e-6, too "
+           "small to resolve)";
+  return "";
+}
+
+// Why the coupling mode is not in resonance at ω, every word from the analysis' numbers.
+std::string conclusionOf(const modes::ModesReport& r, double w, const modes::ExcitationOrders& orders) {
+  const modes::Band& p = r.frozen[0].torsional;
+  const double ratio = p.mean / w;
+  const std::string where = whereAmongOrders(ratio, orders.forced);
+  const std::string z = dampingSentence(r);
+  const std::string decay = floquetDecaySentence(r, w);
+  const modes::FloquetVerdict& v = r.steady.verdict;
   char b[1600];
   std::snprintf(b, sizeof b,
                 "no torsional resonance at omega = %.4g rad/s: the coupling mode's frozen-angle frequency p = %.4g ... "
                 "%.4g rad/s (p/omega = %.3g on the mean) lies %s; %s%s; the steady motion is %s, every disturbance "
                 "decays at least %s-fold per revolution (largest Floquet multiplier %.3g)",
-                w, p.min, p.max, ratio, where.c_str(), z, decay.c_str(), v.text.c_str(), foldOf(v.max_modulus).c_str(),
-                v.max_modulus);
+                w, p.min, p.max, ratio, where.c_str(), z.c_str(), decay.c_str(), v.text.c_str(),
+                foldOf(v.max_modulus).c_str(), v.max_modulus);
   return b;
 }
 
@@ -206,6 +219,98 @@ modes::ModesReport lightAnalysis(const Scene& scene) {
   return modes::analyseModes(scene, o);
 }
 
+// A run without a steady motion: nothing to judge, the first estimate without a speed.
+void markNoSteadyMotion(RunResonance* v, const ReducedModel& model, const std::string& no_steady) {
+  v->reason = no_steady;
+  v->verdict = "not applicable";
+  v->first_estimate_status = "not applicable";
+  v->stability = "not applicable";
+  v->stability_reason = no_steady;
+  v->first_estimate = firstEstimate(model, NAN, {}, kResonanceTolerance);
+}
+
+// A rigid coupling has no torsional mode; the speed mode's stability is judged only by a modal
+// analysis made for the run (`analysed`).
+void markRigidCoupling(RunResonance* v, bool analysed) {
+  v->reason = "rigid coupling: no torsional mode";
+  v->verdict = "not applicable";
+  v->first_estimate_status = "not applicable";
+  if (analysed) return;
+  v->stability = "not assessed";
+  v->stability_reason = "rigid coupling: the speed mode's stability is assessed by the modal analysis "
+                        "(simulate --modes, report, rollerdyn modes)";
+}
+
+// The linearized drive has no steady motion: no stability, and the first estimate's hits stand unchecked.
+void markAnalysisNotMade(RunResonance* v, const modes::ModesReport& r) {
+  v->modal_note = "no steady motion of the linearized drive: " + r.steady.failure;
+  v->stability = "not applicable";
+  v->stability_reason = v->modal_note;
+  if (!v->elastic) return;
+  // The analysis could not be made: its own warning, and the first estimate's hits stand unchecked.
+  v->warnings = r.warnings;
+  for (const std::string& s : v->first_estimate.sentences)
+    v->warnings.push_back(s + " (unchecked: " + v->modal_note + ")");
+  v->first_estimate_status = v->first_estimate.hits.empty() ? "no order within 10 %" : "unchecked";
+  v->verdict = v->first_estimate.hits.empty() ? "no hit" : "unchecked first estimate";
+  if (!v->first_estimate.hits.empty())
+    v->verdict_line = "resonance verdict: the modal analysis could not be made (" + v->modal_note +
+                      "); the first estimate above is unchecked";
+}
+
+// The modal analysis' warnings give the verdict; without any, why there is no resonance.
+void judgeByModalWarnings(RunResonance* v, const modes::ModesReport& r) {
+  v->warnings = modes::modalWarnings(r, v->omega, v->orders);
+  bool resonance = false;
+  for (const std::string& w : v->warnings) resonance = resonance || w.find("resonance") != std::string::npos;
+  v->verdict = v->warnings.empty() ? "no resonance" : resonance ? "resonance" : "unstable";
+  if (v->warnings.empty()) v->conclusion = conclusionOf(r, v->omega, v->orders);
+}
+
+// The first estimate's hits, each in words, for the line that says the analysis refutes them.
+std::string refutedHits(const RunResonance& v) {
+  std::string hits;
+  for (const ResonanceHit& h : v.first_estimate.hits) {
+    char f[160];
+    std::snprintf(f, sizeof f, "%sp0 = %.4g rad/s within 10 %% of %d*omega = %.4g rad/s", hits.empty() ? "" : "; ",
+                  v.first_estimate.p0, h.harmonic, h.harmonic * v.omega);
+    hits += f;
+  }
+  return hits;
+}
+
+// The first estimate against the modal analysis: no hit, refuted (with the verdict line) or confirmed.
+void judgeFirstEstimate(RunResonance* v) {
+  if (v->first_estimate.hits.empty()) {
+    v->first_estimate_status = "no order within 10 %";
+  } else if (v->warnings.empty()) {
+    v->first_estimate_status = "refuted by the modal analysis";
+    v->verdict_line = "resonance verdict: the modal analysis refutes the first estimate (two constant inertias, Dyomin "
+                      "(two rotors) eq. (10): " + refutedHits(*v) + "): " + v->conclusion;
+  } else {
+    v->first_estimate_status = "confirmed by the modal analysis";
+  }
+}
+
+// The verdict by the modal analysis (the one made for the run, else a light one): stability from
+// its Floquet multipliers; for an elastic coupling its warnings and the first estimate against them.
+void judgeByModalAnalysis(RunResonance* v, const Scene& scene, const modes::ModesReport* analysis) {
+  v->modal = std::make_shared<const modes::ModesReport>(analysis ? *analysis : lightAnalysis(scene));
+  const modes::ModesReport& r = *v->modal;
+  v->modal_made = r.steady.found && !r.frozen.empty() && r.frozen[0].ok;
+  if (!v->modal_made) {
+    markAnalysisNotMade(v, r);
+    return;
+  }
+  v->analysis_omega = r.steady.omega_mean;
+  v->stability = r.steady.verdict.text;
+  v->max_multiplier_modulus = r.steady.verdict.max_modulus;
+  v->stability_reason = "Floquet multipliers of the drive linearized about its steady motion (reduced model)";
+  if (!v->elastic) return;
+  judgeByModalWarnings(v, r);
+  judgeFirstEstimate(v);
+}
+
 }  // namespace
 
 RunResonance judgeRunResonance(const Scene& scene, const RunState& st, const modes::ModesReport* analysis) {
@@ -215,72 +320,17 @@ RunResonance judgeRunResonance(const Scene& scene, const RunState& st, const mod
   const std::string no_steady = noSteadyMotion(scene, st);
   v.applicable = no_steady.empty();
   if (!v.applicable) {
-    v.reason = no_steady;
-    v.verdict = "not applicable";
-    v.first_estimate_status = "not applicable";
-    v.stability = "not applicable";
-    v.stability_reason = no_steady;
-    v.first_estimate = firstEstimate(model, NAN, {}, kResonanceTolerance);
+    markNoSteadyMotion(&v, model, no_steady);
     return v;
   }
   v.omega = std::abs(st.omega);
   v.orders = modes::excitationOrders(model, v.omega);
   v.first_estimate = firstEstimate(model, v.omega, v.orders, kResonanceTolerance);
   if (!v.elastic) {
-    v.reason = "rigid coupling: no torsional mode";
-    v.verdict = "not applicable";
-    v.first_estimate_status = "not applicable";
-    if (!analysis) {  // the speed mode's stability is judged only by a modal analysis made for the run
-      v.stability = "not assessed";
-      v.stability_reason = "rigid coupling: the speed mode's stability is assessed by the modal analysis "
-                           "(simulate --modes, report, rollerdyn modes)";
-      return v;
-    }
+    markRigidCoupling(&v, analysis != nullptr);
+    if (!analysis) return v;
   }
-  v.modal = std::make_shared<const modes::ModesReport>(analysis ? *analysis : lightAnalysis(scene));
-  const modes::ModesReport& r = *v.modal;
-  v.modal_made = r.steady.found && !r.frozen.empty() && r.frozen[0].ok;
-  if (!v.modal_made) {
-    v.modal_note = "no steady motion of the linearized drive: " + r.steady.failure;
-    v.stability = "not applicable";
-    v.stability_reason = v.modal_note;
-    if (!v.elastic) return v;
-    // The analysis could not be made: its own warning, and the first estimate's hits stand unchecked.
-    v.warnings = r.warnings;
-    for (const std::string& s : v.first_estimate.sentences) v.warnings.push_back(s + " (unchecked: " + v.modal_note + ")");
-    v.first_estimate_status = v.first_estimate.hits.empty() ? "no order within 10 %" : "unchecked";
-    v.verdict = v.first_estimate.hits.empty() ? "no hit" : "unchecked first estimate";
-    if (!v.first_estimate.hits.empty())
-      v.verdict_line = "resonance verdict: the modal analysis could not be made (" + v.modal_note +
-                       "); the first estimate above is unchecked";
-    return v;
-  }
-  v.analysis_omega = r.steady.omega_mean;
-  v.stability = r.steady.verdict.text;
-  v.max_multiplier_modulus = r.steady.verdict.max_modulus;
-  v.stability_reason = "Floquet multipliers of the drive linearized about its steady motion (reduced model)";
-  if (!v.elastic) return v;
-  v.warnings = modes::modalWarnings(r, v.omega, v.orders);
-  bool resonance = false;
-  for (const std::string& w : v.warnings) resonance = resonance || w.find("resonance") != std::string::npos;
-  v.verdict = v.warnings.empty() ? "no resonance" : resonance ? "resonance" : "unstable";
-  if (v.warnings.empty()) v.conclusion = conclusionOf(r, v.omega, v.orders);
-  if (v.first_estimate.hits.empty()) {
-    v.first_estimate_status = "no order within 10 %";
-  } else if (v.warnings.empty()) {
-    v.first_estimate_status = "refuted by the modal analysis";
-    std::string hits;
-    for (const ResonanceHit& h : v.first_estimate.hits) {
-      char f[160];
-      std::snprintf(f, sizeof f, "%sp0 = %.4g rad/s within 10 %% of %d*omega = %.4g rad/s", hits.empty() ? "" : "; ",
-                    v.first_estimate.p0, h.harmonic, h.harmonic * v.omega);
-      hits += f;
-    }
-    v.verdict_line = "resonance verdict: the modal analysis refutes the first estimate (two constant inertias, Dyomin "
-                     "(two rotors) eq. (10): " + hits + "): " + v.conclusion;
-  } else {
-    v.first_estimate_status = "confirmed by the modal analysis";
-  }
+  judgeByModalAnalysis(&v, scene, analysis);
   return v;
 }
 
@@ -313,25 +363,8 @@ nlohmann::json firstEstimateJson(const RunResonance& v) {
   return j;
 }
 
-nlohmann::json modalJson(const RunResonance& v) {
-  nlohmann::json j;
-  j["method"] = "drive linearized about its steady motion: frozen-angle band of the coupling mode against the orders "
-                "that drive it, Floquet multipliers over one crank revolution (reduced model)";
-  j["applicable"] = v.applicable && v.elastic && v.modal_made;
-  if (!v.elastic) {
-    j["note"] = "rigid coupling: no torsional mode";
-    return j;
-  }
-  if (!v.applicable) {
-    j["note"] = v.reason;
-    j["warnings"] = nlohmann::json::array();
-    return j;
-  }
-  if (!v.modal_made) {
-    j["note"] = v.modal_note;
-    j["warnings"] = v.modal ? v.modal->warnings : std::vector<std::string>{};
-    return j;
-  }
+// The analysis' numbers the verdict rests on (the analysis was made, the coupling is elastic).
+void putModalNumbers(const RunResonance& v, nlohmann::json& j) {
   const modes::ModesReport& r = *v.modal;
   const modes::Band& p = r.frozen[0].torsional;
   j["omega"] = v.omega;
@@ -352,6 +385,28 @@ nlohmann::json modalJson(const RunResonance& v) {
   j["damping_ratio_source"] = floquet_zeta ? "Floquet multipliers" : "frozen-angle mean (Floquet multiplier below 1e-6)";
   j["warnings"] = v.warnings;
   if (!v.conclusion.empty()) j["conclusion"] = v.conclusion;
+}
+
+nlohmann::json modalJson(const RunResonance& v) {
+  nlohmann::json j;
+  j["method"] = "drive linearized about its steady motion: frozen-angle band of the coupling mode against the orders "
+                "that drive it, Floquet multipliers over one crank revolution (reduced model)";
+  j["applicable"] = v.applicable && v.elastic && v.modal_made;
+  if (!v.elastic) {
+    j["note"] = "rigid coupling: no torsional mode";
+    return j;
+  }
+  if (!v.applicable) {
+    j["note"] = v.reason;
+    j["warnings"] = nlohmann::json::array();
+    return j;
+  }
+  if (!v.modal_made) {
+    j["note"] = v.modal_note;
+    j["warnings"] = v.modal ? v.modal->warnings : std::vector<std::string>{};
+    return j;
+  }
+  putModalNumbers(v, j);
   return j;
 }
 

@@ -83,6 +83,66 @@ nlohmann::json motorFitJson(const Scene& scene) {
           {"text", origin->describe()}};
 }
 
+// A run that a rule ended early (the drive stalled, rocked without gaining, or came to rest)
+// never reached its t_end, and a longer one ends at the same moment: the rules look only back.
+// The sentence that says so ("" when t_end had its effect or was not given).
+std::string tEndWithoutEffect(const Scene& scene, const RunResult& run, const std::string& motion) {
+  const bool given_t_end =
+      std::find(scene.given_keys.begin(), scene.given_keys.end(), "simulation.t_end") != scene.given_keys.end();
+  if (!(given_t_end && !run.stats.complete && (motion == "stalled" || motion == "rocking" || motion == "at_rest") &&
+        run.timeseries.has("t") && !run.timeseries.rows.empty()))
+    return "";
+  const double t_last = run.timeseries.rows.back()[run.timeseries.index("t")];
+  if (!(t_last < scene.simulation.t_end - 0.5 * scene.simulation.output_step)) return "";
+  return "simulation.t_end has no effect on this run: it ended at t = " + significant(t_last, 4) + " s, when the " +
+         (motion == "at_rest" ? std::string("machine came to rest")
+          : motion == "rocking" ? std::string("crank rocked without gaining")
+                                : std::string("drive stalled")) +
+         " (see status), and a longer run ends there too";
+}
+
+// Keys the scene gives that this model's run does not read: said, never silently dropped.
+// One warning line names them; summary.json keys_without_effect says why for each.
+void addKeysWithoutEffect(const Scene& scene, const RunResult& run, nlohmann::json& summary) {
+  summary["keys_without_effect"] = nlohmann::json::array();
+  std::vector<std::string> keys;
+  std::vector<std::string> without = keysWithoutEffect(scene, run.model);
+  // And those whose event the run never reached (the start-up answers find them).
+  if (summary.contains("start_up") && summary["start_up"].is_object() &&
+      summary["start_up"].contains("keys_not_reached"))
+    for (const auto& k : summary["start_up"]["keys_not_reached"]) without.push_back(k.get<std::string>());
+  const std::string t_end = tEndWithoutEffect(scene, run, summary.value("motion", ""));
+  if (!t_end.empty()) without.push_back(t_end);
+  for (const std::string& w : without) {
+    summary["keys_without_effect"].push_back(w);
+    keys.push_back(w.substr(0, w.find(' ')));
+  }
+  const std::string names = groupedKeyNames(keys);
+  if (!names.empty())
+    summary["warnings"].push_back("scene keys without effect on this " + run.model + " model's run: " + names +
+                                  " (why for each: summary.json keys_without_effect)");
+}
+
+// The runs that check the flywheel's estimate, and with `by_runs` the flywheel sized by runs.
+void addFlywheelChecks(const Scene& scene, const std::string& model, bool by_runs, nlohmann::json& summary) {
+  if (!(summary.contains("sizing") && summary["sizing"].is_object() && summary["sizing"]["flywheel"].is_object()))
+    return;
+  summary["sizing"]["flywheel"]["check_by_runs"] = flywheelChecks(summary);  // the runs that check its estimate
+  if (by_runs) addFlywheelByRuns(scene, model, summary);
+}
+
+// The console's share of the summary: the run's warnings (the first run_warnings) apart from the
+// resonance warnings, and the verdict's lines.
+void passMessages(const nlohmann::json& summary, std::size_t run_warnings, const RunResonance& verdict,
+                  RunMessages& messages) {
+  for (std::size_t i = 0; i < summary["warnings"].size(); ++i)
+    if (summary["warnings"][i].is_string())
+      (i < run_warnings ? messages.run_warnings : messages.resonance_warnings)
+          .push_back(summary["warnings"][i].get<std::string>());
+  messages.resonance_verdict = verdict.verdict_line;
+  messages.first_estimate = verdict.first_estimate.sentences;
+}
+
 }  // namespace
 
 nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunSummaryOptions& options,
@@ -95,45 +155,10 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
           : nlohmann::json(std::filesystem::absolute(options.scene_file).lexically_normal().string());
   summary["overrides"] = options.overrides;
   summary["motor_fit"] = motorFitJson(scene);
-  if (summary.contains("sizing") && summary["sizing"].is_object() && summary["sizing"]["flywheel"].is_object())
-  {
-    summary["sizing"]["flywheel"]["check_by_runs"] = flywheelChecks(summary);  // the runs that check its estimate
-    if (options.flywheel_by_runs) addFlywheelByRuns(scene, run.model, summary);
-  }
+  addFlywheelChecks(scene, run.model, options.flywheel_by_runs, summary);
   if (!summary.contains("warnings") || !summary["warnings"].is_array()) summary["warnings"] = nlohmann::json::array();
   for (const std::string& w : plausibilityWarnings(scene)) summary["warnings"].push_back(w);
-  // Keys the scene gives that this model's run does not read: said, never silently dropped.
-  // One warning line names them; summary.json keys_without_effect says why for each.
-  summary["keys_without_effect"] = nlohmann::json::array();
-  std::vector<std::string> keys;
-  std::vector<std::string> without = keysWithoutEffect(scene, run.model);
-  // And those whose event the run never reached (the start-up answers find them).
-  if (summary.contains("start_up") && summary["start_up"].is_object() &&
-      summary["start_up"].contains("keys_not_reached"))
-    for (const auto& k : summary["start_up"]["keys_not_reached"]) without.push_back(k.get<std::string>());
-  // A run that a rule ended early (the drive stalled, rocked without gaining, or came to rest)
-  // never reached its t_end, and a longer one ends at the same moment: the rules look only back.
-  const std::string motion = summary.value("motion", "");
-  const bool given_t_end =
-      std::find(scene.given_keys.begin(), scene.given_keys.end(), "simulation.t_end") != scene.given_keys.end();
-  if (given_t_end && !run.stats.complete && (motion == "stalled" || motion == "rocking" || motion == "at_rest") &&
-      run.timeseries.has("t") && !run.timeseries.rows.empty()) {
-    const double t_last = run.timeseries.rows.back()[run.timeseries.index("t")];
-    if (t_last < scene.simulation.t_end - 0.5 * scene.simulation.output_step)
-      without.push_back("simulation.t_end has no effect on this run: it ended at t = " + significant(t_last, 4) +
-                        " s, when the " + (motion == "at_rest" ? std::string("machine came to rest")
-                                           : motion == "rocking" ? std::string("crank rocked without gaining")
-                                                                 : std::string("drive stalled")) +
-                        " (see status), and a longer run ends there too");
-  }
-  for (const std::string& w : without) {
-    summary["keys_without_effect"].push_back(w);
-    keys.push_back(w.substr(0, w.find(' ')));
-  }
-  const std::string names = groupedKeyNames(keys);
-  if (!names.empty())
-    summary["warnings"].push_back("scene keys without effect on this " + run.model + " model's run: " + names +
-                                  " (why for each: summary.json keys_without_effect)");
+  addKeysWithoutEffect(scene, run, summary);
   // summary["guide_friction"] and its warnings: self-locking, dead centre, quasi-static friction work.
   addFrictionWarnings(scene, run, summary);
   const std::size_t run_warnings = summary["warnings"].size();
@@ -142,14 +167,7 @@ nlohmann::json summarizeRun(const Scene& scene, const RunResult& run, const RunS
   const RunResonance verdict = judgeRunResonance(scene, runStateOf(summary), options.modal ? &options.modal->report : nullptr);
   putRunResonance(verdict, summary);
   if (options.modal) modes::addRunModes(*options.modal, summary);
-  if (messages) {
-    for (std::size_t i = 0; i < summary["warnings"].size(); ++i)
-      if (summary["warnings"][i].is_string())
-        (i < run_warnings ? messages->run_warnings : messages->resonance_warnings)
-            .push_back(summary["warnings"][i].get<std::string>());
-    messages->resonance_verdict = verdict.verdict_line;
-    messages->first_estimate = verdict.first_estimate.sentences;
-  }
+  if (messages) passMessages(summary, run_warnings, verdict, *messages);
   return summary;
 }
 

@@ -98,12 +98,27 @@ const std::vector<std::pair<std::string, std::string>>& metricSources() {
   return all;
 }
 
+// A finished run's row: its motion, resonance warnings, metrics, steadiness and status, from the
+// summary every run gets (stall cause, the resonance verdict): the resonance_warnings column counts
+// the run's resonance warnings, the same as `simulate` prints.
+void readRunInto(const Scene& scene, const RunResult& run, const std::vector<std::string>& overrides, SweepPoint& p) {
+  RunSummaryOptions summary_options;
+  summary_options.overrides = overrides;
+  summary_options.flywheel_by_runs = false;  // a point's δ is its own answer
+  RunMessages messages;
+  const nlohmann::json summary = summarizeRun(scene, run, summary_options, &messages);
+  p.motion = summary.value("motion", "unknown");
+  p.warnings = messages.resonance_warnings;  // the load's warning is a metric column
+  const auto& src = metricSources();
+  for (std::size_t k = 0; k < src.size(); ++k) p.metrics[k] = summaryNumber(summary, src[k].second);
+  p.complete = run.stats.complete;
+  p.steady = summary["steady_state"].value("reached", false);
+  p.status = summary.value("status", run.stats.status);
+}
+
 SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts,
                     const std::vector<double>& values) {
-  SweepPoint p;
-  p.texts = texts;
-  p.values = values;
-  p.metrics.assign(sweepNumericMetrics().size(), kNaN);
+  SweepPoint p = pointNotRun(texts, values);
   const double cpu0 = threadCpuSeconds();
   std::vector<std::string> overrides = o.base_overrides;
   for (std::size_t i = 0; i < o.params.size(); ++i) overrides.push_back(o.params[i].key + "=" + texts[i]);
@@ -120,20 +135,7 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
     control.interrupt = o.interrupt;
     const RunResult run = runModel(scene, o.model, control);
     p.ran = true;
-    // The summary every run gets (stall cause, the resonance verdict): the resonance_warnings
-    // column counts the run's resonance warnings, the same as `simulate` prints.
-    RunSummaryOptions summary_options;
-    summary_options.overrides = overrides;
-    summary_options.flywheel_by_runs = false;  // a point's δ is its own answer
-    RunMessages messages;
-    const nlohmann::json summary = summarizeRun(scene, run, summary_options, &messages);
-    p.motion = summary.value("motion", "unknown");
-    p.warnings = messages.resonance_warnings;  // the load's warning is a metric column
-    const auto& src = metricSources();
-    for (std::size_t k = 0; k < src.size(); ++k) p.metrics[k] = summaryNumber(summary, src[k].second);
-    p.complete = run.stats.complete;
-    p.steady = summary["steady_state"].value("reached", false);
-    p.status = summary.value("status", run.stats.status);
+    readRunInto(scene, run, overrides, p);
   } catch (const std::exception& e) {
     p.status = std::string("error: ") + e.what();
   }
@@ -148,41 +150,54 @@ SweepPoint runSweepPoint(const SweepOptions& o, const std::vector<std::string>& 
   return o.run_point ? o.run_point(texts, values) : runPoint(o, texts, values);
 }
 
+SweepPoint pointNotRun(const std::vector<std::string>& texts, const std::vector<double>& values) {
+  SweepPoint p;
+  p.texts = texts;
+  p.values = values;
+  p.metrics.assign(sweepNumericMetrics().size(), kNaN);
+  return p;
+}
+
 bool SweepParameter::numeric() const {
   for (double v : values)
     if (!std::isfinite(v)) return false;
   return !values.empty();
 }
 
-SweepParameter parseSweepValues(const std::string& key, const std::string& spec_in) {
+namespace {
+
+// --values a:b:step: from a to b (inclusive, within 1e-9 of a step) in steps, at most 100000 points.
+SweepParameter rangeValues(const std::string& key, const std::string& spec) {
   SweepParameter p;
   p.key = key;
-  const std::string spec = trim(spec_in);
-  if (spec.empty()) throw std::invalid_argument("--values for " + key + ": empty");
-  if (spec.find(':') != std::string::npos) {
-    std::vector<std::string> parts;
-    std::stringstream ss(spec);
-    for (std::string item; std::getline(ss, item, ':');) parts.push_back(trim(item));
-    bool ok[3] = {false, false, false};
-    if (parts.size() != 3)
-      throw std::invalid_argument("--values for " + key + ": expected a:b:step, got '" + spec + "'");
-    const double a = parseNumber(parts[0], &ok[0]), b = parseNumber(parts[1], &ok[1]),
-                 step = parseNumber(parts[2], &ok[2]);
-    if (!ok[0] || !ok[1] || !ok[2])
-      throw std::invalid_argument("--values for " + key + ": a:b:step needs three numbers, got '" + spec + "'");
-    if (step == 0.0 || (b - a) * step < 0.0)
-      throw std::invalid_argument("--values for " + key + ": step must be non-zero and lead from " +
-                                  parts[0] + " to " + parts[1] + ", got '" + spec + "'");
-    const double n = std::floor((b - a) / step + 1e-9);
-    if (n > 100000) throw std::invalid_argument("--values for " + key + ": more than 100000 points");
-    for (long i = 0; i <= static_cast<long>(n); ++i) {
-      // a + i·step rounded to 12 significant digits, so 0.1-steps print as 0.3, not 0.30000000000000004
-      const double v = std::stod(formatNumber(a + i * step));
-      p.values.push_back(v);
-      p.texts.push_back(formatNumber(v));
-    }
-    return p;
+  std::vector<std::string> parts;
+  std::stringstream ss(spec);
+  for (std::string item; std::getline(ss, item, ':');) parts.push_back(trim(item));
+  bool ok[3] = {false, false, false};
+  if (parts.size() != 3)
+    throw std::invalid_argument("--values for " + key + ": expected a:b:step, got '" + spec + "'");
+  const double a = parseNumber(parts[0], &ok[0]), b = parseNumber(parts[1], &ok[1]),
+               step = parseNumber(parts[2], &ok[2]);
+  if (!ok[0] || !ok[1] || !ok[2])
+    throw std::invalid_argument("--values for " + key + ": a:b:step needs three numbers, got '" + spec + "'");
+  if (step == 0.0 || (b - a) * step < 0.0)
+    throw std::invalid_argument("--values for " + key + ": step must be non-zero and lead from " +
+                                parts[0] + " to " + parts[1] + ", got '" + spec + "'");
+  const double n = std::floor((b - a) / step + 1e-9);
+  if (n > 100000) throw std::invalid_argument("--values for " + key + ": more than 100000 points");
+  for (long i = 0; i <= static_cast<long>(n); ++i) {
+    // a + i·step rounded to 12 significant digits, so 0.1-steps print as 0.3, not 0.30000000000000004
+    const double v = std::stod(formatNumber(a + i * step));
+    p.values.push_back(v);
+    p.texts.push_back(formatNumber(v));
   }
+  return p;
+}
+
+// --values v1,v2,...: each as written (a text value stays text: its number is NaN).
+SweepParameter listedValues(const std::string& key, const std::string& spec) {
+  SweepParameter p;
+  p.key = key;
   std::stringstream ss(spec);
   for (std::string item; std::getline(ss, item, ',');) {
     item = trim(item);
@@ -193,6 +208,14 @@ SweepParameter parseSweepValues(const std::string& key, const std::string& spec_
     p.texts.push_back(item);
   }
   return p;
+}
+
+}  // namespace
+
+SweepParameter parseSweepValues(const std::string& key, const std::string& spec_in) {
+  const std::string spec = trim(spec_in);
+  if (spec.empty()) throw std::invalid_argument("--values for " + key + ": empty");
+  return spec.find(':') != std::string::npos ? rangeValues(key, spec) : listedValues(key, spec);
 }
 
 const std::vector<std::string>& sweepMetricColumns() {

@@ -57,6 +57,9 @@ struct SweepPoint {
   double metric(const std::string& name) const;
 };
 
+// The point of a design before it is run: its values, every metric NaN, status "not run".
+SweepPoint pointNotRun(const std::vector<std::string>& texts, const std::vector<double>& values);
+
 struct SweepOptions {
   std::string scene_path;
   // The scene when it is kept in memory (the Python interface): parsed from it at each point

@@ -86,6 +86,22 @@ SweepDesigns sweepDesigns(const SweepOptions& o) {
   return d;
 }
 
+namespace {
+
+// A design line: one value per --param, none empty.
+void checkDesignLine(const std::string& path, std::size_t line_no, const std::vector<std::string>& f,
+                     std::size_t keys, const std::string& key_list) {
+  if (f.size() != keys)
+    throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": expected " + std::to_string(keys) +
+                                " value(s), one per --param (" + key_list + "), got " + std::to_string(f.size()));
+  for (const std::string& v : f)
+    if (v.empty())
+      throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": empty value (expected " +
+                                  std::to_string(keys) + " value(s): " + key_list + ")");
+}
+
+}  // namespace
+
 std::vector<std::vector<std::string>> readValuesFile(const std::string& path,
                                                      const std::vector<std::string>& keys) {
   std::ifstream in(path);
@@ -102,19 +118,10 @@ std::vector<std::vector<std::string>> readValuesFile(const std::string& path,
     if (hash != std::string::npos) line.erase(hash);
     const std::vector<std::string> f = fields(line);
     if (f.empty()) continue;
-    if (first && f == keys) {  // header naming the keys
-      first = false;
-      continue;
-    }
+    const bool header = first && f == keys;  // a first line naming the keys
     first = false;
-    if (f.size() != keys.size())
-      throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": expected " +
-                                  std::to_string(keys.size()) + " value(s), one per --param (" + key_list +
-                                  "), got " + std::to_string(f.size()));
-    for (const std::string& v : f)
-      if (v.empty())
-        throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": empty value (expected " +
-                                    std::to_string(keys.size()) + " value(s): " + key_list + ")");
+    if (header) continue;
+    checkDesignLine(path, line_no, f, keys.size(), key_list);
     designs.push_back(f);
   }
   if (designs.empty()) throw std::invalid_argument("--values-file " + path + ": no designs (one per line: " + key_list + ")");

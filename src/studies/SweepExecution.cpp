@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <exception>
+#include <functional>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -74,18 +75,70 @@ int runOnThreads(const SweepOptions& o, const std::vector<std::size_t>& todo, Co
   return threads;
 }
 
+// Every design as a point not yet run: its values, its metrics NaN.
+std::vector<SweepPoint> pointsNotYetRun(const SweepDesigns& d) {
+  std::vector<SweepPoint> points;
+  for (std::size_t i = 0; i < d.texts.size(); ++i) points.push_back(pointNotRun(d.texts[i], d.values[i]));
+  return points;
+}
+
+// The points as they finish, from any thread or rank: into their place, counted per rank, saved to
+// the progress file and shown.
+struct FinishedPoints {
+  const SweepOptions& o;
+  std::vector<SweepPoint>& points;
+  SweepProgressFile* progress;
+  std::vector<std::size_t> per_rank;
+  std::size_t resumed = 0;
+  std::size_t done = 0, computed = 0;
+  std::mutex mu;
+
+  void operator()(std::size_t i, const SweepPoint& p, int rank) {
+    std::lock_guard<std::mutex> lock(mu);
+    points[i] = p;
+    ++per_rank[std::size_t(rank)];
+    ++computed;
+    ++done;
+    // A point that ends after Ctrl-C may have been cut short: shown, but not saved as finished.
+    if (progress && !(o.interrupt && o.interrupt->load())) progress->append(i, points[i]);
+    if (o.on_point) o.on_point(points[i], done, points.size());
+  }
+};
+
+// How the sweep ran: ranks, points per rank, threads, computed and resumed points, wall time.
+nlohmann::json executionJson(const SweepOptions& o, const FinishedPoints& f, int threads_per_rank,
+                             double wall_seconds) {
+  return {{"ranks", f.per_rank.size()},
+          {"points_per_rank", f.per_rank},
+          {"threads_per_rank", threads_per_rank},
+          {"points_computed", f.computed},
+          {"points_resumed", f.resumed},
+          {"wall_seconds", wall_seconds},
+          {"progress_file", o.progress_path.empty() ? std::string() : std::filesystem::path(o.progress_path).filename().string()},
+          {"point_budget_cpu_seconds", o.point_budget}};
+}
+
+// The points of todo: over the MPI ranks (rank 0's dispatch time into *dispatcher_busy), else on
+// this process's threads. Returns the threads per rank.
+int computePoints(const SweepOptions& o, const std::vector<std::size_t>& todo,
+                  const std::function<SweepPoint(std::size_t)>& compute, FinishedPoints& finished,
+                  double* dispatcher_busy) {
+  if (!o.mpi) return runOnThreads(o, todo, compute, finished);
+  *dispatcher_busy = runMpiSweep(todo, compute, std::ref(finished), o.dispatcher_computes, o.interrupt);
+  return 1;
+}
+
+void markNotRunAsInterrupted(std::vector<SweepPoint>& points) {
+  for (SweepPoint& p : points)
+    if (p.status == "not run") p.status = "not run (interrupted)";
+}
+
 }  // namespace
 
 std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& d, SweepResult& result) {
   const auto wall0 = std::chrono::steady_clock::now();
-  const std::size_t n = d.texts.size();
-  std::vector<SweepPoint> points(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    points[i].texts = d.texts[i];
-    points[i].values = d.values[i];
-    points[i].metrics.assign(sweepNumericMetrics().size(), std::numeric_limits<double>::quiet_NaN());
-  }
-  auto compute = [&](std::size_t i) {
+  std::vector<SweepPoint> points = pointsNotYetRun(d);
+  const std::function<SweepPoint(std::size_t)> compute = [&](std::size_t i) {
     return o.point_budget > 0 ? runSweepPointWithBudget(o, d.texts[i], d.values[i], o.point_budget)
                               : runSweepPoint(o, d.texts[i], d.values[i]);
   };
@@ -95,47 +148,17 @@ std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& 
   // Rank 0 alone reads and writes the progress file and decides what is left to compute.
   SweepStart start;
   if (rank0) start = resumeSweep(o, d, points);
-  std::unique_ptr<SweepProgressFile>& progress = start.progress;
-  const std::vector<std::size_t>& todo = start.todo;
-  const std::size_t resumed = start.resumed;
-
-  std::vector<std::size_t> per_rank(std::size_t(world.size), 0);
-  std::size_t done = resumed, computed = 0;
-  std::mutex mu;
-  auto record = [&](std::size_t i, const SweepPoint& p, int rank) {
-    std::lock_guard<std::mutex> lock(mu);
-    points[i] = p;
-    ++per_rank[std::size_t(rank)];
-    ++computed;
-    ++done;
-    // A point that ends after Ctrl-C may have been cut short: shown, but not saved as finished.
-    if (progress && !(o.interrupt && o.interrupt->load())) progress->append(i, points[i]);
-    if (o.on_point) o.on_point(points[i], done, n);
-  };
-
-  int threads = 1;
+  FinishedPoints finished{o, points, start.progress.get(), std::vector<std::size_t>(std::size_t(world.size), 0),
+                          start.resumed, start.resumed, 0, {}};
   double dispatcher_busy = 0;
-  if (o.mpi) {
-    dispatcher_busy = runMpiSweep(todo, compute, record, o.dispatcher_computes, o.interrupt);
-  } else {
-    threads = runOnThreads(o, todo, compute, record);
-  }
+  const int threads = computePoints(o, start.todo, compute, finished, &dispatcher_busy);
   if (start.setup_error) std::rethrow_exception(start.setup_error);
 
   result.output_rank = rank0;
   if (!rank0) return {};
-  if (o.interrupt && o.interrupt->load())
-    for (SweepPoint& p : points)
-      if (p.status == "not run") p.status = "not run (interrupted)";
-  result.execution = {
-      {"ranks", world.size},
-      {"points_per_rank", per_rank},
-      {"threads_per_rank", o.mpi ? 1 : threads},
-      {"points_computed", computed},
-      {"points_resumed", resumed},
-      {"wall_seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},
-      {"progress_file", o.progress_path.empty() ? std::string() : std::filesystem::path(o.progress_path).filename().string()},
-      {"point_budget_cpu_seconds", o.point_budget}};
+  if (o.interrupt && o.interrupt->load()) markNotRunAsInterrupted(points);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  result.execution = executionJson(o, finished, o.mpi ? 1 : threads, wall);
   if (o.mpi) result.execution["dispatcher_busy_seconds"] = dispatcher_busy;
   return points;
 }

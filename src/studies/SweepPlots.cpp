@@ -51,7 +51,10 @@ std::string sweepMetricUnit(const std::string& m) {
   return "";
 }
 
-std::string sweepMetricLabel(const std::string& m) {
+namespace {
+
+// What each metric is, in the words of the figures' axes (the others: their names).
+const std::vector<std::pair<std::string, std::string>>& metricDescriptions() {
   static const std::vector<std::pair<std::string, std::string>> names = {
       {"delta", "δ, coefficient of unevenness (Loveikin and Pochka (2007) eq. (12))"},
       {"H", "H, coefficient of dynamics (Loveikin and Pochka (2007) eq. (13))"},
@@ -86,8 +89,14 @@ std::string sweepMetricLabel(const std::string& m) {
       {"crank_pin_equivalent_load", "crank-pin equivalent dynamic load P"},
       {"main_bearing_equivalent_load", "main-bearing equivalent dynamic load P"},
   };
+  return names;
+}
+
+}  // namespace
+
+std::string sweepMetricLabel(const std::string& m) {
   std::string label = escapeUnderscores(m);
-  for (const auto& [k, v] : names)
+  for (const auto& [k, v] : metricDescriptions())
     if (k == m) label = v;
   std::string unit = sweepMetricUnit(m);
   if (unit == "N*m") unit = "N·m";
@@ -160,34 +169,46 @@ std::string noValueBand(const SweepParameter& p, const std::vector<std::pair<dou
   return band.str();
 }
 
-// One parameter: metric m against it, steady points joined, unsteady ones marked, the cells
-// without a value hatched.
-void drawMetricCurve(const SweepOptions& o, const SweepResult& r, const std::string& m, const std::string& out_dir) {
-  PlotSpec spec;
-  spec.title = escapeUnderscores(m + " vs " + o.params[0].key + " (" + o.model + " model)");
-  spec.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
-  spec.ylabel = sweepMetricLabel(m);
-  PlotSeries steady, unsteady;
-  steady.title = "turning, steady state";
-  steady.style = "linespoints pt 7";
-  steady.break_at_nonfinite = true;
-  steady.color = "#1f77b4";
-  unsteady.title = "turning, steady state not reached";
-  unsteady.style = "points pt 9 ps 1.5";
-  unsteady.color = "#ff7f0e";
+// The whole grid's extent along one parameter: from the first cell's lower edge to the last one's
+// upper edge, so the edge cells are never clipped.
+std::pair<double, double> gridExtent(const std::vector<std::pair<double, double>>& edges) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const auto& e : edges) lo = std::min(lo, e.first), hi = std::max(hi, e.second);
+  return {lo, hi};
+}
+
+// The points in the order of the one parameter's value.
+std::vector<std::size_t> orderOfParameter(const SweepResult& r) {
   std::vector<std::size_t> idx(r.points.size());
   std::iota(idx.begin(), idx.end(), 0);
   std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
     return r.points[a].values[0] < r.points[b].values[0];
   });
-  const auto edges = heatMapCellEdges(o.params[0].values);
+  return idx;
+}
+
+// A metric's curve over one parameter: steady points joined, unsteady ones marked, and the gnuplot
+// commands that hatch the cells without a value.
+struct MetricCurve {
+  PlotSeries steady, unsteady;
   std::ostringstream pre;
   int obj = 1;
   bool any_bad = false;
-  for (std::size_t i : idx) {
-    const SweepPoint& p = r.points[i];
+
+  MetricCurve() {
+    steady.title = "turning, steady state";
+    steady.style = "linespoints pt 7";
+    steady.break_at_nonfinite = true;
+    steady.color = "#1f77b4";
+    unsteady.title = "turning, steady state not reached";
+    unsteady.style = "points pt 9 ps 1.5";
+    unsteady.color = "#ff7f0e";
+  }
+
+  void add(const SweepParameter& param, const std::vector<std::pair<double, double>>& edges, const SweepPoint& p,
+           double y) {
     const SweepPointClass c = classifySweepPoint(p);
-    const double x = p.values[0], y = p.metric(m);
+    const double x = p.values[0];
     steady.x.push_back(x);
     steady.y.push_back(c == SweepPointClass::Steady ? y : kNaN);
     if (c == SweepPointClass::Unsteady) {
@@ -196,19 +217,40 @@ void drawMetricCurve(const SweepOptions& o, const SweepResult& r, const std::str
     }
     if (c == SweepPointClass::NoValue) {
       any_bad = true;
-      pre << noValueBand(o.params[0], edges, x, obj++);
+      pre << noValueBand(param, edges, x, obj++);
     }
   }
+};
+
+// One parameter: metric m against it, steady points joined, unsteady ones marked, the cells
+// without a value hatched.
+void drawMetricCurve(const SweepOptions& o, const SweepResult& r, const std::string& m, const std::string& out_dir) {
+  PlotSpec spec;
+  spec.title = escapeUnderscores(m + " vs " + o.params[0].key + " (" + o.model + " model)");
+  spec.xlabel = escapeUnderscores(sweepParamLabel(o.params[0].key));
+  spec.ylabel = sweepMetricLabel(m);
+  const auto edges = heatMapCellEdges(o.params[0].values);
+  MetricCurve curve;
+  for (std::size_t i : orderOfParameter(r)) curve.add(o.params[0], edges, r.points[i], r.points[i].metric(m));
   // The whole grid stays in view, whichever points have values.
-  double xl = INFINITY, xh = -INFINITY;
-  for (const auto& e : edges) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
-  if (xh > xl) pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
-  if (any_bad)
-    pre << "set label 1 \"grey hatched: starting, rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
-  spec.preamble = pre.str();
-  spec.series.push_back(steady);
-  if (!unsteady.x.empty()) spec.series.push_back(unsteady);
+  const auto [xl, xh] = gridExtent(edges);
+  if (xh > xl) curve.pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\n";
+  if (curve.any_bad)
+    curve.pre << "set label 1 \"grey hatched: starting, rocking, stalled or failed (no value)\" at graph 0.01, graph 0.97 left front\n";
+  spec.preamble = curve.pre.str();
+  spec.series.push_back(curve.steady);
+  if (!curve.unsteady.x.empty()) spec.series.push_back(curve.unsteady);
   renderPlot(spec, out_dir + "/plot_" + m);
+}
+
+// A cell's value as gnuplot label `lab` at the cell's centre (x, y).
+std::string cellLabel(int lab, double v, double x, double y) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  std::ostringstream label;
+  label << "set label " << lab << " \"" << buf << "\" at " << num(x) << "," << num(y)
+        << " center front font 'Sans,8'\n";
+  return label.str();
 }
 
 // The heat map's cells (gnuplot objects): coloured by the value, hatched where there is none,
@@ -234,19 +276,13 @@ void addHeatMapCells(const SweepParameter& px, const std::vector<std::pair<doubl
     pre << "set object " << obj++ << " " << rect << " fc palette cb " << num(v) << " fs solid 1.0 noborder\n";
     if (c == SweepPointClass::Unsteady)
       pre << "set object " << obj++ << " " << rect << " fc rgb '#000000' fs transparent pattern 5 noborder\n";
-    if (labels) {
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "%.3g", v);
-      pre << "set label " << lab++ << " \"" << buf << "\" at " << num(0.5 * (x0 + x1)) << ","
-          << num(0.5 * (y0 + y1)) << " center front font 'Sans,8'\n";
-    }
+    if (labels) pre << cellLabel(lab++, v, 0.5 * (x0 + x1), 0.5 * (y0 + y1));
   }
 }
 
-// Two parameters: a heat map of metric m, rows following the first parameter (y), columns the second (x).
-void drawMetricHeatMap(const SweepOptions& o, const SweepResult& r, const std::string& m, const std::string& out_dir) {
-  const SweepParameter &py = o.params[0], &px = o.params[1];
-  const auto ex = heatMapCellEdges(px.values), ey = heatMapCellEdges(py.values);
+// The colour scale's range: the metric's values at the points that have one (a little width when
+// they are all equal).
+std::pair<double, double> colourRange(const SweepResult& r, const std::string& m) {
   double lo = INFINITY, hi = -INFINITY;
   for (const SweepPoint& p : r.points) {
     const double v = p.metric(m);
@@ -254,14 +290,30 @@ void drawMetricHeatMap(const SweepOptions& o, const SweepResult& r, const std::s
       lo = std::min(lo, v), hi = std::max(hi, v);
   }
   if (hi <= lo) hi = lo + std::max(std::abs(lo) * 1e-6, 1e-12);
+  return {lo, hi};
+}
+
+// One invisible point that uses the palette, so the colour box is drawn.
+PlotSeries paletteAnchor(double x, double y, double lo) {
+  PlotSeries anchor;
+  anchor.title = "";
+  anchor.style = "points pt 7 ps 0 lc palette cb " + num(lo);
+  anchor.x = {x};
+  anchor.y = {y};
+  return anchor;
+}
+
+// Two parameters: a heat map of metric m, rows following the first parameter (y), columns the second (x).
+void drawMetricHeatMap(const SweepOptions& o, const SweepResult& r, const std::string& m, const std::string& out_dir) {
+  const SweepParameter &py = o.params[0], &px = o.params[1];
+  const auto ex = heatMapCellEdges(px.values), ey = heatMapCellEdges(py.values);
+  const auto [lo, hi] = colourRange(r, m);
   std::ostringstream pre;
   pre << "set palette rgb 33,13,10\nset cbrange [" << num(lo) << ":" << num(hi) << "]\n"
       << "unset key\nset cblabel \"" << sweepMetricLabel(m) << "\"\nset colorbox\nunset grid\n"
       << "set bmargin 6\nset label 1 \"" << kLegend << "\" at screen 0.02, screen 0.03 left\n";
-  // xrange from the cell edges of every value, so the edge cells are never clipped.
-  double xl = INFINITY, xh = -INFINITY, yl = INFINITY, yh = -INFINITY;
-  for (const auto& e : ex) xl = std::min(xl, e.first), xh = std::max(xh, e.second);
-  for (const auto& e : ey) yl = std::min(yl, e.first), yh = std::max(yh, e.second);
+  const auto [xl, xh] = gridExtent(ex);
+  const auto [yl, yh] = gridExtent(ey);
   pre << "set xrange [" << num(xl) << ":" << num(xh) << "]\nset yrange [" << num(yl) << ":" << num(yh) << "]\n";
   addHeatMapCells(px, ex, ey, r, m, pre);
   PlotSpec spec;
@@ -271,12 +323,7 @@ void drawMetricHeatMap(const SweepOptions& o, const SweepResult& r, const std::s
   spec.width = 900;
   spec.height = 680;
   spec.preamble = pre.str();
-  PlotSeries anchor;  // one invisible point that uses the palette, so the colour box is drawn
-  anchor.title = "";
-  anchor.style = "points pt 7 ps 0 lc palette cb " + num(lo);
-  anchor.x = {px.values[0]};
-  anchor.y = {py.values[0]};
-  spec.series.push_back(anchor);
+  spec.series.push_back(paletteAnchor(px.values[0], py.values[0], lo));
   renderPlot(spec, out_dir + "/heatmap_" + m);
 }
 

@@ -10,6 +10,23 @@
 
 namespace rollerdyn {
 
+namespace {
+
+// Why the run process gave no row: the CPU limit stopped it, a signal ended it, or it ended abnormally.
+std::string childFailure(const ChildOutcome& child, double budget) {
+  std::ostringstream os;
+  if (child.stoppedByCpuLimit()) {
+    os << "timeout: CPU budget " << budget << " s exceeded (stopped by the CPU limit)";
+  } else if (child.endedBySignal()) {
+    os << "error: run process ended by " << child.howItEnded();
+  } else {
+    os << "error: run process ended abnormally (" << child.howItEnded() << ")";
+  }
+  return os.str();
+}
+
+}  // namespace
+
 SweepPoint runSweepPointWithBudget(const SweepOptions& o, const std::vector<std::string>& texts,
                                    const std::vector<double>& values, double budget) {
   const long soft = long(std::ceil(budget));
@@ -23,21 +40,10 @@ SweepPoint runSweepPointWithBudget(const SweepOptions& o, const std::vector<std:
       // fall through: an incomplete row is a failure of the run process
     }
   }
-  SweepPoint p;
-  p.texts = texts;
-  p.values = values;
-  p.metrics.assign(sweepNumericMetrics().size(), std::numeric_limits<double>::quiet_NaN());
+  SweepPoint p = pointNotRun(texts, values);
   p.ran = true;
   p.cpu_seconds = child->cpu_seconds;
-  std::ostringstream os;
-  if (child->stoppedByCpuLimit()) {
-    os << "timeout: CPU budget " << budget << " s exceeded (stopped by the CPU limit)";
-  } else if (child->endedBySignal()) {
-    os << "error: run process ended by " << child->howItEnded();
-  } else {
-    os << "error: run process ended abnormally (" << child->howItEnded() << ")";
-  }
-  p.status = os.str();
+  p.status = childFailure(*child, budget);
   return p;
 }
 

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include "io/AtomicFile.h"
@@ -94,62 +95,103 @@ std::string sweepFingerprint(const SweepOptions& o, const std::vector<std::vecto
   return buf;
 }
 
+namespace {
+
+// A progress file saved before, read for --resume: its header must carry this sweep's fingerprint;
+// the whole rows are kept by index. Only the last line can be cut by a kill mid-write: it is
+// dropped; anything else that does not read is damage.
+class SavedProgressReader {
+ public:
+  SavedProgressReader(const std::string& path, const std::string& fingerprint, std::size_t points)
+      : path_(path), fingerprint_(fingerprint), points_(points) {}
+
+  void read() {
+    std::ifstream in(path_);
+    std::string line;
+    std::vector<std::string> lines;
+    while (std::getline(in, line)) lines.push_back(line);
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      if (!lines[i].empty()) readLine(lines[i], i + 1, i + 1 == lines.size());
+  }
+
+  bool have_header = false;
+  std::string kept;  // the header and the whole rows: the file is rewritten with just these
+  std::map<std::size_t, SweepPoint> saved;
+
+ private:
+  void readLine(const std::string& l, std::size_t line_no, bool last) {
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(l);
+    } catch (const nlohmann::json::exception&) {
+      if (last) return;
+      throw std::invalid_argument(path_ + ":" + std::to_string(line_no) + ": not a saved sweep row (damaged file?)");
+    }
+    if (line_no == 1) {
+      checkHeader(j);
+      have_header = true;
+      kept += l + "\n";
+      return;
+    }
+    try {
+      readRow(j, line_no);
+      kept += l + "\n";
+    } catch (const nlohmann::json::exception& e) {
+      if (last) return;  // cut by the kill: dropped
+      throw std::invalid_argument(path_ + ":" + std::to_string(line_no) + ": not a saved sweep row: " + e.what());
+    }
+  }
+
+  void checkHeader(const nlohmann::json& j) const {
+    if (!j.is_object() || !j.contains("fingerprint"))
+      throw std::invalid_argument(path_ + ":1: not a sweep progress file (no fingerprint)");
+    const std::string saved_fp = j["fingerprint"].get<std::string>();
+    if (saved_fp != fingerprint_)
+      throw std::invalid_argument(
+          "--resume: " + path_ + " was saved by a different sweep (fingerprint " + saved_fp + ", this sweep " +
+          fingerprint_ + "): the scene file, model, --set overrides, parameters, designs or --point-budget "
+          "differ. Run the same command as before, or use another --out (or drop --resume to start afresh).");
+  }
+
+  void readRow(const nlohmann::json& j, std::size_t line_no) {
+    const std::size_t index = j.at("index").get<std::size_t>();
+    if (index >= points_)
+      throw std::invalid_argument(path_ + ":" + std::to_string(line_no) + ": point index " + std::to_string(index) +
+                                  " beyond the " + std::to_string(points_) + " designs");
+    saved.emplace(index, sweepPointFromJson(j.at("point")));
+  }
+
+  const std::string& path_;
+  const std::string& fingerprint_;
+  std::size_t points_;
+};
+
+// The file opened for appending rows, emptied unless it keeps a header to resume after.
+int openForAppending(const std::string& path, bool have_header) {
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path().empty()
+                                          ? std::filesystem::path(".")
+                                          : std::filesystem::path(path).parent_path());
+  const int flags = O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | (have_header ? 0 : O_TRUNC);
+  const int fd = ::open(path.c_str(), flags, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  return fd;
+}
+
+}  // namespace
+
 SweepProgressFile::SweepProgressFile(const std::string& path, const std::string& fingerprint,
                                      std::size_t points, bool resume)
     : path_(path) {
   bool have_header = false;
   if (resume && std::filesystem::exists(path)) {
-    std::ifstream in(path);
-    std::string line;
-    std::size_t line_no = 0;
-    std::vector<std::string> lines;
-    while (std::getline(in, line)) lines.push_back(line);
-    std::string kept;  // the header and the whole rows: the file is rewritten with just these
-    for (const std::string& l : lines) {
-      ++line_no;
-      if (l.empty()) continue;
-      nlohmann::json j;
-      try {
-        j = nlohmann::json::parse(l);
-      } catch (const nlohmann::json::exception&) {
-        // Only the last line can be cut by a kill mid-write: skip it; anything else is damage.
-        if (line_no == lines.size()) break;
-        throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": not a saved sweep row (damaged file?)");
-      }
-      if (line_no == 1) {
-        if (!j.is_object() || !j.contains("fingerprint"))
-          throw std::invalid_argument(path + ":1: not a sweep progress file (no fingerprint)");
-        const std::string saved_fp = j["fingerprint"].get<std::string>();
-        if (saved_fp != fingerprint)
-          throw std::invalid_argument(
-              "--resume: " + path + " was saved by a different sweep (fingerprint " + saved_fp + ", this sweep " +
-              fingerprint + "): the scene file, model, --set overrides, parameters, designs or --point-budget "
-              "differ. Run the same command as before, or use another --out (or drop --resume to start afresh).");
-        have_header = true;
-        kept += l + "\n";
-        continue;
-      }
-      try {
-        const std::size_t index = j.at("index").get<std::size_t>();
-        if (index >= points)
-          throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": point index " +
-                                      std::to_string(index) + " beyond the " + std::to_string(points) + " designs");
-        saved_.emplace(index, sweepPointFromJson(j.at("point")));
-        kept += l + "\n";
-      } catch (const nlohmann::json::exception& e) {
-        if (line_no == lines.size()) break;  // cut by the kill: dropped
-        throw std::invalid_argument(path + ":" + std::to_string(line_no) + ": not a saved sweep row: " + e.what());
-      }
-    }
+    SavedProgressReader saved(path, fingerprint, points);
+    saved.read();
+    saved_ = std::move(saved.saved);
+    have_header = saved.have_header;
     // Without a line cut by the kill, so the rows appended next start on a line of their own.
-    if (have_header) writeFileAtomic(path, kept);
+    if (have_header) writeFileAtomic(path, saved.kept);
   }
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path().empty()
-                                          ? std::filesystem::path(".")
-                                          : std::filesystem::path(path).parent_path());
-  const int flags = O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | (have_header ? 0 : O_TRUNC);
-  fd_ = ::open(path.c_str(), flags, 0644);
-  if (fd_ < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  fd_ = openForAppending(path, have_header);
   if (!have_header) {
     const nlohmann::json header = {{"rollerdyn_sweep_progress", 1}, {"fingerprint", fingerprint}, {"points", points}};
     writeLine(fd_, path_, header.dump() + "\n");

@@ -133,45 +133,74 @@ Table simulateTwoRotorChain(const TwoRotorChainParams& p) {
   return t;
 }
 
+namespace {
+
+// The smallest and largest value of a sequence.
+struct Span {
+  double lo = 1e300, hi = -1e300;
+  void add(double v) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  double swing() const { return hi - lo; }
+};
+
+// The last period of the run (the steady state): swings of the simulated, corrected and printed
+// twist, and the sum of the simulated twist over one whole period for its mean.
+struct SteadyPeriod {
+  explicit SteadyPeriod(double begin) : t_begin(begin) {}
+  double t_begin;
+  Span sim, corrected, printed;
+  double sum = 0;
+  long count = 0;
+
+  // A row of the last period: the steady errors of the closed forms and the swings.
+  void add(const TwoRotorChainParams& p, double t, double ps, ChainComparison& c) {
+    const double sc = chainTwistCorrected(p, t, false), sp = chainTwistPrinted(p, t, false);
+    c.max_err_corrected_steady = std::max(c.max_err_corrected_steady, std::abs(ps - sc));
+    c.max_err_printed_steady = std::max(c.max_err_printed_steady, std::abs(ps - sp));
+    sim.add(ps);
+    corrected.add(sc);
+    printed.add(sp);
+    if (t > t_begin + 1e-9) {  // one whole period on a uniform grid: exact mean of the harmonics
+      sum += ps;
+      ++count;
+    }
+  }
+};
+
+std::vector<std::string> chainResonanceWarnings(double p0, double omega) {
+  std::vector<std::string> warnings;
+  for (const ResonanceHit& h : resonanceHits(p0, omega))
+    warnings.push_back("p0 = " + std::to_string(p0) + " rad/s is within 10 % of " + std::to_string(h.harmonic) +
+                       "*omega = " + std::to_string(h.harmonic * omega) +
+                       " rad/s (Dyomin (two rotors) eq. (10), (16)-(21))");
+  return warnings;
+}
+
+}  // namespace
+
 ChainComparison compareTwoRotorChain(const TwoRotorChainParams& p) {
   ChainComparison c;
   c.derived = deriveChain(p);
   c.harmonics = chainHarmonics(p);
   const Table sim = simulateTwoRotorChain(p);
   c.table.columns = {"t", "psi_sim", "psi_corrected", "psi_printed", "drive_torque", "chain_torque_sim"};
-  const double t_steady = c.derived.t_end - 2 * M_PI / p.omega;
-  double smin = 1e300, smax = -1e300, cmin = 1e300, cmax = -1e300, pmin = 1e300, pmax = -1e300;
-  double sum = 0;
-  long count = 0;
+  SteadyPeriod last{c.derived.t_end - 2 * M_PI / p.omega};
   for (const auto& row : sim.rows) {
     const double t = row[0], ps = row[1];
     const double pc = chainTwistCorrected(p, t, true), pp = chainTwistPrinted(p, t, true);
     c.table.rows.push_back({t, ps, pc, pp, row[8], row[7]});
     c.max_err_corrected_full = std::max(c.max_err_corrected_full, std::abs(ps - pc));
     c.max_err_printed_full = std::max(c.max_err_printed_full, std::abs(ps - pp));
-    if (t >= t_steady - 1e-12) {
-      const double sc = chainTwistCorrected(p, t, false), sp = chainTwistPrinted(p, t, false);
-      c.max_err_corrected_steady = std::max(c.max_err_corrected_steady, std::abs(ps - sc));
-      c.max_err_printed_steady = std::max(c.max_err_printed_steady, std::abs(ps - sp));
-      smin = std::min(smin, ps); smax = std::max(smax, ps);
-      cmin = std::min(cmin, sc); cmax = std::max(cmax, sc);
-      pmin = std::min(pmin, sp); pmax = std::max(pmax, sp);
-      if (t > t_steady + 1e-9) {  // one whole period on a uniform grid: exact mean of the harmonics
-        sum += ps;
-        ++count;
-      }
-    }
+    if (t >= last.t_begin - 1e-12) last.add(p, t, ps, c);
   }
-  c.swing_sim = smax - smin;
-  c.swing_corrected = cmax - cmin;
-  c.swing_printed = pmax - pmin;
-  c.mean_sim = count ? sum / count : kNaN;
+  c.swing_sim = last.sim.swing();
+  c.swing_corrected = last.corrected.swing();
+  c.swing_printed = last.printed.swing();
+  c.mean_sim = last.count ? last.sum / last.count : kNaN;
   c.mean_closed = c.derived.Phi0;
-  for (const ResonanceHit& h : resonanceHits(c.derived.p0, p.omega)) {
-    c.resonance_warnings.push_back("p0 = " + std::to_string(c.derived.p0) + " rad/s is within 10 % of " +
-                                   std::to_string(h.harmonic) + "*omega = " +
-                                   std::to_string(h.harmonic * p.omega) + " rad/s (Dyomin (two rotors) eq. (10), (16)-(21))");
-  }
+  c.resonance_warnings = chainResonanceWarnings(c.derived.p0, p.omega);
   return c;
 }
 
