@@ -425,9 +425,7 @@ std::string figuresHtml(const FigureSet& figures) {
   std::ostringstream h;
   for (const FigureFile& f : figures.figures) {
     h << "<figure id=\"" << htmlEscape(f.name) << "\">";
-    if (!f.png.empty())
-      h << "<img alt=\"" << htmlEscape(f.name) << "\" src=\"data:image/png;base64,"
-        << base64Encode(readFileContents(f.png, "figure")) << "\">";
+    h << embeddedPngHtml(f);
     h << "<figcaption>" << htmlEscape(f.caption) << "</figcaption></figure>\n";
   }
   return h.str();
