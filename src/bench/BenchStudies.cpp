@@ -154,70 +154,83 @@ bool runReference(const Scene& scene, const std::vector<SolverSetting>& candidat
   return false;
 }
 
+// A model's reference run: the other runs of the model get their errors against its table.
+struct ModelReference {
+  bool found = false;
+  BenchRow row;
+  Table table;
+  const BenchRow* rowIfFound() const { return found ? &row : nullptr; }
+  const Table* tableIfFound() const { return found ? &table : nullptr; }
+};
+
+// Runs the model's reference (the first usable candidate) and, when found, adds it to the rows.
+ModelReference referenceRun(const Scene& scene, const std::vector<SolverSetting>& candidates, const BenchOptions& opt,
+                            std::vector<BenchRow>& rows) {
+  ModelReference ref;
+  ref.found = runReference(scene, candidates, opt, ref.row, ref.table);
+  if (ref.found) {
+    rows.push_back(ref.row);
+    logRow(opt, rows.back(), rows.size());
+  }
+  return ref;
+}
+
+// One integrator of one model at every accuracy of the grid, loosest first.
+std::vector<SolverSetting> accuracySeries(const std::string& model, const std::string& integrator,
+                                          const std::vector<double>& grid) {
+  std::vector<SolverSetting> series;
+  for (double a : grid) series.push_back({model, integrator, a, 0});
+  return series;
+}
+
+// Multibody reference: RungeKuttaMerson at kReferenceAccuracy (fallbacks RungeKuttaFeldberg,
+// CPodes). Merson rather than the 5th-order Feldberg because at the same accuracy it takes
+// about 3x more, smaller steps, so whatever in the model is not fully under error control
+// (e.g. an O(h) lag, as the guide friction had before it became a state) is resolved best; the
+// reference check in bench.md shows how closely the other integrators agree with it.
+void runMultibodyIntegrators(const Scene& scene, const std::vector<double>& grid, const BenchOptions& opt,
+                             std::vector<BenchRow>& rows) {
+  std::vector<SolverSetting> cands;
+  for (const char* n : {"RungeKuttaMerson", "RungeKuttaFeldberg", "CPodes"})
+    cands.push_back({kMultibody, n, kReferenceAccuracy, 0});
+  const ModelReference ref = referenceRun(scene, cands, opt, rows);
+  for (const std::string& name : integratorNames())
+    runSeries(scene, accuracySeries(kMultibody, name, grid), ref.rowIfFound(), ref.tableIfFound(), opt, rows);
+}
+
+// The minimal formulation of the same multibody model against its own reference at
+// kReferenceAccuracy: it runs the scene's guide-friction law, which the constrained
+// formulation cannot when it is the algebraic one (GuideFriction.h).
+void runMinimalFormulation(const Scene& scene, const std::vector<double>& grid, const BenchOptions& opt,
+                           std::vector<BenchRow>& rows) {
+  const ModelReference ref =
+      referenceRun(scene, {{kMinimal, kMinimalIntegrator, kReferenceAccuracy, 0}}, opt, rows);
+  runSeries(scene, accuracySeries(kMinimal, kMinimalIntegrator, grid), ref.rowIfFound(), ref.tableIfFound(), opt,
+            rows);
+}
+
+// Reduced: CVODE at kReferenceAccuracy is the reference of both reduced integrators (Baranov's
+// scheme on a rigid drive, at its crank-angle steps).
+void runReducedIntegrators(const Scene& scene, const std::vector<double>& grid, const BenchOptions& opt,
+                           std::vector<BenchRow>& rows) {
+  const ModelReference ref = referenceRun(scene, {{kReduced, "cvode", kReferenceAccuracy, 0}}, opt, rows);
+  runSeries(scene, accuracySeries(kReduced, "cvode", grid), ref.rowIfFound(), ref.tableIfFound(), opt, rows);
+  if (scene.coupling.type == CouplingType::Rigid) {
+    std::vector<SolverSetting> bar;
+    for (double h : baranovSteps(opt.quick)) bar.push_back({kReduced, "baranov", 0, h});
+    runSeries(scene, bar, nullptr, ref.tableIfFound(), opt, rows);
+  }
+}
+
 }  // namespace
 
 std::vector<BenchRow> runIntegratorStudy(const SceneSource& source, const BenchOptions& opt) {
   const Scene scene = benchScene(source.load(), opt);
   const std::vector<double> grid = accuracyGrid(opt.quick);
   std::vector<BenchRow> rows;
-
-  // Multibody reference: RungeKuttaMerson at kReferenceAccuracy (fallbacks RungeKuttaFeldberg,
-  // CPodes). Merson rather than the 5th-order Feldberg because at the same accuracy it takes
-  // about 3x more, smaller steps, so whatever in the model is not fully under error control
-  // (e.g. an O(h) lag, as the guide friction had before it became a state) is resolved best; the
-  // reference check in bench.md shows how closely the other integrators agree with it.
-  {
-    BenchRow ref;
-    Table ref_table;
-    std::vector<SolverSetting> cands;
-    for (const char* n : {"RungeKuttaMerson", "RungeKuttaFeldberg", "CPodes"})
-      cands.push_back({kMultibody, n, kReferenceAccuracy, 0});
-    const bool have_ref = runReference(scene, cands, opt, ref, ref_table);
-    if (have_ref) {
-      rows.push_back(ref);
-      logRow(opt, rows.back(), rows.size());
-    }
-    for (const std::string& name : integratorNames()) {
-      std::vector<SolverSetting> series;
-      for (double a : grid) series.push_back({kMultibody, name, a, 0});
-      runSeries(scene, series, have_ref ? &ref : nullptr, have_ref ? &ref_table : nullptr, opt, rows);
-    }
-  }
-  // The minimal formulation of the same multibody model against its own reference at
-  // kReferenceAccuracy: it runs the scene's guide-friction law, which the constrained
-  // formulation cannot when it is the algebraic one (GuideFriction.h).
-  {
-    BenchRow ref;
-    Table ref_table;
-    const bool have_ref =
-        runReference(scene, {{kMinimal, kMinimalIntegrator, kReferenceAccuracy, 0}}, opt, ref, ref_table);
-    if (have_ref) {
-      rows.push_back(ref);
-      logRow(opt, rows.back(), rows.size());
-    }
-    std::vector<SolverSetting> minimal;
-    for (double a : grid) minimal.push_back({kMinimal, kMinimalIntegrator, a, 0});
-    runSeries(scene, minimal, have_ref ? &ref : nullptr, have_ref ? &ref_table : nullptr, opt, rows);
-  }
-  // Reduced: CVODE at kReferenceAccuracy is the reference of both reduced integrators.
-  {
-    BenchRow ref;
-    Table ref_table;
-    const bool have_ref =
-        runReference(scene, {{kReduced, "cvode", kReferenceAccuracy, 0}}, opt, ref, ref_table);
-    if (have_ref) {
-      rows.push_back(ref);
-      logRow(opt, rows.back(), rows.size());
-    }
-    std::vector<SolverSetting> series;
-    for (double a : grid) series.push_back({kReduced, "cvode", a, 0});
-    runSeries(scene, series, have_ref ? &ref : nullptr, have_ref ? &ref_table : nullptr, opt, rows);
-    if (scene.coupling.type == CouplingType::Rigid) {
-      std::vector<SolverSetting> bar;
-      for (double h : baranovSteps(opt.quick)) bar.push_back({kReduced, "baranov", 0, h});
-      runSeries(scene, bar, nullptr, have_ref ? &ref_table : nullptr, opt, rows);
-    }
-  }
+  runMultibodyIntegrators(scene, grid, opt, rows);
+  runMinimalFormulation(scene, grid, opt, rows);
+  runReducedIntegrators(scene, grid, opt, rows);
   return rows;
 }
 
