@@ -32,7 +32,7 @@ CouplingModeBand couplingModeBand(const SteadyMotion& steady, const Band& frozen
   double p_lo = frozen_natural.min, p_hi = frozen_natural.max, zeta = frozen_damping.min;
   if (floquet) {
     zeta = v.torsional_damping_ratio;
-    p_lo = p_hi = v.torsional_frequency / std::sqrt(std::max(1e-12, 1 - zeta * zeta));
+    p_lo = p_hi = v.torsionalNaturalFrequency();
   }
   return {p_lo, p_hi, zeta, floquet};
 }
