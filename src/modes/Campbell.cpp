@@ -21,6 +21,58 @@ std::vector<double> lineCrossings(const std::vector<double>& w, const std::vecto
 
 namespace {
 
+// How the steady motion at crank speed w is searched: warm-started from the last speed's orbit
+// when there is one, the Floquet branch referred to the frozen frequency at uniform rotation.
+SteadyMotionOptions campbellSearch(DriveModel& drive, const Scene& s, double w, int angles,
+                                   const Eigen::VectorXd& warm) {
+  SteadyMotionOptions o;
+  o.samples = angles;
+  o.rtol = 1e-7;
+  if (warm.size()) {
+    o.start = warm;
+    o.start(0) = w;
+    o.warmup_periods = 0;
+  }
+  // Reference for the Floquet branch: frozen frequency at uniform rotation.
+  DrivePoint p0;
+  p0.phi = s.initial.crank_angle;
+  p0.omega = w;
+  o.reference_frequency = frozenModes(drive, s, p0).oscillation_frequency();
+  return o;
+}
+
+// The frozen-angle band along the orbit m, its damping and whether the mode oscillates at every
+// angle; returns the mean of the damped frequency Im λ (the Floquet branch's reference).
+double addFrozenBand(CampbellPoint& p, DriveModel& drive, const Scene& s, const SteadyMotion& m) {
+  std::vector<double> f, fd, z;
+  p.oscillates = true;
+  for (const DrivePoint& q : m.samples) {
+    const FrozenAngle fa = frozenModes(drive, s, q);
+    f.push_back(fa.torsional_frequency());
+    fd.push_back(fa.oscillation_frequency());
+    for (const FrozenMode& mode : fa.modes)
+      if (mode.torsional) {
+        z.push_back(mode.damping_ratio);
+        p.oscillates = p.oscillates && mode.oscillates;
+      }
+  }
+  p.frozen = bandOf(f);
+  p.frozen_damping = bandOf(z);
+  return bandOf(fd).mean;
+}
+
+// Floquet frequency on the branch nearest the frozen mean of the damped frequency Im λ (`ref`).
+void addFloquet(CampbellPoint& p, const SteadyMotion& m, double ref) {
+  const auto mult =
+      classifyMultipliers(floquetMultipliers(m.monodromy, m.period, std::isfinite(ref) ? ref : p.frozen.mean), true);
+  const FloquetVerdict v = judge(mult);
+  p.max_modulus = v.max_modulus;
+  if (v.has_torsional) {
+    p.floquet_frequency = v.torsional_frequency;
+    p.floquet_damping_ratio = v.torsional_damping_ratio;
+  }
+}
+
 // One speed of the diagram: the steady motion at crank speed w (warm-started from the last speed's
 // orbit, which `warm` carries on), the frozen-angle band along it and the Floquet verdict.
 CampbellPoint campbellPoint(const Scene& scene, double w, double omega_op, int angles, Eigen::VectorXd& warm) {
@@ -29,50 +81,14 @@ CampbellPoint campbellPoint(const Scene& scene, double w, double omega_op, int a
   try {
     const Scene s = sceneAtCrankSpeed(scene, w, omega_op);
     auto drive = makeReducedDrive(s);
-    SteadyMotionOptions o;
-    o.samples = angles;
-    o.rtol = 1e-7;
-    if (warm.size()) {
-      o.start = warm;
-      o.start(0) = w;
-      o.warmup_periods = 0;
-    }
-    // Reference for the Floquet branch: frozen frequency at uniform rotation.
-    DrivePoint p0;
-    p0.phi = s.initial.crank_angle;
-    p0.omega = w;
-    o.reference_frequency = frozenModes(*drive, s, p0).oscillation_frequency();
-    SteadyMotion m = steadyMotion(*drive, s, o);
+    const SteadyMotion m = steadyMotion(*drive, s, campbellSearch(*drive, s, w, angles, warm));
     if (!m.found) {
       p.failure = m.failure;
     } else {
       p.found = true;
       p.omega_mean = m.omega_mean;
       warm = m.x0;
-      std::vector<double> f, fd, z;
-      p.oscillates = true;
-      for (const DrivePoint& q : m.samples) {
-        const FrozenAngle fa = frozenModes(*drive, s, q);
-        f.push_back(fa.torsional_frequency());
-        fd.push_back(fa.oscillation_frequency());
-        for (const FrozenMode& mode : fa.modes)
-          if (mode.torsional) {
-            z.push_back(mode.damping_ratio);
-            p.oscillates = p.oscillates && mode.oscillates;
-          }
-      }
-      p.frozen = bandOf(f);
-      p.frozen_damping = bandOf(z);
-      // Floquet frequency on the branch nearest the frozen mean of the damped frequency Im λ.
-      const double ref = bandOf(fd).mean;
-      const auto mult =
-          classifyMultipliers(floquetMultipliers(m.monodromy, m.period, std::isfinite(ref) ? ref : p.frozen.mean), true);
-      const FloquetVerdict v = judge(mult);
-      p.max_modulus = v.max_modulus;
-      if (v.has_torsional) {
-        p.floquet_frequency = v.torsional_frequency;
-        p.floquet_damping_ratio = v.torsional_damping_ratio;
-      }
+      addFloquet(p, m, addFrozenBand(p, *drive, s, m));
     }
   } catch (const std::exception& e) {
     p.failure = e.what();

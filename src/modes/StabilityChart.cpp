@@ -26,6 +26,56 @@ std::vector<double> linearGrid(double a, double b, int n) {
 
 namespace {
 
+// How a chart point's steady motion is searched: warm-started from `warm` (found at stiffness
+// c_warm), the Floquet branch referred to the frozen frequency at the expected running speed.
+SteadyMotionOptions chartSearch(DriveModel& drive, const Scene& s, double c, const Eigen::VectorXd& warm,
+                                double c_warm) {
+  SteadyMotionOptions o;
+  o.samples = 0;
+  o.rtol = 1e-6;  // the verdict compares |μ| with 1: six digits are plenty
+  // Warm-started points converge in 1-3 iterations; one that needs more is near a forced
+  // resonance of an undamped coupling (Φ - I nearly singular) and is reported without a
+  // steady motion rather than chased.
+  o.max_newton = 10;
+  if (warm.size() == 3) {  // twist and its rate scale as 1/c
+    o.start = warm;
+    o.start(1) *= c_warm / c;
+    o.start(2) *= c_warm / c;
+    o.warmup_periods = 0;
+  }
+  DrivePoint p0;
+  p0.phi = s.initial.crank_angle;
+  const SteadyGuess g = steadyGuess(drive.reducedModel());
+  p0.omega = g.ok ? g.omega : s.motor.omega_sync / s.reducer.ratio;
+  p0.twist = g.twist;
+  o.reference_frequency = frozenModes(drive, s, p0).oscillation_frequency();
+  return o;
+}
+
+// The steady motion searched with `o`; when a warm start found none, searched again from the guess.
+SteadyMotion chartSteadyMotion(DriveModel& drive, const Scene& s, SteadyMotionOptions o, bool warm_started) {
+  SteadyMotion m = steadyMotion(drive, s, o);
+  if (!m.found && warm_started) {  // the warm start may mislead: try from the guess
+    o.start.resize(0);
+    o.warmup_periods = 3;
+    m = steadyMotion(drive, s, o);
+  }
+  return m;
+}
+
+// The point's verdict from the steady motion found.
+void setVerdict(StabilityPoint& p, const SteadyMotion& m) {
+  p.found = true;
+  p.omega_mean = m.omega_mean;
+  p.max_modulus = m.verdict.max_modulus;
+  p.stable = m.verdict.stable;
+  p.verdict = m.verdict.text;
+  if (m.verdict.has_torsional) {
+    p.torsional_damping_ratio = m.verdict.torsional_damping_ratio;
+    p.torsional_frequency = m.verdict.torsional_frequency;
+  }
+}
+
 // One chart point: the Floquet verdict of `s`, warm-started from `warm` (updated).
 StabilityPoint evaluate(const Scene& s, double c, double y, Eigen::VectorXd& warm, double c_warm) {
   StabilityPoint p;
@@ -33,46 +83,14 @@ StabilityPoint evaluate(const Scene& s, double c, double y, Eigen::VectorXd& war
   p.y = y;
   try {
     auto drive = makeReducedDrive(s);
-    SteadyMotionOptions o;
-    o.samples = 0;
-    o.rtol = 1e-6;  // the verdict compares |μ| with 1: six digits are plenty
-    // Warm-started points converge in 1-3 iterations; one that needs more is near a forced
-    // resonance of an undamped coupling (Φ - I nearly singular) and is reported without a
-    // steady motion rather than chased.
-    o.max_newton = 10;
-    if (warm.size() == 3) {  // twist and its rate scale as 1/c
-      o.start = warm;
-      o.start(1) *= c_warm / c;
-      o.start(2) *= c_warm / c;
-      o.warmup_periods = 0;
-    }
-    DrivePoint p0;
-    p0.phi = s.initial.crank_angle;
-    const SteadyGuess g = steadyGuess(drive->reducedModel());
-    p0.omega = g.ok ? g.omega : s.motor.omega_sync / s.reducer.ratio;
-    p0.twist = g.twist;
-    o.reference_frequency = frozenModes(*drive, s, p0).oscillation_frequency();
-    SteadyMotion m = steadyMotion(*drive, s, o);
-    if (!m.found && warm.size()) {  // the warm start may mislead: try from the guess
-      o.start.resize(0);
-      o.warmup_periods = 3;
-      m = steadyMotion(*drive, s, o);
-    }
+    const SteadyMotion m = chartSteadyMotion(*drive, s, chartSearch(*drive, s, c, warm, c_warm), warm.size() > 0);
     if (!m.found) {
       p.verdict = "no steady running";
       warm.resize(0);
       return p;
     }
     warm = m.x0;
-    p.found = true;
-    p.omega_mean = m.omega_mean;
-    p.max_modulus = m.verdict.max_modulus;
-    p.stable = m.verdict.stable;
-    p.verdict = m.verdict.text;
-    if (m.verdict.has_torsional) {
-      p.torsional_damping_ratio = m.verdict.torsional_damping_ratio;
-      p.torsional_frequency = m.verdict.torsional_frequency;
-    }
+    setVerdict(p, m);
   } catch (const std::exception& e) {
     p.verdict = "no steady running";
     warm.resize(0);
