@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "motor/BreakdownTorque.h"
 #include "modes/PeriodicFlow.h"
 #include "motor/MotorLawFactory.h"
 #include "reduced/ReducedModel.h"
@@ -205,39 +204,23 @@ OrbitOptions orbitOptions(const SteadyMotionOptions& o) {
 
 }  // namespace
 
-SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMotionOptions& o) {
-  SteadyMotion r;
-  r.elastic = drive.elastic();
-  r.phi0 = scene.initial.crank_angle;
-  Eigen::VectorXd start = o.start;
-  double omega_scale = scene.motor.omega_sync / scene.reducer.ratio;
-  double twist_scale = 1e-6;
-  if (start.size() == 0) {
-    const SteadyGuess g = steadyGuess(drive.reducedModel());
-    if (!g.ok) {
-      r.failure = g.failure;
-      return r;
-    }
-    if (r.elastic)
-      start = Eigen::VectorXd(Eigen::Vector3d(g.omega, g.twist, 0.0));
-    else
-      start = Eigen::VectorXd::Constant(1, g.omega);
-  }
-  if (r.elastic) {
-    const double M_ref = std::max(motorBreakdownTorque(scene) * scene.reducer.ratio * scene.reducer.efficiency, 1.0);
-    twist_scale = M_ref / scene.coupling.stiffness;
-  }
-  const double phi0 = r.phi0;
-  const bool elastic = r.elastic;
-  const PeriodicSystem sys =
-      revolutionSystem(drive, phi0, elastic, o.quasi_static_auxiliary, omega_scale, twist_scale);
-  const OrbitOptions oo = orbitOptions(o);
-  const PeriodicOrbit orbit = findPeriodicOrbit(sys, start, oo);
-  r.evaluations = orbit.evaluations;
-  if (!orbit.found) {
-    r.failure = orbit.failure;
-    return r;
-  }
+namespace {
+
+// Newton's start: the options' own, else the steady guess (a failure when there is none).
+std::string searchStart(DriveModel& drive, const SteadyMotionOptions& o, bool elastic, Eigen::VectorXd& start) {
+  start = o.start;
+  if (start.size() != 0) return "";
+  const SteadyGuess g = steadyGuess(drive.reducedModel());
+  if (!g.ok) return g.failure;
+  if (elastic)
+    start = Eigen::VectorXd(Eigen::Vector3d(g.omega, g.twist, 0.0));
+  else
+    start = Eigen::VectorXd::Constant(1, g.omega);
+  return "";
+}
+
+// The steady motion from the periodic orbit found: start, monodromy, period and the samples.
+void takeOrbit(SteadyMotion& r, const PeriodicOrbit& orbit) {
   r.found = true;
   r.x0 = orbit.x0;
   r.monodromy = orbit.monodromy;
@@ -246,9 +229,31 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
   r.omega_mean = 2 * M_PI / r.period;
   for (size_t k = 0; k < orbit.s_samples.size(); ++k) {
     const Eigen::VectorXd& x = orbit.x_samples[k];
-    r.samples.push_back(drivePointAt(phi0 + orbit.s_samples[k], x, elastic));
+    r.samples.push_back(drivePointAt(r.phi0 + orbit.s_samples[k], x, r.elastic));
     r.sample_time.push_back(x(x.size() - 1));
   }
+}
+
+}  // namespace
+
+SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMotionOptions& o) {
+  SteadyMotion r;
+  r.elastic = drive.elastic();
+  r.phi0 = scene.initial.crank_angle;
+  Eigen::VectorXd start;
+  r.failure = searchStart(drive, o, r.elastic, start);
+  if (!r.failure.empty()) return r;
+  const double omega_scale = scene.motor.omega_sync / scene.reducer.ratio;
+  const double twist_scale = r.elastic ? breakdownTwist(scene) : 1e-6;
+  const PeriodicSystem sys =
+      revolutionSystem(drive, r.phi0, r.elastic, o.quasi_static_auxiliary, omega_scale, twist_scale);
+  const PeriodicOrbit orbit = findPeriodicOrbit(sys, start, orbitOptions(o));
+  r.evaluations = orbit.evaluations;
+  if (!orbit.found) {
+    r.failure = orbit.failure;
+    return r;
+  }
+  takeOrbit(r, orbit);
   rebranch(r, o.reference_frequency);
   return r;
 }

@@ -8,7 +8,6 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
-#include "motor/BreakdownTorque.h"
 #include "reduced/ReducedModel.h"
 
 namespace rollerdyn::modes {
@@ -259,11 +258,7 @@ struct DifferenceSteps {
 };
 
 DifferenceSteps differenceSteps(const Scene& scene, const DrivePoint& p, bool elastic) {
-  const double twist_h =
-      1e-6 * std::max(std::abs(p.twist),
-                      elastic ? std::max(motorBreakdownTorque(scene) * scene.reducer.ratio * scene.reducer.efficiency, 1.0) /
-                                    scene.coupling.stiffness
-                              : 1.0);
+  const double twist_h = 1e-6 * std::max(std::abs(p.twist), elastic ? breakdownTwist(scene) : 1.0);
   const double phi_h = 1e-6, omega_h = 1e-6 * std::max(std::abs(p.omega), 1.0);
   const double rate_h = twist_h * std::max(std::abs(p.omega), 1.0);
   return {phi_h, omega_h, twist_h, rate_h};
