@@ -96,46 +96,63 @@ CampbellPoint campbellPoint(const Scene& scene, double w, double omega_op, int a
   return p;
 }
 
-// Where the lines p = k*omega and 2p = k*omega of every order meet the frozen mean, with the band
-// between their crossings of the lowest and highest frozen frequency; sorted by speed.
-void findCrossings(CampbellDiagram& d, const std::vector<int>& orders) {
+// The frozen band over the speeds found: speed, mean, lowest and highest frequency (NaN where the
+// mode is overdamped).
+struct FrozenBandCurves {
   std::vector<double> w, fmean, fmin, fmax;
+};
+
+FrozenBandCurves frozenBandCurves(CampbellDiagram& d) {
+  FrozenBandCurves b;
   for (const CampbellPoint& p : d.points) {
     if (!p.found) continue;
     // An overdamped mode has no frequency a line could meet: NaN breaks the lines there.
     if (!p.oscillates) ++d.overdamped_speeds;
-    w.push_back(p.omega_mean);
-    fmean.push_back(p.oscillates ? p.frozen.mean : NAN);
-    fmin.push_back(p.oscillates ? p.frozen.min : NAN);
-    fmax.push_back(p.oscillates ? p.frozen.max : NAN);
+    b.w.push_back(p.omega_mean);
+    b.fmean.push_back(p.oscillates ? p.frozen.mean : NAN);
+    b.fmin.push_back(p.oscillates ? p.frozen.min : NAN);
+    b.fmax.push_back(p.oscillates ? p.frozen.max : NAN);
   }
+  return b;
+}
+
+// The value of v nearest x (NaN when v is empty).
+double nearestTo(const std::vector<double>& v, double x) {
+  double best = NAN;
+  for (double y : v)
+    if (!std::isfinite(best) || std::abs(y - x) < std::abs(best - x)) best = y;
+  return best;
+}
+
+// The crossings of one order's line (p = k*omega, or 2p = k*omega when parametric) with the frozen
+// mean, each with the band between the crossings of the lowest and highest frequency nearest it.
+void addLineCrossings(CampbellDiagram& d, const FrozenBandCurves& b, int k, bool parametric) {
+  const double slope = campbellSlope(k, parametric);
+  const std::vector<double> cm = lineCrossings(b.w, b.fmean, slope);
+  const std::vector<double> clo = lineCrossings(b.w, b.fmin, slope), chi = lineCrossings(b.w, b.fmax, slope);
+  for (double x : cm) {
+    CampbellCrossing c;
+    c.order = k;
+    c.parametric = parametric;
+    c.omega = x;
+    c.frequency = slope * x;
+    // The band's edges: the crossings of the lowest and highest frequency nearest this one.
+    const double lo = nearestTo(clo, x), hi = nearestTo(chi, x);
+    c.omega_band_low = std::isfinite(lo) && std::isfinite(hi) ? std::min(lo, hi) : NAN;
+    c.omega_band_high = std::isfinite(lo) && std::isfinite(hi) ? std::max(lo, hi) : NAN;
+    d.crossings.push_back(c);
+  }
+}
+
+// Where the lines p = k*omega and 2p = k*omega of every order meet the frozen mean, with the band
+// between their crossings of the lowest and highest frozen frequency; sorted by speed.
+void findCrossings(CampbellDiagram& d, const std::vector<int>& orders) {
+  const FrozenBandCurves b = frozenBandCurves(d);
   for (int k : orders)
-    for (bool parametric : {false, true}) {
-      const double slope = campbellSlope(k, parametric);
-      const std::vector<double> cm = lineCrossings(w, fmean, slope);
-      const std::vector<double> clo = lineCrossings(w, fmin, slope), chi = lineCrossings(w, fmax, slope);
-      for (double x : cm) {
-        CampbellCrossing c;
-        c.order = k;
-        c.parametric = parametric;
-        c.omega = x;
-        c.frequency = slope * x;
-        // The band's edges: the crossings of the lowest and highest frequency nearest this one.
-        auto nearest = [x](const std::vector<double>& v) {
-          double best = NAN;
-          for (double y : v)
-            if (!std::isfinite(best) || std::abs(y - x) < std::abs(best - x)) best = y;
-          return best;
-        };
-        const double a = nearest(clo), b = nearest(chi);
-        c.omega_band_low = std::isfinite(a) && std::isfinite(b) ? std::min(a, b) : NAN;
-        c.omega_band_high = std::isfinite(a) && std::isfinite(b) ? std::max(a, b) : NAN;
-        d.crossings.push_back(c);
-      }
-    }
+    for (bool parametric : {false, true}) addLineCrossings(d, b, k, parametric);
   if (d.overdamped_speeds)
     d.note = "the coupling mode is overdamped (damping ratio >= 1, no oscillation) at " +
-             std::to_string(d.overdamped_speeds) + " of " + std::to_string(w.size()) +
+             std::to_string(d.overdamped_speeds) + " of " + std::to_string(b.w.size()) +
              " speeds: no crossings are listed there";
   std::sort(d.crossings.begin(), d.crossings.end(),
             [](const CampbellCrossing& a, const CampbellCrossing& b) { return a.omega < b.omega; });
