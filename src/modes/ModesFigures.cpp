@@ -297,37 +297,49 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
   return set;
 }
 
+namespace {
+
+// One spectrum figure: the signals whose names start with either prefix.
+struct SpectrumGroup {
+  std::string name, title, prefix1, prefix2;
+};
+
+// The group's spectrum figure (no series when the spectrum has none of its signals).
+PlotSpec spectrumFigure(const OrderSpectrum& s, const SpectrumGroup& gr) {
+  PlotSpec p;
+  p.title = "Order spectrum over the steady window (" + std::to_string(s.revolutions) + " revolutions): " + gr.title;
+  p.xlabel = "order of the crank speed k [-]";
+  p.ylabel = "amplitude [N·m or N] (log scale)";
+  p.logy = true;
+  for (size_t i = 0; i < s.signals.size(); ++i) {
+    const std::string& c = s.signals[i];
+    if (c.rfind(gr.prefix1, 0) != 0 && c.rfind(gr.prefix2, 0) != 0) continue;
+    PlotSeries line;
+    line.title = escapeUnderscores(c);
+    line.style = "linespoints";
+    for (size_t b = 1; b < s.orders.size(); ++b) {
+      line.x.push_back(s.orders[b]);
+      line.y.push_back(std::max(s.amplitude[i][b], 1e-9));
+    }
+    p.series.push_back(line);
+  }
+  p.preamble = "set xtics 1\nset grid xtics";
+  return p;
+}
+
+}  // namespace
+
 FigureSet drawSpectrumFigures(const OrderSpectrum& s, const std::string& dir) {
   FigureSet set;
   std::vector<PlotJob> jobs;
   if (!s.ok || !gnuplotAvailable()) return set;
   // One figure per group: coupling torque (and motor torque), guide reactions, rod and pin forces.
-  struct Group {
-    std::string name, title, prefix1, prefix2;
-  };
-  const Group groups[] = {{"spectrum_torque", "coupling torque", "coupling_torque", "motor_torque"},
-                          {"spectrum_guides", "guide reactions", "N_front_", "N_rear_"},
-                          {"spectrum_rods", "rod forces and bearing", "F_rod_", "bearing_"}};
-  for (const Group& gr : groups) {
-    PlotSpec p;
-    p.title = "Order spectrum over the steady window (" + std::to_string(s.revolutions) + " revolutions): " + gr.title;
-    p.xlabel = "order of the crank speed k [-]";
-    p.ylabel = "amplitude [N·m or N] (log scale)";
-    p.logy = true;
-    for (size_t i = 0; i < s.signals.size(); ++i) {
-      const std::string& c = s.signals[i];
-      if (c.rfind(gr.prefix1, 0) != 0 && c.rfind(gr.prefix2, 0) != 0) continue;
-      PlotSeries line;
-      line.title = escapeUnderscores(c);
-      line.style = "linespoints";
-      for (size_t b = 1; b < s.orders.size(); ++b) {
-        line.x.push_back(s.orders[b]);
-        line.y.push_back(std::max(s.amplitude[i][b], 1e-9));
-      }
-      p.series.push_back(line);
-    }
+  const SpectrumGroup groups[] = {{"spectrum_torque", "coupling torque", "coupling_torque", "motor_torque"},
+                                  {"spectrum_guides", "guide reactions", "N_front_", "N_rear_"},
+                                  {"spectrum_rods", "rod forces and bearing", "F_rod_", "bearing_"}};
+  for (const SpectrumGroup& gr : groups) {
+    const PlotSpec p = spectrumFigure(s, gr);
     if (p.series.empty()) continue;
-    p.preamble = "set xtics 1\nset grid xtics";
     jobs.push_back(plotJob(p, dir + "/" + gr.name));
     set.figures.push_back(fileOf(dir, gr.name,
                                  "Order spectrum of the " + gr.title +
