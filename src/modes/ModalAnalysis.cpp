@@ -143,6 +143,28 @@ std::vector<DrivePoint> uniformRotationPoints(const ReducedModel& rm, const Mode
   return points;
 }
 
+// The largest relative difference of the two models' frozen-angle frequencies over the points.
+double largestModelDifference(const ModelFrozenModes& reduced, const ModelFrozenModes& multibody, size_t points) {
+  double d = 0;
+  for (size_t i = 0; i < points; ++i) {
+    const double a = reduced.angles[i].torsional_frequency(), b = multibody.angles[i].torsional_frequency();
+    if (std::isfinite(a) && std::isfinite(b)) d = std::max(d, std::abs(a - b) / a);
+  }
+  return d;
+}
+
+// The multibody model's steady motion is searched from the reduced model's, without samples and
+// at a tighter tolerance, its Floquet branch referred to the frozen mean.
+SteadyMotionOptions multibodySearch(const SteadyMotionOptions& so, const ModesReport& r, double branch_reference) {
+  SteadyMotionOptions mo = so;
+  mo.samples = 0;
+  mo.rtol = 1e-8;
+  mo.start = r.steady.x0;
+  mo.warmup_periods = 0;
+  mo.reference_frequency = r.elastic ? branch_reference : 0.0;
+  return mo;
+}
+
 // The multibody model's frozen-angle modes along the same points, their largest difference from
 // the reduced model's, and (o.multibody_floquet) its own steady motion and Floquet multipliers,
 // started from the reduced model's.
@@ -151,23 +173,10 @@ void addMultibodyModes(const Scene& scene, const ModesOptions& o, const SteadyMo
   try {
     auto mb = makeMultibodyDrive(scene);
     r.frozen.push_back(frozenAlong(*mb, scene, points));
-    if (r.elastic) {
-      double d = 0;
-      for (size_t i = 0; i < points.size(); ++i) {
-        const double a = r.frozen[0].angles[i].torsional_frequency(), b = r.frozen[1].angles[i].torsional_frequency();
-        if (std::isfinite(a) && std::isfinite(b)) d = std::max(d, std::abs(a - b) / a);
-      }
-      r.model_difference = d;
-    }
+    if (r.elastic) r.model_difference = largestModelDifference(r.frozen[0], r.frozen[1], points.size());
     markPhase(o.clock, "modes: frozen-angle modes (multibody)");
     if (o.multibody_floquet && r.steady.found) {
-      SteadyMotionOptions mo = so;
-      mo.samples = 0;
-      mo.rtol = 1e-8;
-      mo.start = r.steady.x0;
-      mo.warmup_periods = 0;
-      mo.reference_frequency = r.elastic ? branch_reference : 0.0;
-      r.steady_multibody = steadyMotion(*mb, scene, mo);
+      r.steady_multibody = steadyMotion(*mb, scene, multibodySearch(so, r, branch_reference));
       r.has_multibody_steady = true;
       markPhase(o.clock, "modes: steady motion and Floquet (multibody)");
     }

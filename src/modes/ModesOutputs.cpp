@@ -240,6 +240,26 @@ nlohmann::json modesJson(const ModesReport& r) {
   return j;
 }
 
+namespace {
+
+// One model's columns of frozen.csv at one angle: p, ζ, ω_n, ω_d of the torsional mode (ω_d
+// empty where it is overdamped) and λ of the rigid-body mode.
+std::vector<double> frozenColumns(const FrozenAngle& angle) {
+  double pt = NAN, zt = NAN, wn = NAN, wd = NAN, lr = NAN;
+  for (const FrozenMode& mode : angle.modes)
+    if (mode.torsional) {
+      pt = mode.frequency;
+      zt = mode.damping_ratio;
+      wn = mode.natural_frequency;
+      wd = mode.oscillates ? mode.damped_frequency : NAN;  // overdamped: none (empty)
+    } else {
+      lr = mode.lambda;
+    }
+  return {pt, zt, wn, wd, lr};
+}
+
+}  // namespace
+
 Table frozenTable(const ModesReport& r) {
   Table t;
   t.columns = {"phi_crank", "omega_crank", "twist", "twist_rate"};
@@ -257,17 +277,8 @@ Table frozenTable(const ModesReport& r) {
     std::vector<double> row{p.phi, p.omega, p.twist, p.twist_rate};
     for (const ModelFrozenModes& m : r.frozen) {
       if (!m.ok) continue;
-      double pt = NAN, zt = NAN, wn = NAN, wd = NAN, lr = NAN;
-      for (const FrozenMode& mode : m.angles[i].modes)
-        if (mode.torsional) {
-          pt = mode.frequency;
-          zt = mode.damping_ratio;
-          wn = mode.natural_frequency;
-          wd = mode.oscillates ? mode.damped_frequency : NAN;  // overdamped: none (empty)
-        } else {
-          lr = mode.lambda;
-        }
-      row.insert(row.end(), {pt, zt, wn, wd, lr});
+      const std::vector<double> columns = frozenColumns(m.angles[i]);
+      row.insert(row.end(), columns.begin(), columns.end());
     }
     t.rows.push_back(row);
   }
