@@ -1,5 +1,5 @@
-// The reports and figures of `rollerdyn bench` (BenchStudies.h): bench.md, carts.md,
-// effects.md and their plots, from the rows the studies measured.
+// The reports of `rollerdyn bench` (BenchStudies.h): bench.md, carts.md, effects.md and
+// motors.md, from the rows the studies measured (their files and figures: BenchWriters.cpp).
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -41,13 +41,13 @@ std::string timingNote(const Scene& scene, const BenchOptions& opt) {
   return os.str();
 }
 
+}  // namespace
+
 const BenchRow* findRow(const std::vector<BenchRow>& rows, const std::string& variant, const std::string& model) {
   for (const BenchRow& r : rows)
     if (r.variant == variant && r.m.setting.model == model) return &r;
   return nullptr;
 }
-
-}  // namespace
 
 namespace {
 
@@ -181,6 +181,66 @@ std::string integratorReport(const Scene& scene, const std::vector<BenchRow>& ro
   return os.str();
 }
 
+namespace {
+
+// Every run of the carts study: its cost in total, per cart, with set-up and per RHS evaluation.
+std::string cartsTable(const std::vector<BenchRow>& rows) {
+  std::ostringstream os;
+  os << "| n | model | outcome | CPU [s] | CPU per cart [s] | CPU with set-up [s] | steps | RHS evals | "
+        "µs per RHS eval per cart | real-time factor |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const BenchRow& r : rows) {
+    const Measurement& m = r.m;
+    const double us = m.realizations > 0 ? 1e6 * m.cpu_seconds / m.realizations / r.x : NAN;
+    os << "| " << r.x << " | " << m.setting.model << " | " << toString(m.outcome) << " | " << num(m.cpu_seconds)
+       << " | " << num(m.cpu_seconds / r.x) << " | " << num(m.cpu_with_setup) << " | " << m.steps << " | "
+       << m.realizations << " | " << num(us) << " | " << num(m.real_time_factor) << " |\n";
+  }
+  return os.str();
+}
+
+// A cart count whose per-cart cost is held against 4 carts', and its target.
+struct PerCartRatio {
+  int n;
+  double target;
+  bool setup;  // the target counts the set-up
+};
+
+// The model's per-cart cost at q.n carts over its cost at 4 (empty when either run is missing);
+// the target applies to the minimal formulation.
+std::string perCartRatioRow(const std::vector<BenchRow>& rows, const char* model, const PerCartRatio& q) {
+  const BenchRow* a = findRow(rows, "n=4", model);
+  const BenchRow* b = findRow(rows, "n=" + std::to_string(q.n), model);
+  if (!a || !b || !usable(a->m.outcome) || !usable(b->m.outcome)) return "";
+  const double run_ratio = (b->m.cpu_seconds / q.n) / (a->m.cpu_seconds / 4);
+  const double setup_ratio = (b->m.cpu_with_setup / q.n) / (a->m.cpu_with_setup / 4);
+  const double rhs_ratio = (b->m.cpu_seconds / b->m.realizations / q.n) / (a->m.cpu_seconds / a->m.realizations / 4);
+  const double judged = q.setup ? setup_ratio : run_ratio;
+  std::ostringstream os;
+  os << "| " << model << " | " << q.n << " | " << num(run_ratio) << " | " << num(setup_ratio) << " | "
+     << num(rhs_ratio) << " | ";
+  if (model == std::string(kMinimal))
+    os << "≤ " << num(q.target) << (q.setup ? " with set-up" : " per run") << " | "
+       << (judged <= q.target ? "yes" : "no") << " |\n";
+  else
+    os << "— | — |\n";
+  return os.str();
+}
+
+std::string perCartRatios(const std::vector<BenchRow>& rows) {
+  std::ostringstream os;
+  os << "\n## Per-cart cost relative to 4 carts\n\n"
+     << "| model | n | per run (CPU/n) | with set-up (CPU/n) | per RHS evaluation (CPU/RHS/n) | target | met |\n"
+     << "|---|---|---|---|---|---|---|\n";
+  for (const char* model : {kMultibody, kMinimal, kReduced})
+    for (const PerCartRatio& q : {PerCartRatio{32, kTargetPerCartCostRatio32, false},
+                                  PerCartRatio{64, kTargetPerCartCostRatio64, false},
+                                  PerCartRatio{256, kTargetPerCartCostRatio256, true}})
+      os << perCartRatioRow(rows, model, q);
+  return os.str();
+}
+
+}  // namespace
+
 std::string cartsReport(const Scene& scene, const std::vector<BenchRow>& rows, const BenchOptions& opt) {
   std::ostringstream os;
   os << "# Cost vs number of carts: " << scene.name << "\n\n"
@@ -191,42 +251,7 @@ std::string cartsReport(const Scene& scene, const std::vector<BenchRow>& rows, c
      << num(benchScene(scene, opt).simulation.t_end) << " s simulated. " << timingNote(scene, opt) << "\n\n"
      << "The multibody model's constrained formulation runs up to 32 carts (its evaluation is O(n²)). "
         "CPU with set-up: the model's construction, initial state and run, in the process that runs it.\n\n"
-     << "| n | model | outcome | CPU [s] | CPU per cart [s] | CPU with set-up [s] | steps | RHS evals | "
-        "µs per RHS eval per cart | real-time factor |\n|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const BenchRow& r : rows) {
-    const Measurement& m = r.m;
-    const double us = m.realizations > 0 ? 1e6 * m.cpu_seconds / m.realizations / r.x : NAN;
-    os << "| " << r.x << " | " << m.setting.model << " | " << toString(m.outcome) << " | " << num(m.cpu_seconds)
-       << " | " << num(m.cpu_seconds / r.x) << " | " << num(m.cpu_with_setup) << " | " << m.steps << " | "
-       << m.realizations << " | " << num(us) << " | " << num(m.real_time_factor) << " |\n";
-  }
-  os << "\n## Per-cart cost relative to 4 carts\n\n"
-     << "| model | n | per run (CPU/n) | with set-up (CPU/n) | per RHS evaluation (CPU/RHS/n) | target | met |\n"
-     << "|---|---|---|---|---|---|---|\n";
-  struct Ratio {
-    int n;
-    double target;
-    bool setup;  // the target counts the set-up
-  };
-  for (const char* model : {kMultibody, kMinimal, kReduced})
-    for (const Ratio& q : {Ratio{32, kTargetPerCartCostRatio32, false}, Ratio{64, kTargetPerCartCostRatio64, false},
-                           Ratio{256, kTargetPerCartCostRatio256, true}}) {
-      const BenchRow* a = findRow(rows, "n=4", model);
-      const BenchRow* b = findRow(rows, "n=" + std::to_string(q.n), model);
-      if (!a || !b || !usable(a->m.outcome) || !usable(b->m.outcome)) continue;
-      const double run_ratio = (b->m.cpu_seconds / q.n) / (a->m.cpu_seconds / 4);
-      const double setup_ratio = (b->m.cpu_with_setup / q.n) / (a->m.cpu_with_setup / 4);
-      const double rhs_ratio =
-          (b->m.cpu_seconds / b->m.realizations / q.n) / (a->m.cpu_seconds / a->m.realizations / 4);
-      const double judged = q.setup ? setup_ratio : run_ratio;
-      os << "| " << model << " | " << q.n << " | " << num(run_ratio) << " | " << num(setup_ratio) << " | "
-         << num(rhs_ratio) << " | ";
-      if (model == std::string(kMinimal))
-        os << "≤ " << num(q.target) << (q.setup ? " with set-up" : " per run") << " | "
-           << (judged <= q.target ? "yes" : "no") << " |\n";
-      else
-        os << "— | — |\n";
-    }
+     << cartsTable(rows) << perCartRatios(rows);
   os << "\nPer run includes any change in the number of steps the dynamics of n carts needs; per RHS "
         "evaluation isolates the cost of evaluating the model. Targets: the multibody model's minimal "
         "formulation with guide friction and joint reactions (the scene's). Figure: carts_cost.png/.svg. "
@@ -296,163 +321,6 @@ std::string motorsReport(const Scene& scene, const std::vector<BenchRow>& rows, 
         "no state. Whether a law makes the equations stiff and the integrators switch to BDF: docs/startup.md. "
         "Data: motors.csv.\n";
   return os.str();
-}
-
-namespace {
-
-PlotSeries series(const std::string& title, const std::string& style) {
-  PlotSeries s;
-  s.title = title;
-  s.style = style;
-  return s;
-}
-
-// Draws a figure; a missing or failing gnuplot is reported in the returned note, not thrown, so
-// the CSV and markdown are still written.
-std::string tryPlot(const PlotSpec& spec, const std::string& base, std::vector<std::string>& written) {
-  try {
-    renderPlot(spec, base);
-    written.push_back(base + ".png");
-    written.push_back(base + ".svg");
-    return "";
-  } catch (const std::exception& ex) {
-    return std::string("\nFigure not drawn: ") + ex.what() + "\n";
-  }
-}
-
-}  // namespace
-
-std::vector<std::string> writeIntegratorStudy(const std::string& dir, const Scene& scene,
-                                              const std::vector<BenchRow>& rows, const BenchOptions& opt) {
-  std::vector<std::string> written;
-  writeFileAtomic(dir + "/bench.csv", rowsCsv(rows));
-  written.push_back(dir + "/bench.csv");
-  std::string notes;
-  for (bool coupling : {false, true}) {
-    PlotSpec spec;
-    spec.title = scene.name + ": work-precision, " + (coupling ? "coupling torque" : "crank speed") +
-                 (scene.simulation.reactions ? "" : " (without joint reactions)");
-    spec.xlabel = "CPU time [s]";
-    spec.ylabel = coupling ? "max |M_{c} - M_{c,ref}| / max |M_{c,ref}| [-]" : "max |ω - ω_{ref}| / max |ω_{ref}| [-]";
-    spec.logx = spec.logy = true;
-    std::map<std::string, size_t> line_of;
-    for (const BenchRow& r : rows) {
-      const double e = coupling ? r.error_coupling : r.error_omega;
-      if (r.reference || !usable(r.m.outcome) || !std::isfinite(e)) continue;
-      const std::string title = r.m.setting.model + " " + r.m.setting.integrator;
-      if (!line_of.count(title)) {
-        line_of[title] = spec.series.size();
-        spec.series.push_back(series(title, "linespoints"));
-      }
-      PlotSeries& s = spec.series[line_of[title]];
-      s.x.push_back(r.m.cpu_seconds);
-      s.y.push_back(e);
-    }
-    notes += tryPlot(spec, dir + (coupling ? "/work_precision_coupling" : "/work_precision_omega"), written);
-  }
-  writeFileAtomic(dir + "/bench.md", integratorReport(scene, rows, opt) + notes);
-  written.push_back(dir + "/bench.md");
-  return written;
-}
-
-std::vector<std::string> writeCartsStudy(const std::string& dir, const Scene& scene,
-                                         const std::vector<BenchRow>& rows, const BenchOptions& opt) {
-  std::vector<std::string> written;
-  writeFileAtomic(dir + "/carts.csv", rowsCsv(rows));
-  written.push_back(dir + "/carts.csv");
-  PlotSpec spec;
-  spec.title = scene.name + ": CPU time per cart vs number of carts" +
-               (scene.simulation.reactions ? "" : " (without joint reactions)");
-  spec.xlabel = "carts n [-]";
-  spec.ylabel = "CPU time / n [s]";
-  spec.logx = spec.logy = true;
-  for (const char* model : {kMultibody, kMinimal, kReduced}) {
-    PlotSeries s = series(std::string(model) + " (per run)", "linespoints");
-    PlotSeries e = series(std::string(model) + " (per RHS evaluation × 1000)", "linespoints");
-    for (const BenchRow& r : rows)
-      if (r.m.setting.model == model && usable(r.m.outcome)) {
-        s.x.push_back(r.x);
-        s.y.push_back(r.m.cpu_seconds / r.x);
-        if (r.m.realizations > 0) {
-          e.x.push_back(r.x);
-          e.y.push_back(1000.0 * r.m.cpu_seconds / r.m.realizations / r.x);
-        }
-      }
-    spec.series.push_back(s);
-    spec.series.push_back(e);
-  }
-  const std::string notes = tryPlot(spec, dir + "/carts_cost", written);
-  writeFileAtomic(dir + "/carts.md", cartsReport(scene, rows, opt) + notes);
-  written.push_back(dir + "/carts.md");
-  return written;
-}
-
-std::vector<std::string> writeEffectsStudy(const std::string& dir, const Scene& scene,
-                                           const std::vector<BenchRow>& rows, const BenchOptions& opt) {
-  std::vector<std::string> written;
-  writeFileAtomic(dir + "/effects.csv", rowsCsv(rows));
-  written.push_back(dir + "/effects.csv");
-  std::string notes;
-  {
-    PlotSpec spec;
-    spec.title = scene.name + ": CPU time vs coupling stiffness";
-    spec.xlabel = "coupling stiffness c [N·m/rad]";
-    spec.ylabel = "CPU time [s]";
-    spec.logx = spec.logy = true;
-    for (const char* model : {kMultibody, kMinimal, kReduced}) {
-      PlotSeries s = series(std::string(model) + " elastic", "linespoints");
-      for (const BenchRow& r : rows)
-        if (r.m.setting.model == model && r.x > 0 && usable(r.m.outcome)) {
-          s.x.push_back(r.x);
-          s.y.push_back(r.m.cpu_seconds);
-        }
-      spec.series.push_back(s);
-      const BenchRow* rigid = findRow(rows, "rigid coupling", model);
-      if (!rigid && scene.coupling.type == CouplingType::Rigid) rigid = findRow(rows, "baseline", model);
-      if (rigid && usable(rigid->m.outcome) && !s.x.empty()) {
-        const auto [lo, hi] = std::minmax_element(s.x.begin(), s.x.end());
-        PlotSeries r = series(std::string(model) + " rigid", "lines");
-        r.x = {*lo, *hi};
-        r.y = {rigid->m.cpu_seconds, rigid->m.cpu_seconds};
-        spec.series.push_back(r);
-      }
-    }
-    notes += tryPlot(spec, dir + "/effects_stiffness", written);
-  }
-  {
-    PlotSpec spec;
-    spec.title = scene.name + ": relative cost of each variant (numbers as in effects.md)";
-    spec.xlabel = "variant # [-]";
-    spec.ylabel = "CPU time / baseline CPU time [-]";
-    spec.logy = true;
-    for (const char* model : {kMultibody, kMinimal, kReduced}) {
-      PlotSeries s = series(model, "points");
-      const BenchRow* base = findRow(rows, "baseline", model);
-      std::map<std::string, int> index;
-      for (const BenchRow& r : rows) {
-        if (!index.count(r.variant)) {
-          const int k = int(index.size());
-          index[r.variant] = k;
-        }
-        if (r.m.setting.model == model && usable(r.m.outcome) && base && usable(base->m.outcome)) {
-          s.x.push_back(index[r.variant]);
-          s.y.push_back(r.m.cpu_seconds / base->m.cpu_seconds);
-        }
-      }
-      spec.series.push_back(s);
-    }
-    notes += tryPlot(spec, dir + "/effects_relative", written);
-  }
-  writeFileAtomic(dir + "/effects.md", effectsReport(scene, rows, opt) + notes);
-  written.push_back(dir + "/effects.md");
-  return written;
-}
-
-std::vector<std::string> writeMotorsStudy(const std::string& dir, const Scene& scene, const std::vector<BenchRow>& rows,
-                                          const BenchOptions& opt) {
-  writeFileAtomic(dir + "/motors.csv", rowsCsv(rows));
-  writeFileAtomic(dir + "/motors.md", motorsReport(scene, rows, opt));
-  return {dir + "/motors.csv", dir + "/motors.md"};
 }
 
 }  // namespace rollerdyn::bench

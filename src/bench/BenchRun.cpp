@@ -40,37 +40,52 @@ const char* toString(Outcome o) {
   return "?";
 }
 
+namespace {
+
+void applyConstrained(Scene& s, const SolverSetting& setting) {
+  s.simulation.formulation = Formulation::Constrained;
+  // The constrained formulation can only carry the lagged guide-friction law (GuideFriction.h).
+  s.loads.guide_normal_force = GuideNormalForce::Lagged;
+  s.simulation.integrator = setting.integrator;
+  s.simulation.accuracy = setting.accuracy;
+  s.simulation.constraint_tolerance = setting.accuracy;
+}
+
+void applyMinimal(Scene& s, const SolverSetting& setting) {
+  if (setting.integrator != kMinimalIntegrator)
+    throw std::invalid_argument(std::string("bench: the multibody model's minimal formulation integrates with ") +
+                                kMinimalIntegrator + ", got '" + setting.integrator + "'");
+  s.simulation.formulation = Formulation::Minimal;
+  s.simulation.accuracy = setting.accuracy;
+  s.simulation.constraint_tolerance = setting.accuracy;
+}
+
+void applyReduced(Scene& s, const SolverSetting& setting) {
+  if (setting.integrator == "cvode") {
+    s.reduced.integrator = ReducedIntegrator::Cvode;
+    s.simulation.accuracy = setting.accuracy;
+  } else if (setting.integrator == "baranov") {
+    s.reduced.integrator = ReducedIntegrator::Baranov;
+    s.reduced.baranov_step = setting.baranov_step;
+  } else {
+    throw std::invalid_argument("bench: reduced model integrator must be cvode or baranov, got '" +
+                                setting.integrator + "'");
+  }
+}
+
+}  // namespace
+
 Scene applySetting(const Scene& base, const SolverSetting& setting) {
   Scene s = base;
-  if (setting.model == "multibody") {
-    s.simulation.formulation = Formulation::Constrained;
-    // The constrained formulation can only carry the lagged guide-friction law (GuideFriction.h).
-    s.loads.guide_normal_force = GuideNormalForce::Lagged;
-    s.simulation.integrator = setting.integrator;
-    s.simulation.accuracy = setting.accuracy;
-    s.simulation.constraint_tolerance = setting.accuracy;
-  } else if (setting.model == kMultibodyMinimal) {
-    if (setting.integrator != kMinimalIntegrator)
-      throw std::invalid_argument(std::string("bench: the multibody model's minimal formulation integrates with ") +
-                                  kMinimalIntegrator + ", got '" + setting.integrator + "'");
-    s.simulation.formulation = Formulation::Minimal;
-    s.simulation.accuracy = setting.accuracy;
-    s.simulation.constraint_tolerance = setting.accuracy;
-  } else if (setting.model == "reduced") {
-    if (setting.integrator == "cvode") {
-      s.reduced.integrator = ReducedIntegrator::Cvode;
-      s.simulation.accuracy = setting.accuracy;
-    } else if (setting.integrator == "baranov") {
-      s.reduced.integrator = ReducedIntegrator::Baranov;
-      s.reduced.baranov_step = setting.baranov_step;
-    } else {
-      throw std::invalid_argument("bench: reduced model integrator must be cvode or baranov, got '" +
-                                  setting.integrator + "'");
-    }
-  } else {
+  if (setting.model == "multibody")
+    applyConstrained(s, setting);
+  else if (setting.model == kMultibodyMinimal)
+    applyMinimal(s, setting);
+  else if (setting.model == "reduced")
+    applyReduced(s, setting);
+  else
     throw std::invalid_argument("bench: model must be multibody, multibody-minimal or reduced, got '" +
                                 setting.model + "'");
-  }
   return s;
 }
 
@@ -88,49 +103,67 @@ struct OneRun {
   double cpu_with_setup = NAN;  // CPU of building the model and running it [s]
 };
 
+// A run within the CPU budget: the multibody model stopped between output rows once the budget
+// is spent (or at Ctrl-C), the reduced model judged by its loop CPU afterwards.
+struct BudgetedRun {
+  RunResult run;
+  bool over_budget = false, user_stop = false;
+};
+
+BudgetedRun runWithinBudget(const Scene& s, const SolverSetting& setting, const Budget& budget) {
+  BudgetedRun b;
+  if (setting.model == "multibody" || setting.model == kMultibodyMinimal) {
+    std::atomic<bool> stop{false};
+    const double c0 = cpuNow();
+    RunControl control;
+    control.interrupt = &stop;
+    control.progress = [&](double, double) {
+      if (budget.interrupt && budget.interrupt->load()) {
+        b.user_stop = true;
+        stop = true;
+      } else if (cpuNow() - c0 > budget.cpu_seconds) {
+        b.over_budget = true;
+        stop = true;
+      }
+    };
+    b.run = runMultibodyModel(s, control);
+  } else {
+    b.run = runReducedModel(s);
+    b.over_budget = b.run.stats.cpu_seconds > budget.cpu_seconds;
+  }
+  return b;
+}
+
+// The run's outcome: interrupted, timeout (status says so), ok, stalled or failed.
+void judgeRun(OneRun& r, bool over_budget, bool user_stop, const Budget& budget) {
+  const RunStats& st = r.run.stats;
+  r.status = st.status;
+  if (user_stop) {
+    r.outcome = Outcome::Interrupted;
+  } else if (over_budget) {
+    r.outcome = Outcome::Timeout;
+    std::ostringstream os;
+    os << "timeout: CPU budget " << budget.cpu_seconds << " s exceeded";
+    if (!st.complete) os << " (" << st.status << ")";
+    r.status = os.str();
+  } else if (st.complete) {
+    r.outcome = Outcome::Ok;
+  } else if (st.status.find("motor stalled") != std::string::npos) {
+    r.outcome = Outcome::Stalled;
+  } else {
+    r.outcome = Outcome::Failed;
+  }
+}
+
 OneRun runOnce(const Scene& scene, const SolverSetting& setting, const Budget& budget) {
   OneRun r;
   const double c_setup = cpuNow();
   try {
     const Scene s = applySetting(scene, setting);
-    bool over_budget = false, user_stop = false;
-    if (setting.model == "multibody" || setting.model == kMultibodyMinimal) {
-      std::atomic<bool> stop{false};
-      const double c0 = cpuNow();
-      RunControl control;
-      control.interrupt = &stop;
-      control.progress = [&](double, double) {
-        if (budget.interrupt && budget.interrupt->load()) {
-          user_stop = true;
-          stop = true;
-        } else if (cpuNow() - c0 > budget.cpu_seconds) {
-          over_budget = true;
-          stop = true;
-        }
-      };
-      r.run = runMultibodyModel(s, control);
-    } else {
-      r.run = runReducedModel(s);
-      over_budget = r.run.stats.cpu_seconds > budget.cpu_seconds;
-    }
+    BudgetedRun b = runWithinBudget(s, setting, budget);
+    r.run = std::move(b.run);
     r.cpu_with_setup = cpuNow() - c_setup;
-    const RunStats& st = r.run.stats;
-    r.status = st.status;
-    if (user_stop) {
-      r.outcome = Outcome::Interrupted;
-    } else if (over_budget) {
-      r.outcome = Outcome::Timeout;
-      std::ostringstream os;
-      os << "timeout: CPU budget " << budget.cpu_seconds << " s exceeded";
-      if (!st.complete) os << " (" << st.status << ")";
-      r.status = os.str();
-    } else if (st.complete) {
-      r.outcome = Outcome::Ok;
-    } else if (st.status.find("motor stalled") != std::string::npos) {
-      r.outcome = Outcome::Stalled;
-    } else {
-      r.outcome = Outcome::Failed;
-    }
+    judgeRun(r, b.over_budget, b.user_stop, budget);
   } catch (const std::exception& ex) {
     r.outcome = Outcome::Failed;
     r.status = std::string("failed: ") + ex.what();
@@ -177,6 +210,26 @@ std::string serialize(const OneRun& r) {
   return os.str();
 }
 
+// A double as a token through strtod: operator>> rejects "nan" and "inf".
+bool readNumber(std::istream& in, double& v) {
+  std::string tok;
+  if (!(in >> tok)) return false;
+  v = std::strtod(tok.c_str(), nullptr);  // reads "nan" and "inf" too
+  return true;
+}
+
+// The timeseries' column names, one a line, then its rows; false when cut short.
+bool readTimeseries(std::istream& in, size_t ncols, size_t nrows, Table& t) {
+  t.columns.resize(ncols);
+  for (auto& c : t.columns)
+    if (!std::getline(in, c)) return false;
+  t.rows.assign(nrows, std::vector<double>(ncols));
+  for (auto& row : t.rows)
+    for (double& v : row)
+      if (!readNumber(in, v)) return false;
+  return true;
+}
+
 // Fills r from the child's text; false when the text is incomplete (the child died mid-write).
 bool deserialize(const std::string& text, OneRun& r, double& energy_rel) {
   std::istringstream in(text);
@@ -186,52 +239,59 @@ bool deserialize(const std::string& text, OneRun& r, double& energy_rel) {
   std::getline(in, r.status);
   RunStats& st = r.run.stats;
   size_t ncols = 0, nrows = 0;
-  // Doubles as tokens through strtod: operator>> rejects "nan" and "inf".
-  auto number = [&in](double& v) {
-    std::string tok;
-    if (!(in >> tok)) return false;
-    v = std::strtod(tok.c_str(), nullptr);
-    return true;
-  };
-  if (!(in >> st.steps >> st.realizations) || !number(st.cpu_seconds) || !number(st.constraint_error_max) ||
-      !number(energy_rel) || !number(r.cpu_with_setup) || !(in >> ncols >> nrows))
+  if (!(in >> st.steps >> st.realizations) || !readNumber(in, st.cpu_seconds) ||
+      !readNumber(in, st.constraint_error_max) || !readNumber(in, energy_rel) || !readNumber(in, r.cpu_with_setup) ||
+      !(in >> ncols >> nrows))
     return false;
   in.ignore(1);
-  Table& t = r.run.timeseries;
-  t.columns.resize(ncols);
-  for (auto& c : t.columns)
-    if (!std::getline(in, c)) return false;
-  t.rows.assign(nrows, std::vector<double>(ncols));
-  for (auto& row : t.rows)
-    for (double& v : row) {
-      std::string tok;
-      if (!(in >> tok)) return false;
-      v = std::strtod(tok.c_str(), nullptr);  // reads "nan" and "inf" too
-    }
+  if (!readTimeseries(in, ncols, nrows, r.run.timeseries)) return false;
   r.outcome = Outcome(outcome);
   return true;
+}
+
+// Process CPU time is accounted in scheduler ticks (milliseconds on this kind of VM), so a run
+// of a few milliseconds (the reduced model) reads 0 or one tick. Short usable runs are
+// therefore repeated until kMinTimedCpu of CPU has accumulated; cpu_seconds is the mean of the
+// repetitions' loop CPU, cpu_with_setup the mean of their whole CPU (model building included).
+void repeatShortRun(OneRun& first, const Scene& scene, const SolverSetting& setting, const Budget& budget) {
+  const double c = first.run.stats.cpu_seconds;
+  if (!((first.outcome == Outcome::Ok || first.outcome == Outcome::Stalled) && c < kMinTimedCpu)) return;
+  const double c0 = cpuNow();
+  int n = 0;
+  double loop = 0.0;
+  while (cpuNow() - c0 < kMinTimedCpu && n < 100000) {
+    loop += runOnce(scene, setting, budget).run.stats.cpu_seconds;
+    ++n;
+  }
+  first.run.stats.cpu_seconds = loop / n;
+  first.cpu_with_setup = (cpuNow() - c0) / n;
+}
+
+// The row of a child that did not report: stopped by the hard CPU limit, interrupted or crashed.
+OneRun unreportedRun(const ChildOutcome& child, const Budget& budget) {
+  OneRun r;
+  r.run.stats.cpu_seconds = NAN;  // spent, but not reported by the killed process
+  std::ostringstream os;
+  if (child.stoppedByCpuLimit()) {
+    r.outcome = Outcome::Timeout;
+    os << "timeout: CPU budget " << budget.cpu_seconds
+       << " s exceeded inside one output interval (stopped by the hard CPU limit)";
+  } else if (child.killedBy(SIGINT)) {
+    r.outcome = Outcome::Interrupted;
+    os << "interrupted";
+  } else {
+    r.outcome = Outcome::Failed;
+    os << "failed: run process ended abnormally (" << child.howItEnded() << ")";
+  }
+  r.status = os.str();
+  return r;
 }
 
 OneRun runIsolated(const Scene& scene, const SolverSetting& setting, const Budget& budget, double& energy_rel) {
   const long soft = long(std::ceil(1.5 * budget.cpu_seconds + 2.0));
   const std::optional<ChildOutcome> child = runInChild(soft, soft + 2, [&] {
     OneRun first = runOnce(scene, setting, budget);
-    // Process CPU time is accounted in scheduler ticks (milliseconds on this kind of VM), so a run
-    // of a few milliseconds (the reduced model) reads 0 or one tick. Short usable runs are
-    // therefore repeated until kMinTimedCpu of CPU has accumulated; cpu_seconds is the mean of the
-    // repetitions' loop CPU, cpu_with_setup the mean of their whole CPU (model building included).
-    const double c = first.run.stats.cpu_seconds;
-    if ((first.outcome == Outcome::Ok || first.outcome == Outcome::Stalled) && c < kMinTimedCpu) {
-      const double c0 = cpuNow();
-      int n = 0;
-      double loop = 0.0;
-      while (cpuNow() - c0 < kMinTimedCpu && n < 100000) {
-        loop += runOnce(scene, setting, budget).run.stats.cpu_seconds;
-        ++n;
-      }
-      first.run.stats.cpu_seconds = loop / n;
-      first.cpu_with_setup = (cpuNow() - c0) / n;
-    }
+    repeatShortRun(first, scene, setting, budget);
     return serialize(first);
   });
   OneRun r;
@@ -241,23 +301,34 @@ OneRun runIsolated(const Scene& scene, const SolverSetting& setting, const Budge
     return r;
   }
   if (child->exitedCleanly() && deserialize(child->text, r, energy_rel)) return r;
-  r = OneRun{};
-  r.run.stats.cpu_seconds = NAN;  // spent, but not reported by the killed process
   energy_rel = NAN;
-  std::ostringstream os;
-  if (child->stoppedByCpuLimit()) {
-    r.outcome = Outcome::Timeout;
-    os << "timeout: CPU budget " << budget.cpu_seconds
-       << " s exceeded inside one output interval (stopped by the hard CPU limit)";
-  } else if (child->killedBy(SIGINT)) {
-    r.outcome = Outcome::Interrupted;
-    os << "interrupted";
-  } else {
-    r.outcome = Outcome::Failed;
-    os << "failed: run process ended abnormally (" << child->howItEnded() << ")";
-  }
-  r.status = os.str();
-  return r;
+  return unreportedRun(*child, budget);
+}
+
+}  // namespace
+
+namespace {
+
+// The first repetition gives the measurement its outcome, counts and tables.
+void takeFirstRun(Measurement& m, OneRun& r, double energy_rel) {
+  m.outcome = r.outcome;
+  m.status = r.status;
+  m.steps = r.run.stats.steps;
+  m.realizations = r.run.stats.realizations;
+  m.simulated_time = timeReached(r.run);
+  m.energy_residual_rel = energy_rel;
+  m.constraint_error_max = r.run.stats.constraint_error_max;
+  m.run = std::move(r.run);
+}
+
+// The median, least and largest loop CPU of the repetitions, and the median CPU with set-up.
+void setCpuStatistics(Measurement& m, const std::vector<double>& cpu, const std::vector<double>& cpu_setup) {
+  m.repeats = int(cpu.size());
+  m.cpu_seconds = median(cpu);
+  m.cpu_min = *std::min_element(cpu.begin(), cpu.end());
+  m.cpu_max = *std::max_element(cpu.begin(), cpu.end());
+  m.cpu_with_setup = median(cpu_setup);
+  m.real_time_factor = m.cpu_seconds > 0 ? m.simulated_time / m.cpu_seconds : NAN;
 }
 
 }  // namespace
@@ -272,14 +343,7 @@ Measurement measure(const Scene& scene, const SolverSetting& setting, const Budg
     OneRun r = runIsolated(scene, setting, budget, energy_rel);
     const bool usable = r.outcome == Outcome::Ok || r.outcome == Outcome::Stalled;
     if (k == 0) {
-      m.outcome = r.outcome;
-      m.status = r.status;
-      m.steps = r.run.stats.steps;
-      m.realizations = r.run.stats.realizations;
-      m.simulated_time = timeReached(r.run);
-      m.energy_residual_rel = energy_rel;
-      m.constraint_error_max = r.run.stats.constraint_error_max;
-      m.run = std::move(r.run);
+      takeFirstRun(m, r, energy_rel);
       cpu.push_back(m.run.stats.cpu_seconds);
       cpu_setup.push_back(r.cpu_with_setup);
       if (!usable) break;  // a timeout or failure is not repeated
@@ -289,12 +353,7 @@ Measurement measure(const Scene& scene, const SolverSetting& setting, const Budg
       cpu_setup.push_back(r.cpu_with_setup);
     }
   }
-  m.repeats = int(cpu.size());
-  m.cpu_seconds = median(cpu);
-  m.cpu_min = *std::min_element(cpu.begin(), cpu.end());
-  m.cpu_max = *std::max_element(cpu.begin(), cpu.end());
-  m.cpu_with_setup = median(cpu_setup);
-  m.real_time_factor = m.cpu_seconds > 0 ? m.simulated_time / m.cpu_seconds : NAN;
+  setCpuStatistics(m, cpu, cpu_setup);
   return m;
 }
 

@@ -101,6 +101,9 @@ const BenchRow* cheapestReaching(const std::vector<BenchRow>& rows, const std::s
 // The same for the crank angle's absolute error error_angle <= target [rad].
 const BenchRow* cheapestReachingAngle(const std::vector<BenchRow>& rows, const std::string& model, double target);
 
+// The row of `variant` run by `model`, nullptr when there is none.
+const BenchRow* findRow(const std::vector<BenchRow>& rows, const std::string& variant, const std::string& model);
+
 // The CSV text of rows (header + one line per row; NaN written as an empty field).
 std::string rowsCsv(const std::vector<BenchRow>& rows);
 

@@ -117,6 +117,48 @@ void chainAtAngle(const Scene& sc, double phi, std::vector<double>& J, std::vect
   c.insert(c.end(), chain.stiffness.begin(), chain.stiffness.end());
 }
 
+namespace {
+
+// The spring with the largest share of the mode's strain energy ½·c·(Δv)² (v: the mode's shape).
+int mostStrainedSpring(const Eigen::VectorXd& v, const std::vector<double>& c) {
+  int best = 0;
+  double e_best = -1;
+  for (size_t i = 0; i < c.size(); ++i) {
+    const double d = v[i + 1] - v[i], energy = 0.5 * c[i] * d * d;
+    if (energy > e_best) {
+      e_best = energy;
+      best = int(i);
+    }
+  }
+  return best;
+}
+
+// The chain's elastic modes at one crank angle widen their bands; the spring that names each mode
+// is the one it strains most where its frequency is lowest.
+void widenBands(CrankshaftChainModes& out, const Eigenpairs& e, const std::vector<double>& c, const Scene& sc,
+                const TorsionalChainLayout& chain, bool elastic) {
+  const int elastic_modes = int(e.lambda.size()) - 1;
+  if (out.modes.empty()) out.modes.resize(elastic_modes, {INFINITY, -INFINITY, 0, 0, ""});
+  for (int m = 0; m < elastic_modes; ++m) {
+    const double p = std::sqrt(std::max(e.lambda[m + 1], 0.0));
+    ChainModeBand& b = out.modes[m];
+    if (p < b.p_min) {
+      b.p_min = p;
+      b.shape = springName(sc, chain, elastic, mostStrainedSpring(e.vectors.col(m + 1), c));
+    }
+    b.p_max = std::max(b.p_max, p);
+  }
+}
+
+std::string chainApproximations(const Scene& sc, int angles) {
+  return "lumped chain (each throw a rigid rotor, the segments massless springs G·I_p/Δz), frozen at " +
+         std::to_string(angles) + " crank angles over a revolution (the carts' reduced inertias held at each), "
+         "undamped (coupling damping, motor slope and loads left out)" +
+         std::string(sc.hasBacklash() ? ", the reducer's teeth permanently in contact" : "");
+}
+
+}  // namespace
+
 CrankshaftChainModes crankshaftChainModes(const Scene& sc, int angles) {
   CrankshaftChainModes out;
   if (!sc.crankshaft.torsionalChain()) {
@@ -133,39 +175,13 @@ CrankshaftChainModes crankshaftChainModes(const Scene& sc, int angles) {
   for (int a = 0; a < angles; ++a) {
     const double phi = 2.0 * M_PI * a / angles;
     chainAtAngle(sc, phi, J, c);
-    const Eigenpairs e = solveChain(J, c);
-    const int elastic_modes = int(e.lambda.size()) - 1;
-    if (out.modes.empty()) out.modes.resize(elastic_modes, {INFINITY, -INFINITY, 0, 0, ""});
-    for (int m = 0; m < elastic_modes; ++m) {
-      const double p = std::sqrt(std::max(e.lambda[m + 1], 0.0));
-      ChainModeBand& b = out.modes[m];
-      if (p < b.p_min) {
-        b.p_min = p;
-        // The spring with the largest share of the mode's strain energy ½·c·(Δv)² names it.
-        const Eigen::VectorXd v = e.vectors.col(m + 1);
-        int best = 0;
-        double e_best = -1;
-        for (size_t i = 0; i < c.size(); ++i) {
-          const double d = v[i + 1] - v[i], energy = 0.5 * c[i] * d * d;
-          if (energy > e_best) {
-            e_best = energy;
-            best = int(i);
-          }
-        }
-        b.shape = springName(sc, chain, elastic, best);
-      }
-      b.p_max = std::max(b.p_max, p);
-    }
+    widenBands(out, solveChain(J, c), c, sc, chain, elastic);
   }
   for (ChainModeBand& b : out.modes) {
     b.f_min = b.p_min / (2.0 * M_PI);
     b.f_max = b.p_max / (2.0 * M_PI);
   }
-  out.approximations =
-      "lumped chain (each throw a rigid rotor, the segments massless springs G·I_p/Δz), frozen at " +
-      std::to_string(angles) + " crank angles over a revolution (the carts' reduced inertias held at each), "
-      "undamped (coupling damping, motor slope and loads left out)" +
-      std::string(sc.hasBacklash() ? ", the reducer's teeth permanently in contact" : "");
+  out.approximations = chainApproximations(sc, angles);
   return out;
 }
 

@@ -1,7 +1,9 @@
 #include "modes/DriveModels.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "motor/BreakdownTorque.h"
 #include "multibody/MinimalCoordinates.h"
 #include "multibody/MinimalDynamics.h"
 #include "multibody/MotorForce.h"
@@ -135,6 +137,11 @@ std::unique_ptr<DriveModel> makeMultibodyDrive(const Scene& scene) {
   Scene s = scene;
   s.simulation.formulation = Formulation::Minimal;
   return std::make_unique<MultibodyDrive>(s);
+}
+
+double breakdownTwist(const Scene& scene) {
+  return std::max(motorBreakdownTorque(scene) * scene.reducer.ratio * scene.reducer.efficiency, 1.0) /
+         scene.coupling.stiffness;
 }
 
 }  // namespace rollerdyn::modes

@@ -57,6 +57,10 @@ class DriveModel {
   virtual const ReducedModel& reducedModel() const = 0;
 };
 
+// The coupling's twist under the motor's breakdown torque at the crank axis (at least 1 N·m):
+// the scale of the twist in the tolerances and difference steps of the modal analysis.
+double breakdownTwist(const Scene& scene);
+
 std::unique_ptr<DriveModel> makeReducedDrive(const Scene& scene);
 std::unique_ptr<DriveModel> makeMultibodyDrive(const Scene& scene);
 

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "motor/BreakdownTorque.h"
 #include "modes/PeriodicFlow.h"
 #include "motor/MotorLawFactory.h"
 #include "reduced/ReducedModel.h"
@@ -12,6 +11,30 @@
 namespace rollerdyn::modes {
 
 const char* toString(ModeKind k) { return k == ModeKind::Torsional ? "torsional (coupling)" : "speed (whole drive)"; }
+
+namespace {
+
+// The load torque at the crank averaged over a revolution (720 angles) at crank speed w.
+double meanLoadTorque(const ReducedModel& model, double w) {
+  const int n = 720;
+  double mean = 0;
+  for (int i = 0; i < n; ++i) mean += model.loadTorque(2 * M_PI * i / n, w);
+  return mean / n;
+}
+
+// The crank speed between breakdown (w_kr) and synchronous (w_sync) where the motor's static
+// torque at the crank equals `load`: it falls from breakdown to 0 there, so bisect.
+double speedCarrying(const ReducedModel& model, double load, double w_kr, double w_sync) {
+  if (load <= 0) return w_sync;  // no net load (or driving loads): synchronous speed
+  double lo = w_kr, hi = w_sync;
+  for (int it = 0; it < 100; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (model.motorTorque(mid) > load ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
 
 SteadyGuess steadyGuess(const ReducedModel& model) {
   const Scene& scene = model.scene();
@@ -23,26 +46,13 @@ SteadyGuess steadyGuess(const ReducedModel& model) {
   const double u = scene.reducer.ratio;
   const double w_sync = scene.motor.omega_sync / u;                            // crank axis
   const double w_kr = scene.motor.omega_sync * (1 - scene.motor.critical_slip) / u;  // breakdown
-  const int n = 720;
-  double mean = 0;
-  for (int i = 0; i < n; ++i) mean += model.loadTorque(2 * M_PI * i / n, 0.98 * w_sync);
-  mean /= n;
+  const double mean = meanLoadTorque(model, 0.98 * w_sync);
   g.mean_load_torque = mean;
-  // The motor torque at the crank falls from breakdown (w_kr) to 0 (w_sync): bisect there.
   if (mean > model.motorTorque(w_kr)) {
     g.failure = "the mean load torque exceeds the motor's breakdown torque at the crank: the drive stalls";
     return g;
   }
-  double lo = w_kr, hi = w_sync;
-  if (mean <= 0) {
-    g.omega = w_sync;  // no net load (or driving loads): synchronous speed
-  } else {
-    for (int it = 0; it < 100; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (model.motorTorque(mid) > mean ? lo : hi) = mid;
-    }
-    g.omega = 0.5 * (lo + hi);
-  }
+  g.omega = speedCarrying(model, mean, w_kr, w_sync);
   if (scene.coupling.type == CouplingType::Elastic) g.twist = mean / scene.coupling.stiffness;
   g.ok = true;
   return g;
@@ -76,6 +86,50 @@ Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_no
   return s;
 }
 
+namespace {
+
+bool oscillates(const FloquetMultiplier& f) { return std::abs(f.mu.imag()) > 1e-12 * f.modulus; }
+
+// Speed mode: motor and crank side move together (the twist rate is a small part of the speed
+// change). Torsional: they move against each other, |δψ̇| > |δφ̇2|.
+ModeKind kindByShape(const FloquetMultiplier& f, bool elastic) {
+  return (elastic && f.vector.size() == 3 && std::abs(f.vector(2)) > std::abs(f.vector(0))) ? ModeKind::Torsional
+                                                                                         : ModeKind::Speed;
+}
+
+// The most unstable multiplier's verdict: its modulus, margin and decay rate, and the words.
+void setWorst(FloquetVerdict& v, const ClassifiedMultiplier& worst) {
+  v.max_modulus = worst.m.modulus;
+  v.margin = 1 - v.max_modulus;
+  v.slowest_decay_rate = -worst.m.growth_rate;
+  v.stable = v.max_modulus < 1;
+  if (v.stable)
+    v.text = "stable";
+  else if (worst.kind == ModeKind::Torsional)
+    v.text = "parametrically unstable";
+  else
+    v.text = "unstable speed mode";
+}
+
+// The torsional mode's numbers from its largest multiplier. A multiplier below kResolvedModulus
+// is only known to be small: the monodromy's entries carry the integration's absolute error
+// (~1e-8), so its angle, and the frequency and damping ratio read from it, are noise.
+void setTorsional(FloquetVerdict& v, const std::vector<ClassifiedMultiplier>& m) {
+  for (const auto& c : m)
+    if (c.kind == ModeKind::Torsional && (!v.has_torsional || c.m.modulus > v.torsional_modulus)) {
+      v.has_torsional = true;
+      v.torsional_modulus = c.m.modulus;
+      v.torsional_frequency = c.m.frequency;
+      v.torsional_damping_ratio = c.m.damping_ratio;
+    }
+  if (v.has_torsional && v.torsional_modulus < kResolvedModulus) {
+    v.torsional_resolved = false;
+    v.torsional_frequency = v.torsional_damping_ratio = NAN;
+  }
+}
+
+}  // namespace
+
 std::vector<ClassifiedMultiplier> classifyMultipliers(const std::vector<FloquetMultiplier>& m, bool elastic) {
   std::vector<ClassifiedMultiplier> out;
   // A complex-conjugate pair among the three multipliers is an oscillation, and the drive has one:
@@ -84,27 +138,14 @@ std::vector<ClassifiedMultiplier> classifyMultipliers(const std::vector<FloquetM
   // |μ| = 3.7e-6) with the motor side held back by the damping, so the twist rate is smaller than
   // the crank speed's change, and the real multiplier (the motor side settling on the damping,
   // |μ| ~ 1e-21) was taken for the coupling mode.
-  if (elastic && m.size() == 3) {
-    int complex_count = 0;
-    for (const FloquetMultiplier& f : m)
-      if (std::abs(f.mu.imag()) > 1e-12 * f.modulus) ++complex_count;
-    if (complex_count == 2) {
-      for (const FloquetMultiplier& f : m) {
-        ClassifiedMultiplier c;
-        c.m = f;
-        c.kind = std::abs(f.mu.imag()) > 1e-12 * f.modulus ? ModeKind::Torsional : ModeKind::Speed;
-        out.push_back(c);
-      }
-      return out;
-    }
-  }
+  const bool one_pair = elastic && m.size() == 3 && std::count_if(m.begin(), m.end(), oscillates) == 2;
   for (const FloquetMultiplier& f : m) {
     ClassifiedMultiplier c;
     c.m = f;
-    // Speed mode: motor and crank side move together (the twist rate is a small part of the
-    // speed change). Torsional: they move against each other, |δψ̇| > |δφ̇2|.
-    c.kind = (elastic && f.vector.size() == 3 && std::abs(f.vector(2)) > std::abs(f.vector(0))) ? ModeKind::Torsional
-                                                                                               : ModeKind::Speed;
+    if (one_pair)
+      c.kind = oscillates(f) ? ModeKind::Torsional : ModeKind::Speed;
+    else
+      c.kind = kindByShape(f, elastic);
     out.push_back(c);
   }
   return out;
@@ -116,30 +157,8 @@ FloquetVerdict judge(const std::vector<ClassifiedMultiplier>& m) {
   const ClassifiedMultiplier* worst = &m.front();
   for (const auto& c : m)
     if (c.m.modulus > worst->m.modulus) worst = &c;
-  v.max_modulus = worst->m.modulus;
-  v.margin = 1 - v.max_modulus;
-  v.slowest_decay_rate = -worst->m.growth_rate;
-  v.stable = v.max_modulus < 1;
-  for (const auto& c : m)
-    if (c.kind == ModeKind::Torsional && (!v.has_torsional || c.m.modulus > v.torsional_modulus)) {
-      v.has_torsional = true;
-      v.torsional_modulus = c.m.modulus;
-      v.torsional_frequency = c.m.frequency;
-      v.torsional_damping_ratio = c.m.damping_ratio;
-    }
-  // A multiplier below kResolvedModulus is only known to be small: the monodromy's entries carry
-  // the integration's absolute error (~1e-8), so its angle, and the frequency and damping ratio
-  // read from it, are noise.
-  if (v.has_torsional && v.torsional_modulus < kResolvedModulus) {
-    v.torsional_resolved = false;
-    v.torsional_frequency = v.torsional_damping_ratio = NAN;
-  }
-  if (v.stable)
-    v.text = "stable";
-  else if (worst->kind == ModeKind::Torsional)
-    v.text = "parametrically unstable";
-  else
-    v.text = "unstable speed mode";
+  setWorst(v, *worst);
+  setTorsional(v, m);
   return v;
 }
 
@@ -205,39 +224,23 @@ OrbitOptions orbitOptions(const SteadyMotionOptions& o) {
 
 }  // namespace
 
-SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMotionOptions& o) {
-  SteadyMotion r;
-  r.elastic = drive.elastic();
-  r.phi0 = scene.initial.crank_angle;
-  Eigen::VectorXd start = o.start;
-  double omega_scale = scene.motor.omega_sync / scene.reducer.ratio;
-  double twist_scale = 1e-6;
-  if (start.size() == 0) {
-    const SteadyGuess g = steadyGuess(drive.reducedModel());
-    if (!g.ok) {
-      r.failure = g.failure;
-      return r;
-    }
-    if (r.elastic)
-      start = Eigen::VectorXd(Eigen::Vector3d(g.omega, g.twist, 0.0));
-    else
-      start = Eigen::VectorXd::Constant(1, g.omega);
-  }
-  if (r.elastic) {
-    const double M_ref = std::max(motorBreakdownTorque(scene) * scene.reducer.ratio * scene.reducer.efficiency, 1.0);
-    twist_scale = M_ref / scene.coupling.stiffness;
-  }
-  const double phi0 = r.phi0;
-  const bool elastic = r.elastic;
-  const PeriodicSystem sys =
-      revolutionSystem(drive, phi0, elastic, o.quasi_static_auxiliary, omega_scale, twist_scale);
-  const OrbitOptions oo = orbitOptions(o);
-  const PeriodicOrbit orbit = findPeriodicOrbit(sys, start, oo);
-  r.evaluations = orbit.evaluations;
-  if (!orbit.found) {
-    r.failure = orbit.failure;
-    return r;
-  }
+namespace {
+
+// Newton's start: the options' own, else the steady guess (a failure when there is none).
+std::string searchStart(DriveModel& drive, const SteadyMotionOptions& o, bool elastic, Eigen::VectorXd& start) {
+  start = o.start;
+  if (start.size() != 0) return "";
+  const SteadyGuess g = steadyGuess(drive.reducedModel());
+  if (!g.ok) return g.failure;
+  if (elastic)
+    start = Eigen::VectorXd(Eigen::Vector3d(g.omega, g.twist, 0.0));
+  else
+    start = Eigen::VectorXd::Constant(1, g.omega);
+  return "";
+}
+
+// The steady motion from the periodic orbit found: start, monodromy, period and the samples.
+void takeOrbit(SteadyMotion& r, const PeriodicOrbit& orbit) {
   r.found = true;
   r.x0 = orbit.x0;
   r.monodromy = orbit.monodromy;
@@ -246,9 +249,31 @@ SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMot
   r.omega_mean = 2 * M_PI / r.period;
   for (size_t k = 0; k < orbit.s_samples.size(); ++k) {
     const Eigen::VectorXd& x = orbit.x_samples[k];
-    r.samples.push_back(drivePointAt(phi0 + orbit.s_samples[k], x, elastic));
+    r.samples.push_back(drivePointAt(r.phi0 + orbit.s_samples[k], x, r.elastic));
     r.sample_time.push_back(x(x.size() - 1));
   }
+}
+
+}  // namespace
+
+SteadyMotion steadyMotion(DriveModel& drive, const Scene& scene, const SteadyMotionOptions& o) {
+  SteadyMotion r;
+  r.elastic = drive.elastic();
+  r.phi0 = scene.initial.crank_angle;
+  Eigen::VectorXd start;
+  r.failure = searchStart(drive, o, r.elastic, start);
+  if (!r.failure.empty()) return r;
+  const double omega_scale = scene.motor.omega_sync / scene.reducer.ratio;
+  const double twist_scale = r.elastic ? breakdownTwist(scene) : 1e-6;
+  const PeriodicSystem sys =
+      revolutionSystem(drive, r.phi0, r.elastic, o.quasi_static_auxiliary, omega_scale, twist_scale);
+  const PeriodicOrbit orbit = findPeriodicOrbit(sys, start, orbitOptions(o));
+  r.evaluations = orbit.evaluations;
+  if (!orbit.found) {
+    r.failure = orbit.failure;
+    return r;
+  }
+  takeOrbit(r, orbit);
   rebranch(r, o.reference_frequency);
   return r;
 }

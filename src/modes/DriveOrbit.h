@@ -14,6 +14,8 @@
 // J_n2(φ2) and load stiffness pump the coupling's oscillation).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -58,6 +60,13 @@ struct FloquetVerdict {
   bool has_torsional = false;
   bool torsional_resolved = true;  // false: |μ| < kResolvedModulus, frequency and ζ unknown (NaN)
   double torsional_modulus = 0, torsional_frequency = 0, torsional_damping_ratio = 0;
+
+  // Undamped natural frequency from the multipliers, √(σ² + ω_d²) = ω_d/√(1 - ζ²): where a forced
+  // response peaks.
+  double torsionalNaturalFrequency() const {
+    const double zeta = torsional_damping_ratio;
+    return torsional_frequency / std::sqrt(std::max(1e-12, 1 - zeta * zeta));
+  }
 };
 
 struct SteadyMotion {

@@ -11,6 +11,47 @@
 namespace rollerdyn::modes {
 namespace {
 
+// The frozen modes' values over the angles, one list per band of ModelFrozenModes.
+struct FrozenLists {
+  std::vector<double> p, z, pd, pn, osc, on, oz, em, es, ec;
+
+  // One mode at one angle: the torsional mode's frequencies, damping and energy shares, the other
+  // mode's where it oscillates; the names as the modes give them.
+  void add(const FrozenMode& mode, ModelFrozenModes& m) {
+    if (mode.torsional) {
+      p.push_back(mode.frequency);
+      z.push_back(mode.damping_ratio);
+      pd.push_back(mode.damped_frequency);
+      pn.push_back(mode.natural_frequency);
+      if (std::isfinite(mode.frequency) && !mode.oscillates) ++m.torsional_overdamped_angles;
+      em.push_back(mode.energy_motor_side);
+      es.push_back(mode.energy_shaft_rods);
+      ec.push_back(mode.energy_carts);
+      m.torsional_name = mode.name;
+    } else {
+      m.rigid_name = mode.name;
+      if (mode.oscillates) {
+        on.push_back(mode.natural_frequency);
+        oz.push_back(mode.damping_ratio);
+      }
+    }
+  }
+
+  void setBands(ModelFrozenModes& m) const {
+    m.torsional = bandOf(p);
+    m.torsional_damping = bandOf(z);
+    m.torsional_damped = bandOf(pd);
+    m.torsional_natural = bandOf(pn);
+    m.oscillation_damped = bandOf(osc);
+    m.other_natural = bandOf(on);
+    m.other_damping = bandOf(oz);
+    m.other_oscillating_angles = int(on.size());
+    m.energy_motor_side = bandOf(em).mean;
+    m.energy_shaft_rods = bandOf(es).mean;
+    m.energy_carts = bandOf(ec).mean;
+  }
+};
+
 ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::vector<DrivePoint>& points) {
   ModelFrozenModes m;
   m.model = drive.name();
@@ -18,42 +59,14 @@ ModelFrozenModes frozenAlong(DriveModel& drive, const Scene& scene, const std::v
     m.failure = "no steady motion and no running speed to linearize about";
     return m;
   }
-  std::vector<double> p, z, pd, pn, osc, on, oz, em, es, ec;
+  FrozenLists lists;
   for (const DrivePoint& q : points) {
     FrozenAngle f = frozenModes(drive, scene, q);
-    for (const FrozenMode& mode : f.modes) {
-      if (mode.torsional) {
-        p.push_back(mode.frequency);
-        z.push_back(mode.damping_ratio);
-        pd.push_back(mode.damped_frequency);
-        pn.push_back(mode.natural_frequency);
-        if (std::isfinite(mode.frequency) && !mode.oscillates) ++m.torsional_overdamped_angles;
-        em.push_back(mode.energy_motor_side);
-        es.push_back(mode.energy_shaft_rods);
-        ec.push_back(mode.energy_carts);
-        m.torsional_name = mode.name;
-      } else {
-        m.rigid_name = mode.name;
-        if (mode.oscillates) {
-          on.push_back(mode.natural_frequency);
-          oz.push_back(mode.damping_ratio);
-        }
-      }
-    }
-    osc.push_back(f.oscillation_frequency());
+    for (const FrozenMode& mode : f.modes) lists.add(mode, m);
+    lists.osc.push_back(f.oscillation_frequency());
     m.angles.push_back(std::move(f));
   }
-  m.torsional = bandOf(p);
-  m.torsional_damping = bandOf(z);
-  m.torsional_damped = bandOf(pd);
-  m.torsional_natural = bandOf(pn);
-  m.oscillation_damped = bandOf(osc);
-  m.other_natural = bandOf(on);
-  m.other_damping = bandOf(oz);
-  m.other_oscillating_angles = int(on.size());
-  m.energy_motor_side = bandOf(em).mean;
-  m.energy_shaft_rods = bandOf(es).mean;
-  m.energy_carts = bandOf(ec).mean;
+  lists.setBands(m);
   m.ok = true;
   return m;
 }
@@ -130,6 +143,28 @@ std::vector<DrivePoint> uniformRotationPoints(const ReducedModel& rm, const Mode
   return points;
 }
 
+// The largest relative difference of the two models' frozen-angle frequencies over the points.
+double largestModelDifference(const ModelFrozenModes& reduced, const ModelFrozenModes& multibody, size_t points) {
+  double d = 0;
+  for (size_t i = 0; i < points; ++i) {
+    const double a = reduced.angles[i].torsional_frequency(), b = multibody.angles[i].torsional_frequency();
+    if (std::isfinite(a) && std::isfinite(b)) d = std::max(d, std::abs(a - b) / a);
+  }
+  return d;
+}
+
+// The multibody model's steady motion is searched from the reduced model's, without samples and
+// at a tighter tolerance, its Floquet branch referred to the frozen mean.
+SteadyMotionOptions multibodySearch(const SteadyMotionOptions& so, const ModesReport& r, double branch_reference) {
+  SteadyMotionOptions mo = so;
+  mo.samples = 0;
+  mo.rtol = 1e-8;
+  mo.start = r.steady.x0;
+  mo.warmup_periods = 0;
+  mo.reference_frequency = r.elastic ? branch_reference : 0.0;
+  return mo;
+}
+
 // The multibody model's frozen-angle modes along the same points, their largest difference from
 // the reduced model's, and (o.multibody_floquet) its own steady motion and Floquet multipliers,
 // started from the reduced model's.
@@ -138,23 +173,10 @@ void addMultibodyModes(const Scene& scene, const ModesOptions& o, const SteadyMo
   try {
     auto mb = makeMultibodyDrive(scene);
     r.frozen.push_back(frozenAlong(*mb, scene, points));
-    if (r.elastic) {
-      double d = 0;
-      for (size_t i = 0; i < points.size(); ++i) {
-        const double a = r.frozen[0].angles[i].torsional_frequency(), b = r.frozen[1].angles[i].torsional_frequency();
-        if (std::isfinite(a) && std::isfinite(b)) d = std::max(d, std::abs(a - b) / a);
-      }
-      r.model_difference = d;
-    }
+    if (r.elastic) r.model_difference = largestModelDifference(r.frozen[0], r.frozen[1], points.size());
     markPhase(o.clock, "modes: frozen-angle modes (multibody)");
     if (o.multibody_floquet && r.steady.found) {
-      SteadyMotionOptions mo = so;
-      mo.samples = 0;
-      mo.rtol = 1e-8;
-      mo.start = r.steady.x0;
-      mo.warmup_periods = 0;
-      mo.reference_frequency = r.elastic ? branch_reference : 0.0;
-      r.steady_multibody = steadyMotion(*mb, scene, mo);
+      r.steady_multibody = steadyMotion(*mb, scene, multibodySearch(so, r, branch_reference));
       r.has_multibody_steady = true;
       markPhase(o.clock, "modes: steady motion and Floquet (multibody)");
     }
@@ -247,6 +269,58 @@ TwoMassEstimate twoMassEstimate(const ReducedModel& rm) {
   return t;
 }
 
+namespace {
+
+// 1. Steady motion (reduced model) and its Floquet multipliers; returns how it was searched.
+SteadyMotionOptions addSteadyMotion(DriveModel& reduced, const Scene& scene, const ModesOptions& o, ModesReport& r) {
+  const SteadyMotionOptions so = steadyMotionOptions(reduced, scene, o, r.elastic);
+  r.steady = steadyMotion(reduced, scene, so);
+  markPhase(o.clock, "modes: steady motion and Floquet (reduced)");
+  return so;
+}
+
+// The crank angles of the frozen-angle modes: the steady motion's samples, else uniform rotation
+// at the estimated running speed.
+std::vector<DrivePoint> frozenPoints(const ReducedModel& rm, const ModesOptions& o, ModesReport& r) {
+  std::vector<DrivePoint> points = r.steady.samples;
+  if (!r.steady.found) {
+    const std::vector<DrivePoint> uniform = uniformRotationPoints(rm, o, r);
+    points.insert(points.end(), uniform.begin(), uniform.end());
+  }
+  return points;
+}
+
+// Frozen-angle modes of both models along the points; the reduced model's choose the branch of
+// the Floquet frequency.
+void addFrozenModes(DriveModel& reduced, const Scene& scene, const ModesOptions& o, const SteadyMotionOptions& so,
+                    const std::vector<DrivePoint>& points, ModesReport& r) {
+  r.frozen.push_back(frozenAlong(reduced, scene, points));
+  markPhase(o.clock, "modes: frozen-angle modes (reduced)");
+  // The Floquet frequency is known only modulo 2π/T: its branch is the one nearest the frozen-angle
+  // mode's damped frequency Im λ over the revolution (the undamped √λ of M⁻¹K lies branches away
+  // when the damping is heavy: six carts at k = 2000 N·m·s/rad, ζ = 0.54, have √λ ≈ 65 rad/s and
+  // Im λ ≈ 32.7 rad/s with 2π/T = 10.7 rad/s).
+  const double branch_reference = std::isfinite(r.frozen[0].oscillation_damped.mean) ? r.frozen[0].oscillation_damped.mean
+                                                                                    : r.frozen[0].torsional.mean;
+  if (r.elastic && r.steady.found) rebranch(r.steady, branch_reference);  // with the frozen mean
+  if (o.multibody) addMultibodyModes(scene, o, so, points, branch_reference, r);
+}
+
+// 3. Excitation orders at the operating speed w_op, 4. the Campbell diagram and the separation
+// margins, 5. the stability charts.
+void addOperatingSpeedAnalyses(const ReducedModel& rm, const Scene& scene, const ModesOptions& o, double w_op,
+                               ModesReport& r) {
+  r.orders = excitationOrders(rm, w_op);
+  markPhase(o.clock, "modes: excitation orders");
+  addCampbellDiagram(scene, o, w_op, r);
+  markPhase(o.clock, "modes: Campbell diagram");
+  addSeparationMargins(rm, r);
+  if (o.charts && r.steady.found) addStabilityCharts(scene, o, w_op, r);
+  markPhase(o.clock, "modes: stability charts");
+}
+
+}  // namespace
+
 ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   const std::clock_t c0 = std::clock();
   ModesReport r;
@@ -261,40 +335,12 @@ ModesReport analyseModes(const Scene& given, const ModesOptions& o) {
   markPhase(o.clock, "modes: set-up");
   // First estimate: two constant inertias (Dyomin (two rotors) eq. (10)).
   r.two_mass = twoMassEstimate(rm);
-
-  // 1. Steady motion (reduced model) and its Floquet multipliers.
-  const SteadyMotionOptions so = steadyMotionOptions(*reduced, scene, o, r.elastic);
-  r.steady = steadyMotion(*reduced, scene, so);
-  markPhase(o.clock, "modes: steady motion and Floquet (reduced)");
-  std::vector<DrivePoint> points = r.steady.samples;
-  if (!r.steady.found) {
-    const std::vector<DrivePoint> uniform = uniformRotationPoints(rm, o, r);
-    points.insert(points.end(), uniform.begin(), uniform.end());
-  }
-
+  const SteadyMotionOptions so = addSteadyMotion(*reduced, scene, o, r);
   // 2. Frozen-angle modes, both models.
-  r.frozen.push_back(frozenAlong(*reduced, scene, points));
-  markPhase(o.clock, "modes: frozen-angle modes (reduced)");
-  // The Floquet frequency is known only modulo 2π/T: its branch is the one nearest the frozen-angle
-  // mode's damped frequency Im λ over the revolution (the undamped √λ of M⁻¹K lies branches away
-  // when the damping is heavy: six carts at k = 2000 N·m·s/rad, ζ = 0.54, have √λ ≈ 65 rad/s and
-  // Im λ ≈ 32.7 rad/s with 2π/T = 10.7 rad/s).
-  const double branch_reference = std::isfinite(r.frozen[0].oscillation_damped.mean) ? r.frozen[0].oscillation_damped.mean
-                                                                                    : r.frozen[0].torsional.mean;
-  if (r.elastic && r.steady.found) rebranch(r.steady, branch_reference);  // with the frozen mean
-  if (o.multibody) addMultibodyModes(scene, o, so, points, branch_reference, r);
-
-  // 3. Excitation orders at the operating speed.
+  const std::vector<DrivePoint> points = frozenPoints(rm, o, r);
+  addFrozenModes(*reduced, scene, o, so, points, r);
   const double w_op = r.steady.found ? r.steady.omega_mean : (points.empty() ? 1.0 : points[0].omega);
-  r.orders = excitationOrders(rm, w_op);
-  markPhase(o.clock, "modes: excitation orders");
-  // 4. Campbell diagram.
-  addCampbellDiagram(scene, o, w_op, r);
-  markPhase(o.clock, "modes: Campbell diagram");
-  addSeparationMargins(rm, r);
-  // 5. Stability charts.
-  if (o.charts && r.steady.found) addStabilityCharts(scene, o, w_op, r);
-  markPhase(o.clock, "modes: stability charts");
+  addOperatingSpeedAnalyses(rm, scene, o, w_op, r);
   r.warnings = modalWarnings(r);
   r.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
   return r;
@@ -304,61 +350,74 @@ std::vector<std::string> modalWarnings(const ModesReport& r) {
   return modalWarnings(r, r.steady.omega_mean, r.orders);
 }
 
+namespace {
+
+// The analysis could not be made for a driven machine: say so (the first estimate is then the
+// only resonance check), never leave it silent.
+std::string incompleteAnalysisWarning(const ModesReport& r) {
+  char buf[640];
+  if (std::isfinite(r.fallback_omega))
+    std::snprintf(buf, sizeof buf,
+                  "modal analysis incomplete: no steady motion of the drive was found (%s), so there are no Floquet "
+                  "multipliers and no stability or resonance verdict; the frozen-angle modes are taken at uniform "
+                  "rotation at omega = %.4g rad/s, where the motor's static curve carries the mean load (an estimate "
+                  "of the running speed)",
+                  r.steady.failure.c_str(), r.fallback_omega);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "modal analysis not applicable: no steady motion of the drive (%s), so no torsional modes, "
+                  "Floquet multipliers or resonance verdict",
+                  r.steady.failure.c_str());
+  return buf;
+}
+
+std::string instabilityWarning(const FloquetVerdict& v, double omega) {
+  char buf[640];
+  std::snprintf(buf, sizeof buf,
+                "%s: the largest Floquet multiplier of the drive linearized about its steady motion has "
+                "|mu| = %.4g per crank revolution (> 1: a disturbance grows %.3g-fold each turn, growth rate "
+                "%.3g 1/s); the steady running at omega = %.4g rad/s is unstable",
+                v.text == "parametrically unstable" ? "parametric resonance" : "unstable steady motion",
+                v.max_modulus, v.max_modulus, -v.slowest_decay_rate, omega);
+  return buf;
+}
+
+// Forced resonance: the torsional mode's Floquet frequency p_F within 5 % of k·ω for an order k
+// that drives the coupling mode (ExcitationOrders.h: at least 1 % of the largest harmonic of the
+// load torque plus the inertia's own torque ½·J_n2'·ω²).
+void addForcedResonanceWarnings(const ModesReport& r, double omega, const ExcitationOrders& orders,
+                                std::vector<std::string>& w) {
+  const FloquetVerdict& v = r.steady.verdict;
+  if (!(v.has_torsional && v.torsional_resolved && std::isfinite(v.torsional_frequency) && omega > 0)) return;
+  const double pf = v.torsionalNaturalFrequency();
+  char buf[640];
+  for (int k : orders.forced) {
+    if (k < 1 || k > int(orders.table.size())) continue;
+    const double torque = orders.table[size_t(k - 1)].exciting_torque;
+    const double f = k * omega;
+    if (std::abs(pf - f) > 0.05 * f) continue;
+    std::snprintf(buf, sizeof buf,
+                  "torsional resonance: the coupling mode's natural frequency from the Floquet multipliers, p = %.4g rad/s, "
+                  "is within 5 %% of order %d of the crank speed (%d*omega = %.4g rad/s at omega = %.4g rad/s), which "
+                  "carries %.3g N*m (%.0f %% of the largest exciting harmonic); damping ratio %.3g (without the damping, "
+                  "the frozen-angle band is p = %.4g ... %.4g rad/s)",
+                  pf, k, k, f, omega, torque, 100 * torque / orders.exciting_largest, v.torsional_damping_ratio,
+                  r.frozen[0].torsional.min, r.frozen[0].torsional.max);
+    w.push_back(buf);
+  }
+}
+
+}  // namespace
+
 std::vector<std::string> modalWarnings(const ModesReport& r, double omega, const ExcitationOrders& orders) {
   std::vector<std::string> w;
-  char buf[640];
-  // The analysis could not be made for a driven machine: say so (the first estimate is then the
-  // only resonance check), never leave it silent.
   if (r.elastic && r.motor && !r.steady.found) {
-    if (std::isfinite(r.fallback_omega))
-      std::snprintf(buf, sizeof buf,
-                    "modal analysis incomplete: no steady motion of the drive was found (%s), so there are no Floquet "
-                    "multipliers and no stability or resonance verdict; the frozen-angle modes are taken at uniform "
-                    "rotation at omega = %.4g rad/s, where the motor's static curve carries the mean load (an estimate "
-                    "of the running speed)",
-                    r.steady.failure.c_str(), r.fallback_omega);
-    else
-      std::snprintf(buf, sizeof buf,
-                    "modal analysis not applicable: no steady motion of the drive (%s), so no torsional modes, "
-                    "Floquet multipliers or resonance verdict",
-                    r.steady.failure.c_str());
-    w.push_back(buf);
+    w.push_back(incompleteAnalysisWarning(r));
     return w;
   }
   if (!r.elastic || !r.steady.found || r.frozen.empty()) return w;
-  const FloquetVerdict& v = r.steady.verdict;
-  if (!v.stable) {
-    std::snprintf(buf, sizeof buf,
-                  "%s: the largest Floquet multiplier of the drive linearized about its steady motion has "
-                  "|mu| = %.4g per crank revolution (> 1: a disturbance grows %.3g-fold each turn, growth rate "
-                  "%.3g 1/s); the steady running at omega = %.4g rad/s is unstable",
-                  v.text == "parametrically unstable" ? "parametric resonance" : "unstable steady motion",
-                  v.max_modulus, v.max_modulus, -v.slowest_decay_rate, omega);
-    w.push_back(buf);
-  }
-  // Forced resonance: the torsional mode's Floquet frequency p_F within 5 % of k·ω for an order k
-  // that drives the coupling mode (ExcitationOrders.h: at least 1 % of the largest harmonic of the
-  // load torque plus the inertia's own torque ½·J_n2'·ω²).
-  if (v.has_torsional && v.torsional_resolved && std::isfinite(v.torsional_frequency) && omega > 0) {
-    // Undamped natural frequency from the multipliers, √(σ² + ω_d²) = ω_d/√(1 - ζ²): where a forced
-    // response peaks.
-    const double zeta = v.torsional_damping_ratio;
-    const double pf = v.torsional_frequency / std::sqrt(std::max(1e-12, 1 - zeta * zeta));
-    for (int k : orders.forced) {
-      if (k < 1 || k > int(orders.table.size())) continue;
-      const double torque = orders.table[size_t(k - 1)].exciting_torque;
-      const double f = k * omega;
-      if (std::abs(pf - f) > 0.05 * f) continue;
-      std::snprintf(buf, sizeof buf,
-                    "torsional resonance: the coupling mode's natural frequency from the Floquet multipliers, p = %.4g rad/s, "
-                    "is within 5 %% of order %d of the crank speed (%d*omega = %.4g rad/s at omega = %.4g rad/s), which "
-                    "carries %.3g N*m (%.0f %% of the largest exciting harmonic); damping ratio %.3g (without the damping, "
-                    "the frozen-angle band is p = %.4g ... %.4g rad/s)",
-                    pf, k, k, f, omega, torque, 100 * torque / orders.exciting_largest, v.torsional_damping_ratio,
-                    r.frozen[0].torsional.min, r.frozen[0].torsional.max);
-      w.push_back(buf);
-    }
-  }
+  if (!r.steady.verdict.stable) w.push_back(instabilityWarning(r.steady.verdict, omega));
+  addForcedResonanceWarnings(r, omega, orders, w);
   return w;
 }
 

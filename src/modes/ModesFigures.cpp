@@ -90,6 +90,32 @@ std::string separationHtml(const SeparationMargins& sep) {
   return h.str();
 }
 
+// One model's frozen-angle frequency against the crank angle (the second model dashed).
+PlotSeries frozenFrequencyLine(const ModelFrozenModes& frozen, size_t m) {
+  const char* colors[] = {"#1f77b4", "#d62728"};
+  PlotSeries line;
+  line.title = frozen.model + " model";
+  line.color = colors[m % 2];
+  line.dash = m ? 2 : 0;
+  line.line_width = 2;
+  for (const FrozenAngle& a : frozen.angles) {
+    line.x.push_back(std::fmod(a.point.phi, 2 * M_PI) * 180 / M_PI);
+    line.y.push_back(a.torsional_frequency());
+  }
+  return line;
+}
+
+// A frequency that does not depend on the crank angle, as a level over the revolution.
+PlotSeries levelOverRevolution(const std::string& title, const std::string& color, int dash, double value) {
+  PlotSeries level;
+  level.title = title;
+  level.color = color;
+  level.dash = dash;
+  level.x = {0, 360};
+  level.y = {value, value};
+  return level;
+}
+
 // Frozen-angle frequencies over the crank angle, both models, with the two-mass first estimate
 // and the Floquet frequency.
 void addFrozenFrequenciesFigure(const ModesReport& r, const std::string& dir, std::vector<PlotJob>& jobs,
@@ -98,35 +124,13 @@ void addFrozenFrequenciesFigure(const ModesReport& r, const std::string& dir, st
   s.title = "Frozen-angle torsional natural frequency over one crank revolution";
   s.xlabel = "crank angle φ_2 [deg]";
   s.ylabel = "p [rad/s]";
-  const char* colors[] = {"#1f77b4", "#d62728"};
-  for (size_t m = 0; m < r.frozen.size(); ++m) {
-    if (!r.frozen[m].ok) continue;
-    PlotSeries line;
-    line.title = r.frozen[m].model + " model";
-    line.color = colors[m % 2];
-    line.dash = m ? 2 : 0;
-    line.line_width = 2;
-    for (const FrozenAngle& a : r.frozen[m].angles) {
-      line.x.push_back(std::fmod(a.point.phi, 2 * M_PI) * 180 / M_PI);
-      line.y.push_back(a.torsional_frequency());
-    }
-    s.series.push_back(line);
-  }
-  PlotSeries est;
-  est.title = "first estimate: two constant inertias (Dyomin p_0)";
-  est.color = "#7f7f7f";
-  est.dash = 3;
-  est.x = {0, 360};
-  est.y = {r.two_mass.p0, r.two_mass.p0};
-  s.series.push_back(est);
-  if (r.steady.found && r.steady.verdict.has_torsional && r.steady.verdict.torsional_resolved) {
-    PlotSeries fl;
-    fl.title = "Floquet frequency of the steady motion";
-    fl.color = "#2ca02c";
-    fl.x = {0, 360};
-    fl.y = {r.steady.verdict.torsional_frequency, r.steady.verdict.torsional_frequency};
-    s.series.push_back(fl);
-  }
+  for (size_t m = 0; m < r.frozen.size(); ++m)
+    if (r.frozen[m].ok) s.series.push_back(frozenFrequencyLine(r.frozen[m], m));
+  s.series.push_back(
+      levelOverRevolution("first estimate: two constant inertias (Dyomin p_0)", "#7f7f7f", 3, r.two_mass.p0));
+  if (r.steady.found && r.steady.verdict.has_torsional && r.steady.verdict.torsional_resolved)
+    s.series.push_back(levelOverRevolution("Floquet frequency of the steady motion", "#2ca02c", 0,
+                                           r.steady.verdict.torsional_frequency));
   s.preamble = "set xrange [0:360]\nset xtics 45\nset key inside bottom right";
   jobs.push_back(plotJob(s, dir + "/frozen_frequencies"));
   set.figures.push_back(fileOf(dir, "frozen_frequencies",
@@ -293,37 +297,49 @@ FigureSet drawModesFigures(const ModesReport& r, const std::string& dir) {
   return set;
 }
 
+namespace {
+
+// One spectrum figure: the signals whose names start with either prefix.
+struct SpectrumGroup {
+  std::string name, title, prefix1, prefix2;
+};
+
+// The group's spectrum figure (no series when the spectrum has none of its signals).
+PlotSpec spectrumFigure(const OrderSpectrum& s, const SpectrumGroup& gr) {
+  PlotSpec p;
+  p.title = "Order spectrum over the steady window (" + std::to_string(s.revolutions) + " revolutions): " + gr.title;
+  p.xlabel = "order of the crank speed k [-]";
+  p.ylabel = "amplitude [N·m or N] (log scale)";
+  p.logy = true;
+  for (size_t i = 0; i < s.signals.size(); ++i) {
+    const std::string& c = s.signals[i];
+    if (c.rfind(gr.prefix1, 0) != 0 && c.rfind(gr.prefix2, 0) != 0) continue;
+    PlotSeries line;
+    line.title = escapeUnderscores(c);
+    line.style = "linespoints";
+    for (size_t b = 1; b < s.orders.size(); ++b) {
+      line.x.push_back(s.orders[b]);
+      line.y.push_back(std::max(s.amplitude[i][b], 1e-9));
+    }
+    p.series.push_back(line);
+  }
+  p.preamble = "set xtics 1\nset grid xtics";
+  return p;
+}
+
+}  // namespace
+
 FigureSet drawSpectrumFigures(const OrderSpectrum& s, const std::string& dir) {
   FigureSet set;
   std::vector<PlotJob> jobs;
   if (!s.ok || !gnuplotAvailable()) return set;
   // One figure per group: coupling torque (and motor torque), guide reactions, rod and pin forces.
-  struct Group {
-    std::string name, title, prefix1, prefix2;
-  };
-  const Group groups[] = {{"spectrum_torque", "coupling torque", "coupling_torque", "motor_torque"},
-                          {"spectrum_guides", "guide reactions", "N_front_", "N_rear_"},
-                          {"spectrum_rods", "rod forces and bearing", "F_rod_", "bearing_"}};
-  for (const Group& gr : groups) {
-    PlotSpec p;
-    p.title = "Order spectrum over the steady window (" + std::to_string(s.revolutions) + " revolutions): " + gr.title;
-    p.xlabel = "order of the crank speed k [-]";
-    p.ylabel = "amplitude [N·m or N] (log scale)";
-    p.logy = true;
-    for (size_t i = 0; i < s.signals.size(); ++i) {
-      const std::string& c = s.signals[i];
-      if (c.rfind(gr.prefix1, 0) != 0 && c.rfind(gr.prefix2, 0) != 0) continue;
-      PlotSeries line;
-      line.title = escapeUnderscores(c);
-      line.style = "linespoints";
-      for (size_t b = 1; b < s.orders.size(); ++b) {
-        line.x.push_back(s.orders[b]);
-        line.y.push_back(std::max(s.amplitude[i][b], 1e-9));
-      }
-      p.series.push_back(line);
-    }
+  const SpectrumGroup groups[] = {{"spectrum_torque", "coupling torque", "coupling_torque", "motor_torque"},
+                                  {"spectrum_guides", "guide reactions", "N_front_", "N_rear_"},
+                                  {"spectrum_rods", "rod forces and bearing", "F_rod_", "bearing_"}};
+  for (const SpectrumGroup& gr : groups) {
+    const PlotSpec p = spectrumFigure(s, gr);
     if (p.series.empty()) continue;
-    p.preamble = "set xtics 1\nset grid xtics";
     jobs.push_back(plotJob(p, dir + "/" + gr.name));
     set.figures.push_back(fileOf(dir, gr.name,
                                  "Order spectrum of the " + gr.title +
@@ -337,54 +353,74 @@ FigureSet drawSpectrumFigures(const OrderSpectrum& s, const std::string& dir) {
 
 namespace {
 
+// The rows of a table of quantities and their values, the text escaped.
+struct KeyRows {
+  std::ostringstream h;
+  void row(const std::string& k, const std::string& v) {
+    h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"n\">" << htmlEscape(v) << "</td></tr>\n";
+  }
+};
+
+// The coupling, the first estimate and the frozen-angle modes of both models with the mode's shape.
+void frozenModeRows(KeyRows& t, const ModesReport& r) {
+  t.row("coupling", r.elastic ? "elastic" : "rigid");
+  if (r.two_mass.applicable) t.row("first estimate p0, two constant inertias [rad/s]", g(r.two_mass.p0, "%.5g"));
+  for (const ModelFrozenModes& m : r.frozen)
+    if (m.ok && r.elastic)
+      t.row("frozen-angle p, " + m.model + " model: mean (min … max) [rad/s]",
+            g(m.torsional.mean, "%.6g") + " (" + g(m.torsional.min, "%.6g") + " … " + g(m.torsional.max, "%.6g") + ")");
+  if (std::isfinite(r.model_difference)) t.row("multibody against reduced, largest relative difference of p", g(r.model_difference, "%.2e"));
+  if (r.elastic && !r.frozen.empty() && r.frozen[0].ok) {
+    const ModelFrozenModes& m = r.frozen[0];
+    t.row("mode shape", m.torsional_name + ": kinetic energy motor side " + g(100 * m.energy_motor_side, "%.0f") +
+                            " %, crankshaft and rods " + g(100 * m.energy_shaft_rods, "%.0f") + " %, carts " +
+                            g(100 * m.energy_carts, "%.0f") + " %");
+  }
+}
+
+// The steady motion and its Floquet verdicts (n/a where the run's stability does not apply).
+void floquetRows(KeyRows& t, const ModesReport& r, const std::string& run_na) {
+  if (!run_na.empty()) {
+    t.row("stability of the steady motion (Floquet)", "n/a: " + run_na);
+  } else if (r.steady.found) {
+    const FloquetVerdict& v = r.steady.verdict;
+    t.row("mean crank speed of the steady motion [rad/s]", g(r.steady.omega_mean, "%.6g"));
+    t.row("Floquet verdict (reduced model)", v.text + ", largest |μ| = " + g(v.max_modulus) + " per revolution, margin " +
+                                                g(v.margin));
+    if (v.has_torsional && !v.torsional_resolved)
+      t.row("torsional mode from the multipliers", "decays more than a million-fold per revolution (not resolved)");
+    else if (v.has_torsional)
+      t.row("torsional mode from the multipliers", g(v.torsional_frequency, "%.5g") + " rad/s, damping ratio " +
+                                                      g(v.torsional_damping_ratio, "%.3g"));
+  } else {
+    t.row("steady motion", "not found: " + r.steady.failure);
+  }
+  if (run_na.empty() && r.has_multibody_steady && r.steady_multibody.found)
+    t.row("Floquet verdict (multibody model)", r.steady_multibody.verdict.text + ", largest |μ| = " +
+                                                   g(r.steady_multibody.verdict.max_modulus));
+}
+
+// The layout's excitation orders (the first 12) and each stability chart's unstable points.
+void orderAndChartRows(KeyRows& t, const ModesReport& r) {
+  std::string orders;
+  for (size_t i = 0; i < r.orders.layout.size() && i < 12; ++i) orders += (i ? ", " : "") + std::to_string(r.orders.layout[i]);
+  t.row("excitation orders of the layout", orders);
+  for (const StabilityChart& c : r.charts)
+    t.row(c.y_key == "omega" ? "stability chart c × ω at k = " + g(c.fixed_damping) + " N·m·s/rad"
+                             : "stability chart c × k at ω = " + g(c.fixed_speed) + " rad/s",
+          std::to_string(c.unstable_points) + " unstable points, " + std::to_string(c.zones.size()) + " zone(s)");
+}
+
 // The section's key figures, one row each: the modes of both models, the Floquet verdicts, the
 // excitation orders and the stability charts.
 std::string modesKeyTable(const ModesReport& r, const std::string& run_na) {
-  std::ostringstream h;
-  h << "<table>\n<tr><th>quantity</th><th>value</th></tr>\n";
-  auto row = [&](const std::string& k, const std::string& v) {
-    h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"n\">" << htmlEscape(v) << "</td></tr>\n";
-  };
-  row("coupling", r.elastic ? "elastic" : "rigid");
-  if (r.two_mass.applicable) row("first estimate p0, two constant inertias [rad/s]", g(r.two_mass.p0, "%.5g"));
-  for (const ModelFrozenModes& m : r.frozen)
-    if (m.ok && r.elastic)
-      row("frozen-angle p, " + m.model + " model: mean (min … max) [rad/s]",
-          g(m.torsional.mean, "%.6g") + " (" + g(m.torsional.min, "%.6g") + " … " + g(m.torsional.max, "%.6g") + ")");
-  if (std::isfinite(r.model_difference)) row("multibody against reduced, largest relative difference of p", g(r.model_difference, "%.2e"));
-  if (r.elastic && !r.frozen.empty() && r.frozen[0].ok) {
-    const ModelFrozenModes& m = r.frozen[0];
-    row("mode shape", m.torsional_name + ": kinetic energy motor side " + g(100 * m.energy_motor_side, "%.0f") +
-                          " %, crankshaft and rods " + g(100 * m.energy_shaft_rods, "%.0f") + " %, carts " +
-                          g(100 * m.energy_carts, "%.0f") + " %");
-  }
-  if (!run_na.empty()) {
-    row("stability of the steady motion (Floquet)", "n/a: " + run_na);
-  } else if (r.steady.found) {
-    const FloquetVerdict& v = r.steady.verdict;
-    row("mean crank speed of the steady motion [rad/s]", g(r.steady.omega_mean, "%.6g"));
-    row("Floquet verdict (reduced model)", v.text + ", largest |μ| = " + g(v.max_modulus) + " per revolution, margin " +
-                                              g(v.margin));
-    if (v.has_torsional && !v.torsional_resolved)
-      row("torsional mode from the multipliers", "decays more than a million-fold per revolution (not resolved)");
-    else if (v.has_torsional)
-      row("torsional mode from the multipliers", g(v.torsional_frequency, "%.5g") + " rad/s, damping ratio " +
-                                                    g(v.torsional_damping_ratio, "%.3g"));
-  } else {
-    row("steady motion", "not found: " + r.steady.failure);
-  }
-  if (run_na.empty() && r.has_multibody_steady && r.steady_multibody.found)
-    row("Floquet verdict (multibody model)", r.steady_multibody.verdict.text + ", largest |μ| = " +
-                                                 g(r.steady_multibody.verdict.max_modulus));
-  std::string orders;
-  for (size_t i = 0; i < r.orders.layout.size() && i < 12; ++i) orders += (i ? ", " : "") + std::to_string(r.orders.layout[i]);
-  row("excitation orders of the layout", orders);
-  for (const StabilityChart& c : r.charts)
-    row(c.y_key == "omega" ? "stability chart c × ω at k = " + g(c.fixed_damping) + " N·m·s/rad"
-                           : "stability chart c × k at ω = " + g(c.fixed_speed) + " rad/s",
-        std::to_string(c.unstable_points) + " unstable points, " + std::to_string(c.zones.size()) + " zone(s)");
-  h << "</table>\n";
-  return h.str();
+  KeyRows t;
+  t.h << "<table>\n<tr><th>quantity</th><th>value</th></tr>\n";
+  frozenModeRows(t, r);
+  floquetRows(t, r, run_na);
+  orderAndChartRows(t, r);
+  t.h << "</table>\n";
+  return t.h.str();
 }
 
 std::string campbellCrossingsHtml(const ModesReport& r) {
@@ -425,9 +461,7 @@ std::string figuresHtml(const FigureSet& figures) {
   std::ostringstream h;
   for (const FigureFile& f : figures.figures) {
     h << "<figure id=\"" << htmlEscape(f.name) << "\">";
-    if (!f.png.empty())
-      h << "<img alt=\"" << htmlEscape(f.name) << "\" src=\"data:image/png;base64,"
-        << base64Encode(readFileContents(f.png, "figure")) << "\">";
+    h << embeddedPngHtml(f);
     h << "<figcaption>" << htmlEscape(f.caption) << "</figcaption></figure>\n";
   }
   return h.str();

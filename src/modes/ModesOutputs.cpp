@@ -53,6 +53,40 @@ nlohmann::json steadyJson(const SteadyMotion& m) {
 
 nlohmann::json bandJson(const Band& b) { return {{"mean", num(b.mean)}, {"min", num(b.min)}, {"max", num(b.max)}}; }
 
+// The mode overdamped at every crank angle: its damping ratio, and where the drive's oscillation
+// is instead.
+void overdampedModeText(std::ostringstream& os, const ModelFrozenModes& m) {
+  char b[512];
+  std::snprintf(b, sizeof b, "damping ratio %.3g ... %.3g (>= 1: overdamped at every crank angle, it does not "
+                "oscillate and has no damped frequency)", m.torsional_damping.min, m.torsional_damping.max);
+  os << b;
+  if (m.other_oscillating_angles > 0) {
+    // With a heavy, non-proportional damping the oscillation is the pair continued from the other
+    // (rigid-body) mode: say where it is, with its own triple.
+    std::snprintf(b, sizeof b,
+                  "; the drive's oscillation is the other mode's (without damping the whole drive turning together), "
+                  "with the damping natural frequency %.4g rad/s, damping ratio %.3g, damped frequency %.4g rad/s "
+                  "(means over the crank angle)",
+                  m.other_natural.mean, m.other_damping.mean, m.oscillation_damped.mean);
+    os << b;
+  }
+}
+
+// The damped pair's natural frequency, damping ratio and damped frequency over the crank angle,
+// and at how many angles it is overdamped.
+void dampedPairText(std::ostringstream& os, const ModelFrozenModes& m, int angles) {
+  char b[512];
+  std::snprintf(b, sizeof b,
+                "natural frequency %.4g ... %.4g rad/s, damping ratio %.3g ... %.3g, damped frequency %.4g ... %.4g "
+                "rad/s over the crank angle (at each angle the three of one damped pair)",
+                m.torsional_natural.min, m.torsional_natural.max, m.torsional_damping.min, m.torsional_damping.max,
+                m.torsional_damped.min, m.torsional_damped.max);
+  os << b;
+  if (m.torsional_overdamped_angles > 0)
+    os << "; overdamped (no oscillation, damped frequency counted as 0) at " << m.torsional_overdamped_angles << " of "
+       << angles << " crank angles";
+}
+
 // The frozen-angle coupling mode of one model in one line: its frequency without damping, then the
 // natural frequency, damping ratio and damped frequency of its own damped pair (FrozenModes.h).
 std::string frozenTorsionalText(const ModelFrozenModes& m, bool floquet) {
@@ -64,31 +98,10 @@ std::string frozenTorsionalText(const ModelFrozenModes& m, bool floquet) {
                 (m.model + ":").c_str(), m.torsional.mean, m.torsional.min, m.torsional.max);
   os << b;
   const int angles = int(m.angles.size());
-  if (m.torsional_overdamped_angles >= angles && angles > 0) {
-    std::snprintf(b, sizeof b, "damping ratio %.3g ... %.3g (>= 1: overdamped at every crank angle, it does not "
-                  "oscillate and has no damped frequency)", m.torsional_damping.min, m.torsional_damping.max);
-    os << b;
-    if (m.other_oscillating_angles > 0) {
-      // With a heavy, non-proportional damping the oscillation is the pair continued from the other
-      // (rigid-body) mode: say where it is, with its own triple.
-      std::snprintf(b, sizeof b,
-                    "; the drive's oscillation is the other mode's (without damping the whole drive turning together), "
-                    "with the damping natural frequency %.4g rad/s, damping ratio %.3g, damped frequency %.4g rad/s "
-                    "(means over the crank angle)",
-                    m.other_natural.mean, m.other_damping.mean, m.oscillation_damped.mean);
-      os << b;
-    }
-  } else {
-    std::snprintf(b, sizeof b,
-                  "natural frequency %.4g ... %.4g rad/s, damping ratio %.3g ... %.3g, damped frequency %.4g ... %.4g "
-                  "rad/s over the crank angle (at each angle the three of one damped pair)",
-                  m.torsional_natural.min, m.torsional_natural.max, m.torsional_damping.min, m.torsional_damping.max,
-                  m.torsional_damped.min, m.torsional_damped.max);
-    os << b;
-    if (m.torsional_overdamped_angles > 0)
-      os << "; overdamped (no oscillation, damped frequency counted as 0) at " << m.torsional_overdamped_angles << " of "
-         << angles << " crank angles";
-  }
+  if (m.torsional_overdamped_angles >= angles && angles > 0)
+    overdampedModeText(os, m);
+  else
+    dampedPairText(os, m, angles);
   // A negative damping ratio is a mode that grows: never printed as if it were a damping.
   if (m.torsional_damping.min < 0)
     os << (m.torsional_damping.max < 0 ? " (negative: the mode grows at every crank angle, unstable while frozen"
@@ -227,6 +240,26 @@ nlohmann::json modesJson(const ModesReport& r) {
   return j;
 }
 
+namespace {
+
+// One model's columns of frozen.csv at one angle: p, ζ, ω_n, ω_d of the torsional mode (ω_d
+// empty where it is overdamped) and λ of the rigid-body mode.
+std::vector<double> frozenColumns(const FrozenAngle& angle) {
+  double pt = NAN, zt = NAN, wn = NAN, wd = NAN, lr = NAN;
+  for (const FrozenMode& mode : angle.modes)
+    if (mode.torsional) {
+      pt = mode.frequency;
+      zt = mode.damping_ratio;
+      wn = mode.natural_frequency;
+      wd = mode.oscillates ? mode.damped_frequency : NAN;  // overdamped: none (empty)
+    } else {
+      lr = mode.lambda;
+    }
+  return {pt, zt, wn, wd, lr};
+}
+
+}  // namespace
+
 Table frozenTable(const ModesReport& r) {
   Table t;
   t.columns = {"phi_crank", "omega_crank", "twist", "twist_rate"};
@@ -244,17 +277,8 @@ Table frozenTable(const ModesReport& r) {
     std::vector<double> row{p.phi, p.omega, p.twist, p.twist_rate};
     for (const ModelFrozenModes& m : r.frozen) {
       if (!m.ok) continue;
-      double pt = NAN, zt = NAN, wn = NAN, wd = NAN, lr = NAN;
-      for (const FrozenMode& mode : m.angles[i].modes)
-        if (mode.torsional) {
-          pt = mode.frequency;
-          zt = mode.damping_ratio;
-          wn = mode.natural_frequency;
-          wd = mode.oscillates ? mode.damped_frequency : NAN;  // overdamped: none (empty)
-        } else {
-          lr = mode.lambda;
-        }
-      row.insert(row.end(), {pt, zt, wn, wd, lr});
+      const std::vector<double> columns = frozenColumns(m.angles[i]);
+      row.insert(row.end(), columns.begin(), columns.end());
     }
     t.rows.push_back(row);
   }

@@ -62,57 +62,56 @@ void addSignalSpectrum(OrderSpectrum& s, const std::string& c, const std::vector
   s.whole_order_share.push_back(total > 0 ? whole / total : 1.0);
 }
 
-}  // namespace
-
-OrderSpectrum orderSpectrum(const Table& ts, const Table& table, const std::vector<std::string>& columns,
-                            double window_revolutions, int M, double max_order, int n_peaks) {
-  OrderSpectrum s;
-  s.samples_per_revolution = M;
-  if (!ts.has("t") || !ts.has("phi_crank")) {
-    s.note = "the timeseries has no t or phi_crank column";
-    return s;
-  }
+// The window: the last R whole revolutions of the steady window (R, t_begin, t_end of s, and the
+// last revolution's mean speed for the direction of rotation). Why there is none, empty when found.
+std::string placeWindow(const Table& ts, double window_revolutions, OrderSpectrum& s, double& omega_mean) {
+  if (!ts.has("t") || !ts.has("phi_crank")) return "the timeseries has no t or phi_crank column";
   const SteadyState ss = detectSteadyState(ts, window_revolutions);
-  if (ss.window_revolutions < 1 || ss.revolutions.empty()) {
-    s.note = "no whole crank revolution in the steady window";
-    return s;
-  }
+  if (ss.window_revolutions < 1 || ss.revolutions.empty()) return "no whole crank revolution in the steady window";
   const int R = ss.window_revolutions;
-  const std::vector<double> t = ts.column("t"), phi = ts.column("phi_crank");
-  // Window: the last R whole revolutions; crank angle from its start.
   const CrankRevolution& first = ss.revolutions[ss.revolutions.size() - R];
   const CrankRevolution& last = ss.revolutions.back();
   s.t_begin = first.t_begin;
   s.t_end = last.t_end;
   s.revolutions = R;
+  omega_mean = last.omega_mean;
+  return "";
+}
+
+// The rows of the window: their times and the crank angle from the window's start, turned to
+// rise with the rotation.
+struct WindowAngles {
+  std::vector<double> phi, t;
+};
+
+WindowAngles windowAngles(const Table& ts, const OrderSpectrum& s, double omega_mean) {
+  const std::vector<double> t = ts.column("t"), phi = ts.column("phi_crank");
   // Crank angle at the window's start (interpolated) and the direction of rotation.
   size_t i0 = 0;
   const double phi_start = interpolateForward(t, phi, s.t_begin, i0);
-  const double sign = last.omega_mean >= 0 ? 1.0 : -1.0;
+  const double sign = omega_mean >= 0 ? 1.0 : -1.0;
   // Rows of the window, monotonic in φ (the crank turns one way in steady running).
-  std::vector<double> phi_w, t_w;
+  WindowAngles w;
   for (size_t r = 0; r < t.size(); ++r)
     if (t[r] >= s.t_begin - 1e-12 && t[r] <= s.t_end + 1e-12) {
-      phi_w.push_back(sign * (phi[r] - phi_start));
-      t_w.push_back(t[r]);
+      w.phi.push_back(sign * (phi[r] - phi_start));
+      w.t.push_back(t[r]);
     }
-  if (phi_w.size() < 8) {
-    s.note = "too few output rows in the steady window";
-    return s;
-  }
-  for (size_t k = 1; k < phi_w.size(); ++k)
-    if (!(phi_w[k] > phi_w[k - 1])) {
-      s.note = "the crank does not turn steadily one way in the window";
-      return s;
-    }
-  const int N = M * R;
-  // Time at each equally spaced crank angle; the signals are then interpolated in time (rows
-  // of `table` may be a different table with the same time column).
-  const std::vector<double> tq = timesAtEqualCrankAngles(phi_w, t_w, N, R);
-  if (!table.has("t")) {
-    s.note = "the table has no t column";
-    return s;
-  }
+  return w;
+}
+
+// Why the window's rows cannot be resampled at equal crank angles, empty when they can.
+std::string windowAnglesProblem(const WindowAngles& w) {
+  if (w.phi.size() < 8) return "too few output rows in the steady window";
+  for (size_t k = 1; k < w.phi.size(); ++k)
+    if (!(w.phi[k] > w.phi[k - 1])) return "the crank does not turn steadily one way in the window";
+  return "";
+}
+
+// The orders up to max_order and each signal of `columns` the table has, resampled at the times tq.
+void addSpectra(OrderSpectrum& s, const Table& table, const std::vector<std::string>& columns,
+                const std::vector<double>& tq, double max_order, int n_peaks) {
+  const int R = s.revolutions, N = int(tq.size());
   const std::vector<double> tt = table.column("t");
   Eigen::FFT<double> fft;
   const int bins = std::min(N / 2, int(std::floor(max_order * R)) + 1);
@@ -121,6 +120,28 @@ OrderSpectrum orderSpectrum(const Table& ts, const Table& table, const std::vect
     if (!table.has(c)) continue;
     addSignalSpectrum(s, c, table.column(c), tt, tq, R, bins, n_peaks, fft);
   }
+}
+
+}  // namespace
+
+OrderSpectrum orderSpectrum(const Table& ts, const Table& table, const std::vector<std::string>& columns,
+                            double window_revolutions, int M, double max_order, int n_peaks) {
+  OrderSpectrum s;
+  s.samples_per_revolution = M;
+  double omega_mean = 0;
+  s.note = placeWindow(ts, window_revolutions, s, omega_mean);
+  if (!s.note.empty()) return s;
+  const WindowAngles w = windowAngles(ts, s, omega_mean);
+  s.note = windowAnglesProblem(w);
+  if (!s.note.empty()) return s;
+  // Time at each equally spaced crank angle; the signals are then interpolated in time (rows
+  // of `table` may be a different table with the same time column).
+  const std::vector<double> tq = timesAtEqualCrankAngles(w.phi, w.t, M * s.revolutions, s.revolutions);
+  if (!table.has("t")) {
+    s.note = "the table has no t column";
+    return s;
+  }
+  addSpectra(s, table, columns, tq, max_order, n_peaks);
   s.ok = !s.signals.empty();
   if (!s.ok) s.note = "none of the signals is in the table";
   return s;

@@ -48,17 +48,7 @@ class Augmented {
     if (sys_.jacobian) {
       sys_.jacobian(s, xs_, A_);
     } else {
-      Eigen::VectorXd xp = xs_;
-      for (int j = 0; j < n; ++j) {
-        const double h = 1e-6 * std::max(std::abs(xs_(j)), sys_.scale(j));
-        xp(j) = xs_(j) + h;
-        sys_.rhs(s, xp, fp_);
-        xp(j) = xs_(j) - h;
-        sys_.rhs(s, xp, fm_);
-        xp(j) = xs_(j);
-        evaluations += 2;
-        A_.col(j) = (fp_.head(n) - fm_.head(n)) / (2 * h);
-      }
+      differenceJacobian(s);
     }
     Eigen::Map<const Eigen::MatrixXd> Phi(z.data() + nx_, n, n);
     Eigen::Map<Eigen::MatrixXd> dPhi(dz.data() + nx_, n, n);
@@ -66,6 +56,22 @@ class Augmented {
   }
 
  private:
+  // A = ∂f/∂x at (s, xs_) by central differences, a step of 1e-6 of each state's scale.
+  void differenceJacobian(double s) {
+    const int n = sys_.n;
+    Eigen::VectorXd xp = xs_;
+    for (int j = 0; j < n; ++j) {
+      const double h = 1e-6 * std::max(std::abs(xs_(j)), sys_.scale(j));
+      xp(j) = xs_(j) + h;
+      sys_.rhs(s, xp, fp_);
+      xp(j) = xs_(j) - h;
+      sys_.rhs(s, xp, fm_);
+      xp(j) = xs_(j);
+      evaluations += 2;
+      A_.col(j) = (fp_.head(n) - fm_.head(n)) / (2 * h);
+    }
+  }
+
   const PeriodicSystem& sys_;
   bool var_;
   int nx_ = 0, size_ = 0;
@@ -122,86 +128,138 @@ Eigen::VectorXd errorWeights(const PeriodicSystem& sys, double atol_scale, int N
   return atol;
 }
 
+// Why a flow over the period cannot be integrated as set up; empty when it can.
+std::string setUpProblem(const PeriodicSystem& sys, const Eigen::VectorXd& x0) {
+  const int n = sys.n, nx = sys.n + sys.quadratures;
+  if (n <= 0 || !(sys.period > 0) || x0.size() != nx || sys.scale.size() != n || !sys.rhs)
+    return "periodic system set up wrongly (sizes, period or right-hand side)";
+  return "";
+}
+
+// Where the next step aims: the next sample or the period's end, and whether the step was
+// shortened to land on it.
+struct StepTarget {
+  double target = 0;
+  bool clipped = false;
+};
+
+// One integration over the period: the augmented state, its error weights, the samples still to
+// take and the adaptive step. The result's counters, samples and failure fill as it goes.
+class PeriodIntegration {
+ public:
+  PeriodIntegration(const PeriodicSystem& sys, const Eigen::VectorXd& x0, const FlowOptions& o, FlowResult& r)
+      : sys_(sys), o_(o), r_(r), F_(sys, o.monodromy, r.evaluations), nx_(sys.n + sys.quadratures),
+        z_(F_.size()), atol_(errorWeights(sys, o.atol_scale, F_.size())), S_(sys.period),
+        sample_at_(sampleTimes(S_, o.samples)), k_(F_.size()), h_(S_ / 200) {
+    z_.head(nx_) = x0;
+    if (o.monodromy) Eigen::Map<Eigen::MatrixXd>(z_.data() + nx_, sys.n, sys.n).setIdentity();
+    if (!sample_at_.empty()) {
+      record();
+      next_sample_ = 1;
+    }
+    F_(s_, z_, k_.k1);
+  }
+
+  // Steps to the period's end; false (with r.failure) when the integration gave up.
+  bool run() {
+    while (s_ < S_) {
+      if (r_.steps + r_.rejected >= o_.max_steps)
+        return fail("period not integrated within " + std::to_string(o_.max_steps) + " steps");
+      const StepTarget t = aim();
+      const double en = dormandPrinceStep(F_, s_, h_, z_, atol_, o_.rtol, k_);
+      if (!std::isfinite(en)) {  // a stage left the region where f is defined: a smaller step
+        if (!retryUndefinedStage()) return false;
+        continue;
+      }
+      if (en <= 1.0) {
+        if (accept(en, t)) break;
+      } else {
+        ++r_.rejected;
+        h_ *= std::max(0.1, 0.9 * std::pow(en, -0.2));
+      }
+      if (h_ < 1e-14 * S_) return fail("step size underflow at s = " + std::to_string(s_));
+    }
+    return true;
+  }
+
+  // The state at the period's end and, when asked, the monodromy Φ(S).
+  void finish() {
+    r_.x_end = z_.head(nx_);
+    if (o_.monodromy) r_.monodromy = Eigen::Map<const Eigen::MatrixXd>(z_.data() + nx_, sys_.n, sys_.n);
+    r_.ok = true;
+  }
+
+ private:
+  void record() {
+    r_.s_samples.push_back(s_);
+    r_.x_samples.push_back(z_.head(nx_));
+  }
+
+  bool fail(std::string why) {
+    r_.failure = std::move(why);
+    return false;
+  }
+
+  // The step is shortened to land on the next sample or the period's end.
+  StepTarget aim() {
+    StepTarget t{S_, false};
+    if (next_sample_ < sample_at_.size()) t.target = sample_at_[next_sample_];
+    if (s_ + h_ >= t.target) {
+      h_ = t.target - s_;
+      t.clipped = true;
+    }
+    return t;
+  }
+
+  // A step a tenth as long after a stage left the defined region; false when that gets too small.
+  bool retryUndefinedStage() {
+    ++r_.rejected;
+    h_ *= 0.1;
+    if (h_ >= 1e-14 * S_) return true;
+    char b[160];
+    std::snprintf(b, sizeof b, "the motion left the range where the model is defined %.2g of the way through "
+                  "the period", s_ / S_);
+    return fail(b);
+  }
+
+  // Takes the step (sampling where it landed on a sample) and sizes the next; true at the period's end.
+  bool accept(double en, const StepTarget& t) {
+    s_ = t.clipped ? t.target : s_ + h_;
+    z_ = k_.y;
+    k_.k1 = k_.k7;  // first same as last
+    ++r_.steps;
+    if (t.clipped && next_sample_ < sample_at_.size() && t.target == sample_at_[next_sample_]) {
+      record();
+      ++next_sample_;
+    }
+    if (t.clipped && t.target == S_) return true;
+    const double fac = en > 0 ? 0.9 * std::pow(en, -0.2) : 5.0;
+    h_ *= std::min(5.0, std::max(0.2, fac));
+    return false;
+  }
+
+  const PeriodicSystem& sys_;
+  const FlowOptions& o_;
+  FlowResult& r_;
+  Augmented F_;
+  const int nx_;
+  Eigen::VectorXd z_;
+  const Eigen::VectorXd atol_;
+  const double S_;
+  const std::vector<double> sample_at_;
+  size_t next_sample_ = 0;
+  DormandPrinceStages k_;
+  double s_ = 0, h_;
+};
+
 }  // namespace
 
 FlowResult flowOverPeriod(const PeriodicSystem& sys, const Eigen::VectorXd& x0, const FlowOptions& o) {
   FlowResult r;
-  const int n = sys.n, nx = sys.n + sys.quadratures;
-  if (n <= 0 || !(sys.period > 0) || x0.size() != nx || sys.scale.size() != n || !sys.rhs) {
-    r.failure = "periodic system set up wrongly (sizes, period or right-hand side)";
-    return r;
-  }
-  Augmented F(sys, o.monodromy, r.evaluations);
-  const int N = F.size();
-  Eigen::VectorXd z(N), w(N);
-  z.head(nx) = x0;
-  if (o.monodromy) Eigen::Map<Eigen::MatrixXd>(z.data() + nx, n, n).setIdentity();
-  const Eigen::VectorXd atol = errorWeights(sys, o.atol_scale, N);
-
-  const double S = sys.period;
-  const std::vector<double> sample_at = sampleTimes(S, o.samples);
-  size_t next_sample = 0;
-  auto record = [&](double s) {
-    r.s_samples.push_back(s);
-    r.x_samples.push_back(z.head(nx));
-  };
-  if (!sample_at.empty()) {
-    record(0.0);
-    next_sample = 1;
-  }
-
-  DormandPrinceStages k(N);
-  double s = 0, h = S / 200;
-  F(s, z, k.k1);
-  while (s < S) {
-    if (r.steps + r.rejected >= o.max_steps) {
-      r.failure = "period not integrated within " + std::to_string(o.max_steps) + " steps";
-      return r;
-    }
-    double target = S;
-    if (next_sample < sample_at.size()) target = sample_at[next_sample];
-    bool clipped = false;
-    if (s + h >= target) {
-      h = target - s;
-      clipped = true;
-    }
-    const double en = dormandPrinceStep(F, s, h, z, atol, o.rtol, k);
-    if (!std::isfinite(en)) {  // a stage left the region where f is defined: a smaller step
-      ++r.rejected;
-      h *= 0.1;
-      if (h < 1e-14 * S) {
-        char b[160];
-        std::snprintf(b, sizeof b, "the motion left the range where the model is defined %.2g of the way through "
-                      "the period", s / S);
-        r.failure = b;
-        return r;
-      }
-      continue;
-    }
-    if (en <= 1.0) {
-      s = clipped ? target : s + h;
-      z = k.y;
-      k.k1 = k.k7;  // first same as last
-      ++r.steps;
-      if (clipped && next_sample < sample_at.size() && target == sample_at[next_sample]) {
-        record(s);
-        ++next_sample;
-      }
-      if (clipped && target == S) break;
-      const double fac = en > 0 ? 0.9 * std::pow(en, -0.2) : 5.0;
-      h *= std::min(5.0, std::max(0.2, fac));
-    } else {
-      ++r.rejected;
-      h *= std::max(0.1, 0.9 * std::pow(en, -0.2));
-    }
-    if (h < 1e-14 * S) {
-      r.failure = "step size underflow at s = " + std::to_string(s);
-      return r;
-    }
-  }
-  r.x_end = z.head(nx);
-  if (o.monodromy) r.monodromy = Eigen::Map<const Eigen::MatrixXd>(z.data() + nx, n, n);
-  r.ok = true;
+  r.failure = setUpProblem(sys, x0);
+  if (!r.failure.empty()) return r;
+  PeriodIntegration period(sys, x0, o, r);
+  if (period.run()) period.finish();
   return r;
 }
 
@@ -234,29 +292,117 @@ std::string warmUp(const PeriodicSystem& sys, Run& run, const OrbitOptions& o, E
   return "";
 }
 
+// A start x of the period map with its flow f (monodromy included), the residual
+// res = x(S) - x(0) and that residual's scaled size r.
+struct PeriodMapPoint {
+  Eigen::VectorXd x;
+  FlowResult f;
+  Eigen::VectorXd res;
+  double r = 0;
+};
+
+// The flows inside Newton's method: with the variational equations, without samples.
+FlowOptions newtonFlowOptions(const OrbitOptions& o) {
+  FlowOptions var = o.flow;
+  var.monodromy = true;
+  var.samples = 0;
+  return var;
+}
+
 // Newton's step dx on the period map, halved (at most eight times) until the residual falls or
-// meets the tolerance. Accepted: x, f, res and r hold the new start, its flow and its residual.
+// meets the tolerance. Accepted: p holds the new start, its flow and its residual.
 template <class Run>
 bool dampedNewtonStep(const PeriodicSystem& sys, Run& run, const FlowOptions& var, const Eigen::VectorXd& dx,
-                      double tolerance, Eigen::VectorXd& x, FlowResult& f, Eigen::VectorXd& res, double& r) {
+                      double tolerance, PeriodMapPoint& p) {
   const int n = sys.n;
   double lambda = 1.0;
   for (int half = 0; half < 8; ++half, lambda *= 0.5) {
-    Eigen::VectorXd xt = x;
+    Eigen::VectorXd xt = p.x;
     xt.head(n) += lambda * dx;
     FlowResult ft = run(xt, var);
     if (!ft.ok) continue;
     const Eigen::VectorXd rt = ft.x_end.head(n) - xt.head(n);
     const double st = scaledResidual(sys, rt);
-    if (std::isfinite(st) && (st < r || st <= tolerance)) {
-      x = xt;
-      f = std::move(ft);
-      res = rt;
-      r = st;
+    if (std::isfinite(st) && (st < p.r || st <= tolerance)) {
+      p.x = xt;
+      p.f = std::move(ft);
+      p.res = rt;
+      p.r = st;
       return true;
     }
   }
   return false;
+}
+
+// Newton's first point: the guess after the warm-up periods, flowed once with the monodromy.
+// Returns why there is none, empty when p holds it.
+template <class Run>
+std::string startingPoint(const PeriodicSystem& sys, Run& run, const OrbitOptions& o, const Eigen::VectorXd& guess,
+                          PeriodMapPoint& p) {
+  const int n = sys.n;
+  p.x = Eigen::VectorXd::Zero(n + sys.quadratures);
+  p.x.head(n) = guess.head(n);
+  const std::string failure = warmUp(sys, run, o, p.x);
+  if (!failure.empty()) return failure;
+  p.f = run(p.x, newtonFlowOptions(o));
+  if (!p.f.ok) return p.f.failure;
+  p.res = p.f.x_end.head(n) - p.x.head(n);
+  p.r = scaledResidual(sys, p.res);
+  if (!std::isfinite(p.r)) return "the period map is not finite at the first guess";
+  return "";
+}
+
+// Newton's iterations from p while the residual exceeds the tolerance; the orbit gets their
+// count and the residual reached, or the failure (false).
+template <class Run>
+bool newtonOnPeriodMap(const PeriodicSystem& sys, Run& run, const OrbitOptions& o, PeriodMapPoint& p,
+                       PeriodicOrbit& orbit) {
+  const int n = sys.n;
+  const FlowOptions var = newtonFlowOptions(o);
+  int it = 0;
+  for (; it < o.max_newton && p.r > o.tolerance; ++it) {
+    const Eigen::MatrixXd J = p.f.monodromy - Eigen::MatrixXd::Identity(n, n);
+    const Eigen::VectorXd dx = J.fullPivLu().solve(-p.res);
+    if (!dx.allFinite()) {
+      orbit.failure = "Newton step not finite (monodromy has a multiplier 1)";
+      return false;
+    }
+    if (!dampedNewtonStep(sys, run, var, dx, o.tolerance, p)) {
+      // No step reduces the residual any more: the map's own integration error is reached.
+      if (p.r <= o.accept_stagnation) break;
+      orbit.failure = "Newton's method on the period map did not converge (residual " + std::to_string(p.r) + ")";
+      orbit.residual = p.r;
+      return false;
+    }
+  }
+  orbit.newton_iterations = it;
+  orbit.residual = p.r;
+  return true;
+}
+
+// The orbit at the converged start p.x, from the flow there with the samples asked for. Without
+// samples it is the last flow of Newton's method itself (same start, same options, the same
+// numbers bit for bit): integrating the period again cost a fifth to a third of each point of a
+// stability chart.
+template <class Run>
+void orbitAt(const PeriodicSystem& sys, Run& run, const OrbitOptions& o, PeriodMapPoint& p, PeriodicOrbit& orbit) {
+  FlowOptions fin = o.flow;
+  fin.monodromy = true;
+  FlowResult ff = fin.samples == 0 ? std::move(p.f) : run(p.x, fin);
+  if (ff.ok && (!ff.x_end.allFinite() || !ff.monodromy.allFinite())) {
+    ff.ok = false;
+    ff.failure = "non-finite orbit";
+  }
+  if (!ff.ok) {
+    orbit.failure = ff.failure;
+    return;
+  }
+  orbit.found = true;
+  orbit.x0 = p.x.head(sys.n);
+  orbit.monodromy = ff.monodromy;
+  orbit.quadratures = ff.x_end.tail(sys.quadratures);
+  orbit.s_samples = std::move(ff.s_samples);
+  orbit.x_samples = std::move(ff.x_samples);
 }
 
 }  // namespace
@@ -268,69 +414,16 @@ PeriodicOrbit findPeriodicOrbit(const PeriodicSystem& sys, const Eigen::VectorXd
     orbit.evaluations += fr.evaluations;
     return fr;
   };
-  const int n = sys.n, nx = sys.n + sys.quadratures;
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(nx);
-  x.head(n) = guess.head(n);
-  orbit.failure = warmUp(sys, run, o, x);
+  PeriodMapPoint p;
+  orbit.failure = startingPoint(sys, run, o, guess, p);
   if (!orbit.failure.empty()) return orbit;
-  FlowOptions var = o.flow;
-  var.monodromy = true;
-  var.samples = 0;
-  FlowResult f = run(x, var);
-  if (!f.ok) {
-    orbit.failure = f.failure;
-    return orbit;
-  }
-  Eigen::VectorXd res = f.x_end.head(n) - x.head(n);
-  double r = scaledResidual(sys, res);
-  if (!std::isfinite(r)) {
-    orbit.failure = "the period map is not finite at the first guess";
-    return orbit;
-  }
-  int it = 0;
-  for (; it < o.max_newton && r > o.tolerance; ++it) {
-    const Eigen::MatrixXd J = f.monodromy - Eigen::MatrixXd::Identity(n, n);
-    const Eigen::VectorXd dx = J.fullPivLu().solve(-res);
-    if (!dx.allFinite()) {
-      orbit.failure = "Newton step not finite (monodromy has a multiplier 1)";
-      return orbit;
-    }
-    const bool accepted = dampedNewtonStep(sys, run, var, dx, o.tolerance, x, f, res, r);
-    if (!accepted) {
-      // No step reduces the residual any more: the map's own integration error is reached.
-      if (r <= o.accept_stagnation) break;
-      orbit.failure = "Newton's method on the period map did not converge (residual " + std::to_string(r) + ")";
-      orbit.residual = r;
-      return orbit;
-    }
-  }
-  orbit.newton_iterations = it;
-  orbit.residual = r;
-  if (r > o.tolerance && r > o.accept_stagnation) {
+  if (!newtonOnPeriodMap(sys, run, o, p, orbit)) return orbit;
+  if (p.r > o.tolerance && p.r > o.accept_stagnation) {
     orbit.failure = "no periodic orbit within " + std::to_string(o.max_newton) + " Newton iterations (residual " +
-                    std::to_string(r) + ")";
+                    std::to_string(p.r) + ")";
     return orbit;
   }
-  // The flow at the converged start with the samples asked for. Without samples it is the last
-  // flow of Newton's method itself (same start, same options, the same numbers bit for bit):
-  // integrating the period again cost a fifth to a third of each point of a stability chart.
-  FlowOptions fin = o.flow;
-  fin.monodromy = true;
-  FlowResult ff = fin.samples == 0 ? std::move(f) : run(x, fin);
-  if (ff.ok && (!ff.x_end.allFinite() || !ff.monodromy.allFinite())) {
-    ff.ok = false;
-    ff.failure = "non-finite orbit";
-  }
-  if (!ff.ok) {
-    orbit.failure = ff.failure;
-    return orbit;
-  }
-  orbit.found = true;
-  orbit.x0 = x.head(n);
-  orbit.monodromy = ff.monodromy;
-  orbit.quadratures = ff.x_end.tail(sys.quadratures);
-  orbit.s_samples = std::move(ff.s_samples);
-  orbit.x_samples = std::move(ff.x_samples);
+  orbitAt(sys, run, o, p, orbit);
   return orbit;
 }
 

@@ -19,6 +19,95 @@ std::string fmt(const char* format, double a, double b = 0, double c = 0) {
   return buf;
 }
 
+// The coupling mode's frequency band and damping: the Floquet multipliers' ω_n where they
+// resolve the torsional mode, else the frozen-angle band with its smallest ζ.
+struct CouplingModeBand {
+  double p_lo, p_hi, zeta;
+  bool floquet;
+};
+
+CouplingModeBand couplingModeBand(const SteadyMotion& steady, const Band& frozen_natural, const Band& frozen_damping) {
+  const FloquetVerdict& v = steady.verdict;
+  const bool floquet = v.has_torsional && v.torsional_resolved && std::isfinite(v.torsional_frequency);
+  double p_lo = frozen_natural.min, p_hi = frozen_natural.max, zeta = frozen_damping.min;
+  if (floquet) {
+    zeta = v.torsional_damping_ratio;
+    p_lo = p_hi = v.torsionalNaturalFrequency();
+  }
+  return {p_lo, p_hi, zeta, floquet};
+}
+
+// The orders that drive the coupling get a verdict; the layout's other orders up to 1.2 times the
+// mode's frequency are shown with their margin and why they have none (their harmonic is small).
+std::vector<int> shownOrders(const ExcitationOrders& orders, double omega, double p_hi) {
+  std::vector<int> shown = orders.forced;
+  for (int k : orders.layout)
+    if (k * omega <= 1.2 * p_hi && std::find(shown.begin(), shown.end(), k) == shown.end()) shown.push_back(k);
+  std::sort(shown.begin(), shown.end());
+  return shown;
+}
+
+// The verdict on order k's margin: n/a for an order too weak to drive the mode, else pass or FAIL
+// against the required margin.
+void judgeCouplingMargin(SeparationMargin& m, bool drives, double required, double exciting_largest) {
+  if (!drives) {
+    m.verdict = "n/a";
+    m.reason = fmt("order %.0f's harmonic is %.2g %% of the largest (< 1 %%): it does not drive the coupling mode",
+                   m.order, 100 * m.exciting_torque / exciting_largest);
+  } else if (m.margin >= required) {
+    m.verdict = "pass";
+    m.reason = fmt("k*omega = %.4g rad/s is %.3g %% away from the mode (>= 10 %%)", m.excitation, 100 * m.margin);
+  } else {
+    m.verdict = "FAIL";
+    m.reason = fmt("k*omega = %.4g rad/s is only %.3g %% away from the mode (< 10 %%); accept it only where the "
+                   "run's coupling torque over the steady window (its peak, swing and fatigue) is within the "
+                   "coupling's ratings (a forced-response analysis, API 617), amplification factor 1/(2*zeta) = %.3g",
+                   m.excitation, 100 * m.margin, m.amplification);
+  }
+}
+
+// Order k's row against the coupling mode at the operating speed omega.
+SeparationMargin couplingMargin(int k, double omega, const CouplingModeBand& band, const Band& frozen_undamped,
+                                const ExcitationOrders& orders) {
+  SeparationMargin m;
+  m.order = k;
+  m.excitation = k * omega;
+  m.exciting_torque = (k >= 1 && k <= int(orders.table.size())) ? orders.table[size_t(k - 1)].exciting_torque : NAN;
+  m.p_low = band.p_lo;
+  m.p_high = band.p_hi;
+  m.undamped_low = frozen_undamped.min;
+  m.undamped_high = frozen_undamped.max;
+  m.frequency_source = band.floquet ? "Floquet multipliers" : "frozen-angle band";
+  m.margin = distanceToBand(m.excitation, band.p_lo, band.p_hi) / m.excitation;
+  m.damping_ratio = band.zeta;
+  m.amplification = band.zeta > 0 ? 0.5 / band.zeta : INFINITY;
+  return m;
+}
+
+bool drivesTheCoupling(const ExcitationOrders& orders, int k) {
+  return std::find(orders.forced.begin(), orders.forced.end(), k) != orders.forced.end();
+}
+
+// The forced crossings of the Campbell diagram below the operating speed (passed at start-up).
+std::vector<StartCrossing> startCrossings(const CampbellDiagram& campbell, const ExcitationOrders& orders,
+                                          double omega) {
+  std::vector<StartCrossing> crossings;
+  if (campbell.applicable)
+    for (const CampbellCrossing& c : campbell.crossings)
+      if (!c.parametric && c.omega < omega && drivesTheCoupling(orders, c.order))
+        crossings.push_back({c.order, c.omega});
+  return crossings;
+}
+
+// Why the margins do not apply (no torsional mode, no steady motion), empty when they do.
+std::string notApplicable(bool elastic, const SteadyMotion& steady) {
+  if (!elastic)
+    return "rigid coupling (coupling.type: rigid): the drive has no torsional mode to keep away from the orders";
+  if (!steady.found)
+    return "no steady motion of the drive (" + steady.failure + "): no operating speed to take the excitation orders at";
+  return "";
+}
+
 }  // namespace
 
 SeparationMargins separationMargins(bool elastic, const SteadyMotion& steady, const Band& frozen_natural,
@@ -26,71 +115,102 @@ SeparationMargins separationMargins(bool elastic, const SteadyMotion& steady, co
                                     const ExcitationOrders& orders,
                                     const CampbellDiagram& campbell) {
   SeparationMargins s;
-  if (!elastic) {
-    s.not_applicable = "rigid coupling (coupling.type: rigid): the drive has no torsional mode to keep away from the orders";
-    return s;
-  }
-  if (!steady.found) {
-    s.not_applicable = "no steady motion of the drive (" + steady.failure +
-                       "): no operating speed to take the excitation orders at";
-    return s;
-  }
-  const FloquetVerdict& v = steady.verdict;
-  const bool floquet = v.has_torsional && v.torsional_resolved && std::isfinite(v.torsional_frequency);
-  double p_lo = frozen_natural.min, p_hi = frozen_natural.max, zeta = frozen_damping.min;
-  if (floquet) {
-    zeta = v.torsional_damping_ratio;
-    p_lo = p_hi = v.torsional_frequency / std::sqrt(std::max(1e-12, 1 - zeta * zeta));
-  }
-  if (!(std::isfinite(p_lo) && std::isfinite(p_hi))) {
+  s.not_applicable = notApplicable(elastic, steady);
+  if (!s.not_applicable.empty()) return s;
+  const CouplingModeBand band = couplingModeBand(steady, frozen_natural, frozen_damping);
+  if (!(std::isfinite(band.p_lo) && std::isfinite(band.p_hi))) {
     s.not_applicable = "the coupling mode has no natural frequency along the steady motion (frozen-angle modes failed)";
     return s;
   }
   s.applicable = true;
   s.omega = steady.omega_mean;
-  // The orders that drive the coupling get a verdict; the layout's other orders up to 1.2 times the
-  // mode's frequency are shown with their margin and why they have none (their harmonic is small).
-  std::vector<int> shown = orders.forced;
-  for (int k : orders.layout)
-    if (k * s.omega <= 1.2 * p_hi && std::find(shown.begin(), shown.end(), k) == shown.end()) shown.push_back(k);
-  std::sort(shown.begin(), shown.end());
-  for (int k : shown) {
-    const bool drives = std::find(orders.forced.begin(), orders.forced.end(), k) != orders.forced.end();
-    SeparationMargin m;
-    m.order = k;
-    m.excitation = k * s.omega;
-    m.exciting_torque = (k >= 1 && k <= int(orders.table.size())) ? orders.table[size_t(k - 1)].exciting_torque : NAN;
-    m.p_low = p_lo;
-    m.p_high = p_hi;
-    m.undamped_low = frozen_undamped.min;
-    m.undamped_high = frozen_undamped.max;
-    m.frequency_source = floquet ? "Floquet multipliers" : "frozen-angle band";
-    m.margin = distanceToBand(m.excitation, p_lo, p_hi) / m.excitation;
-    m.damping_ratio = zeta;
-    m.amplification = zeta > 0 ? 0.5 / zeta : INFINITY;
-    if (!drives) {
-      m.verdict = "n/a";
-      m.reason = fmt("order %.0f's harmonic is %.2g %% of the largest (< 1 %%): it does not drive the coupling mode",
-                     k, 100 * m.exciting_torque / orders.exciting_largest);
-    } else if (m.margin >= s.required) {
-      m.verdict = "pass";
-      m.reason = fmt("k*omega = %.4g rad/s is %.3g %% away from the mode (>= 10 %%)", m.excitation, 100 * m.margin);
-    } else {
-      m.verdict = "FAIL";
-      m.reason = fmt("k*omega = %.4g rad/s is only %.3g %% away from the mode (< 10 %%); accept it only where the "
-                     "run's coupling torque over the steady window (its peak, swing and fatigue) is within the "
-                     "coupling's ratings (a forced-response analysis, API 617), amplification factor 1/(2*zeta) = %.3g",
-                     m.excitation, 100 * m.margin, m.amplification);
-    }
+  for (int k : shownOrders(orders, s.omega, band.p_hi)) {
+    SeparationMargin m = couplingMargin(k, s.omega, band, frozen_undamped, orders);
+    judgeCouplingMargin(m, drivesTheCoupling(orders, k), s.required, orders.exciting_largest);
     s.rows.push_back(m);
   }
-  if (campbell.applicable)
-    for (const CampbellCrossing& c : campbell.crossings)
-      if (!c.parametric && c.omega < s.omega &&
-          std::find(orders.forced.begin(), orders.forced.end(), c.order) != orders.forced.end())
-        s.start_crossings.push_back({c.order, c.omega});
+  s.start_crossings = startCrossings(campbell, orders, s.omega);
   return s;
 }
+
+namespace {
+
+// The order that drives a throw (share at least kForcedOrderShare) nearest the band, 0 when none.
+int governingOrder(const ChainModeBand& band, const std::vector<double>& throw_shares, double w) {
+  int governing = 0;
+  double governing_margin = INFINITY;
+  for (size_t i = 0; i < throw_shares.size(); ++i) {
+    const double k = double(i + 1), sm = distanceToBand(k * w, band.p_min, band.p_max) / (k * w);
+    if (throw_shares[i] >= kForcedOrderShare && sm < governing_margin) {
+      governing_margin = sm;
+      governing = int(i + 1);
+    }
+  }
+  return governing;
+}
+
+// The orders too weak to drive the mode that lie within 10 % of its band: counted,
+// not listed (a wide band, where a throw's inertia nearly vanishes at its dead centres, holds dozens).
+int weakOrdersNear(const ChainModeBand& band, const std::vector<double>& throw_shares, double w, double required) {
+  int weak_near = 0;
+  for (size_t i = 0; i < throw_shares.size(); ++i) {
+    const double k = double(i + 1);
+    if (throw_shares[i] < kForcedOrderShare && distanceToBand(k * w, band.p_min, band.p_max) / (k * w) < required)
+      ++weak_near;
+  }
+  return weak_near;
+}
+
+// Order k's row against a crankshaft mode's band (verdict and reason set by judgeChainMargin).
+SeparationMargin chainMargin(const std::string& name, int k, double w, const ChainModeBand& band) {
+  SeparationMargin r;
+  r.mode = name;
+  r.order = k;
+  r.excitation = k * w;
+  r.p_low = r.undamped_low = band.p_min;
+  r.p_high = r.undamped_high = band.p_max;
+  r.frequency_source = "crankshaft chain's frozen-angle band, undamped";
+  r.margin = distanceToBand(r.excitation, band.p_min, band.p_max) / r.excitation;
+  return r;
+}
+
+void judgeChainMargin(SeparationMargin& r, double required, int weak_near) {
+  const std::string weak =
+      weak_near ? fmt("; %.0f weaker orders (below 1 %% of a throw's largest harmonic) lie within 10 %% of the "
+                      "band, too weak to drive it", weak_near)
+                : std::string();
+  if (r.margin >= required) {
+    r.verdict = "pass";
+    r.reason = fmt("k*omega = %.4g rad/s is %.3g %% away from the crankshaft mode's band (>= 10 %%); the nearest "
+                   "order that drives a throw", r.excitation, 100 * r.margin) + weak;
+  } else {
+    r.verdict = "FAIL";
+    r.reason = fmt("k*omega = %.4g rad/s is only %.3g %% away from the crankshaft mode's band (< 10 %%): the "
+                   "throws' torques drive the shaft's twist near resonance; move the mode (crankshaft."
+                   "torsional_stiffness, the throws' spacing) or damp it (crankshaft.torsional_damping) and "
+                   "read the run's shaft_torque_k columns",
+                   r.excitation, 100 * r.margin);
+  }
+}
+
+// A crankshaft mode's rows: the governing order (the nearest that drives a throw) and every
+// driving order within the required margin.
+void addChainModeRows(SeparationMargins& s, const std::string& name, const ChainModeBand& band,
+                      const std::vector<double>& throw_shares) {
+  const double w = s.omega;
+  const int governing = governingOrder(band, throw_shares, w);
+  const int weak_near = weakOrdersNear(band, throw_shares, w, s.required);
+  for (size_t i = 0; i < throw_shares.size(); ++i) {
+    const int k = int(i + 1);
+    SeparationMargin r = chainMargin(name, k, w, band);
+    const bool drives = throw_shares[i] >= kForcedOrderShare;
+    if (!drives || !(k == governing || r.margin < s.required)) continue;
+    judgeChainMargin(r, s.required, weak_near);
+    s.rows.push_back(r);
+  }
+}
+
+}  // namespace
 
 void addChainSeparation(SeparationMargins& s, const CrankshaftChainModes& chain, bool elastic,
                         const SteadyMotion& steady, const std::vector<double>& throw_shares) {
@@ -101,57 +221,10 @@ void addChainSeparation(SeparationMargins& s, const CrankshaftChainModes& chain,
     s.not_applicable.clear();
     s.omega = steady.omega_mean;
   }
-  const double w = s.omega;
   for (size_t m = elastic ? 1 : 0; m < chain.modes.size(); ++m) {
     const ChainModeBand& band = chain.modes[m];
-    const std::string name = "crankshaft mode " + std::to_string(m + 1) + " (twists most: " + band.shape + ")";
-    int governing = 0;
-    double governing_margin = INFINITY;
-    for (size_t i = 0; i < throw_shares.size(); ++i) {
-      const double k = double(i + 1), sm = distanceToBand(k * w, band.p_min, band.p_max) / (k * w);
-      if (throw_shares[i] >= kForcedOrderShare && sm < governing_margin) {
-        governing_margin = sm;
-        governing = int(i + 1);
-      }
-    }
-    // The orders too weak to drive the mode that lie within 10 % of its band: counted, not listed
-    // (a wide band, where a throw's inertia nearly vanishes at its dead centres, holds dozens).
-    int weak_near = 0;
-    for (size_t i = 0; i < throw_shares.size(); ++i) {
-      const double k = double(i + 1);
-      if (throw_shares[i] < kForcedOrderShare && distanceToBand(k * w, band.p_min, band.p_max) / (k * w) < s.required)
-        ++weak_near;
-    }
-    for (size_t i = 0; i < throw_shares.size(); ++i) {
-      const int k = int(i + 1);
-      SeparationMargin r;
-      r.mode = name;
-      r.order = k;
-      r.excitation = k * w;
-      r.p_low = r.undamped_low = band.p_min;
-      r.p_high = r.undamped_high = band.p_max;
-      r.frequency_source = "crankshaft chain's frozen-angle band, undamped";
-      r.margin = distanceToBand(r.excitation, band.p_min, band.p_max) / r.excitation;
-      const bool drives = throw_shares[i] >= kForcedOrderShare;
-      if (!drives || !(k == governing || r.margin < s.required)) continue;
-      const std::string weak =
-          weak_near ? fmt("; %.0f weaker orders (below 1 %% of a throw's largest harmonic) lie within 10 %% of the "
-                          "band, too weak to drive it", weak_near)
-                    : std::string();
-      if (r.margin >= s.required) {
-        r.verdict = "pass";
-        r.reason = fmt("k*omega = %.4g rad/s is %.3g %% away from the crankshaft mode's band (>= 10 %%); the nearest "
-                       "order that drives a throw", r.excitation, 100 * r.margin) + weak;
-      } else {
-        r.verdict = "FAIL";
-        r.reason = fmt("k*omega = %.4g rad/s is only %.3g %% away from the crankshaft mode's band (< 10 %%): the "
-                       "throws' torques drive the shaft's twist near resonance; move the mode (crankshaft."
-                       "torsional_stiffness, the throws' spacing) or damp it (crankshaft.torsional_damping) and "
-                       "read the run's shaft_torque_k columns",
-                       r.excitation, 100 * r.margin);
-      }
-      s.rows.push_back(r);
-    }
+    addChainModeRows(s, "crankshaft mode " + std::to_string(m + 1) + " (twists most: " + band.shape + ")", band,
+                     throw_shares);
   }
 }
 

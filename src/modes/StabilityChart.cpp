@@ -26,6 +26,56 @@ std::vector<double> linearGrid(double a, double b, int n) {
 
 namespace {
 
+// How a chart point's steady motion is searched: warm-started from `warm` (found at stiffness
+// c_warm), the Floquet branch referred to the frozen frequency at the expected running speed.
+SteadyMotionOptions chartSearch(DriveModel& drive, const Scene& s, double c, const Eigen::VectorXd& warm,
+                                double c_warm) {
+  SteadyMotionOptions o;
+  o.samples = 0;
+  o.rtol = 1e-6;  // the verdict compares |μ| with 1: six digits are plenty
+  // Warm-started points converge in 1-3 iterations; one that needs more is near a forced
+  // resonance of an undamped coupling (Φ - I nearly singular) and is reported without a
+  // steady motion rather than chased.
+  o.max_newton = 10;
+  if (warm.size() == 3) {  // twist and its rate scale as 1/c
+    o.start = warm;
+    o.start(1) *= c_warm / c;
+    o.start(2) *= c_warm / c;
+    o.warmup_periods = 0;
+  }
+  DrivePoint p0;
+  p0.phi = s.initial.crank_angle;
+  const SteadyGuess g = steadyGuess(drive.reducedModel());
+  p0.omega = g.ok ? g.omega : s.motor.omega_sync / s.reducer.ratio;
+  p0.twist = g.twist;
+  o.reference_frequency = frozenModes(drive, s, p0).oscillation_frequency();
+  return o;
+}
+
+// The steady motion searched with `o`; when a warm start found none, searched again from the guess.
+SteadyMotion chartSteadyMotion(DriveModel& drive, const Scene& s, SteadyMotionOptions o, bool warm_started) {
+  SteadyMotion m = steadyMotion(drive, s, o);
+  if (!m.found && warm_started) {  // the warm start may mislead: try from the guess
+    o.start.resize(0);
+    o.warmup_periods = 3;
+    m = steadyMotion(drive, s, o);
+  }
+  return m;
+}
+
+// The point's verdict from the steady motion found.
+void setVerdict(StabilityPoint& p, const SteadyMotion& m) {
+  p.found = true;
+  p.omega_mean = m.omega_mean;
+  p.max_modulus = m.verdict.max_modulus;
+  p.stable = m.verdict.stable;
+  p.verdict = m.verdict.text;
+  if (m.verdict.has_torsional) {
+    p.torsional_damping_ratio = m.verdict.torsional_damping_ratio;
+    p.torsional_frequency = m.verdict.torsional_frequency;
+  }
+}
+
 // One chart point: the Floquet verdict of `s`, warm-started from `warm` (updated).
 StabilityPoint evaluate(const Scene& s, double c, double y, Eigen::VectorXd& warm, double c_warm) {
   StabilityPoint p;
@@ -33,46 +83,14 @@ StabilityPoint evaluate(const Scene& s, double c, double y, Eigen::VectorXd& war
   p.y = y;
   try {
     auto drive = makeReducedDrive(s);
-    SteadyMotionOptions o;
-    o.samples = 0;
-    o.rtol = 1e-6;  // the verdict compares |μ| with 1: six digits are plenty
-    // Warm-started points converge in 1-3 iterations; one that needs more is near a forced
-    // resonance of an undamped coupling (Φ - I nearly singular) and is reported without a
-    // steady motion rather than chased.
-    o.max_newton = 10;
-    if (warm.size() == 3) {  // twist and its rate scale as 1/c
-      o.start = warm;
-      o.start(1) *= c_warm / c;
-      o.start(2) *= c_warm / c;
-      o.warmup_periods = 0;
-    }
-    DrivePoint p0;
-    p0.phi = s.initial.crank_angle;
-    const SteadyGuess g = steadyGuess(drive->reducedModel());
-    p0.omega = g.ok ? g.omega : s.motor.omega_sync / s.reducer.ratio;
-    p0.twist = g.twist;
-    o.reference_frequency = frozenModes(*drive, s, p0).oscillation_frequency();
-    SteadyMotion m = steadyMotion(*drive, s, o);
-    if (!m.found && warm.size()) {  // the warm start may mislead: try from the guess
-      o.start.resize(0);
-      o.warmup_periods = 3;
-      m = steadyMotion(*drive, s, o);
-    }
+    const SteadyMotion m = chartSteadyMotion(*drive, s, chartSearch(*drive, s, c, warm, c_warm), warm.size() > 0);
     if (!m.found) {
       p.verdict = "no steady running";
       warm.resize(0);
       return p;
     }
     warm = m.x0;
-    p.found = true;
-    p.omega_mean = m.omega_mean;
-    p.max_modulus = m.verdict.max_modulus;
-    p.stable = m.verdict.stable;
-    p.verdict = m.verdict.text;
-    if (m.verdict.has_torsional) {
-      p.torsional_damping_ratio = m.verdict.torsional_damping_ratio;
-      p.torsional_frequency = m.verdict.torsional_frequency;
-    }
+    setVerdict(p, m);
   } catch (const std::exception& e) {
     p.verdict = "no steady running";
     warm.resize(0);
@@ -114,6 +132,44 @@ Scene withCoupling(const Scene& scene, double c, double k) {
   return s;
 }
 
+// The zone takes in point q: one point more, its extent and worst |μ| widened.
+void widenZone(StabilityZone& z, const StabilityPoint& q) {
+  ++z.points;
+  z.c_min = std::min(z.c_min, q.c);
+  z.c_max = std::max(z.c_max, q.c);
+  z.y_min = std::min(z.y_min, q.y);
+  z.y_max = std::max(z.y_max, q.y);
+  z.worst_modulus = std::max(z.worst_modulus, q.max_modulus);
+}
+
+// The unstable zone around grid point (iy, ic): every unstable point reached through unstable
+// neighbours (rows and columns), marked in `seen`, with its extent and worst |μ|.
+StabilityZone unstableZone(const StabilityChart& ch, std::vector<std::vector<int>>& seen, int iy, int ic) {
+  const int ny = int(ch.y.size()), nc = int(ch.c.size());
+  const StabilityPoint& p = ch.grid[iy][ic];
+  StabilityZone z;
+  z.c_min = z.c_max = p.c;
+  z.y_min = z.y_max = p.y;
+  std::vector<std::pair<int, int>> stack{{iy, ic}};
+  seen[iy][ic] = 1;
+  while (!stack.empty()) {
+    auto [a, b] = stack.back();
+    stack.pop_back();
+    widenZone(z, ch.grid[a][b]);
+    const int da[] = {1, -1, 0, 0}, db[] = {0, 0, 1, -1};
+    for (int d = 0; d < 4; ++d) {
+      const int na = a + da[d], nb = b + db[d];
+      if (na < 0 || nb < 0 || na >= ny || nb >= nc || seen[na][nb]) continue;
+      const StabilityPoint& r = ch.grid[na][nb];
+      if (r.found && !r.stable) {
+        seen[na][nb] = 1;
+        stack.push_back({na, nb});
+      }
+    }
+  }
+  return z;
+}
+
 void findZones(StabilityChart& ch) {
   const int ny = int(ch.y.size()), nc = int(ch.c.size());
   std::vector<std::vector<int>> seen(ny, std::vector<int>(nc, 0));
@@ -123,34 +179,33 @@ void findZones(StabilityChart& ch) {
       if (!p.found) ++ch.failed_points;
       if (p.found && !p.stable) ++ch.unstable_points;
       if (seen[iy][ic] || !p.found || p.stable) continue;
-      StabilityZone z;
-      z.c_min = z.c_max = p.c;
-      z.y_min = z.y_max = p.y;
-      std::vector<std::pair<int, int>> stack{{iy, ic}};
-      seen[iy][ic] = 1;
-      while (!stack.empty()) {
-        auto [a, b] = stack.back();
-        stack.pop_back();
-        const StabilityPoint& q = ch.grid[a][b];
-        ++z.points;
-        z.c_min = std::min(z.c_min, q.c);
-        z.c_max = std::max(z.c_max, q.c);
-        z.y_min = std::min(z.y_min, q.y);
-        z.y_max = std::max(z.y_max, q.y);
-        z.worst_modulus = std::max(z.worst_modulus, q.max_modulus);
-        const int da[] = {1, -1, 0, 0}, db[] = {0, 0, 1, -1};
-        for (int d = 0; d < 4; ++d) {
-          const int na = a + da[d], nb = b + db[d];
-          if (na < 0 || nb < 0 || na >= ny || nb >= nc || seen[na][nb]) continue;
-          const StabilityPoint& r = ch.grid[na][nb];
-          if (r.found && !r.stable) {
-            seen[na][nb] = 1;
-            stack.push_back({na, nb});
-          }
-        }
-      }
-      ch.zones.push_back(z);
+      ch.zones.push_back(unstableZone(ch, seen, iy, ic));
     }
+}
+
+// The chart's row at crank speed w: the stiffnesses c in turn, each warm-started from the last.
+// A point whose scene cannot be set up has no steady running (and the next starts cold).
+std::vector<StabilityPoint> speedRow(const Scene& scene, const std::vector<double>& c, double w, double omega_op,
+                                     double damping) {
+  std::vector<StabilityPoint> row;
+  Eigen::VectorXd warm;
+  double c_warm = 0;
+  for (double ci : c) {
+    StabilityPoint p;
+    try {
+      const Scene s = sceneAtCrankSpeed(withCoupling(scene, ci, damping), w, omega_op);
+      if (warm.size()) warm(0) = w;
+      p = evaluate(s, ci, w, warm, c_warm);
+    } catch (const std::exception&) {
+      p.c = ci;
+      p.y = w;
+      p.verdict = "no steady running";
+      warm.resize(0);
+    }
+    c_warm = ci;
+    row.push_back(p);
+  }
+  return row;
 }
 
 }  // namespace
@@ -164,28 +219,8 @@ StabilityChart chartOverSpeed(const Scene& scene, double omega_op, const std::ve
   ch.y = omega;
   ch.operating_c = scene.coupling.type == CouplingType::Elastic ? scene.coupling.stiffness : NAN;
   ch.operating_y = omega_op;
-  ch.grid = computeRows(int(omega.size()), [&](int iy) {
-    const double w = omega[iy];
-    std::vector<StabilityPoint> row;
-    Eigen::VectorXd warm;
-    double c_warm = 0;
-    for (double ci : c) {
-      StabilityPoint p;
-      try {
-        const Scene s = sceneAtCrankSpeed(withCoupling(scene, ci, damping), w, omega_op);
-        if (warm.size()) warm(0) = w;
-        p = evaluate(s, ci, w, warm, c_warm);
-      } catch (const std::exception&) {
-        p.c = ci;
-        p.y = w;
-        p.verdict = "no steady running";
-        warm.resize(0);
-      }
-      c_warm = ci;
-      row.push_back(p);
-    }
-    return row;
-  }, threads);
+  ch.grid = computeRows(int(omega.size()), [&](int iy) { return speedRow(scene, c, omega[iy], omega_op, damping); },
+                       threads);
   findZones(ch);
   return ch;
 }

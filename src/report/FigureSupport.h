@@ -39,6 +39,11 @@ inline std::string literal(const std::string& s) {
   return out;
 }
 
+// A figure's title with the scene's label in front ("balanced-4cart: what"), `what` alone without one.
+inline std::string sceneTitle(const std::string& scene_label, const std::string& what) {
+  return scene_label.empty() ? what : scene_label + ": " + what;
+}
+
 inline std::string capitalized(std::string s) {
   if (!s.empty() && s[0] >= 'a' && s[0] <= 'z') s[0] = static_cast<char>(s[0] - 'a' + 'A');
   return s;

@@ -46,6 +46,32 @@ std::vector<Output> outputsOf(const PlotJob& job) {
   return outputs;
 }
 
+// One gnuplot run's script and the files it draws (temporary name, final name).
+struct BatchScript {
+  std::string script;
+  std::vector<std::pair<std::string, std::string>> files;
+};
+
+// Every job's commands once for each of its outputs, each to a temporary name (its folder made).
+BatchScript batchScript(const std::vector<const PlotJob*>& jobs, const std::string& tag) {
+  namespace fs = std::filesystem;
+  BatchScript b;
+  for (const PlotJob* job : jobs) {
+    bool first_output = true;
+    for (const Output& o : outputsOf(*job)) {
+      const fs::path target(o.file);
+      if (target.has_parent_path()) fs::create_directories(target.parent_path());
+      const std::string tmp_out = o.file + ".tmp." + tag;
+      b.files.push_back({tmp_out, o.file});
+      if (!b.script.empty()) b.script += first_output ? "reset session\n" : "reset\n";
+      first_output = false;
+      b.script += "set terminal " + o.terminal + "\nset output " + quoted(tmp_out) + "\n" + job->script +
+                  "\nunset output\n";
+    }
+  }
+  return b;
+}
+
 // Runs ONE gnuplot on a script that draws every job's commands once for each of its outputs (to a
 // temporary name each). `reset` between the outputs of a figure and `reset session` between
 // figures give each the settings of a fresh gnuplot (terminal and output are not reset). Returns
@@ -53,21 +79,9 @@ std::vector<Output> outputsOf(const PlotJob& job) {
 // Otherwise the temporary files are removed and nothing is renamed.
 bool runGnuplot(const std::vector<const PlotJob*>& jobs, const std::string& tag) {
   namespace fs = std::filesystem;
-  std::string script;
-  std::vector<std::pair<std::string, std::string>> files;  // temporary, final
-  for (const PlotJob* job : jobs) {
-    bool first_output = true;
-    for (const Output& o : outputsOf(*job)) {
-      const fs::path target(o.file);
-      if (target.has_parent_path()) fs::create_directories(target.parent_path());
-      const std::string tmp_out = o.file + ".tmp." + tag;
-      files.push_back({tmp_out, o.file});
-      if (!script.empty()) script += first_output ? "reset session\n" : "reset\n";
-      first_output = false;
-      script += "set terminal " + o.terminal + "\nset output " + quoted(tmp_out) + "\n" + job->script +
-                "\nunset output\n";
-    }
-  }
+  const BatchScript batch = batchScript(jobs, tag);
+  const std::string& script = batch.script;
+  const std::vector<std::pair<std::string, std::string>>& files = batch.files;
   if (files.empty()) return true;
   const std::string script_path = files.front().second + ".gp.tmp." + tag;
   writeFileAtomic(script_path, script);
@@ -107,31 +121,30 @@ bool gnuplotAvailable() {
   return found;
 }
 
-PlotJob plotJob(const PlotSpec& spec, const std::string& base, bool png, bool svg) {
-  std::ostringstream os;
-  os.precision(12);
-  os << "set title " << quoted(spec.title) << "\nset xlabel " << quoted(spec.xlabel) << "\nset ylabel "
-     << quoted(spec.ylabel) << "\nset grid\nset key outside right top\n";
-  if (spec.logx) os << "set logscale x\nset format x '10^{%L}'\n";
-  if (spec.logy) os << "set logscale y\nset format y '10^{%L}'\n";
-  if (!spec.preamble.empty()) os << spec.preamble << '\n';
-  for (size_t i = 0; i < spec.series.size(); ++i) {
-    const PlotSeries& s = spec.series[i];
-    os << "$D" << i << " << EOD\n";
-    bool gap = false;  // a blank line in gnuplot data breaks a line; write at most one in a row
-    for (size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
-      const bool ok = std::isfinite(s.x[k]) && std::isfinite(s.y[k]) && (!spec.logx || s.x[k] > 0) &&
-                      (!spec.logy || s.y[k] > 0);
-      if (ok) {
-        os << s.x[k] << ' ' << s.y[k] << '\n';
-        gap = false;
-      } else if (s.break_at_nonfinite && !gap) {
-        os << '\n';
-        gap = true;
-      }
+namespace {
+
+// Series i as the datablock $Di: the points gnuplot can draw (finite, positive on a log axis); a
+// point that cannot be drawn breaks the line where the series asks for it.
+void writeDataBlock(std::ostringstream& os, const PlotSpec& spec, size_t i) {
+  const PlotSeries& s = spec.series[i];
+  os << "$D" << i << " << EOD\n";
+  bool gap = false;  // a blank line in gnuplot data breaks a line; write at most one in a row
+  for (size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
+    const bool ok = std::isfinite(s.x[k]) && std::isfinite(s.y[k]) && (!spec.logx || s.x[k] > 0) &&
+                    (!spec.logy || s.y[k] > 0);
+    if (ok) {
+      os << s.x[k] << ' ' << s.y[k] << '\n';
+      gap = false;
+    } else if (s.break_at_nonfinite && !gap) {
+      os << '\n';
+      gap = true;
     }
-    os << "EOD\n";
   }
+  os << "EOD\n";
+}
+
+// The plot command: every datablock with its style, width, colour, dash and title.
+void writePlotCommand(std::ostringstream& os, const PlotSpec& spec) {
   os << "plot ";
   for (size_t i = 0; i < spec.series.size(); ++i) {
     const PlotSeries& s = spec.series[i];
@@ -143,6 +156,20 @@ PlotJob plotJob(const PlotSpec& spec, const std::string& base, bool png, bool sv
   }
   if (spec.series.empty()) os << "NaN notitle";
   os << '\n';
+}
+
+}  // namespace
+
+PlotJob plotJob(const PlotSpec& spec, const std::string& base, bool png, bool svg) {
+  std::ostringstream os;
+  os.precision(12);
+  os << "set title " << quoted(spec.title) << "\nset xlabel " << quoted(spec.xlabel) << "\nset ylabel "
+     << quoted(spec.ylabel) << "\nset grid\nset key outside right top\n";
+  if (spec.logx) os << "set logscale x\nset format x '10^{%L}'\n";
+  if (spec.logy) os << "set logscale y\nset format y '10^{%L}'\n";
+  if (!spec.preamble.empty()) os << spec.preamble << '\n';
+  for (size_t i = 0; i < spec.series.size(); ++i) writeDataBlock(os, spec, i);
+  writePlotCommand(os, spec);
   return {os.str(), spec.width, spec.height, base, png, svg};
 }
 
@@ -179,12 +206,10 @@ void renderHeatMap(const std::string& title, const std::string& xlabel, const st
   renderPlots({heatMapJob(title, xlabel, ylabel, zlabel, x, y, z, base, png, svg, preamble)}, 1);
 }
 
-void renderPlots(const std::vector<PlotJob>& jobs, int processes) {
-  if (jobs.empty()) return;
-  if (!gnuplotAvailable()) throw std::runtime_error("gnuplot not found (Debian package gnuplot-nox)");
-  if (processes <= 0) processes = int(std::max(1u, std::thread::hardware_concurrency()));
-  processes = std::min<int>(processes, int(jobs.size()));
-  // Shares of about equal script length (what gnuplot reads and draws), in the jobs' order.
+namespace {
+
+// Shares of about equal script length (what gnuplot reads and draws), in the jobs' order.
+std::vector<std::vector<const PlotJob*>> shareJobs(const std::vector<PlotJob>& jobs, int processes) {
   size_t total = 0;
   for (const PlotJob& j : jobs) total += j.script.size() + 1;
   std::vector<std::vector<const PlotJob*>> shares(static_cast<size_t>(processes));
@@ -194,6 +219,17 @@ void renderPlots(const std::vector<PlotJob>& jobs, int processes) {
     shares[k].push_back(&j);
     done += j.script.size() + 1;
   }
+  return shares;
+}
+
+}  // namespace
+
+void renderPlots(const std::vector<PlotJob>& jobs, int processes) {
+  if (jobs.empty()) return;
+  if (!gnuplotAvailable()) throw std::runtime_error("gnuplot not found (Debian package gnuplot-nox)");
+  if (processes <= 0) processes = int(std::max(1u, std::thread::hardware_concurrency()));
+  processes = std::min<int>(processes, int(jobs.size()));
+  const std::vector<std::vector<const PlotJob*>> shares = shareJobs(jobs, processes);
   static std::atomic<long> serial{0};
   const std::string pid = std::to_string(::getpid());
   std::vector<char> ok(shares.size(), 0);

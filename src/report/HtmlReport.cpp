@@ -119,61 +119,83 @@ std::string htmlEscape(const std::string& text) {
   return out;
 }
 
+namespace {
+
+const char* const kBase64Alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+// The first `chars` base64 digits of the 24 bits v, padded with '=' to four.
+void appendBase64Quantum(std::string& out, unsigned v, int chars) {
+  for (int k = 0; k < 4; ++k) out += k < chars ? kBase64Alphabet[(v >> (18 - 6 * k)) & 63] : '=';
+}
+
+}  // namespace
+
 std::string base64Encode(const std::string& bytes) {
-  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);
   size_t i = 0;
   for (; i + 2 < bytes.size(); i += 3) {
     const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
                        (static_cast<unsigned char>(bytes[i + 1]) << 8) | static_cast<unsigned char>(bytes[i + 2]);
-    out += kAlphabet[(v >> 18) & 63];
-    out += kAlphabet[(v >> 12) & 63];
-    out += kAlphabet[(v >> 6) & 63];
-    out += kAlphabet[v & 63];
+    appendBase64Quantum(out, v, 4);
   }
   if (i + 1 == bytes.size()) {
-    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
-    out += kAlphabet[(v >> 18) & 63];
-    out += kAlphabet[(v >> 12) & 63];
-    out += "==";
+    appendBase64Quantum(out, static_cast<unsigned char>(bytes[i]) << 16, 2);
   } else if (i + 2 == bytes.size()) {
     const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8);
-    out += kAlphabet[(v >> 18) & 63];
-    out += kAlphabet[(v >> 12) & 63];
-    out += kAlphabet[(v >> 6) & 63];
-    out += '=';
+    appendBase64Quantum(out, v, 3);
   }
   return out;
 }
+
+std::string embeddedPngHtml(const FigureFile& f) {
+  if (f.png.empty()) return "";
+  return "<img alt=\"" + htmlEscape(f.name) + "\" src=\"data:image/png;base64," +
+         base64Encode(readFileContents(f.png, "figure")) + "\">";
+}
+
+namespace {
+
+// A string member of a summary object, empty when absent.
+std::string textOf(const json& o, const char* k) {
+  return o.is_object() && o.contains(k) && o[k].is_string() ? o[k].get<std::string>() : std::string();
+}
+
+// The resonance verdict's banner: green for no resonance, yellow for a warning, none for n/a.
+void resonanceBanner(std::ostringstream& h, const json& rv) {
+  const std::string verdict = textOf(rv, "verdict");
+  if (verdict == "no resonance")
+    h << "<div class=\"status ok\">Resonance verdict (modal analysis about the steady motion): "
+      << htmlEscape(textOf(rv, "reason")) << "</div>\n";
+  else if (verdict == "not applicable")
+    h << "<div class=\"status\">Resonance verdict: n/a (" << htmlEscape(textOf(rv, "reason")) << ")</div>\n";
+  else if (!verdict.empty() && verdict != "no hit")
+    h << "<div class=\"status warn\">Resonance verdict: " << htmlEscape(verdict) << " (see the warnings)</div>\n";
+  const std::string first = textOf(rv, "line");
+  if (!first.empty()) h << "<p class=\"small\">" << htmlEscape(first) << "</p>\n";
+}
+
+// The Floquet stability's banner: green when stable, red when not, none for n/a (with the reason).
+void stabilityBanner(std::ostringstream& h, const json& st) {
+  const std::string stability = textOf(st, "verdict");
+  if (stability == "not applicable" || stability == "not assessed")
+    h << "<div class=\"status\">Stability of the steady motion (Floquet): n/a (" << htmlEscape(textOf(st, "reason"))
+      << ")</div>\n";
+  else if (stability == "stable")
+    h << "<div class=\"status ok\">Stability of the steady motion (Floquet): stable</div>\n";
+  else if (!stability.empty())
+    h << "<div class=\"status bad\">Stability of the steady motion (Floquet): " << htmlEscape(stability) << "</div>\n";
+}
+
+}  // namespace
 
 std::string resonanceVerdictHtml(const nlohmann::json& s) {
   // The run's resonance and stability verdict as summary.json has it (studies/ResonanceCheck.h):
   // green where it found no resonance and a stable steady motion, yellow where it warns, no colour
   // where it does not apply (with the reason).
   std::ostringstream h;
-  const json rv = at(s, "resonance_verdict");
-  const json st = at(s, "stability");
-  auto str = [](const json& o, const char* k) {
-    return o.is_object() && o.contains(k) && o[k].is_string() ? o[k].get<std::string>() : std::string();
-  };
-  const std::string verdict = str(rv, "verdict"), stability = str(st, "verdict");
-  if (verdict == "no resonance")
-    h << "<div class=\"status ok\">Resonance verdict (modal analysis about the steady motion): "
-      << htmlEscape(str(rv, "reason")) << "</div>\n";
-  else if (verdict == "not applicable")
-    h << "<div class=\"status\">Resonance verdict: n/a (" << htmlEscape(str(rv, "reason")) << ")</div>\n";
-  else if (!verdict.empty() && verdict != "no hit")
-    h << "<div class=\"status warn\">Resonance verdict: " << htmlEscape(verdict) << " (see the warnings)</div>\n";
-  const std::string first = str(rv, "line");
-  if (!first.empty()) h << "<p class=\"small\">" << htmlEscape(first) << "</p>\n";
-  if (stability == "not applicable" || stability == "not assessed")
-    h << "<div class=\"status\">Stability of the steady motion (Floquet): n/a (" << htmlEscape(str(st, "reason"))
-      << ")</div>\n";
-  else if (stability == "stable")
-    h << "<div class=\"status ok\">Stability of the steady motion (Floquet): stable</div>\n";
-  else if (!stability.empty())
-    h << "<div class=\"status bad\">Stability of the steady motion (Floquet): " << htmlEscape(stability) << "</div>\n";
+  resonanceBanner(h, at(s, "resonance_verdict"));
+  stabilityBanner(h, at(s, "stability"));
   return h.str();
 }
 
@@ -193,53 +215,86 @@ std::string runStatusHtml(const nlohmann::json& s) {
   return h.str();
 }
 
+namespace {
+
+// One row of the summary metrics: where summary.json has it, its words, unit and format.
+struct Metric {
+  const char* path;
+  const char* label;
+  const char* unit;
+  const char* fmt;
+};
+
+// The rows in the order of the table.
+const Metric kSummaryMetrics[] = {
+    {"omega_crank.mean", "mean crank speed ω_mean", "rad/s", "%.6g"},
+    {"omega_crank.min", "minimum crank speed ω_min", "rad/s", "%.6g"},
+    {"omega_crank.max", "maximum crank speed ω_max", "rad/s", "%.6g"},
+    {"delta", "speed fluctuation δ = (ω_max − ω_min)/ω_mean (Loveikin and Pochka (2007) eq. (12))", "-", "%.5g"},
+    {"H", "H = |ε|_max/ω_mean² (Loveikin and Pochka (2007) eq. (13))", "-", "%.5g"},
+    {"k_p", "k_p (Loveikin and Pochka (2007) eq. (14))", "-", "%.5g"},
+    {"eps_crank_abs_max", "largest crank acceleration |ε|_max", "rad/s²", "%.5g"},
+    {"coupling_torque_swing", "coupling torque swing (Loveikin, Pochka, Romasevych (2018) Table 1)", "N·m", "%.5g"},
+    {"twist_swing", "twist swing", "rad", "%.4g"},
+    {"twist_rate_swing", "twist rate swing", "rad/s", "%.4g"},
+    {"twist_accel_swing", "twist acceleration swing", "rad/s²", "%.4g"},
+    {"steady_state.reached", "steady state reached", "", "%g"},
+    {"steady_state.t_begin", "steady window from", "s", "%.5g"},
+    {"steady_state.t_end", "steady window to", "s", "%.5g"},
+    {"steady_state.window_revolutions", "revolutions in the window", "", "%g"},
+    {"simulated_time", "simulated time", "s", "%.5g"},
+    {"energy_residual_rel", "energy audit residual (relative)", "-", "%.2e"},
+    {"constraint_error_max", "largest constraint error", "-", "%.2e"},
+    {"steps", "integrator steps", "", "%.0f"},
+    {"rejected_steps", "steps rejected by the error test", "", "%.0f"},
+    {"realizations", "right-hand-side evaluations", "", "%.0f"},
+    {"cpu_seconds", "CPU time", "s", "%.3g"},
+    {"real_time_factor", "simulated time / CPU time", "-", "%.3g"},
+};
+
+}  // namespace
+
 std::string summaryMetricsHtml(const nlohmann::json& s) {
   std::ostringstream h;
-  // Summary metrics
-  struct Metric {
-    const char* path;
-    const char* label;
-    const char* unit;
-    const char* fmt;
-  };
-  const Metric metrics[] = {
-      {"omega_crank.mean", "mean crank speed ω_mean", "rad/s", "%.6g"},
-      {"omega_crank.min", "minimum crank speed ω_min", "rad/s", "%.6g"},
-      {"omega_crank.max", "maximum crank speed ω_max", "rad/s", "%.6g"},
-      {"delta", "speed fluctuation δ = (ω_max − ω_min)/ω_mean (Loveikin and Pochka (2007) eq. (12))", "-", "%.5g"},
-      {"H", "H = |ε|_max/ω_mean² (Loveikin and Pochka (2007) eq. (13))", "-", "%.5g"},
-      {"k_p", "k_p (Loveikin and Pochka (2007) eq. (14))", "-", "%.5g"},
-      {"eps_crank_abs_max", "largest crank acceleration |ε|_max", "rad/s²", "%.5g"},
-      {"coupling_torque_swing", "coupling torque swing (Loveikin, Pochka, Romasevych (2018) Table 1)", "N·m", "%.5g"},
-      {"twist_swing", "twist swing", "rad", "%.4g"},
-      {"twist_rate_swing", "twist rate swing", "rad/s", "%.4g"},
-      {"twist_accel_swing", "twist acceleration swing", "rad/s²", "%.4g"},
-      {"steady_state.reached", "steady state reached", "", "%g"},
-      {"steady_state.t_begin", "steady window from", "s", "%.5g"},
-      {"steady_state.t_end", "steady window to", "s", "%.5g"},
-      {"steady_state.window_revolutions", "revolutions in the window", "", "%g"},
-      {"simulated_time", "simulated time", "s", "%.5g"},
-      {"energy_residual_rel", "energy audit residual (relative)", "-", "%.2e"},
-      {"constraint_error_max", "largest constraint error", "-", "%.2e"},
-      {"steps", "integrator steps", "", "%.0f"},
-      {"rejected_steps", "steps rejected by the error test", "", "%.0f"},
-      {"realizations", "right-hand-side evaluations", "", "%.0f"},
-      {"cpu_seconds", "CPU time", "s", "%.3g"},
-      {"real_time_factor", "simulated time / CPU time", "-", "%.3g"},
-  };
   h << "<h2>Summary metrics</h2>\n<p class=\"small\">Over the steady-state window (summary.json).</p>\n";
   if (at(s, "steady_state.reached").is_boolean() && !at(s, "steady_state.reached").get<bool>())
     h << "<div class=\"status warn\">Steady state NOT reached: the metrics and reaction ranges below are "
          "taken over the last part of the run and include transients. "
       << htmlEscape(number(at(s, "steady_state.note"))) << "</div>\n";
   h << "<table>\n<tr><th>quantity</th><th>value</th><th>unit</th></tr>\n";
-  for (const Metric& m : metrics)
+  for (const Metric& m : kSummaryMetrics)
     h << "<tr><td>" << htmlEscape(m.label) << "</td><td class=\"n\">" << htmlEscape(number(at(s, m.path), m.fmt))
       << "</td><td>" << m.unit << "</td></tr>\n";
   h << "</table>\n" << backlashHtml(at(s, "backlash"));
 
   return h.str();
 }
+
+namespace {
+
+// The joints of the table: reactions.csv's column order first, then any other summary.json has.
+std::vector<std::string> reactionOrder(const json& rx, const std::vector<std::string>& reaction_columns) {
+  std::vector<std::string> order;
+  for (const std::string& col : reaction_columns)
+    if (rx.contains(col)) order.push_back(col);
+  for (auto it = rx.begin(); it != rx.end(); ++it)
+    if (std::find(order.begin(), order.end(), it.key()) == order.end()) order.push_back(it.key());
+  return order;
+}
+
+// One joint quantity's row: name, meaning, unit, min, max, mean and |max|.
+std::string reactionRowHtml(const std::string& col, const json& r) {
+  std::ostringstream h;
+  h << "<tr><td><code>" << htmlEscape(col) << "</code></td><td>" << htmlEscape(reactionMeaning(col))
+    << "</td><td>" << reactionUnit(col) << "</td>";
+  for (const char* k : {"min", "max", "mean", "abs_max"})
+    h << "<td class=\"n\">" << htmlEscape(number(r.is_object() && r.contains(k) ? r[k] : json(nullptr), "%.6g"))
+      << "</td>";
+  h << "</tr>\n";
+  return h.str();
+}
+
+}  // namespace
 
 std::string reactionsTableHtml(const nlohmann::json& s, const std::vector<std::string>& reaction_columns) {
   std::ostringstream h;
@@ -248,28 +303,14 @@ std::string reactionsTableHtml(const nlohmann::json& s, const std::vector<std::s
   h << "<h2>Joint reactions over the steady window</h2>\n";
   if (!rx.is_object() || rx.empty()) {
     h << "<p>No reactions in summary.json.</p>\n";
-  } else {
-    std::vector<std::string> order;
-    for (const std::string& col : reaction_columns)
-      if (rx.contains(col)) order.push_back(col);
-    for (auto it = rx.begin(); it != rx.end(); ++it)
-      if (std::find(order.begin(), order.end(), it.key()) == order.end()) order.push_back(it.key());
-    h << "<p class=\"small\">N &gt; 0: the guide presses the guide roller down (Loveikin, Pochka, Romasevych (2018) fig. 3); "
-         "F_rod &gt; 0 in tension. Min and max over the steady window.</p>\n"
-      << "<table>\n<tr><th>joint quantity</th><th>meaning</th><th>unit</th><th>min</th><th>max</th>"
-         "<th>mean</th><th>|max|</th></tr>\n";
-    for (const std::string& col : order) {
-      const json& r = rx[col];
-      h << "<tr><td><code>" << htmlEscape(col) << "</code></td><td>" << htmlEscape(reactionMeaning(col))
-        << "</td><td>" << reactionUnit(col) << "</td>";
-      for (const char* k : {"min", "max", "mean", "abs_max"})
-        h << "<td class=\"n\">" << htmlEscape(number(r.is_object() && r.contains(k) ? r[k] : json(nullptr), "%.6g"))
-          << "</td>";
-      h << "</tr>\n";
-    }
-    h << "</table>\n";
+    return h.str();
   }
-
+  h << "<p class=\"small\">N &gt; 0: the guide presses the guide roller down (Loveikin, Pochka, Romasevych (2018) fig. 3); "
+       "F_rod &gt; 0 in tension. Min and max over the steady window.</p>\n"
+    << "<table>\n<tr><th>joint quantity</th><th>meaning</th><th>unit</th><th>min</th><th>max</th>"
+       "<th>mean</th><th>|max|</th></tr>\n";
+  for (const std::string& col : reactionOrder(rx, reaction_columns)) h << reactionRowHtml(col, rx[col]);
+  h << "</table>\n";
   return h.str();
 }
 
@@ -295,7 +336,10 @@ std::string sceneParametersHtml(const std::vector<SceneParameterRow>& parameters
   return h.str();
 }
 
-std::string renderReportHtml(const ReportContent& c) {
+namespace {
+
+// The page's head (style, error recorder), its title and the line naming model and integrator.
+std::string pageHeadHtml(const ReportContent& c) {
   const json& s = c.summary;
   std::ostringstream h;
   const std::string name = htmlEscape(c.scene_name);
@@ -306,26 +350,31 @@ std::string renderReportHtml(const ReportContent& c) {
   h << "<h1>rollerdyn report: " << name << "</h1>\n";
   h << "<div class=\"small\">Drive dynamics of a roller forming installation, " << htmlEscape(number(at(s, "model")))
     << " model, integrator " << htmlEscape(number(at(s, "integrator"))) << ".</div>\n";
+  return h.str();
+}
 
-  h << runStatusHtml(s);
+// The mechanism in motion beside the interactive time plots.
+std::string motionSectionHtml(const ReportContent& c) {
+  if (c.animation.empty() && c.time_plots.empty()) return "";
+  const json t0 = at(c.summary, "steady_state.t_begin"), t1 = at(c.summary, "steady_state.t_end");
+  std::ostringstream h;
+  h << "<h2>Mechanism in motion</h2>\n<p class=\"small\">Drawn to scale from this run's time series (crank "
+       "angle &phi;<sub>2</sub>, cart positions) and reactions, one lane per cart because the crank planes lie "
+       "one behind the other along the shaft; cart j's crank is at &phi;<sub>2</sub> + (j&minus;1)&middot;&Delta;&phi;. "
+       "Arrows: guide reactions at the guide rollers and the rod force at the hinge B, each kind scaled to "
+       "its largest value over the run.</p>\n<div class=\"motion\"><div>"
+    << mechanismAnimationHtml(c.animation) << "</div><div>"
+    << timePlotsHtml(c.time_plots, c.chartjs_path, t0.is_number() ? t0.get<double>() : 0.0,
+                     t1.is_number() ? t1.get<double>() : 0.0)
+    << "</div></div>\n";
+  return h.str();
+}
 
-  // The mechanism in motion beside the interactive time plots.
-  if (!c.animation.empty() || !c.time_plots.empty()) {
-    const json t0 = at(s, "steady_state.t_begin"), t1 = at(s, "steady_state.t_end");
-    h << "<h2>Mechanism in motion</h2>\n<p class=\"small\">Drawn to scale from this run's time series (crank "
-         "angle &phi;<sub>2</sub>, cart positions) and reactions, one lane per cart because the crank planes lie "
-         "one behind the other along the shaft; cart j's crank is at &phi;<sub>2</sub> + (j&minus;1)&middot;&Delta;&phi;. "
-         "Arrows: guide reactions at the guide rollers and the rod force at the hinge B, each kind scaled to "
-         "its largest value over the run.</p>\n<div class=\"motion\"><div>"
-      << mechanismAnimationHtml(c.animation) << "</div><div>"
-      << timePlotsHtml(c.time_plots, c.chartjs_path, t0.is_number() ? t0.get<double>() : 0.0,
-                       t1.is_number() ? t1.get<double>() : 0.0)
-      << "</div></div>\n";
-  }
-
-  // Scene
+// The scene: name, file, source, the --set overrides and the effects built.
+std::string sceneSectionHtml(const ReportContent& c) {
+  std::ostringstream h;
   h << "<h2>Scene</h2>\n<table>\n";
-  h << "<tr><th>name</th><td>" << name << "</td></tr>\n";
+  h << "<tr><th>name</th><td>" << htmlEscape(c.scene_name) << "</td></tr>\n";
   h << "<tr><th>file</th><td><code>" << htmlEscape(c.scene_path) << "</code></td></tr>\n";
   h << "<tr><th>source</th><td>" << htmlEscape(c.scene_source) << "</td></tr>\n";
   h << "<tr><th>overrides (--set)</th><td>";
@@ -335,32 +384,49 @@ std::string renderReportHtml(const ReportContent& c) {
   h << "</td></tr>\n<tr><th>effects built</th><td>";
   for (const std::string& e : c.effects) h << "<span class=\"chip\">" << htmlEscape(effectWords(e)) << "</span>";
   h << "</td></tr>\n</table>\n";
+  return h.str();
+}
 
-  h << summaryMetricsHtml(s);
-  h << sizingSectionHtml(s);   // motion, stall cause, drive sizing (SizingSection.h)
-  h << startUpSectionHtml(s);  // start-up and stopping (StartUpSection.h)
-
-  h << reactionsTableHtml(s, c.reaction_columns);
-
-  // Figures
+// The figures, numbered, each PNG embedded as base64 so the page needs no files beside it.
+std::string figuresSectionHtml(const std::vector<FigureFile>& figures) {
+  std::ostringstream h;
   h << "<h2>Figures</h2>\n";
-  if (c.figures.empty()) h << "<p>No figures.</p>\n";
-  for (size_t i = 0; i < c.figures.size(); ++i) {
-    const FigureFile& f = c.figures[i];
+  if (figures.empty()) h << "<p>No figures.</p>\n";
+  for (size_t i = 0; i < figures.size(); ++i) {
+    const FigureFile& f = figures[i];
     h << "<figure id=\"" << htmlEscape(f.name) << "\">";
-    if (!f.png.empty())
-      h << "<img alt=\"" << htmlEscape(f.name) << "\" src=\"data:image/png;base64," << base64Encode(readFileContents(f.png, "figure"))
-        << "\">";
+    h << embeddedPngHtml(f);
     h << "<figcaption><b>Figure " << i + 1 << "</b> (<code>" << htmlEscape(f.name) << "</code>). "
       << htmlEscape(f.caption) << "</figcaption></figure>\n";
   }
-  for (const std::string& section : c.extra_sections_html) h << section;
-  if (!c.notes.empty()) {
-    h << "<h2>Notes</h2>\n<ul>\n";
-    for (const std::string& n : c.notes) h << "<li>" << htmlEscape(n) << "</li>\n";
-    h << "</ul>\n";
-  }
+  return h.str();
+}
 
+std::string notesHtml(const std::vector<std::string>& notes) {
+  if (notes.empty()) return "";
+  std::ostringstream h;
+  h << "<h2>Notes</h2>\n<ul>\n";
+  for (const std::string& n : notes) h << "<li>" << htmlEscape(n) << "</li>\n";
+  h << "</ul>\n";
+  return h.str();
+}
+
+}  // namespace
+
+std::string renderReportHtml(const ReportContent& c) {
+  const json& s = c.summary;
+  std::ostringstream h;
+  h << pageHeadHtml(c);
+  h << runStatusHtml(s);
+  h << motionSectionHtml(c);
+  h << sceneSectionHtml(c);
+  h << summaryMetricsHtml(s);
+  h << sizingSectionHtml(s);   // motion, stall cause, drive sizing (SizingSection.h)
+  h << startUpSectionHtml(s);  // start-up and stopping (StartUpSection.h)
+  h << reactionsTableHtml(s, c.reaction_columns);
+  h << figuresSectionHtml(c.figures);
+  for (const std::string& section : c.extra_sections_html) h << section;
+  h << notesHtml(c.notes);
   h << sceneParametersHtml(c.parameters, c.derived);
   h << "<p class=\"small\">Generated by <code>" << htmlEscape(c.command)
     << "</code>. Files next to this page: timeseries.csv, reactions.csv, summary.json, figures/*.png|svg.</p>\n";

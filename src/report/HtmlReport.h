@@ -60,6 +60,10 @@ std::string renderReportHtml(const ReportContent& content);
 // Standard base64 (RFC 4648, with padding).
 std::string base64Encode(const std::string& bytes);
 
+// A figure's PNG as an <img> with its bytes inline (base64), empty when the figure has no PNG.
+// Throws std::runtime_error if the PNG cannot be read.
+std::string embeddedPngHtml(const FigureFile& figure);
+
 // Escapes & < > " ' for HTML text and attribute values.
 std::string htmlEscape(const std::string& text);
 

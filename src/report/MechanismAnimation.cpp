@@ -245,17 +245,19 @@ int cartCount(const Table& ts) {
   return n;
 }
 
-}  // namespace
-
-MechanismFrames mechanismFrames(const Scene& scene, const Table& ts, const Table& rx, std::size_t max_frames) {
+// The number of carts of the time series, checked against the scene.
+int checkedCartCount(const Scene& scene, const Table& ts) {
   const int n = cartCount(ts);
   if (!ts.has("t") || !ts.has("phi_crank") || n == 0)
     throw std::invalid_argument("mechanism animation: the time series needs t, phi_crank and x_cart_1 ...");
   if (n != scene.carts.count)
     throw std::invalid_argument("mechanism animation: the time series has " + std::to_string(n) +
                                 " carts, the scene " + std::to_string(scene.carts.count));
-  MechanismFrames f;
-  MechanismGeometry& g = f.geometry;
+  return n;
+}
+
+MechanismGeometry mechanismGeometry(const Scene& scene, int n) {
+  MechanismGeometry g;
   g.crank_radius = scene.crank.radius;
   g.cam_drive = scene.hasCamDrive();
   g.rod_length = g.cam_drive ? 0.0 : scene.rods.length;
@@ -267,87 +269,136 @@ MechanismFrames mechanismFrames(const Scene& scene, const Table& ts, const Table
   g.sides = scene.carts.side;
   g.cart = scene.carts.geometry;
   g.cam_radius = g.cam_drive ? 0.5 * scene.cam.pusher_distance : 0.0;
+  return g;
+}
 
-  const int it = ts.index("t"), ip = ts.index("phi_crank");
-  std::vector<int> ix(n);
-  for (int j = 0; j < n; ++j) ix[j] = ts.index("x_cart_" + std::to_string(j + 1));
-  // Reactions of the same rows (both models write them at the same output times).
-  bool forces = rx.rows.size() == ts.rows.size() && rx.has("t");
-  std::vector<int> inf(n), inr(n), ifr(n);
-  for (int j = 0; forces && j < n; ++j) {
-    const std::string c = std::to_string(j + 1);
-    forces = rx.has("N_front_" + c) && rx.has("N_rear_" + c) && rx.has("F_rod_" + c);
-    if (forces) {
-      inf[j] = rx.index("N_front_" + c);
-      inr[j] = rx.index("N_rear_" + c);
-      ifr[j] = rx.index("F_rod_" + c);
+// Where each frame's values are: the time series' t, φ2 and cart positions, and (when `forces`)
+// the reactions' guide reactions and rod force of each cart.
+struct FrameColumns {
+  int t = -1, phi = -1;
+  std::vector<int> x;
+  bool forces = false;
+  std::vector<int> N_front, N_rear, F_rod;
+};
+
+// The reactions' columns of every cart, when the reactions hold them all.
+void findForceColumns(const Table& rx, int n, FrameColumns& c) {
+  c.N_front.resize(n);
+  c.N_rear.resize(n);
+  c.F_rod.resize(n);
+  for (int j = 0; c.forces && j < n; ++j) {
+    const std::string k = std::to_string(j + 1);
+    c.forces = rx.has("N_front_" + k) && rx.has("N_rear_" + k) && rx.has("F_rod_" + k);
+    if (c.forces) {
+      c.N_front[j] = rx.index("N_front_" + k);
+      c.N_rear[j] = rx.index("N_rear_" + k);
+      c.F_rod[j] = rx.index("F_rod_" + k);
     }
   }
-  const int irt = forces ? rx.index("t") : -1;
-  for (std::size_t i = 0; forces && i < ts.rows.size(); ++i)
-    forces = std::abs(rx.rows[i][irt] - ts.rows[i][it]) <= 1e-9 * std::max(1.0, std::abs(ts.rows[i][it]));
-  f.has_forces = forces;
+}
 
+FrameColumns frameColumns(const Table& ts, const Table& rx, int n) {
+  FrameColumns c;
+  c.t = ts.index("t");
+  c.phi = ts.index("phi_crank");
+  c.x.resize(n);
+  for (int j = 0; j < n; ++j) c.x[j] = ts.index("x_cart_" + std::to_string(j + 1));
+  // Reactions of the same rows (both models write them at the same output times).
+  c.forces = rx.rows.size() == ts.rows.size() && rx.has("t");
+  findForceColumns(rx, n, c);
+  const int irt = c.forces ? rx.index("t") : -1;
+  for (std::size_t i = 0; c.forces && i < ts.rows.size(); ++i)
+    c.forces = std::abs(rx.rows[i][irt] - ts.rows[i][c.t]) <= 1e-9 * std::max(1.0, std::abs(ts.rows[i][c.t]));
+  return c;
+}
+
+// Cart j's forces of one reactions row, and the largest magnitudes so far.
+void addCartForces(MechanismFrames& f, int j, const std::vector<double>& r, const FrameColumns& col) {
+  CartFrames& c = f.carts[j];
+  c.N_front.push_back(r[col.N_front[j]]);
+  c.N_rear.push_back(r[col.N_rear[j]]);
+  c.F_rod.push_back(r[col.F_rod[j]]);
+  for (double v : {r[col.N_front[j]], r[col.N_rear[j]]})
+    if (std::isfinite(v)) f.N_abs_max = std::max(f.N_abs_max, std::abs(v));
+  if (std::isfinite(r[col.F_rod[j]])) f.F_rod_abs_max = std::max(f.F_rod_abs_max, std::abs(r[col.F_rod[j]]));
+}
+
+// The frame of output row i: time, crank angle, and per cart its crank pin, hinge and forces.
+void addFrame(MechanismFrames& f, const Scene& scene, const Table& ts, const Table& rx, std::size_t i,
+              const FrameColumns& col) {
+  const std::vector<double>& row = ts.rows[i];
+  f.rows.push_back(i);
+  f.t.push_back(row[col.t]);
+  f.phi_crank.push_back(row[col.phi]);
+  for (int j = 0; j < int(f.carts.size()); ++j) {
+    CartFrames& c = f.carts[j];
+    // Crank pin of cart j: θ_j = φ_2 + j·Δφ (Scene::crankPhase, the multibody model's pin).
+    const double theta = row[col.phi] + scene.crankPhase(j);
+    if (!f.geometry.cam_drive) {
+      c.pin_x.push_back(f.geometry.crank_radius * std::cos(theta));
+      c.pin_y.push_back(f.geometry.crank_radius * std::sin(theta));
+    }
+    c.hinge_x.push_back(row[col.x[j]]);
+    if (col.forces) addCartForces(f, j, rx.rows[i], col);
+  }
+}
+
+}  // namespace
+
+MechanismFrames mechanismFrames(const Scene& scene, const Table& ts, const Table& rx, std::size_t max_frames) {
+  const int n = checkedCartCount(scene, ts);
+  MechanismFrames f;
+  f.geometry = mechanismGeometry(scene, n);
+  const FrameColumns col = frameColumns(ts, rx, n);
+  f.has_forces = col.forces;
   const std::size_t rows = ts.rows.size();
   const std::size_t stride = std::max<std::size_t>(1, (rows + max_frames - 1) / std::max<std::size_t>(1, max_frames));
   f.carts.resize(n);
   for (std::size_t i = 0; i < rows; i += stride) {
-    const std::vector<double>& row = ts.rows[i];
-    if (!std::isfinite(row[ip])) continue;  // a row of an aborted run
-    f.rows.push_back(i);
-    f.t.push_back(row[it]);
-    f.phi_crank.push_back(row[ip]);
-    for (int j = 0; j < n; ++j) {
-      CartFrames& c = f.carts[j];
-      // Crank pin of cart j: θ_j = φ_2 + j·Δφ (Scene::crankPhase, the multibody model's pin).
-      const double theta = row[ip] + scene.crankPhase(j);
-      if (!g.cam_drive) {
-        c.pin_x.push_back(g.crank_radius * std::cos(theta));
-        c.pin_y.push_back(g.crank_radius * std::sin(theta));
-      }
-      c.hinge_x.push_back(row[ix[j]]);
-      if (forces) {
-        const std::vector<double>& r = rx.rows[i];
-        c.N_front.push_back(r[inf[j]]);
-        c.N_rear.push_back(r[inr[j]]);
-        c.F_rod.push_back(r[ifr[j]]);
-        for (double v : {r[inf[j]], r[inr[j]]})
-          if (std::isfinite(v)) f.N_abs_max = std::max(f.N_abs_max, std::abs(v));
-        if (std::isfinite(r[ifr[j]])) f.F_rod_abs_max = std::max(f.F_rod_abs_max, std::abs(r[ifr[j]]));
-      }
-    }
+    if (!std::isfinite(ts.rows[i][col.phi])) continue;  // a row of an aborted run
+    addFrame(f, scene, ts, rx, i, col);
   }
   return f;
 }
 
+namespace {
+
+nlohmann::json geometryJson(const MechanismGeometry& g) {
+  return {{"r", g.crank_radius},  {"l", g.rod_length}, {"offset", g.crank_offset},
+          {"phases", g.crank_phases}, {"masses", g.masses},
+          {"sides", g.sides},      {"cam", g.cam_drive}, {"cam_radius", g.cam_radius},
+          {"cart", {{"a", g.cart.a}, {"b", g.cart.b}, {"p", g.cart.p}, {"e", g.cart.e}, {"D", g.cart.D},
+                    {"d", g.cart.d}, {"com_height", g.cart.com_height}}}};
+}
+
+// One cart's frames: the hinge, the crank pin (crank drives) and the forces (when there are).
+nlohmann::json cartFramesJson(const CartFrames& c, bool cam_drive, bool has_forces) {
+  nlohmann::json cj = {{"hinge_x", roundedArray(c.hinge_x, 6)}};
+  if (!cam_drive) {
+    cj["pin_x"] = roundedArray(c.pin_x, 6);
+    cj["pin_y"] = roundedArray(c.pin_y, 6);
+  }
+  if (has_forces) {
+    cj["N_front"] = roundedArray(c.N_front, 5);
+    cj["N_rear"] = roundedArray(c.N_rear, 5);
+    cj["F_rod"] = roundedArray(c.F_rod, 5);
+  }
+  return cj;
+}
+
+}  // namespace
+
 nlohmann::json mechanismFramesJson(const MechanismFrames& f) {
   using nlohmann::json;
-  const MechanismGeometry& g = f.geometry;
   json j;
-  j["geometry"] = {{"r", g.crank_radius},  {"l", g.rod_length}, {"offset", g.crank_offset},
-                   {"phases", g.crank_phases}, {"masses", g.masses},
-                   {"sides", g.sides},      {"cam", g.cam_drive}, {"cam_radius", g.cam_radius},
-                   {"cart", {{"a", g.cart.a}, {"b", g.cart.b}, {"p", g.cart.p}, {"e", g.cart.e}, {"D", g.cart.D},
-                             {"d", g.cart.d}, {"com_height", g.cart.com_height}}}};
+  j["geometry"] = geometryJson(f.geometry);
   j["t"] = roundedArray(f.t, 7);
   j["phi"] = roundedArray(f.phi_crank, 6);
   j["has_forces"] = f.has_forces;
   j["N_abs_max"] = f.N_abs_max;
   j["F_rod_abs_max"] = f.F_rod_abs_max;
   j["carts"] = json::array();
-  for (const CartFrames& c : f.carts) {
-    json cj = {{"hinge_x", roundedArray(c.hinge_x, 6)}};
-    if (!g.cam_drive) {
-      cj["pin_x"] = roundedArray(c.pin_x, 6);
-      cj["pin_y"] = roundedArray(c.pin_y, 6);
-    }
-    if (f.has_forces) {
-      cj["N_front"] = roundedArray(c.N_front, 5);
-      cj["N_rear"] = roundedArray(c.N_rear, 5);
-      cj["F_rod"] = roundedArray(c.F_rod, 5);
-    }
-    j["carts"].push_back(std::move(cj));
-  }
+  for (const CartFrames& c : f.carts) j["carts"].push_back(cartFramesJson(c, f.geometry.cam_drive, f.has_forces));
   return j;
 }
 

@@ -9,32 +9,40 @@
 
 namespace rollerdyn {
 
+namespace {
+
+// The CSV file at `path` into `table`, when it exists (`present` says whether it did).
+void readCsvIfPresent(const std::string& path, Table& table, bool& present) {
+  if (!std::filesystem::exists(path)) return;
+  table = readCsvFile(path);
+  present = true;
+}
+
+// summary.json at `path`: a JSON object, or an error naming the file.
+nlohmann::json readSummary(const std::string& path) {
+  nlohmann::json summary;
+  try {
+    summary = nlohmann::json::parse(readFileContents(path));
+  } catch (const nlohmann::json::parse_error& e) {
+    throw std::runtime_error(path + ": expected JSON, got a parse error: " + e.what());
+  }
+  if (!summary.is_object()) throw std::runtime_error(path + ": expected a JSON object");
+  return summary;
+}
+
+}  // namespace
+
 OutputFolder readOutputFolder(const std::string& dir) {
   namespace fs = std::filesystem;
   if (!fs::is_directory(dir)) throw std::runtime_error("'" + dir + "' is not a folder");
   OutputFolder out;
   out.dir = dir;
   const auto file = [&dir](const char* name) { return (fs::path(dir) / name).string(); };
-  if (fs::exists(file("timeseries.csv"))) {
-    out.timeseries = readCsvFile(file("timeseries.csv"));
-    out.has_timeseries = true;
-  }
-  if (fs::exists(file("reactions.csv"))) {
-    out.reactions = readCsvFile(file("reactions.csv"));
-    out.has_reactions = true;
-  }
-  if (fs::exists(file("comparison.csv"))) {
-    out.comparison = readCsvFile(file("comparison.csv"));
-    out.has_comparison = true;
-  }
+  readCsvIfPresent(file("timeseries.csv"), out.timeseries, out.has_timeseries);
+  readCsvIfPresent(file("reactions.csv"), out.reactions, out.has_reactions);
+  readCsvIfPresent(file("comparison.csv"), out.comparison, out.has_comparison);
   if (fs::exists(file("summary.json"))) {
-    try {
-      out.summary = nlohmann::json::parse(readFileContents(file("summary.json")));
-    } catch (const nlohmann::json::parse_error& e) {
-      throw std::runtime_error(file("summary.json") + ": expected JSON, got a parse error: " + e.what());
-    }
-    if (!out.summary.is_object())
-      throw std::runtime_error(file("summary.json") + ": expected a JSON object");
+    out.summary = readSummary(file("summary.json"));
     out.has_summary = true;
   }
   if (!out.has_timeseries && !out.has_reactions && !out.has_comparison && !out.has_summary)

@@ -88,6 +88,23 @@ void header(std::ostringstream& h, const SignOffSheet& s) {
   h << "</table>\n";
 }
 
+// A check's second row: what decided it (or why it fails, why n/a), the scene keys a FAIL or n/a
+// names, its method and what it rests on.
+void checkDetailRow(std::ostringstream& h, const SignOffRow& r) {
+  const SizingCheck& c = r.check;
+  h << "<tr><td class=\"detail\" colspan=\"5\">";
+  h << "<b>" << (r.verdict == "pass" ? "decided by" : r.verdict == "FAIL" ? "why it fails" : "why n/a") << ":</b> "
+    << esc(r.reason);
+  if (r.verdict != "pass" && !r.keys.empty()) {
+    h << "<br><b>scene keys named:</b> <span class=\"mono\">";
+    for (std::size_t i = 0; i < r.keys.size(); ++i) h << (i ? ", " : "") << esc(r.keys[i]);
+    h << "</span>";
+  }
+  if (!c.method.empty()) h << "<br><b>method:</b> " << esc(c.method);
+  if (!c.basis.empty()) h << "<br><b>rests on:</b> " << esc(c.basis);
+  h << "</td></tr></tbody>\n";
+}
+
 void checkRows(std::ostringstream& h, const SignOffSheet& s) {
   h << "<h2>Checks</h2>\n<p class=\"small\">Value: the deciding figure of each check, dimensionless (a ratio to "
        "its rating, a damage sum or a margin); it passes when it stands to the limit as shown. n/a: the check was "
@@ -106,17 +123,7 @@ void checkRows(std::ostringstream& h, const SignOffSheet& s) {
     h << "<tbody class=\"check\"><tr><td class=\"n\" rowspan=\"2\">" << ++n << "</td><td>" << esc(c.what)
       << "</td><td class=\"n\">" << number(c.value) << "</td><td class=\"n\">" << limitText(c) << "</td><td class=\"v "
       << cls << "\">" << esc(shortVerdict(r.verdict)) << "</td><td>" << esc(c.window) << "</td></tr>\n";
-    h << "<tr><td class=\"detail\" colspan=\"5\">";
-    h << "<b>" << (r.verdict == "pass" ? "decided by" : r.verdict == "FAIL" ? "why it fails" : "why n/a") << ":</b> "
-      << esc(r.reason);
-    if (r.verdict != "pass" && !r.keys.empty()) {
-      h << "<br><b>scene keys named:</b> <span class=\"mono\">";
-      for (std::size_t i = 0; i < r.keys.size(); ++i) h << (i ? ", " : "") << esc(r.keys[i]);
-      h << "</span>";
-    }
-    if (!c.method.empty()) h << "<br><b>method:</b> " << esc(c.method);
-    if (!c.basis.empty()) h << "<br><b>rests on:</b> " << esc(c.basis);
-    h << "</td></tr></tbody>\n";
+    checkDetailRow(h, r);
   }
   h << "</table>\n";
 }

@@ -55,6 +55,38 @@ std::string motionStatusHtml(const json& s) {
 }
 
 // The motor's torques, powers and slip over the steady window and the whole run.
+// "mean / RMS / peak" of a torque's statistics [N·m].
+std::string meanRmsPeak(const json& t) {
+  return jsonNumberText(jsonMember(t, "mean")) + " / " + jsonNumberText(jsonMember(t, "rms")) + " / " +
+         jsonNumberText(jsonMember(t, "peak"));
+}
+
+// "mean / peak" of a power's statistics, in kW.
+std::string meanPeakKilo(const json& p) {
+  return jsonNumberText(jsonMember(p, "mean"), "%.4g", 1e-3) + " / " + jsonNumberText(jsonMember(p, "peak"), "%.4g", 1e-3);
+}
+
+// The motor over the steady window: torques, powers, slip and energy per revolution.
+void steadyMotorRows(std::ostringstream& h, const json& m) {
+  row(h, "torque M at the rotor: mean / RMS / peak |M|", meanRmsPeak(jsonMember(m, "torque_shaft")), "N·m");
+  row(h, "torque at the crank M·u·η: mean / RMS / peak", meanRmsPeak(jsonMember(m, "torque_crank")), "N·m");
+  row(h, "nominal torque M_n", jsonNumberText(jsonMember(m, "nominal_torque")), "N·m", text(jsonMember(m, "nominal_torque_source")));
+  row(h, "breakdown torque M_kr", jsonNumberText(jsonMember(m, "breakdown_torque")), "N·m");
+  row(h, "shaft power M·ω_r: mean / peak", meanPeakKilo(jsonMember(m, "power_shaft")), "kW");
+  row(h, "power drawn from the line: mean / peak", meanPeakKilo(jsonMember(m, "power_line")), "kW",
+      text(jsonMember(m, "line_power_basis")));
+  row(h, "slip s: min … max", jsonNumberText(jsonMember(jsonMember(m, "slip"), "min"), "%.4f") + " … " + jsonNumberText(jsonMember(jsonMember(m, "slip"), "max"), "%.4f"), "-");
+  row(h, "motor energy per crank revolution", jsonNumberText(jsonMember(m, "energy_per_revolution"), "%.4g", 1e-3), "kJ");
+}
+
+// The motor over the whole run, start-up included.
+void wholeRunMotorRows(std::ostringstream& h, const json& r) {
+  row(h, "whole run: torque M at the rotor mean / RMS / peak |M|", meanRmsPeak(jsonMember(r, "torque_shaft")), "N·m",
+      "start-up included");
+  row(h, "whole run: power from the line mean / peak", meanPeakKilo(jsonMember(r, "power_line")), "kW");
+  row(h, "whole run: mean rotor losses s·M·ω0", jsonNumberText(jsonMember(r, "rotor_losses_mean"), "%.4g", 1e-3), "kW");
+}
+
 std::string motorTableHtml(const json& m) {
   std::ostringstream h;
   h << "<h3>Motor</h3>\n";
@@ -62,29 +94,9 @@ std::string motorTableHtml(const json& m) {
     h << "<p>No motor torque in this run.</p>\n";
     return h.str();
   }
-  const json &ts = jsonMember(m, "torque_shaft"), &tc = jsonMember(m, "torque_crank");
   h << "<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
-  row(h, "torque M at the rotor: mean / RMS / peak |M|",
-      jsonNumberText(jsonMember(ts, "mean")) + " / " + jsonNumberText(jsonMember(ts, "rms")) + " / " + jsonNumberText(jsonMember(ts, "peak")), "N·m");
-  row(h, "torque at the crank M·u·η: mean / RMS / peak",
-      jsonNumberText(jsonMember(tc, "mean")) + " / " + jsonNumberText(jsonMember(tc, "rms")) + " / " + jsonNumberText(jsonMember(tc, "peak")), "N·m");
-  row(h, "nominal torque M_n", jsonNumberText(jsonMember(m, "nominal_torque")), "N·m", text(jsonMember(m, "nominal_torque_source")));
-  row(h, "breakdown torque M_kr", jsonNumberText(jsonMember(m, "breakdown_torque")), "N·m");
-  row(h, "shaft power M·ω_r: mean / peak",
-      jsonNumberText(jsonMember(jsonMember(m, "power_shaft"), "mean"), "%.4g", 1e-3) + " / " + jsonNumberText(jsonMember(jsonMember(m, "power_shaft"), "peak"), "%.4g", 1e-3), "kW");
-  row(h, "power drawn from the line: mean / peak",
-      jsonNumberText(jsonMember(jsonMember(m, "power_line"), "mean"), "%.4g", 1e-3) + " / " + jsonNumberText(jsonMember(jsonMember(m, "power_line"), "peak"), "%.4g", 1e-3), "kW",
-      text(jsonMember(m, "line_power_basis")));
-  row(h, "slip s: min … max", jsonNumberText(jsonMember(jsonMember(m, "slip"), "min"), "%.4f") + " … " + jsonNumberText(jsonMember(jsonMember(m, "slip"), "max"), "%.4f"), "-");
-  row(h, "motor energy per crank revolution", jsonNumberText(jsonMember(m, "energy_per_revolution"), "%.4g", 1e-3), "kJ");
-  const json& r = jsonMember(m, "whole_run");
-  row(h, "whole run: torque M at the rotor mean / RMS / peak |M|",
-      jsonNumberText(jsonMember(jsonMember(r, "torque_shaft"), "mean")) + " / " + jsonNumberText(jsonMember(jsonMember(r, "torque_shaft"), "rms")) + " / " +
-          jsonNumberText(jsonMember(jsonMember(r, "torque_shaft"), "peak")),
-      "N·m", "start-up included");
-  row(h, "whole run: power from the line mean / peak",
-      jsonNumberText(jsonMember(jsonMember(r, "power_line"), "mean"), "%.4g", 1e-3) + " / " + jsonNumberText(jsonMember(jsonMember(r, "power_line"), "peak"), "%.4g", 1e-3), "kW");
-  row(h, "whole run: mean rotor losses s·M·ω0", jsonNumberText(jsonMember(r, "rotor_losses_mean"), "%.4g", 1e-3), "kW");
+  steadyMotorRows(h, m);
+  wholeRunMotorRows(h, jsonMember(m, "whole_run"));
   h << "</table>\n";
   return h.str();
 }

@@ -31,6 +31,77 @@ std::string startUpPreamble(const nlohmann::json& su, const TimeWindow& window) 
   return p;
 }
 
+// What the start-up figures share: the time series, its time column, the scene's label and the
+// preamble with the steady window and the switching times.
+struct StartUpPlots {
+  const Table& ts;
+  std::vector<double> t;
+  std::string scene_label, pre;
+};
+
+// A start-up figure against time with the shared preamble.
+PlotSpec startUpSpec(const StartUpPlots& p, const std::string& title, const std::string& ylabel) {
+  PlotSpec spec;
+  spec.title = sceneTitle(p.scene_label, title);
+  spec.xlabel = "t [s]";
+  spec.ylabel = ylabel;
+  spec.preamble = p.pre;
+  return spec;
+}
+
+FigurePlan speedFigure(const StartUpPlots& p, const nlohmann::json& su) {
+  const Table& ts = p.ts;
+  const std::vector<double>& t = p.t;
+  const std::string method = literal(su.value("method", std::string()));
+  const std::string law = literal(su.value("motor_law", std::string()));
+  PlotSpec speed = startUpSpec(p, "start-up: speeds (" + method + ", " + law + ")", "speed at the crank axis [rad/s]");
+  speed.series.push_back(series("crank speed ω_2", t, col(ts, "omega_crank"), kBlue, 1.5));
+  if (ts.has("omega_motor"))
+    speed.series.push_back(series("motor speed ω_1 = ω_r/u", t, col(ts, "omega_motor"), kOrange, 1.0));
+  const nlohmann::json mean = su.value("steady", nlohmann::json::object()).value("mean_speed", nlohmann::json());
+  if (mean.is_number()) {
+    PlotSeries level = series("95 % of the steady mean speed", {t.front(), t.back()},
+                              {0.95 * mean.get<double>(), 0.95 * mean.get<double>()}, kGrey, 1.0);
+    level.dash = 2;
+    speed.series.push_back(level);
+  }
+  return {"start_up_speed",
+          "Crank and motor speed over the run: the start from the switch-on (red dotted line), the run-up to "
+          "95 % of the steady mean speed (grey dashed) and the steady window (shaded).",
+          std::move(speed)};
+}
+
+FigurePlan torqueFigure(const StartUpPlots& p) {
+  const Table& ts = p.ts;
+  const std::vector<double>& t = p.t;
+  PlotSpec torque = startUpSpec(p, "start-up: motor and coupling torque", "torque at the crank axis [N·m]");
+  torque.series.push_back(series("motor torque M·u·η", t, col(ts, "motor_torque"), kRed, 1.0));
+  if (ts.has("coupling_torque"))
+    torque.series.push_back(series("coupling torque", t, col(ts, "coupling_torque"), kBlue, 1.2));
+  if (ts.has("brake_torque")) torque.series.push_back(series("brake torque", t, col(ts, "brake_torque"), kGreen, 1.0));
+  return {"start_up_torque",
+          "Motor torque (M at the rotor × u·η) and coupling torque at the crank axis over the run, with the "
+          "steady window shaded: the start's peaks against the steady state's (summary.json start_up).",
+          std::move(torque)};
+}
+
+// Needs the stator_current column.
+FigurePlan currentFigure(const StartUpPlots& p) {
+  const Table& ts = p.ts;
+  const std::vector<double>& t = p.t;
+  PlotSpec current = startUpSpec(p, "start-up: stator current", "RMS stator phase current [A]");
+  current.series.push_back(series("stator current I_s (RMS, phase)", t, col(ts, "stator_current"), kRed, 1.0));
+  if (ts.has("supply_voltage_ratio")) {
+    std::vector<double> u = col(ts, "supply_voltage_ratio");
+    for (double& v : u) v *= 100.0;
+    current.series.push_back(series("supply voltage U/U_n [%]", t, u, kGrey, 1.5));
+  }
+  return {"start_up_current",
+          "RMS stator phase current over the run (and the supply voltage in per cent of U_n where the "
+          "starting method changes it), the steady window shaded.",
+          std::move(current)};
+}
+
 }  // namespace
 
 const std::vector<std::string>& startUpFigureNames() {
@@ -44,68 +115,16 @@ void planStartUpFigures(const OutputFolder& out, const TimeWindow& window, const
   // A static Kloss start direct on line is drawn by the time figures already (crank speed, motor
   // and coupling torque against time); no motor switched on: nothing to draw.
   if (!startUpHasOwnFigures(su)) return;
-  const Table& ts = out.timeseries;
-  const std::vector<double> t = col(ts, "t");
-  if (t.empty()) return;
-  const std::string label = scene_label.empty() ? "" : scene_label + ": ";
-  const std::string method = literal(su.value("method", std::string()));
-  const std::string law = literal(su.value("motor_law", std::string()));
-  const std::string pre = startUpPreamble(su, window);
-
-  PlotSpec speed;
-  speed.title = label + "start-up: speeds (" + method + ", " + law + ")";
-  speed.xlabel = "t [s]";
-  speed.ylabel = "speed at the crank axis [rad/s]";
-  speed.preamble = pre;
-  speed.series.push_back(series("crank speed ω_2", t, col(ts, "omega_crank"), kBlue, 1.5));
-  if (ts.has("omega_motor"))
-    speed.series.push_back(series("motor speed ω_1 = ω_r/u", t, col(ts, "omega_motor"), kOrange, 1.0));
-  const nlohmann::json mean = su.value("steady", nlohmann::json::object()).value("mean_speed", nlohmann::json());
-  if (mean.is_number()) {
-    PlotSeries level = series("95 % of the steady mean speed", {t.front(), t.back()},
-                              {0.95 * mean.get<double>(), 0.95 * mean.get<double>()}, kGrey, 1.0);
-    level.dash = 2;
-    speed.series.push_back(level);
-  }
-  plans.push_back({"start_up_speed",
-                   "Crank and motor speed over the run: the start from the switch-on (red dotted line), the run-up to "
-                   "95 % of the steady mean speed (grey dashed) and the steady window (shaded).",
-                   std::move(speed)});
-
-  PlotSpec torque;
-  torque.title = label + "start-up: motor and coupling torque";
-  torque.xlabel = "t [s]";
-  torque.ylabel = "torque at the crank axis [N·m]";
-  torque.preamble = pre;
-  torque.series.push_back(series("motor torque M·u·η", t, col(ts, "motor_torque"), kRed, 1.0));
-  if (ts.has("coupling_torque"))
-    torque.series.push_back(series("coupling torque", t, col(ts, "coupling_torque"), kBlue, 1.2));
-  if (ts.has("brake_torque")) torque.series.push_back(series("brake torque", t, col(ts, "brake_torque"), kGreen, 1.0));
-  plans.push_back({"start_up_torque",
-                   "Motor torque (M at the rotor × u·η) and coupling torque at the crank axis over the run, with the "
-                   "steady window shaded: the start's peaks against the steady state's (summary.json start_up).",
-                   std::move(torque)});
-
-  if (!ts.has("stator_current")) {
+  const StartUpPlots p{out.timeseries, col(out.timeseries, "t"), scene_label, startUpPreamble(su, window)};
+  if (p.t.empty()) return;
+  plans.push_back(speedFigure(p, su));
+  plans.push_back(torqueFigure(p));
+  if (!out.timeseries.has("stator_current")) {
     notes.push_back("start-up current figure left out: the motor law models no stator current (motor.model kloss, "
                     "kloss_dynamic)");
     return;
   }
-  PlotSpec current;
-  current.title = label + "start-up: stator current";
-  current.xlabel = "t [s]";
-  current.ylabel = "RMS stator phase current [A]";
-  current.preamble = pre;
-  current.series.push_back(series("stator current I_s (RMS, phase)", t, col(ts, "stator_current"), kRed, 1.0));
-  if (ts.has("supply_voltage_ratio")) {
-    std::vector<double> u = col(ts, "supply_voltage_ratio");
-    for (double& v : u) v *= 100.0;
-    current.series.push_back(series("supply voltage U/U_n [%]", t, u, kGrey, 1.5));
-  }
-  plans.push_back({"start_up_current",
-                   "RMS stator phase current over the run (and the supply voltage in per cent of U_n where the "
-                   "starting method changes it), the steady window shaded.",
-                   std::move(current)});
+  plans.push_back(currentFigure(p));
 }
 
 }  // namespace rollerdyn

@@ -44,20 +44,21 @@ std::string canItStartTable(const json& s) {
   return h.str();
 }
 
-// The peaks of the start (or of the whole run when it did not run up) against the steady ones.
-std::string startPeaksTable(const json& s, bool starts, bool still_starting) {
+// The motor torque's largest and smallest, and the coupling torque's largest |value|.
+std::string torquePeakRows(const json& s) {
   std::ostringstream h;
-  if (starts)
-    h << "<table>\n<tr><th>peak</th><th>in the start</th><th>steady window</th><th>start/steady</th><th>unit</th></tr>\n";
-  else
-    h << "<table>\n<tr><th>peak</th><th>" << (still_starting ? "so far" : "over the run")
-      << "</th><th>the run's last part</th><th>ratio</th><th>unit</th></tr>\n";
   const json &m = jsonMember(s, "motor_torque"), &c = jsonMember(s, "coupling_torque");
   const bool negative = jsonMember(m, "min").is_number() && jsonMember(m, "min").get<double>() < 0;
   h << row("motor torque M·u·η, largest", jsonNumberText(jsonMember(m, "peak")), jsonNumberText(jsonMember(m, "steady_peak")), jsonNumberText(jsonMember(m, "ratio"), "%.3g"),
            "N·m");
   h << row(negative ? "motor torque M·u·η, most negative" : "motor torque M·u·η, smallest", jsonNumberText(jsonMember(m, "min")), "", "", "N·m");
   h << row("|coupling torque|", jsonNumberText(jsonMember(c, "peak")), jsonNumberText(jsonMember(c, "steady_peak")), jsonNumberText(jsonMember(c, "ratio"), "%.3g"), "N·m");
+  return h.str();
+}
+
+// Each joint's largest load in the start and in the steady window [kN].
+std::string jointPeakRows(const json& s) {
+  std::ostringstream h;
   const char* kinds[][2] = {{"guide_roller_front", "guide roller, front (largest cart)"},
                             {"guide_roller_rear", "guide roller, rear"},
                             {"rod_force", "rod force"},
@@ -71,12 +72,30 @@ std::string startPeaksTable(const json& s, bool starts, bool still_starting) {
       h << row(each ? "main bearings, the most loaded one (each bearing's share of the crankshaft's beam statics)" : k[1], jsonNumberText(jsonMember(p, "peak"), "%.4g", 1e-3), jsonNumberText(jsonMember(p, "steady_peak"), "%.4g", 1e-3),
                jsonNumberText(jsonMember(p, "ratio"), "%.3g"), "kN");
   }
+  return h.str();
+}
+
+// The stator current's peak, RMS and I²t (motor laws with a current).
+std::string statorCurrentRows(const json& s) {
+  std::ostringstream h;
   const json& I = jsonMember(s, "stator_current");
   if (I.is_object()) {
     h << row("stator current (RMS phase), largest", jsonNumberText(jsonMember(I, "peak")), "", "", "A");
     h << row("stator current, RMS", jsonNumberText(jsonMember(I, "rms")), jsonNumberText(jsonMember(I, "steady_rms")), "", "A");
     h << row("I²t of the start", jsonNumberText(jsonMember(I, "i2t")), "", "", "A²·s");
   }
+  return h.str();
+}
+
+// The peaks of the start (or of the whole run when it did not run up) against the steady ones.
+std::string startPeaksTable(const json& s, bool starts, bool still_starting) {
+  std::ostringstream h;
+  if (starts)
+    h << "<table>\n<tr><th>peak</th><th>in the start</th><th>steady window</th><th>start/steady</th><th>unit</th></tr>\n";
+  else
+    h << "<table>\n<tr><th>peak</th><th>" << (still_starting ? "so far" : "over the run")
+      << "</th><th>the run's last part</th><th>ratio</th><th>unit</th></tr>\n";
+  h << torquePeakRows(s) << jointPeakRows(s) << statorCurrentRows(s);
   h << "</table>\n";
   return h.str();
 }
@@ -122,6 +141,35 @@ std::string stoppingTable(const json& stop) {
   return h.str();
 }
 
+// The starting method, the motor law and what the start is; the verdict and the notes.
+std::string startIntroHtml(const json& s, bool starts, bool still_starting) {
+  std::ostringstream h;
+  h << "<p class=\"small\">Starting method: " << htmlEscape(jsonMember(s, "method").get<std::string>()) << " at t = "
+    << jsonNumberText(jsonMember(s, "t_on")) << " s; motor law: " << htmlEscape(jsonMember(s, "motor_law").get<std::string>())
+    << ". Torques at the crank axis (M at the rotor × u·η: u reducer ratio, η its efficiency); "
+    << (starts ? "the start runs from the switch-on until the crank speed settles (the first revolution from which "
+                 "every later one has the same mean speed within 1e-3)."
+               : "the drive did not run up, so the peaks are over the whole run and are compared with its last part.")
+    << "</p>\n";
+  h << "<div class=\"status " << (starts ? "ok" : still_starting ? "warn" : "bad") << "\">" << htmlEscape(jsonMember(s, "verdict").get<std::string>())
+    << "</div>\n";
+  for (const json& n : jsonMember(s, "notes"))
+    h << "<div class=\"status warn\">" << htmlEscape(n.get<std::string>()) << "</div>\n";
+  return h.str();
+}
+
+// Which figures of the page show the start.
+std::string startFiguresNote(const json& s) {
+  std::ostringstream h;
+  if (startUpHasOwnFigures(s))
+    h << "<p class=\"small\">Figures below: <code>start_up_speed</code>, <code>start_up_torque</code>"
+      << (jsonMember(s, "stator_current").is_object() ? ", <code>start_up_current</code>" : "") << " (against time).</p>\n";
+  else
+    h << "<p class=\"small\">Figures below: <code>crank_speed_vs_time</code>, <code>motor_torque_vs_time</code>, "
+         "<code>coupling_torque_vs_time</code> (against time, the steady window marked).</p>\n";
+  return h.str();
+}
+
 }  // namespace
 
 std::string startUpSectionHtml(const json& summary) {
@@ -133,29 +181,13 @@ std::string startUpSectionHtml(const json& summary) {
     return h.str();
   }
   const bool starts = jsonMember(s, "starts").is_boolean() && jsonMember(s, "starts").get<bool>();
-  h << "<p class=\"small\">Starting method: " << htmlEscape(jsonMember(s, "method").get<std::string>()) << " at t = "
-    << jsonNumberText(jsonMember(s, "t_on")) << " s; motor law: " << htmlEscape(jsonMember(s, "motor_law").get<std::string>())
-    << ". Torques at the crank axis (M at the rotor × u·η: u reducer ratio, η its efficiency); "
-    << (starts ? "the start runs from the switch-on until the crank speed settles (the first revolution from which "
-                 "every later one has the same mean speed within 1e-3)."
-               : "the drive did not run up, so the peaks are over the whole run and are compared with its last part.")
-    << "</p>\n";
   const bool still_starting = jsonMember(s, "still_starting").is_boolean() && jsonMember(s, "still_starting").get<bool>();
-  h << "<div class=\"status " << (starts ? "ok" : still_starting ? "warn" : "bad") << "\">" << htmlEscape(jsonMember(s, "verdict").get<std::string>())
-    << "</div>\n";
-  for (const json& n : jsonMember(s, "notes"))
-    h << "<div class=\"status warn\">" << htmlEscape(n.get<std::string>()) << "</div>\n";
-
+  h << startIntroHtml(s, starts, still_starting);
   h << canItStartTable(s);
   h << startPeaksTable(s, starts, still_starting);
   h << currentLimitTable(jsonMember(s, "current_limit"));
   h << stoppingTable(jsonMember(s, "stop"));
-  if (startUpHasOwnFigures(s))
-    h << "<p class=\"small\">Figures below: <code>start_up_speed</code>, <code>start_up_torque</code>"
-      << (jsonMember(s, "stator_current").is_object() ? ", <code>start_up_current</code>" : "") << " (against time).</p>\n";
-  else
-    h << "<p class=\"small\">Figures below: <code>crank_speed_vs_time</code>, <code>motor_torque_vs_time</code>, "
-         "<code>coupling_torque_vs_time</code> (against time, the steady window marked).</p>\n";
+  h << startFiguresNote(s);
   return h.str();
 }
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "io/ReadFile.h"
+#include "report/FigureSupport.h"
 #include "report/HtmlReport.h"
 #include "report/PageData.h"
 
@@ -13,9 +14,7 @@ const char* const kChartJsPath = "/usr/share/javascript/chart.js/chart.min.js";
 
 namespace {
 
-const char* const kCartColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
-                                   "#17becf", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"};
-const char* cartColor(int j) { return kCartColors[(j - 1) % 10]; }
+using figures::cartColor;  // the figures' colour of each cart (FigureSupport.h)
 
 // The chart script: one Chart.js line chart per plot (linear time axis, no animation, hover
 // values), a cursor line per chart moved on "rollerdyn-time", a click sends "rollerdyn-seek",
@@ -90,41 +89,63 @@ const char* const kScript = R"JS((function () {
 
 }  // namespace
 
-std::vector<TimePlot> mainTimePlots(const Table& ts, const Table& rx, std::size_t max_points) {
+namespace {
+
+// Every stride-th row of the time series (and of the reactions sampled on its rows), and the
+// plots made of them along the sampled times.
+struct TimePlotSampler {
+  std::size_t stride;
+  std::vector<double> t;
   std::vector<TimePlot> plots;
-  if (!ts.has("t") || ts.rows.empty()) return plots;
-  const std::size_t stride = std::max<std::size_t>(1, (ts.rows.size() + max_points - 1) / std::max<std::size_t>(1, max_points));
-  auto sampled = [stride](const Table& table, const std::string& column) {
+
+  std::vector<double> sampled(const Table& table, const std::string& column) const {
     std::vector<double> out;
     const int c = table.index(column);
     for (std::size_t i = 0; i < table.rows.size(); i += stride) out.push_back(table.rows[i][c]);
     return out;
-  };
-  const std::vector<double> t = sampled(ts, "t");
-  auto plot = [&](const std::string& id, const std::string& title, const std::string& y_label,
-                  const std::string& unit, const std::vector<TimePlotLine>& lines) {
-    if (!lines.empty()) plots.push_back({id, title, y_label, unit, t, lines});
-  };
-  std::vector<TimePlotLine> speed, torque, rod, guide;
-  if (ts.has("omega_crank")) speed.push_back({"crank ω₂", "#1f77b4", sampled(ts, "omega_crank")});
-  if (ts.has("omega_motor")) speed.push_back({"motor ω₁ (at the crank axis)", "#ff7f0e", sampled(ts, "omega_motor")});
-  plot("speed", "Crank and motor speed", "ω [rad/s]", "rad/s", speed);
-  if (ts.has("coupling_torque")) torque.push_back({"coupling torque", "#1f77b4", sampled(ts, "coupling_torque")});
-  if (ts.has("motor_torque")) torque.push_back({"motor torque (at the crank axis)", "#ff7f0e", sampled(ts, "motor_torque")});
-  plot("torque", "Coupling and motor torque", "M [N·m]", "N·m", torque);
-  // Reactions: only when they are sampled on the time series' rows.
-  if (rx.rows.size() == ts.rows.size()) {
-    for (int j = 1; rx.has("F_rod_" + std::to_string(j)); ++j)
-      rod.push_back({"F_rod_" + std::to_string(j), cartColor(j), sampled(rx, "F_rod_" + std::to_string(j))});
-    plot("rod_forces", "Rod forces (> 0 tension)", "F_rod [N]", "N", rod);
-    for (int j = 1; rx.has("N_front_" + std::to_string(j)); ++j) {
-      guide.push_back({"N_front_" + std::to_string(j), cartColor(j), sampled(rx, "N_front_" + std::to_string(j))});
-      if (rx.has("N_rear_" + std::to_string(j)))
-        guide.push_back({"N_rear_" + std::to_string(j), cartColor(j), sampled(rx, "N_rear_" + std::to_string(j)), true});
-    }
-    plot("guide_reactions", "Guide reactions (> 0: the guide presses the roller down)", "N [N]", "N", guide);
   }
-  return plots;
+  void plot(const std::string& id, const std::string& title, const std::string& y_label, const std::string& unit,
+            const std::vector<TimePlotLine>& lines) {
+    if (!lines.empty()) plots.push_back({id, title, y_label, unit, t, lines});
+  }
+};
+
+// Crank and motor speed, coupling and motor torque.
+void speedAndTorquePlots(TimePlotSampler& p, const Table& ts) {
+  std::vector<TimePlotLine> speed, torque;
+  if (ts.has("omega_crank")) speed.push_back({"crank ω₂", "#1f77b4", p.sampled(ts, "omega_crank")});
+  if (ts.has("omega_motor")) speed.push_back({"motor ω₁ (at the crank axis)", "#ff7f0e", p.sampled(ts, "omega_motor")});
+  p.plot("speed", "Crank and motor speed", "ω [rad/s]", "rad/s", speed);
+  if (ts.has("coupling_torque")) torque.push_back({"coupling torque", "#1f77b4", p.sampled(ts, "coupling_torque")});
+  if (ts.has("motor_torque")) torque.push_back({"motor torque (at the crank axis)", "#ff7f0e", p.sampled(ts, "motor_torque")});
+  p.plot("torque", "Coupling and motor torque", "M [N·m]", "N·m", torque);
+}
+
+// Rod forces and guide reactions per cart (front solid, rear dashed).
+void reactionPlots(TimePlotSampler& p, const Table& rx) {
+  std::vector<TimePlotLine> rod, guide;
+  for (int j = 1; rx.has("F_rod_" + std::to_string(j)); ++j)
+    rod.push_back({"F_rod_" + std::to_string(j), cartColor(j), p.sampled(rx, "F_rod_" + std::to_string(j))});
+  p.plot("rod_forces", "Rod forces (> 0 tension)", "F_rod [N]", "N", rod);
+  for (int j = 1; rx.has("N_front_" + std::to_string(j)); ++j) {
+    guide.push_back({"N_front_" + std::to_string(j), cartColor(j), p.sampled(rx, "N_front_" + std::to_string(j))});
+    if (rx.has("N_rear_" + std::to_string(j)))
+      guide.push_back({"N_rear_" + std::to_string(j), cartColor(j), p.sampled(rx, "N_rear_" + std::to_string(j)), true});
+  }
+  p.plot("guide_reactions", "Guide reactions (> 0: the guide presses the roller down)", "N [N]", "N", guide);
+}
+
+}  // namespace
+
+std::vector<TimePlot> mainTimePlots(const Table& ts, const Table& rx, std::size_t max_points) {
+  if (!ts.has("t") || ts.rows.empty()) return {};
+  TimePlotSampler p{std::max<std::size_t>(1, (ts.rows.size() + max_points - 1) / std::max<std::size_t>(1, max_points)),
+                    {}, {}};
+  p.t = p.sampled(ts, "t");
+  speedAndTorquePlots(p, ts);
+  // Reactions: only when they are sampled on the time series' rows.
+  if (rx.rows.size() == ts.rows.size()) reactionPlots(p, rx);
+  return p.plots;
 }
 
 nlohmann::json timePlotsJson(const std::vector<TimePlot>& plots, double steady_begin, double steady_end) {
