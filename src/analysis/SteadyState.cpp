@@ -74,6 +74,51 @@ int settledAfter(const std::vector<CrankRevolution>& revolutions, double relativ
   return after;
 }
 
+// Appends one reason to a note ("; " between reasons).
+void appendNote(std::string& note, const std::string& why) { note = note.empty() ? why : note + "; " + why; }
+
+// The finite prefix of the rows: a run that blew up has nothing steady after the blow-up. A row
+// counts while t, phi_crank and (when the table has it) omega_crank are finite.
+std::size_t finiteRowCount(const Table& ts) {
+  const int it = ts.index("t"), ip = ts.index("phi_crank"), iw = ts.has("omega_crank") ? ts.index("omega_crank") : -1;
+  std::size_t n = 0;
+  while (n < ts.rows.size() && std::isfinite(ts.rows[n][it]) && std::isfinite(ts.rows[n][ip]) &&
+         (iw < 0 || std::isfinite(ts.rows[n][iw])))
+    ++n;
+  return n;
+}
+
+// Stalled or very slow run: no periodicity to judge; take the last 20 % of the run.
+void takeFallbackWindow(SteadyState& s, const std::vector<double>& t, std::size_t n, int wanted) {
+  s.window_revolutions = 0;
+  s.t_end = t[n - 1];
+  s.t_begin = t[n - 1] - kFallbackShare * (t[n - 1] - t[0]);
+  setRowRange(t, n, s);
+  appendNote(s.note, "no whole crank revolution; window = last 20 % of the run");
+  s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], std::max(wanted, 2));
+}
+
+// The window over the last whole revolutions, and whether the run settled before it.
+void takeRevolutionWindow(SteadyState& s, const std::vector<double>& t, std::size_t n, int wanted,
+                          double relative_tolerance) {
+  const int count = s.revolutions_counted;
+  const int after = settledAfter(s.revolutions, relative_tolerance);
+  s.after_revolutions = after;
+  s.t_settled = s.revolutions[after].t_begin;
+
+  const int needed = std::max(wanted, 2);  // one revolution cannot be compared with anything
+  s.reached = count >= needed && after <= count - needed;
+  if (count < needed)
+    appendNote(s.note, "only " + std::to_string(count) + " whole revolution(s), " + std::to_string(needed) +
+                           " needed to judge steady state");
+
+  s.window_revolutions = std::min(wanted, count);
+  s.t_begin = s.revolutions[count - s.window_revolutions].t_begin;
+  s.t_end = s.revolutions.back().t_end;
+  setRowRange(t, n, s);
+  s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], needed);
+}
+
 }  // namespace
 
 SteadyState detectSteadyState(const Table& ts, double window_revolutions, double relative_tolerance,
@@ -90,9 +135,7 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions, double
   const std::vector<double> omega =
       ts.has("omega_crank") ? ts.column("omega_crank") : std::vector<double>(t.size(), 0.0);
 
-  // Analyse only the finite prefix: a run that blew up has nothing steady after the blow-up.
-  std::size_t n = 0;
-  while (n < t.size() && std::isfinite(t[n]) && std::isfinite(phi[n]) && std::isfinite(omega[n])) ++n;
+  const std::size_t n = finiteRowCount(ts);
   s.finite_rows = n;
   if (n < t.size())
     s.note = "non-finite values from t = " + std::to_string(t[n]) + " s; analysed rows before it";
@@ -102,39 +145,12 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions, double
   }
 
   s.revolutions = wholeRevolutions(t, phi, omega, n, extrema);
-  const int count = static_cast<int>(s.revolutions.size());
-  s.revolutions_counted = count;
-
+  s.revolutions_counted = static_cast<int>(s.revolutions.size());
   const int wanted = std::max(1, static_cast<int>(std::floor(window_revolutions)));
-  if (count < 1) {
-    // Stalled or very slow run: no periodicity to judge; take the last 20 % of the run.
-    s.window_revolutions = 0;
-    s.t_end = t[n - 1];
-    s.t_begin = t[n - 1] - kFallbackShare * (t[n - 1] - t[0]);
-    setRowRange(t, n, s);
-    const std::string why = "no whole crank revolution; window = last 20 % of the run";
-    s.note = s.note.empty() ? why : s.note + "; " + why;
-    s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], std::max(wanted, 2));
-    return s;
-  }
-
-  const int after = settledAfter(s.revolutions, relative_tolerance);
-  s.after_revolutions = after;
-  s.t_settled = s.revolutions[after].t_begin;
-
-  const int needed = std::max(wanted, 2);  // one revolution cannot be compared with anything
-  s.reached = count >= needed && after <= count - needed;
-  if (count < needed) {
-    const std::string why = "only " + std::to_string(count) + " whole revolution(s), " +
-                            std::to_string(needed) + " needed to judge steady state";
-    s.note = s.note.empty() ? why : s.note + "; " + why;
-  }
-
-  s.window_revolutions = std::min(wanted, count);
-  s.t_begin = s.revolutions[count - s.window_revolutions].t_begin;
-  s.t_end = s.revolutions.back().t_end;
-  setRowRange(t, n, s);
-  s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], needed);
+  if (s.revolutions_counted < 1)
+    takeFallbackWindow(s, t, n, wanted);
+  else
+    takeRevolutionWindow(s, t, n, wanted, relative_tolerance);
   return s;
 }
 
@@ -182,15 +198,10 @@ SteadyState detectRunningSteadyState(const Table& ts, double window_revolutions,
     if (x.t < t_off) before.push_back(x);
   SteadyState s = detectSteadyState(running, window_revolutions, kSteadyStateRelativeTolerance, before);
   // Whole-run figures read finite_rows: count them over every row.
-  const int ip = ts.index("phi_crank"), iw = ts.has("omega_crank") ? ts.index("omega_crank") : -1;
-  std::size_t n = 0;
-  while (n < ts.rows.size() && std::isfinite(ts.rows[n][it]) && std::isfinite(ts.rows[n][ip]) &&
-         (iw < 0 || std::isfinite(ts.rows[n][iw])))
-    ++n;
-  if (s.finite_rows == running.rows.size()) s.finite_rows = n;
+  if (s.finite_rows == running.rows.size()) s.finite_rows = finiteRowCount(ts);
   char why[96];
   std::snprintf(why, sizeof why, "steady window searched before the switch-off at t = %.4g s", t_off);
-  s.note = s.note.empty() ? why : s.note + "; " + why;
+  appendNote(s.note, why);
   // The running ends at the switch-off: a longer run would not help, a later switch-off would.
   const std::size_t at = s.not_reached.rfind("run at least ");
   if (at != std::string::npos) {
