@@ -199,6 +199,46 @@ void appendBearingColumns(const Scene& sc, RunResult& run) {
   }
 }
 
+namespace {
+
+// The throws in their order along the shaft (stable: equal positions keep the cart order); each
+// throw's cart (1-based) and position go into `out`. Returns the carts' indices in that order.
+std::vector<int> throwsAlongShaft(const Scene& sc, CrankshaftSizing& out) {
+  std::vector<int> order(sc.carts.count);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return sc.crankshaft.throw_positions[a] < sc.crankshaft.throw_positions[b];
+  });
+  for (int j : order) {
+    out.throw_carts.push_back(j + 1);
+    out.throw_positions.push_back(sc.crankshaft.throw_positions[j]);
+  }
+  return order;
+}
+
+// One reactions row's bending moment at each throw and torque of each segment, into the peaks.
+// `split_torque`: the segments' torques follow from the pins' (not for a cam drive, whose force
+// does not act at the crank radius).
+void widenThrowPeaks(CrankshaftSizing& out, const ShaftBeam& beam, const ShaftLoads& L, std::size_t i,
+                     const std::vector<int>& order, bool split_torque) {
+  const std::vector<double> Rx = beam.reactions(L.px[i]), Ry = beam.reactions(L.py[i]);
+  double beyond = 0;  // −Σ T_j over the throws at or beyond the segment, from the far end
+  for (int q = int(order.size()) - 1; q >= 0; --q) {
+    const int j = order[q];
+    const double M = std::hypot(beam.bendingMoment(L.px[i], Rx, out.throw_positions[q]),
+                                beam.bendingMoment(L.py[i], Ry, out.throw_positions[q]));
+    beyond -= L.torque[i][j];
+    double& pm = out.bending_moment_peak[q];
+    if (std::isfinite(M)) pm = std::isfinite(pm) ? std::max(pm, M) : M;
+    if (split_torque && !(out.chain_torques && q >= 1) && std::isfinite(beyond)) {
+      double& pt = out.segment_torque_peak[q];
+      pt = std::isfinite(pt) ? std::max(pt, std::abs(beyond)) : std::abs(beyond);
+    }
+  }
+}
+
+}  // namespace
+
 CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const SteadyState& w) {
   CrankshaftSizing out;
   out.given = sc.crankshaft.given();
@@ -213,15 +253,7 @@ CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const Ste
   const ShaftBeam beam(sc.crankshaft.bearing_positions, loadPositions(sc));
   const ShaftLoads L = shaftLoads(sc, run);
   const std::vector<double> t = run.reactions.column("t");
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return sc.crankshaft.throw_positions[a] < sc.crankshaft.throw_positions[b];
-  });
-  for (int j : order) {
-    out.throw_carts.push_back(j + 1);
-    out.throw_positions.push_back(sc.crankshaft.throw_positions[j]);
-  }
+  const std::vector<int> order = throwsAlongShaft(sc, out);
   out.bending_moment_peak.assign(n, kNaN);
   // A cam's force does not act at the crank radius: no torque split for a cam drive.
   out.segment_torque_peak.assign(n, kNaN);
@@ -233,20 +265,7 @@ CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const Ste
   bool any = false;
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (!(t[i] >= w.t_begin && t[i] <= w.t_end)) continue;
-    const std::vector<double> Rx = beam.reactions(L.px[i]), Ry = beam.reactions(L.py[i]);
-    double beyond = 0;  // −Σ T_j over the throws at or beyond the segment, from the far end
-    for (int q = n - 1; q >= 0; --q) {
-      const int j = order[q];
-      const double M = std::hypot(beam.bendingMoment(L.px[i], Rx, out.throw_positions[q]),
-                                  beam.bendingMoment(L.py[i], Ry, out.throw_positions[q]));
-      beyond -= L.torque[i][j];
-      double& pm = out.bending_moment_peak[q];
-      if (std::isfinite(M)) pm = std::isfinite(pm) ? std::max(pm, M) : M;
-      if (!sc.hasCamDrive() && !(out.chain_torques && q >= 1) && std::isfinite(beyond)) {
-        double& pt = out.segment_torque_peak[q];
-        pt = std::isfinite(pt) ? std::max(pt, std::abs(beyond)) : std::abs(beyond);
-      }
-    }
+    widenThrowPeaks(out, beam, L, i, order, !sc.hasCamDrive());
     any = true;
   }
   if (!any) {
