@@ -97,6 +97,67 @@ std::vector<double> loadPositions(const Scene& sc) {
   return z;
 }
 
+// Nodes: every distinct support and load position, ascending.
+std::vector<double> beamNodes(const std::vector<double>& bearings, const std::vector<double>& loads) {
+  std::vector<double> nodes = bearings;
+  nodes.insert(nodes.end(), loads.begin(), loads.end());
+  std::sort(nodes.begin(), nodes.end());
+  const double span = nodes.back() - nodes.front();
+  const double tol = 1e-12 * std::max(1.0, span);
+  nodes.erase(std::unique(nodes.begin(), nodes.end(), [&](double a, double b) { return std::abs(a - b) <= tol; }),
+              nodes.end());
+  return nodes;
+}
+
+std::size_t nearestNode(const std::vector<double>& nodes, double z) {
+  std::size_t best = 0;
+  for (std::size_t q = 1; q < nodes.size(); ++q)
+    if (std::abs(nodes[q] - z) < std::abs(nodes[best] - z)) best = q;
+  return best;
+}
+
+// The beam's stiffness on (w, θ) of every node: the Hermite elements between the nodes, assembled.
+Eigen::MatrixXd beamStiffness(const std::vector<double>& nodes) {
+  const std::size_t N = nodes.size(), dofs = 2 * N;
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(dofs, dofs);
+  for (std::size_t q = 0; q + 1 < N; ++q) K.block<4, 4>(2 * q, 2 * q) += elementStiffness(nodes[q + 1] - nodes[q]);
+  return K;
+}
+
+// The beam held at its supports: its stiffness, the supports' and the free degrees of freedom
+// (all but the deflection at the supports), and the free block's factorisation.
+struct SupportedBeam {
+  Eigen::MatrixXd K;
+  std::vector<std::size_t> support_dof, free;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu;
+
+  SupportedBeam(const std::vector<double>& nodes, const std::vector<double>& bearings) : K(beamStiffness(nodes)) {
+    std::vector<bool> fixed(K.rows(), false);
+    for (double z : bearings) {
+      support_dof.push_back(2 * nearestNode(nodes, z));
+      fixed[support_dof.back()] = true;
+    }
+    for (std::size_t d = 0; d < fixed.size(); ++d)
+      if (!fixed[d]) free.push_back(d);
+    Eigen::MatrixXd Kff(free.size(), free.size());
+    for (std::size_t a = 0; a < free.size(); ++a)
+      for (std::size_t b = 0; b < free.size(); ++b) Kff(a, b) = K(free[a], free[b]);
+    lu.compute(Kff);
+  }
+
+  // The supports' forces on the beam under a unit load on degree of freedom `load_dof`: K·u = f + r.
+  Eigen::VectorXd forcesUnderUnitLoad(std::size_t load_dof) const {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(K.rows());
+    f[load_dof] = 1.0;
+    Eigen::VectorXd ff(free.size());
+    for (std::size_t a = 0; a < free.size(); ++a) ff[a] = f[free[a]];
+    const Eigen::VectorXd uf = lu.solve(ff);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(K.rows());
+    for (std::size_t a = 0; a < free.size(); ++a) u[free[a]] = uf[a];
+    return K * u - f;
+  }
+};
+
 }  // namespace
 
 ShaftBeam::ShaftBeam(std::vector<double> bearings, std::vector<double> load_positions)
@@ -104,48 +165,12 @@ ShaftBeam::ShaftBeam(std::vector<double> bearings, std::vector<double> load_posi
   if (bearings_.size() < 2) throw std::invalid_argument("ShaftBeam: at least two bearings");
   for (std::size_t k = 1; k < bearings_.size(); ++k)
     if (!(bearings_[k] > bearings_[k - 1])) throw std::invalid_argument("ShaftBeam: bearings must ascend");
-  // Nodes: every distinct support and load position, ascending.
-  std::vector<double> nodes = bearings_;
-  nodes.insert(nodes.end(), loads_.begin(), loads_.end());
-  std::sort(nodes.begin(), nodes.end());
-  const double span = nodes.back() - nodes.front();
-  const double tol = 1e-12 * std::max(1.0, span);
-  nodes.erase(std::unique(nodes.begin(), nodes.end(), [&](double a, double b) { return std::abs(a - b) <= tol; }),
-              nodes.end());
-  auto nodeOf = [&](double z) {
-    std::size_t best = 0;
-    for (std::size_t q = 1; q < nodes.size(); ++q)
-      if (std::abs(nodes[q] - z) < std::abs(nodes[best] - z)) best = q;
-    return best;
-  };
-  const std::size_t N = nodes.size(), dofs = 2 * N;
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(dofs, dofs);
-  for (std::size_t q = 0; q + 1 < N; ++q) K.block<4, 4>(2 * q, 2 * q) += elementStiffness(nodes[q + 1] - nodes[q]);
-  // Free degrees of freedom: all but the deflection at the supports.
-  std::vector<bool> fixed(dofs, false);
-  std::vector<std::size_t> support_dof;
-  for (double z : bearings_) {
-    support_dof.push_back(2 * nodeOf(z));
-    fixed[support_dof.back()] = true;
-  }
-  std::vector<std::size_t> free;
-  for (std::size_t d = 0; d < dofs; ++d)
-    if (!fixed[d]) free.push_back(d);
-  Eigen::MatrixXd Kff(free.size(), free.size());
-  for (std::size_t a = 0; a < free.size(); ++a)
-    for (std::size_t b = 0; b < free.size(); ++b) Kff(a, b) = K(free[a], free[b]);
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(Kff);
+  const std::vector<double> nodes = beamNodes(bearings_, loads_);
+  const SupportedBeam beam(nodes, bearings_);
   influence_.assign(bearings_.size(), std::vector<double>(loads_.size(), 0.0));
   for (std::size_t i = 0; i < loads_.size(); ++i) {
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs);
-    f[2 * nodeOf(loads_[i])] = 1.0;
-    Eigen::VectorXd ff(free.size());
-    for (std::size_t a = 0; a < free.size(); ++a) ff[a] = f[free[a]];
-    const Eigen::VectorXd uf = lu.solve(ff);
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(dofs);
-    for (std::size_t a = 0; a < free.size(); ++a) u[free[a]] = uf[a];
-    const Eigen::VectorXd r = K * u - f;  // K·u = f + r: r the supports' forces on the beam
-    for (std::size_t k = 0; k < bearings_.size(); ++k) influence_[k][i] = r[support_dof[k]];
+    const Eigen::VectorXd r = beam.forcesUnderUnitLoad(2 * nearestNode(nodes, loads_[i]));
+    for (std::size_t k = 0; k < bearings_.size(); ++k) influence_[k][i] = r[beam.support_dof[k]];
   }
 }
 
