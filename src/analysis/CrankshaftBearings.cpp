@@ -51,23 +51,34 @@ struct ShaftLoads {
   std::vector<std::vector<double>> torque;  // [row][throw]: T_j = x_pin·P_y − y_pin·P_x [N·m]
 };
 
+// The crank's angle, speed and acceleration at the reactions rows.
+struct CrankOnRows {
+  std::vector<double> phi, w, eps;
+};
+
+CrankOnRows crankOnRows(const RunResult& run, const std::vector<double>& t) {
+  const std::vector<double> ts_t = run.timeseries.column("t");
+  return {onRows(ts_t, run.timeseries.column("phi_crank"), t), onRows(ts_t, run.timeseries.column("omega_crank"), t),
+          onRows(ts_t, run.timeseries.column("eps_crank"), t)};
+}
+
+// One component of every crank pin's force column (axis "x" or "y"), carts in order.
+std::vector<std::vector<double>> pinForceColumns(const Table& rx, int n, const char* axis) {
+  std::vector<std::vector<double>> f(n);
+  for (int j = 0; j < n; ++j) f[j] = rx.column(std::string("crankpin_") + axis + "_" + std::to_string(j + 1));
+  return f;
+}
+
 ShaftLoads shaftLoads(const Scene& sc, const RunResult& run) {
   const Table& rx = run.reactions;
   const int n = sc.carts.count;
   const std::vector<double> t = rx.column("t");
   const std::vector<double> Rx = rx.column("bearing_x"), Ry = rx.column("bearing_y");
-  const std::vector<double> ts_t = run.timeseries.column("t");
-  const std::vector<double> phi = onRows(ts_t, run.timeseries.column("phi_crank"), t);
-  const std::vector<double> w = onRows(ts_t, run.timeseries.column("omega_crank"), t);
-  const std::vector<double> eps = onRows(ts_t, run.timeseries.column("eps_crank"), t);
+  const CrankOnRows k = crankOnRows(run, t);
   // rods.model = split: half the rod's mass sits on each crank pin and turns with the shaft.
   const double m_pin = (sc.rods.model == RodModel::Split && !sc.hasCamDrive()) ? 0.5 * sc.rods.mass : 0.0;
   const double g = sc.loads.gravity, r = sc.crank.radius;
-  std::vector<std::vector<double>> fx(n), fy(n);
-  for (int j = 0; j < n; ++j) {
-    fx[j] = rx.column("crankpin_x_" + std::to_string(j + 1));
-    fy[j] = rx.column("crankpin_y_" + std::to_string(j + 1));
-  }
+  const std::vector<std::vector<double>> fx = pinForceColumns(rx, n, "x"), fy = pinForceColumns(rx, n, "y");
   ShaftLoads L;
   L.px.assign(t.size(), std::vector<double>(n + 1));
   L.py = L.px;
@@ -75,8 +86,8 @@ ShaftLoads shaftLoads(const Scene& sc, const RunResult& run) {
   for (std::size_t i = 0; i < t.size(); ++i) {
     double rest_x = Rx[i], rest_y = Ry[i];
     for (int j = 0; j < n; ++j) {
-      const double th = phi[i] + sc.crankPhase(j), c = std::cos(th), s = std::sin(th);
-      const double ax = r * (-eps[i] * s - w[i] * w[i] * c), ay = r * (eps[i] * c - w[i] * w[i] * s);
+      const double th = k.phi[i] + sc.crankPhase(j), c = std::cos(th), s = std::sin(th);
+      const double ax = r * (-k.eps[i] * s - k.w[i] * k.w[i] * c), ay = r * (k.eps[i] * c - k.w[i] * k.w[i] * s);
       const double Px = fx[j][i] - m_pin * ax, Py = fy[j][i] - m_pin * (ay + g);
       L.px[i][j] = Px;
       L.py[i][j] = Py;
