@@ -161,6 +161,35 @@ SizingCheck heatingCheck(const DriveSizing& s, bool turning) {
   return h;
 }
 
+// The steady window's motoring and braking peaks against M_kr, in words.
+std::string breakdownPeaksReason(const MotorSizing& m) {
+  std::string reason = "steady window: motoring peak " + fmt3(m.torque_motoring_peak) + " N·m, braking (generating) peak " +
+                       fmt3(m.torque_generating_peak) + " N·m, the larger against M_kr " + fmt3(m.breakdown_torque) + " N·m";
+  if (m.torque_generating_peak > m.torque_motoring_peak)
+    reason += " (the load drives the motor as a generator there; the catalogue gives no generating breakdown "
+              "torque, so the motoring one is used, on the safe side" +
+              (m.breakdown_torque_generating != m.breakdown_torque
+                   ? "; the fitted law's own, an extrapolation, is " + fmt3(m.breakdown_torque_generating) + " N·m)"
+                   : std::string(")"));
+  return reason + "; whole run peak |M| " + fmt3(m.whole_run.torque_shaft_peak) + " N·m";
+}
+
+// Where the run overrules the margin: still starting, not turning, or no steady running.
+void overruleBreakdown(SizingCheck& k, const DriveSizing& s, bool turning) {
+  if (s.motion == "starting") {
+    notApplicable(k, kTooShort);
+  } else if (!turning) {
+    k.verdict = "FAIL";
+    k.reason = notTurning(s) + ": " +
+               (s.stall_cause.empty() ? std::string("the load needs more than the motor gives") : s.stall_cause) +
+               " (the measured peak |M| / M_kr " + fmt3(s.motor.peak_over_breakdown) +
+               " is that of a drive that does not run, not a margin)";
+    if (!(k.value >= kBreakdownMargin)) k.value = kNaN;
+  } else if (!s.steady_reached) {
+    notApplicable(k, s.steady_not_reached + " (a start passes M_kr by design; the margin is the steady running's)");
+  }
+}
+
 SizingCheck breakdownCheck(const DriveSizing& s, bool turning) {
   const MotorSizing& m = s.motor;
   // The breakdown torque falls with the square of the voltage, and IEC 60034-1 (zone A) lets the
@@ -174,27 +203,8 @@ SizingCheck breakdownCheck(const DriveSizing& s, bool turning) {
   k.method = "IEC 60034-1 zone A: supply voltage down to 95 %, breakdown torque M_kr falling with the voltage squared";
   k.basis = "M_kr of the motor's law (motor.*); the motoring M_kr also against braking peaks (the catalogue gives "
             "no generating one)";
-  k.reason = "steady window: motoring peak " + fmt3(m.torque_motoring_peak) + " N·m, braking (generating) peak " +
-             fmt3(m.torque_generating_peak) + " N·m, the larger against M_kr " + fmt3(m.breakdown_torque) + " N·m";
-  if (m.torque_generating_peak > m.torque_motoring_peak)
-    k.reason += " (the load drives the motor as a generator there; the catalogue gives no generating breakdown "
-                "torque, so the motoring one is used, on the safe side" +
-                (m.breakdown_torque_generating != m.breakdown_torque
-                     ? "; the fitted law's own, an extrapolation, is " + fmt3(m.breakdown_torque_generating) + " N·m)"
-                     : std::string(")"));
-  k.reason += "; whole run peak |M| " + fmt3(m.whole_run.torque_shaft_peak) + " N·m";
-  if (s.motion == "starting") {
-    notApplicable(k, kTooShort);
-  } else if (!turning) {
-    k.verdict = "FAIL";
-    k.reason = notTurning(s) + ": " +
-               (s.stall_cause.empty() ? std::string("the load needs more than the motor gives") : s.stall_cause) +
-               " (the measured peak |M| / M_kr " + fmt3(m.peak_over_breakdown) +
-               " is that of a drive that does not run, not a margin)";
-    if (!(k.value >= kBreakdownMargin)) k.value = kNaN;
-  } else if (!s.steady_reached) {
-    notApplicable(k, s.steady_not_reached + " (a start passes M_kr by design; the margin is the steady running's)");
-  }
+  k.reason = breakdownPeaksReason(m);
+  overruleBreakdown(k, s, turning);
   return k;
 }
 

@@ -60,10 +60,24 @@ std::string fmt(const json& v, const char* f, double scale = 1.0) {
   return buf;
 }
 
+// The motor over the whole run: torque, rotor losses and heating, the start's heat, line power, slip.
+json motorWholeRunJson(const MotorWholeRun& r) {
+  return {{"torque_shaft", {{"mean", num(r.torque_shaft_mean)}, {"rms", num(r.torque_shaft_rms)}, {"peak", num(r.torque_shaft_peak)}}},
+          {"rms_over_nominal", num(r.rms_over_nominal)},
+          {"rotor_losses_mean", num(r.rotor_losses_mean)},
+          {"thermal_over_nominal", num(r.thermal_over_nominal)},
+          {"thermal_basis", r.thermal_basis},
+          {"start_heat", num(r.start_heat)},
+          {"start_duration", num(r.start_duration)},
+          {"start_heat_above_steady", num(r.start_heat_above_steady)},
+          {"starts_per_hour", num(r.starts_per_hour)},
+          {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
+          {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}};
+}
+
 // The motor's torques, powers and slip in the steady window and over the whole run; the heating
 // and breakdown verdicts come from the checks.
 json motorSizingJson(const MotorSizing& m, const json& rms_check, const json& peak_check) {
-  const MotorWholeRun& r = m.whole_run;
   return {
       {"torque_shaft", {{"mean", num(m.torque_shaft_mean)}, {"rms", num(m.torque_shaft_rms)}, {"peak", num(m.torque_shaft_peak)}}},
       {"torque_crank", {{"mean", num(m.torque_crank_mean)}, {"rms", num(m.torque_crank_rms)}, {"peak", num(m.torque_crank_peak)}}},
@@ -83,18 +97,7 @@ json motorSizingJson(const MotorSizing& m, const json& rms_check, const json& pe
       {"line_power_basis", m.line_power_basis},
       {"slip", {{"min", num(m.slip_min)}, {"max", num(m.slip_max)}}},
       {"energy_per_revolution", num(m.energy_per_revolution)},
-      {"whole_run",
-       {{"torque_shaft", {{"mean", num(r.torque_shaft_mean)}, {"rms", num(r.torque_shaft_rms)}, {"peak", num(r.torque_shaft_peak)}}},
-        {"rms_over_nominal", num(r.rms_over_nominal)},
-        {"rotor_losses_mean", num(r.rotor_losses_mean)},
-        {"thermal_over_nominal", num(r.thermal_over_nominal)},
-        {"thermal_basis", r.thermal_basis},
-        {"start_heat", num(r.start_heat)},
-        {"start_duration", num(r.start_duration)},
-        {"start_heat_above_steady", num(r.start_heat_above_steady)},
-        {"starts_per_hour", num(r.starts_per_hour)},
-        {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
-        {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}}}};
+      {"whole_run", motorWholeRunJson(m.whole_run)}};
 }
 
 // The flywheel the speed fluctuation asks for.
@@ -241,13 +244,9 @@ std::string sizingHeading(const json& summary, bool steady) {
   return o.str();
 }
 
-// The motor's torques, powers, slip and energy per revolution; `win` names the window.
-std::string motorText(const json& m, const char* win) {
+// The motor's torques at the rotor and at the crank, its nominal and breakdown torques.
+std::string motorTorqueText(const json& m, const char* win) {
   std::ostringstream o;
-  if (!m.is_object()) {
-    o << "  motor                             n/a (no motor torque in this run)\n";
-    return o.str();
-  }
   const json &ts = jsonMember(m, "torque_shaft"), &tc = jsonMember(m, "torque_crank");
   const json& r = jsonMember(m, "whole_run");
   o << "  motor torque at the rotor M       mean " << fmt(jsonMember(ts, "mean"), "%.4g") << ", RMS "
@@ -263,6 +262,13 @@ std::string motorText(const json& m, const char* win) {
   if (jsonMember(m, "breakdown_torque_catalogue").is_number())
     o << " (the catalogue's (M_k/M_n)·P_n/ω_n: " << fmt(jsonMember(m, "breakdown_torque_catalogue"), "%.4g") << " N·m)";
   o << "\n";
+  return o.str();
+}
+
+// The motor's shaft and line power, its slip and its energy per crank revolution.
+std::string motorPowerText(const json& m, const char* win) {
+  std::ostringstream o;
+  const json& r = jsonMember(m, "whole_run");
   const json &ps = jsonMember(m, "power_shaft"), &pl = jsonMember(m, "power_line"), &sl = jsonMember(m, "slip");
   o << "  shaft power M·ω_r                 mean " << fmt(jsonMember(ps, "mean"), "%.4g", 1e-3) << ", peak "
     << fmt(jsonMember(ps, "peak"), "%.4g", 1e-3) << " kW" << win << "\n";
@@ -279,6 +285,12 @@ std::string motorText(const json& m, const char* win) {
     << (e_rev.is_number() ? fmt(e_rev, "%.4g", 1e-3) + " kJ" : std::string("n/a (the crank does not turn in the window)"))
     << "\n";
   return o.str();
+}
+
+// The motor's torques, powers, slip and energy per revolution; `win` names the window.
+std::string motorText(const json& m, const char* win) {
+  if (!m.is_object()) return "  motor                             n/a (no motor torque in this run)\n";
+  return motorTorqueText(m, win) + motorPowerText(m, win);
 }
 
 // The coupling's torques and its rating; nothing without them. `win` names the window.
