@@ -146,6 +146,23 @@ CouplingSizing sizeCoupling(const Scene& sc, const Table& ts, std::size_t b, std
   return c;
 }
 
+// The steady window's and the whole run's time spans, and the crank revolutions in the window
+// (rows [b, e) of the finite rows [0, n)).
+void measureSpans(DriveSizing& s, const Table& ts, const SteadyState& w, std::size_t n, std::size_t b, std::size_t e) {
+  s.t_begin = w.t_begin;
+  s.t_end = w.t_end;
+  s.revolutions = kNaN;
+  s.run_t_begin = s.run_t_end = kNaN;
+  if (ts.has("t") && n >= 1) {
+    s.run_t_begin = ts.rows.front()[ts.index("t")];
+    s.run_t_end = ts.rows[n - 1][ts.index("t")];
+  }
+  if (ts.has("phi_crank") && e >= b + 2) {
+    const int k = ts.index("phi_crank");
+    s.revolutions = std::abs(ts.rows[e - 1][k] - ts.rows[b][k]) / kTwoPi;
+  }
+}
+
 // Why a drive does not start or turn, and whether it can: the start-up answers' one sentence.
 void takeStartAnswers(DriveSizing& s, const StartUp* start_up) {
   s.start_load_ratio = kNaN;
@@ -240,21 +257,10 @@ DriveSizing computeDriveSizing(const Scene& sc, const RunResult& run, const Stea
                                const StartLoad* load) {
   DriveSizing s;
   const Table& ts = run.timeseries;
-  s.t_begin = w.t_begin;
-  s.t_end = w.t_end;
   s.motion = motion.empty() ? (turning ? "turning" : "not turning") : motion;
-  s.revolutions = kNaN;
   const std::size_t n = std::min(w.finite_rows, ts.rows.size());
   const std::size_t b = std::min(w.row_begin, n), e = std::min(w.row_end, n);
-  s.run_t_begin = s.run_t_end = kNaN;
-  if (ts.has("t") && n >= 1) {
-    s.run_t_begin = ts.rows.front()[ts.index("t")];
-    s.run_t_end = ts.rows[n - 1][ts.index("t")];
-  }
-  if (ts.has("phi_crank") && e >= b + 2) {
-    const int k = ts.index("phi_crank");
-    s.revolutions = std::abs(ts.rows[e - 1][k] - ts.rows[b][k]) / kTwoPi;
-  }
+  measureSpans(s, ts, w, n, b, e);
   s.motor = sizeMotor(sc, ts, b, e, n, s.revolutions, turning, start_up);
   s.steady_reached = w.reached;
   s.steady_not_reached = w.not_reached;
