@@ -273,6 +273,21 @@ void widenThrowPeaks(CrankshaftSizing& out, const ShaftBeam& beam, const ShaftLo
   }
 }
 
+// The peaks over the reactions rows inside the steady window; false when the window holds none.
+bool widenOverSteadyRows(CrankshaftSizing& out, const Scene& sc, const RunResult& run, const SteadyState& w,
+                         const std::vector<int>& order) {
+  const ShaftBeam beam(sc.crankshaft.bearing_positions, loadPositions(sc));
+  const ShaftLoads L = shaftLoads(sc, run);
+  const std::vector<double> t = run.reactions.column("t");
+  bool any = false;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!(t[i] >= w.t_begin && t[i] <= w.t_end)) continue;
+    widenThrowPeaks(out, beam, L, i, order, !sc.hasCamDrive());
+    any = true;
+  }
+  return any;
+}
+
 }  // namespace
 
 CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const SteadyState& w) {
@@ -286,9 +301,6 @@ CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const Ste
     return out;
   }
   const int n = sc.carts.count;
-  const ShaftBeam beam(sc.crankshaft.bearing_positions, loadPositions(sc));
-  const ShaftLoads L = shaftLoads(sc, run);
-  const std::vector<double> t = run.reactions.column("t");
   const std::vector<int> order = throwsAlongShaft(sc, out);
   out.bending_moment_peak.assign(n, kNaN);
   // A cam's force does not act at the crank radius: no torque split for a cam drive.
@@ -298,13 +310,7 @@ CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const Ste
   // from the coupling to the first throw is rigid.
   const ShaftTorsionSummary torsion = computeShaftTorsion(sc, run, w, true);
   out.chain_torques = torsion.applies;
-  bool any = false;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (!(t[i] >= w.t_begin && t[i] <= w.t_end)) continue;
-    widenThrowPeaks(out, beam, L, i, order, !sc.hasCamDrive());
-    any = true;
-  }
-  if (!any) {
+  if (!widenOverSteadyRows(out, sc, run, w, order)) {
     out.reason = "no reactions row in the steady window";
     return out;
   }

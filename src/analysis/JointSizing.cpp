@@ -269,13 +269,19 @@ void addMainBearings(std::vector<JointSizing>& out, const JointRun& u) {
   }
 }
 
-}  // namespace
+// The main bearings' resultant, when the shaft's bearings are not placed: one bearing carrying it all.
+JointSizing mainBearingResultant(const JointRun& u) {
+  JointSizing x = loadOf(kMainBearing, 0, "bearing_x, bearing_y", "crank speed |ω_crank|", u.t,
+                         magnitude(u.rx.column("bearing_x"), u.rx.column("bearing_y")), u.crank_speed, u.b, u.e,
+                         u.sc.sizing.rating_main_bearing);
+  x.life_basis = "the life of one bearing carrying the whole resultant, turning with the crank; " +
+                 std::string(kHoursAtMeanSpeed);
+  rateLife(x, kMainBearing, u.no_life);
+  return x;
+}
 
-std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const SteadyState& w,
-                                    const std::string& motion) {
-  std::vector<JointSizing> out;
-  JointRun u{sc, run.reactions, run.timeseries};
-  if (!u.rx.has("t") || u.rx.rows.empty() || !u.ts.has("t")) return out;
+// The reactions rows of the steady window, the crank's motion on them and the rod's swing.
+void readJointRun(JointRun& u, const SteadyState& w, const std::string& motion) {
   u.t = u.rx.column("t");
   u.ts_t = u.ts.column("t");
   while (u.b < u.t.size() && !(u.t[u.b] >= w.t_begin)) ++u.b;
@@ -285,23 +291,26 @@ std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const
   if (u.ts.has("omega_crank")) u.crank_speed = resample(u.ts_t, u.ts.column("omega_crank"), u.t);
   if (u.ts.has("phi_crank")) u.crank_angle = resample(u.ts_t, u.ts.column("phi_crank"), u.t);
   u.crank_frequency = meanAbs(u.t, u.crank_speed, u.b, u.e) / kTwoPi;
-  u.gamma = sc.hasCamDrive() ? kNaN : rodSwingAmplitude(sc.crank.radius, sc.rods.length);
+  u.gamma = u.sc.hasCamDrive() ? kNaN : rodSwingAmplitude(u.sc.crank.radius, u.sc.rods.length);
   u.swing_known = std::isfinite(u.gamma) && !u.crank_speed.empty() && !u.crank_angle.empty();
+}
+
+}  // namespace
+
+std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const SteadyState& w,
+                                    const std::string& motion) {
+  std::vector<JointSizing> out;
+  JointRun u{sc, run.reactions, run.timeseries};
+  if (!u.rx.has("t") || u.rx.rows.empty() || !u.ts.has("t")) return out;
+  readJointRun(u, w, motion);
   for (int j = 1; j <= sc.carts.count; ++j) {
     addGuideRollers(out, u, j);
     addRodJoints(out, u, j);
   }
-  if (u.rx.has("bearing_x_1") && u.rx.has("bearing_y_1") && !u.crank_speed.empty()) {
+  if (u.rx.has("bearing_x_1") && u.rx.has("bearing_y_1") && !u.crank_speed.empty())
     addMainBearings(out, u);
-  } else if (u.rx.has("bearing_x") && u.rx.has("bearing_y") && !u.crank_speed.empty()) {
-    JointSizing x = loadOf(kMainBearing, 0, "bearing_x, bearing_y", "crank speed |ω_crank|", u.t,
-                           magnitude(u.rx.column("bearing_x"), u.rx.column("bearing_y")), u.crank_speed, u.b, u.e,
-                           sc.sizing.rating_main_bearing);
-    x.life_basis = "the life of one bearing carrying the whole resultant, turning with the crank; " +
-                   std::string(kHoursAtMeanSpeed);
-    rateLife(x, kMainBearing, u.no_life);
-    out.push_back(std::move(x));
-  }
+  else if (u.rx.has("bearing_x") && u.rx.has("bearing_y") && !u.crank_speed.empty())
+    out.push_back(mainBearingResultant(u));
   return out;
 }
 
