@@ -22,12 +22,9 @@ void setRowRange(const std::vector<double>& t, std::size_t n, SteadyState& s) {
   if (s.row_end < s.row_begin) s.row_end = s.row_begin;
 }
 
-// The run's whole crank revolutions, each with its mean speed and its lowest and highest speed.
-std::vector<CrankRevolution> wholeRevolutions(const std::vector<double>& t, const std::vector<double>& phi,
-                                              const std::vector<double>& omega, std::size_t n,
-                                              const std::vector<CrankSpeedExtremum>& extrema) {
-  // Whole revolutions: first crossings of phi_0 + 2πk in the direction of net rotation.
-  const double dir = phi[n - 1] >= phi[0] ? 1.0 : -1.0;
+// Whole revolutions: the times of the first crossings of phi_0 + 2πk in the direction `dir` of net rotation.
+std::vector<double> revolutionCrossings(const std::vector<double>& t, const std::vector<double>& phi, std::size_t n,
+                                        double dir) {
   std::vector<double> crossings{t[0]};
   for (std::size_t i = 1; i < n; ++i) {
     const double u_prev = dir * (phi[i - 1] - phi[0]);
@@ -39,21 +36,41 @@ std::vector<CrankRevolution> wholeRevolutions(const std::vector<double>& t, cons
       target = kTwoPi * static_cast<double>(crossings.size());
     }
   }
+  return crossings;
+}
+
+// Widens each revolution's lowest and highest speed by speeds given in time order (a cursor over
+// the revolutions).
+class ExtremesWidener {
+ public:
+  explicit ExtremesWidener(std::vector<CrankRevolution>& revolutions) : revolutions_(revolutions) {}
+  void widen(double tq, double w) {
+    while (r_ < revolutions_.size() && revolutions_[r_].t_end < tq) ++r_;
+    if (r_ == revolutions_.size() || tq < revolutions_[r_].t_begin) return;
+    revolutions_[r_].omega_min = std::min(revolutions_[r_].omega_min, w);
+    revolutions_[r_].omega_max = std::max(revolutions_[r_].omega_max, w);
+  }
+
+ private:
+  std::vector<CrankRevolution>& revolutions_;
+  std::size_t r_ = 0;
+};
+
+// The run's whole crank revolutions, each with its mean speed and its lowest and highest speed.
+std::vector<CrankRevolution> wholeRevolutions(const std::vector<double>& t, const std::vector<double>& phi,
+                                              const std::vector<double>& omega, std::size_t n,
+                                              const std::vector<CrankSpeedExtremum>& extrema) {
+  const double dir = phi[n - 1] >= phi[0] ? 1.0 : -1.0;
+  const std::vector<double> crossings = revolutionCrossings(t, phi, n, dir);
   std::vector<CrankRevolution> revolutions;
   for (std::size_t k = 0; k + 1 < crossings.size(); ++k)
     revolutions.push_back({crossings[k], crossings[k + 1], dir * kTwoPi / (crossings[k + 1] - crossings[k]),
                            std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
   // Each revolution's extremes: its rows and the extrema located inside the integrator's steps.
-  std::size_t r = 0;
-  auto widen = [&](double tq, double w) {
-    while (r < revolutions.size() && revolutions[r].t_end < tq) ++r;
-    if (r == revolutions.size() || tq < revolutions[r].t_begin) return;
-    revolutions[r].omega_min = std::min(revolutions[r].omega_min, w);
-    revolutions[r].omega_max = std::max(revolutions[r].omega_max, w);
-  };
-  for (std::size_t i = 0; i < n; ++i) widen(t[i], omega[i]);
-  r = 0;
-  for (const CrankSpeedExtremum& x : extrema) widen(x.t, x.omega);
+  ExtremesWidener by_rows(revolutions);
+  for (std::size_t i = 0; i < n; ++i) by_rows.widen(t[i], omega[i]);
+  ExtremesWidener by_located(revolutions);
+  for (const CrankSpeedExtremum& x : extrema) by_located.widen(x.t, x.omega);
   return revolutions;
 }
 
@@ -88,6 +105,18 @@ std::size_t finiteRowCount(const Table& ts) {
   return n;
 }
 
+// Analyse only the finite prefix (finiteRowCount), noting where the run has non-finite values;
+// false when fewer than two rows remain.
+bool takeFiniteRows(SteadyState& s, const Table& ts, const std::vector<double>& t) {
+  const std::size_t n = finiteRowCount(ts);
+  s.finite_rows = n;
+  if (n < t.size())
+    s.note = "non-finite values from t = " + std::to_string(t[n]) + " s; analysed rows before it";
+  if (n >= 2) return true;
+  s.note = s.note.empty() ? "fewer than two rows" : s.note + "; fewer than two finite rows";
+  return false;
+}
+
 // Stalled or very slow run: no periodicity to judge; take the last 20 % of the run.
 void takeFallbackWindow(SteadyState& s, const std::vector<double>& t, std::size_t n, int wanted) {
   s.window_revolutions = 0;
@@ -119,6 +148,16 @@ void takeRevolutionWindow(SteadyState& s, const std::vector<double>& t, std::siz
   s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], needed);
 }
 
+// The running ends at the switch-off: a longer run would not help, a later switch-off would.
+void adviseLaterSwitchOff(SteadyState& s, double t_off) {
+  const std::size_t at = s.not_reached.rfind("run at least ");
+  if (at == std::string::npos) return;
+  char later[160];
+  std::snprintf(later, sizeof later,
+                "switch the motor off later (motor.stop.t_off = %.4g s): the running before it is too short", t_off);
+  s.not_reached = s.not_reached.substr(0, at) + later;
+}
+
 }  // namespace
 
 SteadyState detectSteadyState(const Table& ts, double window_revolutions, double relative_tolerance,
@@ -134,16 +173,8 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions, double
   const std::vector<double> phi = ts.column("phi_crank");
   const std::vector<double> omega =
       ts.has("omega_crank") ? ts.column("omega_crank") : std::vector<double>(t.size(), 0.0);
-
-  const std::size_t n = finiteRowCount(ts);
-  s.finite_rows = n;
-  if (n < t.size())
-    s.note = "non-finite values from t = " + std::to_string(t[n]) + " s; analysed rows before it";
-  if (n < 2) {
-    s.note = s.note.empty() ? "fewer than two rows" : s.note + "; fewer than two finite rows";
-    return s;
-  }
-
+  if (!takeFiniteRows(s, ts, t)) return s;
+  const std::size_t n = s.finite_rows;
   s.revolutions = wholeRevolutions(t, phi, omega, n, extrema);
   s.revolutions_counted = static_cast<int>(s.revolutions.size());
   const int wanted = std::max(1, static_cast<int>(std::floor(window_revolutions)));
@@ -202,14 +233,7 @@ SteadyState detectRunningSteadyState(const Table& ts, double window_revolutions,
   char why[96];
   std::snprintf(why, sizeof why, "steady window searched before the switch-off at t = %.4g s", t_off);
   appendNote(s.note, why);
-  // The running ends at the switch-off: a longer run would not help, a later switch-off would.
-  const std::size_t at = s.not_reached.rfind("run at least ");
-  if (at != std::string::npos) {
-    char later[160];
-    std::snprintf(later, sizeof later,
-                  "switch the motor off later (motor.stop.t_off = %.4g s): the running before it is too short", t_off);
-    s.not_reached = s.not_reached.substr(0, at) + later;
-  }
+  adviseLaterSwitchOff(s, t_off);
   return s;
 }
 
