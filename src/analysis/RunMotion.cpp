@@ -18,11 +18,11 @@ namespace {
 // last three whole revolutions each above (or each below) the one before by more than kRise. A settling or beating drive has
 // revolution means that fall back or level off; a drive running up on a large inertia keeps
 // gaining for many revolutions (its verdicts would read the run-up as running).
-bool stillGainingSpeed(const Table& ts) {
-  constexpr double kRise = 0.005;  // [-] relative gain per revolution that counts as running up
+// Times at which the crank completed each whole revolution, interpolated between rows (a crossing
+// taken at its row would quantise a 0.12 s revolution to 5 ms steps, 4 %, and hide a 1 % trend);
+// the first is the first finite row's time.
+std::vector<double> revolutionTimes(const Table& ts) {
   const int it = ts.index("t"), ip = ts.index("phi_crank");
-  // Times at which the crank completed each whole revolution, interpolated between rows (a crossing
-  // taken at its row would quantise a 0.12 s revolution to 5 ms steps, 4 %, and hide a 1 % trend).
   std::vector<double> t_rev;
   double phi0 = NAN, next = NAN, t_prev = NAN, phi_prev = NAN;
   for (const auto& row : ts.rows) {
@@ -41,6 +41,12 @@ bool stillGainingSpeed(const Table& ts) {
     }
     t_prev = row[it], phi_prev = row[ip];
   }
+  return t_rev;
+}
+
+bool stillGainingSpeed(const Table& ts) {
+  constexpr double kRise = 0.005;  // [-] relative gain per revolution that counts as running up
+  const std::vector<double> t_rev = revolutionTimes(ts);
   const int n = int(t_rev.size()) - 1;  // whole revolutions
   if (n < 3) return true;
   const double w1 = 1.0 / (t_rev[n - 2] - t_rev[n - 3]), w2 = 1.0 / (t_rev[n - 1] - t_rev[n - 2]),

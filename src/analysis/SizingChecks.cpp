@@ -208,6 +208,20 @@ SizingCheck breakdownCheck(const DriveSizing& s, bool turning) {
   return k;
 }
 
+// A pass where the run lacks part of the working cycle (no turning, still starting, no steady
+// running, no start from rest) is no verdict.
+void overruleCouplingPass(SizingCheck& k, const DriveSizing& s, bool turning) {
+  if (!turning)
+    notApplicable(k, notTurning(s) + ": the coupling torque of a working drive is not known; " + k.reason);
+  else if (s.motion == "starting")
+    notApplicable(k, kTooShort + "; " + k.reason);
+  else if (!s.steady_reached)
+    notApplicable(k, s.steady_not_reached + "; " + k.reason);
+  else if (!s.start_simulated)
+    notApplicable(k, "the run holds no start from rest (it begins turning, initial.crank_speed), and a start's peak "
+                     "usually decides a coupling: run it from rest (initial.crank_speed: 0); " + k.reason);
+}
+
 SizingCheck couplingCheck(const DriveSizing& s, bool turning) {
   const CouplingSizing& c = s.coupling;
   SizingCheck k{"coupling", "peak |M| / rated torque of the coupling, ≤ 1", kNaN, "", "", ""};
@@ -227,16 +241,7 @@ SizingCheck couplingCheck(const DriveSizing& s, bool turning) {
   k.verdict = verdictOf(k.value, false);
   // A peak above the rating happened, whatever else the run lacks; a pass needs the whole working
   // cycle: the start (whose peak usually decides a coupling) and the steady running.
-  if (k.verdict != "pass") return k;
-  if (!turning)
-    notApplicable(k, notTurning(s) + ": the coupling torque of a working drive is not known; " + k.reason);
-  else if (s.motion == "starting")
-    notApplicable(k, kTooShort + "; " + k.reason);
-  else if (!s.steady_reached)
-    notApplicable(k, s.steady_not_reached + "; " + k.reason);
-  else if (!s.start_simulated)
-    notApplicable(k, "the run holds no start from rest (it begins turning, initial.crank_speed), and a start's peak "
-                     "usually decides a coupling: run it from rest (initial.crank_speed: 0); " + k.reason);
+  if (k.verdict == "pass") overruleCouplingPass(k, s, turning);
   return k;
 }
 
