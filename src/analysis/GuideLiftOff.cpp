@@ -72,22 +72,25 @@ std::string liftOffWarning(const GuideLiftOff& g, const SteadyState& ss) {
          "a counter-roller holds it, which the scene does not model (summary.json guide_lift_off)";
 }
 
+// Why the guides are not judged in this run: no guide reactions, or no steady window; "" when they are.
+std::string notJudgedReason(const Table& rx, const SteadyState& ss, bool steady) {
+  if (rx.columns.empty() || rx.rows.empty() || !rx.has("t") || !rx.has("N_front_1"))
+    return "no guide reactions computed in this run (simulation.reactions: false); set simulation.reactions: true";
+  if (!steady)
+    return ss.not_reached.empty() ? std::string("the crank does not turn steadily in this run, so there is no steady "
+                                                "window to judge the guide reactions in")
+                                  : ss.not_reached;
+  return "";
+}
+
 }  // namespace
 
 GuideLiftOff computeGuideLiftOff(const RunResult& run, const SteadyState& ss, bool steady) {
   GuideLiftOff g;
   g.verdict = "not applicable";
   const Table& rx = run.reactions;
-  if (rx.columns.empty() || rx.rows.empty() || !rx.has("t") || !rx.has("N_front_1")) {
-    g.reason = "no guide reactions computed in this run (simulation.reactions: false); set simulation.reactions: true";
-    return g;
-  }
-  if (!steady) {
-    g.reason = ss.not_reached.empty() ? std::string("the crank does not turn steadily in this run, so there is no steady "
-                                                    "window to judge the guide reactions in")
-                                      : ss.not_reached;
-    return g;
-  }
+  g.reason = notJudgedReason(rx, ss, steady);
+  if (!g.reason.empty()) return g;
   g.t_begin = ss.t_begin;
   g.t_end = ss.t_end;
   const std::vector<double> t = rx.column("t");

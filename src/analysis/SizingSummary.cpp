@@ -144,6 +144,14 @@ json jointsSizingJson(const DriveSizing& s) {
   return joints;
 }
 
+// The verdict of the check so named (the last one), null when there is none or it has none.
+json checkVerdict(const std::vector<SizingCheck>& checks, const char* name) {
+  const SizingCheck* found = nullptr;
+  for (const SizingCheck& c : checks)
+    if (c.name == name) found = &c;
+  return found && !found->verdict.empty() ? json(found->verdict) : json(nullptr);
+}
+
 }  // namespace
 
 json sizingJson(const DriveSizing& s) {
@@ -152,20 +160,13 @@ json sizingJson(const DriveSizing& s) {
   j["whole_run"] = {{"t_begin", num(s.run_t_begin)}, {"t_end", num(s.run_t_end)}};
   j["motion"] = s.motion;
   json checks = json::array();
-  const SizingCheck* by_name[3] = {nullptr, nullptr, nullptr};
-  for (const SizingCheck& c : s.checks) {
-    checks.push_back(sizingCheckJson(c));
-    if (c.name == "motor_heating") by_name[0] = &c;
-    if (c.name == "motor_breakdown") by_name[1] = &c;
-    if (c.name == "coupling") by_name[2] = &c;
-  }
+  for (const SizingCheck& c : s.checks) checks.push_back(sizingCheckJson(c));
   j["checks"] = checks;
-  auto verdict = [&](int k) -> json {
-    return by_name[k] && !by_name[k]->verdict.empty() ? json(by_name[k]->verdict) : json(nullptr);
-  };
-  j["motor"] = s.motor.available ? motorSizingJson(s.motor, verdict(0), verdict(1)) : json(nullptr);
+  j["motor"] = s.motor.available ? motorSizingJson(s.motor, checkVerdict(s.checks, "motor_heating"),
+                                                   checkVerdict(s.checks, "motor_breakdown"))
+                                 : json(nullptr);
   j["flywheel"] = flywheelSizingJson(s.flywheel);
-  j["coupling"] = s.coupling.available ? couplingSizingJson(s.coupling, verdict(2)) : json(nullptr);
+  j["coupling"] = s.coupling.available ? couplingSizingJson(s.coupling, checkVerdict(s.checks, "coupling")) : json(nullptr);
   j["joints"] = jointsSizingJson(s);
   j["fatigue"] = fatigueJson(s.fatigue);
   j["coupling_selection"] = couplingSelectionJson(s.coupling_selection);

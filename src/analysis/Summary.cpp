@@ -72,6 +72,15 @@ double crankAdvance(const Table& ts, const SteadyState& ss) {
   return ts.rows[ss.row_end - 1][k] - ts.rows[ss.row_begin][k];
 }
 
+// The coupling's swings over the metrics window, Loveikin, Pochka, Romasevych (2018), Table 1.
+void addCouplingSwings(json& j, const WindowMetrics& m, FiniteWriter& num) {
+  j["coupling_torque_swing"] = num("coupling_torque_swing", m.coupling_torque_swing);
+  j["twist_swing"] = num("twist_swing", m.twist_swing);
+  j["twist_rate_swing"] = num("twist_rate_swing", m.twist_rate_swing);
+  j["twist_accel_swing"] = num("twist_accel_swing", m.twist_accel_swing);
+  j["missing_columns"] = m.missing_columns;
+}
+
 // The crank's speed over the metrics window, its motion, and the coefficients of its unevenness.
 void addCrankSpeed(json& j, const WindowMetrics& m, const std::string& crank_motion, bool steady_turning,
                    FiniteWriter& num, std::vector<std::string>& not_meaningful) {
@@ -95,12 +104,7 @@ void addCrankSpeed(json& j, const WindowMetrics& m, const std::string& crank_mot
   j["delta"] = perRevolution("delta", m.coefficients.delta);
   j["H"] = perRevolution("H", m.coefficients.H);
   j["k_p"] = perRevolution("k_p", m.coefficients.k_p);
-  // Loveikin, Pochka, Romasevych (2018), Table 1
-  j["coupling_torque_swing"] = num("coupling_torque_swing", m.coupling_torque_swing);
-  j["twist_swing"] = num("twist_swing", m.twist_swing);
-  j["twist_rate_swing"] = num("twist_rate_swing", m.twist_rate_swing);
-  j["twist_accel_swing"] = num("twist_accel_swing", m.twist_accel_swing);
-  j["missing_columns"] = m.missing_columns;
+  addCouplingSwings(j, m, num);
 }
 
 json steadyStateJson(const SteadyState& ss, const WindowMetrics& m, const std::string& crank_motion, FiniteWriter& num) {
