@@ -66,6 +66,16 @@ CartLoadWork cartLoadWork(const Scene& sc, const Table& ts, const LoadRows& r, i
   return c;
 }
 
+// Every cart's load work, in cart order; false when a cart's velocity column is missing.
+bool addCartWorks(LoadWork& out, const Scene& sc, const Table& ts, const LoadRows& rows) {
+  for (int j = 1; j <= sc.carts.count; ++j) {
+    const std::string col = "v_cart_" + std::to_string(j);
+    if (!ts.has(col)) return false;
+    out.carts.push_back(cartLoadWork(sc, ts, rows, j, ts.index(col)));
+  }
+  return true;
+}
+
 // The load does almost no net work: what that falsifies, and the warning that says so.
 void warnNoNetWork(const Scene& sc, LoadWork& out, double span, double sum_gross) {
   // What it falsifies depends on whether a motor drives the machine: its verdicts, or (motor
@@ -97,14 +107,11 @@ LoadWork computeLoadWork(const Scene& sc, const RunResult& run, const SteadyStat
   const int it = ts.index("t");
   const LoadRows rows{n, b, e, it, e >= b + 2 ? ts.rows[e - 1][it] - ts.rows[b][it] : kNaN};
   double sum_steady = 0, sum_gross = 0, sum_whole = 0;
-  for (int j = 1; j <= sc.carts.count; ++j) {
-    const std::string col = "v_cart_" + std::to_string(j);
-    if (!ts.has(col)) return LoadWork{false, {}, 0, 0, 0, out.reading, ""};
-    const CartLoadWork c = cartLoadWork(sc, ts, rows, j, ts.index(col));
+  if (!addCartWorks(out, sc, ts, rows)) return LoadWork{false, {}, 0, 0, 0, out.reading, ""};
+  for (const CartLoadWork& c : out.carts) {
     sum_steady += c.work_steady;
     sum_gross += c.gross_steady;
     sum_whole += c.work_whole_run;
-    out.carts.push_back(c);
   }
   out.available = true;
   const double span = rows.span;

@@ -133,6 +133,24 @@ void addStartPeaksJson(json& j, const StartUp& s) {
   j["joints"] = joints;
 }
 
+// The stator current over the start: peak, RMS and I²t; null for a law without a current.
+json statorCurrentJson(const StartUp& s) {
+  return std::isfinite(s.current_peak) ? json{{"peak", num(s.current_peak)},
+                                              {"rms", num(s.current_rms)},
+                                              {"i2t", num(s.current_i2t)},
+                                              {"steady_rms", num(s.current_steady_rms)}}
+                                        : json(nullptr);
+}
+
+// After a switch-off: the stopping time and the run-out; null without a switch-off.
+json stopJson(const StartUp& s) {
+  return std::isfinite(s.t_off) ? json{{"t_off", s.t_off},
+                                       {"stopping_time", num(s.stopping_time)},
+                                       {"run_out_revolutions", num(s.run_out_revolutions)},
+                                       {"run_out_cart_path", num(s.run_out_cart_path)}}
+                                 : json(nullptr);
+}
+
 }  // namespace
 
 json startUpJson(const StartUp& s) {
@@ -147,17 +165,9 @@ json startUpJson(const StartUp& s) {
   j["run_up_time"] = num(s.run_up_time);
   j["start_end"] = num(s.start_end);
   addStartPeaksJson(j, s);
-  j["stator_current"] = std::isfinite(s.current_peak) ? json{{"peak", num(s.current_peak)},
-                                                             {"rms", num(s.current_rms)},
-                                                             {"i2t", num(s.current_i2t)},
-                                                             {"steady_rms", num(s.current_steady_rms)}}
-                                                       : json(nullptr);
+  j["stator_current"] = statorCurrentJson(s);
   j["rotor_energy_loss"] = num(s.rotor_energy_loss);
-  j["stop"] = std::isfinite(s.t_off) ? json{{"t_off", s.t_off},
-                                            {"stopping_time", num(s.stopping_time)},
-                                            {"run_out_revolutions", num(s.run_out_revolutions)},
-                                            {"run_out_cart_path", num(s.run_out_cart_path)}}
-                                      : json(nullptr);
+  j["stop"] = stopJson(s);
   j["current_limit"] = currentLimitJson(s.current_limit);
   j["notes"] = s.notes;
   j["keys_not_reached"] = s.keys_not_reached;
