@@ -160,6 +160,13 @@ void addCheckCommands(json& c, const std::string& head, const std::string& value
                             " --minimize flywheel.inertia --constraint 'delta<=" + fmt(target_delta, "%.4g") + "'";
 }
 
+// A scene that is not a file has no command to run: the values to run by hand (`start_speed`
+// "" when the run starts as the scene says).
+std::string notAFileNote(const std::string& value, const std::string& start_speed) {
+  return "the scene is not a file: check the estimate by a run with flywheel.inertia = " + value + " kg·m²" +
+         (!start_speed.empty() ? " and initial.crank_speed = " + start_speed + " rad/s" : std::string());
+}
+
 }  // namespace
 
 json flywheelChecks(const json& summary) {
@@ -182,8 +189,7 @@ json flywheelChecks(const json& summary) {
   const json& scene = jsonMember(summary, "scene_path");
   if (!scene.is_string()) {
     c["run_at_proposal"] = c["smallest_from_runs"] = nullptr;
-    c["note"] = "the scene is not a file: check the estimate by a run with flywheel.inertia = " + value + " kg·m²" +
-                (start_at_speed ? " and initial.crank_speed = " + fmt(w_mean, "%.4g") + " rad/s" : std::string());
+    c["note"] = notAFileNote(value, start_at_speed ? fmt(w_mean, "%.4g") : std::string());
     return c;
   }
   addCheckCommands(c, shellWord(scene.get<std::string>()) + u.sets + modelOption(summary), value,
