@@ -123,6 +123,14 @@ MotorRows motorRows(const Scene& sc, const Table& ts, double s_n) {
   return r;
 }
 
+// The slip's lowest and highest value over rows [b, e); left as they are with fewer than two rows.
+void takeSlipRange(const std::vector<double>& s, std::size_t b, std::size_t e, double& slip_min, double& slip_max) {
+  if (e < b + 2) return;
+  const auto [lo, hi] = std::minmax_element(s.begin() + b, s.begin() + e);
+  slip_min = *lo;
+  slip_max = *hi;
+}
+
 // Motoring and braking peaks against the breakdown torque of each side: the second trial's
 // 639 N·m braking peak was read against the motoring M_kr (517 N·m) of a machine whose braking
 // breakdown torque is larger.
@@ -155,11 +163,7 @@ void addSteadyWindowFigures(MotorSizing& m, const MotorRows& rows, std::size_t b
   m.power_shaft_peak = mp.max;
   m.power_line_mean = ml.mean;
   m.power_line_peak = ml.max;
-  if (e >= b + 2) {
-    const auto [lo, hi] = std::minmax_element(rows.s.begin() + b, rows.s.begin() + e);
-    m.slip_min = *lo;
-    m.slip_max = *hi;
-  }
+  takeSlipRange(rows.s, b, e, m.slip_min, m.slip_max);
   if (turning && revolutions >= 0.5)
     m.energy_per_revolution = mp.mean * (t[e - 1] - t[b]) / revolutions;
 }
@@ -175,11 +179,7 @@ void addWholeRunFigures(MotorWholeRun& r, const MotorRows& rows, std::size_t run
   r.rotor_losses_mean = rq.mean;
   r.power_line_mean = rl.mean;
   r.power_line_peak = rl.max;
-  if (run_end >= 2) {
-    const auto [lo, hi] = std::minmax_element(rows.s.begin(), rows.s.begin() + run_end);
-    r.slip_min = *lo;
-    r.slip_max = *hi;
-  }
+  takeSlipRange(rows.s, 0, run_end, r.slip_min, r.slip_max);
 }
 
 // What one start puts into the rotor and how many starts per hour the rotor's heat balance
