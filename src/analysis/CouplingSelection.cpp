@@ -80,12 +80,10 @@ void dampingPower(CouplingSelection& c, const Scene& sc, const Table& steady) {
 
 double frequencyFactor(double f_hz) { return f_hz > 10.0 ? std::sqrt(f_hz / 10.0) : 1.0; }
 
-CouplingSelection computeCouplingSelection(const Scene& sc, const RunResult& run, const SteadyState& w,
-                                           const StartUp* start_up) {
-  const CouplingRatings& in = sc.sizing.coupling;
-  CouplingSelection c;
-  c.requested = in.anyGiven();
-  if (!c.requested) return c;
+namespace {
+
+// The ratings and factors given (sizing.coupling.*); every figure of the run NaN until measured.
+void takeRatings(CouplingSelection& c, const CouplingRatings& in) {
   c.rated_torque = givenOrNaN(in.rated_torque);
   c.max_torque = givenOrNaN(in.max_torque);
   c.vibratory_torque = givenOrNaN(in.vibratory_torque);
@@ -95,27 +93,46 @@ CouplingSelection computeCouplingSelection(const Scene& sc, const RunResult& run
   c.S_A = in.shock_factor;
   c.start_peak = c.steady_peak = c.steady_amplitude = c.excitation_frequency = c.damping_power_run = kNaN;
   c.rated_ratio = c.max_ratio = c.vibratory_ratio = c.damping_ratio = kNaN;
-  const Table& ts = run.timeseries;
-  if (!ts.has("t") || !ts.has("coupling_torque")) return c;
-  c.start_in_run = start_up && start_up->applicable && start_up->from_rest && start_up->start_end > start_up->t_on;
-  if (c.start_in_run) c.start_peak = peakAbs(ts, "coupling_torque", start_up->t_on, start_up->start_end);
+}
+
+// The steady window's peak, amplitude, excitation and damping power.
+void measureSteadyRunning(CouplingSelection& c, const Scene& sc, const Table& ts, const SteadyState& w) {
   c.steady_reached = w.reached;
-  if (w.reached) {
-    const Table steady = steadyRows(ts, w);
-    if (!steady.rows.empty()) {
-      c.steady_peak = peakAbs(ts, "coupling_torque", w.t_begin, w.t_end);
-      steadyFigures(c, steady);
-      dampingPower(c, sc, steady);
-    }
-  } else {
+  if (!w.reached) {
     c.damping_basis = "no steady window";
+    return;
   }
+  const Table steady = steadyRows(ts, w);
+  if (steady.rows.empty()) return;
+  c.steady_peak = peakAbs(ts, "coupling_torque", w.t_begin, w.t_end);
+  steadyFigures(c, steady);
+  dampingPower(c, sc, steady);
+}
+
+// Each rating's ratio after DIN 740-2: the run's torque (or power) times its factors over the rating.
+void rateAgainstRatings(CouplingSelection& c) {
   const double T_S = std::isfinite(c.start_peak) ? std::max(c.start_peak, std::isfinite(c.steady_peak) ? c.steady_peak : 0.0)
                                                  : c.steady_peak;
   c.rated_ratio = c.steady_peak * c.S_t / c.rated_torque;
   c.max_ratio = T_S * c.S_A * c.S_z * c.S_t / c.max_torque;
   c.vibratory_ratio = c.steady_amplitude * c.S_t * c.S_f / c.vibratory_torque;
   c.damping_ratio = c.damping_power_run * c.S_t / c.damping_power;
+}
+
+}  // namespace
+
+CouplingSelection computeCouplingSelection(const Scene& sc, const RunResult& run, const SteadyState& w,
+                                           const StartUp* start_up) {
+  CouplingSelection c;
+  c.requested = sc.sizing.coupling.anyGiven();
+  if (!c.requested) return c;
+  takeRatings(c, sc.sizing.coupling);
+  const Table& ts = run.timeseries;
+  if (!ts.has("t") || !ts.has("coupling_torque")) return c;
+  c.start_in_run = start_up && start_up->applicable && start_up->from_rest && start_up->start_end > start_up->t_on;
+  if (c.start_in_run) c.start_peak = peakAbs(ts, "coupling_torque", start_up->t_on, start_up->start_end);
+  measureSteadyRunning(c, sc, ts, w);
+  rateAgainstRatings(c);
   return c;
 }
 

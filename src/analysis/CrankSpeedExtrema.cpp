@@ -9,6 +9,35 @@ namespace {
 // ε has strictly opposite signs at a step's two ends: ω has an extremum strictly inside it.
 bool changesSign(double eps0, double eps1) { return (eps0 < 0 && eps1 > 0) || (eps0 > 0 && eps1 < 0); }
 
+// Where ε of the integrator's interpolant crosses zero inside the step [t0, t1]: regula falsi
+// with the Illinois modification. `w`, `e` hold the interpolant's values at the last point tried.
+double zeroOfEps(const CrankSpeedExtremaFinder::Dense& dense, double t0, double e0, double t1, double e1, double& w,
+                 double& e) {
+  double a = t0, b = t1, fa = e0, fb = e1;
+  int side = 0;
+  for (int it = 0; it < 60 && b - a > 1e-12 * (t1 - t0); ++it) {
+    const double c = (a * fb - b * fa) / (fb - fa);
+    dense(c, w, e);
+    if (!std::isfinite(e)) break;
+    if ((e < 0) == (fa < 0)) {
+      a = c;
+      fa = e;
+      if (side == -1) fb *= 0.5;
+      side = -1;
+    } else {
+      b = c;
+      fb = e;
+      if (side == 1) fa *= 0.5;
+      side = 1;
+    }
+    if (e == 0.0) {
+      a = b = c;
+      break;
+    }
+  }
+  return 0.5 * (a + b);
+}
+
 }  // namespace
 
 void CrankSpeedExtremaFinder::step(double t0, double w0, double e0, double t1, double w1, double e1) {
@@ -48,30 +77,8 @@ void CrankSpeedExtremaFinder::restart(double t, double omega, double eps) {
 void CrankSpeedExtremaFinder::stepTo(double t, double omega, double eps, const Dense& dense) {
   if (have_last_ && t > t_) {
     if (dense && changesSign(eps_, eps)) {
-      // Regula falsi with the Illinois modification on ε(t) of the integrator's interpolant.
-      double a = t_, b = t, fa = eps_, fb = eps, w = omega, e = eps;
-      int side = 0;
-      for (int it = 0; it < 60 && b - a > 1e-12 * (t - t_); ++it) {
-        const double c = (a * fb - b * fa) / (fb - fa);
-        dense(c, w, e);
-        if (!std::isfinite(e)) break;
-        if ((e < 0) == (fa < 0)) {
-          a = c;
-          fa = e;
-          if (side == -1) fb *= 0.5;
-          side = -1;
-        } else {
-          b = c;
-          fb = e;
-          if (side == 1) fa *= 0.5;
-          side = 1;
-        }
-        if (e == 0.0) {
-          a = b = c;
-          break;
-        }
-      }
-      const double tx = 0.5 * (a + b);
+      double w = omega, e = eps;
+      const double tx = zeroOfEps(dense, t_, eps_, t, eps, w, e);
       dense(tx, w, e);
       if (std::isfinite(w)) extrema_.push_back({tx, w});
       else step(t_, omega_, eps_, t, omega, eps);

@@ -51,23 +51,34 @@ struct ShaftLoads {
   std::vector<std::vector<double>> torque;  // [row][throw]: T_j = x_pin·P_y − y_pin·P_x [N·m]
 };
 
+// The crank's angle, speed and acceleration at the reactions rows.
+struct CrankOnRows {
+  std::vector<double> phi, w, eps;
+};
+
+CrankOnRows crankOnRows(const RunResult& run, const std::vector<double>& t) {
+  const std::vector<double> ts_t = run.timeseries.column("t");
+  return {onRows(ts_t, run.timeseries.column("phi_crank"), t), onRows(ts_t, run.timeseries.column("omega_crank"), t),
+          onRows(ts_t, run.timeseries.column("eps_crank"), t)};
+}
+
+// One component of every crank pin's force column (axis "x" or "y"), carts in order.
+std::vector<std::vector<double>> pinForceColumns(const Table& rx, int n, const char* axis) {
+  std::vector<std::vector<double>> f(n);
+  for (int j = 0; j < n; ++j) f[j] = rx.column(std::string("crankpin_") + axis + "_" + std::to_string(j + 1));
+  return f;
+}
+
 ShaftLoads shaftLoads(const Scene& sc, const RunResult& run) {
   const Table& rx = run.reactions;
   const int n = sc.carts.count;
   const std::vector<double> t = rx.column("t");
   const std::vector<double> Rx = rx.column("bearing_x"), Ry = rx.column("bearing_y");
-  const std::vector<double> ts_t = run.timeseries.column("t");
-  const std::vector<double> phi = onRows(ts_t, run.timeseries.column("phi_crank"), t);
-  const std::vector<double> w = onRows(ts_t, run.timeseries.column("omega_crank"), t);
-  const std::vector<double> eps = onRows(ts_t, run.timeseries.column("eps_crank"), t);
+  const CrankOnRows k = crankOnRows(run, t);
   // rods.model = split: half the rod's mass sits on each crank pin and turns with the shaft.
   const double m_pin = (sc.rods.model == RodModel::Split && !sc.hasCamDrive()) ? 0.5 * sc.rods.mass : 0.0;
   const double g = sc.loads.gravity, r = sc.crank.radius;
-  std::vector<std::vector<double>> fx(n), fy(n);
-  for (int j = 0; j < n; ++j) {
-    fx[j] = rx.column("crankpin_x_" + std::to_string(j + 1));
-    fy[j] = rx.column("crankpin_y_" + std::to_string(j + 1));
-  }
+  const std::vector<std::vector<double>> fx = pinForceColumns(rx, n, "x"), fy = pinForceColumns(rx, n, "y");
   ShaftLoads L;
   L.px.assign(t.size(), std::vector<double>(n + 1));
   L.py = L.px;
@@ -75,8 +86,8 @@ ShaftLoads shaftLoads(const Scene& sc, const RunResult& run) {
   for (std::size_t i = 0; i < t.size(); ++i) {
     double rest_x = Rx[i], rest_y = Ry[i];
     for (int j = 0; j < n; ++j) {
-      const double th = phi[i] + sc.crankPhase(j), c = std::cos(th), s = std::sin(th);
-      const double ax = r * (-eps[i] * s - w[i] * w[i] * c), ay = r * (eps[i] * c - w[i] * w[i] * s);
+      const double th = k.phi[i] + sc.crankPhase(j), c = std::cos(th), s = std::sin(th);
+      const double ax = r * (-k.eps[i] * s - k.w[i] * k.w[i] * c), ay = r * (k.eps[i] * c - k.w[i] * k.w[i] * s);
       const double Px = fx[j][i] - m_pin * ax, Py = fy[j][i] - m_pin * (ay + g);
       L.px[i][j] = Px;
       L.py[i][j] = Py;
@@ -97,6 +108,67 @@ std::vector<double> loadPositions(const Scene& sc) {
   return z;
 }
 
+// Nodes: every distinct support and load position, ascending.
+std::vector<double> beamNodes(const std::vector<double>& bearings, const std::vector<double>& loads) {
+  std::vector<double> nodes = bearings;
+  nodes.insert(nodes.end(), loads.begin(), loads.end());
+  std::sort(nodes.begin(), nodes.end());
+  const double span = nodes.back() - nodes.front();
+  const double tol = 1e-12 * std::max(1.0, span);
+  nodes.erase(std::unique(nodes.begin(), nodes.end(), [&](double a, double b) { return std::abs(a - b) <= tol; }),
+              nodes.end());
+  return nodes;
+}
+
+std::size_t nearestNode(const std::vector<double>& nodes, double z) {
+  std::size_t best = 0;
+  for (std::size_t q = 1; q < nodes.size(); ++q)
+    if (std::abs(nodes[q] - z) < std::abs(nodes[best] - z)) best = q;
+  return best;
+}
+
+// The beam's stiffness on (w, θ) of every node: the Hermite elements between the nodes, assembled.
+Eigen::MatrixXd beamStiffness(const std::vector<double>& nodes) {
+  const std::size_t N = nodes.size(), dofs = 2 * N;
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(dofs, dofs);
+  for (std::size_t q = 0; q + 1 < N; ++q) K.block<4, 4>(2 * q, 2 * q) += elementStiffness(nodes[q + 1] - nodes[q]);
+  return K;
+}
+
+// The beam held at its supports: its stiffness, the supports' and the free degrees of freedom
+// (all but the deflection at the supports), and the free block's factorisation.
+struct SupportedBeam {
+  Eigen::MatrixXd K;
+  std::vector<std::size_t> support_dof, free;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu;
+
+  SupportedBeam(const std::vector<double>& nodes, const std::vector<double>& bearings) : K(beamStiffness(nodes)) {
+    std::vector<bool> fixed(K.rows(), false);
+    for (double z : bearings) {
+      support_dof.push_back(2 * nearestNode(nodes, z));
+      fixed[support_dof.back()] = true;
+    }
+    for (std::size_t d = 0; d < fixed.size(); ++d)
+      if (!fixed[d]) free.push_back(d);
+    Eigen::MatrixXd Kff(free.size(), free.size());
+    for (std::size_t a = 0; a < free.size(); ++a)
+      for (std::size_t b = 0; b < free.size(); ++b) Kff(a, b) = K(free[a], free[b]);
+    lu.compute(Kff);
+  }
+
+  // The supports' forces on the beam under a unit load on degree of freedom `load_dof`: K·u = f + r.
+  Eigen::VectorXd forcesUnderUnitLoad(std::size_t load_dof) const {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(K.rows());
+    f[load_dof] = 1.0;
+    Eigen::VectorXd ff(free.size());
+    for (std::size_t a = 0; a < free.size(); ++a) ff[a] = f[free[a]];
+    const Eigen::VectorXd uf = lu.solve(ff);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(K.rows());
+    for (std::size_t a = 0; a < free.size(); ++a) u[free[a]] = uf[a];
+    return K * u - f;
+  }
+};
+
 }  // namespace
 
 ShaftBeam::ShaftBeam(std::vector<double> bearings, std::vector<double> load_positions)
@@ -104,48 +176,12 @@ ShaftBeam::ShaftBeam(std::vector<double> bearings, std::vector<double> load_posi
   if (bearings_.size() < 2) throw std::invalid_argument("ShaftBeam: at least two bearings");
   for (std::size_t k = 1; k < bearings_.size(); ++k)
     if (!(bearings_[k] > bearings_[k - 1])) throw std::invalid_argument("ShaftBeam: bearings must ascend");
-  // Nodes: every distinct support and load position, ascending.
-  std::vector<double> nodes = bearings_;
-  nodes.insert(nodes.end(), loads_.begin(), loads_.end());
-  std::sort(nodes.begin(), nodes.end());
-  const double span = nodes.back() - nodes.front();
-  const double tol = 1e-12 * std::max(1.0, span);
-  nodes.erase(std::unique(nodes.begin(), nodes.end(), [&](double a, double b) { return std::abs(a - b) <= tol; }),
-              nodes.end());
-  auto nodeOf = [&](double z) {
-    std::size_t best = 0;
-    for (std::size_t q = 1; q < nodes.size(); ++q)
-      if (std::abs(nodes[q] - z) < std::abs(nodes[best] - z)) best = q;
-    return best;
-  };
-  const std::size_t N = nodes.size(), dofs = 2 * N;
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(dofs, dofs);
-  for (std::size_t q = 0; q + 1 < N; ++q) K.block<4, 4>(2 * q, 2 * q) += elementStiffness(nodes[q + 1] - nodes[q]);
-  // Free degrees of freedom: all but the deflection at the supports.
-  std::vector<bool> fixed(dofs, false);
-  std::vector<std::size_t> support_dof;
-  for (double z : bearings_) {
-    support_dof.push_back(2 * nodeOf(z));
-    fixed[support_dof.back()] = true;
-  }
-  std::vector<std::size_t> free;
-  for (std::size_t d = 0; d < dofs; ++d)
-    if (!fixed[d]) free.push_back(d);
-  Eigen::MatrixXd Kff(free.size(), free.size());
-  for (std::size_t a = 0; a < free.size(); ++a)
-    for (std::size_t b = 0; b < free.size(); ++b) Kff(a, b) = K(free[a], free[b]);
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(Kff);
+  const std::vector<double> nodes = beamNodes(bearings_, loads_);
+  const SupportedBeam beam(nodes, bearings_);
   influence_.assign(bearings_.size(), std::vector<double>(loads_.size(), 0.0));
   for (std::size_t i = 0; i < loads_.size(); ++i) {
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(dofs);
-    f[2 * nodeOf(loads_[i])] = 1.0;
-    Eigen::VectorXd ff(free.size());
-    for (std::size_t a = 0; a < free.size(); ++a) ff[a] = f[free[a]];
-    const Eigen::VectorXd uf = lu.solve(ff);
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(dofs);
-    for (std::size_t a = 0; a < free.size(); ++a) u[free[a]] = uf[a];
-    const Eigen::VectorXd r = K * u - f;  // K·u = f + r: r the supports' forces on the beam
-    for (std::size_t k = 0; k < bearings_.size(); ++k) influence_[k][i] = r[support_dof[k]];
+    const Eigen::VectorXd r = beam.forcesUnderUnitLoad(2 * nearestNode(nodes, loads_[i]));
+    for (std::size_t k = 0; k < bearings_.size(); ++k) influence_[k][i] = r[beam.support_dof[k]];
   }
 }
 
@@ -199,6 +235,61 @@ void appendBearingColumns(const Scene& sc, RunResult& run) {
   }
 }
 
+namespace {
+
+// The throws in their order along the shaft (stable: equal positions keep the cart order); each
+// throw's cart (1-based) and position go into `out`. Returns the carts' indices in that order.
+std::vector<int> throwsAlongShaft(const Scene& sc, CrankshaftSizing& out) {
+  std::vector<int> order(sc.carts.count);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return sc.crankshaft.throw_positions[a] < sc.crankshaft.throw_positions[b];
+  });
+  for (int j : order) {
+    out.throw_carts.push_back(j + 1);
+    out.throw_positions.push_back(sc.crankshaft.throw_positions[j]);
+  }
+  return order;
+}
+
+// One reactions row's bending moment at each throw and torque of each segment, into the peaks.
+// `split_torque`: the segments' torques follow from the pins' (not for a cam drive, whose force
+// does not act at the crank radius).
+void widenThrowPeaks(CrankshaftSizing& out, const ShaftBeam& beam, const ShaftLoads& L, std::size_t i,
+                     const std::vector<int>& order, bool split_torque) {
+  const std::vector<double> Rx = beam.reactions(L.px[i]), Ry = beam.reactions(L.py[i]);
+  double beyond = 0;  // −Σ T_j over the throws at or beyond the segment, from the far end
+  for (int q = int(order.size()) - 1; q >= 0; --q) {
+    const int j = order[q];
+    const double M = std::hypot(beam.bendingMoment(L.px[i], Rx, out.throw_positions[q]),
+                                beam.bendingMoment(L.py[i], Ry, out.throw_positions[q]));
+    beyond -= L.torque[i][j];
+    double& pm = out.bending_moment_peak[q];
+    if (std::isfinite(M)) pm = std::isfinite(pm) ? std::max(pm, M) : M;
+    if (split_torque && !(out.chain_torques && q >= 1) && std::isfinite(beyond)) {
+      double& pt = out.segment_torque_peak[q];
+      pt = std::isfinite(pt) ? std::max(pt, std::abs(beyond)) : std::abs(beyond);
+    }
+  }
+}
+
+// The peaks over the reactions rows inside the steady window; false when the window holds none.
+bool widenOverSteadyRows(CrankshaftSizing& out, const Scene& sc, const RunResult& run, const SteadyState& w,
+                         const std::vector<int>& order) {
+  const ShaftBeam beam(sc.crankshaft.bearing_positions, loadPositions(sc));
+  const ShaftLoads L = shaftLoads(sc, run);
+  const std::vector<double> t = run.reactions.column("t");
+  bool any = false;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!(t[i] >= w.t_begin && t[i] <= w.t_end)) continue;
+    widenThrowPeaks(out, beam, L, i, order, !sc.hasCamDrive());
+    any = true;
+  }
+  return any;
+}
+
+}  // namespace
+
 CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const SteadyState& w) {
   CrankshaftSizing out;
   out.given = sc.crankshaft.given();
@@ -210,18 +301,7 @@ CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const Ste
     return out;
   }
   const int n = sc.carts.count;
-  const ShaftBeam beam(sc.crankshaft.bearing_positions, loadPositions(sc));
-  const ShaftLoads L = shaftLoads(sc, run);
-  const std::vector<double> t = run.reactions.column("t");
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return sc.crankshaft.throw_positions[a] < sc.crankshaft.throw_positions[b];
-  });
-  for (int j : order) {
-    out.throw_carts.push_back(j + 1);
-    out.throw_positions.push_back(sc.crankshaft.throw_positions[j]);
-  }
+  const std::vector<int> order = throwsAlongShaft(sc, out);
   out.bending_moment_peak.assign(n, kNaN);
   // A cam's force does not act at the crank radius: no torque split for a cam drive.
   out.segment_torque_peak.assign(n, kNaN);
@@ -230,26 +310,7 @@ CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const Ste
   // from the coupling to the first throw is rigid.
   const ShaftTorsionSummary torsion = computeShaftTorsion(sc, run, w, true);
   out.chain_torques = torsion.applies;
-  bool any = false;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (!(t[i] >= w.t_begin && t[i] <= w.t_end)) continue;
-    const std::vector<double> Rx = beam.reactions(L.px[i]), Ry = beam.reactions(L.py[i]);
-    double beyond = 0;  // −Σ T_j over the throws at or beyond the segment, from the far end
-    for (int q = n - 1; q >= 0; --q) {
-      const int j = order[q];
-      const double M = std::hypot(beam.bendingMoment(L.px[i], Rx, out.throw_positions[q]),
-                                  beam.bendingMoment(L.py[i], Ry, out.throw_positions[q]));
-      beyond -= L.torque[i][j];
-      double& pm = out.bending_moment_peak[q];
-      if (std::isfinite(M)) pm = std::isfinite(pm) ? std::max(pm, M) : M;
-      if (!sc.hasCamDrive() && !(out.chain_torques && q >= 1) && std::isfinite(beyond)) {
-        double& pt = out.segment_torque_peak[q];
-        pt = std::isfinite(pt) ? std::max(pt, std::abs(beyond)) : std::abs(beyond);
-      }
-    }
-    any = true;
-  }
-  if (!any) {
+  if (!widenOverSteadyRows(out, sc, run, w, order)) {
     out.reason = "no reactions row in the steady window";
     return out;
   }

@@ -124,32 +124,31 @@ SizingCheck lockedRotorCheck(const DriveSizing& s) {
   return c;
 }
 
+// Why the starts per hour cannot be judged: duty S1, Z_0 not given, no start, no steady running,
+// or the nominal rotor losses not known; "" when they can.
+std::string startsNotJudged(const DriveSizing& s) {
+  const MotorDuty& m = s.motor_duty;
+  if (!(m.starts_per_hour > 0)) return "duty S1: no starts per hour given; set sizing.starts_per_hour for duty S4";
+  if (!std::isfinite(m.no_load_starts))
+    return "the permissible starts without load are not given: set sizing.motor.no_load_starts (Z_0 from "
+           "the motor's catalogue)";
+  if (!m.start_known) return m.start_unknown;
+  if (!s.steady_reached) return s.steady_not_reached + " (the steady running's rotor losses share the budget)";
+  if (!std::isfinite(m.steady_loss_share))
+    return "the nominal rotor losses s_n·M_n·ω0 are not known: give motor.omega_nominal and the nominal torque "
+           "(sizing.motor_nominal_torque)";
+  return "";
+}
+
 SizingCheck startsCheck(const DriveSizing& s) {
   const MotorDuty& m = s.motor_duty;
   SizingCheck c{"motor_starts_per_hour",
                 "starts per hour N of duty S4 over the permissible Z = Z_0·(½·J_M·ω0²/Q_start)·(1 − P_steady/P_n,rotor) "
                 "(IEC 60034-1, catalogue Z_0), ≤ 1",
                 m.starts_ratio, verdictOf(m.starts_ratio), kWindowDuty, ""};
-  if (!(m.starts_per_hour > 0)) {
-    notApplicable(c, "duty S1: no starts per hour given; set sizing.starts_per_hour for duty S4");
-    return c;
-  }
-  if (!std::isfinite(m.no_load_starts)) {
-    notApplicable(c, "the permissible starts without load are not given: set sizing.motor.no_load_starts (Z_0 from "
-                     "the motor's catalogue)");
-    return c;
-  }
-  if (!m.start_known) {
-    notApplicable(c, m.start_unknown);
-    return c;
-  }
-  if (!s.steady_reached) {
-    notApplicable(c, s.steady_not_reached + " (the steady running's rotor losses share the budget)");
-    return c;
-  }
-  if (!std::isfinite(m.steady_loss_share)) {
-    notApplicable(c, "the nominal rotor losses s_n·M_n·ω0 are not known: give motor.omega_nominal and the nominal torque "
-                     "(sizing.motor_nominal_torque)");
+  const std::string why = startsNotJudged(s);
+  if (!why.empty()) {
+    notApplicable(c, why);
     return c;
   }
   c.reason = g4(m.starts_per_hour) + " starts per hour against Z = " + g4(m.permissible_starts) + " (Z_0 = " +

@@ -63,18 +63,22 @@ void gearText(std::ostringstream& o, const json& g) {
     << fmt(jsonMember(g, "rated_torque")) << ", T_2max " << fmt(jsonMember(g, "max_torque")) << " N·m (n/a: not given)\n";
 }
 
+// The duty hour's equivalent torques, or why there is none.
+json dutyHourJson(const GearDuty& g) {
+  return g.duty_applies ? json{{"applies", true},
+                               {"basis", g.duty_basis},
+                               {"revolutions_per_hour", num(g.hour_revolutions)},
+                               {"equivalent_torque_drive", num(g.equivalent_torque_drive)},
+                               {"equivalent_torque_coast", num(g.equivalent_torque_coast)},
+                               {"equivalent_torque", num(g.equivalent_torque)},
+                               {"deciding_flank", g.deciding_flank}}
+                        : json{{"applies", false}, {"reason", g.duty_not_applicable}};
+}
+
 }  // namespace
 
 json gearDutyJson(const GearDuty& g) {
   if (!g.requested) return nullptr;
-  json duty = g.duty_applies ? json{{"applies", true},
-                                    {"basis", g.duty_basis},
-                                    {"revolutions_per_hour", num(g.hour_revolutions)},
-                                    {"equivalent_torque_drive", num(g.equivalent_torque_drive)},
-                                    {"equivalent_torque_coast", num(g.equivalent_torque_coast)},
-                                    {"equivalent_torque", num(g.equivalent_torque)},
-                                    {"deciding_flank", g.deciding_flank}}
-                             : json{{"applies", false}, {"reason", g.duty_not_applicable}};
   return {{"method", "ISO 6336-6:2019, load spectrum and Miner-equivalent torque"},
           {"torque", "coupling torque (what the reducer's output shaft transmits), at the crank axis"},
           {"exponent", g.exponent},
@@ -87,7 +91,7 @@ json gearDutyJson(const GearDuty& g) {
           {"starts_per_hour", g.starts_per_hour},
           {"start", spectrumJson(g.start)},
           {"steady", spectrumJson(g.steady)},
-          {"duty", duty},
+          {"duty", dutyHourJson(g)},
           {"application_factor", num(g.application_factor)},
           {"peak", num(g.peak)},
           {"t_peak", num(g.t_peak)},

@@ -59,8 +59,8 @@ void damageOver(WindowDamage& w, const SignalSource& src, const SnCurve& curve, 
   }
 }
 
-SignalFatigue signalFatigue(const std::string& signal, const SnCurve& curve, bool haibach, const RunResult& run,
-                            const SteadyState& window, const StartUp* start_up) {
+// The signal's words, unit, keys and S-N curve; no damage yet.
+SignalFatigue describedSignal(const std::string& signal, const SnCurve& curve) {
   SignalFatigue f;
   f.signal = signal;
   const bool torque = signal == "coupling_torque";
@@ -70,24 +70,43 @@ SignalFatigue signalFatigue(const std::string& signal, const SnCurve& curve, boo
   f.curve = curve;
   f.curve_given = curve.given();
   f.damage_per_start = f.damage_per_hour = f.starts_to_failure = f.hours_to_failure = kNaN;
+  return f;
+}
+
+// What neither window can be counted without: the S-N curve, the signal in the run; "" when both are there.
+std::string missingInput(const SignalFatigue& f, const SignalSource& src) {
+  if (!f.curve_given) return "no S-N curve given (" + f.key + ": endurance_amplitude, knee_cycles, slope)";
+  if (src.columns.empty()) return f.signal == "coupling_torque" ? "the run has no coupling torque" : "the run has no rod forces";
+  return "";
+}
+
+// Why the run holds no start to count; "" when it does.
+std::string startNotCounted(const StartUp* start_up) {
+  if (!start_up || !start_up->applicable) return "no motor switched on in the run, so no start to count";
+  if (!start_up->from_rest)
+    return "the run holds no start from rest (it begins turning, initial.crank_speed): run it "
+           "from rest (initial.crank_speed: 0)";
+  if (!start_up->starts || start_up->still_starting || !(start_up->start_end > start_up->t_on))
+    return start_up->still_starting ? "the run ended before the start settled: run longer (simulation.t_end)"
+                                    : "the drive does not start (" + start_up->verdict + ")";
+  return "";
+}
+
+// Why the run holds no steady window to count; "" when it does.
+std::string steadyNotCounted(const SteadyState& window) {
+  if (!window.reached) return window.not_reached.empty() ? "no steady window in the run" : window.not_reached;
+  if (!(window.t_end > window.t_begin)) return "the steady window has no length";
+  return "";
+}
+
+SignalFatigue signalFatigue(const std::string& signal, const SnCurve& curve, bool haibach, const RunResult& run,
+                            const SteadyState& window, const StartUp* start_up) {
+  SignalFatigue f = describedSignal(signal, curve);
   const SignalSource src = sourceOf(signal, run);
-  std::string missing;
-  if (!f.curve_given)
-    missing = "no S-N curve given (" + f.key + ": endurance_amplitude, knee_cycles, slope)";
-  else if (src.columns.empty())
-    missing = torque ? "the run has no coupling torque" : "the run has no rod forces";
+  const std::string missing = missingInput(f, src);
   // One start: from the switch-on to where the crank speed settles (StartUp::start_end).
-  if (!missing.empty()) f.start.not_applicable = missing;
-  else if (!start_up || !start_up->applicable)
-    f.start.not_applicable = "no motor switched on in the run, so no start to count";
-  else if (!start_up->from_rest)
-    f.start.not_applicable = "the run holds no start from rest (it begins turning, initial.crank_speed): run it "
-                             "from rest (initial.crank_speed: 0)";
-  else if (!start_up->starts || start_up->still_starting || !(start_up->start_end > start_up->t_on))
-    f.start.not_applicable = start_up->still_starting
-                                 ? "the run ended before the start settled: run longer (simulation.t_end)"
-                                 : "the drive does not start (" + start_up->verdict + ")";
-  else {
+  f.start.not_applicable = missing.empty() ? startNotCounted(start_up) : missing;
+  if (f.start.not_applicable.empty()) {
     f.start.t_begin = start_up->t_on;
     f.start.t_end = start_up->start_end;
     damageOver(f.start, src, curve, haibach);
@@ -95,12 +114,8 @@ SignalFatigue signalFatigue(const std::string& signal, const SnCurve& curve, boo
     f.starts_to_failure = f.start.damage > 0 ? 1.0 / f.start.damage : kInf;
   }
   // Steady running, scaled to an hour.
-  if (!missing.empty()) f.steady.not_applicable = missing;
-  else if (!window.reached)
-    f.steady.not_applicable = window.not_reached.empty() ? "no steady window in the run" : window.not_reached;
-  else if (!(window.t_end > window.t_begin))
-    f.steady.not_applicable = "the steady window has no length";
-  else {
+  f.steady.not_applicable = missing.empty() ? steadyNotCounted(window) : missing;
+  if (f.steady.not_applicable.empty()) {
     f.steady.t_begin = window.t_begin;
     f.steady.t_end = window.t_end;
     damageOver(f.steady, src, curve, haibach);

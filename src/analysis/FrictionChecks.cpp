@@ -69,6 +69,39 @@ double frictionWorkDeviation(const RunResult& run) {
   return std::abs(qs / kin - 1.0);
 }
 
+namespace {
+
+// The papers' statics leave out each cart's d'Alembert force, whose amplitude at the crank
+// speed ω is m_B·r·ω²·(1 + r/l) (the slider-crank's acceleration at the dead centre).
+std::string quasiStaticJointLoadsWarning(const Scene& scene) {
+  const double omega = scene.motor.enabled && scene.reducer.ratio > 0 ? scene.motor.omega_sync / scene.reducer.ratio
+                                                                      : std::abs(scene.initial.crank_speed);
+  const double r = scene.crank.radius, lambda = r / scene.rods.length;
+  double m_B = scene.lightestCartMassWithRodShare();
+  for (int j = 0; j < scene.carts.count; ++j) m_B = std::max(m_B, scene.cartMassWithRodShare(j));
+  const double inertial = m_B * r * omega * omega * (1.0 + lambda);
+  return fmt("the reduced model's joint loads (guide reactions, rod forces, bearing loads) are the papers' "
+             "quasi-static ones: they leave out the carts' and rods' inertial forces, up to m_B·r·ω²·(1 + r/l) "
+             "= %.3g kN per cart at ω = %.4g rad/s, so rod-end and guide loads can be several times too low; "
+             "size joints with reduced.guide_normals: kinetostatic or with the multibody model",
+             inertial / 1000.0, omega);
+}
+
+// summary.json guide_friction: the coefficient, the normal-force law, the locking margins and the friction work.
+nlohmann::json guideFrictionJson(const Scene& scene, const RunResult& run, const LockingMargins& m, double deviation) {
+  return {{"coefficient", scene.loads.guide_friction},
+          {"normal_forces", run.guide_normals.empty() ? nlohmann::json(nullptr) : nlohmann::json(run.guide_normals)},
+          {"self_locking_index", m.applicable ? number(m.self_locking_index) : nlohmann::json(nullptr)},
+          {"transmission_angle_min_deg", m.applicable ? number(m.transmission_angle_min * kRadToDeg) : nlohmann::json(nullptr)},
+          {"rod_force_factor", m.applicable ? number(m.rod_force_factor) : nlohmann::json(nullptr)},
+          {"friction_work", number(run.energy.friction_dissipation)},
+          {"friction_work_kinetostatic", number(run.friction_work_kinetostatic)},
+          {"friction_work_deviation", number(deviation)},
+          {"friction_work_threshold", kFrictionWorkWarning}};
+}
+
+}  // namespace
+
 std::vector<std::string> addFrictionWarnings(const Scene& scene, const RunResult& run, nlohmann::json& summary) {
   if (!summary.contains("warnings") || !summary["warnings"].is_array()) summary["warnings"] = nlohmann::json::array();
   std::vector<std::string> w = lockingWarnings(scene);
@@ -81,31 +114,9 @@ std::vector<std::string> addFrictionWarnings(const Scene& scene, const RunResult
                     "reduced.guide_normals: kinetostatic)",
                     run.energy.friction_dissipation, 100.0 * deviation, run.friction_work_kinetostatic));
   if (run.model == "reduced" && scene.reduced.guide_normals == ReducedGuideNormals::QuasiStatic &&
-      scene.simulation.reactions && !scene.hasCamDrive()) {
-    // The papers' statics leave out each cart's d'Alembert force, whose amplitude at the crank
-    // speed ω is m_B·r·ω²·(1 + r/l) (the slider-crank's acceleration at the dead centre).
-    const double omega = scene.motor.enabled && scene.reducer.ratio > 0 ? scene.motor.omega_sync / scene.reducer.ratio
-                                                                        : std::abs(scene.initial.crank_speed);
-    const double r = scene.crank.radius, lambda = r / scene.rods.length;
-    double m_B = scene.lightestCartMassWithRodShare();
-    for (int j = 0; j < scene.carts.count; ++j) m_B = std::max(m_B, scene.cartMassWithRodShare(j));
-    const double inertial = m_B * r * omega * omega * (1.0 + lambda);
-    w.push_back(fmt("the reduced model's joint loads (guide reactions, rod forces, bearing loads) are the papers' "
-                    "quasi-static ones: they leave out the carts' and rods' inertial forces, up to m_B·r·ω²·(1 + r/l) "
-                    "= %.3g kN per cart at ω = %.4g rad/s, so rod-end and guide loads can be several times too low; "
-                    "size joints with reduced.guide_normals: kinetostatic or with the multibody model",
-                    inertial / 1000.0, omega));
-  }
-  summary["guide_friction"] = {
-      {"coefficient", scene.loads.guide_friction},
-      {"normal_forces", run.guide_normals.empty() ? nlohmann::json(nullptr) : nlohmann::json(run.guide_normals)},
-      {"self_locking_index", m.applicable ? number(m.self_locking_index) : nlohmann::json(nullptr)},
-      {"transmission_angle_min_deg", m.applicable ? number(m.transmission_angle_min * kRadToDeg) : nlohmann::json(nullptr)},
-      {"rod_force_factor", m.applicable ? number(m.rod_force_factor) : nlohmann::json(nullptr)},
-      {"friction_work", number(run.energy.friction_dissipation)},
-      {"friction_work_kinetostatic", number(run.friction_work_kinetostatic)},
-      {"friction_work_deviation", number(deviation)},
-      {"friction_work_threshold", kFrictionWorkWarning}};
+      scene.simulation.reactions && !scene.hasCamDrive())
+    w.push_back(quasiStaticJointLoadsWarning(scene));
+  summary["guide_friction"] = guideFrictionJson(scene, run, m, deviation);
   for (const std::string& s : w) summary["warnings"].push_back(s);
   return w;
 }

@@ -68,40 +68,93 @@ void peakOf(GearDuty& g, const Table& ts, std::size_t b, std::size_t e) {
     }
 }
 
-// The duty hour: N starts and the rest of the hour steady running, or the steady window alone.
+// How much of an hour each window's spectrum counts: N starts and the rest of the hour steady
+// running, or the steady window alone (its spectrum scaled to the hour).
+struct DutyWeights {
+  double start = 0, steady = 0;
+};
+
+// The duty hour's weights and its basis in words; false (with the reason) when the duty needs a
+// start's spectrum the run does not hold.
+bool weighDutyHour(GearDuty& g, DutyWeights& h) {
+  const GearSpectrum &st = g.start, &w = g.steady;
+  const double window = w.t_end - w.t_begin;
+  h.steady = 3600.0 / window;
+  if (!(g.starts_per_hour > 0)) {
+    g.duty_basis = "continuous running (sizing.starts_per_hour not given): the steady window's spectrum, scaled to "
+                   "one hour; the start's load cycles are not counted";
+    return true;
+  }
+  if (!st.applies) {
+    g.duty_not_applicable = "the duty's " + g4(g.starts_per_hour) + " starts per hour (sizing.starts_per_hour) need "
+                            "the start's spectrum: " + st.not_applicable;
+    return false;
+  }
+  const double t_D = st.t_end - st.t_begin;
+  h.start = g.starts_per_hour;
+  h.steady = std::max(0.0, 3600.0 - g.starts_per_hour * t_D) / window;
+  g.duty_basis = "one hour of the duty: " + g4(g.starts_per_hour) + " starts (sizing.starts_per_hour) of " + g4(t_D) +
+                 " s each and " + g4(std::max(0.0, 3600.0 - g.starts_per_hour * t_D)) +
+                 " s of steady running (the steady window's spectrum scaled)";
+  return true;
+}
+
+// The duty hour's equivalent torque on each flank; the larger decides.
 void dutyHour(GearDuty& g) {
   const GearSpectrum &st = g.start, &w = g.steady;
   if (!w.applies) {
     g.duty_not_applicable = w.not_applicable;
     return;
   }
-  const double window = w.t_end - w.t_begin;
-  double w_start = 0, w_steady = 3600.0 / window;
-  if (g.starts_per_hour > 0) {
-    if (!st.applies) {
-      g.duty_not_applicable = "the duty's " + g4(g.starts_per_hour) + " starts per hour (sizing.starts_per_hour) need "
-                              "the start's spectrum: " + st.not_applicable;
-      return;
-    }
-    const double t_D = st.t_end - st.t_begin;
-    w_start = g.starts_per_hour;
-    w_steady = std::max(0.0, 3600.0 - g.starts_per_hour * t_D) / window;
-    g.duty_basis = "one hour of the duty: " + g4(g.starts_per_hour) + " starts (sizing.starts_per_hour) of " + g4(t_D) +
-                   " s each and " + g4(std::max(0.0, 3600.0 - g.starts_per_hour * t_D)) +
-                   " s of steady running (the steady window's spectrum scaled)";
-  } else {
-    g.duty_basis = "continuous running (sizing.starts_per_hour not given): the steady window's spectrum, scaled to "
-                   "one hour; the start's load cycles are not counted";
-  }
-  g.hour_revolutions = w_start * st.revolutions + w_steady * w.revolutions;
+  DutyWeights h;
+  if (!weighDutyHour(g, h)) return;
+  g.hour_revolutions = h.start * st.revolutions + h.steady * w.revolutions;
   const double p = g.exponent;
-  g.equivalent_torque_drive = equivalentTorque(combine(st.drive, w_start, w.drive, w_steady), p, g.hour_revolutions);
-  g.equivalent_torque_coast = equivalentTorque(combine(st.coast, w_start, w.coast, w_steady), p, g.hour_revolutions);
+  g.equivalent_torque_drive = equivalentTorque(combine(st.drive, h.start, w.drive, h.steady), p, g.hour_revolutions);
+  g.equivalent_torque_coast = equivalentTorque(combine(st.coast, h.start, w.coast, h.steady), p, g.hour_revolutions);
   const bool coast_decides = g.equivalent_torque_coast > g.equivalent_torque_drive;
   g.equivalent_torque = coast_decides ? g.equivalent_torque_coast : g.equivalent_torque_drive;
   g.deciding_flank = coast_decides ? "other flank (reversed torque)" : "drive flank";
   g.duty_applies = std::isfinite(g.equivalent_torque);
   if (!g.duty_applies) g.duty_not_applicable = "the crank does not turn in the steady window, so no load cycles count";
+}
+
+// The reducer's ratings (sizing.reducer.*) and nominal torque; every figure of the run NaN until counted.
+void takeRatings(GearDuty& g, const Scene& sc) {
+  const ReducerRatings& in = sc.sizing.reducer;
+  g.exponent = in.sn_exponent;
+  g.assumed_application_factor = givenOrNaN(in.application_factor);
+  g.rated_torque = givenOrNaN(in.rated_torque);
+  g.max_torque = givenOrNaN(in.max_torque);
+  g.nominal_torque = sc.reducer.ratio * sc.reducer.efficiency * nominalMotorTorque(sc, &g.nominal_source);
+  g.starts_per_hour = sc.sizing.starts_per_hour;
+  g.class_width = g.hour_revolutions = g.peak = g.t_peak = kNaN;
+  g.equivalent_torque_drive = g.equivalent_torque_coast = g.equivalent_torque = g.application_factor = kNaN;
+  g.application_ratio = g.rated_ratio = g.max_ratio = kNaN;
+}
+
+// The load spectra of the start from rest (switch-on to the start's end) and of the steady window,
+// in classes of the two windows' peak torque, and the duty hour from them.
+void countSpectra(GearDuty& g, const Table& ts, const SteadyState& w, const StartUp* start_up) {
+  std::size_t sb = 0, se = 0, wb = 0, we = 0;
+  const bool start_in_run = start_up && start_up->applicable && start_up->from_rest && start_up->start_end > start_up->t_on;
+  if (start_in_run) std::tie(sb, se) = rowsOf(ts, start_up->t_on, start_up->start_end);
+  if (w.reached) wb = std::min(w.row_begin, ts.rows.size()), we = std::min(w.row_end, ts.rows.size());
+  peakOf(g, ts, sb, se);
+  peakOf(g, ts, wb, we);
+  g.class_width = std::isfinite(g.peak) && g.peak > 0 ? g.peak / kGearTorqueClasses : kNaN;
+  if (!(g.class_width > 0)) {
+    g.duty_not_applicable = g.start.not_applicable = g.steady.not_applicable =
+        "neither a start nor a steady window with a torque to count";
+    return;
+  }
+  if (start_in_run) g.start = loadSpectrum(ts, sb, se, g.class_width, g.exponent);
+  else
+    g.start.not_applicable = "the run holds no start from rest (it begins turning, initial.crank_speed): run it "
+                             "from rest (initial.crank_speed: 0)";
+  if (w.reached) g.steady = loadSpectrum(ts, wb, we, g.class_width, g.exponent);
+  else g.steady.not_applicable = w.not_reached;
+  dutyHour(g);
 }
 
 }  // namespace
@@ -139,19 +192,10 @@ GearSpectrum loadSpectrum(const Table& ts, std::size_t b, std::size_t e, double 
 }
 
 GearDuty computeGearDuty(const Scene& sc, const RunResult& run, const SteadyState& w, const StartUp* start_up) {
-  const ReducerRatings& in = sc.sizing.reducer;
   GearDuty g;
-  g.requested = in.anyGiven();
+  g.requested = sc.sizing.reducer.anyGiven();
   if (!g.requested) return g;
-  g.exponent = in.sn_exponent;
-  g.assumed_application_factor = givenOrNaN(in.application_factor);
-  g.rated_torque = givenOrNaN(in.rated_torque);
-  g.max_torque = givenOrNaN(in.max_torque);
-  g.nominal_torque = sc.reducer.ratio * sc.reducer.efficiency * nominalMotorTorque(sc, &g.nominal_source);
-  g.starts_per_hour = sc.sizing.starts_per_hour;
-  g.class_width = g.hour_revolutions = g.peak = g.t_peak = kNaN;
-  g.equivalent_torque_drive = g.equivalent_torque_coast = g.equivalent_torque = g.application_factor = kNaN;
-  g.application_ratio = g.rated_ratio = g.max_ratio = kNaN;
+  takeRatings(g, sc);
   const Table& ts = run.timeseries;
   const std::string missing = "the run has no coupling torque or crank angle (columns coupling_torque, phi_crank)";
   g.start.not_applicable = g.steady.not_applicable = missing;
@@ -159,26 +203,7 @@ GearDuty computeGearDuty(const Scene& sc, const RunResult& run, const SteadyStat
     g.duty_not_applicable = missing;
     return g;
   }
-  // The windows: the start from rest (switch-on to the start's end) and the steady window.
-  std::size_t sb = 0, se = 0, wb = 0, we = 0;
-  const bool start_in_run = start_up && start_up->applicable && start_up->from_rest && start_up->start_end > start_up->t_on;
-  if (start_in_run) std::tie(sb, se) = rowsOf(ts, start_up->t_on, start_up->start_end);
-  if (w.reached) wb = std::min(w.row_begin, ts.rows.size()), we = std::min(w.row_end, ts.rows.size());
-  peakOf(g, ts, sb, se);
-  peakOf(g, ts, wb, we);
-  g.class_width = std::isfinite(g.peak) && g.peak > 0 ? g.peak / kGearTorqueClasses : kNaN;
-  if (!(g.class_width > 0)) {
-    g.duty_not_applicable = g.start.not_applicable = g.steady.not_applicable =
-        "neither a start nor a steady window with a torque to count";
-  } else {
-    if (start_in_run) g.start = loadSpectrum(ts, sb, se, g.class_width, g.exponent);
-    else
-      g.start.not_applicable = "the run holds no start from rest (it begins turning, initial.crank_speed): run it "
-                               "from rest (initial.crank_speed: 0)";
-    if (w.reached) g.steady = loadSpectrum(ts, wb, we, g.class_width, g.exponent);
-    else g.steady.not_applicable = w.not_reached;
-    dutyHour(g);
-  }
+  countSpectra(g, ts, w, start_up);
   g.application_factor = g.equivalent_torque / g.nominal_torque;
   g.application_ratio = g.application_factor / g.assumed_application_factor;
   g.rated_ratio = g.equivalent_torque / g.rated_torque;

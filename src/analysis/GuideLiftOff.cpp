@@ -27,70 +27,79 @@ double negativeShare(const std::vector<double>& t, const std::vector<double>& N,
   return t1 > t0 ? neg / (t1 - t0) : 0.0;
 }
 
+// One guide's reaction N over the steady window: counted as checked when the window holds its
+// rows, and entered as lifting when N takes both signs there.
+void checkGuide(GuideLiftOff& g, const std::vector<double>& t, const std::vector<double>& N, const SteadyState& ss,
+                int cart, const char* side) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= ss.t_begin && t[i] <= ss.t_end && std::isfinite(N[i])) {
+      lo = std::min(lo, N[i]);
+      hi = std::max(hi, N[i]);
+    }
+  if (!std::isfinite(lo)) return;
+  ++g.guides_checked;
+  const double noise = 1e-6 * std::max(std::abs(lo), std::abs(hi));
+  if (!(lo < -noise && hi > noise)) return;  // one side throughout
+  const double share_negative = negativeShare(t, N, ss.t_begin, ss.t_end);
+  GuideLiftOffEntry e;
+  e.cart = cart;
+  e.guide = side;
+  e.presses_down = share_negative <= 0.5;
+  e.time_fraction = e.presses_down ? share_negative : 1.0 - share_negative;
+  e.worst_reaction = e.presses_down ? lo : hi;
+  e.prevailing_extreme = e.presses_down ? hi : lo;
+  g.lifting.push_back(e);
+}
+
+// One warning line for the run (a shipped scene's four carts give one line, not four), each
+// lifting guide in it with its figures.
+std::string liftOffWarning(const GuideLiftOff& g, const SteadyState& ss) {
+  std::string list;
+  for (const GuideLiftOffEntry& e : g.lifting) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%scart %d %s: %s (N %s 0, up to %.4g N), %s for %.3g %% of the time (N reaching %.4g N)",
+                  list.empty() ? "" : "; ", e.cart, e.guide.c_str(), e.presses_down ? "downward" : "upward",
+                  e.presses_down ? ">" : "<", e.prevailing_extreme, e.presses_down ? "upward" : "downward",
+                  100.0 * e.time_fraction, e.worst_reaction);
+    list += buf;
+  }
+  char head[160];
+  std::snprintf(head, sizeof head, "guide reactions change sign in the steady window (t = %.4g ... %.4g s): ",
+                ss.t_begin, ss.t_end);
+  return std::string(head) + list +
+         "; each of these rollers lifts off its guide while the reaction is on its other side, unless "
+         "a counter-roller holds it, which the scene does not model (summary.json guide_lift_off)";
+}
+
+// Why the guides are not judged in this run: no guide reactions, or no steady window; "" when they are.
+std::string notJudgedReason(const Table& rx, const SteadyState& ss, bool steady) {
+  if (rx.columns.empty() || rx.rows.empty() || !rx.has("t") || !rx.has("N_front_1"))
+    return "no guide reactions computed in this run (simulation.reactions: false); set simulation.reactions: true";
+  if (!steady)
+    return ss.not_reached.empty() ? std::string("the crank does not turn steadily in this run, so there is no steady "
+                                                "window to judge the guide reactions in")
+                                  : ss.not_reached;
+  return "";
+}
+
 }  // namespace
 
 GuideLiftOff computeGuideLiftOff(const RunResult& run, const SteadyState& ss, bool steady) {
   GuideLiftOff g;
   g.verdict = "not applicable";
   const Table& rx = run.reactions;
-  if (rx.columns.empty() || rx.rows.empty() || !rx.has("t") || !rx.has("N_front_1")) {
-    g.reason = "no guide reactions computed in this run (simulation.reactions: false); set simulation.reactions: true";
-    return g;
-  }
-  if (!steady) {
-    g.reason = ss.not_reached.empty() ? std::string("the crank does not turn steadily in this run, so there is no steady "
-                                                    "window to judge the guide reactions in")
-                                      : ss.not_reached;
-    return g;
-  }
+  g.reason = notJudgedReason(rx, ss, steady);
+  if (!g.reason.empty()) return g;
   g.t_begin = ss.t_begin;
   g.t_end = ss.t_end;
   const std::vector<double> t = rx.column("t");
-  for (int j = 1; rx.has("N_front_" + std::to_string(j)); ++j) {
+  for (int j = 1; rx.has("N_front_" + std::to_string(j)); ++j)
     for (const char* side : {"front", "rear"}) {
       const std::string col = std::string("N_") + side + "_" + std::to_string(j);
-      if (!rx.has(col)) continue;
-      const std::vector<double> N = rx.column(col);
-      double lo = INFINITY, hi = -INFINITY;
-      for (std::size_t i = 0; i < t.size(); ++i)
-        if (t[i] >= ss.t_begin && t[i] <= ss.t_end && std::isfinite(N[i])) {
-          lo = std::min(lo, N[i]);
-          hi = std::max(hi, N[i]);
-        }
-      if (!std::isfinite(lo)) continue;
-      ++g.guides_checked;
-      const double noise = 1e-6 * std::max(std::abs(lo), std::abs(hi));
-      if (!(lo < -noise && hi > noise)) continue;  // one side throughout
-      const double share_negative = negativeShare(t, N, ss.t_begin, ss.t_end);
-      GuideLiftOffEntry e;
-      e.cart = j;
-      e.guide = side;
-      e.presses_down = share_negative <= 0.5;
-      e.time_fraction = e.presses_down ? share_negative : 1.0 - share_negative;
-      e.worst_reaction = e.presses_down ? lo : hi;
-      e.prevailing_extreme = e.presses_down ? hi : lo;
-      g.lifting.push_back(e);
+      if (rx.has(col)) checkGuide(g, t, rx.column(col), ss, j, side);
     }
-  }
-  // One warning line for the run (a shipped scene's four carts give one line, not four), each
-  // lifting guide in it with its figures.
-  if (!g.lifting.empty()) {
-    std::string list;
-    for (const GuideLiftOffEntry& e : g.lifting) {
-      char buf[256];
-      std::snprintf(buf, sizeof buf, "%scart %d %s: %s (N %s 0, up to %.4g N), %s for %.3g %% of the time (N reaching %.4g N)",
-                    list.empty() ? "" : "; ", e.cart, e.guide.c_str(), e.presses_down ? "downward" : "upward",
-                    e.presses_down ? ">" : "<", e.prevailing_extreme, e.presses_down ? "upward" : "downward",
-                    100.0 * e.time_fraction, e.worst_reaction);
-      list += buf;
-    }
-    char head[160];
-    std::snprintf(head, sizeof head, "guide reactions change sign in the steady window (t = %.4g ... %.4g s): ",
-                  ss.t_begin, ss.t_end);
-    g.warnings.push_back(std::string(head) + list +
-                         "; each of these rollers lifts off its guide while the reaction is on its other side, unless "
-                         "a counter-roller holds it, which the scene does not model (summary.json guide_lift_off)");
-  }
+  if (!g.lifting.empty()) g.warnings.push_back(liftOffWarning(g, ss));
   if (g.guides_checked == 0) {
     g.reason = "the steady window holds no rows of the reactions table";
     return g;

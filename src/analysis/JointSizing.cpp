@@ -180,56 +180,74 @@ void addGuideRollers(std::vector<JointSizing>& out, const JointRun& u, int j) {
 
 // Cart j's rod end and crank pin: the rod's swing about the cart's pin, β̇ = ω·dβ/dθ, and the crank
 // pin's rotation relative to the rod's big end, ω·(1 + σ·dβ/dθ) (the rod turns at −σ·β̇, SliderCrank.h).
+struct RodSpeeds {
+  std::vector<double> swing, pin_relative;  // per reactions row; empty when the rod's swing is not known
+};
+
+RodSpeeds rodSpeeds(const JointRun& u, int j) {
+  RodSpeeds v;
+  if (!u.swing_known) return v;
+  const double r = u.sc.crank.radius, l = u.sc.rods.length;
+  const int side = static_cast<std::size_t>(j - 1) < u.sc.carts.side.size() && u.sc.carts.side[j - 1] == -1 ? -1 : 1;
+  const double phase = u.sc.crankPhase(j - 1);
+  v.swing.resize(u.t.size());
+  v.pin_relative.resize(u.t.size());
+  for (std::size_t i = 0; i < u.t.size(); ++i) {
+    const double dbeta = sliderCrankExact(u.crank_angle[i] + phase, r, l, side).dbeta;
+    v.swing[i] = std::abs(u.crank_speed[i] * dbeta);
+    v.pin_relative[i] = std::abs(u.crank_speed[i] * (1.0 + side * dbeta));
+  }
+  return v;
+}
+
+// The rod end oscillates through 2γ once per crank revolution: its life in oscillations.
+void rateOscillatingRodEnd(JointSizing& x, const JointRun& u) {
+  x.oscillating = true;
+  x.oscillation_angle = 2.0 * u.gamma;
+  x.oscillation_frequency = u.crank_frequency;
+  x.rolling_elements_min = std::ceil(rollingElementsForOscillation(x.oscillation_angle) - 1e-9);
+  x.life_basis = "oscillates through 2γ = 2·asin(r/l) = " + fmt("%.4g", x.oscillation_angle * kDegPerRad) +
+                 "° once per crank revolution (f = " + fmt("%.4g", u.crank_frequency) +
+                 " 1/s): L10_osc = L10·180°/(2γ) oscillations, L10 = (C/P)³·10⁶ of ISO 281 (Harris and "
+                 "Kotzalas (2007)), L10h = L10_osc/(3600·f). Holds only for a bearing with at least Z = " +
+                 fmt("%.0f", x.rolling_elements_min) +
+                 " rolling elements (its critical angle 720°/Z must not exceed 2γ); with fewer the rolling "
+                 "elements' loaded zones do not overlap and the conversion does not hold";
+}
+
+JointSizing rodEnd(const JointRun& u, int j, const std::vector<double>& swing) {
+  const std::string k = std::to_string(j);
+  JointSizing x = loadOf(kRodEnd, j, "F_rod_" + k,
+                         u.swing_known ? "the rod's swing speed |β̇| = |ω_crank·dβ/dθ| about the cart's pin"
+                                       : "none (the rod's swing is not known): every instant weighted equally",
+                         u.t, u.rx.column("F_rod_" + k), swing, u.b, u.e, u.sc.sizing.rating_rod_end);
+  if (u.swing_known) rateOscillatingRodEnd(x, u);
+  rateLife(x, kRodEnd,
+           u.swing_known ? u.no_life
+                         : "the rod's swing is not known (it needs crank.radius < rods.length; a cam drive has no rod)");
+  return x;
+}
+
+JointSizing crankPin(const JointRun& u, int j, const std::vector<double>& pin_relative) {
+  const std::string k = std::to_string(j);
+  JointSizing x = loadOf(kCrankPin, j, "crankpin_x_" + k + ", crankpin_y_" + k,
+                         u.swing_known ? "rotation relative to the rod |ω_crank·(1 + σ·dβ/dθ)|"
+                                       : "crank speed |ω_crank| (the rod's swing not known)",
+                         u.t, magnitude(u.rx.column("crankpin_x_" + k), u.rx.column("crankpin_y_" + k)),
+                         u.swing_known ? pin_relative : u.crank_speed, u.b, u.e, u.sc.sizing.rating_crank_pin);
+  x.life_basis = "turns relative to the rod's big end at the crank's rotation less the rod's swing, "
+                 "n = |ω_crank·(1 + σ·dβ/dθ)|: one relative revolution per crank revolution, never reversing "
+                 "(r/l < 1); " + std::string(kHoursAtMeanSpeed);
+  rateLife(x, kCrankPin, u.no_life);
+  return x;
+}
+
 void addRodJoints(std::vector<JointSizing>& out, const JointRun& u, int j) {
   const std::string k = std::to_string(j);
-  const double r = u.sc.crank.radius, l = u.sc.rods.length;
-  std::vector<double> swing, pin_relative;
-  if (u.swing_known) {
-    const int side = static_cast<std::size_t>(j - 1) < u.sc.carts.side.size() && u.sc.carts.side[j - 1] == -1 ? -1 : 1;
-    const double phase = u.sc.crankPhase(j - 1);
-    swing.resize(u.t.size());
-    pin_relative.resize(u.t.size());
-    for (std::size_t i = 0; i < u.t.size(); ++i) {
-      const double dbeta = sliderCrankExact(u.crank_angle[i] + phase, r, l, side).dbeta;
-      swing[i] = std::abs(u.crank_speed[i] * dbeta);
-      pin_relative[i] = std::abs(u.crank_speed[i] * (1.0 + side * dbeta));
-    }
-  }
-  if (u.rx.has("F_rod_" + k)) {
-    JointSizing x = loadOf(kRodEnd, j, "F_rod_" + k,
-                           u.swing_known ? "the rod's swing speed |β̇| = |ω_crank·dβ/dθ| about the cart's pin"
-                                         : "none (the rod's swing is not known): every instant weighted equally",
-                           u.t, u.rx.column("F_rod_" + k), swing, u.b, u.e, u.sc.sizing.rating_rod_end);
-    if (u.swing_known) {
-      x.oscillating = true;
-      x.oscillation_angle = 2.0 * u.gamma;
-      x.oscillation_frequency = u.crank_frequency;
-      x.rolling_elements_min = std::ceil(rollingElementsForOscillation(x.oscillation_angle) - 1e-9);
-      x.life_basis = "oscillates through 2γ = 2·asin(r/l) = " + fmt("%.4g", x.oscillation_angle * kDegPerRad) +
-                     "° once per crank revolution (f = " + fmt("%.4g", u.crank_frequency) +
-                     " 1/s): L10_osc = L10·180°/(2γ) oscillations, L10 = (C/P)³·10⁶ of ISO 281 (Harris and "
-                     "Kotzalas (2007)), L10h = L10_osc/(3600·f). Holds only for a bearing with at least Z = " +
-                     fmt("%.0f", x.rolling_elements_min) +
-                     " rolling elements (its critical angle 720°/Z must not exceed 2γ); with fewer the rolling "
-                     "elements' loaded zones do not overlap and the conversion does not hold";
-    }
-    rateLife(x, kRodEnd,
-             u.swing_known ? u.no_life
-                           : "the rod's swing is not known (it needs crank.radius < rods.length; a cam drive has no rod)");
-    out.push_back(std::move(x));
-  }
-  if (u.rx.has("crankpin_x_" + k) && u.rx.has("crankpin_y_" + k) && !u.crank_speed.empty()) {
-    JointSizing x = loadOf(kCrankPin, j, "crankpin_x_" + k + ", crankpin_y_" + k,
-                           u.swing_known ? "rotation relative to the rod |ω_crank·(1 + σ·dβ/dθ)|"
-                                         : "crank speed |ω_crank| (the rod's swing not known)",
-                           u.t, magnitude(u.rx.column("crankpin_x_" + k), u.rx.column("crankpin_y_" + k)),
-                           u.swing_known ? pin_relative : u.crank_speed, u.b, u.e, u.sc.sizing.rating_crank_pin);
-    x.life_basis = "turns relative to the rod's big end at the crank's rotation less the rod's swing, "
-                   "n = |ω_crank·(1 + σ·dβ/dθ)|: one relative revolution per crank revolution, never reversing "
-                   "(r/l < 1); " + std::string(kHoursAtMeanSpeed);
-    rateLife(x, kCrankPin, u.no_life);
-    out.push_back(std::move(x));
-  }
+  const RodSpeeds v = rodSpeeds(u, j);
+  if (u.rx.has("F_rod_" + k)) out.push_back(rodEnd(u, j, v.swing));
+  if (u.rx.has("crankpin_x_" + k) && u.rx.has("crankpin_y_" + k) && !u.crank_speed.empty())
+    out.push_back(crankPin(u, j, v.pin_relative));
 }
 
 // Each main bearing's reaction (crankshaft.bearing_positions; CrankshaftBearings.h), each turning
@@ -251,13 +269,19 @@ void addMainBearings(std::vector<JointSizing>& out, const JointRun& u) {
   }
 }
 
-}  // namespace
+// The main bearings' resultant, when the shaft's bearings are not placed: one bearing carrying it all.
+JointSizing mainBearingResultant(const JointRun& u) {
+  JointSizing x = loadOf(kMainBearing, 0, "bearing_x, bearing_y", "crank speed |ω_crank|", u.t,
+                         magnitude(u.rx.column("bearing_x"), u.rx.column("bearing_y")), u.crank_speed, u.b, u.e,
+                         u.sc.sizing.rating_main_bearing);
+  x.life_basis = "the life of one bearing carrying the whole resultant, turning with the crank; " +
+                 std::string(kHoursAtMeanSpeed);
+  rateLife(x, kMainBearing, u.no_life);
+  return x;
+}
 
-std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const SteadyState& w,
-                                    const std::string& motion) {
-  std::vector<JointSizing> out;
-  JointRun u{sc, run.reactions, run.timeseries};
-  if (!u.rx.has("t") || u.rx.rows.empty() || !u.ts.has("t")) return out;
+// The reactions rows of the steady window, the crank's motion on them and the rod's swing.
+void readJointRun(JointRun& u, const SteadyState& w, const std::string& motion) {
   u.t = u.rx.column("t");
   u.ts_t = u.ts.column("t");
   while (u.b < u.t.size() && !(u.t[u.b] >= w.t_begin)) ++u.b;
@@ -267,23 +291,26 @@ std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const
   if (u.ts.has("omega_crank")) u.crank_speed = resample(u.ts_t, u.ts.column("omega_crank"), u.t);
   if (u.ts.has("phi_crank")) u.crank_angle = resample(u.ts_t, u.ts.column("phi_crank"), u.t);
   u.crank_frequency = meanAbs(u.t, u.crank_speed, u.b, u.e) / kTwoPi;
-  u.gamma = sc.hasCamDrive() ? kNaN : rodSwingAmplitude(sc.crank.radius, sc.rods.length);
+  u.gamma = u.sc.hasCamDrive() ? kNaN : rodSwingAmplitude(u.sc.crank.radius, u.sc.rods.length);
   u.swing_known = std::isfinite(u.gamma) && !u.crank_speed.empty() && !u.crank_angle.empty();
+}
+
+}  // namespace
+
+std::vector<JointSizing> sizeJoints(const Scene& sc, const RunResult& run, const SteadyState& w,
+                                    const std::string& motion) {
+  std::vector<JointSizing> out;
+  JointRun u{sc, run.reactions, run.timeseries};
+  if (!u.rx.has("t") || u.rx.rows.empty() || !u.ts.has("t")) return out;
+  readJointRun(u, w, motion);
   for (int j = 1; j <= sc.carts.count; ++j) {
     addGuideRollers(out, u, j);
     addRodJoints(out, u, j);
   }
-  if (u.rx.has("bearing_x_1") && u.rx.has("bearing_y_1") && !u.crank_speed.empty()) {
+  if (u.rx.has("bearing_x_1") && u.rx.has("bearing_y_1") && !u.crank_speed.empty())
     addMainBearings(out, u);
-  } else if (u.rx.has("bearing_x") && u.rx.has("bearing_y") && !u.crank_speed.empty()) {
-    JointSizing x = loadOf(kMainBearing, 0, "bearing_x, bearing_y", "crank speed |ω_crank|", u.t,
-                           magnitude(u.rx.column("bearing_x"), u.rx.column("bearing_y")), u.crank_speed, u.b, u.e,
-                           sc.sizing.rating_main_bearing);
-    x.life_basis = "the life of one bearing carrying the whole resultant, turning with the crank; " +
-                   std::string(kHoursAtMeanSpeed);
-    rateLife(x, kMainBearing, u.no_life);
-    out.push_back(std::move(x));
-  }
+  else if (u.rx.has("bearing_x") && u.rx.has("bearing_y") && !u.crank_speed.empty())
+    out.push_back(mainBearingResultant(u));
   return out;
 }
 

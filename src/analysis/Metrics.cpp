@@ -78,6 +78,72 @@ ColumnStats columnStats(const std::vector<double>& t, const std::vector<double>&
   return s;
 }
 
+namespace {
+
+// The timeseries rows a window's metrics read: the times, the finite rows [0, n), the window [b, e).
+struct WindowRows {
+  const std::vector<double>& t;
+  std::size_t n, b, e;
+};
+
+// Extremes of the crank speed (rows and located extrema), its midrange, and max |ε|.
+void addCrankSpeedExtremes(WindowMetrics& m, const RunResult& run, const SteadyState& w, const WindowRows& r) {
+  const Table& ts = run.timeseries;
+  const std::vector<double> omega = ts.column("omega_crank");
+  const ColumnStats os = columnStats(r.t, omega, r.b, r.e);
+  m.omega_min = os.min;
+  m.omega_max = os.max;
+  // The extrema the integrator located between the rows (CrankSpeedExtrema.h): the rows alone
+  // miss a sharp extreme by up to |ω̈|·h²/8.
+  if (std::isfinite(os.min) && r.e > r.b)
+    for (const CrankSpeedExtremum& x : run.crank_speed_extrema)
+      if (x.t >= w.t_begin && x.t <= w.t_end) {
+        m.omega_min = std::min(m.omega_min, x.omega);
+        m.omega_max = std::max(m.omega_max, x.omega);
+      }
+  m.omega_midrange = 0.5 * (m.omega_min + m.omega_max);
+
+  std::vector<double> eps;
+  if (ts.has("eps_crank")) {
+    eps = ts.column("eps_crank");
+  } else {
+    eps = differentiate(r.t, omega, r.n);
+    m.eps_from_difference = true;
+  }
+  m.eps_abs_max = columnStats(r.t, eps, r.b, r.e).abs_max;
+}
+
+// Coupling swings, Loveikin, Pochka, Romasevych (2018) Table 1.
+void addCouplingSwings(WindowMetrics& m, const Table& ts, bool have_time, const WindowRows& r) {
+  auto swingOf = [&](const char* name) {
+    if (!have_time || !ts.has(name)) {
+      m.missing_columns.push_back(name);
+      return 0.0;
+    }
+    return columnStats(r.t, ts.column(name), r.b, r.e).swing();
+  };
+  m.coupling_torque_swing = swingOf("coupling_torque");
+  m.twist_swing = swingOf("twist");
+  m.twist_rate_swing = swingOf("twist_rate");
+  m.twist_accel_swing = swingOf("twist_accel");
+}
+
+// Reactions over the same time span, on the reactions table's own rows.
+void addReactions(WindowMetrics& m, const Table& rx, const SteadyState& w) {
+  if (!rx.has("t") || rx.rows.empty()) return;
+  const std::vector<double> rt = rx.column("t");
+  std::size_t rb = 0;
+  while (rb < rt.size() && !(rt[rb] >= w.t_begin)) ++rb;
+  std::size_t re = rb;
+  while (re < rt.size() && rt[re] <= w.t_end) ++re;
+  for (const std::string& name : rx.columns) {
+    if (name == "t") continue;
+    m.reactions.emplace_back(name, columnStats(rt, rx.column(name), rb, re));
+  }
+}
+
+}  // namespace
+
 WindowMetrics computeMetrics(const RunResult& run, const SteadyState& w) {
   WindowMetrics m;
   const Table& ts = run.timeseries;
@@ -89,31 +155,9 @@ WindowMetrics computeMetrics(const RunResult& run, const SteadyState& w) {
   const std::size_t n = std::min(w.finite_rows, t.size());
   const std::size_t b = std::min(w.row_begin, n), e = std::min(w.row_end, n);
   m.rows = e - b;
+  const WindowRows rows{t, n, b, e};
 
-  if (have_time && ts.has("omega_crank")) {
-    const std::vector<double> omega = ts.column("omega_crank");
-    const ColumnStats os = columnStats(t, omega, b, e);
-    m.omega_min = os.min;
-    m.omega_max = os.max;
-    // The extrema the integrator located between the rows (CrankSpeedExtrema.h): the rows alone
-    // miss a sharp extreme by up to |ω̈|·h²/8.
-    if (std::isfinite(os.min) && e > b)
-      for (const CrankSpeedExtremum& x : run.crank_speed_extrema)
-        if (x.t >= w.t_begin && x.t <= w.t_end) {
-          m.omega_min = std::min(m.omega_min, x.omega);
-          m.omega_max = std::max(m.omega_max, x.omega);
-        }
-    m.omega_midrange = 0.5 * (m.omega_min + m.omega_max);
-
-    std::vector<double> eps;
-    if (ts.has("eps_crank")) {
-      eps = ts.column("eps_crank");
-    } else {
-      eps = differentiate(t, omega, n);
-      m.eps_from_difference = true;
-    }
-    m.eps_abs_max = columnStats(t, eps, b, e).abs_max;
-  }
+  if (have_time && ts.has("omega_crank")) addCrankSpeedExtremes(m, run, w, rows);
   if (have_time && ts.has("phi_crank") && w.t_end > w.t_begin && n > 0) {
     // Time-weighted mean speed Δφ/Δt; over whole revolutions this is 2π·N/Δt exactly.
     const std::vector<double> phi = ts.column("phi_crank");
@@ -121,33 +165,8 @@ WindowMetrics computeMetrics(const RunResult& run, const SteadyState& w) {
                    (w.t_end - w.t_begin);
   }
   m.coefficients = motionCoefficients(m.omega_min, m.omega_max, m.omega_mean, m.eps_abs_max);
-
-  // Coupling swings, Loveikin, Pochka, Romasevych (2018) Table 1.
-  auto swingOf = [&](const char* name) {
-    if (!have_time || !ts.has(name)) {
-      m.missing_columns.push_back(name);
-      return 0.0;
-    }
-    return columnStats(t, ts.column(name), b, e).swing();
-  };
-  m.coupling_torque_swing = swingOf("coupling_torque");
-  m.twist_swing = swingOf("twist");
-  m.twist_rate_swing = swingOf("twist_rate");
-  m.twist_accel_swing = swingOf("twist_accel");
-
-  // Reactions over the same time span, on the reactions table's own rows.
-  const Table& rx = run.reactions;
-  if (rx.has("t") && !rx.rows.empty()) {
-    const std::vector<double> rt = rx.column("t");
-    std::size_t rb = 0;
-    while (rb < rt.size() && !(rt[rb] >= w.t_begin)) ++rb;
-    std::size_t re = rb;
-    while (re < rt.size() && rt[re] <= w.t_end) ++re;
-    for (const std::string& name : rx.columns) {
-      if (name == "t") continue;
-      m.reactions.emplace_back(name, columnStats(rt, rx.column(name), rb, re));
-    }
-  }
+  addCouplingSwings(m, ts, have_time, rows);
+  addReactions(m, run.reactions, w);
   return m;
 }
 

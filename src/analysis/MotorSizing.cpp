@@ -123,6 +123,27 @@ MotorRows motorRows(const Scene& sc, const Table& ts, double s_n) {
   return r;
 }
 
+// The slip's lowest and highest value over rows [b, e); left as they are with fewer than two rows.
+void takeSlipRange(const std::vector<double>& s, std::size_t b, std::size_t e, double& slip_min, double& slip_max) {
+  if (e < b + 2) return;
+  const auto [lo, hi] = std::minmax_element(s.begin() + b, s.begin() + e);
+  slip_min = *lo;
+  slip_max = *hi;
+}
+
+// Motoring and braking peaks against the breakdown torque of each side: the second trial's
+// 639 N·m braking peak was read against the motoring M_kr (517 N·m) of a machine whose braking
+// breakdown torque is larger.
+void addBreakdownPeaks(MotorSizing& m, const std::vector<double>& M, std::size_t b, std::size_t e) {
+  m.torque_motoring_peak = m.torque_generating_peak = 0;
+  for (std::size_t i = b; i < e && i < M.size(); ++i)
+    if (std::isfinite(M[i])) {
+      m.torque_motoring_peak = std::max(m.torque_motoring_peak, M[i]);
+      m.torque_generating_peak = std::max(m.torque_generating_peak, -M[i]);
+    }
+  m.peak_over_breakdown = e > b ? std::max(m.torque_motoring_peak, m.torque_generating_peak) / m.breakdown_torque : kNaN;
+}
+
 // The torques, powers and slip over the steady window, rows [b, e).
 void addSteadyWindowFigures(MotorSizing& m, const MotorRows& rows, std::size_t b, std::size_t e, double revolutions,
                             bool turning) {
@@ -137,25 +158,12 @@ void addSteadyWindowFigures(MotorSizing& m, const MotorRows& rows, std::size_t b
   m.torque_crank_rms = mc.rms;
   m.torque_crank_peak = mc.peak;
   m.rms_over_nominal = ms.rms / m.nominal_torque;
-  // Motoring and braking peaks against the breakdown torque of each side: the second trial's
-  // 639 N·m braking peak was read against the motoring M_kr (517 N·m) of a machine whose braking
-  // breakdown torque is larger.
-  m.torque_motoring_peak = m.torque_generating_peak = 0;
-  for (std::size_t i = b; i < e && i < M.size(); ++i)
-    if (std::isfinite(M[i])) {
-      m.torque_motoring_peak = std::max(m.torque_motoring_peak, M[i]);
-      m.torque_generating_peak = std::max(m.torque_generating_peak, -M[i]);
-    }
-  m.peak_over_breakdown = e > b ? std::max(m.torque_motoring_peak, m.torque_generating_peak) / m.breakdown_torque : kNaN;
+  addBreakdownPeaks(m, M, b, e);
   m.power_shaft_mean = mp.mean;
   m.power_shaft_peak = mp.max;
   m.power_line_mean = ml.mean;
   m.power_line_peak = ml.max;
-  if (e >= b + 2) {
-    const auto [lo, hi] = std::minmax_element(rows.s.begin() + b, rows.s.begin() + e);
-    m.slip_min = *lo;
-    m.slip_max = *hi;
-  }
+  takeSlipRange(rows.s, b, e, m.slip_min, m.slip_max);
   if (turning && revolutions >= 0.5)
     m.energy_per_revolution = mp.mean * (t[e - 1] - t[b]) / revolutions;
 }
@@ -171,11 +179,7 @@ void addWholeRunFigures(MotorWholeRun& r, const MotorRows& rows, std::size_t run
   r.rotor_losses_mean = rq.mean;
   r.power_line_mean = rl.mean;
   r.power_line_peak = rl.max;
-  if (run_end >= 2) {
-    const auto [lo, hi] = std::minmax_element(rows.s.begin(), rows.s.begin() + run_end);
-    r.slip_min = *lo;
-    r.slip_max = *hi;
-  }
+  takeSlipRange(rows.s, 0, run_end, r.slip_min, r.slip_max);
 }
 
 // What one start puts into the rotor and how many starts per hour the rotor's heat balance
@@ -206,6 +210,32 @@ std::string startsSentence(const MotorWholeRun& r, double steady_losses, double 
   return starts;
 }
 
+// The duty S4: the steady losses plus that many starts' heat per hour.
+void judgeDutyHeating(MotorWholeRun& r, double starts_per_hour, double steady_losses, double nominal_losses,
+                      const std::string& starts) {
+  const double duty_losses = std::max(0.0, steady_losses) + starts_per_hour * r.start_heat_above_steady / 3600.0;
+  r.thermal_over_nominal = std::sqrt(duty_losses / nominal_losses);
+  char duty[200];
+  std::snprintf(duty, sizeof duty, "%.4g starts per hour (sizing.starts_per_hour)", starts_per_hour);
+  r.thermal_basis = "√((steady rotor losses s·M·ω0 + starts per hour × what one start adds) / (s_n·M_n·ω0)) for " +
+                    std::string(duty) + "; " + starts;
+}
+
+// No duty given (or no start to count): continuous running, the steady window's own losses (a
+// locked rotor's s = 1 shows here, where the RMS of its torque would not). `starts`: what the
+// starts add, or why that is not known.
+void judgeContinuousHeating(MotorWholeRun& r, double starts_per_hour, double steady_losses, double nominal_losses,
+                            const std::string& starts) {
+  r.continuous_running = true;
+  r.thermal_over_nominal = std::sqrt(std::max(0.0, steady_losses) / nominal_losses);
+  char eq[64];
+  std::snprintf(eq, sizeof eq, "%.3g", r.thermal_over_nominal);
+  r.thermal_basis = std::string(starts_per_hour > 0 ? "continuous running (sizing.starts_per_hour given, but "
+                                                      "there is no start to count)"
+                                                    : "continuous running (sizing.starts_per_hour not given)") +
+                    ": √(steady-window rotor losses s·M·ω0 / (s_n·M_n·ω0)) = " + eq + "; " + starts;
+}
+
 // The rotor's thermal equivalent against its nominal losses, and the sentence that says how it
 // was found. The duty decides how often the start's heat comes: the run's length says nothing
 // about it (a 10 s run is not a start every 10 s). With sizing.starts_per_hour the thermal
@@ -220,25 +250,11 @@ void judgeRotorHeating(const Scene& sc, const MotorSizing& m, double s_n, double
       start_up && start_up->applicable && !start_up->from_rest
           ? "the run holds no start from rest (it begins turning, initial.crank_speed), so the start's heat is not known"
           : "the start's heat is not known";
-  if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(steady_losses) && start_known && z.starts_per_hour > 0) {
-    const double duty_losses = std::max(0.0, steady_losses) + z.starts_per_hour * r.start_heat_above_steady / 3600.0;
-    r.thermal_over_nominal = std::sqrt(duty_losses / nominal_losses);
-    char duty[200];
-    std::snprintf(duty, sizeof duty, "%.4g starts per hour (sizing.starts_per_hour)", z.starts_per_hour);
-    r.thermal_basis = "√((steady rotor losses s·M·ω0 + starts per hour × what one start adds) / (s_n·M_n·ω0)) for " +
-                      std::string(duty) + "; " + starts;
-  } else if (s_n > 0 && m.nominal_torque > 0 && std::isfinite(steady_losses)) {
-    // No duty given (or no start to count): continuous running, the steady window's own losses (a
-    // locked rotor's s = 1 shows here, where the RMS of its torque would not).
-    r.continuous_running = true;
-    r.thermal_over_nominal = std::sqrt(std::max(0.0, steady_losses) / nominal_losses);
-    char eq[64];
-    std::snprintf(eq, sizeof eq, "%.3g", r.thermal_over_nominal);
-    r.thermal_basis = std::string(z.starts_per_hour > 0 ? "continuous running (sizing.starts_per_hour given, but "
-                                                          "there is no start to count)"
-                                                        : "continuous running (sizing.starts_per_hour not given)") +
-                      ": √(steady-window rotor losses s·M·ω0 / (s_n·M_n·ω0)) = " + eq + "; " +
-                      (!starts.empty() ? starts : unknown_start);
+  const bool losses_known = s_n > 0 && m.nominal_torque > 0 && std::isfinite(steady_losses);
+  if (losses_known && start_known && z.starts_per_hour > 0) {
+    judgeDutyHeating(r, z.starts_per_hour, steady_losses, nominal_losses, starts);
+  } else if (losses_known) {
+    judgeContinuousHeating(r, z.starts_per_hour, steady_losses, nominal_losses, !starts.empty() ? starts : unknown_start);
   } else {
     r.thermal_over_nominal = r.rms_over_nominal;
     // Say which input is missing: the trial read "motor.omega_nominal not given" for a run whose

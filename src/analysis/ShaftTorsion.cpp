@@ -8,38 +8,49 @@
 
 namespace rollerdyn {
 
+namespace {
+
+// Why the run has no shaft torsion to report; "" when it has.
+std::string noTorsionReason(const Scene& sc, const RunResult& run) {
+  if (!sc.crankshaft.torsionalChain()) return "the crankshaft is rigid (no crankshaft.torsional_stiffness)";
+  if (!run.timeseries.has("shaft_torque_1"))
+    return run.model == "reduced" ? "the reduced model keeps the papers' rigid crankshaft (run the multibody model)"
+                                  : "the run has no shaft torques";
+  return "";
+}
+
+// Segment k of the chain: its throws' carts, its stiffness, its torque's peaks over the run's
+// finite rows and over the steady window, and the twist of the run's peak.
+ShaftSegmentTorsion segmentTorsion(const TorsionalChainLayout& chain, std::size_t k, const RunResult& run,
+                                   const SteadyState& ss, bool steady) {
+  ShaftSegmentTorsion s;
+  s.cart_a = chain.cart_of_throw[k] + 1;
+  s.cart_b = chain.cart_of_throw[k + 1] + 1;
+  s.stiffness = chain.stiffness[k];
+  const std::vector<double> T = run.timeseries.column("shaft_torque_" + std::to_string(k + 1));
+  double steady_peak = 0;
+  bool any_steady = false;
+  for (size_t i = 0; i < T.size(); ++i) {
+    if (!std::isfinite(T[i])) break;
+    s.torque_peak_run = std::max(s.torque_peak_run, std::abs(T[i]));
+    if (steady && i >= ss.row_begin && i < ss.row_end) {
+      steady_peak = std::max(steady_peak, std::abs(T[i]));
+      any_steady = true;
+    }
+  }
+  if (any_steady) s.torque_peak_steady = steady_peak;
+  s.twist_peak = s.torque_peak_run / s.stiffness;
+  return s;
+}
+
+}  // namespace
+
 ShaftTorsionSummary computeShaftTorsion(const Scene& sc, const RunResult& run, const SteadyState& ss, bool steady) {
   ShaftTorsionSummary out;
-  if (!sc.crankshaft.torsionalChain()) {
-    out.reason = "the crankshaft is rigid (no crankshaft.torsional_stiffness)";
-    return out;
-  }
-  if (!run.timeseries.has("shaft_torque_1")) {
-    out.reason = run.model == "reduced" ? "the reduced model keeps the papers' rigid crankshaft (run the multibody model)"
-                                        : "the run has no shaft torques";
-    return out;
-  }
+  out.reason = noTorsionReason(sc, run);
+  if (!out.reason.empty()) return out;
   const TorsionalChainLayout chain = torsionalChainLayout(sc);
-  for (size_t k = 0; k < chain.stiffness.size(); ++k) {
-    ShaftSegmentTorsion s;
-    s.cart_a = chain.cart_of_throw[k] + 1;
-    s.cart_b = chain.cart_of_throw[k + 1] + 1;
-    s.stiffness = chain.stiffness[k];
-    const std::vector<double> T = run.timeseries.column("shaft_torque_" + std::to_string(k + 1));
-    double steady_peak = 0;
-    bool any_steady = false;
-    for (size_t i = 0; i < T.size(); ++i) {
-      if (!std::isfinite(T[i])) break;
-      s.torque_peak_run = std::max(s.torque_peak_run, std::abs(T[i]));
-      if (steady && i >= ss.row_begin && i < ss.row_end) {
-        steady_peak = std::max(steady_peak, std::abs(T[i]));
-        any_steady = true;
-      }
-    }
-    if (any_steady) s.torque_peak_steady = steady_peak;
-    s.twist_peak = s.torque_peak_run / s.stiffness;
-    out.segments.push_back(s);
-  }
+  for (size_t k = 0; k < chain.stiffness.size(); ++k) out.segments.push_back(segmentTorsion(chain, k, run, ss, steady));
   out.applies = true;
   if (!(sc.crankshaft.torsional_damping > 0))
     out.warnings.push_back(

@@ -94,52 +94,68 @@ SizingCheck couplingSteadyCheck(const DriveSizing& s, bool turning, std::string 
   return c;
 }
 
+std::string serviceFactorWords(const CouplingSelection& c) { return "S_t = " + g4(c.S_t); }
+
+SizingCheck couplingRatedCheck(const DriveSizing& s, bool turning) {
+  const CouplingSelection& c = s.coupling_selection;
+  return din740(couplingSteadyCheck(s, turning, "coupling_rated_torque",
+                                    "steady peak torque × S_t / T_KN (DIN 740-2), ≤ 1", c.rated_ratio,
+                                    "T_N = " + g4(c.steady_peak) + " N·m (steady window peak), " +
+                                        serviceFactorWords(c) + ", T_KN = " + g4(c.rated_torque) + " N·m"),
+                "sizing.coupling.rated_torque (T_KN)");
+}
+
+SizingCheck couplingMaxCheck(const DriveSizing& s, bool turning) {
+  const CouplingSelection& c = s.coupling_selection;
+  SizingCheck k{"coupling_max_torque", "largest peak torque × S_A·S_z·S_t / T_Kmax (DIN 740-2), ≤ 1", c.max_ratio,
+                verdictOf(c.max_ratio), kWindowWhole,
+                "T_S = max(start " + g4(c.start_peak) + ", steady " + g4(c.steady_peak) + ") N·m, S_A = " +
+                    g4(c.S_A) + ", S_z = " + g4(c.S_z) + ", " + serviceFactorWords(c) + ", T_Kmax = " +
+                    g4(c.max_torque) + " N·m"};
+  k = din740(k, "sizing.coupling.max_torque (T_Kmax)");
+  // A peak above the rating happened whatever the run lacks; a pass needs the start and the running.
+  if (k.verdict == "FAIL") return k;
+  if (!turning) notApplicable(k, "the drive does not turn (" + s.motion + ")");
+  else if (!c.start_in_run)
+    notApplicable(k, "the run holds no start from rest, whose peak usually decides T_Kmax: run it from rest "
+                     "(initial.crank_speed: 0)");
+  else if (!s.steady_reached) notApplicable(k, s.steady_not_reached);
+  return k;
+}
+
+SizingCheck couplingVibratoryCheck(const DriveSizing& s, bool turning) {
+  const CouplingSelection& c = s.coupling_selection;
+  SizingCheck k = couplingSteadyCheck(
+      s, turning, "coupling_vibratory_torque", "vibratory torque amplitude × S_t·S_f / T_KW (DIN 740-2), ≤ 1",
+      c.vibratory_ratio,
+      "T_W = " + g4(c.steady_amplitude) + " N·m, crank order " + std::to_string(c.excitation_order) + " at f = " +
+          g4(c.excitation_frequency) + " Hz, S_f = " + g4(c.S_f) + ", " + serviceFactorWords(c) + ", T_KW = " +
+          g4(c.vibratory_torque) + " N·m");
+  k = din740(k, "sizing.coupling.vibratory_torque (T_KW)");
+  if (k.verdict != kNotApplicable && c.excitation_order == 0)
+    notApplicable(k, "the excitation frequency is not known (the steady window holds no whole crank revolution): "
+                     "run longer (simulation.t_end)");
+  return k;
+}
+
+SizingCheck couplingDampingCheck(const DriveSizing& s, bool turning) {
+  const CouplingSelection& c = s.coupling_selection;
+  SizingCheck k = couplingSteadyCheck(s, turning, "coupling_damping_power",
+                                      "damping power × S_t / P_KW (DIN 740-2), ≤ 1", c.damping_ratio,
+                                      "P_W = " + g4(c.damping_power_run) + " W (" + c.damping_basis + "), " +
+                                          serviceFactorWords(c) + ", P_KW = " + g4(c.damping_power) + " W");
+  k = din740(k, "sizing.coupling.damping_power (P_KW)");
+  if (k.verdict != kNotApplicable && !std::isfinite(c.damping_power_run)) notApplicable(k, c.damping_basis);
+  return k;
+}
+
+// The checks of the ratings given (sizing.coupling.*), in this order.
 void couplingChecks(const DriveSizing& s, bool turning, std::vector<SizingCheck>& out) {
   const CouplingSelection& c = s.coupling_selection;
-  const std::string St = "S_t = " + g4(c.S_t);
-  if (std::isfinite(c.rated_torque))
-    out.push_back(din740(couplingSteadyCheck(
-        s, turning, "coupling_rated_torque", "steady peak torque × S_t / T_KN (DIN 740-2), ≤ 1", c.rated_ratio,
-        "T_N = " + g4(c.steady_peak) + " N·m (steady window peak), " + St + ", T_KN = " + g4(c.rated_torque) + " N·m"),
-                         "sizing.coupling.rated_torque (T_KN)"));
-  if (std::isfinite(c.max_torque)) {
-    SizingCheck k{"coupling_max_torque", "largest peak torque × S_A·S_z·S_t / T_Kmax (DIN 740-2), ≤ 1", c.max_ratio,
-                  verdictOf(c.max_ratio), kWindowWhole,
-                  "T_S = max(start " + g4(c.start_peak) + ", steady " + g4(c.steady_peak) + ") N·m, S_A = " +
-                      g4(c.S_A) + ", S_z = " + g4(c.S_z) + ", " + St + ", T_Kmax = " + g4(c.max_torque) + " N·m"};
-    k = din740(k, "sizing.coupling.max_torque (T_Kmax)");
-    // A peak above the rating happened whatever the run lacks; a pass needs the start and the running.
-    if (k.verdict != "FAIL") {
-      if (!turning) notApplicable(k, "the drive does not turn (" + s.motion + ")");
-      else if (!c.start_in_run)
-        notApplicable(k, "the run holds no start from rest, whose peak usually decides T_Kmax: run it from rest "
-                         "(initial.crank_speed: 0)");
-      else if (!s.steady_reached) notApplicable(k, s.steady_not_reached);
-    }
-    out.push_back(k);
-  }
-  if (std::isfinite(c.vibratory_torque)) {
-    SizingCheck k = couplingSteadyCheck(
-        s, turning, "coupling_vibratory_torque", "vibratory torque amplitude × S_t·S_f / T_KW (DIN 740-2), ≤ 1",
-        c.vibratory_ratio,
-        "T_W = " + g4(c.steady_amplitude) + " N·m, crank order " + std::to_string(c.excitation_order) + " at f = " +
-            g4(c.excitation_frequency) + " Hz, S_f = " + g4(c.S_f) + ", " + St + ", T_KW = " + g4(c.vibratory_torque) +
-            " N·m");
-    k = din740(k, "sizing.coupling.vibratory_torque (T_KW)");
-    if (k.verdict != kNotApplicable && c.excitation_order == 0)
-      notApplicable(k, "the excitation frequency is not known (the steady window holds no whole crank revolution): "
-                       "run longer (simulation.t_end)");
-    out.push_back(k);
-  }
-  if (std::isfinite(c.damping_power)) {
-    SizingCheck k = couplingSteadyCheck(s, turning, "coupling_damping_power",
-                                        "damping power × S_t / P_KW (DIN 740-2), ≤ 1", c.damping_ratio,
-                                        "P_W = " + g4(c.damping_power_run) + " W (" + c.damping_basis + "), " + St +
-                                            ", P_KW = " + g4(c.damping_power) + " W");
-    k = din740(k, "sizing.coupling.damping_power (P_KW)");
-    if (k.verdict != kNotApplicable && !std::isfinite(c.damping_power_run)) notApplicable(k, c.damping_basis);
-    out.push_back(k);
-  }
+  if (std::isfinite(c.rated_torque)) out.push_back(couplingRatedCheck(s, turning));
+  if (std::isfinite(c.max_torque)) out.push_back(couplingMaxCheck(s, turning));
+  if (std::isfinite(c.vibratory_torque)) out.push_back(couplingVibratoryCheck(s, turning));
+  if (std::isfinite(c.damping_power)) out.push_back(couplingDampingCheck(s, turning));
 }
 
 }  // namespace

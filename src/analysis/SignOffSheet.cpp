@@ -100,6 +100,39 @@ std::string comparisonSymbol(const std::string& passes_when) {
   return "";
 }
 
+namespace {
+
+// The torsional modes' rows: the separation margins of the modal analysis, or one row saying it
+// was not made with this run.
+void addModesRows(SignOffSheet& s, const json& summary) {
+  const json& modes = member(summary, "modes");
+  if (modes.is_object()) {
+    for (const json& c : member(member(modes, "separation_margins"), "checks"))
+      s.rows.push_back(rowOf("torsional modes", c));
+    return;
+  }
+  SizingCheck c;
+  c.name = "separation_margin";
+  c.what = "separation margin of the coupling's torsional mode from the excitation orders, ≥ 10 %";
+  c.value = NAN;
+  c.verdict = "not applicable";
+  c.reason = "the modal analysis was not made with this run";
+  s.rows.push_back(rowOf("torsional modes", sizingCheckJson(c)));
+}
+
+// The pass / FAIL / n/a counts, whether the sheet can be signed, and the line that says so.
+void concludeSheet(SignOffSheet& s) {
+  for (const SignOffRow& r : s.rows) {
+    s.passed += r.verdict == "pass";
+    s.failed += r.verdict == "FAIL";
+    s.not_applicable += r.verdict == "not applicable";
+  }
+  s.signable = s.failed == 0 && s.run_status.empty() && !s.rows.empty();
+  s.overall = overallLine(s);
+}
+
+}  // namespace
+
 SignOffSheet buildSignOffSheet(const json& summary, const SignOffSource& source) {
   SignOffSheet s;
   s.source = source;
@@ -111,26 +144,8 @@ SignOffSheet buildSignOffSheet(const json& summary, const SignOffSource& source)
   for (const json& w : member(summary, "warnings"))
     if (w.is_string()) s.warnings.push_back(w.get<std::string>());
   for (const json& c : member(member(summary, "sizing"), "checks")) s.rows.push_back(rowOf("drive sizing", c));
-  const json& modes = member(summary, "modes");
-  if (modes.is_object()) {
-    for (const json& c : member(member(modes, "separation_margins"), "checks"))
-      s.rows.push_back(rowOf("torsional modes", c));
-  } else {
-    SizingCheck c;
-    c.name = "separation_margin";
-    c.what = "separation margin of the coupling's torsional mode from the excitation orders, ≥ 10 %";
-    c.value = NAN;
-    c.verdict = "not applicable";
-    c.reason = "the modal analysis was not made with this run";
-    s.rows.push_back(rowOf("torsional modes", sizingCheckJson(c)));
-  }
-  for (const SignOffRow& r : s.rows) {
-    s.passed += r.verdict == "pass";
-    s.failed += r.verdict == "FAIL";
-    s.not_applicable += r.verdict == "not applicable";
-  }
-  s.signable = s.failed == 0 && s.run_status.empty() && !s.rows.empty();
-  s.overall = overallLine(s);
+  addModesRows(s, summary);
+  concludeSheet(s);
   return s;
 }
 

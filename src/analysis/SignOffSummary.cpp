@@ -101,41 +101,57 @@ json couplingSelectionJson(const CouplingSelection& c) {
           {"damping_ratio", num(c.damping_ratio)}};
 }
 
-std::string signOffText(const json& sizing) {
+namespace {
+
+// One signal's damage per start and per hour, each with its life and dominant cycles.
+std::string signalFatigueText(const json& g) {
   std::ostringstream o;
-  const json& f = jsonMember(sizing, "fatigue");
-  if (f.is_object()) {
-    o << "  fatigue (rainflow after ASTM E1049-85, Miner's rule; below the knee: " << str(jsonMember(f, "below_knee"))
-      << "; mean correction: " << str(jsonMember(f, "mean_correction")) << ")\n";
-    for (const auto& [name, g] : jsonMember(f, "signals").items()) {
-      const std::string unit = str(jsonMember(g, "unit"));
-      const json &ps = jsonMember(g, "per_start"), &st = jsonMember(g, "steady");
-      o << "    " << str(jsonMember(g, "what")) << ":\n";
-      o << "      per start:  damage " << fmt(jsonMember(g, "damage_per_start"), "%.3g") << ", starts to failure "
-        << lifeText(ps, jsonMember(g, "starts_to_failure"), "");
-      if (!jsonMember(ps, "applies").get<bool>()) o << " (" << str(jsonMember(ps, "reason")) << ")";
-      o << "\n";
-      dominantText(o, ps, unit);
-      o << "      per hour:   damage " << fmt(jsonMember(g, "damage_per_hour"), "%.3g") << " 1/h, hours to failure "
-        << lifeText(st, jsonMember(g, "hours_to_failure"), " h");
-      if (!jsonMember(st, "applies").get<bool>()) o << " (" << str(jsonMember(st, "reason")) << ")";
-      o << "\n";
-      dominantText(o, st, unit);
-    }
-  }
-  const json& c = jsonMember(sizing, "coupling_selection");
-  if (c.is_object()) {
-    o << "  coupling selection (" << str(jsonMember(c, "method")) << "), torques at the crank axis:\n"
-      << "    peak torque: start " << fmt(jsonMember(c, "start_peak")) << ", steady " << fmt(jsonMember(c, "steady_peak"))
-      << " N·m; vibratory amplitude T_W " << fmt(jsonMember(c, "vibratory_amplitude")) << " N·m at f = "
-      << fmt(jsonMember(c, "excitation_frequency")) << " Hz (S_f " << fmt(jsonMember(c, "S_f"), "%.3g")
-      << "); damping power P_W " << fmt(jsonMember(c, "damping_power_run")) << " W\n"
-      << "    factors S_t " << fmt(jsonMember(c, "S_t"), "%.3g") << ", S_z " << fmt(jsonMember(c, "S_z"), "%.3g") << ", S_A "
-      << fmt(jsonMember(c, "S_A"), "%.3g") << "; ratings T_KN " << fmt(jsonMember(c, "rated_torque")) << ", T_Kmax "
-      << fmt(jsonMember(c, "max_torque")) << ", T_KW " << fmt(jsonMember(c, "vibratory_torque")) << " N·m, P_KW "
-      << fmt(jsonMember(c, "damping_power")) << " W (n/a: not given)\n";
-  }
+  const std::string unit = str(jsonMember(g, "unit"));
+  const json &ps = jsonMember(g, "per_start"), &st = jsonMember(g, "steady");
+  o << "    " << str(jsonMember(g, "what")) << ":\n";
+  o << "      per start:  damage " << fmt(jsonMember(g, "damage_per_start"), "%.3g") << ", starts to failure "
+    << lifeText(ps, jsonMember(g, "starts_to_failure"), "");
+  if (!jsonMember(ps, "applies").get<bool>()) o << " (" << str(jsonMember(ps, "reason")) << ")";
+  o << "\n";
+  dominantText(o, ps, unit);
+  o << "      per hour:   damage " << fmt(jsonMember(g, "damage_per_hour"), "%.3g") << " 1/h, hours to failure "
+    << lifeText(st, jsonMember(g, "hours_to_failure"), " h");
+  if (!jsonMember(st, "applies").get<bool>()) o << " (" << str(jsonMember(st, "reason")) << ")";
+  o << "\n";
+  dominantText(o, st, unit);
   return o.str();
+}
+
+// The fatigue lines: the method, then each signal's.
+std::string fatigueText(const json& f) {
+  if (!f.is_object()) return "";
+  std::ostringstream o;
+  o << "  fatigue (rainflow after ASTM E1049-85, Miner's rule; below the knee: " << str(jsonMember(f, "below_knee"))
+    << "; mean correction: " << str(jsonMember(f, "mean_correction")) << ")\n";
+  for (const auto& [name, g] : jsonMember(f, "signals").items()) o << signalFatigueText(g);
+  return o.str();
+}
+
+// The coupling selection's lines: the run's torques and power, the factors and the ratings.
+std::string couplingSelectionText(const json& c) {
+  if (!c.is_object()) return "";
+  std::ostringstream o;
+  o << "  coupling selection (" << str(jsonMember(c, "method")) << "), torques at the crank axis:\n"
+    << "    peak torque: start " << fmt(jsonMember(c, "start_peak")) << ", steady " << fmt(jsonMember(c, "steady_peak"))
+    << " N·m; vibratory amplitude T_W " << fmt(jsonMember(c, "vibratory_amplitude")) << " N·m at f = "
+    << fmt(jsonMember(c, "excitation_frequency")) << " Hz (S_f " << fmt(jsonMember(c, "S_f"), "%.3g")
+    << "); damping power P_W " << fmt(jsonMember(c, "damping_power_run")) << " W\n"
+    << "    factors S_t " << fmt(jsonMember(c, "S_t"), "%.3g") << ", S_z " << fmt(jsonMember(c, "S_z"), "%.3g") << ", S_A "
+    << fmt(jsonMember(c, "S_A"), "%.3g") << "; ratings T_KN " << fmt(jsonMember(c, "rated_torque")) << ", T_Kmax "
+    << fmt(jsonMember(c, "max_torque")) << ", T_KW " << fmt(jsonMember(c, "vibratory_torque")) << " N·m, P_KW "
+    << fmt(jsonMember(c, "damping_power")) << " W (n/a: not given)\n";
+  return o.str();
+}
+
+}  // namespace
+
+std::string signOffText(const json& sizing) {
+  return fatigueText(jsonMember(sizing, "fatigue")) + couplingSelectionText(jsonMember(sizing, "coupling_selection"));
 }
 
 }  // namespace rollerdyn

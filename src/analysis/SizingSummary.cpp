@@ -60,10 +60,24 @@ std::string fmt(const json& v, const char* f, double scale = 1.0) {
   return buf;
 }
 
+// The motor over the whole run: torque, rotor losses and heating, the start's heat, line power, slip.
+json motorWholeRunJson(const MotorWholeRun& r) {
+  return {{"torque_shaft", {{"mean", num(r.torque_shaft_mean)}, {"rms", num(r.torque_shaft_rms)}, {"peak", num(r.torque_shaft_peak)}}},
+          {"rms_over_nominal", num(r.rms_over_nominal)},
+          {"rotor_losses_mean", num(r.rotor_losses_mean)},
+          {"thermal_over_nominal", num(r.thermal_over_nominal)},
+          {"thermal_basis", r.thermal_basis},
+          {"start_heat", num(r.start_heat)},
+          {"start_duration", num(r.start_duration)},
+          {"start_heat_above_steady", num(r.start_heat_above_steady)},
+          {"starts_per_hour", num(r.starts_per_hour)},
+          {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
+          {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}};
+}
+
 // The motor's torques, powers and slip in the steady window and over the whole run; the heating
 // and breakdown verdicts come from the checks.
 json motorSizingJson(const MotorSizing& m, const json& rms_check, const json& peak_check) {
-  const MotorWholeRun& r = m.whole_run;
   return {
       {"torque_shaft", {{"mean", num(m.torque_shaft_mean)}, {"rms", num(m.torque_shaft_rms)}, {"peak", num(m.torque_shaft_peak)}}},
       {"torque_crank", {{"mean", num(m.torque_crank_mean)}, {"rms", num(m.torque_crank_rms)}, {"peak", num(m.torque_crank_peak)}}},
@@ -83,18 +97,7 @@ json motorSizingJson(const MotorSizing& m, const json& rms_check, const json& pe
       {"line_power_basis", m.line_power_basis},
       {"slip", {{"min", num(m.slip_min)}, {"max", num(m.slip_max)}}},
       {"energy_per_revolution", num(m.energy_per_revolution)},
-      {"whole_run",
-       {{"torque_shaft", {{"mean", num(r.torque_shaft_mean)}, {"rms", num(r.torque_shaft_rms)}, {"peak", num(r.torque_shaft_peak)}}},
-        {"rms_over_nominal", num(r.rms_over_nominal)},
-        {"rotor_losses_mean", num(r.rotor_losses_mean)},
-        {"thermal_over_nominal", num(r.thermal_over_nominal)},
-        {"thermal_basis", r.thermal_basis},
-        {"start_heat", num(r.start_heat)},
-        {"start_duration", num(r.start_duration)},
-        {"start_heat_above_steady", num(r.start_heat_above_steady)},
-        {"starts_per_hour", num(r.starts_per_hour)},
-        {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
-        {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}}}};
+      {"whole_run", motorWholeRunJson(m.whole_run)}};
 }
 
 // The flywheel the speed fluctuation asks for.
@@ -141,6 +144,14 @@ json jointsSizingJson(const DriveSizing& s) {
   return joints;
 }
 
+// The verdict of the check so named (the last one), null when there is none or it has none.
+json checkVerdict(const std::vector<SizingCheck>& checks, const char* name) {
+  const SizingCheck* found = nullptr;
+  for (const SizingCheck& c : checks)
+    if (c.name == name) found = &c;
+  return found && !found->verdict.empty() ? json(found->verdict) : json(nullptr);
+}
+
 }  // namespace
 
 json sizingJson(const DriveSizing& s) {
@@ -149,20 +160,13 @@ json sizingJson(const DriveSizing& s) {
   j["whole_run"] = {{"t_begin", num(s.run_t_begin)}, {"t_end", num(s.run_t_end)}};
   j["motion"] = s.motion;
   json checks = json::array();
-  const SizingCheck* by_name[3] = {nullptr, nullptr, nullptr};
-  for (const SizingCheck& c : s.checks) {
-    checks.push_back(sizingCheckJson(c));
-    if (c.name == "motor_heating") by_name[0] = &c;
-    if (c.name == "motor_breakdown") by_name[1] = &c;
-    if (c.name == "coupling") by_name[2] = &c;
-  }
+  for (const SizingCheck& c : s.checks) checks.push_back(sizingCheckJson(c));
   j["checks"] = checks;
-  auto verdict = [&](int k) -> json {
-    return by_name[k] && !by_name[k]->verdict.empty() ? json(by_name[k]->verdict) : json(nullptr);
-  };
-  j["motor"] = s.motor.available ? motorSizingJson(s.motor, verdict(0), verdict(1)) : json(nullptr);
+  j["motor"] = s.motor.available ? motorSizingJson(s.motor, checkVerdict(s.checks, "motor_heating"),
+                                                   checkVerdict(s.checks, "motor_breakdown"))
+                                 : json(nullptr);
   j["flywheel"] = flywheelSizingJson(s.flywheel);
-  j["coupling"] = s.coupling.available ? couplingSizingJson(s.coupling, verdict(2)) : json(nullptr);
+  j["coupling"] = s.coupling.available ? couplingSizingJson(s.coupling, checkVerdict(s.checks, "coupling")) : json(nullptr);
   j["joints"] = jointsSizingJson(s);
   j["fatigue"] = fatigueJson(s.fatigue);
   j["coupling_selection"] = couplingSelectionJson(s.coupling_selection);
@@ -226,141 +230,6 @@ std::string jointLine(const std::string& label, const json& x) {
   return buf;
 }
 
-// A command-line word, quoted for the shell where it needs it.
-std::string shellWord(const std::string& a) {
-  if (!a.empty() && a.find_first_of(" '\"$`\\*?;&|<>()") == std::string::npos) return a;
-  std::string q = "'";
-  for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// The flywheel found by runs (studies/FlywheelByRuns.h): every run tried, then the answer.
-std::string flywheelByRunsText(const json& f, const std::string& pad) {
-  const json& b = jsonMember(f, "by_runs");
-  if (!b.is_object()) return "";
-  std::ostringstream o;
-  const std::string where = str(jsonMember(b, "location"));
-  o << pad << "by runs started at " << fmt(jsonMember(b, "started_at_crank_speed"), "%.4g") << " rad/s (" << where << "):";
-  for (const json& r : jsonMember(b, "runs"))
-    o << " " << fmt(jsonMember(r, "inertia"), "%.4g") << " kg·m² gives δ " << fmt(jsonMember(r, "delta"), "%.4g") << ";";
-  o << "\n";
-  const bool found = jsonMember(b, "found").is_boolean() && jsonMember(b, "found").get<bool>();
-  if (found)
-    o << pad << "a flywheel of " << fmt(jsonMember(b, "inertia"), "%.4g") << " kg·m² on the " << where << " meets δ* = "
-      << fmt(jsonMember(f, "target_delta"), "%.4g") << " in a run (δ = " << fmt(jsonMember(b, "delta"), "%.4g") << ")\n";
-  if (jsonMember(b, "note").is_string()) o << pad << jsonMember(b, "note").get<std::string>() << "\n";
-  return o.str();
-}
-
-// The flywheel part of sizingText: the swing, the proposal with its basis, the runs that check it.
-std::string flywheelText(const json& summary) {
-  std::ostringstream o;
-  const json& f = jsonMember(jsonMember(summary, "sizing"), "flywheel");
-  const std::string pad = "                                    ";
-  o << "  flywheel                          kinetic-energy swing ΔT " << fmt(jsonMember(f, "kinetic_energy_swing"), "%.4g")
-    << " J per revolution; drive inertia at the crank J " << fmt(jsonMember(f, "inertia_effective"), "%.4g")
-    << " kg·m²; δ " << fmt(jsonMember(f, "delta"), "%.4g") << "\n";
-  if (!jsonMember(f, "target_delta").is_number()) {
-    o << pad << "target δ* not given (sizing.target_delta)\n";
-    return o.str();
-  }
-  const json& added = jsonMember(f, "added_inertia_crankshaft");
-  const json& basis = jsonMember(f, "basis");
-  if (!(jsonMember(f, "estimate").is_boolean() && jsonMember(f, "estimate").get<bool>())) {
-    // Met only by the run's measured δ, never by an estimate.
-    if (basis.is_string())
-      o << pad << "for δ* = " << fmt(jsonMember(f, "target_delta"), "%.4g") << ": " << basis.get<std::string>()
-        << " (δ = " << fmt(jsonMember(f, "delta"), "%.4g") << ")\n";
-    return o.str();
-  }
-  // The whole flywheel at each place, and what that adds to the present one (the third trial read
-  // "flywheel 1317 kg·m²" as the amount to add to the 1103 already fitted).
-  const json& J_req = jsonMember(f, "inertia_required");
-  const double J_now = jsonMember(f, "inertia_effective").is_number() ? jsonMember(f, "inertia_effective").get<double>() : NAN;
-  o << pad << "for δ* = " << fmt(jsonMember(f, "target_delta"), "%.4g") << ", by estimate: a flywheel of "
-    << fmt(jsonMember(f, "flywheel_crankshaft"), "%.4g") << " kg·m² in all on the crankshaft (" << fmt(added, "%.4g")
-    << " more than now) or " << fmt(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² in all on the motor shaft\n";
-  if (J_req.is_number())
-    o << pad << "(the larger of two estimates of what to add: by the excess work ΔA "
-      << fmt(jsonMember(f, "excess_work"), "%.4g") << " J of a revolution\n"
-      << pad << "at constant speed, J* = ΔA/(δ*·ω̄²) = " << fmt(J_req, "%.4g")
-      << " kg·m² at the crank less the present J " << fmt(jsonMember(f, "inertia_effective"), "%.4g") << ": "
-      << (J_req.get<double>() > J_now ? fmt(json(J_req.get<double>() - J_now), "%.4g") + " kg·m²" : std::string("nothing"))
-      << ";\n"
-      << pad << "by the run's own δ·J held constant, " << fmt(jsonMember(f, "added_inertia_energy_method"), "%.4g")
-      << " kg·m² (short where the run's δ is large);\n"
-      << pad << "motor slip and coupling elasticity neglected)\n";
-  else
-    o << pad << "(energy method, J·δ constant; the motor's slip and the carts' inertia vary over a turn)\n";
-  if (basis.is_string()) o << pad << basis.get<std::string>() << "\n";
-  o << flywheelByRunsText(f, pad);
-  const json& check = jsonMember(f, "check_by_runs");
-  if (!check.is_object()) return o.str();
-  const std::string speed = jsonMember(check, "started_at_speed").is_boolean() && jsonMember(check, "started_at_speed").get<bool>()
-                                ? " started at this run's mean crank speed (whether the drive starts from rest with "
-                                  "it is a separate run)"
-                                : "";
-  const json& run = jsonMember(check, "run_at_proposal");
-  const json& smallest = jsonMember(check, "smallest_from_runs");
-  if (run.is_string())
-    o << pad << "check the estimate: δ of a run with flywheel.inertia = " << fmt(jsonMember(check, "flywheel_inertia"), "%.4g")
-      << " kg·m² (" << str(jsonMember(check, "location")) << ")" << speed << ":\n      " << run.get<std::string>() << "\n";
-  if (smallest.is_string())
-    o << pad << "the smallest flywheel (" << str(jsonMember(check, "location")) << ") that meets δ* in steady running, from runs:\n      "
-      << smallest.get<std::string>() << "\n";
-  if (jsonMember(check, "note").is_string()) o << pad << jsonMember(check, "note").get<std::string>() << "\n";
-  return o.str();
-}
-
-}  // namespace
-
-json flywheelChecks(const json& summary) {
-  const json& f = jsonMember(jsonMember(summary, "sizing"), "flywheel");
-  if (!(jsonMember(f, "estimate").is_boolean() && jsonMember(f, "estimate").get<bool>()) ||
-      !jsonMember(f, "target_delta").is_number())
-    return nullptr;
-  const bool motor_shaft = jsonMember(f, "location").is_string() && jsonMember(f, "location").get<std::string>() == "motor_shaft";
-  const json& proposal = jsonMember(f, motor_shaft ? "flywheel_motor_shaft" : "flywheel_crankshaft");
-  if (!proposal.is_number()) return nullptr;
-  // The flywheel as the console prints it, so the run checks exactly the printed value.
-  const std::string value = fmt(proposal, "%.4g");
-  json c = {{"flywheel_inertia", std::stod(value)}, {"location", motor_shaft ? "motor shaft" : "crankshaft"}};
-  // The user's --set options; the flywheel is sized for steady running, so each run starts at this
-  // run's mean crank speed: a heavy flywheel's slow start from rest (which may not settle within
-  // t_end) would not make every design look unusable.
-  std::string sets;
-  bool sets_speed = false;
-  if (jsonMember(summary, "overrides").is_array())
-    for (const json& ov : jsonMember(summary, "overrides"))
-      if (ov.is_string()) {
-        sets += " --set " + shellWord(ov.get<std::string>());
-        sets_speed = sets_speed || ov.get<std::string>().rfind("initial.crank_speed=", 0) == 0;
-      }
-  const json& w_mean = jsonMember(jsonMember(summary, "omega_crank"), "mean");
-  const bool start_at_speed = !sets_speed && w_mean.is_number() && w_mean.get<double>() > 0;
-  if (start_at_speed) sets += " --set initial.crank_speed=" + fmt(w_mean, "%.4g");
-  c["started_at_speed"] = start_at_speed;
-  // The same model as this run (simulate and optimize run the multibody model unless told otherwise).
-  const bool reduced = jsonMember(summary, "model").is_string() && jsonMember(summary, "model").get<std::string>() == "reduced";
-  const std::string model = reduced ? " --model reduced" : "";
-  const json& scene = jsonMember(summary, "scene_path");
-  if (!scene.is_string()) {
-    c["run_at_proposal"] = c["smallest_from_runs"] = nullptr;
-    c["note"] = "the scene is not a file: check the estimate by a run with flywheel.inertia = " + value + " kg·m²" +
-                (start_at_speed ? " and initial.crank_speed = " + fmt(w_mean, "%.4g") + " rad/s" : std::string());
-    return c;
-  }
-  const std::string head = shellWord(scene.get<std::string>()) + sets + model;
-  c["run_at_proposal"] = "rollerdyn simulate " + head + " --set flywheel.inertia=" + value;
-  // A range that holds the estimate with room to spare.
-  const double upper = std::max(10.0, 3.0 * proposal.get<double>());
-  c["smallest_from_runs"] = "rollerdyn optimize " + head + " --param flywheel.inertia --range 0:" + fmt(json(upper), "%.0f") +
-                            " --minimize flywheel.inertia --constraint 'delta<=" + fmt(jsonMember(f, "target_delta"), "%.4g") + "'";
-  return c;
-}
-
-namespace {
-
 // The heading: the window the figures are taken over and the whole run.
 std::string sizingHeading(const json& summary, bool steady) {
   const json& s = jsonMember(summary, "sizing");
@@ -376,13 +245,9 @@ std::string sizingHeading(const json& summary, bool steady) {
   return o.str();
 }
 
-// The motor's torques, powers, slip and energy per revolution; `win` names the window.
-std::string motorText(const json& m, const char* win) {
+// The motor's torques at the rotor and at the crank, its nominal and breakdown torques.
+std::string motorTorqueText(const json& m, const char* win) {
   std::ostringstream o;
-  if (!m.is_object()) {
-    o << "  motor                             n/a (no motor torque in this run)\n";
-    return o.str();
-  }
   const json &ts = jsonMember(m, "torque_shaft"), &tc = jsonMember(m, "torque_crank");
   const json& r = jsonMember(m, "whole_run");
   o << "  motor torque at the rotor M       mean " << fmt(jsonMember(ts, "mean"), "%.4g") << ", RMS "
@@ -398,6 +263,13 @@ std::string motorText(const json& m, const char* win) {
   if (jsonMember(m, "breakdown_torque_catalogue").is_number())
     o << " (the catalogue's (M_k/M_n)·P_n/ω_n: " << fmt(jsonMember(m, "breakdown_torque_catalogue"), "%.4g") << " N·m)";
   o << "\n";
+  return o.str();
+}
+
+// The motor's shaft and line power, its slip and its energy per crank revolution.
+std::string motorPowerText(const json& m, const char* win) {
+  std::ostringstream o;
+  const json& r = jsonMember(m, "whole_run");
   const json &ps = jsonMember(m, "power_shaft"), &pl = jsonMember(m, "power_line"), &sl = jsonMember(m, "slip");
   o << "  shaft power M·ω_r                 mean " << fmt(jsonMember(ps, "mean"), "%.4g", 1e-3) << ", peak "
     << fmt(jsonMember(ps, "peak"), "%.4g", 1e-3) << " kW" << win << "\n";
@@ -414,6 +286,12 @@ std::string motorText(const json& m, const char* win) {
     << (e_rev.is_number() ? fmt(e_rev, "%.4g", 1e-3) + " kJ" : std::string("n/a (the crank does not turn in the window)"))
     << "\n";
   return o.str();
+}
+
+// The motor's torques, powers, slip and energy per revolution; `win` names the window.
+std::string motorText(const json& m, const char* win) {
+  if (!m.is_object()) return "  motor                             n/a (no motor torque in this run)\n";
+  return motorTorqueText(m, win) + motorPowerText(m, win);
 }
 
 // The coupling's torques and its rating; nothing without them. `win` names the window.

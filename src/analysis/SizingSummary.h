@@ -51,6 +51,9 @@ std::string dutyText(const nlohmann::json& sizing);
 // smallest_from_runs (a `rollerdyn optimize` command), note (when the scene is not a file)}, or
 // null when nothing is proposed. Goes into sizing.flywheel.check_by_runs.
 nlohmann::json flywheelChecks(const nlohmann::json& summary);
+// The flywheel lines of sizingText: the swing, the proposal with its basis, the runs that check
+// it (FlywheelSummary.cpp, with flywheelChecks).
+std::string flywheelText(const nlohmann::json& summary);
 
 // The table for the terminal, from a summary.json object (its `sizing`); "" when it has none.
 std::string sizingText(const nlohmann::json& summary);

@@ -77,40 +77,8 @@ class StallDetector {
     // Driven backwards.
     if (phi_crank > phi_max_) phi_max_ = phi_crank, t_max_ = t;
     if (phi_max_ - phi_crank > kTwoPi) return stall(StallKind::DrivenBackwards, t_max_);
-    // Held at rest.
-    if (std::abs(omega_crank) <= threshold_ && std::abs(omega_motor) <= threshold_) {
-      // A crank gaining speed forwards is breaking away, not held: on a large inertia (a heavy
-      // flywheel, a large rotor) it may need longer than kRestWindow to leave the band. The spell
-      // starts again whenever the speed has grown by kBreakawayGain of the band since it began.
-      if (rest_since_ < 0 || omega_crank - omega_rest_start_ > kBreakawayGain * threshold_)
-        rest_since_ = t, omega_rest_start_ = omega_crank;
-      if (t - rest_since_ >= kRestWindow) return stall(StallKind::Held, rest_since_);
-    } else {
-      rest_since_ = -1.0;
-    }
-    // Swings: the direction changes only when the speed leaves the band on the other side.
-    const int dir = omega_crank > threshold_ ? 1 : omega_crank < -threshold_ ? -1 : direction_;
-    if (direction_ > 0 && dir < 0) {  // a forward swing turned back at extreme_: one oscillation
-      const double amplitude = extreme_ - swing_begin_;
-      const bool gain = !(last_amplitude_ > 0) || amplitude > last_amplitude_ * (1.0 + kSwingGain) ||
-                        extreme_ - last_forward_turn_ > kSwingGain * amplitude;
-      if (gain) {
-        without_gain_ = 0;
-      } else if (without_gain_++ == 0) {
-        rocking_since_ = t;
-      }
-      last_amplitude_ = amplitude;
-      last_forward_turn_ = extreme_;
-      if (without_gain_ >= kSwingsWithoutGain) return stall(StallKind::RockingWithoutGain, rocking_since_);
-    }
-    if (direction_ != 0 && dir != direction_) {  // any reversal starts a new swing
-      swing_begin_ = extreme_;
-      extreme_ = phi_crank;
-    }
-    if (dir > 0) extreme_ = std::max(extreme_, phi_crank);
-    if (dir < 0) extreme_ = std::min(extreme_, phi_crank);
-    if (dir == 0) extreme_ = phi_crank;
-    direction_ = dir;
+    if (heldAtRest(t, omega_crank, omega_motor)) return stall(StallKind::Held, rest_since_);
+    if (followSwings(t, phi_crank, omega_crank)) return stall(StallKind::RockingWithoutGain, rocking_since_);
     return false;
   }
 
@@ -157,6 +125,52 @@ class StallDetector {
     kind_ = k;
     since_ = since;
     return true;
+  }
+
+  // Held at rest: both speeds inside the band for kRestWindow.
+  bool heldAtRest(double t, double omega_crank, double omega_motor) {
+    if (!(std::abs(omega_crank) <= threshold_ && std::abs(omega_motor) <= threshold_)) {
+      rest_since_ = -1.0;
+      return false;
+    }
+    // A crank gaining speed forwards is breaking away, not held: on a large inertia (a heavy
+    // flywheel, a large rotor) it may need longer than kRestWindow to leave the band. The spell
+    // starts again whenever the speed has grown by kBreakawayGain of the band since it began.
+    if (rest_since_ < 0 || omega_crank - omega_rest_start_ > kBreakawayGain * threshold_)
+      rest_since_ = t, omega_rest_start_ = omega_crank;
+    return t - rest_since_ >= kRestWindow;
+  }
+
+  // Swings: the direction changes only when the speed leaves the band on the other side. True once
+  // kSwingsWithoutGain successive oscillations did not gain.
+  bool followSwings(double t, double phi_crank, double omega_crank) {
+    const int dir = omega_crank > threshold_ ? 1 : omega_crank < -threshold_ ? -1 : direction_;
+    if (direction_ > 0 && dir < 0 && oscillationWithoutGain(t)) return true;
+    if (direction_ != 0 && dir != direction_) {  // any reversal starts a new swing
+      swing_begin_ = extreme_;
+      extreme_ = phi_crank;
+    }
+    if (dir > 0) extreme_ = std::max(extreme_, phi_crank);
+    if (dir < 0) extreme_ = std::min(extreme_, phi_crank);
+    if (dir == 0) extreme_ = phi_crank;
+    direction_ = dir;
+    return false;
+  }
+
+  // A forward swing turned back at extreme_: one oscillation, gaining or not. True once
+  // kSwingsWithoutGain in a row did not gain.
+  bool oscillationWithoutGain(double t) {
+    const double amplitude = extreme_ - swing_begin_;
+    const bool gain = !(last_amplitude_ > 0) || amplitude > last_amplitude_ * (1.0 + kSwingGain) ||
+                      extreme_ - last_forward_turn_ > kSwingGain * amplitude;
+    if (gain) {
+      without_gain_ = 0;
+    } else if (without_gain_++ == 0) {
+      rocking_since_ = t;
+    }
+    last_amplitude_ = amplitude;
+    last_forward_turn_ = extreme_;
+    return without_gain_ >= kSwingsWithoutGain;
   }
 
   bool active_;

@@ -20,32 +20,37 @@ struct JointKind {
   std::vector<std::string> names;
 };
 
+// A scalar force per cart: columns prefix1, prefix2, ...
+JointKind scalarKind(const Table& r, const char* joint, const std::string& prefix) {
+  JointKind k{joint, {}, {}, {}};
+  for (int j = 1; r.has(prefix + std::to_string(j)); ++j) {
+    k.x.push_back(r.column(prefix + std::to_string(j)));
+    k.names.push_back(prefix + std::to_string(j));
+  }
+  return k;
+}
+
+// A force of two components per joint: columns <x>1, <y>1, <x>2, <y>2, ... (named "<x>j|<y>j").
+JointKind planarKind(const Table& r, const char* joint, const std::string& x, const std::string& y) {
+  JointKind k{joint, {}, {}, {}};
+  for (int j = 1; r.has(x + std::to_string(j)); ++j) {
+    k.x.push_back(r.column(x + std::to_string(j)));
+    k.y.push_back(r.column(y + std::to_string(j)));
+    k.names.push_back(x + std::to_string(j) + "|" + y + std::to_string(j));
+  }
+  return k;
+}
+
 std::vector<JointKind> jointKinds(const Table& r) {
-  std::vector<JointKind> kinds;
-  auto scalar = [&](const char* joint, const std::string& prefix) {
-    JointKind k{joint, {}, {}, {}};
-    for (int j = 1; r.has(prefix + std::to_string(j)); ++j) {
-      k.x.push_back(r.column(prefix + std::to_string(j)));
-      k.names.push_back(prefix + std::to_string(j));
-    }
+  std::vector<JointKind> kinds, per_cart;
+  per_cart.push_back(scalarKind(r, "guide_roller_front", "N_front_"));
+  per_cart.push_back(scalarKind(r, "guide_roller_rear", "N_rear_"));
+  per_cart.push_back(scalarKind(r, "rod_force", "F_rod_"));
+  per_cart.push_back(planarKind(r, "crank_pin", "crankpin_x_", "crankpin_y_"));
+  for (JointKind& k : per_cart)
     if (!k.x.empty()) kinds.push_back(std::move(k));
-  };
-  scalar("guide_roller_front", "N_front_");
-  scalar("guide_roller_rear", "N_rear_");
-  scalar("rod_force", "F_rod_");
-  JointKind pin{"crank_pin", {}, {}, {}};
-  for (int j = 1; r.has("crankpin_x_" + std::to_string(j)); ++j) {
-    pin.x.push_back(r.column("crankpin_x_" + std::to_string(j)));
-    pin.y.push_back(r.column("crankpin_y_" + std::to_string(j)));
-    pin.names.push_back("crankpin_x_" + std::to_string(j) + "|crankpin_y_" + std::to_string(j));
-  }
-  if (!pin.x.empty()) kinds.push_back(std::move(pin));
-  JointKind each{"main_bearing", {}, {}, {}};  // each bearing when crankshaft.bearing_positions places them
-  for (int k = 1; r.has("bearing_x_" + std::to_string(k)); ++k) {
-    each.x.push_back(r.column("bearing_x_" + std::to_string(k)));
-    each.y.push_back(r.column("bearing_y_" + std::to_string(k)));
-    each.names.push_back("bearing_x_" + std::to_string(k) + "|bearing_y_" + std::to_string(k));
-  }
+  // Each bearing when crankshaft.bearing_positions places them, else their resultant.
+  JointKind each = planarKind(r, "main_bearing", "bearing_x_", "bearing_y_");
   if (!each.x.empty())
     kinds.push_back(std::move(each));
   else if (r.has("bearing_x") && r.has("bearing_y"))

@@ -86,11 +86,8 @@ std::string currentLimitText(const json& c) {
   return o.str();
 }
 
-}  // namespace
-
-json startUpJson(const StartUp& s) {
-  if (!s.applicable) return nullptr;
-  json j;
+// The switch-on: method, motor law, whether and how the drive started, the verdict.
+void addSwitchOnJson(json& j, const StartUp& s) {
   j["method"] = s.method;
   j["motor_law"] = s.motor_law;
   j["motor_model"] = s.model_word;
@@ -100,6 +97,10 @@ json startUpJson(const StartUp& s) {
   j["starts"] = s.starts;
   j["still_starting"] = s.still_starting;
   j["verdict"] = s.verdict;
+}
+
+// The starting torque (at switch-on, rated, held at standstill) against the load at the start angle.
+void addStartingTorqueJson(json& j, const StartUp& s) {
   j["starting_torque_crank"] = num(s.starting_torque_crank);
   j["starting_torque_rated_crank"] = num(s.starting_torque_rated_crank);
   j["largest_torque_crank"] = num(s.largest_torque_crank);
@@ -112,12 +113,10 @@ json startUpJson(const StartUp& s) {
   j["can_start_from_rest"] = s.can_start_from_rest < 0 ? json(nullptr) : json(s.can_start_from_rest == 1);
   j["start_load_ratio"] = num(s.start_load_ratio);
   j["stall_cause"] = s.stall_cause.empty() ? json(nullptr) : json(s.stall_cause);
-  j["steady"] = {{"mean_speed", num(s.steady_mean_speed)},
-                 {"reached", s.steady_reached},
-                 {"t_begin", num(s.steady_begin)},
-                 {"t_end", num(s.steady_end)}};
-  j["run_up_time"] = num(s.run_up_time);
-  j["start_end"] = num(s.start_end);
+}
+
+// The start's peaks against steady running's: motor torque, coupling torque, each joint.
+void addStartPeaksJson(json& j, const StartUp& s) {
   j["motor_torque"] = {{"peak", num(s.motor_torque_peak)},
                        {"min", num(s.motor_torque_min)},
                        {"steady_peak", num(s.motor_torque_steady_peak)},
@@ -132,17 +131,43 @@ json startUpJson(const StartUp& s) {
                        {"ratio", num(p.ratio)},
                        {"column", p.column}};
   j["joints"] = joints;
-  j["stator_current"] = std::isfinite(s.current_peak) ? json{{"peak", num(s.current_peak)},
-                                                             {"rms", num(s.current_rms)},
-                                                             {"i2t", num(s.current_i2t)},
-                                                             {"steady_rms", num(s.current_steady_rms)}}
-                                                       : json(nullptr);
+}
+
+// The stator current over the start: peak, RMS and I²t; null for a law without a current.
+json statorCurrentJson(const StartUp& s) {
+  return std::isfinite(s.current_peak) ? json{{"peak", num(s.current_peak)},
+                                              {"rms", num(s.current_rms)},
+                                              {"i2t", num(s.current_i2t)},
+                                              {"steady_rms", num(s.current_steady_rms)}}
+                                        : json(nullptr);
+}
+
+// After a switch-off: the stopping time and the run-out; null without a switch-off.
+json stopJson(const StartUp& s) {
+  return std::isfinite(s.t_off) ? json{{"t_off", s.t_off},
+                                       {"stopping_time", num(s.stopping_time)},
+                                       {"run_out_revolutions", num(s.run_out_revolutions)},
+                                       {"run_out_cart_path", num(s.run_out_cart_path)}}
+                                 : json(nullptr);
+}
+
+}  // namespace
+
+json startUpJson(const StartUp& s) {
+  if (!s.applicable) return nullptr;
+  json j;
+  addSwitchOnJson(j, s);
+  addStartingTorqueJson(j, s);
+  j["steady"] = {{"mean_speed", num(s.steady_mean_speed)},
+                 {"reached", s.steady_reached},
+                 {"t_begin", num(s.steady_begin)},
+                 {"t_end", num(s.steady_end)}};
+  j["run_up_time"] = num(s.run_up_time);
+  j["start_end"] = num(s.start_end);
+  addStartPeaksJson(j, s);
+  j["stator_current"] = statorCurrentJson(s);
   j["rotor_energy_loss"] = num(s.rotor_energy_loss);
-  j["stop"] = std::isfinite(s.t_off) ? json{{"t_off", s.t_off},
-                                            {"stopping_time", num(s.stopping_time)},
-                                            {"run_out_revolutions", num(s.run_out_revolutions)},
-                                            {"run_out_cart_path", num(s.run_out_cart_path)}}
-                                      : json(nullptr);
+  j["stop"] = stopJson(s);
   j["current_limit"] = currentLimitJson(s.current_limit);
   j["notes"] = s.notes;
   j["keys_not_reached"] = s.keys_not_reached;
@@ -191,6 +216,78 @@ std::string jointPeaksText(const json& joints, const std::string& in_start, cons
   return o.str();
 }
 
+// The stop, the notes and the legend: all a run without a start shows after its switch-on.
+std::string noStartText(const json& s) {
+  std::ostringstream o;
+  o << stopText(jsonMember(s, "stop"));
+  for (const json& n : jsonMember(s, "notes")) o << "  note: " << n.get<std::string>() << "\n";
+  o << "  (torques at the crank axis; M motor torque at the rotor, u reducer ratio, η reducer efficiency)\n";
+  return o.str();
+}
+
+bool isTrue(const json& v) { return v.is_boolean() && v.get<bool>(); }
+
+// Whether the drive ran up, and the words for the two intervals the peaks compare: a drive that
+// never ran up has a run and its end, not a start and a steady state.
+struct StartIntervals {
+  bool starts, still, reached;
+  std::string in_start, steady;
+  explicit StartIntervals(const json& s)
+      : starts(isTrue(jsonMember(s, "starts"))),
+        still(isTrue(jsonMember(s, "still_starting"))),
+        reached(isTrue(jsonMember(jsonMember(s, "steady"), "reached"))),
+        in_start(starts ? " in the start" : (still ? " so far" : " over the run")),
+        steady(starts && reached ? "steady" : "at the end") {}
+};
+
+// The run-up time and the start's interval, or why there is none.
+std::string runUpText(const json& s, const StartIntervals& w) {
+  const json& st = jsonMember(s, "steady");
+  std::ostringstream o;
+  if (w.starts)
+    o << "  run-up time (to 95 % of " << f(jsonMember(st, "mean_speed"), "%.4g") << " rad/s)  "
+      << f(jsonMember(s, "run_up_time"), "%.3g") << " s; start = t_on ... " << f(jsonMember(s, "start_end"), "%.4g")
+      << " s (until the crank speed settles), steady window " << f(jsonMember(st, "t_begin"), "%.4g") << " ... "
+      << f(jsonMember(st, "t_end"), "%.4g") << " s" << (w.reached ? "" : " (steady state NOT reached)") << "\n";
+  else
+    o << "  run-up time                   none: " << (w.still ? "the drive is still starting when the run ends" : "the drive does not start")
+      << "; peaks below over t_on ... " << f(jsonMember(s, "start_end"), "%.4g") << " s against the run's last part "
+      << f(jsonMember(st, "t_begin"), "%.4g") << " ... " << f(jsonMember(st, "t_end"), "%.4g") << " s (no steady state)\n";
+  return o.str();
+}
+
+// The motor's and the coupling's torque peaks in the start against those at the end.
+std::string torquePeaksText(const json& s, const StartIntervals& w) {
+  std::ostringstream o;
+  const json &m = jsonMember(s, "motor_torque"), &c = jsonMember(s, "coupling_torque");
+  const bool negative = jsonMember(m, "min").is_number() && jsonMember(m, "min").get<double>() < 0;
+  o << "  motor torque M·u·η            peak " << f(jsonMember(m, "peak"), "%.4g") << (negative ? ", most negative " : ", smallest ")
+    << f(jsonMember(m, "min"), "%.4g") << " N·m" << w.in_start << "; " << w.steady << " peak |M| " << f(jsonMember(m, "steady_peak"), "%.4g")
+    << " N·m (x" << f(jsonMember(m, "ratio"), "%.3g") << ")\n";
+  const json &peak = jsonMember(m, "peak"), &largest = jsonMember(s, "largest_torque_crank");
+  if (peak.is_number() && largest.is_number() && peak.get<double>() > 1.001 * largest.get<double>())
+    o << "                                (the peak is the switching transient: above the static characteristic's "
+         "largest torque, "
+      << f(largest, "%.4g") << " N·m, which no steady running reaches)\n";
+  o << "  coupling torque |M|           peak " << f(jsonMember(c, "peak"), "%.4g") << " N·m" << w.in_start << ", " << w.steady << " "
+    << f(jsonMember(c, "steady_peak"), "%.4g") << " N·m (x" << f(jsonMember(c, "ratio"), "%.3g") << ")\n";
+  return o.str();
+}
+
+// The motor's electrical side of the start: stator current, current limit, rotor energy loss.
+std::string startElectricsText(const json& s, const StartIntervals& w) {
+  std::ostringstream o;
+  const json& I = jsonMember(s, "stator_current");
+  if (I.is_object())
+    o << "  stator current (phase, RMS)   peak " << f(jsonMember(I, "peak"), "%.4g") << " A, RMS" << w.in_start << " "
+      << f(jsonMember(I, "rms"), "%.4g") << " A (" << w.steady << " " << f(jsonMember(I, "steady_rms"), "%.4g") << " A), I²t "
+      << f(jsonMember(I, "i2t"), "%.4g") << " A²·s\n";
+  o << currentLimitText(jsonMember(s, "current_limit"));
+  o << "  rotor energy loss" << (w.starts ? " of the start " : w.in_start + " ") << f(jsonMember(s, "rotor_energy_loss"), "%.4g")
+    << " J (slip power ∫M·(ω0·f/f_n - ω_r)dt)\n";
+  return o.str();
+}
+
 }  // namespace
 
 std::string startUpText(const json& summary) {
@@ -198,50 +295,11 @@ std::string startUpText(const json& summary) {
   if (!s.is_object()) return "";
   std::ostringstream o;
   o << switchOnText(s);
-  const json& st = jsonMember(s, "steady");
-  if (jsonMember(s, "from_rest").is_boolean() && !jsonMember(s, "from_rest").get<bool>()) {
-    // No start in the run: only the stop, the notes and the legend.
-    o << stopText(jsonMember(s, "stop"));
-    for (const json& n : jsonMember(s, "notes")) o << "  note: " << n.get<std::string>() << "\n";
-    o << "  (torques at the crank axis; M motor torque at the rotor, u reducer ratio, η reducer efficiency)\n";
-    return o.str();
-  }
-  const bool starts = jsonMember(s, "starts").is_boolean() && jsonMember(s, "starts").get<bool>();
-  const bool still = jsonMember(s, "still_starting").is_boolean() && jsonMember(s, "still_starting").get<bool>();
-  const bool reached = jsonMember(st, "reached").is_boolean() && jsonMember(st, "reached").get<bool>();
-  if (starts)
-    o << "  run-up time (to 95 % of " << f(jsonMember(st, "mean_speed"), "%.4g") << " rad/s)  "
-      << f(jsonMember(s, "run_up_time"), "%.3g") << " s; start = t_on ... " << f(jsonMember(s, "start_end"), "%.4g")
-      << " s (until the crank speed settles), steady window " << f(jsonMember(st, "t_begin"), "%.4g") << " ... "
-      << f(jsonMember(st, "t_end"), "%.4g") << " s" << (reached ? "" : " (steady state NOT reached)") << "\n";
-  else
-    o << "  run-up time                   none: " << (still ? "the drive is still starting when the run ends" : "the drive does not start")
-      << "; peaks below over t_on ... " << f(jsonMember(s, "start_end"), "%.4g") << " s against the run's last part "
-      << f(jsonMember(st, "t_begin"), "%.4g") << " ... " << f(jsonMember(st, "t_end"), "%.4g") << " s (no steady state)\n";
-  // Words for the two intervals: a drive that never ran up has a run and its end, not a start and a steady state.
-  const std::string in_start = starts ? " in the start" : (still ? " so far" : " over the run");
-  const std::string steady = starts && reached ? "steady" : "at the end";
-  const json &m = jsonMember(s, "motor_torque"), &c = jsonMember(s, "coupling_torque");
-  const bool negative = jsonMember(m, "min").is_number() && jsonMember(m, "min").get<double>() < 0;
-  o << "  motor torque M·u·η            peak " << f(jsonMember(m, "peak"), "%.4g") << (negative ? ", most negative " : ", smallest ")
-    << f(jsonMember(m, "min"), "%.4g") << " N·m" << in_start << "; " << steady << " peak |M| " << f(jsonMember(m, "steady_peak"), "%.4g")
-    << " N·m (x" << f(jsonMember(m, "ratio"), "%.3g") << ")\n";
-  const json &peak = jsonMember(m, "peak"), &largest = jsonMember(s, "largest_torque_crank");
-  if (peak.is_number() && largest.is_number() && peak.get<double>() > 1.001 * largest.get<double>())
-    o << "                                (the peak is the switching transient: above the static characteristic's "
-         "largest torque, "
-      << f(largest, "%.4g") << " N·m, which no steady running reaches)\n";
-  o << "  coupling torque |M|           peak " << f(jsonMember(c, "peak"), "%.4g") << " N·m" << in_start << ", " << steady << " "
-    << f(jsonMember(c, "steady_peak"), "%.4g") << " N·m (x" << f(jsonMember(c, "ratio"), "%.3g") << ")\n";
-  o << jointPeaksText(jsonMember(s, "joints"), in_start, steady);
-  const json& I = jsonMember(s, "stator_current");
-  if (I.is_object())
-    o << "  stator current (phase, RMS)   peak " << f(jsonMember(I, "peak"), "%.4g") << " A, RMS" << in_start << " "
-      << f(jsonMember(I, "rms"), "%.4g") << " A (" << steady << " " << f(jsonMember(I, "steady_rms"), "%.4g") << " A), I²t "
-      << f(jsonMember(I, "i2t"), "%.4g") << " A²·s\n";
-  o << currentLimitText(jsonMember(s, "current_limit"));
-  o << "  rotor energy loss" << (starts ? " of the start " : in_start + " ") << f(jsonMember(s, "rotor_energy_loss"), "%.4g")
-    << " J (slip power ∫M·(ω0·f/f_n - ω_r)dt)\n";
+  if (jsonMember(s, "from_rest").is_boolean() && !jsonMember(s, "from_rest").get<bool>()) return o.str() + noStartText(s);
+  const StartIntervals w(s);
+  o << runUpText(s, w) << torquePeaksText(s, w);
+  o << jointPeaksText(jsonMember(s, "joints"), w.in_start, w.steady);
+  o << startElectricsText(s, w);
   o << stopText(jsonMember(s, "stop"));
   for (const json& n : jsonMember(s, "notes")) o << "  note: " << n.get<std::string>() << "\n";
   o << "  (torques at the crank axis; M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω0 "

@@ -22,12 +22,9 @@ void setRowRange(const std::vector<double>& t, std::size_t n, SteadyState& s) {
   if (s.row_end < s.row_begin) s.row_end = s.row_begin;
 }
 
-// The run's whole crank revolutions, each with its mean speed and its lowest and highest speed.
-std::vector<CrankRevolution> wholeRevolutions(const std::vector<double>& t, const std::vector<double>& phi,
-                                              const std::vector<double>& omega, std::size_t n,
-                                              const std::vector<CrankSpeedExtremum>& extrema) {
-  // Whole revolutions: first crossings of phi_0 + 2πk in the direction of net rotation.
-  const double dir = phi[n - 1] >= phi[0] ? 1.0 : -1.0;
+// Whole revolutions: the times of the first crossings of phi_0 + 2πk in the direction `dir` of net rotation.
+std::vector<double> revolutionCrossings(const std::vector<double>& t, const std::vector<double>& phi, std::size_t n,
+                                        double dir) {
   std::vector<double> crossings{t[0]};
   for (std::size_t i = 1; i < n; ++i) {
     const double u_prev = dir * (phi[i - 1] - phi[0]);
@@ -39,21 +36,41 @@ std::vector<CrankRevolution> wholeRevolutions(const std::vector<double>& t, cons
       target = kTwoPi * static_cast<double>(crossings.size());
     }
   }
+  return crossings;
+}
+
+// Widens each revolution's lowest and highest speed by speeds given in time order (a cursor over
+// the revolutions).
+class ExtremesWidener {
+ public:
+  explicit ExtremesWidener(std::vector<CrankRevolution>& revolutions) : revolutions_(revolutions) {}
+  void widen(double tq, double w) {
+    while (r_ < revolutions_.size() && revolutions_[r_].t_end < tq) ++r_;
+    if (r_ == revolutions_.size() || tq < revolutions_[r_].t_begin) return;
+    revolutions_[r_].omega_min = std::min(revolutions_[r_].omega_min, w);
+    revolutions_[r_].omega_max = std::max(revolutions_[r_].omega_max, w);
+  }
+
+ private:
+  std::vector<CrankRevolution>& revolutions_;
+  std::size_t r_ = 0;
+};
+
+// The run's whole crank revolutions, each with its mean speed and its lowest and highest speed.
+std::vector<CrankRevolution> wholeRevolutions(const std::vector<double>& t, const std::vector<double>& phi,
+                                              const std::vector<double>& omega, std::size_t n,
+                                              const std::vector<CrankSpeedExtremum>& extrema) {
+  const double dir = phi[n - 1] >= phi[0] ? 1.0 : -1.0;
+  const std::vector<double> crossings = revolutionCrossings(t, phi, n, dir);
   std::vector<CrankRevolution> revolutions;
   for (std::size_t k = 0; k + 1 < crossings.size(); ++k)
     revolutions.push_back({crossings[k], crossings[k + 1], dir * kTwoPi / (crossings[k + 1] - crossings[k]),
                            std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()});
   // Each revolution's extremes: its rows and the extrema located inside the integrator's steps.
-  std::size_t r = 0;
-  auto widen = [&](double tq, double w) {
-    while (r < revolutions.size() && revolutions[r].t_end < tq) ++r;
-    if (r == revolutions.size() || tq < revolutions[r].t_begin) return;
-    revolutions[r].omega_min = std::min(revolutions[r].omega_min, w);
-    revolutions[r].omega_max = std::max(revolutions[r].omega_max, w);
-  };
-  for (std::size_t i = 0; i < n; ++i) widen(t[i], omega[i]);
-  r = 0;
-  for (const CrankSpeedExtremum& x : extrema) widen(x.t, x.omega);
+  ExtremesWidener by_rows(revolutions);
+  for (std::size_t i = 0; i < n; ++i) by_rows.widen(t[i], omega[i]);
+  ExtremesWidener by_located(revolutions);
+  for (const CrankSpeedExtremum& x : extrema) by_located.widen(x.t, x.omega);
   return revolutions;
 }
 
@@ -74,6 +91,73 @@ int settledAfter(const std::vector<CrankRevolution>& revolutions, double relativ
   return after;
 }
 
+// Appends one reason to a note ("; " between reasons).
+void appendNote(std::string& note, const std::string& why) { note = note.empty() ? why : note + "; " + why; }
+
+// The finite prefix of the rows: a run that blew up has nothing steady after the blow-up. A row
+// counts while t, phi_crank and (when the table has it) omega_crank are finite.
+std::size_t finiteRowCount(const Table& ts) {
+  const int it = ts.index("t"), ip = ts.index("phi_crank"), iw = ts.has("omega_crank") ? ts.index("omega_crank") : -1;
+  std::size_t n = 0;
+  while (n < ts.rows.size() && std::isfinite(ts.rows[n][it]) && std::isfinite(ts.rows[n][ip]) &&
+         (iw < 0 || std::isfinite(ts.rows[n][iw])))
+    ++n;
+  return n;
+}
+
+// Analyse only the finite prefix (finiteRowCount), noting where the run has non-finite values;
+// false when fewer than two rows remain.
+bool takeFiniteRows(SteadyState& s, const Table& ts, const std::vector<double>& t) {
+  const std::size_t n = finiteRowCount(ts);
+  s.finite_rows = n;
+  if (n < t.size())
+    s.note = "non-finite values from t = " + std::to_string(t[n]) + " s; analysed rows before it";
+  if (n >= 2) return true;
+  s.note = s.note.empty() ? "fewer than two rows" : s.note + "; fewer than two finite rows";
+  return false;
+}
+
+// Stalled or very slow run: no periodicity to judge; take the last 20 % of the run.
+void takeFallbackWindow(SteadyState& s, const std::vector<double>& t, std::size_t n, int wanted) {
+  s.window_revolutions = 0;
+  s.t_end = t[n - 1];
+  s.t_begin = t[n - 1] - kFallbackShare * (t[n - 1] - t[0]);
+  setRowRange(t, n, s);
+  appendNote(s.note, "no whole crank revolution; window = last 20 % of the run");
+  s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], std::max(wanted, 2));
+}
+
+// The window over the last whole revolutions, and whether the run settled before it.
+void takeRevolutionWindow(SteadyState& s, const std::vector<double>& t, std::size_t n, int wanted,
+                          double relative_tolerance) {
+  const int count = s.revolutions_counted;
+  const int after = settledAfter(s.revolutions, relative_tolerance);
+  s.after_revolutions = after;
+  s.t_settled = s.revolutions[after].t_begin;
+
+  const int needed = std::max(wanted, 2);  // one revolution cannot be compared with anything
+  s.reached = count >= needed && after <= count - needed;
+  if (count < needed)
+    appendNote(s.note, "only " + std::to_string(count) + " whole revolution(s), " + std::to_string(needed) +
+                           " needed to judge steady state");
+
+  s.window_revolutions = std::min(wanted, count);
+  s.t_begin = s.revolutions[count - s.window_revolutions].t_begin;
+  s.t_end = s.revolutions.back().t_end;
+  setRowRange(t, n, s);
+  s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], needed);
+}
+
+// The running ends at the switch-off: a longer run would not help, a later switch-off would.
+void adviseLaterSwitchOff(SteadyState& s, double t_off) {
+  const std::size_t at = s.not_reached.rfind("run at least ");
+  if (at == std::string::npos) return;
+  char later[160];
+  std::snprintf(later, sizeof later,
+                "switch the motor off later (motor.stop.t_off = %.4g s): the running before it is too short", t_off);
+  s.not_reached = s.not_reached.substr(0, at) + later;
+}
+
 }  // namespace
 
 SteadyState detectSteadyState(const Table& ts, double window_revolutions, double relative_tolerance,
@@ -89,52 +173,15 @@ SteadyState detectSteadyState(const Table& ts, double window_revolutions, double
   const std::vector<double> phi = ts.column("phi_crank");
   const std::vector<double> omega =
       ts.has("omega_crank") ? ts.column("omega_crank") : std::vector<double>(t.size(), 0.0);
-
-  // Analyse only the finite prefix: a run that blew up has nothing steady after the blow-up.
-  std::size_t n = 0;
-  while (n < t.size() && std::isfinite(t[n]) && std::isfinite(phi[n]) && std::isfinite(omega[n])) ++n;
-  s.finite_rows = n;
-  if (n < t.size())
-    s.note = "non-finite values from t = " + std::to_string(t[n]) + " s; analysed rows before it";
-  if (n < 2) {
-    s.note = s.note.empty() ? "fewer than two rows" : s.note + "; fewer than two finite rows";
-    return s;
-  }
-
+  if (!takeFiniteRows(s, ts, t)) return s;
+  const std::size_t n = s.finite_rows;
   s.revolutions = wholeRevolutions(t, phi, omega, n, extrema);
-  const int count = static_cast<int>(s.revolutions.size());
-  s.revolutions_counted = count;
-
+  s.revolutions_counted = static_cast<int>(s.revolutions.size());
   const int wanted = std::max(1, static_cast<int>(std::floor(window_revolutions)));
-  if (count < 1) {
-    // Stalled or very slow run: no periodicity to judge; take the last 20 % of the run.
-    s.window_revolutions = 0;
-    s.t_end = t[n - 1];
-    s.t_begin = t[n - 1] - kFallbackShare * (t[n - 1] - t[0]);
-    setRowRange(t, n, s);
-    const std::string why = "no whole crank revolution; window = last 20 % of the run";
-    s.note = s.note.empty() ? why : s.note + "; " + why;
-    s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], std::max(wanted, 2));
-    return s;
-  }
-
-  const int after = settledAfter(s.revolutions, relative_tolerance);
-  s.after_revolutions = after;
-  s.t_settled = s.revolutions[after].t_begin;
-
-  const int needed = std::max(wanted, 2);  // one revolution cannot be compared with anything
-  s.reached = count >= needed && after <= count - needed;
-  if (count < needed) {
-    const std::string why = "only " + std::to_string(count) + " whole revolution(s), " +
-                            std::to_string(needed) + " needed to judge steady state";
-    s.note = s.note.empty() ? why : s.note + "; " + why;
-  }
-
-  s.window_revolutions = std::min(wanted, count);
-  s.t_begin = s.revolutions[count - s.window_revolutions].t_begin;
-  s.t_end = s.revolutions.back().t_end;
-  setRowRange(t, n, s);
-  s.not_reached = steadyStateNotReached(s, t[0], t[n - 1], needed);
+  if (s.revolutions_counted < 1)
+    takeFallbackWindow(s, t, n, wanted);
+  else
+    takeRevolutionWindow(s, t, n, wanted, relative_tolerance);
   return s;
 }
 
@@ -182,23 +229,11 @@ SteadyState detectRunningSteadyState(const Table& ts, double window_revolutions,
     if (x.t < t_off) before.push_back(x);
   SteadyState s = detectSteadyState(running, window_revolutions, kSteadyStateRelativeTolerance, before);
   // Whole-run figures read finite_rows: count them over every row.
-  const int ip = ts.index("phi_crank"), iw = ts.has("omega_crank") ? ts.index("omega_crank") : -1;
-  std::size_t n = 0;
-  while (n < ts.rows.size() && std::isfinite(ts.rows[n][it]) && std::isfinite(ts.rows[n][ip]) &&
-         (iw < 0 || std::isfinite(ts.rows[n][iw])))
-    ++n;
-  if (s.finite_rows == running.rows.size()) s.finite_rows = n;
+  if (s.finite_rows == running.rows.size()) s.finite_rows = finiteRowCount(ts);
   char why[96];
   std::snprintf(why, sizeof why, "steady window searched before the switch-off at t = %.4g s", t_off);
-  s.note = s.note.empty() ? why : s.note + "; " + why;
-  // The running ends at the switch-off: a longer run would not help, a later switch-off would.
-  const std::size_t at = s.not_reached.rfind("run at least ");
-  if (at != std::string::npos) {
-    char later[160];
-    std::snprintf(later, sizeof later,
-                  "switch the motor off later (motor.stop.t_off = %.4g s): the running before it is too short", t_off);
-    s.not_reached = s.not_reached.substr(0, at) + later;
-  }
+  appendNote(s.note, why);
+  adviseLaterSwitchOff(s, t_off);
   return s;
 }
 

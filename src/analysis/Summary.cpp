@@ -72,6 +72,15 @@ double crankAdvance(const Table& ts, const SteadyState& ss) {
   return ts.rows[ss.row_end - 1][k] - ts.rows[ss.row_begin][k];
 }
 
+// The coupling's swings over the metrics window, Loveikin, Pochka, Romasevych (2018), Table 1.
+void addCouplingSwings(json& j, const WindowMetrics& m, FiniteWriter& num) {
+  j["coupling_torque_swing"] = num("coupling_torque_swing", m.coupling_torque_swing);
+  j["twist_swing"] = num("twist_swing", m.twist_swing);
+  j["twist_rate_swing"] = num("twist_rate_swing", m.twist_rate_swing);
+  j["twist_accel_swing"] = num("twist_accel_swing", m.twist_accel_swing);
+  j["missing_columns"] = m.missing_columns;
+}
+
 // The crank's speed over the metrics window, its motion, and the coefficients of its unevenness.
 void addCrankSpeed(json& j, const WindowMetrics& m, const std::string& crank_motion, bool steady_turning,
                    FiniteWriter& num, std::vector<std::string>& not_meaningful) {
@@ -95,12 +104,7 @@ void addCrankSpeed(json& j, const WindowMetrics& m, const std::string& crank_mot
   j["delta"] = perRevolution("delta", m.coefficients.delta);
   j["H"] = perRevolution("H", m.coefficients.H);
   j["k_p"] = perRevolution("k_p", m.coefficients.k_p);
-  // Loveikin, Pochka, Romasevych (2018), Table 1
-  j["coupling_torque_swing"] = num("coupling_torque_swing", m.coupling_torque_swing);
-  j["twist_swing"] = num("twist_swing", m.twist_swing);
-  j["twist_rate_swing"] = num("twist_rate_swing", m.twist_rate_swing);
-  j["twist_accel_swing"] = num("twist_accel_swing", m.twist_accel_swing);
-  j["missing_columns"] = m.missing_columns;
+  addCouplingSwings(j, m, num);
 }
 
 json steadyStateJson(const SteadyState& ss, const WindowMetrics& m, const std::string& crank_motion, FiniteWriter& num) {
@@ -296,44 +300,65 @@ std::string amendedStatus(json& j, const Scene& scene, const RunResult& run, con
   return status;
 }
 
+// The run read once: its steady window (the machine's running: the coast-down after a switch-off
+// is no steady state, SteadyState.h), the window's metrics, and how the drive moved.
+struct RunReading {
+  SteadyState ss;
+  WindowMetrics m;
+  std::string crank_motion;  // RunMotion.h
+  bool turning = false, steady_turning = false;
+};
+
+RunReading readRun(const Scene& scene, const RunResult& run) {
+  RunReading r;
+  r.ss = detectRunningSteadyState(run, scene.simulation.steady_window_revolutions,
+                                  scene.motor.enabled ? scene.motor_stop.t_off : NAN);
+  r.m = computeMetrics(run, r.ss);
+  // "stalled", "rocking" (crank speed changes sign in the metrics window), "turning",
+  // "at_rest", "unknown" (RunMotion.h); per-revolution metrics are null unless turning.
+  r.crank_motion = classifyMotion(scene, run, r.m, crankAdvance(run.timeseries, r.ss), r.ss.reached);
+  r.turning = motionIsTurning(r.crank_motion);
+  r.steady_turning = r.turning && r.ss.reached;
+  return r;
+}
+
+// The drive sizing, and the checks of the running that go with it.
+void addSizing(json& j, const Scene& scene, const RunResult& run, const RunReading& r, const StartUp* start_up,
+               const StartLoad* start_load) {
+  const DriveSizing sizing = computeDriveSizing(scene, run, r.ss, r.turning,
+                                                r.steady_turning ? r.m.coefficients.delta : NAN, r.crank_motion,
+                                                start_up, start_load);
+  j["sizing"] = sizingJson(sizing);
+  j["sizing"]["flywheel"]["location"] = toString(scene.flywheel.location);
+  addRunningChecks(j, scene, run, r.ss, r.steady_turning);
+  if (const json basis = jointsBasis(scene, run); !basis.is_null()) j["sizing"]["joints_basis"] = basis;
+}
+
 }  // namespace
 
 json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* start_load) {
-  // The machine's running: the coast-down after a switch-off is no steady state (SteadyState.h).
-  const SteadyState ss = detectRunningSteadyState(run, scene.simulation.steady_window_revolutions,
-                                                  scene.motor.enabled ? scene.motor_stop.t_off : NAN);
-  const WindowMetrics m = computeMetrics(run, ss);
+  const RunReading r = readRun(scene, run);
   FiniteWriter num;
   json j = runIdentity(scene, run);
   const double simulated_time = simulatedTime(run.timeseries);
   j["simulated_time"] = num("simulated_time", simulated_time);
-  // "stalled", "rocking" (crank speed changes sign in the metrics window), "turning",
-  // "at_rest", "unknown" (RunMotion.h); per-revolution metrics are null unless turning.
-  const std::string crank_motion = classifyMotion(scene, run, m, crankAdvance(run.timeseries, ss), ss.reached);
-  const bool turning = motionIsTurning(crank_motion);
-  const bool steady_turning = turning && ss.reached;
   std::vector<std::string> not_meaningful;
-  addCrankSpeed(j, m, crank_motion, steady_turning, num, not_meaningful);
-  j["steady_state"] = steadyStateJson(ss, m, crank_motion, num);
+  addCrankSpeed(j, r.m, r.crank_motion, r.steady_turning, num, not_meaningful);
+  j["steady_state"] = steadyStateJson(r.ss, r.m, r.crank_motion, num);
   addSelfChecks(j, scene, run, num);
   addIntegratorStatistics(j, run.stats, simulated_time, num);
-  j["reactions"] = reactionsJson(m, num);
+  j["reactions"] = reactionsJson(r.m, num);
   // The sizing's heating check reads the start's heat from the start-up answers.
-  const std::unique_ptr<StartUp> start_up = startUpAnswers(scene, run, start_load, crank_motion);
-  const DriveSizing sizing = computeDriveSizing(scene, run, ss, turning, steady_turning ? m.coefficients.delta : NAN,
-                                                crank_motion, start_up.get(), start_load);
-  j["sizing"] = sizingJson(sizing);
-  j["sizing"]["flywheel"]["location"] = toString(scene.flywheel.location);
-  addRunningChecks(j, scene, run, ss, steady_turning);
-  if (const json basis = jointsBasis(scene, run); !basis.is_null()) j["sizing"]["joints_basis"] = basis;
-  if (!steady_turning) {
+  const std::unique_ptr<StartUp> start_up = startUpAnswers(scene, run, start_load, r.crank_motion);
+  addSizing(j, scene, run, r, start_up.get(), start_load);
+  if (!r.steady_turning) {
     not_meaningful.push_back("sizing.flywheel");
     not_meaningful.push_back("sizing.motor.energy_per_revolution");
   }
   j["not_meaningful"] = not_meaningful;
   j["stall"] = nullptr;
   j["start_up"] = start_up ? startUpJson(*start_up) : nullptr;
-  std::string status = amendedStatus(j, scene, run, ss, m, crank_motion, start_up.get(), start_load, num);
+  std::string status = amendedStatus(j, scene, run, r.ss, r.m, r.crank_motion, start_up.get(), start_load, num);
   if (!num.non_finite.empty())
     status += "; non-finite values written as null: " + joined(num.non_finite);
   j["status"] = status;
@@ -343,122 +368,6 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
 
 void writeSummaryAtomic(const std::string& path, const nlohmann::json& summary) {
   writeFileAtomic(path, summary.dump(2) + "\n");
-}
-
-namespace {
-
-// printf-style formatting of a JSON number, "n/a" for null or absent.
-std::string formatted(const json& v, const char* fmt) {
-  if (!v.is_number()) return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, v.get<double>());
-  return buf;
-}
-
-std::string jsonText(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
-
-// What the run's motion means, after its name on the motion line.
-std::string motionExplanation(const std::string& motion) {
-  return motion == "turning"    ? "  (the crank turns one way)"
-         : motion == "rocking"  ? "  (the crank swings back and forth instead of turning)"
-         : motion == "stalled"  ? "  (the motor stalled; why: see status)"
-         : motion == "at_rest"  ? "  (the machine is at rest: with the motor off, friction and loads hold it)"
-         : motion == "coasting" ? "  (the motor is off and the machine slows down: the run ended before it came to rest; "
-                                  "its speed swing is the deceleration, not an unevenness, so δ, H and k_p do not apply; "
-                                  "run longer, simulation.t_end, for the run-out)"
-         : motion == "starting" ? "  (" + std::string(kStillStartingWords) + "; no sizing verdict applies yet)"
-                                : "";
-}
-
-// The steady-state lines: whether the speed settled, from which revolution, and the metrics window.
-std::string steadyStateText(const json& st) {
-  if (!st.is_object()) return "";
-  std::ostringstream o;
-  // after_revolutions is the 0-based index of the first settled revolution: the speed repeats
-  // from the start of revolution after_revolutions + 1 (counted from 1) on.
-  o << "steady state " << (st.value("reached", false) ? "reached" : "NOT reached");
-  if (st.value("not_reached", json(nullptr)).is_string()) {
-    // The sentence begins "steady state not reached": the line has said so already.
-    const std::string why = jsonText(st.value("not_reached", json("")));
-    const std::string lead = "steady state not reached";
-    o << (why.rfind(lead, 0) == 0 ? why.substr(lead.size()) : ": " + why)
-      << "; δ, H, k_p and the steady window's checks do not apply";
-  }
-  if (st.value("reached", false) && st.value("after_revolutions", -1) >= 0)
-    o << ": the crank speed repeats from revolution " << st.value("after_revolutions", -1) + 1 << " on (t = "
-      << formatted(st.value("t_settled", json(nullptr)), "%.4g") << " s), of " << st.value("revolutions", 0)
-      << " whole revolutions in the run";
-  const int window_revs = st.value("window_revolutions", 0);
-  o << "\n             metrics window: "
-    << (window_revs > 0 ? "the last " + std::to_string(window_revs) + " revolutions"
-                        : std::string("the last 20 % of the run (it holds no whole crank revolution)"))
-    << (st.value("reached", false) ? "" : " (no steady state: the window may hold the start)")
-    << ", t = " << formatted(st.value("t_begin", json(nullptr)), "%.4g") << " ... " << formatted(st.value("t_end", json(nullptr)), "%.4g")
-    << " s\n";
-  return o.str();
-}
-
-// The load line: the net power per cart, and a warning when the load does almost no net work.
-std::string loadText(const json& ld) {
-  if (!ld.is_object() || !ld.value("available", false)) return "";
-  std::ostringstream o;
-  o << "load         " << formatted(ld.value("power_mean_per_cart_steady", json(nullptr)), "%.4g")
-    << " W per cart net in the metrics window, " << formatted(ld.value("power_mean_per_cart_whole_run", json(nullptr)), "%.4g")
-    << " W per cart over the whole run (" << jsonText(ld.value("reading", json(""))) << ")\n";
-  if (ld.value("warning", json(nullptr)).is_string())
-    o << "             WARNING: the load does almost no net work: " << jsonText(ld.value("warning_consequence", json("")))
-      << " (warning on stderr, docs/loads.md)\n";
-  return o.str();
-}
-
-}  // namespace
-
-std::string summaryText(const nlohmann::json& s) {
-  auto at = [&s](const char* a, const char* b = nullptr) -> json {
-    if (!s.contains(a)) return nullptr;
-    if (!b) return s.at(a);
-    return s.at(a).contains(b) ? s.at(a).at(b) : json(nullptr);
-  };
-
-  std::ostringstream o;
-  o << "scene        " << jsonText(at("scene")) << "  (model " << jsonText(at("model")) << ", integrator "
-    << jsonText(at("integrator")) << ")\n";
-  const std::string motion = jsonText(at("motion"));
-  o << "motion       " << motion << motionExplanation(motion) << "\n";
-  o << "status       " << jsonText(at("status")) << "\n";
-  o << "crank speed  mean " << formatted(at("omega_crank", "mean"), "%.4g") << " rad/s, min "
-    << formatted(at("omega_crank", "min"), "%.4g") << ", max " << formatted(at("omega_crank", "max"), "%.4g")
-    << "\n             δ (unevenness) " << formatted(at("delta"), "%.4g") << ", H (dynamics) " << formatted(at("H"), "%.4g")
-    << ", k_p (generalised) " << formatted(at("k_p"), "%.4g")
-    << "  (Loveikin and Pochka (2007) eq. (12)-(14))\n";
-  o << steadyStateText(at("steady_state"));
-  o << loadText(at("load"));
-  o << "coupling     torque swing " << formatted(at("coupling_torque_swing"), "%.4g")
-    << " N·m, twist swing " << formatted(at("twist_swing"), "%.3g") << " rad\n";
-  o << "energy       residual " << formatted(at("energy", "residual"), "%.3g") << " J (relative "
-    << formatted(at("energy_residual_rel"), "%.2e") << ")";
-  if (at("energy", "reducer_loss_model").is_string())
-    o << "; reducer losses " << formatted(at("energy", "reducer_losses"), "%.4g") << " J of the motor's shaft work "
-      << formatted(at("energy", "motor_shaft_work"), "%.4g") << " J, " << jsonText(at("energy", "reducer_loss_model"));
-  o << "\n";
-  // Only a lift-off gets a line (the verdict and a not-applicable reason are in summary.json).
-  const json lo = at("guide_lift_off");
-  if (lo.is_object() && jsonText(lo.value("verdict", json(""))) == "lifts off")
-    o << "guides       LIFT-OFF: " << lo["lifting"].size()
-      << " guide reaction(s) change sign in the steady window: those rollers need a counter-roller (warnings "
-         "on stderr; summary.json guide_lift_off)\n";
-  o << toothContactText(at("backlash"));
-  o << shaftTorsionText(at("crankshaft_torsion"));
-  o << "constraints  max error " << formatted(at("constraint_error_max"), "%.2e") << "\n";
-  if (at("guide_normal_forces").is_string())
-    o << "guide normal forces  " << jsonText(at("guide_normal_forces")) << "\n";
-  o << "steps        " << jsonText(at("steps")) << " steps"
-    << (at("rejected_steps").is_number() ? " (" + jsonText(at("rejected_steps")) + " rejected by the error test)" : "")
-    << ", " << jsonText(at("realizations")) << " right-hand-side evaluations\n";
-  o << "cpu          " << formatted(at("cpu_seconds"), "%.3g") << " s for "
-    << formatted(at("simulated_time"), "%.4g") << " s simulated, real-time factor "
-    << formatted(at("real_time_factor"), "%.3g") << "\n";
-  return o.str();
 }
 
 }  // namespace rollerdyn

@@ -18,32 +18,25 @@ double shareInGap(double x0, double x1, double b) {
   return in / (hi - lo);
 }
 
-}  // namespace
+// Why the teeth's contact is not judged in this run; "" when it is.
+std::string notJudgedReason(const Scene& scene, const CouplingLaw& law, const Table& ts, const SteadyState& ss,
+                            bool steady) {
+  if (!law.hasBacklash())
+    return scene.coupling.type == CouplingType::Rigid
+               ? "rigid coupling (coupling.type: rigid): motor and crank turn together"
+               : "no backlash (reducer.backlash: 0): the teeth never part; give reducer.backlash to see impacts";
+  if (!steady)
+    return ss.not_reached.empty() ? std::string("the crank does not turn steadily in this run, so there is no "
+                                                "steady window to count the teeth's impacts in")
+                                  : ss.not_reached;
+  if (!ts.has("tooth_contact") || !ts.has("twist") || ss.row_end <= ss.row_begin + 1)
+    return "the steady window holds fewer than two rows of the timeseries";
+  return "";
+}
 
-ToothContactSummary computeToothContact(const Scene& scene, const RunResult& run, const SteadyState& ss, bool steady) {
-  ToothContactSummary c;
-  c.verdict = "not applicable";
-  c.backlash = scene.reducer.backlash;
-  const CouplingLaw law = couplingLaw(scene);
-  if (!law.hasBacklash()) {
-    c.reason = scene.coupling.type == CouplingType::Rigid
-                   ? "rigid coupling (coupling.type: rigid): motor and crank turn together"
-                   : "no backlash (reducer.backlash: 0): the teeth never part; give reducer.backlash to see impacts";
-    return c;
-  }
-  const Table& ts = run.timeseries;
-  if (!steady) {
-    c.reason = ss.not_reached.empty() ? std::string("the crank does not turn steadily in this run, so there is no "
-                                                    "steady window to count the teeth's impacts in")
-                                      : ss.not_reached;
-    return c;
-  }
-  if (!ts.has("tooth_contact") || !ts.has("twist") || ss.row_end <= ss.row_begin + 1) {
-    c.reason = "the steady window holds fewer than two rows of the timeseries";
-    return c;
-  }
-  c.t_begin = ss.t_begin;
-  c.t_end = ss.t_end;
+// Over the steady window's rows: the time the twist spends inside the gap, the impacts (the teeth
+// meeting again) and the largest coupling torque from an impact until the teeth part.
+void countImpacts(ToothContactSummary& c, const Table& ts, const SteadyState& ss, double half_gap) {
   const int it = ts.index("t"), iq = ts.index("twist"), ic = ts.index("tooth_contact"), im = ts.index("coupling_torque"),
             ip = ts.index("phi_crank");
   const auto& rows = ts.rows;
@@ -53,7 +46,7 @@ ToothContactSummary computeToothContact(const Scene& scene, const RunResult& run
   bool in_episode = false;  // between an impact in the window and the next parting
   for (std::size_t i = a + 1; i < e; ++i) {
     const double dt = rows[i][it] - rows[i - 1][it];
-    gap_time += dt * shareInGap(rows[i - 1][iq], rows[i][iq], law.half_gap);
+    gap_time += dt * shareInGap(rows[i - 1][iq], rows[i][iq], half_gap);
     const int before = static_cast<int>(rows[i - 1][ic]), now = static_cast<int>(rows[i][ic]);
     if (now == 0) {
       in_episode = false;
@@ -65,18 +58,34 @@ ToothContactSummary computeToothContact(const Scene& scene, const RunResult& run
   }
   const double span = rows[e - 1][it] - rows[a][it];
   c.out_of_contact_fraction = span > 0 ? gap_time / span : 0.0;
+}
+
+std::string teethSeparateWarning(const ToothContactSummary& c) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "the reducer's teeth separate in steady running (t = %.4g ... %.4g s, backlash %.4g rad): apart %.3g %% "
+                "of the time, %.3g impacts per crank revolution, peak impact torque %.4g N·m at the crank axis; the "
+                "linear torsional modes assume permanent contact and do not hold (summary.json backlash)",
+                c.t_begin, c.t_end, c.backlash, 100.0 * c.out_of_contact_fraction, c.impacts_per_revolution,
+                c.peak_impact_torque);
+  return buf;
+}
+
+}  // namespace
+
+ToothContactSummary computeToothContact(const Scene& scene, const RunResult& run, const SteadyState& ss, bool steady) {
+  ToothContactSummary c;
+  c.verdict = "not applicable";
+  c.backlash = scene.reducer.backlash;
+  const CouplingLaw law = couplingLaw(scene);
+  c.reason = notJudgedReason(scene, law, run.timeseries, ss, steady);
+  if (!c.reason.empty()) return c;
+  c.t_begin = ss.t_begin;
+  c.t_end = ss.t_end;
+  countImpacts(c, run.timeseries, ss, law.half_gap);
   c.impacts_per_revolution = c.revolutions > 0 ? c.impacts / c.revolutions : 0.0;
   c.verdict = c.out_of_contact_fraction > 0.0 || c.impacts > 0 ? "teeth separate" : "teeth stay in contact";
-  if (c.verdict == "teeth separate") {
-    char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "the reducer's teeth separate in steady running (t = %.4g ... %.4g s, backlash %.4g rad): apart %.3g %% "
-                  "of the time, %.3g impacts per crank revolution, peak impact torque %.4g N·m at the crank axis; the "
-                  "linear torsional modes assume permanent contact and do not hold (summary.json backlash)",
-                  c.t_begin, c.t_end, c.backlash, 100.0 * c.out_of_contact_fraction, c.impacts_per_revolution,
-                  c.peak_impact_torque);
-    c.warnings.push_back(buf);
-  }
+  if (c.verdict == "teeth separate") c.warnings.push_back(teethSeparateWarning(c));
   return c;
 }
 
