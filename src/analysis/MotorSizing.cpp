@@ -12,6 +12,7 @@
 #include "motor/BreakdownTorque.h"
 #include "motor/SharedMotorLaw.h"
 #include "physics/ReducerLosses.h"
+#include "scene/MotorModels.h"
 
 namespace rollerdyn {
 
@@ -24,7 +25,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Kloss keys belong to the Kloss laws (the trial's circuit run with motor.breakdown_torque = 700
 // was checked against 700 N·m while its motor broke down at 517).
 bool runsCatalogueLaw(const Scene& sc) {
-  return sc.induction.model == MotorModel::Circuit || sc.induction.model == MotorModel::Park;
+  return isMachineLaw(sc.induction.model);
 }
 
 // The nominal slip s_n = 1 - ω_n/ω0; NaN where the nominal speed is not known.

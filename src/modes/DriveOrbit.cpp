@@ -7,6 +7,7 @@
 #include "modes/PeriodicFlow.h"
 #include "motor/MotorLawFactory.h"
 #include "reduced/ReducedModel.h"
+#include "scene/MotorModels.h"
 
 namespace rollerdyn::modes {
 
@@ -70,8 +71,7 @@ Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_no
   // boost), the circuit fixed (taken from the catalogue fit where the scene gives none, so the fit
   // is not redone at the new frequency). Left alone, every speed of a Campbell diagram ran at the
   // operating speed.
-  if (scene.motor.enabled &&
-      (scene.induction.model == MotorModel::Circuit || scene.induction.model == MotorModel::Park)) {
+  if (scene.motor.enabled && isMachineLaw(scene.induction.model)) {
     const InductionMachineParameters m = sceneMachine(scene);
     s.induction.circuit.R_s = m.R_s;
     s.induction.circuit.L_sigma_s = m.L_sigma_s;
