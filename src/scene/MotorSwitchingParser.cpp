@@ -97,19 +97,11 @@ void refuseIdleKeys(const scene_detail::Reader& in, Scene& scene) {
             "there is no brake to engage");
 }
 
-}  // namespace
-
-void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
+// The ramp of a soft starter or frequency converter, and the soft starter's voltage, current
+// limit and trip time (needed_by: "motor.start.method is ...", for the keys a method requires).
+void readRamp(const scene_detail::Reader& in, MotorStart& m, const std::string& needed_by) {
   const SceneDocument& doc = in.doc();
-  MotorStart& m = scene.motor_start;
-  m.method = in.choiceOf<StartMethod>("motor.start.method");
-  m.t_on = in.number("motor.start.t_on");
-  m.phase = in.number("motor.start.phase_deg") * kDegToRad;
-  readStarDelta(in, m, scene.motor.omega_sync);
-  m.changeover_gap = in.number("motor.start.changeover_gap");
-
   const bool ramped = m.method == StartMethod::SoftStarter || m.method == StartMethod::FrequencyConverter;
-  const std::string needed_by = std::string("motor.start.method is ") + toString(m.method);
   m.ramp_time = ramped ? in.requiredNumber("motor.start.ramp_time", "required when " + needed_by)
                        : in.numberOr("motor.start.ramp_time", 0.0);
   m.initial_voltage = m.method == StartMethod::SoftStarter
@@ -126,15 +118,24 @@ void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
     requireLater(in, "motor.start.max_start_time", m.max_start_time, "motor.start.ramp_time", m.ramp_time, "ramp_time",
                  "max_start_time");
   }
+}
+
+// The frequency converter's initial frequency (below the rated one) and voltage boost.
+void readConverter(const scene_detail::Reader& in, Scene& scene, const std::string& needed_by) {
+  MotorStart& m = scene.motor_start;
   m.initial_frequency = m.method == StartMethod::FrequencyConverter
                             ? in.requiredNumber("motor.start.initial_frequency", "required when " + needed_by)
                             : in.numberOr("motor.start.initial_frequency", 0.0);
   m.boost = in.number("motor.start.boost");
   if (m.method == StartMethod::FrequencyConverter && !(m.initial_frequency < scene.induction.frequency))
-    doc.fail("motor.start.initial_frequency",
-             "a frequency in (0, f_n = " + formatNumber(scene.induction.frequency) + ") [Hz] (motor.frequency)",
-             formatNumber(m.initial_frequency));
-  // A current limit needs a law that knows the stator current (motor/Supply.h).
+    in.doc().fail("motor.start.initial_frequency",
+                  "a frequency in (0, f_n = " + formatNumber(scene.induction.frequency) + ") [Hz] (motor.frequency)",
+                  formatNumber(m.initial_frequency));
+}
+
+// A current limit needs a law that knows the stator current (motor/Supply.h).
+void requireStatorCurrentForLimit(const SceneDocument& doc, const Scene& scene) {
+  const MotorStart& m = scene.motor_start;
   const bool law_has_current =
       scene.induction.model == MotorModel::Circuit || scene.induction.model == MotorModel::Park;
   if (m.method == StartMethod::SoftStarter && m.current_limit > 0 && !law_has_current) {
@@ -146,7 +147,13 @@ void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
                  " (no stator current in that law; use motor.model circuit or park)",
              formatNumber(m.current_limit));
   }
+}
 
+// motor.stop: the switch-off after the start (and its changeover), the brake after the
+// switch-off, the restart after both.
+void readMotorStop(const scene_detail::Reader& in, Scene& scene) {
+  const SceneDocument& doc = in.doc();
+  const MotorStart& m = scene.motor_start;
   MotorStop& st = scene.motor_stop;
   st.t_off = in.number("motor.stop.t_off");
   st.brake_torque = in.number("motor.stop.brake_torque");
@@ -171,6 +178,22 @@ void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
                    " s (t_off + brake_delay < t_restart)",
                formatNumber(st.brake_delay));
   }
+}
+
+}  // namespace
+
+void readMotorSwitching(const scene_detail::Reader& in, Scene& scene) {
+  MotorStart& m = scene.motor_start;
+  m.method = in.choiceOf<StartMethod>("motor.start.method");
+  m.t_on = in.number("motor.start.t_on");
+  m.phase = in.number("motor.start.phase_deg") * kDegToRad;
+  readStarDelta(in, m, scene.motor.omega_sync);
+  m.changeover_gap = in.number("motor.start.changeover_gap");
+  const std::string needed_by = std::string("motor.start.method is ") + toString(m.method);
+  readRamp(in, m, needed_by);
+  readConverter(in, scene, needed_by);
+  requireStatorCurrentForLimit(in.doc(), scene);
+  readMotorStop(in, scene);
   refuseIdleKeys(in, scene);
 }
 
