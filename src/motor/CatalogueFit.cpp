@@ -258,7 +258,8 @@ CatalogueFit fitCatalogue(const MotorCatalogue& c, const CatalogueSupply& s, int
 
 namespace {
 
-CatalogueFit computeFit(const MotorCatalogue& c, const CatalogueSupply& s, int cages) {
+// The catalogue data and supply a fit needs (std::invalid_argument saying what is missing).
+void checkFitInputs(const MotorCatalogue& c, const CatalogueSupply& s, int cages) {
   if (!c.given() || !(c.omega_nominal > 0 && c.current > 0 && c.power_factor > 0 && c.efficiency > 0 &&
                       c.starting_torque_ratio > 0 && c.breakdown_torque_ratio > 1 && c.starting_current_ratio > 1))
     throw std::invalid_argument("catalogue fit: incomplete catalogue data");
@@ -267,7 +268,80 @@ CatalogueFit computeFit(const MotorCatalogue& c, const CatalogueSupply& s, int c
   if (cages != 1 && cages != 2) throw std::invalid_argument("catalogue fit: 1 or 2 cages");
   if (!(c.omega_nominal < 2.0 * M_PI * s.frequency / s.pole_pairs))
     throw std::invalid_argument("catalogue fit: rated speed must be below the synchronous speed");
+}
 
+// One local fit (BOBYQA) from x, within the per-unit bounds; x ends where it got to. Its cost.
+double localFit(Problem& prob, std::vector<double>& x) {
+  const int n = prob.layout.size();
+  nlopt::opt opt(nlopt::LN_BOBYQA, n);
+  std::vector<double> lo(n), hi(n);
+  for (int i = 0; i < n; ++i) {
+    lo[i] = std::log(kLowerPu[i]), hi[i] = std::log(kUpperPu[i]);
+    x[i] = std::clamp(x[i], lo[i] + 1e-9, hi[i] - 1e-9);
+  }
+  opt.set_lower_bounds(lo);
+  opt.set_upper_bounds(hi);
+  opt.set_min_objective(objective, &prob);
+  opt.set_ftol_rel(1e-14);
+  opt.set_xtol_rel(1e-10);
+  opt.set_maxeval(2000);
+  opt.set_initial_step(0.3);
+  double cost = 0;
+  try {
+    opt.optimize(x, cost);
+  } catch (const std::exception&) {
+    cost = prob.residuals(x.data(), nullptr);  // roundoff-limited: keep where it got to
+  }
+  return cost;
+}
+
+// Every residual at x below 1e-9: the catalogue met.
+bool meetsCatalogue(Problem& prob, const std::vector<double>& x) {
+  std::array<double, 7> r{};
+  prob.residuals(x.data(), &r);
+  double worst = 0;
+  for (double e : r) worst = std::max(worst, std::abs(e));
+  return worst < 1e-9;
+}
+
+// The best of the local fits from x0 and from random points around it, and how many starts ran.
+struct BestStart {
+  std::vector<double> x;
+  int starts = 0;
+};
+
+BestStart multiStart(Problem& prob, const std::vector<double>& x0) {
+  BestStart best{x0, 0};
+  double best_cost = prob.residuals(x0.data(), nullptr);
+  unsigned long long lcg = 0x2545F4914F6CDD1DULL;  // fixed seed: the fit is reproducible
+  auto uniform = [&lcg]() {
+    lcg = lcg * 6364136223846793005ULL + 1442695040888963407ULL;
+    return double(lcg >> 11) / double(1ULL << 53);
+  };
+  // Starts until every residual is below 1e-9 (the catalogue met), or the best cost has not
+  // improved by 1e-9 relative over kPatience starts, or kMaxStarts are used.
+  constexpr int kMaxStarts = 60, kPatience = 15;
+  int since_better = 0;
+  for (; best.starts < kMaxStarts && since_better < kPatience; ++best.starts) {
+    std::vector<double> x = x0;
+    if (best.starts > 0)
+      for (double& v : x) v += 1.5 * (2.0 * uniform() - 1.0);  // factor e^±1.5 around the guess
+    const double cost = localFit(prob, x);
+    if (cost < best_cost * (1.0 - 1e-9)) {
+      best_cost = cost, best.x = x, since_better = 0;
+    } else {
+      ++since_better;
+    }
+    if (meetsCatalogue(prob, best.x)) {
+      ++best.starts;
+      break;
+    }
+  }
+  return best;
+}
+
+CatalogueFit computeFit(const MotorCatalogue& c, const CatalogueSupply& s, int cages) {
+  checkFitInputs(c, s, cages);
   Problem prob;
   prob.cat = &c;
   prob.base.pole_pairs = s.pole_pairs;
@@ -278,58 +352,11 @@ CatalogueFit computeFit(const MotorCatalogue& c, const CatalogueSupply& s, int c
   std::vector<double> x0 = initialGuess(c, s, cages);
   for (int i = 0; i < n; ++i) x0[i] = std::clamp(x0[i], std::log(kLowerPu[i]) + 1e-9, std::log(kUpperPu[i]) - 1e-9);
 
-  std::vector<double> best = x0;
-  double best_cost = prob.residuals(x0.data(), nullptr);
-  unsigned long long lcg = 0x2545F4914F6CDD1DULL;  // fixed seed: the fit is reproducible
-  auto uniform = [&lcg]() {
-    lcg = lcg * 6364136223846793005ULL + 1442695040888963407ULL;
-    return double(lcg >> 11) / double(1ULL << 53);
-  };
-  // Starts until every residual is below 1e-9 (the catalogue met), or the best cost has not
-  // improved by 1e-9 relative over kPatience starts, or kMaxStarts are used.
-  constexpr int kMaxStarts = 60, kPatience = 15;
-  int starts = 0, since_better = 0;
-  for (; starts < kMaxStarts && since_better < kPatience; ++starts) {
-    std::vector<double> x = x0;
-    if (starts > 0)
-      for (double& v : x) v += 1.5 * (2.0 * uniform() - 1.0);  // factor e^±1.5 around the guess
-    nlopt::opt opt(nlopt::LN_BOBYQA, n);
-    std::vector<double> lo(n), hi(n);
-    for (int i = 0; i < n; ++i) {
-      lo[i] = std::log(kLowerPu[i]), hi[i] = std::log(kUpperPu[i]);
-      x[i] = std::clamp(x[i], lo[i] + 1e-9, hi[i] - 1e-9);
-    }
-    opt.set_lower_bounds(lo);
-    opt.set_upper_bounds(hi);
-    opt.set_min_objective(objective, &prob);
-    opt.set_ftol_rel(1e-14);
-    opt.set_xtol_rel(1e-10);
-    opt.set_maxeval(2000);
-    opt.set_initial_step(0.3);
-    double cost = 0;
-    try {
-      opt.optimize(x, cost);
-    } catch (const std::exception&) {
-      cost = prob.residuals(x.data(), nullptr);  // roundoff-limited: keep where it got to
-    }
-    if (cost < best_cost * (1.0 - 1e-9)) {
-      best_cost = cost, best = x, since_better = 0;
-    } else {
-      ++since_better;
-    }
-    std::array<double, 7> r{};
-    prob.residuals(best.data(), &r);
-    double worst = 0;
-    for (double e : r) worst = std::max(worst, std::abs(e));
-    if (worst < 1e-9) {
-      ++starts;
-      break;
-    }
-  }
+  const BestStart best = multiStart(prob, x0);
   InductionMachineParameters machine = prob.base;
-  prob.layout.toMachine(best.data(), machine);
+  prob.layout.toMachine(best.x.data(), machine);
   machine.validate();
-  return completeFit(machine, c, starts, prob.evaluations);
+  return completeFit(machine, c, best.starts, prob.evaluations);
 }
 
 }  // namespace

@@ -349,17 +349,112 @@ void keepIntegratorStatistics(const CvodeIntegrator& integ, RunStats& stats) {
   stats.newton_convergence_failures = integ.newtonConvergenceFailures();
 }
 
-}  // namespace
-
-RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control) {
-  const Scene& sc = model.scene();
-  // Its closed-form loops turn one rigid crankshaft: a torsional chain would be held rigid without
-  // a word (the scene parser refuses the pair; a caller that sets the formulation in code meets
-  // this instead).
+// Its closed-form loops turn one rigid crankshaft: a torsional chain would be held rigid without
+// a word (the scene parser refuses the pair; a caller that sets the formulation in code meets
+// this instead).
+void refuseTorsionalChain(const MultibodyModel& model) {
   if (model.crankshaftTorsion())
     throw std::invalid_argument(
         "multibody model: the minimal formulation turns one rigid crankshaft; the torsional chain "
         "(crankshaft.torsional_stiffness) needs simulation.formulation: constrained");
+}
+
+// With the lagged law, the normal-force states at the friction loop's solution (their fixed
+// point); then the evaluation state at y0, realized to Dynamics. False, with the run's status
+// set, when the loop has no solution there.
+bool startFrictionLoop(const MultibodyModel& model, MinimalSystem& ms, Eigen::VectorXd& y0, RunResult& run) {
+  if ((model.hasFrictionLagStates() && !ms.startLagStates(0.0, y0)) || !ms.set(0.0, y0.data())) {
+    run.stats.complete = false;
+    run.stats.status = statusAt("the run stopped", 0.0) + ": the " + ms.loopFailure();
+    return false;
+  }
+  model.system().realize(ms.state(), SimTK::Stage::Dynamics);
+  return true;
+}
+
+// The integration of one run: CVODE on the minimal coordinates with the supply's events and the
+// crank speed's extrema hooked into its problem, and the rows at the output times, every one
+// through the stop rules both models share (analysis/RunRecorder.h).
+class MinimalRun {
+ public:
+  MinimalRun(const MultibodyModel& model, MinimalSystem& ms, OdeProblem& p, RunResult& run, const RunControl& control)
+      : model_(model), ms_(ms), run_(run), extrema_(ms.layout().omega), events_(model, ms), integ_(withHooks(p)),
+        recorder_(model.scene(), model.motorForce() ? &model.motorForce()->supply() : nullptr,
+                  model.options().prescribe_crank_speed, run, control),
+        rows_(model, ms, recorder_, run.stats) {
+    extrema_.observe(integ_);
+    events_.arm(integ_);
+  }
+  MinimalRun(const MinimalRun&) = delete;
+  MinimalRun& operator=(const MinimalRun&) = delete;
+
+  // Row 0 from y0, then one row per output time until the end or a stop.
+  void recordRows(const Eigen::VectorXd& y0) {
+    const std::vector<double> times = outputTimes(model_.scene().simulation);
+    bool go = rows_.record(0, times.front(), y0);
+    t_last_ = times.front();
+    y_last_ = y0;
+    for (std::size_t k = 1; go && k < times.size(); ++k) {
+      if (!advanceTo(times[k])) break;
+      go = rows_.record(k, times[k], integ_.y());
+      if (!go && !run_.stats.complete && run_.timeseries.rows.size() <= k) break;  // the row itself failed
+      t_last_ = times[k];
+      y_last_ = integ_.y();
+    }
+  }
+
+  // The extrema and the integrator's statistics, and the energy audit from the last recorded
+  // row's state (O(n): the evaluation state, realized to Dynamics).
+  void finish(const EnergySnapshot& e0) {
+    run_.crank_speed_extrema =
+        extrema_.takeUpTo(run_.timeseries.rows.empty() ? t_last_ : run_.timeseries.rows.back()[0]);
+    keepIntegratorStatistics(integ_, run_.stats);
+    if (!model_.scene().simulation.reactions) run_.stats.reaction_self_check.clear();
+    ms_.set(t_last_, y_last_.data());
+    model_.system().realize(ms_.state(), SimTK::Stage::Dynamics);
+    run_.energy = energyAuditBetween(e0, model_.energy(ms_.state()));
+  }
+
+ private:
+  OdeProblem& withHooks(OdeProblem& p) {
+    extrema_.install(p);
+    events_.install(p);
+    return p;
+  }
+
+  // CVODE to the output time t_out, the supply's events applied on the way. False, with the
+  // run's status set, when it fails.
+  bool advanceTo(double t_out) {
+    bool failed = false;
+    while (!(failed = !integ_.advanceTo(t_out))) {
+      events_.applyDue(integ_);
+      if (reachedOutputTime(integ_.time(), t_out)) break;
+    }
+    if (!failed) return true;
+    if (!ms_.loopFailure().empty())  // CVODE gave up on states where the friction loop has no solution
+      recorder_.fail(statusAt("the run stopped", ms_.loopFailureTime()) + ": the " + ms_.loopFailure());
+    else
+      recorder_.fail(statusAt("integration failed", integ_.time()) + ": " + integ_.error());
+    return false;
+  }
+
+  const MultibodyModel& model_;
+  MinimalSystem& ms_;
+  RunResult& run_;
+  StepExtrema extrema_;
+  SupplyEvents events_;
+  CvodeIntegrator integ_;
+  RunRecorder recorder_;
+  OutputRows rows_;
+  double t_last_ = 0;  // the last recorded row, whose state closes the energy audit
+  Eigen::VectorXd y_last_;
+};
+
+}  // namespace
+
+RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control) {
+  refuseTorsionalChain(model);
+  const Scene& sc = model.scene();
   RunResult run = emptyRun(model);
   // The initial state from the closed forms (no projection, no constrained solve: O(n)), and,
   // with the lagged law, its normal-force states at the loop's solution (their fixed point).
@@ -367,61 +462,16 @@ RunResult simulateMinimal(const MultibodyModel& model, const RunControl& control
       model.closedFormState(sc.initial.crank_angle, sc.initial.crank_speed, sc.initial.twist);
   MinimalSystem ms(model, s0);
   Eigen::VectorXd y0 = ms.pack(s0);
-  if ((model.hasFrictionLagStates() && !ms.startLagStates(0.0, y0)) || !ms.set(0.0, y0.data())) {
-    run.stats.complete = false;
-    run.stats.status = statusAt("the run stopped", 0.0) + ": the " + ms.loopFailure();
-    return run;
-  }
-  model.system().realize(ms.state(), SimTK::Stage::Dynamics);
+  if (!startFrictionLoop(model, ms, y0, run)) return run;
   const EnergySnapshot e0 = model.energy(ms.state());
 
   OdeProblem p = minimalProblem(model, ms, y0, s0);
   if (p.bdf) run.integrator = "cvode-bdf (minimal coordinates)";
-  StepExtrema extrema(ms.layout().omega);
-  extrema.install(p);
-  SupplyEvents events(model, ms);
-  events.install(p);
-  CvodeIntegrator integ(p);
-  extrema.observe(integ);
-  events.arm(integ);
-
-  // Every row goes through the stop rules both models share (analysis/RunRecorder.h).
-  const MotorForce* motor = model.motorForce();
-  RunRecorder recorder(sc, motor ? &motor->supply() : nullptr, model.options().prescribe_crank_speed, run, control);
-  OutputRows rows(model, ms, recorder, run.stats);
-
-  const std::vector<double> times = outputTimes(sc.simulation);
+  MinimalRun minimal(model, ms, p, run, control);
   const std::clock_t cpu0 = std::clock();
-  bool go = rows.record(0, times.front(), y0);
-  double t_last = times.front();  // the last recorded row, whose state closes the energy audit
-  Eigen::VectorXd y_last = y0;
-  for (std::size_t k = 1; go && k < times.size(); ++k) {
-    bool failed = false;
-    while (!(failed = !integ.advanceTo(times[k]))) {
-      events.applyDue(integ);
-      if (reachedOutputTime(integ.time(), times[k])) break;
-    }
-    if (failed) {
-      if (!ms.loopFailure().empty())  // CVODE gave up on states where the friction loop has no solution
-        recorder.fail(statusAt("the run stopped", ms.loopFailureTime()) + ": the " + ms.loopFailure());
-      else
-        recorder.fail(statusAt("integration failed", integ.time()) + ": " + integ.error());
-      break;
-    }
-    go = rows.record(k, times[k], integ.y());
-    if (!go && !run.stats.complete && run.timeseries.rows.size() <= k) break;  // the row itself failed
-    t_last = times[k];
-    y_last = integ.y();
-  }
+  minimal.recordRows(y0);
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
-  run.crank_speed_extrema = extrema.takeUpTo(run.timeseries.rows.empty() ? t_last : run.timeseries.rows.back()[0]);
-  keepIntegratorStatistics(integ, run.stats);
-  if (!sc.simulation.reactions) run.stats.reaction_self_check.clear();
-
-  // The audit from the last recorded row's state (O(n): the evaluation state, realized to Dynamics).
-  ms.set(t_last, y_last.data());
-  model.system().realize(ms.state(), SimTK::Stage::Dynamics);
-  run.energy = energyAuditBetween(e0, model.energy(ms.state()));
+  minimal.finish(e0);
   return run;
 }
 

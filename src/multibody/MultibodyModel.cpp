@@ -11,13 +11,10 @@
 #include "multibody/CrankshaftTorsion.h"
 #include "multibody/EnergyMeter.h"
 #include "multibody/GuideFriction.h"
-#include "motor/MotorColumns.h"
 #include "motor/BreakdownTorque.h"
 #include "physics/CrankInertia.h"
 #include "motor/SharedMotorLaw.h"
 #include "motor/Supply.h"
-#include "multibody/MinimalCoordinates.h"
-#include "multibody/MinimalDynamics.h"
 #include "multibody/MotorForce.h"
 #include "multibody/RollerLoadForce.h"
 #include "physics/CamMotionLaw.h"
@@ -39,6 +36,18 @@ constexpr double kRotorTokenMass = 1e-3;  // [kg]
 SimTK::Vec3 crankPin(const Scene& scene, int j) {
   const double th = scene.crankPhase(j), r = scene.crank.radius;
   return SimTK::Vec3(r * std::cos(th), r * std::sin(th), 0);
+}
+
+// Cart j: a point mass at its centre of mass (rods' share included) on a slider.
+SimTK::Body::Rigid cartBody(const Scene& sc, int j, int side) {
+  const double m_cart = sc.cartMassWithRodShare(j);
+  const SimTK::Vec3 com_cart(side * sc.carts.geometry.p, sc.carts.geometry.com_height, 0);
+  // The cart only slides, so its rotational inertia never enters the motion; it is a point mass
+  // at its centre of mass plus a token central inertia. Without the token, Simbody's central
+  // inertia Inertia(com, m) - Inertia(com, m) can round to -3e-14 and be rejected (a 700 kg cart).
+  const SimTK::Inertia token_central(1e-9 * m_cart);  // [kg·m²], isotropic
+  return SimTK::Body::Rigid(
+      SimTK::MassProperties(m_cart, com_cart, token_central.shiftFromMassCenter(com_cart, m_cart)));
 }
 
 }  // namespace
@@ -118,88 +127,74 @@ void MultibodyModel::buildTorsionalChain(double J_motor_side) {
   for (int j = 0; j < scene_.carts.count; ++j) throw_of_cart_.push_back(throws[chain.throw_of_cart[j]]);
   auto* f = new CrankshaftTorsion(std::vector<SimTK::MobilizedBody>(throws.begin() + 1, throws.end()), chain.stiffness,
                                   chain.damping);
-  SimTK::Force::Custom(forces_, f);
   torsion_force_ = f;
-  applied_order_.push_back(f);
-  inventory_.force_elements.push_back("CrankshaftTorsion(" + std::to_string(throws.size() - 1) + " segments)");
+  addForceElement(f, "CrankshaftTorsion(" + std::to_string(throws.size() - 1) + " segments)");
 }
 
 void MultibodyModel::buildCarts() {
   const Scene& sc = scene_;
-  const double l = sc.rods.length;
   for (int j = 0; j < sc.carts.count; ++j) {
     CartRig rig;
     rig.side = sc.carts.side[j];
     rig.p_CrankPin = crankPin(sc, j);
     rig.crank = throw_of_cart_[j];
-    rig.rod_length = l;
-    const double m_cart = sc.cartMassWithRodShare(j);
-    const SimTK::Vec3 com_cart(rig.side * sc.carts.geometry.p, sc.carts.geometry.com_height, 0);
-    // The cart only slides, so its rotational inertia never enters the motion; it is a point mass
-    // at its centre of mass plus a token central inertia. Without the token, Simbody's central
-    // inertia Inertia(com, m) - Inertia(com, m) can round to -3e-14 and be rejected (a 700 kg cart).
-    const SimTK::Inertia token_central(1e-9 * m_cart);  // [kg·m²], isotropic
-    SimTK::Body::Rigid cart_body(
-        SimTK::MassProperties(m_cart, com_cart, token_central.shiftFromMassCenter(com_cart, m_cart)));
-    rig.cart = SimTK::MobilizedBody::Slider(matter_.Ground(), SimTK::Transform(), cart_body, SimTK::Transform());
-
-    if (sc.hasCamDrive()) {
-      // Loveikin and Pochka (cam drive paper): the cam on the crankshaft pushes the cart; x_B = σ·x(φ2 + j·Δφ) replaces the rod.
-      rig.p_CrankPin = SimTK::Vec3(0);
-      rig.cam = SimTK::Constraint::CoordinateCoupler(
-          matter_, new CamFollowerFunction(sc.cam.stroke, rig.side, sc.crankPhase(j)),
-          std::vector<SimTK::MobilizedBodyIndex>{crank_.getMobilizedBodyIndex(),
-                                                 rig.cart.getMobilizedBodyIndex()},
-          std::vector<SimTK::MobilizerQIndex>{SimTK::MobilizerQIndex(0), SimTK::MobilizerQIndex(0)});
-      constraint_count_ += 1;
-    } else if (sc.rods.model == RodModel::Distributed) {
-      // Rod frame: origin at the crank pin A, +x along the rod towards B, centre of mass at l/2.
-      const double m = sc.rods.mass, I = sc.rods.inertia_com;
-      const SimTK::Vec3 com(0.5 * l, 0, 0);
-      // About its centre a slender rod has Iyy = Izz = I; a small Ixx keeps the inertia valid.
-      const SimTK::Inertia central(1e-9 * I + 1e-12, I, I);
-      SimTK::Body::Rigid rod_body(SimTK::MassProperties(m, com, central.shiftFromMassCenter(com, m)));
-      rig.rod = SimTK::MobilizedBody::Pin(rig.crank, SimTK::Transform(rig.p_CrankPin), rod_body, SimTK::Transform());
-      rig.rod_mass = m;
-      // Close the loop at B: the rod end stays on the cart's z axis through B (a planar
-      // revolute joint: two equations; a Ball would add a redundant z equation). One
-      // PointOnLine rather than two PointInPlane: Simbody builds G·M⁻¹·Gᵀ column by column and
-      // every column visits every Constraint object, so halving the objects halves that cost.
-      SimTK::Constraint::PointOnLine(rig.cart, SimTK::UnitVec3(SimTK::ZAxis), SimTK::Vec3(0), rig.rod,
-                                     SimTK::Vec3(l, 0, 0));
-      constraint_count_ += 1;
-    } else {
-      SimTK::Constraint::Rod(rig.crank, rig.p_CrankPin, rig.cart, SimTK::Vec3(0), l);
-      constraint_count_ += 1;
-    }
+    rig.rod_length = sc.rods.length;
+    rig.cart = SimTK::MobilizedBody::Slider(matter_.Ground(), SimTK::Transform(), cartBody(sc, j, rig.side),
+                                            SimTK::Transform());
+    if (sc.hasCamDrive())
+      driveCartByCam(rig, j);
+    else if (sc.rods.model == RodModel::Distributed)
+      linkCartByRodBody(rig);
+    else
+      SimTK::Constraint::Rod(rig.crank, rig.p_CrankPin, rig.cart, SimTK::Vec3(0), rig.rod_length);
+    constraint_count_ += 1;  // one Constraint object per cart, whichever links it
     carts_.push_back(rig);
   }
 }
 
+void MultibodyModel::driveCartByCam(CartRig& rig, int j) {
+  // Loveikin and Pochka (cam drive paper): the cam on the crankshaft pushes the cart; x_B = σ·x(φ2 + j·Δφ) replaces the rod.
+  const Scene& sc = scene_;
+  rig.p_CrankPin = SimTK::Vec3(0);
+  rig.cam = SimTK::Constraint::CoordinateCoupler(
+      matter_, new CamFollowerFunction(sc.cam.stroke, rig.side, sc.crankPhase(j)),
+      std::vector<SimTK::MobilizedBodyIndex>{crank_.getMobilizedBodyIndex(), rig.cart.getMobilizedBodyIndex()},
+      std::vector<SimTK::MobilizerQIndex>{SimTK::MobilizerQIndex(0), SimTK::MobilizerQIndex(0)});
+}
+
+void MultibodyModel::linkCartByRodBody(CartRig& rig) {
+  const Scene& sc = scene_;
+  const double l = rig.rod_length;
+  // Rod frame: origin at the crank pin A, +x along the rod towards B, centre of mass at l/2.
+  const double m = sc.rods.mass, I = sc.rods.inertia_com;
+  const SimTK::Vec3 com(0.5 * l, 0, 0);
+  // About its centre a slender rod has Iyy = Izz = I; a small Ixx keeps the inertia valid.
+  const SimTK::Inertia central(1e-9 * I + 1e-12, I, I);
+  SimTK::Body::Rigid rod_body(SimTK::MassProperties(m, com, central.shiftFromMassCenter(com, m)));
+  rig.rod = SimTK::MobilizedBody::Pin(rig.crank, SimTK::Transform(rig.p_CrankPin), rod_body, SimTK::Transform());
+  rig.rod_mass = m;
+  // Close the loop at B: the rod end stays on the cart's z axis through B (a planar
+  // revolute joint: two equations; a Ball would add a redundant z equation). One
+  // PointOnLine rather than two PointInPlane: Simbody builds G·M⁻¹·Gᵀ column by column and
+  // every column visits every Constraint object, so halving the objects halves that cost.
+  SimTK::Constraint::PointOnLine(rig.cart, SimTK::UnitVec3(SimTK::ZAxis), SimTK::Vec3(0), rig.rod,
+                                 SimTK::Vec3(l, 0, 0));
+}
+
+void MultibodyModel::addForceElement(SimTK::Force::Custom::Implementation* f, const std::string& inventory_name) {
+  SimTK::Force::Custom(forces_, f);
+  applied_order_.push_back(f);
+  inventory_.force_elements.push_back(inventory_name);
+}
+
 void MultibodyModel::buildForces() {
   const Scene& sc = scene_;
-  EnergyMeter::Sources sources;
-  if (sc.hasMotor()) {
-    std::shared_ptr<const MotorLaw> law = options_.motor_law;
-    if (!law) law = sharedMotorLaw(sc);
-    Supply supply = makeSupply(sc, law.get());
-    breakdown_torque_ = rollerdyn::motorBreakdownTorque(sc, law.get());
-    auto* f = new MotorForce(forces_, motor_, law, std::move(supply), reducerLaw(sc, breakdown_torque_));
-    SimTK::Force::Custom(forces_, f);
-    motor_force_ = sources.motor = f;
-    applied_order_.push_back(f);
-    inventory_.force_elements.push_back(sc.induction.model == MotorModel::Kloss && !options_.motor_law
-                                            ? "KlossMotor"
-                                            : "InductionMotor(" + law->description() + ")");
-  }
+  if (sc.hasMotor()) addMotorForce();
   if (sc.coupling.type == CouplingType::Elastic) {
     auto* f = new ElasticCoupling(motor_, couplingLaw(sc));
-    SimTK::Force::Custom(forces_, f);
-    coupling_force_ = sources.coupling = f;
-    applied_order_.push_back(f);
-    inventory_.force_elements.push_back(std::string(sc.hasCouplingDamping() ? "ElasticCoupling(spring+damper"
-                                                                            : "ElasticCoupling(spring") +
-                                        (sc.hasBacklash() ? "+backlash)" : ")"));
+    coupling_force_ = f;
+    addForceElement(f, std::string(sc.hasCouplingDamping() ? "ElasticCoupling(spring+damper" : "ElasticCoupling(spring") +
+                           (sc.hasBacklash() ? "+backlash)" : ")"));
   }
   if (sc.hasGravity()) {
     gravity_ = SimTK::Force::Gravity(forces_, matter_, -SimTK::YAxis, sc.loads.gravity);
@@ -210,23 +205,32 @@ void MultibodyModel::buildForces() {
     std::vector<Loads> per_cart;
     for (int j = 0; j < sc.carts.count; ++j) per_cart.push_back(sc.cartLoads(j));
     auto* f = new RollerLoadForce(carts_, per_cart, sc.carts.geometry);
-    SimTK::Force::Custom(forces_, f);
-    load_force_ = sources.loads = f;
-    applied_order_.push_back(f);
-    inventory_.force_elements.push_back("RollerLoads");
+    load_force_ = f;
+    addForceElement(f, "RollerLoads");
   }
   if (sc.hasGuideFriction()) {
     auto* f = new GuideFriction(forces_, matter_, carts_, sc.loads, sc.carts.geometry);
-    SimTK::Force::Custom(forces_, f);
-    friction_force_ = sources.friction = f;
-    applied_order_.push_back(f);
-    inventory_.force_elements.push_back("GuideFriction");
+    friction_force_ = f;
+    addForceElement(f, "GuideFriction");
   }
-  sources.torsion = torsion_force_;
-  auto* meter = new EnergyMeter(forces_, sources);
+  // Last: the meter reads the powers of the elements above.
+  auto* meter = new EnergyMeter(forces_, {motor_force_, coupling_force_, load_force_, friction_force_, torsion_force_});
   SimTK::Force::Custom(forces_, meter);
   energy_meter_ = meter;
   applied_order_.push_back(meter);
+}
+
+void MultibodyModel::addMotorForce() {
+  const Scene& sc = scene_;
+  std::shared_ptr<const MotorLaw> law = options_.motor_law;
+  if (!law) law = sharedMotorLaw(sc);
+  Supply supply = makeSupply(sc, law.get());
+  breakdown_torque_ = rollerdyn::motorBreakdownTorque(sc, law.get());
+  auto* f = new MotorForce(forces_, motor_, law, std::move(supply), reducerLaw(sc, breakdown_torque_));
+  motor_force_ = f;
+  addForceElement(f, sc.induction.model == MotorModel::Kloss && !options_.motor_law
+                         ? "KlossMotor"
+                         : "InductionMotor(" + law->description() + ")");
 }
 
 void MultibodyModel::fillInventory() {
@@ -241,91 +245,6 @@ void MultibodyModel::fillInventory() {
   const int prescribed = options_.prescribe_crank_speed ? 1 : 0;
   inventory_.degrees_of_freedom = inventory_.mobilities - inventory_.constraint_equations - prescribed;
   inventory_.effects = scene_.effects();
-}
-
-SimTK::State MultibodyModel::closedFormState(double phi, double omega, double twist) const {
-  SimTK::State s = closedFormKinematics(phi, omega, twist);
-  startMotor(s);
-  return s;
-}
-
-void MultibodyModel::startMotor(SimTK::State& s) const {
-  if (!motor_force_) return;
-  const bool steady = motorSteadyAtStart(scene_, motor_force_->supply());
-  motor_force_->initialize(s, steady);
-  system_.realize(s, SimTK::Stage::Velocity);
-  motor_force_->applyDueEvents(s, false);
-  system_.realize(s, SimTK::Stage::Velocity);
-}
-
-SimTK::State MultibodyModel::closedFormKinematics(double phi, double omega, double twist) const {
-  SimTK::State s = system_.getDefaultState();
-  system_.realizeModel(s);
-  // Carts of different masses: the lightest is the one a friction error moves most.
-  if (friction_force_) friction_force_->setErrorWeights(s, scene_.lightestCartMassWithRodShare());
-  if (motor_force_) motor_force_->setErrorWeights(s);
-  if (elastic()) {
-    // Simbody counts 1 rad (1 rad/s) as a unit change of every coordinate (speed), but the
-    // coupling twist is ~torque/c: 1e-6 rad at c = 1e9, so it was held to ~100 % of itself and
-    // the coupling torque carried errors of c·accuracy. One unit of twist is the twist that
-    // carries the motor's breakdown torque at the crank, M_kr·u·η, so the coupling torque is
-    // held to accuracy·M_kr·u·η whatever the stiffness.
-    const double torque_scale =
-        breakdown_torque_ * scene_.reducer.ratio * scene_.reducer.efficiency;
-    s.updUWeights(matter_.getMySubsystemIndex())[motor_.getFirstUIndex(s)] =
-        std::max(1.0, scene_.coupling.stiffness / torque_scale);
-  }
-  if (torsion_force_) {
-    // The same for each segment of a torsional chain: one unit of its twist carries M_kr·u·η.
-    const double torque_scale = std::max(breakdown_torque_ * scene_.reducer.ratio * scene_.reducer.efficiency, 1e-300);
-    for (int k = 0; k < torsion_force_->segmentCount(); ++k)
-      s.updUWeights(matter_.getMySubsystemIndex())[torsion_force_->segmentBody(k).getFirstUIndex(s)] =
-          std::max(1.0, torsion_force_->stiffness(k) / torque_scale);
-  }
-  system_.realize(s, SimTK::Stage::Instance);
-  IndependentState x;
-  x.crank_angle = phi;
-  x.crank_speed = omega;
-  x.twist = twist;
-  x.twist_rate = 0.0;  // the motor side starts at the crank's speed
-  // A prescribed crank speed is the options' (MinimalCoordinates::apply writes it).
-  MinimalCoordinates(*this, s).apply(0.0, x, s);
-  system_.realize(s, SimTK::Stage::Velocity);
-  return s;
-}
-
-SimTK::State MultibodyModel::assembledState(double phi, double omega, double twist) const {
-  SimTK::State s = closedFormKinematics(phi, omega, twist);
-  // The closed-form configuration already satisfies the loops; projection only removes
-  // round-off and can therefore never jump to the other assembly branch.
-  system_.realize(s, SimTK::Stage::Position);
-  system_.projectQ(s, 1e-13);
-  system_.realize(s, SimTK::Stage::Velocity);
-  system_.projectU(s, 1e-13);
-  startMotor(s);
-  if (friction_force_ && friction_force_->lagged()) {
-    // Start the friction normal forces at the reactions they produce themselves (fixed point;
-    // it contracts by a factor of order f per pass).
-    for (int pass = 0; pass < 8; ++pass) {
-      system_.realize(s, SimTK::Stage::Acceleration);
-      const SimTK::Vector n = friction_force_->currentNormals(s);
-      friction_force_->setNormalsInUse(s, n);
-    }
-  } else if (friction_force_) {
-    // Algebraic law: the friction loop solved by the minimal formulation's inverse-dynamics pass.
-    MinimalCoordinates coords(*this, s);
-    coords.apply(0.0, coords.extract(s), s);
-    MinimalDynamics dyn(*this, s);
-    if (!dyn.evaluate(s, coords))
-      throw std::invalid_argument("multibody model: at the initial state the " +
-                                  describeLoopFailure(dyn.loopResult()));
-  }
-  system_.realize(s, SimTK::Stage::Acceleration);
-  return s;
-}
-
-SimTK::State MultibodyModel::initialState() const {
-  return assembledState(scene_.initial.crank_angle, scene_.initial.crank_speed, scene_.initial.twist);
 }
 
 int MultibodyModel::motorStateCount() const { return motor_force_ ? motor_force_->stateCount() : 0; }
@@ -419,132 +338,6 @@ EnergySnapshot MultibodyModel::energy(const SimTK::State& s) const {
   e.reducer_losses = energy_meter_->reducerLosses(s);
   if (motor_force_) e.brake_dissipation = motor_force_->brakeWork(s);
   return e;
-}
-
-void MultibodyModel::layOutColumns() {
-  WrittenColumns w;
-  w.multibody = true;
-  w.carts = int(carts_.size());
-  if (motor_force_) addMotorColumns(&motor_force_->law(), motor_force_->supply(), w);
-  w.reducer_losses = recordsReducerLosses();
-  w.backlash = coupling_force_ && coupling_force_->law().hasBacklash();
-  w.shaft_segments = torsion_force_ ? torsion_force_->segmentCount() : 0;
-  timeseries_layout_ = ColumnLayout(OutputFile::Timeseries, w);
-  // The main bearings' own columns come after the run, from the shaft's statics
-  // (analysis/CrankshaftBearings.h).
-  reactions_layout_ = ColumnLayout(OutputFile::Reactions, w);
-}
-
-void MultibodyModel::observe(const SimTK::State& s, std::vector<double>& ts,
-                             std::vector<double>& re) const {
-  observeMotion(s, s.getUDot(), ts);
-  observeReactions(s, re);
-}
-
-void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& udot,
-                                   std::vector<double>& ts) const {
-  // With an elastic coupling the motor side is mobilized on the crankshaft: its q, u, u̇ are the
-  // twist and its rates; with a rigid coupling motor_ is the crankshaft and they are zero.
-  const bool elastic = motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex();
-  const double phi2 = crank_.getOneQ(s, 0), w2 = crank_.getOneU(s, 0);
-  const double e2 = udot[crank_.getFirstUIndex(s)];
-  const double twist = elastic ? motor_.getOneQ(s, 0) : 0.0;
-  const double twist_rate = elastic ? motor_.getOneU(s, 0) : 0.0;
-  const double twist_accel = elastic ? udot[motor_.getFirstUIndex(s)] : 0.0;
-  const double phi1 = phi2 + twist, w1 = w2 + twist_rate, e1 = e2 + twist_accel;
-  const ColumnLayout& L = timeseries_layout_;
-  L.reset(ts);
-  L.set(ts, Column::t, s.getTime());
-  L.set(ts, Column::phi_motor, phi1);
-  L.set(ts, Column::phi_crank, phi2);
-  L.set(ts, Column::omega_motor, w1);
-  L.set(ts, Column::omega_crank, w2);
-  L.set(ts, Column::eps_crank, e2);
-  L.set(ts, Column::eps_motor, e1);
-  L.set(ts, Column::twist, twist);
-  L.set(ts, Column::twist_rate, twist_rate);
-  L.set(ts, Column::twist_accel, twist_accel);
-  L.set(ts, Column::coupling_torque, couplingTorque(s, udot));
-  L.set(ts, Column::motor_torque, motorTorque(s));
-  for (size_t j = 0; j < carts_.size(); ++j) {
-    const CartRig& c = carts_[j];
-    L.set(ts, Column::x_cart, int(j) + 1, c.x(s));
-    L.set(ts, Column::v_cart, int(j) + 1, c.v(s));
-    L.set(ts, Column::a_cart, int(j) + 1, udot[c.cart.getFirstUIndex(s)]);
-  }
-  if (motor_force_) {
-    const MotorForce& m = *motor_force_;
-    const double current = L.has(Column::stator_current) ? m.evaluate(s).stator_current : 0.0;
-    setMotorColumns(L, current, m.supplyState(s), m.brakeTorque(s), ts);
-  }
-  if (L.has(Column::reducer_loss_torque)) L.set(ts, Column::reducer_loss_torque, motor_force_->reducerLossTorque(s));
-  if (L.has(Column::tooth_contact))
-    L.set(ts, Column::tooth_contact,
-          static_cast<double>(toothContact(coupling_force_->law(), coupling_force_->twist(s))));
-  for (int k = 0; torsion_force_ && k < torsion_force_->segmentCount(); ++k)
-    L.set(ts, Column::shaft_torque, k + 1, torsion_force_->torque(s, k));
-}
-
-bool MultibodyModel::recordsReducerLosses() const {
-  return motor_force_ && motor_force_->reducer().model == ReducerLossModel::PowerFlow;
-}
-
-void MultibodyModel::setCartReactions(int cart, const CartReactions& r, std::vector<double>& re) const {
-  const ColumnLayout& L = reactions_layout_;
-  L.set(re, Column::N_front, cart, r.N_front);
-  L.set(re, Column::N_rear, cart, r.N_rear);
-  L.set(re, Column::F_rod, cart, r.F_rod);
-  L.set(re, Column::friction, cart, r.friction);
-  L.set(re, Column::crankpin_x, cart, r.crankpin_x);
-  L.set(re, Column::crankpin_y, cart, r.crankpin_y);
-}
-
-void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>& re) const {
-  const double torque_coupling = couplingTorque(s);
-  SimTK::Vector_<SimTK::SpatialVec> reactions;
-  matter_.calcMobilizerReactionForces(s, reactions);
-  const SimTK::Vector_<SimTK::SpatialVec>& applied = system_.getRigidBodyForces(s, SimTK::Stage::Dynamics);
-  const double g = scene_.loads.gravity;
-  const ColumnLayout& L = reactions_layout_;
-  L.reset(re);
-  L.set(re, Column::t, s.getTime());
-  for (size_t j = 0; j < carts_.size(); ++j) {
-    const int cart = int(j) + 1;
-    const CartRig& c = carts_[j];
-    const SimTK::MobilizedBodyIndex ic = c.cart.getMobilizedBodyIndex();
-    const GuideNormals n = solveGuideNormals(reactions[ic], c.side, scene_.carts.geometry);
-    const double friction = friction_force_ ? friction_force_->frictionForce(s, int(j)) : 0.0;
-    if (!c.cam.isEmptyHandle()) {
-      // Cam drive: the coupler acts on the mobilities [crank, cart] (in that order); Simbody
-      // returns constraint forces with the sign opposite to applied forces. The cam force on
-      // the cart is horizontal; "F_rod" > 0 pulls the cart towards the shaft, like a rod in
-      // tension, and the pusher puts the opposite force on the cam.
-      const SimTK::Vector f = c.cam.getConstrainedMobilityForcesAsVector(s);
-      const double Fx_on_cart = -f[1];
-      setCartReactions(cart, {n.front, n.rear, -c.side * Fx_on_cart, friction, -Fx_on_cart, 0.0}, re);
-      continue;
-    }
-    // Force of the rod on the cart at B from the cart's free body: m·a = applied + guide + rod.
-    const double m_cart = c.cart.getBodyMass(s);
-    const SimTK::Vec3 a_cart(c.cart.getOneUDot(s, 0), 0, 0);
-    const SimTK::Vec3 F_rod_on_cart = m_cart * a_cart - applied[ic][1] - reactions[ic][1];
-    // Pin A in ground, and the unit vector B -> A along the rod: tension pulls the cart to A.
-    const SimTK::Vec3 p_A = c.crank.findStationLocationInGround(s, c.p_CrankPin);
-    const SimTK::Vec3 p_B = c.cart.getBodyOriginLocation(s);
-    const SimTK::UnitVec3 e_BA(p_A - p_B);
-    // Force of the rod on the crank pin: rod free body m·a_S = F_A + (-F_B) + m·g.
-    SimTK::Vec3 F_rod_on_crank = -F_rod_on_cart;
-    if (!c.rod.isEmptyHandle()) {
-      const SimTK::Vec3 a_S = c.rod.findStationAccelerationInGround(s, SimTK::Vec3(0.5 * c.rod_length, 0, 0));
-      F_rod_on_crank += -c.rod_mass * a_S + c.rod_mass * SimTK::Vec3(0, -g, 0);
-    }
-    setCartReactions(cart, {n.front, n.rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]},
-                     re);
-  }
-  const SimTK::Vec3 bearing = reactions[crank_.getMobilizedBodyIndex()][1];
-  L.set(re, Column::bearing_x, bearing[0]);
-  L.set(re, Column::bearing_y, bearing[1]);
-  L.set(re, Column::coupling_torque, torque_coupling);
 }
 
 }  // namespace rollerdyn

@@ -192,8 +192,17 @@ class MultibodyModel {
   // One body per throw and the springs between them (physics/TorsionalChain.h); J_motor_side
   // joins the drive-end throw (rigid coupling).
   void buildTorsionalChain(double J_motor_side);
+  // Per cart: its slider and what links it to the crankshaft (rod constraint, rod body, or cam).
   void buildCarts();
+  void driveCartByCam(CartRig& rig, int cart);
+  // A distributed rod: its own body on the crank pin, its end held on the cart's axis through B.
+  void linkCartByRodBody(CartRig& rig);
+  // Motor, coupling, gravity, roller loads, guide friction, then the energy meter, in that order
+  // (addAppliedForces sums them in it).
   void buildForces();
+  void addMotorForce();
+  // Hands f to the force subsystem, in applied_order_ and the inventory under inventory_name.
+  void addForceElement(SimTK::Force::Custom::Implementation* f, const std::string& inventory_name);
   void fillInventory();
   // The columns this model writes, from the force elements it built.
   void layOutColumns();

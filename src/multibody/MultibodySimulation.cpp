@@ -178,106 +178,150 @@ class OutputRows {
   SupplyPhase phase_;
 };
 
-// Continues from the state switched at an event at t_event: the integrator starts afresh there
-// (its counts kept), the step's extrema after the event, which belonged to the old supply, are
-// dropped. False, with the run's status set, when the integrator cannot start there.
-bool restartAtEvent(SimTK::Integrator& integ, const MultibodyModel& model, const SimTK::State& switched,
-                    double t_event, IntegratorCounts& counts, CrankSpeedExtremaFinder& extrema, RunRecorder& recorder) {
-  counts.keep(integ);
-  try {
-    integ.initialize(switched);
-  } catch (const std::exception& ex) {
-    recorder.fail(statusAt("integration failed", t_event) + ": " + ex.what());
-    return false;
-  }
-  const SimTK::State& s = integ.getState();
-  model.system().realize(s, SimTK::Stage::Acceleration);
-  extrema.dropAfter(t_event);
-  extrema.restart(t_event, model.crankSpeed(s), model.crankAcceleration(s));
-  return true;
-}
-
-// The constrained formulation: Simbody's integrator on the full coordinates with the loop
-// constraints, rows interpolated within its steps.
-// Output rows come from our own cubic Hermite interpolation between the integrator's steps,
-// into one State we keep (`sample`), rather than from Simbody's report times: Simbody copies
-// the whole State (every cache entry, ~640k instructions here) for each interpolated report,
-// which cost ~10 % of a balanced-4cart run. The interpolant is the one Simbody uses
-// (third order, from y and ẏ at both ends of the step); the sample is then projected onto the
-// constraints like Simbody's reports, so rows satisfy them to the same tolerance.
-RunResult simulateConstrained(const MultibodyModel& model, const RunControl& control) {
-  const Scene& sc = model.scene();
+// The algebraic guide-friction law needs the guide reactions before the accelerations, which only
+// the minimal formulation has.
+void refuseAlgebraicFriction(const MultibodyModel& model) {
   if (model.hasGuideFriction() && !model.hasFrictionLagStates())
     throw std::invalid_argument(
         "multibody model: loads.guide_friction.normal_force = algebraic needs simulation.formulation = minimal "
         "(the constrained formulation knows the guide reactions only after Simbody's constrained solve); "
         "use loads.guide_friction.normal_force = lagged");
-  const SimTK::MultibodySystem& system = model.system();
+}
+
+// The stepping of a constrained run: Simbody's integrator to its next stop, the output rows inside
+// each step from the step's interpolant, a restart at each supply event.
+// Output rows come from our own cubic Hermite interpolation between the integrator's steps,
+// into one State we keep (`sample_`), rather than from Simbody's report times: Simbody copies
+// the whole State (every cache entry, ~640k instructions here) for each interpolated report,
+// which cost ~10 % of a balanced-4cart run. The interpolant is the one Simbody uses
+// (third order, from y and ẏ at both ends of the step); the sample is then projected onto the
+// constraints like Simbody's reports, so rows satisfy them to the same tolerance.
+class ConstrainedStepping {
+ public:
+  ConstrainedStepping(const MultibodyModel& model, SimTK::Integrator& integ, double constraint_tol, OutputRows& rows,
+                      RunRecorder& recorder)
+      : model_(model), integ_(integ), tol_(constraint_tol), rows_(rows), recorder_(recorder),
+        times_(outputTimes(model.scene().simulation)),  // the grid the reduced model uses
+        t_end_(model.scene().simulation.t_end), events_(model, t_end_, constraint_tol), sample_(integ.getState()) {}
+
+  // The first row, then steps until t_end or a stop.
+  void runToEnd() {
+    stop_ = !rows_.record(integ_.getState(), integ_.getTime());
+    last_row_ = &integ_.getState();
+    from_.at(integ_.getState());
+    extrema_.restart(from_.t, model_.crankSpeed(integ_.getState()), model_.crankAcceleration(integ_.getState()));
+    events_.arm(integ_.getState());
+    while (!stop_ && from_.t < t_end_ - 1e-12 && step()) {
+    }
+  }
+  const SimTK::State& lastRow() const { return *last_row_; }
+  // The crank speed's extrema inside the steps, on the rows' interpolant, up to the last row.
+  std::vector<CrankSpeedExtremum> extremaUpToLastRow() { return extrema_.takeUpTo(last_row_->getTime()); }
+  void writeCounts(RunStats& stats) const { counts_.write(integ_, stats); }
+
+ private:
+  // One step and the rows inside it; false when the run ends (the integrator failed, or cannot
+  // start again after an event).
+  bool step() {
+    try {
+      integ_.stepTo(t_end_, events_.stopTime());
+    } catch (const std::exception& ex) {
+      recorder_.fail(statusAt("integration failed", integ_.getTime()) + ": " + ex.what());
+      return false;
+    }
+    const SimTK::State& advanced = integ_.getState();
+    model_.system().realize(advanced, SimTK::Stage::Acceleration);  // the next step starts from this ẏ
+    double t_now = advanced.getTime();
+    extrema_.stepTo(advanced.getTime(), model_.crankSpeed(advanced), model_.crankAcceleration(advanced));
+    const bool event = events_.find(from_, advanced, switched_, t_now);
+    recordRowsInStep(advanced, t_now, event);
+    if (!event || stop_) {
+      from_.at(advanced);
+      return true;
+    }
+    return restartAtEvent(t_now);
+  }
+
+  // The output times up to t_now (before an event's time: rows there show the switched state).
+  void recordRowsInStep(const SimTK::State& advanced, double t_now, bool event) {
+    for (; !stop_ && k_ < times_.size() && times_[k_] <= t_now + 1e-12 && !(event && times_[k_] >= t_now - 1e-12);
+         ++k_) {
+      const double t_out = times_[k_];
+      const bool at_step = std::abs(t_out - t_now) <= 1e-12;
+      if (!at_step)
+        sampleWithinStep(model_.system(), from_.t, from_.y, from_.ydot, advanced, t_out, tol_, sample_);
+      const SimTK::State& s = at_step ? advanced : sample_;
+      last_row_ = &s;
+      stop_ = !rows_.record(s, t_out);
+    }
+  }
+
+  // Continues from the state switched at the event at t_event: the integrator starts afresh there
+  // (its counts kept), the step's extrema after the event, which belonged to the old supply, are
+  // dropped. False, with the run's status set, when the integrator cannot start there.
+  bool restartAtEvent(double t_event) {
+    events_.apply(switched_);
+    counts_.keep(integ_);
+    try {
+      integ_.initialize(switched_);
+    } catch (const std::exception& ex) {
+      recorder_.fail(statusAt("integration failed", t_event) + ": " + ex.what());
+      return false;
+    }
+    const SimTK::State& s = integ_.getState();
+    model_.system().realize(s, SimTK::Stage::Acceleration);
+    extrema_.dropAfter(t_event);
+    extrema_.restart(t_event, model_.crankSpeed(s), model_.crankAcceleration(s));
+    sample_ = integ_.getState();  // rows interpolated from now on carry the new supply phase
+    events_.arm(integ_.getState());
+    from_.at(integ_.getState());
+    return true;
+  }
+
+  const MultibodyModel& model_;
+  SimTK::Integrator& integ_;
+  double tol_;
+  OutputRows& rows_;
+  RunRecorder& recorder_;
+  const std::vector<double> times_;
+  const double t_end_;
+  SupplyEvents events_;
+  SimTK::State sample_;
+  SimTK::State switched_;  // the state at an event, switched
+  StepStart from_;
+  CrankSpeedExtremaFinder extrema_;
+  IntegratorCounts counts_;
+  const SimTK::State* last_row_ = nullptr;
+  std::size_t k_ = 1;
+  bool stop_ = false;
+};
+
+// The constrained formulation: Simbody's integrator on the full coordinates with the loop
+// constraints, rows interpolated within its steps (ConstrainedStepping).
+RunResult simulateConstrained(const MultibodyModel& model, const RunControl& control) {
+  refuseAlgebraicFriction(model);
+  const Scene& sc = model.scene();
   RunResult run = emptyRun(model);
   SimTK::State s0 = model.initialState();
   const EnergySnapshot e0 = model.energy(s0);
   const double constraint_tol = simbodyConstraintTolerance(sc, s0);
-  const std::vector<double> times = outputTimes(sc.simulation);  // the grid the reduced model uses
-  const double t_end = sc.simulation.t_end;
-  auto integ = makeIntegrator(sc.simulation.integrator, system, sc.simulation.accuracy, constraint_tol);
+  auto integ = makeIntegrator(sc.simulation.integrator, model.system(), sc.simulation.accuracy, constraint_tol);
   integ->initialize(s0);
-  SupplyEvents events(model, t_end, constraint_tol);
   const MotorForce* motor = model.motorForce();
   RunRecorder recorder(sc, motor ? &motor->supply() : nullptr, model.options().prescribe_crank_speed, run, control);
   OutputRows rows(model, recorder, run.stats);
-
   integ->setReturnEveryInternalStep(true);
-  SimTK::State sample = integ->getState();
+  ConstrainedStepping stepping(model, *integ, constraint_tol, rows, recorder);
 
   const std::clock_t cpu0 = std::clock();
-  bool stop = !rows.record(integ->getState(), integ->getTime());
-  const SimTK::State* last_row = &integ->getState();
-  StepStart from;
-  from.at(integ->getState());
-  CrankSpeedExtremaFinder extrema;  // the crank speed's extrema inside the steps, on the rows' interpolant
-  extrema.restart(from.t, model.crankSpeed(integ->getState()), model.crankAcceleration(integ->getState()));
-  events.arm(integ->getState());
-  SimTK::State switched;  // the state at an event, switched
-  IntegratorCounts counts;
-  std::size_t k = 1;
-  while (!stop && from.t < t_end - 1e-12) {
-    try {
-      integ->stepTo(t_end, events.stopTime());
-    } catch (const std::exception& ex) {
-      recorder.fail(statusAt("integration failed", integ->getTime()) + ": " + ex.what());
-      break;
-    }
-    const SimTK::State& advanced = integ->getState();
-    system.realize(advanced, SimTK::Stage::Acceleration);  // the next step starts from this ẏ
-    double t_now = advanced.getTime();
-    extrema.stepTo(advanced.getTime(), model.crankSpeed(advanced), model.crankAcceleration(advanced));
-    const bool event = events.find(from, advanced, switched, t_now);
-    for (; !stop && k < times.size() && times[k] <= t_now + 1e-12 && !(event && times[k] >= t_now - 1e-12); ++k) {
-      const double t_out = times[k];
-      const bool at_step = std::abs(t_out - t_now) <= 1e-12;
-      if (!at_step) sampleWithinStep(system, from.t, from.y, from.ydot, advanced, t_out, constraint_tol, sample);
-      const SimTK::State& s = at_step ? advanced : sample;
-      last_row = &s;
-      stop = !rows.record(s, t_out);
-    }
-    if (!event || stop) {
-      from.at(advanced);
-      continue;
-    }
-    events.apply(switched);
-    if (!restartAtEvent(*integ, model, switched, t_now, counts, extrema, recorder)) break;
-    sample = integ->getState();  // rows interpolated from now on carry the new supply phase
-    events.arm(integ->getState());
-    from.at(integ->getState());
-  }
+  stepping.runToEnd();
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
-  run.crank_speed_extrema = extrema.takeUpTo(last_row->getTime());
-  counts.write(*integ, run.stats);
-
+  run.crank_speed_extrema = stepping.extremaUpToLastRow();
+  stepping.writeCounts(run.stats);
   // The audit ends at the last recorded row, where the tables end too (a run stopped early may
   // have integrated past it).
-  const SimTK::State& s1 = *last_row;
-  system.realize(s1, SimTK::Stage::Acceleration);
+  const SimTK::State& s1 = stepping.lastRow();
+  model.system().realize(s1, SimTK::Stage::Acceleration);
   run.energy = energyAuditBetween(e0, model.energy(s1));
   return run;
 }

@@ -17,6 +17,43 @@
 
 namespace rollerdyn {
 
+namespace {
+
+// One tolerance and one absolute_only flag per state; a Jacobian structure (Newton only) with one
+// entry per state and a finite diagonal wherever a column is known.
+void checkProblem(const OdeProblem& problem) {
+  const int n = int(problem.y0.size());
+  if (problem.atol.size() != n || int(problem.absolute_only.size()) != n)
+    throw std::invalid_argument("CvodeIntegrator: atol and absolute_only need one entry per state");
+  const JacobianStructure& js = problem.jacobian;
+  if (!js.given()) return;
+  if (!problem.newton)
+    throw std::invalid_argument("CvodeIntegrator: a Jacobian structure needs the Newton corrector");
+  if (int(js.difference_quotient.size()) != n || js.diagonal.size() != n)
+    throw std::invalid_argument("CvodeIntegrator: the Jacobian structure needs one entry per state (" +
+                                std::to_string(n) + ")");
+  for (int j = 0; j < n; ++j)
+    if (!js.difference_quotient[j] && !std::isfinite(js.diagonal(j)))
+      throw std::invalid_argument("CvodeIntegrator: known Jacobian column " + std::to_string(j) +
+                                  " has a non-finite diagonal");
+}
+
+// The method's highest order unless the problem asks for less (std::invalid_argument beyond it,
+// or for BDF without the Newton corrector).
+int checkedMaxOrder(const OdeProblem& problem) {
+  const int highest_order = problem.bdf ? 5 : 12;
+  const int max_order = problem.max_order == 0 ? highest_order : problem.max_order;
+  if (max_order < 1 || max_order > highest_order)
+    throw std::invalid_argument(std::string("CvodeIntegrator: max_order must be 1 ... ") +
+                                (problem.bdf ? "5 (BDF)" : "12 (Adams)") + ", got " +
+                                std::to_string(problem.max_order));
+  if (problem.bdf && !problem.newton)
+    throw std::invalid_argument("CvodeIntegrator: BDF needs the Newton corrector (newton = true)");
+  return max_order;
+}
+
+}  // namespace
+
 struct CvodeIntegrator::Impl {
   OdeProblem problem;
   SUNContext ctx = nullptr;
@@ -55,6 +92,51 @@ struct CvodeIntegrator::Impl {
     // A copy: the observer may call interpolate(), which writes the scratch vector.
     const Eigen::VectorXd yd = Eigen::Map<const Eigen::VectorXd>(NV_DATA_S(scratch), NV_LENGTH_S(scratch));
     problem.on_step(t_step, NV_DATA_S(y), yd.data(), true);
+  }
+  // The state vector at (t0, y0) and CVODE on it: Adams or BDF, our right-hand side, error
+  // handler and error weights. CV_SUCCESS or the first failing flag.
+  int createCvode() {
+    const int n = int(problem.y0.size());
+    if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
+    y = N_VNew_Serial(n, ctx);
+    useEigenVectorOps(y);  // before CVodeInit clones it (EigenSundials.h)
+    Eigen::Map<Eigen::VectorXd>(NV_DATA_S(y), n) = problem.y0;
+    y_out = problem.y0;
+    t = problem.t0;
+    cv = CVodeCreate(problem.bdf ? CV_BDF : CV_ADAMS, ctx);
+    int flag = CVodeInit(cv, rhs, problem.t0, y);
+    if (flag == CV_SUCCESS) flag = CVodeSetUserData(cv, this);
+    if (flag == CV_SUCCESS) flag = CVodeSetErrHandlerFn(cv, errHandler, this);
+    if (flag == CV_SUCCESS) flag = CVodeWFtolerances(cv, weights);
+    return flag;
+  }
+  // The corrector: Newton with our dense solver (and the structured Jacobian when the problem
+  // gives one), or fixed-point iteration. A failed flag passes through, its calls skipped.
+  int attachCorrector(int flag) {
+    const int n = int(problem.y0.size());
+    if (problem.newton) {
+      A = SUNDenseMatrix(n, n, ctx);
+      LS = makeEigenDenseSolver(n, ctx);
+      if (flag == CV_SUCCESS) flag = CVodeSetLinearSolver(cv, LS, A);
+      if (problem.jacobian.given()) {
+        ewt = N_VClone(y);
+        if (flag == CV_SUCCESS) flag = CVodeSetJacFn(cv, jacobian);
+      }
+    } else {
+      NLS = SUNNonlinSol_FixedPoint(y, 0, ctx);
+      if (flag == CV_SUCCESS) flag = CVodeSetNonlinearSolver(cv, NLS);
+    }
+    return flag;
+  }
+  // The limits: steps, order, stop time and largest step. A failed flag passes through.
+  int setLimits(int flag) {
+    if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(cv, 1000000);
+    const int max_order = checkedMaxOrder(problem);
+    if (flag == CV_SUCCESS) flag = CVodeSetMaxOrd(cv, max_order);
+    if (flag == CV_SUCCESS) flag = CVodeSetStopTime(cv, problem.stop_time);
+    stop_time = problem.stop_time;
+    if (flag == CV_SUCCESS && problem.max_step > 0) flag = CVodeSetMaxStep(cv, problem.max_step);
+    return flag;
   }
   ~Impl() {
     stepper.release();
@@ -171,57 +253,10 @@ struct CvodeIntegrator::Impl {
 CvodeIntegrator::CvodeIntegrator(const OdeProblem& problem) : impl_(new Impl) {
   Impl& m = *impl_;
   m.problem = problem;
-  const int n = int(problem.y0.size());
-  if (problem.atol.size() != n || int(problem.absolute_only.size()) != n)
-    throw std::invalid_argument("CvodeIntegrator: atol and absolute_only need one entry per state");
-  const JacobianStructure& js = problem.jacobian;
-  if (js.given()) {
-    if (!problem.newton)
-      throw std::invalid_argument("CvodeIntegrator: a Jacobian structure needs the Newton corrector");
-    if (int(js.difference_quotient.size()) != n || js.diagonal.size() != n)
-      throw std::invalid_argument("CvodeIntegrator: the Jacobian structure needs one entry per state (" +
-                                  std::to_string(n) + ")");
-    for (int j = 0; j < n; ++j)
-      if (!js.difference_quotient[j] && !std::isfinite(js.diagonal(j)))
-        throw std::invalid_argument("CvodeIntegrator: known Jacobian column " + std::to_string(j) +
-                                    " has a non-finite diagonal");
-  }
-  if (SUNContext_Create(nullptr, &m.ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
-  m.y = N_VNew_Serial(n, m.ctx);
-  useEigenVectorOps(m.y);  // before CVodeInit clones it (EigenSundials.h)
-  Eigen::Map<Eigen::VectorXd>(NV_DATA_S(m.y), n) = problem.y0;
-  m.y_out = problem.y0;
-  m.t = problem.t0;
-  m.cv = CVodeCreate(problem.bdf ? CV_BDF : CV_ADAMS, m.ctx);
-  int flag = CVodeInit(m.cv, Impl::rhs, problem.t0, m.y);
-  if (flag == CV_SUCCESS) flag = CVodeSetUserData(m.cv, &m);
-  if (flag == CV_SUCCESS) flag = CVodeSetErrHandlerFn(m.cv, Impl::errHandler, &m);
-  if (flag == CV_SUCCESS) flag = CVodeWFtolerances(m.cv, Impl::weights);
-  if (problem.newton) {
-    m.A = SUNDenseMatrix(n, n, m.ctx);
-    m.LS = makeEigenDenseSolver(n, m.ctx);
-    if (flag == CV_SUCCESS) flag = CVodeSetLinearSolver(m.cv, m.LS, m.A);
-    if (problem.jacobian.given()) {
-      m.ewt = N_VClone(m.y);
-      if (flag == CV_SUCCESS) flag = CVodeSetJacFn(m.cv, Impl::jacobian);
-    }
-  } else {
-    m.NLS = SUNNonlinSol_FixedPoint(m.y, 0, m.ctx);
-    if (flag == CV_SUCCESS) flag = CVodeSetNonlinearSolver(m.cv, m.NLS);
-  }
-  if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(m.cv, 1000000);
-  const int highest_order = problem.bdf ? 5 : 12;
-  const int max_order = problem.max_order == 0 ? highest_order : problem.max_order;
-  if (max_order < 1 || max_order > highest_order)
-    throw std::invalid_argument(std::string("CvodeIntegrator: max_order must be 1 ... ") +
-                                (problem.bdf ? "5 (BDF)" : "12 (Adams)") + ", got " +
-                                std::to_string(problem.max_order));
-  if (problem.bdf && !problem.newton)
-    throw std::invalid_argument("CvodeIntegrator: BDF needs the Newton corrector (newton = true)");
-  if (flag == CV_SUCCESS) flag = CVodeSetMaxOrd(m.cv, max_order);
-  if (flag == CV_SUCCESS) flag = CVodeSetStopTime(m.cv, problem.stop_time);
-  m.stop_time = problem.stop_time;
-  if (flag == CV_SUCCESS && problem.max_step > 0) flag = CVodeSetMaxStep(m.cv, problem.max_step);
+  checkProblem(problem);
+  int flag = m.createCvode();
+  flag = m.attachCorrector(flag);
+  flag = m.setLimits(flag);
   if (flag != CV_SUCCESS) throw std::runtime_error("CVODE setup failed: " + m.error);
   m.observeStart();
 }

@@ -123,57 +123,90 @@ void closeAudit(const ReducedModel& m, const Node& last, const SchemeWork& W, Ru
   if (m.checksFrictionWork()) res.friction_work_kinetostatic = W.friction_kinetostatic;
 }
 
+// The first node: the initial crank angle and speed at t = 0, and the energies there.
+Node startNode(const ReducedModel& m, RunResult& res) {
+  const Scene& s = m.scene();
+  Node node;
+  node.phi = s.initial.crank_angle;
+  node.w = std::max(s.initial.crank_speed, 0.0);  // the scheme only marches forward in φ
+  const Eigen::VectorXd y = node.state(m);
+  res.energy.kinetic_initial = m.kineticEnergy(y);
+  res.energy.potential_initial = m.potentialEnergy(y);
+  return node;
+}
+
+// The scheme's march in φ, node to node one step dφ apart (Loveikin and Pochka (2007) eq. (10),
+// (11)): the rows inside each step, the works, and the crank speed's extrema.
+class BaranovMarch {
+ public:
+  BaranovMarch(const ReducedModel& m, const Node& start, SchemeRows& rows, RunResult& res)
+      : m_(m), dphi_(m.scene().reduced.baranov_step), rows_(rows), res_(res), node_(start),
+        J_i_(m.reducedInertia(start.phi)) {}
+
+  // Steps until the end time, a stop rule, a failed friction loop or a stall.
+  void run() {
+    while (node_.t < rows_.tEnd() && step()) {
+    }
+  }
+  bool stalled() const { return stalled_; }
+  const Node& lastNode() const { return node_; }
+  const SchemeWork& work() const { return work_; }
+  std::vector<CrankSpeedExtremum> extremaUpTo(double t) { return extrema_.takeUpTo(t); }
+
+ private:
+  // One step from node_; false when the run ends in it.
+  bool step() {
+    const ModelEvaluation e = m_.evaluate(node_.state(m_));
+    ++res_.stats.realizations;
+    if (e.friction_loop.status != LoopStatus::Solved) {
+      rows_.recorder().fail(statusAt("the run stopped", node_.t) + ": the " + describeLoopFailure(e.friction_loop));
+      return false;
+    }
+    const double J_next = m_.reducedInertia(node_.phi + dphi_);
+    const double w = node_.w, w_next = nextSpeed(w, J_i_, J_next, e.motor_torque - e.load_torque, dphi_);
+    if (!(w_next > 0.0) || !std::isfinite(w_next)) {
+      stalled_ = true;  // the scheme cannot stop or reverse: the drive has stalled
+      return false;
+    }
+    const double t_next = node_.t + 2.0 * dphi_ / (w + w_next);  // Loveikin and Pochka (2007) eq. (10)
+    const double eps = (w_next - w) / (t_next - node_.t);         // Loveikin and Pochka (2007) eq. (11)
+    work_.addStep(m_, e, w, dphi_);
+    const bool go = rows_.emitUpTo(node_, t_next, node_.phi + dphi_, w_next, eps);
+    // The scheme's ω is linear within each step (eq. (10), (11)): its extrema lie on the nodes,
+    // where the slope changes sign.
+    if ((slope_before_ < 0.0 && w_next > w) || (slope_before_ > 0.0 && w_next < w)) extrema_.record(node_.t, w);
+    if (w_next != w) slope_before_ = w_next - w;
+    node_ = {node_.phi + dphi_, w_next, t_next};
+    J_i_ = J_next;
+    ++res_.stats.steps;
+    return go;  // false: a stop rule ended the run at a row inside this step
+  }
+
+  const ReducedModel& m_;
+  const double dphi_;
+  SchemeRows& rows_;
+  RunResult& res_;
+  Node node_;
+  double J_i_;
+  SchemeWork work_;
+  CrankSpeedExtremaFinder extrema_;
+  double slope_before_ = 0.0;
+  bool stalled_ = false;
+};
+
 }  // namespace
 
 RunResult runBaranov(const ReducedModel& m, RunResult res, const RunControl& control) {
   checkSchemeApplies(m);
-  const Scene& s = m.scene();
-  const double dphi = s.reduced.baranov_step;
   const std::clock_t c0 = std::clock();
-  Node node;
-  node.phi = s.initial.crank_angle;
-  node.w = std::max(s.initial.crank_speed, 0.0);  // the scheme only marches forward in φ
-  {
-    const Eigen::VectorXd y = node.state(m);
-    res.energy.kinetic_initial = m.kineticEnergy(y);
-    res.energy.potential_initial = m.potentialEnergy(y);
-  }
+  const Node start = startNode(m, res);
   SchemeRows rows(m, res, control);
-  SchemeWork work;
-  bool stalled = false;
-  double J_i = m.reducedInertia(node.phi);
-  // The scheme's ω is linear within each step (eq. (10), (11)): its extrema lie on the nodes,
-  // where the slope changes sign.
-  CrankSpeedExtremaFinder extrema;
-  double slope_before = 0.0;
-  while (node.t < rows.tEnd()) {
-    const ModelEvaluation e = m.evaluate(node.state(m));
-    ++res.stats.realizations;
-    if (e.friction_loop.status != LoopStatus::Solved) {
-      rows.recorder().fail(statusAt("the run stopped", node.t) + ": the " + describeLoopFailure(e.friction_loop));
-      break;
-    }
-    const double J_next = m.reducedInertia(node.phi + dphi);
-    const double w = node.w, w_next = nextSpeed(w, J_i, J_next, e.motor_torque - e.load_torque, dphi);
-    if (!(w_next > 0.0) || !std::isfinite(w_next)) {
-      stalled = true;  // the scheme cannot stop or reverse: the drive has stalled
-      break;
-    }
-    const double t_next = node.t + 2.0 * dphi / (w + w_next);  // Loveikin and Pochka (2007) eq. (10)
-    const double eps = (w_next - w) / (t_next - node.t);       // Loveikin and Pochka (2007) eq. (11)
-    work.addStep(m, e, w, dphi);
-    const bool go = rows.emitUpTo(node, t_next, node.phi + dphi, w_next, eps);
-    if ((slope_before < 0.0 && w_next > w) || (slope_before > 0.0 && w_next < w)) extrema.record(node.t, w);
-    if (w_next != w) slope_before = w_next - w;
-    node = {node.phi + dphi, w_next, t_next};
-    J_i = J_next;
-    ++res.stats.steps;
-    if (!go) break;  // a stop rule ended the run at a row inside this step
-  }
+  BaranovMarch march(m, start, rows, res);
+  march.run();
   res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
-  res.crank_speed_extrema = extrema.takeUpTo(res.timeseries.rows.empty() ? 0.0 : res.timeseries.rows.back()[0]);
-  if (stalled) rows.recorder().fail(StallDetector::statusAt(node.t));
-  closeAudit(m, node, work, res);
+  res.crank_speed_extrema = march.extremaUpTo(res.timeseries.rows.empty() ? 0.0 : res.timeseries.rows.back()[0]);
+  if (march.stalled()) rows.recorder().fail(StallDetector::statusAt(march.lastNode().t));
+  closeAudit(m, march.lastNode(), march.work(), res);
   return res;
 }
 

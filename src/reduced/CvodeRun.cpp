@@ -209,21 +209,12 @@ class ReducedOde {
   CvodeIntegrator integ_;  // last: built from the members above
 };
 
-}  // namespace
-
-RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& control) {
-  const Scene& s = m.scene();
-  const std::vector<double> times = outputTimes(s.simulation);
-  ReducedOde ode(m, times, res);
+// The rows at the output times: CVODE to each, the model evaluated there, the stop rules. Returns
+// the state of the last row, where the energy audit ends.
+Eigen::VectorXd recordOutputRows(const ReducedModel& m, ReducedOde& ode, const std::vector<double>& times,
+                                 RunRecorder& recorder, RunResult& res) {
   const SupplyPhase& phase = ode.phase();
-
-  const Eigen::VectorXd y0 = m.initialState();
-  res.energy.kinetic_initial = m.kineticEnergy(y0);
-  res.energy.potential_initial = m.potentialEnergy(y0);
-
-  RunRecorder recorder(s, &m.supply(), false, res, control);  // the stop rules both models share
   std::vector<double> cart_speeds(m.cartCount());
-  const std::clock_t c0 = std::clock();
   res.timeseries.rows.reserve(times.size());
   res.reactions.rows.reserve(times.size());
   ModelEvaluation e;  // reused for every output row (keeps its carts' storage)
@@ -246,14 +237,12 @@ RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& contr
     }
     if (!recordRows(m, t, e, phase, recorder, res, cart_speeds)) break;
   }
-  res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
-  res.crank_speed_extrema =
-      ode.extrema().takeUpTo(res.timeseries.rows.empty() ? times.front() : res.timeseries.rows.back()[0]);
+  return y_last;
+}
 
-  res.stats.steps = ode.integrator().steps();
-  res.stats.error_test_failures = ode.integrator().errorTestFailures();
-  res.stats.realizations = ode.evaluations();  // includes the difference-quotient Jacobian calls
-
+// The energy audit's closing terms from the state of the last row: the works integrated with the
+// motion, and the kinetic and potential energy there.
+void closeEnergyAudit(const ReducedModel& m, const Eigen::VectorXd& y_last, RunResult& res) {
   res.energy.motor_work = y_last(m.iMotorWork());
   res.energy.damping_dissipation = m.rigid() ? 0.0 : y_last(m.iDampingWork());
   res.energy.friction_dissipation = y_last(m.iFrictionWork());
@@ -263,6 +252,30 @@ RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& contr
   res.energy.kinetic_final = m.kineticEnergy(y_last);
   res.energy.potential_final = m.potentialEnergy(y_last);
   if (m.checksFrictionWork()) res.friction_work_kinetostatic = y_last(m.iFrictionWorkKinetostatic());
+}
+
+}  // namespace
+
+RunResult runCvode(const ReducedModel& m, RunResult res, const RunControl& control) {
+  const Scene& s = m.scene();
+  const std::vector<double> times = outputTimes(s.simulation);
+  ReducedOde ode(m, times, res);
+
+  const Eigen::VectorXd y0 = m.initialState();
+  res.energy.kinetic_initial = m.kineticEnergy(y0);
+  res.energy.potential_initial = m.potentialEnergy(y0);
+
+  RunRecorder recorder(s, &m.supply(), false, res, control);  // the stop rules both models share
+  const std::clock_t c0 = std::clock();
+  const Eigen::VectorXd y_last = recordOutputRows(m, ode, times, recorder, res);
+  res.stats.cpu_seconds = double(std::clock() - c0) / CLOCKS_PER_SEC;
+  res.crank_speed_extrema =
+      ode.extrema().takeUpTo(res.timeseries.rows.empty() ? times.front() : res.timeseries.rows.back()[0]);
+
+  res.stats.steps = ode.integrator().steps();
+  res.stats.error_test_failures = ode.integrator().errorTestFailures();
+  res.stats.realizations = ode.evaluations();  // includes the difference-quotient Jacobian calls
+  closeEnergyAudit(m, y_last, res);
   return res;
 }
 
