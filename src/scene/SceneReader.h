@@ -208,7 +208,7 @@ void readMotor(const Reader& in, KlossMotor& motor, InductionMotor& induction);
 CrankshaftLayout readCrankshaft(const Reader& in, int cart_count);
 // Refuses a torsional chain (crankshaft.torsional_stiffness) where it cannot be built.
 void checkTorsionalChain(const Reader& in, const Scene& s);
-// sizing.reducer.* and sizing.motor.* (SignOffSceneParser.cpp).
-void readGearAndDutyRatings(const Reader& in, SizingInputs& z);
+// sizing.*, with the ratings that could contradict each other refused (SignOffSceneParser.cpp).
+SizingInputs readSizing(const Reader& in);
 
 }  // namespace rollerdyn::scene_detail
