@@ -260,6 +260,17 @@ int finishSweep(const SweepOptions& o, SweepResult& r, const std::string& out_di
   return reportPoints(o, r, out_dir, files.size());
 }
 
+// Rank 0 before any point: the output folder (a bad --out fails now), the swept values'
+// plausibility, a resume without saved rows, the header.
+void prepareSweep(const SweepOptions& o, const Scene& base, const std::string& out_dir, int ranks) {
+  prepareOutputDir(out_dir);
+  warnImplausibleValues(o);
+  const std::size_t total = pointCount(o);
+  if (o.resume && !std::filesystem::exists(o.progress_path))
+    std::cout << "--resume: no saved rows in " << o.progress_path << ", starting afresh\n";
+  printSweepHeader(o, base.name, total, ranks);
+}
+
 int runSweepCommand(const SweepArgs& a) {
   SweepOptions o = sweepOptions(a);
   const SweepRanks ranks = joinRanks(o);
@@ -268,13 +279,8 @@ int runSweepCommand(const SweepArgs& a) {
   // first point sees it: a key the parameters set counts as given).
   const Scene base = parseSceneFile(o.scene_path, firstPointOverrides(o));
   const std::string out_dir = sweepOutDir(a, base, o);
-  if (rank0) prepareOutputDir(out_dir);  // before any point: a bad --out fails now
-  if (rank0) warnImplausibleValues(o);
-  const std::size_t total = pointCount(o);
   o.progress_path = out_dir + "/sweep.progress.jsonl";
-  if (rank0 && o.resume && !std::filesystem::exists(o.progress_path))
-    std::cout << "--resume: no saved rows in " << o.progress_path << ", starting afresh\n";
-  if (rank0) printSweepHeader(o, base.name, total, ranks.size);
+  if (rank0) prepareSweep(o, base, out_dir, ranks.size);
   o.on_point = [&o](const SweepPoint& p, std::size_t done, std::size_t n) {
     std::cout << lineFor(o, p, done, n) << std::endl;
   };
