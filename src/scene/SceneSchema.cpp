@@ -15,31 +15,32 @@ namespace {
 
 using namespace schema_builders;
 
+// The sections in the order of the reference (docs/scene-reference.md is generated from it).
+using SchemaSection = std::vector<KeySpec> (*)();
+const SchemaSection kSchemaSections[] = {
+    runSchemaKeys,
+    initialStateSchemaKeys,
+    crankSchemaKeys,
+    crankshaftSchemaKeys,
+    rodSchemaKeys,
+    driveSchemaKeys,
+    cartSchemaKeys,
+    motorSchemaKeys,
+    motorCircuitSchemaKeys,
+    motorCatalogueSchemaKeys,
+    motorSwitchingSchemaKeys,
+    reducerSchemaKeys,
+    couplingSchemaKeys,
+    flywheelSchemaKeys,
+    loadSchemaKeys,
+    sizingSchemaKeys,
+    signOffSchemaKeys,
+    reducedModelSchemaKeys,
+};
+
 std::vector<KeySpec> buildSchema() {
-  // The sections in the order of the reference (docs/scene-reference.md is generated from it).
-  using Section = std::vector<KeySpec> (*)();
-  const Section sections[] = {
-      runSchemaKeys,
-      initialStateSchemaKeys,
-      crankSchemaKeys,
-      crankshaftSchemaKeys,
-      rodSchemaKeys,
-      driveSchemaKeys,
-      cartSchemaKeys,
-      motorSchemaKeys,
-      motorCircuitSchemaKeys,
-      motorCatalogueSchemaKeys,
-      motorSwitchingSchemaKeys,
-      reducerSchemaKeys,
-      couplingSchemaKeys,
-      flywheelSchemaKeys,
-      loadSchemaKeys,
-      sizingSchemaKeys,
-      signOffSchemaKeys,
-      reducedModelSchemaKeys,
-  };
   std::vector<KeySpec> keys;
-  for (Section section : sections) {
+  for (SchemaSection section : kSchemaSections) {
     std::vector<KeySpec> part = section();
     keys.insert(keys.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
   }
