@@ -336,6 +336,17 @@ void addSizing(json& j, const Scene& scene, const RunResult& run, const RunReadi
 
 }  // namespace
 
+// The run's status, amended by the verdicts, and the values written as null (last: every value
+// written before has been through num).
+void addStatus(json& j, const Scene& scene, const RunResult& run, const RunReading& r, const StartUp* start_up,
+               const StartLoad* start_load, FiniteWriter& num) {
+  std::string status = amendedStatus(j, scene, run, r.ss, r.m, r.crank_motion, start_up, start_load, num);
+  if (!num.non_finite.empty())
+    status += "; non-finite values written as null: " + joined(num.non_finite);
+  j["status"] = status;
+  j["non_finite"] = num.non_finite;
+}
+
 json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* start_load) {
   const RunReading r = readRun(scene, run);
   FiniteWriter num;
@@ -358,11 +369,7 @@ json makeSummary(const Scene& scene, const RunResult& run, const StartLoad* star
   j["not_meaningful"] = not_meaningful;
   j["stall"] = nullptr;
   j["start_up"] = start_up ? startUpJson(*start_up) : nullptr;
-  std::string status = amendedStatus(j, scene, run, r.ss, r.m, r.crank_motion, start_up.get(), start_load, num);
-  if (!num.non_finite.empty())
-    status += "; non-finite values written as null: " + joined(num.non_finite);
-  j["status"] = status;
-  j["non_finite"] = num.non_finite;
+  addStatus(j, scene, run, r, start_up.get(), start_load, num);
   return j;
 }
 
