@@ -147,6 +147,25 @@ void addSpectrum(const RunResult& run, int spectrum_revolutions, GrowthMeasureme
   g.whole_order_share = g.spectrum.whole_order_share[1];
 }
 
+// 1. The steady motion and the angle where its twist rate changes sign; 2. the orbit from the
+// section where the twist rate is zero, rebranched by the frozen mean. False, with g.failure, when
+// there is none.
+bool orbitAtZeroTwistRateSection(const Scene& scene, SteadyMotion& mb, double& phi_b, GrowthMeasurement& g) {
+  const SteadyMotion m = orbitFrom(scene, scene.initial.crank_angle, 360);
+  double phi_a = NAN;
+  if (!m.found || !twistRateSignChange(m, phi_a, phi_b)) {
+    g.failure = !m.found ? m.failure : "the twist rate of the steady motion never changes sign";
+    return false;
+  }
+  mb = orbitAtZeroTwistRate(scene, phi_a, phi_b);
+  if (!mb.found) {
+    g.failure = mb.failure;
+    return false;
+  }
+  rebranchByFrozenMean(scene, m, mb);
+  return true;
+}
+
 }  // namespace
 
 GrowthMeasurement measureGrowth(const Scene& scene, int R, int spectrum_revolutions) {
@@ -155,20 +174,9 @@ GrowthMeasurement measureGrowth(const Scene& scene, int R, int spectrum_revoluti
     g.failure = "needs an elastic coupling";
     return g;
   }
-  // 1. The steady motion and the angle where its twist rate changes sign.
-  const SteadyMotion m = orbitFrom(scene, scene.initial.crank_angle, 360);
-  double phi_a = NAN, phi_b = NAN;
-  if (!m.found || !twistRateSignChange(m, phi_a, phi_b)) {
-    g.failure = !m.found ? m.failure : "the twist rate of the steady motion never changes sign";
-    return g;
-  }
-  // 2. The orbit from the section where the twist rate is zero.
-  SteadyMotion mb = orbitAtZeroTwistRate(scene, phi_a, phi_b);
-  if (!mb.found) {
-    g.failure = mb.failure;
-    return g;
-  }
-  rebranchByFrozenMean(scene, m, mb);
+  SteadyMotion mb;
+  double phi_b = NAN;
+  if (!orbitAtZeroTwistRateSection(scene, mb, phi_b, g)) return g;
   g.start_angle = phi_b;
   g.predicted_modulus = mb.verdict.max_modulus;
   g.predicted_order = mb.verdict.torsional_frequency / mb.omega_mean;
