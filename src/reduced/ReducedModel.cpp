@@ -272,15 +272,33 @@ void ReducedModel::evaluate(const double* y, ModelEvaluation& e, bool keep_carts
 
 bool ReducedModel::derivatives(const double* y, double* d) const { return derivatives(0.0, initial_phase_, y, d); }
 
-void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y, ModelEvaluation& e,
-                            bool keep_carts) const {
-  e.phi_crank = y[iPhi()];
-  e.omega_crank = y[iOmega()];
-  e.twist = rigid_ ? 0.0 : y[iTwist()];
-  e.twist_rate = rigid_ ? 0.0 : y[iTwistRate()];
+namespace {
+
+// The state's crank angle and speed, the coupling's twist and its rate (none in a rigid drive),
+// the motor's speed; the evaluation's friction results reset.
+void readState(const ReducedModel& m, const double* y, ModelEvaluation& e) {
+  e.phi_crank = y[m.iPhi()];
+  e.omega_crank = y[m.iOmega()];
+  e.twist = m.rigid() ? 0.0 : y[m.iTwist()];
+  e.twist_rate = m.rigid() ? 0.0 : y[m.iTwistRate()];
   e.omega_motor = e.omega_crank + e.twist_rate;
   e.friction_loop = GuideLoopResult{};
   e.friction_power_kinetostatic = 0.0;
+}
+
+// The powers of the motor, the brake (both at the motor's speed), the guide friction and the load.
+void recordPowers(double P_friction, double P_load, ModelEvaluation& e) {
+  e.motor_power = e.motor_torque * e.omega_motor;
+  e.brake_power = -e.brake_torque * e.omega_motor;
+  e.friction_power = P_friction;
+  e.load_power = P_load;
+}
+
+}  // namespace
+
+void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y, ModelEvaluation& e,
+                            bool keep_carts) const {
+  readState(*this, y, e);
   const double phi = e.phi_crank, w2 = e.omega_crank;
   const bool friction = scene_.hasGuideFriction();
 
@@ -291,7 +309,6 @@ void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y,
   const CartPass& pass = cartPass(phi, w2);
   const double J = pass.J, dJ = pass.dJ;
   double M = pass.M, P_friction = pass.P_friction;
-  const double P_load = pass.P_load;
   e.friction_loop = pass.locked;
   e.carts.clear();  // keeps its capacity
   if (keep_carts && !kinetostatic_) e.carts.insert(e.carts.end(), pass.carts.begin(), pass.carts.end());
@@ -306,10 +323,7 @@ void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y,
   if (kinetostatic_ && friction) solveFrictionLoop(pass, J_eq, drive, e, M, P_friction);
   e.load_torque = M;
   drivetrainAccelerations(M_drive, drive, coupling, e);
-  e.motor_power = e.motor_torque * e.omega_motor;
-  e.brake_power = -e.brake_torque * e.omega_motor;
-  e.friction_power = P_friction;
-  e.load_power = P_load;
+  recordPowers(P_friction, pass.P_load, e);
   if (kinetostatic_ && keep_carts) kinetostaticCarts(pass, e);
   if (checksFrictionWork()) e.friction_power_kinetostatic = kinetostaticFrictionPower(pass, e);
 }
