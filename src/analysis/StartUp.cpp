@@ -458,27 +458,6 @@ void withdrawStartAnswers(const Scene& sc, StartUp& r) {
   r.current_peak = r.current_rms = r.current_i2t = r.rotor_energy_loss = kNaN;
 }
 
-
-// What the start is: its method, the law and whether the supply switches.
-void describeStart(const Scene& sc, const MotorLaw& law, const Supply& supply, StartUp& r) {
-  r.applicable = true;
-  r.supply_switches = !supply.constant();
-  r.method = methodWords(sc.motor_start.method);
-  r.motor_law = law.description();
-  r.model_word = toString(sc.induction.model);
-}
-
-// The start's peaks against the steady window's: torques, joints (the reactions table shares the
-// timeseries' output grid), the stator current, the rotor's energy loss.
-void addStartPeaks(const Scene& sc, const RunResult& run, const std::vector<double>& t, RowSpan start,
-                   const SteadyWindow& window, StartUp& r) {
-  const Table& ts = run.timeseries;
-  addTorquePeaks(ts, start, window.rows, r);
-  if (run.reactions.rows.size() == ts.rows.size()) addStartJointPeaks(run.reactions, start, window.rows, r);
-  addStatorCurrent(ts, t, start, window, r);
-  addRotorLoss(sc, ts, t, start, r);
-}
-
 }  // namespace
 
 StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* law, const StartLoad* load,
@@ -490,11 +469,20 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   const std::vector<double> t = ts.column("t"), w = ts.column("omega_crank");
   r.t_on = sc.motor_start.t_on;
   if (r.t_on > t.back()) return r;  // switched on after the end of the run
-  describeStart(sc, *law, supply, r);
+  r.applicable = true;
+  r.supply_switches = !supply.constant();
+  r.method = methodWords(sc.motor_start.method);
+  r.motor_law = law->description();
+  r.model_word = toString(sc.induction.model);
   addTorquesAtStandstill(sc, *law, supply, load, r);
   const SteadyWindow window = findSteadyWindow(sc, run, t, w, r);
   const bool turning = judgeRunUp(sc, motion, t, w, window, r);
-  addStartPeaks(sc, run, t, findStartRows(t, window, r), window, r);
+  const RowSpan start = findStartRows(t, window, r);
+  addTorquePeaks(ts, start, window.rows, r);
+  // The joints (the reactions table shares the timeseries' output grid).
+  if (run.reactions.rows.size() == ts.rows.size()) addStartJointPeaks(run.reactions, start, window.rows, r);
+  addStatorCurrent(ts, t, start, window, r);
+  addRotorLoss(sc, ts, t, start, r);
   addStopping(sc, ts, r);
   judgeStart(sc, run, turning, changeoverMissed(sc, ts, r), r);
   r.from_rest = !(r.t_on <= 0 && sc.initial.crank_speed != 0);
