@@ -104,6 +104,20 @@ inline std::vector<double> alongFold(const std::vector<double>& y, const std::ve
   return out;
 }
 
+// The rows of the steady window with their crank angle folded to [0, 2π): one curve per
+// revolution, a NaN between revolutions.
+struct FoldedWindow {
+  std::vector<size_t> rows;
+  std::vector<long> fold;
+  std::vector<double> theta;
+
+  FoldedWindow(const std::vector<double>& t, const std::vector<double>& phi, const TimeWindow& window)
+      : rows(windowRows(t, window)), theta(foldedAngle(pick(phi, rows), &fold)) {}
+
+  // A column of the same rows along the folded angle.
+  std::vector<double> along(const std::vector<double>& y) const { return alongFold(pick(y, rows), fold); }
+};
+
 inline const char* const kAnglePreamble =
     "set xrange [0:2*pi]\n"
     "set xtics ('0' 0, 'π/2' pi/2, 'π' pi, '3π/2' 3*pi/2, '2π' 2*pi)";

@@ -280,15 +280,13 @@ struct MotorPlanner {
         std::move(a));
   }
 
-  // theta: the steady window's crank angle folded per revolution (fold: the revolution of each row).
-  void quantityVsAngle(const MotorQuantity& q, const std::vector<double>& theta, const std::vector<long>& fold,
-                       const std::vector<size_t>& rows) {
+  void quantityVsAngle(const MotorQuantity& q, const FoldedWindow& folded) {
     PlotSpec b;
     b.title = title(std::string(q.what) + " against crank angle (" + windowText(window) + ")");
     b.xlabel = kAngleLabel;
     b.ylabel = q.ylabel;
     b.preamble = std::string(kAnglePreamble) + "\nset key off\n" + q.lines + yRangeWithLevel(q.y, q.level);
-    PlotSeries s = series("", theta, alongFold(pick(q.y, rows), fold), kBlue, 1.2);
+    PlotSeries s = series("", folded.theta, folded.along(q.y), kBlue, 1.2);
     s.break_at_nonfinite = true;
     b.series.push_back(std::move(s));
     add(std::string(q.stem) + "_vs_angle",
@@ -304,12 +302,10 @@ struct MotorPlanner {
       return;
     }
     const std::vector<double> phi = col(out.timeseries, "phi_crank");
-    const std::vector<size_t> rows = windowRows(t, window);
-    std::vector<long> fold;
-    const std::vector<double> theta = phi.empty() ? std::vector<double>{} : foldedAngle(pick(phi, rows), &fold);
+    const FoldedWindow folded(t, phi, window);
     for (const MotorQuantity& q : torqueAndPowerQuantities(motorMarks(*scene), w, m)) {
       quantityVsTime(q, t);
-      if (!theta.empty()) quantityVsAngle(q, theta, fold, rows);
+      if (!phi.empty() && !folded.theta.empty()) quantityVsAngle(q, folded);
     }
   }
 };

@@ -36,20 +36,6 @@ int cartsWith(const Table& table, const std::string& prefix) {
   return n;
 }
 
-// The rows of the steady window with their crank angle folded to [0, 2π): one curve per
-// revolution, a NaN between revolutions.
-struct FoldedWindow {
-  std::vector<size_t> rows;
-  std::vector<long> fold;
-  std::vector<double> theta;
-
-  FoldedWindow(const std::vector<double>& t, const std::vector<double>& phi, const TimeWindow& window)
-      : rows(windowRows(t, window)), theta(foldedAngle(pick(phi, rows), &fold)) {}
-
-  // A column of the same rows along the folded angle.
-  std::vector<double> along(const std::vector<double>& y) const { return alongFold(pick(y, rows), fold); }
-};
-
 // A crank quantity drawn against the angle and against time.
 struct CrankQuantity {
   const char* column;
