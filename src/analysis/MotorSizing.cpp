@@ -20,21 +20,13 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The checks read the motor the run simulated: a catalogue law (circuit, Park machine) has its
-// own breakdown torque (the largest of its steady curve) and its catalogue's rated point; the
-// Kloss keys belong to the Kloss laws (the trial's circuit run with motor.breakdown_torque = 700
-// was checked against 700 N·m while its motor broke down at 517).
-bool runsCatalogueLaw(const Scene& sc) {
-  return isMachineLaw(sc.induction.model);
-}
-
 // The nominal slip s_n = 1 - ω_n/ω0; NaN where the nominal speed is not known.
 double nominalSlip(const Scene& sc) {
   const SizingInputs& z = sc.sizing;
   const MotorCatalogue& cat = sc.induction.catalogue;
   const double omega_nominal = z.motor_omega_nominal > 0                           ? z.motor_omega_nominal
-                               : runsCatalogueLaw(sc) && cat.omega_nominal > 0 ? cat.omega_nominal
-                                                                                   : 0.0;
+                               : isMachineLaw(sc.induction.model) && cat.omega_nominal > 0 ? cat.omega_nominal
+                                                                                               : 0.0;
   return omega_nominal > 0 ? 1.0 - omega_nominal / sc.motor.omega_sync : kNaN;
 }
 
@@ -55,9 +47,13 @@ double generatingBreakdownTorque(const MotorLaw& law, double w0) {
 
 // The motor's ratings the checks read: breakdown torques (motoring, generating), the nominal
 // torque and where it comes from, and the catalogue's M_kr where the Kloss key contradicts it.
+// The checks read the motor the run simulated: a catalogue law (circuit, Park machine) has its
+// own breakdown torque (the largest of its steady curve) and its catalogue's rated point; the
+// Kloss keys belong to the Kloss laws (the trial's circuit run with motor.breakdown_torque = 700
+// was checked against 700 N·m while its motor broke down at 517).
 void addMotorRatings(const Scene& sc, MotorSizing& m) {
   const MotorCatalogue& cat = sc.induction.catalogue;
-  const bool catalogue_law = runsCatalogueLaw(sc);
+  const bool catalogue_law = isMachineLaw(sc.induction.model);
   m.breakdown_torque = m.breakdown_torque_generating = sc.motor.breakdown_torque;
   if (catalogue_law) try {
       const std::shared_ptr<const MotorLaw> law = sharedMotorLaw(sc);
