@@ -124,7 +124,7 @@ std::string whyNotTheKlossLaw(const std::string& key, const Scene& sc) {
   // f_n: the speed of a Kloss law is motor.omega_sync; f_n only turns a converter's frequencies
   // into ratios and gives the dynamic Kloss law its default T_e = 1/(2π·f_n·s_kr).
   if (key == "motor.frequency" && sc.motor_start.method != StartMethod::FrequencyConverter &&
-      !(sc.induction.model == MotorModel::KlossDynamic && !(sc.induction.torque_time_constant > 0)))
+      (sc.induction.model != MotorModel::KlossDynamic || sc.induction.torque_time_constant > 0))
     return "a Kloss law's speed is motor.omega_sync; f_n only scales a frequency converter's frequencies and "
            "sets the dynamic Kloss law's default T_e = 1/(2π·f_n·s_kr)";
   if (isCurrentData(key))
