@@ -2,7 +2,21 @@
 
 #include <stdexcept>
 
+#include "scene/SchemaSections.h"
+
 namespace rollerdyn {
+
+namespace {
+// T_e of the dynamic Kloss characteristic; 0 in the Scene stands for its default 1/(ω1·s_kr),
+// which MotorLawFactory.cpp computes.
+KeySpec torqueTimeConstantKey() {
+  using namespace schema_builders;
+  return number("motor.torque_time_constant", "s", Presence::Conditional, positive(), 0.0,
+                "T_e of the dynamic Kloss characteristic T_e·dM/dt + M = M_static")
+      .from("Klyuchev (1985)")
+      .when("1/(2π·f_n·s_kr)");
+}
+}  // namespace
 
 const std::vector<MotorModelInfo>& motorModelTable() {
   static const std::vector<MotorModelInfo> table = {
@@ -14,7 +28,8 @@ const std::vector<MotorModelInfo>& motorModelTable() {
       {MotorModel::KlossDynamic, "kloss_dynamic", "the Kloss torque lagging by T_e", "Klyuchev (1985)",
        "dynamic Kloss characteristic", true, false,
        "The dynamic Kloss characteristic shows the electromagnetic lag of the torque but not the supply-frequency "
-       "oscillation after switching on, and its starting torque is Kloss's: "},
+       "oscillation after switching on, and its starting torque is Kloss's: ",
+       {{torqueTimeConstantKey, &InductionMotor::torque_time_constant}}},
       {MotorModel::Circuit, "circuit", "the steady-state equivalent circuit (single or double cage)",
        "Pedra (2008) fig. 1", "equivalent circuit", false, false,
        "The equivalent circuit is quasi-static: it honours the catalogue's starting torque but shows no switching "

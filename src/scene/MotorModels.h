@@ -12,6 +12,16 @@
 
 namespace rollerdyn {
 
+struct KeySpec;  // scene/SceneSchema.h
+
+// A scene key of one law's own, a number of InductionMotor: the row declares it, and the schema
+// (its reference and checks), the parser and the scene's values read it from there. Absent from
+// the file, the field takes the key's schema default.
+struct MotorLawKey {
+  KeySpec (*spec)();               // the key's schema row: path, unit, range, default, meaning, source
+  double InductionMotor::*field;   // the Scene field the key sets
+};
+
 // One row of the table; the enumeration MotorModel (Scene.h) lists the laws in the table's order.
 struct MotorModelInfo {
   MotorModel model;          // the enumerator this row describes
@@ -25,6 +35,8 @@ struct MotorModelInfo {
   const char* start_up_limit;  // what a start-up with this law cannot show ("" when nothing); a
                                // law on the Kloss curve adds the comparison of its starting torque
                                // with the catalogue's and the advice to use a catalogue law
+  std::vector<MotorLawKey> own_keys{};  // keys only this law reads (motor.* after motor.model in the
+                                        // reference, in the table's order); none for most laws
 };
 
 // Every law, in the order of the enumeration.

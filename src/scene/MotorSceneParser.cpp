@@ -186,7 +186,11 @@ int readPolePairs(const Reader& in, double omega0, double f, bool checked) {
 // I_n is at U_n) and pole pairs that agree with ω0.
 void readMachine(const Reader& in, double omega0, InductionMotor& im) {
   im.model = in.choiceOf<MotorModel>("motor.model");
-  im.torque_time_constant = in.numberOr("motor.torque_time_constant", 0.0);  // 0: 1/(ω1·s_kr)
+  for (const MotorModelInfo& law : motorModelTable())  // each law's own keys, whichever law runs
+    for (const MotorLawKey& own : law.own_keys) {
+      const KeySpec key = own.spec();
+      im.*own.field = in.numberOr(key.path, key.default_number);
+    }
   im.frequency = in.number("motor.frequency");
   im.connection = in.choiceOf<WindingConnection>("motor.connection");
   im.catalogue = readCatalogue(in, omega0);

@@ -21,10 +21,9 @@ KeySpec motorModelKey() {
   // The default is the first row: the papers' static Kloss formula.
   return choice("motor.model", Presence::Optional, words, words.front(), meaning + " (motor.md)").from(sources);
 }
-}  // namespace
 
-// motor.* but the circuit, the catalogue, the start and the stop.
-std::vector<KeySpec> motorSchemaKeys() {
+// The characteristic, the rotor and the law, up to motor.model.
+std::vector<KeySpec> motorKeysBeforeTheLaws() {
   using P = Presence;
   return {
       KeySpec{"motor.enabled", KeyKind::Flag, "-", P::Optional, anyFinite(), 1.0, "", {},
@@ -57,10 +56,13 @@ std::vector<KeySpec> motorSchemaKeys() {
              "rotor inertia J_p")
           .from(L2018 + " eq. (1)"),
       motorModelKey(),
-      number("motor.torque_time_constant", "s", P::Conditional, positive(), 0.0,
-             "T_e of the dynamic Kloss characteristic T_e·dM/dt + M = M_static")
-          .from("Klyuchev (1985)")
-          .when("1/(2π·f_n·s_kr)"),
+  };
+}
+
+// The rated supply and the winding, after the laws' own keys.
+std::vector<KeySpec> motorKeysAfterTheLaws() {
+  using P = Presence;
+  return {
       number("motor.voltage", "V", P::Conditional, positive(), 0.0,
              "U_n, rated line-to-line RMS voltage")
           .when("required for motor.model " + motorModelWords(false, "and") + ", and with motor.circuit or motor.catalogue"),
@@ -73,6 +75,17 @@ std::vector<KeySpec> motorSchemaKeys() {
               "p, pole pairs; ω0 must equal 2π·f_n/p where the machine's data are used")
           .when("round(2π·f_n/ω0)"),
   };
+}
+}  // namespace
+
+// motor.* but the circuit, the catalogue, the start and the stop; the laws' own keys follow
+// motor.model.
+std::vector<KeySpec> motorSchemaKeys() {
+  std::vector<KeySpec> keys = motorKeysBeforeTheLaws();
+  for (const MotorModelInfo& law : motorModelTable())
+    for (const MotorLawKey& own : law.own_keys) keys.push_back(own.spec());
+  for (KeySpec& k : motorKeysAfterTheLaws()) keys.push_back(std::move(k));
+  return keys;
 }
 
 // motor.circuit.*.

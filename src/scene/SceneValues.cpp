@@ -5,7 +5,9 @@
 #include <map>
 #include <stdexcept>
 
+#include "scene/MotorModels.h"
 #include "scene/SceneChoices.h"
+#include "scene/SceneSchema.h"
 
 namespace rollerdyn {
 
@@ -96,7 +98,9 @@ void motorFields(Fields& f) {
   add(f, "motor.overload_ratio", [](const Scene& s) { return s.sizing.motor_overload_ratio; });
   add(f, "motor.rotor_inertia", [](const Scene& s) { return s.motor.rotor_inertia; });
   add(f, "motor.model", [](const Scene& s) { return toString(s.induction.model); });
-  add(f, "motor.torque_time_constant", [](const Scene& s) { return s.induction.torque_time_constant; });
+  for (const MotorModelInfo& law : motorModelTable())
+    for (const MotorLawKey& own : law.own_keys)
+      add(f, own.spec().path, [field = own.field](const Scene& s) { return s.induction.*field; });
   add(f, "motor.voltage", [](const Scene& s) { return s.induction.voltage; });
   add(f, "motor.frequency", [](const Scene& s) { return s.induction.frequency; });
   add(f, "motor.connection", [](const Scene& s) { return toString(s.induction.connection); });

@@ -1,7 +1,8 @@
 // The motor-law table (scene/MotorModels.h) is the one description of each motor.model: its rows
 // follow the enumeration, the schema and the run's effect line read their words from it, and its
 // classification agrees with the laws makeMotorLaw builds (a law on the Kloss curve peaks at M_kr
-// at the critical slip; a machine law cannot be parsed without machine data).
+// at the critical slip; a machine law cannot be parsed without machine data); a law's own keys
+// are scene keys that set their field.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,8 @@
 #include "scene/MotorModels.h"
 #include "scene/SceneChoices.h"
 #include "scene/SceneParser.h"
+#include "scene/SceneSchema.h"
+#include "scene/SceneValues.h"
 #include "scene/SceneTestSupport.h"
 
 namespace rollerdyn {
@@ -62,6 +65,33 @@ TEST(MotorModelTable, MachineLawsNeedTheCatalogueOrTheCircuit) {
       EXPECT_ANY_THROW(parseSceneText(kMinimalScene, "kloss-only.yaml", {set})) << law.word;
     }
   }
+}
+
+// A key of a law's own is declared once, in its row: the schema knows it (so --set accepts it and
+// the reference lists it), a file that gives it sets the row's field, one that leaves it out gets
+// the schema's default, and the scene's values report it.
+TEST(MotorModelTable, LawsOwnKeysAreSchemaKeysThatSetTheirField) {
+  int own = 0;
+  for (const MotorModelInfo& law : motorModelTable())
+    for (const MotorLawKey& k : law.own_keys) {
+      ++own;
+      const KeySpec spec = k.spec();
+      const KeySpec* in_schema = findSceneKey(spec.path);
+      ASSERT_NE(in_schema, nullptr) << spec.path;
+      EXPECT_EQ(in_schema->unit, spec.unit) << spec.path;
+      const Scene absent = parseSceneText(kMinimalScene, "own-key.yaml");
+      EXPECT_EQ(absent.induction.*k.field, spec.default_number) << spec.path;
+      const double given = 0.0123;  // inside a positive range; the parser checks the range itself
+      const Scene sc = parseSceneText(kMinimalScene, "own-key.yaml",
+                                      {std::string("motor.model=") + law.word, spec.path + "=0.0123"});
+      EXPECT_EQ(sc.induction.*k.field, given) << spec.path;
+      EXPECT_EQ(sc.induction.model, law.model) << spec.path;
+      bool reported = false;
+      for (const auto& [key, value] : sceneValues(sc))
+        if (key == spec.path) reported = std::stod(value) == given;
+      EXPECT_TRUE(reported) << spec.path;
+    }
+  EXPECT_GE(own, 1) << "the dynamic Kloss law's T_e is a key of its own";
 }
 
 }  // namespace
