@@ -147,6 +147,16 @@ std::string whyNotTheMachineLaw(const std::string& key, const Scene& sc) {
   return "";
 }
 
+// A key of another motor law's own (its row's own_keys, MotorModels.h): the chosen law never reads it.
+std::string whyNotThisLawsOwnKeys(const std::string& key, const Scene& sc) {
+  for (const MotorModelInfo& law : motorModelTable())
+    for (const MotorLawKey& own : law.own_keys)
+      if (law.model != sc.induction.model && own.spec().path == key)
+        return std::string("only motor.model ") + law.word + " (" + law.meaning + ") reads it; this run's law is " +
+               motorModelInfo(sc.induction.model).word;
+  return "";
+}
+
 // The reducer's and the motor's keys the chosen laws do not read.
 std::string whyNotTheseLaws(const std::string& key, const Scene& sc) {
   if (key == "reducer.efficiency_reverse" && sc.reducer.losses == ReducerLossModel::Papers)
@@ -155,6 +165,7 @@ std::string whyNotTheseLaws(const std::string& key, const Scene& sc) {
   if (key == "motor.connection")
     return "the laws use the equivalent star's per-phase values either way; a star-delta start is set by "
            "motor.start.method (the connection shows only in `rollerdyn motor`)";
+  if (const std::string other = whyNotThisLawsOwnKeys(key, sc); !other.empty()) return other;
   return hasKlossCurve(sc.induction.model) ? whyNotTheKlossLaw(key, sc) : whyNotTheMachineLaw(key, sc);
 }
 

@@ -104,6 +104,17 @@ TEST(KeyEffects, TheSupplyFrequencyIsNamedWhereNoKlossLawReadsIt) {
   EXPECT_FALSE(named(keysWithoutEffect(scene({"motor.model=circuit"}), "reduced"), "motor.frequency"));
 }
 
+// A key of one motor law's own (the dynamic Kloss law's T_e) is named under every other law, in
+// both models, and never under its own law.
+TEST(KeyEffects, AMotorLawsOwnKeyIsNamedUnderEveryOtherLaw) {
+  const std::string te = "motor.torque_time_constant=0.01";
+  for (const std::string model : {"multibody", "reduced"}) {
+    EXPECT_TRUE(named(keysWithoutEffect(scene({te}), model), "motor.torque_time_constant")) << model;
+    EXPECT_FALSE(named(keysWithoutEffect(scene({"motor.model=kloss_dynamic", te}), model), "motor.torque_time_constant"))
+        << model;
+  }
+}
+
 }  // namespace
 }  // namespace rollerdyn
 
