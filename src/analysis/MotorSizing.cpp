@@ -13,6 +13,7 @@
 #include "motor/SharedMotorLaw.h"
 #include "physics/ReducerLosses.h"
 #include "scene/MotorModels.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -225,8 +226,7 @@ void judgeContinuousHeating(MotorWholeRun& r, double starts_per_hour, double ste
                             const std::string& starts) {
   r.continuous_running = true;
   r.thermal_over_nominal = std::sqrt(std::max(0.0, steady_losses) / nominal_losses);
-  char eq[64];
-  std::snprintf(eq, sizeof eq, "%.3g", r.thermal_over_nominal);
+  const std::string eq = significant(r.thermal_over_nominal, 3);
   r.thermal_basis = std::string(starts_per_hour > 0 ? "continuous running (sizing.starts_per_hour given, but "
                                                       "there is no start to count)"
                                                     : "continuous running (sizing.starts_per_hour not given)") +

@@ -9,6 +9,7 @@
 #include "analysis/SizingCheckJson.h"
 #include "io/Sha256.h"
 #include "scene/SceneSchema.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -180,13 +181,12 @@ std::string signOffSheetText(const SignOffSheet& s) {
   o << "sign-off sheet: " << s.source.scene_name << " (" << s.source.scene_path << ", SHA-256 "
     << s.scene_sha256.substr(0, 16) << "...)\n";
   for (const SignOffRow& r : s.rows) {
-    char value[40] = "";
-    if (std::isfinite(r.check.value)) std::snprintf(value, sizeof value, "%.3g", r.check.value);
+    const std::string value = significantOr(r.check.value, 3, "");
     char limit[40] = "";
     if (std::isfinite(r.check.limit))
       std::snprintf(limit, sizeof limit, "%s %.4g", comparisonSymbol(r.check.passes_when).c_str(), r.check.limit);
     char line[160];
-    std::snprintf(line, sizeof line, "  %-5s %-30s %9s ", shortVerdict(r.verdict).c_str(), r.check.name.c_str(), value);
+    std::snprintf(line, sizeof line, "  %-5s %-30s %9s ", shortVerdict(r.verdict).c_str(), r.check.name.c_str(), value.c_str());
     o << line << padded(limit, 10) << "  " << (r.verdict == "pass" ? r.check.window : r.reason) << "\n";
   }
   o << s.overall << "\n";

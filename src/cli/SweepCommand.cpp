@@ -22,6 +22,7 @@
 #include "studies/Sweep.h"
 #include "studies/SweepDesigns.h"
 #include "studies/SweepMpi.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::cli {
 
@@ -81,11 +82,8 @@ std::string lineFor(const SweepOptions& o, const SweepPoint& p, std::size_t done
   const std::string state = !p.ran ? "FAILED"
                             : p.motion == "turning" ? (p.steady ? "turning, steady" : "turning, NOT steady")
                                                     : p.motion;
-  auto f = [](double v) {  // "n/a" where a metric has no meaning (a rocking or stalled crank)
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4g", v);
-    return std::isfinite(v) ? std::string(b) : std::string("n/a");
-  };
+  // "n/a" where a metric has no meaning (a rocking or stalled crank).
+  auto f = [](double v) { return significantOr(v, 4, "n/a"); };
   std::snprintf(buf, sizeof buf, "  δ %s  H %s  k_p %s  ΔM %s N·m  %s  %.2g s cpu", f(p.metric("delta")).c_str(),
                 f(p.metric("H")).c_str(), f(p.metric("k_p")).c_str(),
                 f(p.metric("coupling_torque_swing")).c_str(), state.c_str(), p.cpu_seconds);

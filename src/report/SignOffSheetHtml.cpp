@@ -68,9 +68,7 @@ std::string number(double v) { return significantOr(v, 3, "—"); }
 
 std::string limitText(const SizingCheck& c) {
   if (!std::isfinite(c.limit)) return "—";
-  char b[48];
-  std::snprintf(b, sizeof b, "%.4g", c.limit);
-  return esc(comparisonSymbol(c.passes_when)) + " " + b;
+  return esc(comparisonSymbol(c.passes_when)) + " " + significant(c.limit, 4);
 }
 
 void header(std::ostringstream& h, const SignOffSheet& s) {

@@ -6,6 +6,7 @@
 
 #include "analysis/RunMotion.h"
 #include "reduced/ReducedModel.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -98,21 +99,13 @@ std::string noSteadyMotion(const Scene& scene, const RunState& st) {
   return "";
 }
 
-std::string pct(double x) {
-  char f[32];
-  std::snprintf(f, sizeof f, "%.2g", x);
-  return f;
-}
+std::string pct(double x) { return significant(x, 2); }
 
 // 1/|μ| in words an engineer reads: three significant digits, thousands separated below 1e9
 // (269,542 -> "270,000"), else as a power of ten.
 std::string foldOf(double modulus) {
   const double x = 1 / modulus;
-  char b[64];
-  if (!(x < 1e9) || x < 100) {
-    std::snprintf(b, sizeof b, "%.3g", x);
-    return b;
-  }
+  if (!(x < 1e9) || x < 100) return significant(x, 3);
   const double scale = std::pow(10.0, std::floor(std::log10(x)) - 2);
   std::string digits = std::to_string(static_cast<long long>(std::llround(std::round(x / scale) * scale)));
   for (int i = int(digits.size()) - 3; i > 0; i -= 3) digits.insert(size_t(i), ",");

@@ -245,10 +245,8 @@ void drawMetricCurve(const SweepOptions& o, const SweepResult& r, const std::str
 
 // A cell's value as gnuplot label `lab` at the cell's centre (x, y).
 std::string cellLabel(int lab, double v, double x, double y) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
   std::ostringstream label;
-  label << "set label " << lab << " \"" << buf << "\" at " << num(x) << "," << num(y)
+  label << "set label " << lab << " \"" << significant(v, 3) << "\" at " << num(x) << "," << num(y)
         << " center front font 'Sans,8'\n";
   return label.str();
 }
