@@ -1,17 +1,11 @@
 // The joints' reaction peaks over a start in the start-up answers (StartUp.h): internal to StartUp.cpp.
 #pragma once
 
-#include <cstddef>
-
 #include "analysis/StartUp.h"
+#include "analysis/StartUpRows.h"
 #include "io/Table.h"
 
 namespace rollerdyn {
-
-// Rows [begin, end) of a run's output grid.
-struct RowSpan {
-  std::size_t begin = 0, end = 0;
-};
 
 // Appends to r.joints, per kind of joint in the reactions table (guide rollers front and rear,
 // rods, crank pins, main bearings), the largest reaction over the carts in the start's rows, the

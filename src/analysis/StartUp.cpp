@@ -8,7 +8,7 @@
 #include "analysis/StallDetector.h"
 #include "analysis/StartJointPeaks.h"
 #include "analysis/StartUpCurrentLimit.h"
-#include "analysis/SteadyState.h"
+#include "analysis/StartUpRows.h"
 #include "motor/BreakdownTorque.h"
 #include "motor/Supply.h"
 #include "scene/MotorModels.h"
@@ -34,37 +34,6 @@ std::string fmt(const char* f, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
-}
-
-// A column of the table, or empty when absent.
-std::vector<double> columnOr(const Table& t, const std::string& name) {
-  return t.has(name) ? t.column(name) : std::vector<double>{};
-}
-
-// ∫ f dt over rows [a, b) by the trapezoidal rule (pairs of rows both inside).
-template <class F>
-double integrate(const std::vector<double>& t, std::size_t a, std::size_t b, F f) {
-  double sum = 0;
-  for (std::size_t i = a + 1; i < b && i < t.size(); ++i) sum += 0.5 * (f(i - 1) + f(i)) * (t[i] - t[i - 1]);
-  return sum;
-}
-
-std::size_t firstRowAtOrAfter(const std::vector<double>& t, double when) {
-  return std::size_t(std::lower_bound(t.begin(), t.end(), when - 1e-12) - t.begin());
-}
-
-// How a peak is taken over rows of a column.
-enum class Extreme { Largest, Smallest, LargestMagnitude };
-
-// The extreme of column c over rows, or NaN where it has no such rows.
-double extremeOf(const std::vector<double>& c, RowSpan rows, Extreme kind) {
-  const bool lowest = kind == Extreme::Smallest, absolute = kind == Extreme::LargestMagnitude;
-  double m = lowest ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
-  for (std::size_t i = rows.begin; i < rows.end && i < c.size(); ++i) {
-    const double v = absolute ? std::abs(c[i]) : c[i];
-    m = lowest ? std::min(m, v) : std::max(m, v);
-  }
-  return std::isfinite(m) ? m : kNaN;
 }
 
 // Kloss's torque at standstill against the catalogue's, for the notes.
@@ -259,50 +228,6 @@ void addTorquesAtStandstill(const Scene& sc, const MotorLaw& law, const Supply& 
   judgeStartFromTorques(sc, r);
 }
 
-// The steady window of the running part of the run, against which the start is measured.
-struct SteadyWindow {
-  SteadyState state;         // the steady state on the rows before the switch-off
-  RowSpan rows;              // its rows; without a steady state, the last whole revolution's
-  double duration = 0;       // [s]; 0 for fewer than two rows
-  double lowest_speed = 0;   // the crank's lowest speed in it [rad/s]
-  std::size_t n_running = 0; // rows before the switch-off
-};
-
-// No steady state within the run: its last whole revolution stands in for it (said in the notes).
-RowSpan lastRevolutionStandsIn(const SteadyState& ss, const std::vector<double>& t, StartUp& r) {
-  r.steady_begin = ss.revolutions.back().t_begin;
-  r.steady_end = ss.revolutions.back().t_end;
-  r.notes.push_back("The run reaches no steady state (the last revolutions' mean crank speeds differ by more "
-                    "than 1e-3): its last whole revolution, t = " + fmt("%.4g", r.steady_begin) + " ... " +
-                    fmt("%.4g", r.steady_end) + " s, stands in for the steady window.");
-  return {firstRowAtOrAfter(t, r.steady_begin), std::min(t.size(), firstRowAtOrAfter(t, r.steady_end) + 1)};
-}
-
-// The steady window: on the rows before the switch-off. Sets r.t_off, the window's times and the
-// steady mean crank speed.
-SteadyWindow findSteadyWindow(const Scene& sc, const RunResult& run, const std::vector<double>& t,
-                              const std::vector<double>& w, StartUp& r) {
-  SteadyWindow window;
-  // A switch-off at or after the last row is none in this run (no stop to answer).
-  r.t_off = std::isfinite(sc.motor_stop.t_off) && sc.motor_stop.t_off < t.back() ? sc.motor_stop.t_off : kNaN;
-  window.n_running = t.size();
-  if (std::isfinite(r.t_off)) window.n_running = std::min(window.n_running, firstRowAtOrAfter(t, r.t_off));
-  const SteadyState& ss = window.state = detectRunningSteadyState(run, sc.simulation.steady_window_revolutions, r.t_off);
-  r.steady_reached = ss.reached;
-  r.steady_begin = ss.t_begin;
-  r.steady_end = ss.t_end;
-  const RowSpan rows = !ss.reached && !ss.revolutions.empty() ? lastRevolutionStandsIn(ss, t, r)
-                                                              : RowSpan{ss.row_begin, std::min(ss.row_end, t.size())};
-  const std::size_t w0 = rows.begin, w1 = rows.end;
-  window.rows = rows;
-  window.duration = w1 > w0 + 1 ? t[w1 - 1] - t[w0] : 0.0;
-  r.steady_mean_speed =
-      window.duration > 0 ? integrate(t, w0, w1, [&](std::size_t i) { return w[i]; }) / window.duration : kNaN;
-  window.lowest_speed = std::numeric_limits<double>::infinity();
-  for (std::size_t i = w0; i < w1; ++i) window.lowest_speed = std::min(window.lowest_speed, w[i]);
-  return window;
-}
-
 // Whether the crank turns in the steady window, and the run-up: the first crossing of 95 % of the
 // steady mean after the switch-on. Sets r.run_up_time, r.still_starting and r.starts.
 bool judgeRunUp(const Scene& sc, const std::string& motion, const std::vector<double>& t, const std::vector<double>& w,
@@ -329,25 +254,6 @@ bool judgeRunUp(const Scene& sc, const std::string& motion, const std::vector<do
   }
   r.starts = turning && std::isfinite(r.run_up_time);
   return turning;
-}
-
-// The start interval [t_on, start_end) (sets r.start_end) and its rows. A drive that runs up: until
-// its crank speed settles (SteadyState::t_settled, the first revolution from which every later
-// one's mean speed is within tolerance of the final one), so the start is the same however long
-// the run continues after it (the steady window is the run's last revolutions and moves with
-// simulation.t_end). A drive that does not start: the whole running part of the run, since no part
-// of it is steady.
-RowSpan findStartRows(const std::vector<double>& t, const SteadyWindow& window, StartUp& r) {
-  const SteadyState& ss = window.state;
-  const double run_last = window.n_running == 0 ? t.back() : t[window.n_running - 1];
-  if (r.starts && ss.reached && std::isfinite(ss.t_settled) && ss.t_settled > r.t_on && ss.t_settled <= r.steady_begin)
-    r.start_end = std::max(ss.t_settled, r.t_on + r.run_up_time);
-  else if (!r.starts && !r.still_starting)
-    r.start_end = run_last;
-  else
-    r.start_end = r.steady_begin > r.t_on ? r.steady_begin : run_last;
-  const std::size_t s0 = firstRowAtOrAfter(t, r.t_on), s1 = std::max(s0 + 1, firstRowAtOrAfter(t, r.start_end) + 1);
-  return {s0, std::min(s1, t.size())};
 }
 
 // The motor's and the coupling's torque peaks over the start and over the steady window.
@@ -458,6 +364,27 @@ void withdrawStartAnswers(const Scene& sc, StartUp& r) {
   r.current_peak = r.current_rms = r.current_i2t = r.rotor_energy_loss = kNaN;
 }
 
+// What the start is: the starting method, the motor law and whether the supply switches.
+void describeStart(const Scene& sc, const MotorLaw& law, const Supply& supply, StartUp& r) {
+  r.applicable = true;
+  r.supply_switches = !supply.constant();
+  r.method = methodWords(sc.motor_start.method);
+  r.motor_law = law.description();
+  r.model_word = toString(sc.induction.model);
+}
+
+// The start's peaks and integrals against the steady window's: the motor and coupling torques, the
+// joints (when the reactions table shares the timeseries' output grid), the stator current and the
+// rotor's energy loss.
+void addStartPeaks(const Scene& sc, const RunResult& run, const std::vector<double>& t, RowSpan start,
+                   const SteadyWindow& window, StartUp& r) {
+  const Table& ts = run.timeseries;
+  addTorquePeaks(ts, start, window.rows, r);
+  if (run.reactions.rows.size() == ts.rows.size()) addStartJointPeaks(run.reactions, start, window.rows, r);
+  addStatorCurrent(ts, t, start, window, r);
+  addRotorLoss(sc, ts, t, start, r);
+}
+
 }  // namespace
 
 StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* law, const StartLoad* load,
@@ -469,20 +396,12 @@ StartUp computeStartUp(const Scene& sc, const RunResult& run, const MotorLaw* la
   const std::vector<double> t = ts.column("t"), w = ts.column("omega_crank");
   r.t_on = sc.motor_start.t_on;
   if (r.t_on > t.back()) return r;  // switched on after the end of the run
-  r.applicable = true;
-  r.supply_switches = !supply.constant();
-  r.method = methodWords(sc.motor_start.method);
-  r.motor_law = law->description();
-  r.model_word = toString(sc.induction.model);
+  describeStart(sc, *law, supply, r);
   addTorquesAtStandstill(sc, *law, supply, load, r);
   const SteadyWindow window = findSteadyWindow(sc, run, t, w, r);
   const bool turning = judgeRunUp(sc, motion, t, w, window, r);
   const RowSpan start = findStartRows(t, window, r);
-  addTorquePeaks(ts, start, window.rows, r);
-  // The joints (the reactions table shares the timeseries' output grid).
-  if (run.reactions.rows.size() == ts.rows.size()) addStartJointPeaks(run.reactions, start, window.rows, r);
-  addStatorCurrent(ts, t, start, window, r);
-  addRotorLoss(sc, ts, t, start, r);
+  addStartPeaks(sc, run, t, start, window, r);
   addStopping(sc, ts, r);
   judgeStart(sc, run, turning, changeoverMissed(sc, ts, r), r);
   r.from_rest = !(r.t_on <= 0 && sc.initial.crank_speed != 0);
