@@ -12,7 +12,6 @@ using nlohmann::json;
 
 namespace {
 
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 std::string fmt(const json& v, const char* f) {
   if (!v.is_number()) return "n/a";
@@ -30,11 +29,11 @@ std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : s
 json crankshaftJson(const CrankshaftSizing& c) {
   json throws = json::array(), segments = json::array();
   for (std::size_t q = 0; q < c.throw_carts.size() && c.available; ++q) {
-    throws.push_back({{"cart", c.throw_carts[q]}, {"position", num(c.throw_positions[q])},
-                      {"bending_moment_peak", num(c.bending_moment_peak[q])}});
+    throws.push_back({{"cart", c.throw_carts[q]}, {"position", jsonNumber(c.throw_positions[q])},
+                      {"bending_moment_peak", jsonNumber(c.bending_moment_peak[q])}});
     segments.push_back({{"from_cart", q == 0 ? json(nullptr) : json(c.throw_carts[q - 1])},
                         {"to_cart", c.throw_carts[q]},
-                        {"torque_peak", num(c.segment_torque_peak[q])}});
+                        {"torque_peak", jsonNumber(c.segment_torque_peak[q])}});
   }
   return {{"bearing_positions", c.bearing_positions},
           {"throws", throws},

@@ -14,7 +14,6 @@ using nlohmann::json;
 
 namespace {
 
-json num(double v) { return jsonNumber(v); }
 std::string fmt(const json& v, const char* f = "%.4g") { return jsonNumberText(v, f); }
 
 std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
@@ -24,13 +23,13 @@ bool applies(const json& w) { return jsonMember(w, "applies").is_boolean() && js
 json flankJson(const FlankSpectrum& f) {
   json classes = json::array();
   for (const TorqueClass& c : f.classes) classes.push_back({{"torque", c.torque}, {"cycles", c.cycles}});
-  return {{"cycles", f.cycles}, {"equivalent_torque", num(f.equivalent_torque)}, {"classes", classes}};
+  return {{"cycles", f.cycles}, {"equivalent_torque", jsonNumber(f.equivalent_torque)}, {"classes", classes}};
 }
 
 json spectrumJson(const GearSpectrum& s) {
   if (!s.applies) return {{"applies", false}, {"reason", s.not_applicable}};
-  return {{"applies", true},         {"t_begin", num(s.t_begin)},    {"t_end", num(s.t_end)},
-          {"revolutions", num(s.revolutions)}, {"drive", flankJson(s.drive)}, {"coast", flankJson(s.coast)}};
+  return {{"applies", true},         {"t_begin", jsonNumber(s.t_begin)},    {"t_end", jsonNumber(s.t_end)},
+          {"revolutions", jsonNumber(s.revolutions)}, {"drive", flankJson(s.drive)}, {"coast", flankJson(s.coast)}};
 }
 
 void spectrumLine(std::ostringstream& o, const char* name, const json& s) {
@@ -67,10 +66,10 @@ void gearText(std::ostringstream& o, const json& g) {
 json dutyHourJson(const GearDuty& g) {
   return g.duty_applies ? json{{"applies", true},
                                {"basis", g.duty_basis},
-                               {"revolutions_per_hour", num(g.hour_revolutions)},
-                               {"equivalent_torque_drive", num(g.equivalent_torque_drive)},
-                               {"equivalent_torque_coast", num(g.equivalent_torque_coast)},
-                               {"equivalent_torque", num(g.equivalent_torque)},
+                               {"revolutions_per_hour", jsonNumber(g.hour_revolutions)},
+                               {"equivalent_torque_drive", jsonNumber(g.equivalent_torque_drive)},
+                               {"equivalent_torque_coast", jsonNumber(g.equivalent_torque_coast)},
+                               {"equivalent_torque", jsonNumber(g.equivalent_torque)},
                                {"deciding_flank", g.deciding_flank}}
                         : json{{"applies", false}, {"reason", g.duty_not_applicable}};
 }
@@ -82,22 +81,22 @@ json gearDutyJson(const GearDuty& g) {
   return {{"method", "ISO 6336-6:2019, load spectrum and Miner-equivalent torque"},
           {"torque", "coupling torque (what the reducer's output shaft transmits), at the crank axis"},
           {"exponent", g.exponent},
-          {"class_width", num(g.class_width)},
-          {"nominal_torque", num(g.nominal_torque)},
+          {"class_width", jsonNumber(g.class_width)},
+          {"nominal_torque", jsonNumber(g.nominal_torque)},
           {"nominal_source", g.nominal_source},
-          {"assumed_application_factor", num(g.assumed_application_factor)},
-          {"rated_torque", num(g.rated_torque)},
-          {"max_torque", num(g.max_torque)},
+          {"assumed_application_factor", jsonNumber(g.assumed_application_factor)},
+          {"rated_torque", jsonNumber(g.rated_torque)},
+          {"max_torque", jsonNumber(g.max_torque)},
           {"starts_per_hour", g.starts_per_hour},
           {"start", spectrumJson(g.start)},
           {"steady", spectrumJson(g.steady)},
           {"duty", dutyHourJson(g)},
-          {"application_factor", num(g.application_factor)},
-          {"peak", num(g.peak)},
-          {"t_peak", num(g.t_peak)},
-          {"application_ratio", num(g.application_ratio)},
-          {"rated_ratio", num(g.rated_ratio)},
-          {"max_ratio", num(g.max_ratio)}};
+          {"application_factor", jsonNumber(g.application_factor)},
+          {"peak", jsonNumber(g.peak)},
+          {"t_peak", jsonNumber(g.t_peak)},
+          {"application_ratio", jsonNumber(g.application_ratio)},
+          {"rated_ratio", jsonNumber(g.rated_ratio)},
+          {"max_ratio", jsonNumber(g.max_ratio)}};
 }
 
 json motorDutyJson(const MotorDuty& m) {
@@ -108,21 +107,21 @@ json motorDutyJson(const MotorDuty& m) {
           {"starts_per_hour", m.starts_per_hour},
           {"start_known", m.start_known},
           {"start_unknown", m.start_unknown},
-          {"start_time", num(m.start_time)},
-          {"start_heat", num(m.start_heat)},
-          {"locked_rotor_torque", num(m.locked_rotor_torque)},
-          {"locked_rotor_losses", num(m.locked_rotor_losses)},
-          {"equivalent_locked_time", num(m.equivalent_locked_time)},
-          {"locked_rotor_time", num(m.locked_rotor_time)},
-          {"rotor_inertia", num(m.rotor_inertia)},
-          {"load_inertia", num(m.load_inertia)},
-          {"no_load_start_heat", num(m.no_load_start_heat)},
-          {"no_load_starts", num(m.no_load_starts)},
-          {"steady_loss_share", num(m.steady_loss_share)},
-          {"permissible_starts", num(m.permissible_starts)},
-          {"starting_time_share", num(m.starting_time_share)},
-          {"locked_time_ratio", num(m.locked_time_ratio)},
-          {"starts_ratio", num(m.starts_ratio)}};
+          {"start_time", jsonNumber(m.start_time)},
+          {"start_heat", jsonNumber(m.start_heat)},
+          {"locked_rotor_torque", jsonNumber(m.locked_rotor_torque)},
+          {"locked_rotor_losses", jsonNumber(m.locked_rotor_losses)},
+          {"equivalent_locked_time", jsonNumber(m.equivalent_locked_time)},
+          {"locked_rotor_time", jsonNumber(m.locked_rotor_time)},
+          {"rotor_inertia", jsonNumber(m.rotor_inertia)},
+          {"load_inertia", jsonNumber(m.load_inertia)},
+          {"no_load_start_heat", jsonNumber(m.no_load_start_heat)},
+          {"no_load_starts", jsonNumber(m.no_load_starts)},
+          {"steady_loss_share", jsonNumber(m.steady_loss_share)},
+          {"permissible_starts", jsonNumber(m.permissible_starts)},
+          {"starting_time_share", jsonNumber(m.starting_time_share)},
+          {"locked_time_ratio", jsonNumber(m.locked_time_ratio)},
+          {"starts_ratio", jsonNumber(m.starts_ratio)}};
 }
 
 std::string dutyText(const json& sizing) {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "physics/SelfLocking.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 namespace {
@@ -18,7 +19,6 @@ std::string fmt(const char* format, double a, double b = 0, double c = 0, double
   return buf;
 }
 
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 }  // namespace
 
@@ -91,12 +91,12 @@ std::string quasiStaticJointLoadsWarning(const Scene& scene) {
 nlohmann::json guideFrictionJson(const Scene& scene, const RunResult& run, const LockingMargins& m, double deviation) {
   return {{"coefficient", scene.loads.guide_friction},
           {"normal_forces", run.guide_normals.empty() ? nlohmann::json(nullptr) : nlohmann::json(run.guide_normals)},
-          {"self_locking_index", m.applicable ? number(m.self_locking_index) : nlohmann::json(nullptr)},
-          {"transmission_angle_min_deg", m.applicable ? number(m.transmission_angle_min * kRadToDeg) : nlohmann::json(nullptr)},
-          {"rod_force_factor", m.applicable ? number(m.rod_force_factor) : nlohmann::json(nullptr)},
-          {"friction_work", number(run.energy.friction_dissipation)},
-          {"friction_work_kinetostatic", number(run.friction_work_kinetostatic)},
-          {"friction_work_deviation", number(deviation)},
+          {"self_locking_index", m.applicable ? jsonNumber(m.self_locking_index) : nlohmann::json(nullptr)},
+          {"transmission_angle_min_deg", m.applicable ? jsonNumber(m.transmission_angle_min * kRadToDeg) : nlohmann::json(nullptr)},
+          {"rod_force_factor", m.applicable ? jsonNumber(m.rod_force_factor) : nlohmann::json(nullptr)},
+          {"friction_work", jsonNumber(run.energy.friction_dissipation)},
+          {"friction_work_kinetostatic", jsonNumber(run.friction_work_kinetostatic)},
+          {"friction_work_deviation", jsonNumber(deviation)},
           {"friction_work_threshold", kFrictionWorkWarning}};
 }
 

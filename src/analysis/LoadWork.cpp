@@ -5,12 +5,12 @@
 #include <limits>
 
 #include "physics/RollerLoads.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 
 // Carts with their own loads (loads.* as lists): each value as the list of cart 1, 2, ...
@@ -128,15 +128,15 @@ nlohmann::json loadWorkJson(const LoadWork& w) {
   nlohmann::json per = nlohmann::json::array();
   for (const CartLoadWork& c : w.carts)
     per.push_back({{"cart", c.cart},
-                   {"work_whole_run", num(c.work_whole_run)},
-                   {"work_steady", num(c.work_steady)},
-                   {"power_mean_steady", num(c.power_mean_steady)},
-                   {"gross_work_steady", num(c.gross_steady)}});
+                   {"work_whole_run", jsonNumber(c.work_whole_run)},
+                   {"work_steady", jsonNumber(c.work_steady)},
+                   {"power_mean_steady", jsonNumber(c.power_mean_steady)},
+                   {"gross_work_steady", jsonNumber(c.gross_steady)}});
   return {{"available", true},
           {"reading", w.reading},
-          {"power_mean_per_cart_steady", num(w.power_mean_per_cart_steady)},
-          {"power_mean_per_cart_whole_run", num(w.power_mean_per_cart_whole_run)},
-          {"net_over_gross_steady", num(w.net_over_gross_steady)},
+          {"power_mean_per_cart_steady", jsonNumber(w.power_mean_per_cart_steady)},
+          {"power_mean_per_cart_whole_run", jsonNumber(w.power_mean_per_cart_whole_run)},
+          {"net_over_gross_steady", jsonNumber(w.net_over_gross_steady)},
           {"per_cart", per},
           {"warning", w.warning.empty() ? nlohmann::json(nullptr) : nlohmann::json(w.warning)},
           {"warning_consequence", w.consequence.empty() ? nlohmann::json(nullptr) : nlohmann::json(w.consequence)}};

@@ -13,7 +13,6 @@ using nlohmann::json;
 
 namespace {
 
-json num(double v) { return jsonNumber(v); }
 std::string fmt(const json& v, const char* f = "%.4g") { return jsonNumberText(v, f); }
 
 std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
@@ -22,10 +21,10 @@ json windowJson(const WindowDamage& w) {
   if (!w.applies) return {{"applies", false}, {"reason", w.not_applicable}};
   json top = json::array();
   for (const DamagingCycle& d : w.top)
-    top.push_back({{"range", num(d.range)}, {"mean", num(d.mean)}, {"count", num(d.count)},
-                   {"amplitude_equivalent", num(d.amplitude_equivalent)}, {"damage", num(d.damage)}});
-  return {{"applies", true}, {"t_begin", num(w.t_begin)}, {"t_end", num(w.t_end)}, {"damage", num(w.damage)},
-          {"cycles", num(w.cycles)}, {"column", w.where}, {"dominant_cycles", top}};
+    top.push_back({{"range", jsonNumber(d.range)}, {"mean", jsonNumber(d.mean)}, {"count", jsonNumber(d.count)},
+                   {"amplitude_equivalent", jsonNumber(d.amplitude_equivalent)}, {"damage", jsonNumber(d.damage)}});
+  return {{"applies", true}, {"t_begin", jsonNumber(w.t_begin)}, {"t_end", jsonNumber(w.t_end)}, {"damage", jsonNumber(w.damage)},
+          {"cycles", jsonNumber(w.cycles)}, {"column", w.where}, {"dominant_cycles", top}};
 }
 
 // "no damage" where a life is infinite, "n/a" where the window is missing.
@@ -61,44 +60,44 @@ json fatigueJson(const FatigueSizing& f) {
         {"curve", g.curve_given ? json{{"endurance_amplitude", g.curve.endurance_amplitude},
                                        {"knee_cycles", g.curve.knee_cycles},
                                        {"slope", g.curve.slope},
-                                       {"ultimate", num(g.curve.ultimate > 0 ? g.curve.ultimate : NAN)}}
+                                       {"ultimate", jsonNumber(g.curve.ultimate > 0 ? g.curve.ultimate : NAN)}}
                                 : json(nullptr)},
         {"per_start", windowJson(g.start)},
         {"steady", windowJson(g.steady)},
-        {"damage_per_start", num(g.damage_per_start)},
-        {"damage_per_hour", num(g.damage_per_hour)},
-        {"starts_to_failure", num(g.starts_to_failure)},
-        {"hours_to_failure", num(g.hours_to_failure)}};
+        {"damage_per_start", jsonNumber(g.damage_per_start)},
+        {"damage_per_hour", jsonNumber(g.damage_per_hour)},
+        {"starts_to_failure", jsonNumber(g.starts_to_failure)},
+        {"hours_to_failure", jsonNumber(g.hours_to_failure)}};
   }
   return {{"below_knee", f.below_knee},
           {"mean_correction", f.mean_correction},
-          {"required_starts", num(f.required_starts)},
-          {"required_hours", num(f.required_hours)},
+          {"required_starts", jsonNumber(f.required_starts)},
+          {"required_hours", jsonNumber(f.required_hours)},
           {"signals", signals}};
 }
 
 json couplingSelectionJson(const CouplingSelection& c) {
   if (!c.requested) return nullptr;
   return {{"method", "DIN 740-2 as the coupling makers publish it (KTR, Coupling selection according to DIN 740 part 2)"},
-          {"rated_torque", num(c.rated_torque)},
-          {"max_torque", num(c.max_torque)},
-          {"vibratory_torque", num(c.vibratory_torque)},
-          {"damping_power", num(c.damping_power)},
+          {"rated_torque", jsonNumber(c.rated_torque)},
+          {"max_torque", jsonNumber(c.max_torque)},
+          {"vibratory_torque", jsonNumber(c.vibratory_torque)},
+          {"damping_power", jsonNumber(c.damping_power)},
           {"S_t", c.S_t},
           {"S_z", c.S_z},
           {"S_A", c.S_A},
-          {"S_f", num(c.S_f)},
-          {"start_peak", num(c.start_peak)},
-          {"steady_peak", num(c.steady_peak)},
-          {"vibratory_amplitude", num(c.steady_amplitude)},
+          {"S_f", jsonNumber(c.S_f)},
+          {"start_peak", jsonNumber(c.start_peak)},
+          {"steady_peak", jsonNumber(c.steady_peak)},
+          {"vibratory_amplitude", jsonNumber(c.steady_amplitude)},
           {"excitation_order", c.excitation_order},
-          {"excitation_frequency", num(c.excitation_frequency)},
-          {"damping_power_run", num(c.damping_power_run)},
+          {"excitation_frequency", jsonNumber(c.excitation_frequency)},
+          {"damping_power_run", jsonNumber(c.damping_power_run)},
           {"damping_basis", c.damping_basis},
-          {"rated_ratio", num(c.rated_ratio)},
-          {"max_ratio", num(c.max_ratio)},
-          {"vibratory_ratio", num(c.vibratory_ratio)},
-          {"damping_ratio", num(c.damping_ratio)}};
+          {"rated_ratio", jsonNumber(c.rated_ratio)},
+          {"max_ratio", jsonNumber(c.max_ratio)},
+          {"vibratory_ratio", jsonNumber(c.vibratory_ratio)},
+          {"damping_ratio", jsonNumber(c.damping_ratio)}};
 }
 
 namespace {

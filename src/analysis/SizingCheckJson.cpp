@@ -1,4 +1,5 @@
 #include "analysis/SizingCheckJson.h"
+#include "io/FieldFormat.h"
 
 #include <cmath>
 #include <limits>
@@ -9,7 +10,6 @@ using nlohmann::json;
 
 namespace {
 
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 std::string text(const json& j, const char* key) {
   const auto it = j.find(key);
@@ -26,11 +26,11 @@ double number(const json& j, const char* key) {
 json sizingCheckJson(const SizingCheck& c) {
   return {{"check", c.name},
           {"what", c.what},
-          {"value", num(c.value)},
+          {"value", jsonNumber(c.value)},
           {"verdict", c.verdict.empty() ? json(nullptr) : json(c.verdict)},
           {"window", c.window},
           {"reason", c.reason},
-          {"limit", num(c.limit)},
+          {"limit", jsonNumber(c.limit)},
           {"passes_when", c.passes_when},
           {"method", c.method},
           {"basis", c.basis}};

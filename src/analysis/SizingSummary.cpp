@@ -15,7 +15,6 @@ namespace {
 
 using nlohmann::json;
 
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 json jointRowJson(const JointSizing& j);
 
@@ -23,7 +22,7 @@ json jointJson(const JointSizing& j) {
   json row = jointRowJson(j);
   if (j.bearing > 0) {  // a main bearing of crankshaft.bearing_positions: which one and where
     row["bearing"] = j.bearing;
-    row["position"] = num(j.position);
+    row["position"] = jsonNumber(j.position);
   }
   return row;
 }
@@ -32,20 +31,20 @@ json jointRowJson(const JointSizing& j) {
   constexpr double kDegPerRad = 57.295779513082320876798154814105;
   return {{"cart", j.cart > 0 ? json(j.cart) : json(nullptr)},
           {"column", j.column},
-          {"mean", num(j.load.mean)},
-          {"amplitude", num(j.load.amplitude)},
-          {"peak", num(j.load.peak)},
-          {"equivalent_load", num(j.load.equivalent)},
-          {"mean_speed", num(j.load.mean_speed)},
+          {"mean", jsonNumber(j.load.mean)},
+          {"amplitude", jsonNumber(j.load.amplitude)},
+          {"peak", jsonNumber(j.load.peak)},
+          {"equivalent_load", jsonNumber(j.load.equivalent)},
+          {"mean_speed", jsonNumber(j.load.mean_speed)},
           {"speed_basis", j.speed_basis},
-          {"rating", num(j.rating)},
+          {"rating", jsonNumber(j.rating)},
           {"motion", j.oscillating ? "oscillating" : "rotating"},
-          {"oscillation_angle_deg", num(j.oscillation_angle * kDegPerRad)},
-          {"oscillation_frequency", num(j.oscillation_frequency)},
-          {"rolling_elements_min", num(j.rolling_elements_min)},
-          {"L10_revolutions", num(j.life_revolutions)},
-          {"L10_oscillations", num(j.life_oscillations)},
-          {"L10_hours", num(j.life_hours)},
+          {"oscillation_angle_deg", jsonNumber(j.oscillation_angle * kDegPerRad)},
+          {"oscillation_frequency", jsonNumber(j.oscillation_frequency)},
+          {"rolling_elements_min", jsonNumber(j.rolling_elements_min)},
+          {"L10_revolutions", jsonNumber(j.life_revolutions)},
+          {"L10_oscillations", jsonNumber(j.life_oscillations)},
+          {"L10_hours", jsonNumber(j.life_hours)},
           {"life_basis", j.life_basis},
           {"life_reason", j.life_reason.empty() ? json(nullptr) : json(j.life_reason)}};
 }
@@ -62,57 +61,57 @@ std::string fmt(const json& v, const char* f, double scale = 1.0) {
 
 // The motor over the whole run: torque, rotor losses and heating, the start's heat, line power, slip.
 json motorWholeRunJson(const MotorWholeRun& r) {
-  return {{"torque_shaft", {{"mean", num(r.torque_shaft_mean)}, {"rms", num(r.torque_shaft_rms)}, {"peak", num(r.torque_shaft_peak)}}},
-          {"rms_over_nominal", num(r.rms_over_nominal)},
-          {"rotor_losses_mean", num(r.rotor_losses_mean)},
-          {"thermal_over_nominal", num(r.thermal_over_nominal)},
+  return {{"torque_shaft", {{"mean", jsonNumber(r.torque_shaft_mean)}, {"rms", jsonNumber(r.torque_shaft_rms)}, {"peak", jsonNumber(r.torque_shaft_peak)}}},
+          {"rms_over_nominal", jsonNumber(r.rms_over_nominal)},
+          {"rotor_losses_mean", jsonNumber(r.rotor_losses_mean)},
+          {"thermal_over_nominal", jsonNumber(r.thermal_over_nominal)},
           {"thermal_basis", r.thermal_basis},
-          {"start_heat", num(r.start_heat)},
-          {"start_duration", num(r.start_duration)},
-          {"start_heat_above_steady", num(r.start_heat_above_steady)},
-          {"starts_per_hour", num(r.starts_per_hour)},
-          {"power_line", {{"mean", num(r.power_line_mean)}, {"peak", num(r.power_line_peak)}}},
-          {"slip", {{"min", num(r.slip_min)}, {"max", num(r.slip_max)}}}};
+          {"start_heat", jsonNumber(r.start_heat)},
+          {"start_duration", jsonNumber(r.start_duration)},
+          {"start_heat_above_steady", jsonNumber(r.start_heat_above_steady)},
+          {"starts_per_hour", jsonNumber(r.starts_per_hour)},
+          {"power_line", {{"mean", jsonNumber(r.power_line_mean)}, {"peak", jsonNumber(r.power_line_peak)}}},
+          {"slip", {{"min", jsonNumber(r.slip_min)}, {"max", jsonNumber(r.slip_max)}}}};
 }
 
 // The motor's torques, powers and slip in the steady window and over the whole run; the heating
 // and breakdown verdicts come from the checks.
 json motorSizingJson(const MotorSizing& m, const json& rms_check, const json& peak_check) {
   return {
-      {"torque_shaft", {{"mean", num(m.torque_shaft_mean)}, {"rms", num(m.torque_shaft_rms)}, {"peak", num(m.torque_shaft_peak)}}},
-      {"torque_crank", {{"mean", num(m.torque_crank_mean)}, {"rms", num(m.torque_crank_rms)}, {"peak", num(m.torque_crank_peak)}}},
-      {"nominal_torque", num(m.nominal_torque)},
+      {"torque_shaft", {{"mean", jsonNumber(m.torque_shaft_mean)}, {"rms", jsonNumber(m.torque_shaft_rms)}, {"peak", jsonNumber(m.torque_shaft_peak)}}},
+      {"torque_crank", {{"mean", jsonNumber(m.torque_crank_mean)}, {"rms", jsonNumber(m.torque_crank_rms)}, {"peak", jsonNumber(m.torque_crank_peak)}}},
+      {"nominal_torque", jsonNumber(m.nominal_torque)},
       {"nominal_torque_source", m.nominal_source},
-      {"breakdown_torque", num(m.breakdown_torque)},
-      {"breakdown_torque_catalogue", num(m.breakdown_torque_catalogue)},
-      {"rms_over_nominal", num(m.rms_over_nominal)},
+      {"breakdown_torque", jsonNumber(m.breakdown_torque)},
+      {"breakdown_torque_catalogue", jsonNumber(m.breakdown_torque_catalogue)},
+      {"rms_over_nominal", jsonNumber(m.rms_over_nominal)},
       {"rms_check", rms_check},
-      {"peak_over_breakdown", num(m.peak_over_breakdown)},
-      {"torque_motoring_peak", num(m.torque_motoring_peak)},
-      {"torque_generating_peak", num(m.torque_generating_peak)},
-      {"breakdown_torque_generating", num(m.breakdown_torque_generating)},
+      {"peak_over_breakdown", jsonNumber(m.peak_over_breakdown)},
+      {"torque_motoring_peak", jsonNumber(m.torque_motoring_peak)},
+      {"torque_generating_peak", jsonNumber(m.torque_generating_peak)},
+      {"breakdown_torque_generating", jsonNumber(m.breakdown_torque_generating)},
       {"peak_check", peak_check},
-      {"power_shaft", {{"mean", num(m.power_shaft_mean)}, {"peak", num(m.power_shaft_peak)}}},
-      {"power_line", {{"mean", num(m.power_line_mean)}, {"peak", num(m.power_line_peak)}}},
+      {"power_shaft", {{"mean", jsonNumber(m.power_shaft_mean)}, {"peak", jsonNumber(m.power_shaft_peak)}}},
+      {"power_line", {{"mean", jsonNumber(m.power_line_mean)}, {"peak", jsonNumber(m.power_line_peak)}}},
       {"line_power_basis", m.line_power_basis},
-      {"slip", {{"min", num(m.slip_min)}, {"max", num(m.slip_max)}}},
-      {"energy_per_revolution", num(m.energy_per_revolution)},
+      {"slip", {{"min", jsonNumber(m.slip_min)}, {"max", jsonNumber(m.slip_max)}}},
+      {"energy_per_revolution", jsonNumber(m.energy_per_revolution)},
       {"whole_run", motorWholeRunJson(m.whole_run)}};
 }
 
 // The flywheel the speed fluctuation asks for.
 json flywheelSizingJson(const FlywheelSizing& f) {
-  return {{"kinetic_energy_swing", num(f.kinetic_energy_swing)},
-          {"inertia_effective", num(f.inertia_effective)},
-          {"delta", num(f.delta)},
-          {"target_delta", num(f.target_delta)},
-          {"added_inertia_crankshaft", num(f.added_inertia_crank)},
-          {"flywheel_crankshaft", num(f.flywheel_crankshaft)},
-          {"flywheel_motor_shaft", num(f.flywheel_motor_shaft)},
-          {"excess_work", num(f.excess_work)},
-          {"omega_mean", num(f.omega_mean)},
-          {"inertia_required", num(f.inertia_required)},
-          {"added_inertia_energy_method", num(f.added_inertia_energy_method)},
+  return {{"kinetic_energy_swing", jsonNumber(f.kinetic_energy_swing)},
+          {"inertia_effective", jsonNumber(f.inertia_effective)},
+          {"delta", jsonNumber(f.delta)},
+          {"target_delta", jsonNumber(f.target_delta)},
+          {"added_inertia_crankshaft", jsonNumber(f.added_inertia_crank)},
+          {"flywheel_crankshaft", jsonNumber(f.flywheel_crankshaft)},
+          {"flywheel_motor_shaft", jsonNumber(f.flywheel_motor_shaft)},
+          {"excess_work", jsonNumber(f.excess_work)},
+          {"omega_mean", jsonNumber(f.omega_mean)},
+          {"inertia_required", jsonNumber(f.inertia_required)},
+          {"added_inertia_energy_method", jsonNumber(f.added_inertia_energy_method)},
           {"method", f.method.empty() ? json(nullptr) : json(f.method)},
           {"estimate", f.basis.empty() ? json(nullptr) : json(f.estimate)},
           {"basis", f.basis.empty() ? json(nullptr) : json(f.basis)}};
@@ -120,10 +119,10 @@ json flywheelSizingJson(const FlywheelSizing& f) {
 
 // The coupling torque against the coupling's rating; the verdict comes from the checks.
 json couplingSizingJson(const CouplingSizing& c, const json& check) {
-  return {{"mean", num(c.mean)}, {"peak", num(c.peak)}, {"swing", num(c.swing)},
-          {"rated_torque", num(c.rating)}, {"peak_over_rating", num(c.peak_over_rating)},
-          {"peak_whole_run", num(c.peak_whole_run)}, {"t_peak_whole_run", num(c.t_peak_whole_run)},
-          {"peak_over_rating_whole_run", num(c.peak_over_rating_whole_run)},
+  return {{"mean", jsonNumber(c.mean)}, {"peak", jsonNumber(c.peak)}, {"swing", jsonNumber(c.swing)},
+          {"rated_torque", jsonNumber(c.rating)}, {"peak_over_rating", jsonNumber(c.peak_over_rating)},
+          {"peak_whole_run", jsonNumber(c.peak_whole_run)}, {"t_peak_whole_run", jsonNumber(c.t_peak_whole_run)},
+          {"peak_over_rating_whole_run", jsonNumber(c.peak_over_rating_whole_run)},
           {"check", check}};
 }
 
@@ -156,8 +155,8 @@ json checkVerdict(const std::vector<SizingCheck>& checks, const char* name) {
 
 json sizingJson(const DriveSizing& s) {
   json j;
-  j["window"] = {{"t_begin", num(s.t_begin)}, {"t_end", num(s.t_end)}, {"revolutions", num(s.revolutions)}};
-  j["whole_run"] = {{"t_begin", num(s.run_t_begin)}, {"t_end", num(s.run_t_end)}};
+  j["window"] = {{"t_begin", jsonNumber(s.t_begin)}, {"t_end", jsonNumber(s.t_end)}, {"revolutions", jsonNumber(s.revolutions)}};
+  j["whole_run"] = {{"t_begin", jsonNumber(s.run_t_begin)}, {"t_end", jsonNumber(s.run_t_end)}};
   j["motion"] = s.motion;
   json checks = json::array();
   for (const SizingCheck& c : s.checks) checks.push_back(sizingCheckJson(c));

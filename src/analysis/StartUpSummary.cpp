@@ -11,7 +11,6 @@ namespace {
 
 using nlohmann::json;
 
-json num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 double ratio(double a, double b) { return std::isfinite(a) && std::isfinite(b) && b > 0 ? a / b : NAN; }
 
 std::string f(const json& v, const char* format, double scale = 1.0) {
@@ -42,20 +41,20 @@ std::string stopText(const json& stop) {
 
 json currentLimitJson(const StartUpCurrentLimit& c) {
   if (!c.applies) return nullptr;
-  return {{"limit", num(c.limit)},
-          {"bypass_speed", num(c.bypass_speed)},
-          {"max_start_time", num(c.max_start_time)},
+  return {{"limit", jsonNumber(c.limit)},
+          {"bypass_speed", jsonNumber(c.bypass_speed)},
+          {"max_start_time", jsonNumber(c.max_start_time)},
           {"outcome", c.outcome},
-          {"end_time", num(c.end_time)},
-          {"held_time", num(c.held_time)},
-          {"binding_from", num(c.binding_from)},
-          {"voltage_min", num(c.voltage_min)},
-          {"current_peak", num(c.current_peak)},
-          {"peak_over_limit", num(ratio(c.current_peak, c.limit))},
-          {"standstill_voltage", num(c.standstill_voltage)},
-          {"standstill_torque_crank", num(c.standstill_torque_crank)},
-          {"breakaway_limit", num(c.breakaway_limit)},
-          {"rotor_speed_max", num(c.rotor_speed_max)},
+          {"end_time", jsonNumber(c.end_time)},
+          {"held_time", jsonNumber(c.held_time)},
+          {"binding_from", jsonNumber(c.binding_from)},
+          {"voltage_min", jsonNumber(c.voltage_min)},
+          {"current_peak", jsonNumber(c.current_peak)},
+          {"peak_over_limit", jsonNumber(ratio(c.current_peak, c.limit))},
+          {"standstill_voltage", jsonNumber(c.standstill_voltage)},
+          {"standstill_torque_crank", jsonNumber(c.standstill_torque_crank)},
+          {"breakaway_limit", jsonNumber(c.breakaway_limit)},
+          {"rotor_speed_max", jsonNumber(c.rotor_speed_max)},
           {"stopped_the_start", c.stopped_the_start}};
 }
 
@@ -101,53 +100,53 @@ void addSwitchOnJson(json& j, const StartUp& s) {
 
 // The starting torque (at switch-on, rated, held at standstill) against the load at the start angle.
 void addStartingTorqueJson(json& j, const StartUp& s) {
-  j["starting_torque_crank"] = num(s.starting_torque_crank);
-  j["starting_torque_rated_crank"] = num(s.starting_torque_rated_crank);
-  j["largest_torque_crank"] = num(s.largest_torque_crank);
+  j["starting_torque_crank"] = jsonNumber(s.starting_torque_crank);
+  j["starting_torque_rated_crank"] = jsonNumber(s.starting_torque_rated_crank);
+  j["largest_torque_crank"] = jsonNumber(s.largest_torque_crank);
   j["held_supply"] = s.held_supply;
   j["held_supply_is_rated"] = s.held_supply_is_rated;
-  j["starting_torque_held_crank"] = num(s.starting_torque_held_crank);
-  j["largest_torque_held_crank"] = num(s.largest_torque_held_crank);
-  j["load_torque_start"] = num(s.load_torque_start);
-  j["load_torque_mean"] = num(s.load_torque_mean);
+  j["starting_torque_held_crank"] = jsonNumber(s.starting_torque_held_crank);
+  j["largest_torque_held_crank"] = jsonNumber(s.largest_torque_held_crank);
+  j["load_torque_start"] = jsonNumber(s.load_torque_start);
+  j["load_torque_mean"] = jsonNumber(s.load_torque_mean);
   j["can_start_from_rest"] = s.can_start_from_rest < 0 ? json(nullptr) : json(s.can_start_from_rest == 1);
-  j["start_load_ratio"] = num(s.start_load_ratio);
+  j["start_load_ratio"] = jsonNumber(s.start_load_ratio);
   j["stall_cause"] = s.stall_cause.empty() ? json(nullptr) : json(s.stall_cause);
 }
 
 // The start's peaks against steady running's: motor torque, coupling torque, each joint.
 void addStartPeaksJson(json& j, const StartUp& s) {
-  j["motor_torque"] = {{"peak", num(s.motor_torque_peak)},
-                       {"min", num(s.motor_torque_min)},
-                       {"steady_peak", num(s.motor_torque_steady_peak)},
-                       {"ratio", num(ratio(s.motor_torque_peak, s.motor_torque_steady_peak))}};
-  j["coupling_torque"] = {{"peak", num(s.coupling_torque_peak)},
-                          {"steady_peak", num(s.coupling_torque_steady_peak)},
-                          {"ratio", num(ratio(s.coupling_torque_peak, s.coupling_torque_steady_peak))}};
+  j["motor_torque"] = {{"peak", jsonNumber(s.motor_torque_peak)},
+                       {"min", jsonNumber(s.motor_torque_min)},
+                       {"steady_peak", jsonNumber(s.motor_torque_steady_peak)},
+                       {"ratio", jsonNumber(ratio(s.motor_torque_peak, s.motor_torque_steady_peak))}};
+  j["coupling_torque"] = {{"peak", jsonNumber(s.coupling_torque_peak)},
+                          {"steady_peak", jsonNumber(s.coupling_torque_steady_peak)},
+                          {"ratio", jsonNumber(ratio(s.coupling_torque_peak, s.coupling_torque_steady_peak))}};
   json joints = json::object();
   for (const StartJointPeak& p : s.joints)
-    joints[p.joint] = {{"peak", num(p.start_peak)},
-                       {"steady_peak", num(p.steady_peak)},
-                       {"ratio", num(p.ratio)},
+    joints[p.joint] = {{"peak", jsonNumber(p.start_peak)},
+                       {"steady_peak", jsonNumber(p.steady_peak)},
+                       {"ratio", jsonNumber(p.ratio)},
                        {"column", p.column}};
   j["joints"] = joints;
 }
 
 // The stator current over the start: peak, RMS and I²t; null for a law without a current.
 json statorCurrentJson(const StartUp& s) {
-  return std::isfinite(s.current_peak) ? json{{"peak", num(s.current_peak)},
-                                              {"rms", num(s.current_rms)},
-                                              {"i2t", num(s.current_i2t)},
-                                              {"steady_rms", num(s.current_steady_rms)}}
+  return std::isfinite(s.current_peak) ? json{{"peak", jsonNumber(s.current_peak)},
+                                              {"rms", jsonNumber(s.current_rms)},
+                                              {"i2t", jsonNumber(s.current_i2t)},
+                                              {"steady_rms", jsonNumber(s.current_steady_rms)}}
                                         : json(nullptr);
 }
 
 // After a switch-off: the stopping time and the run-out; null without a switch-off.
 json stopJson(const StartUp& s) {
   return std::isfinite(s.t_off) ? json{{"t_off", s.t_off},
-                                       {"stopping_time", num(s.stopping_time)},
-                                       {"run_out_revolutions", num(s.run_out_revolutions)},
-                                       {"run_out_cart_path", num(s.run_out_cart_path)}}
+                                       {"stopping_time", jsonNumber(s.stopping_time)},
+                                       {"run_out_revolutions", jsonNumber(s.run_out_revolutions)},
+                                       {"run_out_cart_path", jsonNumber(s.run_out_cart_path)}}
                                  : json(nullptr);
 }
 
@@ -158,15 +157,15 @@ json startUpJson(const StartUp& s) {
   json j;
   addSwitchOnJson(j, s);
   addStartingTorqueJson(j, s);
-  j["steady"] = {{"mean_speed", num(s.steady_mean_speed)},
+  j["steady"] = {{"mean_speed", jsonNumber(s.steady_mean_speed)},
                  {"reached", s.steady_reached},
-                 {"t_begin", num(s.steady_begin)},
-                 {"t_end", num(s.steady_end)}};
-  j["run_up_time"] = num(s.run_up_time);
-  j["start_end"] = num(s.start_end);
+                 {"t_begin", jsonNumber(s.steady_begin)},
+                 {"t_end", jsonNumber(s.steady_end)}};
+  j["run_up_time"] = jsonNumber(s.run_up_time);
+  j["start_end"] = jsonNumber(s.start_end);
   addStartPeaksJson(j, s);
   j["stator_current"] = statorCurrentJson(s);
-  j["rotor_energy_loss"] = num(s.rotor_energy_loss);
+  j["rotor_energy_loss"] = jsonNumber(s.rotor_energy_loss);
   j["stop"] = stopJson(s);
   j["current_limit"] = currentLimitJson(s.current_limit);
   j["notes"] = s.notes;

@@ -7,23 +7,20 @@
 #include <sstream>
 
 #include "compare/ModelComparison.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-nlohmann::json num(double v) {
-  if (std::isfinite(v)) return v;
-  return nullptr;
-}
 
 nlohmann::json statsJson(const DifferenceStats& s) {
-  return {{"max_abs_diff", num(s.max_abs_diff)},
-          {"rms_diff", num(s.rms_diff)},
-          {"max_rel_diff", num(s.max_rel_diff)},
-          {"max_abs_multibody", num(s.max_abs_a)},
-          {"t_at_max_abs_diff", num(s.t_at_max)},
+  return {{"max_abs_diff", jsonNumber(s.max_abs_diff)},
+          {"rms_diff", jsonNumber(s.rms_diff)},
+          {"max_rel_diff", jsonNumber(s.max_rel_diff)},
+          {"max_abs_multibody", jsonNumber(s.max_abs_a)},
+          {"t_at_max_abs_diff", jsonNumber(s.t_at_max)},
           {"samples", s.samples}};
 }
 
@@ -33,15 +30,15 @@ nlohmann::json runJson(const RunResult& r) {
           {"complete", r.stats.complete},
           {"steps", r.stats.steps},
           {"realizations", r.stats.realizations},
-          {"cpu_seconds", num(r.stats.cpu_seconds)}};
+          {"cpu_seconds", jsonNumber(r.stats.cpu_seconds)}};
 }
 
 // The compared span and how the rows were compared.
 nlohmann::json comparedJson(const ModelComparison& c) {
-  return {{"t_begin", num(c.t_begin)},
-          {"t_end", num(c.t_end)},
+  return {{"t_begin", jsonNumber(c.t_begin)},
+          {"t_end", jsonNumber(c.t_end)},
           {"rows", c.rows},
-          {"grid_max_time_offset", num(c.grid_max_time_offset)},
+          {"grid_max_time_offset", jsonNumber(c.grid_max_time_offset)},
           {"reference", "multibody"},
           {"max_rel_diff_definition", "max|multibody - reduced| / max|multibody|"},
           {"row_by_row_note",
@@ -71,21 +68,21 @@ nlohmann::json differencesDetailJson(const ModelComparison& c) {
 void steadyJson(const ModelComparison& c, nlohmann::json& j) {
   nlohmann::json steady = nlohmann::json::object();
   for (const auto& m : c.steady)
-    steady[m.name] = {{"multibody", num(m.multibody)}, {"reduced", num(m.reduced)}, {"rel_diff", num(m.rel_diff)},
+    steady[m.name] = {{"multibody", jsonNumber(m.multibody)}, {"reduced", jsonNumber(m.reduced)}, {"rel_diff", jsonNumber(m.rel_diff)},
                       {"unit", m.unit}};
   j["steady"] = steady;
   nlohmann::json shapes = nlohmann::json::object();
   for (const auto& sh : c.shapes)
-    shapes[sh.name] = {{"max_abs_diff", num(sh.max_abs_diff)}, {"rel_diff_of_swing", num(sh.rel_diff)}};
+    shapes[sh.name] = {{"max_abs_diff", jsonNumber(sh.max_abs_diff)}, {"rel_diff_of_swing", jsonNumber(sh.rel_diff)}};
   j["shape_at_same_crank_angle"] = shapes;
 }
 
 nlohmann::json speedJson(const ModelComparison& c) {
   const double cm = c.cpuMultibody(), cr = c.cpuReduced();
-  return {{"cpu_seconds_multibody", num(cm)},
-          {"cpu_seconds_reduced", num(cr)},
-          {"cpu_ratio_reduced_to_multibody", num(cm > 0 ? cr / cm : kNaN)},
-          {"speedup_reduced_over_multibody", num(cr > 0 ? cm / cr : kNaN)}};
+  return {{"cpu_seconds_multibody", jsonNumber(cm)},
+          {"cpu_seconds_reduced", jsonNumber(cr)},
+          {"cpu_ratio_reduced_to_multibody", jsonNumber(cm > 0 ? cr / cm : kNaN)},
+          {"speedup_reduced_over_multibody", jsonNumber(cr > 0 ? cm / cr : kNaN)}};
 }
 
 // Steady running, one line per metric: both models and their relative difference.
@@ -149,8 +146,8 @@ nlohmann::json comparisonJson(const ModelComparison& c) {
   j["quantities"] = quantitiesJson(c.quantities);
   j["kinetostatic_reactions"] = quantitiesJson(c.kinetostatic);
   steadyJson(c, j);
-  j["phase_drift"] = num(c.phase_drift);
-  j["mean_speed_difference"] = num(c.speed_difference);
+  j["phase_drift"] = jsonNumber(c.phase_drift);
+  j["mean_speed_difference"] = jsonNumber(c.speed_difference);
   std::vector<std::string> sentences;
   for (const auto& d : c.differences) sentences.push_back(d.sentence);
   j["differences"] = sentences;

@@ -31,10 +31,6 @@ inline std::string pct(double ours, double published) {
   std::snprintf(buf, sizeof buf, "%+.0f %%", 100.0 * (ours - published) / std::abs(published));
   return buf;
 }
-inline nlohmann::json num(double v) {
-  if (std::isfinite(v)) return v;
-  return nullptr;
-}
 inline double pub(const SweepPoint& p, const std::string& col) {
   const auto it = p.published.find(col);
   return (p.has_published && it != p.published.end()) ? it->second : kNaN;

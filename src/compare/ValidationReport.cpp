@@ -18,12 +18,12 @@ namespace {
 nlohmann::json metricsJson(const RunMetrics& m) {
   return {{"complete", m.complete},         {"status", m.status},
           {"steady", m.steady},             {"rotating", m.rotating},
-          {"omega_min", num(m.omega_min)},  {"omega_max", num(m.omega_max)},
-          {"omega_mean", num(m.omega_mean)}, {"delta", num(m.delta)},
-          {"eps_abs_max", num(m.eps_abs_max)}, {"H", num(m.H)},
-          {"k_p", num(m.k_p)},              {"coupling_torque_swing", num(m.torque_swing)},
-          {"twist_swing", num(m.twist_swing)}, {"twist_rate_swing", num(m.twist_rate_swing)},
-          {"twist_accel_swing", num(m.twist_accel_swing)}, {"cpu_seconds", num(m.cpu_seconds)}};
+          {"omega_min", jsonNumber(m.omega_min)},  {"omega_max", jsonNumber(m.omega_max)},
+          {"omega_mean", jsonNumber(m.omega_mean)}, {"delta", jsonNumber(m.delta)},
+          {"eps_abs_max", jsonNumber(m.eps_abs_max)}, {"H", jsonNumber(m.H)},
+          {"k_p", jsonNumber(m.k_p)},              {"coupling_torque_swing", jsonNumber(m.torque_swing)},
+          {"twist_swing", jsonNumber(m.twist_swing)}, {"twist_rate_swing", jsonNumber(m.twist_rate_swing)},
+          {"twist_accel_swing", jsonNumber(m.twist_accel_swing)}, {"cpu_seconds", jsonNumber(m.cpu_seconds)}};
 }
 
 nlohmann::json caseJson(const ComparisonCase& c) {
@@ -33,14 +33,14 @@ nlohmann::json caseJson(const ComparisonCase& c) {
           {"description", c.description},
           {"command", c.command},
           {"revolutions", c.revolutions},
-          {"t_end", num(c.t_end)},
-          {"accuracy", num(c.accuracy)},
-          {"max_rel_diff_omega_crank", num(c.max_rel_omega)},
-          {"max_rel_diff_coupling_torque", num(c.max_rel_torque)},
-          {"max_rel_diff_reactions_quasistatic", num(c.max_rel_reactions_quasistatic)},
-          {"max_rel_diff_reactions_kinetostatic", num(c.max_rel_reactions_kinetostatic)},
-          {"cpu_seconds_multibody", num(c.cpu_multibody)},
-          {"cpu_seconds_reduced", num(c.cpu_reduced)},
+          {"t_end", jsonNumber(c.t_end)},
+          {"accuracy", jsonNumber(c.accuracy)},
+          {"max_rel_diff_omega_crank", jsonNumber(c.max_rel_omega)},
+          {"max_rel_diff_coupling_torque", jsonNumber(c.max_rel_torque)},
+          {"max_rel_diff_reactions_quasistatic", jsonNumber(c.max_rel_reactions_quasistatic)},
+          {"max_rel_diff_reactions_kinetostatic", jsonNumber(c.max_rel_reactions_kinetostatic)},
+          {"cpu_seconds_multibody", jsonNumber(c.cpu_multibody)},
+          {"cpu_seconds_reduced", jsonNumber(c.cpu_reduced)},
           {"complete", c.complete},
           {"motion_equivalent", c.motion_equivalent},
           {"differences", c.topics},
@@ -94,7 +94,7 @@ nlohmann::json sensitivityJson(const std::vector<SensitivityRow>& rows) {
   nlohmann::json a = nlohmann::json::array();
   for (const auto& s : rows)
     a.push_back({{"paper", s.paper}, {"point", s.point}, {"change", s.change}, {"metric", s.metric},
-                 {"baseline", num(s.baseline)}, {"changed", num(s.changed)}, {"published", num(s.published)}});
+                 {"baseline", jsonNumber(s.baseline)}, {"changed", jsonNumber(s.changed)}, {"published", jsonNumber(s.published)}});
   return a;
 }
 
@@ -409,7 +409,7 @@ ValidationReport ReportWriter::build() {
 nlohmann::json ReportWriter::resultsJson() const {
   nlohmann::json j;
   j["quick"] = r_.quick;
-  j["cpu_seconds"] = num(r_.cpu_seconds);
+  j["cpu_seconds"] = jsonNumber(r_.cpu_seconds);
   j["equivalence_target"] = kEquivalenceTarget;
   j["equivalence"] = casesJson(r_.equivalence);
   j["per_cart"] = casesJson(r_.per_cart);

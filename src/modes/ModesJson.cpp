@@ -5,11 +5,11 @@
 #include <cmath>
 
 #include "modes/ModalAnalysis.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::modes {
 namespace {
 
-nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 nlohmann::json multipliersJson(const SteadyMotion& m) {
   nlohmann::json a = nlohmann::json::array();
@@ -18,9 +18,9 @@ nlohmann::json multipliersJson(const SteadyMotion& m) {
                  {"imag", c.m.mu.imag()},
                  {"modulus", c.m.modulus},
                  {"mode", toString(c.kind)},
-                 {"growth_rate", num(c.m.growth_rate)},
-                 {"frequency", num(c.m.frequency)},
-                 {"damping_ratio", num(c.m.damping_ratio)}});
+                 {"growth_rate", jsonNumber(c.m.growth_rate)},
+                 {"frequency", jsonNumber(c.m.frequency)},
+                 {"damping_ratio", jsonNumber(c.m.damping_ratio)}});
   return a;
 }
 
@@ -37,16 +37,16 @@ nlohmann::json steadyJson(const SteadyMotion& m) {
           {"stable", v.stable},
           {"max_modulus", v.max_modulus},
           {"margin", v.margin},
-          {"slowest_decay_rate", num(v.slowest_decay_rate)},
-          {"torsional_modulus", v.has_torsional ? num(v.torsional_modulus) : nlohmann::json(nullptr)},
-          {"torsional_frequency", v.has_torsional ? num(v.torsional_frequency) : nlohmann::json(nullptr)},
-          {"torsional_damping_ratio", v.has_torsional ? num(v.torsional_damping_ratio) : nlohmann::json(nullptr)},
+          {"slowest_decay_rate", jsonNumber(v.slowest_decay_rate)},
+          {"torsional_modulus", v.has_torsional ? jsonNumber(v.torsional_modulus) : nlohmann::json(nullptr)},
+          {"torsional_frequency", v.has_torsional ? jsonNumber(v.torsional_frequency) : nlohmann::json(nullptr)},
+          {"torsional_damping_ratio", v.has_torsional ? jsonNumber(v.torsional_damping_ratio) : nlohmann::json(nullptr)},
           {"torsional_resolved", v.has_torsional && v.torsional_resolved},
           {"resolution_note", "multipliers below 1e-6 are only known to be that small: their frequency and damping "
                               "ratio are not resolved by the integration"}};
 }
 
-nlohmann::json bandJson(const Band& b) { return {{"mean", num(b.mean)}, {"min", num(b.min)}, {"max", num(b.max)}}; }
+nlohmann::json bandJson(const Band& b) { return {{"mean", jsonNumber(b.mean)}, {"min", jsonNumber(b.min)}, {"max", jsonNumber(b.max)}}; }
 
 // The first estimate before any linearization: two constant inertias and the coupling between them.
 nlohmann::json twoMassJson(const ModesReport& r) {
@@ -55,8 +55,8 @@ nlohmann::json twoMassJson(const ModesReport& r) {
       {"applicable", r.two_mass.applicable},
       {"J1", r.two_mass.J1},
       {"J2_mean", r.two_mass.J2_mean},
-      {"stiffness", r.elastic ? num(r.two_mass.stiffness) : nlohmann::json(nullptr)},
-      {"p0", r.two_mass.applicable ? num(r.two_mass.p0) : nlohmann::json(nullptr)}};
+      {"stiffness", r.elastic ? jsonNumber(r.two_mass.stiffness) : nlohmann::json(nullptr)},
+      {"p0", r.two_mass.applicable ? jsonNumber(r.two_mass.p0) : nlohmann::json(nullptr)}};
 }
 
 nlohmann::json frozenModesJson(const ModesReport& r) {
@@ -76,9 +76,9 @@ nlohmann::json frozenModesJson(const ModesReport& r) {
                                                      ? nlohmann::json(nullptr)
                                                      : bandJson(m.torsional_damped)},
                   {"torsional_overdamped_angles", m.torsional_overdamped_angles},
-                  {"kinetic_energy_share", {{"motor_side", num(m.energy_motor_side)},
-                                            {"crankshaft_and_rods", num(m.energy_shaft_rods)},
-                                            {"carts", num(m.energy_carts)}}},
+                  {"kinetic_energy_share", {{"motor_side", jsonNumber(m.energy_motor_side)},
+                                            {"crankshaft_and_rods", jsonNumber(m.energy_shaft_rods)},
+                                            {"carts", jsonNumber(m.energy_carts)}}},
                   {"angles", m.angles.size()}});
   }
   return fz;
@@ -114,8 +114,8 @@ nlohmann::json campbellJson(const ModesReport& r) {
                   {"kind", c.parametric ? "parametric: 2p = k*omega" : "forced: p = k*omega"},
                   {"omega", c.omega},
                   {"frequency", c.frequency},
-                  {"omega_band_low", num(c.omega_band_low)},
-                  {"omega_band_high", num(c.omega_band_high)}});
+                  {"omega_band_low", jsonNumber(c.omega_band_low)},
+                  {"omega_band_high", jsonNumber(c.omega_band_high)}});
   cm["crossings"] = cr;
   cm["overdamped_speeds"] = r.campbell.overdamped_speeds;
   return cm;
@@ -133,12 +133,12 @@ nlohmann::json stabilityChartsJson(const ModesReport& r) {
                        {c.y_key + "_max", z.y_max},
                        {"worst_modulus", z.worst_modulus}});
     ch.push_back({{"axes", c.y_key == "omega" ? "stiffness x crank speed" : "stiffness x damping"},
-                  {"damping", num(c.fixed_damping)},
-                  {"omega", num(c.fixed_speed)},
+                  {"damping", jsonNumber(c.fixed_damping)},
+                  {"omega", jsonNumber(c.fixed_speed)},
                   {"c_range", {c.c.front(), c.c.back()}},
                   {c.y_key + "_range", {c.y.front(), c.y.back()}},
                   {"grid", {c.c.size(), c.y.size()}},
-                  {"operating_point", {{"c", num(c.operating_c)}, {c.y_key, num(c.operating_y)}}},
+                  {"operating_point", {{"c", jsonNumber(c.operating_c)}, {c.y_key, jsonNumber(c.operating_y)}}},
                   {"unstable_points", c.unstable_points},
                   {"failed_points", c.failed_points},
                   {"zones", zones}});
@@ -151,7 +151,7 @@ nlohmann::json stabilityChartsJson(const ModesReport& r) {
 nlohmann::json reducedSteadyJson(const ModesReport& r) {
   nlohmann::json j = steadyJson(r.steady);
   j["model"] = "reduced";
-  if (!r.steady.found) j["frozen_modes_at_omega"] = num(r.fallback_omega);
+  if (!r.steady.found) j["frozen_modes_at_omega"] = jsonNumber(r.fallback_omega);
   return j;
 }
 
@@ -178,7 +178,7 @@ nlohmann::json modesJson(const ModesReport& r) {
   j["steady_motion"] = reducedSteadyJson(r);
   if (r.has_multibody_steady) j["steady_motion_multibody"] = multibodySteadyJson(r);
   j["frozen_angle_modes"] = frozenModesJson(r);
-  j["models_max_relative_difference"] = num(r.model_difference);
+  j["models_max_relative_difference"] = jsonNumber(r.model_difference);
   j["excitation_orders"] = excitationOrdersJson(r);
   j["campbell"] = campbellJson(r);
   j["separation_margins"] = separationJson(r.separation);

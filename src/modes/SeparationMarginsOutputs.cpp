@@ -3,24 +3,24 @@
 
 #include "analysis/SizingCheckJson.h"
 #include "modes/SeparationMargins.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::modes {
 namespace {
-nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 nlohmann::json marginJson(const SeparationMargin& m) {
   return {{"mode", m.mode},
           {"order", m.order},
-          {"excitation_frequency", num(m.excitation)},
-          {"exciting_torque", num(m.exciting_torque)},
-          {"mode_frequency_low", num(m.p_low)},
-          {"mode_frequency_high", num(m.p_high)},
+          {"excitation_frequency", jsonNumber(m.excitation)},
+          {"exciting_torque", jsonNumber(m.exciting_torque)},
+          {"mode_frequency_low", jsonNumber(m.p_low)},
+          {"mode_frequency_high", jsonNumber(m.p_high)},
           {"mode_frequency_source", m.frequency_source},
-          {"undamped_frequency_low", num(m.undamped_low)},
-          {"undamped_frequency_high", num(m.undamped_high)},
-          {"margin", num(m.margin)},
-          {"damping_ratio", num(m.damping_ratio)},
-          {"amplification_factor", num(m.amplification)},
+          {"undamped_frequency_low", jsonNumber(m.undamped_low)},
+          {"undamped_frequency_high", jsonNumber(m.undamped_high)},
+          {"margin", jsonNumber(m.margin)},
+          {"damping_ratio", jsonNumber(m.damping_ratio)},
+          {"amplification_factor", jsonNumber(m.amplification)},
           {"verdict", m.verdict},
           {"reason", m.reason}};
 }

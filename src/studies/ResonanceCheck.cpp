@@ -329,7 +329,6 @@ RunResonance judgeRunResonance(const Scene& scene, const RunState& st, const mod
 
 namespace {
 
-nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 nlohmann::json firstEstimateJson(const RunResonance& v) {
   const ResonanceReport& r = v.first_estimate;
@@ -339,12 +338,12 @@ nlohmann::json firstEstimateJson(const RunResonance& v) {
   nlohmann::json j = {{"applicable", r.applicable},
                       {"method", "first estimate: two constant inertias (Dyomin (two rotors) eq. (10), crank side at "
                                  "its mean inertia); the verdict is resonance_verdict"},
-                      {"J1", num(r.J1)},
-                      {"J2_mean", num(r.J2_mean)},
-                      {"stiffness", num(r.stiffness)},
-                      {"p0", num(r.p0)},
-                      {"omega", num(r.omega)},
-                      {"p0_over_omega", num(r.p0 / r.omega)},
+                      {"J1", jsonNumber(r.J1)},
+                      {"J2_mean", jsonNumber(r.J2_mean)},
+                      {"stiffness", jsonNumber(r.stiffness)},
+                      {"p0", jsonNumber(r.p0)},
+                      {"omega", jsonNumber(r.omega)},
+                      {"p0_over_omega", jsonNumber(r.p0 / r.omega)},
                       {"tolerance", kResonanceTolerance},
                       {"harmonics_checked", r.orders},
                       {"harmonics_basis",
@@ -361,8 +360,8 @@ void putModalNumbers(const RunResonance& v, nlohmann::json& j) {
   const modes::ModesReport& r = *v.modal;
   const modes::Band& p = r.frozen[0].torsional;
   j["omega"] = v.omega;
-  j["analysis_omega"] = num(v.analysis_omega);
-  j["p_band"] = {{"mean", num(p.mean)}, {"min", num(p.min)}, {"max", num(p.max)}};
+  j["analysis_omega"] = jsonNumber(v.analysis_omega);
+  j["p_band"] = {{"mean", jsonNumber(p.mean)}, {"min", jsonNumber(p.min)}, {"max", jsonNumber(p.max)}};
   // The orders the verdict names (the ones that drive the coupling mode at ω); the layout's and the
   // measured ones beside them.
   j["excitation_orders"] = v.orders.forced;
@@ -372,9 +371,9 @@ void putModalNumbers(const RunResonance& v, nlohmann::json& j) {
   j["floquet_verdict"] = r.steady.verdict.text;
   j["max_multiplier_modulus"] = r.steady.verdict.max_modulus;
   j["torsional_multiplier_modulus"] =
-      r.steady.verdict.has_torsional ? num(r.steady.verdict.torsional_modulus) : nlohmann::json(nullptr);
+      r.steady.verdict.has_torsional ? jsonNumber(r.steady.verdict.torsional_modulus) : nlohmann::json(nullptr);
   bool floquet_zeta = false;
-  j["damping_ratio"] = num(verdictDampingRatio(r, &floquet_zeta));
+  j["damping_ratio"] = jsonNumber(verdictDampingRatio(r, &floquet_zeta));
   j["damping_ratio_source"] = floquet_zeta ? "Floquet multipliers" : "frozen-angle mean (Floquet multiplier below 1e-6)";
   j["warnings"] = v.warnings;
   if (!v.conclusion.empty()) j["conclusion"] = v.conclusion;
@@ -413,13 +412,13 @@ void putRunResonance(const RunResonance& v, nlohmann::json& summary) {
   if (v.verdict == "no resonance") reason = v.conclusion;
   else if (!v.warnings.empty()) reason = v.warnings.front();
   summary["resonance_verdict"] = {{"verdict", v.verdict},
-                                  {"omega", num(v.omega)},
+                                  {"omega", jsonNumber(v.omega)},
                                   {"reason", reason},
                                   {"first_estimate", v.first_estimate_status},
                                   {"line", v.verdict_line}};
   summary["stability"] = {{"verdict", v.stability},
                           {"reason", v.stability_reason},
-                          {"max_multiplier_modulus", num(v.max_multiplier_modulus)}};
+                          {"max_multiplier_modulus", jsonNumber(v.max_multiplier_modulus)}};
   for (const std::string& w : v.warnings) summary["warnings"].push_back(w);
 }
 

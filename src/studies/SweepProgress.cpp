@@ -16,6 +16,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/ReadFile.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -23,8 +24,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-double number(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : kNaN; }
+double numberOrNaN(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : kNaN; }
 
 double steadySeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -48,29 +48,29 @@ void writeLine(int fd, const std::string& path, const std::string& line) {
 
 nlohmann::json sweepPointToJson(const SweepPoint& p) {
   nlohmann::json values = nlohmann::json::array(), metrics = nlohmann::json::object();
-  for (double v : p.values) values.push_back(number(v));
+  for (double v : p.values) values.push_back(jsonNumber(v));
   const auto& names = sweepNumericMetrics();
-  for (std::size_t k = 0; k < names.size() && k < p.metrics.size(); ++k) metrics[names[k]] = number(p.metrics[k]);
+  for (std::size_t k = 0; k < names.size() && k < p.metrics.size(); ++k) metrics[names[k]] = jsonNumber(p.metrics[k]);
   return {{"texts", p.texts},         {"values", values},     {"metrics", metrics},
           {"ran", p.ran},             {"complete", p.complete}, {"steady", p.steady},
-          {"status", p.status},       {"motion", p.motion},     {"cpu_seconds", number(p.cpu_seconds)}, {"warnings", p.warnings}};
+          {"status", p.status},       {"motion", p.motion},     {"cpu_seconds", jsonNumber(p.cpu_seconds)}, {"warnings", p.warnings}};
 }
 
 SweepPoint sweepPointFromJson(const nlohmann::json& j) {
   SweepPoint p;
   p.texts = j.at("texts").get<std::vector<std::string>>();
-  for (const auto& v : j.at("values")) p.values.push_back(number(v));
+  for (const auto& v : j.at("values")) p.values.push_back(numberOrNaN(v));
   const auto& names = sweepNumericMetrics();
   const nlohmann::json& m = j.at("metrics");
   p.metrics.assign(names.size(), kNaN);
   for (std::size_t k = 0; k < names.size(); ++k)
-    if (m.contains(names[k])) p.metrics[k] = number(m[names[k]]);
+    if (m.contains(names[k])) p.metrics[k] = numberOrNaN(m[names[k]]);
   p.ran = j.at("ran").get<bool>();
   p.complete = j.at("complete").get<bool>();
   p.steady = j.at("steady").get<bool>();
   p.status = j.at("status").get<std::string>();
   p.motion = j.value("motion", std::string("not run"));
-  p.cpu_seconds = number(j.at("cpu_seconds"));
+  p.cpu_seconds = numberOrNaN(j.at("cpu_seconds"));
   p.warnings = j.at("warnings");
   return p;
 }
