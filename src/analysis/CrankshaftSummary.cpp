@@ -13,13 +13,6 @@ using nlohmann::json;
 namespace {
 
 
-std::string fmt(const json& v, const char* f) {
-  if (!v.is_number()) return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v.get<double>());
-  return buf;
-}
-
 std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); }
 
 }  // namespace
@@ -60,11 +53,11 @@ std::string crankshaftText(const json& c) {
   std::size_t q = 0;
   for (const json& t : jsonMember(c, "throws")) {
     const json& sg = q < seg.size() ? seg[q] : json();
-    o << "    throw of cart " << jsonMember(t, "cart").dump() << " at z " << fmt(jsonMember(t, "position"), "%.4g")
-      << " m: |M| " << fmt(jsonMember(t, "bending_moment_peak"), "%.4g") << " N·m; segment from "
+    o << "    throw of cart " << jsonMember(t, "cart").dump() << " at z " << jsonNumberText(jsonMember(t, "position"), "%.4g")
+      << " m: |M| " << jsonNumberText(jsonMember(t, "bending_moment_peak"), "%.4g") << " N·m; segment from "
       << (jsonMember(sg, "from_cart").is_number() ? "cart " + jsonMember(sg, "from_cart").dump() + "'s throw"
                                                   : std::string("the coupling"))
-      << ": |T| " << fmt(jsonMember(sg, "torque_peak"), "%.4g") << " N·m\n";
+      << ": |T| " << jsonNumberText(jsonMember(sg, "torque_peak"), "%.4g") << " N·m\n";
     ++q;
   }
   return o.str();

@@ -14,7 +14,6 @@ using nlohmann::json;
 
 namespace {
 
-std::string fmt(const json& v, const char* f = "%.4g") { return jsonNumberText(v, f); }
 
 std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
 
@@ -39,27 +38,27 @@ void spectrumLine(std::ostringstream& o, const char* name, const json& s) {
     return;
   }
   const json &d = jsonMember(s, "drive"), &c = jsonMember(s, "coast");
-  o << fmt(jsonMember(s, "revolutions"), "%.3g") << " revolutions (t = " << fmt(jsonMember(s, "t_begin")) << " ... "
-    << fmt(jsonMember(s, "t_end")) << " s): drive flank " << fmt(jsonMember(d, "cycles"), "%.3g") << " rev, T_eq "
-    << fmt(jsonMember(d, "equivalent_torque")) << " N·m; other flank " << fmt(jsonMember(c, "cycles"), "%.3g")
-    << " rev, T_eq " << fmt(jsonMember(c, "equivalent_torque")) << " N·m\n";
+  o << jsonNumberText(jsonMember(s, "revolutions"), "%.3g") << " revolutions (t = " << jsonNumberText(jsonMember(s, "t_begin")) << " ... "
+    << jsonNumberText(jsonMember(s, "t_end")) << " s): drive flank " << jsonNumberText(jsonMember(d, "cycles"), "%.3g") << " rev, T_eq "
+    << jsonNumberText(jsonMember(d, "equivalent_torque")) << " N·m; other flank " << jsonNumberText(jsonMember(c, "cycles"), "%.3g")
+    << " rev, T_eq " << jsonNumberText(jsonMember(c, "equivalent_torque")) << " N·m\n";
 }
 
 void gearText(std::ostringstream& o, const json& g) {
   o << "  reducer load spectrum (" << str(jsonMember(g, "method")) << "), " << str(jsonMember(g, "torque")) << ":\n"
-    << "    p = " << fmt(jsonMember(g, "exponent"), "%.3g") << ", classes of " << fmt(jsonMember(g, "class_width"))
-    << " N·m (each at its upper limit); T_n = u·η·M_n = " << fmt(jsonMember(g, "nominal_torque")) << " N·m\n";
+    << "    p = " << jsonNumberText(jsonMember(g, "exponent"), "%.3g") << ", classes of " << jsonNumberText(jsonMember(g, "class_width"))
+    << " N·m (each at its upper limit); T_n = u·η·M_n = " << jsonNumberText(jsonMember(g, "nominal_torque")) << " N·m\n";
   spectrumLine(o, "start:         ", jsonMember(g, "start"));
   spectrumLine(o, "steady window: ", jsonMember(g, "steady"));
   const json& d = jsonMember(g, "duty");
   if (applies(d))
-    o << "    duty hour:     T_eq " << fmt(jsonMember(d, "equivalent_torque")) << " N·m (" << str(jsonMember(d, "deciding_flank"))
-      << "), K_A = T_eq/T_n " << fmt(jsonMember(g, "application_factor"), "%.3g") << " (assumed "
-      << fmt(jsonMember(g, "assumed_application_factor"), "%.3g") << "); " << str(jsonMember(d, "basis")) << "\n";
+    o << "    duty hour:     T_eq " << jsonNumberText(jsonMember(d, "equivalent_torque")) << " N·m (" << str(jsonMember(d, "deciding_flank"))
+      << "), K_A = T_eq/T_n " << jsonNumberText(jsonMember(g, "application_factor"), "%.3g") << " (assumed "
+      << jsonNumberText(jsonMember(g, "assumed_application_factor"), "%.3g") << "); " << str(jsonMember(d, "basis")) << "\n";
   else
     o << "    duty hour:     n/a (" << str(jsonMember(d, "reason")) << ")\n";
-  o << "    peak |T| " << fmt(jsonMember(g, "peak")) << " N·m at t = " << fmt(jsonMember(g, "t_peak")) << " s; ratings T_2N "
-    << fmt(jsonMember(g, "rated_torque")) << ", T_2max " << fmt(jsonMember(g, "max_torque")) << " N·m (n/a: not given)\n";
+  o << "    peak |T| " << jsonNumberText(jsonMember(g, "peak")) << " N·m at t = " << jsonNumberText(jsonMember(g, "t_peak")) << " s; ratings T_2N "
+    << jsonNumberText(jsonMember(g, "rated_torque")) << ", T_2max " << jsonNumberText(jsonMember(g, "max_torque")) << " N·m (n/a: not given)\n";
 }
 
 // The duty hour's equivalent torques, or why there is none.
@@ -132,14 +131,14 @@ std::string dutyText(const json& sizing) {
   if (m.is_object()) {
     o << "  motor duty (" << str(jsonMember(m, "method")) << "): " << str(jsonMember(m, "designation")) << "\n";
     if (jsonMember(m, "start_known").is_boolean() && jsonMember(m, "start_known").get<bool>())
-      o << "    one start: t_D " << fmt(jsonMember(m, "start_time"), "%.3g") << " s, rotor heat Q_start "
-        << fmt(jsonMember(m, "start_heat"), "%.4g") << " J = " << fmt(jsonMember(m, "equivalent_locked_time"), "%.3g")
-        << " s at standstill (P_s = M_s·ω0 " << fmt(jsonMember(m, "locked_rotor_losses")) << " W; t_E "
-        << fmt(jsonMember(m, "locked_rotor_time"), "%.3g") << " s)\n"
-        << "    permissible starts Z " << fmt(jsonMember(m, "permissible_starts"), "%.3g") << " per hour (Z_0 "
-        << fmt(jsonMember(m, "no_load_starts"), "%.3g") << ", ½·J_M·ω0² " << fmt(jsonMember(m, "no_load_start_heat"))
-        << " J, steady rotor losses " << fmt(jsonMember(m, "steady_loss_share"), "%.3g")
-        << " of nominal); starting time share N·t_D/3600 s " << fmt(jsonMember(m, "starting_time_share"), "%.3g") << "\n";
+      o << "    one start: t_D " << jsonNumberText(jsonMember(m, "start_time"), "%.3g") << " s, rotor heat Q_start "
+        << jsonNumberText(jsonMember(m, "start_heat"), "%.4g") << " J = " << jsonNumberText(jsonMember(m, "equivalent_locked_time"), "%.3g")
+        << " s at standstill (P_s = M_s·ω0 " << jsonNumberText(jsonMember(m, "locked_rotor_losses")) << " W; t_E "
+        << jsonNumberText(jsonMember(m, "locked_rotor_time"), "%.3g") << " s)\n"
+        << "    permissible starts Z " << jsonNumberText(jsonMember(m, "permissible_starts"), "%.3g") << " per hour (Z_0 "
+        << jsonNumberText(jsonMember(m, "no_load_starts"), "%.3g") << ", ½·J_M·ω0² " << jsonNumberText(jsonMember(m, "no_load_start_heat"))
+        << " J, steady rotor losses " << jsonNumberText(jsonMember(m, "steady_loss_share"), "%.3g")
+        << " of nominal); starting time share N·t_D/3600 s " << jsonNumberText(jsonMember(m, "starting_time_share"), "%.3g") << "\n";
     else
       o << "    n/a (" << str(jsonMember(m, "start_unknown")) << ")\n";
   }

@@ -13,7 +13,6 @@ using nlohmann::json;
 
 namespace {
 
-std::string fmt(const json& v, const char* f) { return jsonNumberText(v, f); }
 
 std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); }
 
@@ -33,14 +32,14 @@ std::string flywheelByRunsText(const json& f, const std::string& pad) {
   if (!b.is_object()) return "";
   std::ostringstream o;
   const std::string where = str(jsonMember(b, "location"));
-  o << pad << "by runs started at " << fmt(jsonMember(b, "started_at_crank_speed"), "%.4g") << " rad/s (" << where << "):";
+  o << pad << "by runs started at " << jsonNumberText(jsonMember(b, "started_at_crank_speed"), "%.4g") << " rad/s (" << where << "):";
   for (const json& r : jsonMember(b, "runs"))
-    o << " " << fmt(jsonMember(r, "inertia"), "%.4g") << " kg·m² gives δ " << fmt(jsonMember(r, "delta"), "%.4g") << ";";
+    o << " " << jsonNumberText(jsonMember(r, "inertia"), "%.4g") << " kg·m² gives δ " << jsonNumberText(jsonMember(r, "delta"), "%.4g") << ";";
   o << "\n";
   const bool found = jsonMember(b, "found").is_boolean() && jsonMember(b, "found").get<bool>();
   if (found)
-    o << pad << "a flywheel of " << fmt(jsonMember(b, "inertia"), "%.4g") << " kg·m² on the " << where << " meets δ* = "
-      << fmt(jsonMember(f, "target_delta"), "%.4g") << " in a run (δ = " << fmt(jsonMember(b, "delta"), "%.4g") << ")\n";
+    o << pad << "a flywheel of " << jsonNumberText(jsonMember(b, "inertia"), "%.4g") << " kg·m² on the " << where << " meets δ* = "
+      << jsonNumberText(jsonMember(f, "target_delta"), "%.4g") << " in a run (δ = " << jsonNumberText(jsonMember(b, "delta"), "%.4g") << ")\n";
   if (jsonMember(b, "note").is_string()) o << pad << jsonMember(b, "note").get<std::string>() << "\n";
   return o.str();
 }
@@ -49,18 +48,18 @@ std::string flywheelByRunsText(const json& f, const std::string& pad) {
 std::string metByTheRunText(const json& f, const std::string& pad) {
   const json& basis = jsonMember(f, "basis");
   if (!basis.is_string()) return "";
-  return pad + "for δ* = " + fmt(jsonMember(f, "target_delta"), "%.4g") + ": " + basis.get<std::string>() +
-         " (δ = " + fmt(jsonMember(f, "delta"), "%.4g") + ")\n";
+  return pad + "for δ* = " + jsonNumberText(jsonMember(f, "target_delta"), "%.4g") + ": " + basis.get<std::string>() +
+         " (δ = " + jsonNumberText(jsonMember(f, "delta"), "%.4g") + ")\n";
 }
 
 // The whole flywheel at each place, and what that adds to the present one (the third trial read
 // "flywheel 1317 kg·m²" as the amount to add to the 1103 already fitted).
 std::string proposalText(const json& f, const std::string& pad) {
   std::ostringstream o;
-  o << pad << "for δ* = " << fmt(jsonMember(f, "target_delta"), "%.4g") << ", by estimate: a flywheel of "
-    << fmt(jsonMember(f, "flywheel_crankshaft"), "%.4g") << " kg·m² in all on the crankshaft ("
-    << fmt(jsonMember(f, "added_inertia_crankshaft"), "%.4g") << " more than now) or "
-    << fmt(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² in all on the motor shaft\n";
+  o << pad << "for δ* = " << jsonNumberText(jsonMember(f, "target_delta"), "%.4g") << ", by estimate: a flywheel of "
+    << jsonNumberText(jsonMember(f, "flywheel_crankshaft"), "%.4g") << " kg·m² in all on the crankshaft ("
+    << jsonNumberText(jsonMember(f, "added_inertia_crankshaft"), "%.4g") << " more than now) or "
+    << jsonNumberText(jsonMember(f, "flywheel_motor_shaft"), "%.4g") << " kg·m² in all on the motor shaft\n";
   return o.str();
 }
 
@@ -72,12 +71,12 @@ std::string estimatesText(const json& f, const std::string& pad) {
   const double J_now = jsonMember(f, "inertia_effective").is_number() ? jsonMember(f, "inertia_effective").get<double>() : NAN;
   std::ostringstream o;
   o << pad << "(the larger of two estimates of what to add: by the excess work ΔA "
-    << fmt(jsonMember(f, "excess_work"), "%.4g") << " J of a revolution\n"
-    << pad << "at constant speed, J* = ΔA/(δ*·ω̄²) = " << fmt(J_req, "%.4g")
-    << " kg·m² at the crank less the present J " << fmt(jsonMember(f, "inertia_effective"), "%.4g") << ": "
-    << (J_req.get<double>() > J_now ? fmt(json(J_req.get<double>() - J_now), "%.4g") + " kg·m²" : std::string("nothing"))
+    << jsonNumberText(jsonMember(f, "excess_work"), "%.4g") << " J of a revolution\n"
+    << pad << "at constant speed, J* = ΔA/(δ*·ω̄²) = " << jsonNumberText(J_req, "%.4g")
+    << " kg·m² at the crank less the present J " << jsonNumberText(jsonMember(f, "inertia_effective"), "%.4g") << ": "
+    << (J_req.get<double>() > J_now ? jsonNumberText(json(J_req.get<double>() - J_now), "%.4g") + " kg·m²" : std::string("nothing"))
     << ";\n"
-    << pad << "by the run's own δ·J held constant, " << fmt(jsonMember(f, "added_inertia_energy_method"), "%.4g")
+    << pad << "by the run's own δ·J held constant, " << jsonNumberText(jsonMember(f, "added_inertia_energy_method"), "%.4g")
     << " kg·m² (short where the run's δ is large);\n"
     << pad << "motor slip and coupling elasticity neglected)\n";
   return o.str();
@@ -95,7 +94,7 @@ std::string checkByRunsText(const json& f, const std::string& pad) {
   const json& run = jsonMember(check, "run_at_proposal");
   const json& smallest = jsonMember(check, "smallest_from_runs");
   if (run.is_string())
-    o << pad << "check the estimate: δ of a run with flywheel.inertia = " << fmt(jsonMember(check, "flywheel_inertia"), "%.4g")
+    o << pad << "check the estimate: δ of a run with flywheel.inertia = " << jsonNumberText(jsonMember(check, "flywheel_inertia"), "%.4g")
       << " kg·m² (" << str(jsonMember(check, "location")) << ")" << speed << ":\n      " << run.get<std::string>() << "\n";
   if (smallest.is_string())
     o << pad << "the smallest flywheel (" << str(jsonMember(check, "location")) << ") that meets δ* in steady running, from runs:\n      "
@@ -110,9 +109,9 @@ std::string flywheelText(const json& summary) {
   std::ostringstream o;
   const json& f = jsonMember(jsonMember(summary, "sizing"), "flywheel");
   const std::string pad = "                                    ";
-  o << "  flywheel                          kinetic-energy swing ΔT " << fmt(jsonMember(f, "kinetic_energy_swing"), "%.4g")
-    << " J per revolution; drive inertia at the crank J " << fmt(jsonMember(f, "inertia_effective"), "%.4g")
-    << " kg·m²; δ " << fmt(jsonMember(f, "delta"), "%.4g") << "\n";
+  o << "  flywheel                          kinetic-energy swing ΔT " << jsonNumberText(jsonMember(f, "kinetic_energy_swing"), "%.4g")
+    << " J per revolution; drive inertia at the crank J " << jsonNumberText(jsonMember(f, "inertia_effective"), "%.4g")
+    << " kg·m²; δ " << jsonNumberText(jsonMember(f, "delta"), "%.4g") << "\n";
   if (!jsonMember(f, "target_delta").is_number()) {
     o << pad << "target δ* not given (sizing.target_delta)\n";
     return o.str();
@@ -156,8 +155,8 @@ void addCheckCommands(json& c, const std::string& head, const std::string& value
   c["run_at_proposal"] = "rollerdyn simulate " + head + " --set flywheel.inertia=" + value;
   // A range that holds the estimate with room to spare.
   const double upper = std::max(10.0, 3.0 * proposal);
-  c["smallest_from_runs"] = "rollerdyn optimize " + head + " --param flywheel.inertia --range 0:" + fmt(json(upper), "%.0f") +
-                            " --minimize flywheel.inertia --constraint 'delta<=" + fmt(target_delta, "%.4g") + "'";
+  c["smallest_from_runs"] = "rollerdyn optimize " + head + " --param flywheel.inertia --range 0:" + jsonNumberText(json(upper), "%.0f") +
+                            " --minimize flywheel.inertia --constraint 'delta<=" + jsonNumberText(target_delta, "%.4g") + "'";
 }
 
 // A scene that is not a file has no command to run: the values to run by hand (`start_speed`
@@ -176,7 +175,7 @@ json flywheelChecks(const json& summary) {
   const json& proposal = jsonMember(f, motor_shaft ? "flywheel_motor_shaft" : "flywheel_crankshaft");
   if (!proposal.is_number()) return nullptr;
   // The flywheel as the console prints it, so the run checks exactly the printed value.
-  const std::string value = fmt(proposal, "%.4g");
+  const std::string value = jsonNumberText(proposal, "%.4g");
   json c = {{"flywheel_inertia", std::stod(value)}, {"location", motor_shaft ? "motor shaft" : "crankshaft"}};
   // The user's --set options; the flywheel is sized for steady running, so each run starts at this
   // run's mean crank speed: a heavy flywheel's slow start from rest (which may not settle within
@@ -184,12 +183,12 @@ json flywheelChecks(const json& summary) {
   UserOverrides u = userOverrides(summary);
   const json& w_mean = jsonMember(jsonMember(summary, "omega_crank"), "mean");
   const bool start_at_speed = !u.sets_speed && w_mean.is_number() && w_mean.get<double>() > 0;
-  if (start_at_speed) u.sets += " --set initial.crank_speed=" + fmt(w_mean, "%.4g");
+  if (start_at_speed) u.sets += " --set initial.crank_speed=" + jsonNumberText(w_mean, "%.4g");
   c["started_at_speed"] = start_at_speed;
   const json& scene = jsonMember(summary, "scene_path");
   if (!scene.is_string()) {
     c["run_at_proposal"] = c["smallest_from_runs"] = nullptr;
-    c["note"] = notAFileNote(value, start_at_speed ? fmt(w_mean, "%.4g") : std::string());
+    c["note"] = notAFileNote(value, start_at_speed ? jsonNumberText(w_mean, "%.4g") : std::string());
     return c;
   }
   addCheckCommands(c, shellWord(scene.get<std::string>()) + u.sets + modelOption(summary), value,

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "physics/SliderCrank.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -16,12 +17,6 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 constexpr double kDegPerRad = 360.0 / kTwoPi;
 
 double given(double v) { return v > 0 ? v : kNaN; }  // 0 = not given in SizingInputs
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 // y(t) of the timeseries resampled at the times tq (linear; both ascending). Returned as is
 // when the two grids are the same rows.
@@ -206,11 +201,11 @@ void rateOscillatingRodEnd(JointSizing& x, const JointRun& u) {
   x.oscillation_angle = 2.0 * u.gamma;
   x.oscillation_frequency = u.crank_frequency;
   x.rolling_elements_min = std::ceil(rollingElementsForOscillation(x.oscillation_angle) - 1e-9);
-  x.life_basis = "oscillates through 2γ = 2·asin(r/l) = " + fmt("%.4g", x.oscillation_angle * kDegPerRad) +
-                 "° once per crank revolution (f = " + fmt("%.4g", u.crank_frequency) +
+  x.life_basis = "oscillates through 2γ = 2·asin(r/l) = " + printfNumber("%.4g", x.oscillation_angle * kDegPerRad) +
+                 "° once per crank revolution (f = " + printfNumber("%.4g", u.crank_frequency) +
                  " 1/s): L10_osc = L10·180°/(2γ) oscillations, L10 = (C/P)³·10⁶ of ISO 281 (Harris and "
                  "Kotzalas (2007)), L10h = L10_osc/(3600·f). Holds only for a bearing with at least Z = " +
-                 fmt("%.0f", x.rolling_elements_min) +
+                 printfNumber("%.0f", x.rolling_elements_min) +
                  " rolling elements (its critical angle 720°/Z must not exceed 2γ); with fewer the rolling "
                  "elements' loaded zones do not overlap and the conversion does not hold";
 }

@@ -13,7 +13,6 @@ using nlohmann::json;
 
 namespace {
 
-std::string fmt(const json& v, const char* f = "%.4g") { return jsonNumberText(v, f); }
 
 std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
 
@@ -30,7 +29,7 @@ json windowJson(const WindowDamage& w) {
 // "no damage" where a life is infinite, "n/a" where the window is missing.
 std::string lifeText(const json& window, const json& life, const char* unit) {
   if (!jsonMember(window, "applies").is_boolean() || !jsonMember(window, "applies").get<bool>()) return "n/a";
-  return life.is_number() ? fmt(life, "%.3g") + unit : std::string("no damage (all cycles below a cut-off knee)");
+  return life.is_number() ? jsonNumberText(life, "%.3g") + unit : std::string("no damage (all cycles below a cut-off knee)");
 }
 
 void dominantText(std::ostringstream& o, const json& window, const std::string& unit) {
@@ -42,8 +41,8 @@ void dominantText(std::ostringstream& o, const json& window, const std::string& 
     const double d = jsonMember(c, "damage").is_number() ? jsonMember(c, "damage").get<double>() : 0.0;
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.0f %%", D > 0 ? 100.0 * d / D : 0.0);
-    o << " (" << fmt(jsonMember(c, "range")) << ", " << fmt(jsonMember(c, "mean")) << ", "
-      << fmt(jsonMember(c, "count"), "%.1f") << ", " << buf << ")";
+    o << " (" << jsonNumberText(jsonMember(c, "range")) << ", " << jsonNumberText(jsonMember(c, "mean")) << ", "
+      << jsonNumberText(jsonMember(c, "count"), "%.1f") << ", " << buf << ")";
   }
   o << "\n";
 }
@@ -108,12 +107,12 @@ std::string signalFatigueText(const json& g) {
   const std::string unit = str(jsonMember(g, "unit"));
   const json &ps = jsonMember(g, "per_start"), &st = jsonMember(g, "steady");
   o << "    " << str(jsonMember(g, "what")) << ":\n";
-  o << "      per start:  damage " << fmt(jsonMember(g, "damage_per_start"), "%.3g") << ", starts to failure "
+  o << "      per start:  damage " << jsonNumberText(jsonMember(g, "damage_per_start"), "%.3g") << ", starts to failure "
     << lifeText(ps, jsonMember(g, "starts_to_failure"), "");
   if (!jsonMember(ps, "applies").get<bool>()) o << " (" << str(jsonMember(ps, "reason")) << ")";
   o << "\n";
   dominantText(o, ps, unit);
-  o << "      per hour:   damage " << fmt(jsonMember(g, "damage_per_hour"), "%.3g") << " 1/h, hours to failure "
+  o << "      per hour:   damage " << jsonNumberText(jsonMember(g, "damage_per_hour"), "%.3g") << " 1/h, hours to failure "
     << lifeText(st, jsonMember(g, "hours_to_failure"), " h");
   if (!jsonMember(st, "applies").get<bool>()) o << " (" << str(jsonMember(st, "reason")) << ")";
   o << "\n";
@@ -136,14 +135,14 @@ std::string couplingSelectionText(const json& c) {
   if (!c.is_object()) return "";
   std::ostringstream o;
   o << "  coupling selection (" << str(jsonMember(c, "method")) << "), torques at the crank axis:\n"
-    << "    peak torque: start " << fmt(jsonMember(c, "start_peak")) << ", steady " << fmt(jsonMember(c, "steady_peak"))
-    << " N·m; vibratory amplitude T_W " << fmt(jsonMember(c, "vibratory_amplitude")) << " N·m at f = "
-    << fmt(jsonMember(c, "excitation_frequency")) << " Hz (S_f " << fmt(jsonMember(c, "S_f"), "%.3g")
-    << "); damping power P_W " << fmt(jsonMember(c, "damping_power_run")) << " W\n"
-    << "    factors S_t " << fmt(jsonMember(c, "S_t"), "%.3g") << ", S_z " << fmt(jsonMember(c, "S_z"), "%.3g") << ", S_A "
-    << fmt(jsonMember(c, "S_A"), "%.3g") << "; ratings T_KN " << fmt(jsonMember(c, "rated_torque")) << ", T_Kmax "
-    << fmt(jsonMember(c, "max_torque")) << ", T_KW " << fmt(jsonMember(c, "vibratory_torque")) << " N·m, P_KW "
-    << fmt(jsonMember(c, "damping_power")) << " W (n/a: not given)\n";
+    << "    peak torque: start " << jsonNumberText(jsonMember(c, "start_peak")) << ", steady " << jsonNumberText(jsonMember(c, "steady_peak"))
+    << " N·m; vibratory amplitude T_W " << jsonNumberText(jsonMember(c, "vibratory_amplitude")) << " N·m at f = "
+    << jsonNumberText(jsonMember(c, "excitation_frequency")) << " Hz (S_f " << jsonNumberText(jsonMember(c, "S_f"), "%.3g")
+    << "); damping power P_W " << jsonNumberText(jsonMember(c, "damping_power_run")) << " W\n"
+    << "    factors S_t " << jsonNumberText(jsonMember(c, "S_t"), "%.3g") << ", S_z " << jsonNumberText(jsonMember(c, "S_z"), "%.3g") << ", S_A "
+    << jsonNumberText(jsonMember(c, "S_A"), "%.3g") << "; ratings T_KN " << jsonNumberText(jsonMember(c, "rated_torque")) << ", T_Kmax "
+    << jsonNumberText(jsonMember(c, "max_torque")) << ", T_KW " << jsonNumberText(jsonMember(c, "vibratory_torque")) << " N·m, P_KW "
+    << jsonNumberText(jsonMember(c, "damping_power")) << " W (n/a: not given)\n";
   return o.str();
 }
 

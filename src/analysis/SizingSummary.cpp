@@ -52,13 +52,6 @@ json jointRowJson(const JointSizing& j) {
 const char* kJointKinds[] = {"guide_roller_front", "guide_roller_rear", "rod_end", "crank_pin",
                              "main_bearing"};
 
-std::string fmt(const json& v, const char* f, double scale = 1.0) {
-  if (!v.is_number()) return "n/a";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v.get<double>() * scale);
-  return buf;
-}
-
 // The motor over the whole run: torque, rotor losses and heating, the start's heat, line power, slip.
 json motorWholeRunJson(const MotorWholeRun& r) {
   return {{"torque_shaft", {{"mean", jsonNumber(r.torque_shaft_mean)}, {"rms", jsonNumber(r.torque_shaft_rms)}, {"peak", jsonNumber(r.torque_shaft_peak)}}},
@@ -223,9 +216,9 @@ std::string jointLine(const std::string& label, const json& x) {
   char buf[256];
   std::snprintf(buf, sizeof buf, "  %-24s  %4s  %9s  %14s  %9s  %6s  %6s  %7s\n", label.c_str(),
                 jsonMember(x, "cart").is_number() ? std::to_string(jsonMember(x, "cart").get<int>()).c_str() : "-",
-                fmt(jsonMember(x, "mean"), "%.3f", 1e-3).c_str(), fmt(jsonMember(x, "amplitude"), "%.3f", 1e-3).c_str(),
-                fmt(jsonMember(x, "peak"), "%.3f", 1e-3).c_str(), fmt(jsonMember(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
-                fmt(jsonMember(x, "rating"), "%.1f", 1e-3).c_str(), fmt(jsonMember(x, "L10_hours"), "%.3g").c_str());
+                jsonNumberText(jsonMember(x, "mean"), "%.3f", 1e-3).c_str(), jsonNumberText(jsonMember(x, "amplitude"), "%.3f", 1e-3).c_str(),
+                jsonNumberText(jsonMember(x, "peak"), "%.3f", 1e-3).c_str(), jsonNumberText(jsonMember(x, "equivalent_load"), "%.3f", 1e-3).c_str(),
+                jsonNumberText(jsonMember(x, "rating"), "%.1f", 1e-3).c_str(), jsonNumberText(jsonMember(x, "L10_hours"), "%.3g").c_str());
   return buf;
 }
 
@@ -236,9 +229,9 @@ std::string sizingHeading(const json& summary, bool steady) {
   const json& wr = jsonMember(s, "whole_run");
   std::ostringstream o;
   o << "drive sizing over the " << (steady ? "steady window" : "run's last part (no steady state)") << " t = "
-    << fmt(jsonMember(w, "t_begin"), "%.4g") << " ... " << fmt(jsonMember(w, "t_end"), "%.4g") << " s ("
-    << fmt(jsonMember(w, "revolutions"), "%.3g") << " crank revolutions)"
-    << " and over the whole run t = " << fmt(jsonMember(wr, "t_begin"), "%.4g") << " ... " << fmt(jsonMember(wr, "t_end"), "%.4g")
+    << jsonNumberText(jsonMember(w, "t_begin"), "%.4g") << " ... " << jsonNumberText(jsonMember(w, "t_end"), "%.4g") << " s ("
+    << jsonNumberText(jsonMember(w, "revolutions"), "%.3g") << " crank revolutions)"
+    << " and over the whole run t = " << jsonNumberText(jsonMember(wr, "t_begin"), "%.4g") << " ... " << jsonNumberText(jsonMember(wr, "t_end"), "%.4g")
     << " s (" << wholeRunWords(summary) << ")\n"
     << "  M motor torque at the rotor, u reducer ratio, η reducer efficiency, ω_r rotor speed, ω0 synchronous speed\n";
   return o.str();
@@ -249,18 +242,18 @@ std::string motorTorqueText(const json& m, const char* win) {
   std::ostringstream o;
   const json &ts = jsonMember(m, "torque_shaft"), &tc = jsonMember(m, "torque_crank");
   const json& r = jsonMember(m, "whole_run");
-  o << "  motor torque at the rotor M       mean " << fmt(jsonMember(ts, "mean"), "%.4g") << ", RMS "
-    << fmt(jsonMember(ts, "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(ts, "peak"), "%.4g") << " N·m" << win << "\n"
-    << "                                    mean " << fmt(jsonMember(jsonMember(r, "torque_shaft"), "mean"), "%.4g") << ", RMS "
-    << fmt(jsonMember(jsonMember(r, "torque_shaft"), "rms"), "%.4g") << ", peak |M| " << fmt(jsonMember(jsonMember(r, "torque_shaft"), "peak"), "%.4g")
+  o << "  motor torque at the rotor M       mean " << jsonNumberText(jsonMember(ts, "mean"), "%.4g") << ", RMS "
+    << jsonNumberText(jsonMember(ts, "rms"), "%.4g") << ", peak |M| " << jsonNumberText(jsonMember(ts, "peak"), "%.4g") << " N·m" << win << "\n"
+    << "                                    mean " << jsonNumberText(jsonMember(jsonMember(r, "torque_shaft"), "mean"), "%.4g") << ", RMS "
+    << jsonNumberText(jsonMember(jsonMember(r, "torque_shaft"), "rms"), "%.4g") << ", peak |M| " << jsonNumberText(jsonMember(jsonMember(r, "torque_shaft"), "peak"), "%.4g")
     << " N·m (whole run)\n";
-  o << "  motor torque at the crank M·u·η   mean " << fmt(jsonMember(tc, "mean"), "%.4g") << ", RMS "
-    << fmt(jsonMember(tc, "rms"), "%.4g") << ", peak " << fmt(jsonMember(tc, "peak"), "%.4g") << " N·m" << win << "\n";
-  o << "  nominal torque M_n                " << fmt(jsonMember(m, "nominal_torque"), "%.4g") << " N·m ("
-    << str(jsonMember(m, "nominal_torque_source")) << "); breakdown torque M_kr " << fmt(jsonMember(m, "breakdown_torque"), "%.4g")
+  o << "  motor torque at the crank M·u·η   mean " << jsonNumberText(jsonMember(tc, "mean"), "%.4g") << ", RMS "
+    << jsonNumberText(jsonMember(tc, "rms"), "%.4g") << ", peak " << jsonNumberText(jsonMember(tc, "peak"), "%.4g") << " N·m" << win << "\n";
+  o << "  nominal torque M_n                " << jsonNumberText(jsonMember(m, "nominal_torque"), "%.4g") << " N·m ("
+    << str(jsonMember(m, "nominal_torque_source")) << "); breakdown torque M_kr " << jsonNumberText(jsonMember(m, "breakdown_torque"), "%.4g")
     << " N·m";
   if (jsonMember(m, "breakdown_torque_catalogue").is_number())
-    o << " (the catalogue's (M_k/M_n)·P_n/ω_n: " << fmt(jsonMember(m, "breakdown_torque_catalogue"), "%.4g") << " N·m)";
+    o << " (the catalogue's (M_k/M_n)·P_n/ω_n: " << jsonNumberText(jsonMember(m, "breakdown_torque_catalogue"), "%.4g") << " N·m)";
   o << "\n";
   return o.str();
 }
@@ -270,19 +263,19 @@ std::string motorPowerText(const json& m, const char* win) {
   std::ostringstream o;
   const json& r = jsonMember(m, "whole_run");
   const json &ps = jsonMember(m, "power_shaft"), &pl = jsonMember(m, "power_line"), &sl = jsonMember(m, "slip");
-  o << "  shaft power M·ω_r                 mean " << fmt(jsonMember(ps, "mean"), "%.4g", 1e-3) << ", peak "
-    << fmt(jsonMember(ps, "peak"), "%.4g", 1e-3) << " kW" << win << "\n";
-  o << "  power drawn from the line         mean " << fmt(jsonMember(pl, "mean"), "%.4g", 1e-3) << ", peak "
-    << fmt(jsonMember(pl, "peak"), "%.4g", 1e-3) << " kW" << win << "; mean "
-    << fmt(jsonMember(jsonMember(r, "power_line"), "mean"), "%.4g", 1e-3) << ", peak " << fmt(jsonMember(jsonMember(r, "power_line"), "peak"), "%.4g", 1e-3)
+  o << "  shaft power M·ω_r                 mean " << jsonNumberText(jsonMember(ps, "mean"), "%.4g", 1e-3) << ", peak "
+    << jsonNumberText(jsonMember(ps, "peak"), "%.4g", 1e-3) << " kW" << win << "\n";
+  o << "  power drawn from the line         mean " << jsonNumberText(jsonMember(pl, "mean"), "%.4g", 1e-3) << ", peak "
+    << jsonNumberText(jsonMember(pl, "peak"), "%.4g", 1e-3) << " kW" << win << "; mean "
+    << jsonNumberText(jsonMember(jsonMember(r, "power_line"), "mean"), "%.4g", 1e-3) << ", peak " << jsonNumberText(jsonMember(jsonMember(r, "power_line"), "peak"), "%.4g", 1e-3)
     << " kW (whole run)\n"
     << "                                    (" << str(jsonMember(m, "line_power_basis")) << ")\n";
-  o << "  slip s = 1 - ω_r/ω0               " << fmt(jsonMember(sl, "min"), "%.4f") << " ... "
-    << fmt(jsonMember(sl, "max"), "%.4f") << win << "; " << fmt(jsonMember(jsonMember(r, "slip"), "min"), "%.4f") << " ... "
-    << fmt(jsonMember(jsonMember(r, "slip"), "max"), "%.4f") << " (whole run)\n";
+  o << "  slip s = 1 - ω_r/ω0               " << jsonNumberText(jsonMember(sl, "min"), "%.4f") << " ... "
+    << jsonNumberText(jsonMember(sl, "max"), "%.4f") << win << "; " << jsonNumberText(jsonMember(jsonMember(r, "slip"), "min"), "%.4f") << " ... "
+    << jsonNumberText(jsonMember(jsonMember(r, "slip"), "max"), "%.4f") << " (whole run)\n";
   const json& e_rev = jsonMember(m, "energy_per_revolution");
   o << "  motor energy per crank revolution "
-    << (e_rev.is_number() ? fmt(e_rev, "%.4g", 1e-3) + " kJ" : std::string("n/a (the crank does not turn in the window)"))
+    << (e_rev.is_number() ? jsonNumberText(e_rev, "%.4g", 1e-3) + " kJ" : std::string("n/a (the crank does not turn in the window)"))
     << "\n";
   return o.str();
 }
@@ -297,12 +290,12 @@ std::string motorText(const json& m, const char* win) {
 std::string couplingText(const json& c, const char* win) {
   std::ostringstream o;
   if (!c.is_object()) return o.str();
-  o << "  coupling torque (crank axis)      mean " << fmt(jsonMember(c, "mean"), "%.4g") << ", peak |M| "
-    << fmt(jsonMember(c, "peak"), "%.4g") << ", swing " << fmt(jsonMember(c, "swing"), "%.4g") << " N·m" << win << "; peak |M| "
-    << fmt(jsonMember(c, "peak_whole_run"), "%.4g") << " N·m at t = " << fmt(jsonMember(c, "t_peak_whole_run"), "%.4g")
+  o << "  coupling torque (crank axis)      mean " << jsonNumberText(jsonMember(c, "mean"), "%.4g") << ", peak |M| "
+    << jsonNumberText(jsonMember(c, "peak"), "%.4g") << ", swing " << jsonNumberText(jsonMember(c, "swing"), "%.4g") << " N·m" << win << "; peak |M| "
+    << jsonNumberText(jsonMember(c, "peak_whole_run"), "%.4g") << " N·m at t = " << jsonNumberText(jsonMember(c, "t_peak_whole_run"), "%.4g")
     << " s (whole run)\n";
   o << "  coupling rated torque             "
-    << (jsonMember(c, "rated_torque").is_number() ? fmt(jsonMember(c, "rated_torque"), "%.4g") + " N·m"
+    << (jsonMember(c, "rated_torque").is_number() ? jsonNumberText(jsonMember(c, "rated_torque"), "%.4g") + " N·m"
                                           : std::string("not given (sizing.coupling_rated_torque)"))
     << "\n";
   return o.str();
@@ -317,7 +310,7 @@ std::string checksText(const json& checks) {
     const std::string v = str(jsonMember(k, "verdict"));
     char buf[200];
     std::snprintf(buf, sizeof buf, "    %-15s %8s  %-14s decided by the %s", str(jsonMember(k, "check")).c_str(),
-                  fmt(jsonMember(k, "value"), "%.3f").c_str(), v.c_str(), str(jsonMember(k, "window")).c_str());
+                  jsonNumberText(jsonMember(k, "value"), "%.3f").c_str(), v.c_str(), str(jsonMember(k, "window")).c_str());
     o << buf << "\n      " << str(jsonMember(k, "what")) << "; " << str(jsonMember(k, "reason")) << "\n";
   }
   return o.str();
@@ -333,8 +326,8 @@ std::string jointLivesText(const json& joints) {
     o << "    " << str(jsonMember(j, "what")) << ": ";
     if (jsonMember(x, "L10_hours").is_number()) {
       if (jsonMember(x, "L10_oscillations").is_number())
-        o << "L10 " << fmt(jsonMember(x, "L10_revolutions"), "%.3g") << " revolutions = "
-          << fmt(jsonMember(x, "L10_oscillations"), "%.3g") << " oscillations; ";
+        o << "L10 " << jsonNumberText(jsonMember(x, "L10_revolutions"), "%.3g") << " revolutions = "
+          << jsonNumberText(jsonMember(x, "L10_oscillations"), "%.3g") << " oscillations; ";
       o << str(jsonMember(x, "life_basis"));
     } else {
       o << "L10 n/a: " << str(jsonMember(x, "life_reason"));
@@ -362,7 +355,7 @@ std::string jointsText(const json& s) {
     // Bearings placed along the shaft (crankshaft.bearing_positions): every one of them.
     for (const json& b : jsonMember(jsonMember(joints, kJointKinds[k]), "per_cart"))
       o << jointLine("main bearing " + std::to_string(jsonMember(b, "bearing").get<int>()) + ", z " +
-                         fmt(jsonMember(b, "position"), "%.3g") + " m",
+                         jsonNumberText(jsonMember(b, "position"), "%.3g") + " m",
                      b);
   }
   o << "  P equivalent dynamic load (∫|F|³·n dt / ∫n dt)^(1/3), n the joint's rotation or swing speed; "

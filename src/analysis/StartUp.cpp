@@ -12,6 +12,7 @@
 #include "motor/BreakdownTorque.h"
 #include "motor/Supply.h"
 #include "scene/MotorModels.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -30,22 +31,16 @@ const char* methodWords(StartMethod m) {
   return "?";
 }
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 // Kloss's torque at standstill against the catalogue's, for the notes.
 std::string startingTorqueComparison(const Scene& sc, double kloss_start_rotor) {
   const MotorCatalogue& c = sc.induction.catalogue;
   if (c.given() && c.starting_torque_ratio > 0) {
     const double M_s = c.starting_torque_ratio * c.nominalTorque();
-    return "Kloss's formula gives " + fmt("%.4g", kloss_start_rotor) + " N·m at standstill against the catalogue's M_s = " +
-           fmt("%.4g", M_s) + " N·m (" + fmt("%.2g", M_s / kloss_start_rotor) +
+    return "Kloss's formula gives " + printfNumber("%.4g", kloss_start_rotor) + " N·m at standstill against the catalogue's M_s = " +
+           printfNumber("%.4g", M_s) + " N·m (" + printfNumber("%.2g", M_s / kloss_start_rotor) +
            "x; motor.catalogue.starting_torque_ratio)";
   }
-  return "Kloss's formula gives " + fmt("%.4g", kloss_start_rotor) +
+  return "Kloss's formula gives " + printfNumber("%.4g", kloss_start_rotor) +
          " N·m at standstill, typically about a third of a catalogue motor's starting torque (the rotor's deep-bar "
          "effect, which Kloss fitted to the rated and breakdown points leaves out)";
 }
@@ -67,7 +62,7 @@ void addLawNotes(const Scene& sc, const MotorLaw& law, StartUp& r) {
   const double dt = sc.simulation.output_step;
   if (info.switching_transient && dt > 1e-3)
     r.notes.push_back("I²t, the current RMS and the rotor loss are integrated over the output rows (Δt = " +
-                      fmt("%.3g", dt * 1e3) +
+                      printfNumber("%.3g", dt * 1e3) +
                       " ms); the switching transient oscillates at the supply frequency: set "
                       "simulation.output_step to 1 ms or less for these integrals and the transient's peaks.");
 }
@@ -111,12 +106,12 @@ std::string supplyWords(const SupplyState& s) {
 // the start angle; "" when it can.
 std::string breakAwayFailure(const Scene& sc, const StartUp& r, const std::string& held) {
   if (r.starting_torque_held_crank > r.load_torque_start) return "";
-  std::string cause = "the motor's starting torque " + fmt("%.4g", r.starting_torque_held_crank) + " N·m at the crank (" +
+  std::string cause = "the motor's starting torque " + printfNumber("%.4g", r.starting_torque_held_crank) + " N·m at the crank (" +
                       r.method + held + ", the law's torque at standstill × u·η) is below the load torque " +
-                      fmt("%.4g", r.load_torque_start) + " N·m at the start angle " +
-                      fmt("%.4g", sc.initial.crank_angle * 180 / M_PI) + " deg, so it cannot turn the crank forwards";
+                      printfNumber("%.4g", r.load_torque_start) + " N·m at the start angle " +
+                      printfNumber("%.4g", sc.initial.crank_angle * 180 / M_PI) + " deg, so it cannot turn the crank forwards";
   if (r.starting_torque_rated_crank > r.load_torque_start)
-    cause += " (at the rated supply it would give " + fmt("%.4g", r.starting_torque_rated_crank) + " N·m)";
+    cause += " (at the rated supply it would give " + printfNumber("%.4g", r.starting_torque_rated_crank) + " N·m)";
   return cause;
 }
 
@@ -125,12 +120,12 @@ std::string breakAwayFailure(const Scene& sc, const StartUp& r, const std::strin
 std::string runUpFailure(const StartUp& r, const std::string& held, bool first) {
   if (r.largest_torque_held_crank > r.load_torque_mean) return "";
   return std::string(first ? "the motor's" : "; and its") + " largest torque " +
-         fmt("%.4g", r.largest_torque_held_crank) + " N·m at the crank (" + r.method + held +
-         ") is below the load averaged over a revolution, " + fmt("%.4g", r.load_torque_mean) +
+         printfNumber("%.4g", r.largest_torque_held_crank) + " N·m at the crank (" + r.method + held +
+         ") is below the load averaged over a revolution, " + printfNumber("%.4g", r.load_torque_mean) +
          " N·m, so it cannot run the machine up" +
          (r.largest_torque_crank <= r.load_torque_mean ? std::string(": no steady running is possible")
                                                        : " (at the rated supply it would give " +
-                                                             fmt("%.4g", r.largest_torque_crank) + " N·m)");
+                                                             printfNumber("%.4g", r.largest_torque_crank) + " N·m)");
 }
 
 // Whether the torques allow a start from rest, and the one sentence that says why a drive does not
@@ -149,11 +144,11 @@ void judgeStartFromTorques(const Scene& sc, StartUp& r) {
   cause += runUpFailure(r, held, cause.empty());
   r.can_start_from_rest = cause.empty() ? 1 : 0;
   r.stall_cause = !cause.empty() ? cause
-                                 : "the motor can break away (" + fmt("%.4g", r.starting_torque_held_crank) +
-                                       " N·m against " + fmt("%.4g", r.load_torque_start) +
+                                 : "the motor can break away (" + printfNumber("%.4g", r.starting_torque_held_crank) +
+                                       " N·m against " + printfNumber("%.4g", r.load_torque_start) +
                                        " N·m at the start angle) and carry the mean load (" +
-                                       fmt("%.4g", r.largest_torque_held_crank) + " N·m against " +
-                                       fmt("%.4g", r.load_torque_mean) +
+                                       printfNumber("%.4g", r.largest_torque_held_crank) + " N·m against " +
+                                       printfNumber("%.4g", r.load_torque_mean) +
                                        " N·m), so the load peaks near a dead centre together with the inertia hold "
                                        "the crank back";
 }
@@ -191,7 +186,7 @@ void addStopping(const Scene& sc, const Table& ts, StartUp& r) {
   r.run_out_cart_path = largestCartPath(ts, t, i_off, i_stop + 1);
   if (std::isnan(r.stopping_time))
     r.notes.push_back(std::isfinite(t_restart) && t_restart <= t.back()
-                          ? "The motor was switched on again at t = " + fmt("%.4g", t_restart) +
+                          ? "The motor was switched on again at t = " + printfNumber("%.4g", t_restart) +
                                 " s before the machine came to rest (a restart at speed); the run-out is counted up to then."
                           : "The machine had not come to rest when the run ended; the run-out is counted up to the end.");
 }
@@ -200,8 +195,8 @@ void addStopping(const Scene& sc, const Table& ts, StartUp& r) {
 // run, which stayed in star (a user raising the changeover speed of a drive that stalls in star
 // saw the same figures and no word why). `rotor_top`: the rotor's largest speed in the run [rad/s].
 void addChangeoverNotReached(const Scene& sc, double rotor_top, StartUp& r) {
-  const std::string why = "the motor never reached the changeover speed " + fmt("%.4g", sc.motor_start.changeover_speed) +
-                          " rad/s (its largest speed " + fmt("%.4g", rotor_top) + " rad/s), so the run stayed in star";
+  const std::string why = "the motor never reached the changeover speed " + printfNumber("%.4g", sc.motor_start.changeover_speed) +
+                          " rad/s (its largest speed " + printfNumber("%.4g", rotor_top) + " rad/s), so the run stayed in star";
   for (const char* key : {"motor.start.changeover_speed", "motor.start.changeover_gap"})
     if (std::find(sc.given_keys.begin(), sc.given_keys.end(), key) != sc.given_keys.end())
       r.keys_not_reached.push_back(std::string(key) + " has no effect on this run: " + why);
@@ -315,7 +310,7 @@ bool changeoverMissed(const Scene& sc, const Table& ts, StartUp& r) {
 // sizing say the same.
 std::string notRunningUpVerdict(const Scene& sc, const RunResult& run, bool changeover_missed, StartUp& r) {
   if (r.can_start_from_rest == 1 && changeover_missed) {
-    r.stall_cause = "the changeover speed " + fmt("%.4g", sc.motor_start.changeover_speed) +
+    r.stall_cause = "the changeover speed " + printfNumber("%.4g", sc.motor_start.changeover_speed) +
                     " rad/s was never reached in star (the star torque is a third of the delta torque): the load and "
                     "the inertia hold the motor below it";
     return "the drive does not run up: " + r.stall_cause;
@@ -333,8 +328,8 @@ std::string notRunningUpVerdict(const Scene& sc, const RunResult& run, bool chan
 // The start's verdict (r.verdict).
 void judgeStart(const Scene& sc, const RunResult& run, bool turning, bool changeover_missed, StartUp& r) {
   if (r.starts)
-    r.verdict = "the drive starts: the crank reaches 95 % of its steady mean speed " + fmt("%.4g", r.steady_mean_speed) +
-                " rad/s " + fmt("%.3g", r.run_up_time) + " s after switch-on";
+    r.verdict = "the drive starts: the crank reaches 95 % of its steady mean speed " + printfNumber("%.4g", r.steady_mean_speed) +
+                " rad/s " + printfNumber("%.3g", r.run_up_time) + " s after switch-on";
   else if (r.still_starting)
     r.verdict = kStillStartingWords;
   else if (!turning || (r.can_start_from_rest == 1 && changeover_missed))
@@ -349,7 +344,7 @@ void judgeStart(const Scene& sc, const RunResult& run, bool turning, bool change
 // loads, and the stop.
 void withdrawStartAnswers(const Scene& sc, StartUp& r) {
   r.verdict = "no start from rest in this run: it begins with the machine already turning (initial.crank_speed = " +
-              fmt("%.4g", sc.initial.crank_speed) + " rad/s) and the motor running; set initial.crank_speed: 0 for "
+              printfNumber("%.4g", sc.initial.crank_speed) + " rad/s) and the motor running; set initial.crank_speed: 0 for "
               "the start-up answers";
   // Whether it could start from rest is still known from the torques: say it where the start is asked.
   if (r.can_start_from_rest == 0)

@@ -1,4 +1,5 @@
 #include "analysis/StartUpCurrentLimit.h"
+#include "io/FieldFormat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,12 +11,6 @@ namespace rollerdyn {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 // Linear interpolation of column y at time `when` (rows sorted by t); NaN outside the rows.
 double at(const std::vector<double>& t, const std::vector<double>& y, double when) {
@@ -49,16 +44,16 @@ double bypassTime(const std::vector<double>& t, const std::vector<double>& w_rot
 // Why the limit kept the drive from starting, one sentence after "the drive does not start...: ".
 std::string whyNotUpToSpeed(const StartUpCurrentLimit& c, double load_start) {
   if (std::isfinite(load_start) && c.standstill_torque_crank <= load_start)
-    return "its limit I_lim = " + fmt("%g", c.limit) + " A allows the motor at standstill only U/U_n = " +
-           fmt("%.3g", c.standstill_voltage) + ", where it gives " + fmt("%.4g", c.standstill_torque_crank) +
-           " N·m at the crank against a load of " + fmt("%.4g", load_start) +
+    return "its limit I_lim = " + printfNumber("%g", c.limit) + " A allows the motor at standstill only U/U_n = " +
+           printfNumber("%.3g", c.standstill_voltage) + ", where it gives " + printfNumber("%.4g", c.standstill_torque_crank) +
+           " N·m at the crank against a load of " + printfNumber("%.4g", load_start) +
            " N·m at the start angle, so the motor cannot break away" +
-           (std::isfinite(c.breakaway_limit) ? "; a limit above " + fmt("%.4g", c.breakaway_limit) +
+           (std::isfinite(c.breakaway_limit) ? "; a limit above " + printfNumber("%.4g", c.breakaway_limit) +
                                                    " A breaks it away there (the torque grows with the square of the "
                                                    "voltage), or choose another starting method"
                                              : std::string());
-  return "under its limit I_lim = " + fmt("%g", c.limit) + " A the motor broke away but reached at most " +
-         fmt("%.4g", c.rotor_speed_max) + " rad/s at the rotor, short of the " + fmt("%.4g", c.bypass_speed) +
+  return "under its limit I_lim = " + printfNumber("%g", c.limit) + " A the motor broke away but reached at most " +
+         printfNumber("%.4g", c.rotor_speed_max) + " rad/s at the rotor, short of the " + printfNumber("%.4g", c.bypass_speed) +
          " rad/s from which it draws no more than the limit at the rated voltage; raise the limit (more torque) or "
          "motor.start.max_start_time (more time)";
 }
@@ -127,15 +122,15 @@ void limitedRows(const Table& ts, const MotorStart& ms, const std::vector<double
 void limitVerdict(const MotorStart& ms, const Supply& supply, StartUpCurrentLimit& c, StartUp& r) {
   const std::string trip_ahead =
       std::isfinite(supply.tripTime())
-          ? "the starter trips at t = " + fmt("%.4g", supply.tripTime()) + " s (motor.start.max_start_time = " +
-                fmt("%g", ms.max_start_time) + " s) unless the rotor reaches " + fmt("%.4g", c.bypass_speed) + " rad/s"
+          ? "the starter trips at t = " + printfNumber("%.4g", supply.tripTime()) + " s (motor.start.max_start_time = " +
+                printfNumber("%g", ms.max_start_time) + " s) unless the rotor reaches " + printfNumber("%.4g", c.bypass_speed) + " rad/s"
           : "it never trips (motor.start.max_start_time = 0)";
   if (c.outcome == "tripped") {
     c.stopped_the_start = true;
     r.starts = r.still_starting = false;
     // The one cause the status and the sizing print too (StartUp::stall_cause).
-    r.stall_cause = "the soft starter tripped at t = " + fmt("%.4g", c.end_time) +
-                    " s, its start still current-limited motor.start.max_start_time = " + fmt("%g", ms.max_start_time) +
+    r.stall_cause = "the soft starter tripped at t = " + printfNumber("%.4g", c.end_time) +
+                    " s, its start still current-limited motor.start.max_start_time = " + printfNumber("%g", ms.max_start_time) +
                     " s after the switch-on: " + whyNotUpToSpeed(c, r.load_torque_start);
     r.verdict = "the drive does not start: " + r.stall_cause;
   } else if (c.outcome == "limited_at_end" && !r.starts && !r.still_starting) {
@@ -145,8 +140,8 @@ void limitVerdict(const MotorStart& ms, const Supply& supply, StartUpCurrentLimi
     r.verdict = "the drive does not start within the run: " + r.stall_cause;
   } else if (c.outcome == "limited_at_end") {
     r.verdict += "; the soft starter still limits the current when the run ends (U/U_n down to " +
-                 fmt("%.3g", c.voltage_min) + "): its bypass closes when the rotor reaches " +
-                 fmt("%.4g", c.bypass_speed) + " rad/s, and " + trip_ahead;
+                 printfNumber("%.3g", c.voltage_min) + "): its bypass closes when the rotor reaches " +
+                 printfNumber("%.4g", c.bypass_speed) + " rad/s, and " + trip_ahead;
   }
 }
 

@@ -17,11 +17,14 @@ const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k) {
   return j.is_object() && j.contains(k) ? j.at(k) : null_json;
 }
 
-std::string jsonNumberText(const nlohmann::json& v, const char* format, double scale) {
-  if (!v.is_number()) return "n/a";
+std::string printfNumber(const char* format, double v) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, format, v.get<double>() * scale);
+  std::snprintf(buf, sizeof buf, format, v);
   return buf;
+}
+
+std::string jsonNumberText(const nlohmann::json& v, const char* format, double scale) {
+  return v.is_number() ? printfNumber(format, v.get<double>() * scale) : "n/a";
 }
 
 std::string significant(double v, int digits) {

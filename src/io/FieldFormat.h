@@ -22,6 +22,9 @@ nlohmann::json jsonNumber(double v);
 const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k);
 // A JSON number as printf's `format` of v·scale; "n/a" when v is not a number (null, text).
 std::string jsonNumberText(const nlohmann::json& v, const char* format = "%.4g", double scale = 1.0);
+// v in printf's `format` ("%.1f", "%.0f %%"): a fixed layout where a column or a sentence wants
+// one, rather than significant digits.
+std::string printfNumber(const char* format, double v);
 // `digits` significant digits (%.*g), as numbers read in validation lines and study pages: the
 // one number formatter of the console, the pages and the figures (files written for programs use
 // csvNumber, 12 digits).

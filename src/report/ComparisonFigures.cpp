@@ -54,7 +54,7 @@ std::string anotherRunNote(const OutputFolder& out, const std::vector<double>& t
   }
   if (dev <= 1e-6 * std::max(scale, 1.0)) return "";
   return "comparison figures left out: comparison.csv comes from another run (its multibody "
-         "omega_crank differs from timeseries.csv by up to " + fmt("%.3g", dev) +
+         "omega_crank differs from timeseries.csv by up to " + printfNumber("%.3g", dev) +
          " rad/s); run `rollerdyn compare` with the same scene and --set into this folder";
 }
 
@@ -89,8 +89,8 @@ FigurePlan comparisonFigure(const ComparedSpan& span, const std::string& q) {
   p.title = sceneTitle(span.scene_label, "multibody vs reduced model: " + literal(q) + " (" + windowText(span.cw) + ")");
   p.xlabel = "t [s]";
   p.ylabel = literal(q) + " [" + unitOf(q) + "]";
-  p.preamble = "set key below\nset xrange [" + fmt("%.9g", tw.empty() ? 0.0 : tw.front()) + ":" +
-               fmt("%.9g", tw.empty() ? 1.0 : tw.back()) + "]";
+  p.preamble = "set key below\nset xrange [" + printfNumber("%.9g", tw.empty() ? 0.0 : tw.front()) + ":" +
+               printfNumber("%.9g", tw.empty() ? 1.0 : tw.back()) + "]";
   p.series.push_back(series("multibody (Simbody)", tw, pick(c.column(q + "_multibody"), span.rows), kBlue, 2.0));
   if (c.has(q + "_reduced"))
     p.series.push_back(series("reduced-mass model", tw, pick(c.column(q + "_reduced"), span.rows), kOrange, 1.5));

@@ -12,6 +12,7 @@
 #include "io/Table.h"
 #include "report/Gnuplot.h"
 #include "report/RunFigures.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::figures {
 
@@ -47,12 +48,6 @@ inline std::string sceneTitle(const std::string& scene_label, const std::string&
 inline std::string capitalized(std::string s) {
   if (!s.empty() && s[0] >= 'a' && s[0] <= 'z') s[0] = static_cast<char>(s[0] - 'a' + 'A');
   return s;
-}
-
-inline std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
 }
 
 // Column `name` of `table`, or an empty vector when absent.
@@ -126,14 +121,14 @@ inline const char* const kAngleLabel = "crank angle φ_2 mod 2π [rad]";
 // A dashed vertical line at time t with a label, marking where the steady window starts.
 inline std::string windowMarker(const TimeWindow& w) {
   if (!w.found) return "";
-  return "set arrow from " + fmt("%.9g", w.t_begin) + ", graph 0 to " + fmt("%.9g", w.t_begin) +
+  return "set arrow from " + printfNumber("%.9g", w.t_begin) + ", graph 0 to " + printfNumber("%.9g", w.t_begin) +
          ", graph 1 nohead dt 2 lc rgb '#555555'\nset label 'steady window' at " +
-         fmt("%.9g", w.t_begin) + ", graph 0.95 offset 0.5,0 font ',9' tc rgb '#555555'";
+         printfNumber("%.9g", w.t_begin) + ", graph 0.95 offset 0.5,0 font ',9' tc rgb '#555555'";
 }
 
 inline std::string windowText(const TimeWindow& w) {
   if (!w.found) return "whole run";
-  return "t = " + fmt("%.4g", w.t_begin) + " … " + fmt("%.4g", w.t_end) + " s";
+  return "t = " + printfNumber("%.4g", w.t_begin) + " … " + printfNumber("%.4g", w.t_end) + " s";
 }
 
 inline PlotSeries series(std::string title, std::vector<double> x, std::vector<double> y,

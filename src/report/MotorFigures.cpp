@@ -65,15 +65,15 @@ MotorMarks motorMarks(const Scene& sc) {
 
 std::string hline(double y, const char* color, const std::string& label) {
   if (!std::isfinite(y)) return "";
-  return "set arrow from graph 0, first " + fmt("%.9g", y) + " to graph 1, first " + fmt("%.9g", y) +
+  return "set arrow from graph 0, first " + printfNumber("%.9g", y) + " to graph 1, first " + printfNumber("%.9g", y) +
          " nohead dt 2 lw 1.5 lc rgb '" + color + "' front\nset label \"" + label + "\" at graph 0.01, first " +
-         fmt("%.9g", y) + " offset 0,0.6 font ',9' tc rgb '" + color + "' front\n";
+         printfNumber("%.9g", y) + " offset 0,0.6 font ',9' tc rgb '" + color + "' front\n";
 }
 
 // A marked point with a label on the Kloss curve.
 std::string markPoint(int id, double x, double y, const char* color, const std::string& label) {
   if (!std::isfinite(x) || !std::isfinite(y)) return "";
-  return "set label " + std::to_string(id) + " \"" + label + "\" at " + fmt("%.9g", x) + "," + fmt("%.9g", y) +
+  return "set label " + std::to_string(id) + " \"" + label + "\" at " + printfNumber("%.9g", x) + "," + printfNumber("%.9g", y) +
          " point pt 7 ps 1.8 lc rgb '" + color + "' offset 1,-1 font ',9' tc rgb '" + color + "' front\n";
 }
 
@@ -85,7 +85,7 @@ std::string yRangeWithLevel(const std::vector<double>& y, double level) {
     if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
   if (std::isfinite(level)) hi = std::max(hi, level);
   const double pad = 0.05 * (hi - lo);
-  return hi > lo ? "set yrange [" + fmt("%.9g", lo - pad) + ":" + fmt("%.9g", hi + pad) + "]\n" : std::string();
+  return hi > lo ? "set yrange [" + printfNumber("%.9g", lo - pad) + ":" + printfNumber("%.9g", hi + pad) + "]\n" : std::string();
 }
 
 // One of the motor's quantities drawn against time and crank angle, with its level lines.
@@ -170,7 +170,7 @@ struct MotorPlanner {
     const double scale = motorBreakdownTorque(*scene, &law) * k.u * k.eta;
     if (scale > 0 && dev > 1e-3 * scale)
       notes.push_back(std::string("motor operating point: the run's motor_torque differs from the ") + curve_name +
-                      " of scene '" + scene->name + "' by up to " + fmt("%.3g", dev) +
+                      " of scene '" + scene->name + "' by up to " + printfNumber("%.3g", dev) +
                       " N·m; was the run made with other motor data (--set motor.* / reducer.*)? "
                       "Pass the same --scene and --set to `rollerdyn plot`.");
   }
@@ -209,8 +209,8 @@ struct MotorPlanner {
     if (scene) yhi = std::max(yhi, 1.05 * k.M_kr * k.u * k.eta);
     ylo -= 0.05 * (yhi - ylo);  // the lowest operating points stay off the frame
     zoom.title = title("motor operating points, steady window (" + windowText(window) + ")");
-    zoom.preamble = "set key inside right center box opaque\nset xrange [" + fmt("%.9g", wlo - dw) + ":" +
-                    fmt("%.9g", whi + dw) + "]\nset yrange [" + fmt("%.9g", ylo) + ":" + fmt("%.9g", yhi) + "]\n";
+    zoom.preamble = "set key inside right center box opaque\nset xrange [" + printfNumber("%.9g", wlo - dw) + ":" +
+                    printfNumber("%.9g", whi + dw) + "]\nset yrange [" + printfNumber("%.9g", ylo) + ":" + printfNumber("%.9g", yhi) + "]\n";
     if (scene)
       zoom.preamble += hline(k.M_n * k.u * k.eta, kGreen, "nominal torque M_n·u·η") +
                        hline(k.M_kr * k.u * k.eta, kRed, "breakdown torque M_{kr}·u·η");

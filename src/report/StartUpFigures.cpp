@@ -17,13 +17,13 @@ std::string startUpPreamble(const nlohmann::json& su, const TimeWindow& window) 
   if (steady.value("t_begin", nlohmann::json()).is_number() && steady.value("t_end", nlohmann::json()).is_number())
     t0 = steady["t_begin"].get<double>(), t1 = steady["t_end"].get<double>();
   if (t1 > t0)
-    p += "set object 1 rect from " + fmt("%.9g", t0) + ", graph 0 to " + fmt("%.9g", t1) +
-         ", graph 1 fc rgb '#e8e8e8' fs solid noborder behind\nset label 1 'steady window' at " + fmt("%.9g", t0) +
+    p += "set object 1 rect from " + printfNumber("%.9g", t0) + ", graph 0 to " + printfNumber("%.9g", t1) +
+         ", graph 1 fc rgb '#e8e8e8' fs solid noborder behind\nset label 1 'steady window' at " + printfNumber("%.9g", t0) +
          ", graph 0.96 offset 0.5,0 font ',9' tc rgb '#555555' front\n";
   auto vline = [&p](int id, double t, const std::string& text) {
-    p += "set arrow " + std::to_string(id) + " from " + fmt("%.9g", t) + ", graph 0 to " + fmt("%.9g", t) +
+    p += "set arrow " + std::to_string(id) + " from " + printfNumber("%.9g", t) + ", graph 0 to " + printfNumber("%.9g", t) +
          ", graph 1 nohead dt 3 lc rgb '#d62728' front\nset label " + std::to_string(id + 10) + " '" + text +
-         "' at " + fmt("%.9g", t) + ", graph 0.90 offset 0.5,0 font ',9' tc rgb '#d62728' front\n";
+         "' at " + printfNumber("%.9g", t) + ", graph 0.90 offset 0.5,0 font ',9' tc rgb '#d62728' front\n";
   };
   if (su.value("t_on", nlohmann::json()).is_number()) vline(1, su["t_on"].get<double>(), "switch-on");
   const nlohmann::json& stop = su.value("stop", nlohmann::json());

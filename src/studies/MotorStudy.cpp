@@ -13,6 +13,7 @@
 #include "motor/MotorLawFactory.h"
 #include "motor/ParkLaw.h"
 #include "report/Gnuplot.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -36,12 +37,6 @@ void appendf(std::string& out, const char* format, ...) {
   va_end(args);
   big.resize(static_cast<std::size_t>(n));
   out += big;
-}
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
 }
 
 nlohmann::json machineJson(const InductionMachineParameters& m) {
@@ -121,9 +116,9 @@ double klossAtCataloguePoint(const Scene& scene, const KlossLaw& kloss, const Ca
 }
 
 std::string catalogueCsvRow(const CatalogueComparison& p, double k) {
-  return p.quantity + "," + p.symbol + "," + p.unit + "," + fmt("%.10g", p.catalogue) + "," +
-         fmt("%.10g", p.model) + "," + fmt("%.6g", p.relativeError()) + "," +
-         (std::isfinite(k) ? fmt("%.10g", k) : std::string("")) + "\n";
+  return p.quantity + "," + p.symbol + "," + p.unit + "," + printfNumber("%.10g", p.catalogue) + "," +
+         printfNumber("%.10g", p.model) + "," + printfNumber("%.6g", p.relativeError()) + "," +
+         (std::isfinite(k) ? printfNumber("%.10g", k) : std::string("")) + "\n";
 }
 
 nlohmann::json catalogueJsonRow(const CatalogueComparison& p, double k) {
@@ -144,7 +139,7 @@ std::string cataloguePoints(const Scene& scene, const KlossLaw& kloss, const std
   for (const CatalogueComparison& p : points) {
     const double k = klossAtCataloguePoint(scene, kloss, p);
     appendf(text, "  %-20s %-8s %12.5g %12.5g %+9.2f%% %12s\n", p.quantity.c_str(), p.symbol.c_str(), p.catalogue, p.model,
-                100 * p.relativeError(), std::isfinite(k) ? fmt("%.5g", k).c_str() : "–");
+                100 * p.relativeError(), std::isfinite(k) ? printfNumber("%.5g", k).c_str() : "–");
     cat_csv += catalogueCsvRow(p, k);
     pj.push_back(catalogueJsonRow(p, k));
   }
@@ -295,7 +290,7 @@ std::string topWithKeyRoom(const PlotSpec& p) {
   for (const auto& ser : p.series)
     for (double v : ser.y)
       if (std::isfinite(v)) m = std::max(m, v);
-  return fmt("%.6g", 1.45 * m);
+  return printfNumber("%.6g", 1.45 * m);
 }
 
 PlotSpec torqueSlipPlot(const Scene& scene, const Table& curves, bool machine) {
