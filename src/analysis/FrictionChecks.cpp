@@ -13,12 +13,6 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 
-std::string fmt(const char* format, double a, double b = 0, double c = 0, double d = 0, double e = 0) {
-  char buf[600];
-  std::snprintf(buf, sizeof buf, format, a, b, c, d, e);
-  return buf;
-}
-
 
 }  // namespace
 
@@ -32,7 +26,7 @@ std::string guideNormalsDescription(const Scene& scene, bool reduced_model) {
   if (!scene.hasGuideFriction()) return "";
   if (scene.loads.guide_normal_force == GuideNormalForce::Algebraic)
     return "algebraic: the friction uses the guide reactions of the same instant, solved with the motion";
-  return fmt("lagged: the friction uses the guide reactions followed with a time constant tau_N = %.3g s",
+  return printfText("lagged: the friction uses the guide reactions followed with a time constant tau_N = %.3g s",
              scene.loads.guide_friction_lag);
 }
 
@@ -42,19 +36,19 @@ std::vector<std::string> lockingWarnings(const Scene& scene) {
   if (!m.applicable) return w;
   const double lam = scene.crank.radius / scene.rods.length;
   if (m.self_locking_index >= 1.0) {
-    w.push_back(fmt("guide friction self-locks the carts: self-locking index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = "
+    w.push_back(printfText("guide friction self-locks the carts: self-locking index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = "
                     "%.3g >= 1 (f = %.3g, r/l = %.4g, β_max = %.1f°): near the largest rod angle the friction a rod "
                     "force causes exceeds that force's push, so the mechanism jams there",
                     m.self_locking_index, scene.loads.guide_friction, lam, m.beta_max * kRadToDeg));
   } else if (m.self_locking_index > kLockingIndexWarning) {
-    w.push_back(fmt("guide friction near self-locking: index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = %.3g (locks at "
+    w.push_back(printfText("guide friction near self-locking: index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = %.3g (locks at "
                     "1); at the largest rod angle the friction is amplified up to %.3gx its open-loop value "
                     "f·(|N_front| + |N_rear|) (f = %.3g, r/l = %.4g)",
                     m.self_locking_index, m.friction_amplification, scene.loads.guide_friction, lam));
   }
   const double mu = m.transmission_angle_min * kRadToDeg;
   if (mu < kTransmissionAngleWarning) {
-    w.push_back(fmt("crank-slider close to dead centre: r/l = %.4g gives a largest rod angle β_max = %.1f°, a smallest "
+    w.push_back(printfText("crank-slider close to dead centre: r/l = %.4g gives a largest rod angle β_max = %.1f°, a smallest "
                     "transmission angle of %.1f° (below the %.0f° of mechanism-design practice) and rod forces up to "
                     "1/cos β_max = %.3g times the cart's horizontal load; at r/l -> 1 the rod stands across the guide "
                     "and the mechanism jams or folds over",
@@ -80,7 +74,7 @@ std::string quasiStaticJointLoadsWarning(const Scene& scene) {
   double m_B = scene.lightestCartMassWithRodShare();
   for (int j = 0; j < scene.carts.count; ++j) m_B = std::max(m_B, scene.cartMassWithRodShare(j));
   const double inertial = m_B * r * omega * omega * (1.0 + lambda);
-  return fmt("the reduced model's joint loads (guide reactions, rod forces, bearing loads) are the papers' "
+  return printfText("the reduced model's joint loads (guide reactions, rod forces, bearing loads) are the papers' "
              "quasi-static ones: they leave out the carts' and rods' inertial forces, up to m_B·r·ω²·(1 + r/l) "
              "= %.3g kN per cart at ω = %.4g rad/s, so rod-end and guide loads can be several times too low; "
              "size joints with reduced.guide_normals: kinetostatic or with the multibody model",
@@ -108,7 +102,7 @@ std::vector<std::string> addFrictionWarnings(const Scene& scene, const RunResult
   const LockingMargins m = lockingMargins(scene);
   const double deviation = frictionWorkDeviation(run);
   if (std::isfinite(deviation) && deviation > kFrictionWorkWarning)
-    w.push_back(fmt("the reduced model's guide friction uses the papers' quasi-static normal forces (no inertial "
+    w.push_back(printfText("the reduced model's guide friction uses the papers' quasi-static normal forces (no inertial "
                     "forces): its friction work %.4g J differs by %.3g %% from the %.4g J the kinetostatic normal "
                     "forces give on the same motion; the drive torques are biased accordingly (set "
                     "reduced.guide_normals: kinetostatic)",
@@ -128,12 +122,12 @@ std::string lockingReport(const Scene& scene) {
     o << "self-locking: not applicable (cam drive: the cam pushes along the guide)\n";
     return o.str();
   }
-  o << fmt("rod angle: largest β_max = %.2f° (r/l = %.4g), smallest transmission angle %.2f°, rod force up to "
+  o << printfText("rod angle: largest β_max = %.2f° (r/l = %.4g), smallest transmission angle %.2f°, rod force up to "
            "%.3g x the cart's horizontal load\n",
            m.beta_max * kRadToDeg, scene.crank.radius / scene.rods.length, m.transmission_angle_min * kRadToDeg,
            m.rod_force_factor);
   if (scene.hasGuideFriction())
-    o << fmt("self-locking index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = %.3g (the cart locks at 1; friction amplified "
+    o << printfText("self-locking index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = %.3g (the cart locks at 1; friction amplified "
              "up to %.3gx)\n",
              m.self_locking_index, m.friction_amplification);
   else

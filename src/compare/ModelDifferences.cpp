@@ -1,16 +1,11 @@
 #include "compare/ModelDifferences.h"
+#include "io/FieldFormat.h"
 
 #include <cmath>
 #include <cstdio>
 
 namespace rollerdyn {
 namespace {
-
-std::string fmt(const char* format, double a, double b = 0.0, double c = 0.0) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf, format, a, b, c);
-  return buf;
-}
 
 // Distributed rods: the same kinetic energy in both, their inertial forces on the guides only in
 // multibody.
@@ -39,7 +34,7 @@ void reactionDifferences(const Scene& s, bool kinetostatic, std::vector<ModelDif
         "effect of each cart's d'Alembert force -m_B*a (comparison.csv also lists the reduced model's kinetostatic "
         "reactions, with that force added)";
     if (s.carts.geometry.com_height != 0.0)
-      reactions += fmt("; the cart's centre of mass %.3g m above the hinge adds the moment of that "
+      reactions += printfText("; the cart's centre of mass %.3g m above the hinge adds the moment of that "
                        "force to the guide reactions",
                        s.carts.geometry.com_height);
     d.push_back({"reactions", reactions, false, false});
@@ -53,9 +48,9 @@ void guideFrictionDifferences(const Scene& s, bool kinetostatic, std::vector<Mod
     const bool lagged = s.loads.guide_normal_force == GuideNormalForce::Lagged;
     if (!kinetostatic)
       d.push_back({"guide_friction",
-                   fmt("guide friction (f = %.3g): f*(|N_front| + |N_rear|) from the dynamic reactions (multibody, ",
+                   printfText("guide friction (f = %.3g): f*(|N_front| + |N_rear|) from the dynamic reactions (multibody, ",
                        s.loads.guide_friction) +
-                       (lagged ? fmt("followed with a lag tau_N = %.3g s", s.loads.guide_friction_lag)
+                       (lagged ? printfText("followed with a lag tau_N = %.3g s", s.loads.guide_friction_lag)
                                : std::string("solved with the motion")) +
                        ") vs from the quasi-static reactions (reduced, Loveikin, Pochka, Romasevych (2018) eq. "
                        "(14)-(25)); the friction torque, and with it crank speed and coupling torque, differ by about "
@@ -64,7 +59,7 @@ void guideFrictionDifferences(const Scene& s, bool kinetostatic, std::vector<Mod
                    true, false});
     else if (lagged)
       d.push_back({"guide_friction",
-                   fmt("guide friction (f = %.3g): the same kinetostatic normal forces in both, followed with a lag "
+                   printfText("guide friction (f = %.3g): the same kinetostatic normal forces in both, followed with a lag "
                        "tau_N = %.3g s in multibody (loads.guide_friction.normal_force = lagged) and solved with the "
                        "motion in reduced; the lag shifts the friction by about f*tau_N*dN/dt",
                        s.loads.guide_friction, s.loads.guide_friction_lag),
@@ -80,7 +75,7 @@ void kinematicsDifferences(const Scene& s, std::vector<ModelDifference>& d) {
     // exact r cos θ + l·√(1 - λ² sin² θ), at sin² θ = 1.
     const double dx = l * std::abs(std::sqrt(1.0 - lam * lam) - (1.0 - 0.5 * lam * lam));
     d.push_back({"kinematics",
-                 fmt("kinematics: truncated series for the cart position (reduced, Loveikin, Pochka, Romasevych (2018) eq. "
+                 printfText("kinematics: truncated series for the cart position (reduced, Loveikin, Pochka, Romasevych (2018) eq. "
                      "(52)-(57)) vs exact loop closure (multibody); with r/l = %.3g the cart "
                      "positions differ by up to %.3g m and the transfer function dx_B/dphi by "
                      "O((r/l)^3)*r, which changes the reduced inertia and the load torque",
@@ -93,7 +88,7 @@ void kinematicsDifferences(const Scene& s, std::vector<ModelDifference>& d) {
 void integratorDifferences(const Scene& s, std::vector<ModelDifference>& d) {
   if (s.reduced.integrator == ReducedIntegrator::Baranov)
     d.push_back({"integrator",
-                 fmt("integration: the papers' fixed-step Baranov scheme in crank angle, step "
+                 printfText("integration: the papers' fixed-step Baranov scheme in crank angle, step "
                      "%.3g deg (reduced, Loveikin and Pochka (2007) eq. (4), (10), (11)), a low-order scheme whose "
                      "error does not shrink with simulation.accuracy, vs an adaptive Simbody "
                      "integrator at relative accuracy %.3g (multibody)",
@@ -108,7 +103,7 @@ void integratorDifferences(const Scene& s, std::vector<ModelDifference>& d) {
                                  : "integration: Simbody " + s.simulation.integrator +
                                        " with constraint projection (multibody, constrained formulation)") +
                      " vs CVODE Adams-Moulton on the reduced equations (reduced), both at relative accuracy " +
-                     fmt("%.3g", s.simulation.accuracy) +
+                     printfText("%.3g", s.simulation.accuracy) +
                      "; differences of this order are integration error, not modelling",
                  false, true});
 }

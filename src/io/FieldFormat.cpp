@@ -1,6 +1,7 @@
 #include "io/FieldFormat.h"
 
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 
 namespace rollerdyn {
@@ -21,6 +22,22 @@ std::string printfNumber(const char* format, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, v);
   return buf;
+}
+
+std::string printfText(const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  char buf[1024];
+  const int n = std::vsnprintf(buf, sizeof buf, format, args);
+  va_end(args);
+  if (n < 0) return "";
+  if (static_cast<std::size_t>(n) < sizeof buf) return buf;
+  std::string big(static_cast<std::size_t>(n) + 1, '\0');  // longer than the buffer: once more, sized
+  va_start(args, format);
+  std::vsnprintf(big.data(), big.size(), format, args);
+  va_end(args);
+  big.resize(static_cast<std::size_t>(n));
+  return big;
 }
 
 std::string jsonNumberText(const nlohmann::json& v, const char* format, double scale) {

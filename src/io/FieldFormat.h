@@ -25,6 +25,9 @@ std::string jsonNumberText(const nlohmann::json& v, const char* format = "%.4g",
 // v in printf's `format` ("%.1f", "%.0f %%"): a fixed layout where a column or a sentence wants
 // one, rather than significant digits.
 std::string printfNumber(const char* format, double v);
+// A sentence printf writes (the validation lines, the models' differences, the friction checks),
+// whatever its length.
+std::string printfText(const char* format, ...) __attribute__((format(printf, 1, 2)));
 // `digits` significant digits (%.*g), as numbers read in validation lines and study pages: the
 // one number formatter of the console, the pages and the figures (files written for programs use
 // csvNumber, 12 digits).

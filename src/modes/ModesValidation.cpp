@@ -18,6 +18,7 @@
 #include "physics/TwoRotorClosedForm.h"
 #include "reduced/ReducedModel.h"
 #include "scene/SceneParser.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::modes {
 
@@ -28,16 +29,6 @@ int ModesValidationResult::failed() const {
 }
 
 namespace {
-
-std::string fmt(const char* f, ...) __attribute__((format(printf, 1, 2)));
-std::string fmt(const char* f, ...) {
-  char b[1024];
-  va_list ap;
-  va_start(ap, f);
-  std::vsnprintf(b, sizeof b, f, ap);
-  va_end(ap);
-  return b;
-}
 
 double mathieuTrace(double delta, double eps) {
   PeriodicSystem s;
@@ -97,8 +88,8 @@ ModesCheck chainAgainstHolzer(const Scene& s, nlohmann::json& out) {
   ck.name = "crankshaft_chain_holzer";
   ck.pass = worst <= 1e-9;
   std::string list;
-  for (double p : first) list += (list.empty() ? "" : ", ") + fmt("%.6g", p);
-  ck.line = fmt("modes: crankshaft as a torsional chain (4 throws 0.3 m apart, G*I_p = 7.85e5 N*m^2, 100 mm steel "
+  for (double p : first) list += (list.empty() ? "" : ", ") + printfText("%.6g", p);
+  ck.line = printfText("modes: crankshaft as a torsional chain (4 throws 0.3 m apart, G*I_p = 7.85e5 N*m^2, 100 mm steel "
                 "shaft): %zu elastic modes by the eigen-solution, %zu by Holzer's residual torque; at crank angle 0: "
                 "p = %s rad/s; largest relative difference over 4 angles %.2e (<= 1e-9): %s",
                 count_eig, count_holzer, list.c_str(), worst, ck.pass ? "holds" : "FAILS");
@@ -150,7 +141,7 @@ void checkConstantInertia(const std::string& model_dir, const CheckRecorder& rec
   ModesCheck c;
   c.name = "constant_inertia_p0";
   c.pass = worst <= 1e-8;
-  c.line = fmt("modes: constant inertia (flywheel 400 kg*m^2, carts of 1 mg, no loads): frozen-angle p reduced "
+  c.line = printfText("modes: constant inertia (flywheel 400 kg*m^2, carts of 1 mg, no loads): frozen-angle p reduced "
                "%.12g, multibody %.12g, Dyomin p0 (two-rotor closed form) %.12g rad/s; largest relative "
                "difference %.2e (<= 1e-8): %s",
                p_red, p_mb, p0, worst, verdictWord(c.pass));
@@ -186,7 +177,7 @@ void checkMathieuCurves(const CheckRecorder& rec) {
       c.name = std::string("mathieu ") + cv.name;
       const double err1 = std::abs(d - cv.first), err2 = std::abs(d - cv.second);
       c.pass = err1 <= cv.bound_first && err2 <= cv.bound_second;
-      c.line = fmt("modes: Mathieu eps = %.2f, curve delta = %s: Floquet %.10f, expansion %.10f (diff %.2e, "
+      c.line = printfText("modes: Mathieu eps = %.2f, curve delta = %s: Floquet %.10f, expansion %.10f (diff %.2e, "
                    "bound %.1e), with the next term %.10f (diff %.2e, bound %.1e): %s",
                    eps, cv.name, d, cv.first, err1, cv.bound_first, cv.second, err2, cv.bound_second,
                    verdictWord(c.pass));
@@ -224,7 +215,7 @@ void checkDampedOscillator(const CheckRecorder& rec) {
   ModesCheck c;
   c.name = "damped_constant_coefficient";
   c.pass = m.size() == 2 && worst <= 1e-9;
-  c.line = fmt("modes: damped oscillator (omega 7 rad/s, zeta 0.05, T 2.3 s): multipliers %.10f%+.10fi, "
+  c.line = printfText("modes: damped oscillator (omega 7 rad/s, zeta 0.05, T 2.3 s): multipliers %.10f%+.10fi, "
                "exp(lambda*T) %.10f%+.10fi, relative difference %.2e (<= 1e-9); zeta from them %.10f: %s",
                m.empty() ? NAN : m[0].mu.real(), m.empty() ? NAN : std::abs(m[0].mu.imag()), e.real(),
                std::abs(e.imag()), worst, m.empty() ? NAN : m[0].damping_ratio, verdictWord(c.pass));
@@ -253,7 +244,7 @@ nlohmann::json modelsAgreeOn(const std::string& model_dir, const std::string& na
   c.pass = m.found && worst <= 1e-6;
   std::string sets;
   for (const std::string& o : ov) sets += " --set " + o;
-  c.line = fmt("modes: %s%s: frozen-angle p %.6g ... %.6g rad/s over 72 angles of the steady motion; "
+  c.line = printfText("modes: %s%s: frozen-angle p %.6g ... %.6g rad/s over 72 angles of the steady motion; "
                "multibody against reduced, largest relative difference %.2e (<= 1e-6): %s",
                name.c_str(), sets.c_str(), pmin, pmax, worst, verdictWord(c.pass));
   rec.add(c);
@@ -281,7 +272,7 @@ ModesCheck unstablePointGrows(const GrowthMeasurement& u) {
   c.pass = u.ok && u.predicted_modulus > 1 && u.revolutions_fitted >= 10 &&
            std::abs(u.measured_growth / u.predicted_modulus - 1) <= 0.06 &&
            std::abs(u.peak_order - u.predicted_order) <= 1.0 / 8 + 1e-9;
-  c.line = fmt("modes: two-cart machine (Loveikin and Pochka (2007)) with an undamped elastic coupling c = 24000 "
+  c.line = printfText("modes: two-cart machine (Loveikin and Pochka (2007)) with an undamped elastic coupling c = 24000 "
                "N*m/rad: Floquet |mu| = %.4g per revolution, simulated growth %.4g per revolution over %d "
                "revolutions (ratio %.3f, within 6 %%); predicted order %.3f, spectrum peak at %.3f (resolution "
                "1/8): %s",
@@ -295,7 +286,7 @@ ModesCheck stablePointDoesNotGrow(const GrowthMeasurement& st, double worst, con
   ModesCheck c2;
   c2.name = "stable_point_does_not_grow";
   c2.pass = st.ok && st.predicted_modulus < 1 && st.deviation.size() >= 29 && worst < 1e-8;
-  c2.line = fmt("modes: same machine with k = 300 N*m*s/rad: Floquet |mu| = %.3g (stable); simulated departure from "
+  c2.line = printfText("modes: same machine with k = 300 N*m*s/rad: Floquet |mu| = %.3g (stable); simulated departure from "
                 "the steady motion at most %.2e rad over %zu revolutions (< 1e-8; the unstable run grew to %.2e): %s",
                 st.predicted_modulus, worst, st.deviation.size(), u.deviation.empty() ? NAN : u.deviation.back(),
                 verdictWord(c2.pass));
@@ -339,7 +330,7 @@ nlohmann::json paperMachineAt(const std::string& model_dir, double k, const Chec
   c.name = "paper_machine_k" + std::to_string(int(k));
   c.is_claim = false;
   c.pass = true;
-  c.line = fmt("modes: Loveikin, Pochka, Romasevych (2018) machine, c = 200000 N*m/rad, k = %.0f N*m*s/rad: %s, "
+  c.line = printfText("modes: Loveikin, Pochka, Romasevych (2018) machine, c = 200000 N*m/rad, k = %.0f N*m*s/rad: %s, "
                "largest |mu| %.3g per revolution; frozen p %.5g ... %.5g rad/s = %.3g ... %.3g times the crank "
                "speed %.4g rad/s (measurement)",
                k, m.found ? m.verdict.text.c_str() : "no steady motion", m.verdict.max_modulus, b.min, b.max,

@@ -1,4 +1,5 @@
 #include "modes/SeparationMargins.h"
+#include "io/FieldFormat.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -11,12 +12,6 @@ double distanceToBand(double f, double lo, double hi) {
   if (f < lo) return lo - f;
   if (f > hi) return f - hi;
   return 0.0;
-}
-
-std::string fmt(const char* format, double a, double b = 0, double c = 0) {
-  char buf[600];  // the longest, a FAIL's advice, is about 400 characters
-  std::snprintf(buf, sizeof buf, format, a, b, c);
-  return buf;
 }
 
 // The coupling mode's frequency band and damping: the Floquet multipliers' ω_n where they
@@ -52,14 +47,14 @@ std::vector<int> shownOrders(const ExcitationOrders& orders, double omega, doubl
 void judgeCouplingMargin(SeparationMargin& m, bool drives, double required, double exciting_largest) {
   if (!drives) {
     m.verdict = "n/a";
-    m.reason = fmt("order %.0f's harmonic is %.2g %% of the largest (< 1 %%): it does not drive the coupling mode",
+    m.reason = printfText("order %d's harmonic is %.2g %% of the largest (< 1 %%): it does not drive the coupling mode",
                    m.order, 100 * m.exciting_torque / exciting_largest);
   } else if (m.margin >= required) {
     m.verdict = "pass";
-    m.reason = fmt("k*omega = %.4g rad/s is %.3g %% away from the mode (>= 10 %%)", m.excitation, 100 * m.margin);
+    m.reason = printfText("k*omega = %.4g rad/s is %.3g %% away from the mode (>= 10 %%)", m.excitation, 100 * m.margin);
   } else {
     m.verdict = "FAIL";
-    m.reason = fmt("k*omega = %.4g rad/s is only %.3g %% away from the mode (< 10 %%); accept it only where the "
+    m.reason = printfText("k*omega = %.4g rad/s is only %.3g %% away from the mode (< 10 %%); accept it only where the "
                    "run's coupling torque over the steady window (its peak, swing and fatigue) is within the "
                    "coupling's ratings (a forced-response analysis, API 617), amplification factor 1/(2*zeta) = %.3g",
                    m.excitation, 100 * m.margin, m.amplification);
@@ -176,16 +171,16 @@ SeparationMargin chainMargin(const std::string& name, int k, double w, const Cha
 
 void judgeChainMargin(SeparationMargin& r, double required, int weak_near) {
   const std::string weak =
-      weak_near ? fmt("; %.0f weaker orders (below 1 %% of a throw's largest harmonic) lie within 10 %% of the "
+      weak_near ? printfText("; %d weaker orders (below 1 %% of a throw's largest harmonic) lie within 10 %% of the "
                       "band, too weak to drive it", weak_near)
                 : std::string();
   if (r.margin >= required) {
     r.verdict = "pass";
-    r.reason = fmt("k*omega = %.4g rad/s is %.3g %% away from the crankshaft mode's band (>= 10 %%); the nearest "
+    r.reason = printfText("k*omega = %.4g rad/s is %.3g %% away from the crankshaft mode's band (>= 10 %%); the nearest "
                    "order that drives a throw", r.excitation, 100 * r.margin) + weak;
   } else {
     r.verdict = "FAIL";
-    r.reason = fmt("k*omega = %.4g rad/s is only %.3g %% away from the crankshaft mode's band (< 10 %%): the "
+    r.reason = printfText("k*omega = %.4g rad/s is only %.3g %% away from the crankshaft mode's band (< 10 %%): the "
                    "throws' torques drive the shaft's twist near resonance; move the mode (crankshaft."
                    "torsional_stiffness, the throws' spacing) or damp it (crankshaft.torsional_damping) and "
                    "read the run's shaft_torque_k columns",

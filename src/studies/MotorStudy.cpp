@@ -19,26 +19,6 @@ namespace rollerdyn {
 
 namespace {
 
-// printf into a string.
-void appendf(std::string& out, const char* format, ...) {
-  char buf[1024];
-  va_list args;
-  va_start(args, format);
-  const int n = std::vsnprintf(buf, sizeof buf, format, args);
-  va_end(args);
-  if (n < 0) return;
-  if (static_cast<std::size_t>(n) < sizeof buf) {
-    out += buf;
-    return;
-  }
-  std::string big(static_cast<std::size_t>(n) + 1, '\0');
-  va_start(args, format);
-  std::vsnprintf(big.data(), big.size(), format, args);
-  va_end(args);
-  big.resize(static_cast<std::size_t>(n));
-  out += big;
-}
-
 nlohmann::json machineJson(const InductionMachineParameters& m) {
   nlohmann::json j = {{"per_phase_of", "equivalent star"},
                       {"R_s[Ω]", m.R_s},
@@ -60,17 +40,17 @@ nlohmann::json machineJson(const InductionMachineParameters& m) {
 std::string machineText(const InductionMachineParameters& m, WindingConnection connection) {
   std::string text;
   const double w1 = m.supplyAngularFrequency();
-  appendf(text, "  per phase of the equivalent star (U_ph = %.5g V, f_n = %.4g Hz, p = %d):\n", m.phase_voltage, m.frequency,
+  text += printfText("  per phase of the equivalent star (U_ph = %.5g V, f_n = %.4g Hz, p = %d):\n", m.phase_voltage, m.frequency,
               m.pole_pairs);
-  appendf(text, "    R_s      = %-10.5g Ω\n    L_sigma_s = %-10.5g H   (X = %.4g Ω)\n    L_m      = %-10.5g H   (X = %.4g Ω)\n",
+  text += printfText("    R_s      = %-10.5g Ω\n    L_sigma_s = %-10.5g H   (X = %.4g Ω)\n    L_m      = %-10.5g H   (X = %.4g Ω)\n",
               m.R_s, m.L_sigma_s, w1 * m.L_sigma_s, m.L_m, w1 * m.L_m);
-  appendf(text, "    R_r      = %-10.5g Ω\n    L_sigma_r = %-10.5g H   (X = %.4g Ω)\n", m.R_r[0], m.L_sigma_r[0],
+  text += printfText("    R_r      = %-10.5g Ω\n    L_sigma_r = %-10.5g H   (X = %.4g Ω)\n", m.R_r[0], m.L_sigma_r[0],
               w1 * m.L_sigma_r[0]);
   if (m.cages == 2)
-    appendf(text, "    R_r2     = %-10.5g Ω\n    L_sigma_r2 = %-9.5g H   (X = %.4g Ω)\n", m.R_r[1], m.L_sigma_r[1],
+    text += printfText("    R_r2     = %-10.5g Ω\n    L_sigma_r2 = %-9.5g H   (X = %.4g Ω)\n", m.R_r[1], m.L_sigma_r[1],
                 w1 * m.L_sigma_r[1]);
   if (connection == WindingConnection::Delta)
-    appendf(text, "  the winding is in delta: its own per-winding values are 3× these resistances and inductances\n");
+    text += printfText("  the winding is in delta: its own per-winding values are 3× these resistances and inductances\n");
   return text;
 }
 
@@ -82,14 +62,14 @@ std::unique_ptr<InductionMachineParameters> sceneMachine(const Scene& scene, std
   std::unique_ptr<InductionMachineParameters> machine;
   if (im.circuit.given()) {
     machine = std::make_unique<InductionMachineParameters>(InductionMachineParameters::fromScene(im));
-    appendf(text, "equivalent circuit from motor.circuit (%s cage):\n", machine->cages == 2 ? "double" : "single");
+    text += printfText("equivalent circuit from motor.circuit (%s cage):\n", machine->cages == 2 ? "double" : "single");
     j["machine_source"] = "motor.circuit";
     if (im.catalogue.given()) points = compareWithCatalogue(*machine, im.catalogue);
   } else if (im.catalogue.given()) {
     const CatalogueFit fit = fitSceneCatalogue(scene, im.catalogue.cages);
     machine = std::make_unique<InductionMachineParameters>(fit.machine);
     points = fit.points;
-    appendf(text, "equivalent circuit fitted to motor.catalogue (%s cage; weighted least squares, Pedra (2008); "
+    text += printfText("equivalent circuit fitted to motor.catalogue (%s cage; weighted least squares, Pedra (2008); "
                 "%d optimizer starts, %d evaluations):\n",
                 fit.machine.cages == 2 ? "double" : "single", fit.starts, fit.evaluations);
     text += "  " + fit.origin.describe() + "\n";
@@ -97,7 +77,7 @@ std::unique_ptr<InductionMachineParameters> sceneMachine(const Scene& scene, std
     j["fit"] = {{"starts", fit.starts}, {"evaluations", fit.evaluations}, {"max_relative_error", fit.max_relative_error},
                 {"origin", fit.origin.describe()}};
   } else {
-    appendf(text, "no equivalent circuit: the scene gives neither motor.circuit nor motor.catalogue (Kloss curves only)\n");
+    text += printfText("no equivalent circuit: the scene gives neither motor.circuit nor motor.catalogue (Kloss curves only)\n");
   }
   return machine;
 }
@@ -133,17 +113,17 @@ std::string cataloguePoints(const Scene& scene, const KlossLaw& kloss, const std
                             std::string& text, nlohmann::json& j) {
   if (points.empty()) return "";
   std::string cat_csv = "quantity,symbol,unit,catalogue,model,relative_error[-],kloss\n";
-  appendf(text, "\nthe model at every catalogue point (rated slip s_n = %.4g):\n", catalogueRatedSlip(scene));
-  appendf(text, "  %-20s %-8s %12s %12s %10s %12s\n", "quantity", "symbol", "catalogue", "model", "error", "Kloss");
+  text += printfText("\nthe model at every catalogue point (rated slip s_n = %.4g):\n", catalogueRatedSlip(scene));
+  text += printfText("  %-20s %-8s %12s %12s %10s %12s\n", "quantity", "symbol", "catalogue", "model", "error", "Kloss");
   nlohmann::json pj = nlohmann::json::array();
   for (const CatalogueComparison& p : points) {
     const double k = klossAtCataloguePoint(scene, kloss, p);
-    appendf(text, "  %-20s %-8s %12.5g %12.5g %+9.2f%% %12s\n", p.quantity.c_str(), p.symbol.c_str(), p.catalogue, p.model,
+    text += printfText("  %-20s %-8s %12.5g %12.5g %+9.2f%% %12s\n", p.quantity.c_str(), p.symbol.c_str(), p.catalogue, p.model,
                 100 * p.relativeError(), std::isfinite(k) ? printfNumber("%.5g", k).c_str() : "–");
     cat_csv += catalogueCsvRow(p, k);
     pj.push_back(catalogueJsonRow(p, k));
   }
-  appendf(text, "  (points 1-7: M_n, I_n, cos φ_n, η_n at s_n; M_s, I_s at standstill; M_k the largest torque; "
+  text += printfText("  (points 1-7: M_n, I_n, cos φ_n, η_n at s_n; M_s, I_s at standstill; M_k the largest torque; "
               "torques [N·m], currents RMS line [A]; the circuit has copper losses only, see docs/motor.md)\n");
   j["catalogue_points"] = pj;
   return cat_csv;
@@ -183,8 +163,8 @@ nlohmann::json klossHeader(const Scene& scene, const std::string& scene_label, c
                            std::string& text) {
   const InductionMotor& im = scene.induction;
   const auto dynamic = makeMotorLaw(scene, MotorModel::KlossDynamic);
-  appendf(text, "motor of %s (motor.model: %s)\n", scene.name.c_str(), toString(im.model));
-  appendf(text, "  Kloss: omega0 = %.5g rad/s, M_kr = %.5g N·m, s_kr = %.4g; dynamic Kloss T_e = %.4g s\n",
+  text += printfText("motor of %s (motor.model: %s)\n", scene.name.c_str(), toString(im.model));
+  text += printfText("  Kloss: omega0 = %.5g rad/s, M_kr = %.5g N·m, s_kr = %.4g; dynamic Kloss T_e = %.4g s\n",
               scene.motor.omega_sync, scene.motor.breakdown_torque, scene.motor.critical_slip,
               dynamic->fastestTimeConstant());
   return {{"scene", scene_label},
@@ -202,7 +182,7 @@ void describeMachine(const InductionMachineParameters& machine, WindingConnectio
   text += machineText(machine, connection);
   double m_k = NAN;
   const double s_k = breakdownSlip(machine, &m_k);
-  appendf(text, "  breakdown: M_k = %.5g N·m at slip %.4g; fastest electrical time constant %.3g ms\n", m_k, s_k,
+  text += printfText("  breakdown: M_k = %.5g N·m at slip %.4g; fastest electrical time constant %.3g ms\n", m_k, s_k,
               1e3 * park.fastestTimeConstant());
   j["machine"] = machineJson(machine);
   j["machine"]["breakdown_slip"] = s_k;
