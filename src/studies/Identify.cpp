@@ -17,13 +17,10 @@
 #include "studies/Identify.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-
-#include <nlopt.hpp>
 
 #include "report/SceneTable.h"
 #include "scene/DidYouMean.h"
@@ -44,50 +41,6 @@ using identify::rmsOf;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kRelativeStep = 1e-3;  // finite-difference step, relative to the key's value (header)
 constexpr double kDefaultAccuracy = 1e-8;
-
-// The global stage: DIRECT-L (Gablonsky and Kelley 2001) over the scaled box, 30 runs per key;
-// its best point (or u0 when nothing beats it) starts Levenberg–Marquardt.
-struct GlobalSearch {
-  const ResidualBatch* evaluate;
-  std::vector<double> best;
-  double best_cost = std::numeric_limits<double>::infinity();
-  const std::atomic<bool>* interrupt = nullptr;
-};
-
-double globalObjective(const std::vector<double>& u, std::vector<double>&, void* data) {
-  GlobalSearch& g = *static_cast<GlobalSearch*>(data);
-  if (g.interrupt && g.interrupt->load()) throw nlopt::forced_stop();
-  const ResidualEvaluation e = (*g.evaluate)({u})[0];
-  if (!e.ok) return 1e300;
-  double cost = 0;
-  for (double v : e.r) cost += v * v;
-  if (cost < g.best_cost) {
-    g.best_cost = cost;
-    g.best = u;
-  }
-  return cost;
-}
-
-std::vector<double> globalStart(const ResidualBatch& evaluate, const std::vector<double>& u0,
-                                const std::atomic<bool>* interrupt) {
-  const unsigned p = static_cast<unsigned>(u0.size());
-  GlobalSearch g{&evaluate, u0, std::numeric_limits<double>::infinity(), interrupt};
-  std::vector<double> scratch;
-  globalObjective(u0, scratch, &g);
-  nlopt::opt opt(nlopt::GN_DIRECT_L, p);
-  opt.set_lower_bounds(std::vector<double>(p, 0.0));
-  opt.set_upper_bounds(std::vector<double>(p, 1.0));
-  opt.set_maxeval(30 * static_cast<int>(p));
-  opt.set_min_objective(globalObjective, &g);
-  std::vector<double> u = u0;
-  double f = 0;
-  try {
-    opt.optimize(u, f);
-  } catch (const std::exception&) {
-    // stopped (interrupt, a failure inside NLopt): the best point seen so far is kept
-  }
-  return g.best;
-}
 
 std::string percent(double v) { return formatNumber(std::round(v * 1000.0) / 10.0) + " %"; }
 
