@@ -190,12 +190,13 @@ std::vector<std::vector<double>> centralDifferencePoints(const std::vector<doubl
   return points;
 }
 
-// The central-difference Jacobian at the estimate in the keys' own units (a failed side: the
-// estimate itself). Empty, with `failure` why, when both runs beside a key failed.
+// The central-difference Jacobian at the estimate in the keys' own units, at the fit's difference
+// steps (a failed side: the estimate itself). Empty, with `failure` why, when both runs beside a
+// key failed.
 std::vector<std::vector<double>> jacobianAtEstimate(const IdentifyResult& res, const std::vector<KeyMap>& keys,
-                                                    const LmOutcome& fit, const std::vector<double>& step,
-                                                    const ResidualBatch& evaluate, std::string* failure) {
-  const std::vector<std::vector<double>> points = centralDifferencePoints(fit.u, step);
+                                                    const LmOutcome& fit, const ResidualBatch& evaluate,
+                                                    std::string* failure) {
+  const std::vector<std::vector<double>> points = centralDifferencePoints(fit.u, differenceSteps(keys));
   const std::vector<ResidualEvaluation> e = evaluate(points);
   std::vector<std::vector<double>> J(fit.r.size(), std::vector<double>(keys.size(), 0.0));
   for (std::size_t k = 0; k < keys.size(); ++k) {
@@ -248,11 +249,11 @@ void failOnKeysWithoutEffect(IdentifyResult& res, const std::vector<bool>& no_ef
 // The estimate into res.keys, and at it the central-difference Jacobian in the keys' own units,
 // the covariance, correlations and warnings (a failure beside the estimate leaves no uncertainty).
 void estimateWithUncertainty(IdentifyResult& res, const std::vector<KeyMap>& keys, const LmOutcome& fit,
-                             const std::vector<double>& step, const ResidualBatch& evaluate) {
+                             const ResidualBatch& evaluate) {
   recordEstimates(res, keys, fit);
   if (fit.r.empty()) return;
   std::string failure;
-  const std::vector<std::vector<double>> J = jacobianAtEstimate(res, keys, fit, step, evaluate, &failure);
+  const std::vector<std::vector<double>> J = jacobianAtEstimate(res, keys, fit, evaluate, &failure);
   if (J.empty()) {
     res.converged = false;
     res.convergence = "the runs beside the estimate failed (" + failure + "): no uncertainty";
@@ -392,6 +393,24 @@ void reestimateSigmas(const LmOutcome& fit, const std::vector<bool>& given, std:
     if (!given[s]) sigma[s] = std::max(sigma[s] * rmsOf(fit.r, s * n_fit, (s + 1) * n_fit), 1e-9 * sigma[s]);
 }
 
+// The local fit from the search's start; when it converges and some σ_s are estimated, one refit
+// from its optimum at the σ_s its residuals give (file comment). res.iterations counts both.
+LmOutcome fitWithNoiseRefit(const IdentifyOptions& o, const std::vector<KeyMap>& keys, const ResidualBatch& evaluate,
+                            const std::vector<bool>& given, std::size_t n_fit, std::vector<double>& sigma,
+                            IdentifyResult& res) {
+  int fit_number = 1;
+  const LmSettings lm = lmSettings(o, keys, &fit_number);
+  LmOutcome fit = levenbergMarquardt(evaluate, searchStart(o, keys, evaluate), lm);
+  res.iterations = fit.iterations;
+  if (fit.converged && std::find(given.begin(), given.end(), false) != given.end()) {
+    reestimateSigmas(fit, given, n_fit, sigma);
+    fit_number = 2;
+    fit = levenbergMarquardt(evaluate, fit.u, lm);
+    res.iterations += fit.iterations;
+  }
+  return fit;
+}
+
 // The fit's outcome into the result: convergence, residuals, and each signal's noise and samples.
 void recordFit(IdentifyResult& res, const LmOutcome& fit, const std::vector<double>& sigma,
                const std::vector<bool>& given, std::size_t n_fit, std::size_t n_samples) {
@@ -424,18 +443,9 @@ IdentifyResult runIdentify(const IdentifyOptions& o) {
   std::vector<bool> given;
   std::vector<double> sigma = startingSigmas(o, d, res, given);
   const ResidualBatch evaluate = weightedResidualBatch(runs, d, sigma, n_fit);
-  int fit_number = 1;
-  const LmSettings lm = lmSettings(o, keys, &fit_number);
-  LmOutcome fit = levenbergMarquardt(evaluate, searchStart(o, keys, evaluate), lm);
-  res.iterations = fit.iterations;
-  if (fit.converged && std::find(given.begin(), given.end(), false) != given.end()) {
-    reestimateSigmas(fit, given, n_fit, sigma);
-    fit_number = 2;
-    fit = levenbergMarquardt(evaluate, fit.u, lm);
-    res.iterations += fit.iterations;
-  }
+  const LmOutcome fit = fitWithNoiseRefit(o, keys, evaluate, given, n_fit, sigma, res);
   recordFit(res, fit, sigma, given, n_fit, d.t.size());
-  estimateWithUncertainty(res, keys, fit, lm.fd_step, evaluate);
+  estimateWithUncertainty(res, keys, fit, evaluate);
   if (!fit.r.empty()) holdoutCheck(res, runs, d, fit.u, n_fit);
   res.runs = runs.runs();
   res.failed_runs = runs.failed();
