@@ -299,33 +299,37 @@ void recordPowers(double P_friction, double P_load, ModelEvaluation& e) {
 void ReducedModel::evaluate(double t, const SupplyPhase& phase, const double* y, ModelEvaluation& e,
                             bool keep_carts) const {
   readState(*this, y, e);
-  const double phi = e.phi_crank, w2 = e.omega_crank;
-  const bool friction = scene_.hasGuideFriction();
-
   // One pass over the carts, each cart's pose computed once (crankSideInertia(),
   // crankSideInertiaDerivative() and loadTorque() would compute it three times), from the same
   // per-cart terms those functions sum. Quasi-static normals: the friction is known per cart
-  // (CartStatics.h); kinetostatic: it is found below with the crank acceleration.
-  const CartPass& pass = cartPass(phi, w2);
-  const double J = pass.J, dJ = pass.dJ;
-  double M = pass.M, P_friction = pass.P_friction;
+  // (CartStatics.h); kinetostatic: solveCrankEquation() finds it with the crank acceleration.
+  const CartPass& pass = cartPass(e.phi_crank, e.omega_crank);
+  recordCartPass(pass, keep_carts, e);
+  evaluateMotor(t, phase, y, e);
+  solveCrankEquation(pass, e);
+  if (kinetostatic_ && keep_carts) kinetostaticCarts(pass, e);
+  if (checksFrictionWork()) e.friction_power_kinetostatic = kinetostaticFrictionPower(pass, e);
+}
+
+void ReducedModel::recordCartPass(const CartPass& pass, bool keep_carts, ModelEvaluation& e) const {
   e.friction_loop = pass.locked;
   e.carts.clear();  // keeps its capacity
   if (keep_carts && !kinetostatic_) e.carts.insert(e.carts.end(), pass.carts.begin(), pass.carts.end());
-  e.J_n2 = J;
-  e.dJ_n2 = dJ;
-  evaluateMotor(t, phase, y, e);
+  e.J_n2 = pass.J;
+  e.dJ_n2 = pass.dJ;
+}
+
+void ReducedModel::solveCrankEquation(const CartPass& pass, ModelEvaluation& e) const {
   const double M_drive = e.motor_torque + e.brake_torque;  // on the motor side, at the crank axis
   // The crank equation's inertia and its right-hand side without the load torque.
-  const double J_eq = rigid_ ? J_n1_ + J : J;
+  const double J_eq = rigid_ ? J_n1_ + pass.J : pass.J;
   const CouplingTorque coupling = rigid_ ? CouplingTorque{} : couplingTorque(coupling_, e.twist, e.twist_rate);
   const double drive = rigid_ ? M_drive : coupling.torque;
-  if (kinetostatic_ && friction) solveFrictionLoop(pass, J_eq, drive, e, M, P_friction);
+  double M = pass.M, P_friction = pass.P_friction;
+  if (kinetostatic_ && scene_.hasGuideFriction()) solveFrictionLoop(pass, J_eq, drive, e, M, P_friction);
   e.load_torque = M;
   drivetrainAccelerations(M_drive, drive, coupling, e);
   recordPowers(P_friction, pass.P_load, e);
-  if (kinetostatic_ && keep_carts) kinetostaticCarts(pass, e);
-  if (checksFrictionWork()) e.friction_power_kinetostatic = kinetostaticFrictionPower(pass, e);
 }
 
 void ReducedModel::solveFrictionLoop(const CartPass& pass, double J_eq, double drive, ModelEvaluation& e, double& M,

@@ -275,6 +275,12 @@ class ReducedModel {
     std::vector<GuideLoopCart> loop;      // loopTerms() of every cart (w = x_B', not yet /J) when used
   };
   const CartPass& cartPass(double phi, double omega) const;
+  // The pass's crank-side inertia, its quasi-static lock and (quasi-static normals, when asked)
+  // its carts into e.
+  void recordCartPass(const CartPass& pass, bool keep_carts, ModelEvaluation& e) const;
+  // The crank equation at the drive torques in e: the load torque (kinetostatic normals with
+  // friction: after the friction loop), the accelerations and the powers, into e.
+  void solveCrankEquation(const CartPass& pass, ModelEvaluation& e) const;
   // Kinetostatic normals: the friction loop at the crank acceleration (GuideFrictionLoop.h), its
   // frictions taken off the load torque M and the friction power (loop_friction_ keeps them).
   void solveFrictionLoop(const CartPass& pass, double J_eq, double drive, ModelEvaluation& e, double& M,

@@ -17,13 +17,10 @@
 #include "studies/Identify.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-
-#include <nlopt.hpp>
 
 #include "report/SceneTable.h"
 #include "scene/DidYouMean.h"
@@ -44,50 +41,6 @@ using identify::rmsOf;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kRelativeStep = 1e-3;  // finite-difference step, relative to the key's value (header)
 constexpr double kDefaultAccuracy = 1e-8;
-
-// The global stage: DIRECT-L (Gablonsky and Kelley 2001) over the scaled box, 30 runs per key;
-// its best point (or u0 when nothing beats it) starts Levenberg–Marquardt.
-struct GlobalSearch {
-  const ResidualBatch* evaluate;
-  std::vector<double> best;
-  double best_cost = std::numeric_limits<double>::infinity();
-  const std::atomic<bool>* interrupt = nullptr;
-};
-
-double globalObjective(const std::vector<double>& u, std::vector<double>&, void* data) {
-  GlobalSearch& g = *static_cast<GlobalSearch*>(data);
-  if (g.interrupt && g.interrupt->load()) throw nlopt::forced_stop();
-  const ResidualEvaluation e = (*g.evaluate)({u})[0];
-  if (!e.ok) return 1e300;
-  double cost = 0;
-  for (double v : e.r) cost += v * v;
-  if (cost < g.best_cost) {
-    g.best_cost = cost;
-    g.best = u;
-  }
-  return cost;
-}
-
-std::vector<double> globalStart(const ResidualBatch& evaluate, const std::vector<double>& u0,
-                                const std::atomic<bool>* interrupt) {
-  const unsigned p = static_cast<unsigned>(u0.size());
-  GlobalSearch g{&evaluate, u0, std::numeric_limits<double>::infinity(), interrupt};
-  std::vector<double> scratch;
-  globalObjective(u0, scratch, &g);
-  nlopt::opt opt(nlopt::GN_DIRECT_L, p);
-  opt.set_lower_bounds(std::vector<double>(p, 0.0));
-  opt.set_upper_bounds(std::vector<double>(p, 1.0));
-  opt.set_maxeval(30 * static_cast<int>(p));
-  opt.set_min_objective(globalObjective, &g);
-  std::vector<double> u = u0;
-  double f = 0;
-  try {
-    opt.optimize(u, f);
-  } catch (const std::exception&) {
-    // stopped (interrupt, a failure inside NLopt): the best point seen so far is kept
-  }
-  return g.best;
-}
 
 std::string percent(double v) { return formatNumber(std::round(v * 1000.0) / 10.0) + " %"; }
 
@@ -237,12 +190,13 @@ std::vector<std::vector<double>> centralDifferencePoints(const std::vector<doubl
   return points;
 }
 
-// The central-difference Jacobian at the estimate in the keys' own units (a failed side: the
-// estimate itself). Empty, with `failure` why, when both runs beside a key failed.
+// The central-difference Jacobian at the estimate in the keys' own units, at the fit's difference
+// steps (a failed side: the estimate itself). Empty, with `failure` why, when both runs beside a
+// key failed.
 std::vector<std::vector<double>> jacobianAtEstimate(const IdentifyResult& res, const std::vector<KeyMap>& keys,
-                                                    const LmOutcome& fit, const std::vector<double>& step,
-                                                    const ResidualBatch& evaluate, std::string* failure) {
-  const std::vector<std::vector<double>> points = centralDifferencePoints(fit.u, step);
+                                                    const LmOutcome& fit, const ResidualBatch& evaluate,
+                                                    std::string* failure) {
+  const std::vector<std::vector<double>> points = centralDifferencePoints(fit.u, differenceSteps(keys));
   const std::vector<ResidualEvaluation> e = evaluate(points);
   std::vector<std::vector<double>> J(fit.r.size(), std::vector<double>(keys.size(), 0.0));
   for (std::size_t k = 0; k < keys.size(); ++k) {
@@ -295,11 +249,11 @@ void failOnKeysWithoutEffect(IdentifyResult& res, const std::vector<bool>& no_ef
 // The estimate into res.keys, and at it the central-difference Jacobian in the keys' own units,
 // the covariance, correlations and warnings (a failure beside the estimate leaves no uncertainty).
 void estimateWithUncertainty(IdentifyResult& res, const std::vector<KeyMap>& keys, const LmOutcome& fit,
-                             const std::vector<double>& step, const ResidualBatch& evaluate) {
+                             const ResidualBatch& evaluate) {
   recordEstimates(res, keys, fit);
   if (fit.r.empty()) return;
   std::string failure;
-  const std::vector<std::vector<double>> J = jacobianAtEstimate(res, keys, fit, step, evaluate, &failure);
+  const std::vector<std::vector<double>> J = jacobianAtEstimate(res, keys, fit, evaluate, &failure);
   if (J.empty()) {
     res.converged = false;
     res.convergence = "the runs beside the estimate failed (" + failure + "): no uncertainty";
@@ -439,6 +393,24 @@ void reestimateSigmas(const LmOutcome& fit, const std::vector<bool>& given, std:
     if (!given[s]) sigma[s] = std::max(sigma[s] * rmsOf(fit.r, s * n_fit, (s + 1) * n_fit), 1e-9 * sigma[s]);
 }
 
+// The local fit from the search's start; when it converges and some σ_s are estimated, one refit
+// from its optimum at the σ_s its residuals give (file comment). res.iterations counts both.
+LmOutcome fitWithNoiseRefit(const IdentifyOptions& o, const std::vector<KeyMap>& keys, const ResidualBatch& evaluate,
+                            const std::vector<bool>& given, std::size_t n_fit, std::vector<double>& sigma,
+                            IdentifyResult& res) {
+  int fit_number = 1;
+  const LmSettings lm = lmSettings(o, keys, &fit_number);
+  LmOutcome fit = levenbergMarquardt(evaluate, searchStart(o, keys, evaluate), lm);
+  res.iterations = fit.iterations;
+  if (fit.converged && std::find(given.begin(), given.end(), false) != given.end()) {
+    reestimateSigmas(fit, given, n_fit, sigma);
+    fit_number = 2;
+    fit = levenbergMarquardt(evaluate, fit.u, lm);
+    res.iterations += fit.iterations;
+  }
+  return fit;
+}
+
 // The fit's outcome into the result: convergence, residuals, and each signal's noise and samples.
 void recordFit(IdentifyResult& res, const LmOutcome& fit, const std::vector<double>& sigma,
                const std::vector<bool>& given, std::size_t n_fit, std::size_t n_samples) {
@@ -471,18 +443,9 @@ IdentifyResult runIdentify(const IdentifyOptions& o) {
   std::vector<bool> given;
   std::vector<double> sigma = startingSigmas(o, d, res, given);
   const ResidualBatch evaluate = weightedResidualBatch(runs, d, sigma, n_fit);
-  int fit_number = 1;
-  const LmSettings lm = lmSettings(o, keys, &fit_number);
-  LmOutcome fit = levenbergMarquardt(evaluate, searchStart(o, keys, evaluate), lm);
-  res.iterations = fit.iterations;
-  if (fit.converged && std::find(given.begin(), given.end(), false) != given.end()) {
-    reestimateSigmas(fit, given, n_fit, sigma);
-    fit_number = 2;
-    fit = levenbergMarquardt(evaluate, fit.u, lm);
-    res.iterations += fit.iterations;
-  }
+  const LmOutcome fit = fitWithNoiseRefit(o, keys, evaluate, given, n_fit, sigma, res);
   recordFit(res, fit, sigma, given, n_fit, d.t.size());
-  estimateWithUncertainty(res, keys, fit, lm.fd_step, evaluate);
+  estimateWithUncertainty(res, keys, fit, evaluate);
   if (!fit.r.empty()) holdoutCheck(res, runs, d, fit.u, n_fit);
   res.runs = runs.runs();
   res.failed_runs = runs.failed();

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <Eigen/Dense>
+#include <nlopt.hpp>
 
 namespace rollerdyn {
 
@@ -251,6 +252,53 @@ LmOutcome levenbergMarquardt(const ResidualBatch& evaluate, const std::vector<do
     if (!search.iterate(it)) return search.out;
   search.out.reason = "the iteration limit (" + std::to_string(s.max_iterations) + ") was reached before the cost settled";
   return search.out;
+}
+
+namespace {
+
+// What the global stage's objective needs and what it has found so far.
+struct GlobalSearch {
+  const ResidualBatch* evaluate;
+  std::vector<double> best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  const std::atomic<bool>* interrupt = nullptr;
+};
+
+double globalObjective(const std::vector<double>& u, std::vector<double>&, void* data) {
+  GlobalSearch& g = *static_cast<GlobalSearch*>(data);
+  if (g.interrupt && g.interrupt->load()) throw nlopt::forced_stop();
+  const ResidualEvaluation e = (*g.evaluate)({u})[0];
+  if (!e.ok) return 1e300;
+  double cost = 0;
+  for (double v : e.r) cost += v * v;
+  if (cost < g.best_cost) {
+    g.best_cost = cost;
+    g.best = u;
+  }
+  return cost;
+}
+
+}  // namespace
+
+std::vector<double> globalStart(const ResidualBatch& evaluate, const std::vector<double>& u0,
+                                const std::atomic<bool>* interrupt) {
+  const unsigned p = static_cast<unsigned>(u0.size());
+  GlobalSearch g{&evaluate, u0, std::numeric_limits<double>::infinity(), interrupt};
+  std::vector<double> scratch;
+  globalObjective(u0, scratch, &g);
+  nlopt::opt opt(nlopt::GN_DIRECT_L, p);
+  opt.set_lower_bounds(std::vector<double>(p, 0.0));
+  opt.set_upper_bounds(std::vector<double>(p, 1.0));
+  opt.set_maxeval(30 * static_cast<int>(p));
+  opt.set_min_objective(globalObjective, &g);
+  std::vector<double> u = u0;
+  double f = 0;
+  try {
+    opt.optimize(u, f);
+  } catch (const std::exception&) {
+    // stopped (interrupt, a failure inside NLopt): the best point seen so far is kept
+  }
+  return g.best;
 }
 
 namespace {

@@ -1,7 +1,8 @@
 // The numerics of `rollerdyn identify` on any residual function, apart from the model runs
 // (Identify.cpp): Levenberg–Marquardt in scaled parameters (Levenberg 1944, Marquardt 1963; the
-// damping λ·diag(JᵀJ) of Marquardt, box [0, 1] by projection of each step), and the covariance of
-// a weighted least-squares estimate, σ̂²·(JᵀJ)⁻¹ with σ̂² = RSS/(N − p).
+// damping λ·diag(JᵀJ) of Marquardt, box [0, 1] by projection of each step), the global search
+// that can start it, and the covariance of a weighted least-squares estimate, σ̂²·(JᵀJ)⁻¹ with
+// σ̂² = RSS/(N − p).
 #pragma once
 
 #include <atomic>
@@ -48,6 +49,12 @@ struct LmOutcome {
 // that raised the cost (λ grows); a failure at u0, a Jacobian point that fails on both sides, an
 // interrupt or the iteration limit end the search as not converged, with the reason.
 LmOutcome levenbergMarquardt(const ResidualBatch& evaluate, const std::vector<double>& u0, const LmSettings& settings);
+
+// The global stage: DIRECT-L (Gablonsky and Kelley 2001) over [0, 1]^p, 30 runs per parameter;
+// its best point (u0 when nothing beats it) starts Levenberg–Marquardt. An interrupt or a failure
+// inside NLopt ends it with the best point so far.
+std::vector<double> globalStart(const ResidualBatch& evaluate, const std::vector<double>& u0,
+                                const std::atomic<bool>* interrupt);
 
 // The covariance of the estimate from J (N×p, row-major: J[i][k] = ∂r_i/∂x_k in the keys' own
 // units) and the residual sum of squares.

@@ -75,6 +75,12 @@ int runOnThreads(const SweepOptions& o, const std::vector<std::size_t>& todo, Co
   return threads;
 }
 
+// Design i run as a sweep point (in a child process within o.point_budget when one is set).
+SweepPoint runDesign(const SweepOptions& o, const SweepDesigns& d, std::size_t i) {
+  return o.point_budget > 0 ? runSweepPointWithBudget(o, d.texts[i], d.values[i], o.point_budget)
+                            : runSweepPoint(o, d.texts[i], d.values[i]);
+}
+
 // Every design as a point not yet run: its values, its metrics NaN.
 std::vector<SweepPoint> pointsNotYetRun(const SweepDesigns& d) {
   std::vector<SweepPoint> points;
@@ -138,10 +144,7 @@ void markNotRunAsInterrupted(std::vector<SweepPoint>& points) {
 std::vector<SweepPoint> executeSweep(const SweepOptions& o, const SweepDesigns& d, SweepResult& result) {
   const auto wall0 = std::chrono::steady_clock::now();
   std::vector<SweepPoint> points = pointsNotYetRun(d);
-  const std::function<SweepPoint(std::size_t)> compute = [&](std::size_t i) {
-    return o.point_budget > 0 ? runSweepPointWithBudget(o, d.texts[i], d.values[i], o.point_budget)
-                              : runSweepPoint(o, d.texts[i], d.values[i]);
-  };
+  const std::function<SweepPoint(std::size_t)> compute = [&](std::size_t i) { return runDesign(o, d, i); };
   const MpiWorld world = o.mpi ? startMpi() : MpiWorld{};
   const bool rank0 = world.rank == 0;
 
