@@ -206,7 +206,9 @@ class SupplyEvents {
 };
 
 // The crank speed's extrema inside CVODE's steps, located on its own interpolant (a prescribed
-// speed has none).
+// speed has none); at a restart the extrema after it are forgotten, as the reduced model's run
+// does: a restart inside a step already observed (an event applied at an output time CVODE
+// interpolated back to) replaces the motion beyond it.
 class StepExtrema {
  public:
   explicit StepExtrema(int i_omega) : i_omega_(i_omega) {}
@@ -223,6 +225,7 @@ class StepExtrema {
           eps = integ->interpolate(tq, 1, i);
         });
       } else {
+        finder_.dropAfter(t);
         finder_.restart(t, y[i_omega_], ydot[i_omega_]);
       }
     };
