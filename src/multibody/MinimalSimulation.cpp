@@ -7,9 +7,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "analysis/CrankSpeedExtrema.h"
 #include "analysis/OutputGrid.h"
 #include "analysis/RunRecorder.h"
+#include "analysis/StepExtrema.h"
 #include "multibody/MinimalSystem.h"
 #include "multibody/MotorForce.h"
 #include "multibody/StopRuleMotion.h"
@@ -203,40 +203,6 @@ class SupplyEvents {
   MinimalSystem& ms_;
   bool active_;
   double trigger_speed_ = std::nan("");
-};
-
-// The crank speed's extrema inside CVODE's steps, located on its own interpolant (a prescribed
-// speed has none); at a restart the extrema after it are forgotten, as the reduced model's run
-// does: a restart inside a step already observed (an event applied at an output time CVODE
-// interpolated back to) replaces the motion beyond it.
-class StepExtrema {
- public:
-  explicit StepExtrema(int i_omega) : i_omega_(i_omega) {}
-  StepExtrema(const StepExtrema&) = delete;
-  StepExtrema& operator=(const StepExtrema&) = delete;
-  void install(OdeProblem& p) {
-    if (i_omega_ < 0) return;
-    p.on_step = [this](double t, const double* y, const double* ydot, bool after_step) {
-      if (after_step && stepping_) {
-        const int i = i_omega_;
-        const CvodeIntegrator* integ = stepping_;
-        finder_.stepTo(t, y[i], ydot[i], [integ, i](double tq, double& w, double& eps) {
-          w = integ->interpolate(tq, 0, i);
-          eps = integ->interpolate(tq, 1, i);
-        });
-      } else {
-        finder_.dropAfter(t);
-        finder_.restart(t, y[i_omega_], ydot[i_omega_]);
-      }
-    };
-  }
-  void observe(const CvodeIntegrator& integ) { stepping_ = &integ; }
-  std::vector<CrankSpeedExtremum> takeUpTo(double t) { return finder_.takeUpTo(t); }
-
- private:
-  int i_omega_;
-  const CvodeIntegrator* stepping_ = nullptr;  // set once the integrator exists
-  CrankSpeedExtremaFinder finder_;
 };
 
 // Every row's reactions come from the O(n) inverse-dynamics pass (MinimalReactions.h);

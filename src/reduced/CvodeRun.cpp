@@ -9,9 +9,9 @@
 
 #include <Eigen/Core>
 
-#include "analysis/CrankSpeedExtrema.h"
 #include "analysis/OutputGrid.h"
 #include "analysis/RunRecorder.h"
+#include "analysis/StepExtrema.h"
 #include "motor/Stiffness.h"
 #include "numerics/CvodeIntegrator.h"
 #include "physics/IntegrationScales.h"
@@ -100,7 +100,9 @@ void setMethodAndAccuracy(const ReducedModel& m, const IntegrationScales& scales
 class ReducedOde {
  public:
   ReducedOde(const ReducedModel& m, const std::vector<double>& times, RunResult& res)
-      : m_(m), t_end_(times.back()), phase_(m.supply().initialPhase()), integ_(problem(times, res)) {
+      : m_(m), t_end_(times.back()), phase_(m.supply().initialPhase()), extrema_(m.iOmega()),
+        integ_(problem(times, res)) {
+    extrema_.observe(integ_);
     if (events_) arm(times.front());
   }
   ReducedOde(const ReducedOde&) = delete;
@@ -137,7 +139,7 @@ class ReducedOde {
   // The model's evaluations (the run's realizations): CVODE's, those of its difference-quotient
   // Jacobian and those at every (re)start that the extrema finder reads.
   long evaluations() const { return evaluations_; }
-  CrankSpeedExtremaFinder& extrema() { return extrema_; }
+  StepExtrema& extrema() { return extrema_; }
 
  private:
   OdeProblem problem(const std::vector<double>& times, RunResult& res) {
@@ -152,9 +154,7 @@ class ReducedOde {
     const IntegrationScales scales =
         integrationScales(m_.scene(), std::numeric_limits<double>::quiet_NaN(), m_.motorBreakdownTorque());
     setMethodAndAccuracy(m_, scales, p, res);
-    p.on_step = [this](double t, const double* y, const double* ydot, bool after_step) {
-      observe(t, y, ydot, after_step);
-    };
+    extrema_.install(p);
     p.root = [this](double, const double* y) { return m_.rotorSpeed(y) - trigger_speed_; };
     return p;
   }
@@ -172,19 +172,6 @@ class ReducedOde {
     return false;
   }
 
-  // The crank speed's extrema inside CVODE's steps (analysis/CrankSpeedExtrema.h): each step's
-  // end observed with ε from CVODE's interpolant; at a (re)start ε is f itself, and the extrema of
-  // a step an event cut short are forgotten.
-  void observe(double t, const double* y, const double* ydot, bool after_step) {
-    const int i_omega = m_.iOmega();
-    if (after_step) {
-      extrema_.stepTo(t, y[i_omega], ydot[i_omega], dense_);
-      return;
-    }
-    extrema_.dropAfter(t);
-    extrema_.restart(t, y[i_omega], ydot[i_omega]);
-  }
-
   // The stop time at the next timed event, the root finding on for a speed-triggered one.
   void arm(double t_now) {
     const double te = std::min(m_.supply().nextEventTime(phase_), t_end_);
@@ -200,12 +187,7 @@ class ReducedOde {
   long evaluations_ = 0;
   std::string friction_failure_;  // the first evaluation whose guide-friction loop failed, in words
   double trigger_speed_ = std::numeric_limits<double>::quiet_NaN();  // rotor speed of a speed-triggered event [rad/s]
-  CrankSpeedExtremaFinder extrema_;
-  // CVODE's interpolant of its last step: ω and ε inside it (called only after a step).
-  const CrankSpeedExtremaFinder::Dense dense_ = [this](double tq, double& w, double& eps) {
-    w = integ_.interpolate(tq, 0, m_.iOmega());
-    eps = integ_.interpolate(tq, 1, m_.iOmega());
-  };
+  StepExtrema extrema_;  // the crank speed's extrema inside CVODE's steps
   CvodeIntegrator integ_;  // last: built from the members above
 };
 
