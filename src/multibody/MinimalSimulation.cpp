@@ -7,9 +7,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "analysis/CrankSpeedExtrema.h"
+#include "analysis/CvodeSupplyEvents.h"
 #include "analysis/OutputGrid.h"
 #include "analysis/RunRecorder.h"
+#include "analysis/StepExtrema.h"
 #include "multibody/MinimalSystem.h"
 #include "multibody/MotorForce.h"
 #include "multibody/StopRuleMotion.h"
@@ -160,82 +161,6 @@ OdeProblem minimalProblem(const MultibodyModel& model, MinimalSystem& ms, const 
   return p;
 }
 
-// Switching events of the starting method (motor/Supply.h): CVODE stops at the next timed one
-// (stop time) and at a speed-triggered one (root finding of ω_r - ω_switch on its
-// interpolant); the event is applied to y and CVODE restarts from there.
-class SupplyEvents {
- public:
-  SupplyEvents(const MultibodyModel& model, MinimalSystem& ms)
-      : model_(model), ms_(ms), active_(model.motorForce() && !model.motorForce()->supply().constant()) {}
-  SupplyEvents(const SupplyEvents&) = delete;
-  SupplyEvents& operator=(const SupplyEvents&) = delete;
-
-  // The event function: the rotor speed above the trigger speed (refers to this object).
-  void install(OdeProblem& p) {
-    const MinimalLayout& L = ms_.layout();
-    const double ratio = model_.scene().reducer.ratio;
-    p.root = [this, &L, ratio](double, const double* y) {
-      const double w_crank = L.omega >= 0 ? y[L.omega] : 0.0, w_twist = L.twist_rate >= 0 ? y[L.twist_rate] : 0.0;
-      return ratio * (w_crank + w_twist) - trigger_speed_;
-    };
-  }
-  // Sets the integrator's stop time and event function for the supply's present phase.
-  void arm(CvodeIntegrator& integ) {
-    if (!active_) return;
-    const Supply& supply = model_.motorForce()->supply();
-    const SupplyPhase phase = ms_.phase();
-    const double te = supply.nextEventTime(phase);
-    if (te > integ.time()) integ.setStopTime(std::min(te, model_.scene().simulation.t_end));
-    trigger_speed_ = supply.triggerSpeed(phase);
-    integ.enableRoot(!std::isnan(trigger_speed_));
-  }
-  // After a return of the integrator: applies the events due there and restarts it.
-  void applyDue(CvodeIntegrator& integ) {
-    if (!active_) return;
-    Eigen::VectorXd y = integ.y();
-    if (!ms_.applyEvents(integ.time(), y, integ.rootFound())) return;
-    integ.restart(integ.time(), y);
-    arm(integ);
-  }
-
- private:
-  const MultibodyModel& model_;
-  MinimalSystem& ms_;
-  bool active_;
-  double trigger_speed_ = std::nan("");
-};
-
-// The crank speed's extrema inside CVODE's steps, located on its own interpolant (a prescribed
-// speed has none).
-class StepExtrema {
- public:
-  explicit StepExtrema(int i_omega) : i_omega_(i_omega) {}
-  StepExtrema(const StepExtrema&) = delete;
-  StepExtrema& operator=(const StepExtrema&) = delete;
-  void install(OdeProblem& p) {
-    if (i_omega_ < 0) return;
-    p.on_step = [this](double t, const double* y, const double* ydot, bool after_step) {
-      if (after_step && stepping_) {
-        const int i = i_omega_;
-        const CvodeIntegrator* integ = stepping_;
-        finder_.stepTo(t, y[i], ydot[i], [integ, i](double tq, double& w, double& eps) {
-          w = integ->interpolate(tq, 0, i);
-          eps = integ->interpolate(tq, 1, i);
-        });
-      } else {
-        finder_.restart(t, y[i_omega_], ydot[i_omega_]);
-      }
-    };
-  }
-  void observe(const CvodeIntegrator& integ) { stepping_ = &integ; }
-  std::vector<CrankSpeedExtremum> takeUpTo(double t) { return finder_.takeUpTo(t); }
-
- private:
-  int i_omega_;
-  const CvodeIntegrator* stepping_ = nullptr;  // set once the integrator exists
-  CrankSpeedExtremaFinder finder_;
-};
-
 // Every row's reactions come from the O(n) inverse-dynamics pass (MinimalReactions.h);
 // Simbody's constrained solve runs at every k-th row (simulation.self_check_interval, from row
 // 0) as the reference: accelerations, guide normal forces and every reaction column compared.
@@ -372,13 +297,32 @@ bool startFrictionLoop(const MultibodyModel& model, MinimalSystem& ms, Eigen::Ve
   return true;
 }
 
+// The minimal formulation's own pieces of the supply's events (analysis/CvodeSupplyEvents.h): the
+// phase kept in the State, the rotor speed ω_r = i·(φ̇2 + twist rate), the events applied by the
+// system (the law's states mapped, the phase latched).
+CvodeSupplyEvents::Model supplyEventsOf(const MultibodyModel& model, MinimalSystem& ms) {
+  CvodeSupplyEvents::Model e;
+  e.supply = model.motorForce() ? &model.motorForce()->supply() : nullptr;
+  e.t_end = model.scene().simulation.t_end;
+  const MinimalLayout& L = ms.layout();
+  const double ratio = model.scene().reducer.ratio;
+  e.rotor_speed = [&L, ratio](const double* y) {
+    const double w_crank = L.omega >= 0 ? y[L.omega] : 0.0, w_twist = L.twist_rate >= 0 ? y[L.twist_rate] : 0.0;
+    return ratio * (w_crank + w_twist);
+  };
+  e.phase = [&ms] { return ms.phase(); };
+  e.apply = [&ms](double t, Eigen::VectorXd& y, bool speed_reached) { return ms.applyEvents(t, y, speed_reached); };
+  return e;
+}
+
 // The integration of one run: CVODE on the minimal coordinates with the supply's events and the
 // crank speed's extrema hooked into its problem, and the rows at the output times, every one
 // through the stop rules both models share (analysis/RunRecorder.h).
 class MinimalRun {
  public:
   MinimalRun(const MultibodyModel& model, MinimalSystem& ms, OdeProblem& p, RunResult& run, const RunControl& control)
-      : model_(model), ms_(ms), run_(run), extrema_(ms.layout().omega), events_(model, ms), integ_(withHooks(p)),
+      : model_(model), ms_(ms), run_(run), extrema_(ms.layout().omega), events_(supplyEventsOf(model, ms)),
+        integ_(withHooks(p)),
         recorder_(model.scene(), model.motorForce() ? &model.motorForce()->supply() : nullptr,
                   model.options().prescribe_crank_speed, run, control),
         rows_(model, ms, recorder_, run.stats) {
@@ -425,12 +369,7 @@ class MinimalRun {
   // CVODE to the output time t_out, the supply's events applied on the way. False, with the
   // run's status set, when it fails.
   bool advanceTo(double t_out) {
-    bool failed = false;
-    while (!(failed = !integ_.advanceTo(t_out))) {
-      events_.applyDue(integ_);
-      if (reachedOutputTime(integ_.time(), t_out)) break;
-    }
-    if (!failed) return true;
+    if (events_.advanceTo(integ_, t_out)) return true;
     if (!ms_.loopFailure().empty())  // CVODE gave up on states where the friction loop has no solution
       recorder_.fail(statusAt("the run stopped", ms_.loopFailureTime()) + ": the " + ms_.loopFailure());
     else
@@ -442,7 +381,7 @@ class MinimalRun {
   MinimalSystem& ms_;
   RunResult& run_;
   StepExtrema extrema_;
-  SupplyEvents events_;
+  CvodeSupplyEvents events_;
   CvodeIntegrator integ_;
   RunRecorder recorder_;
   OutputRows rows_;

@@ -1,7 +1,5 @@
 #include "reduced/CvodeRun.h"
 
-#include <algorithm>
-#include <cmath>
 #include <ctime>
 #include <limits>
 #include <stdexcept>
@@ -9,9 +7,10 @@
 
 #include <Eigen/Core>
 
-#include "analysis/CrankSpeedExtrema.h"
+#include "analysis/CvodeSupplyEvents.h"
 #include "analysis/OutputGrid.h"
 #include "analysis/RunRecorder.h"
+#include "analysis/StepExtrema.h"
 #include "motor/Stiffness.h"
 #include "numerics/CvodeIntegrator.h"
 #include "physics/IntegrationScales.h"
@@ -100,33 +99,17 @@ void setMethodAndAccuracy(const ReducedModel& m, const IntegrationScales& scales
 class ReducedOde {
  public:
   ReducedOde(const ReducedModel& m, const std::vector<double>& times, RunResult& res)
-      : m_(m), t_end_(times.back()), phase_(m.supply().initialPhase()), integ_(problem(times, res)) {
-    if (events_) arm(times.front());
+      : m_(m), phase_(m.supply().initialPhase()), events_(supplyEvents(times.back())), extrema_(m.iOmega()),
+        integ_(problem(times, res)) {
+    extrema_.observe(integ_);
+    events_.arm(integ_);
   }
   ReducedOde(const ReducedOde&) = delete;
   ReducedOde& operator=(const ReducedOde&) = delete;
 
-  // Advances to the output time t, applying the switching events due on the way (motor/Supply.h):
-  // CVODE stops at the next timed event (its stop time) and at a speed-triggered one (its root
-  // finding of ω_r - ω_switch, rising, on the interpolant); the event is applied there (the law's
-  // states mapped across it) and CVODE restarts from the new state. A constant supply has none,
-  // and the run is exactly the one without starting methods. False when CVODE gave up.
-  bool advanceTo(double t) {
-    while (true) {
-      if (!integ_.advanceTo(t)) return false;
-      // CVODE returns at the stop time, or at the output time when it is the stop time: either
-      // way the events due there are applied here.
-      if (events_) {
-        Eigen::VectorXd y = integ_.y();
-        if (m_.supply().applyDueEvents(phase_, integ_.time(), m_.rotorSpeed(y.data()), integ_.rootFound(),
-                                       m_.motorLaw(), y.data() + m_.iMotorStates())) {
-          integ_.restart(integ_.time(), y);
-          arm(integ_.time());
-        }
-      }
-      if (reachedOutputTime(integ_.time(), t)) return true;
-    }
-  }
+  // Advances to the output time t, applying the switching events due on the way
+  // (analysis/CvodeSupplyEvents.h). False when CVODE gave up.
+  bool advanceTo(double t) { return events_.advanceTo(integ_, t); }
   // Why the run stopped after advanceTo returned false.
   std::string failureStatus() const {
     if (!friction_failure_.empty()) return statusAt("the run stopped", integ_.failureTime()) + ": the " + friction_failure_;
@@ -137,7 +120,7 @@ class ReducedOde {
   // The model's evaluations (the run's realizations): CVODE's, those of its difference-quotient
   // Jacobian and those at every (re)start that the extrema finder reads.
   long evaluations() const { return evaluations_; }
-  CrankSpeedExtremaFinder& extrema() { return extrema_; }
+  StepExtrema& extrema() { return extrema_; }
 
  private:
   OdeProblem problem(const std::vector<double>& times, RunResult& res) {
@@ -152,11 +135,24 @@ class ReducedOde {
     const IntegrationScales scales =
         integrationScales(m_.scene(), std::numeric_limits<double>::quiet_NaN(), m_.motorBreakdownTorque());
     setMethodAndAccuracy(m_, scales, p, res);
-    p.on_step = [this](double t, const double* y, const double* ydot, bool after_step) {
-      observe(t, y, ydot, after_step);
-    };
-    p.root = [this](double, const double* y) { return m_.rotorSpeed(y) - trigger_speed_; };
+    extrema_.install(p);
+    events_.install(p);
     return p;
+  }
+
+  // The model's own pieces of the supply's events: the phase kept here, the rotor speed from the
+  // state, the law's states mapped across an event.
+  CvodeSupplyEvents::Model supplyEvents(double t_end) {
+    CvodeSupplyEvents::Model e;
+    e.supply = &m_.supply();
+    e.t_end = t_end;
+    e.rotor_speed = [this](const double* y) { return m_.rotorSpeed(y); };
+    e.phase = [this] { return phase_; };
+    e.apply = [this](double t, Eigen::VectorXd& y, bool speed_reached) {
+      return m_.supply().applyDueEvents(phase_, t, m_.rotorSpeed(y.data()), speed_reached, m_.motorLaw(),
+                                        y.data() + m_.iMotorStates());
+    };
+    return e;
   }
 
   bool derivatives(double t, const double* y, double* ydot) {
@@ -172,40 +168,12 @@ class ReducedOde {
     return false;
   }
 
-  // The crank speed's extrema inside CVODE's steps (analysis/CrankSpeedExtrema.h): each step's
-  // end observed with ε from CVODE's interpolant; at a (re)start ε is f itself, and the extrema of
-  // a step an event cut short are forgotten.
-  void observe(double t, const double* y, const double* ydot, bool after_step) {
-    const int i_omega = m_.iOmega();
-    if (after_step) {
-      extrema_.stepTo(t, y[i_omega], ydot[i_omega], dense_);
-      return;
-    }
-    extrema_.dropAfter(t);
-    extrema_.restart(t, y[i_omega], ydot[i_omega]);
-  }
-
-  // The stop time at the next timed event, the root finding on for a speed-triggered one.
-  void arm(double t_now) {
-    const double te = std::min(m_.supply().nextEventTime(phase_), t_end_);
-    if (te > t_now) integ_.setStopTime(te);
-    trigger_speed_ = m_.supply().triggerSpeed(phase_);
-    integ_.enableRoot(!std::isnan(trigger_speed_));
-  }
-
   const ReducedModel& m_;
-  const double t_end_;
-  const bool events_ = !m_.supply().constant();
   SupplyPhase phase_;  // changes only between integrations, at events
+  CvodeSupplyEvents events_;
   long evaluations_ = 0;
   std::string friction_failure_;  // the first evaluation whose guide-friction loop failed, in words
-  double trigger_speed_ = std::numeric_limits<double>::quiet_NaN();  // rotor speed of a speed-triggered event [rad/s]
-  CrankSpeedExtremaFinder extrema_;
-  // CVODE's interpolant of its last step: ω and ε inside it (called only after a step).
-  const CrankSpeedExtremaFinder::Dense dense_ = [this](double tq, double& w, double& eps) {
-    w = integ_.interpolate(tq, 0, m_.iOmega());
-    eps = integ_.interpolate(tq, 1, m_.iOmega());
-  };
+  StepExtrema extrema_;  // the crank speed's extrema inside CVODE's steps
   CvodeIntegrator integ_;  // last: built from the members above
 };
 
