@@ -5,9 +5,8 @@
 #include <stdexcept>
 
 #include "analysis/Summary.h"
+#include "compare/RunModel.h"
 #include "io/FieldFormat.h"
-#include "multibody/MultibodySimulation.h"
-#include "reduced/ReducedModel.h"
 
 namespace rollerdyn {
 
@@ -24,7 +23,7 @@ double deltaWith(const Scene& base, const std::string& model, double inertia, do
   s.sizing.target_delta = 0;  // the runs answer δ; they do not size again
   for (double factor = 1.0; factor <= kFlywheelRunLengthening; factor *= 2.0) {
     s.simulation.t_end = base.simulation.t_end * factor;
-    const RunResult run = model == "reduced" ? runReducedModel(s) : runMultibodyModel(s);
+    const RunResult run = runModel(s, model);
     const nlohmann::json j = makeSummary(s, run, nullptr);
     if (j.value("motion", "") != "turning") break;
     if (j["delta"].is_number() && j["steady_state"].value("reached", false)) return j["delta"].get<double>();

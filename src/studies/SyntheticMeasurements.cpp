@@ -2,8 +2,7 @@
 
 #include <cmath>
 
-#include "multibody/MultibodySimulation.h"
-#include "reduced/ReducedModel.h"
+#include "compare/RunModel.h"
 #include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
 
@@ -35,7 +34,7 @@ RunResult truthRun(const std::string& scene, std::vector<std::string> truth, dou
   truth.push_back("simulation.output_step=" + formatNumber(step));
   truth.push_back("simulation.accuracy=1e-10");
   const Scene s = parseSceneFile(scene, truth);
-  return model == "reduced" ? runReducedModel(s) : runMultibodyModel(s);
+  return runModel(s, model);
 }
 
 MeasuredData measureRun(const RunResult& run, const std::vector<std::string>& columns, double noise_fraction,
