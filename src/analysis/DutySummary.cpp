@@ -14,63 +14,65 @@ using nlohmann::json;
 
 namespace {
 
-json num(double v) { return jsonNumber(v); }
-std::string fmt(const json& v, const char* f = "%.4g") { return jsonNumberText(v, f); }
-
-std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
-
-bool applies(const json& w) { return jsonMember(w, "applies").is_boolean() && jsonMember(w, "applies").get<bool>(); }
-
 json flankJson(const FlankSpectrum& f) {
   json classes = json::array();
   for (const TorqueClass& c : f.classes) classes.push_back({{"torque", c.torque}, {"cycles", c.cycles}});
-  return {{"cycles", f.cycles}, {"equivalent_torque", num(f.equivalent_torque)}, {"classes", classes}};
+  return {{"cycles", f.cycles}, {"equivalent_torque", jsonNumber(f.equivalent_torque)}, {"classes", classes}};
 }
 
 json spectrumJson(const GearSpectrum& s) {
   if (!s.applies) return {{"applies", false}, {"reason", s.not_applicable}};
-  return {{"applies", true},         {"t_begin", num(s.t_begin)},    {"t_end", num(s.t_end)},
-          {"revolutions", num(s.revolutions)}, {"drive", flankJson(s.drive)}, {"coast", flankJson(s.coast)}};
+  return {{"applies", true},         {"t_begin", jsonNumber(s.t_begin)}, {"t_end", jsonNumber(s.t_end)},
+          {"revolutions", jsonNumber(s.revolutions)}, {"drive", flankJson(s.drive)}, {"coast", flankJson(s.coast)}};
 }
 
 void spectrumLine(std::ostringstream& o, const char* name, const json& s) {
   o << "    " << name;
-  if (!applies(s)) {
-    o << "n/a (" << str(jsonMember(s, "reason")) << ")\n";
+  if (!jsonFlag(s, "applies")) {
+    o << "n/a (" << jsonText(jsonMember(s, "reason")) << ")\n";
     return;
   }
   const json &d = jsonMember(s, "drive"), &c = jsonMember(s, "coast");
-  o << fmt(jsonMember(s, "revolutions"), "%.3g") << " revolutions (t = " << fmt(jsonMember(s, "t_begin")) << " ... "
-    << fmt(jsonMember(s, "t_end")) << " s): drive flank " << fmt(jsonMember(d, "cycles"), "%.3g") << " rev, T_eq "
-    << fmt(jsonMember(d, "equivalent_torque")) << " N·m; other flank " << fmt(jsonMember(c, "cycles"), "%.3g")
-    << " rev, T_eq " << fmt(jsonMember(c, "equivalent_torque")) << " N·m\n";
+  o << jsonNumberText(jsonMember(s, "revolutions"), "%.3g")
+    << " revolutions (t = " << jsonNumberText(jsonMember(s, "t_begin")) << " ... "
+    << jsonNumberText(jsonMember(s, "t_end")) << " s): drive flank " << jsonNumberText(jsonMember(d, "cycles"), "%.3g")
+    << " rev, T_eq " << jsonNumberText(jsonMember(d, "equivalent_torque")) << " N·m; other flank "
+    << jsonNumberText(jsonMember(c, "cycles"), "%.3g") << " rev, T_eq "
+    << jsonNumberText(jsonMember(c, "equivalent_torque")) << " N·m\n";
 }
 
 void gearText(std::ostringstream& o, const json& g) {
-  o << "  reducer load spectrum (" << str(jsonMember(g, "method")) << "), " << str(jsonMember(g, "torque")) << ":\n"
-    << "    p = " << fmt(jsonMember(g, "exponent"), "%.3g") << ", classes of " << fmt(jsonMember(g, "class_width"))
-    << " N·m (each at its upper limit); T_n = u·η·M_n = " << fmt(jsonMember(g, "nominal_torque")) << " N·m\n";
+  o << "  reducer load spectrum (" << jsonText(jsonMember(g, "method")) << "), " << jsonText(jsonMember(g, "torque"))
+    << ":\n"
+    << "    p = " << jsonNumberText(jsonMember(g, "exponent"), "%.3g") << ", classes of "
+    << jsonNumberText(jsonMember(g, "class_width"))
+    << " N·m (each at its upper limit); T_n = u·η·M_n = " << jsonNumberText(jsonMember(g, "nominal_torque"))
+    << " N·m\n";
   spectrumLine(o, "start:         ", jsonMember(g, "start"));
   spectrumLine(o, "steady window: ", jsonMember(g, "steady"));
   const json& d = jsonMember(g, "duty");
-  if (applies(d))
-    o << "    duty hour:     T_eq " << fmt(jsonMember(d, "equivalent_torque")) << " N·m (" << str(jsonMember(d, "deciding_flank"))
-      << "), K_A = T_eq/T_n " << fmt(jsonMember(g, "application_factor"), "%.3g") << " (assumed "
-      << fmt(jsonMember(g, "assumed_application_factor"), "%.3g") << "); " << str(jsonMember(d, "basis")) << "\n";
+  if (jsonFlag(d, "applies"))
+    o << "    duty hour:     T_eq " << jsonNumberText(jsonMember(d, "equivalent_torque")) << " N·m ("
+      << jsonText(jsonMember(d, "deciding_flank")) << "), K_A = T_eq/T_n "
+      << jsonNumberText(jsonMember(g, "application_factor"), "%.3g") << " (assumed "
+      << jsonNumberText(jsonMember(g, "assumed_application_factor"), "%.3g") << "); "
+      << jsonText(jsonMember(d, "basis")) << "\n";
   else
-    o << "    duty hour:     n/a (" << str(jsonMember(d, "reason")) << ")\n";
-  o << "    peak |T| " << fmt(jsonMember(g, "peak")) << " N·m at t = " << fmt(jsonMember(g, "t_peak")) << " s; ratings T_2N "
-    << fmt(jsonMember(g, "rated_torque")) << ", T_2max " << fmt(jsonMember(g, "max_torque")) << " N·m (n/a: not given)\n";
+    o << "    duty hour:     n/a (" << jsonText(jsonMember(d, "reason")) << ")\n";
+  o << "    peak |T| " << jsonNumberText(jsonMember(g, "peak"))
+    << " N·m at t = " << jsonNumberText(jsonMember(g, "t_peak")) << " s; ratings T_2N "
+    << jsonNumberText(jsonMember(g, "rated_torque")) << ", T_2max " << jsonNumberText(jsonMember(g, "max_torque"))
+    << " N·m (n/a: not given)\n";
 }
 
 // The duty hour's equivalent torques, or why there is none.
 json dutyHourJson(const GearDuty& g) {
   return g.duty_applies ? json{{"applies", true},
                                {"basis", g.duty_basis},
-                               {"revolutions_per_hour", num(g.hour_revolutions)},
-                               {"equivalent_torque_drive", num(g.equivalent_torque_drive)},
-                               {"equivalent_torque_coast", num(g.equivalent_torque_coast)},
-                               {"equivalent_torque", num(g.equivalent_torque)},
+                               {"revolutions_per_hour", jsonNumber(g.hour_revolutions)},
+                               {"equivalent_torque_drive", jsonNumber(g.equivalent_torque_drive)},
+                               {"equivalent_torque_coast", jsonNumber(g.equivalent_torque_coast)},
+                               {"equivalent_torque", jsonNumber(g.equivalent_torque)},
                                {"deciding_flank", g.deciding_flank}}
                         : json{{"applies", false}, {"reason", g.duty_not_applicable}};
 }
@@ -82,22 +84,22 @@ json gearDutyJson(const GearDuty& g) {
   return {{"method", "ISO 6336-6:2019, load spectrum and Miner-equivalent torque"},
           {"torque", "coupling torque (what the reducer's output shaft transmits), at the crank axis"},
           {"exponent", g.exponent},
-          {"class_width", num(g.class_width)},
-          {"nominal_torque", num(g.nominal_torque)},
+          {"class_width", jsonNumber(g.class_width)},
+          {"nominal_torque", jsonNumber(g.nominal_torque)},
           {"nominal_source", g.nominal_source},
-          {"assumed_application_factor", num(g.assumed_application_factor)},
-          {"rated_torque", num(g.rated_torque)},
-          {"max_torque", num(g.max_torque)},
+          {"assumed_application_factor", jsonNumber(g.assumed_application_factor)},
+          {"rated_torque", jsonNumber(g.rated_torque)},
+          {"max_torque", jsonNumber(g.max_torque)},
           {"starts_per_hour", g.starts_per_hour},
           {"start", spectrumJson(g.start)},
           {"steady", spectrumJson(g.steady)},
           {"duty", dutyHourJson(g)},
-          {"application_factor", num(g.application_factor)},
-          {"peak", num(g.peak)},
-          {"t_peak", num(g.t_peak)},
-          {"application_ratio", num(g.application_ratio)},
-          {"rated_ratio", num(g.rated_ratio)},
-          {"max_ratio", num(g.max_ratio)}};
+          {"application_factor", jsonNumber(g.application_factor)},
+          {"peak", jsonNumber(g.peak)},
+          {"t_peak", jsonNumber(g.t_peak)},
+          {"application_ratio", jsonNumber(g.application_ratio)},
+          {"rated_ratio", jsonNumber(g.rated_ratio)},
+          {"max_ratio", jsonNumber(g.max_ratio)}};
 }
 
 json motorDutyJson(const MotorDuty& m) {
@@ -108,21 +110,21 @@ json motorDutyJson(const MotorDuty& m) {
           {"starts_per_hour", m.starts_per_hour},
           {"start_known", m.start_known},
           {"start_unknown", m.start_unknown},
-          {"start_time", num(m.start_time)},
-          {"start_heat", num(m.start_heat)},
-          {"locked_rotor_torque", num(m.locked_rotor_torque)},
-          {"locked_rotor_losses", num(m.locked_rotor_losses)},
-          {"equivalent_locked_time", num(m.equivalent_locked_time)},
-          {"locked_rotor_time", num(m.locked_rotor_time)},
-          {"rotor_inertia", num(m.rotor_inertia)},
-          {"load_inertia", num(m.load_inertia)},
-          {"no_load_start_heat", num(m.no_load_start_heat)},
-          {"no_load_starts", num(m.no_load_starts)},
-          {"steady_loss_share", num(m.steady_loss_share)},
-          {"permissible_starts", num(m.permissible_starts)},
-          {"starting_time_share", num(m.starting_time_share)},
-          {"locked_time_ratio", num(m.locked_time_ratio)},
-          {"starts_ratio", num(m.starts_ratio)}};
+          {"start_time", jsonNumber(m.start_time)},
+          {"start_heat", jsonNumber(m.start_heat)},
+          {"locked_rotor_torque", jsonNumber(m.locked_rotor_torque)},
+          {"locked_rotor_losses", jsonNumber(m.locked_rotor_losses)},
+          {"equivalent_locked_time", jsonNumber(m.equivalent_locked_time)},
+          {"locked_rotor_time", jsonNumber(m.locked_rotor_time)},
+          {"rotor_inertia", jsonNumber(m.rotor_inertia)},
+          {"load_inertia", jsonNumber(m.load_inertia)},
+          {"no_load_start_heat", jsonNumber(m.no_load_start_heat)},
+          {"no_load_starts", jsonNumber(m.no_load_starts)},
+          {"steady_loss_share", jsonNumber(m.steady_loss_share)},
+          {"permissible_starts", jsonNumber(m.permissible_starts)},
+          {"starting_time_share", jsonNumber(m.starting_time_share)},
+          {"locked_time_ratio", jsonNumber(m.locked_time_ratio)},
+          {"starts_ratio", jsonNumber(m.starts_ratio)}};
 }
 
 std::string dutyText(const json& sizing) {
@@ -131,18 +133,22 @@ std::string dutyText(const json& sizing) {
   if (g.is_object()) gearText(o, g);
   const json& m = jsonMember(sizing, "motor_duty");
   if (m.is_object()) {
-    o << "  motor duty (" << str(jsonMember(m, "method")) << "): " << str(jsonMember(m, "designation")) << "\n";
-    if (jsonMember(m, "start_known").is_boolean() && jsonMember(m, "start_known").get<bool>())
-      o << "    one start: t_D " << fmt(jsonMember(m, "start_time"), "%.3g") << " s, rotor heat Q_start "
-        << fmt(jsonMember(m, "start_heat"), "%.4g") << " J = " << fmt(jsonMember(m, "equivalent_locked_time"), "%.3g")
-        << " s at standstill (P_s = M_s·ω0 " << fmt(jsonMember(m, "locked_rotor_losses")) << " W; t_E "
-        << fmt(jsonMember(m, "locked_rotor_time"), "%.3g") << " s)\n"
-        << "    permissible starts Z " << fmt(jsonMember(m, "permissible_starts"), "%.3g") << " per hour (Z_0 "
-        << fmt(jsonMember(m, "no_load_starts"), "%.3g") << ", ½·J_M·ω0² " << fmt(jsonMember(m, "no_load_start_heat"))
-        << " J, steady rotor losses " << fmt(jsonMember(m, "steady_loss_share"), "%.3g")
-        << " of nominal); starting time share N·t_D/3600 s " << fmt(jsonMember(m, "starting_time_share"), "%.3g") << "\n";
+    o << "  motor duty (" << jsonText(jsonMember(m, "method")) << "): " << jsonText(jsonMember(m, "designation"))
+      << "\n";
+    if (jsonFlag(m, "start_known"))
+      o << "    one start: t_D " << jsonNumberText(jsonMember(m, "start_time"), "%.3g") << " s, rotor heat Q_start "
+        << jsonNumberText(jsonMember(m, "start_heat"), "%.4g")
+        << " J = " << jsonNumberText(jsonMember(m, "equivalent_locked_time"), "%.3g")
+        << " s at standstill (P_s = M_s·ω0 " << jsonNumberText(jsonMember(m, "locked_rotor_losses")) << " W; t_E "
+        << jsonNumberText(jsonMember(m, "locked_rotor_time"), "%.3g") << " s)\n"
+        << "    permissible starts Z " << jsonNumberText(jsonMember(m, "permissible_starts"), "%.3g")
+        << " per hour (Z_0 " << jsonNumberText(jsonMember(m, "no_load_starts"), "%.3g") << ", ½·J_M·ω0² "
+        << jsonNumberText(jsonMember(m, "no_load_start_heat")) << " J, steady rotor losses "
+        << jsonNumberText(jsonMember(m, "steady_loss_share"), "%.3g")
+        << " of nominal); starting time share N·t_D/3600 s "
+        << jsonNumberText(jsonMember(m, "starting_time_share"), "%.3g") << "\n";
     else
-      o << "    n/a (" << str(jsonMember(m, "start_unknown")) << ")\n";
+      o << "    n/a (" << jsonText(jsonMember(m, "start_unknown")) << ")\n";
   }
   return o.str();
 }

@@ -17,6 +17,13 @@ const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k) {
   return j.is_object() && j.contains(k) ? j.at(k) : null_json;
 }
 
+bool jsonFlag(const nlohmann::json& j, const char* k) {
+  const nlohmann::json& v = jsonMember(j, k);
+  return v.is_boolean() && v.get<bool>();
+}
+
+std::string jsonText(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
+
 std::string jsonNumberText(const nlohmann::json& v, const char* format, double scale) {
   if (!v.is_number()) return "n/a";
   char buf[64];
