@@ -14,11 +14,6 @@ using nlohmann::json;
 
 namespace {
 
-
-std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
-
-bool applies(const json& w) { return jsonMember(w, "applies").is_boolean() && jsonMember(w, "applies").get<bool>(); }
-
 json flankJson(const FlankSpectrum& f) {
   json classes = json::array();
   for (const TorqueClass& c : f.classes) classes.push_back({{"torque", c.torque}, {"cycles", c.cycles}});
@@ -27,38 +22,47 @@ json flankJson(const FlankSpectrum& f) {
 
 json spectrumJson(const GearSpectrum& s) {
   if (!s.applies) return {{"applies", false}, {"reason", s.not_applicable}};
-  return {{"applies", true},         {"t_begin", jsonNumber(s.t_begin)},    {"t_end", jsonNumber(s.t_end)},
+  return {{"applies", true},         {"t_begin", jsonNumber(s.t_begin)}, {"t_end", jsonNumber(s.t_end)},
           {"revolutions", jsonNumber(s.revolutions)}, {"drive", flankJson(s.drive)}, {"coast", flankJson(s.coast)}};
 }
 
 void spectrumLine(std::ostringstream& o, const char* name, const json& s) {
   o << "    " << name;
-  if (!applies(s)) {
-    o << "n/a (" << str(jsonMember(s, "reason")) << ")\n";
+  if (!jsonFlag(s, "applies")) {
+    o << "n/a (" << jsonText(jsonMember(s, "reason")) << ")\n";
     return;
   }
   const json &d = jsonMember(s, "drive"), &c = jsonMember(s, "coast");
-  o << jsonNumberText(jsonMember(s, "revolutions"), "%.3g") << " revolutions (t = " << jsonNumberText(jsonMember(s, "t_begin")) << " ... "
-    << jsonNumberText(jsonMember(s, "t_end")) << " s): drive flank " << jsonNumberText(jsonMember(d, "cycles"), "%.3g") << " rev, T_eq "
-    << jsonNumberText(jsonMember(d, "equivalent_torque")) << " N·m; other flank " << jsonNumberText(jsonMember(c, "cycles"), "%.3g")
-    << " rev, T_eq " << jsonNumberText(jsonMember(c, "equivalent_torque")) << " N·m\n";
+  o << jsonNumberText(jsonMember(s, "revolutions"), "%.3g")
+    << " revolutions (t = " << jsonNumberText(jsonMember(s, "t_begin")) << " ... "
+    << jsonNumberText(jsonMember(s, "t_end")) << " s): drive flank " << jsonNumberText(jsonMember(d, "cycles"), "%.3g")
+    << " rev, T_eq " << jsonNumberText(jsonMember(d, "equivalent_torque")) << " N·m; other flank "
+    << jsonNumberText(jsonMember(c, "cycles"), "%.3g") << " rev, T_eq "
+    << jsonNumberText(jsonMember(c, "equivalent_torque")) << " N·m\n";
 }
 
 void gearText(std::ostringstream& o, const json& g) {
-  o << "  reducer load spectrum (" << str(jsonMember(g, "method")) << "), " << str(jsonMember(g, "torque")) << ":\n"
-    << "    p = " << jsonNumberText(jsonMember(g, "exponent"), "%.3g") << ", classes of " << jsonNumberText(jsonMember(g, "class_width"))
-    << " N·m (each at its upper limit); T_n = u·η·M_n = " << jsonNumberText(jsonMember(g, "nominal_torque")) << " N·m\n";
+  o << "  reducer load spectrum (" << jsonText(jsonMember(g, "method")) << "), " << jsonText(jsonMember(g, "torque"))
+    << ":\n"
+    << "    p = " << jsonNumberText(jsonMember(g, "exponent"), "%.3g") << ", classes of "
+    << jsonNumberText(jsonMember(g, "class_width"))
+    << " N·m (each at its upper limit); T_n = u·η·M_n = " << jsonNumberText(jsonMember(g, "nominal_torque"))
+    << " N·m\n";
   spectrumLine(o, "start:         ", jsonMember(g, "start"));
   spectrumLine(o, "steady window: ", jsonMember(g, "steady"));
   const json& d = jsonMember(g, "duty");
-  if (applies(d))
-    o << "    duty hour:     T_eq " << jsonNumberText(jsonMember(d, "equivalent_torque")) << " N·m (" << str(jsonMember(d, "deciding_flank"))
-      << "), K_A = T_eq/T_n " << jsonNumberText(jsonMember(g, "application_factor"), "%.3g") << " (assumed "
-      << jsonNumberText(jsonMember(g, "assumed_application_factor"), "%.3g") << "); " << str(jsonMember(d, "basis")) << "\n";
+  if (jsonFlag(d, "applies"))
+    o << "    duty hour:     T_eq " << jsonNumberText(jsonMember(d, "equivalent_torque")) << " N·m ("
+      << jsonText(jsonMember(d, "deciding_flank")) << "), K_A = T_eq/T_n "
+      << jsonNumberText(jsonMember(g, "application_factor"), "%.3g") << " (assumed "
+      << jsonNumberText(jsonMember(g, "assumed_application_factor"), "%.3g") << "); "
+      << jsonText(jsonMember(d, "basis")) << "\n";
   else
-    o << "    duty hour:     n/a (" << str(jsonMember(d, "reason")) << ")\n";
-  o << "    peak |T| " << jsonNumberText(jsonMember(g, "peak")) << " N·m at t = " << jsonNumberText(jsonMember(g, "t_peak")) << " s; ratings T_2N "
-    << jsonNumberText(jsonMember(g, "rated_torque")) << ", T_2max " << jsonNumberText(jsonMember(g, "max_torque")) << " N·m (n/a: not given)\n";
+    o << "    duty hour:     n/a (" << jsonText(jsonMember(d, "reason")) << ")\n";
+  o << "    peak |T| " << jsonNumberText(jsonMember(g, "peak"))
+    << " N·m at t = " << jsonNumberText(jsonMember(g, "t_peak")) << " s; ratings T_2N "
+    << jsonNumberText(jsonMember(g, "rated_torque")) << ", T_2max " << jsonNumberText(jsonMember(g, "max_torque"))
+    << " N·m (n/a: not given)\n";
 }
 
 // The duty hour's equivalent torques, or why there is none.
@@ -129,18 +133,22 @@ std::string dutyText(const json& sizing) {
   if (g.is_object()) gearText(o, g);
   const json& m = jsonMember(sizing, "motor_duty");
   if (m.is_object()) {
-    o << "  motor duty (" << str(jsonMember(m, "method")) << "): " << str(jsonMember(m, "designation")) << "\n";
-    if (jsonMember(m, "start_known").is_boolean() && jsonMember(m, "start_known").get<bool>())
+    o << "  motor duty (" << jsonText(jsonMember(m, "method")) << "): " << jsonText(jsonMember(m, "designation"))
+      << "\n";
+    if (jsonFlag(m, "start_known"))
       o << "    one start: t_D " << jsonNumberText(jsonMember(m, "start_time"), "%.3g") << " s, rotor heat Q_start "
-        << jsonNumberText(jsonMember(m, "start_heat"), "%.4g") << " J = " << jsonNumberText(jsonMember(m, "equivalent_locked_time"), "%.3g")
+        << jsonNumberText(jsonMember(m, "start_heat"), "%.4g")
+        << " J = " << jsonNumberText(jsonMember(m, "equivalent_locked_time"), "%.3g")
         << " s at standstill (P_s = M_s·ω0 " << jsonNumberText(jsonMember(m, "locked_rotor_losses")) << " W; t_E "
         << jsonNumberText(jsonMember(m, "locked_rotor_time"), "%.3g") << " s)\n"
-        << "    permissible starts Z " << jsonNumberText(jsonMember(m, "permissible_starts"), "%.3g") << " per hour (Z_0 "
-        << jsonNumberText(jsonMember(m, "no_load_starts"), "%.3g") << ", ½·J_M·ω0² " << jsonNumberText(jsonMember(m, "no_load_start_heat"))
-        << " J, steady rotor losses " << jsonNumberText(jsonMember(m, "steady_loss_share"), "%.3g")
-        << " of nominal); starting time share N·t_D/3600 s " << jsonNumberText(jsonMember(m, "starting_time_share"), "%.3g") << "\n";
+        << "    permissible starts Z " << jsonNumberText(jsonMember(m, "permissible_starts"), "%.3g")
+        << " per hour (Z_0 " << jsonNumberText(jsonMember(m, "no_load_starts"), "%.3g") << ", ½·J_M·ω0² "
+        << jsonNumberText(jsonMember(m, "no_load_start_heat")) << " J, steady rotor losses "
+        << jsonNumberText(jsonMember(m, "steady_loss_share"), "%.3g")
+        << " of nominal); starting time share N·t_D/3600 s "
+        << jsonNumberText(jsonMember(m, "starting_time_share"), "%.3g") << "\n";
     else
-      o << "    n/a (" << str(jsonMember(m, "start_unknown")) << ")\n";
+      o << "    n/a (" << jsonText(jsonMember(m, "start_unknown")) << ")\n";
   }
   return o.str();
 }

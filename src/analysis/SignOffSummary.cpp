@@ -13,23 +13,23 @@ using nlohmann::json;
 
 namespace {
 
-
-std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
-
 json windowJson(const WindowDamage& w) {
   if (!w.applies) return {{"applies", false}, {"reason", w.not_applicable}};
   json top = json::array();
   for (const DamagingCycle& d : w.top)
     top.push_back({{"range", jsonNumber(d.range)}, {"mean", jsonNumber(d.mean)}, {"count", jsonNumber(d.count)},
-                   {"amplitude_equivalent", jsonNumber(d.amplitude_equivalent)}, {"damage", jsonNumber(d.damage)}});
-  return {{"applies", true}, {"t_begin", jsonNumber(w.t_begin)}, {"t_end", jsonNumber(w.t_end)}, {"damage", jsonNumber(w.damage)},
-          {"cycles", jsonNumber(w.cycles)}, {"column", w.where}, {"dominant_cycles", top}};
+                   {"amplitude_equivalent", jsonNumber(d.amplitude_equivalent)},
+                   {"damage", jsonNumber(d.damage)}});
+  return {{"applies", true}, {"t_begin", jsonNumber(w.t_begin)}, {"t_end", jsonNumber(w.t_end)},
+          {"damage", jsonNumber(w.damage)}, {"cycles", jsonNumber(w.cycles)}, {"column", w.where},
+          {"dominant_cycles", top}};
 }
 
 // "no damage" where a life is infinite, "n/a" where the window is missing.
 std::string lifeText(const json& window, const json& life, const char* unit) {
-  if (!jsonMember(window, "applies").is_boolean() || !jsonMember(window, "applies").get<bool>()) return "n/a";
-  return life.is_number() ? jsonNumberText(life, "%.3g") + unit : std::string("no damage (all cycles below a cut-off knee)");
+  if (!jsonFlag(window, "applies")) return "n/a";
+  return life.is_number() ? jsonNumberText(life, "%.3g") + unit
+                          : std::string("no damage (all cycles below a cut-off knee)");
 }
 
 void dominantText(std::ostringstream& o, const json& window, const std::string& unit) {
@@ -104,17 +104,17 @@ namespace {
 // One signal's damage per start and per hour, each with its life and dominant cycles.
 std::string signalFatigueText(const json& g) {
   std::ostringstream o;
-  const std::string unit = str(jsonMember(g, "unit"));
+  const std::string unit = jsonText(jsonMember(g, "unit"));
   const json &ps = jsonMember(g, "per_start"), &st = jsonMember(g, "steady");
-  o << "    " << str(jsonMember(g, "what")) << ":\n";
-  o << "      per start:  damage " << jsonNumberText(jsonMember(g, "damage_per_start"), "%.3g") << ", starts to failure "
-    << lifeText(ps, jsonMember(g, "starts_to_failure"), "");
-  if (!jsonMember(ps, "applies").get<bool>()) o << " (" << str(jsonMember(ps, "reason")) << ")";
+  o << "    " << jsonText(jsonMember(g, "what")) << ":\n";
+  o << "      per start:  damage " << jsonNumberText(jsonMember(g, "damage_per_start"), "%.3g")
+    << ", starts to failure " << lifeText(ps, jsonMember(g, "starts_to_failure"), "");
+  if (!jsonMember(ps, "applies").get<bool>()) o << " (" << jsonText(jsonMember(ps, "reason")) << ")";
   o << "\n";
   dominantText(o, ps, unit);
-  o << "      per hour:   damage " << jsonNumberText(jsonMember(g, "damage_per_hour"), "%.3g") << " 1/h, hours to failure "
-    << lifeText(st, jsonMember(g, "hours_to_failure"), " h");
-  if (!jsonMember(st, "applies").get<bool>()) o << " (" << str(jsonMember(st, "reason")) << ")";
+  o << "      per hour:   damage " << jsonNumberText(jsonMember(g, "damage_per_hour"), "%.3g")
+    << " 1/h, hours to failure " << lifeText(st, jsonMember(g, "hours_to_failure"), " h");
+  if (!jsonMember(st, "applies").get<bool>()) o << " (" << jsonText(jsonMember(st, "reason")) << ")";
   o << "\n";
   dominantText(o, st, unit);
   return o.str();
@@ -124,8 +124,9 @@ std::string signalFatigueText(const json& g) {
 std::string fatigueText(const json& f) {
   if (!f.is_object()) return "";
   std::ostringstream o;
-  o << "  fatigue (rainflow after ASTM E1049-85, Miner's rule; below the knee: " << str(jsonMember(f, "below_knee"))
-    << "; mean correction: " << str(jsonMember(f, "mean_correction")) << ")\n";
+  o << "  fatigue (rainflow after ASTM E1049-85, Miner's rule; below the knee: "
+    << jsonText(jsonMember(f, "below_knee")) << "; mean correction: " << jsonText(jsonMember(f, "mean_correction"))
+    << ")\n";
   for (const auto& [name, g] : jsonMember(f, "signals").items()) o << signalFatigueText(g);
   return o.str();
 }
@@ -134,15 +135,18 @@ std::string fatigueText(const json& f) {
 std::string couplingSelectionText(const json& c) {
   if (!c.is_object()) return "";
   std::ostringstream o;
-  o << "  coupling selection (" << str(jsonMember(c, "method")) << "), torques at the crank axis:\n"
-    << "    peak torque: start " << jsonNumberText(jsonMember(c, "start_peak")) << ", steady " << jsonNumberText(jsonMember(c, "steady_peak"))
-    << " N·m; vibratory amplitude T_W " << jsonNumberText(jsonMember(c, "vibratory_amplitude")) << " N·m at f = "
-    << jsonNumberText(jsonMember(c, "excitation_frequency")) << " Hz (S_f " << jsonNumberText(jsonMember(c, "S_f"), "%.3g")
-    << "); damping power P_W " << jsonNumberText(jsonMember(c, "damping_power_run")) << " W\n"
-    << "    factors S_t " << jsonNumberText(jsonMember(c, "S_t"), "%.3g") << ", S_z " << jsonNumberText(jsonMember(c, "S_z"), "%.3g") << ", S_A "
-    << jsonNumberText(jsonMember(c, "S_A"), "%.3g") << "; ratings T_KN " << jsonNumberText(jsonMember(c, "rated_torque")) << ", T_Kmax "
-    << jsonNumberText(jsonMember(c, "max_torque")) << ", T_KW " << jsonNumberText(jsonMember(c, "vibratory_torque")) << " N·m, P_KW "
-    << jsonNumberText(jsonMember(c, "damping_power")) << " W (n/a: not given)\n";
+  o << "  coupling selection (" << jsonText(jsonMember(c, "method")) << "), torques at the crank axis:\n"
+    << "    peak torque: start " << jsonNumberText(jsonMember(c, "start_peak")) << ", steady "
+    << jsonNumberText(jsonMember(c, "steady_peak")) << " N·m; vibratory amplitude T_W "
+    << jsonNumberText(jsonMember(c, "vibratory_amplitude"))
+    << " N·m at f = " << jsonNumberText(jsonMember(c, "excitation_frequency")) << " Hz (S_f "
+    << jsonNumberText(jsonMember(c, "S_f"), "%.3g") << "); damping power P_W "
+    << jsonNumberText(jsonMember(c, "damping_power_run")) << " W\n"
+    << "    factors S_t " << jsonNumberText(jsonMember(c, "S_t"), "%.3g") << ", S_z "
+    << jsonNumberText(jsonMember(c, "S_z"), "%.3g") << ", S_A " << jsonNumberText(jsonMember(c, "S_A"), "%.3g")
+    << "; ratings T_KN " << jsonNumberText(jsonMember(c, "rated_torque")) << ", T_Kmax "
+    << jsonNumberText(jsonMember(c, "max_torque")) << ", T_KW " << jsonNumberText(jsonMember(c, "vibratory_torque"))
+    << " N·m, P_KW " << jsonNumberText(jsonMember(c, "damping_power")) << " W (n/a: not given)\n";
   return o.str();
 }
 

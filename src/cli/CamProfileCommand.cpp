@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/Commands.h"
+#include "cli/SceneOptions.h"
 #include "cli/UsageError.h"
 #include "io/AtomicFile.h"
 #include "report/Gnuplot.h"
@@ -114,9 +115,8 @@ Subcommand addCamProfileCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("cam-profile",
                                      "cam drive with optimal reversal of Loveikin and Pochka: motion law and cam profile to CSV; --compare runs "
                                      "the cam against a crank of equal stroke");
-  cmd->add_option("scene", args->scene.scene_path, "scene file (YAML) with cam.stroke")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--set", args->scene.overrides, "override a scene value, key.path=value (repeatable)")
-      ->allow_extra_args(false);
+  addSceneFile(*cmd, args->scene, "scene file (YAML) with cam.stroke");
+  addSceneOverrides(*cmd, args->scene);
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/cam)");
   cmd->add_option("--samples", args->samples, "rows over one cam turn (default 721: every 0.5 deg)")
       ->check(CLI::Range(2, 1000000));

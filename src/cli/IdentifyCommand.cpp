@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "cli/SceneOptions.h"
 #include "cli/UsageError.h"
 #include "report/OutputDir.h"
 #include "scene/SceneParser.h"
@@ -149,7 +150,7 @@ Subcommand addIdentifyCommand(CLI::App& app) {
       "identify",
       "scene values (coupling stiffness and damping, friction, motor data) that reproduce measured signals, with "
       "their uncertainties; identify.json, figures");
-  cmd->add_option("scene", args->scene.scene_path, "scene file (YAML)")->required()->check(CLI::ExistingFile);
+  addSceneFile(*cmd, args->scene, "scene file (YAML)");
   cmd->add_option("--data", args->data,
                   "measured CSV: a column t[s] and any output columns of simulate with their units, e.g. "
                   "omega_crank[rad/s], stator_current[A]")
@@ -169,8 +170,7 @@ Subcommand addIdentifyCommand(CLI::App& app) {
                   "measurement noise COLUMN=SIGMA in the column's unit (repeatable); default: estimated from the "
                   "residuals of a first fit")
       ->allow_extra_args(false);
-  cmd->add_option("--set", args->scene.overrides, "override a scene value for every run, key.path=value (repeatable)")
-      ->allow_extra_args(false);
+  addSceneOverrides(*cmd, args->scene, "override a scene value for every run, key.path=value (repeatable)");
   addFitOptions(*cmd, *args);
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/identify)");
   cmd->footer(kIdentifyFooter);

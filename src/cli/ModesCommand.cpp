@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "cli/SceneOptions.h"
 #include "modes/ModalAnalysis.h"
 #include "modes/ModesFigures.h"
 #include "report/OutputDir.h"
@@ -102,11 +103,8 @@ Subcommand addModesCommand(CLI::App& app) {
   auto a = std::make_shared<ModesArgs>();
   CLI::App* cmd = app.add_subcommand(
       "modes", "torsional natural frequencies, Floquet stability, Campbell diagram and stability charts of a drive");
-  cmd->add_option("scene", a->scene.scene_path, "scene file (YAML), e.g. model/balanced-4cart.yaml")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--set", a->scene.overrides, "override a scene value, key.path=value (repeatable)")
-      ->allow_extra_args(false);
+  addSceneFile(*cmd, a->scene);
+  addSceneOverrides(*cmd, a->scene);
   cmd->add_option("--out", a->out_dir, "output folder (default out/<scene name>/modes/)");
   addChartOptions(*cmd, *a);
   cmd->footer(kModesFooter);

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "cli/SceneOptions.h"
 #include "report/OutputDir.h"
 #include "scene/SceneParser.h"
 #include "studies/MotorStudy.h"
@@ -44,11 +45,8 @@ Subcommand addMotorCommand(CLI::App& app) {
       "motor",
       "the scene's induction motor: fit its equivalent circuit to the catalogue data, print the model at every "
       "catalogue point, plot the torque-slip and current-slip curves of every motor model");
-  cmd->add_option("scene", args->scene.scene_path, "scene file (YAML), e.g. model/balanced-4cart.yaml")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--set", args->scene.overrides, "override a scene value, key.path=value (repeatable)")
-      ->allow_extra_args(false);
+  addSceneFile(*cmd, args->scene);
+  addSceneOverrides(*cmd, args->scene);
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/motor)");
   cmd->footer(
       "Models: Kloss formula (motor.breakdown_torque, critical slip), the dynamic Kloss characteristic (same static\n"

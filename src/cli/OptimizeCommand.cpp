@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "cli/SceneOptions.h"
 #include "report/OutputDir.h"
 #include "scene/SceneParser.h"
 #include "scene/SceneSchema.h"
@@ -140,12 +141,9 @@ Subcommand addOptimizeCommand(CLI::App& app) {
   auto args = std::make_shared<OptimizeArgs>();
   CLI::App* cmd = app.add_subcommand(
       "optimize", "scene values that minimise a metric subject to metric bounds (NLopt); optimize.json, history.csv, figures");
-  cmd->add_option("scene", args->scene.scene_path, "scene file (YAML)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--set", args->scene.overrides, "override a scene value for every evaluation, key.path=value (repeatable)")
-      ->allow_extra_args(false);
-  cmd->add_option("--param", args->params, "scene key to vary, e.g. crank.offset_deg (repeatable)")
-      ->required()
-      ->allow_extra_args(false);
+  addSceneFile(*cmd, args->scene, "scene file (YAML)");
+  addSceneOverrides(*cmd, args->scene, "override a scene value for every evaluation, key.path=value (repeatable)");
+  addStudyParams(*cmd, args->params);
   cmd->add_option("--range", args->ranges, "bounds a:b of the preceding --param (its scene unit)")
       ->required()
       ->allow_extra_args(false);

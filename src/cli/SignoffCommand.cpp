@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "cli/SceneOptions.h"
 #include "cli/RunOutputs.h"
 #include "report/OutputDir.h"
 #include "scene/SceneParser.h"
@@ -56,11 +57,8 @@ Subcommand addSignoffCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "signoff", "the sign-off sheet of a drive: every check with value, limit, method and verdict; writes "
                  "signoff.json, signoff.html, signoff.pdf");
-  cmd->add_option("scene", a->scene.scene_path, "scene file (YAML), e.g. model/balanced-4cart.yaml")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--set", a->scene.overrides, "override a scene value, key.path=value (repeatable)")
-      ->allow_extra_args(false);
+  addSceneFile(*cmd, a->scene);
+  addSceneOverrides(*cmd, a->scene);
   cmd->add_option("--out", a->out_dir, "output folder (default out/<scene name>/signoff/)");
   cmd->footer(
       "Simulates the scene (multibody) with its modal analysis and writes the run's files and the sheet: the scene\n"

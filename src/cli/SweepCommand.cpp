@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "cli/SceneOptions.h"
 #include "cli/UsageError.h"
 #include "report/OutputDir.h"
 #include "scene/Plausibility.h"
@@ -346,12 +347,9 @@ Subcommand addSweepCommand(CLI::App& app) {
   auto args = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "sweep", "one simulation per value of one or more scene keys; sweep.csv, sweep.json, plots, optimum");
-  cmd->add_option("scene", args->scene.scene_path, "scene file (YAML)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--set", args->scene.overrides, "override a scene value for every point, key.path=value (repeatable)")
-      ->allow_extra_args(false);
-  cmd->add_option("--param", args->params, "scene key to vary, e.g. crank.offset_deg (repeatable)")
-      ->required()
-      ->allow_extra_args(false);
+  addSceneFile(*cmd, args->scene, "scene file (YAML)");
+  addSceneOverrides(*cmd, args->scene, "override a scene value for every point, key.path=value (repeatable)");
+  addStudyParams(*cmd, args->params);
   addDesignOptions(*cmd, *args);
   addExecutionOptions(*cmd, *args);
   cmd->add_option("--model", args->model, "multibody (default) or reduced")

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/Commands.h"
+#include "cli/SceneOptions.h"
 #include "cli/UsageError.h"
 
 namespace {
@@ -23,12 +24,9 @@ std::string versionText() {
 }
 
 void addSceneArgs(CLI::App* cmd, rollerdyn::cli::SceneArgs& args) {
-  cmd->add_option("scene", args.scene_path, "scene file (YAML), e.g. model/balanced-4cart.yaml")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--set", args.overrides,
-                  "override a scene value, key.path=value (repeatable), e.g. --set crank.offset_deg=60")
-      ->allow_extra_args(false);
+  rollerdyn::cli::addSceneFile(*cmd, args);
+  rollerdyn::cli::addSceneOverrides(
+      *cmd, args, "override a scene value, key.path=value (repeatable), e.g. --set crank.offset_deg=60");
 }
 
 using rollerdyn::cli::Subcommand;

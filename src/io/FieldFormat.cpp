@@ -18,6 +18,13 @@ const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k) {
   return j.is_object() && j.contains(k) ? j.at(k) : null_json;
 }
 
+bool jsonFlag(const nlohmann::json& j, const char* k) {
+  const nlohmann::json& v = jsonMember(j, k);
+  return v.is_boolean() && v.get<bool>();
+}
+
+std::string jsonText(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
+
 std::string printfNumber(const char* format, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, v);

@@ -20,6 +20,11 @@ nlohmann::json jsonNumber(double v);
 // Member k of a JSON object; null when j is not an object or has no such member (summary.json
 // readers of the console and the report).
 const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k);
+// Member k of j is the boolean true (false when it is missing or not a boolean), e.g. a
+// window's "applies".
+bool jsonFlag(const nlohmann::json& j, const char* k);
+// A JSON text as it is; "" where v is not a text.
+std::string jsonText(const nlohmann::json& v);
 // A JSON number as printf's `format` of v·scale; "n/a" when v is not a number (null, text).
 std::string jsonNumberText(const nlohmann::json& v, const char* format = "%.4g", double scale = 1.0);
 // v in printf's `format` ("%.1f", "%.0f %%"): a fixed layout where a column or a sentence wants

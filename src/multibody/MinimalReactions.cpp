@@ -21,12 +21,10 @@ MinimalReactions::MinimalReactions(const MultibodyModel& model, const SimTK::Sta
 
 void MinimalReactions::row(const SimTK::State& s, const MinimalDynamics& dyn, std::vector<double>& re) {
   const SimTK::SimbodyMatterSubsystem& matter = model_.matter();
-  const Scene& scene = model_.scene();
   const SimTK::Vector& udot = dyn.udot();
   const SimTK::Vector_<SimTK::SpatialVec>& applied = dyn.appliedBodyForces();
   matter.calcBodyAccelerationFromUDot(s, udot, body_accelerations_);
   const SimTK::Vector normals = dyn.guideNormals(s);
-  const SimTK::Vec3 gravity(0, -scene.loads.gravity, 0);
 
   const ColumnLayout& L = model_.reactionsLayout();
   L.reset(re);
@@ -41,29 +39,22 @@ void MinimalReactions::row(const SimTK::State& s, const MinimalDynamics& dyn, st
   if (model_.elastic()) bearing += netForce(model_.motorSide());
   for (size_t j = 0; j < model_.carts().size(); ++j) {
     const CartRig& c = model_.carts()[j];
-    const double friction = model_.hasGuideFriction() ? model_.frictionElement().frictionForce(s, int(j)) : 0.0;
-    const double n_front = normals[2 * int(j)], n_rear = normals[2 * int(j) + 1];
+    const GuideNormals n{normals[2 * int(j)], normals[2 * int(j) + 1]};
+    const double friction = model_.guideFrictionForce(s, int(j));
     const SimTK::Vec2 F = dyn.loopForce(s, int(j));  // on the cart at B
     if (!c.cam.isEmptyHandle()) {
-      // Cam drive: "F_rod" > 0 pulls the cart towards the shaft, like a rod in tension; the pusher
-      // puts the opposite force on the cam. The coupler acts on mobilities only: no bearing load.
-      model_.setCartReactions(int(j) + 1, {n_front, n_rear, -c.side * F[0], friction, -F[0], 0.0}, re);
+      // Cam drive: the coupler acts on mobilities only: no bearing load.
+      model_.setCamReactions(int(j), n, friction, F[0], re);
       continue;
     }
     const SimTK::Vec3 F_rod_on_cart(F[0], F[1], 0);
-    const SimTK::Vec3 p_A = model_.crank().findStationLocationInGround(s, c.p_CrankPin);
-    const SimTK::UnitVec3 e_BA(p_A - c.cart.getBodyOriginLocation(s));
-    // Force of the rod on the crank pin: rod free body m·a_S = F_A + (-F_B) + m·g.
-    SimTK::Vec3 F_rod_on_crank = -F_rod_on_cart;
+    SimTK::Vec3 a_S(0);
     if (!c.rod.isEmptyHandle()) {
-      const SimTK::MobilizedBodyIndex ir = c.rod.getMobilizedBodyIndex();
-      F_rod_on_crank += -c.rod_mass * centreOfMassAcceleration(s, c.rod, body_accelerations_[ir]) +
-                        c.rod_mass * gravity;
+      a_S = centreOfMassAcceleration(s, c.rod, body_accelerations_[c.rod.getMobilizedBodyIndex()]);
       bearing += netForce(c.rod);
     }
     bearing += F_rod_on_cart;  // the cart pushes the subtree with -F at B (or at the pin)
-    model_.setCartReactions(
-        int(j) + 1, {n_front, n_rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]}, re);
+    model_.setRodReactions(s, int(j), n, friction, F_rod_on_cart, a_S, re);
   }
   L.set(re, Column::bearing_x, bearing[0]);
   L.set(re, Column::bearing_y, bearing[1]);

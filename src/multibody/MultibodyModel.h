@@ -38,6 +38,7 @@ class ElasticCoupling;
 class CrankshaftTorsion;
 class RollerLoadForce;
 class GuideFriction;
+struct GuideNormals;
 class EnergyMeter;
 
 struct MultibodyOptions {
@@ -150,11 +151,18 @@ class MultibodyModel {
   std::vector<std::string> reactionColumns() const { return reactions_layout_.names(); }
   const ColumnLayout& timeseriesLayout() const { return timeseries_layout_; }
   const ColumnLayout& reactionsLayout() const { return reactions_layout_; }
-  // One cart's columns of a reactions row (cart = j, 1-based) [N].
-  struct CartReactions {
-    double N_front, N_rear, F_rod, friction, crankpin_x, crankpin_y;
-  };
-  void setCartReactions(int cart, const CartReactions& r, std::vector<double>& reactions_row) const;
+  // One cart's columns of a reactions row (cart j, 0-based) from the force on the cart at its
+  // hinge B, whichever formulation found it [N]; both formulations write them here.
+  // Cam: Fx_on_cart, the cam's horizontal force on the cart.
+  void setCamReactions(int j, const GuideNormals& n, double friction, double Fx_on_cart,
+                       std::vector<double>& reactions_row) const;
+  // Rod: F_rod_on_cart, the rod's force on the cart; a_S, the rod's centre-of-mass acceleration
+  // (read only when the rod is a body). State realized to Position.
+  void setRodReactions(const SimTK::State& s, int j, const GuideNormals& n, double friction,
+                       const SimTK::Vec3& F_rod_on_cart, const SimTK::Vec3& a_S,
+                       std::vector<double>& reactions_row) const;
+  // The guide friction's force on cart j as the model applies it; 0 without guide friction [N].
+  double guideFrictionForce(const SimTK::State& s, int j) const;
   // One output row of each table from a state realized to Acceleration.
   void observe(const SimTK::State& s, std::vector<double>& timeseries_row,
                std::vector<double>& reactions_row) const;
@@ -179,6 +187,11 @@ class MultibodyModel {
   EnergySnapshot energy(const SimTK::State& s) const;  // realized to Dynamics
 
  private:
+  // One cart's columns of a reactions row (cart = j + 1) [N].
+  struct CartReactions {
+    double N_front, N_rear, F_rod, friction, crankpin_x, crankpin_y;
+  };
+  void setCartReactions(int cart, const CartReactions& r, std::vector<double>& reactions_row) const;
   // closedFormState without the motor's states.
   SimTK::State closedFormKinematics(double crank_angle, double crank_speed, double twist) const;
   // The motor's own states at t = 0 (steady when the motor ran before, MotorLaw::initialState),

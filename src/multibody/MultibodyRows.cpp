@@ -91,47 +91,61 @@ void MultibodyModel::setCartReactions(int cart, const CartReactions& r, std::vec
   L.set(re, Column::crankpin_y, cart, r.crankpin_y);
 }
 
+void MultibodyModel::setCamReactions(int j, const GuideNormals& n, double friction, double Fx_on_cart,
+                                     std::vector<double>& re) const {
+  // "F_rod" > 0 pulls the cart towards the shaft, like a rod in tension; the pusher puts the
+  // opposite force on the cam.
+  setCartReactions(j + 1, {n.front, n.rear, -carts_[j].side * Fx_on_cart, friction, -Fx_on_cart, 0.0}, re);
+}
+
+void MultibodyModel::setRodReactions(const SimTK::State& s, int j, const GuideNormals& n, double friction,
+                                     const SimTK::Vec3& F_rod_on_cart, const SimTK::Vec3& a_S,
+                                     std::vector<double>& re) const {
+  const CartRig& c = carts_[j];
+  // Pin A in ground, and the unit vector B -> A along the rod: tension pulls the cart to A.
+  const SimTK::Vec3 p_A = c.crank.findStationLocationInGround(s, c.p_CrankPin);
+  const SimTK::UnitVec3 e_BA(p_A - c.cart.getBodyOriginLocation(s));
+  // Force of the rod on the crank pin: rod free body m·a_S = F_A + (-F_B) + m·g.
+  SimTK::Vec3 F_rod_on_crank = -F_rod_on_cart;
+  if (!c.rod.isEmptyHandle())
+    F_rod_on_crank += -c.rod_mass * a_S + c.rod_mass * SimTK::Vec3(0, -scene_.loads.gravity, 0);
+  setCartReactions(j + 1, {n.front, n.rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]},
+                   re);
+}
+
+double MultibodyModel::guideFrictionForce(const SimTK::State& s, int j) const {
+  return friction_force_ ? friction_force_->frictionForce(s, j) : 0.0;
+}
+
 void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>& re) const {
   const double torque_coupling = couplingTorque(s);
   SimTK::Vector_<SimTK::SpatialVec> reactions;
   matter_.calcMobilizerReactionForces(s, reactions);
   const SimTK::Vector_<SimTK::SpatialVec>& applied = system_.getRigidBodyForces(s, SimTK::Stage::Dynamics);
-  const double g = scene_.loads.gravity;
   const ColumnLayout& L = reactions_layout_;
   L.reset(re);
   L.set(re, Column::t, s.getTime());
   for (size_t j = 0; j < carts_.size(); ++j) {
-    const int cart = int(j) + 1;
     const CartRig& c = carts_[j];
     const SimTK::MobilizedBodyIndex ic = c.cart.getMobilizedBodyIndex();
     const GuideNormals n = solveGuideNormals(reactions[ic], c.side, scene_.carts.geometry);
-    const double friction = friction_force_ ? friction_force_->frictionForce(s, int(j)) : 0.0;
+    const double friction = guideFrictionForce(s, int(j));
     if (!c.cam.isEmptyHandle()) {
       // Cam drive: the coupler acts on the mobilities [crank, cart] (in that order); Simbody
       // returns constraint forces with the sign opposite to applied forces. The cam force on
-      // the cart is horizontal; "F_rod" > 0 pulls the cart towards the shaft, like a rod in
-      // tension, and the pusher puts the opposite force on the cam.
+      // the cart is horizontal.
       const SimTK::Vector f = c.cam.getConstrainedMobilityForcesAsVector(s);
-      const double Fx_on_cart = -f[1];
-      setCartReactions(cart, {n.front, n.rear, -c.side * Fx_on_cart, friction, -Fx_on_cart, 0.0}, re);
+      setCamReactions(int(j), n, friction, -f[1], re);
       continue;
     }
     // Force of the rod on the cart at B from the cart's free body: m·a = applied + guide + rod.
     const double m_cart = c.cart.getBodyMass(s);
     const SimTK::Vec3 a_cart(c.cart.getOneUDot(s, 0), 0, 0);
     const SimTK::Vec3 F_rod_on_cart = m_cart * a_cart - applied[ic][1] - reactions[ic][1];
-    // Pin A in ground, and the unit vector B -> A along the rod: tension pulls the cart to A.
-    const SimTK::Vec3 p_A = c.crank.findStationLocationInGround(s, c.p_CrankPin);
-    const SimTK::Vec3 p_B = c.cart.getBodyOriginLocation(s);
-    const SimTK::UnitVec3 e_BA(p_A - p_B);
-    // Force of the rod on the crank pin: rod free body m·a_S = F_A + (-F_B) + m·g.
-    SimTK::Vec3 F_rod_on_crank = -F_rod_on_cart;
-    if (!c.rod.isEmptyHandle()) {
-      const SimTK::Vec3 a_S = c.rod.findStationAccelerationInGround(s, SimTK::Vec3(0.5 * c.rod_length, 0, 0));
-      F_rod_on_crank += -c.rod_mass * a_S + c.rod_mass * SimTK::Vec3(0, -g, 0);
-    }
-    setCartReactions(cart, {n.front, n.rear, ~F_rod_on_cart * e_BA, friction, F_rod_on_crank[0], F_rod_on_crank[1]},
-                     re);
+    // The rod's centre of mass is at its middle.
+    SimTK::Vec3 a_S(0);
+    if (!c.rod.isEmptyHandle()) a_S = c.rod.findStationAccelerationInGround(s, SimTK::Vec3(0.5 * c.rod_length, 0, 0));
+    setRodReactions(s, int(j), n, friction, F_rod_on_cart, a_S, re);
   }
   const SimTK::Vec3 bearing = reactions[crank_.getMobilizedBodyIndex()][1];
   L.set(re, Column::bearing_x, bearing[0]);

@@ -15,6 +15,7 @@ namespace {
 using nlohmann::json;
 
 using section_rows::applies;
+using section_rows::kRowsHead;
 using section_rows::row;
 using section_rows::text;
 
@@ -43,7 +44,7 @@ void gearTable(std::ostringstream& h, const json& g) {
     << text(jsonMember(g, "method")) << "; the " << text(jsonMember(g, "torque"))
     << ". Load cycles: crank revolutions in each torque class, a class at its upper limit; T_eq = (Σ n_i·T_i^p / N_L)^(1/p) "
        "per flank with N_L all revolutions; K_A = T_eq / T_n with T_n = u·η·M_n. The verdicts are in the checks "
-       "table.</p>\n<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
+       "table.</p>\n" << kRowsHead;
   row(h, "S-N exponent p / class width ΔT",
       jsonNumberText(jsonMember(g, "exponent"), "%.3g") + " / " + jsonNumberText(jsonMember(g, "class_width")), "- / N·m");
   row(h, "T_n = u·η·M_n", jsonNumberText(jsonMember(g, "nominal_torque")), "N·m", "M_n: " + text(jsonMember(g, "nominal_source")));
@@ -69,8 +70,8 @@ void gearTable(std::ostringstream& h, const json& g) {
 
 void motorDutyTable(std::ostringstream& h, const json& m) {
   h << "<h3>Motor duty after IEC 60034-1</h3>\n<p class=\"small\">" << text(jsonMember(m, "designation"))
-    << ". The verdicts are in the checks table.</p>\n<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
-  if (!(jsonMember(m, "start_known").is_boolean() && jsonMember(m, "start_known").get<bool>())) {
+    << ". The verdicts are in the checks table.</p>\n" << kRowsHead;
+  if (!jsonFlag(m, "start_known")) {
     row(h, "one start", "n/a", "", text(jsonMember(m, "start_unknown")));
   } else {
     row(h, "start time t_D", jsonNumberText(jsonMember(m, "start_time"), "%.3g"), "s");

@@ -1,5 +1,5 @@
-// The table rows of the report's sign-off sections (SignOffSection.cpp, DutySection.cpp), written
-// from summary.json's members only.
+// The tables of the report's sizing, sign-off and duty sections, written from summary.json's
+// members only.
 #pragma once
 
 #include <sstream>
@@ -15,6 +15,9 @@ namespace rollerdyn::section_rows {
 // A JSON text, escaped for HTML; "n/a" where it is not a text.
 inline std::string text(const nlohmann::json& v) { return v.is_string() ? htmlEscape(v.get<std::string>()) : "n/a"; }
 
+// The head of a table of such rows.
+inline constexpr const char* kRowsHead = "<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
+
 // One row: what, value, unit, note (value and note already HTML).
 inline void row(std::ostringstream& h, const std::string& what, const std::string& value, const char* unit,
                 const std::string& note = "") {
@@ -23,8 +26,6 @@ inline void row(std::ostringstream& h, const std::string& what, const std::strin
 }
 
 // A window's "applies" member is true.
-inline bool applies(const nlohmann::json& w) {
-  return jsonMember(w, "applies").is_boolean() && jsonMember(w, "applies").get<bool>();
-}
+inline bool applies(const nlohmann::json& w) { return jsonFlag(w, "applies"); }
 
 }  // namespace rollerdyn::section_rows

@@ -15,6 +15,7 @@ namespace {
 using nlohmann::json;
 
 using section_rows::applies;
+using section_rows::kRowsHead;
 using section_rows::row;
 using section_rows::text;
 
@@ -32,7 +33,7 @@ void fatigueTable(std::ostringstream& h, const json& f) {
   h << "<h3>Fatigue per start and per hour</h3>\n<p class=\"small\">Rainflow counting after ASTM E1049-85 and "
        "Miner's rule; below the knee: "
     << text(jsonMember(f, "below_knee")) << "; mean correction: " << text(jsonMember(f, "mean_correction"))
-    << ".</p>\n<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
+    << ".</p>\n" << kRowsHead;
   for (const auto& [name, g] : jsonMember(f, "signals").items()) {
     const std::string what = jsonMember(g, "what").is_string() ? jsonMember(g, "what").get<std::string>() : name;
     const std::string unit = jsonMember(g, "unit").is_string() ? jsonMember(g, "unit").get<std::string>() : "";
@@ -59,7 +60,7 @@ void fatigueTable(std::ostringstream& h, const json& f) {
 void couplingTable(std::ostringstream& h, const json& c) {
   h << "<h3>Coupling selection after DIN 740-2</h3>\n<p class=\"small\">" << text(jsonMember(c, "method"))
     << "; torques at the crank axis; the verdicts are in the checks table.</p>\n"
-    << "<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
+    << kRowsHead;
   row(h, "peak torque of the start / of the steady window",
       jsonNumberText(jsonMember(c, "start_peak")) + " / " + jsonNumberText(jsonMember(c, "steady_peak")), "N·m");
   row(h, "vibratory torque amplitude T_W at f", jsonNumberText(jsonMember(c, "vibratory_amplitude")) + " at " +

@@ -5,6 +5,7 @@
 
 #include "analysis/SignOffSheet.h"
 #include "report/HtmlReport.h"
+#include "report/SectionRows.h"
 #include "io/FieldFormat.h"
 
 namespace rollerdyn {
@@ -13,7 +14,9 @@ namespace {
 
 using nlohmann::json;
 
-std::string text(const json& v) { return v.is_string() ? htmlEscape(v.get<std::string>()) : "n/a"; }
+using section_rows::kRowsHead;
+using section_rows::row;
+using section_rows::text;
 
 std::string checkCell(const json& v) {
   if (!v.is_string()) return "<td>n/a</td>";
@@ -22,12 +25,6 @@ std::string checkCell(const json& v) {
   const std::string verdict = v.get<std::string>();
   const char* cls = verdict == "pass" ? "ok" : verdict == "FAIL" ? "bad" : verdict == "not applicable" ? "na" : "warn";
   return std::string("<td class=\"") + cls + "\">" + htmlEscape(verdict) + "</td>";
-}
-
-void row(std::ostringstream& h, const std::string& what, const std::string& value, const char* unit,
-         const std::string& note = "") {
-  h << "<tr><td>" << htmlEscape(what) << "</td><td class=\"n\">" << value << "</td><td>" << unit
-    << "</td><td>" << note << "</td></tr>\n";
 }
 
 // A check's limit with the sense of its comparison ("≤ 1", "< 0.9025"); "" without one.
@@ -94,7 +91,7 @@ std::string motorTableHtml(const json& m) {
     h << "<p>No motor torque in this run.</p>\n";
     return h.str();
   }
-  h << "<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
+  h << kRowsHead;
   steadyMotorRows(h, m);
   wholeRunMotorRows(h, jsonMember(m, "whole_run"));
   h << "</table>\n";
@@ -140,13 +137,13 @@ std::string loadSectionHtml(const json& load) {
 // The flywheel's figures, the proposal and the runs that check it.
 std::string flywheelTableHtml(const json& f) {
   std::ostringstream h;
-  h << "<h3>Flywheel</h3>\n<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
+  h << "<h3>Flywheel</h3>\n" << kRowsHead;
   row(h, "kinetic-energy swing ΔT over one steady revolution", jsonNumberText(jsonMember(f, "kinetic_energy_swing")), "J",
       "largest over the window's revolutions");
   row(h, "drive inertia at the crank J (mean 2T/ω²)", jsonNumberText(jsonMember(f, "inertia_effective")), "kg·m²");
   row(h, "target δ* (sizing.target_delta)", jsonNumberText(jsonMember(f, "target_delta")), "-");
   // The proposal is an estimate (never run by simulate): said so, with the runs that check it.
-  const bool estimate = jsonMember(f, "estimate").is_boolean() && jsonMember(f, "estimate").get<bool>();
+  const bool estimate = jsonFlag(f, "estimate");
   const std::string est = estimate ? " (ESTIMATE, not run)" : "";
   row(h, "flywheel on the crankshaft reaching δ*" + est, jsonNumberText(jsonMember(f, "flywheel_crankshaft")), "kg·m²", text(jsonMember(f, "method")));
   row(h, "or on the motor shaft" + est, jsonNumberText(jsonMember(f, "flywheel_motor_shaft")), "kg·m²", "counts u²·δ_red times");
@@ -167,7 +164,7 @@ std::string flywheelTableHtml(const json& f) {
 std::string couplingTableHtml(const json& c) {
   std::ostringstream h;
   if (!c.is_object()) return h.str();
-  h << "<h3>Coupling</h3>\n<table>\n<tr><th>quantity</th><th>value</th><th>unit</th><th>note</th></tr>\n";
+  h << "<h3>Coupling</h3>\n" << kRowsHead;
   row(h, "torque at the crank axis: mean / peak |M| / swing",
       jsonNumberText(jsonMember(c, "mean")) + " / " + jsonNumberText(jsonMember(c, "peak")) + " / " + jsonNumberText(jsonMember(c, "swing")), "N·m");
   row(h, "whole run: peak |M| and when", jsonNumberText(jsonMember(c, "peak_whole_run")) + " at t = " + jsonNumberText(jsonMember(c, "t_peak_whole_run")) + " s",

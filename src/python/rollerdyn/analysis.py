@@ -9,7 +9,7 @@ import pandas as pd
 
 from . import _core
 from ._tables import frame
-from .runs import ResonanceWarning
+from .runs import ResonanceWarning, write_outputs
 from .scene import as_scene
 
 
@@ -34,10 +34,7 @@ class Modes:
     def write(self, out_dir, figures=True):
         """Writes modes.json, frozen.csv, campbell.csv and stability.csv into ``out_dir``
         (created), as ``rollerdyn modes --out out_dir``; with ``figures`` also its figures."""
-        text = self._d.write(os.fspath(out_dir), figures)
-        if text:
-            print(text, end="")
-        return out_dir
+        return write_outputs(self._d, out_dir, figures)
 
     def __str__(self):
         return self._d.text()

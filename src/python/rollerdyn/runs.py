@@ -11,6 +11,16 @@ from ._tables import frame
 from .scene import Scene, as_scene
 
 
+def write_outputs(data, out_dir, figures):
+    """Writes the files of a result (``data``, the module's object) into ``out_dir`` as its
+    command's --out does, with ``figures`` also its figures, and prints the lines the command
+    prints about the figures; returns ``out_dir``."""
+    text = data.write(os.fspath(out_dir), figures)
+    if text:
+        print(text, end="")
+    return out_dir
+
+
 class RunWarning(UserWarning):
     """A warning about a run that the command line prints on stderr: a load that does almost no
     net work, or a scene value that is implausible (a length typed in millimetres)."""
@@ -196,10 +206,7 @@ class Result:
         ``rollerdyn simulate --out out_dir`` does (with modes=True also modes.json, frozen.csv,
         campbell.csv and spectrum.csv, as ``--modes``); with ``figures`` also its --plot figures.
         Returns the folder."""
-        text = self._d.write(os.fspath(out_dir), figures)
-        if text:
-            print(text, end="")
-        return out_dir
+        return write_outputs(self._d, out_dir, figures)
 
     def __str__(self):
         """The summary, start-up and drive-sizing tables ``rollerdyn simulate`` prints."""
