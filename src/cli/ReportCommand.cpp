@@ -11,6 +11,7 @@
 #include "cli/RunOutputs.h"
 #include "io/AtomicFile.h"
 #include "modes/ModesFigures.h"
+#include "modes/ModesHtml.h"
 #include "report/HtmlReport.h"
 #include "report/OutputDir.h"
 #include "report/OutputFolder.h"

@@ -13,10 +13,9 @@
 namespace rollerdyn::validation::motor_detail {
 namespace {
 
-// IEC 60034-1 tolerances on catalogue values (motors up to 150 kW), used as the reference band
-// for the catalogue points the fit cannot meet exactly; one-sided bands as the standard's.
-std::string iecBand(const CatalogueComparison& p, bool* inside) {
-  const double d = p.model - p.catalogue;
+// IEC 60034-1's bands on the rated point's η_n and cos φ_n (d: model − catalogue): below the
+// catalogue value by a tolerance that depends on the value. Empty, `inside` untouched, for any other.
+std::string ratedPointBand(const CatalogueComparison& p, double d, bool* inside) {
   if (p.symbol == "η_n") {
     const double tol = 0.15 * (1 - p.catalogue);
     *inside = d >= -tol;
@@ -27,6 +26,12 @@ std::string iecBand(const CatalogueComparison& p, bool* inside) {
     *inside = d >= -tol;
     return "IEC 60034-1: ≥ cos φ − " + g(tol, 2);
   }
+  return "";
+}
+
+// IEC 60034-1's bands on the starting current and the starting and breakdown torques (d: model −
+// catalogue), in percent of the catalogue value. Empty, `inside` untouched, for any other.
+std::string startAndBreakdownBand(const CatalogueComparison& p, double d, bool* inside) {
   if (p.symbol == "I_s") {
     *inside = d <= 0.2 * p.catalogue;
     return "IEC 60034-1: ≤ +20 %";
@@ -39,8 +44,18 @@ std::string iecBand(const CatalogueComparison& p, bool* inside) {
     *inside = d >= -0.1 * p.catalogue;
     return "IEC 60034-1: ≥ −10 %";
   }
-  *inside = true;
   return "";
+}
+
+// IEC 60034-1 tolerances on catalogue values (motors up to 150 kW), used as the reference band
+// for the catalogue points the fit cannot meet exactly; one-sided bands as the standard's. Empty,
+// and inside, for a point the standard gives no tolerance.
+std::string iecBand(const CatalogueComparison& p, bool* inside) {
+  const double d = p.model - p.catalogue;
+  std::string band = ratedPointBand(p, d, inside);
+  if (band.empty()) band = startAndBreakdownBand(p, d, inside);
+  if (band.empty()) *inside = true;
+  return band;
 }
 
 // The fitted circuit's rated (at ω_n), starting and breakdown torques [N·m].

@@ -7,6 +7,33 @@
 
 namespace rollerdyn::modes {
 
+namespace {
+
+// The shaft segments between the throws: the carts they join, length and stiffness.
+nlohmann::json segmentsJson(const CrankshaftChainModes& m) {
+  nlohmann::json seg = nlohmann::json::array();
+  for (const ChainSegment& s : m.segments)
+    seg.push_back({{"between_carts", {s.cart_a, s.cart_b}}, {"length_m", s.length}, {"stiffness_Nm_per_rad", s.stiffness}});
+  return seg;
+}
+
+// Each elastic mode's band of natural frequency over the revolution, and its shape.
+nlohmann::json modeBandsJson(const CrankshaftChainModes& m) {
+  nlohmann::json modes = nlohmann::json::array();
+  for (size_t k = 0; k < m.modes.size(); ++k) {
+    const ChainModeBand& b = m.modes[k];
+    modes.push_back({{"mode", int(k) + 1},
+                     {"p_min_rad_s", b.p_min},
+                     {"p_max_rad_s", b.p_max},
+                     {"f_min_Hz", b.f_min},
+                     {"f_max_Hz", b.f_max},
+                     {"shape", b.shape}});
+  }
+  return modes;
+}
+
+}  // namespace
+
 nlohmann::json chainJson(const CrankshaftChainModes& m) {
   nlohmann::json j;
   j["applicable"] = m.applies;
@@ -18,21 +45,8 @@ nlohmann::json chainJson(const CrankshaftChainModes& m) {
                 "shaft segments c = G*I_p/dz), frozen over one revolution; checked against Holzer's method";
   j["approximations"] = m.approximations;
   j["angles"] = m.angles;
-  nlohmann::json seg = nlohmann::json::array();
-  for (const ChainSegment& s : m.segments)
-    seg.push_back({{"between_carts", {s.cart_a, s.cart_b}}, {"length_m", s.length}, {"stiffness_Nm_per_rad", s.stiffness}});
-  j["segments"] = seg;
-  nlohmann::json modes = nlohmann::json::array();
-  for (size_t k = 0; k < m.modes.size(); ++k) {
-    const ChainModeBand& b = m.modes[k];
-    modes.push_back({{"mode", int(k) + 1},
-                     {"p_min_rad_s", b.p_min},
-                     {"p_max_rad_s", b.p_max},
-                     {"f_min_Hz", b.f_min},
-                     {"f_max_Hz", b.f_max},
-                     {"shape", b.shape}});
-  }
-  j["modes"] = modes;
+  j["segments"] = segmentsJson(m);
+  j["modes"] = modeBandsJson(m);
   return j;
 }
 

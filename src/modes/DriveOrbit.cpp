@@ -59,6 +59,28 @@ SteadyGuess steadyGuess(const ReducedModel& model) {
   return g;
 }
 
+namespace {
+
+// The equivalent-circuit laws (circuit, Park) are built from the machine's supply, not from
+// omega_sync: the converter's frequency and voltage scale with the speed (U/f constant, no
+// boost), the circuit fixed (taken from the catalogue fit where the scene gives none, so the fit
+// is not redone at the new frequency). Left alone, every speed of a Campbell diagram ran at the
+// operating speed. w0, w0_new: the synchronous speed before and after [rad/s].
+void convertMachineSupply(const Scene& scene, double w0, double w0_new, Scene& s) {
+  const InductionMachineParameters m = sceneMachine(scene);
+  s.induction.circuit.R_s = m.R_s;
+  s.induction.circuit.L_sigma_s = m.L_sigma_s;
+  s.induction.circuit.L_m = m.L_m;
+  s.induction.circuit.R_r = m.R_r[0];
+  s.induction.circuit.L_sigma_r = m.L_sigma_r[0];
+  s.induction.circuit.R_r2 = m.cages > 1 ? m.R_r[1] : 0.0;
+  s.induction.circuit.L_sigma_r2 = m.cages > 1 ? m.L_sigma_r[1] : 0.0;
+  s.induction.frequency = scene.induction.frequency * w0_new / w0;
+  s.induction.voltage = scene.induction.voltage * w0_new / w0;
+}
+
+}  // namespace
+
 Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_now) {
   Scene s = scene;
   const double w0 = scene.motor.omega_sync;
@@ -66,23 +88,7 @@ Scene sceneAtCrankSpeed(const Scene& scene, double omega_target, double omega_no
   if (!(w0_new > 0)) throw std::invalid_argument("crank speed " + std::to_string(omega_target) + " rad/s is out of reach");
   s.motor.omega_sync = w0_new;
   s.motor.critical_slip = scene.motor.critical_slip * w0 / w0_new;
-  // The equivalent-circuit laws (circuit, Park) are built from the machine's supply, not from
-  // omega_sync: the converter's frequency and voltage scale with the speed (U/f constant, no
-  // boost), the circuit fixed (taken from the catalogue fit where the scene gives none, so the fit
-  // is not redone at the new frequency). Left alone, every speed of a Campbell diagram ran at the
-  // operating speed.
-  if (scene.motor.enabled && isMachineLaw(scene.induction.model)) {
-    const InductionMachineParameters m = sceneMachine(scene);
-    s.induction.circuit.R_s = m.R_s;
-    s.induction.circuit.L_sigma_s = m.L_sigma_s;
-    s.induction.circuit.L_m = m.L_m;
-    s.induction.circuit.R_r = m.R_r[0];
-    s.induction.circuit.L_sigma_r = m.L_sigma_r[0];
-    s.induction.circuit.R_r2 = m.cages > 1 ? m.R_r[1] : 0.0;
-    s.induction.circuit.L_sigma_r2 = m.cages > 1 ? m.L_sigma_r[1] : 0.0;
-    s.induction.frequency = scene.induction.frequency * w0_new / w0;
-    s.induction.voltage = scene.induction.voltage * w0_new / w0;
-  }
+  if (scene.motor.enabled && isMachineLaw(scene.induction.model)) convertMachineSupply(scene, w0, w0_new, s);
   return s;
 }
 
@@ -177,6 +183,26 @@ DrivePoint drivePointAt(double phi, const Eigen::VectorXd& x, bool elastic) {
   return p;
 }
 
+// dx/dφ2 of the drive at crank angle phi: each rate over the crank speed, dt/dφ2 = 1/ω2 last;
+// NaN where the crank stalls or reverses (φ2 is no clock any more).
+void ratesOverCrankAngle(DriveModel& drive, double phi, const Eigen::VectorXd& x, bool elastic, bool quasi_static,
+                         Eigen::VectorXd& f) {
+  const DrivePoint p = drivePointAt(phi, x, elastic);
+  f.resize(x.size());
+  if (!(p.omega > 0)) {
+    f.setConstant(NAN);
+    return;
+  }
+  if (quasi_static) drive.setOperatingPoint(p);
+  const Eigen::Vector2d a = drive.accelerations(p);
+  f(0) = a(0) / p.omega;
+  if (elastic) {
+    f(1) = p.twist_rate / p.omega;
+    f(2) = a(1) / p.omega;
+  }
+  f(x.size() - 1) = 1.0 / p.omega;
+}
+
 // The drive over one crank revolution with the crank angle φ2 as the clock: x = [ω2] (rigid) or
 // [ω2, ψ, ψ'] (elastic), scaled by the crank speed and the twist of the breakdown torque, and the
 // time t as the quadrature.
@@ -191,20 +217,7 @@ PeriodicSystem revolutionSystem(DriveModel& drive, double phi0, bool elastic, bo
   else
     sys.scale = Eigen::VectorXd::Constant(1, omega_scale);
   sys.rhs = [&drive, phi0, elastic, quasi_static](double s, const Eigen::VectorXd& x, Eigen::VectorXd& f) {
-    const DrivePoint p = drivePointAt(phi0 + s, x, elastic);
-    f.resize(x.size());
-    if (!(p.omega > 0)) {  // stalled or reversed: φ2 is no clock any more
-      f.setConstant(NAN);
-      return;
-    }
-    if (quasi_static) drive.setOperatingPoint(p);
-    const Eigen::Vector2d a = drive.accelerations(p);
-    f(0) = a(0) / p.omega;
-    if (elastic) {
-      f(1) = p.twist_rate / p.omega;
-      f(2) = a(1) / p.omega;
-    }
-    f(x.size() - 1) = 1.0 / p.omega;  // dt/dφ2
+    ratesOverCrankAngle(drive, phi0 + s, x, elastic, quasi_static, f);
   };
   return sys;
 }

@@ -100,6 +100,23 @@ std::vector<double> departuresAtSection(const RunResult& run, double phi_b, doub
   return deviation;
 }
 
+// The slope of the least-squares line through the points (xs, ys).
+double leastSquaresSlope(const std::vector<double>& xs, const std::vector<double>& ys) {
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < xs.size(); ++i) {
+    mx += xs[i];
+    my += ys[i];
+  }
+  mx /= xs.size();
+  my /= xs.size();
+  double sxy = 0, sxx = 0;
+  for (size_t i = 0; i < xs.size(); ++i) {
+    sxy += (xs[i] - mx) * (ys[i] - my);
+    sxx += (xs[i] - mx) * (xs[i] - mx);
+  }
+  return sxy / sxx;
+}
+
 // Growth per revolution: least squares on log|d_n| while the departure is small (< 1 % of the
 // mean twist: linear), from the second revolution on. Sets g.measured_growth and
 // g.revolutions_fitted where at least three revolutions fit.
@@ -114,19 +131,7 @@ void fitGrowth(double psi_steady, GrowthMeasurement& g) {
     }
   }
   if (xs.size() < 3) return;
-  double mx = 0, my = 0;
-  for (size_t i = 0; i < xs.size(); ++i) {
-    mx += xs[i];
-    my += ys[i];
-  }
-  mx /= xs.size();
-  my /= xs.size();
-  double sxy = 0, sxx = 0;
-  for (size_t i = 0; i < xs.size(); ++i) {
-    sxy += (xs[i] - mx) * (ys[i] - my);
-    sxx += (xs[i] - mx) * (xs[i] - mx);
-  }
-  g.measured_growth = std::exp(sxy / sxx);
+  g.measured_growth = std::exp(leastSquaresSlope(xs, ys));
   g.revolutions_fitted = int(xs.size());
 }
 

@@ -112,18 +112,30 @@ SteadyMotionOptions steadyMotionOptions(DriveModel& reduced, const Scene& scene,
   return so;
 }
 
+// `angles` points at equal crank angles over one revolution from phi0 [rad], each at the guess's
+// speed and twist: the drive turning uniformly.
+std::vector<DrivePoint> uniformRotation(double phi0, const SteadyGuess& g, int angles) {
+  std::vector<DrivePoint> points;
+  for (int k = 0; k < angles; ++k) {
+    DrivePoint p;
+    p.phi = phi0 + 2 * M_PI * k / angles;
+    p.omega = g.omega;
+    p.twist = g.twist;
+    points.push_back(p);
+  }
+  return points;
+}
+
 // Without a steady motion: frozen-angle modes only at the speed the machine runs at, where the
 // motor's static curve carries the mean load. A speed that is not the running speed (the initial
 // speed, often 0) would give modes of a machine that does not exist. Empty (and said in the notes)
 // where there is no such speed.
 std::vector<DrivePoint> uniformRotationPoints(const ReducedModel& rm, const ModesOptions& o, ModesReport& r) {
-  const Scene& scene = rm.scene();
-  std::vector<DrivePoint> points;
   const SteadyGuess g = steadyGuess(rm);
   if (!g.ok) {
     r.notes.push_back("no steady motion (" + r.steady.failure +
                       "): the modal analysis is not applicable (no running speed to linearize about)");
-    return points;
+    return {};
   }
   char b[320];
   std::snprintf(b, sizeof b,
@@ -133,14 +145,7 @@ std::vector<DrivePoint> uniformRotationPoints(const ReducedModel& rm, const Mode
                 r.steady.failure.c_str(), g.omega, g.mean_load_torque);
   r.notes.push_back(b);
   r.fallback_omega = g.omega;
-  for (int k = 0; k < o.angles; ++k) {
-    DrivePoint p;
-    p.phi = scene.initial.crank_angle + 2 * M_PI * k / o.angles;
-    p.omega = g.omega;
-    p.twist = g.twist;
-    points.push_back(p);
-  }
-  return points;
+  return uniformRotation(rm.scene().initial.crank_angle, g, o.angles);
 }
 
 // The largest relative difference of the two models' frozen-angle frequencies over the points.

@@ -1,13 +1,10 @@
 #include "modes/ModesFigures.h"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
-#include "io/ReadFile.h"
+#include "io/FieldFormat.h"
 #include "report/Gnuplot.h"
-#include "modes/RunModes.h"
-#include "report/HtmlReport.h"
 
 namespace rollerdyn::modes {
 namespace {
@@ -16,18 +13,36 @@ FigureFile fileOf(const std::string& dir, const std::string& name, const std::st
   return {name, caption, dir + "/" + name + ".png", dir + "/" + name + ".svg"};
 }
 
-std::string g(double v, const char* f = "%.4g") {
-  if (!std::isfinite(v)) return "–";
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
+// v in printf's format f; "–" in a label for a value that is not finite.
+std::string g(double v, const char* f = "%.4g") { return std::isfinite(v) ? printfNumber(f, v) : "–"; }
+
+// One order's separation band on the Campbell diagram: the wedge 0.9·k·ω … 1.1·k·ω over the
+// drawn speeds up to wmax, red where the margin FAILs, green where it passes, and its margin as a
+// label beside the operating speed. Takes gnuplot's object numbers from `object` on.
+void separationWedge(std::ostringstream& os, const SeparationMargins& sep, const SeparationMargin& m, double wmax,
+                     int& object) {
+  const double k = m.order, lo = (1 - sep.required) * k * wmax, hi = (1 + sep.required) * k * wmax;
+  os << "set object " << object++ << " polygon from 0,0 to " << wmax << "," << lo << " to " << wmax << "," << hi
+     << " to 0,0 fc rgb '" << (m.verdict == "FAIL" ? "#d62728" : "#2ca02c")
+     << "' fs transparent solid 0.15 noborder behind\n";
+  os << "set label " << object++ << " 'SM_{" << m.order << "} = " << g(100 * m.margin, "%.3g") << " % " << m.verdict
+     << "' at " << sep.omega << "," << m.excitation << " left offset 0.8,0 font ',9' tc rgb '"
+     << (m.verdict == "FAIL" ? "#d62728" : "#1a7a1a") << "' front\n";
+}
+
+// At the operating speed, a bar over the natural frequency p_lo … p_hi [rad/s] the margins are
+// taken from (ω_n of the damped pair, or its band). Takes gnuplot's object numbers from `object` on.
+void naturalFrequencyBar(std::ostringstream& os, double omega, double p_lo, double p_hi, int& object) {
+  const double half = p_hi > p_lo ? 0.0 : 0.01 * p_lo;  // a single ω_n: a short bar to be seen
+  os << "set arrow " << object++ << " from " << omega << "," << p_lo - half << " to " << omega << "," << p_hi + half
+     << " nohead lw 4 lc rgb '#000000' front\n";
+  os << "set label " << object++ << " 'ω_n' at " << omega << "," << 0.5 * (p_lo + p_hi)
+     << " right offset -0.6,0 font ',9' front\n";
 }
 
 // The separation margins on the Campbell diagram (gnuplot commands for its preamble): for each
-// order k that drives the coupling mode the wedge 0.9·k·ω … 1.1·k·ω over the drawn speeds, red
-// where its margin at the operating speed FAILs, green where it passes; at the operating speed a
-// bar over the natural frequency the margins are taken from (ω_n of the damped pair, or its band)
-// and each order's margin beside it. Nothing where the margins do not apply.
+// order k that drives the coupling mode its wedge, at the operating speed the bar over the natural
+// frequency and each order's margin beside it. Nothing where the margins do not apply.
 std::string separationShading(const SeparationMargins& sep, double wmax) {
   if (!sep.applicable || !(wmax > 0)) return "";
   std::ostringstream os;
@@ -37,57 +52,10 @@ std::string separationShading(const SeparationMargins& sep, double wmax) {
     if (m.mode != "coupling mode") continue;  // the diagram draws the coupling mode only
     p_lo = m.p_low;
     p_hi = m.p_high;
-    if (m.verdict != "pass" && m.verdict != "FAIL") continue;
-    const double k = m.order, lo = (1 - sep.required) * k * wmax, hi = (1 + sep.required) * k * wmax;
-    os << "set object " << object++ << " polygon from 0,0 to " << wmax << "," << lo << " to " << wmax << "," << hi
-       << " to 0,0 fc rgb '" << (m.verdict == "FAIL" ? "#d62728" : "#2ca02c")
-       << "' fs transparent solid 0.15 noborder behind\n";
-    os << "set label " << object++ << " 'SM_{" << m.order << "} = " << g(100 * m.margin, "%.3g") << " % " << m.verdict
-       << "' at " << sep.omega << "," << m.excitation << " left offset 0.8,0 font ',9' tc rgb '"
-       << (m.verdict == "FAIL" ? "#d62728" : "#1a7a1a") << "' front\n";
+    if (m.verdict == "pass" || m.verdict == "FAIL") separationWedge(os, sep, m, wmax, object);
   }
-  if (std::isfinite(p_lo) && std::isfinite(p_hi)) {
-    const double half = p_hi > p_lo ? 0.0 : 0.01 * p_lo;  // a single ω_n: a short bar to be seen
-    os << "set arrow " << object++ << " from " << sep.omega << "," << p_lo - half << " to " << sep.omega << ","
-       << p_hi + half << " nohead lw 4 lc rgb '#000000' front\n";
-    os << "set label " << object++ << " 'ω_n' at " << sep.omega << "," << 0.5 * (p_lo + p_hi)
-       << " right offset -0.6,0 font ',9' front\n";
-  }
+  if (std::isfinite(p_lo) && std::isfinite(p_hi)) naturalFrequencyBar(os, sep.omega, p_lo, p_hi, object);
   return os.str();
-}
-
-// The separation margins' table of the report (the same rows as modes.json and the console).
-std::string separationHtml(const SeparationMargins& sep) {
-  std::ostringstream h;
-  h << "<h3>Separation margins of the torsional modes (API 617 / API 684 practice)</h3>\n";
-  if (!sep.applicable) {
-    h << "<p>n/a: " << htmlEscape(sep.not_applicable) << "</p>\n";
-    return h.str();
-  }
-  h << "<p class=\"small\">SM = |p − k·ω|/(k·ω) at the operating crank speed ω = " << g(sep.omega, "%.5g")
-    << " rad/s, required ≥ " << g(100 * sep.required, "%.3g")
-    << " %; p the natural frequency ω_n of the coupling mode's damped pair (√λ, the Campbell diagram's undamped "
-       "frequency, beside it); AF = 1/(2ζ) the amplification factor.</p>\n"
-    << "<table>\n<tr><th>mode</th><th>order k</th><th>k·ω [rad/s]</th><th>exciting torque [N·m]</th><th>ω_n [rad/s]</th>"
-       "<th>√λ [rad/s]</th><th>SM [%]</th><th>AF</th><th>verdict</th><th>why</th></tr>\n";
-  auto band = [](double lo, double hi) { return lo == hi ? g(lo, "%.5g") : g(lo, "%.5g") + " … " + g(hi, "%.5g"); };
-  for (const SeparationMargin& m : sep.rows)
-    h << "<tr><td>" << htmlEscape(m.mode) << "</td><td class=\"n\">" << m.order << "</td><td class=\"n\">"
-      << g(m.excitation, "%.5g")
-      << "</td><td class=\"n\">" << g(m.exciting_torque, "%.4g") << "</td><td class=\"n\">"
-      << band(m.p_low, m.p_high) << " (" << htmlEscape(m.frequency_source) << ")</td><td class=\"n\">"
-      << band(m.undamped_low, m.undamped_high) << "</td><td class=\"n\">" << g(100 * m.margin, "%.3g")
-      << "</td><td class=\"n\">" << g(m.amplification, "%.3g") << "</td><td>" << htmlEscape(m.verdict)
-      << "</td><td>" << htmlEscape(m.reason) << "</td></tr>\n";
-  h << "</table>\n";
-  if (!sep.start_crossings.empty()) {
-    h << "<p class=\"small\">Passed through in a start (below the operating speed, judged by the start's torques): ";
-    for (size_t i = 0; i < sep.start_crossings.size(); ++i)
-      h << (i ? ", " : "") << "order " << sep.start_crossings[i].order << " at ω = "
-        << g(sep.start_crossings[i].omega, "%.4g") << " rad/s";
-    h << ".</p>\n";
-  }
-  return h.str();
 }
 
 // One model's frozen-angle frequency against the crank angle (the second model dashed).
@@ -138,9 +106,9 @@ void addFrozenFrequenciesFigure(const ModesReport& r, const std::string& dir, st
                                "steady motion: both models, the two-mass first estimate and the Floquet frequency."));
 }
 
-// The Campbell diagram's curves over the speeds where a steady motion was found: the frozen-angle
-// mean and band, the Floquet frequency; `wmax`, `fmax`: the largest speed and frozen frequency.
-std::vector<PlotSeries> campbellCurves(const CampbellDiagram& campbell, double& wmax, double& fmax) {
+// The Campbell diagram's four curves, styled and still empty: the frozen-angle mean, the low and
+// high ends of its band over the crank angle, the Floquet frequency.
+std::vector<PlotSeries> campbellCurveStyles() {
   PlotSeries mean, lo, hi, fl;
   mean.title = "p, frozen-angle mean";
   mean.color = "#1f77b4";
@@ -152,6 +120,14 @@ std::vector<PlotSeries> campbellCurves(const CampbellDiagram& campbell, double& 
   fl.title = "Floquet frequency";
   fl.color = "#2ca02c";
   fl.style = "linespoints";
+  return {mean, lo, hi, fl};
+}
+
+// The Campbell diagram's curves over the speeds where a steady motion was found: the frozen-angle
+// mean and band, the Floquet frequency; `wmax`, `fmax`: the largest speed and frozen frequency.
+std::vector<PlotSeries> campbellCurves(const CampbellDiagram& campbell, double& wmax, double& fmax) {
+  std::vector<PlotSeries> curves = campbellCurveStyles();
+  PlotSeries &mean = curves[0], &lo = curves[1], &hi = curves[2], &fl = curves[3];
   wmax = 0, fmax = 0;
   for (const CampbellPoint& p : campbell.points) {
     if (!p.found) continue;
@@ -166,7 +142,7 @@ std::vector<PlotSeries> campbellCurves(const CampbellDiagram& campbell, double& 
     wmax = std::max(wmax, p.omega_mean);
     fmax = std::max(fmax, p.frozen.max);
   }
-  return {mean, lo, hi, fl};
+  return curves;
 }
 
 // The order lines k·ω (forced resonance) and k·ω/2 (principal parametric resonance) up to wmax.
@@ -221,9 +197,8 @@ void addCampbellFigure(const ModesReport& r, const std::string& dir, std::vector
                                "ω_n of the damped pair) lies inside it (FAIL), green where it stays outside (pass)."));
 }
 
-// A stability chart's axes, the scene's point, marked dampings and unstable zones (gnuplot);
-// `x`: log10 of the chart's stiffnesses.
-std::string stabilityChartPreamble(const StabilityChart& c, const std::vector<double>& x) {
+// The stiffness axis' tics at the whole powers of ten over `x` (log10 of the stiffnesses).
+std::string powerOfTenTics(const std::vector<double>& x) {
   std::ostringstream pre;
   pre << "set xtics (";
   bool first = true;
@@ -231,24 +206,40 @@ std::string stabilityChartPreamble(const StabilityChart& c, const std::vector<do
     pre << (first ? "" : ", ") << "'10^{" << e << "}' " << e;
     first = false;
   }
-  pre << ")\nset cbrange [*:1]\n";
-  if (x.size() > 1 && c.y.size() > 1) {  // the grid's cells, no padding around them
-    const double dx = (x.back() - x.front()) / (x.size() - 1), dy = (c.y.back() - c.y.front()) / (c.y.size() - 1);
-    pre << "set xrange [" << x.front() - dx / 2 << ":" << x.back() + dx / 2 << "]\nset yrange ["
-        << c.y.front() - dy / 2 << ":" << c.y.back() + dy / 2 << "]\n";
-  }
+  pre << ")\n";
+  return pre.str();
+}
+
+// The scene's point on the chart (a white dot, labelled), the marked dampings (e.g. a paper's: a
+// dashed line across the chart each) and the unstable zones' boxes.
+std::string stabilityChartMarks(const StabilityChart& c) {
+  std::ostringstream pre;
   if (std::isfinite(c.operating_c) && std::isfinite(c.operating_y))
     pre << "set label 1 '' at " << std::log10(c.operating_c) << "," << c.operating_y
         << " point pt 7 ps 2.5 lc rgb 'white' front\nset label 2 'scene' at " << std::log10(c.operating_c) << ","
         << c.operating_y << " offset 1.2,0.8 tc rgb 'white' front\n";
   int label = 10;
-  for (double m : c.marked)  // e.g. a paper's dampings: a dashed line across the chart
+  for (double m : c.marked)
     pre << "set arrow from graph 0, first " << m << " to graph 1, first " << m
         << " nohead dt 2 lw 2 lc rgb 'white' front\nset label " << label++ << " '" << c.y_key_label() << " = " << g(m)
         << "' at graph 0.02, first " << m << " offset 0,0.6 tc rgb 'white' front\n";
   for (const StabilityZone& zz : c.zones)
     pre << "set object rect from " << std::log10(zz.c_min) << "," << zz.y_min << " to " << std::log10(zz.c_max)
         << "," << zz.y_max << " fs empty border lc rgb 'white' lw 2 front\n";
+  return pre.str();
+}
+
+// A stability chart's axes, the scene's point, marked dampings and unstable zones (gnuplot);
+// `x`: log10 of the chart's stiffnesses.
+std::string stabilityChartPreamble(const StabilityChart& c, const std::vector<double>& x) {
+  std::ostringstream pre;
+  pre << powerOfTenTics(x) << "set cbrange [*:1]\n";
+  if (x.size() > 1 && c.y.size() > 1) {  // the grid's cells, no padding around them
+    const double dx = (x.back() - x.front()) / (x.size() - 1), dy = (c.y.back() - c.y.front()) / (c.y.size() - 1);
+    pre << "set xrange [" << x.front() - dx / 2 << ":" << x.back() + dx / 2 << "]\nset yrange ["
+        << c.y.front() - dy / 2 << ":" << c.y.back() + dy / 2 << "]\n";
+  }
+  pre << stabilityChartMarks(c);
   return pre.str();
 }
 
@@ -349,149 +340,6 @@ FigureSet drawSpectrumFigures(const OrderSpectrum& s, const std::string& dir) {
   }
   renderPlots(jobs);  // a few gnuplot processes at once, each drawing several figures
   return set;
-}
-
-namespace {
-
-// The rows of a table of quantities and their values, the text escaped.
-struct KeyRows {
-  std::ostringstream h;
-  void row(const std::string& k, const std::string& v) {
-    h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"n\">" << htmlEscape(v) << "</td></tr>\n";
-  }
-};
-
-// The coupling, the first estimate and the frozen-angle modes of both models with the mode's shape.
-void frozenModeRows(KeyRows& t, const ModesReport& r) {
-  t.row("coupling", r.elastic ? "elastic" : "rigid");
-  if (r.two_mass.applicable) t.row("first estimate p0, two constant inertias [rad/s]", g(r.two_mass.p0, "%.5g"));
-  for (const ModelFrozenModes& m : r.frozen)
-    if (m.ok && r.elastic)
-      t.row("frozen-angle p, " + m.model + " model: mean (min … max) [rad/s]",
-            g(m.torsional.mean, "%.6g") + " (" + g(m.torsional.min, "%.6g") + " … " + g(m.torsional.max, "%.6g") + ")");
-  if (std::isfinite(r.model_difference)) t.row("multibody against reduced, largest relative difference of p", g(r.model_difference, "%.2e"));
-  if (r.elastic && !r.frozen.empty() && r.frozen[0].ok) {
-    const ModelFrozenModes& m = r.frozen[0];
-    t.row("mode shape", m.torsional_name + ": kinetic energy motor side " + g(100 * m.energy_motor_side, "%.0f") +
-                            " %, crankshaft and rods " + g(100 * m.energy_shaft_rods, "%.0f") + " %, carts " +
-                            g(100 * m.energy_carts, "%.0f") + " %");
-  }
-}
-
-// The steady motion and its Floquet verdicts (n/a where the run's stability does not apply).
-void floquetRows(KeyRows& t, const ModesReport& r, const std::string& run_na) {
-  if (!run_na.empty()) {
-    t.row("stability of the steady motion (Floquet)", "n/a: " + run_na);
-  } else if (r.steady.found) {
-    const FloquetVerdict& v = r.steady.verdict;
-    t.row("mean crank speed of the steady motion [rad/s]", g(r.steady.omega_mean, "%.6g"));
-    t.row("Floquet verdict (reduced model)", v.text + ", largest |μ| = " + g(v.max_modulus) + " per revolution, margin " +
-                                                g(v.margin));
-    if (v.has_torsional && !v.torsional_resolved)
-      t.row("torsional mode from the multipliers", "decays more than a million-fold per revolution (not resolved)");
-    else if (v.has_torsional)
-      t.row("torsional mode from the multipliers", g(v.torsional_frequency, "%.5g") + " rad/s, damping ratio " +
-                                                      g(v.torsional_damping_ratio, "%.3g"));
-  } else {
-    t.row("steady motion", "not found: " + r.steady.failure);
-  }
-  if (run_na.empty() && r.has_multibody_steady && r.steady_multibody.found)
-    t.row("Floquet verdict (multibody model)", r.steady_multibody.verdict.text + ", largest |μ| = " +
-                                                   g(r.steady_multibody.verdict.max_modulus));
-}
-
-// The layout's excitation orders (the first 12) and each stability chart's unstable points.
-void orderAndChartRows(KeyRows& t, const ModesReport& r) {
-  std::string orders;
-  for (size_t i = 0; i < r.orders.layout.size() && i < 12; ++i) orders += (i ? ", " : "") + std::to_string(r.orders.layout[i]);
-  t.row("excitation orders of the layout", orders);
-  for (const StabilityChart& c : r.charts)
-    t.row(c.y_key == "omega" ? "stability chart c × ω at k = " + g(c.fixed_damping) + " N·m·s/rad"
-                             : "stability chart c × k at ω = " + g(c.fixed_speed) + " rad/s",
-          std::to_string(c.unstable_points) + " unstable points, " + std::to_string(c.zones.size()) + " zone(s)");
-}
-
-// The section's key figures, one row each: the modes of both models, the Floquet verdicts, the
-// excitation orders and the stability charts.
-std::string modesKeyTable(const ModesReport& r, const std::string& run_na) {
-  KeyRows t;
-  t.h << "<table>\n<tr><th>quantity</th><th>value</th></tr>\n";
-  frozenModeRows(t, r);
-  floquetRows(t, r, run_na);
-  orderAndChartRows(t, r);
-  t.h << "</table>\n";
-  return t.h.str();
-}
-
-std::string campbellCrossingsHtml(const ModesReport& r) {
-  std::ostringstream h;
-  if (!r.campbell.crossings.empty()) {
-    h << "<h3>Campbell crossings</h3>\n<table>\n<tr><th>order k</th><th>kind</th><th>crank speed [rad/s]</th>"
-         "<th>frequency [rad/s]</th><th>band crossed between [rad/s]</th></tr>\n";
-    for (const CampbellCrossing& c : r.campbell.crossings)
-      h << "<tr><td class=\"n\">" << c.order << "</td><td>" << (c.parametric ? "parametric, 2p = kω" : "forced, p = kω")
-        << "</td><td class=\"n\">" << g(c.omega) << "</td><td class=\"n\">" << g(c.frequency) << "</td><td class=\"n\">"
-        << g(c.omega_band_low) << " … " << g(c.omega_band_high) << "</td></tr>\n";
-    h << "</table>\n";
-  }
-  return h.str();
-}
-
-// The run's strongest orders per signal and how much of each signal is locked to the crank.
-std::string orderSpectrumHtml(const OrderSpectrum* spectrum) {
-  std::ostringstream h;
-  if (spectrum && spectrum->ok) {
-    h << "<h3>Order spectrum of the run (steady window, " << spectrum->revolutions << " revolutions)</h3>\n"
-      << "<table>\n<tr><th>signal</th><th>strongest orders (amplitude)</th><th>share at whole orders</th></tr>\n";
-    for (size_t i = 0; i < spectrum->signals.size(); ++i) {
-      std::string peaks;
-      for (size_t k = 0; k < spectrum->peaks[i].size() && k < 4; ++k)
-        peaks += (k ? ", " : "") + g(spectrum->peaks[i][k].order, "%.3g") + " (" +
-                 g(spectrum->peaks[i][k].amplitude, "%.3g") + ")";
-      h << "<tr><td><code>" << htmlEscape(spectrum->signals[i]) << "</code></td><td>" << htmlEscape(peaks)
-        << "</td><td class=\"n\">" << g(100 * spectrum->whole_order_share[i], "%.4g") << " %</td></tr>\n";
-    }
-    h << "</table>\n";
-  }
-  return h.str();
-}
-
-// The figures, embedded in the page (PNG as data).
-std::string figuresHtml(const FigureSet& figures) {
-  std::ostringstream h;
-  for (const FigureFile& f : figures.figures) {
-    h << "<figure id=\"" << htmlEscape(f.name) << "\">";
-    h << embeddedPngHtml(f);
-    h << "<figcaption>" << htmlEscape(f.caption) << "</figcaption></figure>\n";
-  }
-  return h.str();
-}
-
-}  // namespace
-
-std::string modesHtmlSection(const ModesReport& r, const FigureSet& figures, const OrderSpectrum* spectrum,
-                             const nlohmann::json& run_summary) {
-  const std::string run_na = runStabilityNotApplicable(run_summary);
-  std::ostringstream h;
-  h << "<h2 id=\"modes\">Torsional modes and stability</h2>\n";
-  h << "<p class=\"small\">The drive linearized about its steady motion: frozen-angle modes (the crank angle held, "
-       "both models), Floquet multipliers of the steady motion over one revolution (exact for the linearized "
-       "periodic motion), Campbell diagram and stability charts. The two-mass value is the first, cheap estimate "
-       "(two constant inertias, Dyomin (two rotors) eq. (10)).</p>\n";
-  h << modesKeyTable(r, run_na);
-  h << campbellCrossingsHtml(r);
-  h << separationHtml(r.separation);
-  h << orderSpectrumHtml(spectrum);
-  // The run's resonance warnings (its verdict, at its steady mean crank speed), as summary.json has them.
-  const nlohmann::json& modal = run_summary.contains("resonance_modal") ? run_summary["resonance_modal"] : nlohmann::json();
-  if (modal.is_object() && modal.contains("warnings") && modal["warnings"].is_array())
-    for (const nlohmann::json& w : modal["warnings"])
-      if (w.is_string()) h << "<p><b>Warning:</b> " << htmlEscape(w.get<std::string>()) << "</p>\n";
-  for (const std::string& n : r.notes) h << "<p class=\"small\">Note: " << htmlEscape(n) << "</p>\n";
-  for (const auto& [name, meaning] : r.approximations)
-    h << "<p class=\"small\">Approximation, " << htmlEscape(name) << ": " << htmlEscape(meaning) << "</p>\n";
-  h << figuresHtml(figures);
-  return h.str();
 }
 
 }  // namespace rollerdyn::modes

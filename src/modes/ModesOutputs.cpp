@@ -237,6 +237,22 @@ std::string excitationOrdersText(const ModesReport& r) {
   return os.str();
 }
 
+// The crossings in the order that matters: the orders the carts' layout excites first (the
+// others are harmonics of the loads' shape, often a thousandth of the layout's), each group
+// nearest the speed the drive runs at first.
+std::vector<CampbellCrossing> crossingsByRelevance(const ModesReport& r) {
+  std::vector<CampbellCrossing> sorted = r.campbell.crossings;
+  const auto& layout = r.orders.layout;
+  auto rank = [&](const CampbellCrossing& c) {
+    const bool of_layout = std::find(layout.begin(), layout.end(), c.order) != layout.end();
+    const double distance = std::isfinite(r.steady.omega_mean) ? std::abs(c.omega - r.steady.omega_mean) : c.omega;
+    return std::make_pair(of_layout ? 0 : 1, distance);
+  };
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [&](const CampbellCrossing& a, const CampbellCrossing& b) { return rank(a) < rank(b); });
+  return sorted;
+}
+
 // Where a mode meets an order (p = k*omega or 2p = k*omega) on the way to the running speed.
 std::string campbellCrossingsText(const ModesReport& r) {
   std::ostringstream os;
@@ -244,20 +260,8 @@ std::string campbellCrossingsText(const ModesReport& r) {
   if (r.campbell.applicable) {
     os << "  Campbell crossings (" << r.campbell.crossings.size()
        << "; the layout's orders first, each group nearest the running speed first):";
-    // The crossings that matter first: the orders the carts' layout excites (the others are
-    // harmonics of the loads' shape, often a thousandth of the layout's), nearest the speed the
-    // drive runs at.
-    std::vector<CampbellCrossing> sorted = r.campbell.crossings;
-    const auto& layout = r.orders.layout;
-    auto rank = [&](const CampbellCrossing& c) {
-      const bool of_layout = std::find(layout.begin(), layout.end(), c.order) != layout.end();
-      const double distance = std::isfinite(r.steady.omega_mean) ? std::abs(c.omega - r.steady.omega_mean) : c.omega;
-      return std::make_pair(of_layout ? 0 : 1, distance);
-    };
-    std::stable_sort(sorted.begin(), sorted.end(),
-                     [&](const CampbellCrossing& a, const CampbellCrossing& b) { return rank(a) < rank(b); });
     int shown = 0;
-    for (const CampbellCrossing& c : sorted) {
+    for (const CampbellCrossing& c : crossingsByRelevance(r)) {
       if (shown++ == 8) {
         os << " ...";
         break;

@@ -63,37 +63,47 @@ double mathieuTransition(double eps, double target, double lo, double hi) {
   return 0.5 * (lo + hi);
 }
 
-// The chain's frequencies of the eigen-solution (ChainModes.h) against Holzer's residual-torque
-// search, which finds its roots without being told them, at four frozen crank angles: the same
-// numbers to the bisection's 1e-12 and the eigen-solver's round-off, so 1e-9 relative.
-ModesCheck chainAgainstHolzer(const Scene& s, nlohmann::json& out) {
-  double worst = 0;
-  std::vector<double> first;
-  size_t count_eig = 0, count_holzer = 0;
+// The chain's eigen-solution against Holzer's search at four frozen crank angles.
+struct HolzerComparison {
+  double worst = 0;           // largest relative difference of the frequencies (infinite: counts differ)
+  std::vector<double> first;  // the elastic modes' p at crank angle 0 [rad/s]
+  size_t count_eig = 0, count_holzer = 0;  // elastic modes each finds
+};
+HolzerComparison compareWithHolzer(const Scene& s) {
+  HolzerComparison h;
   for (double phi : {0.0, 0.7, 2.0, 4.5}) {
     std::vector<double> J, c;
     chainAtAngle(s, phi, J, c);
     const std::vector<double> eig = chainNaturalFrequencies(J, c);
     const std::vector<double> holzer = holzerFrequencies(J, c, 1.2 * eig.back(), 40000);
-    count_eig = std::max(count_eig, eig.size() - 1);
-    count_holzer = std::max(count_holzer, holzer.size());
+    h.count_eig = std::max(h.count_eig, eig.size() - 1);
+    h.count_holzer = std::max(h.count_holzer, holzer.size());
     if (holzer.size() + 1 != eig.size()) {
-      worst = INFINITY;
+      h.worst = INFINITY;
       continue;
     }
-    for (size_t m = 0; m < holzer.size(); ++m) worst = std::max(worst, std::abs(holzer[m] - eig[m + 1]) / eig[m + 1]);
-    if (first.empty()) first.assign(eig.begin() + 1, eig.end());
+    for (size_t m = 0; m < holzer.size(); ++m)
+      h.worst = std::max(h.worst, std::abs(holzer[m] - eig[m + 1]) / eig[m + 1]);
+    if (h.first.empty()) h.first.assign(eig.begin() + 1, eig.end());
   }
+  return h;
+}
+
+// The chain's frequencies of the eigen-solution (ChainModes.h) against Holzer's residual-torque
+// search, which finds its roots without being told them, at four frozen crank angles: the same
+// numbers to the bisection's 1e-12 and the eigen-solver's round-off, so 1e-9 relative.
+ModesCheck chainAgainstHolzer(const Scene& s, nlohmann::json& out) {
+  const HolzerComparison h = compareWithHolzer(s);
   ModesCheck ck;
   ck.name = "crankshaft_chain_holzer";
-  ck.pass = worst <= 1e-9;
+  ck.pass = h.worst <= 1e-9;
   std::string list;
-  for (double p : first) list += (list.empty() ? "" : ", ") + printfText("%.6g", p);
+  for (double p : h.first) list += (list.empty() ? "" : ", ") + printfText("%.6g", p);
   ck.line = printfText("modes: crankshaft as a torsional chain (4 throws 0.3 m apart, G*I_p = 7.85e5 N*m^2, 100 mm steel "
                 "shaft): %zu elastic modes by the eigen-solution, %zu by Holzer's residual torque; at crank angle 0: "
                 "p = %s rad/s; largest relative difference over 4 angles %.2e (<= 1e-9): %s",
-                count_eig, count_holzer, list.c_str(), worst, ck.pass ? "holds" : "FAILS");
-  out["crankshaft_chain_holzer"] = {{"p_at_angle_0", first}, {"max_rel_diff", worst}, {"tolerance", 1e-9},
+                h.count_eig, h.count_holzer, list.c_str(), h.worst, ck.pass ? "holds" : "FAILS");
+  out["crankshaft_chain_holzer"] = {{"p_at_angle_0", h.first}, {"max_rel_diff", h.worst}, {"tolerance", 1e-9},
                                     {"pass", ck.pass}};
   return ck;
 }
@@ -115,15 +125,14 @@ Scene shippedScene(const std::string& model_dir, const std::string& name, const 
   return parseSceneFile(model_dir + "/" + name + ".yaml", overrides);
 }
 
-// 1. Constant inertia: both models' frozen-angle frequency against Dyomin's two-rotor p0.
-void checkConstantInertia(const std::string& model_dir, const CheckRecorder& rec) {
-  const Scene s = shippedScene(model_dir, "balanced-4cart",
-                               {"carts.mass=1e-6", "rods.model=massless", "flywheel.inertia=400",
-                                "loads.roller_force_front=0", "loads.roller_force_rear=0",
-                                "loads.roller_normal_front=0", "loads.roller_normal_rear=0",
-                                "loads.guide_friction.coefficient=0", "loads.gravity=0"});
+// The constant-inertia drive's frequencies at four frozen crank angles.
+struct ConstantInertiaFrequencies {
+  double worst = 0;               // largest relative difference of either model's p from p0
+  double p_red = 0, p_mb = 0, p0 = 0;  // at the last angle [rad/s]: reduced, multibody, Dyomin's
+};
+ConstantInertiaFrequencies constantInertiaFrequencies(const Scene& s) {
   const ReducedModel rm(s);
-  double worst = 0, p_red = 0, p_mb = 0, p0 = 0;
+  ConstantInertiaFrequencies f;
   auto red = makeReducedDrive(s), mb = makeMultibodyDrive(s);
   for (double phi : {0.0, 0.7, 2.0, 4.5}) {
     DrivePoint p;
@@ -133,21 +142,32 @@ void checkConstantInertia(const std::string& model_dir, const CheckRecorder& rec
     tp.J1 = s.motorSideInertia();
     tp.J2 = rm.crankSideInertia(phi);
     tp.k = s.coupling.stiffness;
-    p0 = naturalFrequency(tp);  // Dyomin (two rotors) eq. (10), physics/TwoRotorClosedForm
-    p_red = frozenModes(*red, s, p).torsional_frequency();
-    p_mb = frozenModes(*mb, s, p).torsional_frequency();
-    worst = std::max({worst, std::abs(p_red - p0) / p0, std::abs(p_mb - p0) / p0});
+    f.p0 = naturalFrequency(tp);  // Dyomin (two rotors) eq. (10), physics/TwoRotorClosedForm
+    f.p_red = frozenModes(*red, s, p).torsional_frequency();
+    f.p_mb = frozenModes(*mb, s, p).torsional_frequency();
+    f.worst = std::max({f.worst, std::abs(f.p_red - f.p0) / f.p0, std::abs(f.p_mb - f.p0) / f.p0});
   }
+  return f;
+}
+
+// 1. Constant inertia: both models' frozen-angle frequency against Dyomin's two-rotor p0.
+void checkConstantInertia(const std::string& model_dir, const CheckRecorder& rec) {
+  const Scene s = shippedScene(model_dir, "balanced-4cart",
+                               {"carts.mass=1e-6", "rods.model=massless", "flywheel.inertia=400",
+                                "loads.roller_force_front=0", "loads.roller_force_rear=0",
+                                "loads.roller_normal_front=0", "loads.roller_normal_rear=0",
+                                "loads.guide_friction.coefficient=0", "loads.gravity=0"});
+  const ConstantInertiaFrequencies f = constantInertiaFrequencies(s);
   ModesCheck c;
   c.name = "constant_inertia_p0";
-  c.pass = worst <= 1e-8;
+  c.pass = f.worst <= 1e-8;
   c.line = printfText("modes: constant inertia (flywheel 400 kg*m^2, carts of 1 mg, no loads): frozen-angle p reduced "
                "%.12g, multibody %.12g, Dyomin p0 (two-rotor closed form) %.12g rad/s; largest relative "
                "difference %.2e (<= 1e-8): %s",
-               p_red, p_mb, p0, worst, verdictWord(c.pass));
+               f.p_red, f.p_mb, f.p0, f.worst, verdictWord(c.pass));
   rec.add(c);
-  rec.result.json["constant_inertia"] = {{"p_reduced", p_red}, {"p_multibody", p_mb}, {"p0", p0},
-                                         {"max_rel_diff", worst}, {"tolerance", 1e-8}, {"pass", c.pass}};
+  rec.result.json["constant_inertia"] = {{"p_reduced", f.p_red}, {"p_multibody", f.p_mb}, {"p0", f.p0},
+                                         {"max_rel_diff", f.worst}, {"tolerance", 1e-8}, {"pass", c.pass}};
 }
 
 // A transition curve of the Mathieu equation: where Floquet's trace reaches `target` between lo

@@ -32,6 +32,29 @@ std::vector<double> timesAtEqualCrankAngles(const std::vector<double>& phi_w, co
   return tq;
 }
 
+// The share of the whole orders (every R-th bin over R revolutions) in the power of the
+// one-sided spectrum `spec` of N samples, the mean left out; 1 for a signal without variation.
+double wholeOrderShare(const std::vector<std::complex<double>>& spec, int N, int R) {
+  double total = 0, whole = 0;
+  for (int b = 1; b < N / 2; ++b) {
+    const double ab = 2.0 * std::abs(spec[b]) / N;
+    total += ab * ab;
+    if (b % R == 0) whole += ab * ab;
+  }
+  return total > 0 ? whole / total : 1.0;
+}
+
+// The n_peaks largest amplitudes `a` (the mean left out), largest first, with their orders.
+std::vector<SpectrumPeak> strongestOrders(const std::vector<double>& a, const std::vector<double>& orders,
+                                          int n_peaks) {
+  std::vector<int> idx;
+  for (int b = 1; b < int(a.size()); ++b) idx.push_back(b);
+  std::sort(idx.begin(), idx.end(), [&](int p, int q) { return a[p] > a[q]; });
+  std::vector<SpectrumPeak> peaks;
+  for (int k = 0; k < n_peaks && k < int(idx.size()); ++k) peaks.push_back({orders[idx[k]], a[idx[k]]});
+  return peaks;
+}
+
 // One signal y(tt) resampled at the times tq of equal crank angles and transformed: its amplitude
 // per order, its n_peaks largest orders and the share of whole orders in its power.
 void addSignalSpectrum(OrderSpectrum& s, const std::string& c, const std::vector<double>& y,
@@ -45,21 +68,10 @@ void addSignalSpectrum(OrderSpectrum& s, const std::string& c, const std::vector
   fft.fwd(spec, yq);
   std::vector<double> a(bins);
   for (int b = 0; b < bins; ++b) a[b] = (b == 0 ? 1.0 : 2.0) * std::abs(spec[b]) / N;
-  double total = 0, whole = 0;
-  for (int b = 1; b < N / 2; ++b) {
-    const double ab = 2.0 * std::abs(spec[b]) / N;
-    total += ab * ab;
-    if (b % R == 0) whole += ab * ab;
-  }
-  std::vector<int> idx;
-  for (int b = 1; b < bins; ++b) idx.push_back(b);
-  std::sort(idx.begin(), idx.end(), [&](int p, int q) { return a[p] > a[q]; });
-  std::vector<SpectrumPeak> peaks;
-  for (int k = 0; k < n_peaks && k < int(idx.size()); ++k) peaks.push_back({s.orders[idx[k]], a[idx[k]]});
   s.signals.push_back(c);
   s.amplitude.push_back(a);
-  s.peaks.push_back(peaks);
-  s.whole_order_share.push_back(total > 0 ? whole / total : 1.0);
+  s.peaks.push_back(strongestOrders(a, s.orders, n_peaks));
+  s.whole_order_share.push_back(wholeOrderShare(spec, N, R));
 }
 
 // The window: the last R whole revolutions of the steady window (R, t_begin, t_end of s, and the

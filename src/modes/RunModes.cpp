@@ -45,6 +45,27 @@ std::string runStabilityNotApplicable(const nlohmann::json& summary) {
   return s.value("reason", "no steady motion");
 }
 
+namespace {
+
+// summary.json's order_spectrum: the window, and per signal its mean, strongest orders and the
+// share of whole orders; the reason instead where there is no spectrum.
+nlohmann::json orderSpectrumJson(const OrderSpectrum& spectrum) {
+  if (!spectrum.ok) return {{"note", spectrum.note}};
+  nlohmann::json sp;
+  sp["revolutions"] = spectrum.revolutions;
+  sp["window"] = {spectrum.t_begin, spectrum.t_end};
+  for (size_t i = 0; i < spectrum.signals.size(); ++i) {
+    nlohmann::json peaks = nlohmann::json::array();
+    for (const SpectrumPeak& p : spectrum.peaks[i]) peaks.push_back({{"order", p.order}, {"amplitude", p.amplitude}});
+    sp["signals"][spectrum.signals[i]] = {{"mean", spectrum.amplitude[i][0]},
+                                          {"peaks", peaks},
+                                          {"whole_order_share", spectrum.whole_order_share[i]}};
+  }
+  return sp;
+}
+
+}  // namespace
+
 void addRunModes(const RunModal& modal, nlohmann::json& summary) {
   summary["modes"] = modesJson(modal.report);
   // A run without a steady motion: the analysis' stability verdict is not the run's.
@@ -56,22 +77,7 @@ void addRunModes(const RunModal& modal, nlohmann::json& summary) {
     sm["not_applicable_reason"] = na;
     summary["modes"]["warnings"] = nlohmann::json::array();
   }
-  const OrderSpectrum& spectrum = modal.spectrum;
-  if (spectrum.ok) {
-    nlohmann::json sp;
-    sp["revolutions"] = spectrum.revolutions;
-    sp["window"] = {spectrum.t_begin, spectrum.t_end};
-    for (size_t i = 0; i < spectrum.signals.size(); ++i) {
-      nlohmann::json peaks = nlohmann::json::array();
-      for (const SpectrumPeak& p : spectrum.peaks[i]) peaks.push_back({{"order", p.order}, {"amplitude", p.amplitude}});
-      sp["signals"][spectrum.signals[i]] = {{"mean", spectrum.amplitude[i][0]},
-                                            {"peaks", peaks},
-                                            {"whole_order_share", spectrum.whole_order_share[i]}};
-    }
-    summary["order_spectrum"] = sp;
-  } else {
-    summary["order_spectrum"] = {{"note", spectrum.note}};
-  }
+  summary["order_spectrum"] = orderSpectrumJson(modal.spectrum);
 }
 
 void writeRunModesFiles(const std::string& out_dir, const RunModal& modal, const nlohmann::json& modes_json) {

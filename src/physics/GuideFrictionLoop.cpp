@@ -41,6 +41,16 @@ void settle(const GuideLoop& loop, double eps, GuideLoopResult& r) {
   for (int j = 0; j < loop.n; ++j) normalsAt(loop.carts[j], eps, loop.friction[j], loop.normals + 2 * j);
 }
 
+// Whether cart j locks in its guides: with friction, its friction per unit of its own friction
+// under the signs, `gain`, reaches 1 (or is not a number), so the friction feeds itself. Says so in r.
+bool locksInGuides(const GuideLoopCart& c, double gain, int j, GuideLoopResult& r) {
+  if (c.c == 0.0 || 1.0 - gain > 0.0) return false;
+  r.status = LoopStatus::SelfLocking;
+  r.cart = j;
+  r.gain = gain;
+  return true;
+}
+
 // The equation in ε for the current sign pattern: α_j into friction[j], the solution into eps.
 // False, with the status in r, when a cart locks in its guides or the effective inertia is
 // non-positive.
@@ -50,12 +60,7 @@ bool solveEquationInEps(const GuideLoop& loop, double& eps, GuideLoopResult& r) 
     const GuideLoopCart& c = loop.carts[j];
     const double* s = loop.normals + 2 * j;
     const double gain = signedShare(c, s, c.n_F);
-    if (c.c != 0.0 && !(1.0 - gain > 0.0)) {
-      r.status = LoopStatus::SelfLocking;
-      r.cart = j;
-      r.gain = gain;
-      return false;
-    }
+    if (locksInGuides(c, gain, j, r)) return false;
     const double D = 1.0 - gain;
     const double alpha = signedShare(c, s, c.n0) / D;
     const double beta = signedShare(c, s, c.n_eps) / D;

@@ -37,35 +37,54 @@ void steadyExact(const TwoRotorParameters& p, double t, double* psi, double* rat
   if (rate) *rate = v;
 }
 
+// The printed partial terms before the harmonics of one order combine: amplitudes of the sin and
+// cos parts, eq. (16)-(21), and phases, eq. (22)-(25) (arctg as printed: atan).
+struct PartialTerms {
+  double Psi11, Psi31, Psi51, Psi12, Psi2, Psi32, xi11, xi2, xi31, xi5;
+};
+PartialTerms partialTerms(const TwoRotorParameters& p) {
+  const double w = p.omega, dl = dampingRate(p), p0 = naturalFrequency(p), p02 = p0 * p0, M1 = p.M1, J1 = p.J1,
+               al = p.alpha;
+  auto den = [&](double n) { return std::sqrt(std::pow(p02 - n * n * w * w, 2) + 4 * dl * dl * n * n * w * w); };
+  PartialTerms t;
+  t.Psi11 = 2 * M1 / (M_PI * J1 * den(1));                 // (16)
+  t.Psi31 = 2 * M1 / (M_PI * J1 * den(3));                 // (17)
+  t.Psi51 = 2 * M1 / (M_PI * J1 * den(5));                 // (18)
+  t.Psi12 = M1 * std::sin(al) / (M_PI * J1 * den(1));      // (19)
+  t.Psi2 = M1 * std::sin(2 * al) / (M_PI * J1 * den(2));   // (20)
+  t.Psi32 = M1 * std::sin(3 * al) / (M_PI * J1 * den(3));  // (21)
+  t.xi11 = std::atan(2 * dl * w / (p02 - w * w));          // (22)
+  t.xi2 = std::atan(4 * dl * w / (p02 - 4 * w * w));       // (23)
+  t.xi31 = std::atan(6 * dl * w / (p02 - 9 * w * w));      // (24)
+  t.xi5 = std::atan(10 * dl * w / (p02 - 25 * w * w));     // (25)
+  return t;
+}
+
+// One order's amplitude from its two partial terms a, b and the phase xi, eq. (27), (28).
+double combinedAmplitude(double a, double b, double xi) {
+  return std::sqrt(std::max(0.0, a * a + b * b - 2 * a * b * std::sin(2 * xi)));
+}
+
+// One order's phase from its two partial terms a, b and the phase xi, eq. (29), (30).
+double combinedPhase(double a, double b, double xi) {
+  return std::atan((a * std::sin(xi) - b * std::cos(xi)) / (a * std::cos(xi) - b * std::sin(xi)));
+}
+
 // The printed amplitudes and phases, eq. (16)-(25), (27)-(30) (arctg as printed: atan).
 struct Printed {
   double Psi1, Psi2, Psi3, Psi5, xi1, xi2, xi3, xi5;
 };
 Printed printedTerms(const TwoRotorParameters& p) {
-  const double w = p.omega, dl = dampingRate(p), p0 = naturalFrequency(p), p02 = p0 * p0, M1 = p.M1, J1 = p.J1,
-               al = p.alpha;
-  auto den = [&](double n) { return std::sqrt(std::pow(p02 - n * n * w * w, 2) + 4 * dl * dl * n * n * w * w); };
-  const double Psi11 = 2 * M1 / (M_PI * J1 * den(1));                 // (16)
-  const double Psi31 = 2 * M1 / (M_PI * J1 * den(3));                 // (17)
-  const double Psi51 = 2 * M1 / (M_PI * J1 * den(5));                 // (18)
-  const double Psi12 = M1 * std::sin(al) / (M_PI * J1 * den(1));      // (19)
-  const double Psi2 = M1 * std::sin(2 * al) / (M_PI * J1 * den(2));   // (20)
-  const double Psi32 = M1 * std::sin(3 * al) / (M_PI * J1 * den(3));  // (21)
-  const double xi11 = std::atan(2 * dl * w / (p02 - w * w));          // (22)
-  const double xi2 = std::atan(4 * dl * w / (p02 - 4 * w * w));       // (23)
-  const double xi31 = std::atan(6 * dl * w / (p02 - 9 * w * w));      // (24)
-  const double xi5 = std::atan(10 * dl * w / (p02 - 25 * w * w));    // (25)
+  const PartialTerms t = partialTerms(p);
   Printed r;
-  r.Psi1 = std::sqrt(std::max(0.0, Psi11 * Psi11 + Psi12 * Psi12 - 2 * Psi11 * Psi12 * std::sin(2 * xi11)));  // (27)
-  r.Psi3 = std::sqrt(std::max(0.0, Psi31 * Psi31 + Psi32 * Psi32 - 2 * Psi31 * Psi32 * std::sin(2 * xi31)));  // (28)
-  r.xi1 = std::atan((Psi11 * std::sin(xi11) - Psi12 * std::cos(xi11)) /
-                    (Psi11 * std::cos(xi11) - Psi12 * std::sin(xi11)));  // (29)
-  r.xi3 = std::atan((Psi31 * std::sin(xi31) - Psi32 * std::cos(xi31)) /
-                    (Psi31 * std::cos(xi31) - Psi32 * std::sin(xi31)));  // (30)
-  r.Psi2 = Psi2;
-  r.Psi5 = Psi51;
-  r.xi2 = xi2;
-  r.xi5 = xi5;
+  r.Psi1 = combinedAmplitude(t.Psi11, t.Psi12, t.xi11);  // (27)
+  r.Psi3 = combinedAmplitude(t.Psi31, t.Psi32, t.xi31);  // (28)
+  r.xi1 = combinedPhase(t.Psi11, t.Psi12, t.xi11);       // (29)
+  r.xi3 = combinedPhase(t.Psi31, t.Psi32, t.xi31);       // (30)
+  r.Psi2 = t.Psi2;
+  r.Psi5 = t.Psi51;
+  r.xi2 = t.xi2;
+  r.xi5 = t.xi5;
   return r;
 }
 
