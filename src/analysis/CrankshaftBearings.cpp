@@ -69,35 +69,57 @@ std::vector<std::vector<double>> pinForceColumns(const Table& rx, int n, const c
   return f;
 }
 
-ShaftLoads shaftLoads(const Scene& sc, const RunResult& run) {
+// The run's forces on the crank pins and main bearings, and the crank's motion, on the reactions rows.
+struct PinForcesOnRows {
+  std::vector<double> t, Rx, Ry;            // Rx, Ry: the main bearings' resultant [N]
+  CrankOnRows crank;
+  std::vector<std::vector<double>> fx, fy;  // [throw][row]: the rods' forces on the pins [N]
+};
+
+PinForcesOnRows pinForcesOnRows(const Scene& sc, const RunResult& run) {
   const Table& rx = run.reactions;
   const int n = sc.carts.count;
-  const std::vector<double> t = rx.column("t");
-  const std::vector<double> Rx = rx.column("bearing_x"), Ry = rx.column("bearing_y");
-  const CrankOnRows k = crankOnRows(run, t);
+  PinForcesOnRows f;
+  f.t = rx.column("t");
+  f.Rx = rx.column("bearing_x");
+  f.Ry = rx.column("bearing_y");
+  f.crank = crankOnRows(run, f.t);
+  f.fx = pinForceColumns(rx, n, "x");
+  f.fy = pinForceColumns(rx, n, "y");
+  return f;
+}
+
+// Row i of the shaft's loads: each throw's pin force less the inertia and weight of the rod mass
+// m_pin [kg] the pin carries round with the shaft, its torque, and the rest of the resultant.
+void fillRowLoads(ShaftLoads& L, std::size_t i, const Scene& sc, const PinForcesOnRows& f, double m_pin) {
+  const int n = sc.carts.count;
+  const double g = sc.loads.gravity, r = sc.crank.radius;
+  const CrankOnRows& k = f.crank;
+  double rest_x = f.Rx[i], rest_y = f.Ry[i];
+  for (int j = 0; j < n; ++j) {
+    const double th = k.phi[i] + sc.crankPhase(j), c = std::cos(th), s = std::sin(th);
+    const double ax = r * (-k.eps[i] * s - k.w[i] * k.w[i] * c), ay = r * (k.eps[i] * c - k.w[i] * k.w[i] * s);
+    const double Px = f.fx[j][i] - m_pin * ax, Py = f.fy[j][i] - m_pin * (ay + g);
+    L.px[i][j] = Px;
+    L.py[i][j] = Py;
+    L.torque[i][j] = r * (c * Py - s * Px);
+    rest_x += Px;  // Σ R = −Σ P: what the throws do not explain
+    rest_y += Py;
+  }
+  L.px[i][n] = -rest_x;
+  L.py[i][n] = -rest_y;
+}
+
+ShaftLoads shaftLoads(const Scene& sc, const RunResult& run) {
+  const int n = sc.carts.count;
+  const PinForcesOnRows f = pinForcesOnRows(sc, run);
   // rods.model = split: half the rod's mass sits on each crank pin and turns with the shaft.
   const double m_pin = (sc.rods.model == RodModel::Split && !sc.hasCamDrive()) ? 0.5 * sc.rods.mass : 0.0;
-  const double g = sc.loads.gravity, r = sc.crank.radius;
-  const std::vector<std::vector<double>> fx = pinForceColumns(rx, n, "x"), fy = pinForceColumns(rx, n, "y");
   ShaftLoads L;
-  L.px.assign(t.size(), std::vector<double>(n + 1));
+  L.px.assign(f.t.size(), std::vector<double>(n + 1));
   L.py = L.px;
-  L.torque.assign(t.size(), std::vector<double>(n));
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    double rest_x = Rx[i], rest_y = Ry[i];
-    for (int j = 0; j < n; ++j) {
-      const double th = k.phi[i] + sc.crankPhase(j), c = std::cos(th), s = std::sin(th);
-      const double ax = r * (-k.eps[i] * s - k.w[i] * k.w[i] * c), ay = r * (k.eps[i] * c - k.w[i] * k.w[i] * s);
-      const double Px = fx[j][i] - m_pin * ax, Py = fy[j][i] - m_pin * (ay + g);
-      L.px[i][j] = Px;
-      L.py[i][j] = Py;
-      L.torque[i][j] = r * (c * Py - s * Px);
-      rest_x += Px;  // Σ R = −Σ P: what the throws do not explain
-      rest_y += Py;
-    }
-    L.px[i][n] = -rest_x;
-    L.py[i][n] = -rest_y;
-  }
+  L.torque.assign(f.t.size(), std::vector<double>(n));
+  for (std::size_t i = 0; i < f.t.size(); ++i) fillRowLoads(L, i, sc, f, m_pin);
   return L;
 }
 
@@ -288,18 +310,23 @@ bool widenOverSteadyRows(CrankshaftSizing& out, const Scene& sc, const RunResult
   return any;
 }
 
+// Why the shaft cannot be sized from this run ("" when it can): the bearings' share needs the
+// crank-pin forces, and the peaks a steady window.
+std::string crankshaftSizingNotApplicable(const Scene& sc, const RunResult& run, const SteadyState& w) {
+  const std::string reason = crankshaftBearingsNotApplicable(sc, run);
+  if (!reason.empty()) return reason;
+  if (!w.reached) return "no steady window (steady state not reached): run longer (simulation.t_end)";
+  return "";
+}
+
 }  // namespace
 
 CrankshaftSizing sizeCrankshaft(const Scene& sc, const RunResult& run, const SteadyState& w) {
   CrankshaftSizing out;
   out.given = sc.crankshaft.given();
   out.bearing_positions = sc.crankshaft.bearing_positions;
-  out.reason = crankshaftBearingsNotApplicable(sc, run);
+  out.reason = crankshaftSizingNotApplicable(sc, run, w);
   if (!out.reason.empty()) return out;
-  if (!w.reached) {
-    out.reason = "no steady window (steady state not reached): run longer (simulation.t_end)";
-    return out;
-  }
   const int n = sc.carts.count;
   const std::vector<int> order = throwsAlongShaft(sc, out);
   out.bending_moment_peak.assign(n, kNaN);

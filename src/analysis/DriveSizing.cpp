@@ -186,35 +186,36 @@ void qualifyChecks(DriveSizing& s, const SteadyState& w) {
   }
 }
 
+// M_n [N·m] from one of the sources a scene may give it by, and that source in the summary's words.
+struct NominalTorque {
+  double value;
+  const char* source;
+};
+
+NominalTorque nominalTorqueFrom(const Scene& sc, NominalTorqueSource from) {
+  const SizingInputs& z = sc.sizing;
+  switch (from) {
+    case NominalTorqueSource::SizingTorque:
+      return {z.motor_nominal_torque, "sizing.motor_nominal_torque"};
+    case NominalTorqueSource::SizingPower:
+      return {z.motor_nominal_power / z.motor_omega_nominal, "P_n/ω_n (sizing.motor_nominal_power, motor.omega_nominal)"};
+    case NominalTorqueSource::Catalogue:
+      return {sc.induction.catalogue.nominalTorque(),
+              "P_n/ω_n of the motor's catalogue (motor.catalogue.power, motor.catalogue.omega_nominal)"};
+    case NominalTorqueSource::OverloadRatio:
+      return {sc.motor.breakdown_torque / z.motor_overload_ratio, "M_kr/λ (motor.breakdown_torque, motor.overload_ratio)"};
+    case NominalTorqueSource::None:
+      break;
+  }
+  return {kNaN, "not given (sizing.motor_nominal_torque or sizing.motor_nominal_power)"};
+}
+
 }  // namespace
 
 double nominalMotorTorque(const Scene& sc, std::string* source) {
-  const SizingInputs& z = sc.sizing;
-  std::string src;
-  double M_n = kNaN;
-  switch (nominalTorqueSource(sc)) {
-    case NominalTorqueSource::SizingTorque:
-      M_n = z.motor_nominal_torque;
-      src = "sizing.motor_nominal_torque";
-      break;
-    case NominalTorqueSource::SizingPower:
-      M_n = z.motor_nominal_power / z.motor_omega_nominal;
-      src = "P_n/ω_n (sizing.motor_nominal_power, motor.omega_nominal)";
-      break;
-    case NominalTorqueSource::Catalogue:
-      M_n = sc.induction.catalogue.nominalTorque();
-      src = "P_n/ω_n of the motor's catalogue (motor.catalogue.power, motor.catalogue.omega_nominal)";
-      break;
-    case NominalTorqueSource::OverloadRatio:
-      M_n = sc.motor.breakdown_torque / z.motor_overload_ratio;
-      src = "M_kr/λ (motor.breakdown_torque, motor.overload_ratio)";
-      break;
-    case NominalTorqueSource::None:
-      src = "not given (sizing.motor_nominal_torque or sizing.motor_nominal_power)";
-      break;
-  }
-  if (source) *source = src;
-  return M_n;
+  const NominalTorque n = nominalTorqueFrom(sc, nominalTorqueSource(sc));
+  if (source) *source = n.source;
+  return n.value;
 }
 
 const JointSizing* DriveSizing::worst(const std::string& joint) const {

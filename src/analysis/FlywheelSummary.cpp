@@ -166,6 +166,16 @@ std::string notAFileNote(const std::string& value, const std::string& start_spee
          (!start_speed.empty() ? " and initial.crank_speed = " + start_speed + " rad/s" : std::string());
 }
 
+// The crank speed [rad/s] the check runs start at, as printed ("" when they start as the scene
+// says: the user's --set gives one, or the run did not turn). The flywheel is sized for steady
+// running, so each run starts at this run's mean crank speed: a heavy flywheel's slow start from
+// rest (which may not settle within t_end) would not make every design look unusable.
+std::string checkRunStartSpeed(const json& summary, const UserOverrides& u) {
+  const json& w_mean = jsonMember(jsonMember(summary, "omega_crank"), "mean");
+  const bool start_at_speed = !u.sets_speed && w_mean.is_number() && w_mean.get<double>() > 0;
+  return start_at_speed ? jsonNumberText(w_mean, "%.4g") : std::string();
+}
+
 }  // namespace
 
 json flywheelChecks(const json& summary) {
@@ -177,18 +187,15 @@ json flywheelChecks(const json& summary) {
   // The flywheel as the console prints it, so the run checks exactly the printed value.
   const std::string value = jsonNumberText(proposal, "%.4g");
   json c = {{"flywheel_inertia", std::stod(value)}, {"location", motor_shaft ? "motor shaft" : "crankshaft"}};
-  // The user's --set options; the flywheel is sized for steady running, so each run starts at this
-  // run's mean crank speed: a heavy flywheel's slow start from rest (which may not settle within
-  // t_end) would not make every design look unusable.
+  // The user's --set options, and the start at speed.
   UserOverrides u = userOverrides(summary);
-  const json& w_mean = jsonMember(jsonMember(summary, "omega_crank"), "mean");
-  const bool start_at_speed = !u.sets_speed && w_mean.is_number() && w_mean.get<double>() > 0;
-  if (start_at_speed) u.sets += " --set initial.crank_speed=" + jsonNumberText(w_mean, "%.4g");
-  c["started_at_speed"] = start_at_speed;
+  const std::string start_speed = checkRunStartSpeed(summary, u);
+  if (!start_speed.empty()) u.sets += " --set initial.crank_speed=" + start_speed;
+  c["started_at_speed"] = !start_speed.empty();
   const json& scene = jsonMember(summary, "scene_path");
   if (!scene.is_string()) {
     c["run_at_proposal"] = c["smallest_from_runs"] = nullptr;
-    c["note"] = notAFileNote(value, start_at_speed ? jsonNumberText(w_mean, "%.4g") : std::string());
+    c["note"] = notAFileNote(value, start_speed);
     return c;
   }
   addCheckCommands(c, shellWord(scene.get<std::string>()) + u.sets + modelOption(summary), value,

@@ -13,6 +13,33 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 
+// The guide friction's self-locking, or its nearness ("" when the index is below the warning's).
+std::string guideLockingWarning(const Scene& scene, const LockingMargins& m) {
+  const double lam = scene.crank.radius / scene.rods.length;
+  if (m.self_locking_index >= 1.0)
+    return printfText("guide friction self-locks the carts: self-locking index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = "
+                      "%.3g >= 1 (f = %.3g, r/l = %.4g, β_max = %.1f°): near the largest rod angle the friction a rod "
+                      "force causes exceeds that force's push, so the mechanism jams there",
+                      m.self_locking_index, scene.loads.guide_friction, lam, m.beta_max * kRadToDeg);
+  if (m.self_locking_index > kLockingIndexWarning)
+    return printfText("guide friction near self-locking: index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = %.3g (locks at "
+                      "1); at the largest rod angle the friction is amplified up to %.3gx its open-loop value "
+                      "f·(|N_front| + |N_rear|) (f = %.3g, r/l = %.4g)",
+                      m.self_locking_index, m.friction_amplification, scene.loads.guide_friction, lam);
+  return "";
+}
+
+// A crank-slider whose smallest transmission angle is below design practice's ("" when it is not).
+std::string deadCentreWarning(const Scene& scene, const LockingMargins& m) {
+  const double lam = scene.crank.radius / scene.rods.length;
+  const double mu = m.transmission_angle_min * kRadToDeg;
+  if (!(mu < kTransmissionAngleWarning)) return "";
+  return printfText("crank-slider close to dead centre: r/l = %.4g gives a largest rod angle β_max = %.1f°, a smallest "
+                    "transmission angle of %.1f° (below the %.0f° of mechanism-design practice) and rod forces up to "
+                    "1/cos β_max = %.3g times the cart's horizontal load; at r/l -> 1 the rod stands across the guide "
+                    "and the mechanism jams or folds over",
+                    lam, m.beta_max * kRadToDeg, mu, kTransmissionAngleWarning, m.rod_force_factor);
+}
 
 }  // namespace
 
@@ -34,26 +61,10 @@ std::vector<std::string> lockingWarnings(const Scene& scene) {
   std::vector<std::string> w;
   const LockingMargins m = lockingMargins(scene);
   if (!m.applicable) return w;
-  const double lam = scene.crank.radius / scene.rods.length;
-  if (m.self_locking_index >= 1.0) {
-    w.push_back(printfText("guide friction self-locks the carts: self-locking index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = "
-                    "%.3g >= 1 (f = %.3g, r/l = %.4g, β_max = %.1f°): near the largest rod angle the friction a rod "
-                    "force causes exceeds that force's push, so the mechanism jams there",
-                    m.self_locking_index, scene.loads.guide_friction, lam, m.beta_max * kRadToDeg));
-  } else if (m.self_locking_index > kLockingIndexWarning) {
-    w.push_back(printfText("guide friction near self-locking: index f·max(tan β_max, (|p|·tan β_max + d/2)/b) = %.3g (locks at "
-                    "1); at the largest rod angle the friction is amplified up to %.3gx its open-loop value "
-                    "f·(|N_front| + |N_rear|) (f = %.3g, r/l = %.4g)",
-                    m.self_locking_index, m.friction_amplification, scene.loads.guide_friction, lam));
-  }
-  const double mu = m.transmission_angle_min * kRadToDeg;
-  if (mu < kTransmissionAngleWarning) {
-    w.push_back(printfText("crank-slider close to dead centre: r/l = %.4g gives a largest rod angle β_max = %.1f°, a smallest "
-                    "transmission angle of %.1f° (below the %.0f° of mechanism-design practice) and rod forces up to "
-                    "1/cos β_max = %.3g times the cart's horizontal load; at r/l -> 1 the rod stands across the guide "
-                    "and the mechanism jams or folds over",
-                    lam, m.beta_max * kRadToDeg, mu, kTransmissionAngleWarning, m.rod_force_factor));
-  }
+  const std::string locking = guideLockingWarning(scene, m);
+  if (!locking.empty()) w.push_back(locking);
+  const std::string dead_centre = deadCentreWarning(scene, m);
+  if (!dead_centre.empty()) w.push_back(dead_centre);
   return w;
 }
 

@@ -8,6 +8,24 @@ namespace rollerdyn {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The carts' speed columns the timeseries holds and, per column, the mass that moves with the cart
+// [kg]: its own and the rod's half m_rod_half at its end.
+struct CartSpeedColumns {
+  std::vector<int> index;
+  std::vector<double> mass;
+};
+
+CartSpeedColumns cartSpeedColumns(const Scene& sc, const Table& ts, double m_rod_half) {
+  CartSpeedColumns c;
+  for (int j = 1; j <= sc.carts.count; ++j)
+    if (ts.has("v_cart_" + std::to_string(j))) {
+      c.index.push_back(ts.index("v_cart_" + std::to_string(j)));
+      c.mass.push_back(sc.cartMass(j - 1) + m_rod_half);
+    }
+  return c;
+}
+
 }  // namespace
 
 std::vector<double> kineticEnergy(const Scene& sc, const Table& ts) {
@@ -19,13 +37,9 @@ std::vector<double> kineticEnergy(const Scene& sc, const Table& ts) {
   const double Jc = sc.crankSideInertia() + sc.carts.count * m_rod_half * r * r;
   const int iw1 = ts.has("omega_motor") ? ts.index("omega_motor") : -1;
   const int iw2 = ts.has("omega_crank") ? ts.index("omega_crank") : -1;
-  std::vector<int> iv;
-  std::vector<double> m_cart;  // per cart column: its mass with half a rod
-  for (int j = 1; j <= sc.carts.count; ++j)
-    if (ts.has("v_cart_" + std::to_string(j))) {
-      iv.push_back(ts.index("v_cart_" + std::to_string(j)));
-      m_cart.push_back(sc.cartMass(j - 1) + m_rod_half);
-    }
+  const CartSpeedColumns carts = cartSpeedColumns(sc, ts, m_rod_half);
+  const std::vector<int>& iv = carts.index;
+  const std::vector<double>& m_cart = carts.mass;
   for (std::size_t i = 0; i < n; ++i) {
     const auto& row = ts.rows[i];
     const double w2 = iw2 >= 0 ? row[iw2] : kNaN;

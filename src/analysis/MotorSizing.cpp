@@ -46,37 +46,46 @@ double generatingBreakdownTorque(const MotorLaw& law, double w0) {
   return -lowest;
 }
 
-// The motor's ratings the checks read: breakdown torques (motoring, generating), the nominal
-// torque and where it comes from, and the catalogue's M_kr where the Kloss key contradicts it.
-// The checks read the motor the run simulated: a catalogue law (circuit, Park machine) has its
-// own breakdown torque (the largest of its steady curve) and its catalogue's rated point; the
-// Kloss keys belong to the Kloss laws (the trial's circuit run with motor.breakdown_torque = 700
-// was checked against 700 N·m while its motor broke down at 517).
-void addMotorRatings(const Scene& sc, MotorSizing& m) {
-  const MotorCatalogue& cat = sc.induction.catalogue;
-  const bool catalogue_law = isMachineLaw(sc.induction.model);
+// The breakdown torques (motoring, generating) [N·m] the checks read: those of the motor the run
+// simulated. A catalogue law (circuit, Park machine) has its own (the extremes of its steady
+// curve); the Kloss keys belong to the Kloss laws (the trial's circuit run with
+// motor.breakdown_torque = 700 was checked against 700 N·m while its motor broke down at 517).
+void addBreakdownTorques(const Scene& sc, MotorSizing& m) {
   m.breakdown_torque = m.breakdown_torque_generating = sc.motor.breakdown_torque;
-  if (catalogue_law) try {
+  if (isMachineLaw(sc.induction.model)) try {
       const std::shared_ptr<const MotorLaw> law = sharedMotorLaw(sc);
       m.breakdown_torque = motorBreakdownTorque(sc, law.get());
       m.breakdown_torque_generating = generatingBreakdownTorque(*law, sc.motor.omega_sync);
     } catch (const std::exception&) {
       // no law for this scene: the Kloss key stands
     }
-  m.nominal_torque = nominalMotorTorque(sc, &m.nominal_source);
+}
+
+// The catalogue's M_kr beside a Kloss law's motor.breakdown_torque, and the conflict when they
+// differ by more than 10 %.
+void addCatalogueBreakdownTorque(const Scene& sc, MotorSizing& m) {
+  const MotorCatalogue& cat = sc.induction.catalogue;
   m.breakdown_torque_catalogue = kNaN;
-  if (!catalogue_law && cat.given() && cat.omega_nominal > 0 && cat.breakdown_torque_ratio > 0) {
-    const double M_kr_cat = cat.breakdown_torque_ratio * cat.nominalTorque();
-    m.breakdown_torque_catalogue = M_kr_cat;  // shown beside the Kloss M_kr, whether they agree or not
-    if (std::abs(sc.motor.breakdown_torque / M_kr_cat - 1.0) > 0.1) {
-      char buf[300];
-      std::snprintf(buf, sizeof buf,
-                    "UNRELIABLE: motor.breakdown_torque = %.4g N·m contradicts the motor's catalogue, "
-                    "(M_k/M_n)·P_n/ω_n = %.4g N·m; the run and this verdict follow %.4g N·m",
-                    sc.motor.breakdown_torque, M_kr_cat, sc.motor.breakdown_torque);
-      m.data_conflict = buf;
-    }
+  if (isMachineLaw(sc.induction.model) || !cat.given() || !(cat.omega_nominal > 0) || !(cat.breakdown_torque_ratio > 0))
+    return;
+  const double M_kr_cat = cat.breakdown_torque_ratio * cat.nominalTorque();
+  m.breakdown_torque_catalogue = M_kr_cat;  // shown beside the Kloss M_kr, whether they agree or not
+  if (std::abs(sc.motor.breakdown_torque / M_kr_cat - 1.0) > 0.1) {
+    char buf[300];
+    std::snprintf(buf, sizeof buf,
+                  "UNRELIABLE: motor.breakdown_torque = %.4g N·m contradicts the motor's catalogue, "
+                  "(M_k/M_n)·P_n/ω_n = %.4g N·m; the run and this verdict follow %.4g N·m",
+                  sc.motor.breakdown_torque, M_kr_cat, sc.motor.breakdown_torque);
+    m.data_conflict = buf;
   }
+}
+
+// The motor's ratings the checks read: breakdown torques (motoring, generating), the nominal
+// torque and where it comes from, and the catalogue's M_kr where the Kloss key contradicts it.
+void addMotorRatings(const Scene& sc, MotorSizing& m) {
+  addBreakdownTorques(sc, m);
+  m.nominal_torque = nominalMotorTorque(sc, &m.nominal_source);
+  addCatalogueBreakdownTorque(sc, m);
 }
 
 // Every figure of the run not known until it is computed.

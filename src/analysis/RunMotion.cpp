@@ -183,18 +183,34 @@ std::string classifyMotion(const Scene& sc, const RunResult& run, const WindowMe
   return windowMotion(sc, ts, m, band, window_advance, steady_reached, swings_growing);
 }
 
+namespace {
+
+// How far the crank travelled over the run's finite rows: its angle's range [lo, hi] and last
+// value [rad] (from the start angle phi0), and its speed's range [w_lo, w_hi] (from rest) [rad/s].
+struct CrankTravel {
+  double lo, hi, w_lo, w_hi, end;
+};
+
+CrankTravel crankTravel(const Table& ts, double phi0) {
+  const int ip = ts.index("phi_crank"), iw = ts.index("omega_crank");
+  CrankTravel c{phi0, phi0, 0, 0, phi0};
+  for (const auto& row : ts.rows) {
+    if (!std::isfinite(row[ip]) || !std::isfinite(row[iw])) continue;
+    c.lo = std::min(c.lo, row[ip]), c.hi = std::max(c.hi, row[ip]);
+    c.w_lo = std::min(c.w_lo, row[iw]), c.w_hi = std::max(c.w_hi, row[iw]);
+    c.end = row[ip];
+  }
+  return c;
+}
+
+}  // namespace
+
 std::string stalledCrankTravel(const Scene& sc, const RunResult& run) {
   const Table& ts = run.timeseries;
   if (!ts.has("phi_crank") || !ts.has("omega_crank") || ts.rows.empty()) return "";
-  const int ip = ts.index("phi_crank"), iw = ts.index("omega_crank");
   const double phi0 = sc.initial.crank_angle;
-  double lo = phi0, hi = phi0, w_lo = 0, w_hi = 0, end = phi0;
-  for (const auto& row : ts.rows) {
-    if (!std::isfinite(row[ip]) || !std::isfinite(row[iw])) continue;
-    lo = std::min(lo, row[ip]), hi = std::max(hi, row[ip]);
-    w_lo = std::min(w_lo, row[iw]), w_hi = std::max(w_hi, row[iw]);
-    end = row[ip];
-  }
+  const CrankTravel travel = crankTravel(ts, phi0);
+  const double lo = travel.lo, hi = travel.hi, w_lo = travel.w_lo, w_hi = travel.w_hi, end = travel.end;
   constexpr double kMoved = 5.0 * M_PI / 180.0;  // less is a creep at the start angle, not a motion
   if (hi - phi0 < kMoved && phi0 - lo < kMoved) return "";
   const double deg = 180.0 / M_PI;

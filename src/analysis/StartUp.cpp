@@ -163,14 +163,11 @@ double largestCartPath(const Table& ts, const std::vector<double>& t, std::size_
   return path;
 }
 
-// After a switch-off within the run: the stopping time and the run-out of the crank and the carts.
-void addStopping(const Scene& sc, const Table& ts, StartUp& r) {
-  const std::vector<double> t = ts.column("t"), w = ts.column("omega_crank");
-  r.stopping_time = r.run_out_revolutions = r.run_out_cart_path = kNaN;
-  if (!(std::isfinite(r.t_off) && r.t_off <= t.back())) return;
-  const double limit = StallDetector::kSpeedFraction * sc.motor.omega_sync / sc.reducer.ratio;
-  const std::size_t i_off = firstRowAtOrAfter(t, r.t_off);
-  const double t_restart = sc.motor_stop.t_restart;
+// The run-out's last row after the switch-off at row i_off: the first whose crank speed is within
+// the stall rule's band `limit` [rad/s] (its time after t_off is the stopping time), else the last
+// before the restart at t_restart or the run's end (the stopping time stays unknown).
+std::size_t runOutEnd(const std::vector<double>& t, const std::vector<double>& w, std::size_t i_off, double limit,
+                      double t_restart, StartUp& r) {
   std::size_t i_stop = t.size() - 1;
   for (std::size_t i = i_off; i < t.size() && t[i] < t_restart; ++i) {
     i_stop = i;
@@ -179,6 +176,18 @@ void addStopping(const Scene& sc, const Table& ts, StartUp& r) {
       break;
     }
   }
+  return i_stop;
+}
+
+// After a switch-off within the run: the stopping time and the run-out of the crank and the carts.
+void addStopping(const Scene& sc, const Table& ts, StartUp& r) {
+  const std::vector<double> t = ts.column("t"), w = ts.column("omega_crank");
+  r.stopping_time = r.run_out_revolutions = r.run_out_cart_path = kNaN;
+  if (!(std::isfinite(r.t_off) && r.t_off <= t.back())) return;
+  const double limit = StallDetector::kSpeedFraction * sc.motor.omega_sync / sc.reducer.ratio;
+  const std::size_t i_off = firstRowAtOrAfter(t, r.t_off);
+  const double t_restart = sc.motor_stop.t_restart;
+  const std::size_t i_stop = runOutEnd(t, w, i_off, limit, t_restart, r);
   if (ts.has("phi_crank")) {
     const std::vector<double> phi = ts.column("phi_crank");
     r.run_out_revolutions = std::abs(phi[i_stop] - phi[i_off]) / (2 * M_PI);

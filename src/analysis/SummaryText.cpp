@@ -39,6 +39,19 @@ std::string motionExplanation(const std::string& motion) {
                                 : "";
 }
 
+// The metrics window's line (after the steady-state line): which revolutions, and when.
+std::string metricsWindowLine(const json& st) {
+  std::ostringstream o;
+  const int window_revs = st.value("window_revolutions", 0);
+  o << "\n             metrics window: "
+    << (window_revs > 0 ? "the last " + std::to_string(window_revs) + " revolutions"
+                        : std::string("the last 20 % of the run (it holds no whole crank revolution)"))
+    << (st.value("reached", false) ? "" : " (no steady state: the window may hold the start)")
+    << ", t = " << formatted(st.value("t_begin", json(nullptr)), "%.4g") << " ... " << formatted(st.value("t_end", json(nullptr)), "%.4g")
+    << " s\n";
+  return o.str();
+}
+
 // The steady-state lines: whether the speed settled, from which revolution, and the metrics window.
 std::string steadyStateText(const json& st) {
   if (!st.is_object()) return "";
@@ -57,13 +70,7 @@ std::string steadyStateText(const json& st) {
     o << ": the crank speed repeats from revolution " << st.value("after_revolutions", -1) + 1 << " on (t = "
       << formatted(st.value("t_settled", json(nullptr)), "%.4g") << " s), of " << st.value("revolutions", 0)
       << " whole revolutions in the run";
-  const int window_revs = st.value("window_revolutions", 0);
-  o << "\n             metrics window: "
-    << (window_revs > 0 ? "the last " + std::to_string(window_revs) + " revolutions"
-                        : std::string("the last 20 % of the run (it holds no whole crank revolution)"))
-    << (st.value("reached", false) ? "" : " (no steady state: the window may hold the start)")
-    << ", t = " << formatted(st.value("t_begin", json(nullptr)), "%.4g") << " ... " << formatted(st.value("t_end", json(nullptr)), "%.4g")
-    << " s\n";
+  o << metricsWindowLine(st);
   return o.str();
 }
 

@@ -51,30 +51,41 @@ const BenchRow* findRow(const std::vector<BenchRow>& rows, const std::string& va
 
 namespace {
 
+// A model's reference run and the closest any other run of that model comes to it: its relative
+// error in ω (NaN when no other run succeeded) and setting.
+struct ReferenceAgreement {
+  const BenchRow* ref = nullptr;
+  double agree = NAN;
+  std::string who;
+};
+
+ReferenceAgreement referenceAgreement(const std::vector<BenchRow>& rows, const char* model) {
+  ReferenceAgreement a;
+  for (const BenchRow& r : rows) {
+    if (r.m.setting.model != model) continue;
+    if (r.reference) a.ref = &r;
+    else if (r.m.outcome == Outcome::Ok && std::isfinite(r.error_omega) && !(a.agree <= r.error_omega)) {
+      a.agree = r.error_omega;
+      a.who = settingText(r.m.setting);
+    }
+  }
+  return a;
+}
+
 std::string referenceCheck(const std::vector<BenchRow>& rows) {
   std::ostringstream os;
   // Reference check: the closest any other run of the same model comes to the reference (an
   // estimate of the reference's own error when that run is an independent integrator).
   for (const char* model : {kMultibody, kMinimal, kReduced}) {
-    const BenchRow* ref = nullptr;
-    double agree = NAN;
-    std::string who;
-    for (const BenchRow& r : rows) {
-      if (r.m.setting.model != model) continue;
-      if (r.reference) ref = &r;
-      else if (r.m.outcome == Outcome::Ok && std::isfinite(r.error_omega) && !(agree <= r.error_omega)) {
-        agree = r.error_omega;
-        who = settingText(r.m.setting);
-      }
-    }
-    if (!ref) {
+    const ReferenceAgreement a = referenceAgreement(rows, model);
+    if (!a.ref) {
       os << "- " << model << ": no usable reference run; errors not measured.\n";
       continue;
     }
-    os << "- " << model << " reference: " << settingText(ref->m.setting) << ", "
-       << num(ref->m.cpu_seconds) << " s CPU, status " << ref->m.status;
-    if (std::isfinite(agree))
-      os << "; closest other run (" << who << ") differs by " << num(agree, 2)
+    os << "- " << model << " reference: " << settingText(a.ref->m.setting) << ", "
+       << num(a.ref->m.cpu_seconds) << " s CPU, status " << a.ref->m.status;
+    if (std::isfinite(a.agree))
+      os << "; closest other run (" << a.who << ") differs by " << num(a.agree, 2)
          << " in ω (when it is another integrator, the reference's own error is of this order or less)";
     os << ".\n";
   }
@@ -103,6 +114,18 @@ std::string recommendedSettings(const std::vector<BenchRow>& rows) {
   return os.str();
 }
 
+// The minimal formulation's real-time target at a crank-angle error: its row of the targets' table.
+std::string angleTargetRow(const Scene& scene, const std::vector<BenchRow>& rows) {
+  std::ostringstream os;
+  const BenchRow* r = cheapestReachingAngle(rows, kMinimal, kTargetAngleError);
+  os << "| " << kMinimal << " | crank angle " << num(kTargetAngleError, 1) << " rad"
+     << (scene.simulation.reactions ? ", with reactions" : ", without reactions") << " | "
+     << (r ? settingText(r->m.setting) + " (" + num(r->error_angle, 2) + " rad)" : "none reached") << " | "
+     << (r ? num(r->m.real_time_factor) : "—") << " | ≥ " << num(kTargetRealTimeAngle) << "× | "
+     << (r ? (r->m.real_time_factor >= kTargetRealTimeAngle ? "yes" : "no") : "no") << " |\n";
+  return os.str();
+}
+
 // The real-time targets of each model at its error, and of the minimal formulation at a crank-angle error.
 std::string performanceTargets(const Scene& scene, const std::vector<BenchRow>& rows) {
   std::ostringstream os;
@@ -122,14 +145,7 @@ std::string performanceTargets(const Scene& scene, const std::vector<BenchRow>& 
        << " | " << (r ? num(r->m.real_time_factor) : "—") << " | ≥ " << num(t.real_time) << "× | "
        << (r ? (r->m.real_time_factor >= t.real_time ? "yes" : "no") : "no") << " |\n";
   }
-  {
-    const BenchRow* r = cheapestReachingAngle(rows, kMinimal, kTargetAngleError);
-    os << "| " << kMinimal << " | crank angle " << num(kTargetAngleError, 1) << " rad"
-       << (scene.simulation.reactions ? ", with reactions" : ", without reactions") << " | "
-       << (r ? settingText(r->m.setting) + " (" + num(r->error_angle, 2) + " rad)" : "none reached") << " | "
-       << (r ? num(r->m.real_time_factor) : "—") << " | ≥ " << num(kTargetRealTimeAngle) << "× | "
-       << (r ? (r->m.real_time_factor >= kTargetRealTimeAngle ? "yes" : "no") : "no") << " |\n";
-  }
+  os << angleTargetRow(scene, rows);
   os << "\nThe targets are stated for model/balanced-4cart.yaml over 10 s; on other scenes or with "
         "--quick (shorter run, start-up transient only) they are indicative.\n";
   return os.str();
@@ -259,15 +275,12 @@ std::string cartsReport(const Scene& scene, const std::vector<BenchRow>& rows, c
   return os.str();
 }
 
-std::string effectsReport(const Scene& scene, const std::vector<BenchRow>& rows, const BenchOptions& opt) {
+namespace {
+
+// One row per effect study run: its variant's number, outcome and cost relative to the baseline.
+std::string effectsTable(const std::vector<BenchRow>& rows) {
   std::ostringstream os;
-  os << "# Cost of each effect: " << scene.name << "\n\n"
-     << "Each variant changes one thing of the scene (--set) and runs both models at the scene's "
-        "integrator and accuracy ("
-     << scene.simulation.integrator << " / cvode, " << num(scene.simulation.accuracy, 2) << "), "
-     << num(benchScene(scene, opt).simulation.t_end) << " s simulated. Relative cost = CPU / CPU of the "
-        "baseline of the same model. " << timingNote(scene, opt) << "\n\n"
-     << "| # | variant | model | outcome | CPU [s] | relative cost | steps | RHS evals | µs per RHS eval |\n"
+  os << "| # | variant | model | outcome | CPU [s] | relative cost | steps | RHS evals | µs per RHS eval |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";
   std::map<std::string, int> index;
   for (const BenchRow& r : rows) {
@@ -283,6 +296,41 @@ std::string effectsReport(const Scene& scene, const std::vector<BenchRow>& rows,
        << num(r.m.cpu_seconds) << " | " << num(rel) << " | " << r.m.steps << " | " << r.m.realizations << " | "
        << num(us) << " |\n";
   }
+  return os.str();
+}
+
+// One row per motor study run: its cost and right-hand-side evaluations relative to the static
+// Kloss law's run of the same model.
+std::string motorsTable(const std::vector<BenchRow>& rows) {
+  std::ostringstream os;
+  os << "| motor model | model | outcome | CPU [s] | relative cost | steps | RHS evals | relative RHS evals | µs per "
+        "RHS eval |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
+  for (const BenchRow& r : rows) {
+    const BenchRow* base = findRow(rows, "motor.model kloss", r.m.setting.model);
+    const bool ok = base && usable(base->m.outcome) && usable(r.m.outcome);
+    const double rel = ok ? r.m.cpu_seconds / base->m.cpu_seconds : NAN;
+    const double rel_rhs = ok && base->m.realizations > 0 ? double(r.m.realizations) / base->m.realizations : NAN;
+    const double us = r.m.realizations > 0 ? 1e6 * r.m.cpu_seconds / r.m.realizations : NAN;
+    os << "| " << r.variant.substr(std::string("motor.model ").size()) << " | " << r.m.setting.model << " | "
+       << toString(r.m.outcome)
+       << (usable(r.m.outcome) ? "" : " (" + r.m.status + ")") << " | " << num(r.m.cpu_seconds) << " | " << num(rel)
+       << " | " << r.m.steps << " | " << r.m.realizations << " | " << num(rel_rhs) << " | " << num(us) << " |\n";
+  }
+  return os.str();
+}
+
+}  // namespace
+
+std::string effectsReport(const Scene& scene, const std::vector<BenchRow>& rows, const BenchOptions& opt) {
+  std::ostringstream os;
+  os << "# Cost of each effect: " << scene.name << "\n\n"
+     << "Each variant changes one thing of the scene (--set) and runs both models at the scene's "
+        "integrator and accuracy ("
+     << scene.simulation.integrator << " / cvode, " << num(scene.simulation.accuracy, 2) << "), "
+     << num(benchScene(scene, opt).simulation.t_end) << " s simulated. Relative cost = CPU / CPU of the "
+        "baseline of the same model. " << timingNote(scene, opt) << "\n\n"
+     << effectsTable(rows);
   if (!scene.hasGuideFriction() && !(scene.carts.geometry.b > 0))
     os << "\nGuide friction: not applicable (the scene has no guide geometry, carts.geometry.b = 0).\n";
   os << "\nFigures: effects_stiffness.png/.svg (CPU vs coupling stiffness, rigid coupling drawn as a flat "
@@ -302,20 +350,7 @@ std::string motorsReport(const Scene& scene, const std::vector<BenchRow>& rows, 
      << " s simulated from the scene's initial state. Relative cost = CPU / CPU of motor.model kloss for the "
         "same model; the step and right-hand-side counts do not depend on the machine's load. "
      << timingNote(scene, opt) << "\n\n"
-     << "| motor model | model | outcome | CPU [s] | relative cost | steps | RHS evals | relative RHS evals | µs per "
-        "RHS eval |\n"
-     << "|---|---|---|---|---|---|---|---|---|\n";
-  for (const BenchRow& r : rows) {
-    const BenchRow* base = findRow(rows, "motor.model kloss", r.m.setting.model);
-    const bool ok = base && usable(base->m.outcome) && usable(r.m.outcome);
-    const double rel = ok ? r.m.cpu_seconds / base->m.cpu_seconds : NAN;
-    const double rel_rhs = ok && base->m.realizations > 0 ? double(r.m.realizations) / base->m.realizations : NAN;
-    const double us = r.m.realizations > 0 ? 1e6 * r.m.cpu_seconds / r.m.realizations : NAN;
-    os << "| " << r.variant.substr(std::string("motor.model ").size()) << " | " << r.m.setting.model << " | "
-       << toString(r.m.outcome)
-       << (usable(r.m.outcome) ? "" : " (" + r.m.status + ")") << " | " << num(r.m.cpu_seconds) << " | " << num(rel)
-       << " | " << r.m.steps << " | " << r.m.realizations << " | " << num(rel_rhs) << " | " << num(us) << " |\n";
-  }
+     << motorsTable(rows);
   os << "\nThe space-phasor machine adds its electrical transient after every switching (supply-frequency "
         "oscillation, time constants of ms) and 4 (single cage) or 6 (double cage) states; the static laws add "
         "no state. Whether a law makes the equations stiff and the integrators switch to BDF: docs/startup.md. "

@@ -167,18 +167,18 @@ void driveVariants(const Scene& base, std::vector<EffectVariant>& v) {
   crankshaftChainVariants(base, v);
 }
 
-// The model's choices one at a time: coupling stiffness, guide friction, rod model and gravity.
-void modelVariants(const Scene& base, std::vector<EffectVariant>& v) {
+// The coupling's stiffness over four decades (N·m/rad): how stiff an elastic drive gets before it costs.
+void couplingStiffnessVariants(const Scene& base, std::vector<EffectVariant>& v) {
   const bool elastic = base.coupling.type == CouplingType::Elastic;
   for (double c : {2e5, 1e6, 1e7, 1e8, 1e9}) {
     std::ostringstream name;
     name << "elastic coupling c = " << c << " N·m/rad" << (elastic ? "" : " (k = 0)");
     v.push_back({name.str(), c, {"coupling.type=elastic", "coupling.stiffness=" + setValue(c)}});
   }
-  if (base.hasGuideFriction())
-    v.push_back({"guide friction off", 0, {"loads.guide_friction.coefficient=0"}});
-  else if (base.carts.geometry.b > 0)
-    v.push_back({"guide friction on (f = 0.008)", 0, {"loads.guide_friction.coefficient=0.008"}});
+}
+
+// Each rod model other than the scene's.
+void rodModelVariants(const Scene& base, std::vector<EffectVariant>& v) {
   for (RodModel rm : {RodModel::Distributed, RodModel::Split, RodModel::Massless}) {
     if (rm == base.rods.model) continue;
     EffectVariant var{std::string("rods ") + toString(rm), 0, {std::string("rods.model=") + toString(rm)}};
@@ -190,6 +190,16 @@ void modelVariants(const Scene& base, std::vector<EffectVariant>& v) {
     }
     v.push_back(var);
   }
+}
+
+// The model's choices one at a time: coupling stiffness, guide friction, rod model and gravity.
+void modelVariants(const Scene& base, std::vector<EffectVariant>& v) {
+  couplingStiffnessVariants(base, v);
+  if (base.hasGuideFriction())
+    v.push_back({"guide friction off", 0, {"loads.guide_friction.coefficient=0"}});
+  else if (base.carts.geometry.b > 0)
+    v.push_back({"guide friction on (f = 0.008)", 0, {"loads.guide_friction.coefficient=0.008"}});
+  rodModelVariants(base, v);
   if (base.hasGravity())
     v.push_back({"gravity off", 0, {"loads.gravity=0"}});
   else

@@ -25,6 +25,41 @@ std::string fmt(double v, const char* f = "%.3f") {
   return b;
 }
 
+// One phase of one task: the medians of its times over the samples [s], and how many it had.
+SetupRow phaseMedians(const std::vector<SetupSample>& samples, const std::string& task, const std::string& phase) {
+  std::vector<double> wall, cpu, child;
+  for (const SetupSample& s : samples)
+    if (s.task == task)
+      for (const PhaseTime& p : s.phases)
+        if (p.name == phase) {
+          wall.push_back(p.wall);
+          cpu.push_back(p.cpu);
+          child.push_back(p.child_cpu);
+        }
+  SetupRow r;
+  r.task = task;
+  r.phase = phase;
+  r.repeats = int(wall.size());
+  r.wall = median(wall);
+  r.cpu = median(cpu);
+  r.child_cpu = median(child);
+  return r;
+}
+
+// A task's heading, with the sums of its phases' medians [s], and its table's header.
+std::string taskHeading(const std::vector<SetupRow>& rows, const std::string& task) {
+  double wall = 0, cpu = 0, child = 0;
+  for (const SetupRow& q : rows)
+    if (q.task == task) {
+      if (std::isfinite(q.wall)) wall += q.wall;
+      if (std::isfinite(q.wall) && std::isfinite(q.cpu)) cpu += q.cpu;
+      if (std::isfinite(q.child_cpu)) child += q.child_cpu;
+    }
+  return "\n## " + task + ": " + fmt(wall) + " s wall, " + fmt(cpu) + " s CPU, " + fmt(child) +
+         " s child CPU (sum of the medians)\n\n" +
+         "| phase | wall [s] | CPU [s] | child CPU [s] | repetitions |\n|---|---:|---:|---:|---:|\n";
+}
+
 }  // namespace
 
 std::vector<SetupRow> setupRows(const std::vector<SetupSample>& samples) {
@@ -34,25 +69,7 @@ std::vector<SetupRow> setupRows(const std::vector<SetupSample>& samples) {
       if (std::find(keys.begin(), keys.end(), std::make_pair(s.task, p.name)) == keys.end())
         keys.push_back({s.task, p.name});
   std::vector<SetupRow> rows;
-  for (const auto& [task, phase] : keys) {
-    std::vector<double> wall, cpu, child;
-    for (const SetupSample& s : samples)
-      if (s.task == task)
-        for (const PhaseTime& p : s.phases)
-          if (p.name == phase) {
-            wall.push_back(p.wall);
-            cpu.push_back(p.cpu);
-            child.push_back(p.child_cpu);
-          }
-    SetupRow r;
-    r.task = task;
-    r.phase = phase;
-    r.repeats = int(wall.size());
-    r.wall = median(wall);
-    r.cpu = median(cpu);
-    r.child_cpu = median(child);
-    rows.push_back(r);
-  }
+  for (const auto& [task, phase] : keys) rows.push_back(phaseMedians(samples, task, phase));
   return rows;
 }
 
@@ -76,16 +93,7 @@ std::string setupReport(const std::string& scene_name, const std::vector<SetupRo
   for (const SetupRow& r : rows) {
     if (r.task != task) {
       task = r.task;
-      double wall = 0, cpu = 0, child = 0;
-      for (const SetupRow& q : rows)
-        if (q.task == task) {
-          if (std::isfinite(q.wall)) wall += q.wall;
-          if (std::isfinite(q.wall) && std::isfinite(q.cpu)) cpu += q.cpu;
-          if (std::isfinite(q.child_cpu)) child += q.child_cpu;
-        }
-      s += "\n## " + task + ": " + fmt(wall) + " s wall, " + fmt(cpu) + " s CPU, " + fmt(child) +
-           " s child CPU (sum of the medians)\n\n";
-      s += "| phase | wall [s] | CPU [s] | child CPU [s] | repetitions |\n|---|---:|---:|---:|---:|\n";
+      s += taskHeading(rows, task);
     }
     s += "| " + r.phase + " | " + fmt(r.wall) + " | " + fmt(r.cpu) + " | " + fmt(r.child_cpu) + " | " +
          std::to_string(r.repeats) + " |\n";

@@ -75,9 +75,12 @@ std::string perCartText(const Scene& s, double (*value)(const Scene&, int)) {
   return same ? formatNumber(value(s, 0)) : "[" + list + "]";
 }
 
-std::vector<SceneParameterRow> derivedParameterRows(const Scene& s) {
+namespace {
+
+// The motor's figures the parser derived, and the motor reduced to the crank axis.
+std::vector<SceneParameterRow> motorDerivedRows(const Scene& s) {
   const double u = s.reducer.ratio;
-  std::vector<SceneParameterRow> rows = {
+  return {
       {"critical slip s_kr", formatNumber(s.motor.critical_slip), "-",
        "Kloss critical slip as the parser derived it (Loveikin, Pochka, Romasevych (2018) eq. (37), Loveikin and Pochka (2007) eq. (7))", "derived"},
       {"synchronous crank speed ω0/u", formatNumber(s.motor.omega_sync / u), "rad/s",
@@ -85,6 +88,12 @@ std::vector<SceneParameterRow> derivedParameterRows(const Scene& s) {
       {"breakdown torque at the crank M_kr·u·η",
        formatNumber(motorBreakdownTorque(s) * u * s.reducer.efficiency), "N·m",
        "largest motor torque the crank can get", "derived"},
+  };
+}
+
+// The machine's inertias and moving masses as the models use them.
+std::vector<SceneParameterRow> inertiaDerivedRows(const Scene& s) {
+  return {
       {"motor-side inertia J_n1", formatNumber(s.motorSideInertia()), "kg·m²",
        "(J_p + J_m + J_red + motor-shaft flywheel)·δ·u², reduced to the crank axis (Loveikin, Pochka, Romasevych (2018) eq. (1))",
        "derived"},
@@ -96,6 +105,13 @@ std::vector<SceneParameterRow> derivedParameterRows(const Scene& s) {
        "cart 1, 2, ...",
        "derived"},
   };
+}
+
+}  // namespace
+
+std::vector<SceneParameterRow> derivedParameterRows(const Scene& s) {
+  std::vector<SceneParameterRow> rows = motorDerivedRows(s);
+  for (SceneParameterRow& r : inertiaDerivedRows(s)) rows.push_back(std::move(r));
   if (!s.crank.angles.empty() || !s.crank.angle_errors.empty())
     rows.push_back({"crank angles θ_j − φ2",
                     perCartText(s, [](const Scene& sc, int j) { return sc.crankPhase(j) * 180.0 / M_PI; }), "deg",

@@ -100,15 +100,20 @@ std::string startPeaksTable(const json& s, bool starts, bool still_starting) {
   return h.str();
 }
 
+// How long the soft starter's current limit held, by the start's outcome, after "held from the switch-on, ".
+const char* currentLimitHeldUntil(const json& lim) {
+  const std::string outcome = jsonMember(lim, "outcome").is_string() ? jsonMember(lim, "outcome").get<std::string>() : "";
+  return outcome == "bypass"         ? "until the bypass closed (the motor up to speed)"
+         : outcome == "tripped"      ? "until the starter tripped (a failed start)"
+         : outcome == "switched_off" ? "until the switch-off"
+                                     : "still when the run ended";
+}
+
 // The soft starter's current limit: how long it held, where the bypass closed, what it allows at standstill.
 std::string currentLimitTable(const json& lim) {
   std::ostringstream h;
   if (lim.is_object()) {
-    const std::string outcome = jsonMember(lim, "outcome").is_string() ? jsonMember(lim, "outcome").get<std::string>() : "";
-    const char* how = outcome == "bypass"         ? "until the bypass closed (the motor up to speed)"
-                      : outcome == "tripped"      ? "until the starter tripped (a failed start)"
-                      : outcome == "switched_off" ? "until the switch-off"
-                                                  : "still when the run ended";
+    const char* how = currentLimitHeldUntil(lim);
     h << "<table>\n<tr><th>soft starter's current limit</th><th>value</th><th>unit</th></tr>\n";
     h << line("current limit I_lim (RMS stator phase current)", jsonNumberText(jsonMember(lim, "limit")), "A");
     h << line(std::string("held from the switch-on, ") + how, jsonNumberText(jsonMember(lim, "held_time"), "%.4g"), "s");

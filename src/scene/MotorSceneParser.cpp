@@ -148,37 +148,51 @@ double readCriticalSlip(const Reader& in, double omega0, bool may_be_absent) {
   return slipFromOverloadRatio(in, omega0);
 }
 
+// What omega_sync should be for the frequency f [Hz]: with p given, the speed it implies; without
+// it, p was inferred from the wrong ω0 itself, so the speeds of the usual pole pairs are the useful hint.
+std::string syncSpeedWanted(const Reader& in, double f, int p) {
+  const double w1 = 2.0 * M_PI * f;
+  if (in.has("motor.pole_pairs"))
+    return "omega_sync = 2·pi·f_n/p (" + formatNumber(w1 / p) + " rad/s with f_n = " + formatNumber(f) +
+           " Hz, p = " + std::to_string(p) + ") within 0.1 %";
+  std::string want = "omega_sync = 2·pi·f_n/p within 0.1 % at f_n = " + formatNumber(f) + " Hz:";
+  for (int q = 1; q <= 4; ++q)
+    want += std::string(q > 1 ? "," : "") + " " + formatNumber(w1 / q) + " rad/s (p = " + std::to_string(q) + ")";
+  want += ", ... (motor.pole_pairs)";
+  return want;
+}
+
+// ω0 [rad/s] that disagrees with 2π·f_n/p: a --set of p or f_n is blamed for it, else ω0.
+[[noreturn]] void failSyncSpeed(const Reader& in, double omega0, double f, int p) {
+  const SceneDocument& doc = in.doc();
+  if (in.has("motor.pole_pairs") && blameSecond(doc, "motor.omega_sync", "motor.pole_pairs"))
+    doc.fail("motor.pole_pairs", "p with 2·pi·f_n/p = omega_sync = " + formatNumber(omega0) + " rad/s",
+             std::to_string(p));
+  if (blameSecond(doc, "motor.omega_sync", "motor.frequency"))
+    doc.fail("motor.frequency", "f_n with 2·pi·f_n/p = omega_sync = " + formatNumber(omega0) + " rad/s",
+             formatNumber(f));
+  doc.fail("motor.omega_sync", syncSpeedWanted(in, f, p), formatNumber(omega0));
+}
+
 // Pole pairs: given, or the whole number nearest 2π·f_n/ω0. Checked against ω0 only where a law
 // uses them (circuit, park, or machine data given), so Kloss scenes with any ω0 stay valid.
 int readPolePairs(const Reader& in, double omega0, double f, bool checked) {
-  const SceneDocument& doc = in.doc();
   const double w1 = 2.0 * M_PI * f;
   const int p = in.has("motor.pole_pairs") ? in.integer("motor.pole_pairs")
                                            : std::max(1, static_cast<int>(std::lround(w1 / omega0)));
   if (!checked) return p;
   const double w0_of_p = w1 / p;
-  if (std::abs(w0_of_p - omega0) > kSyncSpeedTolerance * omega0) {
-    // With p given, the speed it implies; without it, p was inferred from the wrong ω0 itself,
-    // so the speeds of the usual pole pairs are the useful hint.
-    std::string want;
-    if (in.has("motor.pole_pairs")) {
-      want = "omega_sync = 2·pi·f_n/p (" + formatNumber(w0_of_p) + " rad/s with f_n = " + formatNumber(f) +
-             " Hz, p = " + std::to_string(p) + ") within 0.1 %";
-    } else {
-      want = "omega_sync = 2·pi·f_n/p within 0.1 % at f_n = " + formatNumber(f) + " Hz:";
-      for (int q = 1; q <= 4; ++q)
-        want += std::string(q > 1 ? "," : "") + " " + formatNumber(w1 / q) + " rad/s (p = " + std::to_string(q) + ")";
-      want += ", ... (motor.pole_pairs)";
-    }
-    if (in.has("motor.pole_pairs") && blameSecond(doc, "motor.omega_sync", "motor.pole_pairs"))
-      doc.fail("motor.pole_pairs", "p with 2·pi·f_n/p = omega_sync = " + formatNumber(omega0) + " rad/s",
-               std::to_string(p));
-    if (blameSecond(doc, "motor.omega_sync", "motor.frequency"))
-      doc.fail("motor.frequency", "f_n with 2·pi·f_n/p = omega_sync = " + formatNumber(omega0) + " rad/s",
-               formatNumber(f));
-    doc.fail("motor.omega_sync", want, formatNumber(omega0));
-  }
+  if (std::abs(w0_of_p - omega0) > kSyncSpeedTolerance * omega0) failSyncSpeed(in, omega0, f, p);
   return p;
+}
+
+// Each motor law's own keys (numbers), whichever law runs: their values or defaults into `im`.
+void readLawsOwnKeys(const Reader& in, InductionMotor& im) {
+  for (const MotorModelInfo& law : motorModelTable())
+    for (const MotorLawKey& own : law.own_keys) {
+      const KeySpec key = own.spec();
+      im.*own.field = in.numberOr(key.path, key.default_number);
+    }
 }
 
 // The law and the machine data it needs: a machine law (circuit, park) needs motor.catalogue or
@@ -186,11 +200,7 @@ int readPolePairs(const Reader& in, double omega0, double f, bool checked) {
 // I_n is at U_n) and pole pairs that agree with ω0.
 void readMachine(const Reader& in, double omega0, InductionMotor& im) {
   im.model = in.choiceOf<MotorModel>("motor.model");
-  for (const MotorModelInfo& law : motorModelTable())  // each law's own keys, whichever law runs
-    for (const MotorLawKey& own : law.own_keys) {
-      const KeySpec key = own.spec();
-      im.*own.field = in.numberOr(key.path, key.default_number);
-    }
+  readLawsOwnKeys(in, im);
   im.frequency = in.number("motor.frequency");
   im.connection = in.choiceOf<WindingConnection>("motor.connection");
   im.catalogue = readCatalogue(in, omega0);

@@ -67,17 +67,11 @@ void idleKey(const scene_detail::Reader& in, Scene& scene, const std::string& ke
            describeNode(doc.find(key)));
 }
 
-// Every motor.start / motor.stop key that the chosen method (or the other keys) leaves without
-// effect: refused, or warned about (idleKey).
-void refuseIdleKeys(const scene_detail::Reader& in, Scene& scene) {
+// The soft starter's own keys under another method, and its start time without a current limit.
+// `method`, `is`: the deciding key and its value in words.
+void refuseIdleSoftStarterKeys(const scene_detail::Reader& in, Scene& scene, const std::string& method,
+                               const std::string& is) {
   const MotorStart& m = scene.motor_start;
-  const std::string method = "motor.start.method", is = std::string("motor.start.method ") + toString(m.method);
-  if (m.method != StartMethod::StarDelta)
-    for (const char* key : {"motor.start.changeover_time", "motor.start.changeover_speed", "motor.start.changeover_gap"})
-      idleKey(in, scene, key, method, is, "only a star_delta start changes over from star to delta");
-  if (m.method != StartMethod::SoftStarter && m.method != StartMethod::FrequencyConverter)
-    idleKey(in, scene, "motor.start.ramp_time", method, is,
-            "only a soft_starter or a frequency_converter ramps; this method gives its supply at once");
   if (m.method != StartMethod::SoftStarter) {
     idleKey(in, scene, "motor.start.initial_voltage", method, is, "only a soft_starter starts at a reduced voltage U_0");
     idleKey(in, scene, "motor.start.current_limit", method, is,
@@ -91,6 +85,20 @@ void refuseIdleKeys(const scene_detail::Reader& in, Scene& scene) {
             "motor.start.current_limit = 0 (no limit)",
             "without a current limit the soft starter closes its bypass at the end of the ramp and never trips");
   }
+}
+
+// Every motor.start / motor.stop key that the chosen method (or the other keys) leaves without
+// effect: refused, or warned about (idleKey).
+void refuseIdleKeys(const scene_detail::Reader& in, Scene& scene) {
+  const MotorStart& m = scene.motor_start;
+  const std::string method = "motor.start.method", is = std::string("motor.start.method ") + toString(m.method);
+  if (m.method != StartMethod::StarDelta)
+    for (const char* key : {"motor.start.changeover_time", "motor.start.changeover_speed", "motor.start.changeover_gap"})
+      idleKey(in, scene, key, method, is, "only a star_delta start changes over from star to delta");
+  if (m.method != StartMethod::SoftStarter && m.method != StartMethod::FrequencyConverter)
+    idleKey(in, scene, "motor.start.ramp_time", method, is,
+            "only a soft_starter or a frequency_converter ramps; this method gives its supply at once");
+  refuseIdleSoftStarterKeys(in, scene, method, is);
   if (m.method != StartMethod::FrequencyConverter)
     for (const char* key : {"motor.start.initial_frequency", "motor.start.boost"})
       idleKey(in, scene, key, method, is, "only a frequency_converter sets the supply frequency and a voltage boost");

@@ -412,27 +412,32 @@ void SceneDocument::checkMap(const YAML::Node& node, const std::string& path) co
 
   std::map<std::string, int> seen;  // key -> line of its first occurrence
   for (auto it = node.begin(); it != node.end(); ++it) {
-    const int key_line = lineAt(it->first.Mark());
-    if (!it->first.IsScalar()) {
-      failAt(childPath(path, "?"), key_line, "a plain key name (" + allowedKeys(path) + ")",
-             describeNode(it->first));
-    }
-    const std::string key = it->first.Scalar();
+    const std::string key = uniqueKeyName(it->first, path, seen);
     const std::string child = childPath(path, key);
-    const auto first = seen.find(key);
-    if (first != seen.end()) {
-      // yaml-cpp keeps both entries and lookups see only the first: never let one hide.
-      failAt(child, key_line,
-             "each key at most once (first given at line " + std::to_string(first->second) + ")",
-             "a second '" + key + "'");
-    }
-    seen.emplace(key, key_line);
     if (isSceneMap(child)) {
       checkMap(it->second, child);
     } else if (!findSceneKey(child)) {
-      failAt(child, key_line, allowedKeys(path), unknownKey(path, key));
+      failAt(child, lineAt(it->first.Mark()), allowedKeys(path), unknownKey(path, key));
     }
   }
+}
+
+std::string SceneDocument::uniqueKeyName(const YAML::Node& key_node, const std::string& path,
+                                         std::map<std::string, int>& seen) const {
+  const int key_line = lineAt(key_node.Mark());
+  if (!key_node.IsScalar()) {
+    failAt(childPath(path, "?"), key_line, "a plain key name (" + allowedKeys(path) + ")", describeNode(key_node));
+  }
+  const std::string key = key_node.Scalar();
+  const auto first = seen.find(key);
+  if (first != seen.end()) {
+    // yaml-cpp keeps both entries and lookups see only the first: never let one hide.
+    failAt(childPath(path, key), key_line,
+           "each key at most once (first given at line " + std::to_string(first->second) + ")",
+           "a second '" + key + "'");
+  }
+  seen.emplace(key, key_line);
+  return key;
 }
 
 }  // namespace rollerdyn

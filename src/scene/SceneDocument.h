@@ -72,6 +72,8 @@ class SceneDocument {
   [[noreturn]] void failOverride(int n, const std::string& arg, const std::string& key,
                                  const std::string& expected, const std::string& got) const;
   void checkMap(const YAML::Node& node, const std::string& path) const;
+  // A map key's name: a plain scalar, not given before in the map (`seen`: name -> line of it).
+  std::string uniqueKeyName(const YAML::Node& key, const std::string& path, std::map<std::string, int>& seen) const;
   // The complaint about an override whose key path is not in the schema, naming the first unknown
   // part and the keys allowed there.
   [[noreturn]] void failUnknownOverridePath(int n, const std::string& arg, const std::string& path) const;

@@ -386,22 +386,33 @@ void checkAcrossSections(const Reader& in, const Scene& s) {
   requireRowsPerRevolution(in, s);
 }
 
-Scene readScene(const SceneDocument& doc) {
-  const Reader in(doc);
-  Scene s;
-  s.source_path = doc.file();
-  s.name = std::filesystem::path(doc.file()).stem().string();
-  s.source = in.text("source");  // optional: a scene of one's own need not cite a paper
-  if (in.has("source") && s.source.find_first_not_of(" \t\n") == std::string::npos) {
-    doc.fail("source", "a citation of the source paper (non-empty text)", "empty text");
+// The paper the scene cites: optional (a scene of one's own need not cite one), but not empty.
+std::string readSourceCitation(const Reader& in) {
+  const std::string source = in.text("source");
+  if (in.has("source") && source.find_first_not_of(" \t\n") == std::string::npos) {
+    in.doc().fail("source", "a citation of the source paper (non-empty text)", "empty text");
   }
-  s.simulation = readSimulation(in);
-  s.initial = readInitial(in);
+  return source;
+}
+
+// The mechanism: crank, rods, carts, the cranks' angles and the crankshaft's layout.
+void readMechanism(const Reader& in, Scene& s) {
   s.crank = readCrank(in);
   s.rods = readRods(in, s.crank.radius);
   s.carts = readCarts(in);
   readCrankAngles(in, s.crank, s.carts.count);
   s.crankshaft = scene_detail::readCrankshaft(in, s.carts.count);
+}
+
+Scene readScene(const SceneDocument& doc) {
+  const Reader in(doc);
+  Scene s;
+  s.source_path = doc.file();
+  s.name = std::filesystem::path(doc.file()).stem().string();
+  s.source = readSourceCitation(in);
+  s.simulation = readSimulation(in);
+  s.initial = readInitial(in);
+  readMechanism(in, s);
   scene_detail::readMotor(in, s.motor, s.induction);
   s.reducer = readReducer(in);
   s.coupling = readCoupling(in);
