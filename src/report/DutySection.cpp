@@ -39,6 +39,20 @@ void spectrumRows(std::ostringstream& h, const std::string& name, const json& s)
   row(h, name + ": T_eq of the other flank (T < 0)", jsonNumberText(jsonMember(c, "equivalent_torque")), "N·m", classes(c));
 }
 
+// The duty hour's equivalent torque and the application factor it gives, or why they do not apply.
+void dutyHourRows(std::ostringstream& h, const json& g) {
+  const json& d = jsonMember(g, "duty");
+  if (!applies(d)) {
+    row(h, "duty hour: T_eq", "n/a", "N·m", text(jsonMember(d, "reason")));
+    return;
+  }
+  row(h, "duty hour: T_eq", jsonNumberText(jsonMember(d, "equivalent_torque")), "N·m",
+      text(jsonMember(d, "deciding_flank")) + "; " + text(jsonMember(d, "basis")));
+  row(h, "K_A = T_eq / T_n (assumed)",
+      jsonNumberText(jsonMember(g, "application_factor"), "%.3f") + " (" +
+          jsonNumberText(jsonMember(g, "assumed_application_factor"), "%.3g") + ")", "-");
+}
+
 void gearTable(std::ostringstream& h, const json& g) {
   h << "<h3>Reducer load spectrum and application factor after ISO 6336-6</h3>\n<p class=\"small\">"
     << text(jsonMember(g, "method")) << "; the " << text(jsonMember(g, "torque"))
@@ -50,16 +64,7 @@ void gearTable(std::ostringstream& h, const json& g) {
   row(h, "T_n = u·η·M_n", jsonNumberText(jsonMember(g, "nominal_torque")), "N·m", "M_n: " + text(jsonMember(g, "nominal_source")));
   spectrumRows(h, "start", jsonMember(g, "start"));
   spectrumRows(h, "steady window", jsonMember(g, "steady"));
-  const json& d = jsonMember(g, "duty");
-  if (applies(d)) {
-    row(h, "duty hour: T_eq", jsonNumberText(jsonMember(d, "equivalent_torque")), "N·m",
-        text(jsonMember(d, "deciding_flank")) + "; " + text(jsonMember(d, "basis")));
-    row(h, "K_A = T_eq / T_n (assumed)",
-        jsonNumberText(jsonMember(g, "application_factor"), "%.3f") + " (" +
-            jsonNumberText(jsonMember(g, "assumed_application_factor"), "%.3g") + ")", "-");
-  } else {
-    row(h, "duty hour: T_eq", "n/a", "N·m", text(jsonMember(d, "reason")));
-  }
+  dutyHourRows(h, g);
   row(h, "T_eq / T_2N", jsonNumberText(jsonMember(g, "rated_ratio"), "%.3f"), "-",
       "T_2N = " + jsonNumberText(jsonMember(g, "rated_torque")) + " N·m");
   row(h, "peak |T| / T_2max", jsonNumberText(jsonMember(g, "max_ratio"), "%.3f"), "-",

@@ -29,31 +29,35 @@ std::string dominant(const json& w, const std::string& unit) {
   return htmlEscape(s);
 }
 
+// One signal's damage per start and per hour of steady running, and the lives they give (n/a with
+// the reason where the start or the steady window is missing).
+void fatigueSignalRows(std::ostringstream& h, const std::string& name, const json& g) {
+  const std::string what = jsonMember(g, "what").is_string() ? jsonMember(g, "what").get<std::string>() : name;
+  const std::string unit = jsonMember(g, "unit").is_string() ? jsonMember(g, "unit").get<std::string>() : "";
+  const json &ps = jsonMember(g, "per_start"), &st = jsonMember(g, "steady");
+  if (applies(ps)) {
+    row(h, what + ": damage per start", jsonNumberText(jsonMember(g, "damage_per_start"), "%.3g"), "-", dominant(ps, unit));
+    row(h, what + ": starts to failure", jsonNumberText(jsonMember(g, "starts_to_failure"), "%.3g"), "-",
+        jsonMember(g, "starts_to_failure").is_number() ? "" : "no cycle damages");
+  } else {
+    row(h, what + ": damage per start", "n/a", "-", text(jsonMember(ps, "reason")));
+  }
+  if (applies(st)) {
+    row(h, what + ": damage per hour of steady running", jsonNumberText(jsonMember(g, "damage_per_hour"), "%.3g"), "1/h",
+        dominant(st, unit));
+    row(h, what + ": hours to failure", jsonNumberText(jsonMember(g, "hours_to_failure"), "%.3g"), "h",
+        jsonMember(g, "hours_to_failure").is_number() ? "" : "no cycle damages");
+  } else {
+    row(h, what + ": damage per hour", "n/a", "1/h", text(jsonMember(st, "reason")));
+  }
+}
+
 void fatigueTable(std::ostringstream& h, const json& f) {
   h << "<h3>Fatigue per start and per hour</h3>\n<p class=\"small\">Rainflow counting after ASTM E1049-85 and "
        "Miner's rule; below the knee: "
     << text(jsonMember(f, "below_knee")) << "; mean correction: " << text(jsonMember(f, "mean_correction"))
     << ".</p>\n" << kRowsHead;
-  for (const auto& [name, g] : jsonMember(f, "signals").items()) {
-    const std::string what = jsonMember(g, "what").is_string() ? jsonMember(g, "what").get<std::string>() : name;
-    const std::string unit = jsonMember(g, "unit").is_string() ? jsonMember(g, "unit").get<std::string>() : "";
-    const json &ps = jsonMember(g, "per_start"), &st = jsonMember(g, "steady");
-    if (applies(ps)) {
-      row(h, what + ": damage per start", jsonNumberText(jsonMember(g, "damage_per_start"), "%.3g"), "-", dominant(ps, unit));
-      row(h, what + ": starts to failure", jsonNumberText(jsonMember(g, "starts_to_failure"), "%.3g"), "-",
-          jsonMember(g, "starts_to_failure").is_number() ? "" : "no cycle damages");
-    } else {
-      row(h, what + ": damage per start", "n/a", "-", text(jsonMember(ps, "reason")));
-    }
-    if (applies(st)) {
-      row(h, what + ": damage per hour of steady running", jsonNumberText(jsonMember(g, "damage_per_hour"), "%.3g"), "1/h",
-          dominant(st, unit));
-      row(h, what + ": hours to failure", jsonNumberText(jsonMember(g, "hours_to_failure"), "%.3g"), "h",
-          jsonMember(g, "hours_to_failure").is_number() ? "" : "no cycle damages");
-    } else {
-      row(h, what + ": damage per hour", "n/a", "1/h", text(jsonMember(st, "reason")));
-    }
-  }
+  for (const auto& [name, g] : jsonMember(f, "signals").items()) fatigueSignalRows(h, name, g);
   h << "</table>\n";
 }
 
