@@ -142,6 +142,30 @@ void addFitOptions(CLI::App& cmd, IdentifyArgs& a) {
       ->check(CLI::Range(1e-14, 1e-2));
 }
 
+// The measurements and what to fit to them: the data, its signals, the free keys, their bounds and
+// the measurement noise.
+void addMeasurementOptions(CLI::App& cmd, IdentifyArgs& args) {
+  cmd.add_option("--data", args.data,
+                  "measured CSV: a column t[s] and any output columns of simulate with their units, e.g. "
+                  "omega_crank[rad/s], stator_current[A]")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd.add_option("--signals", args.signals,
+                  "the measured columns to fit, COL[,COL...] (default: every column of --data but t)")
+      ->allow_extra_args(false);
+  cmd.add_option("--free", args.free, "scene keys to identify, KEY[,KEY...] (repeatable)")
+      ->required()
+      ->allow_extra_args(false);
+  cmd.add_option("--bounds", args.bounds,
+                  "search bounds KEY=LOWER:UPPER in the key's unit (repeatable); default: the key's range in the "
+                  "scene schema where it is finite")
+      ->allow_extra_args(false);
+  cmd.add_option("--noise", args.noise,
+                  "measurement noise COLUMN=SIGMA in the column's unit (repeatable); default: estimated from the "
+                  "residuals of a first fit")
+      ->allow_extra_args(false);
+}
+
 }  // namespace
 
 Subcommand addIdentifyCommand(CLI::App& app) {
@@ -151,25 +175,7 @@ Subcommand addIdentifyCommand(CLI::App& app) {
       "scene values (coupling stiffness and damping, friction, motor data) that reproduce measured signals, with "
       "their uncertainties; identify.json, figures");
   addSceneFile(*cmd, args->scene, "scene file (YAML)");
-  cmd->add_option("--data", args->data,
-                  "measured CSV: a column t[s] and any output columns of simulate with their units, e.g. "
-                  "omega_crank[rad/s], stator_current[A]")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--signals", args->signals,
-                  "the measured columns to fit, COL[,COL...] (default: every column of --data but t)")
-      ->allow_extra_args(false);
-  cmd->add_option("--free", args->free, "scene keys to identify, KEY[,KEY...] (repeatable)")
-      ->required()
-      ->allow_extra_args(false);
-  cmd->add_option("--bounds", args->bounds,
-                  "search bounds KEY=LOWER:UPPER in the key's unit (repeatable); default: the key's range in the "
-                  "scene schema where it is finite")
-      ->allow_extra_args(false);
-  cmd->add_option("--noise", args->noise,
-                  "measurement noise COLUMN=SIGMA in the column's unit (repeatable); default: estimated from the "
-                  "residuals of a first fit")
-      ->allow_extra_args(false);
+  addMeasurementOptions(*cmd, *args);
   addSceneOverrides(*cmd, args->scene, "override a scene value for every run, key.path=value (repeatable)");
   addFitOptions(*cmd, *args);
   cmd->add_option("--out", args->out_dir, "output folder (default out/<scene name>/identify)");

@@ -75,10 +75,27 @@ void printReport(const nlohmann::json& summary, const FigureSet& figures, const 
   std::cout << summaryText(summary) << figureSetText(all, fig_dir) << "report: " << page << '\n';
 }
 
+// The run's and the modes' figures (drawn side by side), the page that shows them, and the
+// console's account of both.
+void writeReportPage(const Scene& scene, const RunResult& run, const nlohmann::json& summary, const RunModal& modal,
+                     const std::string& out_dir, ReportContent& content, PhaseClock* clock, bool quiet) {
+  namespace fs = std::filesystem;
+  const std::string fig_dir = (fs::path(out_dir) / "figures").string();
+  std::future<FigureSet> modes_figures = drawModalFigures(modal, fig_dir);
+  const FigureSet figures = drawRunFigures(outputFolderOf(out_dir, run, summary), &scene, fig_dir);
+  const FigureSet mf = modes_figures.get();
+  markPhase(clock, "figures (gnuplot)");
+  describeRun(scene, run, summary, modal, figures, mf, content);
+  const std::string page = (fs::path(out_dir) / "report.html").string();
+  writeFileAtomic(page, renderReportHtml(content));
+  markPhase(clock, "animation, time plots and page");
+
+  if (!quiet) printReport(summary, figures, mf, fig_dir, page);
+}
+
 }  // namespace
 
 int runReport(const SceneArgs& args, const std::string& out_dir_arg, PhaseClock* clock, bool quiet) {
-  namespace fs = std::filesystem;
   const Scene scene = parseSceneFile(args.scene_path, args.overrides);
   const std::string out_dir = out_dir_arg.empty() ? defaultOutDir(scene.name) : out_dir_arg;
   prepareOutputDir(out_dir, StaleOutputs::RunFiguresAndReport);  // before the run: a bad --out fails now
@@ -93,17 +110,7 @@ int runReport(const SceneArgs& args, const std::string& out_dir_arg, PhaseClock*
   const nlohmann::json summary = writeRunOutputs(scene, run, args.scene_path, out_dir, args.overrides, &modal);
   markPhase(clock, "summary and files");
 
-  const std::string fig_dir = (fs::path(out_dir) / "figures").string();
-  std::future<FigureSet> modes_figures = drawModalFigures(modal, fig_dir);
-  const FigureSet figures = drawRunFigures(outputFolderOf(out_dir, run, summary), &scene, fig_dir);
-  const FigureSet mf = modes_figures.get();
-  markPhase(clock, "figures (gnuplot)");
-  describeRun(scene, run, summary, modal, figures, mf, content);
-  const std::string page = (fs::path(out_dir) / "report.html").string();
-  writeFileAtomic(page, renderReportHtml(content));
-  markPhase(clock, "animation, time plots and page");
-
-  if (!quiet) printReport(summary, figures, mf, fig_dir, page);
+  writeReportPage(scene, run, summary, modal, out_dir, content, clock, quiet);
   if (!run.stats.complete) std::cerr << "rollerdyn: " << run.stats.status << '\n';
   return runExitCode(run, summary);
 }
