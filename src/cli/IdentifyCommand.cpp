@@ -146,23 +146,23 @@ void addFitOptions(CLI::App& cmd, IdentifyArgs& a) {
 // the measurement noise.
 void addMeasurementOptions(CLI::App& cmd, IdentifyArgs& args) {
   cmd.add_option("--data", args.data,
-                  "measured CSV: a column t[s] and any output columns of simulate with their units, e.g. "
-                  "omega_crank[rad/s], stator_current[A]")
+                 "measured CSV: a column t[s] and any output columns of simulate with their units, e.g. "
+                 "omega_crank[rad/s], stator_current[A]")
       ->required()
       ->check(CLI::ExistingFile);
   cmd.add_option("--signals", args.signals,
-                  "the measured columns to fit, COL[,COL...] (default: every column of --data but t)")
+                 "the measured columns to fit, COL[,COL...] (default: every column of --data but t)")
       ->allow_extra_args(false);
   cmd.add_option("--free", args.free, "scene keys to identify, KEY[,KEY...] (repeatable)")
       ->required()
       ->allow_extra_args(false);
   cmd.add_option("--bounds", args.bounds,
-                  "search bounds KEY=LOWER:UPPER in the key's unit (repeatable); default: the key's range in the "
-                  "scene schema where it is finite")
+                 "search bounds KEY=LOWER:UPPER in the key's unit (repeatable); default: the key's range in the "
+                 "scene schema where it is finite")
       ->allow_extra_args(false);
   cmd.add_option("--noise", args.noise,
-                  "measurement noise COLUMN=SIGMA in the column's unit (repeatable); default: estimated from the "
-                  "residuals of a first fit")
+                 "measurement noise COLUMN=SIGMA in the column's unit (repeatable); default: estimated from the "
+                 "residuals of a first fit")
       ->allow_extra_args(false);
 }
 
