@@ -42,6 +42,33 @@ std::string readAllFromFd(int fd) {
   return out;
 }
 
+// The child's side: the work under the CPU limit, its text sent down the pipe, then _exit (no exit
+// handlers run in the child).
+[[noreturn]] void workInChild(const int fds[2], long cpu_soft, long cpu_hard,
+                              const std::function<std::string()>& work) {
+  ::close(fds[0]);
+  const struct rlimit lim = {rlim_t(cpu_soft), rlim_t(cpu_hard)};
+  ::setrlimit(RLIMIT_CPU, &lim);
+  writeAllToFd(fds[1], work());
+  ::close(fds[1]);
+  ::_exit(0);
+}
+
+// The parent's side: the child's text read to end of file, then its wait status and its user +
+// system CPU time [s] once it has ended.
+ChildOutcome collectChild(pid_t pid, const int fds[2]) {
+  ::close(fds[1]);
+  ChildOutcome out;
+  out.text = readAllFromFd(fds[0]);
+  ::close(fds[0]);
+  struct rusage usage {};
+  while (::wait4(pid, &out.wait_status, 0, &usage) < 0 && errno == EINTR) {
+  }
+  out.cpu_seconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                    1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  return out;
+}
+
 }  // namespace
 
 bool ChildOutcome::exitedCleanly() const { return WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0; }
@@ -67,24 +94,8 @@ std::optional<ChildOutcome> runInChild(long cpu_soft, long cpu_hard, const std::
     ::close(fds[1]);
     return std::nullopt;
   }
-  if (pid == 0) {
-    ::close(fds[0]);
-    const struct rlimit lim = {rlim_t(cpu_soft), rlim_t(cpu_hard)};
-    ::setrlimit(RLIMIT_CPU, &lim);
-    writeAllToFd(fds[1], work());
-    ::close(fds[1]);
-    ::_exit(0);
-  }
-  ::close(fds[1]);
-  ChildOutcome out;
-  out.text = readAllFromFd(fds[0]);
-  ::close(fds[0]);
-  struct rusage usage {};
-  while (::wait4(pid, &out.wait_status, 0, &usage) < 0 && errno == EINTR) {
-  }
-  out.cpu_seconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-                    1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-  return out;
+  if (pid == 0) workInChild(fds, cpu_soft, cpu_hard, work);
+  return collectChild(pid, fds);
 }
 
 }  // namespace rollerdyn

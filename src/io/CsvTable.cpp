@@ -34,11 +34,18 @@ std::string where(const std::string& file_label, int line_no) {
   return file_label + ":" + std::to_string(line_no) + ": ";
 }
 
-void readHeader(const std::vector<std::string>& fields, const std::string& file_label, int line_no, Table& table) {
+// The header's column names (units stripped) into table, and the header itself and its line into
+// layout when one is asked for.
+void readHeader(const std::vector<std::string>& fields, const std::string& file_label, int line_no, Table& table,
+                CsvLayout* layout) {
   for (const std::string& f : fields)
     if (f.empty())
       throw std::runtime_error(where(file_label, line_no) + "expected a header of column names, got an empty name");
   for (const std::string& f : fields) table.columns.push_back(stripUnit(f));  // io/Table.h
+  if (layout) {
+    layout->header = fields;
+    layout->header_line = line_no;
+  }
 }
 
 std::vector<double> readRow(const std::vector<std::string>& fields, const std::string& file_label, int line_no,
@@ -74,11 +81,7 @@ Table parseTable(const std::string& text, const std::string& file_label, CsvLayo
     if (line.empty()) continue;
     const std::vector<std::string> fields = splitFields(line, cells);
     if (header) {
-      readHeader(fields, file_label, line_no, table);
-      if (layout) {
-        layout->header = fields;
-        layout->header_line = line_no;
-      }
+      readHeader(fields, file_label, line_no, table, layout);
       header = false;
       continue;
     }

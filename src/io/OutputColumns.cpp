@@ -188,7 +188,28 @@ const OutputColumn& entryOf(Column c) {
   throw std::logic_error("output column without a table entry");
 }
 
+// The end of the group that starts at entry i: the consecutive entries of one index in one file,
+// written interleaved by number (an entry without an index is a group of its own).
+std::size_t groupEnd(const std::vector<OutputColumn>& all, std::size_t i) {
+  std::size_t end = i + 1;
+  if (all[i].index != ColumnIndex::None)
+    while (end < all.size() && all[end].file == all[i].file && all[end].index == all[i].index) ++end;
+  return end;
+}
+
 }  // namespace
+
+void ColumnLayout::addGroup(const std::vector<const OutputColumn*>& members, int numbers) {
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    const int id = static_cast<int>(members[m]->id);
+    first_[id] = static_cast<int>(names_.size() + m);
+    stride_[id] = static_cast<int>(members.size());
+    numbers_[id] = numbers;
+  }
+  for (int n = 1; n <= numbers; ++n)
+    for (const OutputColumn* c : members)
+      names_.push_back(c->index == ColumnIndex::None ? c->name : c->name + "_" + std::to_string(n));
+}
 
 ColumnLayout::ColumnLayout(OutputFile file, const WrittenColumns& written) {
   const std::vector<OutputColumn>& all = outputColumns();
@@ -197,23 +218,11 @@ ColumnLayout::ColumnLayout(OutputFile file, const WrittenColumns& written) {
       ++i;
       continue;
     }
-    // One group: the consecutive entries of one index, written interleaved by number.
-    std::size_t end = i + 1;
-    if (all[i].index != ColumnIndex::None)
-      while (end < all.size() && all[end].file == file && all[end].index == all[i].index) ++end;
+    const std::size_t end = groupEnd(all, i);
     std::vector<const OutputColumn*> members;
     for (std::size_t k = i; k < end; ++k)
       if (writes(all[k], written)) members.push_back(&all[k]);
-    const int numbers = familySize(all[i].index, written);
-    for (std::size_t m = 0; m < members.size(); ++m) {
-      const int id = static_cast<int>(members[m]->id);
-      first_[id] = static_cast<int>(names_.size() + m);
-      stride_[id] = static_cast<int>(members.size());
-      numbers_[id] = numbers;
-    }
-    for (int n = 1; n <= numbers; ++n)
-      for (const OutputColumn* c : members)
-        names_.push_back(c->index == ColumnIndex::None ? c->name : c->name + "_" + std::to_string(n));
+    addGroup(members, familySize(all[i].index, written));
     i = end;
   }
 }

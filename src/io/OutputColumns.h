@@ -105,6 +105,8 @@ class ColumnLayout {
 
  private:
   std::size_t position(Column c, int number) const;
+  // Appends one group's columns, numbered 1..numbers, interleaved by number (x_1, v_1, x_2, v_2…).
+  void addGroup(const std::vector<const OutputColumn*>& members, int numbers);
   std::vector<std::string> names_;
   std::vector<int> first_ = std::vector<int>(static_cast<int>(Column::count), -1);  // of number 1
   std::vector<int> stride_ = std::vector<int>(static_cast<int>(Column::count), 0);   // from j to j+1

@@ -110,6 +110,16 @@ bool takeLowerCost(const LmSettings& s, const std::vector<double>& trial, const 
   return false;
 }
 
+// Whether the damped step (in fractions of the keys' bounds) is below the step tolerance: then the
+// estimate has converged, and out says so.
+bool stepConverged(double step, const LmSettings& s, int it, LmOutcome& out) {
+  if (step > s.step_tolerance) return false;
+  out.converged = true;
+  out.reason = "converged: the step moved no key by more than " + text(s.step_tolerance) +
+               " of its bounds (iteration " + std::to_string(it) + ")";
+  return true;
+}
+
 // Up to eight steps of the damped normal equations (A + λ·diag D)·δ = −g, λ raised after each that
 // does not lower the cost and lowered after the one that does, which is taken into out.
 DampedStep dampedStep(const ResidualBatch& evaluate, const LmSettings& s, const Eigen::MatrixXd& A,
@@ -123,12 +133,7 @@ DampedStep dampedStep(const ResidualBatch& evaluate, const LmSettings& s, const 
     }
     double step = 0;
     const std::vector<double> trial = dampedTrial(A, g, D, lambda, out.u, &step);
-    if (!(step > s.step_tolerance)) {
-      out.converged = true;
-      out.reason = "converged: the step moved no key by more than " + text(s.step_tolerance) +
-                   " of its bounds (iteration " + std::to_string(it) + ")";
-      return DampedStep::Finished;
-    }
+    if (stepConverged(step, s, it, out)) return DampedStep::Finished;
     const ResidualEvaluation e = evaluate({trial})[0];
     const double cost = e.ok ? sumOfSquares(e.r) : kInf;
     if (e.ok && cost < out.cost) {
@@ -397,6 +402,17 @@ void putStdAndCorrelation(const NormalisedInformation& info, CovarianceEstimate&
   }
 }
 
+// The condition number √(λmax/λmin) of the normalised information (infinite when λmin ≤ 0), its
+// largest eigenvalue into info; singular when the smallest vanishes against the largest.
+void putCondition(NormalisedInformation& info, CovarianceEstimate& c) {
+  const Eigen::VectorXd& ev = info.es.eigenvalues();  // ascending
+  info.lmax = ev(ev.size() - 1);
+  const double lmin = std::max(ev(0), 0.0);
+  c.condition = lmin > 0 ? std::sqrt(info.lmax / lmin) : kInf;
+  // Keys in the null direction are undetermined; the others keep the pseudo-inverse's values.
+  if (!(lmin > 1e-12 * info.lmax)) c.singular = true;
+}
+
 }  // namespace
 
 CovarianceEstimate estimateCovariance(const std::vector<std::vector<double>>& Jrows, double rss,
@@ -419,12 +435,7 @@ CovarianceEstimate estimateCovariance(const std::vector<std::vector<double>>& Jr
     return c;
   }
   NormalisedInformation info{live, d, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(normalisedInformation(A, d, live))};
-  const Eigen::VectorXd& ev = info.es.eigenvalues();  // ascending
-  info.lmax = ev(ev.size() - 1);
-  const double lmin = std::max(ev(0), 0.0);
-  c.condition = lmin > 0 ? std::sqrt(info.lmax / lmin) : kInf;
-  // Keys in the null direction are undetermined; the others keep the pseudo-inverse's values.
-  if (!(lmin > 1e-12 * info.lmax)) c.singular = true;
+  putCondition(info, c);
   putStdAndCorrelation(info, c);
   return c;
 }

@@ -202,6 +202,22 @@ std::vector<std::vector<double>> ModelRuns::signalsOf(const RunResult& result, s
   return model;
 }
 
+ModelRuns::Trial ModelRuns::runScene(const std::vector<std::string>& overrides, std::size_t n) {
+  Trial trial;
+  const Scene scene = parseSceneInput(input_, overrides);
+  RunControl control;
+  control.interrupt = o_.interrupt;
+  const RunResult result = runModel(scene, o_.model, control);
+  if (!result.stats.complete) {
+    failed_.fetch_add(1);
+    trial.reason = result.stats.status;
+    return trial;
+  }
+  trial.model = signalsOf(result, n);
+  trial.ok = true;
+  return trial;
+}
+
 ModelRuns::Trial ModelRuns::run(const std::vector<double>& u, std::size_t n, double accuracy) {
   Trial trial;
   if (o_.interrupt && o_.interrupt->load()) {
@@ -211,17 +227,7 @@ ModelRuns::Trial ModelRuns::run(const std::vector<double>& u, std::size_t n, dou
   runs_.fetch_add(1);
   const std::vector<std::string> overrides = overridesAt(u, n, accuracy);
   try {
-    const Scene scene = parseSceneInput(input_, overrides);
-    RunControl control;
-    control.interrupt = o_.interrupt;
-    const RunResult result = runModel(scene, o_.model, control);
-    if (!result.stats.complete) {
-      failed_.fetch_add(1);
-      trial.reason = result.stats.status;
-      return trial;
-    }
-    trial.model = signalsOf(result, n);
-    trial.ok = true;
+    return runScene(overrides, n);
   } catch (const MissingColumn&) {
     throw;
   } catch (const std::exception& e) {
@@ -238,6 +244,12 @@ std::vector<ModelRuns::Trial> ModelRuns::runAll(const std::vector<std::vector<do
     for (std::size_t i = 0; i < points.size(); ++i) out[i] = run(points[i], n);
     return out;
   }
+  runOnThreads(points, n, workers, out);
+  return out;
+}
+
+void ModelRuns::runOnThreads(const std::vector<std::vector<double>>& points, std::size_t n, std::size_t workers,
+                             std::vector<Trial>& out) {
   std::atomic<std::size_t> next{0};
   std::mutex mu;
   std::exception_ptr error;  // a measured column the model does not write: raised once all have stopped
@@ -255,7 +267,6 @@ std::vector<ModelRuns::Trial> ModelRuns::runAll(const std::vector<std::vector<do
     });
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);
-  return out;
 }
 
 // Weighted residuals (model − data)/σ_s over the first n samples, signal after signal.

@@ -68,6 +68,13 @@ class ModelRuns {
   // The scene's overrides of a run at u: the base ones, the span to the n-th measured time, the
   // accuracy and output step, and the free keys' values.
   std::vector<std::string> overridesAt(const std::vector<double>& u, std::size_t n, double accuracy) const;
+  // One run of the scene under these overrides: its signals on the first n measured times when it
+  // reached the end, else (counted as failed) its status as the reason.
+  Trial runScene(const std::vector<std::string>& overrides, std::size_t n);
+  // The points' runs into out on `workers` threads, each taking the next point not yet taken; the
+  // first MissingColumn is raised once all have stopped.
+  void runOnThreads(const std::vector<std::vector<double>>& points, std::size_t n, std::size_t workers,
+                    std::vector<Trial>& out);
   // Each measured signal of a finished run on the first n measured times (throws MissingColumn).
   std::vector<std::vector<double>> signalsOf(const RunResult& result, std::size_t n) const;
 

@@ -227,6 +227,23 @@ void designsFigure(const OptimizeOptions& o, const OptimizeResult& r, bool self,
   renderPlot(d, out_dir + "/designs");
 }
 
+// The designs figure (its png path into plots) when it can say something: at most two parameters
+// and an optimum found; plot_note says why not when the only parameter is the minimised quantity
+// and no constraint's metric can stand against it.
+void designsFigureIfTelling(const OptimizeOptions& o, const OptimizeResult& r, const std::string& out_dir,
+                            std::vector<std::string>& plots, std::string& plot_note) {
+  // One parameter that is itself the minimised quantity: plot the first constraint's metric
+  // against it instead (the objective against itself is a diagonal line and says nothing).
+  const bool self = o.params.size() == 1 && o.params[0].key == o.minimize;
+  if (self && o.constraints.empty())
+    plot_note = "no designs figure: the minimised quantity is the only parameter and there is no constraint "
+                "to plot against it";
+  if (o.params.size() <= 2 && r.found && !(self && o.constraints.empty())) {
+    designsFigure(o, r, self, out_dir);
+    plots.push_back(out_dir + "/designs.png");
+  }
+}
+
 // The figures that apply (png paths), and in plot_note why one is missing or plotting failed.
 std::vector<std::string> optimizeFigures(const OptimizeOptions& o, const OptimizeResult& r,
                                          const std::vector<double>& best_curve, const std::string& out_dir,
@@ -239,16 +256,7 @@ std::vector<std::string> optimizeFigures(const OptimizeOptions& o, const Optimiz
   try {
     convergenceFigure(o, r, best_curve, out_dir);
     plots.push_back(out_dir + "/convergence.png");
-    // One parameter that is itself the minimised quantity: plot the first constraint's metric
-    // against it instead (the objective against itself is a diagonal line and says nothing).
-    const bool self = o.params.size() == 1 && o.params[0].key == o.minimize;
-    if (self && o.constraints.empty())
-      plot_note = "no designs figure: the minimised quantity is the only parameter and there is no constraint "
-                  "to plot against it";
-    if (o.params.size() <= 2 && r.found && !(self && o.constraints.empty())) {
-      designsFigure(o, r, self, out_dir);
-      plots.push_back(out_dir + "/designs.png");
-    }
+    designsFigureIfTelling(o, r, out_dir, plots, plot_note);
   } catch (const std::exception& e) {
     plot_note = std::string("plotting failed: ") + e.what();
   }

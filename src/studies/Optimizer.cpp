@@ -224,6 +224,20 @@ double constraintCallback(const std::vector<double>& u, std::vector<double>&, vo
   return c.search->constraintSeen(c.search->evaluate(u), c.j);
 }
 
+// Runs opt from u: the words of why it stopped, an interrupt or NLopt's failure among them.
+std::string stoppingReason(nlopt::opt& opt, std::vector<double>& u) {
+  double seen = 0;
+  try {
+    return resultText(opt.optimize(u, seen));
+  } catch (const nlopt::forced_stop&) {
+    return "interrupted";
+  } catch (const nlopt::roundoff_limited&) {
+    return "stopped by round-off (no further progress possible)";
+  } catch (const std::exception& e) {
+    return std::string("NLopt failed: ") + e.what();
+  }
+}
+
 // One NLopt run of `method` from u (unit box) with at most max_evals evaluations; the words of
 // its stopping reason.
 std::string runMethod(Search& search, const std::string& method, std::vector<double> u, int max_evals,
@@ -241,16 +255,7 @@ std::string runMethod(Search& search, const std::string& method, std::vector<dou
   opt.set_xtol_abs(o.x_tolerance);
   opt.set_maxeval(max_evals);
   opt.set_initial_step(initial_step);
-  double seen = 0;
-  try {
-    return resultText(opt.optimize(u, seen));
-  } catch (const nlopt::forced_stop&) {
-    return "interrupted";
-  } catch (const nlopt::roundoff_limited&) {
-    return "stopped by round-off (no further progress possible)";
-  } catch (const std::exception& e) {
-    return std::string("NLopt failed: ") + e.what();
-  }
+  return stoppingReason(opt, u);
 }
 
 // Index of the feasible evaluation with the lowest objective; false when none is feasible.
@@ -356,6 +361,19 @@ void runGridStage(const OptimizeOptions& o, const std::string& first, Search& se
   }
 }
 
+// auto's third stage: the local method again from the grid's best design, with the evaluations
+// left; false when none are left or the search was interrupted.
+bool runPolishStage(const OptimizeOptions& o, const std::string& local, Search& search, OptimizeResult& r) {
+  const int left = o.max_evals - int(search.requests());
+  const bool interrupted = o.interrupt && o.interrupt->load();
+  if (left <= 0 || interrupted) return false;
+  search.method = local;
+  r.stop_reason += "; " + local + " from the grid's best: " +
+                   runMethod(search, local, inUnitBox(o, r.history[r.best].x), left, 0.02);
+  r.found = bestFeasible(r, &r.best);
+  return true;
+}
+
 void runAutomatic(const OptimizeOptions& o, const std::string& local, Search& search, OptimizeResult& r) {
   search.method = local;
   const int first_share = std::max(1, o.max_evals / 3);
@@ -370,15 +388,7 @@ void runAutomatic(const OptimizeOptions& o, const std::string& local, Search& se
   runGridStage(o, first, search, r);
   r.found = bestFeasible(r, &r.best);
   const bool elsewhere = inAnotherBasin(o, r, local_found, x_local);
-  const int left = o.max_evals - int(search.requests());
-  const bool interrupted = o.interrupt && o.interrupt->load();
-  const bool polish = elsewhere && left > 0 && !interrupted;
-  if (polish) {
-    search.method = local;
-    r.stop_reason += "; " + local + " from the grid's best: " +
-                     runMethod(search, local, inUnitBox(o, r.history[r.best].x), left, 0.02);
-    r.found = bestFeasible(r, &r.best);
-  }
+  const bool polish = elsewhere && runPolishStage(o, local, search, r);
   r.method = local + ", grid" + (polish ? ", " + local : std::string());
   r.scope = automaticScope(local, polish, elsewhere);
 }

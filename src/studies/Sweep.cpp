@@ -116,6 +116,19 @@ void readRunInto(const Scene& scene, const RunResult& run, const std::vector<std
   p.status = summary.value("status", run.stats.status);
 }
 
+// Runs the point's scene into p; an exception of the run becomes its status ("error: …").
+void runScene(const SweepOptions& o, const Scene& scene, const std::vector<std::string>& overrides, SweepPoint& p) {
+  try {
+    RunControl control;
+    control.interrupt = o.interrupt;
+    const RunResult run = runModel(scene, o.model, control);
+    p.ran = true;
+    readRunInto(scene, run, overrides, p);
+  } catch (const std::exception& e) {
+    p.status = std::string("error: ") + e.what();
+  }
+}
+
 SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts,
                     const std::vector<double>& values) {
   SweepPoint p = pointNotRun(texts, values);
@@ -130,15 +143,7 @@ SweepPoint runPoint(const SweepOptions& o, const std::vector<std::string>& texts
     p.cpu_seconds = threadCpuSeconds() - cpu0;
     return p;
   }
-  try {
-    RunControl control;
-    control.interrupt = o.interrupt;
-    const RunResult run = runModel(scene, o.model, control);
-    p.ran = true;
-    readRunInto(scene, run, overrides, p);
-  } catch (const std::exception& e) {
-    p.status = std::string("error: ") + e.what();
-  }
+  runScene(o, scene, overrides, p);
   p.cpu_seconds = threadCpuSeconds() - cpu0;
   return p;
 }
@@ -166,10 +171,13 @@ bool SweepParameter::numeric() const {
 
 namespace {
 
-// --values a:b:step: from a to b (inclusive, within 1e-9 of a step) in steps, at most 100000 points.
-SweepParameter rangeValues(const std::string& key, const std::string& spec) {
-  SweepParameter p;
-  p.key = key;
+// The numbers of --values a:b:step, in the key's unit.
+struct ValueRange {
+  double a, b, step;
+};
+
+// Reads --values a:b:step for key: three numbers, the step not zero and leading from a to b.
+ValueRange parseRange(const std::string& key, const std::string& spec) {
   std::vector<std::string> parts;
   std::stringstream ss(spec);
   for (std::string item; std::getline(ss, item, ':');) parts.push_back(trim(item));
@@ -183,6 +191,14 @@ SweepParameter rangeValues(const std::string& key, const std::string& spec) {
   if (step == 0.0 || (b - a) * step < 0.0)
     throw std::invalid_argument("--values for " + key + ": step must be non-zero and lead from " +
                                 parts[0] + " to " + parts[1] + ", got '" + spec + "'");
+  return {a, b, step};
+}
+
+// --values a:b:step: from a to b (inclusive, within 1e-9 of a step) in steps, at most 100000 points.
+SweepParameter rangeValues(const std::string& key, const std::string& spec) {
+  SweepParameter p;
+  p.key = key;
+  const auto [a, b, step] = parseRange(key, spec);
   const double n = std::floor((b - a) / step + 1e-9);
   if (n > 100000) throw std::invalid_argument("--values for " + key + ": more than 100000 points");
   for (long i = 0; i <= static_cast<long>(n); ++i) {

@@ -57,19 +57,21 @@ struct SplitMix64 {
   std::size_t below(std::size_t n) { return std::size_t(uniform() * double(n)); }
 };
 
-}  // namespace
-
-SweepDesigns sweepDesigns(const SweepOptions& o) {
+// The designs of --designs as written, each value also as a number (NaN for text).
+SweepDesigns listedDesigns(const SweepOptions& o) {
   SweepDesigns d;
-  if (!o.designs.empty()) {
-    d.texts = o.designs;
-    for (const auto& design : d.texts) {
-      std::vector<double> v;
-      for (const std::string& t : design) v.push_back(numberOf(t));
-      d.values.push_back(v);
-    }
-    return d;
+  d.texts = o.designs;
+  for (const auto& design : d.texts) {
+    std::vector<double> v;
+    for (const std::string& t : design) v.push_back(numberOf(t));
+    d.values.push_back(v);
   }
+  return d;
+}
+
+// Every combination of the parameters' values (the full grid), the last parameter varying fastest.
+SweepDesigns gridDesigns(const SweepOptions& o) {
+  SweepDesigns d;
   std::size_t total = 1;
   for (const SweepParameter& p : o.params) total *= p.values.size();
   d.texts.assign(total, std::vector<std::string>(o.params.size()));
@@ -85,6 +87,10 @@ SweepDesigns sweepDesigns(const SweepOptions& o) {
   }
   return d;
 }
+
+}  // namespace
+
+SweepDesigns sweepDesigns(const SweepOptions& o) { return o.designs.empty() ? gridDesigns(o) : listedDesigns(o); }
 
 namespace {
 

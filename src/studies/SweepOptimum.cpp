@@ -131,6 +131,14 @@ void judgeVertexRun(SweepOptimum& opt, const std::vector<SweepPoint>& points, co
 
 namespace {
 
+// Where to refine the grid when the parabola's estimate does not hold: near the better of the vertex
+// and the best grid design, with the --values range that does it.
+std::string refineAdvice(const SweepOptimum& opt, const SweepPoint& best) {
+  const SweepVertex& v = opt.vertex;
+  return "refine the grid near " + (opt.at_vertex ? v.text : best.texts[0]) + " (--values " +
+         formatNumber(v.refine_lower) + ":" + formatNumber(v.refine_upper) + ":" + formatNumber(v.refine_step) + ")";
+}
+
 // The second line: the parabola's estimate and what the run at its vertex gave.
 std::string vertexVerdict(const SweepOptions& o, const SweepOptimum& opt, const SweepPoint& best) {
   const SweepVertex& v = opt.vertex;
@@ -145,9 +153,7 @@ std::string vertexVerdict(const SweepOptions& o, const SweepOptimum& opt, const 
   } else if (v.holds) {
     os << estimate << "; a run there gives " << number(v.value) << " (the estimate holds)";
   } else {
-    const std::string refine = "refine the grid near " + (opt.at_vertex ? v.text : best.texts[0]) + " (--values " +
-                               formatNumber(v.refine_lower) + ":" + formatNumber(v.refine_upper) + ":" +
-                               formatNumber(v.refine_step) + ")";
+    const std::string refine = refineAdvice(opt, best);
     if (v.lower)
       os << estimate << "; a run there gives " << number(v.value)
          << ", lower still: the metric is no parabola between the grid points; " << refine;

@@ -53,6 +53,35 @@ SimTK::Body::Rigid rotor(double J) {
   return SimTK::Body::Rigid(SimTK::MassProperties(1e-3, SimTK::Vec3(0), SimTK::Inertia(0.5 * J, 0.5 * J, J)));
 }
 
+// The two rotors as a Simbody system: rotor 2 turns on ground, rotor 1 on rotor 2 (its coordinate
+// is the twist ψ), joined by the project's coupling element and driven by ChainTorques.
+struct ChainSystem {
+  ChainSystem(const TwoRotorChainParams& p, double Mc)
+      : r2(matter.Ground(), SimTK::Transform(), rotor(p.J2), SimTK::Transform()),
+        r1(r2, SimTK::Transform(), rotor(p.J1), SimTK::Transform()),  // q = twist
+        // Torque k·(φ1 - φ2) + b·(φ̇1 - φ̇2), + on rotor 2, - on rotor 1.
+        coupling(new ElasticCoupling(r1, p.k, p.b)) {
+    SimTK::Force::Custom(forces, coupling);
+    SimTK::Force::Custom(forces, new ChainTorques(r1, r2, p, Mc));
+    system.realizeTopology();
+  }
+  // The table's row at state st: t [s]; ψ, ψ̇; φ1, φ2; ω1, ω2 [rad, rad/s]; the coupling's and the
+  // drive's torque [N·m].
+  std::vector<double> row(const SimTK::State& st, const TwoRotorChainParams& p) const {
+    system.realize(st, SimTK::Stage::Velocity);
+    return {st.getTime(), coupling->twist(st), coupling->twistRate(st),
+            r2.getOneQ(st, 0) + r1.getOneQ(st, 0), r2.getOneQ(st, 0),
+            r2.getOneU(st, 0) + r1.getOneU(st, 0), r2.getOneU(st, 0),
+            coupling->torque(st), chainDriveTorque(p, st.getTime())};
+  }
+
+  SimTK::MultibodySystem system;
+  SimTK::SimbodyMatterSubsystem matter{system};
+  SimTK::GeneralForceSubsystem forces{system};
+  SimTK::MobilizedBody::Pin r2, r1;
+  ElasticCoupling* coupling;  // owned by forces
+};
+
 }  // namespace
 
 TwoRotorChainDerived deriveChain(const TwoRotorChainParams& p) {
@@ -100,35 +129,20 @@ ChainHarmonics chainHarmonics(const TwoRotorChainParams& p) {
 
 Table simulateTwoRotorChain(const TwoRotorChainParams& p) {
   const TwoRotorChainDerived d = deriveChain(p);
-  SimTK::MultibodySystem system;
-  SimTK::SimbodyMatterSubsystem matter(system);
-  SimTK::GeneralForceSubsystem forces(system);
-  SimTK::MobilizedBody::Pin r2(matter.Ground(), SimTK::Transform(), rotor(p.J2), SimTK::Transform());
-  SimTK::MobilizedBody::Pin r1(r2, SimTK::Transform(), rotor(p.J1), SimTK::Transform());  // q = twist
-  // The project's coupling element: torque k·(φ1 - φ2) + b·(φ̇1 - φ̇2), + on rotor 2, - on rotor 1.
-  auto* chain = new ElasticCoupling(r1, p.k, p.b);
-  SimTK::Force::Custom(forces, chain);
-  SimTK::Force::Custom(forces, new ChainTorques(r1, r2, p, d.Mc));
-  system.realizeTopology();
-  SimTK::State s = system.getDefaultState();  // rest, ψ = 0 (eq. (33), (53))
-  SimTK::RungeKuttaMersonIntegrator integ(system);
+  const ChainSystem chain(p, d.Mc);
+  SimTK::State s = chain.system.getDefaultState();  // rest, ψ = 0 (eq. (33), (53))
+  SimTK::RungeKuttaMersonIntegrator integ(chain.system);
   integ.setAccuracy(p.accuracy);
   integ.initialize(s);
 
   Table t;
   t.columns = {"t", "psi", "psi_rate", "phi1", "phi2", "omega1", "omega2", "chain_torque", "drive_torque"};
-  auto record = [&](const SimTK::State& st) {
-    system.realize(st, SimTK::Stage::Velocity);
-    t.rows.push_back({st.getTime(), chain->twist(st), chain->twistRate(st),
-                      r2.getOneQ(st, 0) + r1.getOneQ(st, 0), r2.getOneQ(st, 0),
-                      r2.getOneU(st, 0) + r1.getOneU(st, 0), r2.getOneU(st, 0), chain->torque(st), chainDriveTorque(p, st.getTime())});
-  };
-  record(integ.getState());
+  t.rows.push_back(chain.row(integ.getState(), p));
   const long n = static_cast<long>(std::ceil(d.t_end / d.output_step - 1e-9));
   for (long k = 1; k <= n; ++k) {
     const double t_out = std::min(k * d.output_step, d.t_end);
     while (integ.getTime() < t_out - 1e-12) integ.stepTo(t_out, d.t_end);
-    record(integ.getState());
+    t.rows.push_back(chain.row(integ.getState(), p));
   }
   return t;
 }
