@@ -35,6 +35,9 @@ class CvodeSupplyEvents {
   CvodeSupplyEvents(const CvodeSupplyEvents&) = delete;
   CvodeSupplyEvents& operator=(const CvodeSupplyEvents&) = delete;
 
+  // Applies the events due at the start t0 to the initial state y0 (a speed trigger the initial
+  // speed already meets), before CVODE is built from it.
+  void applyAtStart(double t0, Eigen::VectorXd& y0) const { model_.apply(t0, y0, false); }
   // Sets the problem's event function, ω_r - ω_switch of the present phase (refers to this object).
   void install(OdeProblem& p);
   // Sets the integrator's stop time and event function for the supply's present phase.

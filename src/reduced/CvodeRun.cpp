@@ -128,9 +128,7 @@ class ReducedOde {
     p.t0 = times.front();
     p.stop_time = times.back();
     p.y0 = m_.initialState();
-    // The supply's events due at t = 0 (a speed trigger already met by the initial speed).
-    m_.supply().applyDueEvents(phase_, 0.0, m_.rotorSpeed(p.y0.data()), false, m_.motorLaw(),
-                               p.y0.data() + m_.iMotorStates());
+    events_.applyAtStart(0.0, p.y0);
     p.rhs = [this](double t, const double* y, double* ydot) { return derivatives(t, y, ydot); };
     const IntegrationScales scales =
         integrationScales(m_.scene(), std::numeric_limits<double>::quiet_NaN(), m_.motorBreakdownTorque());
