@@ -66,7 +66,7 @@ void ParkLaw::initialState(const SupplyState& supply, double omega_rotor, bool s
     for (int c = 0; c < n; ++c) A(a, c) = kJ * w * L_(a, c);
     A(a, a) += a == 0 ? machine_.R_s : machine_.R_r[a - 1];
   }
-  b(0) = std::sqrt(2.0) * machine_.phase_voltage * supply.voltage * std::polar(1.0, supply.phase);
+  b(0) = statorVoltage(supply);
   const Eigen::VectorXcd i = A.topLeftCorner(n, n).partialPivLu().solve(b.head(n));
   const Eigen::VectorXcd psi = L_.topLeftCorner(n, n).cast<C>() * i;
   for (int a = 0; a < n; ++a) {
@@ -77,47 +77,67 @@ void ParkLaw::initialState(const SupplyState& supply, double omega_rotor, bool s
 
 void ParkLaw::evaluate(const SupplyState& supply, double omega_rotor, const double* x, MotorEvaluation& out,
                        double* xdot) const {
-  const int n = windings_, nr = machine_.cages;
   C psi[3], i[3];
-  for (int a = 0; a < n; ++a) psi[a] = C(x[2 * a], x[2 * a + 1]);
+  for (int a = 0; a < windings_; ++a) psi[a] = C(x[2 * a], x[2 * a + 1]);
   const double wk = machine_.supplyAngularFrequency() * supply.frequency;
   const double wr = wk - machine_.pole_pairs * omega_rotor;
   C u_s = 0.0;
   if (supply.connected) {
-    for (int a = 0; a < n; ++a) {
-      i[a] = 0.0;
-      for (int c = 0; c < n; ++c) i[a] += Gamma_(a, c) * psi[c];
-    }
-    u_s = std::sqrt(2.0) * machine_.phase_voltage * supply.voltage * std::polar(1.0, supply.phase);
+    connectedCurrents(psi, i);
+    u_s = statorVoltage(supply);
   } else {
-    i[0] = 0.0;  // breaker open: the rotor currents follow from the rotor fluxes alone
-    for (int k = 0; k < nr; ++k) {
-      i[1 + k] = 0.0;
-      for (int c = 0; c < nr; ++c) i[1 + k] += Gamma_rr_(k, c) * psi[1 + c];
-    }
+    openStatorCurrents(psi, i);
   }
-  if (xdot) {
-    C dpsi[3];
-    for (int k = 0; k < nr; ++k) dpsi[1 + k] = -machine_.R_r[k] * i[1 + k] - kJ * wr * psi[1 + k];
-    if (supply.connected) {
-      dpsi[0] = u_s - machine_.R_s * i[0] - kJ * wk * psi[0];
-    } else {
-      // ψ_s = L_m·Σ i_rk stays on that relation: dψ_s/dt = L_m·Σ_k (Γ_rr·dψ_r/dt)_k.
-      dpsi[0] = 0.0;
-      for (int k = 0; k < nr; ++k)
-        for (int c = 0; c < nr; ++c) dpsi[0] += machine_.L_m * Gamma_rr_(k, c) * dpsi[1 + c];
-    }
-    for (int a = 0; a < n; ++a) {
-      xdot[2 * a] = dpsi[a].real();
-      xdot[2 * a + 1] = dpsi[a].imag();
-    }
+  if (xdot) fluxDerivatives(supply.connected, u_s, wk, wr, psi, i, xdot);
+  powersAndTorque(u_s, psi, i, out);
+}
+
+C ParkLaw::statorVoltage(const SupplyState& supply) const {
+  return std::sqrt(2.0) * machine_.phase_voltage * supply.voltage * std::polar(1.0, supply.phase);
+}
+
+void ParkLaw::connectedCurrents(const C* psi, C* i) const {
+  for (int a = 0; a < windings_; ++a) {
+    i[a] = 0.0;
+    for (int c = 0; c < windings_; ++c) i[a] += Gamma_(a, c) * psi[c];
   }
+}
+
+void ParkLaw::openStatorCurrents(const C* psi, C* i) const {
+  const int nr = machine_.cages;
+  i[0] = 0.0;
+  for (int k = 0; k < nr; ++k) {
+    i[1 + k] = 0.0;
+    for (int c = 0; c < nr; ++c) i[1 + k] += Gamma_rr_(k, c) * psi[1 + c];
+  }
+}
+
+void ParkLaw::fluxDerivatives(bool connected, C u_s, double wk, double wr, const C* psi, const C* i,
+                              double* xdot) const {
+  const int nr = machine_.cages;
+  C dpsi[3];
+  for (int k = 0; k < nr; ++k) dpsi[1 + k] = -machine_.R_r[k] * i[1 + k] - kJ * wr * psi[1 + k];
+  if (connected) {
+    dpsi[0] = u_s - machine_.R_s * i[0] - kJ * wk * psi[0];
+  } else {
+    // ψ_s = L_m·Σ i_rk stays on that relation: dψ_s/dt = L_m·Σ_k (Γ_rr·dψ_r/dt)_k.
+    dpsi[0] = 0.0;
+    for (int k = 0; k < nr; ++k)
+      for (int c = 0; c < nr; ++c) dpsi[0] += machine_.L_m * Gamma_rr_(k, c) * dpsi[1 + c];
+  }
+  for (int a = 0; a < windings_; ++a) {
+    xdot[2 * a] = dpsi[a].real();
+    xdot[2 * a + 1] = dpsi[a].imag();
+  }
+}
+
+void ParkLaw::powersAndTorque(C u_s, const C* psi, const C* i, MotorEvaluation& out) const {
   out = MotorEvaluation{};
   out.torque = 1.5 * machine_.pole_pairs * (std::conj(psi[0]) * i[0]).imag();
   out.stator_current = std::abs(i[0]) / std::sqrt(2.0);
   out.electrical_power = 1.5 * (u_s * std::conj(i[0])).real();
   double loss = machine_.R_s * std::norm(i[0]), energy = (std::conj(psi[0]) * i[0]).real();
-  for (int k = 0; k < nr; ++k) {
+  for (int k = 0; k < machine_.cages; ++k) {
     loss += machine_.R_r[k] * std::norm(i[1 + k]);
     energy += (std::conj(psi[1 + k]) * i[1 + k]).real();
   }
