@@ -22,8 +22,6 @@
 // what a second cage represents, space harmonics.
 #pragma once
 
-#include <complex>
-
 #include <Eigen/Dense>
 
 #include "motor/InductionMachine.h"
@@ -50,19 +48,6 @@ class ParkLaw : public MotorLaw {
   const InductionMachineParameters& machine() const { return machine_; }
 
  private:
-  using C = std::complex<double>;
-  // u_s = √2·U_ph·(U/U_n)·e^{j·phase}, the stator voltage's space phasor [V].
-  C statorVoltage(const SupplyState& supply) const;
-  // Breaker closed: every winding's current i = Γ·ψ [A].
-  void connectedCurrents(const C* psi, C* i) const;
-  // Breaker open: i_s = 0 and the rotor currents i_r = Γ_rr·ψ_r from the rotor fluxes alone [A].
-  void openStatorCurrents(const C* psi, C* i) const;
-  // The voltage equations solved for dψ/dt [Wb/s] into xdot (re, im per winding), wk the frame's
-  // and wr the rotor windings' angular frequency [rad/s]; open, the stator flux follows the rotor's.
-  void fluxDerivatives(bool connected, C u_s, double wk, double wr, const C* psi, const C* i, double* xdot) const;
-  // Torque, stator current, electrical power, copper loss and magnetic energy from ψ and i.
-  void powersAndTorque(C u_s, const C* psi, const C* i, MotorEvaluation& out) const;
-
   InductionMachineParameters machine_;
   int windings_;              // 1 stator + cages
   Eigen::Matrix3d L_;         // inductance matrix (windings_ × windings_ block used)

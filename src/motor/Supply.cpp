@@ -19,6 +19,13 @@ using Stage = SupplyPhase::Stage;
 // An event timed at te is due at t when te <= t up to round-off of the time itself.
 bool due(double te, double t) { return te <= t + 1e-12 * std::max(1.0, std::abs(t)); }
 
+// The supply s after a star-delta changeover (start.method star_delta): the delta phase voltage
+// leads the star's by π/6.
+SupplyState inDelta(const MotorStart& start, SupplyState s) {
+  if (start.method == StartMethod::StarDelta) s.phase += M_PI / 6.0;
+  return s;
+}
+
 // The supply s with the breaker open.
 SupplyState disconnected(SupplyState s) {
   s.connected = false;
@@ -103,23 +110,18 @@ SupplyState Supply::state(const SupplyPhase& p, double t, double omega_rotor) co
     case Stage::Gap: return disconnected(s);
     case Stage::Off:
     case Stage::Braking:
-    case Stage::Tripped: return disconnected(inDelta(s));
+    case Stage::Tripped: return disconnected(inDelta(start_, s));
     case Stage::Star:
       s.voltage = 1.0 / std::sqrt(3.0);
       s.line_current_factor = 1.0 / std::sqrt(3.0);
       return s;
     case Stage::Rated:
-    case Stage::Restarted: return inDelta(s);
+    case Stage::Restarted: return inDelta(start_, s);
     case Stage::Ramp: return ramped(s, t, omega_rotor);
     case Stage::Limited:
       s.voltage = std::min(1.0, limitedVoltage(omega_rotor));
       return s;
   }
-  return s;
-}
-
-SupplyState Supply::inDelta(SupplyState s) const {
-  if (start_.method == StartMethod::StarDelta) s.phase += M_PI / 6.0;
   return s;
 }
 

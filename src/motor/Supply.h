@@ -133,8 +133,6 @@ class Supply {
   SupplyPhase after(const SupplyPhase& p, double t, double omega_rotor, bool by_speed) const;
   // The stage the switch-on leads to: rated (direct on line), star or ramp.
   SupplyPhase::Stage switchOnStage() const;
-  // s after a star-delta changeover: the delta phase voltage leads the star's by π/6.
-  SupplyState inDelta(SupplyState s) const;
   // s in the ramp stage at time t: U and f of the soft starter (current-limited at ω_r) or the
   // frequency converter.
   SupplyState ramped(SupplyState s, double t, double omega_rotor) const;
