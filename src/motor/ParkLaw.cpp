@@ -37,9 +37,8 @@ void openStatorCurrents(const Eigen::Matrix2d& Gamma_rr, int nr, const C* psi, C
 
 // The voltage equations solved for dψ/dt [Wb/s] into xdot (re, im per winding), wk the frame's and
 // wr the rotor windings' angular frequency [rad/s]; open, the stator flux follows the rotor's.
-void fluxDerivatives(const InductionMachineParameters& m, const Eigen::Matrix2d& Gamma_rr, bool connected, C u_s,
-                     double wk, double wr, const C* psi, const C* i, double* xdot) {
-  const int nr = m.cages;
+void fluxDerivatives(const InductionMachineParameters& m, const Eigen::Matrix2d& Gamma_rr, int nr, bool connected,
+                     C u_s, double wk, double wr, const C* psi, const C* i, double* xdot) {
   C dpsi[3];
   for (int k = 0; k < nr; ++k) dpsi[1 + k] = -m.R_r[k] * i[1 + k] - kJ * wr * psi[1 + k];
   if (connected) {
@@ -56,14 +55,23 @@ void fluxDerivatives(const InductionMachineParameters& m, const Eigen::Matrix2d&
   }
 }
 
+// M = (3/2)·p·Im(ψ_s*·i_s) [N·m].
+double airGapTorque(const InductionMachineParameters& m, const C* psi, const C* i) {
+  return 1.5 * m.pole_pairs * (std::conj(psi[0]) * i[0]).imag();
+}
+
+// The stator current's rms value |i_s|/√2 [A].
+double statorCurrent(const C* i) { return std::abs(i[0]) / std::sqrt(2.0); }
+
 // Torque, stator current, electrical power, copper loss and magnetic energy from ψ and i.
-void powersAndTorque(const InductionMachineParameters& m, C u_s, const C* psi, const C* i, MotorEvaluation& out) {
+void powersAndTorque(const InductionMachineParameters& m, int nr, C u_s, const C* psi, const C* i,
+                     MotorEvaluation& out) {
   out = MotorEvaluation{};
-  out.torque = 1.5 * m.pole_pairs * (std::conj(psi[0]) * i[0]).imag();
-  out.stator_current = std::abs(i[0]) / std::sqrt(2.0);
+  out.torque = airGapTorque(m, psi, i);
+  out.stator_current = statorCurrent(i);
   out.electrical_power = 1.5 * (u_s * std::conj(i[0])).real();
   double loss = m.R_s * std::norm(i[0]), energy = (std::conj(psi[0]) * i[0]).real();
-  for (int k = 0; k < m.cages; ++k) {
+  for (int k = 0; k < nr; ++k) {
     loss += m.R_r[k] * std::norm(i[1 + k]);
     energy += (std::conj(psi[1 + k]) * i[1 + k]).real();
   }
@@ -138,19 +146,20 @@ void ParkLaw::initialState(const SupplyState& supply, double omega_rotor, bool s
 
 void ParkLaw::evaluate(const SupplyState& supply, double omega_rotor, const double* x, MotorEvaluation& out,
                        double* xdot) const {
+  const int n = windings_, nr = machine_.cages;
   C psi[3], i[3];
-  for (int a = 0; a < windings_; ++a) psi[a] = C(x[2 * a], x[2 * a + 1]);
+  for (int a = 0; a < n; ++a) psi[a] = C(x[2 * a], x[2 * a + 1]);
   const double wk = machine_.supplyAngularFrequency() * supply.frequency;
   const double wr = wk - machine_.pole_pairs * omega_rotor;
   C u_s = 0.0;
   if (supply.connected) {
-    connectedCurrents(Gamma_, windings_, psi, i);
+    connectedCurrents(Gamma_, n, psi, i);
     u_s = statorVoltage(machine_, supply);
   } else {
-    openStatorCurrents(Gamma_rr_, machine_.cages, psi, i);
+    openStatorCurrents(Gamma_rr_, nr, psi, i);
   }
-  if (xdot) fluxDerivatives(machine_, Gamma_rr_, supply.connected, u_s, wk, wr, psi, i, xdot);
-  powersAndTorque(machine_, u_s, psi, i, out);
+  if (xdot) fluxDerivatives(machine_, Gamma_rr_, nr, supply.connected, u_s, wk, wr, psi, i, xdot);
+  powersAndTorque(machine_, nr, u_s, psi, i, out);
 }
 
 void ParkLaw::switchStates(const SupplyState& before, const SupplyState& after, double, double* x) const {
@@ -165,22 +174,27 @@ void ParkLaw::switchStates(const SupplyState& before, const SupplyState& after, 
   x[1] = psi_s.imag();
 }
 
-double ParkLaw::steadyTorque(const SupplyState& supply, double omega_rotor) const {
-  if (!supply.connected) return 0.0;
+// The steady torque and current need ψ_s and i_s only: computed as evaluate() computes them, so
+// the start-up's many calls do not pay for the rest of the evaluation.
+void ParkLaw::steadyFluxesAndCurrents(const SupplyState& supply, double omega_rotor, C* psi, C* i) const {
   double x[6];
   initialState(supply, omega_rotor, true, x);
-  MotorEvaluation e;
-  evaluate(supply, omega_rotor, x, e, nullptr);
-  return e.torque;
+  for (int a = 0; a < windings_; ++a) psi[a] = C(x[2 * a], x[2 * a + 1]);
+  connectedCurrents(Gamma_, windings_, psi, i);
+}
+
+double ParkLaw::steadyTorque(const SupplyState& supply, double omega_rotor) const {
+  if (!supply.connected) return 0.0;
+  C psi[3], i[3];
+  steadyFluxesAndCurrents(supply, omega_rotor, psi, i);
+  return airGapTorque(machine_, psi, i);
 }
 
 double ParkLaw::steadyCurrent(const SupplyState& supply, double omega_rotor) const {
   if (!supply.connected) return 0.0;
-  double x[6];
-  initialState(supply, omega_rotor, true, x);
-  MotorEvaluation e;
-  evaluate(supply, omega_rotor, x, e, nullptr);
-  return e.stator_current;
+  C psi[3], i[3];
+  steadyFluxesAndCurrents(supply, omega_rotor, psi, i);
+  return statorCurrent(i);
 }
 
 }  // namespace rollerdyn
