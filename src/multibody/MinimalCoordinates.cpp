@@ -46,23 +46,8 @@ MinimalCoordinates::Loop MinimalCoordinates::loopOf(const CartRig& c, const SimT
   return l;
 }
 
-void MinimalCoordinates::apply(double t, const IndependentState& x, SimTK::State& s) {
-  const double phi = x.crank_angle, w = crank_free_ ? x.crank_speed : prescribed_speed_;
-  s.updTime() = t;
-  SimTK::Vector& q = s.updQ();
-  SimTK::Vector& u = s.updU();
-  q[q_crank_] = phi;
-  u[u_crank_] = w;
-  if (twist_free_) {
-    q[q_twist_] = x.twist;
-    u[u_twist_] = x.twist_rate;
-  }
-  SimTK::Vector* crank_column = crank_free_ ? &columns_[0] : nullptr;
-  if (crank_column) (*crank_column)[u_crank_] = 1.0;  // the motor side rides on the crankshaft
-  for (const Loop& l : loops_) placeLoop(l, phi, w, q, u, crank_column);
-}
-
-void MinimalCoordinates::placeLoop(const Loop& l, double phi, double w, SimTK::Vector& q, SimTK::Vector& u,
+// inline: apply's per-cart step in every evaluation of the right-hand side.
+inline void MinimalCoordinates::placeLoop(const Loop& l, double phi, double w, SimTK::Vector& q, SimTK::Vector& u,
                                    SimTK::Vector* crank_column) {
   const Scene& sc = model_.scene();
   const double theta = phi + l.phase;
@@ -81,6 +66,22 @@ void MinimalCoordinates::placeLoop(const Loop& l, double phi, double w, SimTK::V
   u[l.u_rod] = rate_per_crank * w;
   bias_[l.u_rod] = -l.side * p.d2beta * w * w;
   if (crank_column) (*crank_column)[l.u_rod] = rate_per_crank;
+}
+
+void MinimalCoordinates::apply(double t, const IndependentState& x, SimTK::State& s) {
+  const double phi = x.crank_angle, w = crank_free_ ? x.crank_speed : prescribed_speed_;
+  s.updTime() = t;
+  SimTK::Vector& q = s.updQ();
+  SimTK::Vector& u = s.updU();
+  q[q_crank_] = phi;
+  u[u_crank_] = w;
+  if (twist_free_) {
+    q[q_twist_] = x.twist;
+    u[u_twist_] = x.twist_rate;
+  }
+  SimTK::Vector* crank_column = crank_free_ ? &columns_[0] : nullptr;
+  if (crank_column) (*crank_column)[u_crank_] = 1.0;  // the motor side rides on the crankshaft
+  for (const Loop& l : loops_) placeLoop(l, phi, w, q, u, crank_column);
 }
 
 IndependentState MinimalCoordinates::extract(const SimTK::State& s) const {

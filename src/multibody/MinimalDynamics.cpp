@@ -93,22 +93,8 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
   return true;
 }
 
-void MinimalDynamics::solveProjected(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction) {
-  residualAtBias(s, coords, include_friction);
-  const int k = coords.freeSpeeds();
-  solveIndependentAccelerations(coords);
-  // The small products by Eigen on the Simbody vectors' storage: SimTK's Vector expressions
-  // allocate a temporary per term (~15 % of an evaluation at 4 carts).
-  const Eigen::Map<const Eigen::VectorXd> bias = view(coords.bias());
-  Eigen::Map<Eigen::VectorXd> residual = view(residual_), udot = view(udot_);
-  udot = bias;
-  for (int i = 0; i < k; ++i) {
-    udot += nu_dot_(i) * view(coords.column(i));
-    residual += nu_dot_(i) * view(mn_[i]);  // now the generalized constraint forces M·u̇ + c - f
-  }
-}
-
-void MinimalDynamics::residualAtBias(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction) {
+// inline (with the next): solveProjected's steps in every evaluation of the right-hand side.
+inline void MinimalDynamics::residualAtBias(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction) {
   const SimTK::MultibodySystem& system = model_.system();
   const SimTK::SimbodyMatterSubsystem& matter = model_.matter();
   // The inverse-dynamics pass and M·v need positions and velocities only (Simbody's tree
@@ -125,9 +111,9 @@ void MinimalDynamics::residualAtBias(SimTK::State& s, const MinimalCoordinates& 
   for (int i = 0; i < k; ++i) matter.multiplyByM(s, coords.column(i), mn_[i]);
 }
 
-void MinimalDynamics::solveIndependentAccelerations(const MinimalCoordinates& coords) {
+inline void MinimalDynamics::solveIndependentAccelerations(const MinimalCoordinates& coords,
+                                                           const Eigen::Map<Eigen::VectorXd>& residual) {
   const int k = coords.freeSpeeds();
-  const Eigen::Map<Eigen::VectorXd> residual = view(residual_);
   Eigen::Matrix2d A = Eigen::Matrix2d::Identity();
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
   for (int i = 0; i < k; ++i) {
@@ -141,6 +127,21 @@ void MinimalDynamics::solveIndependentAccelerations(const MinimalCoordinates& co
   nu_dot_.setZero();
   if (k == 1) nu_dot_(0) = b(0) / A(0, 0);
   if (k == 2) nu_dot_ = A.partialPivLu().solve(b);
+}
+
+void MinimalDynamics::solveProjected(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction) {
+  residualAtBias(s, coords, include_friction);
+  const int k = coords.freeSpeeds();
+  // The small products by Eigen on the Simbody vectors' storage: SimTK's Vector expressions
+  // allocate a temporary per term (~15 % of an evaluation at 4 carts).
+  const Eigen::Map<const Eigen::VectorXd> bias = view(coords.bias());
+  Eigen::Map<Eigen::VectorXd> residual = view(residual_), udot = view(udot_);
+  solveIndependentAccelerations(coords, residual);
+  udot = bias;
+  for (int i = 0; i < k; ++i) {
+    udot += nu_dot_(i) * view(coords.column(i));
+    residual += nu_dot_(i) * view(mn_[i]);  // now the generalized constraint forces M·u̇ + c - f
+  }
 }
 
 // The friction loop (GuideFrictionLoop.h). Everything solveProjected computes is linear in the

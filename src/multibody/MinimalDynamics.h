@@ -75,8 +75,9 @@ class MinimalDynamics {
   // Realizes s to Velocity and sums the applied forces f; the residual r0 = M·(Ṅ·ν̇) + c - f at
   // ν̈ = 0 and the products M·N's columns.
   void residualAtBias(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction);
-  // ν̈ from Nᵀ·M·N·ν̈ = -Nᵀ·r0 (1x1 or 2x2), and that matrix's inverse into A_inv_.
-  void solveIndependentAccelerations(const MinimalCoordinates& coords);
+  // ν̈ from Nᵀ·M·N·ν̈ = -Nᵀ·r0 (1x1 or 2x2; r0 = residual_, viewed), and that matrix's inverse
+  // into A_inv_.
+  void solveIndependentAccelerations(const MinimalCoordinates& coords, const Eigen::Map<Eigen::VectorXd>& residual);
   // Each cart's normal forces as affine functions of ε and of its friction, for the loop.
   void setUpFrictionLoop(const SimTK::State& s, const MinimalCoordinates& coords, double eps0);
   // The loop's frictions into the accelerations, constraint forces and applied forces.
