@@ -155,18 +155,25 @@ std::vector<CatalogueComparison> compareWithCatalogue(const InductionMachinePara
   };
 }
 
+namespace {
+// The linked NLopt's version, "major.minor.bugfix": another version may stop at another optimum.
+std::string nloptVersion() {
+  int major = 0, minor = 0, bugfix = 0;
+  nlopt::version(major, minor, bugfix);
+  return std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(bugfix);
+}
+}  // namespace
+
 std::string catalogueFitKey(const MotorCatalogue& catalogue, const CatalogueSupply& supply, int cages) {
   // Every field by name: a new field fails to compile here until it is keyed (or said unread).
   const auto& [power, omega_nominal, current, power_factor, efficiency, starting_torque_ratio, breakdown_torque_ratio,
                starting_current_ratio, catalogue_cages] = catalogue;
   (void)catalogue_cages;  // not read by the fit: the argument `cages` says how many cages to fit
   const auto& [line_voltage, frequency, pole_pairs] = supply;
-  int major = 0, minor = 0, bugfix = 0;
-  nlopt::version(major, minor, bugfix);
   return ExactKey()
       .add("catalogue_fit_version", kCatalogueFitVersion)
       .add("fit_sources", std::string(ROLLERDYN_FIT_SOURCE_HASH))  // any edit of the fitting code
-      .add("nlopt", std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(bugfix))
+      .add("nlopt", nloptVersion())
       .add("power", power)
       .add("omega_nominal", omega_nominal)
       .add("current", current)
@@ -310,22 +317,35 @@ struct BestStart {
   int starts = 0;
 };
 
+// Random start points around the guess, from a fixed seed: the fit is reproducible.
+class RandomStarts {
+ public:
+  // x0 with every (logarithmic) parameter moved by a factor up to e^±1.5.
+  std::vector<double> around(const std::vector<double>& x0) {
+    std::vector<double> x = x0;
+    for (double& v : x) v += 1.5 * (2.0 * uniform() - 1.0);
+    return x;
+  }
+
+ private:
+  // The next number of a linear congruential generator, uniform in [0, 1).
+  double uniform() {
+    lcg_ = lcg_ * 6364136223846793005ULL + 1442695040888963407ULL;
+    return double(lcg_ >> 11) / double(1ULL << 53);
+  }
+  unsigned long long lcg_ = 0x2545F4914F6CDD1DULL;
+};
+
 BestStart multiStart(Problem& prob, const std::vector<double>& x0) {
   BestStart best{x0, 0};
   double best_cost = prob.residuals(x0.data(), nullptr);
-  unsigned long long lcg = 0x2545F4914F6CDD1DULL;  // fixed seed: the fit is reproducible
-  auto uniform = [&lcg]() {
-    lcg = lcg * 6364136223846793005ULL + 1442695040888963407ULL;
-    return double(lcg >> 11) / double(1ULL << 53);
-  };
+  RandomStarts random;
   // Starts until every residual is below 1e-9 (the catalogue met), or the best cost has not
   // improved by 1e-9 relative over kPatience starts, or kMaxStarts are used.
   constexpr int kMaxStarts = 60, kPatience = 15;
   int since_better = 0;
   for (; best.starts < kMaxStarts && since_better < kPatience; ++best.starts) {
-    std::vector<double> x = x0;
-    if (best.starts > 0)
-      for (double& v : x) v += 1.5 * (2.0 * uniform() - 1.0);  // factor e^±1.5 around the guess
+    std::vector<double> x = best.starts > 0 ? random.around(x0) : x0;
     const double cost = localFit(prob, x);
     if (cost < best_cost * (1.0 - 1e-9)) {
       best_cost = cost, best.x = x, since_better = 0;

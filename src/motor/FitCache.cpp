@@ -95,6 +95,35 @@ std::string formatKeptFit(const std::string& key, const KeptFit& fit) {
          "end\n";
 }
 
+namespace {
+
+// The machine line's words into m's fields, in eachMachineField's order; false on a word missing,
+// unreadable or left over.
+bool parseMachine(const std::string& line, InductionMachineParameters& m) {
+  std::istringstream words(line);
+  bool ok = true;
+  eachMachineField(m, [&](auto& x) {
+    std::string w;
+    if (!(words >> w)) ok = false;
+    else if constexpr (std::is_same_v<std::decay_t<decltype(x)>, double>) ok = ok && parseDouble(w, x);
+    else ok = ok && parseInt(w, x);
+  });
+  std::string extra;
+  return ok && !(words >> extra);
+}
+
+// Whether a machine read back passes its own checks: a damaged file is fitted again, not trusted.
+bool isValidMachine(const InductionMachineParameters& m) {
+  try {
+    m.validate();
+  } catch (const std::exception&) {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 std::optional<KeptFit> parseKeptFit(const std::string& text, const std::string& key) {
   if (text.size() < 4 || text.compare(text.size() - 4, 4, "end\n") != 0) return std::nullopt;  // cut short
   std::istringstream in(text);
@@ -111,25 +140,11 @@ std::optional<KeptFit> parseKeptFit(const std::string& text, const std::string& 
   if (!field("key", rest) || rest != key) return std::nullopt;
   if (!field("fitted_on", fit.fitted_on)) return std::nullopt;
   if (!field("fit_seconds", rest) || !parseDouble(rest, fit.fit_seconds)) return std::nullopt;
-  if (!field("machine", rest)) return std::nullopt;
-  std::istringstream words(rest);
-  bool ok = true;
-  eachMachineField(fit.machine, [&](auto& x) {
-    std::string w;
-    if (!(words >> w)) ok = false;
-    else if constexpr (std::is_same_v<std::decay_t<decltype(x)>, double>) ok = ok && parseDouble(w, x);
-    else ok = ok && parseInt(w, x);
-  });
-  std::string extra;
-  if (!ok || (words >> extra)) return std::nullopt;
+  if (!field("machine", rest) || !parseMachine(rest, fit.machine)) return std::nullopt;
   if (!field("starts", rest) || !parseInt(rest, fit.starts)) return std::nullopt;
   if (!field("evaluations", rest) || !parseInt(rest, fit.evaluations)) return std::nullopt;
   if (!std::getline(in, line) || line != "end" || std::getline(in, line)) return std::nullopt;
-  try {
-    fit.machine.validate();
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
+  if (!isValidMachine(fit.machine)) return std::nullopt;
   return fit;
 }
 

@@ -55,43 +55,65 @@ InductionMachineParameters InductionMachineParameters::fromScene(const Induction
   return m;
 }
 
+namespace {
+using C = std::complex<double>;
+const C kJ(0.0, 1.0);
+
+// The magnetizing branch and the rotor branches in parallel at slip s: their admittance [S], and
+// each rotor branch's Y_k = 1/(R_k/s + jX_k) = s/(R_k + j·s·X_k) into Y_r.
+C airGapAdmittance(const InductionMachineParameters& m, double s, double w1, C* Y_r) {
+  C Y = 1.0 / (kJ * w1 * m.L_m);
+  for (int k = 0; k < m.cages; ++k) {
+    Y_r[k] = s / (m.R_r[k] + kJ * s * w1 * m.L_sigma_r[k]);
+    Y += Y_r[k];
+  }
+  return Y;
+}
+
+// Sums over the rotor branches at air-gap voltage E: Σ I_rk [A], Σ R_k·|I_rk|² [W],
+// Σ L_σrk·|I_rk|² [J] and the air-gap power per phase [W].
+struct RotorSums {
+  C I_r = 0.0;
+  double loss = 0.0, leakage_energy = 0.0, airgap = 0.0;
+};
+
+// Each rotor branch's current into r.I_r, and their sums.
+RotorSums rotorCurrents(const InductionMachineParameters& m, C E, const C* Y_r, CircuitSolution& r) {
+  RotorSums sum;
+  for (int k = 0; k < m.cages; ++k) {
+    r.I_r[k] = -E * Y_r[k];  // rotor current flows against the stator's (ψ = L_m(I_s + ΣI_r))
+    sum.I_r += r.I_r[k];
+    const double i2 = std::norm(r.I_r[k]);
+    sum.loss += m.R_r[k] * i2;
+    sum.leakage_energy += m.L_sigma_r[k] * i2;
+    // P_ag per phase through branch k: |E|²·Re(Y_k) = |E|²·s·R_k/(R_k² + s²X_k²): finite at s = 0.
+    sum.airgap += std::norm(E) * Y_r[k].real();
+  }
+  return sum;
+}
+
+}  // namespace
+
 CircuitSolution solveCircuit(const InductionMachineParameters& m, double u, double w1, double omega_rotor) {
-  using C = std::complex<double>;
-  const C j(0.0, 1.0);
   CircuitSolution r;
   const double p = m.pole_pairs;
   const double s = (w1 - p * omega_rotor) / w1;
   r.slip = s;
-  // Rotor branch admittances Y_k = 1/(R_k/s + jX_k) = s/(R_k + j·s·X_k).
   C Y_r[2];
-  C Y = 1.0 / (j * w1 * m.L_m);
-  for (int k = 0; k < m.cages; ++k) {
-    Y_r[k] = s / (m.R_r[k] + j * s * w1 * m.L_sigma_r[k]);
-    Y += Y_r[k];
-  }
-  const C Z_s = m.R_s + j * w1 * m.L_sigma_s;
+  const C Y = airGapAdmittance(m, s, w1, Y_r);
+  const C Z_s = m.R_s + kJ * w1 * m.L_sigma_s;
   const C Z = Z_s + 1.0 / Y;
   const C U(u, 0.0);
   r.I_s = U / Z;
   const C E = U - r.I_s * Z_s;  // air-gap voltage
-  C I_r_sum = 0.0;
-  double rotor_loss = 0.0, rotor_energy = 0.0, airgap = 0.0;
-  for (int k = 0; k < m.cages; ++k) {
-    r.I_r[k] = -E * Y_r[k];  // rotor current flows against the stator's (ψ = L_m(I_s + ΣI_r))
-    I_r_sum += r.I_r[k];
-    const double i2 = std::norm(r.I_r[k]);
-    rotor_loss += m.R_r[k] * i2;
-    rotor_energy += m.L_sigma_r[k] * i2;
-    // P_ag per phase through branch k: |E|²·Re(Y_k) = |E|²·s·R_k/(R_k² + s²X_k²): finite at s = 0.
-    airgap += std::norm(E) * Y_r[k].real();
-  }
+  const RotorSums rotor = rotorCurrents(m, E, Y_r, r);
   const double is2 = std::norm(r.I_s);
   r.current = std::sqrt(is2);
   r.electrical_power = 3.0 * (U * std::conj(r.I_s)).real();
-  r.airgap_power = 3.0 * airgap;
+  r.airgap_power = 3.0 * rotor.airgap;
   r.torque = r.airgap_power / (w1 / p);
-  r.copper_loss = 3.0 * (m.R_s * is2 + rotor_loss);
-  r.magnetic_energy = 1.5 * (m.L_sigma_s * is2 + rotor_energy + m.L_m * std::norm(r.I_s + I_r_sum));
+  r.copper_loss = 3.0 * (m.R_s * is2 + rotor.loss);
+  r.magnetic_energy = 1.5 * (m.L_sigma_s * is2 + rotor.leakage_energy + m.L_m * std::norm(r.I_s + rotor.I_r));
   r.power_factor = r.current > 0 ? r.electrical_power / (3.0 * u * r.current) : 0.0;
   return r;
 }

@@ -22,6 +22,8 @@
 // what a second cage represents, space harmonics.
 #pragma once
 
+#include <complex>
+
 #include <Eigen/Dense>
 
 #include "motor/InductionMachine.h"
@@ -48,6 +50,10 @@ class ParkLaw : public MotorLaw {
   const InductionMachineParameters& machine() const { return machine_; }
 
  private:
+  // The steady state's fluxes ψ [Wb] and currents i [A] at (supply, ω_r), the breaker closed.
+  void steadyFluxesAndCurrents(const SupplyState& supply, double omega_rotor, std::complex<double>* psi,
+                               std::complex<double>* i) const;
+
   InductionMachineParameters machine_;
   int windings_;              // 1 stator + cages
   Eigen::Matrix3d L_;         // inductance matrix (windings_ × windings_ block used)

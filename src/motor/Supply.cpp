@@ -19,6 +19,20 @@ using Stage = SupplyPhase::Stage;
 // An event timed at te is due at t when te <= t up to round-off of the time itself.
 bool due(double te, double t) { return te <= t + 1e-12 * std::max(1.0, std::abs(t)); }
 
+// The supply s after a star-delta changeover (start.method star_delta): the delta phase voltage
+// leads the star's by π/6.
+SupplyState inDelta(const MotorStart& start, SupplyState s) {
+  if (start.method == StartMethod::StarDelta) s.phase += M_PI / 6.0;
+  return s;
+}
+
+// The supply s with the breaker open.
+SupplyState disconnected(SupplyState s) {
+  s.connected = false;
+  s.voltage = 0.0;
+  return s;
+}
+
 bool sameSupply(const SupplyState& a, const SupplyState& b) {
   return a.connected == b.connected && a.voltage == b.voltage && a.frequency == b.frequency && a.phase == b.phase;
 }
@@ -50,11 +64,17 @@ Supply::Supply(const MotorStart& start, const MotorStop& stop, double omega_sync
   if (!(omega_sync > 0)) throw std::invalid_argument("Supply: the synchronous speed must be > 0");
   if (stop.brake_torque > 0 && !(brake_smoothing_speed > 0))
     throw std::invalid_argument("Supply: the brake smoothing speed must be > 0");
+  checkStartMethod();
+  if (start_.method == StartMethod::SoftStarter && start_.current_limit > 0) setUpCurrentLimit();
+  constant_ = start_.method == StartMethod::DirectOnLine && start_.t_on <= 0 && std::isinf(stop_.t_off);
+}
+
+void Supply::checkStartMethod() const {
   if (start_.method == StartMethod::FrequencyConverter) {
-    if (!(rated_frequency > 0)) throw std::invalid_argument("Supply: the rated frequency must be > 0");
-    if (!(start_.initial_frequency > 0 && start_.initial_frequency < rated_frequency))
+    if (!(rated_frequency_ > 0)) throw std::invalid_argument("Supply: the rated frequency must be > 0");
+    if (!(start_.initial_frequency > 0 && start_.initial_frequency < rated_frequency_))
       throw std::invalid_argument("motor.start.initial_frequency must lie in (0, f_n = " +
-                                  std::to_string(rated_frequency) + " Hz), got " +
+                                  std::to_string(rated_frequency_) + " Hz), got " +
                                   std::to_string(start_.initial_frequency));
   }
   if ((start_.method == StartMethod::SoftStarter || start_.method == StartMethod::FrequencyConverter) &&
@@ -63,17 +83,17 @@ Supply::Supply(const MotorStart& start, const MotorStop& stop, double omega_sync
   if (start_.method == StartMethod::StarDelta && std::isnan(start_.changeover_time) &&
       std::isnan(start_.changeover_speed))
     throw std::invalid_argument("Supply: a star-delta start needs a changeover time or speed");
-  if (start_.method == StartMethod::SoftStarter && start_.current_limit > 0) {
-    const bool has_current = law_ && std::isfinite(law_->steadyCurrent(SupplyState{}, 0.0));
-    if (!has_current)
-      throw std::invalid_argument(
-          "motor.start.current_limit needs a motor model with a stator current (motor.model " +
-          motorModelWords(false, "or") + "); the Kloss laws have none");
-    limit_speed_ = findLimitSpeed();
-    if (start_.max_start_time > 0 && !(start_.max_start_time > start_.ramp_time))
-      throw std::invalid_argument("motor.start.max_start_time must exceed motor.start.ramp_time");
-  }
-  constant_ = start_.method == StartMethod::DirectOnLine && start_.t_on <= 0 && std::isinf(stop_.t_off);
+}
+
+void Supply::setUpCurrentLimit() {
+  const bool has_current = law_ && std::isfinite(law_->steadyCurrent(SupplyState{}, 0.0));
+  if (!has_current)
+    throw std::invalid_argument(
+        "motor.start.current_limit needs a motor model with a stator current (motor.model " +
+        motorModelWords(false, "or") + "); the Kloss laws have none");
+  limit_speed_ = findLimitSpeed();
+  if (start_.max_start_time > 0 && !(start_.max_start_time > start_.ramp_time))
+    throw std::invalid_argument("motor.start.max_start_time must exceed motor.start.ramp_time");
 }
 
 SupplyPhase Supply::initialPhase() const {
@@ -87,38 +107,33 @@ SupplyState Supply::state(const SupplyPhase& p, double t, double omega_rotor) co
   s.phase = start_.phase;
   switch (p.stage) {
     case Stage::Waiting:
-    case Stage::Gap:
+    case Stage::Gap: return disconnected(s);
     case Stage::Off:
     case Stage::Braking:
-    case Stage::Tripped:
-      s.connected = false;
-      s.voltage = 0.0;
-      if (start_.method == StartMethod::StarDelta && p.stage != Stage::Waiting && p.stage != Stage::Gap)
-        s.phase += M_PI / 6.0;
-      return s;
+    case Stage::Tripped: return disconnected(inDelta(start_, s));
     case Stage::Star:
       s.voltage = 1.0 / std::sqrt(3.0);
       s.line_current_factor = 1.0 / std::sqrt(3.0);
       return s;
     case Stage::Rated:
-    case Stage::Restarted:
-      if (start_.method == StartMethod::StarDelta) s.phase += M_PI / 6.0;
-      return s;
-    case Stage::Ramp: {
-      const double x = std::clamp((t - start_.t_on) / start_.ramp_time, 0.0, 1.0);
-      if (start_.method == StartMethod::FrequencyConverter) {
-        const double F0 = start_.initial_frequency / rated_frequency_;
-        s.frequency = F0 + (1.0 - F0) * x;
-        s.voltage = start_.boost + (1.0 - start_.boost) * s.frequency;
-        return s;
-      }
-      s.voltage = std::min(start_.initial_voltage + (1.0 - start_.initial_voltage) * x, limitedVoltage(omega_rotor));
-      return s;
-    }
+    case Stage::Restarted: return inDelta(start_, s);
+    case Stage::Ramp: return ramped(s, t, omega_rotor);
     case Stage::Limited:
       s.voltage = std::min(1.0, limitedVoltage(omega_rotor));
       return s;
   }
+  return s;
+}
+
+SupplyState Supply::ramped(SupplyState s, double t, double omega_rotor) const {
+  const double x = std::clamp((t - start_.t_on) / start_.ramp_time, 0.0, 1.0);
+  if (start_.method == StartMethod::FrequencyConverter) {
+    const double F0 = start_.initial_frequency / rated_frequency_;
+    s.frequency = F0 + (1.0 - F0) * x;
+    s.voltage = start_.boost + (1.0 - start_.boost) * s.frequency;
+    return s;
+  }
+  s.voltage = std::min(start_.initial_voltage + (1.0 - start_.initial_voltage) * x, limitedVoltage(omega_rotor));
   return s;
 }
 
@@ -201,27 +216,18 @@ double Supply::triggerSpeed(const SupplyPhase& p) const {
 
 SupplyPhase Supply::after(const SupplyPhase& p, double t, double omega_rotor, bool by_speed) const {
   auto to = [t](Stage s) { return SupplyPhase{s, t}; };
+  // A switch-off due at the same time ends the stage in off, whatever it would have led to.
+  auto unless_off = [&](Stage s) { return due(stop_.t_off, t) ? to(Stage::Off) : to(s); };
   const Stage delta = start_.changeover_gap > 0 ? Stage::Gap : Stage::Rated;
   switch (p.stage) {
-    case Stage::Waiting:
-      switch (start_.method) {
-        case StartMethod::DirectOnLine: return to(Stage::Rated);
-        case StartMethod::StarDelta: return to(Stage::Star);
-        default: return to(Stage::Ramp);
-      }
-    case Stage::Star:
-      if (by_speed) return to(delta);
-      return due(stop_.t_off, t) ? to(Stage::Off) : to(delta);
-    case Stage::Gap:
-      return due(stop_.t_off, t) ? to(Stage::Off) : to(Stage::Rated);
+    case Stage::Waiting: return to(switchOnStage());
+    case Stage::Star: return by_speed ? to(delta) : unless_off(delta);
+    case Stage::Gap: return unless_off(Stage::Rated);
     case Stage::Ramp:
       // The ramp has reached U_n; a motor that would still draw more than the limit there stays
       // current-limited (a real soft starter closes its bypass only once the motor is up to speed).
-      if (due(stop_.t_off, t)) return to(Stage::Off);
-      return omega_rotor < limit_speed_ ? to(Stage::Limited) : to(Stage::Rated);
-    case Stage::Limited:
-      if (by_speed) return to(Stage::Rated);
-      return due(stop_.t_off, t) ? to(Stage::Off) : to(Stage::Tripped);
+      return unless_off(omega_rotor < limit_speed_ ? Stage::Limited : Stage::Rated);
+    case Stage::Limited: return by_speed ? to(Stage::Rated) : unless_off(Stage::Tripped);
     case Stage::Tripped: return p;
     case Stage::Rated: return to(Stage::Off);
     case Stage::Off: return hasBrake() && !due(stop_.t_restart, t) ? to(Stage::Braking) : to(Stage::Restarted);
@@ -229,6 +235,14 @@ SupplyPhase Supply::after(const SupplyPhase& p, double t, double omega_rotor, bo
     case Stage::Restarted: return p;
   }
   return p;
+}
+
+SupplyPhase::Stage Supply::switchOnStage() const {
+  switch (start_.method) {
+    case StartMethod::DirectOnLine: return Stage::Rated;
+    case StartMethod::StarDelta: return Stage::Star;
+    default: return Stage::Ramp;
+  }
 }
 
 bool Supply::applyDueEvents(SupplyPhase& p, double t, double omega_rotor, bool speed_reached, const MotorLaw* law,

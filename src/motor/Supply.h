@@ -123,8 +123,19 @@ class Supply {
   const MotorStop& stop() const { return stop_; }
 
  private:
+  // The start settings each method needs (constructor; std::invalid_argument when one is missing
+  // or out of range).
+  void checkStartMethod() const;
+  // A soft starter's current limit: ω_lim, after checking that the law models a stator current
+  // and that max_start_time, when given, exceeds the ramp (constructor; std::invalid_argument).
+  void setUpCurrentLimit();
   // The phase that follows p by the event at time t and rotor speed ω_r (one event).
   SupplyPhase after(const SupplyPhase& p, double t, double omega_rotor, bool by_speed) const;
+  // The stage the switch-on leads to: rated (direct on line), star or ramp.
+  SupplyPhase::Stage switchOnStage() const;
+  // s in the ramp stage at time t: U and f of the soft starter (current-limited at ω_r) or the
+  // frequency converter.
+  SupplyState ramped(SupplyState s, double t, double omega_rotor) const;
   // U/U_n the current limit allows at rotor speed ω_r (≥ 1 when it does not act; +inf without a limit).
   double limitedVoltage(double omega_rotor) const;
   // ω_lim for the limit (constructor; std::invalid_argument when the limit is at or below the

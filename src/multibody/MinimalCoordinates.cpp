@@ -20,20 +20,8 @@ MinimalCoordinates::MinimalCoordinates(const MultibodyModel& model, const SimTK:
     q_twist_ = model.motorSide().getFirstQIndex(s);
     u_twist_ = model.motorSide().getFirstUIndex(s);
   }
-  for (size_t j = 0; j < model.carts().size(); ++j) {
-    const CartRig& c = model.carts()[j];
-    Loop l;
-    l.q_cart = c.cart.getFirstQIndex(s);
-    l.u_cart = c.cart.getFirstUIndex(s);
-    l.has_rod = !c.rod.isEmptyHandle();
-    if (l.has_rod) {
-      l.q_rod = c.rod.getFirstQIndex(s);
-      l.u_rod = c.rod.getFirstUIndex(s);
-    }
-    l.side = c.side;
-    l.phase = sc.crankPhase(int(j));
-    loops_.push_back(l);
-  }
+  for (size_t j = 0; j < model.carts().size(); ++j)
+    loops_.push_back(loopOf(model.carts()[j], s, sc.crankPhase(int(j))));
   const int nu = s.getNU();
   if (crank_free_) columns_.emplace_back(nu, 0.0);
   if (twist_free_) {
@@ -44,8 +32,43 @@ MinimalCoordinates::MinimalCoordinates(const MultibodyModel& model, const SimTK:
   bias_ = 0.0;
 }
 
-void MinimalCoordinates::apply(double t, const IndependentState& x, SimTK::State& s) {
+MinimalCoordinates::Loop MinimalCoordinates::loopOf(const CartRig& c, const SimTK::State& s, double phase) {
+  Loop l;
+  l.q_cart = c.cart.getFirstQIndex(s);
+  l.u_cart = c.cart.getFirstUIndex(s);
+  l.has_rod = !c.rod.isEmptyHandle();
+  if (l.has_rod) {
+    l.q_rod = c.rod.getFirstQIndex(s);
+    l.u_rod = c.rod.getFirstUIndex(s);
+  }
+  l.side = c.side;
+  l.phase = phase;
+  return l;
+}
+
+// inline: apply's per-cart step in every evaluation of the right-hand side.
+inline void MinimalCoordinates::placeLoop(const Loop& l, double phi, double w, SimTK::Vector& q, SimTK::Vector& u,
+                                   SimTK::Vector* crank_column) {
   const Scene& sc = model_.scene();
+  const double theta = phi + l.phase;
+  const SliderCrankPose p = cam_ ? camDrivePose(theta, sc.cam.stroke, l.side)
+                                 : sliderCrankExact(theta, sc.crank.radius, sc.rods.length, l.side);
+  q[l.q_cart] = p.x_B;
+  u[l.u_cart] = p.dx_B * w;
+  bias_[l.u_cart] = p.d2x_B * w * w;
+  if (crank_column) (*crank_column)[l.u_cart] = p.dx_B;
+  if (!l.has_rod) return;
+  // Direction A->B = l·(σ·cos β, -sin β): absolute rod angle ψ, rate ψ̇ = -σ·β̇; the rod's
+  // pin is on the crankshaft, so its own coordinate is ψ - φ2.
+  const double psi = std::atan2(-std::sin(p.beta), l.side * std::cos(p.beta));
+  const double rate_per_crank = -l.side * p.dbeta - 1.0;
+  q[l.q_rod] = psi - phi;
+  u[l.u_rod] = rate_per_crank * w;
+  bias_[l.u_rod] = -l.side * p.d2beta * w * w;
+  if (crank_column) (*crank_column)[l.u_rod] = rate_per_crank;
+}
+
+void MinimalCoordinates::apply(double t, const IndependentState& x, SimTK::State& s) {
   const double phi = x.crank_angle, w = crank_free_ ? x.crank_speed : prescribed_speed_;
   s.updTime() = t;
   SimTK::Vector& q = s.updQ();
@@ -58,25 +81,7 @@ void MinimalCoordinates::apply(double t, const IndependentState& x, SimTK::State
   }
   SimTK::Vector* crank_column = crank_free_ ? &columns_[0] : nullptr;
   if (crank_column) (*crank_column)[u_crank_] = 1.0;  // the motor side rides on the crankshaft
-  for (const Loop& l : loops_) {
-    const double theta = phi + l.phase;
-    const SliderCrankPose p = cam_ ? camDrivePose(theta, sc.cam.stroke, l.side)
-                                   : sliderCrankExact(theta, sc.crank.radius, sc.rods.length, l.side);
-    q[l.q_cart] = p.x_B;
-    u[l.u_cart] = p.dx_B * w;
-    bias_[l.u_cart] = p.d2x_B * w * w;
-    if (crank_column) (*crank_column)[l.u_cart] = p.dx_B;
-    if (l.has_rod) {
-      // Direction A->B = l·(σ·cos β, -sin β): absolute rod angle ψ, rate ψ̇ = -σ·β̇; the rod's
-      // pin is on the crankshaft, so its own coordinate is ψ - φ2.
-      const double psi = std::atan2(-std::sin(p.beta), l.side * std::cos(p.beta));
-      const double rate_per_crank = -l.side * p.dbeta - 1.0;
-      q[l.q_rod] = psi - phi;
-      u[l.u_rod] = rate_per_crank * w;
-      bias_[l.u_rod] = -l.side * p.d2beta * w * w;
-      if (crank_column) (*crank_column)[l.u_rod] = rate_per_crank;
-    }
-  }
+  for (const Loop& l : loops_) placeLoop(l, phi, w, q, u, crank_column);
 }
 
 IndependentState MinimalCoordinates::extract(const SimTK::State& s) const {

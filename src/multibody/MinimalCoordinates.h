@@ -58,6 +58,12 @@ class MinimalCoordinates {
     int side = 1;
     double phase = 0;  // j·Δφ [rad]
   };
+  // Cart c's loop: its coordinates' indices in s, side and crank phase [rad].
+  static Loop loopOf(const CartRig& c, const SimTK::State& s, double phase);
+  // One loop's q and u at crank angle φ2 and speed ω2, its entries of N's crank column (when the
+  // crank is free) and of the bias.
+  void placeLoop(const Loop& l, double phi, double w, SimTK::Vector& q, SimTK::Vector& u,
+                 SimTK::Vector* crank_column);
   const MultibodyModel& model_;
   bool crank_free_ = true, twist_free_ = false, cam_ = false;
   double prescribed_speed_ = 0;

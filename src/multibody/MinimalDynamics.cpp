@@ -21,6 +21,19 @@ Eigen::Map<Eigen::VectorXd> view(SimTK::Vector& v) {
   return Eigen::Map<Eigen::VectorXd>(v.size() ? &v[0] : nullptr, v.size());
 }
 
+// A cart's normals in the loop's affine form N = n0 + n_eps·ε + n_F·F from those at ε0 (n0),
+// per unit ε (ne) and per unit friction (nf) [N, N·s²/rad, N/N].
+void setAffineNormals(const GuideNormals& n0, const GuideNormals& ne, const GuideNormals& nf, double eps0,
+                      GuideLoopCart& t) {
+  // n0 holds the normals at ε0: shift to ε = 0 for the loop's affine form.
+  t.n0[0] = n0.front - ne.front * eps0;
+  t.n0[1] = n0.rear - ne.rear * eps0;
+  t.n_eps[0] = ne.front;
+  t.n_eps[1] = ne.rear;
+  t.n_F[0] = nf.front;
+  t.n_F[1] = nf.rear;
+}
+
 }  // namespace
 
 MinimalDynamics::MinimalDynamics(const MultibodyModel& model, const SimTK::State& s)
@@ -33,23 +46,25 @@ MinimalDynamics::MinimalDynamics(const MultibodyModel& model, const SimTK::State
   f_mobility_.resize(s.getNU());
   const int n = int(model.carts().size());
   q_crank_ = model.crank().getFirstQIndex(s);
-  for (const CartRig& c : model.carts()) {
-    CartData d;
-    d.q_cart = c.cart.getFirstQIndex(s);
-    d.u_cart = c.cart.getFirstUIndex(s);
-    d.u_rod = c.rod.isEmptyHandle() ? -1 : int(c.rod.getFirstUIndex(s));
-    d.body = c.cart.getMobilizedBodyIndex();
-    d.side = c.side;
-    d.cam = !c.cam.isEmptyHandle();
-    d.massless_rod = !d.cam && c.rod.isEmptyHandle();
-    d.mass = c.cart.getBodyMass(s);
-    d.p_com = c.cart.getBodyMassCenterStation(s);
-    d.p_pin = c.p_CrankPin;
-    carts_.push_back(d);
-  }
+  for (const CartRig& c : model.carts()) carts_.push_back(cartDataOf(c, s));
   loop_carts_.resize(n);
   loop_friction_.resize(n);
   loop_normals_.resize(2 * n);
+}
+
+MinimalDynamics::CartData MinimalDynamics::cartDataOf(const CartRig& c, const SimTK::State& s) {
+  CartData d;
+  d.q_cart = c.cart.getFirstQIndex(s);
+  d.u_cart = c.cart.getFirstUIndex(s);
+  d.u_rod = c.rod.isEmptyHandle() ? -1 : int(c.rod.getFirstUIndex(s));
+  d.body = c.cart.getMobilizedBodyIndex();
+  d.side = c.side;
+  d.cam = !c.cam.isEmptyHandle();
+  d.massless_rod = !d.cam && c.rod.isEmptyHandle();
+  d.mass = c.cart.getBodyMass(s);
+  d.p_com = c.cart.getBodyMassCenterStation(s);
+  d.p_pin = c.p_CrankPin;
+  return d;
 }
 
 bool MinimalDynamics::evaluate(SimTK::State& s, const MinimalCoordinates& coords) {
@@ -78,7 +93,8 @@ bool MinimalDynamics::evaluateImpl(SimTK::State& s, const MinimalCoordinates& co
   return true;
 }
 
-void MinimalDynamics::solveProjected(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction) {
+// inline (with the next): solveProjected's steps in every evaluation of the right-hand side.
+inline void MinimalDynamics::residualAtBias(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction) {
   const SimTK::MultibodySystem& system = model_.system();
   const SimTK::SimbodyMatterSubsystem& matter = model_.matter();
   // The inverse-dynamics pass and M·v need positions and velocities only (Simbody's tree
@@ -93,10 +109,11 @@ void MinimalDynamics::solveProjected(SimTK::State& s, const MinimalCoordinates& 
   matter.calcResidualForceIgnoringConstraints(s, f_mobility_, f_body_, coords.bias(), residual_);
   const int k = coords.freeSpeeds();
   for (int i = 0; i < k; ++i) matter.multiplyByM(s, coords.column(i), mn_[i]);
-  // The small products by Eigen on the Simbody vectors' storage: SimTK's Vector expressions
-  // allocate a temporary per term (~15 % of an evaluation at 4 carts).
-  const Eigen::Map<const Eigen::VectorXd> bias = view(coords.bias());
-  Eigen::Map<Eigen::VectorXd> residual = view(residual_), udot = view(udot_);
+}
+
+inline void MinimalDynamics::solveIndependentAccelerations(const MinimalCoordinates& coords,
+                                                           const Eigen::Map<Eigen::VectorXd>& residual) {
+  const int k = coords.freeSpeeds();
   Eigen::Matrix2d A = Eigen::Matrix2d::Identity();
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
   for (int i = 0; i < k; ++i) {
@@ -110,6 +127,16 @@ void MinimalDynamics::solveProjected(SimTK::State& s, const MinimalCoordinates& 
   nu_dot_.setZero();
   if (k == 1) nu_dot_(0) = b(0) / A(0, 0);
   if (k == 2) nu_dot_ = A.partialPivLu().solve(b);
+}
+
+void MinimalDynamics::solveProjected(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction) {
+  residualAtBias(s, coords, include_friction);
+  const int k = coords.freeSpeeds();
+  // The small products by Eigen on the Simbody vectors' storage: SimTK's Vector expressions
+  // allocate a temporary per term (~15 % of an evaluation at 4 carts).
+  const Eigen::Map<const Eigen::VectorXd> bias = view(coords.bias());
+  Eigen::Map<Eigen::VectorXd> residual = view(residual_), udot = view(udot_);
+  solveIndependentAccelerations(coords, residual);
   udot = bias;
   for (int i = 0; i < k; ++i) {
     udot += nu_dot_(i) * view(coords.column(i));
@@ -140,14 +167,7 @@ void MinimalDynamics::setUpFrictionLoop(const SimTK::State& s, const MinimalCoor
     GuideNormals ne{0, 0};
     if (crank_column)
       ne = cartNormals(j, (*crank_mn)[uc], ur >= 0 ? (*crank_mn)[ur] : 0.0, (*crank_column)[uc], none);
-    const GuideNormals nf = cartNormals(j, -1.0, 0.0, 0.0, unit_friction);
-    // n0 holds the normals at ε0: shift to ε = 0 for the loop's affine form.
-    t.n0[0] = n0.front - ne.front * eps0;
-    t.n0[1] = n0.rear - ne.rear * eps0;
-    t.n_eps[0] = ne.front;
-    t.n_eps[1] = ne.rear;
-    t.n_F[0] = nf.front;
-    t.n_F[1] = nf.rear;
+    setAffineNormals(n0, ne, cartNormals(j, -1.0, 0.0, 0.0, unit_friction), eps0, t);
     t.c = friction.frictionPerNormal(j, u[uc]);
     t.w = crank_column ? A_inv_(k_crank_, k_crank_) * (*crank_column)[uc] : 0.0;
   }

@@ -72,6 +72,12 @@ class MinimalDynamics {
   // The projected equations without the friction loop: ν̈, u̇ and the constraint forces, and the
   // inverse of their 1x1 or 2x2 matrix (A_inv_).
   void solveProjected(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction);
+  // Realizes s to Velocity and sums the applied forces f; the residual r0 = M·(Ṅ·ν̇) + c - f at
+  // ν̈ = 0 and the products M·N's columns.
+  void residualAtBias(SimTK::State& s, const MinimalCoordinates& coords, bool include_friction);
+  // ν̈ from Nᵀ·M·N·ν̈ = -Nᵀ·r0 (1x1 or 2x2; r0 = residual_, viewed), and that matrix's inverse
+  // into A_inv_.
+  void solveIndependentAccelerations(const MinimalCoordinates& coords, const Eigen::Map<Eigen::VectorXd>& residual);
   // Each cart's normal forces as affine functions of ε and of its friction, for the loop.
   void setUpFrictionLoop(const SimTK::State& s, const MinimalCoordinates& coords, double eps0);
   // The loop's frictions into the accelerations, constraint forces and applied forces.
@@ -97,6 +103,8 @@ class MinimalDynamics {
     SimTK::Vec3 p_pin{0};        // crank pin A in the crankshaft frame
     SimTK::Vec3 r_AB{0};         // A -> B in ground, this evaluation
   };
+  // Cart c's indices and constant mass properties in s.
+  static CartData cartDataOf(const CartRig& c, const SimTK::State& s);
 
   const MultibodyModel& model_;
   const int k_crank_;  // column of N for the crank speed, -1 when prescribed

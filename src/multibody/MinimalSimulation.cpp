@@ -43,15 +43,10 @@ double referenceKineticEnergy(const MultibodyModel& model, const SimTK::State& s
   return std::max(model.system().calcKineticEnergy(kin), 1e-300);
 }
 
-// Tolerances: every state against its natural scale, the same scales as the reduced model's
-// (IntegrationScales.h), with the constrained formulation's weights for the twist (coupling
-// torque to accuracy·M_ref) and the friction normal forces (GuideFriction::setErrorWeights).
-void setTolerances(OdeProblem& p, const MultibodyModel& model, const MinimalLayout& L, const SimTK::State& s0,
-                   const IntegrationScales& scales) {
-  const Scene& sc = model.scene();
+// The mechanical states' tolerances: φ2 absolute [rad], ω2, the twist and its rate against their
+// reference scales; every other state (the energy-audit integrals) against rtol·E_ref [J].
+void setMechanicalTolerances(OdeProblem& p, const MinimalLayout& L, const IntegrationScales& scales, double E_ref) {
   const double rtol = scales.cvode_rtol, w_ref = scales.speed;
-  const double E_ref = referenceKineticEnergy(model, s0, p.y0(L.phi), w_ref);
-  const int n_lag_states = model.hasFrictionLagStates() ? 2 * sc.carts.count : 0;
   p.rtol = rtol;
   p.atol = Eigen::VectorXd::Constant(L.size, rtol * E_ref);  // energy-audit integrals
   p.absolute_only.assign(L.size, false);
@@ -62,6 +57,17 @@ void setTolerances(OdeProblem& p, const MultibodyModel& model, const MinimalLayo
     p.atol(L.twist) = rtol * scales.twist;
     p.atol(L.twist_rate) = rtol * scales.twist_rate;
   }
+}
+
+// Tolerances: every state against its natural scale, the same scales as the reduced model's
+// (IntegrationScales.h), with the constrained formulation's weights for the twist (coupling
+// torque to accuracy·M_ref) and the friction normal forces (GuideFriction::setErrorWeights).
+void setTolerances(OdeProblem& p, const MultibodyModel& model, const MinimalLayout& L, const SimTK::State& s0,
+                   const IntegrationScales& scales) {
+  const Scene& sc = model.scene();
+  const double rtol = scales.cvode_rtol;
+  setMechanicalTolerances(p, L, scales, referenceKineticEnergy(model, s0, p.y0(L.phi), scales.speed));
+  const int n_lag_states = model.hasFrictionLagStates() ? 2 * sc.carts.count : 0;
   // The motor element's z come first (MultibodyModel::buildForces): the law's states against
   // their natural magnitudes, then the brake work (an energy integral, atol as above).
   const int n_motor = model.motorStateCount();
@@ -128,6 +134,17 @@ void setStructuredJacobian(OdeProblem& p, const MultibodyModel& model, MinimalSy
   };
 }
 
+// Highest Adams-Moulton order 5: the friction normal-force lag puts an eigenvalue λ = -1/τ_N
+// (-500 1/s at 2 ms) in every run with guide friction, at hλ ≈ -0.5 ... -2 for the 1-4 ms
+// steps of accuracies 1e-4 ... 1e-8. Adams-Moulton's stability interval on the negative real
+// axis shrinks with the order (about [-1.8, 0] at order 5, [-1.2, 0] at 6, shorter above), so
+// a run that climbs above order 5 there is intermittently unstable in that mode, which its
+// error estimate sees only after the damage: measured on recuperative-2cart without gravity,
+// 1 s at accuracy 0.7e-10 ... 1.5e-10, coupling-torque error 1.9e-10 ... 7.2e-10 with order ≤ 5
+// against 4.2e-10 ... 2.9e-8 with order ≤ 12; balanced-4cart (10 s, accuracy 1e-2 ... 1e-6)
+// costs the same either way (CVODE seldom goes above order 5 there).
+constexpr int kMinimalAdamsMaxOrder = 5;
+
 // The ODE CVODE integrates: the minimal system's right-hand side from y0, its tolerances, its
 // Newton matrix and its method.
 OdeProblem minimalProblem(const MultibodyModel& model, MinimalSystem& ms, const Eigen::VectorXd& y0,
@@ -143,16 +160,7 @@ OdeProblem minimalProblem(const MultibodyModel& model, MinimalSystem& ms, const 
   setTolerances(p, model, ms.layout(), s0, scales);
   if (model.options().structured_jacobian) setStructuredJacobian(p, model, ms, ms.layout());
   p.max_step = scales.max_step;  // a cam drive's (IntegrationScales.h), as the reduced model's
-  // Highest Adams-Moulton order 5: the friction normal-force lag puts an eigenvalue λ = -1/τ_N
-  // (-500 1/s at 2 ms) in every run with guide friction, at hλ ≈ -0.5 ... -2 for the 1-4 ms
-  // steps of accuracies 1e-4 ... 1e-8. Adams-Moulton's stability interval on the negative real
-  // axis shrinks with the order (about [-1.8, 0] at order 5, [-1.2, 0] at 6, shorter above), so
-  // a run that climbs above order 5 there is intermittently unstable in that mode, which its
-  // error estimate sees only after the damage: measured on recuperative-2cart without gravity,
-  // 1 s at accuracy 0.7e-10 ... 1.5e-10, coupling-torque error 1.9e-10 ... 7.2e-10 with order ≤ 5
-  // against 4.2e-10 ... 2.9e-8 with order ≤ 12; balanced-4cart (10 s, accuracy 1e-2 ... 1e-6)
-  // costs the same either way (CVODE seldom goes above order 5 there).
-  p.max_order = 5;
+  p.max_order = kMinimalAdamsMaxOrder;
   // A stiff motor law (motor/Stiffness.h: the space-phasor machine's electrical modes) switches
   // to BDF, with the same structured Newton matrix.
   const MotorForce* motor = model.motorForce();
@@ -183,29 +191,35 @@ class FormulationSelfCheck {
     const double omega = model_.crankSpeed(s);
     double check = relativeDifference(s.getUDot(), udot_own, omega * omega);
     model_.observeReactions(s, re_simbody_);
-    if (model_.hasGuideFriction()) {
-      const int n_carts = model_.scene().carts.count;
-      SimTK::Vector normals_constrained(2 * n_carts);
-      const ColumnLayout& L = model_.reactionsLayout();
-      for (int j = 0; j < n_carts; ++j) {
-        normals_constrained[2 * j] = L.get(re_simbody_, Column::N_front, j + 1);
-        normals_constrained[2 * j + 1] = L.get(re_simbody_, Column::N_rear, j + 1);
-      }
-      check = std::max(check, relativeDifference(normals_constrained, normals_own));
-    }
+    if (model_.hasGuideFriction()) check = std::max(check, relativeDifference(constrainedNormals(), normals_own));
     if (std::isfinite(check)) stats_.formulation_self_check = std::max(stats_.formulation_self_check, check);
-    if (own_row) {
-      for (std::size_t i = 1; i < re_simbody_.size(); ++i) {
-        ReactionCheck& c = stats_.reaction_self_check[i - 1];
-        c.max_difference = std::max(c.max_difference, std::abs((*own_row)[i] - re_simbody_[i]));
-        c.max_value = std::max(c.max_value, std::abs(re_simbody_[i]));
-      }
-    }
+    if (own_row) compareReactionRow(*own_row);
     ++stats_.self_check_rows;
     stats_.constraint_error_max = std::max(stats_.constraint_error_max, model_.constraintError(s));
   }
 
  private:
+  // The guide normal forces of Simbody's constrained solve, N_front, N_rear per cart [N].
+  SimTK::Vector constrainedNormals() const {
+    const int n_carts = model_.scene().carts.count;
+    SimTK::Vector normals(2 * n_carts);
+    const ColumnLayout& L = model_.reactionsLayout();
+    for (int j = 0; j < n_carts; ++j) {
+      normals[2 * j] = L.get(re_simbody_, Column::N_front, j + 1);
+      normals[2 * j + 1] = L.get(re_simbody_, Column::N_rear, j + 1);
+    }
+    return normals;
+  }
+
+  // Each reaction column's largest difference between the O(n) row and Simbody's, and its scale.
+  void compareReactionRow(const std::vector<double>& own_row) {
+    for (std::size_t i = 1; i < re_simbody_.size(); ++i) {
+      ReactionCheck& c = stats_.reaction_self_check[i - 1];
+      c.max_difference = std::max(c.max_difference, std::abs(own_row[i] - re_simbody_[i]));
+      c.max_value = std::max(c.max_value, std::abs(re_simbody_[i]));
+    }
+  }
+
   const MultibodyModel& model_;
   RunStats& stats_;
   std::size_t interval_;

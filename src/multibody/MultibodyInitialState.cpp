@@ -37,6 +37,20 @@ SimTK::State MultibodyModel::closedFormKinematics(double phi, double omega, doub
   // Carts of different masses: the lightest is the one a friction error moves most.
   if (friction_force_) friction_force_->setErrorWeights(s, scene_.lightestCartMassWithRodShare());
   if (motor_force_) motor_force_->setErrorWeights(s);
+  weightTwists(s);
+  system_.realize(s, SimTK::Stage::Instance);
+  IndependentState x;
+  x.crank_angle = phi;
+  x.crank_speed = omega;
+  x.twist = twist;
+  x.twist_rate = 0.0;  // the motor side starts at the crank's speed
+  // A prescribed crank speed is the options' (MinimalCoordinates::apply writes it).
+  MinimalCoordinates(*this, s).apply(0.0, x, s);
+  system_.realize(s, SimTK::Stage::Velocity);
+  return s;
+}
+
+void MultibodyModel::weightTwists(SimTK::State& s) const {
   if (elastic()) {
     // Simbody counts 1 rad (1 rad/s) as a unit change of every coordinate (speed), but the
     // coupling twist is ~torque/c: 1e-6 rad at c = 1e9, so it was held to ~100 % of itself and
@@ -55,16 +69,6 @@ SimTK::State MultibodyModel::closedFormKinematics(double phi, double omega, doub
       s.updUWeights(matter_.getMySubsystemIndex())[torsion_force_->segmentBody(k).getFirstUIndex(s)] =
           std::max(1.0, torsion_force_->stiffness(k) / torque_scale);
   }
-  system_.realize(s, SimTK::Stage::Instance);
-  IndependentState x;
-  x.crank_angle = phi;
-  x.crank_speed = omega;
-  x.twist = twist;
-  x.twist_rate = 0.0;  // the motor side starts at the crank's speed
-  // A prescribed crank speed is the options' (MinimalCoordinates::apply writes it).
-  MinimalCoordinates(*this, s).apply(0.0, x, s);
-  system_.realize(s, SimTK::Stage::Velocity);
-  return s;
 }
 
 SimTK::State MultibodyModel::assembledState(double phi, double omega, double twist) const {
@@ -76,6 +80,12 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
   system_.realize(s, SimTK::Stage::Velocity);
   system_.projectU(s, 1e-13);
   startMotor(s);
+  startFrictionNormals(s);
+  system_.realize(s, SimTK::Stage::Acceleration);
+  return s;
+}
+
+void MultibodyModel::startFrictionNormals(SimTK::State& s) const {
   if (friction_force_ && friction_force_->lagged()) {
     // Start the friction normal forces at the reactions they produce themselves (fixed point;
     // it contracts by a factor of order f per pass).
@@ -93,8 +103,6 @@ SimTK::State MultibodyModel::assembledState(double phi, double omega, double twi
       throw std::invalid_argument("multibody model: at the initial state the " +
                                   describeLoopFailure(dyn.loopResult()));
   }
-  system_.realize(s, SimTK::Stage::Acceleration);
-  return s;
 }
 
 SimTK::State MultibodyModel::initialState() const {

@@ -190,24 +190,13 @@ void MultibodyModel::addForceElement(SimTK::Force::Custom::Implementation* f, co
 void MultibodyModel::buildForces() {
   const Scene& sc = scene_;
   if (sc.hasMotor()) addMotorForce();
-  if (sc.coupling.type == CouplingType::Elastic) {
-    auto* f = new ElasticCoupling(motor_, couplingLaw(sc));
-    coupling_force_ = f;
-    addForceElement(f, std::string(sc.hasCouplingDamping() ? "ElasticCoupling(spring+damper" : "ElasticCoupling(spring") +
-                           (sc.hasBacklash() ? "+backlash)" : ")"));
-  }
+  if (sc.coupling.type == CouplingType::Elastic) addElasticCoupling();
   if (sc.hasGravity()) {
     gravity_ = SimTK::Force::Gravity(forces_, matter_, -SimTK::YAxis, sc.loads.gravity);
     applied_order_.push_back(nullptr);
     inventory_.force_elements.push_back("Gravity");
   }
-  if (sc.hasRollerLoads()) {
-    std::vector<Loads> per_cart;
-    for (int j = 0; j < sc.carts.count; ++j) per_cart.push_back(sc.cartLoads(j));
-    auto* f = new RollerLoadForce(carts_, per_cart, sc.carts.geometry);
-    load_force_ = f;
-    addForceElement(f, "RollerLoads");
-  }
+  if (sc.hasRollerLoads()) addRollerLoads();
   if (sc.hasGuideFriction()) {
     auto* f = new GuideFriction(forces_, matter_, carts_, sc.loads, sc.carts.geometry);
     friction_force_ = f;
@@ -218,6 +207,22 @@ void MultibodyModel::buildForces() {
   SimTK::Force::Custom(forces_, meter);
   energy_meter_ = meter;
   applied_order_.push_back(meter);
+}
+
+void MultibodyModel::addElasticCoupling() {
+  const Scene& sc = scene_;
+  auto* f = new ElasticCoupling(motor_, couplingLaw(sc));
+  coupling_force_ = f;
+  addForceElement(f, std::string(sc.hasCouplingDamping() ? "ElasticCoupling(spring+damper" : "ElasticCoupling(spring") +
+                         (sc.hasBacklash() ? "+backlash)" : ")"));
+}
+
+void MultibodyModel::addRollerLoads() {
+  std::vector<Loads> per_cart;
+  for (int j = 0; j < scene_.carts.count; ++j) per_cart.push_back(scene_.cartLoads(j));
+  auto* f = new RollerLoadForce(carts_, per_cart, scene_.carts.geometry);
+  load_force_ = f;
+  addForceElement(f, "RollerLoads");
 }
 
 void MultibodyModel::addMotorForce() {

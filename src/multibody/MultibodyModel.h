@@ -198,6 +198,12 @@ class MultibodyModel {
   // then the supply's events due at t = 0 (a speed trigger the initial speed has passed already).
   // State realized to Velocity on return; nothing without a motor.
   void startMotor(SimTK::State& s) const;
+  // Error weights of the coupling twist and of each shaft segment's twist: one unit carries the
+  // breakdown torque at the crank, M_kr·u·η (s realized to Model).
+  void weightTwists(SimTK::State& s) const;
+  // The guide-friction normal forces at t = 0: the lag states at the reactions they produce, or
+  // the algebraic law's loop solved (std::invalid_argument when it has no solution).
+  void startFrictionNormals(SimTK::State& s) const;
   void buildDrive();
   // The crankshaft body (or one throw) of inertia J [kg·m²] about its axis, carrying the split
   // rods' pin masses of `carts`.
@@ -214,6 +220,16 @@ class MultibodyModel {
   // (addAppliedForces sums them in it).
   void buildForces();
   void addMotorForce();
+  // The elastic coupling's spring (and damper, backlash) between motor side and crankshaft.
+  void addElasticCoupling();
+  // The roller loads of every cart.
+  void addRollerLoads();
+  // The motor side's and the crank's angles, speeds and accelerations into a timeseries row.
+  void setShaftMotion(const SimTK::State& s, const SimTK::Vector& udot, std::vector<double>& timeseries_row) const;
+  // Each cart's position, speed and acceleration (ground x) into a timeseries row.
+  void setCartMotion(const SimTK::State& s, const SimTK::Vector& udot, std::vector<double>& timeseries_row) const;
+  // The drive's columns of a timeseries row: motor, reducer losses, tooth contact, shaft torques.
+  void setDriveColumns(const SimTK::State& s, std::vector<double>& timeseries_row) const;
   // Hands f to the force subsystem, in applied_order_ and the inventory under inventory_name.
   void addForceElement(SimTK::Force::Custom::Implementation* f, const std::string& inventory_name);
   void fillInventory();

@@ -35,6 +35,17 @@ void MultibodyModel::observe(const SimTK::State& s, std::vector<double>& ts,
 
 void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& udot,
                                    std::vector<double>& ts) const {
+  const ColumnLayout& L = timeseries_layout_;
+  L.reset(ts);
+  L.set(ts, Column::t, s.getTime());
+  setShaftMotion(s, udot, ts);
+  L.set(ts, Column::coupling_torque, couplingTorque(s, udot));
+  L.set(ts, Column::motor_torque, motorTorque(s));
+  setCartMotion(s, udot, ts);
+  setDriveColumns(s, ts);
+}
+
+void MultibodyModel::setShaftMotion(const SimTK::State& s, const SimTK::Vector& udot, std::vector<double>& ts) const {
   // With an elastic coupling the motor side is mobilized on the crankshaft: its q, u, u̇ are the
   // twist and its rates; with a rigid coupling motor_ is the crankshaft and they are zero.
   const bool elastic = motor_.getMobilizedBodyIndex() != crank_.getMobilizedBodyIndex();
@@ -45,8 +56,6 @@ void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& u
   const double twist_accel = elastic ? udot[motor_.getFirstUIndex(s)] : 0.0;
   const double phi1 = phi2 + twist, w1 = w2 + twist_rate, e1 = e2 + twist_accel;
   const ColumnLayout& L = timeseries_layout_;
-  L.reset(ts);
-  L.set(ts, Column::t, s.getTime());
   L.set(ts, Column::phi_motor, phi1);
   L.set(ts, Column::phi_crank, phi2);
   L.set(ts, Column::omega_motor, w1);
@@ -56,14 +65,20 @@ void MultibodyModel::observeMotion(const SimTK::State& s, const SimTK::Vector& u
   L.set(ts, Column::twist, twist);
   L.set(ts, Column::twist_rate, twist_rate);
   L.set(ts, Column::twist_accel, twist_accel);
-  L.set(ts, Column::coupling_torque, couplingTorque(s, udot));
-  L.set(ts, Column::motor_torque, motorTorque(s));
+}
+
+void MultibodyModel::setCartMotion(const SimTK::State& s, const SimTK::Vector& udot, std::vector<double>& ts) const {
+  const ColumnLayout& L = timeseries_layout_;
   for (size_t j = 0; j < carts_.size(); ++j) {
     const CartRig& c = carts_[j];
     L.set(ts, Column::x_cart, int(j) + 1, c.x(s));
     L.set(ts, Column::v_cart, int(j) + 1, c.v(s));
     L.set(ts, Column::a_cart, int(j) + 1, udot[c.cart.getFirstUIndex(s)]);
   }
+}
+
+void MultibodyModel::setDriveColumns(const SimTK::State& s, std::vector<double>& ts) const {
+  const ColumnLayout& L = timeseries_layout_;
   if (motor_force_) {
     const MotorForce& m = *motor_force_;
     const double current = L.has(Column::stator_current) ? m.evaluate(s).stator_current : 0.0;

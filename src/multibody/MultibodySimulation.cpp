@@ -296,6 +296,13 @@ class ConstrainedStepping {
   bool stop_ = false;
 };
 
+// The energy audit from e0 to the last recorded row s1, where the tables end too (a run stopped
+// early may have integrated past it).
+EnergyAudit auditToLastRow(const MultibodyModel& model, const EnergySnapshot& e0, const SimTK::State& s1) {
+  model.system().realize(s1, SimTK::Stage::Acceleration);
+  return energyAuditBetween(e0, model.energy(s1));
+}
+
 // The constrained formulation: Simbody's integrator on the full coordinates with the loop
 // constraints, rows interpolated within its steps (ConstrainedStepping).
 RunResult simulateConstrained(const MultibodyModel& model, const RunControl& control) {
@@ -318,11 +325,7 @@ RunResult simulateConstrained(const MultibodyModel& model, const RunControl& con
   run.stats.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   run.crank_speed_extrema = stepping.extremaUpToLastRow();
   stepping.writeCounts(run.stats);
-  // The audit ends at the last recorded row, where the tables end too (a run stopped early may
-  // have integrated past it).
-  const SimTK::State& s1 = stepping.lastRow();
-  model.system().realize(s1, SimTK::Stage::Acceleration);
-  run.energy = energyAuditBetween(e0, model.energy(s1));
+  run.energy = auditToLastRow(model, e0, stepping.lastRow());
   return run;
 }
 

@@ -190,23 +190,40 @@ struct CvodeIntegrator::Impl {
   static int jacobian(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector tmp1,
                       N_Vector, N_Vector) {
     auto* self = static_cast<Impl*>(user);
-    const JacobianStructure& js = self->problem.jacobian;
     const long n = NV_LENGTH_S(y);
-    if (CVodeGetErrWeights(self->cv, self->ewt) != CV_SUCCESS) return -1;
-    // The step h being attempted: CVODE's γ = h·rl1 with rl1 = 1/l1 of the current method.
-    realtype t_cur, gamma, rl1;
-    N_Vector y_pred, y_n, f_n, zn1;
-    void* data;
-    const int got = CVodeGetNonlinearSystemData(self->cv, &t_cur, &y_pred, &y_n, &f_n, &gamma, &rl1, &zn1, &data);
-    if (got != CV_SUCCESS || !(rl1 != 0.0)) return -1;
-    const double h = gamma / rl1;
+    double h = 0.0;
+    if (CVodeGetErrWeights(self->cv, self->ewt) != CV_SUCCESS || !attemptedStep(self->cv, h)) return -1;
     const double uround = std::numeric_limits<double>::epsilon();  // SUNDIALS' UNIT_ROUNDOFF
-    const Eigen::Map<const Eigen::VectorXd> f0(NV_DATA_S(fy), n), w(NV_DATA_S(self->ewt), n),
-        f1(NV_DATA_S(tmp1), n);
+    const Eigen::Map<const Eigen::VectorXd> f0(NV_DATA_S(fy), n), w(NV_DATA_S(self->ewt), n);
     const double f_norm = std::sqrt((f0.cwiseProduct(w)).squaredNorm() / double(n));
     const double min_inc = f_norm != 0.0 ? 1000.0 * std::abs(h) * uround * double(n) * f_norm : 1.0;
     Eigen::Map<Eigen::MatrixXd> jac(SUNDenseMatrix_Data(J), n, n);  // column-major, like SUNDIALS
     jac.setZero();
+    const int flag = differenceQuotientColumns(t, y, fy, tmp1, user, min_inc, jac);
+    return flag != 0 ? flag : self->addKnownEntries(t, NV_DATA_S(y), jac);
+  }
+
+  // The step h being attempted: CVODE's γ = h·rl1 with rl1 = 1/l1 of the current method.
+  static bool attemptedStep(void* cv, double& h) {
+    realtype t_cur, gamma, rl1;
+    N_Vector y_pred, y_n, f_n, zn1;
+    void* data;
+    const int got = CVodeGetNonlinearSystemData(cv, &t_cur, &y_pred, &y_n, &f_n, &gamma, &rl1, &zn1, &data);
+    if (got != CV_SUCCESS || !(rl1 != 0.0)) return false;
+    h = gamma / rl1;
+    return true;
+  }
+
+  // The columns of the states without a known column, (f(y + inc·e_j) − f(y))/inc, and the
+  // known diagonal of the others; 0, or rhs's flag when an evaluation failed.
+  static int differenceQuotientColumns(realtype t, N_Vector y, N_Vector fy, N_Vector tmp1, void* user,
+                                       double min_inc, Eigen::Map<Eigen::MatrixXd>& jac) {
+    auto* self = static_cast<Impl*>(user);
+    const JacobianStructure& js = self->problem.jacobian;
+    const long n = NV_LENGTH_S(y);
+    const double uround = std::numeric_limits<double>::epsilon();
+    const Eigen::Map<const Eigen::VectorXd> f0(NV_DATA_S(fy), n), w(NV_DATA_S(self->ewt), n),
+        f1(NV_DATA_S(tmp1), n);
     double* yv = NV_DATA_S(y);
     for (long j = 0; j < n; ++j) {
       if (!js.difference_quotient[j]) {
@@ -222,16 +239,21 @@ struct CvodeIntegrator::Impl {
       const double inc_inv = 1.0 / inc;
       jac.col(j) = inc_inv * f1 - inc_inv * f0;
     }
-    if (js.known_entries) {
-      try {
-        if (!js.known_entries(t, yv, jac)) return 1;
-      } catch (const std::exception& ex) {
-        self->rhs_exception = ex.what();
-        return -1;
-      }
-      if (!jac.allFinite()) return 1;
-    }
     return 0;
+  }
+
+  // The problem's known off-diagonal entries added to jac: 0, 1 (not evaluable at y, or not
+  // finite: CVODE retries with a smaller step) or -1 (it threw).
+  int addKnownEntries(realtype t, const double* y, Eigen::Map<Eigen::MatrixXd>& jac) {
+    const JacobianStructure& js = problem.jacobian;
+    if (!js.known_entries) return 0;
+    try {
+      if (!js.known_entries(t, y, jac)) return 1;
+    } catch (const std::exception& ex) {
+      rhs_exception = ex.what();
+      return -1;
+    }
+    return jac.allFinite() ? 0 : 1;
   }
 
   static int rootFn(realtype t, N_Vector y, realtype* gout, void* user) {

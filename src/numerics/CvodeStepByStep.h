@@ -41,16 +41,8 @@ class CvodeStepByStep {
   // root, the root's time), while CVodeGetDky still reaches inside that step.
   template <class Observe>
   int advance(void* cv, double t_out, N_Vector y, realtype& t_ret, Observe&& observe) {
+    if (pending_) return handOutPending(cv, t_out, y, t_ret);
     while (true) {
-      if (pending_) {
-        if (t_out >= pending_t_) {
-          N_VScale(1.0, pending_y_, y);
-          t_ret = pending_t_;
-          pending_ = false;
-          return pending_flag_;
-        }
-        return interpolate(cv, t_out, y, t_ret);  // before the pending root or stop, in the same step
-      }
       realtype tn = t_out;
       CVodeGetCurrentTime(cv, &tn);
       if (stepped_ && tn >= t_out) return interpolate(cv, t_out, y, t_ret);  // the last step passed t_out
@@ -58,20 +50,35 @@ class CvodeStepByStep {
       if (flag < 0) return flag;
       stepped_ = true;
       observe(double(t_ret));
-      if (flag == CV_ROOT_RETURN || flag == CV_TSTOP_RETURN) {
-        if (t_ret <= t_out) return flag;
-        if (!pending_y_) pending_y_ = N_VClone(y);
-        N_VScale(1.0, y, pending_y_);
-        pending_t_ = t_ret;
-        pending_flag_ = flag;
-        pending_ = true;
-        return interpolate(cv, t_out, y, t_ret);
-      }
+      if (flag == CV_ROOT_RETURN || flag == CV_TSTOP_RETURN)
+        return t_ret <= t_out ? flag : keepPending(cv, t_out, y, t_ret, flag);
       if (t_ret >= t_out) return t_ret > t_out ? interpolate(cv, t_out, y, t_ret) : flag;
     }
   }
 
  private:
+  // The pending root or stop once t_out reaches it; before it, y interpolated at t_out in the
+  // same step.
+  int handOutPending(void* cv, double t_out, N_Vector y, realtype& t_ret) {
+    if (t_out >= pending_t_) {
+      N_VScale(1.0, pending_y_, y);
+      t_ret = pending_t_;
+      pending_ = false;
+      return pending_flag_;
+    }
+    return interpolate(cv, t_out, y, t_ret);
+  }
+
+  // A root or stop (flag) at t_ret past t_out: kept for a later call, y interpolated at t_out.
+  int keepPending(void* cv, double t_out, N_Vector y, realtype& t_ret, int flag) {
+    if (!pending_y_) pending_y_ = N_VClone(y);
+    N_VScale(1.0, y, pending_y_);
+    pending_t_ = t_ret;
+    pending_flag_ = flag;
+    pending_ = true;
+    return interpolate(cv, t_out, y, t_ret);
+  }
+
   static int interpolate(void* cv, double t_out, N_Vector y, realtype& t_ret) {
     t_ret = t_out;
     return CVodeGetDky(cv, t_out, 0, y) == CV_SUCCESS ? CV_SUCCESS : CV_BAD_T;

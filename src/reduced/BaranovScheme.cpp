@@ -158,10 +158,7 @@ class BaranovMarch {
   bool step() {
     const ModelEvaluation e = m_.evaluate(node_.state(m_));
     ++res_.stats.realizations;
-    if (e.friction_loop.status != LoopStatus::Solved) {
-      rows_.recorder().fail(statusAt("the run stopped", node_.t) + ": the " + describeLoopFailure(e.friction_loop));
-      return false;
-    }
+    if (!frictionLoopSolved(e)) return false;
     const double J_next = m_.reducedInertia(node_.phi + dphi_);
     const double w = node_.w, w_next = nextSpeed(w, J_i_, J_next, e.motor_torque - e.load_torque, dphi_);
     if (!(w_next > 0.0) || !std::isfinite(w_next)) {
@@ -172,14 +169,25 @@ class BaranovMarch {
     const double eps = (w_next - w) / (t_next - node_.t);         // Loveikin and Pochka (2007) eq. (11)
     work_.addStep(m_, e, w, dphi_);
     const bool go = rows_.emitUpTo(node_, t_next, node_.phi + dphi_, w_next, eps);
-    // The scheme's ω is linear within each step (eq. (10), (11)): its extrema lie on the nodes,
-    // where the slope changes sign.
-    if ((slope_before_ < 0.0 && w_next > w) || (slope_before_ > 0.0 && w_next < w)) extrema_.record(node_.t, w);
-    if (w_next != w) slope_before_ = w_next - w;
+    recordExtremum(w, w_next);
     node_ = {node_.phi + dphi_, w_next, t_next};
     J_i_ = J_next;
     ++res_.stats.steps;
     return go;  // false: a stop rule ended the run at a row inside this step
+  }
+
+  // Whether the evaluation at node_ solved its guide-friction loop; if not, the run stops there.
+  bool frictionLoopSolved(const ModelEvaluation& e) {
+    if (e.friction_loop.status == LoopStatus::Solved) return true;
+    rows_.recorder().fail(statusAt("the run stopped", node_.t) + ": the " + describeLoopFailure(e.friction_loop));
+    return false;
+  }
+
+  // The scheme's ω is linear within each step (eq. (10), (11)): its extrema lie on the nodes,
+  // where the slope changes sign; w at node_, w_next at the next node [rad/s].
+  void recordExtremum(double w, double w_next) {
+    if ((slope_before_ < 0.0 && w_next > w) || (slope_before_ > 0.0 && w_next < w)) extrema_.record(node_.t, w);
+    if (w_next != w) slope_before_ = w_next - w;
   }
 
   const ReducedModel& m_;

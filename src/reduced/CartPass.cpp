@@ -9,6 +9,14 @@ namespace {
 
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+// The pass's quasi-static lock: the first cart j that self-locks, with its loop gain.
+void noteFirstLock(GuideLoopResult& locked, int j, double gain) {
+  if (locked.status != LoopStatus::Solved) return;
+  locked.status = LoopStatus::SelfLocking;
+  locked.cart = j;
+  locked.gain = gain;
+}
+
 }  // namespace
 
 const ReducedModel::CartPass& ReducedModel::cartPass(double phi, double w2) const {
@@ -22,6 +30,16 @@ const ReducedModel::CartPass& ReducedModel::cartPass(double phi, double w2) cons
   pass.omega = w2;
   pass.locked = GuideLoopResult{};
   pass.carts.clear();  // keeps its capacity
+  sumOverCarts(pass, phi, w2);
+  if (usesLoopTerms()) {
+    pass.loop.resize(pass.carts.size());
+    for (int j = 0; j < cartCount(); ++j) loopTerms(j, pass.carts[size_t(j)], w2, pass.loop[size_t(j)]);
+  }
+  pass.valid = true;
+  return pass;
+}
+
+void ReducedModel::sumOverCarts(CartPass& pass, double phi, double w2) const {
   double J = J_crank_, dJ = 0.0, M = 0.0, P_friction = 0.0, P_load = 0.0;
   for (int j = 0; j < cartCount(); ++j) {
     const CartEvaluation c = kinetostatic_ ? cartKinematics(j, phi, w2) : evaluateCart(j, phi, w2, 0.0);
@@ -35,11 +53,7 @@ const ReducedModel::CartPass& ReducedModel::cartPass(double phi, double w2) cons
     } else {
       M += rodGravityTorque(p, c.theta) - c.generalized_force;
       P_friction -= sigma * c.statics.friction * v;
-      if (c.statics.locked && pass.locked.status == LoopStatus::Solved) {
-        pass.locked.status = LoopStatus::SelfLocking;
-        pass.locked.cart = j;
-        pass.locked.gain = c.statics.gain;
-      }
+      if (c.statics.locked) noteFirstLock(pass.locked, j, c.statics.gain);
     }
     P_load -= sigma * c.roller_force * v;
     pass.carts.push_back(c);
@@ -49,12 +63,6 @@ const ReducedModel::CartPass& ReducedModel::cartPass(double phi, double w2) cons
   pass.M = M;
   pass.P_friction = P_friction;
   pass.P_load = P_load;
-  if (usesLoopTerms()) {
-    pass.loop.resize(pass.carts.size());
-    for (int j = 0; j < cartCount(); ++j) loopTerms(j, pass.carts[size_t(j)], w2, pass.loop[size_t(j)]);
-  }
-  pass.valid = true;
-  return pass;
 }
 
 }  // namespace rollerdyn

@@ -45,46 +45,50 @@ Eigen::VectorXd absoluteTolerances(const ReducedModel& m, const IntegrationScale
   return am;
 }
 
+// Highest Adams order: 6 (CVODE's default is 12). Higher Adams-Moulton orders have smaller
+// stability regions, and a stiff coupling's torsional mode (p0 ≈ 4.5e3 rad/s at c = 1e9) then
+// sits near their edge. Measured with scripts/hardcase-constants.py (reduced model, every hard
+// case at a·{0.7, 0.85, 1, 1.2, 1.4}) for caps 4, 5, 6 and 12: at 6 every largest constant
+// equals 12's (the runs never go above 6) except StiffCoupling1e9WithDamping's energy, whose
+// outlier at 0.85·a (46.5·a·E) disappears (0.0065), and ThousandRevolutionsWithoutDrift, 1.1-1.3x
+// smaller; caps 5 and 4 make that case 2x and others (r/l = 0.95: speed 16 and 71 against 13)
+// worse. On the shipped scenes at 1e-5 ... 1e-8 cap 6 takes the same steps (±1 %) and has the
+// same crank-speed error as 12. The stiff case still has rare outliers at other accuracies (19
+// accuracies 0.6·a ... 1.5·a: 30.8·a·E at 1.15·a with either cap, 12.9 at 0.6·a with 6): an
+// error accepted within the first 5 ms of the stiff mode's start transient, not an order
+// effect; its claims cover them (test_hardcases.cpp).
+constexpr int kAdamsMaxOrder = 6;
+
 // CVODE's method and accuracy for the reduced model: tolerances per state, Adams or BDF, the
 // highest order, the cam drive's step cap.
+//
+// CVODE's usual weights 1/(rtol·|y_i| + atol_i) for every state except the crank angle, which is
+// held to the ABSOLUTE accuracy atol_φ: an angle error means the same after 1 turn or 1000
+// turns, whereas rtol·|φ| would loosen the angle (and with it J(φ), the kinematics and the
+// energy balance) as the crank keeps turning.
+//
+// Adams-Moulton (orders 1-12) with a Newton corrector on a dense difference-quotient Jacobian.
+// Measured against BDF on the Loveikin, Pochka, Romasevych (2018) scenes: as fast or faster (fewer steps on these smooth,
+// mildly stiff equations) and 10-100x smaller energy-audit residuals at the same accuracy
+// (BDF's low-order, damped error drifts the energy of the periodic J(φ) motion). Newton rather
+// than fixed-point iteration keeps the corrector converging through the stiff patches: the
+// smoothed load laws have a slope (F1+F2)/v_s·x_B'²/J ~ 10³-10⁴ s⁻¹ within a few v_s of each
+// cart reversal (and the creep of a stalled drive lives there).
+// Re-measured (model/balanced-4cart.yaml, error of ω against a run at accuracy
+// 1e-10): for an ω error <= 1e-6 BDF needs ~1.6x the steps of Adams, fixed-point iteration
+// ~1.8x the right-hand sides;
+// capping the order (4, 5) does not help the cost (the steady state runs at order 3-6); tighter or
+// looser twist weights (ψ_ref x0.1 ... x3), a less frequent Jacobian (msbp 50) and other step
+// bounds only move along the same work-precision curve. So CVODE's defaults stay; the cost
+// per step is what was cut (allocation-free right-hand side, numerics/EigenSundials.h).
+//
+// A stiff motor law (motor/Stiffness.h: the space-phasor machine's electrical transients)
+// switches to BDF: Adams would be held to steps set by the stability of those modes.
 void setMethodAndAccuracy(const ReducedModel& m, const IntegrationScales& scales, OdeProblem& p, RunResult& res) {
   p.rtol = scales.cvode_rtol;
   p.atol = absoluteTolerances(m, scales);
-  // CVODE's usual weights 1/(rtol·|y_i| + atol_i) for every state except the crank angle, which is
-  // held to the ABSOLUTE accuracy atol_φ: an angle error means the same after 1 turn or 1000
-  // turns, whereas rtol·|φ| would loosen the angle (and with it J(φ), the kinematics and the
-  // energy balance) as the crank keeps turning.
   p.absolute_only.assign(m.stateSize(), false);
-  p.absolute_only[m.iPhi()] = true;
-  // Adams-Moulton (orders 1-12) with a Newton corrector on a dense difference-quotient Jacobian.
-  // Measured against BDF on the Loveikin, Pochka, Romasevych (2018) scenes: as fast or faster (fewer steps on these smooth,
-  // mildly stiff equations) and 10-100x smaller energy-audit residuals at the same accuracy
-  // (BDF's low-order, damped error drifts the energy of the periodic J(φ) motion). Newton rather
-  // than fixed-point iteration keeps the corrector converging through the stiff patches: the
-  // smoothed load laws have a slope (F1+F2)/v_s·x_B'²/J ~ 10³-10⁴ s⁻¹ within a few v_s of each
-  // cart reversal (and the creep of a stalled drive lives there).
-  // Re-measured (model/balanced-4cart.yaml, error of ω against a run at accuracy
-  // 1e-10): for an ω error <= 1e-6 BDF needs ~1.6x the steps of Adams, fixed-point iteration
-  // ~1.8x the right-hand sides;
-  // capping the order (4, 5) does not help the cost (the steady state runs at order 3-6); tighter or
-  // looser twist weights (ψ_ref x0.1 ... x3), a less frequent Jacobian (msbp 50) and other step
-  // bounds only move along the same work-precision curve. So CVODE's defaults stay; the cost
-  // per step is what was cut (allocation-free right-hand side, numerics/EigenSundials.h).
-  // Highest Adams order: 6 (CVODE's default is 12). Higher Adams-Moulton orders have smaller
-  // stability regions, and a stiff coupling's torsional mode (p0 ≈ 4.5e3 rad/s at c = 1e9) then
-  // sits near their edge. Measured with scripts/hardcase-constants.py (reduced model, every hard
-  // case at a·{0.7, 0.85, 1, 1.2, 1.4}) for caps 4, 5, 6 and 12: at 6 every largest constant
-  // equals 12's (the runs never go above 6) except StiffCoupling1e9WithDamping's energy, whose
-  // outlier at 0.85·a (46.5·a·E) disappears (0.0065), and ThousandRevolutionsWithoutDrift, 1.1-1.3x
-  // smaller; caps 5 and 4 make that case 2x and others (r/l = 0.95: speed 16 and 71 against 13)
-  // worse. On the shipped scenes at 1e-5 ... 1e-8 cap 6 takes the same steps (±1 %) and has the
-  // same crank-speed error as 12. The stiff case still has rare outliers at other accuracies (19
-  // accuracies 0.6·a ... 1.5·a: 30.8·a·E at 1.15·a with either cap, 12.9 at 0.6·a with 6): an
-  // error accepted within the first 5 ms of the stiff mode's start transient, not an order
-  // effect; its claims cover them (test_hardcases.cpp).
-  constexpr int kAdamsMaxOrder = 6;
-  // A stiff motor law (motor/Stiffness.h: the space-phasor machine's electrical transients)
-  // switches to BDF: Adams would be held to steps set by the stability of those modes.
+  p.absolute_only[m.iPhi()] = true;  // the crank angle: absolute accuracy (above)
   const bool stiff = lawIsStiff(m.motorLaw());
   res.integrator = stiff ? "cvode-bdf" : "cvode-adams";
   p.bdf = stiff;
@@ -175,6 +179,25 @@ class ReducedOde {
   CvodeIntegrator integ_;  // last: built from the members above
 };
 
+// CVODE advanced to the output time t, which becomes the time it reached; false (the run failed,
+// in the recorder) when it gave up.
+bool reachOutputTime(ReducedOde& ode, RunRecorder& recorder, double& t) {
+  if (!ode.advanceTo(t)) {
+    recorder.fail(ode.failureStatus());
+    return false;
+  }
+  t = ode.integrator().time();
+  return true;
+}
+
+// Whether the evaluation e at time t solved its guide-friction loop; if not, the run stops with
+// the reason in the recorder.
+bool frictionLoopSolved(const ModelEvaluation& e, double t, RunRecorder& recorder) {
+  if (e.friction_loop.status == LoopStatus::Solved) return true;
+  recorder.fail(statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop));
+  return false;
+}
+
 // The rows at the output times: CVODE to each, the model evaluated there, the stop rules. Returns
 // the state of the last row, where the energy audit ends.
 Eigen::VectorXd recordOutputRows(const ReducedModel& m, ReducedOde& ode, const std::vector<double>& times,
@@ -188,19 +211,10 @@ Eigen::VectorXd recordOutputRows(const ReducedModel& m, ReducedOde& ode, const s
   Eigen::VectorXd y_last = ym;
   for (size_t k = 0; k < times.size(); ++k) {
     double t = times[k];
-    if (k > 0) {
-      if (!ode.advanceTo(t)) {
-        recorder.fail(ode.failureStatus());
-        break;
-      }
-      t = ode.integrator().time();
-    }
+    if (k > 0 && !reachOutputTime(ode, recorder, t)) break;
     y_last = ym;
     m.evaluate(t, phase, y_last.data(), e, true);
-    if (e.friction_loop.status != LoopStatus::Solved) {
-      recorder.fail(statusAt("the run stopped", t) + ": the " + describeLoopFailure(e.friction_loop));
-      break;
-    }
+    if (!frictionLoopSolved(e, t, recorder)) break;
     if (!recordRows(m, t, e, phase, recorder, res, cart_speeds)) break;
   }
   return y_last;

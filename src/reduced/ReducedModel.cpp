@@ -32,6 +32,25 @@ ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> l
       rigid_(scene.coupling.type == CouplingType::Rigid),
       kinetostatic_(scene.reduced.guide_normals == ReducedGuideNormals::Kinetostatic),
       law_(lawOf(scene, std::move(law))) {
+  checkCarts();
+  const int n = scene_.carts.count;
+  breakdown_torque_ = rollerdyn::motorBreakdownTorque(scene_, law_.get());
+  reducer_ = reducerLaw(scene_, breakdown_torque_);
+  coupling_ = couplingLaw(scene_);
+  reduceInertias();
+  if (!rigid_ && !(J_n1_ > 0.0))
+    throw std::invalid_argument("reduced model: elastic coupling needs a motor-side inertia J_n1 > 0");
+  if (motorStateCount() > ModelEvaluation::kMaxMotorStates)
+    throw std::invalid_argument("reduced model: the motor law has more states than the model carries");
+  supply_ = scene_.motor.enabled ? makeSupply(scene_, law_.get()) : Supply();
+  initial_phase_ = supply_.initialPhase();
+  loop_carts_.resize(n);
+  loop_friction_.resize(n);
+  loop_normals_.resize(2 * n);
+  layOutColumns();
+}
+
+void ReducedModel::checkCarts() const {
   const int n = scene_.carts.count;
   if (n < 1) throw std::invalid_argument("reduced model: carts.count must be >= 1");
   if (static_cast<int>(scene_.carts.side.size()) != n)
@@ -39,10 +58,10 @@ ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> l
                                 std::to_string(n) + ")");
   // Checks r > 0, l > r and σ = ±1 once, so the right-hand side never throws.
   for (int j = 0; j < n; ++j) cartPose(j, 0.0);
+}
 
-  breakdown_torque_ = rollerdyn::motorBreakdownTorque(scene_, law_.get());
-  reducer_ = reducerLaw(scene_, breakdown_torque_);
-  coupling_ = couplingLaw(scene_);
+void ReducedModel::reduceInertias() {
+  const int n = scene_.carts.count;
   J_n1_ = scene_.motorSideInertia();  // Loveikin, Pochka, Romasevych (2018) eq. (1)
   J_crank_ = scene_.crankSideInertia();
   if (scene_.rods.model == RodModel::Split) {
@@ -54,18 +73,12 @@ ReducedModel::ReducedModel(const Scene& scene, std::shared_ptr<const MotorLaw> l
     m_B_.push_back(scene_.cartMassWithRodShare(j));  // Loveikin, Pochka, Romasevych (2018) eq. (3)
     loads_.push_back(scene_.cartLoads(j));
   }
-  if (!rigid_ && !(J_n1_ > 0.0))
-    throw std::invalid_argument("reduced model: elastic coupling needs a motor-side inertia J_n1 > 0");
-  if (motorStateCount() > ModelEvaluation::kMaxMotorStates)
-    throw std::invalid_argument("reduced model: the motor law has more states than the model carries");
-  supply_ = scene_.motor.enabled ? makeSupply(scene_, law_.get()) : Supply();
-  initial_phase_ = supply_.initialPhase();
-  loop_carts_.resize(n);
-  loop_friction_.resize(n);
-  loop_normals_.resize(2 * n);
+}
+
+void ReducedModel::layOutColumns() {
   WrittenColumns written;
   written.multibody = false;
-  written.carts = n;
+  written.carts = scene_.carts.count;
   addMotorColumns(law_.get(), supply_, written);
   written.reducer_losses = integratesReducerLosses();
   written.backlash = coupling_.hasBacklash();

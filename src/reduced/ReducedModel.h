@@ -225,6 +225,14 @@ class ReducedModel {
   long cartPassesComputed() const { return cart_passes_computed_; }
 
  private:
+  // The carts' count, sides and geometry, checked once (std::invalid_argument) so that the
+  // right-hand side never throws.
+  void checkCarts() const;
+  // J_n1, J_K and the carts' masses m_B with their loads (Loveikin, Pochka, Romasevych (2018)
+  // eq. (1)-(3)).
+  void reduceInertias();
+  // The timeseries and reactions columns this model writes.
+  void layOutColumns();
   CartEvaluation cartKinematics(int j, double phi, double omega) const;  // pose, v', H (no statics)
   CartEvaluation evaluateCart(int j, double phi, double omega, double inertial_force) const;
   double cartInertia(int j, const SliderCrankPose& p) const;            // cart j's share of J_n2 [kg·m²]
@@ -275,6 +283,9 @@ class ReducedModel {
     std::vector<GuideLoopCart> loop;      // loopTerms() of every cart (w = x_B', not yet /J) when used
   };
   const CartPass& cartPass(double phi, double omega) const;
+  // The pass's sums over the carts at (φ2, ω2): J, dJ/dφ, the carts' torque M, the friction and
+  // load powers, the carts' evaluations and the first self-locking cart.
+  void sumOverCarts(CartPass& pass, double phi, double omega) const;
   // The pass's crank-side inertia, its quasi-static lock and (quasi-static normals, when asked)
   // its carts into e.
   void recordCartPass(const CartPass& pass, bool keep_carts, ModelEvaluation& e) const;

@@ -25,6 +25,18 @@ std::vector<double> reactionsRow(const ReducedModel& m, double t, const ModelEva
   return q;
 }
 
+// The carts' positions, speeds and accelerations (world x) into the timeseries row r [m, m/s, m/s²].
+void setCartMotion(const ReducedModel& m, const ModelEvaluation& e, std::vector<double>& r) {
+  const ColumnLayout& L = m.timeseriesLayout();
+  for (int j = 0; j < m.cartCount(); ++j) {
+    const CartEvaluation& c = e.carts[j];
+    const double w = e.omega_crank;
+    L.set(r, Column::x_cart, j + 1, c.pose.x_B);
+    L.set(r, Column::v_cart, j + 1, c.pose.dx_B * w);
+    L.set(r, Column::a_cart, j + 1, c.pose.d2x_B * w * w + c.pose.dx_B * e.eps_crank);
+  }
+}
+
 }  // namespace
 
 // Under the papers' constant η, L·ω = (1 − η)·M·u·ω.
@@ -56,13 +68,7 @@ void appendRows(const ReducedModel& m, double t, const ModelEvaluation& e, RunRe
   L.set(r, Column::coupling_torque, e.coupling_torque);
   L.set(r, Column::motor_torque, e.motor_torque);
   L.set(r, Column::load_torque, e.load_torque);
-  for (int j = 0; j < m.cartCount(); ++j) {
-    const CartEvaluation& c = e.carts[j];
-    const double w = e.omega_crank;
-    L.set(r, Column::x_cart, j + 1, c.pose.x_B);
-    L.set(r, Column::v_cart, j + 1, c.pose.dx_B * w);
-    L.set(r, Column::a_cart, j + 1, c.pose.d2x_B * w * w + c.pose.dx_B * e.eps_crank);
-  }
+  setCartMotion(m, e, r);
   setMotorColumns(L, e.stator_current, e.supply, e.brake_torque, r);
   if (L.has(Column::reducer_loss_torque)) L.set(r, Column::reducer_loss_torque, e.reducer_loss_torque);
   if (L.has(Column::tooth_contact))
