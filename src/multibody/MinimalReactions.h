@@ -32,6 +32,13 @@ class MinimalReactions {
   void row(const SimTK::State& s, const MinimalDynamics& dyn, std::vector<double>& out);
 
  private:
+  // Σ m·a - applied force [N] of body b, one term of the crankshaft subtree's free body.
+  SimTK::Vec3 netForce(const SimTK::State& s, const MinimalDynamics& dyn, const SimTK::MobilizedBody& b) const;
+  // Cart j's columns (guide normals, friction, rod or cam force, crank pin) into `re`, and what
+  // its rod and loop add to the main bearing's force `bearing` [N] (nothing for a cam).
+  void cartColumns(const SimTK::State& s, const MinimalDynamics& dyn, const SimTK::Vector& normals, int j,
+                   SimTK::Vec3& bearing, std::vector<double>& re) const;
+
   const MultibodyModel& model_;
   SimTK::Vector_<SimTK::SpatialVec> body_accelerations_;  // A_GB at the evaluated u̇
 };

@@ -192,6 +192,10 @@ class MultibodyModel {
     double N_front, N_rear, F_rod, friction, crankpin_x, crankpin_y;
   };
   void setCartReactions(int cart, const CartReactions& r, std::vector<double>& reactions_row) const;
+  // Cart j's columns of a reactions row from Simbody's constrained solve: its mobilizer's
+  // `reactions` and the `applied` body forces at a state realized to Acceleration.
+  void observeCartReactions(const SimTK::State& s, int j, const SimTK::Vector_<SimTK::SpatialVec>& reactions,
+                            const SimTK::Vector_<SimTK::SpatialVec>& applied, std::vector<double>& reactions_row) const;
   // closedFormState without the motor's states.
   SimTK::State closedFormKinematics(double crank_angle, double crank_speed, double twist) const;
   // The motor's own states at t = 0 (steady when the motor ran before, MotorLaw::initialState),

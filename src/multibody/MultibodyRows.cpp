@@ -132,6 +132,32 @@ double MultibodyModel::guideFrictionForce(const SimTK::State& s, int j) const {
   return friction_force_ ? friction_force_->frictionForce(s, j) : 0.0;
 }
 
+void MultibodyModel::observeCartReactions(const SimTK::State& s, int j,
+                                          const SimTK::Vector_<SimTK::SpatialVec>& reactions,
+                                          const SimTK::Vector_<SimTK::SpatialVec>& applied,
+                                          std::vector<double>& re) const {
+  const CartRig& c = carts_[size_t(j)];
+  const SimTK::MobilizedBodyIndex ic = c.cart.getMobilizedBodyIndex();
+  const GuideNormals n = solveGuideNormals(reactions[ic], c.side, scene_.carts.geometry);
+  const double friction = guideFrictionForce(s, j);
+  if (!c.cam.isEmptyHandle()) {
+    // Cam drive: the coupler acts on the mobilities [crank, cart] (in that order); Simbody
+    // returns constraint forces with the sign opposite to applied forces. The cam force on
+    // the cart is horizontal.
+    const SimTK::Vector f = c.cam.getConstrainedMobilityForcesAsVector(s);
+    setCamReactions(j, n, friction, -f[1], re);
+    return;
+  }
+  // Force of the rod on the cart at B from the cart's free body: m·a = applied + guide + rod.
+  const double m_cart = c.cart.getBodyMass(s);
+  const SimTK::Vec3 a_cart(c.cart.getOneUDot(s, 0), 0, 0);
+  const SimTK::Vec3 F_rod_on_cart = m_cart * a_cart - applied[ic][1] - reactions[ic][1];
+  // The rod's centre of mass is at its middle.
+  SimTK::Vec3 a_S(0);
+  if (!c.rod.isEmptyHandle()) a_S = c.rod.findStationAccelerationInGround(s, SimTK::Vec3(0.5 * c.rod_length, 0, 0));
+  setRodReactions(s, j, n, friction, F_rod_on_cart, a_S, re);
+}
+
 void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>& re) const {
   const double torque_coupling = couplingTorque(s);
   SimTK::Vector_<SimTK::SpatialVec> reactions;
@@ -140,28 +166,7 @@ void MultibodyModel::observeReactions(const SimTK::State& s, std::vector<double>
   const ColumnLayout& L = reactions_layout_;
   L.reset(re);
   L.set(re, Column::t, s.getTime());
-  for (size_t j = 0; j < carts_.size(); ++j) {
-    const CartRig& c = carts_[j];
-    const SimTK::MobilizedBodyIndex ic = c.cart.getMobilizedBodyIndex();
-    const GuideNormals n = solveGuideNormals(reactions[ic], c.side, scene_.carts.geometry);
-    const double friction = guideFrictionForce(s, int(j));
-    if (!c.cam.isEmptyHandle()) {
-      // Cam drive: the coupler acts on the mobilities [crank, cart] (in that order); Simbody
-      // returns constraint forces with the sign opposite to applied forces. The cam force on
-      // the cart is horizontal.
-      const SimTK::Vector f = c.cam.getConstrainedMobilityForcesAsVector(s);
-      setCamReactions(int(j), n, friction, -f[1], re);
-      continue;
-    }
-    // Force of the rod on the cart at B from the cart's free body: m·a = applied + guide + rod.
-    const double m_cart = c.cart.getBodyMass(s);
-    const SimTK::Vec3 a_cart(c.cart.getOneUDot(s, 0), 0, 0);
-    const SimTK::Vec3 F_rod_on_cart = m_cart * a_cart - applied[ic][1] - reactions[ic][1];
-    // The rod's centre of mass is at its middle.
-    SimTK::Vec3 a_S(0);
-    if (!c.rod.isEmptyHandle()) a_S = c.rod.findStationAccelerationInGround(s, SimTK::Vec3(0.5 * c.rod_length, 0, 0));
-    setRodReactions(s, int(j), n, friction, F_rod_on_cart, a_S, re);
-  }
+  for (int j = 0; j < int(carts_.size()); ++j) observeCartReactions(s, j, reactions, applied, re);
   const SimTK::Vec3 bearing = reactions[crank_.getMobilizedBodyIndex()][1];
   L.set(re, Column::bearing_x, bearing[0]);
   L.set(re, Column::bearing_y, bearing[1]);
