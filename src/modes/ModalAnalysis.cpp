@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "reduced/ReducedModel.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::modes {
 namespace {
@@ -137,13 +138,11 @@ std::vector<DrivePoint> uniformRotationPoints(const ReducedModel& rm, const Mode
                       "): the modal analysis is not applicable (no running speed to linearize about)");
     return {};
   }
-  char b[320];
-  std::snprintf(b, sizeof b,
-                "no steady motion (%s): no Floquet analysis; frozen-angle modes at uniform rotation at "
-                "omega = %.4g rad/s instead, where the motor's static curve carries the mean load torque "
-                "%.4g N*m (an estimate of the running speed)",
-                r.steady.failure.c_str(), g.omega, g.mean_load_torque);
-  r.notes.push_back(b);
+  // The failure's own words are of any length: printfText, not a fixed buffer, so they are never cut.
+  r.notes.push_back(printfText("no steady motion (%s): no Floquet analysis; frozen-angle modes at uniform rotation "
+                               "at omega = %.4g rad/s instead, where the motor's static curve carries the mean load "
+                               "torque %.4g N*m (an estimate of the running speed)",
+                               r.steady.failure.c_str(), g.omega, g.mean_load_torque));
   r.fallback_omega = g.omega;
   return uniformRotation(rm.scene().initial.crank_angle, g, o.angles);
 }
@@ -360,20 +359,15 @@ namespace {
 // The analysis could not be made for a driven machine: say so (the first estimate is then the
 // only resonance check), never leave it silent.
 std::string incompleteAnalysisWarning(const ModesReport& r) {
-  char buf[640];
   if (std::isfinite(r.fallback_omega))
-    std::snprintf(buf, sizeof buf,
-                  "modal analysis incomplete: no steady motion of the drive was found (%s), so there are no Floquet "
-                  "multipliers and no stability or resonance verdict; the frozen-angle modes are taken at uniform "
-                  "rotation at omega = %.4g rad/s, where the motor's static curve carries the mean load (an estimate "
-                  "of the running speed)",
-                  r.steady.failure.c_str(), r.fallback_omega);
-  else
-    std::snprintf(buf, sizeof buf,
-                  "modal analysis not applicable: no steady motion of the drive (%s), so no torsional modes, "
-                  "Floquet multipliers or resonance verdict",
-                  r.steady.failure.c_str());
-  return buf;
+    return printfText("modal analysis incomplete: no steady motion of the drive was found (%s), so there are no "
+                      "Floquet multipliers and no stability or resonance verdict; the frozen-angle modes are taken at "
+                      "uniform rotation at omega = %.4g rad/s, where the motor's static curve carries the mean load "
+                      "(an estimate of the running speed)",
+                      r.steady.failure.c_str(), r.fallback_omega);
+  return printfText("modal analysis not applicable: no steady motion of the drive (%s), so no torsional modes, "
+                    "Floquet multipliers or resonance verdict",
+                    r.steady.failure.c_str());
 }
 
 std::string instabilityWarning(const FloquetVerdict& v, double omega) {
