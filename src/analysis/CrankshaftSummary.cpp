@@ -13,8 +13,6 @@ using nlohmann::json;
 namespace {
 
 
-std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); }
-
 }  // namespace
 
 // The shaft's figures (CrankshaftBearings.h): per throw along z its peak bending moment, per
@@ -44,11 +42,11 @@ std::string crankshaftText(const json& c) {
   if (!c.is_object()) return "";
   std::ostringstream o;
   if (!jsonMember(c, "reason").is_null()) {
-    o << "  crankshaft bending and torsion     n/a: " << str(jsonMember(c, "reason")) << "\n";
+    o << "  crankshaft bending and torsion     n/a: " << jsonText(jsonMember(c, "reason"), "n/a") << "\n";
     return o.str();
   }
   o << "  crankshaft, per throw along z (from the coupling end): peak bending moment |M| and the peak torque "
-       "|T| of the shaft segment leading to it (|T|: " << str(jsonMember(c, "segment_torque_method")) << "):\n";
+       "|T| of the shaft segment leading to it (|T|: " << jsonText(jsonMember(c, "segment_torque_method"), "n/a") << "):\n";
   const json& seg = jsonMember(c, "segments");
   std::size_t q = 0;
   for (const json& t : jsonMember(c, "throws")) {

@@ -14,10 +14,6 @@ using nlohmann::json;
 namespace {
 
 
-std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); }
-
-bool isTrue(const json& v) { return v.is_boolean() && v.get<bool>(); }
-
 // A command-line word, quoted for the shell where it needs it.
 std::string shellWord(const std::string& a) {
   if (!a.empty() && a.find_first_of(" '\"$`\\*?;&|<>()") == std::string::npos) return a;
@@ -31,12 +27,12 @@ std::string flywheelByRunsText(const json& f, const std::string& pad) {
   const json& b = jsonMember(f, "by_runs");
   if (!b.is_object()) return "";
   std::ostringstream o;
-  const std::string where = str(jsonMember(b, "location"));
+  const std::string where = jsonText(jsonMember(b, "location"), "n/a");
   o << pad << "by runs started at " << jsonNumberText(jsonMember(b, "started_at_crank_speed"), "%.4g") << " rad/s (" << where << "):";
   for (const json& r : jsonMember(b, "runs"))
     o << " " << jsonNumberText(jsonMember(r, "inertia"), "%.4g") << " kg·m² gives δ " << jsonNumberText(jsonMember(r, "delta"), "%.4g") << ";";
   o << "\n";
-  const bool found = jsonMember(b, "found").is_boolean() && jsonMember(b, "found").get<bool>();
+  const bool found = jsonFlag(b, "found");
   if (found)
     o << pad << "a flywheel of " << jsonNumberText(jsonMember(b, "inertia"), "%.4g") << " kg·m² on the " << where << " meets δ* = "
       << jsonNumberText(jsonMember(f, "target_delta"), "%.4g") << " in a run (δ = " << jsonNumberText(jsonMember(b, "delta"), "%.4g") << ")\n";
@@ -87,7 +83,7 @@ std::string checkByRunsText(const json& f, const std::string& pad) {
   const json& check = jsonMember(f, "check_by_runs");
   if (!check.is_object()) return "";
   std::ostringstream o;
-  const std::string speed = isTrue(jsonMember(check, "started_at_speed"))
+  const std::string speed = jsonFlag(check, "started_at_speed")
                                 ? " started at this run's mean crank speed (whether the drive starts from rest with "
                                   "it is a separate run)"
                                 : "";
@@ -95,9 +91,9 @@ std::string checkByRunsText(const json& f, const std::string& pad) {
   const json& smallest = jsonMember(check, "smallest_from_runs");
   if (run.is_string())
     o << pad << "check the estimate: δ of a run with flywheel.inertia = " << jsonNumberText(jsonMember(check, "flywheel_inertia"), "%.4g")
-      << " kg·m² (" << str(jsonMember(check, "location")) << ")" << speed << ":\n      " << run.get<std::string>() << "\n";
+      << " kg·m² (" << jsonText(jsonMember(check, "location"), "n/a") << ")" << speed << ":\n      " << run.get<std::string>() << "\n";
   if (smallest.is_string())
-    o << pad << "the smallest flywheel (" << str(jsonMember(check, "location")) << ") that meets δ* in steady running, from runs:\n      "
+    o << pad << "the smallest flywheel (" << jsonText(jsonMember(check, "location"), "n/a") << ") that meets δ* in steady running, from runs:\n      "
       << smallest.get<std::string>() << "\n";
   if (jsonMember(check, "note").is_string()) o << pad << jsonMember(check, "note").get<std::string>() << "\n";
   return o.str();
@@ -116,7 +112,7 @@ std::string flywheelText(const json& summary) {
     o << pad << "target δ* not given (sizing.target_delta)\n";
     return o.str();
   }
-  if (!isTrue(jsonMember(f, "estimate"))) return o.str() + metByTheRunText(f, pad);
+  if (!jsonFlag(f, "estimate")) return o.str() + metByTheRunText(f, pad);
   o << proposalText(f, pad) << estimatesText(f, pad);
   const json& basis = jsonMember(f, "basis");
   if (basis.is_string()) o << pad << basis.get<std::string>() << "\n";
@@ -180,7 +176,7 @@ std::string checkRunStartSpeed(const json& summary, const UserOverrides& u) {
 
 json flywheelChecks(const json& summary) {
   const json& f = jsonMember(jsonMember(summary, "sizing"), "flywheel");
-  if (!isTrue(jsonMember(f, "estimate")) || !jsonMember(f, "target_delta").is_number()) return nullptr;
+  if (!jsonFlag(f, "estimate") || !jsonMember(f, "target_delta").is_number()) return nullptr;
   const bool motor_shaft = jsonMember(f, "location").is_string() && jsonMember(f, "location").get<std::string>() == "motor_shaft";
   const json& proposal = jsonMember(f, motor_shaft ? "flywheel_motor_shaft" : "flywheel_crankshaft");
   if (!proposal.is_number()) return nullptr;

@@ -17,18 +17,7 @@ using nlohmann::json;
 
 namespace {
 
-
-const json& member(const json& j, const char* key) {
-  static const json null;
-  if (!j.is_object()) return null;
-  const auto it = j.find(key);
-  return it == j.end() ? null : *it;
-}
-
-std::string text(const json& j, const char* key) {
-  const json& v = member(j, key);
-  return v.is_string() ? v.get<std::string>() : std::string();
-}
+std::string text(const json& j, const char* key) { return jsonText(jsonMember(j, key)); }
 
 // The scene keys a reason names (sizing.coupling_rated_torque, initial.crank_speed, a map such as
 // sizing.fatigue.coupling_torque.*), each once, in order; only keys of the scene schema.
@@ -106,9 +95,9 @@ namespace {
 // The torsional modes' rows: the separation margins of the modal analysis, or one row saying it
 // was not made with this run.
 void addModesRows(SignOffSheet& s, const json& summary) {
-  const json& modes = member(summary, "modes");
+  const json& modes = jsonMember(summary, "modes");
   if (modes.is_object()) {
-    for (const json& c : member(member(modes, "separation_margins"), "checks"))
+    for (const json& c : jsonMember(jsonMember(modes, "separation_margins"), "checks"))
       s.rows.push_back(rowOf("torsional modes", c));
     return;
   }
@@ -140,11 +129,11 @@ SignOffSheet buildSignOffSheet(const json& summary, const SignOffSource& source)
   s.scene_sha256 = sha256Hex(source.scene_text);
   s.model = text(summary, "model");
   s.motion = text(summary, "motion");
-  const json& complete = member(summary, "complete");
+  const json& complete = jsonMember(summary, "complete");
   if (complete.is_boolean() && !complete.get<bool>()) s.run_status = text(summary, "status");
-  for (const json& w : member(summary, "warnings"))
+  for (const json& w : jsonMember(summary, "warnings"))
     if (w.is_string()) s.warnings.push_back(w.get<std::string>());
-  for (const json& c : member(member(summary, "sizing"), "checks")) s.rows.push_back(rowOf("drive sizing", c));
+  for (const json& c : jsonMember(jsonMember(summary, "sizing"), "checks")) s.rows.push_back(rowOf("drive sizing", c));
   addModesRows(s, summary);
   concludeSheet(s);
   return s;

@@ -10,11 +10,7 @@ using nlohmann::json;
 
 namespace {
 
-
-std::string text(const json& j, const char* key) {
-  const auto it = j.find(key);
-  return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
-}
+std::string text(const json& j, const char* key) { return jsonText(jsonMember(j, key)); }
 
 double number(const json& j, const char* key) {
   const auto it = j.find(key);

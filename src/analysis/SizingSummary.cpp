@@ -202,14 +202,12 @@ const std::vector<std::pair<std::string, std::string>>& sizingMetricPaths() {
 // begins at speed, or a machine without motor) no start at all.
 static std::string wholeRunWords(const json& summary) {
   const json& su = jsonMember(summary, "start_up");
-  if (su.is_object() && jsonMember(su, "from_rest").is_boolean() && jsonMember(su, "from_rest").get<bool>())
+  if (jsonFlag(su, "from_rest"))
     return "start-up included";
   return su.is_object() ? "begins at speed: no start-up" : "no motor start in the run";
 }
 
 namespace {
-
-std::string str(const json& v) { return v.is_string() ? v.get<std::string>() : std::string("n/a"); }
 
 // One row of the joints' table: label, cart, mean, amplitude, peak, P, C [kN], L10 [h].
 std::string jointLine(const std::string& label, const json& x) {
@@ -250,7 +248,7 @@ std::string motorTorqueText(const json& m, const char* win) {
   o << "  motor torque at the crank M·u·η   mean " << jsonNumberText(jsonMember(tc, "mean"), "%.4g") << ", RMS "
     << jsonNumberText(jsonMember(tc, "rms"), "%.4g") << ", peak " << jsonNumberText(jsonMember(tc, "peak"), "%.4g") << " N·m" << win << "\n";
   o << "  nominal torque M_n                " << jsonNumberText(jsonMember(m, "nominal_torque"), "%.4g") << " N·m ("
-    << str(jsonMember(m, "nominal_torque_source")) << "); breakdown torque M_kr " << jsonNumberText(jsonMember(m, "breakdown_torque"), "%.4g")
+    << jsonText(jsonMember(m, "nominal_torque_source"), "n/a") << "); breakdown torque M_kr " << jsonNumberText(jsonMember(m, "breakdown_torque"), "%.4g")
     << " N·m";
   if (jsonMember(m, "breakdown_torque_catalogue").is_number())
     o << " (the catalogue's (M_k/M_n)·P_n/ω_n: " << jsonNumberText(jsonMember(m, "breakdown_torque_catalogue"), "%.4g") << " N·m)";
@@ -269,7 +267,7 @@ std::string motorPowerText(const json& m, const char* win) {
     << jsonNumberText(jsonMember(pl, "peak"), "%.4g", 1e-3) << " kW" << win << "; mean "
     << jsonNumberText(jsonMember(jsonMember(r, "power_line"), "mean"), "%.4g", 1e-3) << ", peak " << jsonNumberText(jsonMember(jsonMember(r, "power_line"), "peak"), "%.4g", 1e-3)
     << " kW (whole run)\n"
-    << "                                    (" << str(jsonMember(m, "line_power_basis")) << ")\n";
+    << "                                    (" << jsonText(jsonMember(m, "line_power_basis"), "n/a") << ")\n";
   o << "  slip s = 1 - ω_r/ω0               " << jsonNumberText(jsonMember(sl, "min"), "%.4f") << " ... "
     << jsonNumberText(jsonMember(sl, "max"), "%.4f") << win << "; " << jsonNumberText(jsonMember(jsonMember(r, "slip"), "min"), "%.4f") << " ... "
     << jsonNumberText(jsonMember(jsonMember(r, "slip"), "max"), "%.4f") << " (whole run)\n";
@@ -307,11 +305,11 @@ std::string checksText(const json& checks) {
   if (!checks.is_array() || checks.empty()) return o.str();
   o << "  checks (the window named decided each):\n";
   for (const json& k : checks) {
-    const std::string v = str(jsonMember(k, "verdict"));
+    const std::string v = jsonText(jsonMember(k, "verdict"), "n/a");
     char buf[200];
-    std::snprintf(buf, sizeof buf, "    %-15s %8s  %-14s decided by the %s", str(jsonMember(k, "check")).c_str(),
-                  jsonNumberText(jsonMember(k, "value"), "%.3f").c_str(), v.c_str(), str(jsonMember(k, "window")).c_str());
-    o << buf << "\n      " << str(jsonMember(k, "what")) << "; " << str(jsonMember(k, "reason")) << "\n";
+    std::snprintf(buf, sizeof buf, "    %-15s %8s  %-14s decided by the %s", jsonText(jsonMember(k, "check"), "n/a").c_str(),
+                  jsonNumberText(jsonMember(k, "value"), "%.3f").c_str(), v.c_str(), jsonText(jsonMember(k, "window"), "n/a").c_str());
+    o << buf << "\n      " << jsonText(jsonMember(k, "what"), "n/a") << "; " << jsonText(jsonMember(k, "reason"), "n/a") << "\n";
   }
   return o.str();
 }
@@ -323,14 +321,14 @@ std::string jointLivesText(const json& joints) {
     const json& j = jsonMember(joints, kind);
     const json& x = jsonMember(j, "worst");
     if (!x.is_object()) continue;
-    o << "    " << str(jsonMember(j, "what")) << ": ";
+    o << "    " << jsonText(jsonMember(j, "what"), "n/a") << ": ";
     if (jsonMember(x, "L10_hours").is_number()) {
       if (jsonMember(x, "L10_oscillations").is_number())
         o << "L10 " << jsonNumberText(jsonMember(x, "L10_revolutions"), "%.3g") << " revolutions = "
           << jsonNumberText(jsonMember(x, "L10_oscillations"), "%.3g") << " oscillations; ";
-      o << str(jsonMember(x, "life_basis"));
+      o << jsonText(jsonMember(x, "life_basis"), "n/a");
     } else {
-      o << "L10 n/a: " << str(jsonMember(x, "life_reason"));
+      o << "L10 n/a: " << jsonText(jsonMember(x, "life_reason"), "n/a");
     }
     o << "\n";
   }
@@ -342,7 +340,7 @@ std::string jointLivesText(const json& joints) {
 std::string jointsText(const json& s) {
   const json& joints = jsonMember(s, "joints");
   std::ostringstream o;
-  if (jsonMember(s, "joints_basis").is_string()) o << "  joint loads from the " << str(jsonMember(s, "joints_basis")) << "\n";
+  if (jsonMember(s, "joints_basis").is_string()) o << "  joint loads from the " << jsonText(jsonMember(s, "joints_basis"), "n/a") << "\n";
   o << "  joint (most loaded cart)  cart  mean [kN]  amplitude [kN]  peak [kN]  P [kN]  C [kN]  L10 [h]\n";
   const char* names[] = {"guide roller, front", "guide roller, rear", "rod end", "crank pin", "main bearings, resultant"};
   for (std::size_t k = 0; k < 5; ++k) {

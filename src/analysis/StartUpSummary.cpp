@@ -224,17 +224,15 @@ std::string noStartText(const json& s) {
   return o.str();
 }
 
-bool isTrue(const json& v) { return v.is_boolean() && v.get<bool>(); }
-
 // Whether the drive ran up, and the words for the two intervals the peaks compare: a drive that
 // never ran up has a run and its end, not a start and a steady state.
 struct StartIntervals {
   bool starts, still, reached;
   std::string in_start, steady;
   explicit StartIntervals(const json& s)
-      : starts(isTrue(jsonMember(s, "starts"))),
-        still(isTrue(jsonMember(s, "still_starting"))),
-        reached(isTrue(jsonMember(jsonMember(s, "steady"), "reached"))),
+      : starts(jsonFlag(s, "starts")),
+        still(jsonFlag(s, "still_starting")),
+        reached(jsonFlag(jsonMember(s, "steady"), "reached")),
         in_start(starts ? " in the start" : (still ? " so far" : " over the run")),
         steady(starts && reached ? "steady" : "at the end") {}
 };

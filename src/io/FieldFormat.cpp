@@ -23,7 +23,9 @@ bool jsonFlag(const nlohmann::json& j, const char* k) {
   return v.is_boolean() && v.get<bool>();
 }
 
-std::string jsonText(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : std::string(); }
+std::string jsonText(const nlohmann::json& v, const char* absent) {
+  return v.is_string() ? v.get<std::string>() : std::string(absent);
+}
 
 std::string printfNumber(const char* format, double v) {
   char buf[64];

@@ -23,8 +23,8 @@ const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k);
 // Member k of j is the boolean true (false when it is missing or not a boolean), e.g. a
 // window's "applies".
 bool jsonFlag(const nlohmann::json& j, const char* k);
-// A JSON text as it is; "" where v is not a text.
-std::string jsonText(const nlohmann::json& v);
+// A JSON text as it is; `absent` ("" unless a console line wants "n/a") where v is not a text.
+std::string jsonText(const nlohmann::json& v, const char* absent = "");
 // A JSON number as printf's `format` of v·scale; "n/a" when v is not a number (null, text).
 std::string jsonNumberText(const nlohmann::json& v, const char* format = "%.4g", double scale = 1.0);
 // v in printf's `format` ("%.1f", "%.0f %%"): a fixed layout where a column or a sentence wants

@@ -185,8 +185,8 @@ std::string startUpSectionHtml(const json& summary) {
     h << "<p>No start-up answers: the run switches no motor on.</p>\n";
     return h.str();
   }
-  const bool starts = jsonMember(s, "starts").is_boolean() && jsonMember(s, "starts").get<bool>();
-  const bool still_starting = jsonMember(s, "still_starting").is_boolean() && jsonMember(s, "still_starting").get<bool>();
+  const bool starts = jsonFlag(s, "starts");
+  const bool still_starting = jsonFlag(s, "still_starting");
   h << startIntroHtml(s, starts, still_starting);
   h << canItStartTable(s);
   h << startPeaksTable(s, starts, still_starting);
