@@ -64,7 +64,7 @@ std::string estimatesText(const json& f, const std::string& pad) {
   const json& J_req = jsonMember(f, "inertia_required");
   if (!J_req.is_number())
     return pad + "(energy method, J·δ constant; the motor's slip and the carts' inertia vary over a turn)\n";
-  const double J_now = jsonMember(f, "inertia_effective").is_number() ? jsonMember(f, "inertia_effective").get<double>() : NAN;
+  const double J_now = jsonDouble(jsonMember(f, "inertia_effective"));
   std::ostringstream o;
   o << pad << "(the larger of two estimates of what to add: by the excess work ΔA "
     << jsonNumberText(jsonMember(f, "excess_work"), "%.4g") << " J of a revolution\n"

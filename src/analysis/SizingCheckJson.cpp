@@ -12,10 +12,7 @@ namespace {
 
 std::string text(const json& j, const char* key) { return jsonText(jsonMember(j, key)); }
 
-double number(const json& j, const char* key) {
-  const auto it = j.find(key);
-  return it != j.end() && it->is_number() ? it->get<double>() : std::numeric_limits<double>::quiet_NaN();
-}
+double number(const json& j, const char* key) { return jsonDouble(jsonMember(j, key)); }
 
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include "analysis/Summary.h"
 #include "multibody/MultibodySimulation.h"
 #include "reduced/ReducedModel.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 namespace {
@@ -63,29 +64,21 @@ std::vector<double> foldOnRevolution(const RunResult& run, const SteadyState& w,
   return sum;
 }
 
-double summaryNumber(const nlohmann::json& j, const std::vector<const char*>& path) {
-  const nlohmann::json* p = &j;
-  for (const char* k : path) {
-    if (!p->is_object() || !p->contains(k)) return kNaN;
-    p = &p->at(k);
-  }
-  return p->is_number() ? p->get<double>() : kNaN;
-}
 
 // The steady-state answers compared, each by its path in the run's summary (analysis/Summary.h).
 struct SteadyItem {
   const char* name;
   const char* unit;
-  std::vector<const char*> path;
+  const char* path;  // in the run's summary, dotted
 };
 const SteadyItem kSteadyItems[] = {
-    {"omega_crank_mean", "rad/s", {"omega_crank", "mean"}},
-    {"delta", "-", {"delta"}},
-    {"coupling_torque_swing", "N·m", {"coupling_torque_swing"}},
-    {"coupling_torque_mean", "N·m", {"sizing", "coupling", "mean"}},
-    {"coupling_torque_peak", "N·m", {"sizing", "coupling", "peak"}},
-    {"motor_torque_rotor_rms", "N·m", {"sizing", "motor", "torque_shaft", "rms"}},
-    {"motor_torque_mean", "N·m", {"sizing", "motor", "torque_shaft", "mean"}},
+    {"omega_crank_mean", "rad/s", "omega_crank.mean"},
+    {"delta", "-", "delta"},
+    {"coupling_torque_swing", "N·m", "coupling_torque_swing"},
+    {"coupling_torque_mean", "N·m", "sizing.coupling.mean"},
+    {"coupling_torque_peak", "N·m", "sizing.coupling.peak"},
+    {"motor_torque_rotor_rms", "N·m", "sizing.motor.torque_shaft.rms"},
+    {"motor_torque_mean", "N·m", "sizing.motor.torque_shaft.mean"},
 };
 
 // The steady-state answers of both models, each from its own summary.
@@ -95,12 +88,12 @@ void compareSteadyMetrics(const Scene& scene, ModelComparison& c) {
     SteadyMetricComparison m;
     m.name = it.name;
     m.unit = it.unit;
-    m.multibody = summaryNumber(jm, it.path);
-    m.reduced = summaryNumber(jr, it.path);
+    m.multibody = jsonDouble(jsonAt(jm, it.path));
+    m.reduced = jsonDouble(jsonAt(jr, it.path));
     m.rel_diff = (m.reduced - m.multibody) / std::abs(m.multibody);
     c.steady.push_back(m);
   }
-  c.speed_difference = summaryNumber(jr, {"omega_crank", "mean"}) - summaryNumber(jm, {"omega_crank", "mean"});
+  c.speed_difference = jsonDouble(jsonAt(jr, "omega_crank.mean")) - jsonDouble(jsonAt(jm, "omega_crank.mean"));
 }
 
 // One quantity's shape over a revolution: both steady windows folded onto the crank angle, the

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <limits>
 
 namespace rollerdyn {
 
@@ -16,6 +17,21 @@ std::string csvNumber(double v) {
 const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k) {
   static const nlohmann::json null_json;
   return j.is_object() && j.contains(k) ? j.at(k) : null_json;
+}
+
+const nlohmann::json& jsonAt(const nlohmann::json& j, const std::string& dotted_path) {
+  const nlohmann::json* node = &j;
+  for (std::size_t start = 0;;) {
+    const std::size_t dot = dotted_path.find('.', start);
+    const std::string key = dotted_path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    node = &jsonMember(*node, key.c_str());
+    if (dot == std::string::npos) return *node;
+    start = dot + 1;
+  }
+}
+
+double jsonDouble(const nlohmann::json& v) {
+  return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
 }
 
 bool jsonFlag(const nlohmann::json& j, const char* k) {

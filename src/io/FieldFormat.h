@@ -23,6 +23,12 @@ const nlohmann::json& jsonMember(const nlohmann::json& j, const char* k);
 // Member k of j is the boolean true (false when it is missing or not a boolean), e.g. a
 // window's "applies".
 bool jsonFlag(const nlohmann::json& j, const char* k);
+// The member at a dotted path of keys ("omega_crank.mean", "sizing.motor.torque_shaft.rms"); null
+// where any part is missing or not an object.
+const nlohmann::json& jsonAt(const nlohmann::json& j, const std::string& dotted_path);
+// A JSON number as a double; NaN where v is not a number (missing, null, text): the reverse of
+// jsonNumber.
+double jsonDouble(const nlohmann::json& v);
 // A JSON text as it is; `absent` ("" unless a console line wants "n/a") where v is not a text.
 std::string jsonText(const nlohmann::json& v, const char* absent = "");
 // A JSON number as printf's `format` of v·scale; "n/a" when v is not a number (null, text).

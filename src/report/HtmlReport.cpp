@@ -10,6 +10,7 @@
 
 #include "io/ReadFile.h"
 #include "report/PageData.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -18,19 +19,6 @@ namespace {
 using nlohmann::json;
 
 // A JSON value at a dotted path ("omega_crank.mean"), null when absent.
-json at(const json& j, const std::string& path) {
-  const json* cur = &j;
-  size_t start = 0;
-  while (true) {
-    const size_t dot = path.find('.', start);
-    const std::string key = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (!cur->is_object() || !cur->contains(key)) return nullptr;
-    cur = &(*cur)[key];
-    if (dot == std::string::npos) return *cur;
-    start = dot + 1;
-  }
-}
-
 std::string number(const json& v, const char* f = "%.6g") {
   if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
   if (!v.is_number()) return v.is_string() ? v.get<std::string>() : "n/a";
@@ -194,17 +182,17 @@ std::string resonanceVerdictHtml(const nlohmann::json& s) {
   // green where it found no resonance and a stable steady motion, yellow where it warns, no colour
   // where it does not apply (with the reason).
   std::ostringstream h;
-  resonanceBanner(h, at(s, "resonance_verdict"));
-  stabilityBanner(h, at(s, "stability"));
+  resonanceBanner(h, jsonAt(s, "resonance_verdict"));
+  stabilityBanner(h, jsonAt(s, "stability"));
   return h.str();
 }
 
 std::string runStatusHtml(const nlohmann::json& s) {
   std::ostringstream h;
-  const bool complete = at(s, "complete").is_boolean() && at(s, "complete").get<bool>();
+  const bool complete = jsonAt(s, "complete").is_boolean() && jsonAt(s, "complete").get<bool>();
   h << "<div class=\"status " << (complete ? "ok" : "bad") << "\">" << (complete ? "Run complete" : "Run INCOMPLETE")
-    << ": " << htmlEscape(number(at(s, "status"))) << "</div>\n";
-  const json warnings = at(s, "warnings");  // e.g. resonance warnings (summary.json)
+    << ": " << htmlEscape(number(jsonAt(s, "status"))) << "</div>\n";
+  const json warnings = jsonAt(s, "warnings");  // e.g. resonance warnings (summary.json)
   if (warnings.is_array() && !warnings.empty()) {
     h << "<div class=\"status warn\">Warnings:<ul>";
     for (const json& w : warnings) h << "<li>" << htmlEscape(w.is_string() ? w.get<std::string>() : w.dump()) << "</li>";
@@ -257,15 +245,15 @@ const Metric kSummaryMetrics[] = {
 std::string summaryMetricsHtml(const nlohmann::json& s) {
   std::ostringstream h;
   h << "<h2>Summary metrics</h2>\n<p class=\"small\">Over the steady-state window (summary.json).</p>\n";
-  if (at(s, "steady_state.reached").is_boolean() && !at(s, "steady_state.reached").get<bool>())
+  if (jsonAt(s, "steady_state.reached").is_boolean() && !jsonAt(s, "steady_state.reached").get<bool>())
     h << "<div class=\"status warn\">Steady state NOT reached: the metrics and reaction ranges below are "
          "taken over the last part of the run and include transients. "
-      << htmlEscape(number(at(s, "steady_state.note"))) << "</div>\n";
+      << htmlEscape(number(jsonAt(s, "steady_state.note"))) << "</div>\n";
   h << "<table>\n<tr><th>quantity</th><th>value</th><th>unit</th></tr>\n";
   for (const Metric& m : kSummaryMetrics)
-    h << "<tr><td>" << htmlEscape(m.label) << "</td><td class=\"n\">" << htmlEscape(number(at(s, m.path), m.fmt))
+    h << "<tr><td>" << htmlEscape(m.label) << "</td><td class=\"n\">" << htmlEscape(number(jsonAt(s, m.path), m.fmt))
       << "</td><td>" << m.unit << "</td></tr>\n";
-  h << "</table>\n" << backlashHtml(at(s, "backlash"));
+  h << "</table>\n" << backlashHtml(jsonAt(s, "backlash"));
 
   return h.str();
 }
@@ -299,7 +287,7 @@ std::string reactionRowHtml(const std::string& col, const json& r) {
 std::string reactionsTableHtml(const nlohmann::json& s, const std::vector<std::string>& reaction_columns) {
   std::ostringstream h;
   // Reactions
-  const json rx = at(s, "reactions");
+  const json rx = jsonAt(s, "reactions");
   h << "<h2>Joint reactions over the steady window</h2>\n";
   if (!rx.is_object() || rx.empty()) {
     h << "<p>No reactions in summary.json.</p>\n";
@@ -348,15 +336,15 @@ std::string pageHeadHtml(const ReportContent& c) {
     << "<title>rollerdyn report: " << name << "</title>\n<style>" << kStyle << "</style>\n"
     << inlineScriptBlock(kErrorRecorder) << "</head>\n<body>\n";
   h << "<h1>rollerdyn report: " << name << "</h1>\n";
-  h << "<div class=\"small\">Drive dynamics of a roller forming installation, " << htmlEscape(number(at(s, "model")))
-    << " model, integrator " << htmlEscape(number(at(s, "integrator"))) << ".</div>\n";
+  h << "<div class=\"small\">Drive dynamics of a roller forming installation, " << htmlEscape(number(jsonAt(s, "model")))
+    << " model, integrator " << htmlEscape(number(jsonAt(s, "integrator"))) << ".</div>\n";
   return h.str();
 }
 
 // The mechanism in motion beside the interactive time plots.
 std::string motionSectionHtml(const ReportContent& c) {
   if (c.animation.empty() && c.time_plots.empty()) return "";
-  const json t0 = at(c.summary, "steady_state.t_begin"), t1 = at(c.summary, "steady_state.t_end");
+  const json t0 = jsonAt(c.summary, "steady_state.t_begin"), t1 = jsonAt(c.summary, "steady_state.t_end");
   std::ostringstream h;
   h << "<h2>Mechanism in motion</h2>\n<p class=\"small\">Drawn to scale from this run's time series (crank "
        "angle &phi;<sub>2</sub>, cart positions) and reactions, one lane per cart because the crank planes lie "

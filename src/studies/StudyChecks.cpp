@@ -24,35 +24,27 @@ namespace {
 constexpr double kSameRun = 1e-12;  // file comment
 
 // The metrics compared: (the sweep's name, its path in summary.json).
-const std::vector<std::pair<const char*, std::vector<const char*>>>& compared() {
-  static const std::vector<std::pair<const char*, std::vector<const char*>>> m = {
-      {"delta", {"delta"}},
-      {"H", {"H"}},
-      {"k_p", {"k_p"}},
-      {"omega_crank_mean", {"omega_crank", "mean"}},
-      {"omega_crank_min", {"omega_crank", "min"}},
-      {"omega_crank_max", {"omega_crank", "max"}},
-      {"eps_crank_abs_max", {"eps_crank_abs_max"}},
-      {"motor_torque_rotor_rms", {"sizing", "motor", "torque_shaft", "rms"}},
+const std::vector<std::pair<const char*, const char*>>& compared() {
+  static const std::vector<std::pair<const char*, const char*>> m = {
+      {"delta", "delta"},
+      {"H", "H"},
+      {"k_p", "k_p"},
+      {"omega_crank_mean", "omega_crank.mean"},
+      {"omega_crank_min", "omega_crank.min"},
+      {"omega_crank_max", "omega_crank.max"},
+      {"eps_crank_abs_max", "eps_crank_abs_max"},
+      {"motor_torque_rotor_rms", "sizing.motor.torque_shaft.rms"},
   };
   return m;
 }
 
-double jsonAt(const nlohmann::json& j, const std::vector<const char*>& path) {
-  const nlohmann::json* p = &j;
-  for (const char* k : path) {
-    if (!p->is_object() || !p->contains(k)) return NAN;
-    p = &p->at(k);
-  }
-  return p->is_number() ? p->get<double>() : NAN;
-}
 
 // A row's metrics against its point run on its own: largest relative difference (NaN on both
 // sides counts as equal, NaN on one side as a difference of 1).
 double rowDifference(const SweepPoint& row, const nlohmann::json& own) {
   double worst = 0;
   for (const auto& [name, path] : compared()) {
-    const double a = row.metric(name), b = jsonAt(own, path);
+    const double a = row.metric(name), b = jsonDouble(jsonAt(own, path));
     if (std::isnan(a) && std::isnan(b)) continue;
     const double d = std::isfinite(a) && std::isfinite(b) ? std::abs(a - b) / std::max(std::abs(b), 1e-300) : 1.0;
     worst = std::max(worst, d);
@@ -125,7 +117,7 @@ void claimOptimizationEvaluations(ValidationSection& s, const RowCheckScene& c) 
   for (const OptimizeEvaluation& e : q.history) {
     const nlohmann::json j = c.ownRun({c.key + "=" + e.texts.at(0)});
     worst_q = std::max(worst_q, rowDifference(e.point, j));
-    const double d = jsonAt(j, {"delta"});
+    const double d = jsonDouble(jsonMember(j, "delta"));
     objective = std::max(objective, std::isfinite(e.objective) && std::isfinite(d) ? std::abs(e.objective - d) / d : 1.0);
     bool fresh = true;
     for (double v : seen) fresh = fresh && std::abs(v / d - 1.0) > 100 * kSameRun;

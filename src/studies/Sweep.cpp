@@ -24,6 +24,7 @@
 #include "studies/SweepExecution.h"
 #include "studies/SweepPointBudget.h"
 #include "compare/RunModel.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn {
 
@@ -58,20 +59,6 @@ std::string trim(const std::string& s) {
   return s.substr(a, b - a + 1);
 }
 
-// Value in a summary path ("omega_crank.mean"), NaN when absent or null.
-double summaryNumber(const nlohmann::json& s, const std::string& path) {
-  const nlohmann::json* node = &s;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t dot = path.find('.', start);
-    const std::string part = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (!node->is_object() || !node->contains(part)) return kNaN;
-    node = &(*node)[part];
-    if (dot == std::string::npos) break;
-    start = dot + 1;
-  }
-  return node->is_number() ? node->get<double>() : kNaN;
-}
 
 // sweepNumericMetrics() name -> summary.json path.
 const std::vector<std::pair<std::string, std::string>>& metricSources() {
@@ -110,7 +97,7 @@ void readRunInto(const Scene& scene, const RunResult& run, const std::vector<std
   p.motion = summary.value("motion", "unknown");
   p.warnings = messages.resonance_warnings;  // the load's warning is a metric column
   const auto& src = metricSources();
-  for (std::size_t k = 0; k < src.size(); ++k) p.metrics[k] = summaryNumber(summary, src[k].second);
+  for (std::size_t k = 0; k < src.size(); ++k) p.metrics[k] = jsonDouble(jsonAt(summary, src[k].second));
   p.complete = run.stats.complete;
   p.steady = summary["steady_state"].value("reached", false);
   p.status = summary.value("status", run.stats.status);
