@@ -53,8 +53,6 @@ class MinimalDynamics {
   const Eigen::Vector2d& independentAccelerations() const { return nu_dot_; }
   // After evaluate: every u̇ [rad/s², m/s²].
   const SimTK::Vector& udot() const { return udot_; }
-  // After evaluate: the generalized constraint force on every mobility, M·u̇ + c - f [N·m, N].
-  const SimTK::Vector& constraintForces() const { return residual_; }
   // After evaluate: the applied body forces of all force elements (ground axes, about each
   // body's origin) [N·m, N].
   const SimTK::Vector_<SimTK::SpatialVec>& appliedBodyForces() const { return f_body_; }

@@ -81,7 +81,6 @@ class MultibodyModel {
 
   const Scene& scene() const { return scene_; }
   const SimTK::MultibodySystem& system() const { return system_; }
-  SimTK::MultibodySystem& updSystem() { return system_; }
   const SimTK::SimbodyMatterSubsystem& matter() const { return matter_; }
   const MultibodyInventory& inventory() const { return inventory_; }
   const std::vector<CartRig>& carts() const { return carts_; }
