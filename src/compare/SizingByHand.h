@@ -88,16 +88,6 @@ struct Comparison {
   }
 };
 
-inline const json& at(const json& j, std::initializer_list<const char*> path) {
-  static const json null_json;
-  const json* p = &j;
-  for (const char* k : path) {
-    if (!p->is_object() || !p->contains(k)) return null_json;
-    p = &p->at(k);
-  }
-  return *p;
-}
-
 // One run's tables as a user gets them, read once, its summary.json, and the steady window found
 // by hand on its rows.
 struct RunFiles {

@@ -107,20 +107,20 @@ CrankSpeedByHand crankSpeedByHand(const RunFiles& f) {
 
 CrankSpeedByHand checkWindow(ValidationSection& s, const std::string& who, const RunFiles& f) {
   const Window& win = f.win;
-  const double dtb = std::abs(win.t_begin - at(f.sz, {"window", "t_begin"}).get<double>());
-  const double dte = std::abs(win.t_end - at(f.sz, {"window", "t_end"}).get<double>());
+  const double dtb = std::abs(win.t_begin - jsonAt(f.sz, "window.t_begin").get<double>());
+  const double dte = std::abs(win.t_end - jsonAt(f.sz, "window.t_end").get<double>());
   const CrankSpeedByHand c = crankSpeedByHand(f);
   double eps_max = 0;
   for (std::size_t i = f.b; i < f.e; ++i) eps_max = std::max(eps_max, std::abs(f.ts.col("eps_crank")[i]));
   const double H = eps_max / (c.mean * c.mean);
   Comparison cw;
-  cw.add("revolutions in the window's rows", c.revolutions_in_rows, at(f.sz, {"window", "revolutions"}));
-  cw.add("ω_mean = 2πN/Δt", c.mean, at(f.summary, {"omega_crank", "mean"}));
-  cw.add("ω_min", c.lowest, at(f.summary, {"omega_crank", "min"}));
-  cw.add("ω_max", c.highest, at(f.summary, {"omega_crank", "max"}));
-  cw.add("δ", c.delta, at(f.summary, {"delta"}), c.highest / c.mean);  // a difference: judged against its operands
-  cw.add("H", H, at(f.summary, {"H"}));
-  cw.add("k_p", c.delta * c.delta + H, at(f.summary, {"k_p"}));
+  cw.add("revolutions in the window's rows", c.revolutions_in_rows, jsonAt(f.sz, "window.revolutions"));
+  cw.add("ω_mean = 2πN/Δt", c.mean, jsonAt(f.summary, "omega_crank.mean"));
+  cw.add("ω_min", c.lowest, jsonAt(f.summary, "omega_crank.min"));
+  cw.add("ω_max", c.highest, jsonAt(f.summary, "omega_crank.max"));
+  cw.add("δ", c.delta, jsonAt(f.summary, "delta"), c.highest / c.mean);  // a difference: judged against its operands
+  cw.add("H", H, jsonAt(f.summary, "H"));
+  cw.add("k_p", c.delta * c.delta + H, jsonAt(f.summary, "k_p"));
   s.claim(cw.holds() && dtb <= kTimeSeconds && dte <= kTimeSeconds,
           who + ": steady window = the last " + std::to_string(win.revolutions) + " whole crank revolutions, t = " +
               g(win.t_begin, 6) + " ... " + g(win.t_end, 6) + " s by hand (summary.json differs by " + g(dtb, 2) +
@@ -165,18 +165,18 @@ void checkMotor(ValidationSection& s, const Scene& sc, const std::string& who, c
                 const CrankSpeedByHand& crank) {
   const double u = sc.reducer.ratio, eta = sc.reducer.efficiency;
   const MotorByHand x = motorByHand(sc, f, crank);
-  const json& m = at(f.sz, {"motor"});
+  const json& m = jsonAt(f.sz, "motor");
   Comparison c;
-  c.add("mean M", x.mean, at(m, {"torque_shaft", "mean"}), x.peak);
-  c.add("RMS M", x.rms, at(m, {"torque_shaft", "rms"}));
-  c.add("peak |M|", x.peak, at(m, {"torque_shaft", "peak"}));
-  c.add("RMS at the crank", x.rms * u * eta, at(m, {"torque_crank", "rms"}));
-  c.add("M_n = M_kr/λ", x.M_n, at(m, {"nominal_torque"}));
-  c.add("RMS/M_n", x.rms / x.M_n, at(m, {"rms_over_nominal"}));
-  c.add("peak/M_kr", x.peak / sc.motor.breakdown_torque, at(m, {"peak_over_breakdown"}));
-  c.add("energy per revolution", x.energy, at(m, {"energy_per_revolution"}));
-  c.add("slip min", x.slip_lo, at(m, {"slip", "min"}), 1.0);  // s = 1 - ω_r/ω0: operands of size 1
-  c.add("slip max", x.slip_hi, at(m, {"slip", "max"}), 1.0);
+  c.add("mean M", x.mean, jsonAt(m, "torque_shaft.mean"), x.peak);
+  c.add("RMS M", x.rms, jsonAt(m, "torque_shaft.rms"));
+  c.add("peak |M|", x.peak, jsonAt(m, "torque_shaft.peak"));
+  c.add("RMS at the crank", x.rms * u * eta, jsonAt(m, "torque_crank.rms"));
+  c.add("M_n = M_kr/λ", x.M_n, jsonAt(m, "nominal_torque"));
+  c.add("RMS/M_n", x.rms / x.M_n, jsonAt(m, "rms_over_nominal"));
+  c.add("peak/M_kr", x.peak / sc.motor.breakdown_torque, jsonAt(m, "peak_over_breakdown"));
+  c.add("energy per revolution", x.energy, jsonAt(m, "energy_per_revolution"));
+  c.add("slip min", x.slip_lo, jsonAt(m, "slip.min"), 1.0);  // s = 1 - ω_r/ω0: operands of size 1
+  c.add("slip max", x.slip_hi, jsonAt(m, "slip.max"), 1.0);
   s.claim(c.holds(), who + ": motor at the rotor, M = motor_torque/(u·η) (u = " + g(u) + ", η = " + g(eta) +
                          "): mean " + g(x.mean, 4) + ", RMS " + g(x.rms, 4) + ", peak " + g(x.peak, 4) + " N·m; RMS/M_n = " +
                          g(x.rms / x.M_n, 3) + " with M_n = M_kr/λ = " + g(x.M_n, 4) + " N·m; ∫M·ω_r dt per crank "
@@ -228,20 +228,20 @@ std::pair<double, double> kineticEnergySwing(const RunFiles& f, const std::vecto
 double addedFlywheel(Comparison& k, const json& fw, double J, const CrankSpeedByHand& crank, double target) {
   const double added_energy = target > 0 ? std::max(0.0, J * (crank.delta / target - 1.0)) : kNaN;
   // ΔJ inherits δ's operands: judged against J·(ω_max/ω_mean)/δ*.
-  k.add("ΔJ = J·(δ/δ* - 1)", added_energy, at(fw, {"added_inertia_energy_method"}),
+  k.add("ΔJ = J·(δ/δ* - 1)", added_energy, jsonAt(fw, "added_inertia_energy_method"),
         J * (crank.highest / crank.mean) / target);
   // The excess-work method: ΔA (from the load law at constant speed, checked on its own in the
   // tests against ½ω²(J_max - J_min) of a load-free machine) over δ*·ω̄², ω̄ from the rows here.
-  const json& dA = at(fw, {"excess_work"});
+  const json& dA = jsonAt(fw, "excess_work");
   if (!(dA.is_number() && target > 0)) {
-    k.add("ΔJ (no ΔA: energy method)", added_energy, at(fw, {"added_inertia_crankshaft"}),
+    k.add("ΔJ (no ΔA: energy method)", added_energy, jsonAt(fw, "added_inertia_crankshaft"),
           J * (crank.highest / crank.mean) / target);
     return added_energy;
   }
   const double J_req = dA.get<double>() / (target * crank.mean * crank.mean);
   const double added = std::max(std::max(0.0, J_req - J), added_energy);
-  k.add("J* = ΔA/(δ*·ω̄²)", J_req, at(fw, {"inertia_required"}));
-  k.add("ΔJ = max(J* - J, J·(δ/δ* - 1))", added, at(fw, {"added_inertia_crankshaft"}), J_req);
+  k.add("J* = ΔA/(δ*·ω̄²)", J_req, jsonAt(fw, "inertia_required"));
+  k.add("ΔJ = max(J* - J, J·(δ/δ* - 1))", added, jsonAt(fw, "added_inertia_crankshaft"), J_req);
   return added;
 }
 
@@ -258,14 +258,14 @@ void checkCouplingAndFlywheel(ValidationSection& s, const Scene& sc, const std::
   const KineticEnergyRows kinetic = kineticEnergyRows(sc, f.ts);
   const auto [dT, T_max] = kineticEnergySwing(f, kinetic.T);
   const double J = integral(t, kinetic.J, b, e) / f.span;
-  const json& c = at(f.sz, {"coupling"});
-  const json& fw = at(f.sz, {"flywheel"});
+  const json& c = jsonAt(f.sz, "coupling");
+  const json& fw = jsonAt(f.sz, "flywheel");
   Comparison k;
-  k.add("coupling mean", integral(t, Mc, b, e) / f.span, at(c, {"mean"}), cpeak);
-  k.add("coupling peak", cpeak, at(c, {"peak"}));
-  k.add("coupling swing", *chi - *clo, at(c, {"swing"}));
-  k.add("ΔT per revolution", dT, at(fw, {"kinetic_energy_swing"}), T_max);  // a difference of T values
-  k.add("J = mean 2T/ω²", J, at(fw, {"inertia_effective"}));
+  k.add("coupling mean", integral(t, Mc, b, e) / f.span, jsonAt(c, "mean"), cpeak);
+  k.add("coupling peak", cpeak, jsonAt(c, "peak"));
+  k.add("coupling swing", *chi - *clo, jsonAt(c, "swing"));
+  k.add("ΔT per revolution", dT, jsonAt(fw, "kinetic_energy_swing"), T_max);  // a difference of T values
+  k.add("J = mean 2T/ω²", J, jsonAt(fw, "inertia_effective"));
   const double target = sc.sizing.target_delta;
   const double added = addedFlywheel(k, fw, J, crank, target);
   s.claim(k.holds(), who + ": coupling torque mean " + g(integral(t, Mc, b, e) / f.span, 4) + ", peak " + g(cpeak, 4) +
@@ -286,7 +286,7 @@ void checkRun(ValidationSection& s, const Scene& sc, const std::string& who, con
   if (f.win.revolutions < 1 || f.e < f.b + 2) throw std::runtime_error(who + ": fewer than one whole crank revolution");
   f.span = f.ts.col("t")[f.e - 1] - f.ts.col("t")[f.b];
   const CrankSpeedByHand crank = checkWindow(s, who, f);
-  if (at(f.sz, {"motor"}).is_object()) checkMotor(s, sc, who, f, crank);
+  if (jsonAt(f.sz, "motor").is_object()) checkMotor(s, sc, who, f, crank);
   checkCouplingAndFlywheel(s, sc, who, f, crank);
   if (!f.rx.names.empty()) checkJoints(s, sc, who, f);
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "compare/SizingByHand.h"
+#include "io/FieldFormat.h"
 
 namespace rollerdyn::validation::sizing_by_hand {
 namespace {
@@ -129,7 +130,7 @@ void checkJoints(ValidationSection& s, const Scene& sc, const std::string& who, 
   Comparison jc;
   std::string lives;
   for (const char* kind : {"guide_roller_front", "guide_roller_rear", "rod_end", "crank_pin", "main_bearing"}) {
-    const json& per = at(f.sz, {"joints", kind, "per_cart"});
+    const json& per = jsonAt(f.sz, std::string("joints.") + kind + ".per_cart");
     if (!per.is_array()) continue;
     for (const json& row : per) {
       const int j = row.at("cart").is_number() ? row.at("cart").get<int>() : 0;

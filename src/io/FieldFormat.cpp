@@ -49,6 +49,10 @@ std::string printfNumber(const char* format, double v) {
   return buf;
 }
 
+std::string printfNumberOr(const char* format, double v, const char* absent) {
+  return std::isfinite(v) ? printfNumber(format, v) : std::string(absent);
+}
+
 std::string printfText(const char* format, ...) {
   va_list args;
   va_start(args, format);

@@ -36,6 +36,8 @@ std::string jsonNumberText(const nlohmann::json& v, const char* format = "%.4g",
 // v in printf's `format` ("%.1f", "%.0f %%"): a fixed layout where a column or a sentence wants
 // one, rather than significant digits.
 std::string printfNumber(const char* format, double v);
+// The same, with `absent` written instead of a value that is not finite ("–" in a table).
+std::string printfNumberOr(const char* format, double v, const char* absent);
 // A sentence printf writes (the validation lines, the models' differences, the friction checks),
 // whatever its length.
 std::string printfText(const char* format, ...) __attribute__((format(printf, 1, 2)));

@@ -14,7 +14,7 @@ FigureFile fileOf(const std::string& dir, const std::string& name, const std::st
 }
 
 // v in printf's format f; "–" in a label for a value that is not finite.
-std::string g(double v, const char* f = "%.4g") { return std::isfinite(v) ? printfNumber(f, v) : "–"; }
+std::string g(double v, const char* f = "%.4g") { return printfNumberOr(f, v, "–"); }
 
 // One order's separation band on the Campbell diagram: the wedge 0.9·k·ω … 1.1·k·ω over the
 // drawn speeds up to wmax, red where the margin FAILs, green where it passes, and its margin as a

@@ -11,7 +11,7 @@ namespace rollerdyn::modes {
 namespace {
 
 // v in printf's format f; "–" in a table cell for a value that is not finite.
-std::string g(double v, const char* f = "%.4g") { return std::isfinite(v) ? printfNumber(f, v) : "–"; }
+std::string g(double v, const char* f = "%.4g") { return printfNumberOr(f, v, "–"); }
 
 // A natural frequency [rad/s] as the table shows it: one value, or the band low … high.
 std::string frequencyBand(double lo, double hi) {
